@@ -1,0 +1,216 @@
+//! The trait every Lagrange-Dirac model implements, primitive or interconnected.
+//!
+//! A model is exposed block-wise (∂L/∂q, ∂L/∂v, L_vv, A(q), …) so that integrators can exploit
+//! the structure of the implicit Lagrange-d'Alembert equations and interconnections can assemble
+//! a composite from its parts without re-deriving anything. The flat semi-explicit DAE
+//! `M ẏ = f(t, y)` with `y = (q, v, p, λ)` is available too.
+//!
+//! # Sparse writes
+//!
+//! Methods that fill a matrix write only its structurally nonzero entries. Give them a buffer
+//! that was zeroed once (for example with [`nalgebra::Matrix::zeros`]) and that only the same
+//! method writes to: the structural zeros then stay zero without being rewritten on every call.
+//! The allocating conveniences (`*_matrix`, [`LagrangeDirac::residual_vector`], …) do this for you.
+
+use std::borrow::Cow;
+
+use nalgebra::DefaultAllocator;
+
+use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, Storage, VecC, VecH, VecQ, VecY};
+use crate::keys::{Constraint, Coordinate};
+
+/// The blocks of the residual that integrators evaluate at every Newton iteration.
+#[derive(Clone, Debug)]
+pub struct ResidualBlocks<M: Dimensions>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The momentum rate `ṗ = ∂L/∂q + F + A(q)ᵀ λ` (paper eq. 3 with the constraint forces).
+    pub momentum_rate: VecQ<M>,
+    /// `∂L/∂v`, the right-hand side of the Legendre map `p = ∂L/∂v`.
+    pub dl_dv: VecQ<M>,
+    /// `A(q) v`, zero on the constraint distribution Δ_Q.
+    pub constraint_velocity: VecC<M>,
+}
+
+impl<M: Dimensions> ResidualBlocks<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Zeroed blocks, ready for [`LagrangeDirac::residual_blocks`].
+    pub fn zeros() -> Self {
+        Self {
+            momentum_rate: VecQ::<M>::zeros(),
+            dl_dv: VecQ::<M>::zeros(),
+            constraint_velocity: VecC::<M>::zeros(),
+        }
+    }
+}
+
+/// The Jacobian blocks of [`ResidualBlocks`], the input of a condensed Newton step.
+#[derive(Clone, Debug)]
+pub struct JacobianBlocks<M: Dimensions>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// `∂ṗ/∂q = L_qq + F_q + ∂(Aᵀλ)/∂q` (called K in the design notes).
+    pub dpdot_dq: MatQQ<M>,
+    /// `∂ṗ/∂v = L_qv + F_v` (called D in the design notes).
+    pub dpdot_dv: MatQQ<M>,
+    /// `L_vq = ∂(∂L/∂v)/∂q`.
+    pub l_vq: MatQQ<M>,
+    /// `L_vv = ∂²L/∂v²`, singular for a degenerate Lagrangian.
+    pub l_vv: MatQQ<M>,
+    /// The constraint rows `A(q)`.
+    pub a: MatCQ<M>,
+    /// `∂(A(q) v)/∂q`.
+    pub dav_dq: MatCQ<M>,
+}
+
+impl<M: Dimensions> JacobianBlocks<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Zeroed blocks, ready for [`LagrangeDirac::jacobian_blocks`].
+    pub fn zeros() -> Self {
+        Self {
+            dpdot_dq: MatQQ::<M>::zeros(),
+            dpdot_dv: MatQQ::<M>::zeros(),
+            l_vq: MatQQ::<M>::zeros(),
+            l_vv: MatQQ::<M>::zeros(),
+            a: MatCQ::<M>::zeros(),
+            dav_dq: MatCQ::<M>::zeros(),
+        }
+    }
+}
+
+/// The derived equations of a model, for people: plain text and LaTeX.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Equations {
+    /// One equation a line, in Rust-like notation.
+    pub text: Cow<'static, str>,
+    /// An `aligned` LaTeX environment, one equation a row.
+    pub latex: Cow<'static, str>,
+}
+
+/// A Lagrange-Dirac system (implicit Lagrangian system) with constraints and external forces.
+///
+/// With `n` coordinates `q`, velocities `v`, momenta `p` and `m` multipliers `λ`, its
+/// equations (the implicit Lagrange-d'Alembert equations, paper eq. 3) are
+///
+/// ```text
+/// q̇ = v
+/// ṗ = ∂L/∂q + F(q, v, t) + A(q)ᵀ λ
+/// 0 = p − ∂L/∂v
+/// 0 = A(q) v
+/// ```
+///
+/// Implement it with `#[derive(LagrangeDirac)]`; every method is generated code specialised
+/// to the model. Holonomic constraints `φ(q) = 0` contribute the first [`Dimensions::NH`] rows
+/// of `A = ∂φ/∂q`.
+pub trait LagrangeDirac: Dimensions + Sized + 'static
+where
+    DefaultAllocator: Storage<Self>,
+{
+    /// The coordinate names, in the order of `q`.
+    const COORDINATES: &'static [&'static str];
+    /// The velocity names, in the order of `v`.
+    const VELOCITIES: &'static [&'static str];
+    /// The constraint names, in the order of the rows of `A(q)` and of `λ`.
+    const CONSTRAINTS: &'static [&'static str];
+    /// The coordinates through which the model may be interconnected.
+    const PORTS: &'static [Coordinate<Self>];
+
+    /// The derived equations, for people.
+    fn equations() -> Equations;
+
+    /// The Lagrangian `L(q, v, t)`.
+    fn lagrangian(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64;
+    /// `∂L/∂q`.
+    fn dl_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecQ<Self>);
+    /// `∂L/∂v`.
+    fn dl_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecQ<Self>);
+    /// `L_qq = ∂²L/∂q²` (sparse write).
+    fn l_qq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
+    /// `L_vq = ∂(∂L/∂v)/∂q`, entry `(i, j) = ∂²L/∂v_i∂q_j` (sparse write).
+    fn l_vq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
+    /// `L_vv = ∂²L/∂v²` (sparse write).
+    fn l_vv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
+    /// The external force `F(q, v, t)`, a covector.
+    fn force(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecQ<Self>);
+    /// `∂F/∂q` (sparse write).
+    fn force_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
+    /// `∂F/∂v` (sparse write).
+    fn force_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
+    /// The constraint rows `A(q)`; row `j` is the one-form of constraint `j` (sparse write).
+    fn constraint_matrix(&self, q: &VecQ<Self>, out: &mut MatCQ<Self>);
+    /// `∂(A(q) v)/∂q` (sparse write).
+    fn dav_dq(&self, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatCQ<Self>);
+    /// `∂(A(q)ᵀ λ)/∂q` (sparse write).
+    fn datl_dq(&self, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut MatQQ<Self>);
+    /// The holonomic constraint values `φ(q)`, zero on the constraint manifold.
+    fn holonomic(&self, q: &VecQ<Self>, out: &mut VecH<Self>);
+
+    /// The residual blocks in one pass, sharing every common subexpression.
+    fn residual_blocks(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut ResidualBlocks<Self>,
+    );
+    /// The Jacobian blocks in one pass (sparse write into each block).
+    fn jacobian_blocks(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut JacobianBlocks<Self>,
+    );
+
+    /// The flat right-hand side `f(t, y)` of `M ẏ = f(t, y)`, `M = diag(I, 0, I, 0)`, in the
+    /// slots of `y = (q, v, p, λ)`: `(v, p − ∂L/∂v, ∂L/∂q + F + Aᵀλ, A v)`.
+    fn residual(&self, t: f64, y: &VecY<Self>, out: &mut VecY<Self>);
+    /// The flat Jacobian `∂f/∂y` (sparse write).
+    fn jacobian(&self, t: f64, y: &VecY<Self>, out: &mut MatYY<Self>);
+
+    /// The coordinate with this name, if the model declares one.
+    fn coordinate(name: &str) -> Option<Coordinate<Self>> {
+        let index = Self::COORDINATES.iter().position(|c| *c == name)?;
+        Some(Coordinate::new(index, Self::COORDINATES[index]))
+    }
+
+    /// The constraint with this name, if the model declares one.
+    fn constraint(name: &str) -> Option<Constraint<Self>> {
+        let index = Self::CONSTRAINTS.iter().position(|c| *c == name)?;
+        Some(Constraint::new(index, Self::CONSTRAINTS[index]))
+    }
+
+    /// The generalised energy `E(q, v, p) = ⟨p, v⟩ − L(q, v, t)`.
+    fn energy(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, p: &VecQ<Self>) -> f64 {
+        p.dot(v) - self.lagrangian(t, q, v)
+    }
+
+    /// The power of the external forces `⟨F(q, v, t), v⟩`; on solutions `dE/dt` equals it.
+    fn power(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64 {
+        let mut f = VecQ::<Self>::zeros();
+        self.force(t, q, v, &mut f);
+        f.dot(v)
+    }
+
+    /// [`LagrangeDirac::residual`] into a new vector.
+    fn residual_vector(&self, t: f64, y: &VecY<Self>) -> VecY<Self> {
+        let mut out = VecY::<Self>::zeros();
+        self.residual(t, y, &mut out);
+        out
+    }
+
+    /// [`LagrangeDirac::jacobian`] into a new, correctly zeroed matrix.
+    fn jacobian_matrix(&self, t: f64, y: &VecY<Self>) -> MatYY<Self> {
+        let mut out = MatYY::<Self>::zeros();
+        self.jacobian(t, y, &mut out);
+        out
+    }
+}

@@ -1,0 +1,120 @@
+//! A model's state `(q, v, p, λ)` with named access.
+
+use nalgebra::DefaultAllocator;
+
+use crate::dims::{Dimensions, Storage, VecC, VecQ, VecY};
+use crate::keys::{Constraint, Coordinate};
+
+/// The state `(q, v, p, λ)` of a Lagrange-Dirac model `M`.
+///
+/// Components are read and written through the typed names the derive emits
+/// (`state.q(Pendulum::X)`, `state.set_v(Pendulum::Y, 0.0)`), never by index arithmetic.
+#[derive(Clone, Debug, PartialEq)]
+pub struct State<M: Dimensions>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Positions.
+    pub q: VecQ<M>,
+    /// Velocities.
+    pub v: VecQ<M>,
+    /// Momenta.
+    pub p: VecQ<M>,
+    /// Constraint multipliers: the constraint forces are `A(q)ᵀ λ`.
+    pub lambda: VecC<M>,
+}
+
+impl<M: Dimensions> Default for State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn default() -> Self {
+        Self::zeros()
+    }
+}
+
+impl<M: Dimensions> State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The state with every component zero.
+    pub fn zeros() -> Self {
+        Self {
+            q: VecQ::<M>::zeros(),
+            v: VecQ::<M>::zeros(),
+            p: VecQ::<M>::zeros(),
+            lambda: VecC::<M>::zeros(),
+        }
+    }
+
+    /// The position of coordinate `c`.
+    pub fn q(&self, c: Coordinate<M>) -> f64 {
+        self.q[c.index()]
+    }
+
+    /// The velocity of coordinate `c`.
+    pub fn v(&self, c: Coordinate<M>) -> f64 {
+        self.v[c.index()]
+    }
+
+    /// The momentum conjugate to coordinate `c`.
+    pub fn p(&self, c: Coordinate<M>) -> f64 {
+        self.p[c.index()]
+    }
+
+    /// The multiplier of constraint `k`.
+    pub fn lambda(&self, k: Constraint<M>) -> f64 {
+        self.lambda[k.index()]
+    }
+
+    /// Sets the position of coordinate `c`.
+    pub fn set_q(&mut self, c: Coordinate<M>, value: f64) -> &mut Self {
+        self.q[c.index()] = value;
+        self
+    }
+
+    /// Sets the velocity of coordinate `c`.
+    pub fn set_v(&mut self, c: Coordinate<M>, value: f64) -> &mut Self {
+        self.v[c.index()] = value;
+        self
+    }
+
+    /// Sets the momentum conjugate to coordinate `c`.
+    pub fn set_p(&mut self, c: Coordinate<M>, value: f64) -> &mut Self {
+        self.p[c.index()] = value;
+        self
+    }
+
+    /// Sets the multiplier of constraint `k`.
+    pub fn set_lambda(&mut self, k: Constraint<M>, value: f64) -> &mut Self {
+        self.lambda[k.index()] = value;
+        self
+    }
+
+    /// The state as one flat vector `y = (q, v, p, λ)`.
+    pub fn to_y(&self) -> VecY<M> {
+        let mut y = VecY::<M>::zeros();
+        self.write_y(&mut y);
+        y
+    }
+
+    /// Writes the state into a flat vector `y = (q, v, p, λ)`.
+    pub fn write_y(&self, y: &mut VecY<M>) {
+        let n = M::NQ;
+        y.rows_mut(0, n).copy_from(&self.q);
+        y.rows_mut(n, n).copy_from(&self.v);
+        y.rows_mut(2 * n, n).copy_from(&self.p);
+        y.rows_mut(3 * n, M::NC).copy_from(&self.lambda);
+    }
+
+    /// The state stored in a flat vector `y = (q, v, p, λ)`.
+    pub fn from_y(y: &VecY<M>) -> Self {
+        let n = M::NQ;
+        let mut state = Self::zeros();
+        state.q.copy_from(&y.rows(0, n));
+        state.v.copy_from(&y.rows(n, n));
+        state.p.copy_from(&y.rows(2 * n, n));
+        state.lambda.copy_from(&y.rows(3 * n, M::NC));
+        state
+    }
+}

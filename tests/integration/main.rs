@@ -1,0 +1,1 @@
+//! Integration tests of dirac, compiled as one binary.
