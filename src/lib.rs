@@ -1,1 +1,63 @@
-//! x
+//! # dirac
+//!
+//! Lagrange-Dirac systems (implicit Lagrangian systems) and their interconnection through Dirac
+//! structures, compiled to specialised Rust at `cargo build` time.
+//!
+//! Write a Lagrangian, its constraints and its forces on a struct; `#[derive(LagrangeDirac)]`
+//! differentiates them symbolically and emits exact residuals and sparse Jacobians of the
+//! implicit Lagrange-d'Alembert equations
+//!
+//! ```text
+//! q̇ = v,   ṗ = ∂L/∂q + F + A(q)ᵀ λ,   p = ∂L/∂v,   A(q) v = 0
+//! ```
+//!
+//! ```
+//! use dirac::prelude::*;
+//!
+//! /// A planar pendulum of length `l` in Cartesian coordinates.
+//! #[derive(LagrangeDirac)]
+//! #[dirac(coordinates(x => vx, y => vy))]
+//! #[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+//! #[dirac(holonomic(rod) = x * x + y * y - l * l)]
+//! struct Pendulum {
+//!     m: f64,
+//!     g: f64,
+//!     l: f64,
+//! }
+//!
+//! let pendulum = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+//! let mut state = State::<Pendulum>::zeros();
+//! state.set_q(Pendulum::X, 1.0).set_v(Pendulum::Y, -0.5);
+//!
+//! // The constraint row A = ∂φ/∂q = (2x, 2y) at (1, 0).
+//! let mut a = MatCQ::<Pendulum>::zeros();
+//! pendulum.constraint_matrix(&state.q, &mut a);
+//! assert_eq!(a[(0, 0)], 2.0);
+//! assert_eq!(a[(0, 1)], 0.0);
+//!
+//! // Named access and the derived equations, for people.
+//! assert_eq!(Pendulum::ROD.name(), "rod");
+//! assert!(Pendulum::equations().text.contains("dp_y/dt = -m*g + 2*y*lambda_rod"));
+//! ```
+
+extern crate self as dirac;
+
+pub use dirac_macros::LagrangeDirac;
+pub use dirac_runtime::{
+    Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatKK,
+    MatQQ, MatYY, ResidualBlocks, State, Storage, VecC, VecH, VecK, VecQ, VecY,
+};
+
+/// Everything a model file needs: `use dirac::prelude::*;`.
+pub mod prelude {
+    pub use crate::{
+        Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ,
+        MatYY, ResidualBlocks, State, VecC, VecH, VecQ, VecY,
+    };
+}
+
+/// The runtime crate, for items the prelude does not re-export.
+pub use dirac_runtime as runtime;
+
+#[doc(hidden)]
+pub use dirac_runtime::__private;

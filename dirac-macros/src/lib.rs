@@ -1,4 +1,38 @@
 //! Derive macros of dirac. Use them through the `dirac` crate, which re-exports them with the
 //! runtime they generate code for.
+//!
+//! The derive parses a model, checks it, lowers its expressions into a symbolic graph,
+//! differentiates them and emits straight-line Rust: attributes → model AST (with spans) →
+//! checks → symbolic graph → derivatives → CSE schedule → Rust tokens.
 
+mod ast;
+mod check;
+mod codegen;
+mod ctxt;
+mod equations;
+mod expand;
+mod lower;
+mod model;
+mod suggest;
 mod sym;
+mod symbol;
+
+use proc_macro::TokenStream;
+use syn::{DeriveInput, parse_macro_input};
+
+/// Derives `dirac::LagrangeDirac` (and `dirac::Dimensions`) for a struct whose `f64` fields are
+/// the model's parameters, from `#[dirac(...)]` attributes:
+///
+/// - `coordinates(x1 => v1, x2 => v2)`: coordinates and their velocity names (default `v_x`);
+/// - `lagrangian = expr`: the Lagrangian `L(q, v, t)`, possibly degenerate;
+/// - `holonomic(name) = expr`: a position constraint `φ(q) = 0`, name optional;
+/// - `constraint(name) = expr`: a velocity constraint linear in the velocities, `A(q) v = 0`;
+/// - `force(x) = expr`: the external force on coordinate `x`, a function of `q`, `v`, `t`;
+/// - `port(x, ...)`: coordinates through which the model may be interconnected.
+///
+/// See the `dirac` crate documentation for examples.
+#[proc_macro_derive(LagrangeDirac, attributes(dirac))]
+pub fn derive_lagrange_dirac(input: TokenStream) -> TokenStream {
+    let input = parse_macro_input!(input as DeriveInput);
+    expand::derive(&input).into()
+}

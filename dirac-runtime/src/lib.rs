@@ -20,8 +20,9 @@ pub use state::State;
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use core::primitive::f64;
-    pub use nalgebra;
+    pub use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, VecC, VecH, VecQ, VecY};
+    pub use crate::keys::{Constraint, Coordinate};
+    pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, ResidualBlocks};
     pub use nalgebra::Const;
     pub use std::borrow::Cow;
 }

@@ -20,7 +20,6 @@ use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, Storage, VecC, VecH, VecQ, Ve
 use crate::keys::{Constraint, Coordinate};
 
 /// The blocks of the residual that integrators evaluate at every Newton iteration.
-#[derive(Clone, Debug)]
 pub struct ResidualBlocks<M: Dimensions>
 where
     DefaultAllocator: Storage<M>,
@@ -48,7 +47,6 @@ where
 }
 
 /// The Jacobian blocks of [`ResidualBlocks`], the input of a condensed Newton step.
-#[derive(Clone, Debug)]
 pub struct JacobianBlocks<M: Dimensions>
 where
     DefaultAllocator: Storage<M>,

@@ -1,5 +1,7 @@
 //! A model's state `(q, v, p, λ)` with named access.
 
+use core::fmt;
+
 use nalgebra::DefaultAllocator;
 
 use crate::dims::{Dimensions, Storage, VecC, VecQ, VecY};
@@ -9,7 +11,6 @@ use crate::keys::{Constraint, Coordinate};
 ///
 /// Components are read and written through the typed names the derive emits
 /// (`state.q(Pendulum::X)`, `state.set_v(Pendulum::Y, 0.0)`), never by index arithmetic.
-#[derive(Clone, Debug, PartialEq)]
 pub struct State<M: Dimensions>
 where
     DefaultAllocator: Storage<M>,
@@ -22,6 +23,43 @@ where
     pub p: VecQ<M>,
     /// Constraint multipliers: the constraint forces are `A(q)ᵀ λ`.
     pub lambda: VecC<M>,
+}
+
+impl<M: Dimensions> Clone for State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn clone(&self) -> Self {
+        Self {
+            q: self.q.clone(),
+            v: self.v.clone(),
+            p: self.p.clone(),
+            lambda: self.lambda.clone(),
+        }
+    }
+}
+
+impl<M: Dimensions> PartialEq for State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn eq(&self, other: &Self) -> bool {
+        self.q == other.q && self.v == other.v && self.p == other.p && self.lambda == other.lambda
+    }
+}
+
+impl<M: Dimensions> fmt::Debug for State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("State")
+            .field("q", &self.q.as_slice())
+            .field("v", &self.v.as_slice())
+            .field("p", &self.p.as_slice())
+            .field("lambda", &self.lambda.as_slice())
+            .finish()
+    }
 }
 
 impl<M: Dimensions> Default for State<M>

@@ -1,1 +1,11 @@
 //! Integration tests of dirac, compiled as one binary.
+
+#[path = "../zoo/mod.rs"]
+mod zoo;
+
+mod blocks;
+mod hand_derivations;
+mod jacobians;
+mod named_access;
+mod paper;
+mod util;

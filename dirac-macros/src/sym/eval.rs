@@ -8,12 +8,14 @@ use std::collections::HashMap;
 use super::graph::{Graph, Id, Node};
 
 impl Graph {
+    #[cfg(test)]
     /// The value of `e` with every symbol given by `value(sym)`.
     pub fn eval(&self, e: Id, value: &dyn Fn(u32) -> f64) -> f64 {
         let mut memo: HashMap<Id, f64> = HashMap::new();
         self.eval_memo(e, value, &mut memo)
     }
 
+    #[cfg(test)]
     fn eval_memo(&self, e: Id, value: &dyn Fn(u32) -> f64, memo: &mut HashMap<Id, f64>) -> f64 {
         if let Some(&x) = memo.get(&e) {
             return x;

@@ -210,13 +210,9 @@ impl Graph {
     }
 
     /// The name a symbol was created with.
+    #[cfg(test)]
     pub fn sym_name(&self, sym: u32) -> &str {
         &self.names[sym as usize]
-    }
-
-    /// The number of symbols created so far.
-    pub fn sym_count(&self) -> usize {
-        self.names.len()
     }
 
     /// The symbol with this name, created on first use.

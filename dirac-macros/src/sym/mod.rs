@@ -6,9 +6,12 @@ pub mod emit;
 mod eval;
 pub mod graph;
 pub mod pretty;
+#[cfg(test)]
+mod proptests;
+#[cfg(test)]
 mod sexpr;
 
 #[cfg(test)]
 mod tests;
 
-pub use graph::{Func, Graph, Id, Node};
+pub use graph::{Func, Graph, Id};

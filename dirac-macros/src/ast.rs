@@ -1,0 +1,236 @@
+//! The parsed form of a `#[derive(LagrangeDirac)]` model. Every item keeps the user's tokens,
+//! so later stages can point errors at the exact identifier or term.
+
+use syn::ext::IdentExt;
+use syn::parse::ParseStream;
+use syn::punctuated::Punctuated;
+use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
+
+use crate::ctxt::Ctxt;
+use crate::symbol::{
+    CONSTRAINT, COORDINATES, DIRAC, FORCE, HOLONOMIC, LAGRANGIAN, MODEL_KEYS, PORT, PORTS,
+};
+
+/// A model as written by the user.
+pub struct Model<'a> {
+    pub ident: &'a Ident,
+    pub vis: &'a Visibility,
+    /// The struct's `f64` fields.
+    pub params: Vec<Ident>,
+    pub coordinates: Vec<CoordinateDecl>,
+    pub ports: Vec<Ident>,
+    /// The key `lagrangian` (for error spans) and the expression.
+    pub lagrangian: Option<(Ident, Expr)>,
+    pub constraints: Vec<ConstraintDecl>,
+    pub forces: Vec<ForceDecl>,
+}
+
+/// `x => v`: a coordinate and the name of its velocity.
+pub struct CoordinateDecl {
+    pub name: Ident,
+    pub velocity: Ident,
+}
+
+/// Whether a constraint is on positions or on velocities.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum ConstraintKind {
+    /// `φ(q) = 0`; its row of `A` is `∂φ/∂q`.
+    Holonomic,
+    /// `A(q) v = 0`, possibly nonholonomic.
+    Velocity,
+}
+
+/// `constraint(name) = expr` or `holonomic(name) = expr`.
+pub struct ConstraintDecl {
+    pub kind: ConstraintKind,
+    pub key: Ident,
+    pub name: Option<Ident>,
+    pub expr: Expr,
+}
+
+/// `force(x) = expr`.
+pub struct ForceDecl {
+    pub coordinate: Ident,
+    pub expr: Expr,
+}
+
+impl<'a> Model<'a> {
+    /// Parses the struct and its `#[dirac(...)]` attributes, recording every error in `cx`.
+    pub fn from_input(cx: &Ctxt, input: &'a DeriveInput) -> Model<'a> {
+        let mut model = Model {
+            ident: &input.ident,
+            vis: &input.vis,
+            params: Vec::new(),
+            coordinates: Vec::new(),
+            ports: Vec::new(),
+            lagrangian: None,
+            constraints: Vec::new(),
+            forces: Vec::new(),
+        };
+        if !input.generics.params.is_empty() {
+            cx.error_spanned_by(
+                &input.generics,
+                "a dirac model cannot be generic: its parameters are `f64` fields",
+            );
+        }
+        model.params = parse_params(cx, input);
+        for attr in input.attrs.iter().filter(|a| a.path().is_ident(DIRAC)) {
+            let parser = |stream: ParseStream| parse_items(cx, &mut model, stream);
+            if let Err(e) = attr.parse_args_with(parser) {
+                cx.syn_error(e);
+            }
+        }
+        model
+    }
+}
+
+fn parse_params(cx: &Ctxt, input: &DeriveInput) -> Vec<Ident> {
+    let fields = match &input.data {
+        Data::Struct(s) => &s.fields,
+        Data::Enum(e) => {
+            cx.error_spanned_by(
+                e.enum_token,
+                "a dirac model must be a struct whose fields are `f64` parameters",
+            );
+            return Vec::new();
+        }
+        Data::Union(u) => {
+            cx.error_spanned_by(
+                u.union_token,
+                "a dirac model must be a struct whose fields are `f64` parameters",
+            );
+            return Vec::new();
+        }
+    };
+    match fields {
+        Fields::Named(named) => named
+            .named
+            .iter()
+            .filter_map(|f| {
+                if !is_f64(&f.ty) {
+                    cx.error_spanned_by(
+                        &f.ty,
+                        "model parameters must have type `f64`: every field of a dirac model is a parameter",
+                    );
+                }
+                f.ident.clone()
+            })
+            .collect(),
+        Fields::Unnamed(unnamed) => {
+            cx.error_spanned_by(unnamed, "model parameters need names: use a struct with named `f64` fields");
+            Vec::new()
+        }
+        Fields::Unit => Vec::new(),
+    }
+}
+
+fn is_f64(ty: &Type) -> bool {
+    match ty {
+        Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),
+        Type::Group(g) => is_f64(&g.elem),
+        Type::Paren(p) => is_f64(&p.elem),
+        _ => false,
+    }
+}
+
+/// Parses `key ..., key ..., ...` inside one `#[dirac(...)]`.
+fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Result<()> {
+    while !input.is_empty() {
+        let key = input.call(Ident::parse_any)?;
+        match key.to_string().as_str() {
+            COORDINATES => parse_coordinates(model, input)?,
+            PORT | PORTS => {
+                let content;
+                syn::parenthesized!(content in input);
+                let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                model.ports.extend(names);
+            }
+            LAGRANGIAN => {
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                if model.lagrangian.is_some() {
+                    cx.error_spanned_by(&key, "duplicate `lagrangian`: a model has one Lagrangian");
+                } else {
+                    model.lagrangian = Some((key, expr));
+                }
+            }
+            CONSTRAINT | HOLONOMIC => {
+                let kind = if key == HOLONOMIC {
+                    ConstraintKind::Holonomic
+                } else {
+                    ConstraintKind::Velocity
+                };
+                let name = parse_optional_name(input)?;
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                model.constraints.push(ConstraintDecl {
+                    kind,
+                    key,
+                    name,
+                    expr,
+                });
+            }
+            FORCE => {
+                let content;
+                syn::parenthesized!(content in input);
+                let coordinate: Ident = content.parse()?;
+                if !content.is_empty() {
+                    return Err(content.error("expected one coordinate: `force(x) = expr`"));
+                }
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                model.forces.push(ForceDecl { coordinate, expr });
+            }
+            other => {
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown dirac attribute `{other}`; expected one of: {}",
+                        MODEL_KEYS.join(", ")
+                    ),
+                ));
+            }
+        }
+        if input.is_empty() {
+            break;
+        }
+        input.parse::<Token![,]>()?;
+    }
+    Ok(())
+}
+
+fn parse_coordinates(model: &mut Model<'_>, input: ParseStream) -> syn::Result<()> {
+    let content;
+    let paren = syn::parenthesized!(content in input);
+    let decls = Punctuated::<CoordinateDecl, Token![,]>::parse_terminated_with(&content, |s| {
+        let name: Ident = s.parse()?;
+        let velocity = if s.peek(Token![=>]) {
+            s.parse::<Token![=>]>()?;
+            s.parse()?
+        } else {
+            Ident::new(&format!("v_{name}"), name.span())
+        };
+        Ok(CoordinateDecl { name, velocity })
+    })?;
+    if decls.is_empty() {
+        return Err(syn::Error::new(
+            paren.span.join(),
+            "`coordinates()` is empty: write `coordinates(x => v, ...)`",
+        ));
+    }
+    model.coordinates.extend(decls);
+    Ok(())
+}
+
+fn parse_optional_name(input: ParseStream) -> syn::Result<Option<Ident>> {
+    if !input.peek(syn::token::Paren) {
+        return Ok(None);
+    }
+    let content;
+    syn::parenthesized!(content in input);
+    let name: Ident = content.parse()?;
+    if !content.is_empty() {
+        return Err(content.error("expected one name: `constraint(name) = expr`"));
+    }
+    Ok(Some(name))
+}

@@ -1,0 +1,328 @@
+//! Lowering model expressions from Rust syntax into the expression graph.
+//!
+//! Each expression is lowered in a context that says which symbols it may use (a holonomic
+//! constraint may not use velocities, no constraint may use time). Every unsupported construct
+//! and unknown name is reported at its own tokens, and lowering goes on to find the next one.
+
+use std::collections::HashMap;
+
+use syn::{BinOp, Expr, ExprLit, Lit, UnOp};
+
+use crate::ctxt::Ctxt;
+use crate::suggest::did_you_mean;
+use crate::sym::{Func, Graph, Id};
+
+/// What a name in a model expression stands for.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Role {
+    Parameter,
+    Coordinate,
+    Velocity,
+    Time,
+}
+
+/// The names an expression may refer to and the symbols they lower to.
+pub struct Scope {
+    names: HashMap<String, (Id, Role)>,
+    ordered: Vec<String>,
+}
+
+impl Scope {
+    pub fn new() -> Scope {
+        Scope {
+            names: HashMap::new(),
+            ordered: Vec::new(),
+        }
+    }
+
+    pub fn declare(&mut self, name: String, id: Id, role: Role) {
+        if !self.names.contains_key(&name) {
+            self.ordered.push(name.clone());
+            self.names.insert(name, (id, role));
+        }
+    }
+}
+
+/// Which symbols the expression being lowered may use, and how to name it in messages.
+#[derive(Clone, Copy)]
+pub struct Context<'a> {
+    /// For example "the Lagrangian" or "constraint `rod`".
+    pub what: &'a str,
+    pub velocities: bool,
+    pub time: bool,
+}
+
+/// The methods and functions model expressions support, for error messages.
+pub const SUPPORTED: &str = "model expressions support numbers, the model's parameters, \
+coordinates, velocities and time `t`, `+ - * /`, unary `-`, parentheses, `.powi(i32)`, `.powf(e)`, \
+`.sqrt()`, `.sin()`, `.cos()`, `.tan()`, `.exp()`, `.ln()`, `.sinh()`, `.cosh()`, `.tanh()`, \
+`.atan()`, `y.atan2(x)`, the same as functions (`sin(x)`, `atan2(y, x)`, `powi(x, 2)`), and `PI`";
+
+/// Lowers expressions of one model into one graph.
+pub struct Lowerer<'a> {
+    pub cx: &'a Ctxt,
+    pub graph: &'a mut Graph,
+    pub scope: &'a Scope,
+}
+
+impl Lowerer<'_> {
+    /// The graph of `expr`, or `None` after recording every error in it.
+    pub fn lower(&mut self, expr: &Expr, ctx: Context<'_>) -> Option<Id> {
+        match expr {
+            Expr::Lit(lit) => self.literal(lit),
+            Expr::Path(path) => self.name(path, ctx),
+            Expr::Paren(p) => self.lower(&p.expr, ctx),
+            Expr::Group(g) => self.lower(&g.expr, ctx),
+            Expr::Unary(u) => match u.op {
+                UnOp::Neg(_) => self.lower(&u.expr, ctx).map(|x| self.graph.neg(x)),
+                _ => self.unsupported(expr, "this unary operator"),
+            },
+            Expr::Binary(b) => {
+                let lhs = self.lower(&b.left, ctx);
+                let rhs = self.lower(&b.right, ctx);
+                let op = match b.op {
+                    BinOp::Add(_) | BinOp::Sub(_) | BinOp::Mul(_) | BinOp::Div(_) => b.op,
+                    _ => {
+                        let op = quote::ToTokens::to_token_stream(&b.op);
+                        let message = format!("operator `{op}` is not supported; {SUPPORTED}");
+                        self.cx.error_spanned_by(b.op, message);
+                        return None;
+                    }
+                };
+                let (l, r) = (lhs?, rhs?);
+                Some(match op {
+                    BinOp::Add(_) => self.graph.add2(l, r),
+                    BinOp::Sub(_) => self.graph.sub(l, r),
+                    BinOp::Mul(_) => self.graph.mul2(l, r),
+                    _ => self.graph.div(l, r),
+                })
+            }
+            Expr::MethodCall(call) => {
+                if let Some(turbofish) = &call.turbofish {
+                    self.cx.error_spanned_by(
+                        turbofish,
+                        "type arguments are not supported in model expressions",
+                    );
+                    return None;
+                }
+                let args: Vec<&Expr> = call.args.iter().collect();
+                self.function(&call.method, &call.receiver, &args, ctx)
+            }
+            Expr::Call(call) => self.free_function(call, ctx),
+            _ => self.unsupported(expr, "this expression"),
+        }
+    }
+
+    fn unsupported(&self, at: &dyn quote::ToTokens, what: &str) -> Option<Id> {
+        self.cx.error_spanned_by(
+            at.to_token_stream(),
+            format!("{what} is not supported; {SUPPORTED}"),
+        );
+        None
+    }
+
+    fn literal(&mut self, lit: &ExprLit) -> Option<Id> {
+        let value = match &lit.lit {
+            Lit::Float(f) if matches!(f.suffix(), "" | "f64") => f.base10_parse::<f64>().ok(),
+            Lit::Int(i) if matches!(i.suffix(), "" | "f64") => i.base10_parse::<f64>().ok(),
+            _ => None,
+        };
+        match value {
+            Some(x) => Some(self.graph.num(x)),
+            None => {
+                self.cx.error_spanned_by(
+                    lit,
+                    "model expressions take `f64` numbers such as `2`, `0.5` or `1e-3`",
+                );
+                None
+            }
+        }
+    }
+
+    fn name(&mut self, path: &syn::ExprPath, ctx: Context<'_>) -> Option<Id> {
+        if let Some(value) = constant(&path.path) {
+            if path.path.segments.len() > 1
+                || !self.scope.names.contains_key(&path_name(&path.path))
+            {
+                return Some(self.graph.num(value));
+            }
+        }
+        let Some(ident) = path.path.get_ident() else {
+            return self.unsupported(path, "this path");
+        };
+        let name = ident.to_string();
+        let Some(&(id, role)) = self.scope.names.get(&name) else {
+            let hint = did_you_mean(&name, self.scope.ordered.iter().map(String::as_str));
+            self.cx.error_spanned_by(
+                ident,
+                format!(
+                    "unknown name `{name}` in {}{hint}\nmodel expressions may use the struct's `f64` fields, \
+                     the coordinates, their velocities, and time `t`",
+                    ctx.what
+                ),
+            );
+            return None;
+        };
+        match role {
+            Role::Velocity if !ctx.velocities => {
+                self.cx.error_spanned_by(
+                    ident,
+                    format!(
+                        "{} depends on coordinates only, but `{name}` is a velocity; \
+                         write a constraint on velocities as `constraint = ...`",
+                        ctx.what
+                    ),
+                );
+                None
+            }
+            Role::Time if !ctx.time => {
+                self.cx.error_spanned_by(
+                    ident,
+                    format!(
+                        "{} cannot depend on time `t`: constraints are `A(q) v = 0` and `φ(q) = 0`",
+                        ctx.what
+                    ),
+                );
+                None
+            }
+            _ => Some(id),
+        }
+    }
+
+    fn free_function(&mut self, call: &syn::ExprCall, ctx: Context<'_>) -> Option<Id> {
+        let Expr::Path(path) = &*call.func else {
+            return self.unsupported(&call.func, "calling this");
+        };
+        let segments = &path.path.segments;
+        let last = segments.last().expect("a path has a segment");
+        let qualified_ok =
+            segments.len() == 1 || (segments.len() == 2 && segments[0].ident == "f64");
+        if !qualified_ok {
+            return self.unsupported(path, "this function");
+        }
+        let args: Vec<&Expr> = call.args.iter().collect();
+        let Some((receiver, rest)) = args.split_first() else {
+            self.cx
+                .error_spanned_by(call, format!("`{}` needs an argument", last.ident));
+            return None;
+        };
+        self.function(&last.ident, receiver, rest, ctx)
+    }
+
+    /// `receiver.method(args)`, also reached from `method(receiver, args)`.
+    fn function(
+        &mut self,
+        method: &syn::Ident,
+        receiver: &Expr,
+        args: &[&Expr],
+        ctx: Context<'_>,
+    ) -> Option<Id> {
+        let name = method.to_string();
+        let arity = |n: usize, cx: &Ctxt| {
+            if args.len() == n {
+                true
+            } else {
+                cx.error_spanned_by(
+                    method,
+                    format!("`{name}` takes {n} argument(s) besides its receiver"),
+                );
+                false
+            }
+        };
+        if name == "powi" {
+            let x = self.lower(receiver, ctx);
+            if !arity(1, self.cx) {
+                return None;
+            }
+            let k = integer(args[0]);
+            if k.is_none() {
+                self.cx.error_spanned_by(
+                    args[0],
+                    "`powi` takes an integer literal exponent; use `.powf(e)` for others",
+                );
+            }
+            return Some(self.graph.powi(x?, k?));
+        }
+        if let Some(f) = Func::from_name(&name) {
+            let x = self.lower(receiver, ctx);
+            return if arity(0, self.cx) {
+                Some(self.graph.call(f, x?))
+            } else {
+                None
+            };
+        }
+        if name == "powf" || name == "atan2" {
+            let x = self.lower(receiver, ctx);
+            if !arity(1, self.cx) {
+                return None;
+            }
+            let y = self.lower(args[0], ctx);
+            let (x, y) = (x?, y?);
+            return Some(if name == "powf" {
+                self.graph.powf(x, y)
+            } else {
+                self.graph.atan2(x, y)
+            });
+        }
+        let _ = self.lower(receiver, ctx);
+        self.cx.error_spanned_by(
+            method,
+            format!("unsupported function `{name}`; {SUPPORTED}"),
+        );
+        None
+    }
+}
+
+fn integer(expr: &Expr) -> Option<i32> {
+    match expr {
+        Expr::Lit(ExprLit {
+            lit: Lit::Int(i), ..
+        }) => i.base10_parse().ok(),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => integer(&u.expr).map(|k: i32| -k),
+        Expr::Paren(p) => integer(&p.expr),
+        Expr::Group(g) => integer(&g.expr),
+        _ => None,
+    }
+}
+
+fn path_name(path: &syn::Path) -> String {
+    path.segments
+        .last()
+        .map(|s| s.ident.to_string())
+        .unwrap_or_default()
+}
+
+/// `PI`, `TAU`, `std::f64::consts::PI` and friends.
+fn constant(path: &syn::Path) -> Option<f64> {
+    let segments: Vec<String> = path.segments.iter().map(|s| s.ident.to_string()).collect();
+    let (last, prefix) = segments.split_last()?;
+    let value = match last.as_str() {
+        "PI" => std::f64::consts::PI,
+        "TAU" => std::f64::consts::TAU,
+        "E" if !prefix.is_empty() => std::f64::consts::E,
+        "FRAC_PI_2" if !prefix.is_empty() => std::f64::consts::FRAC_PI_2,
+        "SQRT_2" if !prefix.is_empty() => std::f64::consts::SQRT_2,
+        _ => return None,
+    };
+    let prefix_ok = prefix.is_empty() || prefix.last().is_some_and(|s| s == "consts");
+    prefix_ok.then_some(value)
+}
+
+/// The additive terms of an expression with their signs, looking through `+`, `-`,
+/// parentheses and unary minus: `a - (b + c)` gives `[(a, +), (b, -), (c, -)]`.
+pub fn additive_terms(expr: &Expr, negated: bool, out: &mut Vec<(Expr, bool)>) {
+    match expr {
+        Expr::Binary(b) if matches!(b.op, BinOp::Add(_)) => {
+            additive_terms(&b.left, negated, out);
+            additive_terms(&b.right, negated, out);
+        }
+        Expr::Binary(b) if matches!(b.op, BinOp::Sub(_)) => {
+            additive_terms(&b.left, negated, out);
+            additive_terms(&b.right, !negated, out);
+        }
+        Expr::Paren(p) => additive_terms(&p.expr, negated, out),
+        Expr::Group(g) => additive_terms(&g.expr, negated, out),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => additive_terms(&u.expr, !negated, out),
+        _ => out.push((expr.clone(), negated)),
+    }
+}

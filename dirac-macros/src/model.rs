@@ -1,0 +1,304 @@
+//! The symbolic form of a checked model: its Lagrangian, forces, constraint rows and
+//! holonomic constraints as graph expressions over named symbols.
+
+use syn::Ident;
+
+use crate::ast::{ConstraintKind, Model};
+use crate::ctxt::Ctxt;
+use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
+use crate::sym::{Graph, Id};
+use crate::symbol::TIME;
+
+/// What a graph symbol of a model stands for.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum SymKind {
+    Parameter(usize),
+    Q(usize),
+    V(usize),
+    P(usize),
+    Lambda(usize),
+    Time,
+    /// The effort at a port, only in the equations shown to people.
+    PortForce(usize),
+}
+
+/// A model as expressions in one graph. Rows of `a` are holonomic constraints first.
+pub struct SymModel {
+    pub graph: Graph,
+    pub kinds: Vec<SymKind>,
+    pub params: Vec<Ident>,
+    pub coordinates: Vec<Ident>,
+    pub velocities: Vec<Ident>,
+    pub ports: Vec<usize>,
+    pub q: Vec<Id>,
+    pub v: Vec<Id>,
+    pub p: Vec<Id>,
+    pub lambda: Vec<Id>,
+    pub time: Id,
+    pub lagrangian: Id,
+    pub force: Vec<Id>,
+    /// `A(q)`, `m × n`.
+    pub a: Vec<Vec<Id>>,
+    /// `φ(q)`, one per holonomic row.
+    pub phi: Vec<Id>,
+    pub constraint_names: Vec<String>,
+}
+
+impl SymModel {
+    pub fn n(&self) -> usize {
+        self.q.len()
+    }
+
+    pub fn m(&self) -> usize {
+        self.a.len()
+    }
+
+    pub fn h(&self) -> usize {
+        self.phi.len()
+    }
+
+    /// Creates a symbol and records what it stands for.
+    fn symbol(&mut self, name: &str, kind: SymKind) -> Id {
+        let id = self.graph.symbol(name);
+        let sym = self.graph.as_sym(id).expect("a fresh symbol") as usize;
+        if self.kinds.len() <= sym {
+            self.kinds.resize(sym + 1, SymKind::Time);
+        }
+        self.kinds[sym] = kind;
+        id
+    }
+
+    /// What symbol `sym` stands for.
+    pub fn kind(&self, sym: u32) -> SymKind {
+        self.kinds[sym as usize]
+    }
+
+    /// Builds the symbolic model, recording every expression error in `cx`.
+    pub fn build(cx: &Ctxt, model: &Model<'_>) -> Option<SymModel> {
+        let mut graph = Graph::new();
+        let zero = graph.num(0.0);
+        let mut sm = SymModel {
+            graph,
+            kinds: Vec::new(),
+            params: model.params.clone(),
+            coordinates: model.coordinates.iter().map(|c| c.name.clone()).collect(),
+            velocities: model
+                .coordinates
+                .iter()
+                .map(|c| c.velocity.clone())
+                .collect(),
+            ports: Vec::new(),
+            q: Vec::new(),
+            v: Vec::new(),
+            p: Vec::new(),
+            lambda: Vec::new(),
+            time: zero,
+            lagrangian: zero,
+            force: Vec::new(),
+            a: Vec::new(),
+            phi: Vec::new(),
+            constraint_names: Vec::new(),
+        };
+        let scope = sm.declare_symbols();
+        sm.ports = model
+            .ports
+            .iter()
+            .filter_map(|p| sm.coordinates.iter().position(|c| c == p))
+            .collect();
+        sm.force = vec![zero; sm.n()];
+        let mut lw = Lowerer {
+            cx,
+            graph: &mut sm.graph,
+            scope: &scope,
+        };
+        let all = Context {
+            what: "the Lagrangian",
+            velocities: true,
+            time: true,
+        };
+        let lagrangian = model
+            .lagrangian
+            .as_ref()
+            .and_then(|(_, e)| lw.lower(e, all));
+        for f in &model.forces {
+            let what = format!("the force on `{}`", f.coordinate);
+            let lowered = lw.lower(&f.expr, Context { what: &what, ..all });
+            let index = sm.coordinates.iter().position(|c| *c == f.coordinate);
+            if let (Some(x), Some(i)) = (lowered, index) {
+                sm.force[i] = x;
+            }
+        }
+        drop(lw);
+        sm.lower_constraints(cx, model, &scope);
+        let lagrangian = lagrangian?;
+        sm.lagrangian = lagrangian;
+        (!cx.has_errors()).then_some(sm)
+    }
+
+    fn declare_symbols(&mut self) -> Scope {
+        let mut scope = Scope::new();
+        for (i, p) in self.params.clone().iter().enumerate() {
+            let id = self.symbol(&p.to_string(), SymKind::Parameter(i));
+            scope.declare(p.to_string(), id, Role::Parameter);
+        }
+        for (i, c) in self.coordinates.clone().iter().enumerate() {
+            let id = self.symbol(&c.to_string(), SymKind::Q(i));
+            self.q.push(id);
+            scope.declare(c.to_string(), id, Role::Coordinate);
+        }
+        for (i, v) in self.velocities.clone().iter().enumerate() {
+            let id = self.symbol(&v.to_string(), SymKind::V(i));
+            self.v.push(id);
+            scope.declare(v.to_string(), id, Role::Velocity);
+        }
+        for (i, c) in self.coordinates.clone().iter().enumerate() {
+            let id = self.symbol(&format!("p:{c}"), SymKind::P(i));
+            self.p.push(id);
+        }
+        self.time = self.symbol(TIME, SymKind::Time);
+        scope.declare(TIME.to_owned(), self.time, Role::Time);
+        scope
+    }
+
+    /// Lowers holonomic constraints (rows `∂φ/∂q`) first, then velocity constraints.
+    fn lower_constraints(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) {
+        let kinds = [ConstraintKind::Holonomic, ConstraintKind::Velocity];
+        let mut counters = [0usize; 2];
+        let mut ordered = Vec::new();
+        for (k, kind) in kinds.iter().enumerate() {
+            for c in model.constraints.iter().filter(|c| c.kind == *kind) {
+                let name = match &c.name {
+                    Some(n) => n.to_string(),
+                    None => format!("{}{}", c.key, counters[k]),
+                };
+                counters[k] += 1;
+                ordered.push((c, name));
+            }
+        }
+        for (c, name) in ordered {
+            let what = format!("constraint `{name}`");
+            let row = match c.kind {
+                ConstraintKind::Holonomic => self.holonomic_row(cx, &c.expr, &what, scope),
+                ConstraintKind::Velocity => self.velocity_row(cx, &c.expr, &what, scope),
+            };
+            if let Some(row) = row {
+                self.a.push(row);
+                self.constraint_names.push(name);
+            }
+        }
+        for (j, name) in self.constraint_names.clone().iter().enumerate() {
+            let id = self.symbol(&format!("lambda:{name}"), SymKind::Lambda(j));
+            self.lambda.push(id);
+        }
+    }
+
+    fn holonomic_row(
+        &mut self,
+        cx: &Ctxt,
+        expr: &syn::Expr,
+        what: &str,
+        scope: &Scope,
+    ) -> Option<Vec<Id>> {
+        let ctx = Context {
+            what,
+            velocities: false,
+            time: false,
+        };
+        let phi = Lowerer {
+            cx,
+            graph: &mut self.graph,
+            scope,
+        }
+        .lower(expr, ctx)?;
+        let row: Vec<Id> = self
+            .q
+            .clone()
+            .iter()
+            .map(|q| self.graph.diff(phi, *q))
+            .collect();
+        if row.iter().all(|d| self.graph.is_zero(*d)) {
+            cx.error_spanned_by(expr, format!("{what} does not depend on any coordinate"));
+            return None;
+        }
+        self.phi.push(phi);
+        Some(row)
+    }
+
+    /// Extracts the row `a(q)` of `a(q) · v`, checking every term is linear in the velocities.
+    fn velocity_row(
+        &mut self,
+        cx: &Ctxt,
+        expr: &syn::Expr,
+        what: &str,
+        scope: &Scope,
+    ) -> Option<Vec<Id>> {
+        let ctx = Context {
+            what,
+            velocities: true,
+            time: false,
+        };
+        let mut terms = Vec::new();
+        additive_terms(expr, false, &mut terms);
+        let mut lowered = Vec::new();
+        let mut ok = true;
+        for (term, negated) in &terms {
+            let Some(x) = (Lowerer {
+                cx,
+                graph: &mut self.graph,
+                scope,
+            })
+            .lower(term, ctx) else {
+                ok = false;
+                continue;
+            };
+            if let Some(problem) = self.linearity_problem(x) {
+                cx.error_spanned_by(
+                    term,
+                    format!("{what} must be linear in the velocities, `A(q) v = 0`, but this term {problem}"),
+                );
+                ok = false;
+            }
+            lowered.push(if *negated { self.graph.neg(x) } else { x });
+        }
+        if !ok {
+            return None;
+        }
+        let c = self.graph.add(&lowered);
+        let row: Vec<Id> = self
+            .v
+            .clone()
+            .iter()
+            .map(|v| self.graph.diff(c, *v))
+            .collect();
+        if row.iter().all(|d| self.graph.is_zero(*d)) {
+            cx.error_spanned_by(
+                expr,
+                format!("{what} has no velocity in it; constraints are `A(q) v = 0`"),
+            );
+            return None;
+        }
+        Some(row)
+    }
+
+    /// Why a term is not `a(q) v_i`, if it is not.
+    fn linearity_problem(&mut self, term: Id) -> Option<&'static str> {
+        let velocities: Vec<Id> = self.v.clone();
+        let syms: Vec<u32> = velocities
+            .iter()
+            .filter_map(|v| self.graph.as_sym(*v))
+            .collect();
+        if !syms.iter().any(|s| self.graph.depends_on(term, *s)) {
+            return Some("has no velocity in it");
+        }
+        for v in &velocities {
+            let d = self.graph.diff(term, *v);
+            if syms.iter().any(|s| self.graph.depends_on(d, *s)) {
+                return Some("is not linear in the velocities");
+            }
+        }
+        let zero = self.graph.num(0.0);
+        let at_rest = syms.iter().map(|s| (*s, zero)).collect();
+        let rest = self.graph.substitute(term, &at_rest);
+        (!self.graph.is_zero(rest)).then_some("has a part without a velocity")
+    }
+}

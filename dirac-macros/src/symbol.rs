@@ -1,0 +1,23 @@
+//! The keywords of `#[dirac(...)]` attributes, in one place.
+
+/// The attribute path.
+pub const DIRAC: &str = "dirac";
+/// `coordinates(x => v, ...)`.
+pub const COORDINATES: &str = "coordinates";
+/// `port(x, ...)`, also spelled `ports(...)`.
+pub const PORT: &str = "port";
+/// Plural spelling of [`PORT`].
+pub const PORTS: &str = "ports";
+/// `lagrangian = expr`.
+pub const LAGRANGIAN: &str = "lagrangian";
+/// `constraint = expr` or `constraint(name) = expr`: a velocity constraint `A(q) v = 0`.
+pub const CONSTRAINT: &str = "constraint";
+/// `holonomic = expr` or `holonomic(name) = expr`: a position constraint `φ(q) = 0`.
+pub const HOLONOMIC: &str = "holonomic";
+/// `force(x) = expr`: the external force on coordinate `x`.
+pub const FORCE: &str = "force";
+/// The name of time in model expressions.
+pub const TIME: &str = "t";
+
+/// Every key a `#[dirac(...)]` attribute of a model accepts, for error messages.
+pub const MODEL_KEYS: &[&str] = &[COORDINATES, PORT, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE];

@@ -1,0 +1,67 @@
+//! Seeded random states and a finite-difference oracle for generated derivatives.
+
+use dirac::Storage;
+use dirac::prelude::*;
+use nalgebra::DefaultAllocator;
+
+/// SplitMix64: a small, seeded generator so every run checks the same states.
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed)
+    }
+
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `[lo, hi)`.
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        let unit = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        lo + (hi - lo) * unit
+    }
+}
+
+/// A random flat state with every component in `[-1, 1)`.
+pub fn random_y<M: LagrangeDirac>(rng: &mut Rng) -> VecY<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    VecY::<M>::from_fn(|_, _| rng.uniform(-1.0, 1.0))
+}
+
+/// Checks `jacobian` against central differences of `residual` at `trials` random states:
+/// every entry agrees to `1e-6` relative to the larger of the entry and 1.
+pub fn check_jacobian_by_differences<M: LagrangeDirac>(model: &M, seed: u64, trials: usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut rng = Rng::new(seed);
+    let ny = 3 * M::NQ + M::NC;
+    for _ in 0..trials {
+        let t = rng.uniform(0.0, 2.0);
+        let y = random_y::<M>(&mut rng);
+        let jac = model.jacobian_matrix(t, &y);
+        for c in 0..ny {
+            let h = 1e-6 * y[c].abs().max(1.0);
+            let (mut plus, mut minus) = (y.clone(), y.clone());
+            plus[c] += h;
+            minus[c] -= h;
+            let fd =
+                (model.residual_vector(t, &plus) - model.residual_vector(t, &minus)) / (2.0 * h);
+            for r in 0..ny {
+                let (exact, approx) = (jac[(r, c)], fd[r]);
+                let tol = 1e-6 * exact.abs().max(1.0);
+                assert!(
+                    (exact - approx).abs() <= tol,
+                    "∂f{r}/∂y{c}: generated {exact}, central difference {approx} at y = {y:?}, t = {t}"
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,166 @@
+//! The shared zoo of test models: the paper's primitive systems and chain, a pendulum, a
+//! rolling disk, forced and degenerate models, an 8-link pendulum, and one model that uses
+//! every supported function. Integration tests, examples and benchmarks all use these.
+
+#![allow(dead_code)]
+
+use dirac::prelude::*;
+
+/// Primitive system 1 of the paper (Fig. 2): wall —k1— m1 —k2— m2, port at x2.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => v1, x2 => v2), port(x2))]
+#[dirac(lagrangian = 0.5 * m1 * v1 * v1 + 0.5 * m2 * v2 * v2
+                   - 0.5 * k1 * x1 * x1 - 0.5 * k2 * (x2 - x1).powi(2))]
+pub struct Primitive1 {
+    pub m1: f64,
+    pub m2: f64,
+    pub k1: f64,
+    pub k2: f64,
+}
+
+/// Primitive system 2 of the paper: x̄2 —k3— m3, port at x̄2. Degenerate: no kinetic term in v̄2.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x2bar => v2bar, x3 => v3), port(x2bar))]
+#[dirac(lagrangian = 0.5 * m3 * v3 * v3 - 0.5 * k3 * (x3 - x2bar).powi(2))]
+pub struct Primitive2 {
+    pub m3: f64,
+    pub k3: f64,
+}
+
+/// The paper's Fig. 1 as one model: wall —k1— m1 —k2— m2 —k3— m3.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => v1, x2 => v2, x3 => v3))]
+#[dirac(lagrangian = 0.5 * (m1 * v1 * v1 + m2 * v2 * v2 + m3 * v3 * v3)
+                   - 0.5 * (k1 * x1 * x1 + k2 * (x2 - x1).powi(2) + k3 * (x3 - x2).powi(2)))]
+pub struct MassSpringChain {
+    pub m1: f64,
+    pub m2: f64,
+    pub m3: f64,
+    pub k1: f64,
+    pub k2: f64,
+    pub k3: f64,
+}
+
+/// A planar pendulum in Cartesian coordinates with the holonomic constraint x² + y² = l².
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(holonomic(rod) = x * x + y * y - l * l)]
+pub struct Pendulum {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+}
+
+/// A vertical disk rolling without slipping: ẋ = r cos φ θ̇, ẏ = r sin φ θ̇ (nonholonomic).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v_x, y => v_y, theta => v_theta, phi => v_phi))]
+#[dirac(lagrangian = 0.5 * m * (v_x * v_x + v_y * v_y) + 0.5 * i_roll * v_theta * v_theta
+                   + 0.5 * i_turn * v_phi * v_phi)]
+#[dirac(constraint(roll_x) = v_x - r * phi.cos() * v_theta)]
+#[dirac(constraint(roll_y) = v_y - r * sin(phi) * v_theta)]
+pub struct RollingDisk {
+    pub m: f64,
+    pub r: f64,
+    pub i_roll: f64,
+    pub i_turn: f64,
+}
+
+/// A damped oscillator driven by a time-dependent force.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+#[dirac(force(x) = -c * v + a * (w * t).sin())]
+pub struct DrivenOscillator {
+    pub m: f64,
+    pub k: f64,
+    pub c: f64,
+    pub a: f64,
+    pub w: f64,
+}
+
+/// An L-C loop with charges as coordinates: a degenerate Lagrangian (the capacitor's charge has
+/// no inductance) closed by Kirchhoff's current law `i_l − i_c = 0` as a velocity constraint.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(q_l => i_l, q_c => i_c))]
+#[dirac(lagrangian = 0.5 * ind * i_l * i_l - 0.5 * q_c * q_c / cap)]
+#[dirac(constraint(kcl) = i_l - i_c)]
+pub struct LcCircuit {
+    pub ind: f64,
+    pub cap: f64,
+}
+
+/// An 8-link planar pendulum in absolute angle coordinates (θ from the downward vertical),
+/// equal masses m at the joints and equal lengths l:
+/// `L = ½ Σ_ij (8 − max(i, j)) m l² ω_i ω_j cos(θ_i − θ_j) + g Σ_i (8 − i) m l cos θ_i`
+/// (0-based i, j), written out term by term.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(th1 => w1, th2 => w2, th3 => w3, th4 => w4, th5 => w5, th6 => w6, th7 => w7, th8 => w8))]
+#[dirac(lagrangian = 0.5 * 8.0 * m * l * l * w1 * w1
+        + 0.5 * 7.0 * m * l * l * w2 * w2
+        + 0.5 * 6.0 * m * l * l * w3 * w3
+        + 0.5 * 5.0 * m * l * l * w4 * w4
+        + 0.5 * 4.0 * m * l * l * w5 * w5
+        + 0.5 * 3.0 * m * l * l * w6 * w6
+        + 0.5 * 2.0 * m * l * l * w7 * w7
+        + 0.5 * 1.0 * m * l * l * w8 * w8
+        + 7.0 * m * l * l * w1 * w2 * (th1 - th2).cos()
+        + 6.0 * m * l * l * w1 * w3 * (th1 - th3).cos()
+        + 5.0 * m * l * l * w1 * w4 * (th1 - th4).cos()
+        + 4.0 * m * l * l * w1 * w5 * (th1 - th5).cos()
+        + 3.0 * m * l * l * w1 * w6 * (th1 - th6).cos()
+        + 2.0 * m * l * l * w1 * w7 * (th1 - th7).cos()
+        + 1.0 * m * l * l * w1 * w8 * (th1 - th8).cos()
+        + 6.0 * m * l * l * w2 * w3 * (th2 - th3).cos()
+        + 5.0 * m * l * l * w2 * w4 * (th2 - th4).cos()
+        + 4.0 * m * l * l * w2 * w5 * (th2 - th5).cos()
+        + 3.0 * m * l * l * w2 * w6 * (th2 - th6).cos()
+        + 2.0 * m * l * l * w2 * w7 * (th2 - th7).cos()
+        + 1.0 * m * l * l * w2 * w8 * (th2 - th8).cos()
+        + 5.0 * m * l * l * w3 * w4 * (th3 - th4).cos()
+        + 4.0 * m * l * l * w3 * w5 * (th3 - th5).cos()
+        + 3.0 * m * l * l * w3 * w6 * (th3 - th6).cos()
+        + 2.0 * m * l * l * w3 * w7 * (th3 - th7).cos()
+        + 1.0 * m * l * l * w3 * w8 * (th3 - th8).cos()
+        + 4.0 * m * l * l * w4 * w5 * (th4 - th5).cos()
+        + 3.0 * m * l * l * w4 * w6 * (th4 - th6).cos()
+        + 2.0 * m * l * l * w4 * w7 * (th4 - th7).cos()
+        + 1.0 * m * l * l * w4 * w8 * (th4 - th8).cos()
+        + 3.0 * m * l * l * w5 * w6 * (th5 - th6).cos()
+        + 2.0 * m * l * l * w5 * w7 * (th5 - th7).cos()
+        + 1.0 * m * l * l * w5 * w8 * (th5 - th8).cos()
+        + 2.0 * m * l * l * w6 * w7 * (th6 - th7).cos()
+        + 1.0 * m * l * l * w6 * w8 * (th6 - th8).cos()
+        + 1.0 * m * l * l * w7 * w8 * (th7 - th8).cos()
+        + 8.0 * m * g * l * th1.cos()
+        + 7.0 * m * g * l * th2.cos()
+        + 6.0 * m * g * l * th3.cos()
+        + 5.0 * m * g * l * th4.cos()
+        + 4.0 * m * g * l * th5.cos()
+        + 3.0 * m * g * l * th6.cos()
+        + 2.0 * m * g * l * th7.cos()
+        + 1.0 * m * g * l * th8.cos())]
+pub struct Pendulum8 {
+    pub m: f64,
+    pub l: f64,
+    pub g: f64,
+}
+
+/// A model that uses every supported function and spelling, with arguments kept in their
+/// domains for any state, so its generated derivatives can be checked everywhere.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(a => va, b => vb, c => vc))]
+#[dirac(lagrangian = 0.5 * m * (1.0 + 0.25 * a.sin().powi(2)) * va * va
+                   + 0.5 * m * vb * vb / (1.0 + c * c) + 0.5 * (2.0 + vc.tanh()) * vc * vc
+                   - k * (a.cos() + sqrt(1.0 + b * b) + (1.0 + a * a).ln() + b.exp() * 0.1)
+                   + k * atan2(a, 2.0 + b * b) + k * (0.5 * c).tan() + k * c.atan()
+                   + k * (a * b).sinh() * 0.1 + k * f64::cosh(0.5 * c) + (1.0 + b * b).powf(0.75)
+                   + (2.0 + a * a).powf(0.1 * b) + std::f64::consts::PI * k * (1.0 + c * c).powi(-2))]
+#[dirac(holonomic(link) = a * a + b - c.sin())]
+#[dirac(constraint(slide) = vb * a.cos() - vc * (1.0 + a * a))]
+#[dirac(force(a) = -k * va * (t * 0.5).cos())]
+#[dirac(force(c) = -k * vc.powi(3) + b / (1.0 + t * t))]
+pub struct AllFunctions {
+    pub m: f64,
+    pub k: f64,
+}
