@@ -44,15 +44,15 @@ extern crate self as dirac;
 
 pub use dirac_macros::LagrangeDirac;
 pub use dirac_runtime::{
-    Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatKK,
-    MatQQ, MatYY, ResidualBlocks, State, Storage, VecC, VecH, VecK, VecQ, VecY,
+    Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatKK, MatQQ, MatYY,
+    OperationCounts, ResidualBlocks, State, Storage, VecC, VecH, VecK, VecQ, VecY,
 };
 
 /// Everything a model file needs: `use dirac::prelude::*;`.
 pub mod prelude {
     pub use crate::{
-        Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ,
-        MatYY, ResidualBlocks, State, VecC, VecH, VecQ, VecY,
+        Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY,
+        ResidualBlocks, State, VecC, VecH, VecQ, VecY,
     };
 }
 
@@ -61,3 +61,8 @@ pub use dirac_runtime as runtime;
 
 #[doc(hidden)]
 pub use dirac_runtime::__private;
+
+/// The README's examples, compiled and run as doc tests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

@@ -7,9 +7,7 @@ use syn::punctuated::Punctuated;
 use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
-use crate::symbol::{
-    CONSTRAINT, COORDINATES, DIRAC, FORCE, HOLONOMIC, LAGRANGIAN, MODEL_KEYS, PORT, PORTS,
-};
+use crate::symbol::{CONSTRAINT, COORDINATES, DIRAC, FORCE, HOLONOMIC, LAGRANGIAN, MODEL_KEYS, PORT, PORTS};
 
 /// A model as written by the user.
 pub struct Model<'a> {
@@ -23,6 +21,9 @@ pub struct Model<'a> {
     pub lagrangian: Option<(Ident, Expr)>,
     pub constraints: Vec<ConstraintDecl>,
     pub forces: Vec<ForceDecl>,
+    /// Whether an attribute failed to parse, so items may be missing: later stages then skip
+    /// the rules that would only report consequences of the syntax error.
+    pub incomplete: bool,
 }
 
 /// `x => v`: a coordinate and the name of its velocity.
@@ -66,6 +67,7 @@ impl<'a> Model<'a> {
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
+            incomplete: false,
         };
         if !input.generics.params.is_empty() {
             cx.error_spanned_by(
@@ -78,6 +80,7 @@ impl<'a> Model<'a> {
             let parser = |stream: ParseStream| parse_items(cx, &mut model, stream);
             if let Err(e) = attr.parse_args_with(parser) {
                 cx.syn_error(e);
+                model.incomplete = true;
             }
         }
         model
@@ -155,20 +158,12 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 }
             }
             CONSTRAINT | HOLONOMIC => {
-                let kind = if key == HOLONOMIC {
-                    ConstraintKind::Holonomic
-                } else {
-                    ConstraintKind::Velocity
-                };
+                let kind =
+                    if key == HOLONOMIC { ConstraintKind::Holonomic } else { ConstraintKind::Velocity };
                 let name = parse_optional_name(input)?;
                 input.parse::<Token![=]>()?;
                 let expr: Expr = input.parse()?;
-                model.constraints.push(ConstraintDecl {
-                    kind,
-                    key,
-                    name,
-                    expr,
-                });
+                model.constraints.push(ConstraintDecl { kind, key, name, expr });
             }
             FORCE => {
                 let content;
@@ -184,10 +179,7 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             other => {
                 return Err(syn::Error::new(
                     key.span(),
-                    format!(
-                        "unknown dirac attribute `{other}`; expected one of: {}",
-                        MODEL_KEYS.join(", ")
-                    ),
+                    format!("unknown dirac attribute `{other}`; expected one of: {}", MODEL_KEYS.join(", ")),
                 ));
             }
         }

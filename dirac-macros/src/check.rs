@@ -40,10 +40,7 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
     let mut declare = |ident: &Ident, what: &'static str| {
         let name = ident.to_string();
         if name == TIME {
-            cx.error_spanned_by(
-                ident,
-                format!("`{TIME}` is reserved for time and cannot name a {what}"),
-            );
+            cx.error_spanned_by(ident, format!("`{TIME}` is reserved for time and cannot name a {what}"));
             return;
         }
         match seen.get(&name) {
@@ -78,20 +75,13 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
 
 /// Ports are declared coordinates, each listed once.
 fn check_ports(cx: &Ctxt, model: &Model<'_>) {
-    let coordinates: Vec<String> = model
-        .coordinates
-        .iter()
-        .map(|c| c.name.to_string())
-        .collect();
+    let coordinates: Vec<String> = model.coordinates.iter().map(|c| c.name.to_string()).collect();
     let mut seen = HashSet::new();
     for port in &model.ports {
         let name = port.to_string();
         if !coordinates.contains(&name) {
             let hint = did_you_mean(&name, coordinates.iter().map(String::as_str));
-            cx.error_spanned_by(
-                port,
-                format!("port `{name}` is not a coordinate of this model{hint}"),
-            );
+            cx.error_spanned_by(port, format!("port `{name}` is not a coordinate of this model{hint}"));
         } else if !seen.insert(name.clone()) {
             cx.error_spanned_by(port, format!("port `{name}` is listed twice"));
         }
@@ -100,11 +90,7 @@ fn check_ports(cx: &Ctxt, model: &Model<'_>) {
 
 /// Forces act on declared coordinates, one force expression per coordinate.
 fn check_forces(cx: &Ctxt, model: &Model<'_>) {
-    let coordinates: Vec<String> = model
-        .coordinates
-        .iter()
-        .map(|c| c.name.to_string())
-        .collect();
+    let coordinates: Vec<String> = model.coordinates.iter().map(|c| c.name.to_string()).collect();
     let mut seen = HashSet::new();
     for force in &model.forces {
         let name = force.coordinate.to_string();
@@ -117,9 +103,7 @@ fn check_forces(cx: &Ctxt, model: &Model<'_>) {
         } else if !seen.insert(name.clone()) {
             cx.error_spanned_by(
                 &force.coordinate,
-                format!(
-                    "a second `force({name})`: write the total force on `{name}` as one expression"
-                ),
+                format!("a second `force({name})`: write the total force on `{name}` as one expression"),
             );
         }
     }

@@ -4,12 +4,12 @@
 //! are differentiated as needed, then emitted with shared subexpressions bound once. Vectors
 //! are written whole; matrices only at their structurally nonzero entries.
 
-use proc_macro2::TokenStream;
+use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
 use crate::model::{SymKind, SymModel};
 use crate::sym::Id;
-use crate::sym::emit::{Assign, emit};
+use crate::sym::emit::{Assign, emit, op_count};
 
 /// An argument of a generated method.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -23,14 +23,7 @@ enum Arg {
 
 /// A `Vec` of assignments `out…[i] = e_i`, keeping all of them (a vector).
 fn vector(target: &TokenStream, values: &[Id]) -> Vec<Assign> {
-    values
-        .iter()
-        .enumerate()
-        .map(|(i, &value)| Assign {
-            target: quote! { #target[#i] },
-            value,
-        })
-        .collect()
+    values.iter().enumerate().map(|(i, &value)| Assign { target: quote! { #target[#i] }, value }).collect()
 }
 
 impl SymModel {
@@ -40,10 +33,8 @@ impl SymModel {
         for (i, row) in rows.iter().enumerate() {
             for (j, &value) in row.iter().enumerate() {
                 if !self.graph.is_zero(value) {
-                    out.push(Assign {
-                        target: quote! { #target[(#i, #j)] },
-                        value,
-                    });
+                    let (i, j) = (Literal::usize_unsuffixed(i), Literal::usize_unsuffixed(j));
+                    out.push(Assign { target: quote! { #target[(#i, #j)] }, value });
                 }
             }
         }
@@ -52,10 +43,7 @@ impl SymModel {
 
     /// `[[∂e_i/∂x_j]]`.
     fn jacobian_of(&mut self, exprs: &[Id], wrt: &[Id]) -> Vec<Vec<Id>> {
-        exprs
-            .iter()
-            .map(|&e| wrt.iter().map(|&x| self.graph.diff(e, x)).collect())
-            .collect()
+        exprs.iter().map(|&e| wrt.iter().map(|&x| self.graph.diff(e, x)).collect()).collect()
     }
 
     pub fn dl_dq(&mut self) -> Vec<Id> {
@@ -71,9 +59,7 @@ impl SymModel {
     /// `A(q) v`, one entry per constraint.
     fn a_v(&mut self) -> Vec<Id> {
         let rows = self.a.clone();
-        rows.iter()
-            .map(|row| self.dot(row, &self.v.clone()))
-            .collect()
+        rows.iter().map(|row| self.dot(row, &self.v.clone())).collect()
     }
 
     /// `A(q)ᵀ λ`, one entry per coordinate.
@@ -87,20 +73,14 @@ impl SymModel {
     }
 
     fn dot(&mut self, a: &[Id], b: &[Id]) -> Id {
-        let terms: Vec<Id> = a
-            .iter()
-            .zip(b)
-            .map(|(&x, &y)| self.graph.mul2(x, y))
-            .collect();
+        let terms: Vec<Id> = a.iter().zip(b).map(|(&x, &y)| self.graph.mul2(x, y)).collect();
         self.graph.add(&terms)
     }
 
     /// `ṗ = ∂L/∂q + F + Aᵀλ`.
     fn momentum_rate(&mut self) -> Vec<Id> {
         let (dl, atl, f) = (self.dl_dq(), self.at_lambda(), self.force.clone());
-        (0..self.n())
-            .map(|i| self.graph.add(&[dl[i], f[i], atl[i]]))
-            .collect()
+        (0..self.n()).map(|i| self.graph.add(&[dl[i], f[i], atl[i]])).collect()
     }
 
     /// The flat right-hand side in the slots of `y = (q, v, p, λ)`.
@@ -118,17 +98,13 @@ impl SymModel {
 
     /// The symbols of `y = (q, v, p, λ)` in order.
     fn y_symbols(&self) -> Vec<Id> {
-        [&self.q, &self.v, &self.p, &self.lambda]
-            .into_iter()
-            .flatten()
-            .copied()
-            .collect()
+        [&self.q, &self.v, &self.p, &self.lambda].into_iter().flatten().copied().collect()
     }
 
     /// The tokens that read symbol `sym` inside a method taking `args`.
     fn leaf(&self, sym: u32, flat: bool) -> TokenStream {
         let n = self.n();
-        let index = |base: usize, i: usize| base + i;
+        let index = |base: usize, i: usize| Literal::usize_unsuffixed(base + i);
         match self.kind(sym) {
             SymKind::Parameter(i) => {
                 let field = &self.params[i];
@@ -150,9 +126,18 @@ impl SymModel {
                 let k = index(3 * n, j);
                 quote! { y[#k] }
             }
-            SymKind::Q(i) => quote! { q[#i] },
-            SymKind::V(i) => quote! { v[#i] },
-            SymKind::Lambda(j) => quote! { lambda[#j] },
+            SymKind::Q(i) => {
+                let i = index(0, i);
+                quote! { q[#i] }
+            }
+            SymKind::V(i) => {
+                let i = index(0, i);
+                quote! { v[#i] }
+            }
+            SymKind::Lambda(j) => {
+                let j = index(0, j);
+                quote! { lambda[#j] }
+            }
             SymKind::Time => quote! { t },
             SymKind::PortForce(_) => unreachable!("port forces appear only in printed equations"),
         }
@@ -161,20 +146,14 @@ impl SymModel {
     /// Whether any assignment reads a symbol that argument `arg` provides.
     fn uses(&self, assigns: &[Assign], arg: Arg) -> bool {
         assigns.iter().any(|a| {
-            self.graph
-                .deps(a.value)
-                .iter()
-                .any(|s| match (arg, self.kind(s)) {
-                    (Arg::T, SymKind::Time) => true,
-                    (Arg::Q, SymKind::Q(_))
-                    | (Arg::V, SymKind::V(_))
-                    | (Arg::Lambda, SymKind::Lambda(_)) => true,
-                    (Arg::Y, k) => matches!(
-                        k,
-                        SymKind::Q(_) | SymKind::V(_) | SymKind::P(_) | SymKind::Lambda(_)
-                    ),
-                    _ => false,
-                })
+            self.graph.deps(a.value).iter().any(|s| match (arg, self.kind(s)) {
+                (Arg::T, SymKind::Time) => true,
+                (Arg::Q, SymKind::Q(_)) | (Arg::V, SymKind::V(_)) | (Arg::Lambda, SymKind::Lambda(_)) => true,
+                (Arg::Y, k) => {
+                    matches!(k, SymKind::Q(_) | SymKind::V(_) | SymKind::P(_) | SymKind::Lambda(_))
+                }
+                _ => false,
+            })
         })
     }
 
@@ -198,22 +177,14 @@ impl SymModel {
                 Arg::Lambda => ("lambda", quote! { &#p::VecC<Self> }),
                 Arg::Y => ("y", quote! { &#p::VecY<Self> }),
             };
-            let ident = if used {
-                format_ident!("{}", base)
-            } else {
-                format_ident!("_{}", base)
-            };
+            let ident = if used { format_ident!("{}", base) } else { format_ident!("_{}", base) };
             params.push(quote! { #ident: #ty });
         }
         let name = format_ident!("{}", name);
         let body = emit(&self.graph, assigns, &|s| self.leaf(s, flat));
         match out_ty {
             Some(ty) => {
-                let out = if assigns.is_empty() {
-                    format_ident!("_out")
-                } else {
-                    format_ident!("out")
-                };
+                let out = if assigns.is_empty() { format_ident!("_out") } else { format_ident!("out") };
                 quote! {
                     #[inline]
                     fn #name(&self, #(#params,)* #out: &mut #ty) { #body }
@@ -230,11 +201,8 @@ impl SymModel {
     pub fn methods(&mut self) -> TokenStream {
         let p = quote! { ::dirac::__private };
         let out = quote! { out };
-        let (vq, qq, cq) = (
-            quote! { #p::VecQ<Self> },
-            quote! { #p::MatQQ<Self> },
-            quote! { #p::MatCQ<Self> },
-        );
+        let (vq, qq, cq) =
+            (quote! { #p::VecQ<Self> }, quote! { #p::MatQQ<Self> }, quote! { #p::MatCQ<Self> });
         use Arg::*;
         let mut items = Vec::new();
         let l = self.lagrangian;
@@ -242,10 +210,7 @@ impl SymModel {
             "lagrangian",
             &[T, Q, V],
             None,
-            &[Assign {
-                target: quote! { value },
-                value: l,
-            }],
+            &[Assign { target: quote! { value }, value: l }],
         ));
 
         let (q, v) = (self.q.clone(), self.v.clone());
@@ -256,72 +221,27 @@ impl SymModel {
         let l_qq = self.jacobian_of(&dl_dq, &q);
         let l_vq = self.jacobian_of(&dl_dv, &q);
         let l_vv = self.jacobian_of(&dl_dv, &v);
-        items.push(self.method(
-            "l_qq",
-            &[T, Q, V],
-            Some(qq.clone()),
-            &self.matrix(&out, &l_qq),
-        ));
-        items.push(self.method(
-            "l_vq",
-            &[T, Q, V],
-            Some(qq.clone()),
-            &self.matrix(&out, &l_vq),
-        ));
-        items.push(self.method(
-            "l_vv",
-            &[T, Q, V],
-            Some(qq.clone()),
-            &self.matrix(&out, &l_vv),
-        ));
+        items.push(self.method("l_qq", &[T, Q, V], Some(qq.clone()), &self.matrix(&out, &l_qq)));
+        items.push(self.method("l_vq", &[T, Q, V], Some(qq.clone()), &self.matrix(&out, &l_vq)));
+        items.push(self.method("l_vv", &[T, Q, V], Some(qq.clone()), &self.matrix(&out, &l_vv)));
 
         let force = self.force.clone();
         let f_q = self.jacobian_of(&force, &q);
         let f_v = self.jacobian_of(&force, &v);
         items.push(self.method("force", &[T, Q, V], Some(vq.clone()), &vector(&out, &force)));
-        items.push(self.method(
-            "force_dq",
-            &[T, Q, V],
-            Some(qq.clone()),
-            &self.matrix(&out, &f_q),
-        ));
-        items.push(self.method(
-            "force_dv",
-            &[T, Q, V],
-            Some(qq.clone()),
-            &self.matrix(&out, &f_v),
-        ));
+        items.push(self.method("force_dq", &[T, Q, V], Some(qq.clone()), &self.matrix(&out, &f_q)));
+        items.push(self.method("force_dv", &[T, Q, V], Some(qq.clone()), &self.matrix(&out, &f_v)));
 
         let a = self.a.clone();
         let a_v = self.a_v();
         let at_lambda = self.at_lambda();
         let dav_dq = self.jacobian_of(&a_v, &q);
         let datl_dq = self.jacobian_of(&at_lambda, &q);
-        items.push(self.method(
-            "constraint_matrix",
-            &[Q],
-            Some(cq.clone()),
-            &self.matrix(&out, &a),
-        ));
-        items.push(self.method(
-            "dav_dq",
-            &[Q, V],
-            Some(cq.clone()),
-            &self.matrix(&out, &dav_dq),
-        ));
-        items.push(self.method(
-            "datl_dq",
-            &[Q, Lambda],
-            Some(qq),
-            &self.matrix(&out, &datl_dq),
-        ));
+        items.push(self.method("constraint_matrix", &[Q], Some(cq.clone()), &self.matrix(&out, &a)));
+        items.push(self.method("dav_dq", &[Q, V], Some(cq.clone()), &self.matrix(&out, &dav_dq)));
+        items.push(self.method("datl_dq", &[Q, Lambda], Some(qq), &self.matrix(&out, &datl_dq)));
         let phi = self.phi.clone();
-        items.push(self.method(
-            "holonomic",
-            &[Q],
-            Some(quote! { #p::VecH<Self> }),
-            &vector(&out, &phi),
-        ));
+        items.push(self.method("holonomic", &[Q], Some(quote! { #p::VecH<Self> }), &vector(&out, &phi)));
 
         items.push(self.residual_blocks_method(&dl_dv, &a_v));
         items.push(self.jacobian_blocks_method(&l_vq, &l_vv, &a, &dav_dq));
@@ -334,13 +254,9 @@ impl SymModel {
         let mut assigns = vector(&quote! { out.momentum_rate }, &pdot);
         assigns.extend(vector(&quote! { out.dl_dv }, dl_dv));
         assigns.extend(vector(&quote! { out.constraint_velocity }, a_v));
+        self.op_counts.residual_blocks = op_count(&self.graph, &assigns);
         let ty = quote! { ::dirac::__private::ResidualBlocks<Self> };
-        self.method(
-            "residual_blocks",
-            &[Arg::T, Arg::Q, Arg::V, Arg::Lambda],
-            Some(ty),
-            &assigns,
-        )
+        self.method("residual_blocks", &[Arg::T, Arg::Q, Arg::V, Arg::Lambda], Some(ty), &assigns)
     }
 
     fn jacobian_blocks_method(
@@ -360,13 +276,9 @@ impl SymModel {
         assigns.extend(self.matrix(&quote! { out.l_vv }, l_vv));
         assigns.extend(self.matrix(&quote! { out.a }, a));
         assigns.extend(self.matrix(&quote! { out.dav_dq }, dav_dq));
+        self.op_counts.jacobian_blocks = op_count(&self.graph, &assigns);
         let ty = quote! { ::dirac::__private::JacobianBlocks<Self> };
-        self.method(
-            "jacobian_blocks",
-            &[Arg::T, Arg::Q, Arg::V, Arg::Lambda],
-            Some(ty),
-            &assigns,
-        )
+        self.method("jacobian_blocks", &[Arg::T, Arg::Q, Arg::V, Arg::Lambda], Some(ty), &assigns)
     }
 
     fn flat_methods(&mut self) -> TokenStream {
@@ -374,18 +286,17 @@ impl SymModel {
         let f = self.flat_residual();
         let y = self.y_symbols();
         let jac = self.jacobian_of(&f, &y);
-        let residual = self.method(
-            "residual",
-            &[Arg::T, Arg::Y],
-            Some(quote! { #p::VecY<Self> }),
-            &vector(&quote! { out }, &f),
-        );
-        let jacobian = self.method(
-            "jacobian",
-            &[Arg::T, Arg::Y],
-            Some(quote! { #p::MatYY<Self> }),
-            &self.matrix(&quote! { out }, &jac),
-        );
+        let residual = vector(&quote! { out }, &f);
+        let jacobian = self.matrix(&quote! { out }, &jac);
+        self.op_counts.residual = op_count(&self.graph, &residual);
+        self.op_counts.jacobian = op_count(&self.graph, &jacobian);
+        let mut both = residual;
+        both.extend(self.matrix(&quote! { jac }, &jac));
+        self.op_counts.residual_and_jacobian = op_count(&self.graph, &both);
+        let residual = &both[..f.len()];
+        let residual = self.method("residual", &[Arg::T, Arg::Y], Some(quote! { #p::VecY<Self> }), residual);
+        let jacobian =
+            self.method("jacobian", &[Arg::T, Arg::Y], Some(quote! { #p::MatYY<Self> }), &jacobian);
         quote! { #residual #jacobian }
     }
 }

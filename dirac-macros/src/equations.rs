@@ -8,9 +8,9 @@ use crate::sym::Id;
 use crate::sym::pretty::{Style, pretty};
 
 const GREEK: &[&str] = &[
-    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
-    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
-    "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
+    "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega", "Gamma", "Delta",
+    "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
 ];
 
 /// A name as LaTeX: `x1` → `x_{1}`, `x2bar` → `\bar{x}_{2}`, `v_theta` → `v_{\theta}`.
@@ -23,13 +23,11 @@ pub fn latex_accented(name: &str, extra: Option<&str>) -> String {
     let mut parts = name.split('_').filter(|s| !s.is_empty());
     let head = parts.next().unwrap_or(name);
     let mut subscripts: Vec<String> = parts.map(latex_name).collect();
-    let (head, accent) = match ["bar", "dot", "hat", "tilde"]
-        .iter()
-        .find(|a| head.len() > a.len() && head.ends_with(*a))
-    {
-        Some(a) => (&head[..head.len() - a.len()], Some(*a)),
-        None => (head, None),
-    };
+    let (head, accent) =
+        match ["bar", "dot", "hat", "tilde"].iter().find(|a| head.len() > a.len() && head.ends_with(*a)) {
+            Some(a) => (&head[..head.len() - a.len()], Some(*a)),
+            None => (head, None),
+        };
     let letters = head.trim_end_matches(|c: char| c.is_ascii_digit());
     let digits = &head[letters.len()..];
     if !digits.is_empty() {
@@ -66,10 +64,9 @@ impl SymModel {
         match style {
             Style::Text => text,
             Style::Latex => match self.kind(sym) {
-                SymKind::Lambda(j) => format!(
-                    "\\lambda_{{\\mathrm{{{}}}}}",
-                    self.constraint_names[j].replace('_', "\\_")
-                ),
+                SymKind::Lambda(j) => {
+                    format!("\\lambda_{{\\mathrm{{{}}}}}", self.constraint_names[j].replace('_', "\\_"))
+                }
                 SymKind::P(i) => format!("p_{{{}}}", latex_name(&coordinate(i))),
                 SymKind::PortForce(i) => format!("f_{{{}}}", latex_name(&coordinate(i))),
                 _ => latex_name(&text),
@@ -106,49 +103,27 @@ impl SymModel {
             let v = self.v.clone();
             rows.iter()
                 .map(|row| {
-                    let terms: Vec<Id> = row
-                        .iter()
-                        .zip(&v)
-                        .map(|(&a, &x)| self.graph.mul2(a, x))
-                        .collect();
+                    let terms: Vec<Id> = row.iter().zip(&v).map(|(&a, &x)| self.graph.mul2(a, x)).collect();
                     self.graph.add(&terms)
                 })
                 .collect()
         };
-        let mut text = vec![format!(
-            "{model_name}: L = {}",
-            self.show(self.lagrangian, Style::Text)
-        )];
+        let mut text = vec![format!("{model_name}: L = {}", self.show(self.lagrangian, Style::Text))];
         let mut latex = vec![format!("L &= {}", self.show(self.lagrangian, Style::Latex))];
         for i in 0..n {
-            let (c, v) = (
-                self.coordinates[i].to_string(),
-                self.velocities[i].to_string(),
-            );
+            let (c, v) = (self.coordinates[i].to_string(), self.velocities[i].to_string());
             text.push(format!("d{c}/dt = {v}"));
-            latex.push(format!(
-                "{} &= {}",
-                latex_accented(&c, Some("dot")),
-                latex_name(&v)
-            ));
+            latex.push(format!("{} &= {}", latex_accented(&c, Some("dot")), latex_name(&v)));
         }
         for (i, &r) in rate.iter().enumerate() {
             let c = self.coordinates[i].to_string();
             text.push(format!("dp_{c}/dt = {}", self.show(r, Style::Text)));
-            latex.push(format!(
-                "\\dot{{p}}_{{{}}} &= {}",
-                latex_name(&c),
-                self.show(r, Style::Latex)
-            ));
+            latex.push(format!("\\dot{{p}}_{{{}}} &= {}", latex_name(&c), self.show(r, Style::Latex)));
         }
         for (i, &d) in dl_dv.iter().enumerate() {
             let c = self.coordinates[i].to_string();
             text.push(format!("p_{c} = {}", self.show(d, Style::Text)));
-            latex.push(format!(
-                "p_{{{}}} &= {}",
-                latex_name(&c),
-                self.show(d, Style::Latex)
-            ));
+            latex.push(format!("p_{{{}}} &= {}", latex_name(&c), self.show(d, Style::Latex)));
         }
         for (j, &c) in a_v.iter().enumerate() {
             let name = &self.constraint_names[j];
@@ -161,27 +136,21 @@ impl SymModel {
         }
         for (j, &phi) in self.phi.iter().enumerate() {
             let name = &self.constraint_names[j];
-            text.push(format!(
-                "0 = {}    ({name}, holonomic)",
-                self.show(phi, Style::Text)
-            ));
+            text.push(format!("0 = {}    ({name}, holonomic)", self.show(phi, Style::Text)));
             latex.push(format!(
                 "0 &= {} && \\text{{({}, holonomic)}}",
                 self.show(phi, Style::Latex),
                 name.replace('_', "\\_")
             ));
         }
-        let latex = format!(
-            "\\begin{{aligned}}\n{}\n\\end{{aligned}}",
-            latex.join(" \\\\\n")
-        );
+        let latex = format!("\\begin{{aligned}}\n{}\n\\end{{aligned}}", latex.join(" \\\\\n"));
         (text.join("\n"), latex)
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::latex_name;
+    use super::{latex_accented, latex_name};
 
     #[test]
     fn latex_names_read_like_the_paper() {

@@ -13,11 +13,18 @@ use crate::model::SymModel;
 pub fn derive(input: &DeriveInput) -> TokenStream {
     let cx = Ctxt::new();
     let model = Model::from_input(&cx, input);
-    check(&cx, &model);
+    // After a syntax error, names and items may be missing: report only the syntax errors.
+    let sym = if model.incomplete {
+        None
+    } else {
+        check(&cx, &model);
+        SymModel::build(&cx, &model)
+    };
     let names = key_constants(&cx, &model);
-    let sym = SymModel::build(&cx, &model);
     match (cx.into_compile_errors(), sym) {
         (None, Some(mut sym)) => implementation(&model, &mut sym, &names),
+        // A generic model has been reported; an impl for it would only add errors.
+        (errors, _) if !input.generics.params.is_empty() => quote! { #errors },
         (errors, _) => {
             let stub = stub(&model, &names);
             quote! { #errors #stub }
@@ -49,26 +56,25 @@ fn key_constants(cx: &Ctxt, model: &Model<'_>) -> KeyConstants {
     let mut seen: Vec<(String, String)> = Vec::new();
     let mut make = |ident: &syn::Ident, name: String| {
         let constant = constant_name(&name);
-        if let Some((_, other)) = seen.iter().find(|(c, o)| *c == constant && *o != name) {
-            cx.error_spanned_by(
-                ident,
-                format!("`{name}` and `{other}` would both be named by the constant `{constant}`; rename one"),
-            );
+        match seen.iter().find(|(c, _)| *c == constant) {
+            // The same name twice is reported by the checks; its constant is emitted once.
+            Some((_, other)) if *other == name => return None,
+            Some((_, other)) => {
+                let message = format!(
+                    "`{name}` and `{other}` would both be named by the constant `{constant}`; rename one"
+                );
+                cx.error_spanned_by(ident, message);
+                return None;
+            }
+            None => {}
         }
         seen.push((constant.clone(), name.clone()));
-        (format_ident!("{}", constant, span = ident.span()), name)
+        Some((format_ident!("{}", constant, span = ident.span()), name))
     };
-    let coordinates = model
-        .coordinates
-        .iter()
-        .map(|c| make(&c.name, c.name.to_string()))
-        .collect();
+    let coordinates = model.coordinates.iter().filter_map(|c| make(&c.name, c.name.to_string())).collect();
     let mut constraints = Vec::new();
     let mut counters = [0usize; 2];
-    for kind in [
-        crate::ast::ConstraintKind::Holonomic,
-        crate::ast::ConstraintKind::Velocity,
-    ] {
+    for kind in [crate::ast::ConstraintKind::Holonomic, crate::ast::ConstraintKind::Velocity] {
         for c in model.constraints.iter().filter(|c| c.kind == kind) {
             let k = usize::from(kind == crate::ast::ConstraintKind::Velocity);
             let name = c
@@ -77,13 +83,10 @@ fn key_constants(cx: &Ctxt, model: &Model<'_>) -> KeyConstants {
                 .map(ToString::to_string)
                 .unwrap_or_else(|| format!("{}{}", c.key, counters[k]));
             counters[k] += 1;
-            constraints.push(make(c.name.as_ref().unwrap_or(&c.key), name));
+            constraints.extend(make(c.name.as_ref().unwrap_or(&c.key), name));
         }
     }
-    KeyConstants {
-        coordinates,
-        constraints,
-    }
+    KeyConstants { coordinates, constraints }
 }
 
 fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
@@ -91,10 +94,12 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
     let ident = model.ident;
     let vis = model.vis;
     let coordinates = names.coordinates.iter().enumerate().map(|(i, (c, name))| {
+        let i = proc_macro2::Literal::usize_unsuffixed(i);
         let doc = format!("The coordinate `{name}`: names its position, velocity and momentum in a state.");
         quote! { #[doc = #doc] #vis const #c: #p::Coordinate<Self> = #p::Coordinate::new(#i, #name); }
     });
     let constraints = names.constraints.iter().enumerate().map(|(j, (c, name))| {
+        let j = proc_macro2::Literal::usize_unsuffixed(j);
         let doc = format!("The constraint `{name}`: names its row of A(q) and its multiplier in a state.");
         quote! { #[doc = #doc] #vis const #c: #p::Constraint<Self> = #p::Constraint::new(#j, #name); }
     });
@@ -110,8 +115,9 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
 fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -> TokenStream {
     let p = quote! { ::dirac::__private };
     let ident = model.ident;
-    let (n, m, h) = (sym.n(), sym.m(), sym.h());
-    let (nk, ny) = (n + m, 3 * n + m);
+    let size = proc_macro2::Literal::usize_unsuffixed;
+    let (n, m, h) = (size(sym.n()), size(sym.m()), size(sym.h()));
+    let (nk, ny) = (size(sym.n() + sym.m()), size(3 * sym.n() + sym.m()));
     let coordinates: Vec<String> = sym.coordinates.iter().map(ToString::to_string).collect();
     let velocities: Vec<String> = sym.velocities.iter().map(ToString::to_string).collect();
     let constraints = sym.constraint_names.clone();
@@ -120,11 +126,15 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
         .iter()
         .map(|&i| {
             let name = &coordinates[i];
+            let i = proc_macro2::Literal::usize_unsuffixed(i);
             quote! { #p::Coordinate::new(#i, #name) }
         })
         .collect();
     let (text, latex) = sym.equations(&ident.to_string());
     let methods = sym.methods();
+    let c = &sym.op_counts;
+    let (r, j, rj, rb, jb) =
+        (c.residual, c.jacobian, c.residual_and_jacobian, c.residual_blocks, c.jacobian_blocks);
     let constants = inherent_constants(model, names);
     quote! {
         const _: () = {
@@ -138,11 +148,20 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
             }
 
             #[automatically_derived]
+            // Coefficients folded from the user's numbers may approximate named constants.
+            #[allow(clippy::approx_constant)]
             impl #p::LagrangeDirac for #ident {
                 const COORDINATES: &'static [&'static str] = &[#(#coordinates),*];
                 const VELOCITIES: &'static [&'static str] = &[#(#velocities),*];
                 const CONSTRAINTS: &'static [&'static str] = &[#(#constraints),*];
                 const PORTS: &'static [#p::Coordinate<Self>] = &[#(#ports),*];
+                const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
+                    residual: #r,
+                    jacobian: #j,
+                    residual_and_jacobian: #rj,
+                    residual_blocks: #rb,
+                    jacobian_blocks: #jb,
+                };
 
                 fn equations() -> #p::Equations {
                     #p::Equations { text: #p::Cow::Borrowed(#text), latex: #p::Cow::Borrowed(#latex) }
@@ -199,16 +218,8 @@ fn stub(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
             quote! { #tqv _lambda: &#p::VecC<Self>, },
             quote! { #p::JacobianBlocks<Self> },
         ),
-        block(
-            "residual",
-            quote! { _t: #f, _y: &#p::VecY<Self>, },
-            quote! { #p::VecY<Self> },
-        ),
-        block(
-            "jacobian",
-            quote! { _t: #f, _y: &#p::VecY<Self>, },
-            quote! { #p::MatYY<Self> },
-        ),
+        block("residual", quote! { _t: #f, _y: &#p::VecY<Self>, }, quote! { #p::VecY<Self> }),
+        block("jacobian", quote! { _t: #f, _y: &#p::VecY<Self>, }, quote! { #p::MatYY<Self> }),
     ];
     quote! {
         const _: () = {
@@ -224,6 +235,7 @@ fn stub(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
                 const VELOCITIES: &'static [&'static str] = &[];
                 const CONSTRAINTS: &'static [&'static str] = &[];
                 const PORTS: &'static [#p::Coordinate<Self>] = &[];
+                const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
                 fn equations() -> #p::Equations { #unreachable }
                 fn lagrangian(&self, #tqv) -> #f { #unreachable }
                 #(#methods)*

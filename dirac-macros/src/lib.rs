@@ -17,6 +17,9 @@ mod suggest;
 mod sym;
 mod symbol;
 
+#[cfg(test)]
+mod snapshots;
+
 use proc_macro::TokenStream;
 use syn::{DeriveInput, parse_macro_input};
 

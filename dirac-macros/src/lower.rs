@@ -29,10 +29,7 @@ pub struct Scope {
 
 impl Scope {
     pub fn new() -> Scope {
-        Scope {
-            names: HashMap::new(),
-            ordered: Vec::new(),
-        }
+        Scope { names: HashMap::new(), ordered: Vec::new() }
     }
 
     pub fn declare(&mut self, name: String, id: Id, role: Role) {
@@ -99,10 +96,8 @@ impl Lowerer<'_> {
             }
             Expr::MethodCall(call) => {
                 if let Some(turbofish) = &call.turbofish {
-                    self.cx.error_spanned_by(
-                        turbofish,
-                        "type arguments are not supported in model expressions",
-                    );
+                    self.cx
+                        .error_spanned_by(turbofish, "type arguments are not supported in model expressions");
                     return None;
                 }
                 let args: Vec<&Expr> = call.args.iter().collect();
@@ -114,10 +109,7 @@ impl Lowerer<'_> {
     }
 
     fn unsupported(&self, at: &dyn quote::ToTokens, what: &str) -> Option<Id> {
-        self.cx.error_spanned_by(
-            at.to_token_stream(),
-            format!("{what} is not supported; {SUPPORTED}"),
-        );
+        self.cx.error_spanned_by(at.to_token_stream(), format!("{what} is not supported; {SUPPORTED}"));
         None
     }
 
@@ -140,12 +132,10 @@ impl Lowerer<'_> {
     }
 
     fn name(&mut self, path: &syn::ExprPath, ctx: Context<'_>) -> Option<Id> {
-        if let Some(value) = constant(&path.path) {
-            if path.path.segments.len() > 1
-                || !self.scope.names.contains_key(&path_name(&path.path))
-            {
-                return Some(self.graph.num(value));
-            }
+        if let Some(value) = constant(&path.path)
+            && (path.path.segments.len() > 1 || !self.scope.names.contains_key(&path_name(&path.path)))
+        {
+            return Some(self.graph.num(value));
         }
         let Some(ident) = path.path.get_ident() else {
             return self.unsupported(path, "this path");
@@ -195,15 +185,13 @@ impl Lowerer<'_> {
         };
         let segments = &path.path.segments;
         let last = segments.last().expect("a path has a segment");
-        let qualified_ok =
-            segments.len() == 1 || (segments.len() == 2 && segments[0].ident == "f64");
+        let qualified_ok = segments.len() == 1 || (segments.len() == 2 && segments[0].ident == "f64");
         if !qualified_ok {
             return self.unsupported(path, "this function");
         }
         let args: Vec<&Expr> = call.args.iter().collect();
         let Some((receiver, rest)) = args.split_first() else {
-            self.cx
-                .error_spanned_by(call, format!("`{}` needs an argument", last.ident));
+            self.cx.error_spanned_by(call, format!("`{}` needs an argument", last.ident));
             return None;
         };
         self.function(&last.ident, receiver, rest, ctx)
@@ -222,10 +210,7 @@ impl Lowerer<'_> {
             if args.len() == n {
                 true
             } else {
-                cx.error_spanned_by(
-                    method,
-                    format!("`{name}` takes {n} argument(s) besides its receiver"),
-                );
+                cx.error_spanned_by(method, format!("`{name}` takes {n} argument(s) besides its receiver"));
                 false
             }
         };
@@ -245,11 +230,7 @@ impl Lowerer<'_> {
         }
         if let Some(f) = Func::from_name(&name) {
             let x = self.lower(receiver, ctx);
-            return if arity(0, self.cx) {
-                Some(self.graph.call(f, x?))
-            } else {
-                None
-            };
+            return if arity(0, self.cx) { Some(self.graph.call(f, x?)) } else { None };
         }
         if name == "powf" || name == "atan2" {
             let x = self.lower(receiver, ctx);
@@ -258,26 +239,17 @@ impl Lowerer<'_> {
             }
             let y = self.lower(args[0], ctx);
             let (x, y) = (x?, y?);
-            return Some(if name == "powf" {
-                self.graph.powf(x, y)
-            } else {
-                self.graph.atan2(x, y)
-            });
+            return Some(if name == "powf" { self.graph.powf(x, y) } else { self.graph.atan2(x, y) });
         }
         let _ = self.lower(receiver, ctx);
-        self.cx.error_spanned_by(
-            method,
-            format!("unsupported function `{name}`; {SUPPORTED}"),
-        );
+        self.cx.error_spanned_by(method, format!("unsupported function `{name}`; {SUPPORTED}"));
         None
     }
 }
 
 fn integer(expr: &Expr) -> Option<i32> {
     match expr {
-        Expr::Lit(ExprLit {
-            lit: Lit::Int(i), ..
-        }) => i.base10_parse().ok(),
+        Expr::Lit(ExprLit { lit: Lit::Int(i), .. }) => i.base10_parse().ok(),
         Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => integer(&u.expr).map(|k: i32| -k),
         Expr::Paren(p) => integer(&p.expr),
         Expr::Group(g) => integer(&g.expr),
@@ -286,10 +258,7 @@ fn integer(expr: &Expr) -> Option<i32> {
 }
 
 fn path_name(path: &syn::Path) -> String {
-    path.segments
-        .last()
-        .map(|s| s.ident.to_string())
-        .unwrap_or_default()
+    path.segments.last().map(|s| s.ident.to_string()).unwrap_or_default()
 }
 
 /// `PI`, `TAU`, `std::f64::consts::PI` and friends.

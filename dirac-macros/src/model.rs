@@ -42,6 +42,18 @@ pub struct SymModel {
     /// `φ(q)`, one per holonomic row.
     pub phi: Vec<Id>,
     pub constraint_names: Vec<String>,
+    /// Arithmetic operations of the emitted kernels, filled in by code generation.
+    pub op_counts: OpCounts,
+}
+
+/// How many arithmetic operations the generated kernels perform per call.
+#[derive(Default)]
+pub struct OpCounts {
+    pub residual: usize,
+    pub jacobian: usize,
+    pub residual_and_jacobian: usize,
+    pub residual_blocks: usize,
+    pub jacobian_blocks: usize,
 }
 
 impl SymModel {
@@ -82,11 +94,7 @@ impl SymModel {
             kinds: Vec::new(),
             params: model.params.clone(),
             coordinates: model.coordinates.iter().map(|c| c.name.clone()).collect(),
-            velocities: model
-                .coordinates
-                .iter()
-                .map(|c| c.velocity.clone())
-                .collect(),
+            velocities: model.coordinates.iter().map(|c| c.velocity.clone()).collect(),
             ports: Vec::new(),
             q: Vec::new(),
             v: Vec::new(),
@@ -98,28 +106,14 @@ impl SymModel {
             a: Vec::new(),
             phi: Vec::new(),
             constraint_names: Vec::new(),
+            op_counts: OpCounts::default(),
         };
         let scope = sm.declare_symbols();
-        sm.ports = model
-            .ports
-            .iter()
-            .filter_map(|p| sm.coordinates.iter().position(|c| c == p))
-            .collect();
+        sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();
         sm.force = vec![zero; sm.n()];
-        let mut lw = Lowerer {
-            cx,
-            graph: &mut sm.graph,
-            scope: &scope,
-        };
-        let all = Context {
-            what: "the Lagrangian",
-            velocities: true,
-            time: true,
-        };
-        let lagrangian = model
-            .lagrangian
-            .as_ref()
-            .and_then(|(_, e)| lw.lower(e, all));
+        let mut lw = Lowerer { cx, graph: &mut sm.graph, scope: &scope };
+        let all = Context { what: "the Lagrangian", velocities: true, time: true };
+        let lagrangian = model.lagrangian.as_ref().and_then(|(_, e)| lw.lower(e, all));
         for f in &model.forces {
             let what = format!("the force on `{}`", f.coordinate);
             let lowered = lw.lower(&f.expr, Context { what: &what, ..all });
@@ -128,7 +122,6 @@ impl SymModel {
                 sm.force[i] = x;
             }
         }
-        drop(lw);
         sm.lower_constraints(cx, model, &scope);
         let lagrangian = lagrangian?;
         sm.lagrangian = lagrangian;
@@ -192,30 +185,10 @@ impl SymModel {
         }
     }
 
-    fn holonomic_row(
-        &mut self,
-        cx: &Ctxt,
-        expr: &syn::Expr,
-        what: &str,
-        scope: &Scope,
-    ) -> Option<Vec<Id>> {
-        let ctx = Context {
-            what,
-            velocities: false,
-            time: false,
-        };
-        let phi = Lowerer {
-            cx,
-            graph: &mut self.graph,
-            scope,
-        }
-        .lower(expr, ctx)?;
-        let row: Vec<Id> = self
-            .q
-            .clone()
-            .iter()
-            .map(|q| self.graph.diff(phi, *q))
-            .collect();
+    fn holonomic_row(&mut self, cx: &Ctxt, expr: &syn::Expr, what: &str, scope: &Scope) -> Option<Vec<Id>> {
+        let ctx = Context { what, velocities: false, time: false };
+        let phi = Lowerer { cx, graph: &mut self.graph, scope }.lower(expr, ctx)?;
+        let row: Vec<Id> = self.q.clone().iter().map(|q| self.graph.diff(phi, *q)).collect();
         if row.iter().all(|d| self.graph.is_zero(*d)) {
             cx.error_spanned_by(expr, format!("{what} does not depend on any coordinate"));
             return None;
@@ -225,29 +198,14 @@ impl SymModel {
     }
 
     /// Extracts the row `a(q)` of `a(q) · v`, checking every term is linear in the velocities.
-    fn velocity_row(
-        &mut self,
-        cx: &Ctxt,
-        expr: &syn::Expr,
-        what: &str,
-        scope: &Scope,
-    ) -> Option<Vec<Id>> {
-        let ctx = Context {
-            what,
-            velocities: true,
-            time: false,
-        };
+    fn velocity_row(&mut self, cx: &Ctxt, expr: &syn::Expr, what: &str, scope: &Scope) -> Option<Vec<Id>> {
+        let ctx = Context { what, velocities: true, time: false };
         let mut terms = Vec::new();
         additive_terms(expr, false, &mut terms);
         let mut lowered = Vec::new();
         let mut ok = true;
         for (term, negated) in &terms {
-            let Some(x) = (Lowerer {
-                cx,
-                graph: &mut self.graph,
-                scope,
-            })
-            .lower(term, ctx) else {
+            let Some(x) = (Lowerer { cx, graph: &mut self.graph, scope }).lower(term, ctx) else {
                 ok = false;
                 continue;
             };
@@ -264,17 +222,9 @@ impl SymModel {
             return None;
         }
         let c = self.graph.add(&lowered);
-        let row: Vec<Id> = self
-            .v
-            .clone()
-            .iter()
-            .map(|v| self.graph.diff(c, *v))
-            .collect();
+        let row: Vec<Id> = self.v.clone().iter().map(|v| self.graph.diff(c, *v)).collect();
         if row.iter().all(|d| self.graph.is_zero(*d)) {
-            cx.error_spanned_by(
-                expr,
-                format!("{what} has no velocity in it; constraints are `A(q) v = 0`"),
-            );
+            cx.error_spanned_by(expr, format!("{what} has no velocity in it; constraints are `A(q) v = 0`"));
             return None;
         }
         Some(row)
@@ -283,10 +233,7 @@ impl SymModel {
     /// Why a term is not `a(q) v_i`, if it is not.
     fn linearity_problem(&mut self, term: Id) -> Option<&'static str> {
         let velocities: Vec<Id> = self.v.clone();
-        let syms: Vec<u32> = velocities
-            .iter()
-            .filter_map(|v| self.graph.as_sym(*v))
-            .collect();
+        let syms: Vec<u32> = velocities.iter().filter_map(|v| self.graph.as_sym(*v)).collect();
         if !syms.iter().any(|s| self.graph.depends_on(term, *s)) {
             return Some("has no velocity in it");
         }

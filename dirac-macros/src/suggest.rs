@@ -6,16 +6,14 @@ pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
     candidates
         .into_iter()
         .map(|c| (edit_distance(name, c), c))
-        .filter(|(d, _)| *d <= limit)
+        .filter(|(d, _)| *d <= limit && *d < name.chars().count())
         .min_by_key(|(d, _)| *d)
         .map(|(_, c)| c)
 }
 
 /// `" (did you mean `x`?)"` or the empty string.
 pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
-    nearest(name, candidates)
-        .map(|c| format!("; did you mean `{c}`?"))
-        .unwrap_or_default()
+    nearest(name, candidates).map(|c| format!("; did you mean `{c}`?")).unwrap_or_default()
 }
 
 fn edit_distance(a: &str, b: &str) -> usize {
@@ -42,5 +40,6 @@ mod tests {
         assert_eq!(nearest("thetta", names), Some("theta"));
         assert_eq!(nearest("m2", names), Some("m1"));
         assert_eq!(nearest("gravity", names), None);
+        assert_eq!(nearest("v", ["m"]), None, "a one-letter name shares nothing with another");
     }
 }

@@ -26,11 +26,7 @@ macro_rules! key_impls {
         impl<M: ?Sized> $key<M> {
             #[doc = concat!("The ", $what, " with this position and name; used by generated code.")]
             pub const fn new(index: usize, name: &'static str) -> Self {
-                Self {
-                    index,
-                    name,
-                    model: PhantomData,
-                }
+                Self { index, name, model: PhantomData }
             }
 
             #[doc = concat!("The position of this ", $what, " in its vector.")]

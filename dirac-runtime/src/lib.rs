@@ -14,7 +14,7 @@ pub mod state;
 
 pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use keys::{Constraint, Coordinate};
-pub use model::{Equations, JacobianBlocks, LagrangeDirac, ResidualBlocks};
+pub use model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
 pub use state::State;
 
 /// Items generated code refers to by absolute path. Not part of the public API.
@@ -22,7 +22,7 @@ pub use state::State;
 pub mod __private {
     pub use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, VecC, VecH, VecQ, VecY};
     pub use crate::keys::{Constraint, Coordinate};
-    pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, ResidualBlocks};
+    pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
     pub use nalgebra::Const;
     pub use std::borrow::Cow;
 }

@@ -91,6 +91,44 @@ pub struct Equations {
     pub latex: Cow<'static, str>,
 }
 
+/// How many arithmetic operations (`+ − × ÷`, an elementary function counting as one) the
+/// generated kernels of a model perform per call, after common subexpressions are shared.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OperationCounts {
+    /// [`LagrangeDirac::residual`].
+    pub residual: usize,
+    /// [`LagrangeDirac::jacobian`].
+    pub jacobian: usize,
+    /// Residual and Jacobian together, sharing subexpressions between them.
+    pub residual_and_jacobian: usize,
+    /// [`LagrangeDirac::residual_blocks`].
+    pub residual_blocks: usize,
+    /// [`LagrangeDirac::jacobian_blocks`].
+    pub jacobian_blocks: usize,
+}
+
+impl OperationCounts {
+    /// All counts zero.
+    pub const ZERO: OperationCounts = OperationCounts {
+        residual: 0,
+        jacobian: 0,
+        residual_and_jacobian: 0,
+        residual_blocks: 0,
+        jacobian_blocks: 0,
+    };
+
+    /// The counts of two kernels run one after the other.
+    pub const fn plus(self, other: OperationCounts) -> OperationCounts {
+        OperationCounts {
+            residual: self.residual + other.residual,
+            jacobian: self.jacobian + other.jacobian,
+            residual_and_jacobian: self.residual_and_jacobian + other.residual_and_jacobian,
+            residual_blocks: self.residual_blocks + other.residual_blocks,
+            jacobian_blocks: self.jacobian_blocks + other.jacobian_blocks,
+        }
+    }
+}
+
 /// A Lagrange-Dirac system (implicit Lagrangian system) with constraints and external forces.
 ///
 /// With `n` coordinates `q`, velocities `v`, momenta `p` and `m` multipliers `λ`, its
@@ -118,6 +156,8 @@ where
     const CONSTRAINTS: &'static [&'static str];
     /// The coordinates through which the model may be interconnected.
     const PORTS: &'static [Coordinate<Self>];
+    /// The arithmetic cost of the generated kernels.
+    const OPERATION_COUNTS: OperationCounts;
 
     /// The derived equations, for people.
     fn equations() -> Equations;

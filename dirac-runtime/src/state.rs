@@ -30,12 +30,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn clone(&self) -> Self {
-        Self {
-            q: self.q.clone(),
-            v: self.v.clone(),
-            p: self.p.clone(),
-            lambda: self.lambda.clone(),
-        }
+        Self { q: self.q.clone(), v: self.v.clone(), p: self.p.clone(), lambda: self.lambda.clone() }
     }
 }
 

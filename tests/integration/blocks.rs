@@ -35,64 +35,34 @@ where
 
         let mut rb = ResidualBlocks::<M>::zeros();
         model.residual_blocks(t, &s.q, &s.v, &s.lambda, &mut rb);
-        close(
-            &dyn_of(&rb.momentum_rate),
-            &f.rows(2 * n, n).into(),
-            "momentum rate = f_p",
-        );
-        close(
-            &dyn_of(&(s.p.clone() - &rb.dl_dv)),
-            &f.rows(n, n).into(),
-            "p - dL/dv = f_v",
-        );
-        close(
-            &dyn_of(&rb.constraint_velocity),
-            &f.rows(3 * n, m).into(),
-            "A v = f_lambda",
-        );
+        close(&dyn_of(&rb.momentum_rate), &f.rows(2 * n, n).into(), "momentum rate = f_p");
+        close(&dyn_of(&(s.p.clone() - &rb.dl_dv)), &f.rows(n, n).into(), "p - dL/dv = f_v");
+        close(&dyn_of(&rb.constraint_velocity), &f.rows(3 * n, m).into(), "A v = f_lambda");
         close(&dyn_of(&s.v), &f.rows(0, n).into(), "f_q = v");
 
-        let (mut dl_dq, mut dl_dv, mut force) =
-            (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
+        let (mut dl_dq, mut dl_dv, mut force) = (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
         model.dl_dq(t, &s.q, &s.v, &mut dl_dq);
         model.dl_dv(t, &s.q, &s.v, &mut dl_dv);
         model.force(t, &s.q, &s.v, &mut force);
         let mut a = MatCQ::<M>::zeros();
         model.constraint_matrix(&s.q, &mut a);
         let rate = dl_dq + force + a.transpose() * &s.lambda;
-        close(
-            &dyn_of(&rate),
-            &dyn_of(&rb.momentum_rate),
-            "dL/dq + F + A^T lambda",
-        );
+        close(&dyn_of(&rate), &dyn_of(&rb.momentum_rate), "dL/dq + F + A^T lambda");
         close(&dyn_of(&dl_dv), &dyn_of(&rb.dl_dv), "dl_dv");
 
         let mut jb = JacobianBlocks::<M>::zeros();
         model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut jb);
-        let block = |r: usize, c: usize, nr: usize, nc: usize| -> DMatrix<f64> {
-            jac.view((r, c), (nr, nc)).into()
-        };
+        let block =
+            |r: usize, c: usize, nr: usize, nc: usize| -> DMatrix<f64> { jac.view((r, c), (nr, nc)).into() };
         close(&dyn_of(&jb.dpdot_dq), &block(2 * n, 0, n, n), "K = df_p/dq");
         close(&dyn_of(&jb.dpdot_dv), &block(2 * n, n, n, n), "D = df_p/dv");
         close(&-dyn_of(&jb.l_vq), &block(n, 0, n, n), "-L_vq = df_v/dq");
         close(&-dyn_of(&jb.l_vv), &block(n, n, n, n), "-L_vv = df_v/dv");
         close(&dyn_of(&jb.a), &block(3 * n, n, m, n), "A = df_lambda/dv");
-        close(
-            &dyn_of(&jb.dav_dq),
-            &block(3 * n, 0, m, n),
-            "d(Av)/dq = df_lambda/dq",
-        );
-        close(
-            &dyn_of(&jb.a.transpose()),
-            &block(2 * n, 3 * n, n, m),
-            "A^T = df_p/dlambda",
-        );
+        close(&dyn_of(&jb.dav_dq), &block(3 * n, 0, m, n), "d(Av)/dq = df_lambda/dq");
+        close(&dyn_of(&jb.a.transpose()), &block(2 * n, 3 * n, n, m), "A^T = df_p/dlambda");
         close(&DMatrix::identity(n, n), &block(0, n, n, n), "df_q/dv = I");
-        close(
-            &DMatrix::identity(n, n),
-            &block(n, 2 * n, n, n),
-            "df_v/dp = I",
-        );
+        close(&DMatrix::identity(n, n), &block(n, 2 * n, n, n), "df_v/dp = I");
         close(&dyn_of(&a), &dyn_of(&jb.a), "constraint_matrix = A");
 
         let mats = individual_blocks(model, t, &s);
@@ -101,11 +71,7 @@ where
             &dyn_of(&jb.dpdot_dq),
             "L_qq + F_q + d(A^T lambda)/dq = K",
         );
-        close(
-            &(mats.l_vq.transpose() + mats.f_v),
-            &dyn_of(&jb.dpdot_dv),
-            "L_qv + F_v = D",
-        );
+        close(&(mats.l_vq.transpose() + mats.f_v), &dyn_of(&jb.dpdot_dv), "L_qv + F_v = D");
         close(&mats.l_vv, &dyn_of(&jb.l_vv), "l_vv");
         close(&mats.l_vq, &dyn_of(&jb.l_vq), "l_vq");
         close(&mats.dav_dq, &dyn_of(&jb.dav_dq), "dav_dq");
@@ -160,73 +126,21 @@ where
         model.holonomic(&minus, &mut phi_m);
         for j in 0..M::NH {
             let fd = (phi_p[j] - phi_m[j]) / (2.0 * h);
-            assert!(
-                (fd - a[(j, i)]).abs() <= 1e-6 * a[(j, i)].abs().max(1.0),
-                "dphi{j}/dq{i}"
-            );
+            assert!((fd - a[(j, i)]).abs() <= 1e-6 * a[(j, i)].abs().max(1.0), "dphi{j}/dq{i}");
         }
     }
 }
 
 #[test]
 fn blocks_agree_with_flat_forms_for_every_model() {
-    check_blocks(
-        &Primitive1 {
-            m1: 1.0,
-            m2: 2.0,
-            k1: 4.0,
-            k2: 5.0,
-        },
-        11,
-    );
+    check_blocks(&Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, 11);
     check_blocks(&Primitive2 { m3: 3.0, k3: 6.0 }, 12);
-    check_blocks(
-        &MassSpringChain {
-            m1: 1.0,
-            m2: 2.0,
-            m3: 3.0,
-            k1: 4.0,
-            k2: 5.0,
-            k3: 6.0,
-        },
-        13,
-    );
-    check_blocks(
-        &Pendulum {
-            m: 1.3,
-            g: 9.81,
-            l: 0.7,
-        },
-        14,
-    );
-    check_blocks(
-        &RollingDisk {
-            m: 2.0,
-            r: 0.3,
-            i_roll: 0.09,
-            i_turn: 0.045,
-        },
-        15,
-    );
-    check_blocks(
-        &DrivenOscillator {
-            m: 1.0,
-            k: 2.0,
-            c: 0.3,
-            a: 0.5,
-            w: 1.7,
-        },
-        16,
-    );
+    check_blocks(&MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 }, 13);
+    check_blocks(&Pendulum { m: 1.3, g: 9.81, l: 0.7 }, 14);
+    check_blocks(&RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 }, 15);
+    check_blocks(&DrivenOscillator { m: 1.0, k: 2.0, c: 0.3, a: 0.5, w: 1.7 }, 16);
     check_blocks(&LcCircuit { ind: 1.0, cap: 1.0 }, 17);
-    check_blocks(
-        &Pendulum8 {
-            m: 0.5,
-            l: 0.25,
-            g: 9.81,
-        },
-        18,
-    );
+    check_blocks(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 18);
     check_blocks(&AllFunctions { m: 1.5, k: 0.7 }, 19);
 }
 
@@ -234,14 +148,7 @@ fn blocks_agree_with_flat_forms_for_every_model() {
 /// sentinel in a pre-filled one, and every other entry is overwritten.
 #[test]
 fn jacobian_writes_only_structural_nonzeros() {
-    let chain = MassSpringChain {
-        m1: 1.0,
-        m2: 2.0,
-        m3: 3.0,
-        k1: 4.0,
-        k2: 5.0,
-        k3: 6.0,
-    };
+    let chain = MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 };
     let mut rng = Rng::new(21);
     let y = random_y::<MassSpringChain>(&mut rng);
     let zeroed = chain.jacobian_matrix(0.0, &y);
@@ -263,13 +170,7 @@ fn jacobian_writes_only_structural_nonzeros() {
 /// `E = ⟨p, v⟩ − L` and `⟨F, v⟩` from the default methods, against the formulas by hand.
 #[test]
 fn energy_and_power() {
-    let osc = DrivenOscillator {
-        m: 1.5,
-        k: 2.0,
-        c: 0.3,
-        a: 0.5,
-        w: 1.7,
-    };
+    let osc = DrivenOscillator { m: 1.5, k: 2.0, c: 0.3, a: 0.5, w: 1.7 };
     let (t, x, v) = (0.4, 0.3, -0.8);
     let (q, vv, p) = (
         VecQ::<DrivenOscillator>::new(x),

@@ -7,28 +7,19 @@ use crate::util::Rng;
 use crate::zoo::{Pendulum, RollingDisk};
 
 fn assert_close(got: f64, want: f64, what: &str) {
-    assert!(
-        (got - want).abs() <= 1e-13 * want.abs().max(1.0),
-        "{what}: generated {got}, by hand {want}"
-    );
+    assert!((got - want).abs() <= 1e-13 * want.abs().max(1.0), "{what}: generated {got}, by hand {want}");
 }
 
 /// L = ½ m (vx² + vy²) − m g y, φ = x² + y² − l²: by hand, ∂L/∂q = (0, −m g), ∂L/∂v = m v,
 /// L_vv = m I, A = (2x, 2y), ∂(Av)/∂q = (2 vx, 2 vy), ∂(Aᵀλ)/∂q = 2 λ I.
 #[test]
 fn pendulum_blocks() {
-    let model = Pendulum {
-        m: 1.3,
-        g: 9.81,
-        l: 0.7,
-    };
+    let model = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
     let mut rng = Rng::new(31);
     for _ in 0..20 {
         let mut s = State::<Pendulum>::zeros();
-        s.set_q(Pendulum::X, rng.uniform(-1.0, 1.0))
-            .set_q(Pendulum::Y, rng.uniform(-1.0, 1.0));
-        s.set_v(Pendulum::X, rng.uniform(-1.0, 1.0))
-            .set_v(Pendulum::Y, rng.uniform(-1.0, 1.0));
+        s.set_q(Pendulum::X, rng.uniform(-1.0, 1.0)).set_q(Pendulum::Y, rng.uniform(-1.0, 1.0));
+        s.set_v(Pendulum::X, rng.uniform(-1.0, 1.0)).set_v(Pendulum::Y, rng.uniform(-1.0, 1.0));
         s.set_lambda(Pendulum::ROD, rng.uniform(-1.0, 1.0));
         let (x, y) = (s.q(Pendulum::X), s.q(Pendulum::Y));
         let (vx, vy) = (s.v(Pendulum::X), s.v(Pendulum::Y));
@@ -43,18 +34,10 @@ fn pendulum_blocks() {
         model.holonomic(&s.q, &mut phi);
 
         assert_close(rb.momentum_rate[0], 2.0 * x * lambda, "pdot_x");
-        assert_close(
-            rb.momentum_rate[1],
-            -m * model.g + 2.0 * y * lambda,
-            "pdot_y",
-        );
+        assert_close(rb.momentum_rate[1], -m * model.g + 2.0 * y * lambda, "pdot_y");
         assert_close(rb.dl_dv[0], m * vx, "p_x");
         assert_close(rb.dl_dv[1], m * vy, "p_y");
-        assert_close(
-            rb.constraint_velocity[0],
-            2.0 * x * vx + 2.0 * y * vy,
-            "A v",
-        );
+        assert_close(rb.constraint_velocity[0], 2.0 * x * vx + 2.0 * y * vy, "A v");
         assert_close(phi[0], x * x + y * y - model.l * model.l, "phi");
         assert_close(jb.a[(0, 0)], 2.0 * x, "A_x");
         assert_close(jb.a[(0, 1)], 2.0 * y, "A_y");
@@ -78,12 +61,7 @@ fn pendulum_blocks() {
 /// Aᵀλ = (λ1, λ2, −r (cos φ λ1 + sin φ λ2), 0) with ∂/∂φ of the third entry r (sin φ λ1 − cos φ λ2).
 #[test]
 fn rolling_disk_blocks() {
-    let model = RollingDisk {
-        m: 2.0,
-        r: 0.3,
-        i_roll: 0.09,
-        i_turn: 0.045,
-    };
+    let model = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
     let mut rng = Rng::new(32);
     for _ in 0..20 {
         let mut s = State::<RollingDisk>::zeros();
@@ -99,14 +77,8 @@ fn rolling_disk_blocks() {
 
         let mut jb = JacobianBlocks::<RollingDisk>::zeros();
         model.jacobian_blocks(0.0, &s.q, &s.v, &s.lambda, &mut jb);
-        let a = [
-            [1.0, 0.0, -r * phi.cos(), 0.0],
-            [0.0, 1.0, -r * phi.sin(), 0.0],
-        ];
-        let dav = [
-            [0.0, 0.0, 0.0, r * phi.sin() * v_theta],
-            [0.0, 0.0, 0.0, -r * phi.cos() * v_theta],
-        ];
+        let a = [[1.0, 0.0, -r * phi.cos(), 0.0], [0.0, 1.0, -r * phi.sin(), 0.0]];
+        let dav = [[0.0, 0.0, 0.0, r * phi.sin() * v_theta], [0.0, 0.0, 0.0, -r * phi.cos() * v_theta]];
         for j in 0..2 {
             for i in 0..4 {
                 assert_close(jb.a[(j, i)], a[j][i], "A");
@@ -116,17 +88,17 @@ fn rolling_disk_blocks() {
         let mut k = [[0.0; 4]; 4];
         k[2][3] = r * (phi.sin() * l1 - phi.cos() * l2);
         let lvv = [model.m, model.m, model.i_roll, model.i_turn];
-        for i in 0..4 {
-            for j in 0..4 {
-                assert_close(jb.dpdot_dq[(i, j)], k[i][j], "K = d(A^T lambda)/dq");
+        for (i, row) in k.iter().enumerate() {
+            for (j, &kij) in row.iter().enumerate() {
+                assert_close(jb.dpdot_dq[(i, j)], kij, "K = d(A^T lambda)/dq");
                 assert_close(jb.l_vv[(i, j)], if i == j { lvv[i] } else { 0.0 }, "L_vv");
             }
         }
         let mut rb = ResidualBlocks::<RollingDisk>::zeros();
         model.residual_blocks(0.0, &s.q, &s.v, &s.lambda, &mut rb);
         let rate = [l1, l2, -r * (phi.cos() * l1 + phi.sin() * l2), 0.0];
-        for i in 0..4 {
-            assert_close(rb.momentum_rate[i], rate[i], "A^T lambda");
+        for (i, &r) in rate.iter().enumerate() {
+            assert_close(rb.momentum_rate[i], r, "A^T lambda");
         }
     }
 }

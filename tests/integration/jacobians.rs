@@ -6,78 +6,27 @@ use crate::zoo::*;
 
 #[test]
 fn primitive_systems_and_chain() {
-    check_jacobian_by_differences(
-        &Primitive1 {
-            m1: 1.0,
-            m2: 2.0,
-            k1: 4.0,
-            k2: 5.0,
-        },
-        1,
-        20,
-    );
+    check_jacobian_by_differences(&Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, 1, 20);
     check_jacobian_by_differences(&Primitive2 { m3: 3.0, k3: 6.0 }, 2, 20);
-    let chain = MassSpringChain {
-        m1: 1.0,
-        m2: 2.0,
-        m3: 3.0,
-        k1: 4.0,
-        k2: 5.0,
-        k3: 6.0,
-    };
+    let chain = MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 };
     check_jacobian_by_differences(&chain, 3, 20);
 }
 
 #[test]
 fn pendulum_and_rolling_disk() {
-    check_jacobian_by_differences(
-        &Pendulum {
-            m: 1.3,
-            g: 9.81,
-            l: 0.7,
-        },
-        4,
-        20,
-    );
-    check_jacobian_by_differences(
-        &RollingDisk {
-            m: 2.0,
-            r: 0.3,
-            i_roll: 0.09,
-            i_turn: 0.045,
-        },
-        5,
-        20,
-    );
+    check_jacobian_by_differences(&Pendulum { m: 1.3, g: 9.81, l: 0.7 }, 4, 20);
+    check_jacobian_by_differences(&RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 }, 5, 20);
 }
 
 #[test]
 fn forced_and_degenerate_models() {
-    check_jacobian_by_differences(
-        &DrivenOscillator {
-            m: 1.0,
-            k: 2.0,
-            c: 0.3,
-            a: 0.5,
-            w: 1.7,
-        },
-        6,
-        20,
-    );
+    check_jacobian_by_differences(&DrivenOscillator { m: 1.0, k: 2.0, c: 0.3, a: 0.5, w: 1.7 }, 6, 20);
     check_jacobian_by_differences(&LcCircuit { ind: 1.0, cap: 1.0 }, 7, 20);
 }
 
 #[test]
 fn eight_link_pendulum() {
-    check_jacobian_by_differences(
-        &Pendulum8 {
-            m: 0.5,
-            l: 0.25,
-            g: 9.81,
-        },
-        8,
-        5,
-    );
+    check_jacobian_by_differences(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 8, 5);
 }
 
 #[test]

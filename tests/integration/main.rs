@@ -5,6 +5,7 @@ mod zoo;
 
 mod blocks;
 mod hand_derivations;
+mod hygiene;
 mod jacobians;
 mod named_access;
 mod paper;

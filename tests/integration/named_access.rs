@@ -7,9 +7,7 @@ use crate::zoo::{Pendulum, Primitive2, RollingDisk};
 #[test]
 fn state_components_by_name() {
     let mut s = State::<RollingDisk>::zeros();
-    s.set_q(RollingDisk::PHI, 0.25)
-        .set_v(RollingDisk::THETA, 2.0)
-        .set_p(RollingDisk::X, -1.0);
+    s.set_q(RollingDisk::PHI, 0.25).set_v(RollingDisk::THETA, 2.0).set_p(RollingDisk::X, -1.0);
     s.set_lambda(RollingDisk::ROLL_Y, 3.0);
     assert_eq!(s.q(RollingDisk::PHI), 0.25);
     assert_eq!(s.v(RollingDisk::THETA), 2.0);
@@ -33,9 +31,6 @@ fn models_report_their_names() {
     assert_eq!(Pendulum::ROD.name(), "rod");
     assert_eq!(Primitive2::X2BAR.to_string(), "x2bar");
     assert_eq!(format!("{:?}", Primitive2::X3), "Coordinate(x3 #1)");
-    assert_eq!(
-        (RollingDisk::NQ, RollingDisk::NC, RollingDisk::NH),
-        (4, 2, 0)
-    );
+    assert_eq!((RollingDisk::NQ, RollingDisk::NC, RollingDisk::NH), (4, 2, 0));
     assert_eq!((Pendulum::NQ, Pendulum::NC, Pendulum::NH), (2, 1, 1));
 }

@@ -52,8 +52,7 @@ where
             let (mut plus, mut minus) = (y.clone(), y.clone());
             plus[c] += h;
             minus[c] -= h;
-            let fd =
-                (model.residual_vector(t, &plus) - model.residual_vector(t, &minus)) / (2.0 * h);
+            let fd = (model.residual_vector(t, &plus) - model.residual_vector(t, &minus)) / (2.0 * h);
             for r in 0..ny {
                 let (exact, approx) = (jac[(r, c)], fd[r]);
                 let tol = 1e-6 * exact.abs().max(1.0);

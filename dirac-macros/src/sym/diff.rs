@@ -8,9 +8,7 @@ use super::graph::{Func, Graph, Id, Node};
 impl Graph {
     /// `∂e/∂sym`, where `sym` is a symbol id created by [`Graph::symbol`].
     pub fn diff(&mut self, e: Id, sym: Id) -> Id {
-        let s = self
-            .as_sym(sym)
-            .expect("differentiate with respect to a symbol");
+        let s = self.as_sym(sym).expect("differentiate with respect to a symbol");
         self.diff_sym(e, s)
     }
 
@@ -68,13 +66,7 @@ impl Graph {
             }
             let mut parts = Vec::with_capacity(factors.len() + 1);
             parts.push(c);
-            parts.extend(
-                factors
-                    .iter()
-                    .enumerate()
-                    .filter(|(j, _)| *j != i)
-                    .map(|(_, g)| *g),
-            );
+            parts.extend(factors.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, g)| *g));
             parts.push(df);
             terms.push(self.mul(&parts));
         }

@@ -30,11 +30,7 @@ enum Prec {
 /// The generated statements for `assigns`, with `leaf(sym)` giving each symbol's tokens.
 pub fn emit(graph: &Graph, assigns: &[Assign], leaf: &dyn Fn(u32) -> TokenStream) -> TokenStream {
     let uses = count_uses(graph, assigns);
-    let mut emitter = Emitter {
-        graph,
-        leaf,
-        names: vec![None; graph.len()],
-    };
+    let mut emitter = Emitter { graph, leaf, names: vec![None; graph.len()] };
     let mut bound = 0usize;
     let mut body = TokenStream::new();
     for (index, &n) in uses.iter().enumerate() {
@@ -147,6 +143,7 @@ impl Emitter<'_> {
             Node::Mul(c, factors) => self.render_product(c.get(), factors),
             Node::Powi(b, k) => {
                 let b = self.at_least(*b, Prec::Atom);
+                let k = Literal::i32_unsuffixed(*k);
                 (quote! { #b.powi(#k) }, Prec::Atom)
             }
             Node::Powf(b, x) => {
@@ -214,7 +211,7 @@ impl Emitter<'_> {
                         self.at_least(*b, Prec::Unary)
                     } else {
                         let b = self.at_least(*b, Prec::Atom);
-                        let k = -k;
+                        let k = Literal::i32_unsuffixed(-k);
                         quote! { #b.powi(#k) }
                     });
                 }
@@ -235,11 +232,7 @@ impl Emitter<'_> {
                 quote! { #out / (#d) }
             };
         }
-        if coef < 0.0 {
-            (quote! { -#out }, Prec::Unary)
-        } else {
-            (out, Prec::Product)
-        }
+        if coef < 0.0 { (quote! { -#out }, Prec::Unary) } else { (out, Prec::Product) }
     }
 }
 
@@ -254,20 +247,41 @@ fn join_product(factors: Vec<TokenStream>) -> TokenStream {
     out
 }
 
+/// The name of the `core::f64::consts` constant equal to `x`, if there is one.
+fn named_constant(x: f64) -> Option<&'static str> {
+    use std::f64::consts as c;
+    let table = [
+        (c::PI, "PI"),
+        (c::TAU, "TAU"),
+        (c::E, "E"),
+        (c::FRAC_PI_2, "FRAC_PI_2"),
+        (c::FRAC_PI_3, "FRAC_PI_3"),
+        (c::FRAC_PI_4, "FRAC_PI_4"),
+        (c::FRAC_PI_6, "FRAC_PI_6"),
+        (c::FRAC_PI_8, "FRAC_PI_8"),
+        (c::FRAC_1_PI, "FRAC_1_PI"),
+        (c::FRAC_2_PI, "FRAC_2_PI"),
+        (c::SQRT_2, "SQRT_2"),
+        (c::FRAC_1_SQRT_2, "FRAC_1_SQRT_2"),
+        (c::LN_2, "LN_2"),
+        (c::LN_10, "LN_10"),
+    ];
+    table.iter().find(|(v, _)| *v == x).map(|(_, name)| *name)
+}
+
 /// A non-negative finite number as a suffixed literal; anything else as a constant path.
 fn number(x: f64) -> (TokenStream, Prec) {
     if x.is_nan() {
         (quote! { ::core::primitive::f64::NAN }, Prec::Atom)
     } else if x.is_infinite() {
         let inf = quote! { ::core::primitive::f64::INFINITY };
-        if x > 0.0 {
-            (inf, Prec::Atom)
-        } else {
-            (quote! { -#inf }, Prec::Unary)
-        }
+        if x > 0.0 { (inf, Prec::Atom) } else { (quote! { -#inf }, Prec::Unary) }
     } else if x < 0.0 {
-        let lit = Literal::f64_suffixed(-x);
-        (quote! { -#lit }, Prec::Unary)
+        let (magnitude, _) = number(-x);
+        (quote! { -#magnitude }, Prec::Unary)
+    } else if let Some(name) = named_constant(x) {
+        let name = format_ident!("{}", name);
+        (quote! { ::core::f64::consts::#name }, Prec::Atom)
     } else {
         let lit = Literal::f64_suffixed(x);
         (quote! { #lit }, Prec::Atom)

@@ -23,12 +23,8 @@ impl Graph {
         let x = match self.node(e) {
             Node::Num(c) => c.get(),
             Node::Sym(s) => value(*s),
-            Node::Add(c, ts) => ts
-                .iter()
-                .fold(c.get(), |acc, t| acc + self.eval_memo(*t, value, memo)),
-            Node::Mul(c, fs) => fs
-                .iter()
-                .fold(c.get(), |acc, f| acc * self.eval_memo(*f, value, memo)),
+            Node::Add(c, ts) => ts.iter().fold(c.get(), |acc, t| acc + self.eval_memo(*t, value, memo)),
+            Node::Mul(c, fs) => fs.iter().fold(c.get(), |acc, f| acc * self.eval_memo(*f, value, memo)),
             Node::Powi(b, k) => self.eval_memo(*b, value, memo).powi(*k),
             Node::Powf(b, x) => {
                 let b = self.eval_memo(*b, value, memo);

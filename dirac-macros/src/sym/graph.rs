@@ -153,9 +153,7 @@ impl SymSet {
     }
 
     pub fn contains(&self, sym: u32) -> bool {
-        self.0
-            .get(sym as usize / 64)
-            .is_some_and(|w| w & (1 << (sym % 64)) != 0)
+        self.0.get(sym as usize / 64).is_some_and(|w| w & (1 << (sym % 64)) != 0)
     }
 
     fn union_with(&mut self, other: &SymSet) {
@@ -352,11 +350,7 @@ impl Graph {
 
     /// `Π factors` with coefficient 1 for canonical factors (no numbers, no nested products).
     fn product_of(&mut self, factors: &[Id]) -> Id {
-        if factors.len() == 1 {
-            factors[0]
-        } else {
-            self.intern(Node::Mul(Num::new(1.0), factors.into()))
-        }
+        if factors.len() == 1 { factors[0] } else { self.intern(Node::Mul(Num::new(1.0), factors.into())) }
     }
 
     /// `coef · rest` where `rest` is a term without coefficient.

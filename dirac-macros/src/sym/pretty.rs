@@ -32,10 +32,7 @@ impl Printer<'_> {
     fn print(&self, e: Id) -> (String, Prec) {
         let latex = self.style == Style::Latex;
         match self.graph.node(e) {
-            Node::Num(c) => (
-                number(c.get()),
-                if c.get() < 0.0 { Prec::Sum } else { Prec::Atom },
-            ),
+            Node::Num(c) => (number(c.get()), if c.get() < 0.0 { Prec::Sum } else { Prec::Atom }),
             Node::Sym(s) => ((self.name)(*s), Prec::Atom),
             Node::Add(c, terms) => (self.sum(c.get(), terms), Prec::Sum),
             Node::Mul(c, factors) => self.product(c.get(), factors),
@@ -45,9 +42,7 @@ impl Printer<'_> {
                 let x = if latex { x } else { format!("({x})") };
                 (self.power(*b, &x), Prec::Power)
             }
-            Node::Call(Func::Sqrt, x) if latex => {
-                (format!("\\sqrt{{{}}}", self.print(*x).0), Prec::Atom)
-            }
+            Node::Call(Func::Sqrt, x) if latex => (format!("\\sqrt{{{}}}", self.print(*x).0), Prec::Atom),
             Node::Call(f, x) => {
                 let arg = self.print(*x).0;
                 let out = if latex {
@@ -138,11 +133,7 @@ impl Printer<'_> {
                 format!("{out}/({})", den.join("*"))
             };
         }
-        if coef < 0.0 {
-            (format!("-{out}"), Prec::Sum)
-        } else {
-            (out, Prec::Product)
-        }
+        if coef < 0.0 { (format!("-{out}"), Prec::Sum) } else { (out, Prec::Product) }
     }
 }
 

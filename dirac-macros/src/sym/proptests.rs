@@ -46,8 +46,7 @@ fn tree() -> impl Strategy<Value = Tree> {
             inner.clone().prop_map(move |x| Tree::Neg(b(x))),
             (inner.clone(), -3..4i32).prop_map(move |(x, k)| Tree::Powi(b(x), k)),
             (inner.clone(), inner.clone()).prop_map(move |(l, r)| Tree::Powf(b(l), b(r))),
-            (inner.clone(), 0..Func::ALL.len())
-                .prop_map(move |(x, f)| Tree::Call(Func::ALL[f], b(x))),
+            (inner.clone(), 0..Func::ALL.len()).prop_map(move |(x, f)| Tree::Call(Func::ALL[f], b(x))),
             (inner.clone(), inner).prop_map(move |(l, r)| Tree::Atan2(b(l), b(r))),
         ]
     })
@@ -159,11 +158,7 @@ fn close(engine: f64, oracle: f64) -> bool {
 }
 
 fn config() -> Config {
-    Config {
-        cases: 1000,
-        rng_seed: RngSeed::Fixed(0x00d1_7ac0),
-        ..Config::default()
-    }
+    Config { cases: 1000, rng_seed: RngSeed::Fixed(0x00d1_7ac0), ..Config::default() }
 }
 
 proptest! {

@@ -104,9 +104,7 @@ impl Graph {
             }
             "^" => {
                 arity(2)?;
-                let k = raw[1]
-                    .parse::<i32>()
-                    .map_err(|_| "`^` takes an integer exponent")?;
+                let k = raw[1].parse::<i32>().map_err(|_| "`^` takes an integer exponent")?;
                 self.powi(args[0], k)
             }
             "pow" => {
@@ -134,9 +132,5 @@ impl Graph {
 }
 
 fn tokenize(text: &str) -> Vec<String> {
-    text.replace('(', " ( ")
-        .replace(')', " ) ")
-        .split_whitespace()
-        .map(str::to_owned)
-        .collect()
+    text.replace('(', " ( ").replace(')', " ) ").split_whitespace().map(str::to_owned).collect()
 }

@@ -11,13 +11,7 @@ fn same(rows: &[(&str, &str)]) {
         let mut g = Graph::new();
         let a = g.parse_sexpr(lhs).expect("left side parses");
         let b = g.parse_sexpr(rhs).expect("right side parses");
-        assert_eq!(
-            a,
-            b,
-            "{lhs} gave {} but expected {rhs} = {}",
-            g.sexpr(a),
-            g.sexpr(b)
-        );
+        assert_eq!(a, b, "{lhs} gave {} but expected {rhs} = {}", g.sexpr(a), g.sexpr(b));
     }
 }
 
@@ -88,10 +82,7 @@ fn derivative_rules() {
         ("(d x (atan2 y x))", "(/ (- y) (+ (^ x 2) (^ y 2)))"),
         ("(d y (atan2 y x))", "(/ x (+ (^ x 2) (^ y 2)))"),
         ("(d x (sin (* 2 x)))", "(* 2 (cos (* 2 x)))"),
-        (
-            "(d x (* (sin x) (cos x)))",
-            "(- (^ (cos x) 2) (^ (sin x) 2))",
-        ),
+        ("(d x (* (sin x) (cos x)))", "(- (^ (cos x) 2) (^ (sin x) 2))"),
         ("(d x (d x (^ x 4)))", "(* 12 (^ x 2))"),
         ("(d y (d x (* x y (sin y))))", "(+ (sin y) (* y (cos y)))"),
     ]);
@@ -113,22 +104,14 @@ fn dependency_sets_track_symbols() {
 #[test]
 fn pretty_prints_text_and_latex() {
     let mut g = Graph::new();
-    let e = g
-        .parse_sexpr("(+ (* -1 k1 x1) (* k2 (- x2 x1)))")
-        .expect("parses");
+    let e = g.parse_sexpr("(+ (* -1 k1 x1) (* k2 (- x2 x1)))").expect("parses");
     let name = |s: u32| g.sym_name(s).to_owned();
     assert_eq!(pretty(&g, e, Style::Text, &name), "-k1*x1 + k2*(x2 - x1)");
-    assert_eq!(
-        pretty(&g, e, Style::Latex, &name),
-        "-k1 x1 + k2 \\left(x2 - x1\\right)"
-    );
+    assert_eq!(pretty(&g, e, Style::Latex, &name), "-k1 x1 + k2 \\left(x2 - x1\\right)");
     let f = g.parse_sexpr("(/ (sin q) (* 2 m))").expect("parses");
     let name = |s: u32| g.sym_name(s).to_owned();
     assert_eq!(pretty(&g, f, Style::Text, &name), "0.5*sin(q)/m");
-    assert_eq!(
-        pretty(&g, f, Style::Latex, &name),
-        "\\frac{0.5 \\sin\\left(q\\right)}{m}"
-    );
+    assert_eq!(pretty(&g, f, Style::Latex, &name), "\\frac{0.5 \\sin\\left(q\\right)}{m}");
 }
 
 #[test]
@@ -143,16 +126,8 @@ fn emission_binds_shared_subexpressions_once() {
         let ident = quote::format_ident!("{}", g.sym_name(s));
         quote! { #ident }
     };
-    let assigns = [
-        Assign {
-            target: quote! { out[0] },
-            value: a,
-        },
-        Assign {
-            target: quote! { out[1] },
-            value: b,
-        },
-    ];
+    let assigns =
+        [Assign { target: quote! { out[0] }, value: a }, Assign { target: quote! { out[1] }, value: b }];
     let code = emit(&g, &assigns, &leaf).to_string();
     assert_eq!(code.matches("sin").count(), 1, "sin computed once: {code}");
     assert!(code.contains("let s0"), "shared node bound: {code}");

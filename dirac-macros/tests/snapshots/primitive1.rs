@@ -1,0 +1,238 @@
+const _: () = {
+    #[automatically_derived]
+    impl ::dirac::__private::Dimensions for Primitive1 {
+        type Nq = ::dirac::__private::Const<2>;
+        type Nc = ::dirac::__private::Const<0>;
+        type Nh = ::dirac::__private::Const<0>;
+        type Nk = ::dirac::__private::Const<2>;
+        type Ny = ::dirac::__private::Const<6>;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for Primitive1 {
+        const COORDINATES: &'static [&'static str] = &["x1", "x2"];
+        const VELOCITIES: &'static [&'static str] = &["v1", "v2"];
+        const CONSTRAINTS: &'static [&'static str] = &[];
+        const PORTS: &'static [::dirac::__private::Coordinate<Self>] = &[
+            ::dirac::__private::Coordinate::new(1, "x2"),
+        ];
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 9usize,
+            jacobian: 1usize,
+            residual_and_jacobian: 10usize,
+            residual_blocks: 7usize,
+            jacobian_blocks: 1usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "Primitive1: L = 0.5*m1*v1^2 + 0.5*m2*v2^2 - 0.5*k1*x1^2 - 0.5*k2*(x2 - x1)^2\ndx1/dt = v1\ndx2/dt = v2\ndp_x1/dt = -k1*x1 + k2*(x2 - x1)\ndp_x2/dt = -k2*(x2 - x1) + f_x2\np_x1 = m1*v1\np_x2 = m2*v2",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m_{1} v_{1}^{2} + 0.5 m_{2} v_{2}^{2} - 0.5 k_{1} x_{1}^{2} - 0.5 k_{2} \\left(x_{2} - x_{1}\\right)^{2} \\\\\n\\dot{x}_{1} &= v_{1} \\\\\n\\dot{x}_{2} &= v_{2} \\\\\n\\dot{p}_{x_{1}} &= -k_{1} x_{1} + k_{2} \\left(x_{2} - x_{1}\\right) \\\\\n\\dot{p}_{x_{2}} &= -k_{2} \\left(x_{2} - x_{1}\\right) + f_{x_{2}} \\\\\np_{x_{1}} &= m_{1} v_{1} \\\\\np_{x_{2}} &= m_{2} v_{2}\n\\end{aligned}",
+                ),
+            }
+        }
+        #[inline]
+        fn lagrangian(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0.5f64 * self.m1 * v[0].powi(2) + 0.5f64 * self.m2 * v[1].powi(2)
+                - 0.5f64 * self.k1 * q[0].powi(2)
+                - 0.5f64 * self.k2 * (q[1] - q[0]).powi(2);
+            value
+        }
+        #[inline]
+        fn dl_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            let s0 = q[1] - q[0];
+            out[0usize] = -self.k1 * q[0] + self.k2 * s0;
+            out[1usize] = -self.k2 * s0;
+        }
+        #[inline]
+        fn dl_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = self.m1 * v[0];
+            out[1usize] = self.m2 * v[1];
+        }
+        #[inline]
+        fn l_qq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            let s0 = -self.k2;
+            out[(0, 0)] = -self.k1 + s0;
+            out[(0, 1)] = self.k2;
+            out[(1, 0)] = self.k2;
+            out[(1, 1)] = s0;
+        }
+        #[inline]
+        fn l_vq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn l_vv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(0, 0)] = self.m1;
+            out[(1, 1)] = self.m2;
+        }
+        #[inline]
+        fn force(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
+        #[inline]
+        fn force_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn force_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn constraint_matrix(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {}
+        #[inline]
+        fn dav_dq(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {}
+        #[inline]
+        fn datl_dq(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn holonomic(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecH<Self>,
+        ) {}
+        #[inline]
+        fn residual_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            let s0 = q[1] - q[0];
+            out.momentum_rate[0usize] = -self.k1 * q[0] + self.k2 * s0;
+            out.momentum_rate[1usize] = -self.k2 * s0;
+            out.dl_dv[0usize] = self.m1 * v[0];
+            out.dl_dv[1usize] = self.m2 * v[1];
+        }
+        #[inline]
+        fn jacobian_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+        ) {
+            let s0 = -self.k2;
+            out.dpdot_dq[(0, 0)] = -self.k1 + s0;
+            out.dpdot_dq[(0, 1)] = self.k2;
+            out.dpdot_dq[(1, 0)] = self.k2;
+            out.dpdot_dq[(1, 1)] = s0;
+            out.l_vv[(0, 0)] = self.m1;
+            out.l_vv[(1, 1)] = self.m2;
+        }
+        #[inline]
+        fn residual(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::VecY<Self>,
+        ) {
+            let s0 = y[1] - y[0];
+            out[0usize] = y[2];
+            out[1usize] = y[3];
+            out[2usize] = y[4] - self.m1 * y[2];
+            out[3usize] = y[5] - self.m2 * y[3];
+            out[4usize] = -self.k1 * y[0] + self.k2 * s0;
+            out[5usize] = -self.k2 * s0;
+        }
+        #[inline]
+        fn jacobian(
+            &self,
+            _t: ::core::primitive::f64,
+            _y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::MatYY<Self>,
+        ) {
+            let s0 = -self.k2;
+            out[(0, 2)] = 1f64;
+            out[(1, 3)] = 1f64;
+            out[(2, 2)] = -self.m1;
+            out[(2, 4)] = 1f64;
+            out[(3, 3)] = -self.m2;
+            out[(3, 5)] = 1f64;
+            out[(4, 0)] = -self.k1 + s0;
+            out[(4, 1)] = self.k2;
+            out[(5, 0)] = self.k2;
+            out[(5, 1)] = s0;
+        }
+    }
+    #[automatically_derived]
+    impl Primitive1 {
+        ///The coordinate `x1`: names its position, velocity and momentum in a state.
+        pub const X1: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            0,
+            "x1",
+        );
+        ///The coordinate `x2`: names its position, velocity and momentum in a state.
+        pub const X2: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            1,
+            "x2",
+        );
+    }
+};

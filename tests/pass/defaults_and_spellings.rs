@@ -1,0 +1,21 @@
+//! Velocity names default to `v_<coordinate>`; free-function and method spellings, `PI`, and
+//! several `#[dirac]` attributes are accepted.
+
+use dirac::prelude::*;
+
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(theta, phi))]
+#[dirac(lagrangian = 0.5 * m * (v_theta * v_theta + sin(theta).powi(2) * v_phi * v_phi)
+                   - m * g * f64::cos(theta) + 0.0 * PI)]
+#[dirac(force(phi) = -c * v_phi, holonomic = theta - phi * 0.5)]
+pub struct Spherical {
+    pub m: f64,
+    pub g: f64,
+    pub c: f64,
+}
+
+fn main() {
+    assert_eq!(Spherical::VELOCITIES, &["v_theta", "v_phi"]);
+    assert_eq!(Spherical::CONSTRAINTS, &["holonomic0"]);
+    let _ = Spherical::HOLONOMIC0;
+}

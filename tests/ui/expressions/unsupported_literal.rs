@@ -1,0 +1,10 @@
+use dirac::prelude::*;
+
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 2u32 * x)]
+struct Particle {
+    m: f64,
+}
+
+fn main() {}
