@@ -146,7 +146,7 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 let content;
                 syn::parenthesized!(content in input);
                 let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
-                model.ports.extend(names);
+                model.ports.extend(names.iter().map(IdentExt::unraw));
             }
             LAGRANGIAN => {
                 input.parse::<Token![=]>()?;
@@ -168,7 +168,7 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             FORCE => {
                 let content;
                 syn::parenthesized!(content in input);
-                let coordinate: Ident = content.parse()?;
+                let coordinate = content.parse::<Ident>()?.unraw();
                 if !content.is_empty() {
                     return Err(content.error("expected one coordinate: `force(x) = expr`"));
                 }
@@ -195,10 +195,10 @@ fn parse_coordinates(model: &mut Model<'_>, input: ParseStream) -> syn::Result<(
     let content;
     let paren = syn::parenthesized!(content in input);
     let decls = Punctuated::<CoordinateDecl, Token![,]>::parse_terminated_with(&content, |s| {
-        let name: Ident = s.parse()?;
+        let name = s.parse::<Ident>()?.unraw();
         let velocity = if s.peek(Token![=>]) {
             s.parse::<Token![=>]>()?;
-            s.parse()?
+            s.parse::<Ident>()?.unraw()
         } else {
             Ident::new(&format!("v_{name}"), name.span())
         };
@@ -220,7 +220,7 @@ fn parse_optional_name(input: ParseStream) -> syn::Result<Option<Ident>> {
     }
     let content;
     syn::parenthesized!(content in input);
-    let name: Ident = content.parse()?;
+    let name = content.parse::<Ident>()?.unraw();
     if !content.is_empty() {
         return Err(content.error("expected one name: `constraint(name) = expr`"));
     }

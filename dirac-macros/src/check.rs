@@ -4,6 +4,7 @@
 use std::collections::{HashMap, HashSet};
 
 use syn::Ident;
+use syn::ext::IdentExt;
 
 use crate::ast::Model;
 use crate::ctxt::Ctxt;
@@ -38,7 +39,7 @@ fn check_required(cx: &Ctxt, model: &Model<'_>) {
 fn check_names(cx: &Ctxt, model: &Model<'_>) {
     let mut seen: HashMap<String, &'static str> = HashMap::new();
     let mut declare = |ident: &Ident, what: &'static str| {
-        let name = ident.to_string();
+        let name = ident.unraw().to_string();
         if name == TIME {
             cx.error_spanned_by(ident, format!("`{TIME}` is reserved for time and cannot name a {what}"));
             return;

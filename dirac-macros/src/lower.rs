@@ -140,7 +140,7 @@ impl Lowerer<'_> {
         let Some(ident) = path.path.get_ident() else {
             return self.unsupported(path, "this path");
         };
-        let name = ident.to_string();
+        let name = syn::ext::IdentExt::unraw(ident).to_string();
         let Some(&(id, role)) = self.scope.names.get(&name) else {
             let hint = did_you_mean(&name, self.scope.ordered.iter().map(String::as_str));
             self.cx.error_spanned_by(

@@ -2,6 +2,7 @@
 //! holonomic constraints as graph expressions over named symbols.
 
 use syn::Ident;
+use syn::ext::IdentExt;
 
 use crate::ast::{ConstraintKind, Model};
 use crate::ctxt::Ctxt;
@@ -131,8 +132,9 @@ impl SymModel {
     fn declare_symbols(&mut self) -> Scope {
         let mut scope = Scope::new();
         for (i, p) in self.params.clone().iter().enumerate() {
-            let id = self.symbol(&p.to_string(), SymKind::Parameter(i));
-            scope.declare(p.to_string(), id, Role::Parameter);
+            let name = p.unraw().to_string();
+            let id = self.symbol(&name, SymKind::Parameter(i));
+            scope.declare(name, id, Role::Parameter);
         }
         for (i, c) in self.coordinates.clone().iter().enumerate() {
             let id = self.symbol(&c.to_string(), SymKind::Q(i));

@@ -14,8 +14,18 @@ pub struct Spherical {
     pub c: f64,
 }
 
+/// Raw identifiers name coordinates and parameters like any other name.
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(r#type => r#move))]
+#[dirac(lagrangian = 0.5 * r#mut * r#move * r#move - r#type * 0.0)]
+pub struct Raw {
+    pub r#mut: f64,
+}
+
 fn main() {
     assert_eq!(Spherical::VELOCITIES, &["v_theta", "v_phi"]);
     assert_eq!(Spherical::CONSTRAINTS, &["holonomic0"]);
     let _ = Spherical::HOLONOMIC0;
+    assert_eq!(Raw::COORDINATES, &["type"]);
+    assert_eq!(Raw::TYPE.name(), "type");
 }
