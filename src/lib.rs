@@ -42,17 +42,17 @@
 
 extern crate self as dirac;
 
-pub use dirac_macros::LagrangeDirac;
+pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatKK, MatQQ, MatYY,
-    OperationCounts, ResidualBlocks, State, Storage, VecC, VecH, VecK, VecQ, VecY,
+    Constraint, Coordinate, Dimensions, DiracStructure, Equations, JacobianBlocks, LagrangeDirac, MatCQ,
+    MatKK, MatQQ, MatYY, OperationCounts, ResidualBlocks, State, Storage, VecC, VecH, VecK, VecQ, VecY,
 };
 
 /// Everything a model file needs: `use dirac::prelude::*;`.
 pub mod prelude {
     pub use crate::{
-        Constraint, Coordinate, Dimensions, Equations, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY,
-        ResidualBlocks, State, VecC, VecH, VecQ, VecY,
+        Constraint, Coordinate, Dimensions, DiracStructure, Equations, Interconnection, JacobianBlocks,
+        LagrangeDirac, MatCQ, MatQQ, MatYY, ResidualBlocks, State, VecC, VecH, VecQ, VecY,
     };
 }
 

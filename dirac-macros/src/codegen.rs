@@ -23,7 +23,7 @@ enum Arg {
 
 /// A `Vec` of assignments `out…[i] = e_i`, keeping all of them (a vector).
 fn vector(target: &TokenStream, values: &[Id]) -> Vec<Assign> {
-    values.iter().enumerate().map(|(i, &value)| Assign { target: quote! { #target[#i] }, value }).collect()
+    values.iter().enumerate().map(|(i, &value)| Assign::set(quote! { #target[#i] }, value)).collect()
 }
 
 impl SymModel {
@@ -34,7 +34,7 @@ impl SymModel {
             for (j, &value) in row.iter().enumerate() {
                 if !self.graph.is_zero(value) {
                     let (i, j) = (Literal::usize_unsuffixed(i), Literal::usize_unsuffixed(j));
-                    out.push(Assign { target: quote! { #target[(#i, #j)] }, value });
+                    out.push(Assign::set(quote! { #target[(#i, #j)] }, value));
                 }
             }
         }
@@ -206,12 +206,7 @@ impl SymModel {
         use Arg::*;
         let mut items = Vec::new();
         let l = self.lagrangian;
-        items.push(self.method(
-            "lagrangian",
-            &[T, Q, V],
-            None,
-            &[Assign { target: quote! { value }, value: l }],
-        ));
+        items.push(self.method("lagrangian", &[T, Q, V], None, &[Assign::set(quote! { value }, l)]));
 
         let (q, v) = (self.q.clone(), self.v.clone());
         let dl_dq = self.dl_dq();

@@ -96,12 +96,12 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
     let coordinates = names.coordinates.iter().enumerate().map(|(i, (c, name))| {
         let i = proc_macro2::Literal::usize_unsuffixed(i);
         let doc = format!("The coordinate `{name}`: names its position, velocity and momentum in a state.");
-        quote! { #[doc = #doc] #vis const #c: #p::Coordinate<Self> = #p::Coordinate::new(#i, #name); }
+        quote! { #[doc = #doc] #vis const #c: #p::Coordinate<Self> = #p::Coordinate::new(#i); }
     });
     let constraints = names.constraints.iter().enumerate().map(|(j, (c, name))| {
         let j = proc_macro2::Literal::usize_unsuffixed(j);
         let doc = format!("The constraint `{name}`: names its row of A(q) and its multiplier in a state.");
-        quote! { #[doc = #doc] #vis const #c: #p::Constraint<Self> = #p::Constraint::new(#j, #name); }
+        quote! { #[doc = #doc] #vis const #c: #p::Constraint<Self> = #p::Constraint::new(#j); }
     });
     quote! {
         #[automatically_derived]
@@ -121,15 +121,8 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
     let coordinates: Vec<String> = sym.coordinates.iter().map(ToString::to_string).collect();
     let velocities: Vec<String> = sym.velocities.iter().map(ToString::to_string).collect();
     let constraints = sym.constraint_names.clone();
-    let ports: Vec<TokenStream> = sym
-        .ports
-        .iter()
-        .map(|&i| {
-            let name = &coordinates[i];
-            let i = proc_macro2::Literal::usize_unsuffixed(i);
-            quote! { #p::Coordinate::new(#i, #name) }
-        })
-        .collect();
+    let ports: Vec<_> = sym.ports.iter().map(|&i| proc_macro2::Literal::usize_unsuffixed(i)).collect();
+    let holonomic = size(sym.h());
     let (text, latex) = sym.equations(&ident.to_string());
     let methods = sym.methods();
     let c = &sym.op_counts;
@@ -151,10 +144,14 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
             // Coefficients folded from the user's numbers may approximate named constants.
             #[allow(clippy::approx_constant)]
             impl #p::LagrangeDirac for #ident {
-                const COORDINATES: &'static [&'static str] = &[#(#coordinates),*];
-                const VELOCITIES: &'static [&'static str] = &[#(#velocities),*];
-                const CONSTRAINTS: &'static [&'static str] = &[#(#constraints),*];
-                const PORTS: &'static [#p::Coordinate<Self>] = &[#(#ports),*];
+                const NAMES: &'static #p::Names = &#p::Names {
+                    coordinates: &[#(#coordinates),*],
+                    velocities: &[#(#velocities),*],
+                    constraints: &[#(#constraints),*],
+                    holonomic: #holonomic,
+                    ports: &[#(#ports),*],
+                    subsystems: &[],
+                };
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
                     residual: #r,
                     jacobian: #j,
@@ -231,10 +228,14 @@ fn stub(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
                 type Ny = #p::Const<#ny>;
             }
             impl #p::LagrangeDirac for #ident {
-                const COORDINATES: &'static [&'static str] = &[];
-                const VELOCITIES: &'static [&'static str] = &[];
-                const CONSTRAINTS: &'static [&'static str] = &[];
-                const PORTS: &'static [#p::Coordinate<Self>] = &[];
+                const NAMES: &'static #p::Names = &#p::Names {
+                    coordinates: &[],
+                    velocities: &[],
+                    constraints: &[],
+                    holonomic: 0,
+                    ports: &[],
+                    subsystems: &[],
+                };
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
                 fn equations() -> #p::Equations { #unreachable }
                 fn lagrangian(&self, #tqv) -> #f { #unreachable }

@@ -11,6 +11,7 @@ mod codegen;
 mod ctxt;
 mod equations;
 mod expand;
+mod interconnect;
 mod lower;
 mod model;
 mod suggest;
@@ -38,4 +39,20 @@ use syn::{DeriveInput, parse_macro_input};
 pub fn derive_lagrange_dirac(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     expand::derive(&input).into()
+}
+
+/// Derives `dirac::LagrangeDirac` for a struct whose fields are Lagrange-Dirac systems (its
+/// subsystems) and `f64` parameters, interconnected through `#[dirac(...)]` attributes:
+///
+/// - `connect(a.x, b.y)`: ports `a.x` and `b.y` move together, `v_a.x = v_b.y`, and their
+///   efforts balance, `f_a.x + f_b.y = 0` (paper eq. 8);
+/// - `constraint(name) = expr`: a general interconnection one-form, linear in the subsystems'
+///   velocities (`r * wheel.v_theta - cart.v_x`), with coefficients that may depend on their
+///   coordinates and on the struct's `f64` fields.
+///
+/// The result is again a Lagrange-Dirac system, so interconnections nest.
+#[proc_macro_derive(Interconnection, attributes(dirac))]
+pub fn derive_interconnection(input: TokenStream) -> TokenStream {
+    let input = parse_macro_input!(input as DeriveInput);
+    interconnect::derive(&input).into()
 }

@@ -4,6 +4,7 @@
 //! constraint may not use velocities, no constraint may use time). Every unsupported construct
 //! and unknown name is reported at its own tokens, and lowering goes on to find the next one.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 
 use syn::{BinOp, Expr, ExprLit, Lit, UnOp};
@@ -25,11 +26,40 @@ pub enum Role {
 pub struct Scope {
     names: HashMap<String, (Id, Role)>,
     ordered: Vec<String>,
+    /// In an interconnection: the subsystem fields, whose members `field.name` may be used.
+    subsystems: Vec<String>,
+    /// The `field.name` paths met so far, each with its symbol, in order of first use.
+    refs: RefCell<Vec<SubsystemRef>>,
+}
+
+/// A name of a subsystem's coordinate or velocity, `left.x2`, used in an interconnection.
+pub struct SubsystemRef {
+    /// The path segments, `["left", "x2"]`.
+    pub path: Vec<String>,
+    /// The user's tokens, for error spans.
+    pub tokens: proc_macro2::TokenStream,
+    /// The symbol it lowers to.
+    pub id: Id,
 }
 
 impl Scope {
     pub fn new() -> Scope {
-        Scope { names: HashMap::new(), ordered: Vec::new() }
+        Scope {
+            names: HashMap::new(),
+            ordered: Vec::new(),
+            subsystems: Vec::new(),
+            refs: RefCell::new(Vec::new()),
+        }
+    }
+
+    /// A scope whose expressions may name members of these subsystem fields.
+    pub fn with_subsystems(subsystems: Vec<String>) -> Scope {
+        Scope { subsystems, ..Scope::new() }
+    }
+
+    /// The subsystem members referred to so far.
+    pub fn take_refs(&self) -> Vec<SubsystemRef> {
+        self.refs.take()
     }
 
     pub fn declare(&mut self, name: String, id: Id, role: Role) {
@@ -104,6 +134,7 @@ impl Lowerer<'_> {
                 self.function(&call.method, &call.receiver, &args, ctx)
             }
             Expr::Call(call) => self.free_function(call, ctx),
+            Expr::Field(field) if !self.scope.subsystems.is_empty() => self.subsystem_ref(field),
             _ => self.unsupported(expr, "this expression"),
         }
     }
@@ -141,16 +172,21 @@ impl Lowerer<'_> {
             return self.unsupported(path, "this path");
         };
         let name = syn::ext::IdentExt::unraw(ident).to_string();
+        if self.scope.subsystems.contains(&name) {
+            let message =
+                format!("`{name}` is a subsystem; name one of its coordinates or velocities, as `{name}.x`");
+            self.cx.error_spanned_by(ident, message);
+            return None;
+        }
         let Some(&(id, role)) = self.scope.names.get(&name) else {
             let hint = did_you_mean(&name, self.scope.ordered.iter().map(String::as_str));
-            self.cx.error_spanned_by(
-                ident,
-                format!(
-                    "unknown name `{name}` in {}{hint}\nmodel expressions may use the struct's `f64` fields, \
-                     the coordinates, their velocities, and time `t`",
-                    ctx.what
-                ),
-            );
+            let allowed = if self.scope.subsystems.is_empty() {
+                "model expressions may use the struct's `f64` fields, the coordinates, their velocities, and time `t`"
+            } else {
+                "interconnection constraints may use the struct's `f64` fields and subsystem members such as `left.x`"
+            };
+            self.cx
+                .error_spanned_by(ident, format!("unknown name `{name}` in {}{hint}\n{allowed}", ctx.what));
             return None;
         };
         match role {
@@ -177,6 +213,33 @@ impl Lowerer<'_> {
             }
             _ => Some(id),
         }
+    }
+
+    /// `left.x2` or `chain.right.x3`: a member of a subsystem, resolved when the program is compiled.
+    fn subsystem_ref(&mut self, field: &syn::ExprField) -> Option<Id> {
+        let path = member_path(&Expr::Field(field.clone()));
+        let Some(path) = path else {
+            self.cx
+                .error_spanned_by(field, "expected a subsystem member such as `left.x` or `outer.inner.x`");
+            return None;
+        };
+        if !self.scope.subsystems.contains(&path[0]) {
+            let hint = did_you_mean(&path[0], self.scope.subsystems.iter().map(String::as_str));
+            let message = format!(
+                "unknown subsystem `{}`{hint}\nthe subsystems of this interconnection are its non-`f64` fields: {}",
+                path[0],
+                self.scope.subsystems.join(", ")
+            );
+            self.cx.error_spanned_by(&field.base, message);
+            return None;
+        }
+        let dotted = path.join(".");
+        let id = self.graph.symbol(&format!("ref:{dotted}"));
+        let mut refs = self.scope.refs.borrow_mut();
+        if !refs.iter().any(|r| r.path == path) {
+            refs.push(SubsystemRef { path, tokens: quote::ToTokens::to_token_stream(field), id });
+        }
+        Some(id)
     }
 
     fn free_function(&mut self, call: &syn::ExprCall, ctx: Context<'_>) -> Option<Id> {
@@ -244,6 +307,24 @@ impl Lowerer<'_> {
         let _ = self.lower(receiver, ctx);
         self.cx.error_spanned_by(method, format!("unsupported function `{name}`; {SUPPORTED}"));
         None
+    }
+}
+
+/// `a.b.c` as `["a", "b", "c"]`, if the expression is such a path of named members.
+pub fn member_path(expr: &Expr) -> Option<Vec<String>> {
+    match expr {
+        Expr::Path(p) => Some(vec![syn::ext::IdentExt::unraw(p.path.get_ident()?).to_string()]),
+        Expr::Field(f) => {
+            let syn::Member::Named(name) = &f.member else {
+                return None;
+            };
+            let mut path = member_path(&f.base)?;
+            path.push(syn::ext::IdentExt::unraw(name).to_string());
+            Some(path)
+        }
+        Expr::Paren(p) => member_path(&p.expr),
+        Expr::Group(g) => member_path(&g.expr),
+        _ => None,
     }
 }
 

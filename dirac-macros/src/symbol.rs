@@ -21,3 +21,9 @@ pub const TIME: &str = "t";
 
 /// Every key a `#[dirac(...)]` attribute of a model accepts, for error messages.
 pub const MODEL_KEYS: &[&str] = &[COORDINATES, PORT, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE];
+
+/// `connect(a.x, b.y)`: an interconnection of two ports, `v_a.x = v_b.y` and `f_a.x + f_b.y = 0`.
+pub const CONNECT: &str = "connect";
+
+/// Every key a `#[dirac(...)]` attribute of an interconnection accepts, for error messages.
+pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT];

@@ -7,36 +7,44 @@
 use core::fmt;
 use core::marker::PhantomData;
 
+use nalgebra::DefaultAllocator;
+
+use crate::dims::Storage;
+use crate::model::LagrangeDirac;
+
 /// A coordinate `q_i` of model `M`; it also names the velocity `v_i` and the momentum `p_i`.
 pub struct Coordinate<M: ?Sized> {
     index: usize,
-    name: &'static str,
     model: PhantomData<fn() -> M>,
 }
 
 /// A constraint row of model `M`; it names the row of `A(q)` and its multiplier `λ_j`.
 pub struct Constraint<M: ?Sized> {
     index: usize,
-    name: &'static str,
     model: PhantomData<fn() -> M>,
 }
 
 macro_rules! key_impls {
-    ($key:ident, $what:literal) => {
+    ($key:ident, $what:literal, $names:ident) => {
         impl<M: ?Sized> $key<M> {
-            #[doc = concat!("The ", $what, " with this position and name; used by generated code.")]
-            pub const fn new(index: usize, name: &'static str) -> Self {
-                Self { index, name, model: PhantomData }
+            #[doc = concat!("The ", $what, " at this position; used by generated code.")]
+            pub const fn new(index: usize) -> Self {
+                Self { index, model: PhantomData }
             }
 
             #[doc = concat!("The position of this ", $what, " in its vector.")]
             pub const fn index(self) -> usize {
                 self.index
             }
+        }
 
-            #[doc = concat!("The name of this ", $what, " as declared in the model.")]
-            pub const fn name(self) -> &'static str {
-                self.name
+        impl<M: LagrangeDirac> $key<M>
+        where
+            DefaultAllocator: Storage<M>,
+        {
+            #[doc = concat!("The full dotted name of this ", $what, ", such as `left.x2`.")]
+            pub fn name(self) -> String {
+                M::$names().swap_remove(self.index)
             }
         }
 
@@ -58,17 +66,20 @@ macro_rules! key_impls {
 
         impl<M: ?Sized> fmt::Debug for $key<M> {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                write!(f, "{}({} #{})", stringify!($key), self.name, self.index)
+                write!(f, "{}(#{})", stringify!($key), self.index)
             }
         }
 
-        impl<M: ?Sized> fmt::Display for $key<M> {
+        impl<M: LagrangeDirac> fmt::Display for $key<M>
+        where
+            DefaultAllocator: Storage<M>,
+        {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str(self.name)
+                f.write_str(&self.name())
             }
         }
     };
 }
 
-key_impls!(Coordinate, "coordinate");
-key_impls!(Constraint, "constraint");
+key_impls!(Coordinate, "coordinate", coordinate_names);
+key_impls!(Constraint, "constraint", constraint_names);

@@ -3,26 +3,42 @@
 //!
 //! Most users reach this crate through the `dirac` facade and its prelude.
 
+/// Moving subsystem parts in and out of composites, for generated code.
+#[doc(hidden)]
+pub mod assemble;
 /// Type-level sizes of a model and the allocator bound that goes with them.
 pub mod dims;
+/// Dirac structures as objects, with products, interconnection and membership.
+pub mod dirac_structure;
+/// The flat DAE assembled from a model's blocks.
+pub mod flat;
 /// Typed names of coordinates and constraints.
 pub mod keys;
 /// The model trait and its block structs.
 pub mod model;
+/// Names of a model as a tree that `const` code can search.
+pub mod names;
 /// The state `(q, v, p, λ)` with named access.
 pub mod state;
 
 pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
+pub use dirac_structure::{DiracStructure, Membership};
 pub use keys::{Constraint, Coordinate};
 pub use model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
+pub use names::{Names, ResolveError, Resolved, Subsystem};
 pub use state::State;
 
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]
 pub mod __private {
+    pub use crate::assemble::{
+        Slot, gather_c, gather_q, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
+    };
+    pub use crate::dims::Storage;
     pub use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, VecC, VecH, VecQ, VecY};
     pub use crate::keys::{Constraint, Coordinate};
     pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
-    pub use nalgebra::Const;
+    pub use crate::names::{Names, ResolveError, Resolved, Subsystem};
+    pub use nalgebra::{Const, DefaultAllocator};
     pub use std::borrow::Cow;
 }

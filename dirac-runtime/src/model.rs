@@ -18,6 +18,7 @@ use nalgebra::DefaultAllocator;
 
 use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, Storage, VecC, VecH, VecQ, VecY};
 use crate::keys::{Constraint, Coordinate};
+use crate::names::Names;
 
 /// The blocks of the residual that integrators evaluate at every Newton iteration.
 pub struct ResidualBlocks<M: Dimensions>
@@ -148,14 +149,8 @@ pub trait LagrangeDirac: Dimensions + Sized + 'static
 where
     DefaultAllocator: Storage<Self>,
 {
-    /// The coordinate names, in the order of `q`.
-    const COORDINATES: &'static [&'static str];
-    /// The velocity names, in the order of `v`.
-    const VELOCITIES: &'static [&'static str];
-    /// The constraint names, in the order of the rows of `A(q)` and of `λ`.
-    const CONSTRAINTS: &'static [&'static str];
-    /// The coordinates through which the model may be interconnected.
-    const PORTS: &'static [Coordinate<Self>];
+    /// The names of the model's coordinates, velocities, constraints, ports and subsystems.
+    const NAMES: &'static Names;
     /// The arithmetic cost of the generated kernels.
     const OPERATION_COUNTS: OperationCounts;
 
@@ -208,22 +203,66 @@ where
         out: &mut JacobianBlocks<Self>,
     );
 
-    /// The flat right-hand side `f(t, y)` of `M ẏ = f(t, y)`, `M = diag(I, 0, I, 0)`, in the
-    /// slots of `y = (q, v, p, λ)`: `(v, p − ∂L/∂v, ∂L/∂q + F + Aᵀλ, A v)`.
-    fn residual(&self, t: f64, y: &VecY<Self>, out: &mut VecY<Self>);
-    /// The flat Jacobian `∂f/∂y` (sparse write).
-    fn jacobian(&self, t: f64, y: &VecY<Self>, out: &mut MatYY<Self>);
-
-    /// The coordinate with this name, if the model declares one.
-    fn coordinate(name: &str) -> Option<Coordinate<Self>> {
-        let index = Self::COORDINATES.iter().position(|c| *c == name)?;
-        Some(Coordinate::new(index, Self::COORDINATES[index]))
+    /// The interconnection forces `Ωᵀμ` of the model and, scattered, of its subsystems: the
+    /// efforts at the ports (zero for a primitive model).
+    fn interconnection_forces(&self, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut VecQ<Self>) {
+        let _ = (q, lambda);
+        out.fill(0.0);
     }
 
-    /// The constraint with this name, if the model declares one.
+    /// The flat right-hand side `f(t, y)` of `M ẏ = f(t, y)`, `M = diag(I, 0, I, 0)`, in the
+    /// slots of `y = (q, v, p, λ)`: `(v, p − ∂L/∂v, ∂L/∂q + F + Aᵀλ, A v)`.
+    ///
+    /// The default assembles it from [`LagrangeDirac::residual_blocks`]; the derive for a
+    /// primitive model emits a specialised version.
+    fn residual(&self, t: f64, y: &VecY<Self>, out: &mut VecY<Self>) {
+        crate::flat::residual_from_blocks(self, t, y, out);
+    }
+
+    /// The flat Jacobian `∂f/∂y`. Entries outside the blocks of the design notes' Jacobian are
+    /// never written; the derive for a primitive model writes structural nonzeros only.
+    ///
+    /// The default assembles it from [`LagrangeDirac::jacobian_blocks`].
+    fn jacobian(&self, t: f64, y: &VecY<Self>, out: &mut MatYY<Self>) {
+        crate::flat::jacobian_from_blocks(self, t, y, out);
+    }
+
+    /// The full dotted name of every coordinate, in the order of `q` (`left.x2` in a composite).
+    fn coordinate_names() -> Vec<String> {
+        Self::NAMES.coordinate_names()
+    }
+
+    /// The full dotted name of every velocity, in the order of `v`.
+    fn velocity_names() -> Vec<String> {
+        Self::NAMES.velocity_names()
+    }
+
+    /// The full dotted name of every constraint, in the order of the rows of `A(q)` and of `λ`.
+    fn constraint_names() -> Vec<String> {
+        Self::NAMES.constraint_names()
+    }
+
+    /// The coordinates through which the model may be interconnected, at any depth.
+    fn ports() -> Vec<Coordinate<Self>> {
+        Self::NAMES.port_indices().into_iter().map(Coordinate::new).collect()
+    }
+
+    /// The coordinate with this (dotted) name, if the model has one.
+    fn coordinate(name: &str) -> Option<Coordinate<Self>> {
+        Self::NAMES.coordinate_names().iter().position(|c| c == name).map(Coordinate::new)
+    }
+
+    /// The constraint with this (dotted) name, if the model has one.
     fn constraint(name: &str) -> Option<Constraint<Self>> {
-        let index = Self::CONSTRAINTS.iter().position(|c| *c == name)?;
-        Some(Constraint::new(index, Self::CONSTRAINTS[index]))
+        Self::NAMES.constraint_names().iter().position(|c| c == name).map(Constraint::new)
+    }
+
+    /// The power `⟨Ωᵀμ, v⟩` of the interconnection forces; zero wherever the interconnection
+    /// constraints hold, since an interconnection is lossless (Tellegen's theorem).
+    fn interconnection_power(&self, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>) -> f64 {
+        let mut f = VecQ::<Self>::zeros();
+        self.interconnection_forces(q, lambda, &mut f);
+        f.dot(v)
     }
 
     /// The generalised energy `E(q, v, p) = ⟨p, v⟩ − L(q, v, t)`.

@@ -142,6 +142,14 @@ fn blocks_agree_with_flat_forms_for_every_model() {
     check_blocks(&LcCircuit { ind: 1.0, cap: 1.0 }, 17);
     check_blocks(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 18);
     check_blocks(&AllFunctions { m: 1.5, k: 0.7 }, 19);
+    let coupled =
+        CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
+    check_blocks(&coupled, 20);
+    let chain = Chain {
+        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
+        right: Primitive2 { m3: 3.0, k3: 6.0 },
+    };
+    check_blocks(&chain, 21);
 }
 
 /// Structural zeros are never written: entries that stay zero in a zeroed buffer keep a

@@ -33,3 +33,21 @@ fn eight_link_pendulum() {
 fn every_supported_function() {
     check_jacobian_by_differences(&AllFunctions { m: 1.5, k: 0.7 }, 9, 40);
 }
+
+#[test]
+fn interconnected_models() {
+    let chain = Chain {
+        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
+        right: Primitive2 { m3: 3.0, k3: 6.0 },
+    };
+    check_jacobian_by_differences(&chain, 61, 10);
+    let gear = RackAndPinion { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, r: 0.3 };
+    check_jacobian_by_differences(&gear, 62, 10);
+    let coupled =
+        CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
+    check_jacobian_by_differences(&coupled, 63, 20);
+    let tail = Tail { m: 1.0, k: 2.0 };
+    let head = Chain3 { left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, right: tail.clone() };
+    let five = Chain5 { body: Chain4 { head, tail: tail.clone() }, end: tail };
+    check_jacobian_by_differences(&five, 64, 5);
+}

@@ -6,6 +6,7 @@ mod zoo;
 mod blocks;
 mod hand_derivations;
 mod hygiene;
+mod interconnection;
 mod jacobians;
 mod named_access;
 mod paper;

@@ -164,3 +164,116 @@ pub struct AllFunctions {
     pub m: f64,
     pub k: f64,
 }
+
+/// The paper's example torn and interconnected: primitive systems 1 and 2 joined at the ports
+/// x2 and x̄2 (v2 = v̄2, f2 + f̄2 = 0).
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(left.x2, right.x2bar))]
+pub struct Chain {
+    pub left: Primitive1,
+    pub right: Primitive2,
+}
+
+/// The paper's chain extended by one mass: wall —k1— m1 —k2— m2 —k3— m3 —k4— m4 —k5— m5,
+/// as one model; the reference for the three-level hierarchy below.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => v1, x2 => v2, x3 => v3, x4 => v4, x5 => v5))]
+#[dirac(lagrangian = 0.5 * (m1 * v1 * v1 + m2 * v2 * v2 + m3 * v3 * v3 + m4 * v4 * v4 + m5 * v5 * v5)
+                   - 0.5 * (k1 * x1 * x1 + k2 * (x2 - x1).powi(2) + k3 * (x3 - x2).powi(2)
+                            + k4 * (x4 - x3).powi(2) + k5 * (x5 - x4).powi(2)))]
+pub struct MassSpringChain5 {
+    pub m1: f64,
+    pub m2: f64,
+    pub m3: f64,
+    pub m4: f64,
+    pub m5: f64,
+    pub k1: f64,
+    pub k2: f64,
+    pub k3: f64,
+    pub k4: f64,
+    pub k5: f64,
+}
+
+/// A spring and a mass hanging off a port: x̄ —k— m. Degenerate like primitive system 2.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(xbar => vbar, x => v), port(xbar, x))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * (x - xbar).powi(2))]
+pub struct Tail {
+    pub m: f64,
+    pub k: f64,
+}
+
+/// Level 1 of a hierarchy: the paper's chain built from primitive system 1 and a tail, whose
+/// free end stays a port.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(left.x2, right.xbar))]
+pub struct Chain3 {
+    pub left: Primitive1,
+    pub right: Tail,
+}
+
+/// Level 2: a tail attached to the level-1 chain's last mass.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(head.right.x, tail.xbar))]
+pub struct Chain4 {
+    pub head: Chain3,
+    pub tail: Tail,
+}
+
+/// Level 3: another tail attached to the level-2 composite's last mass.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(body.tail.x, end.xbar))]
+pub struct Chain5 {
+    pub body: Chain4,
+    pub end: Tail,
+}
+
+/// A wheel on a torsion spring.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(theta => v_theta))]
+#[dirac(lagrangian = 0.5 * j * v_theta * v_theta - 0.5 * k_theta * theta * theta)]
+pub struct Wheel {
+    pub j: f64,
+    pub k_theta: f64,
+}
+
+/// A cart on a spring.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v_x))]
+#[dirac(lagrangian = 0.5 * m * v_x * v_x - 0.5 * k * x * x)]
+pub struct Cart {
+    pub m: f64,
+    pub k: f64,
+}
+
+/// A rack and pinion: the cart moves r per radian of the wheel, `r θ̇ − ẋ = 0`.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(gear) = r * wheel.v_theta - cart.v_x)]
+pub struct RackAndPinion {
+    pub wheel: Wheel,
+    pub cart: Cart,
+    pub r: f64,
+}
+
+/// The rack and pinion by hand, in the wheel angle alone (x = r θ substituted).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(theta => v_theta))]
+#[dirac(lagrangian = 0.5 * (j + m * r * r) * v_theta * v_theta - 0.5 * (k_theta + k * r * r) * theta * theta)]
+pub struct GearedByHand {
+    pub j: f64,
+    pub k_theta: f64,
+    pub m: f64,
+    pub k: f64,
+    pub r: f64,
+}
+
+/// A wheel and a cart joined by a one-form whose coefficients depend on both subsystems'
+/// coordinates and on a parameter: it exercises every interconnection block (A, ∂(Av)/∂q,
+/// ∂(Aᵀμ)/∂q across subsystems).
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(tie) = (1.0 + 0.1 * wheel.theta.sin()) * wheel.v_theta - c * cart.x.cos() * cart.v_x)]
+pub struct CoupledByOneForm {
+    pub wheel: Wheel,
+    pub cart: Cart,
+    pub c: f64,
+}

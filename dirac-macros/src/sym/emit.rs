@@ -10,12 +10,28 @@ use quote::{format_ident, quote};
 
 use super::graph::{Graph, Id, Node};
 
-/// One assignment `target = value;` of generated code.
+/// One assignment `target = value;` of generated code, or `if guard { target += value; }`.
 pub struct Assign {
     /// The place written, for example `out[(0, 1)]`.
     pub target: TokenStream,
     /// The expression written to it.
     pub value: Id,
+    /// A condition (a constant in practice) under which the assignment happens.
+    pub guard: Option<TokenStream>,
+    /// Whether the value is added to the target instead of replacing it.
+    pub accumulate: bool,
+}
+
+impl Assign {
+    /// `target = value;`
+    pub fn set(target: TokenStream, value: Id) -> Assign {
+        Assign { target, value, guard: None, accumulate: false }
+    }
+
+    /// `if guard { target += value; }`
+    pub fn add_if(guard: TokenStream, target: TokenStream, value: Id) -> Assign {
+        Assign { target, value, guard: Some(guard), accumulate: true }
+    }
 }
 
 /// How tightly an emitted expression binds, loosest first.
@@ -46,7 +62,15 @@ pub fn emit(graph: &Graph, assigns: &[Assign], leaf: &dyn Fn(u32) -> TokenStream
     for a in assigns {
         let target = &a.target;
         let (value, _) = emitter.render(a.value);
-        body.extend(quote! { #target = #value; });
+        let statement = if a.accumulate {
+            quote! { #target += #value; }
+        } else {
+            quote! { #target = #value; }
+        };
+        body.extend(match &a.guard {
+            Some(guard) => quote! { if #guard { #statement } },
+            None => statement,
+        });
     }
     body
 }

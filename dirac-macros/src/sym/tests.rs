@@ -126,8 +126,7 @@ fn emission_binds_shared_subexpressions_once() {
         let ident = quote::format_ident!("{}", g.sym_name(s));
         quote! { #ident }
     };
-    let assigns =
-        [Assign { target: quote! { out[0] }, value: a }, Assign { target: quote! { out[1] }, value: b }];
+    let assigns = [Assign::set(quote! { out[0] }, a), Assign::set(quote! { out[1] }, b)];
     let code = emit(&g, &assigns, &leaf).to_string();
     assert_eq!(code.matches("sin").count(), 1, "sin computed once: {code}");
     assert!(code.contains("let s0"), "shared node bound: {code}");

@@ -10,10 +10,14 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for Pendulum {
-        const COORDINATES: &'static [&'static str] = &["x", "y"];
-        const VELOCITIES: &'static [&'static str] = &["vx", "vy"];
-        const CONSTRAINTS: &'static [&'static str] = &["rod"];
-        const PORTS: &'static [::dirac::__private::Coordinate<Self>] = &[];
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &["x", "y"],
+            velocities: &["vx", "vy"],
+            constraints: &["rod"],
+            holonomic: 1,
+            ports: &[],
+            subsystems: &[],
+        };
         const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
             residual: 15usize,
             jacobian: 5usize,
@@ -238,17 +242,14 @@ const _: () = {
         ///The coordinate `x`: names its position, velocity and momentum in a state.
         const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
             0,
-            "x",
         );
         ///The coordinate `y`: names its position, velocity and momentum in a state.
         const Y: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
             1,
-            "y",
         );
         ///The constraint `rod`: names its row of A(q) and its multiplier in a state.
         const ROD: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
             0,
-            "rod",
         );
     }
 };

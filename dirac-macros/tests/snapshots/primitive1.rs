@@ -10,12 +10,14 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for Primitive1 {
-        const COORDINATES: &'static [&'static str] = &["x1", "x2"];
-        const VELOCITIES: &'static [&'static str] = &["v1", "v2"];
-        const CONSTRAINTS: &'static [&'static str] = &[];
-        const PORTS: &'static [::dirac::__private::Coordinate<Self>] = &[
-            ::dirac::__private::Coordinate::new(1, "x2"),
-        ];
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &["x1", "x2"],
+            velocities: &["v1", "v2"],
+            constraints: &[],
+            holonomic: 0,
+            ports: &[1],
+            subsystems: &[],
+        };
         const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
             residual: 9usize,
             jacobian: 1usize,
@@ -227,12 +229,10 @@ const _: () = {
         ///The coordinate `x1`: names its position, velocity and momentum in a state.
         pub const X1: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
             0,
-            "x1",
         );
         ///The coordinate `x2`: names its position, velocity and momentum in a state.
         pub const X2: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
             1,
-            "x2",
         );
     }
 };

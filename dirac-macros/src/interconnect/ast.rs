@@ -1,0 +1,206 @@
+//! The parsed form of a `#[derive(Interconnection)]` composite.
+
+use syn::ext::IdentExt;
+use syn::parse::ParseStream;
+use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
+
+use crate::ctxt::Ctxt;
+use crate::lower::member_path;
+use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, INTERCONNECTION_KEYS};
+
+/// A composite as written by the user.
+pub struct Composite<'a> {
+    pub ident: &'a Ident,
+    pub vis: &'a Visibility,
+    /// `f64` fields: parameters of the interconnection constraints.
+    pub params: Vec<Ident>,
+    /// Every other field: the subsystems, in field order.
+    pub subsystems: Vec<SubsystemField>,
+    pub connections: Vec<Connection>,
+    pub constraints: Vec<OneForm>,
+    /// Whether an attribute failed to parse (later stages then report nothing more).
+    pub incomplete: bool,
+}
+
+/// A field holding a subsystem.
+pub struct SubsystemField {
+    pub ident: Ident,
+    pub ty: Type,
+}
+
+/// A subsystem member named by a dotted path: `left.x2`, `chain.right.x3`.
+pub struct MemberPath {
+    pub path: Vec<String>,
+    pub expr: Expr,
+}
+
+impl MemberPath {
+    pub fn dotted(&self) -> String {
+        self.path.join(".")
+    }
+}
+
+/// `connect(a.x, b.y)`.
+pub struct Connection {
+    pub key: Ident,
+    pub a: MemberPath,
+    pub b: MemberPath,
+}
+
+/// `constraint(name) = expr`: an interconnection one-form, linear in subsystem velocities.
+pub struct OneForm {
+    pub key: Ident,
+    pub name: Option<Ident>,
+    pub expr: Expr,
+}
+
+impl<'a> Composite<'a> {
+    /// Parses the struct and its attributes, recording every error in `cx`.
+    pub fn from_input(cx: &Ctxt, input: &'a DeriveInput) -> Composite<'a> {
+        let mut composite = Composite {
+            ident: &input.ident,
+            vis: &input.vis,
+            params: Vec::new(),
+            subsystems: Vec::new(),
+            connections: Vec::new(),
+            constraints: Vec::new(),
+            incomplete: false,
+        };
+        if !input.generics.params.is_empty() {
+            cx.error_spanned_by(
+                &input.generics,
+                "an interconnection cannot be generic: name its subsystem types",
+            );
+        }
+        composite.parse_fields(cx, input);
+        for attr in input.attrs.iter().filter(|a| a.path().is_ident(DIRAC)) {
+            let parser = |stream: ParseStream| parse_items(cx, &mut composite, stream);
+            if let Err(e) = attr.parse_args_with(parser) {
+                cx.syn_error(e);
+                composite.incomplete = true;
+            }
+        }
+        composite
+    }
+
+    fn parse_fields(&mut self, cx: &Ctxt, input: &DeriveInput) {
+        let Data::Struct(data) = &input.data else {
+            cx.error_spanned_by(
+                input.ident.clone(),
+                "an interconnection must be a struct whose fields are subsystems",
+            );
+            return;
+        };
+        let Fields::Named(named) = &data.fields else {
+            cx.error_spanned_by(&data.fields, "an interconnection needs named fields: one per subsystem");
+            return;
+        };
+        for field in &named.named {
+            let ident = field.ident.clone().expect("named fields have names");
+            if is_f64(&field.ty) {
+                self.params.push(ident);
+            } else if let Some(name) = never_a_model(&field.ty) {
+                cx.error_spanned_by(
+                    &field.ty,
+                    format!(
+                        "`{name}` is not a model: the fields of an interconnection are subsystems (types that \
+                         derive `LagrangeDirac` or `Interconnection`) and `f64` parameters"
+                    ),
+                );
+            } else {
+                self.subsystems.push(SubsystemField { ident, ty: field.ty.clone() });
+            }
+        }
+        if self.subsystems.is_empty() {
+            cx.error_spanned_by(
+                input.ident.clone(),
+                "an interconnection needs subsystems: fields whose types derive `LagrangeDirac` or `Interconnection`",
+            );
+        }
+    }
+}
+
+/// Types that are certainly not models: primitives other than `f64` and common std containers.
+fn never_a_model(ty: &Type) -> Option<String> {
+    const NOT_MODELS: &[&str] = &[
+        "f32", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32", "u64", "u128", "usize",
+        "bool", "char", "str", "String", "Vec", "Option", "Box", "HashMap", "BTreeMap",
+    ];
+    match ty {
+        Type::Path(p) if p.qself.is_none() => {
+            let last = p.path.segments.last()?.ident.to_string();
+            NOT_MODELS.contains(&last.as_str()).then_some(last)
+        }
+        Type::Reference(_) | Type::Array(_) | Type::Slice(_) | Type::Tuple(_) | Type::Ptr(_) => {
+            Some(quote::ToTokens::to_token_stream(ty).to_string())
+        }
+        _ => None,
+    }
+}
+
+fn is_f64(ty: &Type) -> bool {
+    match ty {
+        Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),
+        Type::Group(g) => is_f64(&g.elem),
+        Type::Paren(p) => is_f64(&p.elem),
+        _ => false,
+    }
+}
+
+fn parse_items(cx: &Ctxt, composite: &mut Composite<'_>, input: ParseStream) -> syn::Result<()> {
+    while !input.is_empty() {
+        let key = input.call(Ident::parse_any)?;
+        match key.to_string().as_str() {
+            CONNECT => {
+                let content;
+                syn::parenthesized!(content in input);
+                let a = parse_member(&content)?;
+                content.parse::<Token![,]>()?;
+                let b = parse_member(&content)?;
+                if !content.is_empty() {
+                    return Err(content.error("`connect` joins two ports: `connect(a.x, b.y)`"));
+                }
+                composite.connections.push(Connection { key, a, b });
+            }
+            CONSTRAINT => {
+                let name = if input.peek(syn::token::Paren) {
+                    let content;
+                    syn::parenthesized!(content in input);
+                    let name = content.parse::<Ident>()?.unraw();
+                    if !content.is_empty() {
+                        return Err(content.error("expected one name: `constraint(name) = expr`"));
+                    }
+                    Some(name)
+                } else {
+                    None
+                };
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                composite.constraints.push(OneForm { key, name, expr });
+            }
+            other => {
+                let _ = cx;
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown interconnection attribute `{other}`; expected one of: {}",
+                        INTERCONNECTION_KEYS.join(", ")
+                    ),
+                ));
+            }
+        }
+        if input.is_empty() {
+            break;
+        }
+        input.parse::<Token![,]>()?;
+    }
+    Ok(())
+}
+
+fn parse_member(input: ParseStream) -> syn::Result<MemberPath> {
+    let expr: Expr = input.parse()?;
+    match member_path(&expr) {
+        Some(path) if path.len() >= 2 => Ok(MemberPath { path, expr }),
+        _ => Err(syn::Error::new_spanned(&expr, "expected a subsystem's port, such as `left.x2`")),
+    }
+}

@@ -1,0 +1,98 @@
+//! Moving a subsystem's vectors and blocks in and out of its composite, for code that
+//! `#[derive(Interconnection)]` generates. Not part of the public API.
+//!
+//! A subsystem occupies a contiguous range of the composite's coordinates starting at
+//! [`Slot::q`]; its holonomic constraint rows start at [`Slot::h`] and its other rows at
+//! [`Slot::v`] (holonomic rows of every subsystem come first in a composite).
+
+use nalgebra::DefaultAllocator;
+
+use crate::dims::{Dimensions, MatCQ, MatQQ, Storage, VecC, VecH, VecQ};
+
+/// Where a subsystem sits in its composite.
+#[derive(Clone, Copy, Debug)]
+pub struct Slot {
+    /// First coordinate.
+    pub q: usize,
+    /// First holonomic constraint row.
+    pub h: usize,
+    /// First other constraint row.
+    pub v: usize,
+}
+
+impl Slot {
+    /// The composite row of the subsystem's constraint row `r`.
+    pub fn row<S: Dimensions>(&self, r: usize) -> usize {
+        if r < S::NH { self.h + r } else { self.v + (r - S::NH) }
+    }
+}
+
+/// The subsystem's part of a composite vector of coordinates.
+pub fn gather_q<S: Dimensions, C: Dimensions>(x: &VecQ<C>, slot: &Slot) -> VecQ<S>
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    VecQ::<S>::from_fn(|i, _| x[slot.q + i])
+}
+
+/// The subsystem's part of a composite vector of multipliers.
+pub fn gather_c<S: Dimensions, C: Dimensions>(x: &VecC<C>, slot: &Slot) -> VecC<S>
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    VecC::<S>::from_fn(|r, _| x[slot.row::<S>(r)])
+}
+
+/// Writes a subsystem vector of coordinates into the composite's.
+pub fn scatter_q<S: Dimensions, C: Dimensions>(x: &VecQ<S>, slot: &Slot, out: &mut VecQ<C>)
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    for i in 0..S::NQ {
+        out[slot.q + i] = x[i];
+    }
+}
+
+/// Writes a subsystem vector over constraint rows into the composite's.
+pub fn scatter_c<S: Dimensions, C: Dimensions>(x: &VecC<S>, slot: &Slot, out: &mut VecC<C>)
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    for r in 0..S::NC {
+        out[slot.row::<S>(r)] = x[r];
+    }
+}
+
+/// Writes a subsystem's holonomic constraint values into the composite's.
+pub fn scatter_h<S: Dimensions, C: Dimensions>(x: &VecH<S>, slot: &Slot, out: &mut VecH<C>)
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    for r in 0..S::NH {
+        out[slot.h + r] = x[r];
+    }
+}
+
+/// Writes a subsystem's `n × n` block onto the composite's diagonal.
+pub fn scatter_qq<S: Dimensions, C: Dimensions>(x: &MatQQ<S>, slot: &Slot, out: &mut MatQQ<C>)
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    for j in 0..S::NQ {
+        for i in 0..S::NQ {
+            out[(slot.q + i, slot.q + j)] = x[(i, j)];
+        }
+    }
+}
+
+/// Writes a subsystem's `m × n` block into the composite's rows and columns.
+pub fn scatter_cq<S: Dimensions, C: Dimensions>(x: &MatCQ<S>, slot: &Slot, out: &mut MatCQ<C>)
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    for j in 0..S::NQ {
+        for r in 0..S::NC {
+            out[(slot.row::<S>(r), slot.q + j)] = x[(r, j)];
+        }
+    }
+}
