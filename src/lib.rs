@@ -44,15 +44,18 @@ extern crate self as dirac;
 
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Constraint, Coordinate, Dimensions, DiracStructure, Equations, JacobianBlocks, LagrangeDirac, MatCQ,
-    MatKK, MatQQ, MatYY, OperationCounts, ResidualBlocks, State, Storage, VecC, VecH, VecK, VecQ, VecY,
+    Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, JacobianBlocks,
+    LagrangeDirac, MatCQ, MatKK, MatQQ, MatYY, Membership, Names, OperationCounts, Options, Radau,
+    ResidualBlocks, Sampling, SimError, Solution, State, Stats, Storage, VecC, VecH, VecK, VecQ, VecY,
+    consistent_state,
 };
 
 /// Everything a model file needs: `use dirac::prelude::*;`.
 pub mod prelude {
     pub use crate::{
-        Constraint, Coordinate, Dimensions, DiracStructure, Equations, Interconnection, JacobianBlocks,
-        LagrangeDirac, MatCQ, MatQQ, MatYY, ResidualBlocks, State, VecC, VecH, VecQ, VecY,
+        Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Interconnection,
+        JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY, Options, Radau, ResidualBlocks, Sampling,
+        SimError, Solution, State, VecC, VecH, VecQ, VecY, consistent_state,
     };
 }
 

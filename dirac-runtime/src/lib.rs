@@ -10,22 +10,38 @@ pub mod assemble;
 pub mod dims;
 /// Dirac structures as objects, with products, interconnection and membership.
 pub mod dirac_structure;
+/// The typed errors of a simulation.
+pub mod error;
 /// The flat DAE assembled from a model's blocks.
 pub mod flat;
+/// Consistent initial states.
+pub mod init;
 /// Typed names of coordinates and constraints.
 pub mod keys;
+/// LU factorisation on the stack, real or complex.
+pub mod lu;
 /// The model trait and its block structs.
 pub mod model;
 /// Names of a model as a tree that `const` code can search.
 pub mod names;
+/// The linear systems of implicit steps: condensed and full solvers.
+pub mod newton;
+/// The Radau IIA integrator.
+pub mod radau;
+/// Simulation results with named series.
+pub mod solution;
 /// The state `(q, v, p, λ)` with named access.
 pub mod state;
 
 pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
+pub use error::SimError;
+pub use init::{Consistency, consistent_state};
 pub use keys::{Constraint, Coordinate};
 pub use model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
 pub use names::{Names, ResolveError, Resolved, Subsystem};
+pub use radau::{Options, Radau, Stats};
+pub use solution::{Sampling, Solution};
 pub use state::State;
 
 /// Items generated code refers to by absolute path. Not part of the public API.

@@ -1,0 +1,89 @@
+//! The typed errors of a simulation: each says when (`t`) and what failed.
+
+use thiserror::Error;
+
+/// Why a simulation or its set-up failed.
+#[derive(Clone, Debug, Error, PartialEq)]
+#[non_exhaustive]
+pub enum SimError {
+    /// The tolerances are not positive and finite.
+    #[error("invalid tolerance: {what} = {value} (tolerances must be positive and finite)")]
+    InvalidTolerance {
+        /// Which tolerance.
+        what: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The time span or sample times are not usable.
+    #[error("invalid time span: {reason}")]
+    InvalidTimeSpan {
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// An option is outside its range.
+    #[error("invalid option {what}: {reason}")]
+    InvalidOption {
+        /// The option.
+        what: &'static str,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// No consistent state exists near the given one.
+    #[error("inconsistent initial state: {equation} has residual {residual:e} after {iterations} iterations")]
+    InconsistentInitialState {
+        /// The violated equation, such as `holonomic constraint rod`.
+        equation: String,
+        /// Its remaining residual.
+        residual: f64,
+        /// Projection iterations spent.
+        iterations: usize,
+    },
+    /// The iteration matrix (or the consistency system) is singular even at tiny steps.
+    #[error("singular iteration matrix at t = {t} (step {h:e}): {detail}")]
+    SingularMatrix {
+        /// Time of the failed step.
+        t: f64,
+        /// Step size tried.
+        h: f64,
+        /// Which unknown had no pivot.
+        detail: String,
+    },
+    /// The step size fell below the minimum.
+    #[error("step size {h:e} below the minimum at t = {t}: {reason}")]
+    StepSizeTooSmall {
+        /// Time at which the step failed.
+        t: f64,
+        /// The step size.
+        h: f64,
+        /// The last reason a step was rejected.
+        reason: String,
+    },
+    /// Newton's method did not converge within the allowed iterations and step reductions.
+    #[error("Newton iteration diverged at t = {t} (step {h:e}) after {iterations} iterations")]
+    NewtonDiverged {
+        /// Time of the failed step.
+        t: f64,
+        /// The step size.
+        h: f64,
+        /// Newton iterations in the last attempt.
+        iterations: usize,
+    },
+    /// A value became NaN or infinite.
+    #[error("non-finite value in {component} at t = {t}")]
+    NonFinite {
+        /// Time at which it appeared.
+        t: f64,
+        /// The state component or equation, by name.
+        component: String,
+    },
+    /// The step budget was exhausted.
+    #[error("more than {max_steps} steps before reaching t = {t_end} (stopped at t = {t})")]
+    TooManySteps {
+        /// The budget.
+        max_steps: usize,
+        /// Where the integration stopped.
+        t: f64,
+        /// Where it was going.
+        t_end: f64,
+    },
+}

@@ -1,0 +1,103 @@
+//! No heap allocation inside an integration step: a counting global allocator observes the
+//! allocations of this thread while `Radau::step` runs, after set-up.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+use dirac::prelude::*;
+
+#[path = "zoo/mod.rs"]
+mod zoo;
+
+use zoo::*;
+
+struct Counting;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: every call is forwarded unchanged to the system allocator; counting touches only a
+// const-initialised thread-local cell, which does not allocate.
+#[allow(unsafe_code)]
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.with(|c| c.set(c.get() + 1));
+        // SAFETY: forwarded with the caller's layout.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: `ptr` was allocated by `System` with this layout.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.with(|c| c.set(c.get() + 1));
+        // SAFETY: forwarded unchanged.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static COUNTING: Counting = Counting;
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(Cell::get)
+}
+
+/// Steps `radau` 200 times after 5 warm-up steps and returns the allocations during the 200.
+fn allocations_in_steps<M: LagrangeDirac>(model: &M, start: &State<M>, t_end: f64) -> usize
+where
+    nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let mut radau = Radau::new(model, Options::tolerances(1e-10, 1e-10)).expect("valid options");
+    radau.start(0.0, start, t_end).expect("starts");
+    for _ in 0..5 {
+        radau.step().expect("steps");
+    }
+    let before = allocations();
+    for _ in 0..200 {
+        if radau.finished() {
+            break;
+        }
+        radau.step().expect("steps");
+    }
+    allocations() - before
+}
+
+#[test]
+fn radau_steps_do_not_allocate() {
+    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+    let s = consistent_state(
+        &p,
+        0.0,
+        &VecQ::<Pendulum>::new(1.0, 0.0),
+        &VecQ::<Pendulum>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    assert_eq!(allocations_in_steps(&p, &s, 100.0), 0, "pendulum");
+
+    let chain = Chain {
+        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
+        right: Primitive2 { m3: 3.0, k3: 6.0 },
+    };
+    let mut q = VecQ::<Chain>::zeros();
+    q[0] = 0.1;
+    let s = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_steps(&chain, &s, 100.0), 0, "interconnected chain");
+
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    let v = VecQ::<RollingDisk>::new(0.6, 0.0, 2.0, 1.0);
+    let s = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_steps(&disk, &s, 100.0), 0, "rolling disk");
+
+    // The counter does count: a heap allocation on this thread is seen.
+    let before = allocations();
+    let boxed = std::hint::black_box(Box::new([0u8; 64]));
+    drop(boxed);
+    assert_eq!(allocations() - before, 1);
+}

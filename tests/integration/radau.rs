@@ -1,0 +1,184 @@
+//! The Radau IIA integrator against exact and published solutions.
+//!
+//! References: the pendulum's x(1), y(1) and period are the values of DESIGN.md §3 (elliptic
+//! integrals, recomputable by anyone); the chain's exact solution comes from the generalised
+//! eigenproblem of (M, K) solved here with nalgebra's symmetric eigensolver; the LC circuit's
+//! is q = cos t; the rolling disk's energy is constant and its no-slip constraint exact.
+
+use dirac::prelude::*;
+use nalgebra::{Matrix3, SymmetricEigen, Vector3};
+
+use crate::zoo::*;
+
+fn pendulum_start(p: &Pendulum) -> State<Pendulum> {
+    let (q, v) = (VecQ::<Pendulum>::new(1.0, 0.0), VecQ::<Pendulum>::zeros());
+    consistent_state(p, 0.0, &q, &v, Consistency::default()).expect("consistent start")
+}
+
+/// Pendulum of length 1 released from rest at the horizontal: x(1), y(1) to 1e-9.
+#[test]
+fn pendulum_position_at_t_1() {
+    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+    let start = pendulum_start(&p);
+    let mut radau = Radau::new(&p, Options::tolerances(1e-12, 1e-12)).expect("valid options");
+    let sol = radau.solve(0.0, &start, 1.0, &Sampling::Times(vec![1.0])).expect("integrates");
+    let (x, y) = (sol.q(Pendulum::X)[0], sol.q(Pendulum::Y)[0]);
+    let (x_ref, y_ref) = (-0.986_291_751_131_875_3, -0.165_010_853_125_541_17);
+    assert!((x - x_ref).abs() < 1e-9, "x(1) = {x}, reference {x_ref}, error {:e}", x - x_ref);
+    assert!((y - y_ref).abs() < 1e-9, "y(1) = {y}, reference {y_ref}, error {:e}", y - y_ref);
+}
+
+/// The period, from two zero crossings of x located on the dense output: to 1e-9.
+#[test]
+fn pendulum_period() {
+    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+    let start = pendulum_start(&p);
+    let mut radau = Radau::new(&p, Options::tolerances(1e-12, 1e-12)).expect("valid options");
+    radau.start(0.0, &start, 3.0).expect("starts");
+    let mut crossings = Vec::new();
+    let mut y = VecY::<Pendulum>::zeros();
+    while !radau.finished() && crossings.len() < 2 {
+        let x_before = radau.y()[0];
+        let h = radau.step().expect("steps");
+        let x_after = radau.y()[0];
+        if x_before.signum() != x_after.signum() {
+            let (mut lo, mut hi) = (radau.t() - h, radau.t());
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                radau.interpolate(mid, &mut y);
+                if y[0].signum() == x_before.signum() { lo = mid } else { hi = mid }
+            }
+            crossings.push(0.5 * (lo + hi));
+        }
+    }
+    let period = 2.0 * (crossings[1] - crossings[0]);
+    let reference = 2.367_841_947_576_237_4;
+    assert!(
+        (period - reference).abs() < 1e-9,
+        "period {period}, reference {reference}, error {:e}",
+        period - reference
+    );
+}
+
+/// The exact solution of M ẍ = −K x, x(0) = x0, ẋ(0) = 0: with L = M^{-1/2}, the symmetric
+/// eigensystem of L K L gives modes φ and ω², and x(t) = L Σ φ_k cos(ω_k t) φ_kᵀ L⁻¹ x0.
+fn chain_exact(t: f64) -> Vector3<f64> {
+    let (m, k) = ([1.0, 2.0, 3.0], [4.0, 5.0, 6.0]);
+    let kk = Matrix3::new(k[0] + k[1], -k[1], 0.0, -k[1], k[1] + k[2], -k[2], 0.0, -k[2], k[2]);
+    let l = Matrix3::from_diagonal(&Vector3::new(m[0], m[1], m[2]).map(|x: f64| 1.0 / x.sqrt()));
+    let eig = SymmetricEigen::new(l * kk * l);
+    let x0 = Vector3::new(0.1, 0.0, 0.0);
+    let u0 = l.try_inverse().expect("diagonal") * x0;
+    let mut u = Vector3::zeros();
+    for i in 0..3 {
+        let phi = eig.eigenvectors.column(i);
+        u += phi * (phi.dot(&u0) * (eig.eigenvalues[i].sqrt() * t).cos());
+    }
+    l * u
+}
+
+/// The paper's example, torn and interconnected, against the exact solution over [0, 20];
+/// its energy is constant and the port efforts satisfy f̄2 = −k3 (x3 − x̄2) = −f2.
+#[test]
+fn torn_chain_matches_the_exact_solution() {
+    let chain = Chain {
+        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
+        right: Primitive2 { m3: 3.0, k3: 6.0 },
+    };
+    let mut q = VecQ::<Chain>::zeros();
+    q[Chain::left(Primitive1::X1).index()] = 0.1;
+    let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut radau = Radau::new(&chain, Options::tolerances(1e-13, 1e-14)).expect("valid options");
+    let sol = radau.solve(0.0, &start, 20.0, &Sampling::Every(0.1)).expect("integrates");
+    let (x1, x2, x2bar, x3) = (
+        sol.q(Chain::left(Primitive1::X1)),
+        sol.q(Chain::left(Primitive1::X2)),
+        sol.q(Chain::right(Primitive2::X2BAR)),
+        sol.q(Chain::right(Primitive2::X3)),
+    );
+    let mut worst: f64 = 0.0;
+    for (i, &t) in sol.t().iter().enumerate() {
+        let exact = chain_exact(t);
+        worst =
+            worst.max((x1[i] - exact[0]).abs()).max((x2[i] - exact[1]).abs()).max((x3[i] - exact[2]).abs());
+        worst = worst.max((x2bar[i] - exact[1]).abs());
+    }
+    assert!(worst < 1e-8, "largest deviation from the exact solution {worst:e}");
+    let e0 = sol.energy()[0];
+    let drift = sol.energy().iter().map(|e| (e - e0).abs()).fold(0.0, f64::max) / e0;
+    assert!(drift < 1e-9, "relative energy drift {drift:e}");
+    let (f2, f2bar) = (
+        sol.interconnection_force(Chain::LEFT_X2).expect("a port"),
+        sol.interconnection_force(Chain::RIGHT_X2BAR).expect("a port"),
+    );
+    for i in 0..sol.len() {
+        assert!((f2bar[i] + 6.0 * (x3[i] - x2bar[i])).abs() < 1e-8, "f2bar = -k3 (x3 - x2bar)");
+        assert!((f2[i] + f2bar[i]).abs() < 1e-12, "f2 + f2bar = 0");
+        assert!(sol.interconnection_power()[i].abs() < 1e-10, "Tellegen");
+    }
+}
+
+/// An LC loop with L = C = 1, q(0) = 1, i(0) = 0: q_c = cos t.
+#[test]
+fn lc_circuit_is_a_cosine() {
+    let lc = LcCircuit { ind: 1.0, cap: 1.0 };
+    let q = VecQ::<LcCircuit>::new(1.0, 1.0);
+    let start = consistent_state(&lc, 0.0, &q, &VecQ::<LcCircuit>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut radau = Radau::new(&lc, Options::tolerances(1e-12, 1e-12)).expect("valid options");
+    let sol = radau.solve(0.0, &start, 10.0, &Sampling::Every(0.25)).expect("integrates");
+    for (t, q_c) in sol.t().iter().zip(sol.q(LcCircuit::Q_C)) {
+        assert!((q_c - t.cos()).abs() < 1e-9, "q_c({t}) = {q_c}, cos t = {}", t.cos());
+    }
+}
+
+/// The vertical rolling disk: energy constant to 1e-9 and no slip to 1e-10 throughout.
+#[test]
+fn rolling_disk_conserves_energy_and_rolls() {
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    let mut v = VecQ::<RollingDisk>::zeros();
+    v[RollingDisk::THETA.index()] = 2.0;
+    v[RollingDisk::PHI.index()] = 1.0;
+    v[RollingDisk::X.index()] = 0.6;
+    let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    assert_eq!(start.v, v, "already consistent: ẋ = r cos φ θ̇, ẏ = r sin φ θ̇ at φ = 0");
+    let mut radau = Radau::new(&disk, Options::tolerances(1e-11, 1e-12)).expect("valid options");
+    let sol = radau.solve(0.0, &start, 20.0, &Sampling::Steps).expect("integrates");
+    let e0 = sol.energy()[0];
+    for (e, slip) in sol.energy().iter().zip(sol.constraint_residual()) {
+        assert!(((e - e0) / e0).abs() < 1e-9, "energy {e} vs {e0}");
+        assert!(*slip < 1e-10, "slip {slip:e}");
+    }
+    // The disk turns at a constant rate and its contact point runs on a circle of radius
+    // r θ̇ / φ̇ = 0.6: x = 0.6 sin t, y = 0.6 (1 − cos t).
+    let last = sol.len() - 1;
+    let t = sol.t()[last];
+    assert!((sol.q(RollingDisk::X)[last] - 0.6 * t.sin()).abs() < 1e-8);
+    assert!((sol.q(RollingDisk::Y)[last] - 0.6 * (1.0 - t.cos())).abs() < 1e-8);
+}
+
+/// Bad input is a typed error, never a panic.
+#[test]
+fn invalid_input_is_a_typed_error() {
+    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+    assert!(matches!(
+        Radau::new(&p, Options::tolerances(-1.0, 1e-8)),
+        Err(SimError::InvalidTolerance { what: "rtol", .. })
+    ));
+    assert!(matches!(
+        Radau::new(&p, Options::tolerances(1e-6, f64::NAN)),
+        Err(SimError::InvalidTolerance { what: "atol", .. })
+    ));
+    let start = pendulum_start(&p);
+    let mut radau = Radau::new(&p, Options::default()).expect("valid");
+    assert!(matches!(radau.solve(1.0, &start, 0.0, &Sampling::Steps), Err(SimError::InvalidTimeSpan { .. })));
+    assert!(matches!(
+        radau.solve(0.0, &start, 1.0, &Sampling::Times(vec![0.5, 0.2])),
+        Err(SimError::InvalidTimeSpan { .. })
+    ));
+    let q = VecQ::<Pendulum>::new(f64::NAN, 0.0);
+    let err = consistent_state(&p, 0.0, &q, &VecQ::<Pendulum>::zeros(), Consistency::default()).err();
+    assert_eq!(err, Some(SimError::NonFinite { t: 0.0, component: "x".into() }));
+}
