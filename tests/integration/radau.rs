@@ -182,3 +182,63 @@ fn invalid_input_is_a_typed_error() {
     let err = consistent_state(&p, 0.0, &q, &VecQ::<Pendulum>::zeros(), Consistency::default()).err();
     assert_eq!(err, Some(SimError::NonFinite { t: 0.0, component: "x".into() }));
 }
+
+/// Global error tracks the tolerance: over rtol = atol = 1e-4 … 1e-12 the pendulum's error at
+/// t = 1 stays within two decades below and one above the tolerance, and falls with it. Run
+/// with `--nocapture` to see the table recorded in BENCHMARKS.md.
+#[test]
+fn global_error_tracks_tolerance() {
+    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+    let start = pendulum_start(&p);
+    let (x_ref, y_ref) = (-0.986_291_751_131_875_3, -0.165_010_853_125_541_17);
+    let mut previous = f64::INFINITY;
+    println!("tolerance  error(t=1)  steps  rejected");
+    for k in [4, 6, 8, 10, 12] {
+        let tol = 10f64.powi(-k);
+        let mut radau = Radau::new(&p, Options::tolerances(tol, tol)).expect("valid options");
+        let sol = radau.solve(0.0, &start, 1.0, &Sampling::Times(vec![1.0])).expect("integrates");
+        let err = (sol.q(Pendulum::X)[0] - x_ref).abs().max((sol.q(Pendulum::Y)[0] - y_ref).abs());
+        println!("{tol:9.0e}  {err:10.2e}  {:5}  {:8}", sol.stats.steps, sol.stats.rejected);
+        assert!(err < 10.0 * tol && err > 1e-3 * tol, "error {err:e} at tolerance {tol:e}");
+        assert!(err < previous, "error falls with the tolerance");
+        previous = err;
+    }
+}
+
+/// The condensed and the full Newton solver take the same first steps up to round-off, and
+/// whole trajectories agree to well within the tolerance: condensation changes the cost of a
+/// step, not its result. (Round-off can flip a step-size decision later on, after which the two
+/// runs take different but equally accurate steps.)
+#[test]
+fn condensed_and_full_solvers_agree() {
+    let chain = Chain {
+        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
+        right: Primitive2 { m3: 3.0, k3: 6.0 },
+    };
+    let mut q = VecQ::<Chain>::zeros();
+    q[0] = 0.1;
+    let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
+        .expect("consistent");
+    let options = Options::tolerances(1e-8, 1e-10);
+    let full = || dirac::runtime::newton::Full::<Chain>::default();
+    let mut a = Radau::new(&chain, options).expect("valid");
+    let mut b = Radau::with_solver(&chain, options, full()).expect("valid");
+    a.start(0.0, &start, 10.0).expect("starts");
+    b.start(0.0, &start, 10.0).expect("starts");
+    for _ in 0..5 {
+        let (ha, hb) = (a.step().expect("steps"), b.step().expect("steps"));
+        assert!((ha - hb).abs() <= 1e-9 * ha, "step sizes {ha} and {hb}");
+        assert!((a.y() - b.y()).amax() < 1e-12, "states differ by {:e}", (a.y() - b.y()).amax());
+    }
+    let sampling = Sampling::Every(1.0);
+    let sa =
+        Radau::new(&chain, options).expect("valid").solve(0.0, &start, 10.0, &sampling).expect("integrates");
+    let sb = Radau::with_solver(&chain, options, full())
+        .expect("valid")
+        .solve(0.0, &start, 10.0, &sampling)
+        .expect("integrates");
+    for i in 0..sa.len() {
+        let dq = (sa.state(i).q - sb.state(i).q).amax();
+        assert!(dq < 1e-7, "sample {i}: q differs by {dq:e}");
+    }
+}
