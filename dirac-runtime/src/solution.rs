@@ -303,10 +303,13 @@ where
         Some(&self.columns[i])
     }
 
-    /// Sample `i` as a state.
-    pub fn state(&self, i: usize) -> State<M> {
+    /// Sample `i` as a state, if there is such a sample.
+    pub fn state(&self, i: usize) -> Option<State<M>> {
+        if i >= self.len() {
+            return None;
+        }
         let y = VecY::<M>::from_fn(|k, _| self.columns[1 + k][i]);
-        State::from_y(&y)
+        Some(State::from_y(&y))
     }
 
     /// Writes the solution as CSV: a header of names, then one row per sample.

@@ -238,7 +238,74 @@ fn condensed_and_full_solvers_agree() {
         .solve(0.0, &start, 10.0, &sampling)
         .expect("integrates");
     for i in 0..sa.len() {
-        let dq = (sa.state(i).q - sb.state(i).q).amax();
+        let dq = (sa.state(i).expect("a sample").q - sb.state(i).expect("a sample").q).amax();
         assert!(dq < 1e-7, "sample {i}: q differs by {dq:e}");
+    }
+}
+
+/// A force that blows up at t = 1: the integration stops there with a typed error that says
+/// when, never a panic or a silent NaN.
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * v * v)]
+#[dirac(force(x) = 1.0 / (1.0 - t))]
+struct BlowUp {}
+
+#[test]
+fn failing_integrations_are_typed_errors_that_say_when() {
+    let model = BlowUp {};
+    let start = consistent_state(
+        &model,
+        0.0,
+        &VecQ::<BlowUp>::zeros(),
+        &VecQ::<BlowUp>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    let err = Radau::new(&model, Options::default())
+        .expect("valid")
+        .solve(0.0, &start, 2.0, &Sampling::Steps)
+        .err();
+    let t = match err {
+        Some(
+            SimError::StepSizeTooSmall { t, .. }
+            | SimError::NonFinite { t, .. }
+            | SimError::NewtonDiverged { t, .. },
+        ) => t,
+        other => panic!("expected a failure near t = 1, got {other:?}"),
+    };
+    assert!((0.99..=1.0).contains(&t), "failed at t = {t}");
+
+    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
+    let options = Options { max_steps: 10, ..Options::default() };
+    let err = Radau::new(&p, options)
+        .expect("valid")
+        .solve(0.0, &pendulum_start(&p), 100.0, &Sampling::Steps)
+        .err();
+    assert!(matches!(err, Some(SimError::TooManySteps { max_steps: 10, .. })), "{err:?}");
+}
+
+/// A coordinate without inertia that no constraint determines makes every iteration matrix
+/// singular: the error names its velocity.
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(x => vx, free => v_free))]
+#[dirac(lagrangian = 0.5 * vx * vx - 0.5 * x * x)]
+struct Undetermined {}
+
+#[test]
+fn singular_iteration_matrix_names_the_unknown() {
+    let model = Undetermined {};
+    let mut start = State::<Undetermined>::zeros();
+    start.set_q(Undetermined::X, 1.0);
+    let err = Radau::new(&model, Options::default())
+        .expect("valid")
+        .solve(0.0, &start, 1.0, &Sampling::Steps)
+        .err();
+    match err {
+        Some(SimError::SingularMatrix { t, detail, .. }) => {
+            assert_eq!(t, 0.0);
+            assert!(detail.contains("`v_free`"), "{detail}");
+        }
+        other => panic!("expected a singular matrix, got {other:?}"),
     }
 }

@@ -123,7 +123,7 @@ where
     options: Options,
     eig: Eigen,
     rtol: f64,
-    atol: f64,
+    atol: VecY<M>,
     fnewt: f64,
     t: f64,
     t_end: f64,
@@ -184,7 +184,7 @@ where
             options,
             eig: eigen(),
             rtol,
-            atol,
+            atol: VecY::<M>::repeat(atol),
             fnewt,
             t: 0.0,
             t_end: 0.0,
@@ -211,6 +211,17 @@ where
             err_acc: 0.0,
             stats: Stats::default(),
         })
+    }
+
+    /// Sets one absolute tolerance per component of `y = (q, v, p, λ)`, replacing
+    /// [`Options::atol`] (for example, a looser one for multipliers of large magnitude).
+    pub fn set_absolute_tolerances(&mut self, atol: &VecY<M>) -> Result<(), SimError> {
+        if let Some(&value) = atol.iter().find(|a| a.is_nan() || **a <= 0.0 || a.is_infinite()) {
+            return Err(SimError::InvalidTolerance { what: "atol", value });
+        }
+        let factor = 0.1 * self.options.rtol.powf(2.0 / 3.0) / self.options.rtol;
+        self.atol = atol * factor;
+        Ok(())
     }
 
     /// The current time.
@@ -342,7 +353,7 @@ where
     fn prepare_scale(&mut self) {
         let n = M::NQ;
         for (i, s) in self.scal.iter_mut().enumerate() {
-            *s = self.atol + self.rtol * self.y[i].abs();
+            *s = self.atol[i] + self.rtol * self.y[i].abs();
             // Multipliers are index-2 variables: their error estimate is one order worse.
             if i >= 3 * n {
                 *s /= self.h;
