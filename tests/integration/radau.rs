@@ -105,6 +105,22 @@ fn torn_chain_matches_the_exact_solution() {
         worst = worst.max((x2bar[i] - exact[1]).abs());
     }
     assert!(worst < 1e-8, "largest deviation from the exact solution {worst:e}");
+    // The same chain written as one model matches the exact solution too.
+    let whole = MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 };
+    let q = VecQ::<MassSpringChain>::new(0.1, 0.0, 0.0);
+    let whole_start =
+        consistent_state(&whole, 0.0, &q, &VecQ::<MassSpringChain>::zeros(), Consistency::default())
+            .expect("consistent");
+    let whole_sol = Radau::new(&whole, Options::tolerances(1e-13, 1e-14))
+        .expect("valid")
+        .solve(0.0, &whole_start, 20.0, &Sampling::Every(0.1))
+        .expect("integrates");
+    for (i, &t) in whole_sol.t().iter().enumerate() {
+        let exact = chain_exact(t);
+        for (c, k) in [(MassSpringChain::X1, 0), (MassSpringChain::X2, 1), (MassSpringChain::X3, 2)] {
+            assert!((whole_sol.q(c)[i] - exact[k]).abs() < 1e-8, "monolithic x{} at t = {t}", k + 1);
+        }
+    }
     let e0 = sol.energy()[0];
     let drift = sol.energy().iter().map(|e| (e - e0).abs()).fold(0.0, f64::max) / e0;
     assert!(drift < 1e-9, "relative energy drift {drift:e}");
@@ -307,5 +323,49 @@ fn singular_iteration_matrix_names_the_unknown() {
             assert!(detail.contains("`v_free`"), "{detail}");
         }
         other => panic!("expected a singular matrix, got {other:?}"),
+    }
+}
+
+/// A simulated solution curve of the torn chain lies in the interconnected Dirac structure
+/// (eq. 2) at sampled points: q̇ and ṗ are estimated by central differences of the sampled
+/// q(t) and p(t) (independently of the equations), α = (−∂L/∂q − F, v), and the membership
+/// residuals are at the level of the difference formula's error.
+#[test]
+fn simulated_curve_lies_in_the_dirac_structure() {
+    let chain = Chain {
+        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
+        right: Primitive2 { m3: 3.0, k3: 6.0 },
+    };
+    let mut q = VecQ::<Chain>::zeros();
+    q[0] = 0.1;
+    let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
+        .expect("consistent");
+    let dt = 1e-4;
+    let times: Vec<f64> = [1.0, 4.0, 9.0].iter().flat_map(|&t| [t - dt, t, t + dt]).collect();
+    let sol = Radau::new(&chain, Options::tolerances(1e-13, 1e-14))
+        .expect("valid")
+        .solve(0.0, &start, 10.0, &Sampling::Times(times))
+        .expect("integrates");
+    let omega = nalgebra::DMatrix::from_row_slice(1, 4, &[0.0, 1.0, -1.0, 0.0]);
+    for k in 0..3 {
+        let (before, at, after) = (
+            sol.state(3 * k).expect("sample"),
+            sol.state(3 * k + 1).expect("sample"),
+            sol.state(3 * k + 2).expect("sample"),
+        );
+        let qdot: Vec<f64> = ((&after.q - &before.q) / (2.0 * dt)).iter().copied().collect();
+        let pdot: Vec<f64> = ((&after.p - &before.p) / (2.0 * dt)).iter().copied().collect();
+        let (mut dl_dq, mut force) = (VecQ::<Chain>::zeros(), VecQ::<Chain>::zeros());
+        chain.dl_dq(0.0, &at.q, &at.v, &mut dl_dq);
+        chain.force(0.0, &at.q, &at.v, &mut force);
+        let beta: Vec<f64> = (-(dl_dq + force)).iter().copied().collect();
+        let u: Vec<f64> = at.v.iter().copied().collect();
+        let q1 = VecQ::<Primitive1>::new(at.q[0], at.q[1]);
+        let q2 = VecQ::<Primitive2>::new(at.q[2], at.q[3]);
+        let dc = DiracStructure::of_model(&chain.left, &q1)
+            .product(&DiracStructure::of_model(&chain.right, &q2))
+            .interconnect(&omega);
+        let membership = dc.membership(&qdot, &pdot, &beta, &u);
+        assert!(membership.max() < 1e-7, "sample {k}: {membership:?}");
     }
 }
