@@ -353,8 +353,8 @@ fn simulated_curve_lies_in_the_dirac_structure() {
             sol.state(3 * k + 1).expect("sample"),
             sol.state(3 * k + 2).expect("sample"),
         );
-        let qdot: Vec<f64> = ((&after.q - &before.q) / (2.0 * dt)).iter().copied().collect();
-        let pdot: Vec<f64> = ((&after.p - &before.p) / (2.0 * dt)).iter().copied().collect();
+        let qdot: Vec<f64> = ((after.q - before.q) / (2.0 * dt)).iter().copied().collect();
+        let pdot: Vec<f64> = ((after.p - before.p) / (2.0 * dt)).iter().copied().collect();
         let (mut dl_dq, mut force) = (VecQ::<Chain>::zeros(), VecQ::<Chain>::zeros());
         chain.dl_dq(0.0, &at.q, &at.v, &mut dl_dq);
         chain.force(0.0, &at.q, &at.v, &mut force);
