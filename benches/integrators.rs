@@ -21,7 +21,7 @@ use nalgebra::{Complex, DefaultAllocator};
 use zoo::*;
 
 fn chain() -> Chain {
-    Chain { left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, right: Primitive2 { m3: 3.0, k3: 6.0 } }
+    paper_chain()
 }
 
 fn chain_start(model: &Chain) -> State<Chain> {

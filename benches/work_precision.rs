@@ -52,15 +52,8 @@ fn main() {
     }
     let tols = [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
     println!("problem,tol,error,seconds,steps");
-    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
-    let start = consistent_state(
-        &p,
-        0.0,
-        &VecQ::<Pendulum>::new(1.0, 0.0),
-        &VecQ::<Pendulum>::zeros(),
-        Consistency::default(),
-    )
-    .expect("consistent");
+    let p = unit_pendulum();
+    let start = horizontal_start(&p);
     for tol in tols {
         let mut error = 0.0;
         let (seconds, steps) = median_seconds(|| {
@@ -72,14 +65,8 @@ fn main() {
         });
         println!("pendulum,{tol},{error:.3e},{seconds:.6e},{steps}");
     }
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
-    let mut q = VecQ::<Chain>::zeros();
-    q[0] = 0.1;
-    let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
-        .expect("consistent");
+    let chain = paper_chain();
+    let start = paper_chain_start(&chain);
     let exact = chain_exact(20.0);
     let masses = [Chain::left(Primitive1::X1), Chain::left(Primitive1::X2), Chain::right(Primitive2::X3)];
     for tol in tols {

@@ -68,25 +68,12 @@ where
 
 #[test]
 fn radau_steps_do_not_allocate() {
-    let p = Pendulum { m: 1.0, g: 9.81, l: 1.0 };
-    let s = consistent_state(
-        &p,
-        0.0,
-        &VecQ::<Pendulum>::new(1.0, 0.0),
-        &VecQ::<Pendulum>::zeros(),
-        Consistency::default(),
-    )
-    .expect("consistent");
+    let p = unit_pendulum();
+    let s = horizontal_start(&p);
     assert_eq!(allocations_in_steps(&p, &s, 100.0), 0, "pendulum");
 
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
-    let mut q = VecQ::<Chain>::zeros();
-    q[0] = 0.1;
-    let s = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
-        .expect("consistent");
+    let chain = paper_chain();
+    let s = paper_chain_start(&chain);
     assert_eq!(allocations_in_steps(&chain, &s, 100.0), 0, "interconnected chain");
 
     let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
@@ -100,4 +87,46 @@ fn radau_steps_do_not_allocate() {
     let boxed = std::hint::black_box(Box::new([0u8; 64]));
     drop(boxed);
     assert_eq!(allocations() - before, 1);
+}
+
+/// Steps the variational integrator 200 times after 5 warm-up steps; allocations during them.
+fn allocations_in_variational_steps<M: LagrangeDirac>(
+    model: &M,
+    start: &State<M>,
+    options: VariationalOptions,
+) -> usize
+where
+    nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let mut vi = Variational::new(model, 0.01, options).expect("valid options");
+    vi.start(0.0, start, 100.0).expect("starts");
+    for _ in 0..5 {
+        vi.step().expect("steps");
+    }
+    let before = allocations();
+    for _ in 0..200 {
+        vi.step().expect("steps");
+    }
+    allocations() - before
+}
+
+#[test]
+fn variational_steps_do_not_allocate() {
+    let general = VariationalOptions { use_structure: false, ..VariationalOptions::default() };
+    let p = unit_pendulum();
+    let s = horizontal_start(&p);
+    assert_eq!(
+        allocations_in_variational_steps(&p, &s, VariationalOptions::default()),
+        0,
+        "pendulum, separable path"
+    );
+    assert_eq!(allocations_in_variational_steps(&p, &s, general), 0, "pendulum, general path");
+
+    let chain = paper_chain();
+    let s = paper_chain_start(&chain);
+    assert_eq!(
+        allocations_in_variational_steps(&chain, &s, VariationalOptions::default()),
+        0,
+        "interconnected chain"
+    );
 }

@@ -46,6 +46,29 @@ impl SymModel {
         exprs.iter().map(|&e| wrt.iter().map(|&x| self.graph.diff(e, x)).collect()).collect()
     }
 
+    /// Whether `L = ½ vᵀ M v − V(q, t)` with constant `M` and no forces: every force is zero,
+    /// `L_vv` depends on parameters only, and `∂L/∂v` vanishes at `v = 0`.
+    pub fn separable(&mut self) -> bool {
+        if !self.force.iter().all(|f| self.graph.is_zero(*f)) {
+            return false;
+        }
+        let dl_dv = self.dl_dv();
+        let v = self.v.clone();
+        let constant = dl_dv.iter().all(|&d| {
+            v.iter().all(|&x| {
+                let second = self.graph.diff(d, x);
+                self.graph.deps(second).iter().all(|s| matches!(self.kind(s), SymKind::Parameter(_)))
+            })
+        });
+        let zero = self.graph.num(0.0);
+        let at_rest = v.iter().filter_map(|x| self.graph.as_sym(*x)).map(|s| (s, zero)).collect();
+        constant
+            && dl_dv.iter().all(|&d| {
+                let rest = self.graph.substitute(d, &at_rest);
+                self.graph.is_zero(rest)
+            })
+    }
+
     pub fn dl_dq(&mut self) -> Vec<Id> {
         let (l, q) = (self.lagrangian, self.q.clone());
         q.iter().map(|&x| self.graph.diff(l, x)).collect()

@@ -124,6 +124,7 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
     let ports: Vec<_> = sym.ports.iter().map(|&i| proc_macro2::Literal::usize_unsuffixed(i)).collect();
     let holonomic = size(sym.h());
     let (text, latex) = sym.equations(&ident.to_string());
+    let separable = sym.separable();
     let methods = sym.methods();
     let c = &sym.op_counts;
     let (r, j, rj, rb, jb) =
@@ -152,6 +153,7 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
                     ports: &[#(#ports),*],
                     subsystems: &[],
                 };
+                const SEPARABLE: bool = #separable;
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
                     residual: #r,
                     jacobian: #j,
@@ -237,6 +239,7 @@ fn stub(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
                     subsystems: &[],
                 };
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
+                const SEPARABLE: bool = false;
                 fn equations() -> #p::Equations { #unreachable }
                 fn lagrangian(&self, #tqv) -> #f { #unreachable }
                 #(#methods)*

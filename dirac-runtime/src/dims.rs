@@ -37,6 +37,7 @@ pub trait Storage<D: Dimensions + ?Sized>:
     Allocator<D::Nq>
     + Allocator<D::Nq, D::Nq>
     + Allocator<D::Nc>
+    + Allocator<D::Nc, D::Nc>
     + Allocator<D::Nc, D::Nq>
     + Allocator<D::Nq, D::Nc>
     + Allocator<D::Nh>
@@ -53,6 +54,7 @@ where
     A: Allocator<D::Nq>
         + Allocator<D::Nq, D::Nq>
         + Allocator<D::Nc>
+        + Allocator<D::Nc, D::Nc>
         + Allocator<D::Nc, D::Nq>
         + Allocator<D::Nq, D::Nc>
         + Allocator<D::Nh>

@@ -32,6 +32,8 @@ pub mod radau;
 pub mod solution;
 /// The state `(q, v, p, λ)` with named access.
 pub mod state;
+/// The variational integrator (discrete Hamilton-Pontryagin-d'Alembert).
+pub mod variational;
 
 pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
@@ -43,6 +45,7 @@ pub use names::{Names, ResolveError, Resolved, Subsystem};
 pub use radau::{Options, Radau, Stats};
 pub use solution::{Sampling, Solution};
 pub use state::State;
+pub use variational::{Variational, VariationalOptions, VariationalStats};
 
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]

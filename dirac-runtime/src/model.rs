@@ -153,6 +153,10 @@ where
     const NAMES: &'static Names;
     /// The arithmetic cost of the generated kernels.
     const OPERATION_COUNTS: OperationCounts;
+    /// Whether `L = ½ vᵀ M v − V(q, t)` with a constant mass matrix `M` and no external forces
+    /// (decided from the model's structure when it compiles). Integrators may take shortcuts
+    /// for such models; the variational integrator's step then costs what RATTLE's does.
+    const SEPARABLE: bool;
 
     /// The derived equations, for people.
     fn equations() -> Equations;

@@ -3,6 +3,7 @@
 
 use std::io::{self, Write};
 use std::marker::PhantomData;
+use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
@@ -37,6 +38,49 @@ where
     fn y(&self) -> &VecY<M>;
     /// The state at `t` within the last step.
     fn interpolate(&self, t: f64, out: &mut VecY<M>);
+}
+
+/// An integrator that [`integrate`] can drive.
+pub trait Integrator<M: LagrangeDirac>: Stepper<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The model integrated.
+    fn model(&self) -> &M;
+    /// Prepares to integrate from `state` at `t0` to `t_end`.
+    fn begin(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError>;
+    /// Takes one step.
+    fn advance(&mut self) -> Result<(), SimError>;
+    /// Whether the end time has been reached.
+    fn done(&self) -> bool;
+    /// The work done so far.
+    fn statistics(&self) -> Stats;
+}
+
+/// Integrates from `state` at `t0` to `t_end`, recording samples as `sampling` says and calling
+/// `observer` with the time and the state after every step (`ControlFlow::Break(())` stops).
+pub fn integrate<M: LagrangeDirac, I: Integrator<M>>(
+    integrator: &mut I,
+    t0: f64,
+    state: &State<M>,
+    t_end: f64,
+    sampling: &Sampling,
+    mut observer: impl FnMut(f64, &VecY<M>) -> ControlFlow<()>,
+) -> Result<Solution<M>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
+    integrator.begin(t0, state, t_end)?;
+    recorder.record_initial(integrator.model(), t0, integrator.y());
+    while !integrator.done() {
+        integrator.advance()?;
+        recorder.record_step(integrator.model(), integrator);
+        if observer(integrator.t(), integrator.y()).is_break() {
+            break;
+        }
+    }
+    Ok(recorder.finish(integrator.statistics()))
 }
 
 /// The columns of a solution, by name.

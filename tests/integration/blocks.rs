@@ -145,10 +145,7 @@ fn blocks_agree_with_flat_forms_for_every_model() {
     let coupled =
         CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
     check_blocks(&coupled, 20);
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
+    let chain = paper_chain();
     check_blocks(&chain, 21);
 }
 

@@ -36,10 +36,7 @@ fn pendulum_is_projected_and_its_tension_found() {
 /// v2 keeps the value given. μ = k3 (x3 − x̄2) from ṗ̄2 = 0.
 #[test]
 fn degenerate_velocities_take_up_the_correction() {
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
+    let chain = paper_chain();
     let (x2, x2bar, x3) =
         (Chain::left(Primitive1::X2), Chain::right(Primitive2::X2BAR), Chain::right(Primitive2::X3));
     let mut q = VecQ::<Chain>::zeros();

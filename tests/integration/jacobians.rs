@@ -36,10 +36,7 @@ fn every_supported_function() {
 
 #[test]
 fn interconnected_models() {
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
+    let chain = paper_chain();
     check_jacobian_by_differences(&chain, 61, 10);
     let gear = RackAndPinion { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, r: 0.3 };
     check_jacobian_by_differences(&gear, 62, 10);

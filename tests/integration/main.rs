@@ -13,3 +13,4 @@ mod named_access;
 mod paper;
 mod radau;
 mod util;
+mod variational;

@@ -81,10 +81,7 @@ fn chain_exact(t: f64) -> Vector3<f64> {
 /// its energy is constant and the port efforts satisfy f̄2 = −k3 (x3 − x̄2) = −f2.
 #[test]
 fn torn_chain_matches_the_exact_solution() {
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
+    let chain = paper_chain();
     let mut q = VecQ::<Chain>::zeros();
     q[Chain::left(Primitive1::X1).index()] = 0.1;
     let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
@@ -227,14 +224,8 @@ fn global_error_tracks_tolerance() {
 /// runs take different but equally accurate steps.)
 #[test]
 fn condensed_and_full_solvers_agree() {
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
-    let mut q = VecQ::<Chain>::zeros();
-    q[0] = 0.1;
-    let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
-        .expect("consistent");
+    let chain = paper_chain();
+    let start = paper_chain_start(&chain);
     let options = Options::tolerances(1e-8, 1e-10);
     let full = || dirac::runtime::newton::Full::<Chain>::default();
     let mut a = Radau::new(&chain, options).expect("valid");
@@ -332,14 +323,8 @@ fn singular_iteration_matrix_names_the_unknown() {
 /// residuals are at the level of the difference formula's error.
 #[test]
 fn simulated_curve_lies_in_the_dirac_structure() {
-    let chain = Chain {
-        left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 },
-        right: Primitive2 { m3: 3.0, k3: 6.0 },
-    };
-    let mut q = VecQ::<Chain>::zeros();
-    q[0] = 0.1;
-    let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
-        .expect("consistent");
+    let chain = paper_chain();
+    let start = paper_chain_start(&chain);
     let dt = 1e-4;
     let times: Vec<f64> = [1.0, 4.0, 9.0].iter().flat_map(|&t| [t - dt, t, t + dt]).collect();
     let sol = Radau::new(&chain, Options::tolerances(1e-13, 1e-14))

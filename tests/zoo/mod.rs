@@ -277,3 +277,57 @@ pub struct CoupledByOneForm {
     pub cart: Cart,
     pub c: f64,
 }
+
+/// Two masses joined by a spring, free in space: invariant under translation, so the total
+/// momentum p1 + p2 is a momentum map.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => v1, x2 => v2))]
+#[dirac(lagrangian = 0.5 * m1 * v1 * v1 + 0.5 * m2 * v2 * v2 - 0.5 * k * (x2 - x1 - d).powi(2))]
+pub struct FreeSpring {
+    pub m1: f64,
+    pub m2: f64,
+    pub k: f64,
+    pub d: f64,
+}
+
+/// A spherical pendulum in Cartesian coordinates: invariant under rotation about the vertical,
+/// so the angular momentum x p_y − y p_x is a momentum map.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy, z => vz))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy + vz * vz) - m * g * z)]
+#[dirac(holonomic(rod) = x * x + y * y + z * z - l * l)]
+pub struct SphericalPendulum {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+}
+
+/// The paper's torn chain with m = (1, 2, 3), k = (4, 5, 6).
+pub fn paper_chain() -> Chain {
+    Chain { left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, right: Primitive2 { m3: 3.0, k3: 6.0 } }
+}
+
+/// The paper's initial state: x1 = 0.1, everything else at rest, made consistent.
+pub fn paper_chain_start(chain: &Chain) -> State<Chain> {
+    let mut q = VecQ::<Chain>::zeros();
+    q[Chain::left(Primitive1::X1).index()] = 0.1;
+    consistent_state(chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())
+        .expect("a consistent start")
+}
+
+/// The pendulum of DESIGN.md §3: l = 1, g = 9.81, m = 1.
+pub fn unit_pendulum() -> Pendulum {
+    Pendulum { m: 1.0, g: 9.81, l: 1.0 }
+}
+
+/// Released from rest at the horizontal, x = 1, y = 0.
+pub fn horizontal_start(p: &Pendulum) -> State<Pendulum> {
+    consistent_state(
+        p,
+        0.0,
+        &VecQ::<Pendulum>::new(1.0, 0.0),
+        &VecQ::<Pendulum>::zeros(),
+        Consistency::default(),
+    )
+    .expect("a consistent start")
+}

@@ -172,7 +172,12 @@ fn operation_counts(composite: &Composite<'_>, model: &mut CompositeModel) -> To
         let ty = &s.ty;
         quote! { .plus(<#ty as #p::LagrangeDirac>::OPERATION_COUNTS) }
     });
+    let separable = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote! { <#ty as #p::LagrangeDirac>::SEPARABLE }
+    });
     quote! {
+        const SEPARABLE: bool = true #(&& #separable)*;
         const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
             residual: #residual,
             jacobian: #jacobian,

@@ -18,6 +18,7 @@ const _: () = {
             ports: &[],
             subsystems: &[],
         };
+        const SEPARABLE: bool = true;
         const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
             residual: 15usize,
             jacobian: 5usize,

@@ -18,6 +18,7 @@ const _: () = {
             ports: &[1],
             subsystems: &[],
         };
+        const SEPARABLE: bool = true;
         const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
             residual: 9usize,
             jacobian: 1usize,

@@ -20,7 +20,7 @@ use crate::error::SimError;
 use crate::lu::Singular;
 use crate::model::{JacobianBlocks, LagrangeDirac};
 use crate::newton::{Condensed, NewtonSolver};
-use crate::solution::{Recorder, Sampling, Solution};
+use crate::solution::{Integrator, Sampling, Solution, integrate};
 use crate::state::State;
 
 /// Tolerances and limits of a Radau integration.
@@ -650,19 +650,34 @@ where
         state: &State<M>,
         t_end: f64,
         sampling: &Sampling,
-        mut observer: impl FnMut(f64, &VecY<M>) -> ControlFlow<()>,
+        observer: impl FnMut(f64, &VecY<M>) -> ControlFlow<()>,
     ) -> Result<Solution<M>, SimError> {
-        let mut recorder = Recorder::new(self.model, sampling, t0, t_end)?;
-        self.start(t0, state, t_end)?;
-        recorder.record_initial(self.model, t0, &self.y);
-        while !self.finished() {
-            self.step()?;
-            recorder.record_step(self.model, self);
-            if observer(self.t, &self.y).is_break() {
-                break;
-            }
-        }
-        Ok(recorder.finish(self.stats()))
+        integrate(self, t0, state, t_end, sampling, observer)
+    }
+}
+
+impl<M: LagrangeDirac, S: NewtonSolver<M>> Integrator<M> for Radau<'_, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn model(&self) -> &M {
+        self.model
+    }
+
+    fn begin(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        self.start(t0, state, t_end)
+    }
+
+    fn advance(&mut self) -> Result<(), SimError> {
+        self.step().map(|_| ())
+    }
+
+    fn done(&self) -> bool {
+        self.finished()
+    }
+
+    fn statistics(&self) -> Stats {
+        self.stats()
     }
 }
 
