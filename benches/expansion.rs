@@ -26,6 +26,8 @@ mod expand;
 mod lower;
 #[path = "../dirac-macros/src/model.rs"]
 mod model;
+#[path = "../dirac-macros/src/structure.rs"]
+mod structure;
 #[path = "../dirac-macros/src/suggest.rs"]
 mod suggest;
 /// The engine's modules without its unit tests (benchmarks are built with `cfg(test)`).

@@ -59,6 +59,10 @@ pub mod prelude {
     };
 }
 
+/// Documentation: everything `cargo build` checks in a model.
+#[doc = include_str!("docs/compile_time_checks.md")]
+pub mod compile_time_checks {}
+
 /// The runtime crate, for items the prelude does not re-export.
 pub use dirac_runtime as runtime;
 

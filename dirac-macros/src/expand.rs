@@ -20,6 +20,10 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         check(&cx, &model);
         SymModel::build(&cx, &model)
     };
+    let mut sym = sym;
+    if let Some(sym) = sym.as_mut() {
+        sym.check_structure(&cx, &input.ident.to_string());
+    }
     let names = key_constants(&cx, &model);
     match (cx.into_compile_errors(), sym) {
         (None, Some(mut sym)) => implementation(&model, &mut sym, &names),
@@ -125,6 +129,8 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
     let holonomic = size(sym.h());
     let (text, latex) = sym.equations(&ident.to_string());
     let separable = sym.separable();
+    let pattern = sym.condensed_pattern();
+    let unknowns = sym.unknown_messages(&ident.to_string());
     let methods = sym.methods();
     let c = &sym.op_counts;
     let (r, j, rj, rb, jb) =
@@ -154,6 +160,10 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
                     subsystems: &[],
                 };
                 const SEPARABLE: bool = #separable;
+                const STRUCTURE: #p::Structure = #p::Structure {
+                    pattern: &[#(#pattern),*],
+                    unknowns: &[#(#unknowns),*],
+                };
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
                     residual: #r,
                     jacobian: #j,
@@ -240,6 +250,7 @@ fn stub(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
                 };
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
                 const SEPARABLE: bool = false;
+                const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
                 fn equations() -> #p::Equations { #unreachable }
                 fn lagrangian(&self, #tqv) -> #f { #unreachable }
                 #(#methods)*

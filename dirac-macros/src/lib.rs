@@ -14,6 +14,7 @@ mod expand;
 mod interconnect;
 mod lower;
 mod model;
+mod structure;
 mod suggest;
 mod sym;
 mod symbol;

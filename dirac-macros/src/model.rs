@@ -43,6 +43,8 @@ pub struct SymModel {
     /// `φ(q)`, one per holonomic row.
     pub phi: Vec<Id>,
     pub constraint_names: Vec<String>,
+    /// The tokens naming each constraint (its name, or its key), for error spans.
+    pub constraint_idents: Vec<Ident>,
     /// Arithmetic operations of the emitted kernels, filled in by code generation.
     pub op_counts: OpCounts,
 }
@@ -107,6 +109,7 @@ impl SymModel {
             a: Vec::new(),
             phi: Vec::new(),
             constraint_names: Vec::new(),
+            constraint_idents: Vec::new(),
             op_counts: OpCounts::default(),
         };
         let scope = sm.declare_symbols();
@@ -179,6 +182,7 @@ impl SymModel {
             if let Some(row) = row {
                 self.a.push(row);
                 self.constraint_names.push(name);
+                self.constraint_idents.push(c.name.clone().unwrap_or_else(|| c.key.clone()));
             }
         }
         for (j, name) in self.constraint_names.clone().iter().enumerate() {

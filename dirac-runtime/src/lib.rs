@@ -32,6 +32,8 @@ pub mod radau;
 pub mod solution;
 /// The state `(q, v, p, λ)` with named access.
 pub mod state;
+/// Structural nonsingularity of the condensed system, checked at compile time.
+pub mod structure;
 /// The variational integrator (discrete Hamilton-Pontryagin-d'Alembert).
 pub mod variational;
 
@@ -45,6 +47,7 @@ pub use names::{Names, ResolveError, Resolved, Subsystem};
 pub use radau::{Options, Radau, Stats};
 pub use solution::{Sampling, Solution};
 pub use state::State;
+pub use structure::Structure;
 pub use variational::{Variational, VariationalOptions, VariationalStats};
 
 /// Items generated code refers to by absolute path. Not part of the public API.
@@ -58,6 +61,7 @@ pub mod __private {
     pub use crate::keys::{Constraint, Coordinate};
     pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
     pub use crate::names::{Names, ResolveError, Resolved, Subsystem};
+    pub use crate::structure::{Structure, composite_unknown, unpaired_unknown};
     pub use nalgebra::{Const, DefaultAllocator};
     pub use std::borrow::Cow;
 }

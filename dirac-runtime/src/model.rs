@@ -19,6 +19,7 @@ use nalgebra::DefaultAllocator;
 use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, Storage, VecC, VecH, VecQ, VecY};
 use crate::keys::{Constraint, Coordinate};
 use crate::names::Names;
+use crate::structure::Structure;
 
 /// The blocks of the residual that integrators evaluate at every Newton iteration.
 pub struct ResidualBlocks<M: Dimensions>
@@ -157,6 +158,9 @@ where
     /// (decided from the model's structure when it compiles). Integrators may take shortcuts
     /// for such models; the variational integrator's step then costs what RATTLE's does.
     const SEPARABLE: bool;
+    /// The sparsity pattern of the condensed Newton system and what to say about each unknown;
+    /// interconnections combine their subsystems' to check themselves when they compile.
+    const STRUCTURE: Structure;
 
     /// The derived equations, for people.
     fn equations() -> Equations;

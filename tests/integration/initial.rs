@@ -60,7 +60,7 @@ struct Impossible {}
 
 /// A degenerate coordinate that nothing determines: the consistency system is singular.
 #[derive(LagrangeDirac)]
-#[dirac(coordinates(x => vx, free => v_free))]
+#[dirac(coordinates(x => vx, free => v_free), port(free))]
 #[dirac(lagrangian = 0.5 * vx * vx - 0.5 * x * x)]
 struct Undetermined {}
 

@@ -295,7 +295,7 @@ fn failing_integrations_are_typed_errors_that_say_when() {
 /// A coordinate without inertia that no constraint determines makes every iteration matrix
 /// singular: the error names its velocity.
 #[derive(LagrangeDirac)]
-#[dirac(coordinates(x => vx, free => v_free))]
+#[dirac(coordinates(x => vx, free => v_free), port(free))]
 #[dirac(lagrangian = 0.5 * vx * vx - 0.5 * x * x)]
 struct Undetermined {}
 

@@ -183,6 +183,85 @@ impl CompositeModel {
         (op_count(&self.graph, &residual), op_count(&self.graph, &jacobian))
     }
 
+    /// Const items that build the composite's condensed pattern from its subsystems' and its
+    /// own rows, and stop the build if it is structurally singular, naming the unknown.
+    pub fn structure(&mut self, composite: &Composite<'_>) -> TokenStream {
+        let p = rt();
+        let name = composite.ident.to_string();
+        let subsystems = composite.subsystems.iter().enumerate().map(|(i, sub)| {
+            let ty = &sub.ty;
+            let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
+            quote! {{
+                let s = <#ty as #p::LagrangeDirac>::STRUCTURE;
+                let (tn, tc, th) = (<#ty as #p::Dimensions>::NQ, <#ty as #p::Dimensions>::NC, <#ty as #p::Dimensions>::NH);
+                let tk = tn + tc;
+                let mut a = 0;
+                while a < tk {
+                    let ra = #p::composite_unknown(a, tn, th, (#qi, #hi, #vi), __NQ);
+                    u[ra] = s.unknowns[a];
+                    let mut b = 0;
+                    while b < tk {
+                        if s.pattern[a * tk + b] {
+                            p[ra * __K + #p::composite_unknown(b, tn, th, (#qi, #hi, #vi), __NQ)] = true;
+                        }
+                        b += 1;
+                    }
+                    a += 1;
+                }
+            }}
+        });
+        let subsystems: Vec<TokenStream> = subsystems.collect();
+        let mut rows = TokenStream::new();
+        for j in 0..self.rows.len() {
+            let jl = lit(j);
+            let message = message(&format!(
+                "structurally singular interconnection: the multiplier of `{}` of `{name}` is determined by no \
+                 equation: it constrains velocities that other constraints already fix",
+                self.rows[j].name
+            ));
+            rows.extend(quote! { u[__NQ + __OMEGA + #jl] = #message; });
+            for k in 0..self.refs.len() {
+                let d = self.d(j, k);
+                if self.graph.is_zero(d) {
+                    continue;
+                }
+                let r = r_ident(k);
+                rows.extend(quote! {
+                    p[(__NQ + __OMEGA + #jl) * __K + #r.index] = true;
+                    if #r.velocity {
+                        p[#r.index * __K + __NQ + __OMEGA + #jl] = true;
+                    }
+                });
+                for l in 0..self.refs.len() {
+                    let h = self.h(j, k, l);
+                    if !self.graph.is_zero(h) {
+                        let rl = r_ident(l);
+                        rows.extend(quote! {
+                            if #r.velocity && !#rl.velocity {
+                                p[#r.index * __K + #rl.index] = true;
+                            }
+                        });
+                    }
+                }
+            }
+        }
+        quote! {
+            const __K: usize = __NQ + __NC;
+            const __STRUCTURE: ([bool; __K * __K], [&str; __K]) = {
+                let mut p = [false; __K * __K];
+                let mut u = [""; __K];
+                #(#subsystems)*
+                #rows
+                (p, u)
+            };
+            const __PATTERN: [bool; __K * __K] = __STRUCTURE.0;
+            const __UNKNOWNS: [&str; __K] = __STRUCTURE.1;
+            const _: () = if let ::core::option::Option::Some(c) = #p::unpaired_unknown::<__K>(&__PATTERN, __K) {
+                ::core::panic!("{}", __UNKNOWNS[c])
+            };
+        }
+    }
+
     /// Const items that resolve each subsystem member and check what it is.
     pub fn resolutions(&self, composite: &Composite<'_>) -> TokenStream {
         let p = rt();

@@ -93,6 +93,7 @@ fn implementation(
     let ident = composite.ident;
     let layout = layout(composite, model.rows.len());
     let resolutions = model.resolutions(composite);
+    let structure = model.structure(composite);
     let asserts = composite.subsystems.iter().map(|s| {
         let ty = &s.ty;
         quote_spanned! {ty.span()=>
@@ -113,6 +114,7 @@ fn implementation(
             #layout
             #resolutions
             #linearity
+            #structure
 
             #[automatically_derived]
             impl #p::Dimensions for #ident {
@@ -178,6 +180,7 @@ fn operation_counts(composite: &Composite<'_>, model: &mut CompositeModel) -> To
     });
     quote! {
         const SEPARABLE: bool = true #(&& #separable)*;
+        const STRUCTURE: #p::Structure = #p::Structure { pattern: &__PATTERN, unknowns: &__UNKNOWNS };
         const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
             residual: #residual,
             jacobian: #jacobian,

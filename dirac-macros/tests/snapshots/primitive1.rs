@@ -19,6 +19,13 @@ const _: () = {
             subsystems: &[],
         };
         const SEPARABLE: bool = true;
+        const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
+            pattern: &[true, true, true, true],
+            unknowns: &[
+                "structurally singular model: the velocity `v1` of `Primitive1` is determined by no equation: coordinate `x1` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `v2` of `Primitive1` is determined by no equation: coordinate `x2` has no inertia, and no potential or constraint fixes it",
+            ],
+        };
         const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
             residual: 9usize,
             jacobian: 1usize,

@@ -1,0 +1,129 @@
+//! The sparsity structure of a model's condensed Newton system, and the check that it is
+//! structurally nonsingular, evaluated while the program compiles.
+//!
+//! The condensed system (design notes §2.4) has one column per velocity and per multiplier and
+//! one row per momentum balance and per constraint. It can be nonsingular only if its pattern
+//! has a perfect matching: every unknown paired with an equation it appears in. A velocity that
+//! no equation determines (a coordinate without inertia that no constraint or potential fixes)
+//! or a dependent constraint leaves an unknown unpaired.
+
+/// The pattern of the condensed system and a message for each of its unknowns.
+#[derive(Clone, Copy, Debug)]
+pub struct Structure {
+    /// Row-major `(n + m) × (n + m)`: whether the entry can be nonzero.
+    pub pattern: &'static [bool],
+    /// For each unknown (velocities, then multipliers), what to say when nothing determines it.
+    pub unknowns: &'static [&'static str],
+}
+
+/// The first unknown of a `k × k` pattern that a maximum matching leaves unpaired, if any.
+/// `K` bounds the size (an upper bound is enough); usable in `const` items.
+pub const fn unpaired_unknown<const K: usize>(pattern: &[bool], k: usize) -> Option<usize> {
+    // row_of[c]: the equation paired with unknown c (K = none).
+    let mut row_of = [K; K];
+    let mut col_of = [K; K];
+    let mut r = 0;
+    while r < k {
+        // Depth-first search for an augmenting path from row r, with an explicit stack.
+        let mut visited = [false; K];
+        let mut stack_row = [0usize; K];
+        let mut stack_col = [0usize; K];
+        let mut parent = [K; K];
+        let mut depth = 0;
+        stack_row[0] = r;
+        stack_col[0] = 0;
+        let mut found = K;
+        while found == K {
+            let row = stack_row[depth];
+            let mut c = stack_col[depth];
+            let mut advanced = false;
+            while c < k {
+                if pattern[row * k + c] && !visited[c] {
+                    visited[c] = true;
+                    stack_col[depth] = c + 1;
+                    parent[c] = row;
+                    if row_of[c] == K {
+                        found = c;
+                    } else {
+                        depth += 1;
+                        stack_row[depth] = row_of[c];
+                        stack_col[depth] = 0;
+                    }
+                    advanced = true;
+                    break;
+                }
+                c += 1;
+            }
+            if !advanced {
+                if depth == 0 {
+                    break;
+                }
+                depth -= 1;
+            }
+        }
+        if found != K {
+            // Flip the path back to row r.
+            let mut c = found;
+            loop {
+                let row = parent[c];
+                let previous = col_of[row];
+                row_of[c] = row;
+                col_of[row] = c;
+                if row == r {
+                    break;
+                }
+                c = previous;
+            }
+        }
+        r += 1;
+    }
+    let mut c = 0;
+    while c < k {
+        if row_of[c] == K {
+            return Some(c);
+        }
+        c += 1;
+    }
+    None
+}
+
+/// Where unknown `a` of a subsystem's condensed system sits in its composite's: velocities
+/// after the subsystem's first coordinate, multipliers at the subsystem's constraint rows
+/// (holonomic rows from `h_offset`, the others from `v_offset`), after the composite's `n`.
+pub const fn composite_unknown(
+    a: usize,
+    sub_n: usize,
+    sub_h: usize,
+    slot: (usize, usize, usize),
+    n: usize,
+) -> usize {
+    let (q_offset, h_offset, v_offset) = slot;
+    if a < sub_n {
+        q_offset + a
+    } else if a - sub_n < sub_h {
+        n + h_offset + (a - sub_n)
+    } else {
+        n + v_offset + (a - sub_n - sub_h)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::unpaired_unknown;
+
+    #[test]
+    fn finds_perfect_matchings_and_their_absence() {
+        // A permutation-like pattern needs augmenting paths to be matched fully.
+        let full = [true, true, false, true, false, false, false, true, true];
+        assert_eq!(unpaired_unknown::<3>(&full, 3), None);
+        // Column 1 appears in no row.
+        let empty_column = [true, false, false, true, false, true, false, false, true];
+        assert_eq!(unpaired_unknown::<3>(&empty_column, 3), Some(1));
+        // Rows 0 and 1 can only take column 0; row 2 takes column 1, so column 2 stays unpaired.
+        let crowded = [true, false, false, true, false, false, false, true, true];
+        assert_eq!(unpaired_unknown::<3>(&crowded, 3), Some(2));
+        // Evaluated at compile time, with a bound K above the size k.
+        const CHECKED: Option<usize> = unpaired_unknown::<4>(&[true, true, false, true], 2);
+        assert_eq!(CHECKED, None);
+    }
+}
