@@ -2,8 +2,8 @@
 //! `#[derive(Interconnection)]` generates. Not part of the public API.
 //!
 //! A subsystem occupies a contiguous range of the composite's coordinates starting at
-//! [`Slot::q`]; its holonomic constraint rows start at [`Slot::h`] and its other rows at
-//! [`Slot::v`] (holonomic rows of every subsystem come first in a composite).
+//! `Slot::q`; its holonomic constraint rows start at `Slot::h` and its other rows at
+//! `Slot::v` (holonomic rows of every subsystem come first in a composite).
 
 use nalgebra::DefaultAllocator;
 

@@ -1,5 +1,5 @@
 //! The linear systems of an implicit step, `(σ M − J) x = r` with `M = diag(I, 0, I, 0)`,
-//! behind one seam ([`NewtonSolver`]), with the condensed solver every integrator uses and a
+//! behind one seam ([`NewtonSolver`](crate::newton::NewtonSolver)), with the condensed solver every integrator uses and a
 //! full solver kept as a reference and a benchmark baseline.
 //!
 //! Condensation (design notes §2.4): the `q` and `p` rows of `σ M − J` are identity blocks,
