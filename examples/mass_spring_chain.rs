@@ -20,9 +20,13 @@
 use std::error::Error;
 use std::fs::File;
 use std::io::BufWriter;
-use std::path::PathBuf;
 
 use dirac::prelude::*;
+
+#[path = "support/mod.rs"]
+mod support;
+
+use support::{Chart, Series, output_dir};
 
 /// Primitive system 1: wall —k1— m1 —k2— m2, port at x2.
 #[derive(LagrangeDirac)]
@@ -114,8 +118,8 @@ fn main() -> Result<(), Box<dyn Error>> {
         "Simulated t in [0, 20]: {} steps, {} rejected, {} LU factorisations",
         torn.stats.steps, torn.stats.rejected, torn.stats.factorizations
     );
-    for (name, a, b) in pairs {
-        let deviation = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    for (name, a, b) in &pairs {
+        let deviation = a.iter().zip(b.iter()).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
         println!("  max |{name} torn - {name} monolithic| = {deviation:.2e}");
     }
     let e0 = torn.energy()[0];
@@ -128,10 +132,50 @@ fn main() -> Result<(), Box<dyn Error>> {
     let last = torn.len() - 1;
     println!("  port efforts at t = 20: f2 = {:.6}, f2bar = {:.6}", f2[last], f2bar[last]);
 
-    let dir = PathBuf::from("target/dirac-examples");
-    std::fs::create_dir_all(&dir)?;
-    let path = dir.join("mass_spring_chain.csv");
-    torn.write_csv(BufWriter::new(File::create(&path)?))?;
-    println!("wrote {}", path.display());
+    let dir = output_dir()?;
+    let csv = dir.join("mass_spring_chain.csv");
+    torn.write_csv(BufWriter::new(File::create(&csv)?))?;
+    let t = torn.t();
+    let positions = dir.join("mass_spring_chain_positions.svg");
+    Chart {
+        title: "Torn and interconnected chain: positions",
+        x_label: "time t [s]",
+        y_label: "position [m]",
+        series: vec![
+            Series { name: "x1", x: t, y: torn.q(Chain::left(Primitive1::X1)) },
+            Series { name: "x2 (= x2bar)", x: t, y: torn.q(Chain::left(Primitive1::X2)) },
+            Series { name: "x3", x: t, y: torn.q(Chain::right(Primitive2::X3)) },
+        ],
+        log_y: false,
+    }
+    .write(&positions)?;
+    let energy_error: Vec<f64> = torn.energy().iter().map(|e| (e - e0).abs()).collect();
+    let deviation: Vec<f64> = (0..torn.len())
+        .map(|i| pairs.iter().map(|(_, a, b)| (a[i] - b[i]).abs()).fold(0.0, f64::max))
+        .collect();
+    let errors = dir.join("mass_spring_chain_errors.svg");
+    Chart {
+        title: "Energy error and deviation from the monolithic chain",
+        x_label: "time t [s]",
+        y_label: "absolute error (log10)",
+        series: vec![
+            Series { name: "|E - E(0)| [J]", x: t, y: &energy_error },
+            Series { name: "max |x torn - x whole| [m]", x: t, y: &deviation },
+        ],
+        log_y: true,
+    }
+    .write(&errors)?;
+    let forces = dir.join("mass_spring_chain_port_forces.svg");
+    Chart {
+        title: "Efforts at the ports: f2 + f2bar = 0",
+        x_label: "time t [s]",
+        y_label: "force [N]",
+        series: vec![Series { name: "f2", x: t, y: f2 }, Series { name: "f2bar", x: t, y: f2bar }],
+        log_y: false,
+    }
+    .write(&forces)?;
+    for path in [&csv, &positions, &errors, &forces] {
+        println!("wrote {}", path.display());
+    }
     Ok(())
 }
