@@ -19,8 +19,16 @@
 //! [ A + G/σ                     0  ] [x_λ] = [ −r_λ − G r_q / σ                ]
 //! ```
 //!
-//! of size `n + m` instead of `3n + m` (the design notes' form multiplied by 1/σ, which keeps
-//! its entries of one scale when σ is large).
+//! of size `n + m` instead of `3n + m`. It is factored with its multiplier unknowns scaled,
+//! `x_λ = σ x̃_λ`, and its constraint rows multiplied by σ,
+//!
+//! ```text
+//! [ σ L_vv + L_vq − D − K/σ   −σ Aᵀ ] [x_v]   [ r_p + σ r_v − (L_vq − K/σ) r_q ]
+//! [ σ A + G                     0   ] [x̃_λ] = [ −σ r_λ − G r_q                  ]
+//! ```
+//!
+//! so that at small steps (large σ) the multipliers' pivots, `σ A L_vv⁻¹ Aᵀ`, are of the scale
+//! of the velocities' `σ L_vv` instead of `σ⁻²` times smaller.
 
 use nalgebra::{Complex, ComplexField, DefaultAllocator, OMatrix, OVector};
 
@@ -89,8 +97,8 @@ fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
                 - r(jac.dpdot_dq[(i, j)]) / sigma;
         }
         for k in 0..m {
-            s[(n + k, j)] = r(jac.a[(k, j)]) + r(jac.dav_dq[(k, j)]) / sigma;
-            s[(j, n + k)] = -r(jac.a[(k, j)]);
+            s[(n + k, j)] = sigma * r(jac.a[(k, j)]) + r(jac.dav_dq[(k, j)]);
+            s[(j, n + k)] = -sigma * r(jac.a[(k, j)]);
         }
     }
     for k in 0..m {
@@ -120,9 +128,9 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
         b[i] = bi;
     }
     for k in 0..m {
-        let mut bk = -x[3 * n + k];
+        let mut bk = -sigma * x[3 * n + k];
         for j in 0..n {
-            bk -= r(jac.dav_dq[(k, j)]) * x[j] / sigma;
+            bk -= r(jac.dav_dq[(k, j)]) * x[j];
         }
         b[n + k] = bk;
     }
@@ -143,7 +151,7 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
         x[n + i] = b[i];
     }
     for k in 0..m {
-        x[3 * n + k] = b[n + k];
+        x[3 * n + k] = sigma * b[n + k];
     }
 }
 

@@ -69,7 +69,8 @@ impl Chart<'_> {
     /// Writes the chart as an SVG file.
     pub fn write(&self, path: &Path) -> std::io::Result<()> {
         // On a log scale, zeros (exact values) are left out rather than drawn at 1e-300.
-        let transform = |y: f64| if self.log_y { if y.abs() > 0.0 { y.abs().log10() } else { f64::NAN } } else { y };
+        let transform =
+            |y: f64| if self.log_y { if y.abs() > 0.0 { y.abs().log10() } else { f64::NAN } } else { y };
         let points =
             || self.series.iter().flat_map(|s| s.x.iter().zip(s.y).map(|(x, y)| (*x, transform(*y))));
         let (mut x0, mut x1, mut y0, mut y1) =

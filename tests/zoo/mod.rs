@@ -331,3 +331,18 @@ pub fn horizontal_start(p: &Pendulum) -> State<Pendulum> {
     )
     .expect("a consistent start")
 }
+
+/// A double pendulum in Cartesian coordinates with two rods (holonomic constraints).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => vx1, y1 => vy1, x2 => vx2, y2 => vy2))]
+#[dirac(lagrangian = 0.5 * m1 * (vx1 * vx1 + vy1 * vy1) + 0.5 * m2 * (vx2 * vx2 + vy2 * vy2)
+                   - g * (m1 * y1 + m2 * y2))]
+#[dirac(holonomic(rod1) = x1 * x1 + y1 * y1 - l1 * l1)]
+#[dirac(holonomic(rod2) = (x2 - x1).powi(2) + (y2 - y1).powi(2) - l2 * l2)]
+pub struct DoublePendulum {
+    pub m1: f64,
+    pub m2: f64,
+    pub l1: f64,
+    pub l2: f64,
+    pub g: f64,
+}
