@@ -11,6 +11,16 @@
 //! q̇ = v,   ṗ = ∂L/∂q + F + A(q)ᵀ λ,   p = ∂L/∂v,   A(q) v = 0
 //! ```
 //!
+//! Models declared on their own are joined through their ports by
+//! `#[derive(Interconnection)]` into a model of the same kind, and simulated by
+//! [`Radau`] (Radau IIA, order 5, adaptive) or [`Variational`] (a structure-preserving
+//! integrator from the discrete Hamilton-Pontryagin-d'Alembert principle).
+//!
+//! - [`guide`]: a tutorial from a Lagrangian to a plot;
+//! - [`attributes`]: the `#[dirac(...)]` reference;
+//! - [`paper`]: each concept of the paper and where it lives in the API;
+//! - [`compile_time_checks`]: everything `cargo build` checks in a model.
+//!
 //! ```
 //! use dirac::prelude::*;
 //!
@@ -58,6 +68,18 @@ pub mod prelude {
         SimError, Solution, State, Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state,
     };
 }
+
+/// Documentation: a tutorial from a Lagrangian to a plot.
+#[doc = include_str!("docs/guide.md")]
+pub mod guide {}
+
+/// Documentation: the `#[dirac(...)]` attributes.
+#[doc = include_str!("docs/attributes.md")]
+pub mod attributes {}
+
+/// Documentation: each concept of the paper and where it lives in the API.
+#[doc = include_str!("docs/paper.md")]
+pub mod paper {}
 
 /// Documentation: everything `cargo build` checks in a model.
 #[doc = include_str!("docs/compile_time_checks.md")]
