@@ -34,3 +34,51 @@ for problem, points in radau.items():
         ratio = f"{seconds / other:7.3f}" if other else "    n/a"
         ida_s = f"{other:11.3e}" if other else "        n/a"
         print(f"{problem:10} {tol:8.0e} {error:10.2e} {seconds:11.3e} {ida_s} {ratio}")
+
+
+def work_precision_svg(path):
+    """Log-log work-precision plot: achieved error against wall time, both solvers, both problems."""
+    series = []
+    colors = {"radau": "#1f77b4", "ida": "#d62728"}
+    dashes = {"pendulum": "", "chain": "6,3"}
+    for solver, data in [("radau", radau), ("ida", ida)]:
+        for problem, pts in data.items():
+            pts = sorted((math.log10(e), math.log10(s)) for e, s, _, _ in pts if e > 0)
+            series.append((f"{'dirac Radau' if solver == 'radau' else 'SUNDIALS IDA'}, {problem}",
+                           colors[solver], dashes.get(problem, ""), pts))
+    xs = [x for *_, p in series for x, _ in p]
+    ys = [y for *_, p in series for _, y in p]
+    x0, x1, y0, y1 = math.floor(min(xs)), math.ceil(max(xs)), math.floor(min(ys)), math.ceil(max(ys))
+    w, h, left, right, top, bottom = 860, 450, 90, 250, 40, 60
+    pw, ph = w - left - right, h - top - bottom
+    sx = lambda x: left + (x - x0) / (x1 - x0) * pw
+    sy = lambda y: top + (y1 - y) / (y1 - y0) * ph
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="13">',
+           f'<rect width="{w}" height="{h}" fill="white"/>',
+           f'<text x="{left + pw / 2}" y="24" text-anchor="middle" font-size="16">Work-precision: dirac Radau vs SUNDIALS IDA</text>',
+           f'<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>']
+    for x in range(x0, x1 + 1):
+        out.append(f'<line x1="{sx(x)}" y1="{top}" x2="{sx(x)}" y2="{top + ph}" stroke="#ddd"/>')
+        out.append(f'<text x="{sx(x)}" y="{top + ph + 18}" text-anchor="middle">1e{x}</text>')
+    for y in range(y0, y1 + 1):
+        out.append(f'<line x1="{left}" y1="{sy(y)}" x2="{left + pw}" y2="{sy(y)}" stroke="#ddd"/>')
+        out.append(f'<text x="{left - 6}" y="{sy(y) + 4}" text-anchor="end">1e{y}</text>')
+    out.append(f'<text x="{left + pw / 2}" y="{h - 15}" text-anchor="middle">achieved error (log10)</text>')
+    out.append(f'<text x="20" y="{top + ph / 2}" text-anchor="middle" transform="rotate(-90 20 {top + ph / 2})">wall time per solve [s] (log10)</text>')
+    for k, (name, color, dash, pts) in enumerate(series):
+        points = " ".join(f"{sx(x):.1f},{sy(y):.1f}" for x, y in pts)
+        style = f' stroke-dasharray="{dash}"' if dash else ""
+        out.append(f'<polyline points="{points}" fill="none" stroke="{color}" stroke-width="2"{style}/>')
+        for x, y in pts:
+            out.append(f'<circle cx="{sx(x):.1f}" cy="{sy(y):.1f}" r="3" fill="{color}"/>')
+        ly = top + 16 + 20 * k
+        out.append(f'<line x1="{left + pw + 12}" y1="{ly}" x2="{left + pw + 34}" y2="{ly}" stroke="{color}" stroke-width="2"{style}/>')
+        out.append(f'<text x="{left + pw + 40}" y="{ly + 4}">{name}</text>')
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+if len(sys.argv) > 3:
+    work_precision_svg(sys.argv[3])
+    print(f"wrote {sys.argv[3]}")
