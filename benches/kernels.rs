@@ -232,7 +232,10 @@ macro_rules! cartesian_kernels {
 }
 
 impl<const N: usize> Chain<N> {
-    fn generic_residual<D: DualNum<Primitive = f64> + Copy, const NY: usize>(&self, y: &SVector<D, NY>) -> SVector<D, NY> {
+    fn generic_residual<D: DualNum<Primitive = f64> + Copy, const NY: usize>(
+        &self,
+        y: &SVector<D, NY>,
+    ) -> SVector<D, NY> {
         let n = 2 * N;
         let s = y.as_slice();
         let (q, v, p, lambda) = (&s[..n], &s[n..2 * n], &s[2 * n..3 * n], &s[3 * n..]);
@@ -356,9 +359,13 @@ macro_rules! bench_model {
         let mut group = c.benchmark_group(format!("kernels/{name}"));
         let mut f = SVector::<f64, $ny>::zeros();
         let mut j = nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
-        group.bench_function("generated F", |b| b.iter(|| LagrangeDirac::residual(model, 0.0, black_box(&y), &mut f)));
+        group.bench_function("generated F", |b| {
+            b.iter(|| LagrangeDirac::residual(model, 0.0, black_box(&y), &mut f))
+        });
         group.bench_function("hand-written F", |b| b.iter(|| Hand::residual(model, black_box(&y), &mut f)));
-        group.bench_function("generated J", |b| b.iter(|| LagrangeDirac::jacobian(model, 0.0, black_box(&y), &mut j)));
+        group.bench_function("generated J", |b| {
+            b.iter(|| LagrangeDirac::jacobian(model, 0.0, black_box(&y), &mut j))
+        });
         group.bench_function("hand-written J", |b| b.iter(|| Hand::jacobian(model, black_box(&y), &mut j)));
         group.bench_function("generated F+J", |b| {
             b.iter(|| {
@@ -372,7 +379,9 @@ macro_rules! bench_model {
                 Hand::jacobian(model, black_box(&y), &mut j);
             })
         });
-        group.bench_function("num-dual F+J", |b| b.iter(|| jacobian(|x| Generic::residual(model, &x), black_box(&y))));
+        group.bench_function("num-dual F+J", |b| {
+            b.iter(|| jacobian(|x| Generic::residual(model, &x), black_box(&y)))
+        });
         group.finish();
     }};
 }
@@ -385,14 +394,18 @@ where
 }
 
 fn kernels(c: &mut Criterion) {
-    bench_model!(c, "paper chain (n=3)", &MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 }, 9);
+    bench_model!(
+        c,
+        "paper chain (n=3)",
+        &MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 },
+        9
+    );
     bench_model!(c, "8-link pendulum, angles (n=8)", &Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 24);
     bench_model!(c, "Cartesian N=2 (n=4, m=2)", &Cartesian2 { m: 1.0, g: 9.81, l: 1.0 }, 14);
     bench_model!(c, "Cartesian N=4 (n=8, m=4)", &Cartesian4 { m: 1.0, g: 9.81, l: 1.0 }, 28);
     bench_model!(c, "Cartesian N=8 (n=16, m=8)", &Cartesian8 { m: 1.0, g: 9.81, l: 1.0 }, 56);
     bench_model!(c, "Cartesian N=16 (n=32, m=16)", &Cartesian16 { m: 1.0, g: 9.81, l: 1.0 }, 112);
 }
-
 
 criterion_group!(benches, kernels);
 criterion_main!(benches);

@@ -127,7 +127,8 @@ fn parse_params(cx: &Ctxt, input: &DeriveInput) -> Vec<Ident> {
     }
 }
 
-fn is_f64(ty: &Type) -> bool {
+/// Whether a field's type is `f64` (a parameter), looking through groups and parentheses.
+pub fn is_f64(ty: &Type) -> bool {
     match ty {
         Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),
         Type::Group(g) => is_f64(&g.elem),

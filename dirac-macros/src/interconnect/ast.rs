@@ -4,6 +4,7 @@ use syn::ext::IdentExt;
 use syn::parse::ParseStream;
 use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
+use crate::ast::is_f64;
 use crate::ctxt::Ctxt;
 use crate::lower::member_path;
 use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, INTERCONNECTION_KEYS};
@@ -135,15 +136,6 @@ fn never_a_model(ty: &Type) -> Option<String> {
             Some(quote::ToTokens::to_token_stream(ty).to_string())
         }
         _ => None,
-    }
-}
-
-fn is_f64(ty: &Type) -> bool {
-    match ty {
-        Type::Path(p) => p.qself.is_none() && p.path.is_ident("f64"),
-        Type::Group(g) => is_f64(&g.elem),
-        Type::Paren(p) => is_f64(&p.elem),
-        _ => false,
     }
 }
 
