@@ -1,6 +1,7 @@
-"""Compares work-precision curves: for every dirac Radau point, the wall time SUNDIALS IDA
-needs for the same achieved error (log-log interpolation between IDA's points), and the ratio.
-Usage: compare.py radau.csv ida.csv"""
+"""Compares work-precision curves: for every dirac Radau point, the wall time each peer needs for
+the same achieved error (log-log interpolation between the peer's points), and the ratio; with
+--svg, draws all curves in one log-log work-precision diagram.
+Usage: compare.py radau.csv LABEL=peer.csv [LABEL=peer.csv ...] [--svg out.svg]"""
 import csv
 import math
 import sys
@@ -26,36 +27,45 @@ def time_at(curve, error):
     return None
 
 
-radau, ida = load(sys.argv[1]), load(sys.argv[2])
-print(f"{'problem':10} {'tol':>8} {'error':>10} {'radau s':>11} {'ida s':>11} {'ratio':>7}")
-for problem, points in radau.items():
-    for error, seconds, steps, tol in points:
-        other = time_at(ida.get(problem, []), error)
-        ratio = f"{seconds / other:7.3f}" if other else "    n/a"
-        ida_s = f"{other:11.3e}" if other else "        n/a"
-        print(f"{problem:10} {tol:8.0e} {error:10.2e} {seconds:11.3e} {ida_s} {ratio}")
+args = sys.argv[1:]
+svg = None
+if "--svg" in args:
+    k = args.index("--svg")
+    svg = args[k + 1]
+    del args[k:k + 2]
+radau = load(args[0])
+peers = [(label, load(path)) for label, path in (a.split("=", 1) for a in args[1:])]
+for label, peer in peers:
+    print(f"dirac Radau against {label}:")
+    print(f"{'problem':10} {'tol':>8} {'error':>10} {'radau s':>11} {'peer s':>11} {'ratio':>7}")
+    for problem, points in radau.items():
+        for error, seconds, steps, tol in points:
+            other = time_at(peer.get(problem, []), error)
+            ratio = f"{seconds / other:7.3f}" if other else "    n/a"
+            other_s = f"{other:11.3e}" if other else "        n/a"
+            print(f"{problem:10} {tol:8.0e} {error:10.2e} {seconds:11.3e} {other_s} {ratio}")
+    print()
 
 
 def work_precision_svg(path):
-    """Log-log work-precision plot: achieved error against wall time, both solvers, both problems."""
+    """Log-log work-precision plot: achieved error against wall time, every solver and problem."""
     series = []
-    colors = {"radau": "#1f77b4", "ida": "#d62728"}
+    palette = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"]
     dashes = {"pendulum": "", "chain": "6,3"}
-    for solver, data in [("radau", radau), ("ida", ida)]:
+    for k, (solver, data) in enumerate([("dirac Radau", radau)] + peers):
         for problem, pts in data.items():
             pts = sorted((math.log10(e), math.log10(s)) for e, s, _, _ in pts if e > 0)
-            series.append((f"{'dirac Radau' if solver == 'radau' else 'SUNDIALS IDA'}, {problem}",
-                           colors[solver], dashes.get(problem, ""), pts))
+            series.append((f"{solver}, {problem}", palette[k % len(palette)], dashes.get(problem, ""), pts))
     xs = [x for *_, p in series for x, _ in p]
     ys = [y for *_, p in series for _, y in p]
     x0, x1, y0, y1 = math.floor(min(xs)), math.ceil(max(xs)), math.floor(min(ys)), math.ceil(max(ys))
-    w, h, left, right, top, bottom = 860, 450, 90, 250, 40, 60
+    w, h, left, right, top, bottom = 960, 480, 90, 330, 40, 60
     pw, ph = w - left - right, h - top - bottom
     sx = lambda x: left + (x - x0) / (x1 - x0) * pw
     sy = lambda y: top + (y1 - y) / (y1 - y0) * ph
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="13">',
            f'<rect width="{w}" height="{h}" fill="white"/>',
-           f'<text x="{left + pw / 2}" y="24" text-anchor="middle" font-size="16">Work-precision: dirac Radau vs SUNDIALS IDA</text>',
+           f'<text x="{left + pw / 2}" y="24" text-anchor="middle" font-size="16">Work-precision: dirac Radau against its peers</text>',
            f'<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>']
     for x in range(x0, x1 + 1):
         out.append(f'<line x1="{sx(x)}" y1="{top}" x2="{sx(x)}" y2="{top + ph}" stroke="#ddd"/>')
@@ -79,6 +89,6 @@ def work_precision_svg(path):
         f.write("\n".join(out) + "\n")
 
 
-if len(sys.argv) > 3:
-    work_precision_svg(sys.argv[3])
-    print(f"wrote {sys.argv[3]}")
+if svg:
+    work_precision_svg(svg)
+    print(f"wrote {svg}")

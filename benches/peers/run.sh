@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Runs dirac's Radau and SUNDIALS IDA side by side on the pendulum and the paper's chain and
-# prints wall-time ratios at equal achieved error. Not part of CI.
+# Runs dirac's Radau, SUNDIALS IDA and diffsol side by side on the pendulum and the paper's chain,
+# prints wall-time ratios at equal achieved error and draws the work-precision diagram. Not part
+# of CI.
 #
 # IDA comes from Debian's packages, unpacked into target/peers without installing (its -dev
 # package pulls in PETSc and MPI through dependencies the driver does not need), and is
-# driven by ida_driver.c: same formulation, analytic Jacobian, same initial state.
+# driven by ida_driver.c: same formulation, analytic Jacobian, same initial state. diffsol is
+# the package in benches/peers/diffsol (outside the workspace, so CI never builds it), which
+# gives diffsol the explicit-ODE form of each problem (see its src/main.rs).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 peers=target/peers
@@ -18,10 +21,18 @@ lib="$peers/sundials/usr/lib/x86_64-linux-gnu"
 gcc -O3 -o "$peers/ida_driver" benches/peers/ida_driver.c -I"$peers/sundials/usr/include" -L"$lib" \
     -Wl,-rpath,"$PWD/$lib" -lsundials_ida -lsundials_nvecserial -lsundials_sunlinsoldense \
     -lsundials_sunmatrixdense -lm
+cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol"
 cargo bench --bench work_precision -- reference > "$peers/reference.txt"
 # shellcheck disable=SC2046
 "$peers/ida_driver" $(cat "$peers/reference.txt") > "$peers/ida.csv"
+for method in bdf esdirk34 tsit45; do
+    # shellcheck disable=SC2046
+    "$peers/diffsol/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") > "$peers/diffsol_$method.csv"
+done
 cargo bench --bench work_precision > "$peers/radau.csv"
 echo "dirac Radau:"; cat "$peers/radau.csv"
 echo "SUNDIALS IDA:"; cat "$peers/ida.csv"
-python3 benches/peers/compare.py "$peers/radau.csv" "$peers/ida.csv" "$peers/work_precision.svg"
+for method in bdf esdirk34 tsit45; do echo "diffsol $method:"; cat "$peers/diffsol_$method.csv"; done
+python3 benches/peers/compare.py "$peers/radau.csv" "SUNDIALS IDA=$peers/ida.csv" \
+    "diffsol BDF=$peers/diffsol_bdf.csv" "diffsol ESDIRK34=$peers/diffsol_esdirk34.csv" \
+    "diffsol Tsit45 (ODE)=$peers/diffsol_tsit45.csv" --svg "$peers/work_precision.svg"
