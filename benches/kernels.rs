@@ -13,6 +13,11 @@
 //! kernel is checked against the generated one before timing.
 //!
 //! Run: `cargo bench --bench kernels`.
+//!
+//! With `DIRAC_KERNEL_LOOP=<generated|hand-written> <model>` in the environment (models:
+//! `paper`, `cartesian2`, `cartesian4`) and `DIRAC_KERNEL_CALLS=<k>`, the binary instead calls
+//! that F+J kernel k times and exits, for counting instructions per call under valgrind
+//! (`benches/count_instructions.sh`), where wall time at a few ns is too noisy to compare.
 
 #![allow(missing_docs, clippy::needless_range_loop)]
 
@@ -24,7 +29,7 @@ mod zoo;
 use std::hint::black_box;
 
 use cartesian::{Cartesian2, Cartesian4, Cartesian8, Cartesian16};
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, criterion_group};
 use dirac::prelude::*;
 use nalgebra::{DefaultAllocator, SVector};
 use num_dual::{DualNum, jacobian};
@@ -407,5 +412,54 @@ fn kernels(c: &mut Criterion) {
     bench_model!(c, "Cartesian N=16 (n=32, m=16)", &Cartesian16 { m: 1.0, g: 9.81, l: 1.0 }, 112);
 }
 
+/// Calls one model's F+J kernel `calls` times (the instruction-counting mode).
+macro_rules! loop_model {
+    ($generated:expr, $calls:expr, $model:expr, $ny:literal) => {{
+        let model = $model;
+        let y: SVector<f64, $ny> = state(7);
+        let mut f = SVector::<f64, $ny>::zeros();
+        let mut j = nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
+        for _ in 0..$calls {
+            if $generated {
+                LagrangeDirac::residual(model, 0.0, black_box(&y), &mut f);
+                LagrangeDirac::jacobian(model, 0.0, black_box(&y), &mut j);
+            } else {
+                Hand::residual(model, black_box(&y), &mut f);
+                Hand::jacobian(model, black_box(&y), &mut j);
+            }
+            black_box((&f, &j));
+        }
+    }};
+}
+
+fn instruction_loop(spec: &str) {
+    let calls: u64 = std::env::var("DIRAC_KERNEL_CALLS").ok().and_then(|c| c.parse().ok()).unwrap_or(0);
+    let (kind, model) = spec.split_once(' ').expect("DIRAC_KERNEL_LOOP=<generated|hand-written> <model>");
+    let generated = match kind {
+        "generated" => true,
+        "hand-written" => false,
+        other => panic!("unknown kernel kind {other}; expected generated or hand-written"),
+    };
+    match model {
+        "paper" => loop_model!(
+            generated,
+            calls,
+            &MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 },
+            9
+        ),
+        "cartesian2" => loop_model!(generated, calls, &Cartesian2 { m: 1.0, g: 9.81, l: 1.0 }, 14),
+        "cartesian4" => loop_model!(generated, calls, &Cartesian4 { m: 1.0, g: 9.81, l: 1.0 }, 28),
+        other => panic!("unknown model {other}; expected paper, cartesian2 or cartesian4"),
+    }
+}
+
 criterion_group!(benches, kernels);
-criterion_main!(benches);
+
+fn main() {
+    if let Ok(spec) = std::env::var("DIRAC_KERNEL_LOOP") {
+        instruction_loop(&spec);
+        return;
+    }
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+}
