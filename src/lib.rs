@@ -56,8 +56,8 @@ pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
     Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, JacobianBlocks,
     LagrangeDirac, MatCQ, MatKK, MatQQ, MatYY, Membership, Names, OperationCounts, Options, Radau,
-    ResidualBlocks, Sampling, SimError, Solution, State, Stats, Storage, Variational, VariationalOptions,
-    VecC, VecH, VecK, VecQ, VecY, consistent_state,
+    ResidualBlocks, Sampling, SimError, Solution, SparseJacobian, State, Stats, Storage, Variational,
+    VariationalOptions, VecC, VecH, VecK, VecQ, VecY, consistent_state,
 };
 
 /// Everything a model file needs: `use dirac::prelude::*;`.
@@ -65,7 +65,8 @@ pub mod prelude {
     pub use crate::{
         Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Interconnection,
         JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY, Options, Radau, ResidualBlocks, Sampling,
-        SimError, Solution, State, Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state,
+        SimError, Solution, SparseJacobian, State, Variational, VariationalOptions, VecC, VecH, VecQ, VecY,
+        consistent_state,
     };
 }
 

@@ -32,11 +32,16 @@ text = open(f"{d}/dirac.txt").read()
 keys = {"paper chain": "chain", "8-link": "pendulum8", "N=2 ": "cartesian2", "N=4 ": "cartesian4",
         "N=8 ": "cartesian8", "N=16 ": "cartesian16"}
 units = {"ns": 1.0, "µs": 1e3, "ms": 1e6}
-print(f"{'model':14} {'dirac ns':>10} {'CasADi ns':>10} {'ratio':>7}")
-for block in re.findall(r"kernels/([^\n]*?)/generated F\+J\s*\n?\s*time:\s*\[\S+ \S+ (\S+) (\S+)", text):
-    label, value, unit = block
-    name = next(v for k, v in keys.items() if k in label + " ")
-    ours = float(value) * units[unit]
+print(f"{'model':14} {'dirac ns':>10} {'CSC ns':>10} {'CasADi ns':>10} {'ratio':>7} {'CSC ratio':>10}")
+def times(variant):
+    out = {}
+    for label, value, unit in re.findall(
+            r"kernels/([^\n]*?)/generated F\+J" + re.escape(variant) + r"\s*\n?\s*time:\s*\[\S+ \S+ (\S+) (\S+)", text):
+        out[next(v for k, v in keys.items() if k in label + " ")] = float(value) * units[unit]
+    return out
+dense, csc = times(""), times(" (CSC)")
+for name, ours in dense.items():
     theirs = float(casadi[name])
-    print(f"{name:14} {ours:10.2f} {theirs:10.2f} {ours / theirs:7.2f}")
+    packed = csc.get(name, float("nan"))
+    print(f"{name:14} {ours:10.2f} {packed:10.2f} {theirs:10.2f} {ours / theirs:7.2f} {packed / theirs:10.2f}")
 PY

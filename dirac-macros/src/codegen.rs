@@ -315,6 +315,46 @@ impl SymModel {
         let residual = self.method("residual", &[Arg::T, Arg::Y], Some(quote! { #p::VecY<Self> }), residual);
         let jacobian =
             self.method("jacobian", &[Arg::T, Arg::Y], Some(quote! { #p::MatYY<Self> }), &jacobian);
+        self.csc = Some(self.csc_jacobian(&jac));
         quote! { #residual #jacobian }
+    }
+
+    /// The items of the `SparseJacobian` impl: the pattern of `jac` (every entry that is not
+    /// structurally zero) in compressed sparse columns, and `jacobian_csc` writing those entries
+    /// in that order.
+    fn csc_jacobian(&self, jac: &[Vec<Id>]) -> TokenStream {
+        let f64_ty = quote! { ::core::primitive::f64 };
+        let mut starts = vec![0usize];
+        let mut rows = Vec::new();
+        let mut assigns = Vec::new();
+        for col in 0..jac.first().map_or(0, Vec::len) {
+            for (row, entries) in jac.iter().enumerate() {
+                let value = entries[col];
+                if !self.graph.is_zero(value) {
+                    let k = Literal::usize_unsuffixed(rows.len());
+                    assigns.push(Assign::set(quote! { values[#k] }, value));
+                    rows.push(row);
+                }
+            }
+            starts.push(rows.len());
+        }
+        let nnz = rows.len();
+        let y = if self.uses(&assigns, Arg::Y) { format_ident!("y") } else { format_ident!("_y") };
+        let t = if self.uses(&assigns, Arg::T) { format_ident!("t") } else { format_ident!("_t") };
+        let body = emit(&self.graph, &assigns, &|s| self.leaf(s, true));
+        quote! {
+            const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[#(#starts),*];
+            const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[#(#rows),*];
+
+            #[inline]
+            fn jacobian_csc(&self, #t: #f64_ty, #y: &::dirac::__private::VecY<Self>, values: &mut [#f64_ty]) {
+                ::core::assert_eq!(
+                    values.len(),
+                    #nnz,
+                    "jacobian_csc: `values` must hold one entry per stored Jacobian entry"
+                );
+                #body
+            }
+        }
     }
 }

@@ -132,6 +132,7 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
     let pattern = sym.condensed_pattern();
     let unknowns = sym.unknown_messages(&ident.to_string());
     let methods = sym.methods();
+    let csc = sym.csc.take();
     let c = &sym.op_counts;
     let (r, j, rj, rb, jb) =
         (c.residual, c.jacobian, c.residual_and_jacobian, c.residual_blocks, c.jacobian_blocks);
@@ -177,6 +178,12 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
                 }
 
                 #methods
+            }
+
+            #[automatically_derived]
+            #[allow(clippy::approx_constant)]
+            impl #p::SparseJacobian for #ident {
+                #csc
             }
 
             #constants

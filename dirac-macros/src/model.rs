@@ -47,6 +47,8 @@ pub struct SymModel {
     pub constraint_idents: Vec<Ident>,
     /// Arithmetic operations of the emitted kernels, filled in by code generation.
     pub op_counts: OpCounts,
+    /// The items of the `SparseJacobian` impl, filled in by code generation.
+    pub csc: Option<proc_macro2::TokenStream>,
 }
 
 /// How many arithmetic operations the generated kernels perform per call.
@@ -111,6 +113,7 @@ impl SymModel {
             constraint_names: Vec::new(),
             constraint_idents: Vec::new(),
             op_counts: OpCounts::default(),
+            csc: None,
         };
         let scope = sm.declare_symbols();
         sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();

@@ -40,6 +40,7 @@ pub mod variational;
 pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
 pub use error::SimError;
+pub use flat::SparseJacobian;
 pub use init::{Consistency, consistent_state};
 pub use keys::{Constraint, Coordinate};
 pub use model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
@@ -58,6 +59,7 @@ pub mod __private {
     };
     pub use crate::dims::Storage;
     pub use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, VecC, VecH, VecQ, VecY};
+    pub use crate::flat::SparseJacobian;
     pub use crate::keys::{Constraint, Coordinate};
     pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
     pub use crate::names::{Names, ResolveError, Resolved, Subsystem};

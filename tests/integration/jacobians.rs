@@ -1,7 +1,7 @@
 //! For every model in the zoo: the generated flat Jacobian equals central differences of the
 //! generated residual (the reference), at seeded random states.
 
-use crate::util::check_jacobian_by_differences;
+use crate::util::{check_csc_against_dense, check_jacobian_by_differences};
 use crate::zoo::*;
 
 #[test]
@@ -47,4 +47,17 @@ fn interconnected_models() {
     let head = Chain3 { left: Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, right: tail.clone() };
     let five = Chain5 { body: Chain4 { head, tail: tail.clone() }, end: tail };
     check_jacobian_by_differences(&five, 64, 5);
+}
+
+/// The compressed-sparse-column output of every derived model against its dense Jacobian.
+#[test]
+fn sparse_jacobians_match_the_dense_ones() {
+    check_csc_against_dense(&Primitive1 { m1: 1.0, m2: 2.0, k1: 4.0, k2: 5.0 }, 11, 5);
+    check_csc_against_dense(&MassSpringChain { m1: 1.0, m2: 2.0, m3: 3.0, k1: 4.0, k2: 5.0, k3: 6.0 }, 12, 5);
+    check_csc_against_dense(&Pendulum { m: 1.3, g: 9.81, l: 0.7 }, 13, 5);
+    check_csc_against_dense(&RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 }, 14, 5);
+    check_csc_against_dense(&DrivenOscillator { m: 1.0, k: 2.0, c: 0.3, a: 0.5, w: 1.7 }, 15, 5);
+    check_csc_against_dense(&LcCircuit { ind: 1.0, cap: 1.0 }, 16, 5);
+    check_csc_against_dense(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 17, 3);
+    check_csc_against_dense(&AllFunctions { m: 1.5, k: 0.7 }, 18, 5);
 }

@@ -64,3 +64,35 @@ where
         }
     }
 }
+
+/// The compressed-sparse-column Jacobian against the dense one (itself checked against central
+/// differences): a well-formed pattern, equal stored values, and exact zeros outside the pattern.
+pub fn check_csc_against_dense<M: SparseJacobian>(model: &M, seed: u64, trials: usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let ny = 3 * M::NQ + M::NC;
+    let (starts, rows) = (M::JACOBIAN_COLUMN_STARTS, M::JACOBIAN_ROW_INDICES);
+    assert_eq!(starts.len(), ny + 1, "one start per column and the end");
+    assert_eq!((starts[0], starts[ny]), (0, rows.len()));
+    for c in 0..ny {
+        let column = &rows[starts[c]..starts[c + 1]];
+        assert!(column.windows(2).all(|w| w[0] < w[1]) && column.iter().all(|&r| r < ny));
+    }
+    let mut rng = Rng::new(seed);
+    let mut values = vec![0.0; rows.len()];
+    for _ in 0..trials {
+        let t = rng.uniform(0.0, 2.0);
+        let y = random_y::<M>(&mut rng);
+        let dense = model.jacobian_matrix(t, &y);
+        values.fill(f64::NAN);
+        model.jacobian_csc(t, &y, &mut values);
+        let mut stored = MatYY::<M>::zeros();
+        for c in 0..ny {
+            for k in starts[c]..starts[c + 1] {
+                stored[(rows[k], c)] = values[k];
+            }
+        }
+        assert_eq!(stored, dense, "CSC values scattered back differ from the dense Jacobian");
+    }
+}

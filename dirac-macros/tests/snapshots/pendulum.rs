@@ -247,6 +247,47 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::SparseJacobian for Pendulum {
+        const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[
+            0usize, 2usize, 4usize, 7usize, 10usize, 11usize, 12usize, 14usize,
+        ];
+        const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[
+            4usize, 6usize, 5usize, 6usize, 0usize, 2usize, 6usize, 1usize, 3usize,
+            6usize, 2usize, 3usize, 4usize, 5usize,
+        ];
+        #[inline]
+        fn jacobian_csc(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            values: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                values.len(), 14usize,
+                "jacobian_csc: `values` must hold one entry per stored Jacobian entry"
+            );
+            let s0 = 2f64 * y[0];
+            let s1 = 2f64 * y[1];
+            let s2 = 2f64 * y[6];
+            let s3 = -self.m;
+            values[0] = s2;
+            values[1] = 2f64 * y[2];
+            values[2] = s2;
+            values[3] = 2f64 * y[3];
+            values[4] = 1f64;
+            values[5] = s3;
+            values[6] = s0;
+            values[7] = 1f64;
+            values[8] = s3;
+            values[9] = s1;
+            values[10] = 1f64;
+            values[11] = 1f64;
+            values[12] = s0;
+            values[13] = s1;
+        }
+    }
+    #[automatically_derived]
     impl Pendulum {
         ///The coordinate `x`: names its position, velocity and momentum in a state.
         const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(

@@ -233,6 +233,40 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::SparseJacobian for Primitive1 {
+        const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[
+            0usize, 2usize, 4usize, 6usize, 8usize, 9usize, 10usize,
+        ];
+        const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[
+            4usize, 5usize, 4usize, 5usize, 0usize, 2usize, 1usize, 3usize, 2usize,
+            3usize,
+        ];
+        #[inline]
+        fn jacobian_csc(
+            &self,
+            _t: ::core::primitive::f64,
+            _y: &::dirac::__private::VecY<Self>,
+            values: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                values.len(), 10usize,
+                "jacobian_csc: `values` must hold one entry per stored Jacobian entry"
+            );
+            let s0 = -self.k2;
+            values[0] = -self.k1 + s0;
+            values[1] = self.k2;
+            values[2] = self.k2;
+            values[3] = s0;
+            values[4] = 1f64;
+            values[5] = -self.m1;
+            values[6] = 1f64;
+            values[7] = -self.m2;
+            values[8] = 1f64;
+            values[9] = 1f64;
+        }
+    }
+    #[automatically_derived]
     impl Primitive1 {
         ///The coordinate `x1`: names its position, velocity and momentum in a state.
         pub const X1: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
