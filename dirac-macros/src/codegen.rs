@@ -188,6 +188,18 @@ impl SymModel {
         out_ty: Option<TokenStream>,
         assigns: &[Assign],
     ) -> TokenStream {
+        self.checked_method(name, args, out_ty, assigns, TokenStream::new())
+    }
+
+    /// [`Self::method`] whose body starts with `check` (a precondition on the arguments).
+    fn checked_method(
+        &self,
+        name: &str,
+        args: &[Arg],
+        out_ty: Option<TokenStream>,
+        assigns: &[Assign],
+        check: TokenStream,
+    ) -> TokenStream {
         let p = quote! { ::dirac::__private };
         let flat = args.contains(&Arg::Y);
         let mut params = Vec::new();
@@ -207,10 +219,11 @@ impl SymModel {
         let body = emit(&self.graph, assigns, &|s| self.leaf(s, flat));
         match out_ty {
             Some(ty) => {
-                let out = if assigns.is_empty() { format_ident!("_out") } else { format_ident!("out") };
+                let used = !assigns.is_empty() || !check.is_empty();
+                let out = if used { format_ident!("out") } else { format_ident!("_out") };
                 quote! {
                     #[inline]
-                    fn #name(&self, #(#params,)* #out: &mut #ty) { #body }
+                    fn #name(&self, #(#params,)* #out: &mut #ty) { #check #body }
                 }
             }
             None => quote! {
@@ -332,29 +345,31 @@ impl SymModel {
                 let value = entries[col];
                 if !self.graph.is_zero(value) {
                     let k = Literal::usize_unsuffixed(rows.len());
-                    assigns.push(Assign::set(quote! { values[#k] }, value));
+                    assigns.push(Assign::set(quote! { out[#k] }, value));
                     rows.push(row);
                 }
             }
             starts.push(rows.len());
         }
         let nnz = rows.len();
-        let y = if self.uses(&assigns, Arg::Y) { format_ident!("y") } else { format_ident!("_y") };
-        let t = if self.uses(&assigns, Arg::T) { format_ident!("t") } else { format_ident!("_t") };
-        let body = emit(&self.graph, &assigns, &|s| self.leaf(s, true));
+        let check = quote! {
+            ::core::assert_eq!(
+                out.len(),
+                #nnz,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
+            );
+        };
+        let method = self.checked_method(
+            "jacobian_csc",
+            &[Arg::T, Arg::Y],
+            Some(quote! { [#f64_ty] }),
+            &assigns,
+            check,
+        );
         quote! {
             const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[#(#starts),*];
             const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[#(#rows),*];
-
-            #[inline]
-            fn jacobian_csc(&self, #t: #f64_ty, #y: &::dirac::__private::VecY<Self>, values: &mut [#f64_ty]) {
-                ::core::assert_eq!(
-                    values.len(),
-                    #nnz,
-                    "jacobian_csc: `values` must hold one entry per stored Jacobian entry"
-                );
-                #body
-            }
+            #method
         }
     }
 }

@@ -261,30 +261,30 @@ const _: () = {
             &self,
             _t: ::core::primitive::f64,
             y: &::dirac::__private::VecY<Self>,
-            values: &mut [::core::primitive::f64],
+            out: &mut [::core::primitive::f64],
         ) {
             ::core::assert_eq!(
-                values.len(), 14usize,
-                "jacobian_csc: `values` must hold one entry per stored Jacobian entry"
+                out.len(), 14usize,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
             );
             let s0 = 2f64 * y[0];
             let s1 = 2f64 * y[1];
             let s2 = 2f64 * y[6];
             let s3 = -self.m;
-            values[0] = s2;
-            values[1] = 2f64 * y[2];
-            values[2] = s2;
-            values[3] = 2f64 * y[3];
-            values[4] = 1f64;
-            values[5] = s3;
-            values[6] = s0;
-            values[7] = 1f64;
-            values[8] = s3;
-            values[9] = s1;
-            values[10] = 1f64;
-            values[11] = 1f64;
-            values[12] = s0;
-            values[13] = s1;
+            out[0] = s2;
+            out[1] = 2f64 * y[2];
+            out[2] = s2;
+            out[3] = 2f64 * y[3];
+            out[4] = 1f64;
+            out[5] = s3;
+            out[6] = s0;
+            out[7] = 1f64;
+            out[8] = s3;
+            out[9] = s1;
+            out[10] = 1f64;
+            out[11] = 1f64;
+            out[12] = s0;
+            out[13] = s1;
         }
     }
     #[automatically_derived]

@@ -247,23 +247,23 @@ const _: () = {
             &self,
             _t: ::core::primitive::f64,
             _y: &::dirac::__private::VecY<Self>,
-            values: &mut [::core::primitive::f64],
+            out: &mut [::core::primitive::f64],
         ) {
             ::core::assert_eq!(
-                values.len(), 10usize,
-                "jacobian_csc: `values` must hold one entry per stored Jacobian entry"
+                out.len(), 10usize,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
             );
             let s0 = -self.k2;
-            values[0] = -self.k1 + s0;
-            values[1] = self.k2;
-            values[2] = self.k2;
-            values[3] = s0;
-            values[4] = 1f64;
-            values[5] = -self.m1;
-            values[6] = 1f64;
-            values[7] = -self.m2;
-            values[8] = 1f64;
-            values[9] = 1f64;
+            out[0] = -self.k1 + s0;
+            out[1] = self.k2;
+            out[2] = self.k2;
+            out[3] = s0;
+            out[4] = 1f64;
+            out[5] = -self.m1;
+            out[6] = 1f64;
+            out[7] = -self.m2;
+            out[8] = 1f64;
+            out[9] = 1f64;
         }
     }
     #[automatically_derived]
