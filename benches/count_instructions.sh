@@ -11,10 +11,13 @@ count() {
     DIRAC_KERNEL_LOOP="$1" DIRAC_KERNEL_CALLS="$2" valgrind --tool=callgrind \
         --callgrind-out-file=/dev/null "$bin" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
+# Instructions per call of one kernel: $1 = generated or hand-written, $2 = the model.
+per_call() {
+    echo $(( ($(count "$1 $2" $calls) - $(count "$1 $2" 0)) / calls ))
+}
 printf '%-12s %12s %12s %7s\n' model generated hand-written ratio
 for model in paper cartesian2 cartesian4; do
-    per_call() { echo $(( ($(count "$1 $model" $calls) - $(count "$1 $model" 0)) / calls )); }
-    g=$(per_call generated)
-    h=$(per_call hand-written)
+    g=$(per_call generated "$model")
+    h=$(per_call hand-written "$model")
     printf '%-12s %12s %12s %7.2f\n' "$model" "$g" "$h" "$(awk "BEGIN { print $g / $h }")"
 done

@@ -11,9 +11,11 @@
 #[path = "../tests/zoo/mod.rs"]
 mod zoo;
 
-use std::time::Instant;
+#[path = "support/median.rs"]
+mod median;
 
 use dirac::prelude::*;
+use median::median_seconds;
 use nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use zoo::*;
 
@@ -30,18 +32,6 @@ fn chain_exact(t: f64) -> Vector3<f64> {
         u += phi * (phi.dot(&u0) * (eig.eigenvalues[i].sqrt() * t).cos());
     }
     l * u
-}
-
-fn median_seconds(mut run: impl FnMut() -> usize) -> (f64, usize) {
-    let mut times = Vec::new();
-    let mut steps = 0;
-    for _ in 0..21 {
-        let start = Instant::now();
-        steps = run();
-        times.push(start.elapsed().as_secs_f64());
-    }
-    times.sort_by(f64::total_cmp);
-    (times[times.len() / 2], steps)
 }
 
 fn main() {

@@ -18,11 +18,13 @@
 //! (`bdf`, `esdirk34` or `tsit45`); seconds is the median of 21 solves, each creating the
 //! solver (with its initial step and Jacobian) and integrating to the end time.
 
-use std::time::Instant;
+#[path = "../../../support/median.rs"]
+mod median;
 
 use diffsol::{
     NalgebraLU, NalgebraMat, OdeBuilder, OdeEquationsImplicit, OdeSolverMethod, OdeSolverStopReason, Vector,
 };
+use median::median_seconds;
 
 type M = NalgebraMat<f64>;
 
@@ -97,18 +99,6 @@ macro_rules! solve {
             other => panic!("unknown method {other}; expected bdf, esdirk34 or tsit45"),
         }
     };
-}
-
-fn median_seconds(mut run: impl FnMut() -> usize) -> (f64, usize) {
-    let mut times = Vec::new();
-    let mut steps = 0;
-    for _ in 0..21 {
-        let start = Instant::now();
-        steps = run();
-        times.push(start.elapsed().as_secs_f64());
-    }
-    times.sort_by(f64::total_cmp);
-    (times[times.len() / 2], steps)
 }
 
 fn main() {
