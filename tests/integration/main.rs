@@ -4,6 +4,7 @@
 mod zoo;
 
 mod blocks;
+mod counters;
 mod hand_derivations;
 mod hygiene;
 mod initial;

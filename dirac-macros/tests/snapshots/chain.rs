@@ -1,0 +1,941 @@
+const _: () = {
+    const _: fn() = || {
+        fn subsystem<M: ::dirac::__private::LagrangeDirac>()
+        where
+            ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<M>,
+        {}
+        subsystem::<Primitive1>();
+    };
+    const _: fn() = || {
+        fn subsystem<M: ::dirac::__private::LagrangeDirac>()
+        where
+            ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<M>,
+        {}
+        subsystem::<Primitive2>();
+    };
+    const __Q0: usize = 0;
+    const __H0: usize = 0;
+    const __V0: usize = __NH;
+    const __SLOT0: ::dirac::__private::Slot = ::dirac::__private::Slot {
+        q: __Q0,
+        h: __H0,
+        v: __V0,
+    };
+    const __Q1: usize = __Q0 + <Primitive1 as ::dirac::__private::Dimensions>::NQ;
+    const __H1: usize = __H0 + <Primitive1 as ::dirac::__private::Dimensions>::NH;
+    const __V1: usize = __V0
+        + (<Primitive1 as ::dirac::__private::Dimensions>::NC
+            - <Primitive1 as ::dirac::__private::Dimensions>::NH);
+    const __SLOT1: ::dirac::__private::Slot = ::dirac::__private::Slot {
+        q: __Q1,
+        h: __H1,
+        v: __V1,
+    };
+    const __NQ: usize = __Q1 + <Primitive2 as ::dirac::__private::Dimensions>::NQ;
+    const __NH: usize = __H1 + <Primitive2 as ::dirac::__private::Dimensions>::NH;
+    const __OMEGA: usize = __V1
+        + (<Primitive2 as ::dirac::__private::Dimensions>::NC
+            - <Primitive2 as ::dirac::__private::Dimensions>::NH);
+    const __NC: usize = __OMEGA + 1;
+    const __R0: ::dirac::__private::Resolved = {
+        let r = match <Primitive1 as ::dirac::__private::LagrangeDirac>::NAMES
+            .resolve(&["x2"])
+        {
+            ::core::result::Result::Ok(r) => r,
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownField,
+            ) => ::core::panic!("`left.x2`: `left` has no subsystem `x2`"),
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownName,
+            ) => ::core::panic!("`x2` is not a coordinate of `left`"),
+        };
+        if r.velocity {
+            ::core::panic!(
+                "`left.x2` is a velocity; `connect` joins ports, named by their coordinates"
+            )
+        }
+        if !r.port {
+            ::core::panic!(
+                "`x2` is not a port of `left`; declare it with `port(x2)` on its model"
+            )
+        }
+        ::dirac::__private::Resolved {
+            velocity: true,
+            index: r.index + __Q0,
+            port: r.port,
+        }
+    };
+    const __R1: ::dirac::__private::Resolved = {
+        let r = match <Primitive2 as ::dirac::__private::LagrangeDirac>::NAMES
+            .resolve(&["x2bar"])
+        {
+            ::core::result::Result::Ok(r) => r,
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownField,
+            ) => ::core::panic!("`right.x2bar`: `right` has no subsystem `x2bar`"),
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownName,
+            ) => ::core::panic!("`x2bar` is not a coordinate of `right`"),
+        };
+        if r.velocity {
+            ::core::panic!(
+                "`right.x2bar` is a velocity; `connect` joins ports, named by their coordinates"
+            )
+        }
+        if !r.port {
+            ::core::panic!(
+                "`x2bar` is not a port of `right`; declare it with `port(x2bar)` on its model"
+            )
+        }
+        ::dirac::__private::Resolved {
+            velocity: true,
+            index: r.index + __Q1,
+            port: r.port,
+        }
+    };
+    const __K: usize = __NQ + __NC;
+    const __STRUCTURE: ([bool; __K * __K], [&str; __K]) = {
+        let mut p = [false; __K * __K];
+        let mut u = [""; __K];
+        {
+            let s = <Primitive1 as ::dirac::__private::LagrangeDirac>::STRUCTURE;
+            let (tn, tc, th) = (
+                <Primitive1 as ::dirac::__private::Dimensions>::NQ,
+                <Primitive1 as ::dirac::__private::Dimensions>::NC,
+                <Primitive1 as ::dirac::__private::Dimensions>::NH,
+            );
+            let tk = tn + tc;
+            let mut a = 0;
+            while a < tk {
+                let ra = ::dirac::__private::composite_unknown(
+                    a,
+                    tn,
+                    th,
+                    (__Q0, __H0, __V0),
+                    __NQ,
+                );
+                u[ra] = s.unknowns[a];
+                let mut b = 0;
+                while b < tk {
+                    if s.pattern[a * tk + b] {
+                        p[ra * __K
+                            + ::dirac::__private::composite_unknown(
+                                b,
+                                tn,
+                                th,
+                                (__Q0, __H0, __V0),
+                                __NQ,
+                            )] = true;
+                    }
+                    b += 1;
+                }
+                a += 1;
+            }
+        }
+        {
+            let s = <Primitive2 as ::dirac::__private::LagrangeDirac>::STRUCTURE;
+            let (tn, tc, th) = (
+                <Primitive2 as ::dirac::__private::Dimensions>::NQ,
+                <Primitive2 as ::dirac::__private::Dimensions>::NC,
+                <Primitive2 as ::dirac::__private::Dimensions>::NH,
+            );
+            let tk = tn + tc;
+            let mut a = 0;
+            while a < tk {
+                let ra = ::dirac::__private::composite_unknown(
+                    a,
+                    tn,
+                    th,
+                    (__Q1, __H1, __V1),
+                    __NQ,
+                );
+                u[ra] = s.unknowns[a];
+                let mut b = 0;
+                while b < tk {
+                    if s.pattern[a * tk + b] {
+                        p[ra * __K
+                            + ::dirac::__private::composite_unknown(
+                                b,
+                                tn,
+                                th,
+                                (__Q1, __H1, __V1),
+                                __NQ,
+                            )] = true;
+                    }
+                    b += 1;
+                }
+                a += 1;
+            }
+        }
+        u[__NQ + __OMEGA + 0] = "structurally singular interconnection: the multiplier of `connect0` of `Chain` is determined by no equation: it constrains velocities that other constraints already fix";
+        p[(__NQ + __OMEGA + 0) * __K + __R0.index] = true;
+        if __R0.velocity {
+            p[__R0.index * __K + __NQ + __OMEGA + 0] = true;
+        }
+        p[(__NQ + __OMEGA + 0) * __K + __R1.index] = true;
+        if __R1.velocity {
+            p[__R1.index * __K + __NQ + __OMEGA + 0] = true;
+        }
+        (p, u)
+    };
+    const __PATTERN: [bool; __K * __K] = __STRUCTURE.0;
+    const __UNKNOWNS: [&str; __K] = __STRUCTURE.1;
+    const _: () = if let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
+        __K,
+    >(&__PATTERN, __K) {
+        ::core::panic!("{}", __UNKNOWNS[c])
+    };
+    #[automatically_derived]
+    impl ::dirac::__private::Dimensions for Chain {
+        type Nq = ::dirac::__private::Const<{ __NQ }>;
+        type Nc = ::dirac::__private::Const<{ __NC }>;
+        type Nh = ::dirac::__private::Const<{ __NH }>;
+        type Nk = ::dirac::__private::Const<{ __NQ + __NC }>;
+        type Ny = ::dirac::__private::Const<{ 3 * __NQ + __NC }>;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for Chain {
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &[],
+            velocities: &[],
+            constraints: &["connect0"],
+            holonomic: 0,
+            ports: &[],
+            subsystems: &[
+                ::dirac::__private::Subsystem {
+                    field: "left",
+                    names: <Primitive1 as ::dirac::__private::LagrangeDirac>::NAMES,
+                    q_offset: __Q0,
+                    h_offset: __H0,
+                    v_offset: __V0,
+                },
+                ::dirac::__private::Subsystem {
+                    field: "right",
+                    names: <Primitive2 as ::dirac::__private::LagrangeDirac>::NAMES,
+                    q_offset: __Q1,
+                    h_offset: __H1,
+                    v_offset: __V1,
+                },
+            ],
+        };
+        const SEPARABLE: bool = true
+            && <Primitive1 as ::dirac::__private::LagrangeDirac>::SEPARABLE
+            && <Primitive2 as ::dirac::__private::LagrangeDirac>::SEPARABLE;
+        const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
+            pattern: &__PATTERN,
+            unknowns: &__UNKNOWNS,
+        };
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 1usize,
+            jacobian: 0usize,
+            residual_and_jacobian: 1usize + 0usize,
+            residual_blocks: 1usize,
+            jacobian_blocks: 0usize,
+        }
+            .plus(<Primitive1 as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS)
+            .plus(<Primitive2 as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS);
+        fn equations() -> ::dirac::__private::Equations {
+            let mut text = ::std::string::String::from(
+                "Chain: interconnection of left, right",
+            );
+            let mut latex = ::std::string::String::new();
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "left", < Primitive1 as
+                    ::dirac::__private::LagrangeDirac > ::equations().text
+                ),
+            );
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "right", < Primitive2 as
+                    ::dirac::__private::LagrangeDirac > ::equations().text
+                ),
+            );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "left", < Primitive1 as
+                        ::dirac::__private::LagrangeDirac > ::equations().latex
+                    ),
+                );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "right", < Primitive2 as
+                        ::dirac::__private::LagrangeDirac > ::equations().latex
+                    ),
+                );
+            text.push_str("\n[interconnection]\n");
+            text.push_str(
+                "0 = v[left.x2] - v[right.x2bar]    (connect0, multiplier mu_connect0)",
+            );
+            latex.push_str("\\begin{aligned}\n");
+            latex
+                .push_str(
+                    "0 &= v_{\\mathrm{left.x2}} - v_{\\mathrm{right.x2bar}} && \\text{(connect0)}",
+                );
+            latex.push_str("\n\\end{aligned}");
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Owned(text),
+                latex: ::dirac::__private::Cow::Owned(latex),
+            }
+        }
+        fn lagrangian(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let mut total = 0.0;
+            total
+                += self
+                    .left
+                    .lagrangian(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                    );
+            total
+                += self
+                    .right
+                    .lagrangian(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                    );
+            total
+        }
+        fn dl_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
+                self.left
+                    .dl_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
+                self.right
+                    .dl_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn dl_dv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
+                self.left
+                    .dl_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
+                self.right
+                    .dl_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
+                self.left
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
+                self.right
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn l_qq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
+                self.left
+                    .l_qq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
+                self.right
+                    .l_qq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn l_vq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
+                self.left
+                    .l_vq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
+                self.right
+                    .l_vq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn l_vv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
+                self.left
+                    .l_vv(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
+                self.right
+                    .l_vv(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
+                self.left
+                    .force_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
+                self.right
+                    .force_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force_dv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
+                self.left
+                    .force_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
+                self.right
+                    .force_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn constraint_matrix(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatCQ::<Primitive1>::zeros();
+                self.left
+                    .constraint_matrix(
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatCQ::<Primitive2>::zeros();
+                self.right
+                    .constraint_matrix(
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            if __R0.velocity {
+                out[(__OMEGA + 0, __R0.index)] += 1f64;
+            }
+            if __R1.velocity {
+                out[(__OMEGA + 0, __R1.index)] += -1f64;
+            }
+        }
+        fn dav_dq(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatCQ::<Primitive1>::zeros();
+                self.left
+                    .dav_dq(
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatCQ::<Primitive2>::zeros();
+                self.right
+                    .dav_dq(
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            if !__R0.velocity {
+                out[(__OMEGA + 0, __R0.index)] += 1f64;
+            }
+            if !__R1.velocity {
+                out[(__OMEGA + 0, __R1.index)] += -1f64;
+            }
+        }
+        fn datl_dq(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
+                self.left
+                    .datl_dq(
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
+                self.right
+                    .datl_dq(
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn holonomic(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecH::<Primitive1>::zeros();
+                self.left
+                    .holonomic(
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecH::<Primitive2>::zeros();
+                self.right
+                    .holonomic(
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn residual_blocks(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Primitive1>::zeros();
+                self.left
+                    .residual_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Primitive1,
+                    Self,
+                >(&o.momentum_rate, &__SLOT0, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Primitive1,
+                    Self,
+                >(&o.dl_dv, &__SLOT0, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Primitive1,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT0, &mut out.constraint_velocity);
+            }
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Primitive2>::zeros();
+                self.right
+                    .residual_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Primitive2,
+                    Self,
+                >(&o.momentum_rate, &__SLOT1, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Primitive2,
+                    Self,
+                >(&o.dl_dv, &__SLOT1, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Primitive2,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT1, &mut out.constraint_velocity);
+            }
+            let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
+            let r1 = if __R1.velocity { v[__R1.index] } else { q[__R1.index] };
+            out.constraint_velocity[__OMEGA + 0] = r0 - r1;
+            if __R0.velocity {
+                out.momentum_rate[__R0.index] += lambda[__OMEGA + 0];
+            }
+            if __R1.velocity {
+                out.momentum_rate[__R1.index] += -lambda[__OMEGA + 0];
+            }
+        }
+        fn jacobian_blocks(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::JacobianBlocks::<Primitive1>::zeros();
+                self.left
+                    .jacobian_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<
+                    Primitive1,
+                    Self,
+                >(&o.dpdot_dq, &__SLOT0, &mut out.dpdot_dq);
+                ::dirac::__private::scatter_qq::<
+                    Primitive1,
+                    Self,
+                >(&o.dpdot_dv, &__SLOT0, &mut out.dpdot_dv);
+                ::dirac::__private::scatter_qq::<
+                    Primitive1,
+                    Self,
+                >(&o.l_vq, &__SLOT0, &mut out.l_vq);
+                ::dirac::__private::scatter_qq::<
+                    Primitive1,
+                    Self,
+                >(&o.l_vv, &__SLOT0, &mut out.l_vv);
+                ::dirac::__private::scatter_cq::<
+                    Primitive1,
+                    Self,
+                >(&o.a, &__SLOT0, &mut out.a);
+                ::dirac::__private::scatter_cq::<
+                    Primitive1,
+                    Self,
+                >(&o.dav_dq, &__SLOT0, &mut out.dav_dq);
+            }
+            {
+                let mut o = ::dirac::__private::JacobianBlocks::<Primitive2>::zeros();
+                self.right
+                    .jacobian_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<
+                    Primitive2,
+                    Self,
+                >(&o.dpdot_dq, &__SLOT1, &mut out.dpdot_dq);
+                ::dirac::__private::scatter_qq::<
+                    Primitive2,
+                    Self,
+                >(&o.dpdot_dv, &__SLOT1, &mut out.dpdot_dv);
+                ::dirac::__private::scatter_qq::<
+                    Primitive2,
+                    Self,
+                >(&o.l_vq, &__SLOT1, &mut out.l_vq);
+                ::dirac::__private::scatter_qq::<
+                    Primitive2,
+                    Self,
+                >(&o.l_vv, &__SLOT1, &mut out.l_vv);
+                ::dirac::__private::scatter_cq::<
+                    Primitive2,
+                    Self,
+                >(&o.a, &__SLOT1, &mut out.a);
+                ::dirac::__private::scatter_cq::<
+                    Primitive2,
+                    Self,
+                >(&o.dav_dq, &__SLOT1, &mut out.dav_dq);
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out.a[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out.dav_dq[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            if __R0.velocity {
+                out.a[(__OMEGA + 0, __R0.index)] += 1f64;
+            }
+            if __R1.velocity {
+                out.a[(__OMEGA + 0, __R1.index)] += -1f64;
+            }
+            if !__R0.velocity {
+                out.dav_dq[(__OMEGA + 0, __R0.index)] += 1f64;
+            }
+            if !__R1.velocity {
+                out.dav_dq[(__OMEGA + 0, __R1.index)] += -1f64;
+            }
+        }
+        fn interconnection_forces(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
+                self.left
+                    .interconnection_forces(
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
+                self.right
+                    .interconnection_forces(
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+            if __R0.velocity {
+                out[__R0.index] += lambda[__OMEGA + 0];
+            }
+            if __R1.velocity {
+                out[__R1.index] += -lambda[__OMEGA + 0];
+            }
+        }
+    }
+    #[automatically_derived]
+    impl Chain {
+        ///A coordinate of the subsystem `left` as a coordinate of this interconnection.
+        pub const fn left(
+            c: ::dirac::__private::Coordinate<Primitive1>,
+        ) -> ::dirac::__private::Coordinate<Self> {
+            ::dirac::__private::Coordinate::new(c.index() + __Q0)
+        }
+        ///A constraint of the subsystem `left` as a constraint of this interconnection.
+        pub const fn left_constraint(
+            k: ::dirac::__private::Constraint<Primitive1>,
+        ) -> ::dirac::__private::Constraint<Self> {
+            let nh = <Primitive1 as ::dirac::__private::Dimensions>::NH;
+            ::dirac::__private::Constraint::new(
+                if k.index() < nh { __H0 + k.index() } else { __V0 + k.index() - nh },
+            )
+        }
+        ///A coordinate of the subsystem `right` as a coordinate of this interconnection.
+        pub const fn right(
+            c: ::dirac::__private::Coordinate<Primitive2>,
+        ) -> ::dirac::__private::Coordinate<Self> {
+            ::dirac::__private::Coordinate::new(c.index() + __Q1)
+        }
+        ///A constraint of the subsystem `right` as a constraint of this interconnection.
+        pub const fn right_constraint(
+            k: ::dirac::__private::Constraint<Primitive2>,
+        ) -> ::dirac::__private::Constraint<Self> {
+            let nh = <Primitive2 as ::dirac::__private::Dimensions>::NH;
+            ::dirac::__private::Constraint::new(
+                if k.index() < nh { __H1 + k.index() } else { __V1 + k.index() - nh },
+            )
+        }
+        ///The port `left.x2`: its effort is the interconnection force there.
+        pub const LEFT_X2: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            __R0.index,
+        );
+        ///The port `right.x2bar`: its effort is the interconnection force there.
+        pub const RIGHT_X2BAR: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            __R1.index,
+        );
+        ///The interconnection constraint `connect0`: names its row and multiplier μ.
+        pub const CONNECT0: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
+            __OMEGA + 0,
+        );
+    }
+};

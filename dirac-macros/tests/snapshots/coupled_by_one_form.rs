@@ -1,0 +1,1107 @@
+const _: () = {
+    const _: fn() = || {
+        fn subsystem<M: ::dirac::__private::LagrangeDirac>()
+        where
+            ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<M>,
+        {}
+        subsystem::<Wheel>();
+    };
+    const _: fn() = || {
+        fn subsystem<M: ::dirac::__private::LagrangeDirac>()
+        where
+            ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<M>,
+        {}
+        subsystem::<Cart>();
+    };
+    const __Q0: usize = 0;
+    const __H0: usize = 0;
+    const __V0: usize = __NH;
+    const __SLOT0: ::dirac::__private::Slot = ::dirac::__private::Slot {
+        q: __Q0,
+        h: __H0,
+        v: __V0,
+    };
+    const __Q1: usize = __Q0 + <Wheel as ::dirac::__private::Dimensions>::NQ;
+    const __H1: usize = __H0 + <Wheel as ::dirac::__private::Dimensions>::NH;
+    const __V1: usize = __V0
+        + (<Wheel as ::dirac::__private::Dimensions>::NC
+            - <Wheel as ::dirac::__private::Dimensions>::NH);
+    const __SLOT1: ::dirac::__private::Slot = ::dirac::__private::Slot {
+        q: __Q1,
+        h: __H1,
+        v: __V1,
+    };
+    const __NQ: usize = __Q1 + <Cart as ::dirac::__private::Dimensions>::NQ;
+    const __NH: usize = __H1 + <Cart as ::dirac::__private::Dimensions>::NH;
+    const __OMEGA: usize = __V1
+        + (<Cart as ::dirac::__private::Dimensions>::NC
+            - <Cart as ::dirac::__private::Dimensions>::NH);
+    const __NC: usize = __OMEGA + 1;
+    const __R0: ::dirac::__private::Resolved = {
+        let r = match <Wheel as ::dirac::__private::LagrangeDirac>::NAMES
+            .resolve(&["theta"])
+        {
+            ::core::result::Result::Ok(r) => r,
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownField,
+            ) => ::core::panic!("`wheel.theta`: `wheel` has no subsystem `theta`"),
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownName,
+            ) => ::core::panic!("`theta` is not a coordinate or velocity of `wheel`"),
+        };
+        ::dirac::__private::Resolved {
+            velocity: r.velocity,
+            index: r.index + __Q0,
+            port: r.port,
+        }
+    };
+    const __R1: ::dirac::__private::Resolved = {
+        let r = match <Wheel as ::dirac::__private::LagrangeDirac>::NAMES
+            .resolve(&["v_theta"])
+        {
+            ::core::result::Result::Ok(r) => r,
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownField,
+            ) => ::core::panic!("`wheel.v_theta`: `wheel` has no subsystem `v_theta`"),
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownName,
+            ) => ::core::panic!("`v_theta` is not a coordinate or velocity of `wheel`"),
+        };
+        ::dirac::__private::Resolved {
+            velocity: r.velocity,
+            index: r.index + __Q0,
+            port: r.port,
+        }
+    };
+    const __R2: ::dirac::__private::Resolved = {
+        let r = match <Cart as ::dirac::__private::LagrangeDirac>::NAMES.resolve(&["x"])
+        {
+            ::core::result::Result::Ok(r) => r,
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownField,
+            ) => ::core::panic!("`cart.x`: `cart` has no subsystem `x`"),
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownName,
+            ) => ::core::panic!("`x` is not a coordinate or velocity of `cart`"),
+        };
+        ::dirac::__private::Resolved {
+            velocity: r.velocity,
+            index: r.index + __Q1,
+            port: r.port,
+        }
+    };
+    const __R3: ::dirac::__private::Resolved = {
+        let r = match <Cart as ::dirac::__private::LagrangeDirac>::NAMES
+            .resolve(&["v_x"])
+        {
+            ::core::result::Result::Ok(r) => r,
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownField,
+            ) => ::core::panic!("`cart.v_x`: `cart` has no subsystem `v_x`"),
+            ::core::result::Result::Err(
+                ::dirac::__private::ResolveError::UnknownName,
+            ) => ::core::panic!("`v_x` is not a coordinate or velocity of `cart`"),
+        };
+        ::dirac::__private::Resolved {
+            velocity: r.velocity,
+            index: r.index + __Q1,
+            port: r.port,
+        }
+    };
+    const _: () = {
+        const CODES: [u8; 4] = [1u8, 2u8, 0u8, 3u8];
+        match CODES[0 | ((__R0.velocity as usize) << 0usize)
+            | ((__R1.velocity as usize) << 1usize)]
+        {
+            1 => {
+                ::core::panic!(
+                    "interconnection constraint `tie` must be linear in the velocities, but this term has no velocity in it"
+                )
+            }
+            2 => {
+                ::core::panic!(
+                    "interconnection constraint `tie` must be linear in the velocities, but this term has a part without a velocity"
+                )
+            }
+            3 => {
+                ::core::panic!(
+                    "interconnection constraint `tie` must be linear in the velocities, but this term is not linear in the velocities"
+                )
+            }
+            _ => {}
+        }
+    };
+    const _: () = {
+        const CODES: [u8; 4] = [1u8, 2u8, 0u8, 3u8];
+        match CODES[0 | ((__R2.velocity as usize) << 0usize)
+            | ((__R3.velocity as usize) << 1usize)]
+        {
+            1 => {
+                ::core::panic!(
+                    "interconnection constraint `tie` must be linear in the velocities, but this term has no velocity in it"
+                )
+            }
+            2 => {
+                ::core::panic!(
+                    "interconnection constraint `tie` must be linear in the velocities, but this term has a part without a velocity"
+                )
+            }
+            3 => {
+                ::core::panic!(
+                    "interconnection constraint `tie` must be linear in the velocities, but this term is not linear in the velocities"
+                )
+            }
+            _ => {}
+        }
+    };
+    const __K: usize = __NQ + __NC;
+    const __STRUCTURE: ([bool; __K * __K], [&str; __K]) = {
+        let mut p = [false; __K * __K];
+        let mut u = [""; __K];
+        {
+            let s = <Wheel as ::dirac::__private::LagrangeDirac>::STRUCTURE;
+            let (tn, tc, th) = (
+                <Wheel as ::dirac::__private::Dimensions>::NQ,
+                <Wheel as ::dirac::__private::Dimensions>::NC,
+                <Wheel as ::dirac::__private::Dimensions>::NH,
+            );
+            let tk = tn + tc;
+            let mut a = 0;
+            while a < tk {
+                let ra = ::dirac::__private::composite_unknown(
+                    a,
+                    tn,
+                    th,
+                    (__Q0, __H0, __V0),
+                    __NQ,
+                );
+                u[ra] = s.unknowns[a];
+                let mut b = 0;
+                while b < tk {
+                    if s.pattern[a * tk + b] {
+                        p[ra * __K
+                            + ::dirac::__private::composite_unknown(
+                                b,
+                                tn,
+                                th,
+                                (__Q0, __H0, __V0),
+                                __NQ,
+                            )] = true;
+                    }
+                    b += 1;
+                }
+                a += 1;
+            }
+        }
+        {
+            let s = <Cart as ::dirac::__private::LagrangeDirac>::STRUCTURE;
+            let (tn, tc, th) = (
+                <Cart as ::dirac::__private::Dimensions>::NQ,
+                <Cart as ::dirac::__private::Dimensions>::NC,
+                <Cart as ::dirac::__private::Dimensions>::NH,
+            );
+            let tk = tn + tc;
+            let mut a = 0;
+            while a < tk {
+                let ra = ::dirac::__private::composite_unknown(
+                    a,
+                    tn,
+                    th,
+                    (__Q1, __H1, __V1),
+                    __NQ,
+                );
+                u[ra] = s.unknowns[a];
+                let mut b = 0;
+                while b < tk {
+                    if s.pattern[a * tk + b] {
+                        p[ra * __K
+                            + ::dirac::__private::composite_unknown(
+                                b,
+                                tn,
+                                th,
+                                (__Q1, __H1, __V1),
+                                __NQ,
+                            )] = true;
+                    }
+                    b += 1;
+                }
+                a += 1;
+            }
+        }
+        u[__NQ + __OMEGA + 0] = "structurally singular interconnection: the multiplier of `tie` of `CoupledByOneForm` is determined by no equation: it constrains velocities that other constraints already fix";
+        p[(__NQ + __OMEGA + 0) * __K + __R0.index] = true;
+        if __R0.velocity {
+            p[__R0.index * __K + __NQ + __OMEGA + 0] = true;
+        }
+        if __R0.velocity && !__R0.velocity {
+            p[__R0.index * __K + __R0.index] = true;
+        }
+        if __R0.velocity && !__R1.velocity {
+            p[__R0.index * __K + __R1.index] = true;
+        }
+        p[(__NQ + __OMEGA + 0) * __K + __R1.index] = true;
+        if __R1.velocity {
+            p[__R1.index * __K + __NQ + __OMEGA + 0] = true;
+        }
+        if __R1.velocity && !__R0.velocity {
+            p[__R1.index * __K + __R0.index] = true;
+        }
+        p[(__NQ + __OMEGA + 0) * __K + __R2.index] = true;
+        if __R2.velocity {
+            p[__R2.index * __K + __NQ + __OMEGA + 0] = true;
+        }
+        if __R2.velocity && !__R2.velocity {
+            p[__R2.index * __K + __R2.index] = true;
+        }
+        if __R2.velocity && !__R3.velocity {
+            p[__R2.index * __K + __R3.index] = true;
+        }
+        p[(__NQ + __OMEGA + 0) * __K + __R3.index] = true;
+        if __R3.velocity {
+            p[__R3.index * __K + __NQ + __OMEGA + 0] = true;
+        }
+        if __R3.velocity && !__R2.velocity {
+            p[__R3.index * __K + __R2.index] = true;
+        }
+        (p, u)
+    };
+    const __PATTERN: [bool; __K * __K] = __STRUCTURE.0;
+    const __UNKNOWNS: [&str; __K] = __STRUCTURE.1;
+    const _: () = if let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
+        __K,
+    >(&__PATTERN, __K) {
+        ::core::panic!("{}", __UNKNOWNS[c])
+    };
+    #[automatically_derived]
+    impl ::dirac::__private::Dimensions for CoupledByOneForm {
+        type Nq = ::dirac::__private::Const<{ __NQ }>;
+        type Nc = ::dirac::__private::Const<{ __NC }>;
+        type Nh = ::dirac::__private::Const<{ __NH }>;
+        type Nk = ::dirac::__private::Const<{ __NQ + __NC }>;
+        type Ny = ::dirac::__private::Const<{ 3 * __NQ + __NC }>;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for CoupledByOneForm {
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &[],
+            velocities: &[],
+            constraints: &["tie"],
+            holonomic: 0,
+            ports: &[],
+            subsystems: &[
+                ::dirac::__private::Subsystem {
+                    field: "wheel",
+                    names: <Wheel as ::dirac::__private::LagrangeDirac>::NAMES,
+                    q_offset: __Q0,
+                    h_offset: __H0,
+                    v_offset: __V0,
+                },
+                ::dirac::__private::Subsystem {
+                    field: "cart",
+                    names: <Cart as ::dirac::__private::LagrangeDirac>::NAMES,
+                    q_offset: __Q1,
+                    h_offset: __H1,
+                    v_offset: __V1,
+                },
+            ],
+        };
+        const SEPARABLE: bool = true
+            && <Wheel as ::dirac::__private::LagrangeDirac>::SEPARABLE
+            && <Cart as ::dirac::__private::LagrangeDirac>::SEPARABLE;
+        const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
+            pattern: &__PATTERN,
+            unknowns: &__UNKNOWNS,
+        };
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 19usize,
+            jacobian: 21usize,
+            residual_and_jacobian: 19usize + 21usize,
+            residual_blocks: 19usize,
+            jacobian_blocks: 21usize,
+        }
+            .plus(<Wheel as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS)
+            .plus(<Cart as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS);
+        fn equations() -> ::dirac::__private::Equations {
+            let mut text = ::std::string::String::from(
+                "CoupledByOneForm: interconnection of wheel, cart",
+            );
+            let mut latex = ::std::string::String::new();
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "wheel", < Wheel as ::dirac::__private::LagrangeDirac >
+                    ::equations().text
+                ),
+            );
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "cart", < Cart as ::dirac::__private::LagrangeDirac >
+                    ::equations().text
+                ),
+            );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "wheel", < Wheel as
+                        ::dirac::__private::LagrangeDirac > ::equations().latex
+                    ),
+                );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "cart", < Cart as
+                        ::dirac::__private::LagrangeDirac > ::equations().latex
+                    ),
+                );
+            text.push_str("\n[interconnection]\n");
+            text.push_str(
+                "0 = (0.1*sin(wheel.theta) + 1)*wheel.v_theta - c*cos(cart.x)*cart.v_x    (tie, multiplier mu_tie)",
+            );
+            latex.push_str("\\begin{aligned}\n");
+            latex
+                .push_str(
+                    "0 &= \\left(0.1 \\sin\\left(\\mathrm{wheel.theta}\\right) + 1\\right) \\mathrm{wheel.v\\_theta} - c \\cos\\left(\\mathrm{cart.x}\\right) \\mathrm{cart.v\\_x} && \\text{(tie)}",
+                );
+            latex.push_str("\n\\end{aligned}");
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Owned(text),
+                latex: ::dirac::__private::Cow::Owned(latex),
+            }
+        }
+        fn lagrangian(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let mut total = 0.0;
+            total
+                += self
+                    .wheel
+                    .lagrangian(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                    );
+            total
+                += self
+                    .cart
+                    .lagrangian(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                    );
+            total
+        }
+        fn dl_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
+                self.wheel
+                    .dl_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
+                self.cart
+                    .dl_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn dl_dv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
+                self.wheel
+                    .dl_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
+                self.cart
+                    .dl_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
+                self.wheel
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
+                self.cart
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn l_qq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
+                self.wheel
+                    .l_qq(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
+                self.cart
+                    .l_qq(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn l_vq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
+                self.wheel
+                    .l_vq(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
+                self.cart
+                    .l_vq(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn l_vv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
+                self.wheel
+                    .l_vv(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
+                self.cart
+                    .l_vv(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
+                self.wheel
+                    .force_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
+                self.cart
+                    .force_dq(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force_dv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
+                self.wheel
+                    .force_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
+                self.cart
+                    .force_dv(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn constraint_matrix(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatCQ::<Wheel>::zeros();
+                self.wheel
+                    .constraint_matrix(
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatCQ::<Cart>::zeros();
+                self.cart
+                    .constraint_matrix(
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
+            let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
+            let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
+            let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
+            if __R0.velocity {
+                out[(__OMEGA + 0, __R0.index)] += 0.1f64 * r1 * r0.cos();
+            }
+            if __R1.velocity {
+                out[(__OMEGA + 0, __R1.index)] += 0.1f64 * r0.sin() + 1f64;
+            }
+            if __R2.velocity {
+                out[(__OMEGA + 0, __R2.index)] += self.c * r3 * r2.sin();
+            }
+            if __R3.velocity {
+                out[(__OMEGA + 0, __R3.index)] += -self.c * r2.cos();
+            }
+        }
+        fn dav_dq(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatCQ::<Wheel>::zeros();
+                self.wheel
+                    .dav_dq(
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatCQ::<Cart>::zeros();
+                self.cart
+                    .dav_dq(
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_cq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
+            let r1 = if __R1.velocity { v[__R1.index] } else { q[__R1.index] };
+            let r2 = if __R2.velocity { v[__R2.index] } else { q[__R2.index] };
+            let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
+            if !__R0.velocity {
+                out[(__OMEGA + 0, __R0.index)] += 0.1f64 * r1 * r0.cos();
+            }
+            if !__R1.velocity {
+                out[(__OMEGA + 0, __R1.index)] += 0.1f64 * r0.sin() + 1f64;
+            }
+            if !__R2.velocity {
+                out[(__OMEGA + 0, __R2.index)] += self.c * r3 * r2.sin();
+            }
+            if !__R3.velocity {
+                out[(__OMEGA + 0, __R3.index)] += -self.c * r2.cos();
+            }
+        }
+        fn datl_dq(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
+                self.wheel
+                    .datl_dq(
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
+                self.cart
+                    .datl_dq(
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+            let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
+            let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
+            let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
+            let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
+            let s0 = 0.1f64 * lambda[__OMEGA + 0] * r0.cos();
+            let s1 = self.c * lambda[__OMEGA + 0] * r2.sin();
+            if __R0.velocity && !__R0.velocity {
+                out[(__R0.index, __R0.index)]
+                    += -0.1f64 * r0.sin() * r1 * lambda[__OMEGA + 0];
+            }
+            if __R0.velocity && !__R1.velocity {
+                out[(__R0.index, __R1.index)] += s0;
+            }
+            if __R1.velocity && !__R0.velocity {
+                out[(__R1.index, __R0.index)] += s0;
+            }
+            if __R2.velocity && !__R2.velocity {
+                out[(__R2.index, __R2.index)]
+                    += self.c * r2.cos() * r3 * lambda[__OMEGA + 0];
+            }
+            if __R2.velocity && !__R3.velocity {
+                out[(__R2.index, __R3.index)] += s1;
+            }
+            if __R3.velocity && !__R2.velocity {
+                out[(__R3.index, __R2.index)] += s1;
+            }
+        }
+        fn holonomic(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecH::<Wheel>::zeros();
+                self.wheel
+                    .holonomic(
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecH::<Cart>::zeros();
+                self.cart
+                    .holonomic(
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn residual_blocks(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Wheel>::zeros();
+                self.wheel
+                    .residual_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Wheel,
+                    Self,
+                >(&o.momentum_rate, &__SLOT0, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Wheel,
+                    Self,
+                >(&o.dl_dv, &__SLOT0, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Wheel,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT0, &mut out.constraint_velocity);
+            }
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Cart>::zeros();
+                self.cart
+                    .residual_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Cart,
+                    Self,
+                >(&o.momentum_rate, &__SLOT1, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Cart,
+                    Self,
+                >(&o.dl_dv, &__SLOT1, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Cart,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT1, &mut out.constraint_velocity);
+            }
+            let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
+            let r1 = if __R1.velocity { v[__R1.index] } else { q[__R1.index] };
+            let r2 = if __R2.velocity { v[__R2.index] } else { q[__R2.index] };
+            let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
+            let s0 = 0.1f64 * r0.sin() + 1f64;
+            let s1 = r2.cos();
+            out.constraint_velocity[__OMEGA + 0] = s0 * r1 - self.c * s1 * r3;
+            if __R0.velocity {
+                out.momentum_rate[__R0.index]
+                    += 0.1f64 * r1 * lambda[__OMEGA + 0] * r0.cos();
+            }
+            if __R1.velocity {
+                out.momentum_rate[__R1.index] += s0 * lambda[__OMEGA + 0];
+            }
+            if __R2.velocity {
+                out.momentum_rate[__R2.index]
+                    += self.c * r3 * lambda[__OMEGA + 0] * r2.sin();
+            }
+            if __R3.velocity {
+                out.momentum_rate[__R3.index] += -self.c * s1 * lambda[__OMEGA + 0];
+            }
+        }
+        fn jacobian_blocks(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::JacobianBlocks::<Wheel>::zeros();
+                self.wheel
+                    .jacobian_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<
+                    Wheel,
+                    Self,
+                >(&o.dpdot_dq, &__SLOT0, &mut out.dpdot_dq);
+                ::dirac::__private::scatter_qq::<
+                    Wheel,
+                    Self,
+                >(&o.dpdot_dv, &__SLOT0, &mut out.dpdot_dv);
+                ::dirac::__private::scatter_qq::<
+                    Wheel,
+                    Self,
+                >(&o.l_vq, &__SLOT0, &mut out.l_vq);
+                ::dirac::__private::scatter_qq::<
+                    Wheel,
+                    Self,
+                >(&o.l_vv, &__SLOT0, &mut out.l_vv);
+                ::dirac::__private::scatter_cq::<
+                    Wheel,
+                    Self,
+                >(&o.a, &__SLOT0, &mut out.a);
+                ::dirac::__private::scatter_cq::<
+                    Wheel,
+                    Self,
+                >(&o.dav_dq, &__SLOT0, &mut out.dav_dq);
+            }
+            {
+                let mut o = ::dirac::__private::JacobianBlocks::<Cart>::zeros();
+                self.cart
+                    .jacobian_blocks(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_qq::<
+                    Cart,
+                    Self,
+                >(&o.dpdot_dq, &__SLOT1, &mut out.dpdot_dq);
+                ::dirac::__private::scatter_qq::<
+                    Cart,
+                    Self,
+                >(&o.dpdot_dv, &__SLOT1, &mut out.dpdot_dv);
+                ::dirac::__private::scatter_qq::<
+                    Cart,
+                    Self,
+                >(&o.l_vq, &__SLOT1, &mut out.l_vq);
+                ::dirac::__private::scatter_qq::<
+                    Cart,
+                    Self,
+                >(&o.l_vv, &__SLOT1, &mut out.l_vv);
+                ::dirac::__private::scatter_cq::<Cart, Self>(&o.a, &__SLOT1, &mut out.a);
+                ::dirac::__private::scatter_cq::<
+                    Cart,
+                    Self,
+                >(&o.dav_dq, &__SLOT1, &mut out.dav_dq);
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out.a[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            for __j in 0..1 {
+                for __i in 0..__NQ {
+                    out.dav_dq[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+            let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
+            let r1 = if __R1.velocity { v[__R1.index] } else { q[__R1.index] };
+            let r2 = if __R2.velocity { v[__R2.index] } else { q[__R2.index] };
+            let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
+            let s0 = r0.sin();
+            let s1 = 0.1f64 * s0 + 1f64;
+            let s2 = r2.cos();
+            let s3 = r0.cos();
+            let s4 = 0.1f64 * r1 * s3;
+            let s5 = -self.c * s2;
+            let s6 = r2.sin();
+            let s7 = self.c * r3 * s6;
+            let s8 = 0.1f64 * lambda[__OMEGA + 0] * s3;
+            let s9 = self.c * lambda[__OMEGA + 0] * s6;
+            if __R0.velocity {
+                out.a[(__OMEGA + 0, __R0.index)] += s4;
+            }
+            if __R1.velocity {
+                out.a[(__OMEGA + 0, __R1.index)] += s1;
+            }
+            if __R2.velocity {
+                out.a[(__OMEGA + 0, __R2.index)] += s7;
+            }
+            if __R3.velocity {
+                out.a[(__OMEGA + 0, __R3.index)] += s5;
+            }
+            if !__R0.velocity {
+                out.dav_dq[(__OMEGA + 0, __R0.index)] += s4;
+            }
+            if !__R1.velocity {
+                out.dav_dq[(__OMEGA + 0, __R1.index)] += s1;
+            }
+            if !__R2.velocity {
+                out.dav_dq[(__OMEGA + 0, __R2.index)] += s7;
+            }
+            if !__R3.velocity {
+                out.dav_dq[(__OMEGA + 0, __R3.index)] += s5;
+            }
+            if __R0.velocity && !__R0.velocity {
+                out.dpdot_dq[(__R0.index, __R0.index)]
+                    += -0.1f64 * s0 * r1 * lambda[__OMEGA + 0];
+            }
+            if __R0.velocity && !__R1.velocity {
+                out.dpdot_dq[(__R0.index, __R1.index)] += s8;
+            }
+            if __R1.velocity && !__R0.velocity {
+                out.dpdot_dq[(__R1.index, __R0.index)] += s8;
+            }
+            if __R2.velocity && !__R2.velocity {
+                out.dpdot_dq[(__R2.index, __R2.index)]
+                    += self.c * s2 * r3 * lambda[__OMEGA + 0];
+            }
+            if __R2.velocity && !__R3.velocity {
+                out.dpdot_dq[(__R2.index, __R3.index)] += s9;
+            }
+            if __R3.velocity && !__R2.velocity {
+                out.dpdot_dq[(__R3.index, __R2.index)] += s9;
+            }
+        }
+        fn interconnection_forces(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
+                self.wheel
+                    .interconnection_forces(
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
+                self.cart
+                    .interconnection_forces(
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
+            }
+            let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
+            let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
+            let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
+            let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
+            if __R0.velocity {
+                out[__R0.index] += 0.1f64 * r1 * lambda[__OMEGA + 0] * r0.cos();
+            }
+            if __R1.velocity {
+                out[__R1.index] += (0.1f64 * r0.sin() + 1f64) * lambda[__OMEGA + 0];
+            }
+            if __R2.velocity {
+                out[__R2.index] += self.c * r3 * lambda[__OMEGA + 0] * r2.sin();
+            }
+            if __R3.velocity {
+                out[__R3.index] += -self.c * r2.cos() * lambda[__OMEGA + 0];
+            }
+        }
+    }
+    #[automatically_derived]
+    impl CoupledByOneForm {
+        ///A coordinate of the subsystem `wheel` as a coordinate of this interconnection.
+        pub const fn wheel(
+            c: ::dirac::__private::Coordinate<Wheel>,
+        ) -> ::dirac::__private::Coordinate<Self> {
+            ::dirac::__private::Coordinate::new(c.index() + __Q0)
+        }
+        ///A constraint of the subsystem `wheel` as a constraint of this interconnection.
+        pub const fn wheel_constraint(
+            k: ::dirac::__private::Constraint<Wheel>,
+        ) -> ::dirac::__private::Constraint<Self> {
+            let nh = <Wheel as ::dirac::__private::Dimensions>::NH;
+            ::dirac::__private::Constraint::new(
+                if k.index() < nh { __H0 + k.index() } else { __V0 + k.index() - nh },
+            )
+        }
+        ///A coordinate of the subsystem `cart` as a coordinate of this interconnection.
+        pub const fn cart(
+            c: ::dirac::__private::Coordinate<Cart>,
+        ) -> ::dirac::__private::Coordinate<Self> {
+            ::dirac::__private::Coordinate::new(c.index() + __Q1)
+        }
+        ///A constraint of the subsystem `cart` as a constraint of this interconnection.
+        pub const fn cart_constraint(
+            k: ::dirac::__private::Constraint<Cart>,
+        ) -> ::dirac::__private::Constraint<Self> {
+            let nh = <Cart as ::dirac::__private::Dimensions>::NH;
+            ::dirac::__private::Constraint::new(
+                if k.index() < nh { __H1 + k.index() } else { __V1 + k.index() - nh },
+            )
+        }
+        ///The interconnection constraint `tie`: names its row and multiplier μ.
+        pub const TIE: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
+            __OMEGA + 0,
+        );
+    }
+};

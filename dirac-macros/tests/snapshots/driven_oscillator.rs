@@ -1,0 +1,243 @@
+const _: () = {
+    #[automatically_derived]
+    impl ::dirac::__private::Dimensions for DrivenOscillator {
+        type Nq = ::dirac::__private::Const<1>;
+        type Nc = ::dirac::__private::Const<0>;
+        type Nh = ::dirac::__private::Const<0>;
+        type Nk = ::dirac::__private::Const<1>;
+        type Ny = ::dirac::__private::Const<3>;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for DrivenOscillator {
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &["x"],
+            velocities: &["v"],
+            constraints: &[],
+            holonomic: 0,
+            ports: &[],
+            subsystems: &[],
+        };
+        const SEPARABLE: bool = false;
+        const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
+            pattern: &[true],
+            unknowns: &[
+                "structurally singular model: the velocity `v` of `DrivenOscillator` is determined by no equation: coordinate `x` has no inertia, and no potential or constraint fixes it",
+            ],
+        };
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 9usize,
+            jacobian: 0usize,
+            residual_and_jacobian: 9usize,
+            residual_blocks: 8usize,
+            jacobian_blocks: 0usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "DrivenOscillator: L = 0.5*m*v^2 - 0.5*k*x^2\ndx/dt = v\ndp_x/dt = -c*v + a*sin(w*t) - k*x\np_x = m*v",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m v^{2} - 0.5 k x^{2} \\\\\n\\dot{x} &= v \\\\\n\\dot{p}_{x} &= -c v + a \\sin\\left(w t\\right) - k x \\\\\np_{x} &= m v\n\\end{aligned}",
+                ),
+            }
+        }
+        #[inline]
+        fn lagrangian(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0.5f64 * self.m * v[0].powi(2) - 0.5f64 * self.k * q[0].powi(2);
+            value
+        }
+        #[inline]
+        fn dl_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = -self.k * q[0];
+        }
+        #[inline]
+        fn dl_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = self.m * v[0];
+        }
+        #[inline]
+        fn l_qq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(0, 0)] = -self.k;
+        }
+        #[inline]
+        fn l_vq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn l_vv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(0, 0)] = self.m;
+        }
+        #[inline]
+        fn force(
+            &self,
+            t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = -self.c * v[0] + self.a * (self.w * t).sin();
+        }
+        #[inline]
+        fn force_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn force_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(0, 0)] = -self.c;
+        }
+        #[inline]
+        fn constraint_matrix(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {}
+        #[inline]
+        fn dav_dq(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {}
+        #[inline]
+        fn datl_dq(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn holonomic(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecH<Self>,
+        ) {}
+        #[inline]
+        fn residual_blocks(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            out.momentum_rate[0usize] = -self.c * v[0] + self.a * (self.w * t).sin()
+                - self.k * q[0];
+            out.dl_dv[0usize] = self.m * v[0];
+        }
+        #[inline]
+        fn jacobian_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+        ) {
+            out.dpdot_dq[(0, 0)] = -self.k;
+            out.dpdot_dv[(0, 0)] = -self.c;
+            out.l_vv[(0, 0)] = self.m;
+        }
+        #[inline]
+        fn residual(
+            &self,
+            t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::VecY<Self>,
+        ) {
+            out[0usize] = y[1];
+            out[1usize] = y[2] - self.m * y[1];
+            out[2usize] = -self.c * y[1] + self.a * (self.w * t).sin() - self.k * y[0];
+        }
+        #[inline]
+        fn jacobian(
+            &self,
+            _t: ::core::primitive::f64,
+            _y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::MatYY<Self>,
+        ) {
+            out[(0, 1)] = 1f64;
+            out[(1, 1)] = -self.m;
+            out[(1, 2)] = 1f64;
+            out[(2, 0)] = -self.k;
+            out[(2, 1)] = -self.c;
+        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::SparseJacobian for DrivenOscillator {
+        const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[
+            0usize, 1usize, 4usize, 5usize,
+        ];
+        const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[
+            2usize, 0usize, 1usize, 2usize, 1usize,
+        ];
+        #[inline]
+        fn jacobian_csc(
+            &self,
+            _t: ::core::primitive::f64,
+            _y: &::dirac::__private::VecY<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 5usize,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
+            );
+            out[0] = -self.k;
+            out[1] = 1f64;
+            out[2] = -self.m;
+            out[3] = -self.c;
+            out[4] = 1f64;
+        }
+    }
+    #[automatically_derived]
+    impl DrivenOscillator {
+        ///The coordinate `x`: names its position, velocity and momentum in a state.
+        pub const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            0,
+        );
+    }
+};

@@ -1,0 +1,376 @@
+const _: () = {
+    #[automatically_derived]
+    impl ::dirac::__private::Dimensions for RollingDisk {
+        type Nq = ::dirac::__private::Const<4>;
+        type Nc = ::dirac::__private::Const<2>;
+        type Nh = ::dirac::__private::Const<0>;
+        type Nk = ::dirac::__private::Const<6>;
+        type Ny = ::dirac::__private::Const<14>;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for RollingDisk {
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &["x", "y", "theta", "phi"],
+            velocities: &["v_x", "v_y", "v_theta", "v_phi"],
+            constraints: &["roll_x", "roll_y"],
+            holonomic: 0,
+            ports: &[],
+            subsystems: &[],
+        };
+        const SEPARABLE: bool = true;
+        const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
+            pattern: &[
+                true, false, false, false, true, false, false, true, false, false, false,
+                true, false, false, true, true, true, true, false, false, false, true,
+                false, false, true, false, true, true, false, false, false, true, true,
+                true, false, false,
+            ],
+            unknowns: &[
+                "structurally singular model: the velocity `v_x` of `RollingDisk` is determined by no equation: coordinate `x` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `v_y` of `RollingDisk` is determined by no equation: coordinate `y` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `v_theta` of `RollingDisk` is determined by no equation: coordinate `theta` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `v_phi` of `RollingDisk` is determined by no equation: coordinate `phi` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the multiplier of constraint `roll_x` of `RollingDisk` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+                "structurally singular model: the multiplier of constraint `roll_y` of `RollingDisk` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+            ],
+        };
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 21usize,
+            jacobian: 13usize,
+            residual_and_jacobian: 30usize,
+            residual_blocks: 17usize,
+            jacobian_blocks: 13usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "RollingDisk: L = 0.5*m*(v_x^2 + v_y^2) + 0.5*i_roll*v_theta^2 + 0.5*i_turn*v_phi^2\ndx/dt = v_x\ndy/dt = v_y\ndtheta/dt = v_theta\ndphi/dt = v_phi\ndp_x/dt = lambda_roll_x\ndp_y/dt = lambda_roll_y\ndp_theta/dt = -r*cos(phi)*lambda_roll_x - r*sin(phi)*lambda_roll_y\ndp_phi/dt = 0\np_x = m*v_x\np_y = m*v_y\np_theta = i_roll*v_theta\np_phi = i_turn*v_phi\n0 = v_x - r*v_theta*cos(phi)    (roll_x)\n0 = v_y - r*v_theta*sin(phi)    (roll_y)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(v_{x}^{2} + v_{y}^{2}\\right) + 0.5 i_{\\mathrm{roll}} v_{\\theta}^{2} + 0.5 i_{\\mathrm{turn}} v_{\\phi}^{2} \\\\\n\\dot{x} &= v_{x} \\\\\n\\dot{y} &= v_{y} \\\\\n\\dot{\\theta} &= v_{\\theta} \\\\\n\\dot{\\phi} &= v_{\\phi} \\\\\n\\dot{p}_{x} &= \\lambda_{\\mathrm{roll\\_x}} \\\\\n\\dot{p}_{y} &= \\lambda_{\\mathrm{roll\\_y}} \\\\\n\\dot{p}_{\\theta} &= -r \\cos\\left(\\phi\\right) \\lambda_{\\mathrm{roll\\_x}} - r \\sin\\left(\\phi\\right) \\lambda_{\\mathrm{roll\\_y}} \\\\\n\\dot{p}_{\\phi} &= 0 \\\\\np_{x} &= m v_{x} \\\\\np_{y} &= m v_{y} \\\\\np_{\\theta} &= i_{\\mathrm{roll}} v_{\\theta} \\\\\np_{\\phi} &= i_{\\mathrm{turn}} v_{\\phi} \\\\\n0 &= v_{x} - r v_{\\theta} \\cos\\left(\\phi\\right) && \\text{(roll\\_x)} \\\\\n0 &= v_{y} - r v_{\\theta} \\sin\\left(\\phi\\right) && \\text{(roll\\_y)}\n\\end{aligned}",
+                ),
+            }
+        }
+        #[inline]
+        fn lagrangian(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0.5f64 * self.m * (v[0].powi(2) + v[1].powi(2))
+                + 0.5f64 * self.i_roll * v[2].powi(2)
+                + 0.5f64 * self.i_turn * v[3].powi(2);
+            value
+        }
+        #[inline]
+        fn dl_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+        }
+        #[inline]
+        fn dl_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = self.m * v[0];
+            out[1usize] = self.m * v[1];
+            out[2usize] = self.i_roll * v[2];
+            out[3usize] = self.i_turn * v[3];
+        }
+        #[inline]
+        fn l_qq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn l_vq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn l_vv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(0, 0)] = self.m;
+            out[(1, 1)] = self.m;
+            out[(2, 2)] = self.i_roll;
+            out[(3, 3)] = self.i_turn;
+        }
+        #[inline]
+        fn force(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+        }
+        #[inline]
+        fn force_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn force_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn constraint_matrix(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            out[(0, 0)] = 1f64;
+            out[(0, 2)] = -self.r * q[3].cos();
+            out[(1, 1)] = 1f64;
+            out[(1, 2)] = -self.r * q[3].sin();
+        }
+        #[inline]
+        fn dav_dq(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            out[(0, 3)] = self.r * v[2] * q[3].sin();
+            out[(1, 3)] = -self.r * v[2] * q[3].cos();
+        }
+        #[inline]
+        fn datl_dq(
+            &self,
+            q: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(2, 3)] = self.r * q[3].sin() * lambda[0]
+                - self.r * q[3].cos() * lambda[1];
+        }
+        #[inline]
+        fn holonomic(
+            &self,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecH<Self>,
+        ) {}
+        #[inline]
+        fn residual_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            let s0 = q[3].cos();
+            let s1 = q[3].sin();
+            out.momentum_rate[0usize] = lambda[0];
+            out.momentum_rate[1usize] = lambda[1];
+            out.momentum_rate[2usize] = -self.r * s0 * lambda[0]
+                - self.r * s1 * lambda[1];
+            out.momentum_rate[3usize] = 0f64;
+            out.dl_dv[0usize] = self.m * v[0];
+            out.dl_dv[1usize] = self.m * v[1];
+            out.dl_dv[2usize] = self.i_roll * v[2];
+            out.dl_dv[3usize] = self.i_turn * v[3];
+            out.constraint_velocity[0usize] = v[0] - self.r * v[2] * s0;
+            out.constraint_velocity[1usize] = v[1] - self.r * v[2] * s1;
+        }
+        #[inline]
+        fn jacobian_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+        ) {
+            let s0 = q[3].cos();
+            let s1 = q[3].sin();
+            out.dpdot_dq[(2, 3)] = self.r * s1 * lambda[0] - self.r * s0 * lambda[1];
+            out.l_vv[(0, 0)] = self.m;
+            out.l_vv[(1, 1)] = self.m;
+            out.l_vv[(2, 2)] = self.i_roll;
+            out.l_vv[(3, 3)] = self.i_turn;
+            out.a[(0, 0)] = 1f64;
+            out.a[(0, 2)] = -self.r * s0;
+            out.a[(1, 1)] = 1f64;
+            out.a[(1, 2)] = -self.r * s1;
+            out.dav_dq[(0, 3)] = self.r * v[2] * s1;
+            out.dav_dq[(1, 3)] = -self.r * v[2] * s0;
+        }
+        #[inline]
+        fn residual(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::VecY<Self>,
+        ) {
+            let s0 = y[3].cos();
+            let s1 = y[3].sin();
+            out[0usize] = y[4];
+            out[1usize] = y[5];
+            out[2usize] = y[6];
+            out[3usize] = y[7];
+            out[4usize] = y[8] - self.m * y[4];
+            out[5usize] = y[9] - self.m * y[5];
+            out[6usize] = y[10] - self.i_roll * y[6];
+            out[7usize] = y[11] - self.i_turn * y[7];
+            out[8usize] = y[12];
+            out[9usize] = y[13];
+            out[10usize] = -self.r * s0 * y[12] - self.r * s1 * y[13];
+            out[11usize] = 0f64;
+            out[12usize] = y[4] - self.r * y[6] * s0;
+            out[13usize] = y[5] - self.r * y[6] * s1;
+        }
+        #[inline]
+        fn jacobian(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::MatYY<Self>,
+        ) {
+            let s0 = y[3].cos();
+            let s1 = -self.r * s0;
+            let s2 = y[3].sin();
+            let s3 = -self.r * s2;
+            let s4 = -self.m;
+            out[(0, 4)] = 1f64;
+            out[(1, 5)] = 1f64;
+            out[(2, 6)] = 1f64;
+            out[(3, 7)] = 1f64;
+            out[(4, 4)] = s4;
+            out[(4, 8)] = 1f64;
+            out[(5, 5)] = s4;
+            out[(5, 9)] = 1f64;
+            out[(6, 6)] = -self.i_roll;
+            out[(6, 10)] = 1f64;
+            out[(7, 7)] = -self.i_turn;
+            out[(7, 11)] = 1f64;
+            out[(8, 12)] = 1f64;
+            out[(9, 13)] = 1f64;
+            out[(10, 3)] = self.r * s2 * y[12] - self.r * s0 * y[13];
+            out[(10, 12)] = s1;
+            out[(10, 13)] = s3;
+            out[(12, 3)] = self.r * y[6] * s2;
+            out[(12, 4)] = 1f64;
+            out[(12, 6)] = s1;
+            out[(13, 3)] = -self.r * y[6] * s0;
+            out[(13, 5)] = 1f64;
+            out[(13, 6)] = s3;
+        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::SparseJacobian for RollingDisk {
+        const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[
+            0usize, 0usize, 0usize, 0usize, 3usize, 6usize, 9usize, 13usize, 15usize,
+            16usize, 17usize, 18usize, 19usize, 21usize, 23usize,
+        ];
+        const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[
+            10usize, 12usize, 13usize, 0usize, 4usize, 12usize, 1usize, 5usize, 13usize,
+            2usize, 6usize, 12usize, 13usize, 3usize, 7usize, 4usize, 5usize, 6usize,
+            7usize, 8usize, 10usize, 9usize, 10usize,
+        ];
+        #[inline]
+        fn jacobian_csc(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 23usize,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
+            );
+            let s0 = y[3].cos();
+            let s1 = -self.r * s0;
+            let s2 = y[3].sin();
+            let s3 = -self.r * s2;
+            let s4 = -self.m;
+            out[0] = self.r * s2 * y[12] - self.r * s0 * y[13];
+            out[1] = self.r * y[6] * s2;
+            out[2] = -self.r * y[6] * s0;
+            out[3] = 1f64;
+            out[4] = s4;
+            out[5] = 1f64;
+            out[6] = 1f64;
+            out[7] = s4;
+            out[8] = 1f64;
+            out[9] = 1f64;
+            out[10] = -self.i_roll;
+            out[11] = s1;
+            out[12] = s3;
+            out[13] = 1f64;
+            out[14] = -self.i_turn;
+            out[15] = 1f64;
+            out[16] = 1f64;
+            out[17] = 1f64;
+            out[18] = 1f64;
+            out[19] = 1f64;
+            out[20] = s1;
+            out[21] = 1f64;
+            out[22] = s3;
+        }
+    }
+    #[automatically_derived]
+    impl RollingDisk {
+        ///The coordinate `x`: names its position, velocity and momentum in a state.
+        pub const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            0,
+        );
+        ///The coordinate `y`: names its position, velocity and momentum in a state.
+        pub const Y: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            1,
+        );
+        ///The coordinate `theta`: names its position, velocity and momentum in a state.
+        pub const THETA: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            2,
+        );
+        ///The coordinate `phi`: names its position, velocity and momentum in a state.
+        pub const PHI: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            3,
+        );
+        ///The constraint `roll_x`: names its row of A(q) and its multiplier in a state.
+        pub const ROLL_X: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
+            0,
+        );
+        ///The constraint `roll_y`: names its row of A(q) and its multiplier in a state.
+        pub const ROLL_Y: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
+            1,
+        );
+    }
+};
