@@ -12,9 +12,11 @@
 
 #[path = "../dirac-macros/src/ast.rs"]
 mod ast;
+#[path = "../dirac-macros/src/blocks.rs"]
+mod blocks;
 #[path = "../dirac-macros/src/check.rs"]
 mod check;
-#[path = "../dirac-macros/src/codegen.rs"]
+#[path = "../dirac-macros/src/codegen/mod.rs"]
 mod codegen;
 #[path = "../dirac-macros/src/ctxt.rs"]
 mod ctxt;
@@ -43,6 +45,8 @@ mod sym {
 }
 #[path = "../dirac-macros/src/symbol.rs"]
 mod symbol;
+#[path = "../dirac-macros/src/symbols.rs"]
+mod symbols;
 
 use std::hint::black_box;
 

@@ -15,9 +15,9 @@ mod zoo;
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use dirac::nalgebra::{Complex, DefaultAllocator};
 use dirac::prelude::*;
 use dirac::runtime::newton::{Condensed, Full, NewtonSolver};
-use nalgebra::{Complex, DefaultAllocator};
 use zoo::*;
 
 fn chain() -> Chain {
@@ -75,7 +75,7 @@ fn radau_group<M: LagrangeDirac>(c: &mut Criterion, name: &str, model: &M, start
 where
     DefaultAllocator: dirac::Storage<M>,
 {
-    let options = Options::tolerances(1e-8, 1e-10);
+    let options = RadauOptions::tolerances(1e-8, 1e-10);
     let mut group = c.benchmark_group(format!("radau/{name}"));
     group.sample_size(20);
     group.bench_function("condensed", |b| {

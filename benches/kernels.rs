@@ -31,8 +31,8 @@ use std::hint::black_box;
 
 use cartesian::{Cartesian2, Cartesian4, Cartesian8, Cartesian16};
 use criterion::{Criterion, criterion_group};
+use dirac::nalgebra::{DefaultAllocator, SVector};
 use dirac::prelude::*;
-use nalgebra::{DefaultAllocator, SVector};
 use num_dual::{DualNum, jacobian};
 use zoo::{MassSpringChain, Pendulum8};
 
@@ -44,7 +44,7 @@ trait Generic<const NY: usize> {
 /// A hand-written residual and Jacobian.
 trait Hand<const NY: usize> {
     fn residual(&self, y: &SVector<f64, NY>, f: &mut SVector<f64, NY>);
-    fn jacobian(&self, y: &SVector<f64, NY>, j: &mut nalgebra::SMatrix<f64, NY, NY>);
+    fn jacobian(&self, y: &SVector<f64, NY>, j: &mut dirac::nalgebra::SMatrix<f64, NY, NY>);
 }
 
 // ---------------------------------------------------------------- the paper's chain, n = 3
@@ -80,7 +80,7 @@ impl Hand<9> for MassSpringChain {
         f[8] = -self.k3 * s3;
     }
 
-    fn jacobian(&self, _y: &SVector<f64, 9>, j: &mut nalgebra::SMatrix<f64, 9, 9>) {
+    fn jacobian(&self, _y: &SVector<f64, 9>, j: &mut dirac::nalgebra::SMatrix<f64, 9, 9>) {
         let m = [self.m1, self.m2, self.m3];
         for i in 0..3 {
             j[(i, 3 + i)] = 1.0;
@@ -157,7 +157,7 @@ impl Hand<24> for Pendulum8 {
         }
     }
 
-    fn jacobian(&self, y: &SVector<f64, 24>, jac: &mut nalgebra::SMatrix<f64, 24, 24>) {
+    fn jacobian(&self, y: &SVector<f64, 24>, jac: &mut dirac::nalgebra::SMatrix<f64, 24, 24>) {
         let (mm, a) = pendulum8_coefficients(self);
         let w = &y.as_slice()[8..16];
         let mut diag_vq = [0.0; 8];
@@ -230,7 +230,7 @@ macro_rules! cartesian_kernels {
                 Chain::<$n> { m: self.m, g: self.g }.residual(y, f);
             }
 
-            fn jacobian(&self, y: &SVector<f64, $ny>, j: &mut nalgebra::SMatrix<f64, $ny, $ny>) {
+            fn jacobian(&self, y: &SVector<f64, $ny>, j: &mut dirac::nalgebra::SMatrix<f64, $ny, $ny>) {
                 Chain::<$n> { m: self.m, g: self.g }.jacobian(y, j);
             }
         }
@@ -289,7 +289,7 @@ impl<const N: usize> Chain<N> {
         }
     }
 
-    fn jacobian<const NY: usize>(&self, y: &SVector<f64, NY>, j: &mut nalgebra::SMatrix<f64, NY, NY>) {
+    fn jacobian<const NY: usize>(&self, y: &SVector<f64, NY>, j: &mut dirac::nalgebra::SMatrix<f64, NY, NY>) {
         let n = 2 * N;
         let s = y.as_slice();
         let (q, v, lambda) = (&s[..n], &s[n..2 * n], &s[3 * n..]);
@@ -350,8 +350,8 @@ macro_rules! bench_model {
         LagrangeDirac::residual(model, 0.0, &y, &mut f_gen);
         Hand::residual(model, &y, &mut f_hand);
         assert!((f_gen - f_hand).amax() < 1e-12, "{name}: hand-written residual differs");
-        let mut j_gen = nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
-        let mut j_hand = nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
+        let mut j_gen = dirac::nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
+        let mut j_hand = dirac::nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
         LagrangeDirac::jacobian(model, 0.0, &y, &mut j_gen);
         Hand::jacobian(model, &y, &mut j_hand);
         assert!((j_gen - j_hand).amax() < 1e-12, "{name}: hand-written Jacobian differs");
@@ -364,7 +364,7 @@ macro_rules! bench_model {
         );
         let mut group = c.benchmark_group(format!("kernels/{name}"));
         let mut f = SVector::<f64, $ny>::zeros();
-        let mut j = nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
+        let mut j = dirac::nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
         group.bench_function("generated F", |b| {
             b.iter(|| LagrangeDirac::residual(model, 0.0, black_box(&y), &mut f))
         });
@@ -434,7 +434,7 @@ macro_rules! loop_model {
         let model = $model;
         let y: SVector<f64, $ny> = state(7);
         let mut f = SVector::<f64, $ny>::zeros();
-        let mut j = nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
+        let mut j = dirac::nalgebra::SMatrix::<f64, $ny, $ny>::zeros();
         for _ in 0..$calls {
             if $generated {
                 LagrangeDirac::residual(model, 0.0, black_box(&y), &mut f);

@@ -23,7 +23,7 @@ struct Windows {
 
 fn variational<M: LagrangeDirac>(model: &M, start: &State<M>, h: f64, steps: usize) -> (f64, Windows)
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let e0 = model.energy(0.0, &start.q, &start.v, &start.p);
     let span = h * steps as f64;
@@ -46,23 +46,20 @@ where
 
 fn radau<M: LagrangeDirac>(model: &M, start: &State<M>, span: f64, tol: f64) -> (f64, Windows, usize)
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let e0 = model.energy(0.0, &start.q, &start.v, &start.p);
-    let n = M::NQ;
     let clock = Instant::now();
-    let mut radau = Radau::new(model, Options::tolerances(tol, tol)).expect("valid");
+    let mut radau = Radau::new(model, RadauOptions::tolerances(tol, tol)).expect("valid");
     let mut w = Windows { first: 0.0, last: 0.0 };
     let sol = radau
-        .solve_observed(0.0, start, span, &Sampling::Times(vec![span]), |t, y| {
-            let s = State::<M>::from_y(y);
+        .solve_observed(0.0, start, span, &Sampling::Times(vec![span]), |t, s| {
             let e = (model.energy(t, &s.q, &s.v, &s.p) - e0).abs();
             if t <= 0.1 * span {
                 w.first = w.first.max(e);
             } else if t >= 0.9 * span {
                 w.last = w.last.max(e);
             }
-            let _ = n;
             ControlFlow::Continue(())
         })
         .expect("integrates");
@@ -71,7 +68,7 @@ where
 
 fn report<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, h: f64, tols: &[f64])
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let steps = 1_000_000;
     let span = h * steps as f64;

@@ -73,7 +73,7 @@ fn rattle_pendulum(p: &Pendulum, mut q: [f64; 2], mut v: [f64; 2]) -> f64 {
 
 fn ours<M: LagrangeDirac>(model: &M, start: &State<M>, options: VariationalOptions) -> f64
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let mut vi = Variational::new(model, H, options).expect("valid");
     vi.start(0.0, start, H * STEPS as f64).expect("starts");

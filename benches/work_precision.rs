@@ -14,9 +14,9 @@ mod zoo;
 #[path = "support/median.rs"]
 mod median;
 
+use dirac::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use dirac::prelude::*;
 use median::median_seconds;
-use nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use zoo::*;
 
 /// x(t) of M ẍ = −K x from x(0) = (0.1, 0, 0) at rest, by the eigensystem of M^{-1/2} K M^{-1/2}.
@@ -47,7 +47,7 @@ fn main() {
     for tol in tols {
         let mut error = 0.0;
         let (seconds, steps) = median_seconds(|| {
-            let mut radau = Radau::new(&p, Options::tolerances(tol, tol)).expect("valid");
+            let mut radau = Radau::new(&p, RadauOptions::tolerances(tol, tol)).expect("valid");
             let sol = radau.solve(0.0, &start, 1.0, &Sampling::Times(vec![1.0])).expect("integrates");
             let (x, y) = (sol.q(Pendulum::X)[0], sol.q(Pendulum::Y)[0]);
             error = f64::max((x + 0.986_291_751_131_875_3).abs(), (y + 0.165_010_853_125_541_17).abs());
@@ -62,7 +62,7 @@ fn main() {
     for tol in tols {
         let mut error = 0.0;
         let (seconds, steps) = median_seconds(|| {
-            let mut radau = Radau::new(&chain, Options::tolerances(tol, tol)).expect("valid");
+            let mut radau = Radau::new(&chain, RadauOptions::tolerances(tol, tol)).expect("valid");
             let sol = radau.solve(0.0, &start, 20.0, &Sampling::Times(vec![20.0])).expect("integrates");
             error =
                 masses.iter().enumerate().map(|(i, c)| (sol.q(*c)[0] - exact[i]).abs()).fold(0.0, f64::max);

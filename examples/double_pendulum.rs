@@ -57,12 +57,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         .solve(0.0, &start, t_end, &sampling)?;
     let variational_seconds = clock.elapsed().as_secs_f64();
     let clock = Instant::now();
-    let radau = Radau::new(&model, Options::tolerances(1e-6, 1e-8))?.solve(0.0, &start, t_end, &sampling)?;
+    let radau =
+        Radau::new(&model, RadauOptions::tolerances(1e-6, 1e-8))?.solve(0.0, &start, t_end, &sampling)?;
     let radau_seconds = clock.elapsed().as_secs_f64();
     let e0 = variational.energy()[0];
-    let energy_error =
-        |sol: &Solution<DoublePendulum>| sol.energy().iter().map(|e| (e - e0).abs()).collect::<Vec<_>>();
-    let (ev, er) = (energy_error(&variational), energy_error(&radau));
+    let energy_error = |energy: &[f64]| energy.iter().map(|e| (e - e0).abs()).collect::<Vec<_>>();
+    let (ev, er) = (energy_error(variational.energy()), energy_error(radau.energy()));
     let tail = |e: &[f64]| e[e.len() * 9 / 10..].iter().copied().fold(0.0, f64::max);
     let head = |e: &[f64]| e[..e.len() / 10].iter().copied().fold(0.0, f64::max);
     println!("t in [0, {t_end}], E(0) = {e0:.6} J");

@@ -38,7 +38,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let q = VecQ::<LcCircuit>::new(1.0, 1.0);
     let start = consistent_state(&circuit, 0.0, &q, &VecQ::<LcCircuit>::zeros(), Consistency::default())?;
     let t_end = 20.0;
-    let radau = Radau::new(&circuit, Options::tolerances(1e-10, 1e-12))?.solve(
+    let radau = Radau::new(&circuit, RadauOptions::tolerances(1e-10, 1e-12))?.solve(
         0.0,
         &start,
         t_end,
@@ -52,15 +52,14 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
 
     let exact: Vec<f64> = radau.t().iter().map(|t| t.cos()).collect();
-    for (name, sol) in [("Radau (tol 1e-10)", &radau), ("variational (h = 0.02)", &variational)] {
-        let error = sol.q(LcCircuit::Q_C).iter().zip(&exact).map(|(q, e)| (q - e).abs()).fold(0.0, f64::max);
-        let e0 = sol.energy()[0];
-        let drift = sol.energy().iter().map(|e| (e - e0).abs()).fold(0.0, f64::max);
-        println!(
-            "{name}: max |q_c - cos t| = {error:.2e}, max |E - E0| = {drift:.2e} J, {} steps",
-            sol.stats.steps
-        );
-    }
+    let report = |name: &str, charge: &[f64], energy: &[f64], steps: usize| {
+        let error = charge.iter().zip(&exact).map(|(q, e)| (q - e).abs()).fold(0.0, f64::max);
+        let drift = energy.iter().map(|e| (e - energy[0]).abs()).fold(0.0, f64::max);
+        println!("{name}: max |q_c - cos t| = {error:.2e}, max |E - E0| = {drift:.2e} J, {steps} steps");
+    };
+    report("Radau (tol 1e-10)", radau.q(LcCircuit::Q_C), radau.energy(), radau.stats.steps);
+    let (charge, energy) = (variational.q(LcCircuit::Q_C), variational.energy());
+    report("variational (h = 0.02)", charge, energy, variational.stats.steps);
 
     let dir = output_dir()?;
     let csv = dir.join("lc_circuit.csv");
@@ -78,10 +77,8 @@ fn main() -> Result<(), Box<dyn Error>> {
         log_y: false,
     }
     .write(&charge)?;
-    let energy = |sol: &Solution<LcCircuit>| {
-        sol.energy().iter().map(|e| (e - sol.energy()[0]).abs()).collect::<Vec<_>>()
-    };
-    let (er, ev) = (energy(&radau), energy(&variational));
+    let energy_error = |energy: &[f64]| energy.iter().map(|e| (e - energy[0]).abs()).collect::<Vec<_>>();
+    let (er, ev) = (energy_error(radau.energy()), energy_error(variational.energy()));
     let errors = dir.join("lc_circuit_energy.svg");
     Chart {
         title: "LC circuit: energy error",

@@ -99,7 +99,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut q = VecQ::<Chain>::zeros();
     q[Chain::left(Primitive1::X1).index()] = 0.1;
     let start = consistent_state(&chain, 0.0, &q, &VecQ::<Chain>::zeros(), Consistency::default())?;
-    let options = Options::tolerances(1e-10, 1e-12);
+    let options = RadauOptions::tolerances(1e-10, 1e-12);
     let sampling = Sampling::Every(0.01);
     let torn = Radau::new(&chain, options)?.solve(0.0, &start, 20.0, &sampling)?;
 

@@ -79,7 +79,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         &VecQ::<Drive>::zeros(),
         Consistency::default(),
     )?;
-    let sol = Radau::new(&drive, Options::tolerances(1e-9, 1e-11))?.solve(
+    let sol = Radau::new(&drive, RadauOptions::tolerances(1e-9, 1e-11))?.solve(
         0.0,
         &start,
         5.0,

@@ -50,7 +50,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let v = VecQ::<RollingDisk>::new(0.6, 0.0, 2.0, 1.0);
     let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())?;
     let t_end = 50.0;
-    let radau = Radau::new(&disk, Options::tolerances(1e-9, 1e-11))?.solve(
+    let radau = Radau::new(&disk, RadauOptions::tolerances(1e-9, 1e-11))?.solve(
         0.0,
         &start,
         t_end,
@@ -64,15 +64,15 @@ fn main() -> Result<(), Box<dyn Error>> {
     )?;
     let radius = disk.r * start.v(RollingDisk::THETA) / start.v(RollingDisk::PHI);
     println!("the contact point circles with radius r θ̇/φ̇ = {radius:.6} m");
-    for (name, sol) in [("Radau (tol 1e-9)", &radau), ("variational (h = 0.05)", &variational)] {
-        let e0 = sol.energy()[0];
-        let drift = sol.energy().iter().map(|e| ((e - e0) / e0).abs()).fold(0.0, f64::max);
-        let slip = sol.constraint_residual().iter().copied().fold(0.0, f64::max);
-        println!(
-            "{name}: relative energy error {drift:.1e}, largest slip {slip:.1e} m/s, {} steps",
-            sol.stats.steps
-        );
-    }
+    let report = |name: &str, energy: &[f64], slips: &[f64], steps: usize| {
+        let e0 = energy[0];
+        let drift = energy.iter().map(|e| ((e - e0) / e0).abs()).fold(0.0, f64::max);
+        let slip = slips.iter().copied().fold(0.0, f64::max);
+        println!("{name}: relative energy error {drift:.1e}, largest slip {slip:.1e} m/s, {steps} steps");
+    };
+    report("Radau (tol 1e-9)", radau.energy(), radau.constraint_residual(), radau.stats.steps);
+    let (energy, slips) = (variational.energy(), variational.constraint_residual());
+    report("variational (h = 0.05)", energy, slips, variational.stats.steps);
 
     let dir = output_dir()?;
     let csv = dir.join("rolling_disk.csv");
@@ -93,10 +93,8 @@ fn main() -> Result<(), Box<dyn Error>> {
         log_y: false,
     }
     .write(&path)?;
-    let energy = |sol: &Solution<RollingDisk>| {
-        sol.energy().iter().map(|e| (e - sol.energy()[0]).abs()).collect::<Vec<_>>()
-    };
-    let (er, ev) = (energy(&radau), energy(&variational));
+    let energy_error = |energy: &[f64]| energy.iter().map(|e| (e - energy[0]).abs()).collect::<Vec<_>>();
+    let (er, ev) = (energy_error(radau.energy()), energy_error(variational.energy()));
     let errors = dir.join("rolling_disk_errors.svg");
     Chart {
         title: "Rolling disk: energy error and slip",

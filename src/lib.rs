@@ -54,19 +54,51 @@ extern crate self as dirac;
 
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, JacobianBlocks,
-    LagrangeDirac, MatCQ, MatKK, MatQQ, MatYY, Membership, Names, OperationCounts, Options, Radau,
-    ResidualBlocks, Sampling, SimError, Solution, SparseJacobian, State, Stats, Storage, Variational,
-    VariationalOptions, VecC, VecH, VecK, VecQ, VecY, consistent_state,
+    Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Integrator, JacobianBlocks,
+    LagrangeDirac, Layout, MatCQ, MatKK, MatQQ, MatYY, Membership, Named, Names, OperationCounts, Radau,
+    RadauOptions, RadauStats, ResidualBlocks, Sampling, SimError, Slot, Solution, SparseJacobian, State,
+    Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH, VecK, VecQ, VecY,
+    consistent_state,
 };
 
+/// The linear-algebra crate dirac is built on, re-exported so that generic code over models
+/// and code that uses its matrices need no second, possibly different, version of it.
+pub use dirac_runtime::nalgebra;
+
 /// Everything a model file needs: `use dirac::prelude::*;`.
+///
+/// It includes the bound generic code over any model needs, so a helper over every model
+/// compiles with `dirac` as the only dependency:
+///
+/// ```
+/// use dirac::prelude::*;
+///
+/// /// The kinetic energy `½ vᵀ L_vv v` of any model, at its state.
+/// fn kinetic_energy<M: LagrangeDirac>(model: &M, state: &State<M>) -> f64
+/// where
+///     DefaultAllocator: Storage<M>,
+/// {
+///     let mut mass = MatQQ::<M>::zeros();
+///     model.l_vv(0.0, &state.q, &state.v, &mut mass);
+///     0.5 * state.v.dot(&(mass * &state.v))
+/// }
+///
+/// #[derive(LagrangeDirac)]
+/// #[dirac(coordinates(x => v))]
+/// #[dirac(lagrangian = 0.5 * m * v * v)]
+/// struct Mass { m: f64 }
+///
+/// let mut state = State::<Mass>::zeros();
+/// state.set_v(Mass::X, 2.0);
+/// assert_eq!(kinetic_energy(&Mass { m: 3.0 }, &state), 6.0);
+/// ```
 pub mod prelude {
+    pub use crate::nalgebra::DefaultAllocator;
     pub use crate::{
-        Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Interconnection,
-        JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY, Options, Radau, ResidualBlocks, Sampling,
-        SimError, Solution, SparseJacobian, State, Variational, VariationalOptions, VecC, VecH, VecQ, VecY,
-        consistent_state,
+        Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Integrator,
+        Interconnection, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY, Named, Radau, RadauOptions,
+        ResidualBlocks, Sampling, SimError, Solution, SparseJacobian, State, Storage, Variational,
+        VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state,
     };
 }
 

@@ -49,9 +49,9 @@ fn allocations() -> usize {
 /// Steps `radau` 200 times after 5 warm-up steps and returns the allocations during the 200.
 fn allocations_in_steps<M: LagrangeDirac>(model: &M, start: &State<M>, t_end: f64) -> usize
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
-    let mut radau = Radau::new(model, Options::tolerances(1e-10, 1e-10)).expect("valid options");
+    let mut radau = Radau::new(model, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
     radau.start(0.0, start, t_end).expect("starts");
     for _ in 0..5 {
         radau.step().expect("steps");
@@ -96,7 +96,7 @@ fn allocations_in_variational_steps<M: LagrangeDirac>(
     options: VariationalOptions,
 ) -> usize
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let mut vi = Variational::new(model, 0.01, options).expect("valid options");
     vi.start(0.0, start, 100.0).expect("starts");

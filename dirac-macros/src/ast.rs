@@ -49,6 +49,15 @@ pub struct ConstraintDecl {
     pub expr: Expr,
 }
 
+/// A constraint in the order of the rows of `A(q)` (holonomic first), with its name: the one
+/// given, or `holonomic0`, `constraint1`, … by kind and position.
+pub struct OrderedConstraint<'m> {
+    pub decl: &'m ConstraintDecl,
+    pub name: String,
+    /// The tokens naming it (its name, or its key), for error spans and constants.
+    pub ident: &'m Ident,
+}
+
 /// `force(x) = expr`.
 pub struct ForceDecl {
     pub coordinate: Ident,
@@ -84,6 +93,20 @@ impl<'a> Model<'a> {
             }
         }
         model
+    }
+}
+
+impl Model<'_> {
+    /// The constraints in row order, holonomic rows first, each with its name.
+    pub fn ordered_constraints(&self) -> Vec<OrderedConstraint<'_>> {
+        let mut out = Vec::new();
+        for kind in [ConstraintKind::Holonomic, ConstraintKind::Velocity] {
+            for (k, decl) in self.constraints.iter().filter(|c| c.kind == kind).enumerate() {
+                let name = decl.name.as_ref().map_or_else(|| format!("{}{k}", decl.key), ToString::to_string);
+                out.push(OrderedConstraint { decl, name, ident: decl.name.as_ref().unwrap_or(&decl.key) });
+            }
+        }
+        out
     }
 }
 

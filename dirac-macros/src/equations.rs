@@ -3,9 +3,11 @@
 //! For the paper's primitive system 1 this prints eq. (9): `dp_x1/dt = -k1*x1 + k2*(x2 - x1)`,
 //! `dp_x2/dt = -k2*(x2 - x1) + f_x2`, with the port effort `f_x2` shown at the port.
 
-use crate::model::{SymKind, SymModel};
+use crate::blocks::Blocks;
+use crate::model::SymModel;
 use crate::sym::Id;
 use crate::sym::pretty::{Style, pretty};
+use crate::symbols::Sym;
 
 const GREEK: &[&str] = &[
     "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu",
@@ -49,103 +51,89 @@ pub fn latex_accented(name: &str, extra: Option<&str>) -> String {
     out
 }
 
-impl SymModel {
-    fn display_name(&self, sym: u32, style: Style) -> String {
-        let coordinate = |i: usize| self.coordinates[i].to_string();
-        let text = match self.kind(sym) {
-            SymKind::Parameter(i) => self.params[i].to_string(),
-            SymKind::Q(i) => coordinate(i),
-            SymKind::V(i) => self.velocities[i].to_string(),
-            SymKind::P(i) => format!("p_{}", coordinate(i)),
-            SymKind::Lambda(j) => format!("lambda_{}", self.constraint_names[j]),
-            SymKind::Time => "t".to_owned(),
-            SymKind::PortForce(i) => format!("f_{}", coordinate(i)),
-        };
-        match style {
-            Style::Text => text,
-            Style::Latex => match self.kind(sym) {
-                SymKind::Lambda(j) => {
-                    format!("\\lambda_{{\\mathrm{{{}}}}}", self.constraint_names[j].replace('_', "\\_"))
-                }
-                SymKind::P(i) => format!("p_{{{}}}", latex_name(&coordinate(i))),
-                SymKind::PortForce(i) => format!("f_{{{}}}", latex_name(&coordinate(i))),
-                _ => latex_name(&text),
-            },
+/// The name of symbol `sym` of a primitive model, for people.
+fn display_name(model: &SymModel, sym: u32, style: Style) -> String {
+    let coordinate = |i: usize| model.coordinates[i].to_string();
+    let kind = model.kind(sym);
+    let text = match kind {
+        Sym::Parameter(i) => model.params[i].to_string(),
+        Sym::Coordinate(i) => coordinate(i),
+        Sym::Velocity(i) => model.velocities[i].to_string(),
+        Sym::Momentum(i) => format!("p_{}", coordinate(i)),
+        Sym::Multiplier(j) => format!("lambda_{}", model.constraints[j].name),
+        Sym::Time => "t".to_owned(),
+        Sym::PortEffort(i) => format!("f_{}", coordinate(i)),
+        Sym::Member(_) => unreachable!("a primitive model has no subsystem members"),
+    };
+    match (style, kind) {
+        (Style::Text, _) => text,
+        (Style::Latex, Sym::Multiplier(j)) => {
+            format!("\\lambda_{{\\mathrm{{{}}}}}", model.constraints[j].name.replace('_', "\\_"))
         }
+        (Style::Latex, Sym::Momentum(i)) => format!("p_{{{}}}", latex_name(&coordinate(i))),
+        (Style::Latex, Sym::PortEffort(i)) => format!("f_{{{}}}", latex_name(&coordinate(i))),
+        (Style::Latex, _) => latex_name(&text),
     }
+}
 
-    fn show(&self, e: Id, style: Style) -> String {
-        pretty(&self.graph, e, style, &|s| self.display_name(s, style))
+/// The model's equations as `(text, latex)`: the blocks of `b`, with the effort at each port
+/// added to its momentum balance. Run after code generation: the port efforts are new symbols.
+pub fn equations(model: &mut SymModel, b: &Blocks, model_name: &str) -> (String, String) {
+    let n = model.n();
+    let mut rate = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut terms = vec![b.dl_dq[i], b.force[i], b.at_lambda[i]];
+        if model.ports.contains(&i) {
+            terms.push(model.symbols.declare(&mut model.graph, Sym::PortEffort(i)));
+        }
+        rate.push(model.graph.add(&terms));
     }
-
-    /// The equations as `(text, latex)`.
-    pub fn equations(&mut self, model_name: &str) -> (String, String) {
-        let n = self.n();
-        let dl_dq = self.dl_dq();
-        let dl_dv = self.dl_dv();
-        let at_lambda = self.at_lambda();
-        let mut rate = Vec::with_capacity(n);
-        for i in 0..n {
-            let mut terms = vec![dl_dq[i], self.force[i], at_lambda[i]];
-            if self.ports.contains(&i) {
-                let f = self.graph.symbol(&format!("port:{}", self.coordinates[i]));
-                let sym = self.graph.as_sym(f).expect("a symbol") as usize;
-                if self.kinds.len() <= sym {
-                    self.kinds.resize(sym + 1, SymKind::Time);
-                }
-                self.kinds[sym] = SymKind::PortForce(i);
-                terms.push(f);
-            }
-            rate.push(self.graph.add(&terms));
-        }
-        let a_v: Vec<Id> = {
-            let rows = self.a.clone();
-            let v = self.v.clone();
-            rows.iter()
-                .map(|row| {
-                    let terms: Vec<Id> = row.iter().zip(&v).map(|(&a, &x)| self.graph.mul2(a, x)).collect();
-                    self.graph.add(&terms)
-                })
-                .collect()
-        };
-        let mut text = vec![format!("{model_name}: L = {}", self.show(self.lagrangian, Style::Text))];
-        let mut latex = vec![format!("L &= {}", self.show(self.lagrangian, Style::Latex))];
-        for i in 0..n {
-            let (c, v) = (self.coordinates[i].to_string(), self.velocities[i].to_string());
-            text.push(format!("d{c}/dt = {v}"));
-            latex.push(format!("{} &= {}", latex_accented(&c, Some("dot")), latex_name(&v)));
-        }
-        for (i, &r) in rate.iter().enumerate() {
-            let c = self.coordinates[i].to_string();
-            text.push(format!("dp_{c}/dt = {}", self.show(r, Style::Text)));
-            latex.push(format!("\\dot{{p}}_{{{}}} &= {}", latex_name(&c), self.show(r, Style::Latex)));
-        }
-        for (i, &d) in dl_dv.iter().enumerate() {
-            let c = self.coordinates[i].to_string();
-            text.push(format!("p_{c} = {}", self.show(d, Style::Text)));
-            latex.push(format!("p_{{{}}} &= {}", latex_name(&c), self.show(d, Style::Latex)));
-        }
-        for (j, &c) in a_v.iter().enumerate() {
-            let name = &self.constraint_names[j];
-            text.push(format!("0 = {}    ({name})", self.show(c, Style::Text)));
-            latex.push(format!(
-                "0 &= {} && \\text{{({})}}",
-                self.show(c, Style::Latex),
-                name.replace('_', "\\_")
-            ));
-        }
-        for (j, &phi) in self.phi.iter().enumerate() {
-            let name = &self.constraint_names[j];
-            text.push(format!("0 = {}    ({name}, holonomic)", self.show(phi, Style::Text)));
-            latex.push(format!(
+    let model = &*model;
+    let show = |e: Id, style: Style| pretty(&model.graph, e, style, &|s| display_name(model, s, style));
+    let mut text = vec![format!("{model_name}: L = {}", show(b.lagrangian, Style::Text))];
+    let mut latex = vec![format!("L &= {}", show(b.lagrangian, Style::Latex))];
+    let mut line = |t: String, l: String| {
+        text.push(t);
+        latex.push(l);
+    };
+    for i in 0..n {
+        let (c, v) = (model.coordinates[i].to_string(), model.velocities[i].to_string());
+        line(format!("d{c}/dt = {v}"), format!("{} &= {}", latex_accented(&c, Some("dot")), latex_name(&v)));
+    }
+    for (i, &r) in rate.iter().enumerate() {
+        let c = model.coordinates[i].to_string();
+        line(
+            format!("dp_{c}/dt = {}", show(r, Style::Text)),
+            format!("\\dot{{p}}_{{{}}} &= {}", latex_name(&c), show(r, Style::Latex)),
+        );
+    }
+    for (i, &d) in b.dl_dv.iter().enumerate() {
+        let c = model.coordinates[i].to_string();
+        line(
+            format!("p_{c} = {}", show(d, Style::Text)),
+            format!("p_{{{}}} &= {}", latex_name(&c), show(d, Style::Latex)),
+        );
+    }
+    for (j, &c) in b.a_v.iter().enumerate() {
+        let name = &model.constraints[j].name;
+        line(
+            format!("0 = {}    ({name})", show(c, Style::Text)),
+            format!("0 &= {} && \\text{{({})}}", show(c, Style::Latex), name.replace('_', "\\_")),
+        );
+    }
+    for (j, &phi) in b.phi.iter().enumerate() {
+        let name = &model.constraints[j].name;
+        line(
+            format!("0 = {}    ({name}, holonomic)", show(phi, Style::Text)),
+            format!(
                 "0 &= {} && \\text{{({}, holonomic)}}",
-                self.show(phi, Style::Latex),
+                show(phi, Style::Latex),
                 name.replace('_', "\\_")
-            ));
-        }
-        let latex = format!("\\begin{{aligned}}\n{}\n\\end{{aligned}}", latex.join(" \\\\\n"));
-        (text.join("\n"), latex)
+            ),
+        );
     }
+    let latex = format!("\\begin{{aligned}}\n{}\n\\end{{aligned}}", latex.join(" \\\\\n"));
+    (text.join("\n"), latex)
 }
 
 #[cfg(test)]

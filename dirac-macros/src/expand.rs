@@ -1,38 +1,58 @@
-//! `#[derive(LagrangeDirac)]`: parse, check, lower, emit.
+//! `#[derive(LagrangeDirac)]`: parse, check, lower, derive the block table, analyse, emit.
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::DeriveInput;
 
 use crate::ast::Model;
+use crate::blocks::Blocks;
 use crate::check::check;
+use crate::codegen::signatures::{REQUIRED, rt};
+use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
+use crate::equations::equations;
 use crate::model::SymModel;
+use crate::structure::{check_structure, condensed_pattern, separable, unknown_messages};
 
 /// Expands the derive on `input`; user errors become `compile_error!` next to a stub impl.
 pub fn derive(input: &DeriveInput) -> TokenStream {
     let cx = Ctxt::new();
     let model = Model::from_input(&cx, input);
+    let name = input.ident.to_string();
     // After a syntax error, names and items may be missing: report only the syntax errors.
-    let sym = if model.incomplete {
+    let analysed = if model.incomplete {
         None
     } else {
         check(&cx, &model);
-        SymModel::build(&cx, &model)
+        SymModel::build(&cx, &model).map(|sym| Analysed::new(&cx, sym, &name))
     };
-    let mut sym = sym;
-    if let Some(sym) = sym.as_mut() {
-        sym.check_structure(&cx, &input.ident.to_string());
-    }
     let names = key_constants(&cx, &model);
-    match (cx.into_compile_errors(), sym) {
-        (None, Some(mut sym)) => implementation(&model, &mut sym, &names),
+    match (cx.into_compile_errors(), analysed) {
+        (None, Some(analysed)) => implementation(&model, analysed, &names),
         // A generic model has been reported; an impl for it would only add errors.
         (errors, _) if !input.generics.params.is_empty() => quote! { #errors },
         (errors, _) => {
             let stub = stub(&model, &names);
             quote! { #errors #stub }
         }
+    }
+}
+
+/// A model with its block table and its condensed structure, checked.
+struct Analysed {
+    sym: SymModel,
+    blocks: Blocks,
+    pattern: Vec<bool>,
+    unknowns: Vec<String>,
+}
+
+impl Analysed {
+    fn new(cx: &Ctxt, mut sym: SymModel, name: &str) -> Analysed {
+        let blocks = Blocks::derive(&mut sym);
+        let pattern = condensed_pattern(&sym.graph, &blocks);
+        let unknowns = unknown_messages(&sym, name);
+        check_structure(cx, &sym, &pattern, &unknowns);
+        Analysed { sym, blocks, pattern, unknowns }
     }
 }
 
@@ -76,25 +96,12 @@ fn key_constants(cx: &Ctxt, model: &Model<'_>) -> KeyConstants {
         Some((format_ident!("{}", constant, span = ident.span()), name))
     };
     let coordinates = model.coordinates.iter().filter_map(|c| make(&c.name, c.name.to_string())).collect();
-    let mut constraints = Vec::new();
-    let mut counters = [0usize; 2];
-    for kind in [crate::ast::ConstraintKind::Holonomic, crate::ast::ConstraintKind::Velocity] {
-        for c in model.constraints.iter().filter(|c| c.kind == kind) {
-            let k = usize::from(kind == crate::ast::ConstraintKind::Velocity);
-            let name = c
-                .name
-                .as_ref()
-                .map(ToString::to_string)
-                .unwrap_or_else(|| format!("{}{}", c.key, counters[k]));
-            counters[k] += 1;
-            constraints.extend(make(c.name.as_ref().unwrap_or(&c.key), name));
-        }
-    }
+    let constraints = model.ordered_constraints().into_iter().filter_map(|c| make(c.ident, c.name)).collect();
     KeyConstants { coordinates, constraints }
 }
 
 fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
-    let p = quote! { ::dirac::__private };
+    let p = rt();
     let ident = model.ident;
     let vis = model.vis;
     let coordinates = names.coordinates.iter().enumerate().map(|(i, (c, name))| {
@@ -116,27 +123,25 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
     }
 }
 
-fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -> TokenStream {
-    let p = quote! { ::dirac::__private };
+fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -> TokenStream {
+    let p = rt();
+    let Analysed { mut sym, blocks, pattern, unknowns } = analysed;
     let ident = model.ident;
+    let Generated { methods, sparse, counts } = generate(&sym, &blocks);
+    let separable = separable(&mut sym, &blocks);
+    let (text, latex) = equations(&mut sym, &blocks, &ident.to_string());
     let size = proc_macro2::Literal::usize_unsuffixed;
     let (n, m, h) = (size(sym.n()), size(sym.m()), size(sym.h()));
     let (nk, ny) = (size(sym.n() + sym.m()), size(3 * sym.n() + sym.m()));
-    let coordinates: Vec<String> = sym.coordinates.iter().map(ToString::to_string).collect();
-    let velocities: Vec<String> = sym.velocities.iter().map(ToString::to_string).collect();
-    let constraints = sym.constraint_names.clone();
-    let ports: Vec<_> = sym.ports.iter().map(|&i| proc_macro2::Literal::usize_unsuffixed(i)).collect();
-    let holonomic = size(sym.h());
-    let (text, latex) = sym.equations(&ident.to_string());
-    let separable = sym.separable();
-    let pattern = sym.condensed_pattern();
-    let unknowns = sym.unknown_messages(&ident.to_string());
-    let methods = sym.methods();
-    let csc = sym.csc.take();
-    let c = &sym.op_counts;
-    let (r, j, rj, rb, jb) =
-        (c.residual, c.jacobian, c.residual_and_jacobian, c.residual_blocks, c.jacobian_blocks);
+    let (r, j, rj, rb, jb) = (
+        counts.residual,
+        counts.jacobian,
+        counts.residual_and_jacobian,
+        counts.residual_blocks,
+        counts.jacobian_blocks,
+    );
     let constants = inherent_constants(model, names);
+    let named = named(&sym, ident);
     quote! {
         const _: () = {
             #[automatically_derived]
@@ -148,19 +153,13 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
                 type Ny = #p::Const<#ny>;
             }
 
+            #named
+
             #[automatically_derived]
             // Coefficients folded from the user's numbers may approximate named constants.
             #[allow(clippy::approx_constant)]
             impl #p::LagrangeDirac for #ident {
-                const NAMES: &'static #p::Names = &#p::Names {
-                    coordinates: &[#(#coordinates),*],
-                    velocities: &[#(#velocities),*],
-                    constraints: &[#(#constraints),*],
-                    holonomic: #holonomic,
-                    ports: &[#(#ports),*],
-                    subsystems: &[],
-                };
-                const SEPARABLE: bool = #separable;
+                const SEPARABLE: ::core::primitive::bool = #separable;
                 const STRUCTURE: #p::Structure = #p::Structure {
                     pattern: &[#(#pattern),*],
                     unknowns: &[#(#unknowns),*],
@@ -183,7 +182,7 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
             #[automatically_derived]
             #[allow(clippy::approx_constant)]
             impl #p::SparseJacobian for #ident {
-                #csc
+                #sparse
             }
 
             #constants
@@ -191,78 +190,73 @@ fn implementation(model: &Model<'_>, sym: &mut SymModel, names: &KeyConstants) -
     }
 }
 
+/// The `Named` impl: the model's coordinates, velocities, constraints and ports.
+fn named(sym: &SymModel, ident: &syn::Ident) -> TokenStream {
+    let p = rt();
+    let coordinates = sym.coordinates.iter().map(ToString::to_string);
+    let velocities = sym.velocities.iter().map(ToString::to_string);
+    let constraints = sym.constraints.iter().map(|c| &c.name);
+    let ports = sym.ports.iter().map(|&i| proc_macro2::Literal::usize_unsuffixed(i));
+    let h = proc_macro2::Literal::usize_unsuffixed(sym.h());
+    quote! {
+        #[automatically_derived]
+        impl #p::Named for #ident {
+            const NAMES: &'static #p::Names = &#p::Names {
+                coordinates: &[#(#coordinates),*],
+                velocities: &[#(#velocities),*],
+                constraints: &[#(#constraints),*],
+                holonomic: #h,
+                ports: &[#(#ports),*],
+                subsystems: &[],
+            };
+        }
+    }
+}
+
 /// An impl that type-checks but is never run, emitted next to errors so that one mistake in a
 /// model does not cascade into errors wherever the model is used.
 fn stub(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
-    let p = quote! { ::dirac::__private };
-    let ident = model.ident;
     let constants = inherent_constants(model, names);
-    let n = model.coordinates.len();
-    let m = names.constraints.len();
-    let (nk, ny) = (n + m, 3 * n + m);
-    let unreachable = quote! { ::core::unreachable!("this model did not compile") };
-    let vq = quote! { &#p::VecQ<Self> };
-    let f = quote! { ::core::primitive::f64 };
-    let block = |name: &str, args: TokenStream, out: TokenStream| {
-        let name = format_ident!("{}", name);
-        quote! { fn #name(&self, #args _out: &mut #out) { #unreachable } }
-    };
-    let tqv = quote! { _t: #f, _q: #vq, _v: #vq, };
-    let qq = quote! { #p::MatQQ<Self> };
-    let cq = quote! { #p::MatCQ<Self> };
-    let vecq = quote! { #p::VecQ<Self> };
-    let methods = [
-        block("dl_dq", tqv.clone(), vecq.clone()),
-        block("dl_dv", tqv.clone(), vecq.clone()),
-        block("l_qq", tqv.clone(), qq.clone()),
-        block("l_vq", tqv.clone(), qq.clone()),
-        block("l_vv", tqv.clone(), qq.clone()),
-        block("force", tqv.clone(), vecq),
-        block("force_dq", tqv.clone(), qq.clone()),
-        block("force_dv", tqv.clone(), qq.clone()),
-        block("constraint_matrix", quote! { _q: #vq, }, cq.clone()),
-        block("dav_dq", quote! { _q: #vq, _v: #vq, }, cq),
-        block("datl_dq", quote! { _q: #vq, _lambda: &#p::VecC<Self>, }, qq),
-        block("holonomic", quote! { _q: #vq, }, quote! { #p::VecH<Self> }),
-        block(
-            "residual_blocks",
-            quote! { #tqv _lambda: &#p::VecC<Self>, },
-            quote! { #p::ResidualBlocks<Self> },
-        ),
-        block(
-            "jacobian_blocks",
-            quote! { #tqv _lambda: &#p::VecC<Self>, },
-            quote! { #p::JacobianBlocks<Self> },
-        ),
-        block("residual", quote! { _t: #f, _y: &#p::VecY<Self>, }, quote! { #p::VecY<Self> }),
-        block("jacobian", quote! { _t: #f, _y: &#p::VecY<Self>, }, quote! { #p::MatYY<Self> }),
-    ];
+    let sizes = (model.coordinates.len(), names.constraints.len());
+    let impls = stub_impls(model.ident, sizes);
     quote! {
         const _: () = {
-            impl #p::Dimensions for #ident {
-                type Nq = #p::Const<#n>;
-                type Nc = #p::Const<#m>;
-                type Nh = #p::Const<0>;
-                type Nk = #p::Const<#nk>;
-                type Ny = #p::Const<#ny>;
-            }
-            impl #p::LagrangeDirac for #ident {
-                const NAMES: &'static #p::Names = &#p::Names {
-                    coordinates: &[],
-                    velocities: &[],
-                    constraints: &[],
-                    holonomic: 0,
-                    ports: &[],
-                    subsystems: &[],
-                };
-                const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
-                const SEPARABLE: bool = false;
-                const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
-                fn equations() -> #p::Equations { #unreachable }
-                fn lagrangian(&self, #tqv) -> #f { #unreachable }
-                #(#methods)*
-            }
+            #impls
             #constants
         };
+    }
+}
+
+/// The trait impls of a stub for a model with `n` coordinates and `m` constraints.
+pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
+    let p = rt();
+    let (nk, ny) = (n + m, 3 * n + m);
+    let methods = REQUIRED.iter().map(|sig| sig.unreachable());
+    let unreachable = quote! { ::core::unreachable!("this model did not compile") };
+    quote! {
+        impl #p::Dimensions for #ident {
+            type Nq = #p::Const<#n>;
+            type Nc = #p::Const<#m>;
+            type Nh = #p::Const<0>;
+            type Nk = #p::Const<#nk>;
+            type Ny = #p::Const<#ny>;
+        }
+        impl #p::Named for #ident {
+            const NAMES: &'static #p::Names = &#p::Names {
+                coordinates: &[],
+                velocities: &[],
+                constraints: &[],
+                holonomic: 0,
+                ports: &[],
+                subsystems: &[],
+            };
+        }
+        impl #p::LagrangeDirac for #ident {
+            const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
+            const SEPARABLE: ::core::primitive::bool = false;
+            const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
+            fn equations() -> #p::Equations { #unreachable }
+            #(#methods)*
+        }
     }
 }

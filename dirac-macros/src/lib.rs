@@ -1,11 +1,13 @@
 //! Derive macros of dirac. Use them through the `dirac` crate, which re-exports them with the
 //! runtime they generate code for.
 //!
-//! The derive parses a model, checks it, lowers its expressions into a symbolic graph,
-//! differentiates them and emits straight-line Rust: attributes → model AST (with spans) →
-//! checks → symbolic graph → derivatives → CSE schedule → Rust tokens.
+//! The derive parses a model, checks it, lowers its expressions into a symbolic graph over
+//! typed symbols, differentiates them once into a table of blocks, analyses the blocks and
+//! emits straight-line Rust from them: attributes → model AST (with spans) → checks →
+//! symbolic graph → block table → structure → CSE schedule → Rust tokens.
 
 mod ast;
+mod blocks;
 mod check;
 mod codegen;
 mod ctxt;
@@ -18,6 +20,7 @@ mod structure;
 mod suggest;
 mod sym;
 mod symbol;
+mod symbols;
 
 #[cfg(test)]
 mod snapshots;

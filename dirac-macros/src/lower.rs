@@ -4,7 +4,6 @@
 //! constraint may not use velocities, no constraint may use time). Every unsupported construct
 //! and unknown name is reported at its own tokens, and lowering goes on to find the next one.
 
-use std::cell::RefCell;
 use std::collections::HashMap;
 
 use syn::{BinOp, Expr, ExprLit, Lit, UnOp};
@@ -12,6 +11,7 @@ use syn::{BinOp, Expr, ExprLit, Lit, UnOp};
 use crate::ctxt::Ctxt;
 use crate::suggest::did_you_mean;
 use crate::sym::{Func, Graph, Id};
+use crate::symbols::Symbols;
 
 /// What a name in a model expression stands for.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -28,38 +28,16 @@ pub struct Scope {
     ordered: Vec<String>,
     /// In an interconnection: the subsystem fields, whose members `field.name` may be used.
     subsystems: Vec<String>,
-    /// The `field.name` paths met so far, each with its symbol, in order of first use.
-    refs: RefCell<Vec<SubsystemRef>>,
-}
-
-/// A name of a subsystem's coordinate or velocity, `left.x2`, used in an interconnection.
-pub struct SubsystemRef {
-    /// The path segments, `["left", "x2"]`.
-    pub path: Vec<String>,
-    /// The user's tokens, for error spans.
-    pub tokens: proc_macro2::TokenStream,
-    /// The symbol it lowers to.
-    pub id: Id,
 }
 
 impl Scope {
     pub fn new() -> Scope {
-        Scope {
-            names: HashMap::new(),
-            ordered: Vec::new(),
-            subsystems: Vec::new(),
-            refs: RefCell::new(Vec::new()),
-        }
+        Scope { names: HashMap::new(), ordered: Vec::new(), subsystems: Vec::new() }
     }
 
     /// A scope whose expressions may name members of these subsystem fields.
     pub fn with_subsystems(subsystems: Vec<String>) -> Scope {
         Scope { subsystems, ..Scope::new() }
-    }
-
-    /// The subsystem members referred to so far.
-    pub fn take_refs(&self) -> Vec<SubsystemRef> {
-        self.refs.take()
     }
 
     pub fn declare(&mut self, name: String, id: Id, role: Role) {
@@ -89,6 +67,8 @@ coordinates, velocities and time `t`, `+ - * /`, unary `-`, parentheses, `.powi(
 pub struct Lowerer<'a> {
     pub cx: &'a Ctxt,
     pub graph: &'a mut Graph,
+    /// Where subsystem members met in an interconnection are declared.
+    pub symbols: &'a mut Symbols,
     pub scope: &'a Scope,
 }
 
@@ -233,13 +213,8 @@ impl Lowerer<'_> {
             self.cx.error_spanned_by(&field.base, message);
             return None;
         }
-        let dotted = path.join(".");
-        let id = self.graph.symbol(&format!("ref:{dotted}"));
-        let mut refs = self.scope.refs.borrow_mut();
-        if !refs.iter().any(|r| r.path == path) {
-            refs.push(SubsystemRef { path, tokens: quote::ToTokens::to_token_stream(field), id });
-        }
-        Some(id)
+        let tokens = quote::ToTokens::to_token_stream(field);
+        Some(self.symbols.member(self.graph, path, tokens, false))
     }
 
     fn free_function(&mut self, call: &syn::ExprCall, ctx: Context<'_>) -> Option<Id> {

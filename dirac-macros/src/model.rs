@@ -1,5 +1,5 @@
 //! The symbolic form of a checked model: its Lagrangian, forces, constraint rows and
-//! holonomic constraints as graph expressions over named symbols.
+//! holonomic constraints as graph expressions over typed symbols.
 
 use syn::Ident;
 use syn::ext::IdentExt;
@@ -9,24 +9,19 @@ use crate::ctxt::Ctxt;
 use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
 use crate::sym::{Graph, Id};
 use crate::symbol::TIME;
+use crate::symbols::{Sym, Symbols};
 
-/// What a graph symbol of a model stands for.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-pub enum SymKind {
-    Parameter(usize),
-    Q(usize),
-    V(usize),
-    P(usize),
-    Lambda(usize),
-    Time,
-    /// The effort at a port, only in the equations shown to people.
-    PortForce(usize),
+/// A constraint row's name and the tokens that named it.
+pub struct RowName {
+    pub name: String,
+    /// For error spans.
+    pub ident: Ident,
 }
 
 /// A model as expressions in one graph. Rows of `a` are holonomic constraints first.
 pub struct SymModel {
     pub graph: Graph,
-    pub kinds: Vec<SymKind>,
+    pub symbols: Symbols,
     pub params: Vec<Ident>,
     pub coordinates: Vec<Ident>,
     pub velocities: Vec<Ident>,
@@ -35,30 +30,13 @@ pub struct SymModel {
     pub v: Vec<Id>,
     pub p: Vec<Id>,
     pub lambda: Vec<Id>,
-    pub time: Id,
     pub lagrangian: Id,
     pub force: Vec<Id>,
     /// `A(q)`, `m × n`.
     pub a: Vec<Vec<Id>>,
     /// `φ(q)`, one per holonomic row.
     pub phi: Vec<Id>,
-    pub constraint_names: Vec<String>,
-    /// The tokens naming each constraint (its name, or its key), for error spans.
-    pub constraint_idents: Vec<Ident>,
-    /// Arithmetic operations of the emitted kernels, filled in by code generation.
-    pub op_counts: OpCounts,
-    /// The items of the `SparseJacobian` impl, filled in by code generation.
-    pub csc: Option<proc_macro2::TokenStream>,
-}
-
-/// How many arithmetic operations the generated kernels perform per call.
-#[derive(Default)]
-pub struct OpCounts {
-    pub residual: usize,
-    pub jacobian: usize,
-    pub residual_and_jacobian: usize,
-    pub residual_blocks: usize,
-    pub jacobian_blocks: usize,
+    pub constraints: Vec<RowName>,
 }
 
 impl SymModel {
@@ -74,20 +52,9 @@ impl SymModel {
         self.phi.len()
     }
 
-    /// Creates a symbol and records what it stands for.
-    fn symbol(&mut self, name: &str, kind: SymKind) -> Id {
-        let id = self.graph.symbol(name);
-        let sym = self.graph.as_sym(id).expect("a fresh symbol") as usize;
-        if self.kinds.len() <= sym {
-            self.kinds.resize(sym + 1, SymKind::Time);
-        }
-        self.kinds[sym] = kind;
-        id
-    }
-
     /// What symbol `sym` stands for.
-    pub fn kind(&self, sym: u32) -> SymKind {
-        self.kinds[sym as usize]
+    pub fn kind(&self, sym: u32) -> Sym {
+        self.symbols.kind(sym)
     }
 
     /// Builds the symbolic model, recording every expression error in `cx`.
@@ -96,7 +63,7 @@ impl SymModel {
         let zero = graph.num(0.0);
         let mut sm = SymModel {
             graph,
-            kinds: Vec::new(),
+            symbols: Symbols::default(),
             params: model.params.clone(),
             coordinates: model.coordinates.iter().map(|c| c.name.clone()).collect(),
             velocities: model.coordinates.iter().map(|c| c.velocity.clone()).collect(),
@@ -105,20 +72,16 @@ impl SymModel {
             v: Vec::new(),
             p: Vec::new(),
             lambda: Vec::new(),
-            time: zero,
             lagrangian: zero,
             force: Vec::new(),
             a: Vec::new(),
             phi: Vec::new(),
-            constraint_names: Vec::new(),
-            constraint_idents: Vec::new(),
-            op_counts: OpCounts::default(),
-            csc: None,
+            constraints: Vec::new(),
         };
         let scope = sm.declare_symbols();
         sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();
         sm.force = vec![zero; sm.n()];
-        let mut lw = Lowerer { cx, graph: &mut sm.graph, scope: &scope };
+        let mut lw = Lowerer { cx, graph: &mut sm.graph, symbols: &mut sm.symbols, scope: &scope };
         let all = Context { what: "the Lagrangian", velocities: true, time: true };
         let lagrangian = model.lagrangian.as_ref().and_then(|(_, e)| lw.lower(e, all));
         for f in &model.forces {
@@ -130,73 +93,65 @@ impl SymModel {
             }
         }
         sm.lower_constraints(cx, model, &scope);
-        let lagrangian = lagrangian?;
-        sm.lagrangian = lagrangian;
+        sm.lagrangian = lagrangian?;
         (!cx.has_errors()).then_some(sm)
+    }
+
+    fn declare(&mut self, kind: Sym) -> Id {
+        self.symbols.declare(&mut self.graph, kind)
     }
 
     fn declare_symbols(&mut self) -> Scope {
         let mut scope = Scope::new();
         for (i, p) in self.params.clone().iter().enumerate() {
-            let name = p.unraw().to_string();
-            let id = self.symbol(&name, SymKind::Parameter(i));
-            scope.declare(name, id, Role::Parameter);
+            let id = self.declare(Sym::Parameter(i));
+            scope.declare(p.unraw().to_string(), id, Role::Parameter);
         }
         for (i, c) in self.coordinates.clone().iter().enumerate() {
-            let id = self.symbol(&c.to_string(), SymKind::Q(i));
+            let id = self.declare(Sym::Coordinate(i));
             self.q.push(id);
             scope.declare(c.to_string(), id, Role::Coordinate);
         }
         for (i, v) in self.velocities.clone().iter().enumerate() {
-            let id = self.symbol(&v.to_string(), SymKind::V(i));
+            let id = self.declare(Sym::Velocity(i));
             self.v.push(id);
             scope.declare(v.to_string(), id, Role::Velocity);
         }
-        for (i, c) in self.coordinates.clone().iter().enumerate() {
-            let id = self.symbol(&format!("p:{c}"), SymKind::P(i));
+        for i in 0..self.n() {
+            let id = self.declare(Sym::Momentum(i));
             self.p.push(id);
         }
-        self.time = self.symbol(TIME, SymKind::Time);
-        scope.declare(TIME.to_owned(), self.time, Role::Time);
+        let time = self.declare(Sym::Time);
+        scope.declare(TIME.to_owned(), time, Role::Time);
         scope
     }
 
     /// Lowers holonomic constraints (rows `∂φ/∂q`) first, then velocity constraints.
     fn lower_constraints(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) {
-        let kinds = [ConstraintKind::Holonomic, ConstraintKind::Velocity];
-        let mut counters = [0usize; 2];
-        let mut ordered = Vec::new();
-        for (k, kind) in kinds.iter().enumerate() {
-            for c in model.constraints.iter().filter(|c| c.kind == *kind) {
-                let name = match &c.name {
-                    Some(n) => n.to_string(),
-                    None => format!("{}{}", c.key, counters[k]),
-                };
-                counters[k] += 1;
-                ordered.push((c, name));
-            }
-        }
-        for (c, name) in ordered {
-            let what = format!("constraint `{name}`");
-            let row = match c.kind {
-                ConstraintKind::Holonomic => self.holonomic_row(cx, &c.expr, &what, scope),
-                ConstraintKind::Velocity => self.velocity_row(cx, &c.expr, &what, scope),
+        for c in model.ordered_constraints() {
+            let what = format!("constraint `{}`", c.name);
+            let row = match c.decl.kind {
+                ConstraintKind::Holonomic => self.holonomic_row(cx, &c.decl.expr, &what, scope),
+                ConstraintKind::Velocity => self.velocity_row(cx, &c.decl.expr, &what, scope),
             };
             if let Some(row) = row {
                 self.a.push(row);
-                self.constraint_names.push(name);
-                self.constraint_idents.push(c.name.clone().unwrap_or_else(|| c.key.clone()));
+                self.constraints.push(RowName { name: c.name, ident: c.ident.clone() });
             }
         }
-        for (j, name) in self.constraint_names.clone().iter().enumerate() {
-            let id = self.symbol(&format!("lambda:{name}"), SymKind::Lambda(j));
+        for j in 0..self.constraints.len() {
+            let id = self.declare(Sym::Multiplier(j));
             self.lambda.push(id);
         }
     }
 
+    fn lowerer<'a>(&'a mut self, cx: &'a Ctxt, scope: &'a Scope) -> Lowerer<'a> {
+        Lowerer { cx, graph: &mut self.graph, symbols: &mut self.symbols, scope }
+    }
+
     fn holonomic_row(&mut self, cx: &Ctxt, expr: &syn::Expr, what: &str, scope: &Scope) -> Option<Vec<Id>> {
         let ctx = Context { what, velocities: false, time: false };
-        let phi = Lowerer { cx, graph: &mut self.graph, scope }.lower(expr, ctx)?;
+        let phi = self.lowerer(cx, scope).lower(expr, ctx)?;
         let row: Vec<Id> = self.q.clone().iter().map(|q| self.graph.diff(phi, *q)).collect();
         if row.iter().all(|d| self.graph.is_zero(*d)) {
             cx.error_spanned_by(expr, format!("{what} does not depend on any coordinate"));
@@ -214,7 +169,7 @@ impl SymModel {
         let mut lowered = Vec::new();
         let mut ok = true;
         for (term, negated) in &terms {
-            let Some(x) = (Lowerer { cx, graph: &mut self.graph, scope }).lower(term, ctx) else {
+            let Some(x) = self.lowerer(cx, scope).lower(term, ctx) else {
                 ok = false;
                 continue;
             };

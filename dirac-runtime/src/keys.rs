@@ -7,10 +7,7 @@
 use core::fmt;
 use core::marker::PhantomData;
 
-use nalgebra::DefaultAllocator;
-
-use crate::dims::Storage;
-use crate::model::LagrangeDirac;
+use crate::names::Named;
 
 /// A coordinate `q_i` of model `M`; it also names the velocity `v_i` and the momentum `p_i`.
 pub struct Coordinate<M: ?Sized> {
@@ -38,13 +35,10 @@ macro_rules! key_impls {
             }
         }
 
-        impl<M: LagrangeDirac> $key<M>
-        where
-            DefaultAllocator: Storage<M>,
-        {
+        impl<M: Named> $key<M> {
             #[doc = concat!("The full dotted name of this ", $what, ", such as `left.x2`.")]
             pub fn name(self) -> String {
-                M::$names().swap_remove(self.index)
+                M::NAMES.$names().swap_remove(self.index)
             }
         }
 
@@ -70,10 +64,7 @@ macro_rules! key_impls {
             }
         }
 
-        impl<M: LagrangeDirac> fmt::Display for $key<M>
-        where
-            DefaultAllocator: Storage<M>,
-        {
+        impl<M: Named> fmt::Display for $key<M> {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
                 f.write_str(&self.name())
             }

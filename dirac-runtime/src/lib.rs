@@ -6,6 +6,8 @@
 /// Moving subsystem parts in and out of composites, for generated code.
 #[doc(hidden)]
 pub mod assemble;
+/// The block outputs of a model: residual blocks and Jacobian blocks.
+pub mod blocks;
 /// Type-level sizes of a model and the allocator bound that goes with them.
 pub mod dims;
 /// Dirac structures as objects, with products, interconnection and membership.
@@ -16,11 +18,16 @@ pub mod error;
 pub mod flat;
 /// Consistent initial states.
 pub mod init;
+/// The driver every integrator shares, with `solve` written once.
+pub mod integrator;
 /// Typed names of coordinates and constraints.
 pub mod keys;
+/// Where each quantity sits in the flat state `y = (q, v, p, λ)`.
+pub mod layout;
 /// LU factorisation on the stack, real or complex.
 pub mod lu;
-/// The model trait and its block structs.
+mod matching;
+/// The model trait.
 pub mod model;
 /// Names of a model as a tree that `const` code can search.
 pub mod names;
@@ -28,8 +35,11 @@ pub mod names;
 pub mod newton;
 /// The Radau IIA integrator.
 pub mod radau;
+mod recorder;
 /// Simulation results with named series.
 pub mod solution;
+/// The flat Jacobian in compressed sparse columns.
+pub mod sparse;
 /// The state `(q, v, p, λ)` with named access.
 pub mod state;
 /// Structural nonsingularity of the condensed system, checked at compile time.
@@ -37,19 +47,27 @@ pub mod structure;
 /// The variational integrator (discrete Hamilton-Pontryagin-d'Alembert).
 pub mod variational;
 
+pub use blocks::{JacobianBlocks, ResidualBlocks};
 pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
 pub use error::SimError;
-pub use flat::SparseJacobian;
 pub use init::{Consistency, consistent_state};
+pub use integrator::Integrator;
 pub use keys::{Constraint, Coordinate};
-pub use model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
-pub use names::{Names, ResolveError, Resolved, Subsystem};
-pub use radau::{Options, Radau, Stats};
+pub use layout::{Layout, Slot};
+pub use model::{Equations, LagrangeDirac, OperationCounts};
+pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
+pub use radau::{Radau, RadauOptions, RadauStats};
 pub use solution::{Sampling, Solution};
+pub use sparse::SparseJacobian;
 pub use state::State;
 pub use structure::Structure;
 pub use variational::{Variational, VariationalOptions, VariationalStats};
+
+/// The linear-algebra crate the runtime is built on, for generic code over models (the
+/// [`DefaultAllocator`](nalgebra::DefaultAllocator) of the [`Storage`] bound) and for users
+/// who want its types without a second, possibly different, version of it.
+pub use nalgebra;
 
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]
@@ -57,12 +75,13 @@ pub mod __private {
     pub use crate::assemble::{
         Slot, gather_c, gather_q, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
+    pub use crate::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::dims::Storage;
     pub use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, VecC, VecH, VecQ, VecY};
-    pub use crate::flat::SparseJacobian;
     pub use crate::keys::{Constraint, Coordinate};
-    pub use crate::model::{Equations, JacobianBlocks, LagrangeDirac, OperationCounts, ResidualBlocks};
-    pub use crate::names::{Names, ResolveError, Resolved, Subsystem};
+    pub use crate::model::{Equations, LagrangeDirac, OperationCounts};
+    pub use crate::names::{Named, Names, ResolveError, Resolved, Subsystem};
+    pub use crate::sparse::SparseJacobian;
     pub use crate::structure::{Structure, composite_unknown, unpaired_unknown};
     pub use nalgebra::{Const, DefaultAllocator};
     pub use std::borrow::Cow;

@@ -16,73 +16,12 @@ use std::borrow::Cow;
 
 use nalgebra::DefaultAllocator;
 
+use crate::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, Storage, VecC, VecH, VecQ, VecY};
 use crate::keys::{Constraint, Coordinate};
-use crate::names::Names;
+use crate::names::Named;
+use crate::state::State;
 use crate::structure::Structure;
-
-/// The blocks of the residual that integrators evaluate at every Newton iteration.
-pub struct ResidualBlocks<M: Dimensions>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// The momentum rate `ṗ = ∂L/∂q + F + A(q)ᵀ λ` (paper eq. 3 with the constraint forces).
-    pub momentum_rate: VecQ<M>,
-    /// `∂L/∂v`, the right-hand side of the Legendre map `p = ∂L/∂v`.
-    pub dl_dv: VecQ<M>,
-    /// `A(q) v`, zero on the constraint distribution Δ_Q.
-    pub constraint_velocity: VecC<M>,
-}
-
-impl<M: Dimensions> ResidualBlocks<M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Zeroed blocks, ready for [`LagrangeDirac::residual_blocks`].
-    pub fn zeros() -> Self {
-        Self {
-            momentum_rate: VecQ::<M>::zeros(),
-            dl_dv: VecQ::<M>::zeros(),
-            constraint_velocity: VecC::<M>::zeros(),
-        }
-    }
-}
-
-/// The Jacobian blocks of [`ResidualBlocks`], the input of a condensed Newton step.
-pub struct JacobianBlocks<M: Dimensions>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// `∂ṗ/∂q = L_qq + F_q + ∂(Aᵀλ)/∂q` (called K in the design notes).
-    pub dpdot_dq: MatQQ<M>,
-    /// `∂ṗ/∂v = L_qv + F_v` (called D in the design notes).
-    pub dpdot_dv: MatQQ<M>,
-    /// `L_vq = ∂(∂L/∂v)/∂q`.
-    pub l_vq: MatQQ<M>,
-    /// `L_vv = ∂²L/∂v²`, singular for a degenerate Lagrangian.
-    pub l_vv: MatQQ<M>,
-    /// The constraint rows `A(q)`.
-    pub a: MatCQ<M>,
-    /// `∂(A(q) v)/∂q`.
-    pub dav_dq: MatCQ<M>,
-}
-
-impl<M: Dimensions> JacobianBlocks<M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Zeroed blocks, ready for [`LagrangeDirac::jacobian_blocks`].
-    pub fn zeros() -> Self {
-        Self {
-            dpdot_dq: MatQQ::<M>::zeros(),
-            dpdot_dv: MatQQ::<M>::zeros(),
-            l_vq: MatQQ::<M>::zeros(),
-            l_vv: MatQQ::<M>::zeros(),
-            a: MatCQ::<M>::zeros(),
-            dav_dq: MatCQ::<M>::zeros(),
-        }
-    }
-}
 
 /// The derived equations of a model, for people: plain text and LaTeX.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -146,12 +85,10 @@ impl OperationCounts {
 /// Implement it with `#[derive(LagrangeDirac)]`; every method is generated code specialised
 /// to the model. Holonomic constraints `φ(q) = 0` contribute the first [`Dimensions::NH`] rows
 /// of `A = ∂φ/∂q`.
-pub trait LagrangeDirac: Dimensions + Sized + 'static
+pub trait LagrangeDirac: Dimensions + Named + Sized + 'static
 where
     DefaultAllocator: Storage<Self>,
 {
-    /// The names of the model's coordinates, velocities, constraints, ports and subsystems.
-    const NAMES: &'static Names;
     /// The arithmetic cost of the generated kernels.
     const OPERATION_COUNTS: OperationCounts;
     /// Whether `L = ½ vᵀ M v − V(q, t)` with a constant mass matrix `M` and no external forces
@@ -224,7 +161,10 @@ where
     /// The default assembles it from [`LagrangeDirac::residual_blocks`]; the derive for a
     /// primitive model emits a specialised version.
     fn residual(&self, t: f64, y: &VecY<Self>, out: &mut VecY<Self>) {
-        crate::flat::residual_from_blocks(self, t, y, out);
+        let state = State::<Self>::from_y(y);
+        let mut blocks = ResidualBlocks::<Self>::zeros();
+        self.residual_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);
+        crate::flat::residual(&state, &blocks, out);
     }
 
     /// The flat Jacobian `∂f/∂y`. Entries outside the blocks of the design notes' Jacobian are
@@ -232,7 +172,10 @@ where
     ///
     /// The default assembles it from [`LagrangeDirac::jacobian_blocks`].
     fn jacobian(&self, t: f64, y: &VecY<Self>, out: &mut MatYY<Self>) {
-        crate::flat::jacobian_from_blocks(self, t, y, out);
+        let state = State::<Self>::from_y(y);
+        let mut blocks = JacobianBlocks::<Self>::zeros();
+        self.jacobian_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);
+        crate::flat::jacobian(&blocks, out);
     }
 
     /// The full dotted name of every coordinate, in the order of `q` (`left.x2` in a composite).

@@ -5,6 +5,15 @@
 //! tree is a `const`, an interconnection resolves `left.x2` to an index while the program is
 //! compiled, and a name that does not exist stops the build with a message.
 
+/// A type whose parts have names: every model, through its derive.
+///
+/// The names live apart from [`LagrangeDirac`](crate::LagrangeDirac) so that the typed keys
+/// and the state layout can name things without depending on the whole model trait.
+pub trait Named {
+    /// The names of the model's coordinates, velocities, constraints, ports and subsystems.
+    const NAMES: &'static Names;
+}
+
 /// The names of one model.
 #[derive(Debug)]
 pub struct Names {

@@ -32,9 +32,22 @@
 
 use nalgebra::{Complex, ComplexField, DefaultAllocator, OMatrix, OVector};
 
+use crate::blocks::JacobianBlocks;
 use crate::dims::{Dimensions, Storage, VecY};
+use crate::layout::Layout;
 use crate::lu::{Lu, Singular};
-use crate::model::JacobianBlocks;
+use crate::names::Named;
+
+/// The unknown of a condensed system `(x_v, x_λ)` (or of a variational stage, `(v, Λ)`) at
+/// `column`, for the message of a singular matrix: "no pivot for the velocity `vx`".
+pub fn pivot_name<M: Dimensions + Named>(column: usize) -> String {
+    let names = M::NAMES;
+    if column < M::NQ {
+        format!("no pivot for the velocity `{}`", names.velocity_names()[column])
+    } else {
+        format!("no pivot for the multiplier `{}`", names.constraint_names()[column - M::NQ])
+    }
+}
 
 /// Solves the linear systems of a Newton iteration for one Jacobian and one pair of shifts:
 /// the real shift `σ` and the complex shift `σ_c` of Radau's transformed stage system.
@@ -48,8 +61,6 @@ where
     fn solve(&mut self, r: &mut VecY<M>);
     /// Replaces `re + i im` by the solution of `(σ_c M − J) x = re + i im`.
     fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>);
-    /// How many factorisations the solver has made.
-    fn factorizations(&self) -> usize;
 }
 
 /// The condensed saddle-point solver of size `n + m`, on the stack.
@@ -62,7 +73,6 @@ where
     sigma_c: Complex<f64>,
     real: Lu<f64, M::Nk>,
     complex: Lu<Complex<f64>, M::Nk>,
-    factorizations: usize,
 }
 
 impl<M: Dimensions> Default for Condensed<M>
@@ -76,7 +86,6 @@ where
             sigma_c: Complex::new(1.0, 0.0),
             real: Lu::new(),
             complex: Lu::new(),
-            factorizations: 0,
         }
     }
 }
@@ -118,40 +127,41 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     DefaultAllocator: Storage<M>,
 {
     let (n, m) = (M::NQ, M::NC);
+    let (q, v, p, lambda) = (Layout::<M>::Q, Layout::<M>::V, Layout::<M>::P, Layout::<M>::LAMBDA);
     let r = |v: f64| T::from_real(v);
     let mut b = OVector::<T, M::Nk>::zeros();
     for i in 0..n {
-        let mut bi = x[2 * n + i] + sigma * x[n + i];
+        let mut bi = x[p + i] + sigma * x[v + i];
         for j in 0..n {
-            bi -= (r(jac.l_vq[(i, j)]) - r(jac.dpdot_dq[(i, j)]) / sigma) * x[j];
+            bi -= (r(jac.l_vq[(i, j)]) - r(jac.dpdot_dq[(i, j)]) / sigma) * x[q + j];
         }
         b[i] = bi;
     }
     for k in 0..m {
-        let mut bk = -sigma * x[3 * n + k];
+        let mut bk = -sigma * x[lambda + k];
         for j in 0..n {
-            bk -= r(jac.dav_dq[(k, j)]) * x[j];
+            bk -= r(jac.dav_dq[(k, j)]) * x[q + j];
         }
         b[n + k] = bk;
     }
     lu.solve(&mut b);
     let mut xq = OVector::<T, M::Nq>::zeros();
     for i in 0..n {
-        xq[i] = (x[i] + b[i]) / sigma;
+        xq[i] = (x[q + i] + b[i]) / sigma;
     }
     for i in 0..n {
-        let mut xp = -x[n + i];
+        let mut xp = -x[v + i];
         for j in 0..n {
             xp += r(jac.l_vq[(i, j)]) * xq[j] + r(jac.l_vv[(i, j)]) * b[j];
         }
-        x[2 * n + i] = xp;
+        x[p + i] = xp;
     }
     for i in 0..n {
-        x[i] = xq[i];
-        x[n + i] = b[i];
+        x[q + i] = xq[i];
+        x[v + i] = b[i];
     }
     for k in 0..m {
-        x[3 * n + k] = sigma * b[n + k];
+        x[lambda + k] = sigma * b[n + k];
     }
 }
 
@@ -160,12 +170,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn factor(&mut self, jac: &JacobianBlocks<M>, sigma: f64, sigma_c: Complex<f64>) -> Result<(), Singular> {
-        copy_blocks(jac, &mut self.jac);
+        self.jac.copy_from(jac);
         self.sigma = sigma;
         self.sigma_c = sigma_c;
         condensed_matrix(jac, sigma, self.real.matrix_mut());
         condensed_matrix(jac, sigma_c, self.complex.matrix_mut());
-        self.factorizations += 1;
         self.real.factor()?;
         self.complex.factor()
     }
@@ -182,22 +191,6 @@ where
             im[i] = x[i].im;
         }
     }
-
-    fn factorizations(&self) -> usize {
-        self.factorizations
-    }
-}
-
-fn copy_blocks<M: Dimensions>(from: &JacobianBlocks<M>, to: &mut JacobianBlocks<M>)
-where
-    DefaultAllocator: Storage<M>,
-{
-    to.dpdot_dq.copy_from(&from.dpdot_dq);
-    to.dpdot_dv.copy_from(&from.dpdot_dv);
-    to.l_vq.copy_from(&from.l_vq);
-    to.l_vv.copy_from(&from.l_vv);
-    to.a.copy_from(&from.a);
-    to.dav_dq.copy_from(&from.dav_dq);
 }
 
 /// The full `(3n + m)`-sized solver: what a generic DAE code factors. A reference for the
@@ -208,7 +201,6 @@ where
 {
     real: Lu<f64, M::Ny>,
     complex: Lu<Complex<f64>, M::Ny>,
-    factorizations: usize,
 }
 
 impl<M: Dimensions> Default for Full<M>
@@ -216,7 +208,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn default() -> Self {
-        Full { real: Lu::new(), complex: Lu::new(), factorizations: 0 }
+        Full { real: Lu::new(), complex: Lu::new() }
     }
 }
 
@@ -229,23 +221,24 @@ fn full_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     DefaultAllocator: Storage<M>,
 {
     let (n, m) = (M::NQ, M::NC);
+    let (q, v, p, lambda) = (Layout::<M>::Q, Layout::<M>::V, Layout::<M>::P, Layout::<M>::LAMBDA);
     let r = |x: f64| T::from_real(x);
     s.fill(T::zero());
     for i in 0..n {
-        s[(i, i)] = sigma;
-        s[(i, n + i)] = -T::one();
-        s[(n + i, 2 * n + i)] = -T::one();
-        s[(2 * n + i, 2 * n + i)] = sigma;
+        s[(q + i, q + i)] = sigma;
+        s[(q + i, v + i)] = -T::one();
+        s[(v + i, p + i)] = -T::one();
+        s[(p + i, p + i)] = sigma;
         for j in 0..n {
-            s[(n + i, j)] = r(jac.l_vq[(i, j)]);
-            s[(n + i, n + j)] = r(jac.l_vv[(i, j)]);
-            s[(2 * n + i, j)] = -r(jac.dpdot_dq[(i, j)]);
-            s[(2 * n + i, n + j)] = -r(jac.dpdot_dv[(i, j)]);
+            s[(v + i, q + j)] = r(jac.l_vq[(i, j)]);
+            s[(v + i, v + j)] = r(jac.l_vv[(i, j)]);
+            s[(p + i, q + j)] = -r(jac.dpdot_dq[(i, j)]);
+            s[(p + i, v + j)] = -r(jac.dpdot_dv[(i, j)]);
         }
         for k in 0..m {
-            s[(2 * n + i, 3 * n + k)] = -r(jac.a[(k, i)]);
-            s[(3 * n + k, i)] = -r(jac.dav_dq[(k, i)]);
-            s[(3 * n + k, n + i)] = -r(jac.a[(k, i)]);
+            s[(p + i, lambda + k)] = -r(jac.a[(k, i)]);
+            s[(lambda + k, q + i)] = -r(jac.dav_dq[(k, i)]);
+            s[(lambda + k, v + i)] = -r(jac.a[(k, i)]);
         }
     }
 }
@@ -257,7 +250,6 @@ where
     fn factor(&mut self, jac: &JacobianBlocks<M>, sigma: f64, sigma_c: Complex<f64>) -> Result<(), Singular> {
         full_matrix(jac, sigma, self.real.matrix_mut());
         full_matrix(jac, sigma_c, self.complex.matrix_mut());
-        self.factorizations += 1;
         self.real.factor()?;
         self.complex.factor()
     }
@@ -273,10 +265,6 @@ where
             re[i] = x[i].re;
             im[i] = x[i].im;
         }
-    }
-
-    fn factorizations(&self) -> usize {
-        self.factorizations
     }
 }
 

@@ -1,4 +1,5 @@
-//! A model's state `(q, v, p, λ)` with named access.
+//! A model's state `(q, v, p, λ)` with named access: what users set up, what integrators hold
+//! and hand to observers, and what a solution's samples are.
 
 use core::fmt;
 
@@ -6,6 +7,7 @@ use nalgebra::DefaultAllocator;
 
 use crate::dims::{Dimensions, Storage, VecC, VecQ, VecY};
 use crate::keys::{Constraint, Coordinate};
+use crate::layout::Layout;
 
 /// The state `(q, v, p, λ)` of a Lagrange-Dirac model `M`.
 ///
@@ -31,6 +33,13 @@ where
 {
     fn clone(&self) -> Self {
         Self { q: self.q.clone(), v: self.v.clone(), p: self.p.clone(), lambda: self.lambda.clone() }
+    }
+
+    fn clone_from(&mut self, source: &Self) {
+        self.q.copy_from(&source.q);
+        self.v.copy_from(&source.v);
+        self.p.copy_from(&source.p);
+        self.lambda.copy_from(&source.lambda);
     }
 }
 
@@ -124,6 +133,16 @@ where
         self
     }
 
+    /// Every component in the order of the flat state `y = (q, v, p, λ)` (see [`Layout`]).
+    pub fn components(&self) -> impl Iterator<Item = &f64> {
+        self.q.iter().chain(self.v.iter()).chain(self.p.iter()).chain(self.lambda.iter())
+    }
+
+    /// Every component, mutably, in the order of `y = (q, v, p, λ)`.
+    pub fn components_mut(&mut self) -> impl Iterator<Item = &mut f64> {
+        self.q.iter_mut().chain(self.v.iter_mut()).chain(self.p.iter_mut()).chain(self.lambda.iter_mut())
+    }
+
     /// The state as one flat vector `y = (q, v, p, λ)`.
     pub fn to_y(&self) -> VecY<M> {
         let mut y = VecY::<M>::zeros();
@@ -134,20 +153,25 @@ where
     /// Writes the state into a flat vector `y = (q, v, p, λ)`.
     pub fn write_y(&self, y: &mut VecY<M>) {
         let n = M::NQ;
-        y.rows_mut(0, n).copy_from(&self.q);
-        y.rows_mut(n, n).copy_from(&self.v);
-        y.rows_mut(2 * n, n).copy_from(&self.p);
-        y.rows_mut(3 * n, M::NC).copy_from(&self.lambda);
+        y.rows_mut(Layout::<M>::Q, n).copy_from(&self.q);
+        y.rows_mut(Layout::<M>::V, n).copy_from(&self.v);
+        y.rows_mut(Layout::<M>::P, n).copy_from(&self.p);
+        y.rows_mut(Layout::<M>::LAMBDA, M::NC).copy_from(&self.lambda);
+    }
+
+    /// Reads the state from a flat vector `y = (q, v, p, λ)`.
+    pub fn read_y(&mut self, y: &VecY<M>) {
+        let n = M::NQ;
+        self.q.copy_from(&y.rows(Layout::<M>::Q, n));
+        self.v.copy_from(&y.rows(Layout::<M>::V, n));
+        self.p.copy_from(&y.rows(Layout::<M>::P, n));
+        self.lambda.copy_from(&y.rows(Layout::<M>::LAMBDA, M::NC));
     }
 
     /// The state stored in a flat vector `y = (q, v, p, λ)`.
     pub fn from_y(y: &VecY<M>) -> Self {
-        let n = M::NQ;
         let mut state = Self::zeros();
-        state.q.copy_from(&y.rows(0, n));
-        state.v.copy_from(&y.rows(n, n));
-        state.p.copy_from(&y.rows(2 * n, n));
-        state.lambda.copy_from(&y.rows(3 * n, M::NC));
+        state.read_y(y);
         state
     }
 }

@@ -7,6 +7,8 @@
 //! no equation determines (a coordinate without inertia that no constraint or potential fixes)
 //! or a dependent constraint leaves an unknown unpaired.
 
+use crate::matching::{Scratch, unpaired};
+
 /// The pattern of the condensed system and a message for each of its unknowns.
 #[derive(Clone, Copy, Debug)]
 pub struct Structure {
@@ -19,72 +21,17 @@ pub struct Structure {
 /// The first unknown of a `k × k` pattern that a maximum matching leaves unpaired, if any.
 /// `K` bounds the size (an upper bound is enough); usable in `const` items.
 pub const fn unpaired_unknown<const K: usize>(pattern: &[bool], k: usize) -> Option<usize> {
-    // row_of[c]: the equation paired with unknown c (K = none).
-    let mut row_of = [K; K];
-    let mut col_of = [K; K];
-    let mut r = 0;
-    while r < k {
-        // Depth-first search for an augmenting path from row r, with an explicit stack.
-        let mut visited = [false; K];
-        let mut stack_row = [0usize; K];
-        let mut stack_col = [0usize; K];
-        let mut parent = [K; K];
-        let mut depth = 0;
-        stack_row[0] = r;
-        stack_col[0] = 0;
-        let mut found = K;
-        while found == K {
-            let row = stack_row[depth];
-            let mut c = stack_col[depth];
-            let mut advanced = false;
-            while c < k {
-                if pattern[row * k + c] && !visited[c] {
-                    visited[c] = true;
-                    stack_col[depth] = c + 1;
-                    parent[c] = row;
-                    if row_of[c] == K {
-                        found = c;
-                    } else {
-                        depth += 1;
-                        stack_row[depth] = row_of[c];
-                        stack_col[depth] = 0;
-                    }
-                    advanced = true;
-                    break;
-                }
-                c += 1;
-            }
-            if !advanced {
-                if depth == 0 {
-                    break;
-                }
-                depth -= 1;
-            }
-        }
-        if found != K {
-            // Flip the path back to row r.
-            let mut c = found;
-            loop {
-                let row = parent[c];
-                let previous = col_of[row];
-                row_of[c] = row;
-                col_of[row] = c;
-                if row == r {
-                    break;
-                }
-                c = previous;
-            }
-        }
-        r += 1;
-    }
-    let mut c = 0;
-    while c < k {
-        if row_of[c] == K {
-            return Some(c);
-        }
-        c += 1;
-    }
-    None
+    let (mut row_of, mut col_of, mut visited) = ([0; K], [0; K], [false; K]);
+    let (mut stack_row, mut stack_col, mut parent) = ([0; K], [0; K], [0; K]);
+    let mut scratch = Scratch {
+        row_of: &mut row_of,
+        col_of: &mut col_of,
+        visited: &mut visited,
+        stack_row: &mut stack_row,
+        stack_col: &mut stack_col,
+        parent: &mut parent,
+    };
+    unpaired(pattern, k, &mut scratch)
 }
 
 /// Where unknown `a` of a subsystem's condensed system sits in its composite's: velocities

@@ -2,8 +2,8 @@
 //! schedule), the identities between blocks hold, and matrices are written sparsely.
 
 use dirac::Storage;
+use dirac::nalgebra::{DMatrix, DefaultAllocator};
 use dirac::prelude::*;
-use nalgebra::{DMatrix, DefaultAllocator};
 
 use crate::util::{Rng, random_y};
 use crate::zoo::*;
@@ -13,8 +13,8 @@ fn close(a: &DMatrix<f64>, b: &DMatrix<f64>, what: &str) {
     assert!((a - b).amax() <= 1e-12 * scale, "{what}: {a} vs {b}");
 }
 
-fn dyn_of<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
-    m: &nalgebra::Matrix<f64, R, C, S>,
+fn dyn_of<R: dirac::nalgebra::Dim, C: dirac::nalgebra::Dim, S: dirac::nalgebra::RawStorage<f64, R, C>>(
+    m: &dirac::nalgebra::Matrix<f64, R, C, S>,
 ) -> DMatrix<f64> {
     DMatrix::from_fn(m.nrows(), m.ncols(), |i, j| m[(i, j)])
 }

@@ -13,8 +13,8 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use dirac::Storage;
+use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
-use nalgebra::DefaultAllocator;
 
 use crate::zoo::*;
 
@@ -23,7 +23,7 @@ fn radau_record<M: LagrangeDirac>(model: &M, start: &State<M>) -> String
 where
     DefaultAllocator: Storage<M>,
 {
-    let mut radau = Radau::new(model, Options::tolerances(1e-8, 1e-10)).expect("valid options");
+    let mut radau = Radau::new(model, RadauOptions::tolerances(1e-8, 1e-10)).expect("valid options");
     match radau.solve(0.0, start, 2.0, &Sampling::Times(vec![2.0])) {
         Ok(sol) => {
             let s = &sol.stats;

@@ -236,7 +236,7 @@ fn solutions_lie_in_the_interconnected_dirac_structure() {
         let q2 = VecQ::<Primitive2>::new(x[1], x[2]);
         let d1 = DiracStructure::of_model(&torn.left, &q1);
         let d2 = DiracStructure::of_model(&torn.right, &q2);
-        let omega = nalgebra::DMatrix::from_row_slice(1, 4, &[0.0, 1.0, -1.0, 0.0]);
+        let omega = dirac::nalgebra::DMatrix::from_row_slice(1, 4, &[0.0, 1.0, -1.0, 0.0]);
         let dc = d1.product(&d2).interconnect(&omega);
         assert_eq!(dc, DiracStructure::of_model(&torn, &s.q));
 

@@ -1,8 +1,8 @@
 //! Seeded random states and a finite-difference oracle for generated derivatives.
 
 use dirac::Storage;
+use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
-use nalgebra::DefaultAllocator;
 
 /// SplitMix64: a small, seeded generator so every run checks the same states.
 pub struct Rng(u64);

@@ -51,7 +51,7 @@ fn second_order_on_the_torn_chain() {
     let c = chain();
     let start = chain_start(&c);
     let reference = {
-        let mut radau = Radau::new(&c, Options::tolerances(1e-13, 1e-14)).expect("valid");
+        let mut radau = Radau::new(&c, RadauOptions::tolerances(1e-13, 1e-14)).expect("valid");
         radau
             .solve(0.0, &start, 5.0, &Sampling::Times(vec![5.0]))
             .expect("integrates")
@@ -122,7 +122,7 @@ fn momentum_maps_are_conserved() {
 /// Energy error of a run: the largest |E − E0| over the first and over the last 10% of steps.
 fn energy_error_windows<M: LagrangeDirac>(model: &M, start: &State<M>, h: f64, steps: usize) -> (f64, f64)
 where
-    nalgebra::DefaultAllocator: dirac::Storage<M>,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let mut vi = Variational::new(model, h, VariationalOptions::default()).expect("valid");
     vi.start(0.0, start, h * steps as f64).expect("starts");

@@ -14,32 +14,7 @@ use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
 use crate::suggest::did_you_mean;
 use crate::sym::{Graph, Id};
 use crate::symbol::TIME;
-
-/// What a graph symbol of a composite stands for.
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-pub enum CKind {
-    Parameter(usize),
-    /// A subsystem member (`refs[k]`).
-    Ref(usize),
-    /// The multiplier of interconnection row `j`.
-    Mu(usize),
-    Time,
-}
-
-/// A subsystem member named in an interconnection.
-pub struct Ref {
-    pub path: Vec<String>,
-    pub tokens: TokenStream,
-    pub id: Id,
-    /// A `connect` endpoint: a port, named by its coordinate, standing for its velocity.
-    pub port: bool,
-}
-
-impl Ref {
-    pub fn dotted(&self) -> String {
-        self.path.join(".")
-    }
-}
+use crate::symbols::{Sym, Symbols};
 
 /// One interconnection row `Ω_j(q) v = 0`.
 pub struct Row {
@@ -52,56 +27,48 @@ pub struct Row {
     pub terms: Vec<(Id, TokenStream)>,
 }
 
-/// A composite's interconnection rows in one graph.
+/// A composite's interconnection rows in one graph, over symbols for its parameters, its
+/// subsystems' members ([`Sym::Member`]) and its own multipliers μ ([`Sym::Multiplier`]).
 pub struct CompositeModel {
     pub graph: Graph,
-    pub kinds: Vec<CKind>,
+    pub symbols: Symbols,
     pub params: Vec<Ident>,
-    pub refs: Vec<Ref>,
     pub rows: Vec<Row>,
     pub mu: Vec<Id>,
 }
 
 impl CompositeModel {
-    pub fn kind(&self, sym: u32) -> CKind {
-        self.kinds[sym as usize]
+    pub fn kind(&self, sym: u32) -> Sym {
+        self.symbols.kind(sym)
     }
 
-    fn symbol(&mut self, name: &str, kind: CKind) -> Id {
-        let id = self.graph.symbol(name);
-        let sym = self.graph.as_sym(id).expect("a fresh symbol") as usize;
-        if self.kinds.len() <= sym {
-            self.kinds.resize(sym + 1, CKind::Time);
-        }
-        self.kinds[sym] = kind;
-        id
+    /// The number of subsystem members the rows name.
+    pub fn members(&self) -> usize {
+        self.symbols.member_count()
     }
 
     /// Checks and lowers the interconnection, recording every error in `cx`.
     pub fn build(cx: &Ctxt, composite: &Composite<'_>) -> Option<CompositeModel> {
         let mut cm = CompositeModel {
             graph: Graph::new(),
-            kinds: Vec::new(),
+            symbols: Symbols::default(),
             params: composite.params.clone(),
-            refs: Vec::new(),
             rows: Vec::new(),
             mu: Vec::new(),
         };
         let fields: Vec<String> = composite.subsystems.iter().map(|s| s.ident.unraw().to_string()).collect();
         let mut scope = Scope::with_subsystems(fields.clone());
         for (i, p) in composite.params.iter().enumerate() {
-            let name = p.unraw().to_string();
-            let id = cm.symbol(&name, CKind::Parameter(i));
-            scope.declare(name, id, Role::Parameter);
+            let id = cm.symbols.declare(&mut cm.graph, Sym::Parameter(i));
+            scope.declare(p.unraw().to_string(), id, Role::Parameter);
         }
-        let time = cm.symbol(TIME, CKind::Time);
+        let time = cm.symbols.declare(&mut cm.graph, Sym::Time);
         scope.declare(TIME.to_owned(), time, Role::Time);
 
         cm.connections(cx, composite, &fields);
         cm.one_forms(cx, composite, &scope);
-        let names: Vec<String> = cm.rows.iter().map(|r| r.name.clone()).collect();
-        for (j, name) in names.iter().enumerate() {
-            let id = cm.symbol(&format!("mu:{name}"), CKind::Mu(j));
+        for j in 0..cm.rows.len() {
+            let id = cm.symbols.declare(&mut cm.graph, Sym::Multiplier(j));
             cm.mu.push(id);
         }
         check_row_names(cx, &cm.rows);
@@ -149,14 +116,7 @@ impl CompositeModel {
     }
 
     fn port_ref(&mut self, m: &MemberPath) -> Id {
-        let dotted = m.dotted();
-        if let Some(r) = self.refs.iter().find(|r| r.port && r.path == m.path) {
-            return r.id;
-        }
-        let k = self.refs.len();
-        let id = self.symbol(&format!("port:{dotted}"), CKind::Ref(k));
-        self.refs.push(Ref { path: m.path.clone(), tokens: m.expr.to_token_stream(), id, port: true });
-        id
+        self.symbols.member(&mut self.graph, m.path.clone(), m.expr.to_token_stream(), true)
     }
 
     /// `constraint(name) = expr`: lowered term by term so each term's linearity can be checked.
@@ -169,15 +129,18 @@ impl CompositeModel {
             additive_terms(&c.expr, false, &mut syntactic);
             let mut terms = Vec::new();
             for (term, negated) in &syntactic {
-                let lowered = Lowerer { cx, graph: &mut self.graph, scope }.lower(term, ctx);
-                if let Some(x) = lowered {
+                let mut lowerer = Lowerer { cx, graph: &mut self.graph, symbols: &mut self.symbols, scope };
+                if let Some(x) = lowerer.lower(term, ctx) {
                     let x = if *negated { self.graph.neg(x) } else { x };
                     terms.push((x, term.to_token_stream()));
                 }
             }
-            self.register_refs(scope);
             for (x, tokens) in &terms {
-                if !self.refs.iter().any(|r| !r.port && self.graph.depends_on(*x, self.sym_of(r.id))) {
+                let names_a_member = self
+                    .symbols
+                    .members()
+                    .any(|(m, id)| !m.port && self.graph.depends_on(*x, self.sym_of(id)));
+                if !names_a_member {
                     let message = format!(
                         "{what} must be linear in the velocities of the subsystems, but this term names no subsystem member"
                     );
@@ -193,22 +156,6 @@ impl CompositeModel {
 
     fn sym_of(&self, id: Id) -> u32 {
         self.graph.as_sym(id).expect("a reference is a symbol")
-    }
-
-    /// Records the members the lowerer met as references.
-    fn register_refs(&mut self, scope: &Scope) {
-        for r in scope.take_refs() {
-            if self.refs.iter().any(|x| !x.port && x.path == r.path) {
-                continue;
-            }
-            let k = self.refs.len();
-            let sym = self.sym_of(r.id) as usize;
-            if self.kinds.len() <= sym {
-                self.kinds.resize(sym + 1, CKind::Time);
-            }
-            self.kinds[sym] = CKind::Ref(k);
-            self.refs.push(Ref { path: r.path, tokens: r.tokens, id: r.id, port: false });
-        }
     }
 }
 

@@ -8,8 +8,7 @@ const _: () = {
         type Ny = ::dirac::__private::Const<11>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for AllFunctions {
+    impl ::dirac::__private::Named for AllFunctions {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &["a", "b", "c"],
             velocities: &["va", "vb", "vc"],
@@ -18,7 +17,11 @@ const _: () = {
             ports: &[],
             subsystems: &[],
         };
-        const SEPARABLE: bool = false;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for AllFunctions {
+        const SEPARABLE: ::core::primitive::bool = false;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[
                 true, true, false, true, false, true, true, true, true, true, true, true,

@@ -13,17 +13,19 @@ const _: () = {
         {}
         subsystem::<Primitive2>();
     };
-    const __Q0: usize = 0;
-    const __H0: usize = 0;
-    const __V0: usize = __NH;
+    const __Q0: ::core::primitive::usize = 0;
+    const __H0: ::core::primitive::usize = 0;
+    const __V0: ::core::primitive::usize = __NH;
     const __SLOT0: ::dirac::__private::Slot = ::dirac::__private::Slot {
         q: __Q0,
         h: __H0,
         v: __V0,
     };
-    const __Q1: usize = __Q0 + <Primitive1 as ::dirac::__private::Dimensions>::NQ;
-    const __H1: usize = __H0 + <Primitive1 as ::dirac::__private::Dimensions>::NH;
-    const __V1: usize = __V0
+    const __Q1: ::core::primitive::usize = __Q0
+        + <Primitive1 as ::dirac::__private::Dimensions>::NQ;
+    const __H1: ::core::primitive::usize = __H0
+        + <Primitive1 as ::dirac::__private::Dimensions>::NH;
+    const __V1: ::core::primitive::usize = __V0
         + (<Primitive1 as ::dirac::__private::Dimensions>::NC
             - <Primitive1 as ::dirac::__private::Dimensions>::NH);
     const __SLOT1: ::dirac::__private::Slot = ::dirac::__private::Slot {
@@ -31,16 +33,16 @@ const _: () = {
         h: __H1,
         v: __V1,
     };
-    const __NQ: usize = __Q1 + <Primitive2 as ::dirac::__private::Dimensions>::NQ;
-    const __NH: usize = __H1 + <Primitive2 as ::dirac::__private::Dimensions>::NH;
-    const __OMEGA: usize = __V1
+    const __NQ: ::core::primitive::usize = __Q1
+        + <Primitive2 as ::dirac::__private::Dimensions>::NQ;
+    const __NH: ::core::primitive::usize = __H1
+        + <Primitive2 as ::dirac::__private::Dimensions>::NH;
+    const __OMEGA: ::core::primitive::usize = __V1
         + (<Primitive2 as ::dirac::__private::Dimensions>::NC
             - <Primitive2 as ::dirac::__private::Dimensions>::NH);
-    const __NC: usize = __OMEGA + 1;
+    const __NC: ::core::primitive::usize = __OMEGA + 1;
     const __R0: ::dirac::__private::Resolved = {
-        let r = match <Primitive1 as ::dirac::__private::LagrangeDirac>::NAMES
-            .resolve(&["x2"])
-        {
+        let r = match <Primitive1 as ::dirac::__private::Named>::NAMES.resolve(&["x2"]) {
             ::core::result::Result::Ok(r) => r,
             ::core::result::Result::Err(
                 ::dirac::__private::ResolveError::UnknownField,
@@ -66,7 +68,7 @@ const _: () = {
         }
     };
     const __R1: ::dirac::__private::Resolved = {
-        let r = match <Primitive2 as ::dirac::__private::LagrangeDirac>::NAMES
+        let r = match <Primitive2 as ::dirac::__private::Named>::NAMES
             .resolve(&["x2bar"])
         {
             ::core::result::Result::Ok(r) => r,
@@ -93,8 +95,11 @@ const _: () = {
             port: r.port,
         }
     };
-    const __K: usize = __NQ + __NC;
-    const __STRUCTURE: ([bool; __K * __K], [&str; __K]) = {
+    const __K: ::core::primitive::usize = __NQ + __NC;
+    const __STRUCTURE: (
+        [::core::primitive::bool; __K * __K],
+        [&::core::primitive::str; __K],
+    ) = {
         let mut p = [false; __K * __K];
         let mut u = [""; __K];
         {
@@ -178,15 +183,21 @@ const _: () = {
         }
         (p, u)
     };
-    const __PATTERN: [bool; __K * __K] = __STRUCTURE.0;
-    const __UNKNOWNS: [&str; __K] = __STRUCTURE.1;
+    const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
+    const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
     const _: () = if let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
         __K,
     >(&__PATTERN, __K) {
         ::core::panic!("{}", __UNKNOWNS[c])
     };
     #[automatically_derived]
-    impl ::dirac::__private::Dimensions for Chain {
+    impl ::dirac::__private::Dimensions for Chain
+    where
+        Primitive1: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
         type Nq = ::dirac::__private::Const<{ __NQ }>;
         type Nc = ::dirac::__private::Const<{ __NC }>;
         type Nh = ::dirac::__private::Const<{ __NH }>;
@@ -194,8 +205,13 @@ const _: () = {
         type Ny = ::dirac::__private::Const<{ 3 * __NQ + __NC }>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for Chain {
+    impl ::dirac::__private::Named for Chain
+    where
+        Primitive1: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &[],
             velocities: &[],
@@ -205,21 +221,31 @@ const _: () = {
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "left",
-                    names: <Primitive1 as ::dirac::__private::LagrangeDirac>::NAMES,
+                    names: <Primitive1 as ::dirac::__private::Named>::NAMES,
                     q_offset: __Q0,
                     h_offset: __H0,
                     v_offset: __V0,
                 },
                 ::dirac::__private::Subsystem {
                     field: "right",
-                    names: <Primitive2 as ::dirac::__private::LagrangeDirac>::NAMES,
+                    names: <Primitive2 as ::dirac::__private::Named>::NAMES,
                     q_offset: __Q1,
                     h_offset: __H1,
                     v_offset: __V1,
                 },
             ],
         };
-        const SEPARABLE: bool = true
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for Chain
+    where
+        Primitive1: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
+        const SEPARABLE: ::core::primitive::bool = true
             && <Primitive1 as ::dirac::__private::LagrangeDirac>::SEPARABLE
             && <Primitive2 as ::dirac::__private::LagrangeDirac>::SEPARABLE;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
@@ -236,9 +262,8 @@ const _: () = {
             .plus(<Primitive1 as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS)
             .plus(<Primitive2 as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS);
         fn equations() -> ::dirac::__private::Equations {
-            let mut text = ::std::string::String::from(
-                "Chain: interconnection of left, right",
-            );
+            let mut text = ::std::string::String::new();
+            text.push_str("Chain: interconnection of left, right");
             let mut latex = ::std::string::String::new();
             text.push_str(
                 &::std::format!(
@@ -366,36 +391,6 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
-        fn force(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            out: &mut ::dirac::__private::VecQ<Self>,
-        ) {
-            {
-                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
-                self.left
-                    .force(
-                        t,
-                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
-                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
-                        &mut o,
-                    );
-                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
-            }
-            {
-                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
-                self.right
-                    .force(
-                        t,
-                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
-                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
-                        &mut o,
-                    );
-                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
-            }
-        }
         fn l_qq(
             &self,
             t: ::core::primitive::f64,
@@ -484,6 +479,36 @@ const _: () = {
                         &mut o,
                     );
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
+                self.left
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
+                self.right
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
         fn force_dq(
@@ -894,7 +919,13 @@ const _: () = {
         }
     }
     #[automatically_derived]
-    impl Chain {
+    impl Chain
+    where
+        Primitive1: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
         ///A coordinate of the subsystem `left` as a coordinate of this interconnection.
         pub const fn left(
             c: ::dirac::__private::Coordinate<Primitive1>,

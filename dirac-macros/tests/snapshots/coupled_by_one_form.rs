@@ -13,17 +13,19 @@ const _: () = {
         {}
         subsystem::<Cart>();
     };
-    const __Q0: usize = 0;
-    const __H0: usize = 0;
-    const __V0: usize = __NH;
+    const __Q0: ::core::primitive::usize = 0;
+    const __H0: ::core::primitive::usize = 0;
+    const __V0: ::core::primitive::usize = __NH;
     const __SLOT0: ::dirac::__private::Slot = ::dirac::__private::Slot {
         q: __Q0,
         h: __H0,
         v: __V0,
     };
-    const __Q1: usize = __Q0 + <Wheel as ::dirac::__private::Dimensions>::NQ;
-    const __H1: usize = __H0 + <Wheel as ::dirac::__private::Dimensions>::NH;
-    const __V1: usize = __V0
+    const __Q1: ::core::primitive::usize = __Q0
+        + <Wheel as ::dirac::__private::Dimensions>::NQ;
+    const __H1: ::core::primitive::usize = __H0
+        + <Wheel as ::dirac::__private::Dimensions>::NH;
+    const __V1: ::core::primitive::usize = __V0
         + (<Wheel as ::dirac::__private::Dimensions>::NC
             - <Wheel as ::dirac::__private::Dimensions>::NH);
     const __SLOT1: ::dirac::__private::Slot = ::dirac::__private::Slot {
@@ -31,16 +33,16 @@ const _: () = {
         h: __H1,
         v: __V1,
     };
-    const __NQ: usize = __Q1 + <Cart as ::dirac::__private::Dimensions>::NQ;
-    const __NH: usize = __H1 + <Cart as ::dirac::__private::Dimensions>::NH;
-    const __OMEGA: usize = __V1
+    const __NQ: ::core::primitive::usize = __Q1
+        + <Cart as ::dirac::__private::Dimensions>::NQ;
+    const __NH: ::core::primitive::usize = __H1
+        + <Cart as ::dirac::__private::Dimensions>::NH;
+    const __OMEGA: ::core::primitive::usize = __V1
         + (<Cart as ::dirac::__private::Dimensions>::NC
             - <Cart as ::dirac::__private::Dimensions>::NH);
-    const __NC: usize = __OMEGA + 1;
+    const __NC: ::core::primitive::usize = __OMEGA + 1;
     const __R0: ::dirac::__private::Resolved = {
-        let r = match <Wheel as ::dirac::__private::LagrangeDirac>::NAMES
-            .resolve(&["theta"])
-        {
+        let r = match <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["theta"]) {
             ::core::result::Result::Ok(r) => r,
             ::core::result::Result::Err(
                 ::dirac::__private::ResolveError::UnknownField,
@@ -56,9 +58,7 @@ const _: () = {
         }
     };
     const __R1: ::dirac::__private::Resolved = {
-        let r = match <Wheel as ::dirac::__private::LagrangeDirac>::NAMES
-            .resolve(&["v_theta"])
-        {
+        let r = match <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["v_theta"]) {
             ::core::result::Result::Ok(r) => r,
             ::core::result::Result::Err(
                 ::dirac::__private::ResolveError::UnknownField,
@@ -74,8 +74,7 @@ const _: () = {
         }
     };
     const __R2: ::dirac::__private::Resolved = {
-        let r = match <Cart as ::dirac::__private::LagrangeDirac>::NAMES.resolve(&["x"])
-        {
+        let r = match <Cart as ::dirac::__private::Named>::NAMES.resolve(&["x"]) {
             ::core::result::Result::Ok(r) => r,
             ::core::result::Result::Err(
                 ::dirac::__private::ResolveError::UnknownField,
@@ -91,9 +90,7 @@ const _: () = {
         }
     };
     const __R3: ::dirac::__private::Resolved = {
-        let r = match <Cart as ::dirac::__private::LagrangeDirac>::NAMES
-            .resolve(&["v_x"])
-        {
+        let r = match <Cart as ::dirac::__private::Named>::NAMES.resolve(&["v_x"]) {
             ::core::result::Result::Ok(r) => r,
             ::core::result::Result::Err(
                 ::dirac::__private::ResolveError::UnknownField,
@@ -109,9 +106,9 @@ const _: () = {
         }
     };
     const _: () = {
-        const CODES: [u8; 4] = [1u8, 2u8, 0u8, 3u8];
-        match CODES[0 | ((__R0.velocity as usize) << 0usize)
-            | ((__R1.velocity as usize) << 1usize)]
+        const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
+        match CODES[0 | ((__R0.velocity as ::core::primitive::usize) << 0usize)
+            | ((__R1.velocity as ::core::primitive::usize) << 1usize)]
         {
             1 => {
                 ::core::panic!(
@@ -132,9 +129,9 @@ const _: () = {
         }
     };
     const _: () = {
-        const CODES: [u8; 4] = [1u8, 2u8, 0u8, 3u8];
-        match CODES[0 | ((__R2.velocity as usize) << 0usize)
-            | ((__R3.velocity as usize) << 1usize)]
+        const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
+        match CODES[0 | ((__R2.velocity as ::core::primitive::usize) << 0usize)
+            | ((__R3.velocity as ::core::primitive::usize) << 1usize)]
         {
             1 => {
                 ::core::panic!(
@@ -154,8 +151,11 @@ const _: () = {
             _ => {}
         }
     };
-    const __K: usize = __NQ + __NC;
-    const __STRUCTURE: ([bool; __K * __K], [&str; __K]) = {
+    const __K: ::core::primitive::usize = __NQ + __NC;
+    const __STRUCTURE: (
+        [::core::primitive::bool; __K * __K],
+        [&::core::primitive::str; __K],
+    ) = {
         let mut p = [false; __K * __K];
         let mut u = [""; __K];
         {
@@ -265,15 +265,21 @@ const _: () = {
         }
         (p, u)
     };
-    const __PATTERN: [bool; __K * __K] = __STRUCTURE.0;
-    const __UNKNOWNS: [&str; __K] = __STRUCTURE.1;
+    const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
+    const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
     const _: () = if let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
         __K,
     >(&__PATTERN, __K) {
         ::core::panic!("{}", __UNKNOWNS[c])
     };
     #[automatically_derived]
-    impl ::dirac::__private::Dimensions for CoupledByOneForm {
+    impl ::dirac::__private::Dimensions for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
         type Nq = ::dirac::__private::Const<{ __NQ }>;
         type Nc = ::dirac::__private::Const<{ __NC }>;
         type Nh = ::dirac::__private::Const<{ __NH }>;
@@ -281,8 +287,13 @@ const _: () = {
         type Ny = ::dirac::__private::Const<{ 3 * __NQ + __NC }>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for CoupledByOneForm {
+    impl ::dirac::__private::Named for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &[],
             velocities: &[],
@@ -292,21 +303,31 @@ const _: () = {
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "wheel",
-                    names: <Wheel as ::dirac::__private::LagrangeDirac>::NAMES,
+                    names: <Wheel as ::dirac::__private::Named>::NAMES,
                     q_offset: __Q0,
                     h_offset: __H0,
                     v_offset: __V0,
                 },
                 ::dirac::__private::Subsystem {
                     field: "cart",
-                    names: <Cart as ::dirac::__private::LagrangeDirac>::NAMES,
+                    names: <Cart as ::dirac::__private::Named>::NAMES,
                     q_offset: __Q1,
                     h_offset: __H1,
                     v_offset: __V1,
                 },
             ],
         };
-        const SEPARABLE: bool = true
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
+        const SEPARABLE: ::core::primitive::bool = true
             && <Wheel as ::dirac::__private::LagrangeDirac>::SEPARABLE
             && <Cart as ::dirac::__private::LagrangeDirac>::SEPARABLE;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
@@ -323,9 +344,8 @@ const _: () = {
             .plus(<Wheel as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS)
             .plus(<Cart as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS);
         fn equations() -> ::dirac::__private::Equations {
-            let mut text = ::std::string::String::from(
-                "CoupledByOneForm: interconnection of wheel, cart",
-            );
+            let mut text = ::std::string::String::new();
+            text.push_str("CoupledByOneForm: interconnection of wheel, cart");
             let mut latex = ::std::string::String::new();
             text.push_str(
                 &::std::format!(
@@ -453,36 +473,6 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
-        fn force(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            out: &mut ::dirac::__private::VecQ<Self>,
-        ) {
-            {
-                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
-                self.wheel
-                    .force(
-                        t,
-                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                        &mut o,
-                    );
-                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
-            }
-            {
-                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
-                self.cart
-                    .force(
-                        t,
-                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                        &mut o,
-                    );
-                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
-            }
-        }
         fn l_qq(
             &self,
             t: ::core::primitive::f64,
@@ -571,6 +561,36 @@ const _: () = {
                         &mut o,
                     );
                 ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
+        fn force(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
+                self.wheel
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
+                self.cart
+                    .force(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
         fn force_dq(
@@ -1068,7 +1088,13 @@ const _: () = {
         }
     }
     #[automatically_derived]
-    impl CoupledByOneForm {
+    impl CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::LagrangeDirac,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
         ///A coordinate of the subsystem `wheel` as a coordinate of this interconnection.
         pub const fn wheel(
             c: ::dirac::__private::Coordinate<Wheel>,

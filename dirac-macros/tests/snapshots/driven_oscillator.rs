@@ -8,8 +8,7 @@ const _: () = {
         type Ny = ::dirac::__private::Const<3>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for DrivenOscillator {
+    impl ::dirac::__private::Named for DrivenOscillator {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &["x"],
             velocities: &["v"],
@@ -18,7 +17,11 @@ const _: () = {
             ports: &[],
             subsystems: &[],
         };
-        const SEPARABLE: bool = false;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for DrivenOscillator {
+        const SEPARABLE: ::core::primitive::bool = false;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true],
             unknowns: &[

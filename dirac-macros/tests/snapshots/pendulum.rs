@@ -8,8 +8,7 @@ const _: () = {
         type Ny = ::dirac::__private::Const<7>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for Pendulum {
+    impl ::dirac::__private::Named for Pendulum {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &["x", "y"],
             velocities: &["vx", "vy"],
@@ -18,7 +17,11 @@ const _: () = {
             ports: &[],
             subsystems: &[],
         };
-        const SEPARABLE: bool = true;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for Pendulum {
+        const SEPARABLE: ::core::primitive::bool = true;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true, false, true, false, true, true, true, true, false],
             unknowns: &[

@@ -8,8 +8,7 @@ const _: () = {
         type Ny = ::dirac::__private::Const<6>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for Primitive1 {
+    impl ::dirac::__private::Named for Primitive1 {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &["x1", "x2"],
             velocities: &["v1", "v2"],
@@ -18,7 +17,11 @@ const _: () = {
             ports: &[1],
             subsystems: &[],
         };
-        const SEPARABLE: bool = true;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for Primitive1 {
+        const SEPARABLE: ::core::primitive::bool = true;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true, true, true, true],
             unknowns: &[

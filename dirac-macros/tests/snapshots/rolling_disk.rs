@@ -8,8 +8,7 @@ const _: () = {
         type Ny = ::dirac::__private::Const<14>;
     }
     #[automatically_derived]
-    #[allow(clippy::approx_constant)]
-    impl ::dirac::__private::LagrangeDirac for RollingDisk {
+    impl ::dirac::__private::Named for RollingDisk {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
             coordinates: &["x", "y", "theta", "phi"],
             velocities: &["v_x", "v_y", "v_theta", "v_phi"],
@@ -18,7 +17,11 @@ const _: () = {
             ports: &[],
             subsystems: &[],
         };
-        const SEPARABLE: bool = true;
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for RollingDisk {
+        const SEPARABLE: ::core::primitive::bool = true;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[
                 true, false, false, false, true, false, false, true, false, false, false,

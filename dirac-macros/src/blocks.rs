@@ -1,0 +1,152 @@
+//! The block table of a primitive model: every derivative block the runtime traits expose,
+//! computed once, in one fixed order, as ids of the model's graph.
+//!
+//! Everything downstream (structure analysis, separability, equation printing, code
+//! generation) reads this table; none of it differentiates again. A new block (∂/∂u, ∂/∂θ,
+//! an event function) is one field here and one line in [`Blocks::derive`], plus the line of
+//! `codegen` that emits its method.
+
+use crate::model::SymModel;
+use crate::sym::{Graph, Id};
+
+/// A matrix of expressions, row by row.
+pub type Matrix = Vec<Vec<Id>>;
+
+/// Every derivative block of a model, as graph ids.
+pub struct Blocks {
+    /// `L(q, v, t)`.
+    pub lagrangian: Id,
+    /// `∂L/∂q`.
+    pub dl_dq: Vec<Id>,
+    /// `∂L/∂v`.
+    pub dl_dv: Vec<Id>,
+    /// `∂²L/∂q²`.
+    pub l_qq: Matrix,
+    /// `∂(∂L/∂v)/∂q`.
+    pub l_vq: Matrix,
+    /// `∂²L/∂v²`.
+    pub l_vv: Matrix,
+    /// `F(q, v, t)`.
+    pub force: Vec<Id>,
+    /// `∂F/∂q`.
+    pub force_dq: Matrix,
+    /// `∂F/∂v`.
+    pub force_dv: Matrix,
+    /// `A(q)`, holonomic rows first.
+    pub a: Matrix,
+    /// `A(q) v`.
+    pub a_v: Vec<Id>,
+    /// `A(q)ᵀ λ`.
+    pub at_lambda: Vec<Id>,
+    /// `∂(A v)/∂q`.
+    pub dav_dq: Matrix,
+    /// `∂(Aᵀ λ)/∂q`.
+    pub datl_dq: Matrix,
+    /// `φ(q)`.
+    pub phi: Vec<Id>,
+    /// `ṗ = ∂L/∂q + F + Aᵀλ`.
+    pub momentum_rate: Vec<Id>,
+    /// `∂ṗ/∂q`.
+    pub dpdot_dq: Matrix,
+    /// `∂ṗ/∂v`.
+    pub dpdot_dv: Matrix,
+    /// The flat right-hand side `f = (v, p − ∂L/∂v, ṗ, A v)` in the slots of `y = (q, v, p, λ)`.
+    pub flat_residual: Vec<Id>,
+    /// `∂f/∂y`.
+    pub flat_jacobian: Matrix,
+}
+
+/// `[∂e/∂x for x in wrt]`.
+fn gradient(g: &mut Graph, e: Id, wrt: &[Id]) -> Vec<Id> {
+    wrt.iter().map(|&x| g.diff(e, x)).collect()
+}
+
+/// `[[∂e_i/∂x_j]]`.
+fn jacobian(g: &mut Graph, exprs: &[Id], wrt: &[Id]) -> Matrix {
+    exprs.iter().map(|&e| gradient(g, e, wrt)).collect()
+}
+
+/// `Σ a_i b_i`.
+fn dot(g: &mut Graph, a: &[Id], b: &[Id]) -> Id {
+    let terms: Vec<Id> = a.iter().zip(b).map(|(&x, &y)| g.mul2(x, y)).collect();
+    g.add(&terms)
+}
+
+fn zeros(g: &mut Graph, rows: usize, cols: usize) -> Matrix {
+    let zero = g.num(0.0);
+    vec![vec![zero; cols]; rows]
+}
+
+impl Blocks {
+    /// Differentiates the model once into every block. The order of the derivations fixes the
+    /// order of the graph's nodes, which is the order of terms in emitted sums and products:
+    /// it is kept stable so that generated code only changes when the model does.
+    pub fn derive(m: &mut SymModel) -> Blocks {
+        let (n, rows) = (m.n(), m.m());
+        let (q, v, p, lambda) = (m.q.clone(), m.v.clone(), m.p.clone(), m.lambda.clone());
+        let (a, force, phi, lagrangian) = (m.a.clone(), m.force.clone(), m.phi.clone(), m.lagrangian);
+        let g = &mut m.graph;
+        let dl_dv = gradient(g, lagrangian, &v);
+        let dl_dq = gradient(g, lagrangian, &q);
+        let at_lambda: Vec<Id> = (0..n)
+            .map(|i| {
+                let column: Vec<Id> = a.iter().map(|row| row[i]).collect();
+                dot(g, &column, &lambda)
+            })
+            .collect();
+        let momentum_rate: Vec<Id> = (0..n).map(|i| g.add(&[dl_dq[i], force[i], at_lambda[i]])).collect();
+        // The velocity block of the condensed matrix, entry by entry.
+        let (mut l_vv, mut l_vq) = (zeros(g, n, n), zeros(g, n, n));
+        let (mut dpdot_dv, mut dpdot_dq) = (zeros(g, n, n), zeros(g, n, n));
+        for i in 0..n {
+            for j in 0..n {
+                l_vv[i][j] = g.diff(dl_dv[i], v[j]);
+                l_vq[i][j] = g.diff(dl_dv[i], q[j]);
+                dpdot_dv[i][j] = g.diff(momentum_rate[i], v[j]);
+                dpdot_dq[i][j] = g.diff(momentum_rate[i], q[j]);
+            }
+        }
+        // The constraint rows of the condensed matrix, row by row.
+        let mut a_v = Vec::with_capacity(rows);
+        let mut dav_dq = Vec::with_capacity(rows);
+        for row in &a {
+            let av = dot(g, row, &v);
+            a_v.push(av);
+            dav_dq.push(gradient(g, av, &q));
+        }
+        let l_qq = jacobian(g, &dl_dq, &q);
+        let force_dq = jacobian(g, &force, &q);
+        let force_dv = jacobian(g, &force, &v);
+        let datl_dq = jacobian(g, &at_lambda, &q);
+        let mut flat_residual = v.clone();
+        for (i, &d) in dl_dv.iter().enumerate() {
+            flat_residual.push(g.sub(p[i], d));
+        }
+        flat_residual.extend(&momentum_rate);
+        flat_residual.extend(&a_v);
+        let y: Vec<Id> = [&q, &v, &p, &lambda].into_iter().flatten().copied().collect();
+        let flat_jacobian = jacobian(g, &flat_residual, &y);
+        Blocks {
+            lagrangian,
+            dl_dq,
+            dl_dv,
+            l_qq,
+            l_vq,
+            l_vv,
+            force,
+            force_dq,
+            force_dv,
+            a,
+            a_v,
+            at_lambda,
+            dav_dq,
+            datl_dq,
+            phi,
+            momentum_rate,
+            dpdot_dq,
+            dpdot_dv,
+            flat_residual,
+            flat_jacobian,
+        }
+    }
+}

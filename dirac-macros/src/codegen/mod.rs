@@ -1,0 +1,222 @@
+//! Emission of a primitive model's trait impls from its block table.
+//!
+//! Each method is one straight-line schedule over the model's graph, emitted with shared
+//! subexpressions bound once. Vectors are written whole; matrices only at their structurally
+//! nonzero entries. Code generation reads the graph and the blocks and returns what it
+//! produced: the methods, the sparse Jacobian's pattern and the operation counts.
+
+pub mod signatures;
+
+use proc_macro2::{Literal, TokenStream};
+use quote::quote;
+
+use self::signatures::{
+    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DV, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN,
+    JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VV, LAGRANGIAN, Out, RESIDUAL, RESIDUAL_BLOCKS, Signature,
+};
+use crate::blocks::Blocks;
+use crate::model::SymModel;
+use crate::sym::emit::{Assign, emit, op_count};
+use crate::sym::{Graph, Id};
+use crate::symbols::Sym;
+
+/// How many arithmetic operations the emitted kernels perform per call.
+pub struct OpCounts {
+    pub residual: usize,
+    pub jacobian: usize,
+    pub residual_and_jacobian: usize,
+    pub residual_blocks: usize,
+    pub jacobian_blocks: usize,
+}
+
+/// What code generation produced for a primitive model.
+pub struct Generated {
+    /// The methods of its `LagrangeDirac` impl.
+    pub methods: TokenStream,
+    /// The items of its `SparseJacobian` impl.
+    pub sparse: TokenStream,
+    pub counts: OpCounts,
+}
+
+/// `out…[i] = e_i` for every entry of a vector.
+pub fn vector(target: &TokenStream, values: &[Id]) -> Vec<Assign> {
+    values.iter().enumerate().map(|(i, &value)| Assign::set(quote! { #target[#i] }, value)).collect()
+}
+
+/// `out…[(i, j)] = e_ij` for the structurally nonzero entries only.
+pub fn matrix(graph: &Graph, target: &TokenStream, rows: &[Vec<Id>]) -> Vec<Assign> {
+    let mut out = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        for (j, &value) in row.iter().enumerate() {
+            if !graph.is_zero(value) {
+                let (i, j) = (Literal::usize_unsuffixed(i), Literal::usize_unsuffixed(j));
+                out.push(Assign::set(quote! { #target[(#i, #j)] }, value));
+            }
+        }
+    }
+    out
+}
+
+/// Emits every method of a primitive model.
+pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
+    let e = Emitter { model };
+    let g = &model.graph;
+    let out = quote! { out };
+    let (residual_blocks, jacobian_blocks) = (residual_blocks(b), jacobian_blocks(g, b));
+    let residual = vector(&out, &b.flat_residual);
+    let jacobian = matrix(g, &out, &b.flat_jacobian);
+    let mut both = vector(&out, &b.flat_residual);
+    both.extend(matrix(g, &quote! { jac }, &b.flat_jacobian));
+    let counts = OpCounts {
+        residual: op_count(g, &residual),
+        jacobian: op_count(g, &jacobian),
+        residual_and_jacobian: op_count(g, &both),
+        residual_blocks: op_count(g, &residual_blocks),
+        jacobian_blocks: op_count(g, &jacobian_blocks),
+    };
+    let table: [(Signature, Vec<Assign>); 17] = [
+        (LAGRANGIAN, vec![Assign::set(quote! { value }, b.lagrangian)]),
+        (DL_DQ, vector(&out, &b.dl_dq)),
+        (DL_DV, vector(&out, &b.dl_dv)),
+        (L_QQ, matrix(g, &out, &b.l_qq)),
+        (L_VQ, matrix(g, &out, &b.l_vq)),
+        (L_VV, matrix(g, &out, &b.l_vv)),
+        (FORCE, vector(&out, &b.force)),
+        (FORCE_DQ, matrix(g, &out, &b.force_dq)),
+        (FORCE_DV, matrix(g, &out, &b.force_dv)),
+        (CONSTRAINT_MATRIX, matrix(g, &out, &b.a)),
+        (DAV_DQ, matrix(g, &out, &b.dav_dq)),
+        (DATL_DQ, matrix(g, &out, &b.datl_dq)),
+        (HOLONOMIC, vector(&out, &b.phi)),
+        (RESIDUAL_BLOCKS, residual_blocks),
+        (JACOBIAN_BLOCKS, jacobian_blocks),
+        (RESIDUAL, residual),
+        (JACOBIAN, jacobian),
+    ];
+    let methods = table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
+    Generated { methods, sparse: e.csc_jacobian(&b.flat_jacobian), counts }
+}
+
+fn residual_blocks(b: &Blocks) -> Vec<Assign> {
+    let mut assigns = vector(&quote! { out.momentum_rate }, &b.momentum_rate);
+    assigns.extend(vector(&quote! { out.dl_dv }, &b.dl_dv));
+    assigns.extend(vector(&quote! { out.constraint_velocity }, &b.a_v));
+    assigns
+}
+
+fn jacobian_blocks(g: &Graph, b: &Blocks) -> Vec<Assign> {
+    let mut assigns = matrix(g, &quote! { out.dpdot_dq }, &b.dpdot_dq);
+    assigns.extend(matrix(g, &quote! { out.dpdot_dv }, &b.dpdot_dv));
+    assigns.extend(matrix(g, &quote! { out.l_vq }, &b.l_vq));
+    assigns.extend(matrix(g, &quote! { out.l_vv }, &b.l_vv));
+    assigns.extend(matrix(g, &quote! { out.a }, &b.a));
+    assigns.extend(matrix(g, &quote! { out.dav_dq }, &b.dav_dq));
+    assigns
+}
+
+/// Writes methods of one primitive model.
+struct Emitter<'a> {
+    model: &'a SymModel,
+}
+
+impl Emitter<'_> {
+    /// The tokens that read symbol `sym` inside a method, from `y` if `flat`.
+    fn leaf(&self, sym: u32, flat: bool) -> TokenStream {
+        let index = Literal::usize_unsuffixed;
+        let n = self.model.n();
+        match self.model.kind(sym) {
+            Sym::Parameter(i) => {
+                let field = &self.model.params[i];
+                quote! { self.#field }
+            }
+            Sym::Time => quote! { t },
+            kind if flat => {
+                let k = index(kind.flat_slot(n).expect("a part of the state"));
+                quote! { y[#k] }
+            }
+            Sym::Coordinate(i) => {
+                let i = index(i);
+                quote! { q[#i] }
+            }
+            Sym::Velocity(i) => {
+                let i = index(i);
+                quote! { v[#i] }
+            }
+            Sym::Multiplier(j) => {
+                let j = index(j);
+                quote! { lambda[#j] }
+            }
+            kind => unreachable!("{kind:?} is read only from the flat state or not at all"),
+        }
+    }
+
+    /// Whether any assignment reads a symbol that argument `arg` provides.
+    fn uses(&self, assigns: &[Assign], arg: Arg) -> bool {
+        let g = &self.model.graph;
+        assigns.iter().any(|a| {
+            g.deps(a.value).iter().any(|s| match (arg, self.model.kind(s)) {
+                (Arg::T, Sym::Time) => true,
+                (Arg::Q, Sym::Coordinate(_))
+                | (Arg::V, Sym::Velocity(_))
+                | (Arg::Lambda, Sym::Multiplier(_)) => true,
+                (Arg::Y, k) => {
+                    matches!(k, Sym::Coordinate(_) | Sym::Velocity(_) | Sym::Momentum(_) | Sym::Multiplier(_))
+                }
+                _ => false,
+            })
+        })
+    }
+
+    /// One trait method: its header (`_x` for unused arguments) and a body that starts with
+    /// `check` (a precondition on the arguments) and computes `assigns`.
+    fn method(&self, sig: &Signature, assigns: &[Assign], check: TokenStream) -> TokenStream {
+        let flat = sig.args.contains(&Arg::Y);
+        let header = sig.header(|arg| self.uses(assigns, arg), !assigns.is_empty() || !check.is_empty());
+        let body = emit(&self.model.graph, assigns, &|s| self.leaf(s, flat));
+        match sig.out {
+            Out::Scalar => quote! {
+                #[inline]
+                #header { let value: ::core::primitive::f64; #body value }
+            },
+            _ => quote! {
+                #[inline]
+                #header { #check #body }
+            },
+        }
+    }
+
+    /// The items of the `SparseJacobian` impl: the pattern of `jac` (every entry that is not
+    /// structurally zero) in compressed sparse columns, and `jacobian_csc` writing those entries
+    /// in that order.
+    fn csc_jacobian(&self, jac: &[Vec<Id>]) -> TokenStream {
+        let g = &self.model.graph;
+        let mut starts = vec![0usize];
+        let mut rows = Vec::new();
+        let mut assigns = Vec::new();
+        for col in 0..jac.first().map_or(0, Vec::len) {
+            for (row, entries) in jac.iter().enumerate() {
+                let value = entries[col];
+                if !g.is_zero(value) {
+                    let k = Literal::usize_unsuffixed(rows.len());
+                    assigns.push(Assign::set(quote! { out[#k] }, value));
+                    rows.push(row);
+                }
+            }
+            starts.push(rows.len());
+        }
+        let nnz = rows.len();
+        let check = quote! {
+            ::core::assert_eq!(
+                out.len(),
+                #nnz,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
+            );
+        };
+        let method = self.method(&JACOBIAN_CSC, &assigns, check);
+        quote! {
+            const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[#(#starts),*];
+            const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[#(#rows),*];
+            #method
+        }
+    }
+}

@@ -1,0 +1,159 @@
+//! The methods of the runtime's `LagrangeDirac` trait that every model implements, as data:
+//! name, arguments and output. Primitive models, composites and the stub emitted next to
+//! errors all write their methods from this one table.
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+/// The path to the runtime's items for generated code.
+pub fn rt() -> TokenStream {
+    quote! { ::dirac::__private }
+}
+
+/// An argument of a generated method.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Arg {
+    /// Time `t`.
+    T,
+    /// Positions `q`.
+    Q,
+    /// Velocities `v`.
+    V,
+    /// Multipliers `λ`.
+    Lambda,
+    /// The flat state `y = (q, v, p, λ)`.
+    Y,
+}
+
+/// What a method returns (a scalar) or writes into its `out` argument.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Out {
+    Scalar,
+    VecQ,
+    VecH,
+    MatQQ,
+    MatCQ,
+    ResidualBlocks,
+    JacobianBlocks,
+    VecY,
+    MatYY,
+    /// A slice of values, `&mut [f64]`.
+    Values,
+}
+
+/// One trait method.
+#[derive(Clone, Copy, Debug)]
+pub struct Signature {
+    pub name: &'static str,
+    pub args: &'static [Arg],
+    pub out: Out,
+}
+
+const fn method(name: &'static str, args: &'static [Arg], out: Out) -> Signature {
+    Signature { name, args, out }
+}
+
+use Arg::{Lambda, Q, T, V, Y};
+
+pub const LAGRANGIAN: Signature = method("lagrangian", &[T, Q, V], Out::Scalar);
+pub const DL_DQ: Signature = method("dl_dq", &[T, Q, V], Out::VecQ);
+pub const DL_DV: Signature = method("dl_dv", &[T, Q, V], Out::VecQ);
+pub const L_QQ: Signature = method("l_qq", &[T, Q, V], Out::MatQQ);
+pub const L_VQ: Signature = method("l_vq", &[T, Q, V], Out::MatQQ);
+pub const L_VV: Signature = method("l_vv", &[T, Q, V], Out::MatQQ);
+pub const FORCE: Signature = method("force", &[T, Q, V], Out::VecQ);
+pub const FORCE_DQ: Signature = method("force_dq", &[T, Q, V], Out::MatQQ);
+pub const FORCE_DV: Signature = method("force_dv", &[T, Q, V], Out::MatQQ);
+pub const CONSTRAINT_MATRIX: Signature = method("constraint_matrix", &[Q], Out::MatCQ);
+pub const DAV_DQ: Signature = method("dav_dq", &[Q, V], Out::MatCQ);
+pub const DATL_DQ: Signature = method("datl_dq", &[Q, Lambda], Out::MatQQ);
+pub const HOLONOMIC: Signature = method("holonomic", &[Q], Out::VecH);
+pub const RESIDUAL_BLOCKS: Signature = method("residual_blocks", &[T, Q, V, Lambda], Out::ResidualBlocks);
+pub const JACOBIAN_BLOCKS: Signature = method("jacobian_blocks", &[T, Q, V, Lambda], Out::JacobianBlocks);
+/// Provided by the trait from the blocks; primitives emit a specialised version.
+pub const RESIDUAL: Signature = method("residual", &[T, Y], Out::VecY);
+/// Provided by the trait from the blocks; primitives emit a specialised version.
+pub const JACOBIAN: Signature = method("jacobian", &[T, Y], Out::MatYY);
+
+/// `SparseJacobian::jacobian_csc`, which primitives implement.
+pub const JACOBIAN_CSC: Signature = method("jacobian_csc", &[T, Y], Out::Values);
+
+/// The methods every model must implement, in the order they are emitted.
+pub const REQUIRED: [Signature; 15] = [
+    LAGRANGIAN,
+    DL_DQ,
+    DL_DV,
+    L_QQ,
+    L_VQ,
+    L_VV,
+    FORCE,
+    FORCE_DQ,
+    FORCE_DV,
+    CONSTRAINT_MATRIX,
+    DAV_DQ,
+    DATL_DQ,
+    HOLONOMIC,
+    RESIDUAL_BLOCKS,
+    JACOBIAN_BLOCKS,
+];
+
+impl Arg {
+    /// The parameter's name and type.
+    fn parameter(self) -> (&'static str, TokenStream) {
+        let p = rt();
+        match self {
+            Arg::T => ("t", quote! { ::core::primitive::f64 }),
+            Arg::Q => ("q", quote! { &#p::VecQ<Self> }),
+            Arg::V => ("v", quote! { &#p::VecQ<Self> }),
+            Arg::Lambda => ("lambda", quote! { &#p::VecC<Self> }),
+            Arg::Y => ("y", quote! { &#p::VecY<Self> }),
+        }
+    }
+}
+
+impl Out {
+    /// The type written, for a model type `model` (`Self` inside an impl).
+    pub fn ty(self, model: &TokenStream) -> TokenStream {
+        let p = rt();
+        match self {
+            Out::Scalar => quote! { ::core::primitive::f64 },
+            Out::VecQ => quote! { #p::VecQ<#model> },
+            Out::VecH => quote! { #p::VecH<#model> },
+            Out::MatQQ => quote! { #p::MatQQ<#model> },
+            Out::MatCQ => quote! { #p::MatCQ<#model> },
+            Out::ResidualBlocks => quote! { #p::ResidualBlocks<#model> },
+            Out::JacobianBlocks => quote! { #p::JacobianBlocks<#model> },
+            Out::VecY => quote! { #p::VecY<#model> },
+            Out::MatYY => quote! { #p::MatYY<#model> },
+            Out::Values => quote! { [::core::primitive::f64] },
+        }
+    }
+}
+
+impl Signature {
+    /// `fn name(&self, t: f64, q: &VecQ<Self>, …, out: &mut X)` (or `-> f64`), naming an
+    /// argument `_x` when `used(arg)` says the body does not read it, and `out` `_out` when
+    /// `out_used` is false.
+    pub fn header(&self, used: impl Fn(Arg) -> bool, out_used: bool) -> TokenStream {
+        let name = format_ident!("{}", self.name);
+        let params = self.args.iter().map(|&arg| {
+            let (base, ty) = arg.parameter();
+            let ident = if used(arg) { format_ident!("{}", base) } else { format_ident!("_{}", base) };
+            quote! { #ident: #ty }
+        });
+        match self.out {
+            Out::Scalar => quote! { fn #name(&self, #(#params,)*) -> ::core::primitive::f64 },
+            out => {
+                let ty = out.ty(&quote! { Self });
+                let out = if out_used { format_ident!("out") } else { format_ident!("_out") };
+                quote! { fn #name(&self, #(#params,)* #out: &mut #ty) }
+            }
+        }
+    }
+
+    /// The method with a body that is never run, for the stub next to compile errors.
+    pub fn unreachable(&self) -> TokenStream {
+        let header = self.header(|_| false, false);
+        quote! { #header { ::core::unreachable!("this model did not compile") } }
+    }
+}

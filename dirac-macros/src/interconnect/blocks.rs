@@ -1,0 +1,60 @@
+//! The block table of a composite's own interconnection rows `Ω(q) v = 0`: their first and
+//! second derivatives with respect to the subsystem members they name, and those times the
+//! rows' multipliers μ, computed once. The subsystems' blocks come from their own impls.
+
+use super::model::CompositeModel;
+use crate::sym::Id;
+
+/// The derivatives of the rows `Ω_j` with respect to members `s_k`, as graph ids.
+pub struct CompositeBlocks {
+    /// `∂Ω_j/∂s_k`.
+    pub d: Vec<Vec<Id>>,
+    /// `∂²Ω_j/∂s_k∂s_l`.
+    pub h: Vec<Vec<Vec<Id>>>,
+    /// `μ_j ∂Ω_j/∂s_k`: the interconnection forces.
+    pub mu_d: Vec<Vec<Id>>,
+    /// `μ_j ∂²Ω_j/∂s_k∂s_l`: the forces' derivatives.
+    pub mu_h: Vec<Vec<Vec<Id>>>,
+}
+
+impl CompositeBlocks {
+    /// Differentiates the rows once, in a fixed order (the order of the graph's nodes, which
+    /// orders the terms of emitted sums).
+    pub fn derive(m: &mut CompositeModel) -> CompositeBlocks {
+        let (rows, members) = (m.rows.len(), m.members());
+        let ids: Vec<Id> = (0..members).map(|k| m.symbols.member_id(k)).collect();
+        let g = &mut m.graph;
+        let zero = g.num(0.0);
+        let mut d = vec![vec![zero; members]; rows];
+        let mut h = vec![vec![vec![zero; members]; members]; rows];
+        for j in 0..rows {
+            for k in 0..members {
+                d[j][k] = g.diff(m.rows[j].omega, ids[k]);
+                if !g.is_zero(d[j][k]) {
+                    for l in 0..members {
+                        h[j][k][l] = g.diff(d[j][k], ids[l]);
+                    }
+                }
+            }
+        }
+        let mut mu_d = vec![vec![zero; members]; rows];
+        for j in 0..rows {
+            for k in 0..members {
+                if !g.is_zero(d[j][k]) {
+                    mu_d[j][k] = g.mul2(m.mu[j], d[j][k]);
+                }
+            }
+        }
+        let mut mu_h = vec![vec![vec![zero; members]; members]; rows];
+        for j in 0..rows {
+            for k in 0..members {
+                for l in 0..members {
+                    if !g.is_zero(h[j][k][l]) {
+                        mu_h[j][k][l] = g.mul2(m.mu[j], h[j][k][l]);
+                    }
+                }
+            }
+        }
+        CompositeBlocks { d, h, mu_d, mu_h }
+    }
+}

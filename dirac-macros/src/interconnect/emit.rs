@@ -1,0 +1,159 @@
+//! Emission of a composite's own part of each method: its interconnection rows, their
+//! derivatives and forces, from the composite's block table. The symbols of those rows stand
+//! for subsystem members whose indices and roles (coordinate or velocity) are constants
+//! `__R<k>` resolved during compilation, so every `if __R<k>.velocity` below is decided by the
+//! compiler.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+use super::blocks::CompositeBlocks;
+use super::model::CompositeModel;
+use crate::sym::emit::{Assign, emit, op_count};
+use crate::symbols::Sym;
+
+/// The constant naming subsystem member `k` once resolved.
+pub fn r_ident(k: usize) -> proc_macro2::Ident {
+    format_ident!("__R{}", k)
+}
+
+fn lit(i: usize) -> Literal {
+    Literal::usize_unsuffixed(i)
+}
+
+/// A composite's rows and their blocks, ready to emit.
+pub struct Own<'a> {
+    pub model: &'a CompositeModel,
+    pub blocks: &'a CompositeBlocks,
+}
+
+/// Statements that zero entries before the own assignments add to them.
+pub struct Part {
+    pub zero: TokenStream,
+    pub assigns: Vec<Assign>,
+}
+
+impl Own<'_> {
+    /// `let rK = …;` for every subsystem member the assignments read, then the statements;
+    /// a member that is a velocity reads `v` when the method has velocities (`has_v`).
+    pub fn body(&self, assigns: &[Assign], has_v: bool) -> TokenStream {
+        let m = self.model;
+        let mut used = vec![false; m.members()];
+        for a in assigns {
+            for s in m.graph.deps(a.value).iter() {
+                if let Sym::Member(k) = m.kind(s) {
+                    used[k] = true;
+                }
+            }
+        }
+        let mut preamble = TokenStream::new();
+        for (k, _) in used.iter().enumerate().filter(|(_, u)| **u) {
+            let (r, local) = (r_ident(k), format_ident!("r{}", k));
+            let velocity = if has_v {
+                quote! { v[#r.index] }
+            } else {
+                quote! { 0.0 }
+            };
+            preamble.extend(quote! { let #local = if #r.velocity { #velocity } else { q[#r.index] }; });
+        }
+        let leaf = |s: u32| match m.kind(s) {
+            Sym::Parameter(i) => {
+                let field = &m.params[i];
+                quote! { self.#field }
+            }
+            Sym::Member(k) => {
+                let local = format_ident!("r{}", k);
+                quote! { #local }
+            }
+            Sym::Multiplier(j) => {
+                let j = lit(j);
+                quote! { lambda[__OMEGA + #j] }
+            }
+            kind => unreachable!("interconnection rows do not depend on {kind:?}"),
+        };
+        let statements = emit(&m.graph, assigns, &leaf);
+        quote! { #preamble #statements }
+    }
+
+    /// Zeroes the interconnection rows of an `m × n` matrix, then adds their entries.
+    /// `velocity` selects `A` (coefficients of velocities) or `∂(Av)/∂q` (of coordinates).
+    pub fn rows_into(&self, target: &TokenStream, velocity: bool) -> Part {
+        let k_rows = lit(self.model.rows.len());
+        let zero = quote! {
+            for __j in 0..#k_rows {
+                for __i in 0..__NQ {
+                    #target[(__OMEGA + __j, __i)] = 0.0;
+                }
+            }
+        };
+        let mut assigns = Vec::new();
+        for (j, row) in self.blocks.d.iter().enumerate() {
+            for (k, &d) in row.iter().enumerate().filter(|(_, d)| !self.model.graph.is_zero(**d)) {
+                let r = r_ident(k);
+                let guard = if velocity {
+                    quote! { #r.velocity }
+                } else {
+                    quote! { !#r.velocity }
+                };
+                let jl = lit(j);
+                assigns.push(Assign::add_if(guard, quote! { #target[(__OMEGA + #jl, #r.index)] }, d));
+            }
+        }
+        Part { zero, assigns }
+    }
+
+    /// `target[j] = Ω_j` for the interconnection rows of a vector over constraints.
+    pub fn omega_values(&self, target: &TokenStream) -> Vec<Assign> {
+        let rows = self.model.rows.iter().enumerate();
+        rows.map(|(j, row)| {
+            let j = lit(j);
+            Assign::set(quote! { #target[__OMEGA + #j] }, row.omega)
+        })
+        .collect()
+    }
+
+    /// `target[i] += (Ωᵀμ)_i`: the interconnection forces, added to a vector over coordinates.
+    pub fn forces_into(&self, target: &TokenStream) -> Vec<Assign> {
+        let mut assigns = Vec::new();
+        for row in &self.blocks.mu_d {
+            for (k, &value) in row.iter().enumerate().filter(|(_, x)| !self.model.graph.is_zero(**x)) {
+                let r = r_ident(k);
+                assigns.push(Assign::add_if(quote! { #r.velocity }, quote! { #target[#r.index] }, value));
+            }
+        }
+        assigns
+    }
+
+    /// `target += ∂(Ωᵀμ)/∂q` on an `n × n` matrix whose subsystem diagonal blocks were just
+    /// written: entries between two subsystems are zeroed first.
+    pub fn datl_into(&self, target: &TokenStream) -> Part {
+        let (mut zero, mut assigns) = (TokenStream::new(), Vec::new());
+        let m = self.model;
+        for row in &self.blocks.mu_h {
+            for (k, column) in row.iter().enumerate() {
+                for (l, &value) in column.iter().enumerate().filter(|(_, x)| !m.graph.is_zero(**x)) {
+                    let (rk, rl) = (r_ident(k), r_ident(l));
+                    let guard = quote! { #rk.velocity && !#rl.velocity };
+                    let entry = quote! { #target[(#rk.index, #rl.index)] };
+                    if m.symbols.member_at(k).path[0] != m.symbols.member_at(l).path[0] {
+                        zero.extend(quote! { if #guard { #entry = 0.0; } });
+                    }
+                    assigns.push(Assign::add_if(guard, entry, value));
+                }
+            }
+        }
+        Part { zero, assigns }
+    }
+
+    /// Arithmetic operations of the interconnection part of the residual and Jacobian blocks.
+    pub fn op_counts(&self) -> (usize, usize) {
+        let out = quote! { out };
+        let mut residual = self.omega_values(&out);
+        residual.extend(self.forces_into(&out));
+        let mut jacobian = self.rows_into(&out, true).assigns;
+        jacobian.extend(self.rows_into(&out, false).assigns);
+        jacobian.extend(self.datl_into(&out).assigns);
+        let g = &self.model.graph;
+        (op_count(g, &residual), op_count(g, &jacobian))
+    }
+}

@@ -1,0 +1,216 @@
+//! A composite's names and equations for people, and its inherent items: the functions that
+//! lift a subsystem's keys into the composite (`Chain::left(Primitive1::X1)`) and the
+//! constants that name its ports and interconnection rows.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+use syn::ext::IdentExt;
+
+use super::ast::Composite;
+use super::model::CompositeModel;
+use crate::codegen::signatures::rt;
+use crate::sym::pretty::{Style, pretty};
+use crate::symbols::Sym;
+
+/// The `Named` impl: the composite's own rows and its subsystems' name trees.
+pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenStream) -> TokenStream {
+    let p = rt();
+    let ident = composite.ident;
+    let rows = model.rows.iter().map(|r| &r.name);
+    let subsystems = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (ty, field) = (&s.ty, s.ident.unraw().to_string());
+        let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
+        quote! {
+            #p::Subsystem {
+                field: #field,
+                names: <#ty as #p::Named>::NAMES,
+                q_offset: #qi,
+                h_offset: #hi,
+                v_offset: #vi,
+            }
+        }
+    });
+    quote! {
+        #[automatically_derived]
+        impl #p::Named for #ident #bounds {
+            const NAMES: &'static #p::Names = &#p::Names {
+                coordinates: &[],
+                velocities: &[],
+                constraints: &[#(#rows),*],
+                holonomic: 0,
+                ports: &[],
+                subsystems: &[#(#subsystems),*],
+            };
+        }
+    }
+}
+
+/// The name of a symbol of the interconnection rows, for people.
+fn display_name(model: &CompositeModel, s: u32, style: Style) -> String {
+    match model.kind(s) {
+        Sym::Parameter(i) => model.params[i].to_string(),
+        Sym::Member(k) => {
+            let member = model.symbols.member_at(k);
+            let dotted = member.dotted();
+            match (style, member.port) {
+                (Style::Text, true) => format!("v[{dotted}]"),
+                (Style::Latex, true) => format!("v_{{\\mathrm{{{}}}}}", dotted.replace('_', "\\_")),
+                (Style::Text, false) => dotted,
+                (Style::Latex, false) => format!("\\mathrm{{{}}}", dotted.replace('_', "\\_")),
+            }
+        }
+        Sym::Multiplier(j) => format!("mu_{}", model.rows[j].name),
+        Sym::Time => "t".to_owned(),
+        kind => unreachable!("interconnection rows do not depend on {kind:?}"),
+    }
+}
+
+/// `fn equations()`: the subsystems' equations, then the interconnection rows.
+pub fn equations(composite: &Composite<'_>, model: &CompositeModel) -> TokenStream {
+    let p = rt();
+    let fields: Vec<String> = composite.subsystems.iter().map(|s| s.ident.unraw().to_string()).collect();
+    let header = format!("{}: interconnection of {}", composite.ident, fields.join(", "));
+    let show = |style: Style| -> Vec<String> {
+        let name = |s: u32| display_name(model, s, style);
+        let rows = model.rows.iter();
+        rows.map(|row| {
+            let omega = pretty(&model.graph, row.omega, style, &name);
+            match style {
+                Style::Text => format!("0 = {omega}    ({}, multiplier mu_{})", row.name, row.name),
+                Style::Latex => format!("0 &= {omega} && \\text{{({})}}", row.name.replace('_', "\\_")),
+            }
+        })
+        .collect()
+    };
+    let text_rows = show(Style::Text).join("\n");
+    let latex_rows = show(Style::Latex).join(" \\\\\n");
+    let (fields_a, fields_b) = (fields.iter(), fields.iter());
+    let (types_a, types_b) =
+        (composite.subsystems.iter().map(|s| &s.ty), composite.subsystems.iter().map(|s| &s.ty));
+    quote! {
+        fn equations() -> #p::Equations {
+            let mut text = ::std::string::String::new();
+            text.push_str(#header);
+            let mut latex = ::std::string::String::new();
+            #(
+                text.push_str(&::std::format!("\n[{}]\n{}", #fields_a, <#types_a as #p::LagrangeDirac>::equations().text));
+            )*
+            #(
+                latex.push_str(&::std::format!("\\text{{{}:}}\\\\\n{}\n", #fields_b, <#types_b as #p::LagrangeDirac>::equations().latex));
+            )*
+            text.push_str("\n[interconnection]\n");
+            text.push_str(#text_rows);
+            latex.push_str("\\begin{aligned}\n");
+            latex.push_str(#latex_rows);
+            latex.push_str("\n\\end{aligned}");
+            #p::Equations { text: #p::Cow::Owned(text), latex: #p::Cow::Owned(latex) }
+        }
+    }
+}
+
+/// Where the inherent items point: at resolved indices, or (in the stub emitted next to
+/// errors) nowhere in particular.
+pub enum Targets<'a> {
+    Resolved(&'a CompositeModel),
+    Stub,
+}
+
+/// `Chain::left(c)`, `Chain::left_constraint(k)`, port constants and interconnection constants.
+pub fn inherent_items(composite: &Composite<'_>, targets: Targets<'_>, bounds: &TokenStream) -> TokenStream {
+    let p = rt();
+    let (ident, vis) = (composite.ident, composite.vis);
+    let stub = matches!(targets, Targets::Stub);
+    let lifts = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (field, ty) = (&s.ident, &s.ty);
+        let name = field.unraw().to_string();
+        let lift_constraint = format_ident!("{}_constraint", field.unraw());
+        let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
+        let doc = format!("A coordinate of the subsystem `{name}` as a coordinate of this interconnection.");
+        let doc_c =
+            format!("A constraint of the subsystem `{name}` as a constraint of this interconnection.");
+        let (coordinate, constraint) = if stub {
+            (quote! { let _ = c; #p::Coordinate::new(0) }, quote! { let _ = k; #p::Constraint::new(0) })
+        } else {
+            (
+                quote! { #p::Coordinate::new(c.index() + #qi) },
+                quote! {
+                    let nh = <#ty as #p::Dimensions>::NH;
+                    #p::Constraint::new(if k.index() < nh { #hi + k.index() } else { #vi + k.index() - nh })
+                },
+            )
+        };
+        quote! {
+            #[doc = #doc]
+            #vis const fn #field(c: #p::Coordinate<#ty>) -> #p::Coordinate<Self> {
+                #coordinate
+            }
+            #[doc = #doc_c]
+            #vis const fn #lift_constraint(k: #p::Constraint<#ty>) -> #p::Constraint<Self> {
+                #constraint
+            }
+        }
+    });
+    let constants = constants(composite, &targets);
+    quote! {
+        #[automatically_derived]
+        impl #ident #bounds {
+            #(#lifts)*
+            #constants
+        }
+    }
+}
+
+/// One constant per port (`LEFT_X2`) and per interconnection row (`CONNECT0`, `GEAR`).
+fn constants(composite: &Composite<'_>, targets: &Targets<'_>) -> TokenStream {
+    let p = rt();
+    let vis = composite.vis;
+    let (ports, rows): (Vec<(String, TokenStream)>, Vec<String>) = match targets {
+        Targets::Resolved(model) => {
+            let ports = model.symbols.members().enumerate().filter(|(_, (m, _))| m.port);
+            let ports = ports.map(|(k, (m, _))| {
+                let rk = format_ident!("__R{}", k);
+                (m.dotted(), quote! { #rk.index })
+            });
+            (ports.collect(), model.rows.iter().map(|r| r.name.clone()).collect())
+        }
+        Targets::Stub => {
+            let ports = composite.connections.iter().flat_map(|c| [&c.a, &c.b]);
+            let rows = composite.connections.iter().enumerate().map(|(i, _)| format!("connect{i}"));
+            let named = composite.constraints.iter().enumerate();
+            let named = named
+                .map(|(i, c)| c.name.as_ref().map_or_else(|| format!("constraint{i}"), ToString::to_string));
+            (ports.map(|m| (m.dotted(), quote! { 0 })).collect(), rows.chain(named).collect())
+        }
+    };
+    let mut seen = Vec::new();
+    let mut out = TokenStream::new();
+    for (dotted, index) in ports {
+        let name = dotted.replace('.', "_").to_uppercase();
+        if !seen.contains(&name) {
+            let c = format_ident!("{}", name);
+            let doc = format!("The port `{dotted}`: its effort is the interconnection force there.");
+            out.extend(
+                quote! { #[doc = #doc] #vis const #c: #p::Coordinate<Self> = #p::Coordinate::new(#index); },
+            );
+            seen.push(name);
+        }
+    }
+    for (j, row) in rows.iter().enumerate() {
+        let name = row.to_uppercase();
+        if !seen.contains(&name) {
+            let c = format_ident!("{}", name);
+            let index = if matches!(targets, Targets::Stub) {
+                quote! { 0 }
+            } else {
+                let j = Literal::usize_unsuffixed(j);
+                quote! { __OMEGA + #j }
+            };
+            let doc = format!("The interconnection constraint `{row}`: names its row and multiplier μ.");
+            out.extend(
+                quote! { #[doc = #doc] #vis const #c: #p::Constraint<Self> = #p::Constraint::new(#index); },
+            );
+            seen.push(name);
+        }
+    }
+    out
+}

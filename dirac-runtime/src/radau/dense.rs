@@ -1,0 +1,70 @@
+//! Dense output: the collocation polynomial of the last accepted step, for sampling between
+//! steps and for the starting values of the next step's Newton iteration.
+
+use nalgebra::DefaultAllocator;
+
+use super::tableau::{C1, C2};
+use crate::dims::{Storage, VecY};
+use crate::model::LagrangeDirac;
+use crate::state::State;
+
+/// The last step's collocation polynomial, as Newton divided differences at `s = c − 1`.
+pub(crate) struct Dense<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    cont: [VecY<M>; 3],
+    /// The size of the last accepted step.
+    pub h: f64,
+}
+
+impl<M: LagrangeDirac> Dense<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new() -> Self {
+        Dense { cont: [VecY::<M>::zeros(), VecY::<M>::zeros(), VecY::<M>::zeros()], h: 0.0 }
+    }
+
+    /// Takes the polynomial of a step of size `h` with stage increments `z`.
+    pub fn update(&mut self, z: &[VecY<M>; 3], h: f64) {
+        let (c1m1, c2m1, c1mc2) = (C1 - 1.0, C2 - 1.0, C1 - C2);
+        let stages = z[0].iter().zip(z[1].iter()).zip(z[2].iter());
+        for (i, ((&z1, &z2), &z3)) in stages.enumerate() {
+            let d1 = (z2 - z3) / c2m1;
+            let ak = (z1 - z2) / c1mc2;
+            let acont3 = (ak - z1 / C1) / C2;
+            let d2 = (ak - d1) / c1m1;
+            self.cont[0][i] = d1;
+            self.cont[1][i] = d2;
+            self.cont[2][i] = d2 - acont3;
+        }
+        self.h = h;
+    }
+
+    /// The polynomial's increment over the step's end value at `s` step sizes from the end.
+    fn increment(&self, i: usize, s: f64) -> f64 {
+        let (s1, s2) = (C1 - 1.0, C2 - 1.0);
+        let d = &self.cont;
+        s * (d[0][i] + (s - s2) * (d[1][i] + (s - s1) * d[2][i]))
+    }
+
+    /// The state at `t` within the last step, which ended at `t_end` in `y`.
+    pub fn interpolate(&self, y: &VecY<M>, t_end: f64, t: f64, out: &mut State<M>) {
+        let s = (t - t_end) / self.h;
+        for (i, x) in out.components_mut().enumerate() {
+            *x = y[i] + self.increment(i, s);
+        }
+    }
+
+    /// Starting values of the stages of a next step of size `h`: the polynomial extrapolated
+    /// to its nodes.
+    pub fn extrapolate(&self, h: f64, z: &mut [VecY<M>; 3]) {
+        for (zk, ck) in z.iter_mut().zip([C1, C2, 1.0]) {
+            let s = ck * h / self.h;
+            for i in 0..zk.len() {
+                zk[i] = self.increment(i, s);
+            }
+        }
+    }
+}

@@ -1,0 +1,150 @@
+//! Radau's options and statistics, and the tolerances as its error estimate uses them.
+
+use nalgebra::DefaultAllocator;
+
+use crate::dims::{Storage, VecY};
+use crate::error::SimError;
+use crate::layout::Layout;
+use crate::model::LagrangeDirac;
+use crate::state::State;
+
+/// Tolerances and limits of a Radau integration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RadauOptions {
+    /// Relative tolerance (default `1e-6`).
+    pub rtol: f64,
+    /// Absolute tolerance (default `1e-8`).
+    pub atol: f64,
+    /// The first step size; by default `1e-6` of the time span.
+    pub initial_step: Option<f64>,
+    /// The largest step size (default: unbounded).
+    pub max_step: f64,
+    /// The most steps, accepted and rejected, before giving up (default `1_000_000`).
+    pub max_steps: usize,
+    /// Newton iterations per step attempt (default 7).
+    pub max_newton_iterations: usize,
+}
+
+impl Default for RadauOptions {
+    fn default() -> Self {
+        RadauOptions {
+            rtol: 1e-6,
+            atol: 1e-8,
+            initial_step: None,
+            max_step: f64::INFINITY,
+            max_steps: 1_000_000,
+            max_newton_iterations: 7,
+        }
+    }
+}
+
+impl RadauOptions {
+    /// The default options with relative and absolute tolerances `rtol` and `atol`.
+    pub fn tolerances(rtol: f64, atol: f64) -> RadauOptions {
+        RadauOptions { rtol, atol, ..RadauOptions::default() }
+    }
+
+    /// Checks every option, naming the first one out of its range.
+    pub(crate) fn validate(&self) -> Result<(), SimError> {
+        for (what, value) in [("rtol", self.rtol), ("atol", self.atol)] {
+            if value.is_nan() || value <= 0.0 || value.is_infinite() {
+                return Err(SimError::InvalidTolerance { what, value });
+            }
+        }
+        if self.max_step.is_nan() || self.max_step <= 0.0 {
+            return Err(SimError::InvalidOption {
+                what: "max_step",
+                reason: format!("{} is not positive", self.max_step),
+            });
+        }
+        if let Some(h) = self.initial_step
+            && (h.is_nan() || h <= 0.0 || h.is_infinite())
+        {
+            return Err(SimError::InvalidOption {
+                what: "initial_step",
+                reason: format!("{h} is not positive"),
+            });
+        }
+        if self.max_newton_iterations < 2 {
+            return Err(SimError::InvalidOption {
+                what: "max_newton_iterations",
+                reason: "at least 2".into(),
+            });
+        }
+        Ok(())
+    }
+}
+
+/// Counters of the work a Radau integration did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RadauStats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected step attempts (error too large, Newton failure, singular matrix).
+    pub rejected: usize,
+    /// Evaluations of the residual `f(t, y)`.
+    pub residual_evaluations: usize,
+    /// Evaluations of the Jacobian blocks.
+    pub jacobian_evaluations: usize,
+    /// LU factorisations (each a real and a complex one).
+    pub factorizations: usize,
+    /// Newton iterations.
+    pub newton_iterations: usize,
+}
+
+/// The tolerances as the error estimate and the Newton iteration use them: Hairer's
+/// transformation, under which an `rtol` of 1e-6 asks the estimator for about 1e-5 locally,
+/// so that the achieved global error follows the requested one.
+pub(crate) struct Tolerances<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    rtol: f64,
+    atol: VecY<M>,
+    /// The Newton iteration's stopping tolerance.
+    pub fnewt: f64,
+}
+
+impl<M: LagrangeDirac> Tolerances<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new(options: &RadauOptions) -> Self {
+        let rtol = 0.1 * options.rtol.powf(2.0 / 3.0);
+        let atol = rtol * options.atol / options.rtol;
+        let fnewt = (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt()));
+        Tolerances { rtol, atol: VecY::<M>::repeat(atol), fnewt }
+    }
+
+    /// Replaces the absolute tolerances by one per component of the state.
+    pub fn set_absolute(&mut self, options: &RadauOptions, atol: &State<M>) -> Result<(), SimError> {
+        if let Some(&value) = atol.components().find(|a| a.is_nan() || **a <= 0.0 || a.is_infinite()) {
+            return Err(SimError::InvalidTolerance { what: "atol", value });
+        }
+        let factor = 0.1 * options.rtol.powf(2.0 / 3.0) / options.rtol;
+        for (slot, a) in self.atol.iter_mut().zip(atol.components()) {
+            *slot = a * factor;
+        }
+        Ok(())
+    }
+
+    /// The error weights at state `y` for a step `h`: `atol + rtol |y|`, divided by `h` for
+    /// the multipliers, index-2 variables whose error estimate is one order worse.
+    pub fn weights(&self, y: &VecY<M>, h: f64, out: &mut VecY<M>) {
+        for (i, s) in out.iter_mut().enumerate() {
+            *s = self.atol[i] + self.rtol * y[i].abs();
+            if i >= Layout::<M>::LAMBDA {
+                *s /= h;
+            }
+        }
+    }
+}
+
+/// The weighted root-mean-square norm `√(Σ (x_i / w_i)² / len)`.
+pub(crate) fn norm<M: LagrangeDirac>(x: &VecY<M>, weights: &VecY<M>) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sum: f64 = x.iter().zip(weights.iter()).map(|(a, s)| (a / s) * (a / s)).sum();
+    (sum / x.len() as f64).sqrt()
+}

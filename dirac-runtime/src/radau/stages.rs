@@ -1,0 +1,214 @@
+//! The simplified Newton iteration on Radau's stage system, in the variables `w = (T⁻¹ ⊗ I) z`
+//! that split it into one real and one complex linear system (Hairer & Wanner, §IV.8), with
+//! the convergence-rate tests of RADAU5.
+
+use nalgebra::DefaultAllocator;
+
+use super::dense::Dense;
+use super::options::{RadauStats, norm};
+use super::tableau::{C1, C2, C3, Eigen, T, TI};
+use crate::dims::{Storage, VecY};
+use crate::layout::Layout;
+use crate::model::LagrangeDirac;
+use crate::newton::NewtonSolver;
+
+/// How a Newton iteration ended.
+pub(crate) enum Outcome {
+    /// Converged after this many iterations.
+    Converged(usize),
+    /// Retry with the step multiplied by this factor, for this reason.
+    Shrink(f64, &'static str),
+}
+
+/// What the iteration needs from the step it solves.
+pub(crate) struct Step<'a, M: LagrangeDirac, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub model: &'a M,
+    pub solver: &'a mut S,
+    pub t: f64,
+    pub h: f64,
+    pub y: &'a VecY<M>,
+    pub weights: &'a VecY<M>,
+    pub stats: &'a mut RadauStats,
+}
+
+/// The stage increments `z_k = Y_k − y`, their transforms `w`, the stage residuals, and the
+/// convergence history that carries over from step to step.
+pub(crate) struct Stages<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The stage increments; `z[2]` is the step's increment.
+    pub z: [VecY<M>; 3],
+    w: [VecY<M>; 3],
+    f: [VecY<M>; 3],
+    r: [VecY<M>; 3],
+    tmp: VecY<M>,
+    faccon: f64,
+    /// The last observed contraction rate; a fresh Jacobian is needed when it is not small.
+    pub theta: f64,
+}
+
+fn three<M: LagrangeDirac>() -> [VecY<M>; 3]
+where
+    DefaultAllocator: Storage<M>,
+{
+    [VecY::<M>::zeros(), VecY::<M>::zeros(), VecY::<M>::zeros()]
+}
+
+impl<M: LagrangeDirac> Stages<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new() -> Self {
+        Stages {
+            z: three(),
+            w: three(),
+            f: three(),
+            r: three(),
+            tmp: VecY::<M>::zeros(),
+            faccon: 1.0,
+            theta: 1.0,
+        }
+    }
+
+    /// Forgets the convergence history, for a new integration.
+    pub fn restart(&mut self) {
+        self.faccon = 1.0;
+        self.theta = 1.0;
+    }
+
+    /// Starting values: zero on the first step, else the last step's polynomial extrapolated.
+    pub fn initial_guess(&mut self, dense: Option<&Dense<M>>, h: f64) {
+        match dense {
+            None => {
+                for k in 0..3 {
+                    self.z[k].fill(0.0);
+                    self.w[k].fill(0.0);
+                }
+            }
+            Some(dense) => {
+                dense.extrapolate(h, &mut self.z);
+                self.transform_to_w();
+            }
+        }
+    }
+
+    /// Iterates to convergence, or says by how much to shrink the step.
+    pub fn iterate<S: NewtonSolver<M>>(
+        &mut self,
+        mut step: Step<'_, M, S>,
+        eig: &Eigen,
+        fnewt: f64,
+        max_iterations: usize,
+    ) -> Outcome {
+        let h = step.h;
+        let mut faccon = self.faccon.max(f64::EPSILON).powf(0.8);
+        let mut theta = self.theta.abs();
+        let (mut dyno_old, mut thq_old) = (1.0, 1.0);
+        for newt in 0..max_iterations {
+            if let Some(why) = self.residuals(&mut step) {
+                return Outcome::Shrink(0.5, why);
+            }
+            self.transformed_residuals(eig, h);
+            let [r1, r2, r3] = &mut self.r;
+            step.solver.solve(r1);
+            step.solver.solve_complex(r2, r3);
+            step.stats.newton_iterations += 1;
+            let dyno = {
+                let sum: f64 = self.r.iter().map(|rk| norm::<M>(rk, step.weights).powi(2)).sum();
+                (sum / 3.0).sqrt()
+            };
+            if newt >= 1 {
+                let thq = dyno / dyno_old;
+                theta = if newt == 1 { thq } else { (thq * thq_old).sqrt() };
+                thq_old = thq;
+                if theta < 0.99 {
+                    faccon = theta / (1.0 - theta);
+                    let remaining = (max_iterations - 1 - newt) as i32;
+                    let dyth = faccon * dyno * theta.powi(remaining) / fnewt;
+                    if dyth >= 1.0 {
+                        let qnewt = dyth.clamp(1e-4, 20.0);
+                        return Outcome::Shrink(
+                            0.8 * qnewt.powf(-1.0 / (4.0 + remaining as f64)),
+                            "Newton converging too slowly",
+                        );
+                    }
+                } else {
+                    return Outcome::Shrink(0.5, "Newton iteration diverging");
+                }
+            }
+            dyno_old = dyno.max(f64::EPSILON);
+            for (wk, rk) in self.w.iter_mut().zip(&self.r) {
+                *wk += rk;
+            }
+            self.transform_to_z();
+            if faccon * dyno <= fnewt {
+                self.faccon = faccon;
+                self.theta = theta;
+                return Outcome::Converged(newt + 1);
+            }
+        }
+        Outcome::Shrink(0.5, "Newton iteration did not converge")
+    }
+
+    /// The stage residuals `f(t + c_k h, y + z_k)`; the reason to shrink if one is not finite.
+    fn residuals<S>(&mut self, step: &mut Step<'_, M, S>) -> Option<&'static str>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        for ((zk, fk), ck) in self.z.iter().zip(self.f.iter_mut()).zip([C1, C2, C3]) {
+            self.tmp.copy_from(step.y);
+            self.tmp += zk;
+            step.model.residual(step.t + ck * step.h, &self.tmp, fk);
+            step.stats.residual_evaluations += 1;
+            if !fk.iter().all(|x| x.is_finite()) {
+                return Some("non-finite residual");
+            }
+        }
+        None
+    }
+
+    /// The slot of the first non-finite value among the stage residuals.
+    pub fn non_finite_slot(&self) -> usize {
+        self.f.iter().find_map(|f| f.iter().position(|v| !v.is_finite())).unwrap_or(0)
+    }
+
+    /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w`, with `M` the identity on the differential rows.
+    fn transformed_residuals(&mut self, eig: &Eigen, h: f64) {
+        let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
+        for (k, rk) in self.r.iter_mut().enumerate() {
+            for i in 0..rk.len() {
+                rk[i] = TI[k][0] * self.f[0][i] + TI[k][1] * self.f[1][i] + TI[k][2] * self.f[2][i];
+            }
+        }
+        let n = M::NQ;
+        let (q, p) = (Layout::<M>::Q, Layout::<M>::P);
+        for i in (q..q + n).chain(p..p + n) {
+            let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
+            self.r[0][i] -= gamma * w1;
+            self.r[1][i] -= alpha * w2 - beta * w3;
+            self.r[2][i] -= beta * w2 + alpha * w3;
+        }
+    }
+
+    fn transform_to_z(&mut self) {
+        for i in 0..self.z[0].len() {
+            let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
+            for (zk, tk) in self.z.iter_mut().zip(&T) {
+                zk[i] = tk[0] * w1 + tk[1] * w2 + tk[2] * w3;
+            }
+        }
+    }
+
+    fn transform_to_w(&mut self) {
+        for i in 0..self.z[0].len() {
+            let (z1, z2, z3) = (self.z[0][i], self.z[1][i], self.z[2][i]);
+            for (wk, tk) in self.w.iter_mut().zip(&TI) {
+                wk[i] = tk[0] * z1 + tk[1] * z2 + tk[2] * z3;
+            }
+        }
+    }
+}

@@ -1,0 +1,114 @@
+//! The options, counters and work space of a variational step, shared by its two paths.
+
+use nalgebra::DefaultAllocator;
+
+use crate::dims::{MatCQ, Storage, VecC, VecQ};
+use crate::error::SimError;
+use crate::lu::Lu;
+use crate::model::LagrangeDirac;
+use crate::newton::pivot_name;
+use crate::state::State;
+
+/// Newton tolerances of the two stages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VariationalOptions {
+    /// Converged when the Newton update is below `tolerance · (1 + |x|)` in every component
+    /// (default `1e-12`), or when it has stalled at round-off below `1e3 · tolerance`.
+    pub tolerance: f64,
+    /// Newton iterations allowed per stage.
+    pub max_iterations: usize,
+    /// Whether to use the shortcut for separable models ([`LagrangeDirac::SEPARABLE`] with a
+    /// nonsingular mass matrix): the same discrete equations, solved through `m × m` systems
+    /// in the multipliers as RATTLE does. On by default.
+    pub use_structure: bool,
+}
+
+impl Default for VariationalOptions {
+    fn default() -> Self {
+        VariationalOptions { tolerance: 1e-12, max_iterations: 20, use_structure: true }
+    }
+}
+
+/// Counters of the work a variational integration did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct VariationalStats {
+    /// Steps taken.
+    pub steps: usize,
+    /// Newton iterations, both stages.
+    pub newton_iterations: usize,
+    /// LU factorisations: one per Newton iteration on the general path; on the separable path
+    /// one per multiplier update and one for the velocity projection.
+    pub factorizations: usize,
+}
+
+/// The unknowns and matrices of one step, kept between steps so that a step allocates nothing
+/// and Newton starts from the previous step's solution.
+pub(crate) struct Work<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The step velocity `v = (q_{k+1} − q_k)/h`.
+    pub v: VecQ<M>,
+    /// The stage-1 impulse Λ.
+    pub big_lambda: VecC<M>,
+    /// The stage-2 impulse Γ.
+    pub gamma: VecC<M>,
+    /// `A(q_k)`.
+    pub a0: MatCQ<M>,
+    /// The `(n + m)` stage system.
+    pub lu: Lu<f64, M::Nk>,
+    /// The `m × m` systems of the separable path.
+    pub small: Lu<f64, M::Nc>,
+    /// The size of the last Newton update, for the stall test.
+    pub last_update: f64,
+    /// `∂L/∂q` at the current point (separable models: independent of `v`).
+    pub dl_dq: VecQ<M>,
+}
+
+impl<M: LagrangeDirac> Work<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new() -> Self {
+        Work {
+            v: VecQ::<M>::zeros(),
+            big_lambda: VecC::<M>::zeros(),
+            gamma: VecC::<M>::zeros(),
+            a0: MatCQ::<M>::zeros(),
+            lu: Lu::new(),
+            small: Lu::new(),
+            last_update: f64::INFINITY,
+            dl_dq: VecQ::<M>::zeros(),
+        }
+    }
+}
+
+/// One step from `state` at `t`, being taken.
+pub(crate) struct Step<'a, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub model: &'a M,
+    pub h: f64,
+    pub t: f64,
+    pub options: &'a VariationalOptions,
+    /// The state at the step's start; the paths write the new momenta and velocities into it.
+    pub state: &'a mut State<M>,
+    pub work: &'a mut Work<M>,
+    pub stats: &'a mut VariationalStats,
+}
+
+impl<M: LagrangeDirac> Step<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The error for a Newton iteration that ran out of iterations.
+    pub fn diverged(&self) -> SimError {
+        SimError::NewtonDiverged { t: self.t, h: self.h, iterations: self.options.max_iterations }
+    }
+
+    /// The error for a singular stage matrix, at the unknown without a pivot.
+    pub fn singular(&self, column: usize) -> SimError {
+        SimError::SingularMatrix { t: self.t, h: self.h, detail: pivot_name::<M>(column) }
+    }
+}
