@@ -18,28 +18,33 @@ pub(crate) struct Controller {
 }
 
 impl Controller {
+    #[inline]
     pub fn new() -> Self {
         Controller { first: true, last_rejected: false, h_acc: 0.0, err_acc: 0.0 }
     }
 
     /// For a new integration.
+    #[inline]
     pub fn restart(&mut self) {
         self.first = true;
         self.last_rejected = false;
     }
 
     /// Whether no step has been accepted since the start.
+    #[inline]
     pub fn first(&self) -> bool {
         self.first
     }
 
     /// Whether the error estimate should be refined: on the first step and after a rejection.
+    #[inline]
     pub fn cautious(&self) -> bool {
         self.first || self.last_rejected
     }
 
     /// The proposed `h / h_new` from the error estimate `err` of a step whose Newton iteration
     /// took `iterations` of at most `max_iterations`.
+    #[inline]
     pub fn quotient(err: f64, iterations: usize, max_iterations: usize) -> f64 {
         let max = max_iterations as f64;
         let fac = SAFE.min((1.0 + 2.0 * max) * SAFE / (iterations as f64 + 2.0 * max));
@@ -48,18 +53,21 @@ impl Controller {
 
     /// Records a rejection and returns the factor for the step after an error estimate too
     /// large (`quot` from [`Controller::quotient`]): a tenth on the first step.
+    #[inline]
     pub fn reject_for_error(&mut self, quot: f64) -> f64 {
         self.rejected();
         if self.first { 0.1 } else { 1.0 / quot }
     }
 
     /// Records a rejection for any reason.
+    #[inline]
     pub fn rejected(&mut self) {
         self.last_rejected = true;
     }
 
     /// On acceptance of a step `h` with estimate `err`: the quotient, sharpened by the
     /// predictive controller when an earlier step was accepted (`predictive`).
+    #[inline]
     pub fn accepted_quotient(&mut self, h: f64, err: f64, quot: f64, predictive: bool) -> f64 {
         let mut quot = quot;
         if predictive {
@@ -73,6 +81,7 @@ impl Controller {
 
     /// The next step size after accepting `h` with quotient `quot`, at most `max_step`, and
     /// no larger than `h` right after a rejection.
+    #[inline]
     pub fn next_step(&mut self, h: f64, quot: f64, max_step: f64) -> f64 {
         let mut h_new = (h / quot).min(max_step);
         if self.last_rejected {

@@ -27,10 +27,12 @@ where
     }
 
     /// Takes the polynomial of a step of size `h` with stage increments `z`.
+    // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
+    #[allow(clippy::needless_range_loop)]
     pub fn update(&mut self, z: &[VecY<M>; 3], h: f64) {
         let (c1m1, c2m1, c1mc2) = (C1 - 1.0, C2 - 1.0, C1 - C2);
-        let stages = z[0].iter().zip(z[1].iter()).zip(z[2].iter());
-        for (i, ((&z1, &z2), &z3)) in stages.enumerate() {
+        for i in 0..z[0].len() {
+            let (z1, z2, z3) = (z[0][i], z[1][i], z[2][i]);
             let d1 = (z2 - z3) / c2m1;
             let ak = (z1 - z2) / c1mc2;
             let acont3 = (ak - z1 / C1) / C2;

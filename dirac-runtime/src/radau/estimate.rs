@@ -46,6 +46,8 @@ where
     /// The weighted norm of `(γ/h M − J)⁻¹ (f(t, y) + M Σ e_i z_i)`, refined once with a
     /// fresh residual when `refine` (on the first step and after a rejection) and it is not
     /// below 1. `f0` is `f(t, y)` at the step's start.
+    // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
+    #[allow(clippy::needless_range_loop)]
     pub fn error<S: NewtonSolver<M>>(
         &mut self,
         step: Step<'_, M, S>,
@@ -54,9 +56,8 @@ where
         refine: bool,
     ) -> f64 {
         let h = step.h;
-        let stages = z[0].iter().zip(z[1].iter()).zip(z[2].iter());
-        for (f2, ((z1, z2), z3)) in self.f2.iter_mut().zip(stages) {
-            *f2 = (DD1 * z1 + DD2 * z2 + DD3 * z3) / h;
+        for i in 0..self.f2.len() {
+            self.f2[i] = (DD1 * z[0][i] + DD2 * z[1][i] + DD3 * z[2][i]) / h;
         }
         zero_algebraic::<M>(&mut self.f2);
         // The algebraic rows of f(t_n, y_n) vanish up to the Newton tolerance of the step that
