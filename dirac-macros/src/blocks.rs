@@ -8,6 +8,7 @@
 
 use crate::model::SymModel;
 use crate::sym::{Graph, Id};
+use crate::symbols::Sym;
 
 /// A matrix of expressions, row by row.
 pub type Matrix = Vec<Vec<Id>>;
@@ -54,6 +55,8 @@ pub struct Blocks {
     pub flat_residual: Vec<Id>,
     /// `∂f/∂y`.
     pub flat_jacobian: Matrix,
+    /// `∂(∂L/∂v)/∂t`.
+    pub l_vt: Vec<Id>,
 }
 
 /// `[∂e/∂x for x in wrt]`.
@@ -85,6 +88,7 @@ impl Blocks {
         let (n, rows) = (m.n(), m.m());
         let (q, v, p, lambda) = (m.q.clone(), m.v.clone(), m.p.clone(), m.lambda.clone());
         let (a, force, phi, lagrangian) = (m.a.clone(), m.force.clone(), m.phi.clone(), m.lagrangian);
+        let time = m.symbols.declare(&mut m.graph, Sym::Time);
         let g = &mut m.graph;
         let dl_dv = gradient(g, lagrangian, &v);
         let dl_dq = gradient(g, lagrangian, &q);
@@ -126,6 +130,7 @@ impl Blocks {
         flat_residual.extend(&a_v);
         let y: Vec<Id> = [&q, &v, &p, &lambda].into_iter().flatten().copied().collect();
         let flat_jacobian = jacobian(g, &flat_residual, &y);
+        let l_vt = dl_dv.iter().map(|&d| g.diff(d, time)).collect();
         Blocks {
             lagrangian,
             dl_dq,
@@ -147,6 +152,7 @@ impl Blocks {
             dpdot_dv,
             flat_residual,
             flat_jacobian,
+            l_vt,
         }
     }
 }

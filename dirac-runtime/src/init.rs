@@ -180,12 +180,8 @@ where
     let (mut a, mut g) = (MatCQ::<M>::zeros(), MatCQ::<M>::zeros());
     model.constraint_matrix(q, &mut a);
     model.dav_dq(q, v, &mut g);
-    // ∂²L/∂v∂t by a central difference in t: set-up only, and zero for most models.
-    let dt = 1e-6 * (1.0 + t.abs());
-    let (mut plus, mut minus) = (VecQ::<M>::zeros(), VecQ::<M>::zeros());
-    model.dl_dv(t + dt, q, v, &mut plus);
-    model.dl_dv(t - dt, q, v, &mut minus);
-    let lvt = (plus - minus) / (2.0 * dt);
+    let mut lvt = VecQ::<M>::zeros();
+    model.l_vt(t, q, v, &mut lvt);
 
     let mut kkt = DMatrix::zeros(n + m, n + m);
     kkt.view_mut((0, 0), (n, n)).copy_from(&dense(&lvv));

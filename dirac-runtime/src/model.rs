@@ -148,6 +148,9 @@ where
         out: &mut JacobianBlocks<Self>,
     );
 
+    /// `∂(∂L/∂v)/∂t`: how the momenta of a time-dependent Lagrangian change at fixed `(q, v)`.
+    fn l_vt(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecQ<Self>);
+
     /// The interconnection forces `Ωᵀμ` of the model and, scattered, of its subsystems: the
     /// efforts at the ports (zero for a primitive model).
     fn interconnection_forces(&self, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut VecQ<Self>) {

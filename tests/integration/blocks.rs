@@ -76,6 +76,7 @@ where
         close(&mats.l_vq, &dyn_of(&jb.l_vq), "l_vq");
         close(&mats.dav_dq, &dyn_of(&jb.dav_dq), "dav_dq");
         check_holonomic_rows(model, &s.q, &a);
+        check_l_vt(model, t, &s);
     }
 }
 
@@ -108,6 +109,26 @@ where
         f_v: qq(&|o| model.force_dv(t, &s.q, &s.v, o)),
         datl_dq: qq(&|o| model.datl_dq(&s.q, &s.lambda, o)),
         dav_dq: dyn_of(&dav_dq),
+    }
+}
+
+/// `∂(∂L/∂v)/∂t` against central differences of `dl_dv` in time.
+fn check_l_vt<M: LagrangeDirac>(model: &M, t: f64, s: &State<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let h = 1e-6;
+    let (mut plus, mut minus, mut exact) = (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
+    model.dl_dv(t + h, &s.q, &s.v, &mut plus);
+    model.dl_dv(t - h, &s.q, &s.v, &mut minus);
+    model.l_vt(t, &s.q, &s.v, &mut exact);
+    for i in 0..M::NQ {
+        let fd = (plus[i] - minus[i]) / (2.0 * h);
+        assert!(
+            (fd - exact[i]).abs() <= 1e-6 * exact[i].abs().max(1.0),
+            "d(dL/dv_{i})/dt: {} vs {fd}",
+            exact[i]
+        );
     }
 }
 
@@ -147,6 +168,24 @@ fn blocks_agree_with_flat_forms_for_every_model() {
     check_blocks(&coupled, 20);
     let chain = paper_chain();
     check_blocks(&chain, 21);
+    let frame = MovingFrame { m: 1.2, k: 3.0, u0: 0.7, w: 2.1 };
+    check_blocks(&frame, 22);
+    check_blocks(
+        &FramedPair { first: frame.clone(), second: MovingFrame { m: 0.8, k: 1.0, u0: -0.4, w: 0.9 } },
+        23,
+    );
+}
+
+/// `∂(∂L/∂v)/∂t` is not zero for the moving frame, so the check above has something to check:
+/// `∂L/∂v = m (v + u0 cos(w t))`, so `∂(∂L/∂v)/∂t = −m u0 w sin(w t)`.
+#[test]
+fn time_derivative_of_the_momenta_by_hand() {
+    let frame = MovingFrame { m: 1.2, k: 3.0, u0: 0.7, w: 2.1 };
+    let (q, v) = (VecQ::<MovingFrame>::new(0.3), VecQ::<MovingFrame>::new(-0.5));
+    let mut out = VecQ::<MovingFrame>::zeros();
+    frame.l_vt(0.4, &q, &v, &mut out);
+    let by_hand = -1.2 * 0.7 * 2.1 * (2.1f64 * 0.4).sin();
+    assert!((out[0] - by_hand).abs() < 1e-14, "{} vs {by_hand}", out[0]);
 }
 
 /// Structural zeros are never written: entries that stay zero in a zeroed buffer keep a

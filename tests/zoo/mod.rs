@@ -346,3 +346,23 @@ pub struct DoublePendulum {
     pub l2: f64,
     pub g: f64,
 }
+
+/// A mass on a spring seen from a frame that moves at the velocity `u0 cos(w t)`: the
+/// Lagrangian depends on time through the velocity, so `∂(∂L/∂v)/∂t` is not zero.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), port(x))]
+#[dirac(lagrangian = 0.5 * m * (v + u0 * (w * t).cos()).powi(2) - 0.5 * k * x * x)]
+pub struct MovingFrame {
+    pub m: f64,
+    pub k: f64,
+    pub u0: f64,
+    pub w: f64,
+}
+
+/// Two masses in moving frames joined at their ports.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(first.x, second.x))]
+pub struct FramedPair {
+    pub first: MovingFrame,
+    pub second: MovingFrame,
+}

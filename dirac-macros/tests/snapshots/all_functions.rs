@@ -563,6 +563,18 @@ const _: () = {
             out[(10, 4)] = s8;
             out[(10, 5)] = s26;
         }
+        #[inline]
+        fn l_vt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -878,6 +878,36 @@ const _: () = {
                 out.dav_dq[(__OMEGA + 0, __R1.index)] += -1f64;
             }
         }
+        fn l_vt(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
+                self.left
+                    .l_vt(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
+                self.right
+                    .l_vt(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+        }
         fn interconnection_forces(
             &self,
             q: &::dirac::__private::VecQ<Self>,

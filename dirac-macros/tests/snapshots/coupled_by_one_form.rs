@@ -1043,6 +1043,36 @@ const _: () = {
                 out.dpdot_dq[(__R3.index, __R2.index)] += s9;
             }
         }
+        fn l_vt(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
+                self.wheel
+                    .l_vt(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
+                self.cart
+                    .l_vt(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
+            }
+        }
         fn interconnection_forces(
             &self,
             q: &::dirac::__private::VecQ<Self>,

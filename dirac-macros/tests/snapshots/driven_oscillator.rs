@@ -208,6 +208,16 @@ const _: () = {
             out[(2, 0)] = -self.k;
             out[(2, 1)] = -self.c;
         }
+        #[inline]
+        fn l_vt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

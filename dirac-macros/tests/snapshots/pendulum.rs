@@ -248,6 +248,17 @@ const _: () = {
             out[(6, 2)] = s0;
             out[(6, 3)] = s1;
         }
+        #[inline]
+        fn l_vt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -234,6 +234,17 @@ const _: () = {
             out[(5, 0)] = self.k2;
             out[(5, 1)] = s0;
         }
+        #[inline]
+        fn l_vt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
