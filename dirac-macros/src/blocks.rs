@@ -57,6 +57,8 @@ pub struct Blocks {
     pub flat_jacobian: Matrix,
     /// `∂(∂L/∂v)/∂t`.
     pub l_vt: Vec<Id>,
+    /// `∂L/∂t`.
+    pub dl_dt: Id,
 }
 
 /// `[∂e/∂x for x in wrt]`.
@@ -131,6 +133,7 @@ impl Blocks {
         let y: Vec<Id> = [&q, &v, &p, &lambda].into_iter().flatten().copied().collect();
         let flat_jacobian = jacobian(g, &flat_residual, &y);
         let l_vt = dl_dv.iter().map(|&d| g.diff(d, time)).collect();
+        let dl_dt = g.diff(lagrangian, time);
         Blocks {
             lagrangian,
             dl_dq,
@@ -153,6 +156,7 @@ impl Blocks {
             flat_residual,
             flat_jacobian,
             l_vt,
+            dl_dt,
         }
     }
 }

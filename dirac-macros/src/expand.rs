@@ -142,6 +142,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     );
     let constants = inherent_constants(model, names);
     let named = named(&sym, ident);
+    let parameters = non_finite_parameter(&sym.params);
     quote! {
         const _: () = {
             #[automatically_derived]
@@ -176,6 +177,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                     #p::Equations { text: #p::Cow::Borrowed(#text), latex: #p::Cow::Borrowed(#latex) }
                 }
 
+                #parameters
                 #methods
             }
 
@@ -187,6 +189,24 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
 
             #constants
         };
+    }
+}
+
+/// `fn non_finite_parameter`: the first `f64` field that is NaN or infinite.
+fn non_finite_parameter(params: &[syn::Ident]) -> TokenStream {
+    let checks = params.iter().map(|field| {
+        let name = syn::ext::IdentExt::unraw(field).to_string();
+        quote! {
+            if !self.#field.is_finite() {
+                return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
+            }
+        }
+    });
+    quote! {
+        fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            #(#checks)*
+            ::core::option::Option::None
+        }
     }
 }
 

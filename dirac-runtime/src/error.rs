@@ -20,6 +20,20 @@ pub enum SimError {
         /// What is wrong with it.
         reason: String,
     },
+    /// A parameter of the model is NaN or infinite.
+    #[error("parameter `{name}` is {value}: a model's parameters must be finite")]
+    InvalidParameter {
+        /// The parameter's dotted name, such as `left.m1`.
+        name: String,
+        /// Its value.
+        value: f64,
+    },
+    /// The sampling asked for is not usable.
+    #[error("invalid sampling: {reason}")]
+    InvalidSampling {
+        /// What is wrong with it.
+        reason: String,
+    },
     /// An option is outside its range.
     #[error("invalid option {what}: {reason}")]
     InvalidOption {
@@ -37,6 +51,29 @@ pub enum SimError {
         residual: f64,
         /// Projection iterations spent.
         iterations: usize,
+    },
+    /// An integration was started from a state that violates an algebraic equation.
+    #[error(
+        "the state at t = {t} violates the {equation} by {residual:e}: integrators start from consistent \
+         states (make one with `consistent_state`)"
+    )]
+    StateNotConsistent {
+        /// The start time.
+        t: f64,
+        /// The violated equation, such as `holonomic constraint `rod``.
+        equation: String,
+        /// Its residual.
+        residual: f64,
+    },
+    /// The equations do not determine the motion at this state: a velocity or a multiplier is
+    /// left free (a coordinate without inertia or constraint, a vanishing or dependent
+    /// constraint).
+    #[error("the equations do not determine the motion at t = {t}: {cause}")]
+    NotDetermined {
+        /// The time of the state.
+        t: f64,
+        /// Which unknown is free, and why.
+        cause: String,
     },
     /// The iteration matrix (or the consistency system) is singular even at tiny steps.
     #[error("singular iteration matrix at t = {t} (step {h:e}): {detail}")]
@@ -75,6 +112,17 @@ pub enum SimError {
         t: f64,
         /// The state component or equation, by name.
         component: String,
+    },
+    /// A fixed-step integration grew without bound: the step is beyond the method's stability
+    /// limit for this model.
+    #[error("unstable at t = {t} with step {h:e}: {detail}")]
+    Unstable {
+        /// Where the growth was found.
+        t: f64,
+        /// The step size.
+        h: f64,
+        /// What grew, and by how much.
+        detail: String,
     },
     /// The step budget was exhausted.
     #[error("more than {max_steps} steps before reaching t = {t_end} (stopped at t = {t})")]

@@ -9,13 +9,16 @@
 //! 4. multipliers (and accelerations) solve the differentiated constraints
 //!    `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av)/∂q v]`.
 //!
-//! Set-up code: it allocates, unlike a step.
+//! Every quantity is checked to be finite before it is used, so a NaN parameter or an
+//! overflowing state ends in a typed error that names it, never in a hung decomposition or a
+//! NaN multiplier returned as success. Set-up code: it allocates, unlike a step.
 
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
+use crate::diagnose::{cause_of, check_finite_state, dense, non_finite_entry, svd};
 use crate::dims::{MatCQ, MatQQ, Storage, VecH, VecQ};
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
+use crate::model::{LagrangeDirac, check_parameters};
 use crate::state::State;
 
 /// Tolerance and iteration budget of the projections.
@@ -33,12 +36,6 @@ impl Default for Consistency {
     }
 }
 
-fn dense<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
-    m: &nalgebra::Matrix<f64, R, C, S>,
-) -> DMatrix<f64> {
-    DMatrix::from_fn(m.nrows(), m.ncols(), |i, j| m[(i, j)])
-}
-
 /// The consistent state nearest to positions `q` and velocities `v` at time `t`.
 pub fn consistent_state<M: LagrangeDirac>(
     model: &M,
@@ -50,6 +47,13 @@ pub fn consistent_state<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
+    if !(options.tolerance > 0.0 && options.tolerance.is_finite()) {
+        return Err(SimError::InvalidTolerance { what: "consistency tolerance", value: options.tolerance });
+    }
+    if !t.is_finite() {
+        return Err(SimError::InvalidTimeSpan { reason: format!("the initial time {t} is not finite") });
+    }
+    check_parameters(model)?;
     let mut s = State::<M>::zeros();
     s.q.copy_from(q);
     s.v.copy_from(v);
@@ -57,15 +61,18 @@ where
         let names = if j < M::NQ { M::coordinate_names() } else { M::velocity_names() };
         return Err(SimError::NonFinite { t, component: names[j % M::NQ].clone() });
     }
-    project_positions(model, &mut s.q, options)?;
+    project_positions(model, t, &mut s.q, options)?;
     project_velocities(model, t, &s.q, &mut s.v, options)?;
     model.dl_dv(t, &s.q, &s.v, &mut s.p);
+    non_finite_entry::<M>(t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
     s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v)?.as_slice());
+    check_finite_state(t, &s)?;
     Ok(s)
 }
 
 fn project_positions<M: LagrangeDirac>(
     model: &M,
+    t: f64,
     q: &mut VecQ<M>,
     options: Consistency,
 ) -> Result<(), SimError>
@@ -80,19 +87,32 @@ where
     let mut a = MatCQ::<M>::zeros();
     for iteration in 0..=options.max_iterations {
         model.holonomic(q, &mut phi);
+        non_finite_entry::<M>(t, "a holonomic constraint φ(q)", phi.as_slice(), false)
+            .map_err(|_| holonomic_not_finite::<M>(t, &phi))?;
         let scale = 1.0 + q.amax();
         if phi.amax() <= options.tolerance * scale {
             return Ok(());
         }
-        if iteration == options.max_iterations || !phi.iter().all(|x| x.is_finite()) {
+        if iteration == options.max_iterations {
             break;
         }
         a.fill(0.0);
         model.constraint_matrix(q, &mut a);
         let ah = dense(&a).rows(0, h).into_owned();
+        if !ah.iter().all(|x| x.is_finite()) {
+            return Err(SimError::NonFinite {
+                t,
+                component: "a holonomic constraint's one-form ∂φ/∂q".into(),
+            });
+        }
         let correction = min_norm_solve(&ah, &DVector::from_column_slice(phi.as_slice()));
         for i in 0..M::NQ {
             q[i] -= correction[i];
+        }
+        if let Some(i) = q.iter().position(|x| !x.is_finite()) {
+            let component =
+                format!("coordinate `{}` while projecting onto the constraints", M::coordinate_names()[i]);
+            return Err(SimError::NonFinite { t, component });
         }
     }
     let (j, residual) =
@@ -104,9 +124,20 @@ where
     })
 }
 
-/// The minimal-norm `x` with `A x = b` (least squares if there is none).
+fn holonomic_not_finite<M: LagrangeDirac>(t: f64, phi: &VecH<M>) -> SimError
+where
+    DefaultAllocator: Storage<M>,
+{
+    let j = phi.iter().position(|x| !x.is_finite()).unwrap_or(0);
+    SimError::NonFinite { t, component: format!("holonomic constraint `{}`", M::constraint_names()[j]) }
+}
+
+/// The minimal-norm `x` with `A x = b` (least squares if there is none); finite input only.
 fn min_norm_solve(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
-    a.clone().svd(true, true).solve(b, 1e-14 * a.amax().max(1e-300)).expect("SVD with both factors computed")
+    match svd(a) {
+        Some(svd) => svd.solve(b, 1e-14 * a.amax().max(1e-300)).expect("SVD with both factors computed"),
+        None => DVector::from_element(a.ncols(), f64::NAN),
+    }
 }
 
 fn project_velocities<M: LagrangeDirac>(
@@ -125,13 +156,16 @@ where
     }
     let mut a = MatCQ::<M>::zeros();
     model.constraint_matrix(q, &mut a);
+    non_finite_entry::<M>(t, "the constraint one-forms A(q)", a.as_slice(), false)?;
     let a = dense(&a);
     let av = &a * DVector::from_column_slice(v.as_slice());
+    non_finite_entry::<M>(t, "the constraint velocities A(q) v", av.as_slice(), false)?;
     if av.amax() <= options.tolerance * (1.0 + v.amax()) {
         return Ok(());
     }
     let mut lvv = MatQQ::<M>::zeros();
     model.l_vv(t, q, v, &mut lvv);
+    non_finite_entry::<M>(t, "the mass matrix L_vv", lvv.as_slice(), true)?;
     let w = dense(&lvv);
     // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
     let reg = 1e-10 * w.amax().max(1.0);
@@ -146,11 +180,12 @@ where
         v[i] += x[i];
     }
     let after = &a * DVector::from_column_slice(v.as_slice());
-    if after.amax() > 1e3 * options.tolerance * (1.0 + v.amax()) {
+    let limit = 1e3 * options.tolerance * (1.0 + v.amax());
+    if after.amax().is_nan() || after.amax() > limit {
         let (j, residual) = after
             .iter()
             .enumerate()
-            .fold((0, 0.0f64), |b, (j, x)| if x.abs() > b.1 { (j, x.abs()) } else { b });
+            .fold((0, 0.0f64), |b, (j, x)| if x.is_nan() || x.abs() > b.1 { (j, x.abs()) } else { b });
         return Err(SimError::InconsistentInitialState {
             equation: format!("velocity constraint `{}`", M::constraint_names()[j]),
             residual,
@@ -158,6 +193,42 @@ where
         });
     }
     Ok(())
+}
+
+/// The blocks of the multipliers' system at `(t, q, v)`, each checked to be finite.
+struct Blocks {
+    top: DVector<f64>,
+    bottom: DVector<f64>,
+    lvv: DMatrix<f64>,
+    a: DMatrix<f64>,
+}
+
+fn blocks<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> Result<Blocks, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (mut dl_dq, mut force, mut lvt) = (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
+    model.dl_dq(t, q, v, &mut dl_dq);
+    non_finite_entry::<M>(t, "∂L/∂q", dl_dq.as_slice(), true)?;
+    model.force(t, q, v, &mut force);
+    non_finite_entry::<M>(t, "the force", force.as_slice(), true)?;
+    model.l_vt(t, q, v, &mut lvt);
+    non_finite_entry::<M>(t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
+    let (mut lvv, mut lvq) = (MatQQ::<M>::zeros(), MatQQ::<M>::zeros());
+    model.l_vv(t, q, v, &mut lvv);
+    non_finite_entry::<M>(t, "the mass matrix L_vv", lvv.as_slice(), true)?;
+    model.l_vq(t, q, v, &mut lvq);
+    non_finite_entry::<M>(t, "L_vq", lvq.as_slice(), true)?;
+    let (mut a, mut g) = (MatCQ::<M>::zeros(), MatCQ::<M>::zeros());
+    model.constraint_matrix(q, &mut a);
+    non_finite_entry::<M>(t, "the constraint one-forms A(q)", a.as_slice(), false)?;
+    model.dav_dq(q, v, &mut g);
+    non_finite_entry::<M>(t, "∂(A v)/∂q", g.as_slice(), false)?;
+    let top = dl_dq + force - lvq * v - lvt;
+    non_finite_entry::<M>(t, "the momentum balance", top.as_slice(), true)?;
+    let bottom = -(dense(&g) * DVector::from_column_slice(v.as_slice()));
+    non_finite_entry::<M>(t, "the constraint accelerations", bottom.as_slice(), false)?;
+    Ok(Blocks { top: dense(&top).column(0).into_owned(), bottom, lvv: dense(&lvv), a: dense(&a) })
 }
 
 /// λ from the differentiated constraints, with the accelerations as by-product.
@@ -171,44 +242,28 @@ where
     DefaultAllocator: Storage<M>,
 {
     let (n, m) = (M::NQ, M::NC);
-    let (mut dl_dq, mut force) = (VecQ::<M>::zeros(), VecQ::<M>::zeros());
-    model.dl_dq(t, q, v, &mut dl_dq);
-    model.force(t, q, v, &mut force);
-    let (mut lvv, mut lvq) = (MatQQ::<M>::zeros(), MatQQ::<M>::zeros());
-    model.l_vv(t, q, v, &mut lvv);
-    model.l_vq(t, q, v, &mut lvq);
-    let (mut a, mut g) = (MatCQ::<M>::zeros(), MatCQ::<M>::zeros());
-    model.constraint_matrix(q, &mut a);
-    model.dav_dq(q, v, &mut g);
-    let mut lvt = VecQ::<M>::zeros();
-    model.l_vt(t, q, v, &mut lvt);
-
+    let b = blocks(model, t, q, v)?;
     let mut kkt = DMatrix::zeros(n + m, n + m);
-    kkt.view_mut((0, 0), (n, n)).copy_from(&dense(&lvv));
-    kkt.view_mut((0, n), (n, m)).copy_from(&(-dense(&a).transpose()));
-    kkt.view_mut((n, 0), (m, n)).copy_from(&dense(&a));
+    kkt.view_mut((0, 0), (n, n)).copy_from(&b.lvv);
+    kkt.view_mut((0, n), (n, m)).copy_from(&(-b.a.transpose()));
+    kkt.view_mut((n, 0), (m, n)).copy_from(&b.a);
     let mut rhs = DVector::zeros(n + m);
-    let top = dl_dq + force - lvq * v - lvt;
-    rhs.rows_mut(0, n).copy_from(&dense(&top));
-    rhs.rows_mut(n, m).copy_from(&(-(dense(&g) * DVector::from_column_slice(v.as_slice()))));
-    let svd = kkt.clone().svd(true, true);
-    let smallest_at = svd.singular_values.imin();
-    let smallest = svd.singular_values[smallest_at];
+    rhs.rows_mut(0, n).copy_from(&b.top);
+    rhs.rows_mut(n, m).copy_from(&b.bottom);
+    let singular = || SimError::NotDetermined { t, cause: cause_of::<M>(&b.lvv, &b.a) };
+    let Some(svd) = svd(&kkt) else {
+        return Err(singular());
+    };
+    let smallest = svd.singular_values.min();
     let largest = svd.singular_values.max().max(1e-300);
     if smallest <= 1e-12 * largest {
-        let names = M::coordinate_names();
-        let v_t = svd.v_t.as_ref().expect("V computed");
-        let null = v_t.row(smallest_at);
-        let worst = (0..n).max_by(|&i, &j| null[i].abs().total_cmp(&null[j].abs())).unwrap_or(0);
-        return Err(SimError::InconsistentInitialState {
-            equation: format!(
-                "momentum balance of `{}`: no inertia and no constraint determine its motion",
-                names.get(worst).cloned().unwrap_or_default()
-            ),
-            residual: smallest / largest,
-            iterations: 0,
-        });
+        return Err(singular());
     }
     let x = svd.solve(&rhs, 0.0).expect("SVD with both factors computed");
-    Ok(x.rows(n, m).into_owned())
+    let lambda = x.rows(n, m).into_owned();
+    if let Some(j) = lambda.iter().position(|x| !x.is_finite()) {
+        let component = format!("multiplier `{}`", M::constraint_names()[j]);
+        return Err(SimError::NonFinite { t, component });
+    }
+    Ok(lambda)
 }

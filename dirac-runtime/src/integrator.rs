@@ -6,9 +6,10 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
+use crate::diagnose::{check_finite_state, violated_equation};
 use crate::dims::Storage;
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
+use crate::model::{LagrangeDirac, check_parameters};
 use crate::recorder::Recorder;
 use crate::solution::{Sampling, Solution};
 use crate::state::State;
@@ -90,5 +91,31 @@ where
             }
         }
         Ok(recorder.finish(self.stats()))
+    }
+}
+
+/// What every integrator checks before its first step: a finite time span, finite parameters,
+/// a finite state, and a state that satisfies the algebraic equations to `tolerance` (relative
+/// to the size of the quantities in them).
+pub(crate) fn check_start<M: LagrangeDirac>(
+    model: &M,
+    t0: f64,
+    state: &State<M>,
+    t_end: f64,
+    tolerance: f64,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !t0.is_finite() || !t_end.is_finite() || t_end <= t0 {
+        return Err(SimError::InvalidTimeSpan {
+            reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
+        });
+    }
+    check_parameters(model)?;
+    check_finite_state(t0, state)?;
+    match violated_equation(model, t0, state, tolerance) {
+        Some((equation, residual)) => Err(SimError::StateNotConsistent { t: t0, equation, residual }),
+        None => Ok(()),
     }
 }

@@ -2,11 +2,13 @@
 //!
 //! `#[derive(LagrangeDirac)]` emits one associated constant per coordinate and per constraint
 //! (`Pendulum::X`, `Pendulum::ROD`), so state components are read and written by name and a
-//! typo is a compile error, never an index off by one.
+//! typo is a compile error, never an index off by one. A key always names a position its model
+//! has: `checked` is the way to make one from a number.
 
 use core::fmt;
 use core::marker::PhantomData;
 
+use crate::dims::Dimensions;
 use crate::names::Named;
 
 /// A coordinate `q_i` of model `M`; it also names the velocity `v_i` and the momentum `p_i`.
@@ -22,13 +24,24 @@ pub struct Constraint<M: ?Sized> {
 }
 
 macro_rules! key_impls {
-    ($key:ident, $what:literal, $names:ident) => {
-        impl<M: ?Sized> $key<M> {
-            #[doc = concat!("The ", $what, " at this position; used by generated code.")]
+    ($key:ident, $what:literal, $names:ident, $count:ident) => {
+        impl<M: Dimensions + ?Sized> $key<M> {
+            #[doc = concat!("The ", $what, " at this position, for generated code: it panics (at")]
+            /// compile time in a `const`) if the model has no such position. Use the named
+            /// constants the derive emits, or `checked`.
+            #[doc(hidden)]
             pub const fn new(index: usize) -> Self {
+                assert!(index < M::$count, "the model has no such position");
                 Self { index, model: PhantomData }
             }
 
+            #[doc = concat!("The ", $what, " at this position, if the model has one.")]
+            pub const fn checked(index: usize) -> Option<Self> {
+                if index < M::$count { Some(Self { index, model: PhantomData }) } else { None }
+            }
+        }
+
+        impl<M: ?Sized> $key<M> {
             #[doc = concat!("The position of this ", $what, " in its vector.")]
             pub const fn index(self) -> usize {
                 self.index
@@ -72,5 +85,5 @@ macro_rules! key_impls {
     };
 }
 
-key_impls!(Coordinate, "coordinate", coordinate_names);
-key_impls!(Constraint, "constraint", constraint_names);
+key_impls!(Coordinate, "coordinate", coordinate_names, NQ);
+key_impls!(Constraint, "constraint", constraint_names, NC);

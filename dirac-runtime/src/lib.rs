@@ -8,6 +8,8 @@
 pub mod assemble;
 /// The block outputs of a model: residual blocks and Jacobian blocks.
 pub mod blocks;
+/// Finding the true cause of a failure, for the messages of typed errors.
+pub mod diagnose;
 /// Type-level sizes of a model and the allocator bound that goes with them.
 pub mod dims;
 /// Dirac structures as objects, with products, interconnection and membership.
@@ -33,6 +35,7 @@ pub mod model;
 pub mod names;
 /// The linear systems of implicit steps: condensed and full solvers.
 pub mod newton;
+mod projection;
 /// The Radau IIA integrator.
 pub mod radau;
 mod recorder;

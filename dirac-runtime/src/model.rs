@@ -23,6 +23,17 @@ use crate::names::Named;
 use crate::state::State;
 use crate::structure::Structure;
 
+/// A typed error if a parameter of `model` is NaN or infinite.
+pub fn check_parameters<M: LagrangeDirac>(model: &M) -> Result<(), crate::error::SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match model.non_finite_parameter() {
+        Some((name, value)) => Err(crate::error::SimError::InvalidParameter { name, value }),
+        None => Ok(()),
+    }
+}
+
 /// The derived equations of a model, for people: plain text and LaTeX.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Equations {
@@ -148,8 +159,18 @@ where
         out: &mut JacobianBlocks<Self>,
     );
 
+    /// The first parameter (its dotted name, `left.m1` in a composite) whose value is NaN or
+    /// infinite, with that value. Integrators and [`consistent_state`](crate::consistent_state)
+    /// refuse such a model before they evaluate it. The derive implements it.
+    fn non_finite_parameter(&self) -> Option<(String, f64)> {
+        None
+    }
+
     /// `∂(∂L/∂v)/∂t`: how the momenta of a time-dependent Lagrangian change at fixed `(q, v)`.
     fn l_vt(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecQ<Self>);
+    /// `∂L/∂t`: with the power of the forces, the rate of change of the energy on solutions,
+    /// `dE/dt = ⟨F, v⟩ − ∂L/∂t`.
+    fn dl_dt(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64;
 
     /// The interconnection forces `Ωᵀμ` of the model and, scattered, of its subsystems: the
     /// efforts at the ports (zero for a primitive model).

@@ -19,8 +19,14 @@ where
     sampling: Sampling,
     next: usize,
     t0: f64,
+    t_end: f64,
+    /// The time of the last sample recorded.
+    last: f64,
     buffer: State<M>,
 }
+
+/// The most values (samples times series) a solution records: 2^27, 1 GiB of `f64`.
+const MAX_VALUES: f64 = (1u64 << 27) as f64;
 
 impl<M: LagrangeDirac> Recorder<M>
 where
@@ -28,27 +34,50 @@ where
 {
     /// A recorder over `[t0, t_end]`, after checking the sampling against that span.
     pub fn new(sampling: &Sampling, t0: f64, t_end: f64) -> Result<Self, SimError> {
-        match sampling {
+        let (layout, names) = Columns::of::<M>();
+        let expected = match sampling {
             Sampling::Every(dt) if dt.is_nan() || *dt <= 0.0 || dt.is_infinite() => {
-                return Err(SimError::InvalidTimeSpan {
-                    reason: format!("sampling interval {dt} is not positive"),
+                return Err(SimError::InvalidSampling {
+                    reason: format!("the interval {dt} is not positive"),
                 });
             }
+            Sampling::Every(dt) => ((t_end - t0) / dt).floor() + 2.0,
             Sampling::Times(times) => {
                 if times.windows(2).any(|w| w[0].partial_cmp(&w[1]) != Some(std::cmp::Ordering::Less)) {
-                    return Err(SimError::InvalidTimeSpan { reason: "sample times must increase".into() });
-                }
-                if times.iter().any(|t| t.is_nan() || *t < t0 || *t > t_end) {
-                    return Err(SimError::InvalidTimeSpan {
-                        reason: format!("sample times must lie in [{t0}, {t_end}]"),
+                    return Err(SimError::InvalidSampling {
+                        reason: "the sample times must increase".into(),
                     });
                 }
+                if times.iter().any(|t| t.is_nan() || *t < t0 || *t > t_end) {
+                    return Err(SimError::InvalidSampling {
+                        reason: format!("the sample times must lie in [{t0}, {t_end}]"),
+                    });
+                }
+                times.len() as f64
             }
-            _ => {}
+            Sampling::Steps => 0.0,
+        };
+        let values = expected * names.len() as f64;
+        if values.is_nan() || values > MAX_VALUES {
+            return Err(SimError::InvalidSampling {
+                reason: format!(
+                    "{sampling:?} over [{t0}, {t_end}] asks for {expected:e} samples of {} series, more than the \
+                     {MAX_VALUES:e} values a solution holds: sample less often, or at chosen times",
+                    names.len()
+                ),
+            });
         }
-        let (layout, names) = Columns::of::<M>();
-        let table = Table { layout, columns: vec![Vec::new(); names.len()] };
-        Ok(Recorder { table, names, sampling: sampling.clone(), next: 0, t0, buffer: State::zeros() })
+        let mut columns = Vec::new();
+        for _ in 0..names.len() {
+            let mut column = Vec::new();
+            column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
+                reason: format!("no memory for {expected:e} samples of {} series", names.len()),
+            })?;
+            columns.push(column);
+        }
+        let table = Table { layout, columns };
+        let buffer = State::zeros();
+        Ok(Recorder { table, names, sampling: sampling.clone(), next: 0, t0, t_end, last: f64::NAN, buffer })
     }
 
     /// Records the initial state if the sampling asks for it.
@@ -59,6 +88,7 @@ where
         };
         if wanted {
             self.table.push(model, t0, state);
+            self.last = t0;
             self.next = 1;
         }
     }
@@ -76,6 +106,7 @@ where
             let ts = match &self.sampling {
                 Sampling::Steps => {
                     self.table.push(model, t, state);
+                    self.last = t;
                     return;
                 }
                 Sampling::Every(dt) => self.t0 + self.next as f64 * dt,
@@ -85,10 +116,19 @@ where
                 },
             };
             let due = match self.sampling {
-                Sampling::Every(_) => ts <= t * (1.0 + 1e-14),
+                Sampling::Every(_) => ts <= t + 1e-14 * t.abs(),
                 _ => ts <= t,
             };
             if !due {
+                // A grid that misses the end time still ends with a sample there.
+                let missed = match self.sampling {
+                    Sampling::Every(dt) => t >= self.t_end && self.last < self.t_end - 1e-9 * dt,
+                    _ => false,
+                };
+                if missed {
+                    self.table.push(model, t, state);
+                    self.last = t;
+                }
                 return;
             }
             if ts >= t {
@@ -97,6 +137,7 @@ where
                 interpolate(ts, &mut self.buffer);
             }
             self.table.push(model, ts, &self.buffer);
+            self.last = ts;
             self.next += 1;
         }
     }

@@ -17,7 +17,8 @@ use crate::state::State;
 pub enum Sampling {
     /// At the start and after every accepted step.
     Steps,
-    /// Every `dt` from the start, and at the end (dense output between steps).
+    /// Every `dt` from the start, and at the end time if the grid misses it (dense output
+    /// between steps).
     Every(f64),
     /// At these increasing times within the time span (dense output between steps).
     Times(Vec<f64>),

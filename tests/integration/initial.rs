@@ -87,8 +87,8 @@ fn no_consistent_state_is_a_typed_error() {
         Consistency::default(),
     );
     match err {
-        Err(SimError::InconsistentInitialState { equation, .. }) => {
-            assert!(equation.contains("`free`"), "{equation}")
+        Err(SimError::NotDetermined { cause, .. }) => {
+            assert!(cause.contains("velocity of `free` is not determined"), "{cause}")
         }
         other => panic!("expected an undetermined coordinate, got {other:?}"),
     }

@@ -189,7 +189,7 @@ fn invalid_input_is_a_typed_error() {
     assert!(matches!(radau.solve(1.0, &start, 0.0, &Sampling::Steps), Err(SimError::InvalidTimeSpan { .. })));
     assert!(matches!(
         radau.solve(0.0, &start, 1.0, &Sampling::Times(vec![0.5, 0.2])),
-        Err(SimError::InvalidTimeSpan { .. })
+        Err(SimError::InvalidSampling { .. })
     ));
     let q = VecQ::<Pendulum>::new(f64::NAN, 0.0);
     let err = consistent_state(&p, 0.0, &q, &VecQ::<Pendulum>::zeros(), Consistency::default()).err();

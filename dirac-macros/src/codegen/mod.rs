@@ -11,9 +11,9 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use self::signatures::{
-    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DV, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN,
-    JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VV, LAGRANGIAN, Out, RESIDUAL, RESIDUAL_BLOCKS,
-    Signature,
+    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DT, DL_DV, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC,
+    JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VV, LAGRANGIAN, Out, RESIDUAL,
+    RESIDUAL_BLOCKS, Signature,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -75,7 +75,7 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         residual_blocks: op_count(g, &residual_blocks),
         jacobian_blocks: op_count(g, &jacobian_blocks),
     };
-    let table: [(Signature, Vec<Assign>); 18] = [
+    let table: [(Signature, Vec<Assign>); 19] = [
         (LAGRANGIAN, vec![Assign::set(quote! { value }, b.lagrangian)]),
         (DL_DQ, vector(&out, &b.dl_dq)),
         (DL_DV, vector(&out, &b.dl_dv)),
@@ -94,6 +94,7 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         (RESIDUAL, residual),
         (JACOBIAN, jacobian),
         (L_VT, vector(&out, &b.l_vt)),
+        (DL_DT, vec![Assign::set(quote! { value }, b.dl_dt)]),
     ];
     let methods = table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
     Generated { methods, sparse: e.csc_jacobian(&b.flat_jacobian), counts }

@@ -71,6 +71,7 @@ pub const HOLONOMIC: Signature = method("holonomic", &[Q], Out::VecH);
 pub const RESIDUAL_BLOCKS: Signature = method("residual_blocks", &[T, Q, V, Lambda], Out::ResidualBlocks);
 pub const JACOBIAN_BLOCKS: Signature = method("jacobian_blocks", &[T, Q, V, Lambda], Out::JacobianBlocks);
 pub const L_VT: Signature = method("l_vt", &[T, Q, V], Out::VecQ);
+pub const DL_DT: Signature = method("dl_dt", &[T, Q, V], Out::Scalar);
 /// Provided by the trait from the blocks; primitives emit a specialised version.
 pub const RESIDUAL: Signature = method("residual", &[T, Y], Out::VecY);
 /// Provided by the trait from the blocks; primitives emit a specialised version.
@@ -80,7 +81,7 @@ pub const JACOBIAN: Signature = method("jacobian", &[T, Y], Out::MatYY);
 pub const JACOBIAN_CSC: Signature = method("jacobian_csc", &[T, Y], Out::Values);
 
 /// The methods every model must implement, in the order they are emitted.
-pub const REQUIRED: [Signature; 16] = [
+pub const REQUIRED: [Signature; 17] = [
     LAGRANGIAN,
     DL_DQ,
     DL_DV,
@@ -97,6 +98,7 @@ pub const REQUIRED: [Signature; 16] = [
     RESIDUAL_BLOCKS,
     JACOBIAN_BLOCKS,
     L_VT,
+    DL_DT,
 ];
 
 impl Arg {

@@ -18,7 +18,41 @@ const INTERCONNECTION_FORCES: Signature =
 
 /// Every method of the composite's impl.
 pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
-    REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| method(composite, own, sig)).collect()
+    let mut out: TokenStream =
+        REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| method(composite, own, sig)).collect();
+    out.extend(non_finite_parameter(composite));
+    out
+}
+
+/// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's, named
+/// by their dotted paths.
+fn non_finite_parameter(composite: &Composite<'_>) -> TokenStream {
+    let own = composite.params.iter().map(|field| {
+        let name = syn::ext::IdentExt::unraw(field).to_string();
+        quote! {
+            if !self.#field.is_finite() {
+                return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
+            }
+        }
+    });
+    let subsystems = composite.subsystems.iter().map(|s| {
+        let field = &s.ident;
+        let prefix = format!("{}.", syn::ext::IdentExt::unraw(field));
+        quote! {
+            if let ::core::option::Option::Some((name, value)) = self.#field.non_finite_parameter() {
+                let mut path = ::std::string::ToString::to_string(#prefix);
+                path.push_str(&name);
+                return ::core::option::Option::Some((path, value));
+            }
+        }
+    });
+    quote! {
+        fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            #(#own)*
+            #(#subsystems)*
+            ::core::option::Option::None
+        }
+    }
 }
 
 fn method(composite: &Composite<'_>, own: &Own<'_>, sig: &Signature) -> TokenStream {

@@ -47,7 +47,8 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         // A generic composite has been reported; an impl for it would only add errors.
         (errors, _) if !input.generics.params.is_empty() => quote! { #errors },
         (errors, _) => {
-            let impls = stub_impls(composite.ident, (0, 0));
+            // One coordinate and one constraint, so that the stub's keys (index 0) are valid.
+            let impls = stub_impls(composite.ident, (1, 1));
             let items = inherent_items(&composite, Targets::Stub, &TokenStream::new());
             quote! { #errors const _: () = { #impls #items }; }
         }

@@ -908,6 +908,31 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        fn dl_dt(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let mut total = 0.0;
+            total
+                += self
+                    .left
+                    .dl_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                    );
+            total
+                += self
+                    .right
+                    .dl_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                    );
+            total
+        }
         fn interconnection_forces(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -946,6 +971,27 @@ const _: () = {
             if __R1.velocity {
                 out[__R1.index] += -lambda[__OMEGA + 0];
             }
+        }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if let ::core::option::Option::Some((name, value)) = self
+                .left
+                .non_finite_parameter()
+            {
+                let mut path = ::std::string::ToString::to_string("left.");
+                path.push_str(&name);
+                return ::core::option::Option::Some((path, value));
+            }
+            if let ::core::option::Option::Some((name, value)) = self
+                .right
+                .non_finite_parameter()
+            {
+                let mut path = ::std::string::ToString::to_string("right.");
+                path.push_str(&name);
+                return ::core::option::Option::Some((path, value));
+            }
+            ::core::option::Option::None
         }
     }
     #[automatically_derived]

@@ -1073,6 +1073,31 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        fn dl_dt(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let mut total = 0.0;
+            total
+                += self
+                    .wheel
+                    .dl_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                    );
+            total
+                += self
+                    .cart
+                    .dl_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                    );
+            total
+        }
         fn interconnection_forces(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -1115,6 +1140,33 @@ const _: () = {
             if __R3.velocity {
                 out[__R3.index] += -self.c * r2.cos() * lambda[__OMEGA + 0];
             }
+        }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if !self.c.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("c"),
+                    self.c,
+                ));
+            }
+            if let ::core::option::Option::Some((name, value)) = self
+                .wheel
+                .non_finite_parameter()
+            {
+                let mut path = ::std::string::ToString::to_string("wheel.");
+                path.push_str(&name);
+                return ::core::option::Option::Some((path, value));
+            }
+            if let ::core::option::Option::Some((name, value)) = self
+                .cart
+                .non_finite_parameter()
+            {
+                let mut path = ::std::string::ToString::to_string("cart.");
+                path.push_str(&name);
+                return ::core::option::Option::Some((path, value));
+            }
+            ::core::option::Option::None
         }
     }
     #[automatically_derived]

@@ -45,6 +45,41 @@ const _: () = {
                 ),
             }
         }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if !self.m.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("m"),
+                    self.m,
+                ));
+            }
+            if !self.k.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("k"),
+                    self.k,
+                ));
+            }
+            if !self.c.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("c"),
+                    self.c,
+                ));
+            }
+            if !self.a.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("a"),
+                    self.a,
+                ));
+            }
+            if !self.w.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("w"),
+                    self.w,
+                ));
+            }
+            ::core::option::Option::None
+        }
         #[inline]
         fn lagrangian(
             &self,
@@ -217,6 +252,17 @@ const _: () = {
             out: &mut ::dirac::__private::VecQ<Self>,
         ) {
             out[0usize] = 0f64;
+        }
+        #[inline]
+        fn dl_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0f64;
+            value
         }
     }
     #[automatically_derived]

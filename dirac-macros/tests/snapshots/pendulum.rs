@@ -47,6 +47,29 @@ const _: () = {
                 ),
             }
         }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if !self.m.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("m"),
+                    self.m,
+                ));
+            }
+            if !self.g.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("g"),
+                    self.g,
+                ));
+            }
+            if !self.l.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("l"),
+                    self.l,
+                ));
+            }
+            ::core::option::Option::None
+        }
         #[inline]
         fn lagrangian(
             &self,
@@ -258,6 +281,17 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
+        }
+        #[inline]
+        fn dl_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0f64;
+            value
         }
     }
     #[automatically_derived]

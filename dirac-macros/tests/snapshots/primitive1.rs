@@ -46,6 +46,35 @@ const _: () = {
                 ),
             }
         }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if !self.m1.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("m1"),
+                    self.m1,
+                ));
+            }
+            if !self.m2.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("m2"),
+                    self.m2,
+                ));
+            }
+            if !self.k1.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("k1"),
+                    self.k1,
+                ));
+            }
+            if !self.k2.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("k2"),
+                    self.k2,
+                ));
+            }
+            ::core::option::Option::None
+        }
         #[inline]
         fn lagrangian(
             &self,
@@ -244,6 +273,17 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
+        }
+        #[inline]
+        fn dl_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0f64;
+            value
         }
     }
     #[automatically_derived]

@@ -55,6 +55,35 @@ const _: () = {
                 ),
             }
         }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if !self.m.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("m"),
+                    self.m,
+                ));
+            }
+            if !self.r.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("r"),
+                    self.r,
+                ));
+            }
+            if !self.i_roll.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("i_roll"),
+                    self.i_roll,
+                ));
+            }
+            if !self.i_turn.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("i_turn"),
+                    self.i_turn,
+                ));
+            }
+            ::core::option::Option::None
+        }
         #[inline]
         fn lagrangian(
             &self,
@@ -307,6 +336,17 @@ const _: () = {
             out[1usize] = 0f64;
             out[2usize] = 0f64;
             out[3usize] = 0f64;
+        }
+        #[inline]
+        fn dl_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0f64;
+            value
         }
     }
     #[automatically_derived]

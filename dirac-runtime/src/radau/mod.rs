@@ -26,13 +26,15 @@ pub use self::options::{RadauOptions, RadauStats};
 use self::stages::{Outcome, Stages, Step};
 use self::tableau::{Eigen, eigen};
 use crate::blocks::JacobianBlocks;
+use crate::diagnose::singular_cause;
 use crate::dims::{Storage, VecY};
 use crate::error::SimError;
-use crate::integrator::Integrator;
+use crate::integrator::{Integrator, check_start};
 use crate::layout::Layout;
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 use crate::newton::{Condensed, NewtonSolver, pivot_name};
+use crate::projection::project;
 use crate::state::State;
 
 /// Below this contraction rate of the last Newton iteration the Jacobian is kept.
@@ -129,7 +131,7 @@ where
     /// One attempt after another until a step is accepted or the integration must give up.
     fn attempt(&mut self) -> Result<f64, SimError> {
         let mut singular = 0;
-        let mut reason = "";
+        let mut reason = "it would not advance t: steps this small are below the resolution of t";
         loop {
             if self.stats.steps + self.stats.rejected >= self.options.max_steps {
                 return Err(SimError::TooManySteps {
@@ -153,11 +155,10 @@ where
             {
                 singular += 1;
                 if singular >= 6 {
-                    return Err(SimError::SingularMatrix {
-                        t: self.t,
-                        h: self.h,
-                        detail: pivot_name::<M>(column),
-                    });
+                    let s = &self.state;
+                    let cause = singular_cause(self.model, self.t, &s.q, &s.v);
+                    let detail = format!("{}; {cause}", pivot_name::<M>(column));
+                    return Err(SimError::SingularMatrix { t: self.t, h: self.h, detail });
                 }
                 reason = "singular iteration matrix";
                 self.reject(0.5);
@@ -241,6 +242,12 @@ where
         self.dense.update(&self.stages.z, h);
         self.y += &self.stages.z[2];
         self.state.read_y(&self.y);
+        if self.options.projection && M::NC > 0 {
+            let s = &mut self.state;
+            project(self.model, &mut s.q, &mut s.v);
+            self.model.dl_dv(self.t + h, &s.q, &s.v, &mut s.p);
+            s.write_y(&mut self.y);
+        }
         self.t += h;
         self.stats.steps += 1;
         self.model.residual(self.t, &self.y, &mut self.f0);
@@ -291,11 +298,7 @@ where
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
-        if !t0.is_finite() || !t_end.is_finite() || t_end <= t0 {
-            return Err(SimError::InvalidTimeSpan {
-                reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
-            });
-        }
+        check_start(self.model, t0, state, t_end, self.options.rtol.max(1e-8))?;
         state.write_y(&mut self.y);
         self.state.clone_from(state);
         self.t = t0;

@@ -23,6 +23,13 @@ pub struct RadauOptions {
     pub max_steps: usize,
     /// Newton iterations per step attempt (default 7).
     pub max_newton_iterations: usize,
+    /// Whether to project the state onto the constraints after every accepted step (default
+    /// `false`). Radau integrates the equations in their index-2 form, where holonomic
+    /// constraints enter through their velocities `A(q) v = 0`: the positions then drift from
+    /// `φ(q) = 0` by the accumulated local errors, slowly but without bound. With projection
+    /// the positions are moved back onto `φ(q) = 0` and the velocities onto `A(q) v = 0`, each
+    /// by the smallest correction, and the momenta follow from the Legendre map.
+    pub projection: bool,
 }
 
 impl Default for RadauOptions {
@@ -34,6 +41,7 @@ impl Default for RadauOptions {
             max_step: f64::INFINITY,
             max_steps: 1_000_000,
             max_newton_iterations: 7,
+            projection: false,
         }
     }
 }
@@ -50,6 +58,18 @@ impl RadauOptions {
             if value.is_nan() || value <= 0.0 || value.is_infinite() {
                 return Err(SimError::InvalidTolerance { what, value });
             }
+        }
+        // Above 1 a relative tolerance controls nothing; below 10 ε it asks for more than
+        // double precision holds.
+        if !(10.0 * f64::EPSILON..1.0).contains(&self.rtol) {
+            return Err(SimError::InvalidOption {
+                what: "rtol",
+                reason: format!(
+                    "{} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
+                                 and below 10 machine epsilons no step can meet it",
+                    self.rtol
+                ),
+            });
         }
         if self.max_step.is_nan() || self.max_step <= 0.0 {
             return Err(SimError::InvalidOption {

@@ -150,6 +150,7 @@ where
     model.dl_dv(t1, &q1, v, &mut lv1);
     model.dl_dq(t1, &q1, v, &mut lq1);
     model.force(tm, &qm, v, &mut f);
+    s.work.work += h * f.dot(v);
     let target = (lv0 + lv1) * 0.5 + (lq1 + f) * (0.5 * h);
     let mut a1 = MatCQ::<M>::zeros();
     model.constraint_matrix(&q1, &mut a1);

@@ -39,8 +39,9 @@ use self::work::{Step, Work};
 pub use self::work::{VariationalOptions, VariationalStats};
 use crate::dims::{MatQQ, Storage};
 use crate::error::SimError;
-use crate::integrator::Integrator;
+use crate::integrator::{Integrator, check_start};
 use crate::model::LagrangeDirac;
+use crate::projection::project;
 use crate::state::State;
 
 /// The variational integrator for a model `M`, with fixed step `h`.
@@ -54,6 +55,12 @@ where
     t0: f64,
     t: f64,
     t_end: f64,
+    /// Steps taken since the start, and the number that reaches the end time.
+    taken: usize,
+    total: usize,
+    /// The energy at the start, and the size of the energy's parts `|⟨p, v⟩| + |L|` there,
+    /// for the stability check.
+    energy0: f64,
     /// The state reached: `v` is the stage-2 velocity `w`, and `λ = 2 Γ / h` the multiplier
     /// that the last stage-2 impulse `A(q)ᵀ Γ` stands for over half a step.
     state: State<M>,
@@ -77,9 +84,7 @@ where
                 reason: format!("{h} is not positive and finite"),
             });
         }
-        if options.tolerance.is_nan() || options.tolerance <= 0.0 {
-            return Err(SimError::InvalidTolerance { what: "tolerance", value: options.tolerance });
-        }
+        options.validate()?;
         Ok(Variational {
             model,
             h,
@@ -87,11 +92,70 @@ where
             t0: 0.0,
             t: 0.0,
             t_end: 0.0,
+            taken: 0,
+            total: 0,
+            energy0: 0.0,
             state: State::zeros(),
             previous: State::zeros(),
             work: Work::new(),
             mass: None,
             stats: VariationalStats::default(),
+        })
+    }
+}
+
+impl<M: LagrangeDirac> Variational<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The number of steps from `t0` to `t_end`, the last one possibly shorter; an error if
+    /// the step cannot advance time at that magnitude or the budget does not allow them.
+    fn steps_to(&self, t0: f64, t_end: f64) -> Result<usize, SimError> {
+        let h = self.h;
+        if h <= 16.0 * f64::EPSILON * t0.abs().max(t_end.abs()) {
+            return Err(SimError::StepSizeTooSmall {
+                t: t0,
+                h,
+                reason: format!(
+                    "the step does not advance time at t = {t0}: its size is below the resolution of t"
+                ),
+            });
+        }
+        // A last step shorter than a millionth of h is folded into the one before it.
+        let steps = ((t_end - t0) / h - 1e-6).ceil().max(1.0);
+        if steps > self.options.max_steps as f64 {
+            return Err(SimError::TooManySteps { max_steps: self.options.max_steps, t: t0, t_end });
+        }
+        Ok(steps as usize)
+    }
+
+    /// The time after `k` steps: `t0 + k h`, except the end time after the last.
+    fn time_after(&self, k: usize) -> f64 {
+        if k >= self.total { self.t_end } else { self.t0 + k as f64 * self.h }
+    }
+
+    /// A fixed step beyond the method's stability limit makes the discrete solution grow
+    /// geometrically: the energy error (corrected by the work of the forces and of the
+    /// Lagrangian's time dependence) then becomes as large as the energy's own parts, which in
+    /// a stable run it never approaches.
+    fn check_stability(&self) -> Result<(), SimError> {
+        let s = &self.state;
+        let lagrangian = self.model.lagrangian(self.t, &s.q, &s.v);
+        let kinetic = s.p.dot(&s.v);
+        let energy = kinetic - lagrangian;
+        let error = (energy - self.energy0 - self.work.work).abs();
+        let size = kinetic.abs() + lagrangian.abs() + self.energy0.abs();
+        if error.is_finite() && error <= 0.5 * size || size == 0.0 {
+            return Ok(());
+        }
+        Err(SimError::Unstable {
+            t: self.t,
+            h: self.h,
+            detail: format!(
+                "the energy went from {:e} to {energy:e} (the forces did {:e} of work): the step is beyond \
+                 the stability limit of the method for this model; take a smaller step",
+                self.energy0, self.work.work
+            ),
         })
     }
 }
@@ -107,14 +171,14 @@ where
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
-        if !t0.is_finite() || !t_end.is_finite() || t_end <= t0 {
-            return Err(SimError::InvalidTimeSpan {
-                reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
-            });
-        }
+        check_start(self.model, t0, state, t_end, 1e-8)?;
+        self.total = self.steps_to(t0, t_end)?;
+        self.taken = 0;
         self.t = t0;
         self.t0 = t0;
         self.t_end = t_end;
+        self.work.work = 0.0;
+        self.energy0 = self.model.energy(t0, &state.q, &state.v, &state.p);
         self.state.clone_from(state);
         self.previous.clone_from(state);
         self.work.big_lambda.fill(0.0);
@@ -130,9 +194,11 @@ where
         Ok(())
     }
 
-    /// Takes one step of size `h` and returns `h`.
+    /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
+    /// returns its size.
     fn step(&mut self) -> Result<f64, SimError> {
-        let h = self.h;
+        let last = self.taken + 1 == self.total;
+        let h = if last { self.t_end - self.time_after(self.taken) } else { self.h };
         self.previous.clone_from(&self.state);
         self.work.a0.fill(0.0);
         self.model.constraint_matrix(&self.state.q, &mut self.work.a0);
@@ -151,22 +217,27 @@ where
             Some(mass) => separable_step(&mut step, mass)?,
             None => general_step(&mut step)?,
         }
+        let midpoint = &self.state.q + &self.work.v * (0.5 * h);
+        self.work.work -= h * self.model.dl_dt(self.t + 0.5 * h, &midpoint, &self.work.v);
         self.state.q += &self.work.v * h;
         self.stats.steps += 1;
-        self.t = self.t0 + self.stats.steps as f64 * h;
+        self.taken += 1;
+        self.t = if last { self.t_end } else { self.time_after(self.taken) };
         self.state.lambda.copy_from(&(&self.work.gamma * (2.0 / h)));
         let s = &self.state;
         if let Some(i) = s.q.iter().chain(s.p.iter()).position(|x| !x.is_finite()) {
             let names = M::coordinate_names();
             return Err(SimError::NonFinite { t: self.t, component: names[i % M::NQ].clone() });
         }
+        if self.taken.is_multiple_of(16) || self.finished() {
+            self.check_stability()?;
+        }
         Ok(h)
     }
 
-    /// Whether the end time has been reached: the last step ends at the first multiple of `h`
-    /// (from the start) at or after the end time.
+    /// Whether the end time has been reached.
     fn finished(&self) -> bool {
-        self.t >= self.t_end - 1e-9 * self.h
+        self.taken >= self.total
     }
 
     fn t(&self) -> f64 {
@@ -177,13 +248,21 @@ where
         &self.state
     }
 
-    /// Linear interpolation between step points: second order, like the method.
+    /// The state between step points: positions and velocities interpolated linearly (second
+    /// order, like the method) and put back on the constraints (positions onto `φ(q) = 0`,
+    /// velocities onto `A(q) v = 0`, each by the smallest correction), momenta from the
+    /// Legendre map, multipliers interpolated.
     fn interpolate(&self, t: f64, out: &mut State<M>) {
-        let s = (t - (self.t - self.h)) / self.h;
+        let t_previous = if self.taken == 0 { self.t0 } else { self.time_after(self.taken - 1) };
+        let s = (t - t_previous) / (self.t - t_previous);
         let parts = out.components_mut().zip(self.previous.components().zip(self.state.components()));
         for (x, (a, b)) in parts {
             *x = a * (1.0 - s) + b * s;
         }
+        if M::NC > 0 {
+            project(self.model, &mut out.q, &mut out.v);
+        }
+        self.model.dl_dv(t, &out.q, &out.v, &mut out.p);
     }
 
     fn stats(&self) -> VariationalStats {

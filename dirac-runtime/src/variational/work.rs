@@ -2,6 +2,7 @@
 
 use nalgebra::DefaultAllocator;
 
+use crate::diagnose::singular_cause;
 use crate::dims::{MatCQ, Storage, VecC, VecQ};
 use crate::error::SimError;
 use crate::lu::Lu;
@@ -21,11 +22,35 @@ pub struct VariationalOptions {
     /// nonsingular mass matrix): the same discrete equations, solved through `m × m` systems
     /// in the multipliers as RATTLE does. On by default.
     pub use_structure: bool,
+    /// The most steps an integration may take (default `10_000_000`): a time span that needs
+    /// more is refused at the start.
+    pub max_steps: usize,
 }
 
 impl Default for VariationalOptions {
     fn default() -> Self {
-        VariationalOptions { tolerance: 1e-12, max_iterations: 20, use_structure: true }
+        VariationalOptions {
+            tolerance: 1e-12,
+            max_iterations: 20,
+            use_structure: true,
+            max_steps: 10_000_000,
+        }
+    }
+}
+
+impl VariationalOptions {
+    /// Checks every option, naming the first one out of its range.
+    pub(crate) fn validate(&self) -> Result<(), SimError> {
+        if !(self.tolerance > 0.0 && self.tolerance < 1.0) {
+            return Err(SimError::InvalidTolerance { what: "tolerance", value: self.tolerance });
+        }
+        if self.max_iterations == 0 {
+            return Err(SimError::InvalidOption { what: "max_iterations", reason: "at least 1".into() });
+        }
+        if self.max_steps == 0 {
+            return Err(SimError::InvalidOption { what: "max_steps", reason: "at least 1".into() });
+        }
+        Ok(())
     }
 }
 
@@ -63,6 +88,9 @@ where
     pub last_update: f64,
     /// `∂L/∂q` at the current point (separable models: independent of `v`).
     pub dl_dq: VecQ<M>,
+    /// The energy put in since the start by the external forces and by the Lagrangian's
+    /// dependence on time, `Σ h (⟨F, v_k⟩ − ∂L/∂t)` at the steps' midpoints.
+    pub work: f64,
 }
 
 impl<M: LagrangeDirac> Work<M>
@@ -79,6 +107,7 @@ where
             small: Lu::new(),
             last_update: f64::INFINITY,
             dl_dq: VecQ::<M>::zeros(),
+            work: 0.0,
         }
     }
 }
@@ -107,8 +136,13 @@ where
         SimError::NewtonDiverged { t: self.t, h: self.h, iterations: self.options.max_iterations }
     }
 
-    /// The error for a singular stage matrix, at the unknown without a pivot.
+    /// The error for a singular stage matrix, at the unknown without a pivot, with its cause.
     pub fn singular(&self, column: usize) -> SimError {
-        SimError::SingularMatrix { t: self.t, h: self.h, detail: pivot_name::<M>(column) }
+        let cause = singular_cause(self.model, self.t, &self.state.q, &self.state.v);
+        SimError::SingularMatrix {
+            t: self.t,
+            h: self.h,
+            detail: format!("{}; {cause}", pivot_name::<M>(column)),
+        }
     }
 }
