@@ -61,8 +61,8 @@ where
 }
 
 /// The algebraic equation that `state` violates the most beyond `tolerance` (relative to the
-/// size of the quantities in it), with its residual: a holonomic constraint `φ(q) = 0`, a
-/// velocity constraint `A(q) v = 0`, or a Legendre map `p = ∂L/∂v`.
+/// size of the terms it is made of: `|A| (1 + |q|)` for `φ(q) = 0`, `|A| (1 + |v|)` for
+/// `A(q) v = 0`, `1 + |p| + |∂L/∂v|` for the Legendre map `p = ∂L/∂v`), with its residual.
 pub fn violated_equation<M: LagrangeDirac>(
     model: &M,
     t: f64,
@@ -75,14 +75,16 @@ where
     let names = M::constraint_names();
     let mut phi = VecH::<M>::zeros();
     model.holonomic(&state.q, &mut phi);
-    let q_scale = 1.0 + state.q.amax();
+    let mut a = MatCQ::<M>::zeros();
+    model.constraint_matrix(&state.q, &mut a);
+    // Residuals against the size of the terms they are made of: φ / |A| is a distance in q.
+    let size_a = a.amax();
+    let q_scale = size_a * (1.0 + state.q.amax());
     if let Some((j, r)) = worst(phi.iter().copied()).filter(|(_, r)| *r > tolerance * q_scale) {
         return Some((format!("holonomic constraint `{}`", names[j]), r));
     }
-    let mut a = MatCQ::<M>::zeros();
-    model.constraint_matrix(&state.q, &mut a);
     let av = a * &state.v;
-    let v_scale = 1.0 + state.v.amax();
+    let v_scale = size_a * (1.0 + state.v.amax());
     if let Some((j, r)) = worst(av.iter().copied()).filter(|(_, r)| *r > tolerance * v_scale) {
         return Some((format!("velocity constraint `{}`", names[j]), r));
     }

@@ -24,7 +24,9 @@ use crate::state::State;
 /// Tolerance and iteration budget of the projections.
 #[derive(Clone, Copy, Debug)]
 pub struct Consistency {
-    /// Largest accepted constraint residual, relative to the size of `q` (or `v`).
+    /// How far positions (velocities) may remain from the constraints, relative to their size
+    /// `1 + |q|` (`1 + |v|`): a residual `φ(q)` (`A(q) v`) is accepted up to this times
+    /// `|A(q)| (1 + |q|)` (`|A(q)| (1 + |v|)`).
     pub tolerance: f64,
     /// Gauss-Newton iterations allowed for `φ(q) = 0`.
     pub max_iterations: usize,
@@ -89,13 +91,6 @@ where
         model.holonomic(q, &mut phi);
         non_finite_entry::<M>(t, "a holonomic constraint φ(q)", phi.as_slice(), false)
             .map_err(|_| holonomic_not_finite::<M>(t, &phi))?;
-        let scale = 1.0 + q.amax();
-        if phi.amax() <= options.tolerance * scale {
-            return Ok(());
-        }
-        if iteration == options.max_iterations {
-            break;
-        }
         a.fill(0.0);
         model.constraint_matrix(q, &mut a);
         let ah = dense(&a).rows(0, h).into_owned();
@@ -104,6 +99,13 @@ where
                 t,
                 component: "a holonomic constraint's one-form ∂φ/∂q".into(),
             });
+        }
+        // φ / |∂φ/∂q| is how far the positions are from the constraint, to first order.
+        if phi.amax() <= options.tolerance * ah.amax() * (1.0 + q.amax()) {
+            return Ok(());
+        }
+        if iteration == options.max_iterations {
+            break;
         }
         let correction = min_norm_solve(&ah, &DVector::from_column_slice(phi.as_slice()));
         for i in 0..M::NQ {
@@ -160,7 +162,8 @@ where
     let a = dense(&a);
     let av = &a * DVector::from_column_slice(v.as_slice());
     non_finite_entry::<M>(t, "the constraint velocities A(q) v", av.as_slice(), false)?;
-    if av.amax() <= options.tolerance * (1.0 + v.amax()) {
+    let size_a = a.amax();
+    if av.amax() <= options.tolerance * size_a * (1.0 + v.amax()) {
         return Ok(());
     }
     let mut lvv = MatQQ::<M>::zeros();
@@ -180,7 +183,7 @@ where
         v[i] += x[i];
     }
     let after = &a * DVector::from_column_slice(v.as_slice());
-    let limit = 1e3 * options.tolerance * (1.0 + v.amax());
+    let limit = 1e3 * options.tolerance * size_a * (1.0 + v.amax());
     if after.amax().is_nan() || after.amax() > limit {
         let (j, residual) = after
             .iter()

@@ -83,6 +83,22 @@ where
     model: PhantomData<fn() -> M>,
 }
 
+impl<M: LagrangeDirac, S: std::fmt::Debug> std::fmt::Debug for Solution<M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The samples' count and time span, the series' names and the statistics (not the data).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let span = (self.t().first(), self.t().last());
+        f.debug_struct("Solution")
+            .field("samples", &self.len())
+            .field("span", &span)
+            .field("names", &self.names)
+            .field("stats", &self.stats)
+            .finish()
+    }
+}
+
 impl<M: LagrangeDirac, S> Solution<M, S>
 where
     DefaultAllocator: Storage<M>,

@@ -5,6 +5,7 @@ mod zoo;
 
 mod blocks;
 mod counters;
+mod fuzz;
 mod hand_derivations;
 mod hygiene;
 mod initial;
@@ -12,6 +13,7 @@ mod interconnection;
 mod jacobians;
 mod named_access;
 mod paper;
+mod probes;
 mod radau;
 mod util;
 mod variational;

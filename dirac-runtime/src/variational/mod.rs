@@ -112,7 +112,7 @@ where
     /// the step cannot advance time at that magnitude or the budget does not allow them.
     fn steps_to(&self, t0: f64, t_end: f64) -> Result<usize, SimError> {
         let h = self.h;
-        if h <= 16.0 * f64::EPSILON * t0.abs().max(t_end.abs()) {
+        if h <= f64::EPSILON * t0.abs().max(t_end.abs()) {
             return Err(SimError::StepSizeTooSmall {
                 t: t0,
                 h,

@@ -119,8 +119,10 @@ where
         s.work.small.solve(&mut r);
         s.work.big_lambda -= &r;
         s.stats.newton_iterations += 1;
-        let size = r.amax();
-        let scale = 1.0 + s.work.big_lambda.amax();
+        // Converged when the velocities stop moving: with a small mass a tiny impulse moves
+        // them far, so the impulse's own update says nothing.
+        let size = (&b * &r).amax();
+        let scale = 1.0 + s.work.v.amax();
         let tolerance = s.options.tolerance;
         let stalled = size >= 0.5 * s.work.last_update && size <= 1e3 * tolerance * scale;
         s.work.last_update = size;
