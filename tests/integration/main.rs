@@ -11,6 +11,7 @@ mod hygiene;
 mod initial;
 mod interconnection;
 mod jacobians;
+mod linkage;
 mod named_access;
 mod paper;
 mod probes;

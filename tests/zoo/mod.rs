@@ -366,3 +366,39 @@ pub struct FramedPair {
     pub first: MovingFrame,
     pub second: MovingFrame,
 }
+
+/// A four-bar linkage in the angles of its links (crank θ1 on a pivot at the origin, coupler
+/// θ2, rocker θ3 on a pivot at (d, 0)), each a uniform rod with mass, under gravity. The
+/// coupler's kinetic energy has a `cos(θ1 − θ2)` cross term, so the mass matrix depends on the
+/// configuration; the loop closes through two holonomic constraints: a closed-loop mechanism.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(th1 => w1, th2 => w2, th3 => w3))]
+#[dirac(lagrangian = 0.5 * (m1 * l1 * l1 / 3.0) * w1 * w1
+        + 0.5 * m2 * (l1 * l1 * w1 * w1 + 0.25 * l2 * l2 * w2 * w2 + l1 * l2 * w1 * w2 * (th1 - th2).cos())
+        + 0.5 * (m2 * l2 * l2 / 12.0) * w2 * w2
+        + 0.5 * (m3 * l3 * l3 / 3.0) * w3 * w3
+        - g * (0.5 * m1 * l1 * th1.sin() + m2 * (l1 * th1.sin() + 0.5 * l2 * th2.sin()) + 0.5 * m3 * l3 * th3.sin()))]
+#[dirac(holonomic(loop_x) = l1 * th1.cos() + l2 * th2.cos() - l3 * th3.cos() - d)]
+#[dirac(holonomic(loop_y) = l1 * th1.sin() + l2 * th2.sin() - l3 * th3.sin())]
+pub struct FourBar {
+    pub m1: f64,
+    pub m2: f64,
+    pub m3: f64,
+    pub l1: f64,
+    pub l2: f64,
+    pub l3: f64,
+    pub d: f64,
+    pub g: f64,
+}
+
+/// A four-bar with a crank-rocker geometry (Grashof: the crank turns fully).
+pub fn four_bar() -> FourBar {
+    FourBar { m1: 0.5, m2: 1.0, m3: 0.8, l1: 0.2, l2: 0.6, l3: 0.5, d: 0.5, g: 9.81 }
+}
+
+/// The crank at 60° turning at 2 rad/s; coupler and rocker angles and rates made consistent.
+pub fn four_bar_start(model: &FourBar) -> State<FourBar> {
+    let q = VecQ::<FourBar>::new(std::f64::consts::FRAC_PI_3, 0.4, 1.7);
+    let v = VecQ::<FourBar>::new(2.0, 0.0, 0.0);
+    consistent_state(model, 0.0, &q, &v, Consistency::default()).expect("a consistent start")
+}
