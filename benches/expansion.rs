@@ -28,6 +28,8 @@ mod expand;
 mod lower;
 #[path = "../dirac-macros/src/model.rs"]
 mod model;
+#[path = "../dirac-runtime/src/stack.rs"]
+mod stack;
 #[path = "../dirac-macros/src/structure.rs"]
 mod structure;
 #[path = "../dirac-macros/src/suggest.rs"]

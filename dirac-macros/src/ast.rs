@@ -7,7 +7,9 @@ use syn::punctuated::Punctuated;
 use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
-use crate::symbol::{CONSTRAINT, COORDINATES, DIRAC, FORCE, HOLONOMIC, LAGRANGIAN, MODEL_KEYS, PORT, PORTS};
+use crate::symbol::{
+    CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, LAGRANGIAN, LARGE, MODEL_KEYS, PORT, PORTS,
+};
 
 /// A model as written by the user.
 pub struct Model<'a> {
@@ -21,6 +23,10 @@ pub struct Model<'a> {
     pub lagrangian: Option<(Ident, Expr)>,
     pub constraints: Vec<ConstraintDecl>,
     pub forces: Vec<ForceDecl>,
+    /// `define(name) = expr`, in the order written.
+    pub defines: Vec<DefineDecl>,
+    /// `large`: the model may take more stack than the limit.
+    pub large: bool,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
     /// the rules that would only report consequences of the syntax error.
     pub incomplete: bool,
@@ -58,6 +64,12 @@ pub struct OrderedConstraint<'m> {
     pub ident: &'m Ident,
 }
 
+/// `define(name) = expr`: a named intermediate quantity.
+pub struct DefineDecl {
+    pub name: Ident,
+    pub expr: Expr,
+}
+
 /// `force(x) = expr`.
 pub struct ForceDecl {
     pub coordinate: Ident,
@@ -76,6 +88,8 @@ impl<'a> Model<'a> {
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
+            defines: Vec::new(),
+            large: false,
             incomplete: false,
         };
         if !input.generics.params.is_empty() {
@@ -188,6 +202,18 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 input.parse::<Token![=]>()?;
                 let expr: Expr = input.parse()?;
                 model.constraints.push(ConstraintDecl { kind, key, name, expr });
+            }
+            LARGE => model.large = true,
+            DEFINE => {
+                let content;
+                syn::parenthesized!(content in input);
+                let name = content.parse::<Ident>()?.unraw();
+                if !content.is_empty() {
+                    return Err(content.error("expected one name: `define(name) = expr`"));
+                }
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                model.defines.push(DefineDecl { name, expr });
             }
             FORCE => {
                 let content;

@@ -35,7 +35,8 @@ fn check_required(cx: &Ctxt, model: &Model<'_>) {
     }
 }
 
-/// Parameters, coordinates, velocities and constraint names share one namespace, without `t`.
+/// Parameters, coordinates, velocities, constraint names and definitions share one namespace,
+/// without `t`.
 fn check_names(cx: &Ctxt, model: &Model<'_>) {
     let mut seen: HashMap<String, &'static str> = HashMap::new();
     let mut declare = |ident: &Ident, what: &'static str| {
@@ -71,6 +72,9 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
         if let Some(name) = &c.name {
             declare(name, "constraint");
         }
+    }
+    for d in &model.defines {
+        declare(&d.name, "definition");
     }
 }
 

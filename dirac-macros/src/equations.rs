@@ -63,6 +63,8 @@ fn display_name(model: &SymModel, sym: u32, style: Style) -> String {
         Sym::Multiplier(j) => format!("lambda_{}", model.constraints[j].name),
         Sym::Time => "t".to_owned(),
         Sym::PortEffort(i) => format!("f_{}", coordinate(i)),
+        Sym::Constant(k) => model.symbols.constant_at(k).0.to_owned(),
+        Sym::Define(k) => model.defines[k].0.clone(),
         Sym::Member(_) => unreachable!("a primitive model has no subsystem members"),
     };
     match (style, kind) {
@@ -90,20 +92,30 @@ pub fn equations(model: &mut SymModel, b: &Blocks, model_name: &str) -> (String,
     }
     let model = &*model;
     let show = |e: Id, style: Style| pretty(&model.graph, e, style, &|s| display_name(model, s, style));
+    let names = Taken::of(model);
     let mut text = vec![format!("{model_name}: L = {}", show(b.lagrangian, Style::Text))];
     let mut latex = vec![format!("L &= {}", show(b.lagrangian, Style::Latex))];
     let mut line = |t: String, l: String| {
         text.push(t);
         latex.push(l);
     };
+    for (name, value) in &model.defines {
+        line(
+            format!("{name} = {}    (definition)", show(*value, Style::Text)),
+            format!("{} &= {} && \\text{{(definition)}}", latex_name(name), show(*value, Style::Latex)),
+        );
+    }
     for i in 0..n {
         let (c, v) = (model.coordinates[i].to_string(), model.velocities[i].to_string());
-        line(format!("d{c}/dt = {v}"), format!("{} &= {}", latex_accented(&c, Some("dot")), latex_name(&v)));
+        line(
+            format!("{}/dt = {v}", names.derivative(&c)),
+            format!("{} &= {}", latex_accented(&c, Some("dot")), latex_name(&v)),
+        );
     }
     for (i, &r) in rate.iter().enumerate() {
         let c = model.coordinates[i].to_string();
         line(
-            format!("dp_{c}/dt = {}", show(r, Style::Text)),
+            format!("{}/dt = {}", names.derivative(&names.momentum(&c)), show(r, Style::Text)),
             format!("\\dot{{p}}_{{{}}} &= {}", latex_name(&c), show(r, Style::Latex)),
         );
     }
@@ -134,6 +146,32 @@ pub fn equations(model: &mut SymModel, b: &Blocks, model_name: &str) -> (String,
     }
     let latex = format!("\\begin{{aligned}}\n{}\n\\end{{aligned}}", latex.join(" \\\\\n"));
     (text.join("\n"), latex)
+}
+
+/// The names a model already uses, so that the names the equations make up (`dx/dt`, `p_x`)
+/// are parenthesised (`d(x)/dt`, `p(x)`) where they would read as one of them.
+struct Taken(Vec<String>);
+
+impl Taken {
+    fn of(model: &SymModel) -> Taken {
+        let mut names: Vec<String> = model.params.iter().map(ToString::to_string).collect();
+        names.extend(model.coordinates.iter().chain(&model.velocities).map(ToString::to_string));
+        names.extend(model.constraints.iter().map(|c| c.name.clone()));
+        names.extend(model.defines.iter().map(|(n, _)| n.clone()));
+        Taken(names)
+    }
+
+    /// `dx` as in `dx/dt`, or `d(x)` if `dx` is a name of the model.
+    fn derivative(&self, x: &str) -> String {
+        let joined = format!("d{x}");
+        if self.0.contains(&joined) { format!("d({x})") } else { joined }
+    }
+
+    /// `p_x`, or `p(x)` if `p_x` is a name of the model.
+    fn momentum(&self, x: &str) -> String {
+        let joined = format!("p_{x}");
+        if self.0.contains(&joined) { format!("p({x})") } else { joined }
+    }
 }
 
 #[cfg(test)]

@@ -12,6 +12,7 @@ use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
 use crate::equations::equations;
 use crate::model::SymModel;
+use crate::stack::{STACK_LIMIT, stack_bytes};
 use crate::structure::{check_structure, condensed_pattern, separable, unknown_messages};
 
 /// Expands the derive on `input`; user errors become `compile_error!` next to a stub impl.
@@ -24,7 +25,10 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         None
     } else {
         check(&cx, &model);
-        SymModel::build(&cx, &model).map(|sym| Analysed::new(&cx, sym, &name))
+        SymModel::build(&cx, &model).map(|sym| {
+            check_stack(&cx, &model, &sym);
+            Analysed::new(&cx, sym, &name)
+        })
     };
     let names = key_constants(&cx, &model);
     match (cx.into_compile_errors(), analysed) {
@@ -44,6 +48,27 @@ struct Analysed {
     blocks: Blocks,
     pattern: Vec<bool>,
     unknowns: Vec<String>,
+}
+
+/// A model above the stack limit without `large`: an error with its size and the way out.
+fn check_stack(cx: &Ctxt, model: &Model<'_>, sym: &SymModel) {
+    let bytes = stack_bytes(sym.n(), sym.m());
+    if model.large || bytes <= STACK_LIMIT {
+        return;
+    }
+    let message = format!(
+        "`{}` is too large for dirac's stack-allocated integrators: with {} coordinates and {} constraints, \
+         a Radau integrator holds about {} kB on the stack, more than the {} KiB a model may take without \
+         asking (threads Rust spawns have 2 MiB, and overflowing a stack aborts the process); add \
+         `#[dirac(large)]` and run the simulation on a thread with a larger stack, such as \
+         `std::thread::Builder::new().stack_size(64 << 20)`",
+        model.ident,
+        sym.n(),
+        sym.m(),
+        bytes.div_ceil(1000),
+        STACK_LIMIT / 1024
+    );
+    cx.error_spanned_by(model.ident, message);
 }
 
 impl Analysed {

@@ -25,6 +25,11 @@ mod symbols;
 #[cfg(test)]
 mod snapshots;
 
+/// The runtime's estimate of a model's stack use, shared so that both decide alike.
+#[path = "../../dirac-runtime/src/stack.rs"]
+#[allow(dead_code)]
+mod stack;
+
 use proc_macro::TokenStream;
 use syn::{DeriveInput, parse_macro_input};
 

@@ -11,7 +11,7 @@ use syn::{BinOp, Expr, ExprLit, Lit, UnOp};
 use crate::ctxt::Ctxt;
 use crate::suggest::did_you_mean;
 use crate::sym::{Func, Graph, Id};
-use crate::symbols::Symbols;
+use crate::symbols::{Sym, Symbols};
 
 /// What a name in a model expression stands for.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -20,6 +20,8 @@ pub enum Role {
     Coordinate,
     Velocity,
     Time,
+    /// A named intermediate quantity (`define(len) = …`): its expression.
+    Define,
 }
 
 /// The names an expression may refer to and the symbols they lower to.
@@ -59,7 +61,8 @@ pub struct Context<'a> {
 
 /// The methods and functions model expressions support, for error messages.
 pub const SUPPORTED: &str = "model expressions support numbers, the model's parameters, \
-coordinates, velocities and time `t`, `+ - * /`, unary `-`, parentheses, `.powi(i32)`, `.powf(e)`, \
+coordinates, velocities and time `t`, definitions, `f64` constants of your code (named in UPPER_CASE \
+or by a path), `+ - * /`, unary `-`, parentheses, `.powi(i32)`, `.powf(e)`, \
 `.sqrt()`, `.sin()`, `.cos()`, `.tan()`, `.exp()`, `.ln()`, `.sinh()`, `.cosh()`, `.tanh()`, \
 `.atan()`, `y.atan2(x)`, the same as functions (`sin(x)`, `atan2(y, x)`, `powi(x, 2)`), and `PI`";
 
@@ -149,7 +152,7 @@ impl Lowerer<'_> {
             return Some(self.graph.num(value));
         }
         let Some(ident) = path.path.get_ident() else {
-            return self.unsupported(path, "this path");
+            return self.rust_constant(path);
         };
         let name = syn::ext::IdentExt::unraw(ident).to_string();
         if self.scope.subsystems.contains(&name) {
@@ -159,11 +162,16 @@ impl Lowerer<'_> {
             return None;
         }
         let Some(&(id, role)) = self.scope.names.get(&name) else {
+            if is_constant_name(&name) {
+                return self.rust_constant(path);
+            }
             let hint = did_you_mean(&name, self.scope.ordered.iter().map(String::as_str));
             let allowed = if self.scope.subsystems.is_empty() {
-                "model expressions may use the struct's `f64` fields, the coordinates, their velocities, and time `t`"
+                "model expressions may use the struct's `f64` fields, the coordinates, their velocities, time `t`, \
+                 definitions, and `f64` constants of your code named in UPPER_CASE or by a path"
             } else {
-                "interconnection constraints may use the struct's `f64` fields and subsystem members such as `left.x`"
+                "interconnection constraints may use the struct's `f64` fields, subsystem members such as `left.x`, \
+                 and `f64` constants of your code named in UPPER_CASE or by a path"
             };
             self.cx
                 .error_spanned_by(ident, format!("unknown name `{name}` in {}{hint}\n{allowed}", ctx.what));
@@ -191,8 +199,36 @@ impl Lowerer<'_> {
                 );
                 None
             }
+            Role::Define => self.definition(ident, &name, id, ctx),
             _ => Some(id),
         }
+    }
+
+    /// A definition used where its dependencies are allowed.
+    fn definition(&mut self, ident: &syn::Ident, name: &str, id: Id, ctx: Context<'_>) -> Option<Id> {
+        let deps: Vec<Sym> = self.graph.deps(id).iter().map(|s| self.symbols.kind(s)).collect();
+        if !ctx.velocities && deps.iter().any(|k| matches!(k, Sym::Velocity(_))) {
+            let message = format!(
+                "{} depends on coordinates only, but the definition `{name}` depends on a velocity",
+                ctx.what
+            );
+            self.cx.error_spanned_by(ident, message);
+            return None;
+        }
+        if !ctx.time && deps.contains(&Sym::Time) {
+            let message = format!("{} cannot depend on time `t`, but the definition `{name}` does", ctx.what);
+            self.cx.error_spanned_by(ident, message);
+            return None;
+        }
+        Some(id)
+    }
+
+    /// `G` or `consts::G`: an `f64` constant of the user's code, read where the generated code
+    /// runs (a wrong name or type is the compiler's error, at the user's token).
+    fn rust_constant(&mut self, path: &syn::ExprPath) -> Option<Id> {
+        let tokens = quote::ToTokens::to_token_stream(path);
+        let written = tokens.to_string().replace(' ', "");
+        Some(self.symbols.constant(self.graph, written, tokens))
     }
 
     /// `left.x2` or `chain.right.x3`: a member of a subsystem, resolved when the program is compiled.
@@ -311,6 +347,11 @@ fn integer(expr: &Expr) -> Option<i32> {
         Expr::Group(g) => integer(&g.expr),
         _ => None,
     }
+}
+
+/// Whether a name follows Rust's convention for constants: `G`, `EARTH_G`, `K2`.
+fn is_constant_name(name: &str) -> bool {
+    name.chars().any(|c| c.is_ascii_uppercase()) && !name.chars().any(|c| c.is_ascii_lowercase())
 }
 
 fn path_name(path: &syn::Path) -> String {

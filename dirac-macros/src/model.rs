@@ -37,6 +37,9 @@ pub struct SymModel {
     /// `φ(q)`, one per holonomic row.
     pub phi: Vec<Id>,
     pub constraints: Vec<RowName>,
+    /// `define(name) = …`: each name with its expression, in order (the symbol
+    /// [`Sym::Define`] `k` is bound to the expression).
+    pub defines: Vec<(String, Id)>,
 }
 
 impl SymModel {
@@ -77,8 +80,10 @@ impl SymModel {
             a: Vec::new(),
             phi: Vec::new(),
             constraints: Vec::new(),
+            defines: Vec::new(),
         };
-        let scope = sm.declare_symbols();
+        let mut scope = sm.declare_symbols();
+        sm.lower_defines(cx, model, &mut scope);
         sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();
         sm.force = vec![zero; sm.n()];
         let mut lw = Lowerer { cx, graph: &mut sm.graph, symbols: &mut sm.symbols, scope: &scope };
@@ -95,6 +100,22 @@ impl SymModel {
         sm.lower_constraints(cx, model, &scope);
         sm.lagrangian = lagrangian?;
         (!cx.has_errors()).then_some(sm)
+    }
+
+    /// Lowers each `define(name) = …` in order, each in the scope of the ones before it.
+    fn lower_defines(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &mut Scope) {
+        for d in &model.defines {
+            let name = d.name.to_string();
+            let what = format!("the definition `{name}`");
+            let ctx = Context { what: &what, velocities: true, time: true };
+            // A definition with errors is still declared (as zero), so that its uses report
+            // nothing more; the errors already stop the expansion.
+            let value = self.lowerer(cx, scope).lower(&d.expr, ctx).unwrap_or_else(|| self.graph.num(0.0));
+            let id = self.declare(Sym::Define(self.defines.len()));
+            self.graph.bind(id, value);
+            scope.declare(name.clone(), id, Role::Define);
+            self.defines.push((name, value));
+        }
     }
 
     fn declare(&mut self, kind: Sym) -> Id {

@@ -16,14 +16,18 @@ pub const CONSTRAINT: &str = "constraint";
 pub const HOLONOMIC: &str = "holonomic";
 /// `force(x) = expr`: the external force on coordinate `x`.
 pub const FORCE: &str = "force";
+/// `define(name) = expr`: a named intermediate quantity, usable in every later expression.
+pub const DEFINE: &str = "define";
+/// `large`: the model may take more stack than [`STACK_LIMIT`](crate::stack::STACK_LIMIT).
+pub const LARGE: &str = "large";
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
 /// Every key a `#[dirac(...)]` attribute of a model accepts, for error messages.
-pub const MODEL_KEYS: &[&str] = &[COORDINATES, PORT, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE];
+pub const MODEL_KEYS: &[&str] = &[COORDINATES, PORT, DEFINE, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE, LARGE];
 
 /// `connect(a.x, b.y)`: an interconnection of two ports, `v_a.x = v_b.y` and `f_a.x + f_b.y = 0`.
 pub const CONNECT: &str = "connect";
 
 /// Every key a `#[dirac(...)]` attribute of an interconnection accepts, for error messages.
-pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT];
+pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, LARGE];

@@ -27,6 +27,11 @@ pub enum Sym {
     /// A composite's subsystem member [`Symbols::member`] `k`, resolved when the program is
     /// compiled to a coordinate or a velocity of the composite.
     Member(usize),
+    /// The definition `k` of the model (`define(name) = …`), bound to its expression.
+    Define(usize),
+    /// An `f64` constant of the surrounding Rust code ([`Symbols::constant`] `k`), read where
+    /// the generated code runs.
+    Constant(usize),
 }
 
 impl Sym {
@@ -65,6 +70,7 @@ impl Member {
 pub struct Symbols {
     kinds: Vec<Sym>,
     members: Vec<(Member, Id)>,
+    constants: Vec<(String, TokenStream, Id)>,
 }
 
 impl Symbols {
@@ -98,6 +104,24 @@ impl Symbols {
     /// The members in the order of [`Sym::Member`] indices, with their symbols.
     pub fn members(&self) -> impl Iterator<Item = (&Member, Id)> {
         self.members.iter().map(|(m, id)| (m, *id))
+    }
+
+    /// The symbol of the Rust constant at `path` (its tokens, for the generated code and its
+    /// errors), created on first use.
+    pub fn constant(&mut self, graph: &mut Graph, path: String, tokens: TokenStream) -> Id {
+        if let Some((_, _, id)) = self.constants.iter().find(|(p, _, _)| *p == path) {
+            return *id;
+        }
+        let k = self.constants.len();
+        let id = self.declare(graph, Sym::Constant(k));
+        self.constants.push((path, tokens, id));
+        id
+    }
+
+    /// Constant `k`: its path as written, and its tokens.
+    pub fn constant_at(&self, k: usize) -> (&str, &TokenStream) {
+        let (path, tokens, _) = &self.constants[k];
+        (path, tokens)
     }
 
     /// Member `k`.

@@ -43,6 +43,8 @@ mod recorder;
 pub mod solution;
 /// The flat Jacobian in compressed sparse columns.
 pub mod sparse;
+/// How much stack a model's integrators take.
+pub mod stack;
 /// The state `(q, v, p, λ)` with named access.
 pub mod state;
 /// Structural nonsingularity of the condensed system, checked at compile time.
@@ -85,7 +87,14 @@ pub mod __private {
     pub use crate::model::{Equations, LagrangeDirac, OperationCounts};
     pub use crate::names::{Named, Names, ResolveError, Resolved, Subsystem};
     pub use crate::sparse::SparseJacobian;
-    pub use crate::structure::{Structure, composite_unknown, unpaired_unknown};
+    pub use crate::stack::{STACK_LIMIT, stack_bytes};
+    pub use crate::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
     pub use nalgebra::{Const, DefaultAllocator};
     pub use std::borrow::Cow;
+
+    /// A constant of the user's code, where generated code reads it: its type must be `f64`.
+    #[inline(always)]
+    pub const fn constant(value: f64) -> f64 {
+        value
+    }
 }

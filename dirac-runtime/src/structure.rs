@@ -34,6 +34,28 @@ pub const fn unpaired_unknown<const K: usize>(pattern: &[bool], k: usize) -> Opt
     unpaired(pattern, k, &mut scratch)
 }
 
+/// `values[0] + … + values[end − 1]`; usable in `const` items.
+pub const fn prefix_sum(values: &[usize], end: usize) -> usize {
+    let (mut i, mut sum) = (0, 0);
+    while i < end {
+        sum += values[i];
+        i += 1;
+    }
+    sum
+}
+
+/// Whether every flag is set; usable in `const` items.
+pub const fn all(flags: &[bool]) -> bool {
+    let mut i = 0;
+    while i < flags.len() {
+        if !flags[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
 /// Where unknown `a` of a subsystem's condensed system sits in its composite's: velocities
 /// after the subsystem's first coordinate, multipliers at the subsystem's constraint rows
 /// (holonomic rows from `h_offset`, the others from `v_offset`), after the composite's `n`.

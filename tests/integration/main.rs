@@ -3,6 +3,7 @@
 #[path = "../zoo/mod.rs"]
 mod zoo;
 
+mod authoring;
 mod blocks;
 mod counters;
 mod fuzz;

@@ -133,6 +133,16 @@ impl Emitter<'_> {
                 quote! { self.#field }
             }
             Sym::Time => quote! { t },
+            Sym::Constant(k) => {
+                let tokens = self.model.symbols.constant_at(k).1;
+                // Typed where the user wrote it: a constant that is not an `f64` is an error
+                // at its name.
+                let span = quote::ToTokens::to_token_stream(tokens)
+                    .into_iter()
+                    .next()
+                    .map_or_else(proc_macro2::Span::call_site, |t| t.span());
+                quote::quote_spanned! {span=> ::dirac::__private::constant(#tokens) }
+            }
             kind if flat => {
                 let k = index(kind.flat_slot(n).expect("a part of the state"));
                 quote! { y[#k] }

@@ -7,7 +7,7 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 use crate::ast::is_f64;
 use crate::ctxt::Ctxt;
 use crate::lower::member_path;
-use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, INTERCONNECTION_KEYS};
+use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, INTERCONNECTION_KEYS, LARGE};
 
 /// A composite as written by the user.
 pub struct Composite<'a> {
@@ -19,6 +19,8 @@ pub struct Composite<'a> {
     pub subsystems: Vec<SubsystemField>,
     pub connections: Vec<Connection>,
     pub constraints: Vec<OneForm>,
+    /// `large`: the composite may take more stack than the limit.
+    pub large: bool,
     /// Whether an attribute failed to parse (later stages then report nothing more).
     pub incomplete: bool,
 }
@@ -65,6 +67,7 @@ impl<'a> Composite<'a> {
             subsystems: Vec::new(),
             connections: Vec::new(),
             constraints: Vec::new(),
+            large: false,
             incomplete: false,
         };
         if !input.generics.params.is_empty() {
@@ -143,6 +146,7 @@ fn parse_items(cx: &Ctxt, composite: &mut Composite<'_>, input: ParseStream) -> 
     while !input.is_empty() {
         let key = input.call(Ident::parse_any)?;
         match key.to_string().as_str() {
+            LARGE => composite.large = true,
             CONNECT => {
                 let content;
                 syn::parenthesized!(content in input);

@@ -96,7 +96,9 @@ impl CompositeModel {
             };
             const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
             const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
-            const _: () = if let ::core::option::Option::Some(c) = #p::unpaired_unknown::<__K>(&__PATTERN, __K) {
+            const _: () = if __RESOLVED
+                && let ::core::option::Option::Some(c) = #p::unpaired_unknown::<__K>(&__PATTERN, __K)
+            {
                 ::core::panic!("{}", __UNKNOWNS[c])
             };
         }
@@ -106,6 +108,7 @@ impl CompositeModel {
     pub fn resolutions(&self, composite: &Composite<'_>) -> TokenStream {
         let p = rt();
         let mut out = TokenStream::new();
+        let mut oks = Vec::new();
         for (k, (r, _)) in self.symbols.members().enumerate() {
             let field =
                 composite.subsystems.iter().position(|s| s.ident == r.path[0]).expect("checked field");
@@ -133,7 +136,7 @@ impl CompositeModel {
                     if !r.port { ::core::panic!(#not_port) }
                 }
             } else {
-                TokenStream::new()
+                quote! { let _ = r; }
             };
             let velocity = if r.port {
                 quote! { true }
@@ -142,18 +145,36 @@ impl CompositeModel {
             };
             let span = last_span(&r.tokens);
             let name = proc_macro2::Ident::new(&format!("__R{k}"), span);
+            let resolve = quote! { <#ty as #p::Named>::NAMES.resolve(&[#(#rest),*]) };
+            // The member itself never fails to evaluate (a placeholder stands in for a name that
+            // does not resolve), so the one error is the check's, with no note from the
+            // constants that use the member.
             out.extend(quote_spanned! {span=>
-                const #name: #p::Resolved = {
-                    let r = match <#ty as #p::Named>::NAMES.resolve(&[#(#rest),*]) {
-                        ::core::result::Result::Ok(r) => r,
-                        ::core::result::Result::Err(#p::ResolveError::UnknownField) => ::core::panic!(#unknown_field),
-                        ::core::result::Result::Err(#p::ResolveError::UnknownName) => ::core::panic!(#unknown),
-                    };
-                    #checks
-                    #p::Resolved { velocity: #velocity, index: r.index + #q_offset, port: r.port }
+                const #name: #p::Resolved = match #resolve {
+                    ::core::result::Result::Ok(r) => {
+                        #p::Resolved { velocity: #velocity, index: r.index + #q_offset, port: r.port }
+                    }
+                    ::core::result::Result::Err(_) => #p::Resolved { velocity: false, index: 0, port: false },
+                };
+                const _: () = match #resolve {
+                    ::core::result::Result::Ok(r) => { #checks }
+                    ::core::result::Result::Err(#p::ResolveError::UnknownField) => ::core::panic!(#unknown_field),
+                    ::core::result::Result::Err(#p::ResolveError::UnknownName) => ::core::panic!(#unknown),
                 };
             });
+            let ok = if r.port {
+                quote! { match #resolve { ::core::result::Result::Ok(r) => !r.velocity && r.port, _ => false } }
+            } else {
+                quote! { #resolve.is_ok() }
+            };
+            oks.push(ok);
         }
+        let count = lit(oks.len());
+        out.extend(quote! {
+            /// Whether every member resolved to what its use needs: the checks that depend on the
+            /// members' roles run only then, so that a wrong name is reported once.
+            const __RESOLVED: ::core::primitive::bool = #p::all(&[#(#oks),*] as &[::core::primitive::bool; #count]);
+        });
         out
     }
 
@@ -191,17 +212,17 @@ impl CompositeModel {
                 let what = format!(
                     "interconnection constraint `{name}` must be linear in the velocities, but this term"
                 );
-                let none = message(&format!("{what} has no velocity in it"));
-                let affine = message(&format!("{what} has a part without a velocity"));
-                let nonlinear = message(&format!("{what} is not linear in the velocities"));
+                let none = spanning_panic(&tokens, &format!("{what} has no velocity in it"));
+                let affine = spanning_panic(&tokens, &format!("{what} has a part without a velocity"));
+                let nonlinear = spanning_panic(&tokens, &format!("{what} is not linear in the velocities"));
                 let span = tokens.span();
                 out.extend(quote_spanned! {span=>
-                    const _: () = {
+                    const _: () = if __RESOLVED {
                         const CODES: [::core::primitive::u8; #count] = [#(#codes),*];
                         match CODES[0 #(| #bits)*] {
-                            1 => ::core::panic!(#none),
-                            2 => ::core::panic!(#affine),
-                            3 => ::core::panic!(#nonlinear),
+                            1 => #none,
+                            2 => #affine,
+                            3 => #nonlinear,
                             _ => {}
                         }
                     };
@@ -237,6 +258,17 @@ impl CompositeModel {
         }
         0
     }
+}
+
+/// `::core::panic!(text)` whose tokens span `tokens` from their first to their last: a const
+/// evaluation error then underlines the whole term, not only its first name.
+fn spanning_panic(tokens: &TokenStream, text: &str) -> TokenStream {
+    let first = tokens.clone().into_iter().next().map_or_else(proc_macro2::Span::call_site, |t| t.span());
+    let path = quote_spanned! {first=> ::core::panic!};
+    let message = message(text);
+    let mut group = proc_macro2::Group::new(proc_macro2::Delimiter::Parenthesis, quote! { #message });
+    group.set_span(last_span(tokens));
+    quote! { #path #group }
 }
 
 /// A string literal for `panic!`, with braces escaped.

@@ -69,6 +69,16 @@ impl Own<'_> {
                 let j = lit(j);
                 quote! { lambda[__OMEGA + #j] }
             }
+            Sym::Constant(k) => {
+                let tokens = m.symbols.constant_at(k).1;
+                // Typed where the user wrote it: a constant that is not an `f64` is an error
+                // at its name.
+                let span = quote::ToTokens::to_token_stream(tokens)
+                    .into_iter()
+                    .next()
+                    .map_or_else(proc_macro2::Span::call_site, |t| t.span());
+                quote::quote_spanned! {span=> ::dirac::__private::constant(#tokens) }
+            }
             kind => unreachable!("interconnection rows do not depend on {kind:?}"),
         };
         let statements = emit(&m.graph, assigns, &leaf);

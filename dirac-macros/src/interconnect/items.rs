@@ -60,6 +60,7 @@ fn display_name(model: &CompositeModel, s: u32, style: Style) -> String {
             }
         }
         Sym::Multiplier(j) => format!("mu_{}", model.rows[j].name),
+        Sym::Constant(k) => model.symbols.constant_at(k).0.to_owned(),
         Sym::Time => "t".to_owned(),
         kind => unreachable!("interconnection rows do not depend on {kind:?}"),
     }

@@ -55,38 +55,60 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     }
 }
 
-/// The offsets of each subsystem and the composite's sizes, as const items.
+/// The offsets of each subsystem and the composite's sizes, as const items. Each offset is a
+/// prefix sum over arrays of the subsystems' sizes, not a chain of constants, so that the
+/// compiler's query depth does not grow with the number of subsystems.
 fn layout(composite: &Composite<'_>, rows: usize) -> TokenStream {
     let p = rt();
     let d = quote! { #p::Dimensions };
-    let mut out = TokenStream::new();
-    let (mut q, mut h, mut v) = (quote! { 0 }, quote! { 0 }, quote! { __NH });
-    for (i, sub) in composite.subsystems.iter().enumerate() {
-        let ty = &sub.ty;
+    let u = quote! { ::core::primitive::usize };
+    let count = Literal::usize_unsuffixed(composite.subsystems.len());
+    let types: Vec<&syn::Type> = composite.subsystems.iter().map(|s| &s.ty).collect();
+    let mut out = quote! {
+        const __NQS: [#u; #count] = [#(<#types as #d>::NQ),*];
+        const __NHS: [#u; #count] = [#(<#types as #d>::NH),*];
+        const __NCS: [#u; #count] = [#(<#types as #d>::NC),*];
+    };
+    for i in 0..composite.subsystems.len() {
         let (qi, hi, vi, slot) = (
             format_ident!("__Q{}", i),
             format_ident!("__H{}", i),
             format_ident!("__V{}", i),
             format_ident!("__SLOT{}", i),
         );
+        let i = Literal::usize_unsuffixed(i);
         out.extend(quote! {
-            const #qi: ::core::primitive::usize = #q;
-            const #hi: ::core::primitive::usize = #h;
-            const #vi: ::core::primitive::usize = #v;
+            const #qi: #u = #p::prefix_sum(&__NQS, #i);
+            const #hi: #u = #p::prefix_sum(&__NHS, #i);
+            const #vi: #u = __NH + #p::prefix_sum(&__NCS, #i) - #p::prefix_sum(&__NHS, #i);
             const #slot: #p::Slot = #p::Slot { q: #qi, h: #hi, v: #vi };
         });
-        q = quote! { #qi + <#ty as #d>::NQ };
-        h = quote! { #hi + <#ty as #d>::NH };
-        v = quote! { #vi + (<#ty as #d>::NC - <#ty as #d>::NH) };
     }
     let rows = Literal::usize_unsuffixed(rows);
+    if !composite.large {
+        let message = format!(
+            "`{}` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more \
+             than the {} KiB of stack a model may take without asking (threads Rust spawns have 2 MiB, and \
+             overflowing a stack aborts the process); add `#[dirac(large)]` and run the simulation on a \
+             thread with a larger stack, such as `std::thread::Builder::new().stack_size(64 << 20)`",
+            composite.ident,
+            dirac_stack_limit() / 1024
+        );
+        out.extend(quote! {
+            const _: () = if #p::stack_bytes(__NQ, __NC) > #p::STACK_LIMIT { ::core::panic!(#message) };
+        });
+    }
     out.extend(quote! {
-        const __NQ: ::core::primitive::usize = #q;
-        const __NH: ::core::primitive::usize = #h;
-        const __OMEGA: ::core::primitive::usize = #v;
-        const __NC: ::core::primitive::usize = __OMEGA + #rows;
+        const __NQ: #u = #p::prefix_sum(&__NQS, #count);
+        const __NH: #u = #p::prefix_sum(&__NHS, #count);
+        const __OMEGA: #u = __NH + #p::prefix_sum(&__NCS, #count) - __NH;
+        const __NC: #u = __OMEGA + #rows;
     });
     out
+}
+
+fn dirac_stack_limit() -> usize {
+    crate::stack::STACK_LIMIT
 }
 
 fn implementation(

@@ -21,7 +21,10 @@ impl Graph {
         }
         let d = match self.node(e).clone() {
             Node::Num(_) => self.num(0.0),
-            Node::Sym(x) => self.num(if x == s { 1.0 } else { 0.0 }),
+            Node::Sym(x) => match self.binding(x) {
+                Some(value) => self.diff_sym(value, s),
+                None => self.num(if x == s { 1.0 } else { 0.0 }),
+            },
             Node::Add(_, terms) => {
                 let ds: Vec<Id> = terms.iter().map(|t| self.diff_sym(*t, s)).collect();
                 self.add(&ds)

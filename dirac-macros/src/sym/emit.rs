@@ -47,18 +47,17 @@ enum Prec {
 pub fn emit(graph: &Graph, assigns: &[Assign], leaf: &dyn Fn(u32) -> TokenStream) -> TokenStream {
     let uses = count_uses(graph, assigns);
     let mut emitter = Emitter { graph, leaf, names: vec![None; graph.len()] };
-    let mut bound = 0usize;
-    let mut body = TokenStream::new();
+    let mut bindings = Vec::new();
     for (index, &n) in uses.iter().enumerate() {
         let id = graph_id(graph, index);
-        if n >= 2 && !is_leaf(graph.node(id)) {
+        if n >= 2 && !is_leaf(graph, id) {
             let (value, _) = emitter.render_node(id);
-            let name = format_ident!("s{}", bound);
-            bound += 1;
-            body.extend(quote! { let #name = #value; });
+            let name = format_ident!("s{}", bindings.len());
+            bindings.push((name.clone(), value));
             emitter.names[index] = Some(name);
         }
     }
+    let mut body = bind(bindings);
     for a in assigns {
         let target = &a.target;
         let (value, _) = emitter.render(a.value);
@@ -73,6 +72,28 @@ pub fn emit(graph: &Graph, assigns: &[Assign], leaf: &dyn Fn(u32) -> TokenStream
         });
     }
     body
+}
+
+/// Above this many shared subexpressions a method's `let` bindings are grouped.
+const GROUPED: usize = 512;
+
+/// `let sN = …;` for every binding. Each `let` opens a scope nested in the previous one, and
+/// the compiler's debug-info writer recurses once per level: past some thousands of levels it
+/// overflows its stack. Many bindings are therefore grouped, `let (s0, …, sK) = { let s0 = …;
+/// …; (s0, …, sK) };`, which computes the same values in the same order with about 2 √N
+/// levels.
+fn bind(bindings: Vec<(proc_macro2::Ident, TokenStream)>) -> TokenStream {
+    if bindings.len() <= GROUPED {
+        return bindings.into_iter().map(|(name, value)| quote! { let #name = #value; }).collect();
+    }
+    let size = (bindings.len() as f64).sqrt().ceil() as usize;
+    let mut out = TokenStream::new();
+    for group in bindings.chunks(size) {
+        let names: Vec<&proc_macro2::Ident> = group.iter().map(|(name, _)| name).collect();
+        let lets = group.iter().map(|(name, value)| quote! { let #name = #value; });
+        out.extend(quote! { let (#(#names,)*) = { #(#lets)* (#(#names,)*) }; });
+    }
+    out
 }
 
 /// How many
@@ -101,8 +122,13 @@ fn graph_id(graph: &Graph, index: usize) -> Id {
     Id::at(index)
 }
 
-fn is_leaf(node: &Node) -> bool {
-    matches!(node, Node::Num(_) | Node::Sym(_))
+/// A number or a free symbol: written where it is used, never bound.
+fn is_leaf(graph: &Graph, id: Id) -> bool {
+    match graph.node(id) {
+        Node::Num(_) => true,
+        Node::Sym(s) => graph.binding(*s).is_none(),
+        _ => false,
+    }
 }
 
 /// How often each node is referenced by a reachable parent or an assignment; 0 = unreachable.
@@ -118,7 +144,7 @@ fn count_uses(graph: &Graph, assigns: &[Assign]) -> Vec<u32> {
         if std::mem::replace(&mut visited[id.index()], true) {
             continue;
         }
-        for child in children(graph.node(id)) {
+        for child in children(graph, id) {
             uses[child.index()] += 1;
             stack.push(child);
         }
@@ -126,9 +152,10 @@ fn count_uses(graph: &Graph, assigns: &[Assign]) -> Vec<u32> {
     uses
 }
 
-fn children(node: &Node) -> Vec<Id> {
-    match node {
-        Node::Num(_) | Node::Sym(_) => Vec::new(),
+fn children(graph: &Graph, id: Id) -> Vec<Id> {
+    match graph.node(id) {
+        Node::Sym(s) => graph.binding(*s).into_iter().collect(),
+        Node::Num(_) => Vec::new(),
         Node::Add(_, xs) | Node::Mul(_, xs) => xs.to_vec(),
         Node::Powi(x, _) | Node::Call(_, x) => vec![*x],
         Node::Powf(a, b) | Node::Atan2(a, b) => vec![*a, *b],
@@ -162,7 +189,10 @@ impl Emitter<'_> {
     fn render_node(&self, id: Id) -> (TokenStream, Prec) {
         match self.graph.node(id) {
             Node::Num(c) => number(c.get()),
-            Node::Sym(s) => ((self.leaf)(*s), Prec::Atom),
+            Node::Sym(s) => match self.graph.binding(*s) {
+                Some(bound) => self.render(bound),
+                None => ((self.leaf)(*s), Prec::Atom),
+            },
             Node::Add(c, terms) => (self.render_sum(c.get(), terms), Prec::Sum),
             Node::Mul(c, factors) => self.render_product(c.get(), factors),
             Node::Powi(b, k) => {

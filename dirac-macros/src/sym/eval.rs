@@ -22,7 +22,10 @@ impl Graph {
         }
         let x = match self.node(e) {
             Node::Num(c) => c.get(),
-            Node::Sym(s) => value(*s),
+            Node::Sym(s) => match self.binding(*s) {
+                Some(bound) => self.eval_memo(bound, value, memo),
+                None => value(*s),
+            },
             Node::Add(c, ts) => ts.iter().fold(c.get(), |acc, t| acc + self.eval_memo(*t, value, memo)),
             Node::Mul(c, fs) => fs.iter().fold(c.get(), |acc, f| acc * self.eval_memo(*f, value, memo)),
             Node::Powi(b, k) => self.eval_memo(*b, value, memo).powi(*k),
@@ -55,7 +58,11 @@ impl Graph {
         }
         let r = match self.node(e).clone() {
             Node::Num(_) => e,
-            Node::Sym(s) => map.get(&s).copied().unwrap_or(e),
+            Node::Sym(s) => match (map.get(&s), self.binding(s)) {
+                (Some(&to), _) => to,
+                (None, Some(bound)) => self.substitute_memo(bound, map, memo),
+                (None, None) => e,
+            },
             Node::Add(c, ts) => {
                 let mut parts = vec![self.num(c.get())];
                 for t in ts.iter() {

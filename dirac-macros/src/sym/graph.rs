@@ -179,6 +179,8 @@ pub struct Graph {
     interned: HashMap<Node, Id>,
     names: Vec<String>,
     symbols: HashMap<String, Id>,
+    /// The expression a bound symbol stands for (a model's definition), by symbol index.
+    bindings: Vec<Option<Id>>,
     pub(crate) diff_memo: HashMap<(Id, u32), Id>,
 }
 
@@ -223,6 +225,24 @@ impl Graph {
         let id = self.intern(Node::Sym(sym));
         self.symbols.insert(name.to_owned(), id);
         id
+    }
+
+    /// Binds symbol `sym` (a `Sym` node) to the expression `value`: it stays one node that is
+    /// printed by its name and computed once, but depends on, differentiates and substitutes
+    /// as `value` does. Bind before the symbol is used in other expressions.
+    pub fn bind(&mut self, sym: Id, value: Id) {
+        let s = self.as_sym(sym).expect("bind a symbol") as usize;
+        if self.bindings.len() <= s {
+            self.bindings.resize(s + 1, None);
+        }
+        self.bindings[s] = Some(value);
+        let deps = self.deps[value.index()].clone();
+        self.deps[sym.index()].union_with(&deps);
+    }
+
+    /// The expression symbol `sym` is bound to, if any.
+    pub fn binding(&self, sym: u32) -> Option<Id> {
+        self.bindings.get(sym as usize).copied().flatten()
     }
 
     /// The symbol index of a `Sym` node.

@@ -17,7 +17,8 @@ enum Prec {
     Atom,
 }
 
-/// Prints `e` with each symbol written as `name(sym)`, which must already suit the style.
+/// Prints `e` with each symbol written as `name(sym)`, which must already suit the style (a
+/// bound symbol, a model's definition, is printed by its name too).
 pub fn pretty(graph: &Graph, e: Id, style: Style, name: &dyn Fn(u32) -> String) -> String {
     Printer { graph, style, name }.print(e).0
 }

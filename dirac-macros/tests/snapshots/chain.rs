@@ -13,88 +13,143 @@ const _: () = {
         {}
         subsystem::<Primitive2>();
     };
-    const __Q0: ::core::primitive::usize = 0;
-    const __H0: ::core::primitive::usize = 0;
-    const __V0: ::core::primitive::usize = __NH;
+    const __NQS: [::core::primitive::usize; 2] = [
+        <Primitive1 as ::dirac::__private::Dimensions>::NQ,
+        <Primitive2 as ::dirac::__private::Dimensions>::NQ,
+    ];
+    const __NHS: [::core::primitive::usize; 2] = [
+        <Primitive1 as ::dirac::__private::Dimensions>::NH,
+        <Primitive2 as ::dirac::__private::Dimensions>::NH,
+    ];
+    const __NCS: [::core::primitive::usize; 2] = [
+        <Primitive1 as ::dirac::__private::Dimensions>::NC,
+        <Primitive2 as ::dirac::__private::Dimensions>::NC,
+    ];
+    const __Q0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 0);
+    const __H0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 0);
+    const __V0: ::core::primitive::usize = __NH
+        + ::dirac::__private::prefix_sum(&__NCS, 0)
+        - ::dirac::__private::prefix_sum(&__NHS, 0);
     const __SLOT0: ::dirac::__private::Slot = ::dirac::__private::Slot {
         q: __Q0,
         h: __H0,
         v: __V0,
     };
-    const __Q1: ::core::primitive::usize = __Q0
-        + <Primitive1 as ::dirac::__private::Dimensions>::NQ;
-    const __H1: ::core::primitive::usize = __H0
-        + <Primitive1 as ::dirac::__private::Dimensions>::NH;
-    const __V1: ::core::primitive::usize = __V0
-        + (<Primitive1 as ::dirac::__private::Dimensions>::NC
-            - <Primitive1 as ::dirac::__private::Dimensions>::NH);
+    const __Q1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 1);
+    const __H1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 1);
+    const __V1: ::core::primitive::usize = __NH
+        + ::dirac::__private::prefix_sum(&__NCS, 1)
+        - ::dirac::__private::prefix_sum(&__NHS, 1);
     const __SLOT1: ::dirac::__private::Slot = ::dirac::__private::Slot {
         q: __Q1,
         h: __H1,
         v: __V1,
     };
-    const __NQ: ::core::primitive::usize = __Q1
-        + <Primitive2 as ::dirac::__private::Dimensions>::NQ;
-    const __NH: ::core::primitive::usize = __H1
-        + <Primitive2 as ::dirac::__private::Dimensions>::NH;
-    const __OMEGA: ::core::primitive::usize = __V1
-        + (<Primitive2 as ::dirac::__private::Dimensions>::NC
-            - <Primitive2 as ::dirac::__private::Dimensions>::NH);
+    const _: () = if ::dirac::__private::stack_bytes(__NQ, __NC)
+        > ::dirac::__private::STACK_LIMIT
+    {
+        ::core::panic!(
+            "`Chain` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more than the 256 KiB of stack a model may take without asking (threads Rust spawns have 2 MiB, and overflowing a stack aborts the process); add `#[dirac(large)]` and run the simulation on a thread with a larger stack, such as `std::thread::Builder::new().stack_size(64 << 20)`"
+        )
+    };
+    const __NQ: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 2);
+    const __NH: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 2);
+    const __OMEGA: ::core::primitive::usize = __NH
+        + ::dirac::__private::prefix_sum(&__NCS, 2) - __NH;
     const __NC: ::core::primitive::usize = __OMEGA + 1;
-    const __R0: ::dirac::__private::Resolved = {
-        let r = match <Primitive1 as ::dirac::__private::Named>::NAMES.resolve(&["x2"]) {
-            ::core::result::Result::Ok(r) => r,
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownField,
-            ) => ::core::panic!("`left.x2`: `left` has no subsystem `x2`"),
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownName,
-            ) => ::core::panic!("`x2` is not a coordinate of `left`"),
-        };
-        if r.velocity {
-            ::core::panic!(
-                "`left.x2` is a velocity; `connect` joins ports, named by their coordinates"
-            )
+    const __R0: ::dirac::__private::Resolved = match <Primitive1 as ::dirac::__private::Named>::NAMES
+        .resolve(&["x2"])
+    {
+        ::core::result::Result::Ok(r) => {
+            ::dirac::__private::Resolved {
+                velocity: true,
+                index: r.index + __Q0,
+                port: r.port,
+            }
         }
-        if !r.port {
-            ::core::panic!(
-                "`x2` is not a port of `left`; declare it with `port(x2)` on its model"
-            )
-        }
-        ::dirac::__private::Resolved {
-            velocity: true,
-            index: r.index + __Q0,
-            port: r.port,
+        ::core::result::Result::Err(_) => {
+            ::dirac::__private::Resolved {
+                velocity: false,
+                index: 0,
+                port: false,
+            }
         }
     };
-    const __R1: ::dirac::__private::Resolved = {
-        let r = match <Primitive2 as ::dirac::__private::Named>::NAMES
-            .resolve(&["x2bar"])
-        {
-            ::core::result::Result::Ok(r) => r,
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownField,
-            ) => ::core::panic!("`right.x2bar`: `right` has no subsystem `x2bar`"),
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownName,
-            ) => ::core::panic!("`x2bar` is not a coordinate of `right`"),
-        };
-        if r.velocity {
-            ::core::panic!(
-                "`right.x2bar` is a velocity; `connect` joins ports, named by their coordinates"
-            )
+    const _: () = match <Primitive1 as ::dirac::__private::Named>::NAMES.resolve(&["x2"])
+    {
+        ::core::result::Result::Ok(r) => {
+            if r.velocity {
+                ::core::panic!(
+                    "`left.x2` is a velocity; `connect` joins ports, named by their coordinates"
+                )
+            }
+            if !r.port {
+                ::core::panic!(
+                    "`x2` is not a port of `left`; declare it with `port(x2)` on its model"
+                )
+            }
         }
-        if !r.port {
-            ::core::panic!(
-                "`x2bar` is not a port of `right`; declare it with `port(x2bar)` on its model"
-            )
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
+            ::core::panic!("`left.x2`: `left` has no subsystem `x2`")
         }
-        ::dirac::__private::Resolved {
-            velocity: true,
-            index: r.index + __Q1,
-            port: r.port,
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
+            ::core::panic!("`x2` is not a coordinate of `left`")
         }
     };
+    const __R1: ::dirac::__private::Resolved = match <Primitive2 as ::dirac::__private::Named>::NAMES
+        .resolve(&["x2bar"])
+    {
+        ::core::result::Result::Ok(r) => {
+            ::dirac::__private::Resolved {
+                velocity: true,
+                index: r.index + __Q1,
+                port: r.port,
+            }
+        }
+        ::core::result::Result::Err(_) => {
+            ::dirac::__private::Resolved {
+                velocity: false,
+                index: 0,
+                port: false,
+            }
+        }
+    };
+    const _: () = match <Primitive2 as ::dirac::__private::Named>::NAMES
+        .resolve(&["x2bar"])
+    {
+        ::core::result::Result::Ok(r) => {
+            if r.velocity {
+                ::core::panic!(
+                    "`right.x2bar` is a velocity; `connect` joins ports, named by their coordinates"
+                )
+            }
+            if !r.port {
+                ::core::panic!(
+                    "`x2bar` is not a port of `right`; declare it with `port(x2bar)` on its model"
+                )
+            }
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
+            ::core::panic!("`right.x2bar`: `right` has no subsystem `x2bar`")
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
+            ::core::panic!("`x2bar` is not a coordinate of `right`")
+        }
+    };
+    /// Whether every member resolved to what its use needs: the checks that depend on the
+    /// members' roles run only then, so that a wrong name is reported once.
+    const __RESOLVED: ::core::primitive::bool = ::dirac::__private::all(
+        &[
+            match <Primitive1 as ::dirac::__private::Named>::NAMES.resolve(&["x2"]) {
+                ::core::result::Result::Ok(r) => !r.velocity && r.port,
+                _ => false,
+            },
+            match <Primitive2 as ::dirac::__private::Named>::NAMES.resolve(&["x2bar"]) {
+                ::core::result::Result::Ok(r) => !r.velocity && r.port,
+                _ => false,
+            },
+        ] as &[::core::primitive::bool; 2],
+    );
     const __K: ::core::primitive::usize = __NQ + __NC;
     const __STRUCTURE: (
         [::core::primitive::bool; __K * __K],
@@ -185,9 +240,11 @@ const _: () = {
     };
     const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
     const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
-    const _: () = if let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
-        __K,
-    >(&__PATTERN, __K) {
+    const _: () = if __RESOLVED
+        && let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
+            __K,
+        >(&__PATTERN, __K)
+    {
         ::core::panic!("{}", __UNKNOWNS[c])
     };
     #[automatically_derived]

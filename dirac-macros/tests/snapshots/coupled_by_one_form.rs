@@ -13,99 +13,178 @@ const _: () = {
         {}
         subsystem::<Cart>();
     };
-    const __Q0: ::core::primitive::usize = 0;
-    const __H0: ::core::primitive::usize = 0;
-    const __V0: ::core::primitive::usize = __NH;
+    const __NQS: [::core::primitive::usize; 2] = [
+        <Wheel as ::dirac::__private::Dimensions>::NQ,
+        <Cart as ::dirac::__private::Dimensions>::NQ,
+    ];
+    const __NHS: [::core::primitive::usize; 2] = [
+        <Wheel as ::dirac::__private::Dimensions>::NH,
+        <Cart as ::dirac::__private::Dimensions>::NH,
+    ];
+    const __NCS: [::core::primitive::usize; 2] = [
+        <Wheel as ::dirac::__private::Dimensions>::NC,
+        <Cart as ::dirac::__private::Dimensions>::NC,
+    ];
+    const __Q0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 0);
+    const __H0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 0);
+    const __V0: ::core::primitive::usize = __NH
+        + ::dirac::__private::prefix_sum(&__NCS, 0)
+        - ::dirac::__private::prefix_sum(&__NHS, 0);
     const __SLOT0: ::dirac::__private::Slot = ::dirac::__private::Slot {
         q: __Q0,
         h: __H0,
         v: __V0,
     };
-    const __Q1: ::core::primitive::usize = __Q0
-        + <Wheel as ::dirac::__private::Dimensions>::NQ;
-    const __H1: ::core::primitive::usize = __H0
-        + <Wheel as ::dirac::__private::Dimensions>::NH;
-    const __V1: ::core::primitive::usize = __V0
-        + (<Wheel as ::dirac::__private::Dimensions>::NC
-            - <Wheel as ::dirac::__private::Dimensions>::NH);
+    const __Q1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 1);
+    const __H1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 1);
+    const __V1: ::core::primitive::usize = __NH
+        + ::dirac::__private::prefix_sum(&__NCS, 1)
+        - ::dirac::__private::prefix_sum(&__NHS, 1);
     const __SLOT1: ::dirac::__private::Slot = ::dirac::__private::Slot {
         q: __Q1,
         h: __H1,
         v: __V1,
     };
-    const __NQ: ::core::primitive::usize = __Q1
-        + <Cart as ::dirac::__private::Dimensions>::NQ;
-    const __NH: ::core::primitive::usize = __H1
-        + <Cart as ::dirac::__private::Dimensions>::NH;
-    const __OMEGA: ::core::primitive::usize = __V1
-        + (<Cart as ::dirac::__private::Dimensions>::NC
-            - <Cart as ::dirac::__private::Dimensions>::NH);
+    const _: () = if ::dirac::__private::stack_bytes(__NQ, __NC)
+        > ::dirac::__private::STACK_LIMIT
+    {
+        ::core::panic!(
+            "`CoupledByOneForm` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more than the 256 KiB of stack a model may take without asking (threads Rust spawns have 2 MiB, and overflowing a stack aborts the process); add `#[dirac(large)]` and run the simulation on a thread with a larger stack, such as `std::thread::Builder::new().stack_size(64 << 20)`"
+        )
+    };
+    const __NQ: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 2);
+    const __NH: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 2);
+    const __OMEGA: ::core::primitive::usize = __NH
+        + ::dirac::__private::prefix_sum(&__NCS, 2) - __NH;
     const __NC: ::core::primitive::usize = __OMEGA + 1;
-    const __R0: ::dirac::__private::Resolved = {
-        let r = match <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["theta"]) {
-            ::core::result::Result::Ok(r) => r,
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownField,
-            ) => ::core::panic!("`wheel.theta`: `wheel` has no subsystem `theta`"),
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownName,
-            ) => ::core::panic!("`theta` is not a coordinate or velocity of `wheel`"),
-        };
-        ::dirac::__private::Resolved {
-            velocity: r.velocity,
-            index: r.index + __Q0,
-            port: r.port,
+    const __R0: ::dirac::__private::Resolved = match <Wheel as ::dirac::__private::Named>::NAMES
+        .resolve(&["theta"])
+    {
+        ::core::result::Result::Ok(r) => {
+            ::dirac::__private::Resolved {
+                velocity: r.velocity,
+                index: r.index + __Q0,
+                port: r.port,
+            }
+        }
+        ::core::result::Result::Err(_) => {
+            ::dirac::__private::Resolved {
+                velocity: false,
+                index: 0,
+                port: false,
+            }
         }
     };
-    const __R1: ::dirac::__private::Resolved = {
-        let r = match <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["v_theta"]) {
-            ::core::result::Result::Ok(r) => r,
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownField,
-            ) => ::core::panic!("`wheel.v_theta`: `wheel` has no subsystem `v_theta`"),
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownName,
-            ) => ::core::panic!("`v_theta` is not a coordinate or velocity of `wheel`"),
-        };
-        ::dirac::__private::Resolved {
-            velocity: r.velocity,
-            index: r.index + __Q0,
-            port: r.port,
+    const _: () = match <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["theta"]) {
+        ::core::result::Result::Ok(r) => {
+            let _ = r;
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
+            ::core::panic!("`wheel.theta`: `wheel` has no subsystem `theta`")
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
+            ::core::panic!("`theta` is not a coordinate or velocity of `wheel`")
         }
     };
-    const __R2: ::dirac::__private::Resolved = {
-        let r = match <Cart as ::dirac::__private::Named>::NAMES.resolve(&["x"]) {
-            ::core::result::Result::Ok(r) => r,
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownField,
-            ) => ::core::panic!("`cart.x`: `cart` has no subsystem `x`"),
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownName,
-            ) => ::core::panic!("`x` is not a coordinate or velocity of `cart`"),
-        };
-        ::dirac::__private::Resolved {
-            velocity: r.velocity,
-            index: r.index + __Q1,
-            port: r.port,
+    const __R1: ::dirac::__private::Resolved = match <Wheel as ::dirac::__private::Named>::NAMES
+        .resolve(&["v_theta"])
+    {
+        ::core::result::Result::Ok(r) => {
+            ::dirac::__private::Resolved {
+                velocity: r.velocity,
+                index: r.index + __Q0,
+                port: r.port,
+            }
+        }
+        ::core::result::Result::Err(_) => {
+            ::dirac::__private::Resolved {
+                velocity: false,
+                index: 0,
+                port: false,
+            }
         }
     };
-    const __R3: ::dirac::__private::Resolved = {
-        let r = match <Cart as ::dirac::__private::Named>::NAMES.resolve(&["v_x"]) {
-            ::core::result::Result::Ok(r) => r,
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownField,
-            ) => ::core::panic!("`cart.v_x`: `cart` has no subsystem `v_x`"),
-            ::core::result::Result::Err(
-                ::dirac::__private::ResolveError::UnknownName,
-            ) => ::core::panic!("`v_x` is not a coordinate or velocity of `cart`"),
-        };
-        ::dirac::__private::Resolved {
-            velocity: r.velocity,
-            index: r.index + __Q1,
-            port: r.port,
+    const _: () = match <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["v_theta"])
+    {
+        ::core::result::Result::Ok(r) => {
+            let _ = r;
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
+            ::core::panic!("`wheel.v_theta`: `wheel` has no subsystem `v_theta`")
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
+            ::core::panic!("`v_theta` is not a coordinate or velocity of `wheel`")
         }
     };
-    const _: () = {
+    const __R2: ::dirac::__private::Resolved = match <Cart as ::dirac::__private::Named>::NAMES
+        .resolve(&["x"])
+    {
+        ::core::result::Result::Ok(r) => {
+            ::dirac::__private::Resolved {
+                velocity: r.velocity,
+                index: r.index + __Q1,
+                port: r.port,
+            }
+        }
+        ::core::result::Result::Err(_) => {
+            ::dirac::__private::Resolved {
+                velocity: false,
+                index: 0,
+                port: false,
+            }
+        }
+    };
+    const _: () = match <Cart as ::dirac::__private::Named>::NAMES.resolve(&["x"]) {
+        ::core::result::Result::Ok(r) => {
+            let _ = r;
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
+            ::core::panic!("`cart.x`: `cart` has no subsystem `x`")
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
+            ::core::panic!("`x` is not a coordinate or velocity of `cart`")
+        }
+    };
+    const __R3: ::dirac::__private::Resolved = match <Cart as ::dirac::__private::Named>::NAMES
+        .resolve(&["v_x"])
+    {
+        ::core::result::Result::Ok(r) => {
+            ::dirac::__private::Resolved {
+                velocity: r.velocity,
+                index: r.index + __Q1,
+                port: r.port,
+            }
+        }
+        ::core::result::Result::Err(_) => {
+            ::dirac::__private::Resolved {
+                velocity: false,
+                index: 0,
+                port: false,
+            }
+        }
+    };
+    const _: () = match <Cart as ::dirac::__private::Named>::NAMES.resolve(&["v_x"]) {
+        ::core::result::Result::Ok(r) => {
+            let _ = r;
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
+            ::core::panic!("`cart.v_x`: `cart` has no subsystem `v_x`")
+        }
+        ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
+            ::core::panic!("`v_x` is not a coordinate or velocity of `cart`")
+        }
+    };
+    /// Whether every member resolved to what its use needs: the checks that depend on the
+    /// members' roles run only then, so that a wrong name is reported once.
+    const __RESOLVED: ::core::primitive::bool = ::dirac::__private::all(
+        &[
+            <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["theta"]).is_ok(),
+            <Wheel as ::dirac::__private::Named>::NAMES.resolve(&["v_theta"]).is_ok(),
+            <Cart as ::dirac::__private::Named>::NAMES.resolve(&["x"]).is_ok(),
+            <Cart as ::dirac::__private::Named>::NAMES.resolve(&["v_x"]).is_ok(),
+        ] as &[::core::primitive::bool; 4],
+    );
+    const _: () = if __RESOLVED {
         const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
         match CODES[0 | ((__R0.velocity as ::core::primitive::usize) << 0usize)
             | ((__R1.velocity as ::core::primitive::usize) << 1usize)]
@@ -128,7 +207,7 @@ const _: () = {
             _ => {}
         }
     };
-    const _: () = {
+    const _: () = if __RESOLVED {
         const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
         match CODES[0 | ((__R2.velocity as ::core::primitive::usize) << 0usize)
             | ((__R3.velocity as ::core::primitive::usize) << 1usize)]
@@ -267,9 +346,11 @@ const _: () = {
     };
     const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
     const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
-    const _: () = if let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
-        __K,
-    >(&__PATTERN, __K) {
+    const _: () = if __RESOLVED
+        && let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
+            __K,
+        >(&__PATTERN, __K)
+    {
         ::core::panic!("{}", __UNKNOWNS[c])
     };
     #[automatically_derived]
