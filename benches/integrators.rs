@@ -39,7 +39,7 @@ fn pendulum8_start(model: &Pendulum8) -> State<Pendulum8> {
     consistent_state(model, 0.0, &q, &VecQ::<Pendulum8>::zeros(), Consistency::default()).expect("consistent")
 }
 
-fn newton_once<M: LagrangeDirac, S: NewtonSolver<M>>(
+fn newton_once<M: DenseModel, S: NewtonSolver<M, dirac::Dense>>(
     solver: &mut S,
     jac: &JacobianBlocks<M>,
     rhs: &VecY<M>,
@@ -54,7 +54,7 @@ where
     a[0] + b[0] + c[0]
 }
 
-fn newton_group<M: LagrangeDirac>(c: &mut Criterion, name: &str, model: &M, start: &State<M>)
+fn newton_group<M: DenseModel>(c: &mut Criterion, name: &str, model: &M, start: &State<M>)
 where
     DefaultAllocator: dirac::Storage<M>,
 {
@@ -71,7 +71,7 @@ where
     group.finish();
 }
 
-fn radau_group<M: LagrangeDirac>(c: &mut Criterion, name: &str, model: &M, start: &State<M>, t_end: f64)
+fn radau_group<M: DenseModel>(c: &mut Criterion, name: &str, model: &M, start: &State<M>, t_end: f64)
 where
     DefaultAllocator: dirac::Storage<M>,
 {

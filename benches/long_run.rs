@@ -24,7 +24,7 @@ struct Windows {
     last: f64,
 }
 
-fn variational<M: LagrangeDirac>(model: &M, start: &State<M>, h: f64, steps: usize) -> (f64, Windows)
+fn variational<M: DenseModel>(model: &M, start: &State<M>, h: f64, steps: usize) -> (f64, Windows)
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
@@ -47,7 +47,7 @@ where
     (clock.elapsed().as_secs_f64(), w)
 }
 
-fn radau<M: LagrangeDirac>(model: &M, start: &State<M>, span: f64, tol: f64) -> (f64, Windows, usize)
+fn radau<M: DenseModel>(model: &M, start: &State<M>, span: f64, tol: f64) -> (f64, Windows, usize)
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
@@ -69,7 +69,7 @@ where
     (clock.elapsed().as_secs_f64(), w, sol.stats.steps)
 }
 
-fn report<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, h: f64, tols: &[f64])
+fn report<M: DenseModel>(name: &str, model: &M, start: &State<M>, h: f64, tols: &[f64])
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {

@@ -71,7 +71,7 @@ fn rattle_pendulum(p: &Pendulum, mut q: [f64; 2], mut v: [f64; 2]) -> f64 {
     q[0] + v[1]
 }
 
-fn ours<M: LagrangeDirac>(model: &M, start: &State<M>, options: VariationalOptions) -> f64
+fn ours<M: DenseModel>(model: &M, start: &State<M>, options: VariationalOptions) -> f64
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {

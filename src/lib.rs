@@ -54,11 +54,11 @@ extern crate self as dirac;
 
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Integrator, JacobianBlocks,
-    LagrangeDirac, Layout, MatCQ, MatKK, MatQQ, MatYY, Membership, Named, Names, OperationCounts, Radau,
-    RadauOptions, RadauStats, ResidualBlocks, Sampling, SimError, Slot, Solution, SparseJacobian, State,
-    Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH, VecK, VecQ, VecY,
-    consistent_state,
+    Algebra, Consistency, Constraint, Coordinate, Dense, DenseModel, Dimensions, DiracStructure, Equations,
+    Fixed, Integrator, JacobianBlocks, LagrangeDirac, Layout, MatCQ, MatKK, MatQQ, MatYY, Membership, Named,
+    Names, OperationCounts, Radau, RadauOptions, RadauStats, ResidualBlocks, Sampling, SimError, Sizes, Slot,
+    Solution, SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH,
+    VecK, VecQ, VecY, consistent_state,
 };
 
 /// The linear-algebra crate dirac is built on, re-exported so that generic code over models
@@ -73,14 +73,16 @@ pub use dirac_runtime::nalgebra;
 /// ```
 /// use dirac::prelude::*;
 ///
-/// /// The kinetic energy `½ vᵀ L_vv v` of any model, at its state.
+/// /// The kinetic energy `½ vᵀ L_vv v` of any model (dense or sparse), at its state.
 /// fn kinetic_energy<M: LagrangeDirac>(model: &M, state: &State<M>) -> f64
 /// where
 ///     DefaultAllocator: Storage<M>,
 /// {
-///     let mut mass = MatQQ::<M>::zeros();
+///     let mut mass = M::Algebra::zeros_qq(&model.shape());
 ///     model.l_vv(0.0, &state.q, &state.v, &mut mass);
-///     0.5 * state.v.dot(&(mass * &state.v))
+///     let mut momentum = model.sizes().zeros_q::<M>();
+///     M::Algebra::qq_mul(&mass, 1.0, state.v.as_slice(), momentum.as_mut_slice());
+///     0.5 * state.v.dot(&momentum)
 /// }
 ///
 /// #[derive(LagrangeDirac)]
@@ -95,10 +97,10 @@ pub use dirac_runtime::nalgebra;
 pub mod prelude {
     pub use crate::nalgebra::DefaultAllocator;
     pub use crate::{
-        Consistency, Constraint, Coordinate, Dimensions, DiracStructure, Equations, Integrator,
-        Interconnection, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY, Named, Radau, RadauOptions,
-        ResidualBlocks, Sampling, SimError, Solution, SparseJacobian, State, Storage, Variational,
-        VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state,
+        Algebra, Consistency, Constraint, Coordinate, DenseModel, Dimensions, DiracStructure, Equations,
+        Fixed, Integrator, Interconnection, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ, MatYY, Named, Radau,
+        RadauOptions, ResidualBlocks, Sampling, SimError, Sizes, Solution, SparseJacobian, State, Storage,
+        Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state,
     };
 }
 

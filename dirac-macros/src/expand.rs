@@ -7,7 +7,7 @@ use syn::DeriveInput;
 use crate::ast::Model;
 use crate::blocks::Blocks;
 use crate::check::check;
-use crate::codegen::signatures::{REQUIRED, rt};
+use crate::codegen::signatures::{REQUIRED, fixed_storage, rt};
 use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
 use crate::equations::equations;
@@ -168,6 +168,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let constants = inherent_constants(model, names);
     let named = named(&sym, ident);
     let parameters = non_finite_parameter(&sym.params);
+    let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     quote! {
         const _: () = {
             #[automatically_derived]
@@ -185,6 +186,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
             // Coefficients folded from the user's numbers may approximate named constants.
             #[allow(clippy::approx_constant)]
             impl #p::LagrangeDirac for #ident {
+                #storage
                 const SEPARABLE: ::core::primitive::bool = #separable;
                 const STRUCTURE: #p::Structure = #p::Structure {
                     pattern: &[#(#pattern),*],
@@ -278,6 +280,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
     let (nk, ny) = (n + m, 3 * n + m);
     let methods = REQUIRED.iter().map(|sig| sig.unreachable());
     let unreachable = quote! { ::core::unreachable!("this model did not compile") };
+    let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     quote! {
         impl #p::Dimensions for #ident {
             type Nq = #p::Const<#n>;
@@ -297,6 +300,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
             };
         }
         impl #p::LagrangeDirac for #ident {
+            #storage
             const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
             const SEPARABLE: ::core::primitive::bool = false;
             const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };

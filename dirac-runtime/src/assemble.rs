@@ -7,7 +7,14 @@
 
 use nalgebra::DefaultAllocator;
 
-use crate::dims::{Dimensions, MatCQ, MatQQ, Storage, VecC, VecH, VecQ};
+use nalgebra::OMatrix;
+
+use crate::dims::{Dimensions, Fixed, Storage, VecC, VecH, VecQ};
+
+/// A dense `n × n` block of a model of fixed size.
+type Qq<M> = OMatrix<f64, <M as Dimensions>::Nq, <M as Dimensions>::Nq>;
+/// A dense `m × n` block of a model of fixed size.
+type Cq<M> = OMatrix<f64, <M as Dimensions>::Nc, <M as Dimensions>::Nq>;
 
 /// Where a subsystem sits in its composite.
 #[derive(Clone, Copy, Debug)]
@@ -22,29 +29,37 @@ pub struct Slot {
 
 impl Slot {
     /// The composite row of the subsystem's constraint row `r`.
-    pub fn row<S: Dimensions>(&self, r: usize) -> usize {
+    pub fn row<S: Fixed>(&self, r: usize) -> usize {
         if r < S::NH { self.h + r } else { self.v + (r - S::NH) }
     }
 }
 
 /// The subsystem's part of a composite vector of coordinates.
-pub fn gather_q<S: Dimensions, C: Dimensions>(x: &VecQ<C>, slot: &Slot) -> VecQ<S>
+pub fn gather_q<S: Fixed, C: Dimensions>(x: &VecQ<C>, slot: &Slot) -> VecQ<S>
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {
-    VecQ::<S>::from_fn(|i, _| x[slot.q + i])
+    let mut out = S::SIZES.zeros_q::<S>();
+    for i in 0..S::NQ {
+        out[i] = x[slot.q + i];
+    }
+    out
 }
 
 /// The subsystem's part of a composite vector of multipliers.
-pub fn gather_c<S: Dimensions, C: Dimensions>(x: &VecC<C>, slot: &Slot) -> VecC<S>
+pub fn gather_c<S: Fixed, C: Dimensions>(x: &VecC<C>, slot: &Slot) -> VecC<S>
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {
-    VecC::<S>::from_fn(|r, _| x[slot.row::<S>(r)])
+    let mut out = S::SIZES.zeros_c::<S>();
+    for r in 0..S::NC {
+        out[r] = x[slot.row::<S>(r)];
+    }
+    out
 }
 
 /// Writes a subsystem vector of coordinates into the composite's.
-pub fn scatter_q<S: Dimensions, C: Dimensions>(x: &VecQ<S>, slot: &Slot, out: &mut VecQ<C>)
+pub fn scatter_q<S: Fixed, C: Dimensions>(x: &VecQ<S>, slot: &Slot, out: &mut VecQ<C>)
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {
@@ -54,7 +69,7 @@ where
 }
 
 /// Writes a subsystem vector over constraint rows into the composite's.
-pub fn scatter_c<S: Dimensions, C: Dimensions>(x: &VecC<S>, slot: &Slot, out: &mut VecC<C>)
+pub fn scatter_c<S: Fixed, C: Dimensions>(x: &VecC<S>, slot: &Slot, out: &mut VecC<C>)
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {
@@ -64,7 +79,7 @@ where
 }
 
 /// Writes a subsystem's holonomic constraint values into the composite's.
-pub fn scatter_h<S: Dimensions, C: Dimensions>(x: &VecH<S>, slot: &Slot, out: &mut VecH<C>)
+pub fn scatter_h<S: Fixed, C: Dimensions>(x: &VecH<S>, slot: &Slot, out: &mut VecH<C>)
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {
@@ -74,7 +89,7 @@ where
 }
 
 /// Writes a subsystem's `n × n` block onto the composite's diagonal.
-pub fn scatter_qq<S: Dimensions, C: Dimensions>(x: &MatQQ<S>, slot: &Slot, out: &mut MatQQ<C>)
+pub fn scatter_qq<S: Fixed, C: Dimensions>(x: &Qq<S>, slot: &Slot, out: &mut Qq<C>)
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {
@@ -86,7 +101,7 @@ where
 }
 
 /// Writes a subsystem's `m × n` block into the composite's rows and columns.
-pub fn scatter_cq<S: Dimensions, C: Dimensions>(x: &MatCQ<S>, slot: &Slot, out: &mut MatCQ<C>)
+pub fn scatter_cq<S: Fixed, C: Dimensions>(x: &Cq<S>, slot: &Slot, out: &mut Cq<C>)
 where
     DefaultAllocator: Storage<S> + Storage<C>,
 {

@@ -5,18 +5,15 @@
 
 use nalgebra::{DMatrix, DefaultAllocator, SVD};
 
-use crate::dims::{MatCQ, MatQQ, Storage, VecH, VecQ};
+use crate::algebra::{Algebra, amax, dense_cq, dense_qq};
+use crate::dims::{Sizes, Storage, VecQ};
 use crate::error::SimError;
-use crate::layout::Layout;
+use crate::layout::{Layout, Slot};
 use crate::model::LagrangeDirac;
 use crate::state::State;
 
-/// A copy of a stack matrix on the heap.
-pub(crate) fn dense<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
-    m: &nalgebra::Matrix<f64, R, C, S>,
-) -> DMatrix<f64> {
-    DMatrix::from_fn(m.nrows(), m.ncols(), |i, j| m[(i, j)])
-}
+/// The most unknowns `n + m` for which failures are analysed with dense matrices.
+const DENSE_ANALYSIS: usize = 2000;
 
 /// The singular value decomposition of `a` with a bounded number of iterations: `None` if it
 /// did not converge (it always does for finite input; the bound keeps NaN from looping).
@@ -28,19 +25,34 @@ pub(crate) fn svd(a: &DMatrix<f64>) -> Option<SVD<f64, nalgebra::Dyn, nalgebra::
     SVD::try_new(a.clone(), true, true, 5.0 * f64::EPSILON, 10_000)
 }
 
+/// Slot `i` of `model`'s state in words, for messages: "coordinate `x`", "momentum of `x`".
+pub fn describe_slot<M: LagrangeDirac>(model: &M, i: usize) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    match Layout::new(model.sizes()).slot(i) {
+        Slot::Position(k) => format!("coordinate `{}`", model.coordinate_names()[k]),
+        Slot::Velocity(k) => format!("velocity `{}`", model.velocity_names()[k]),
+        Slot::Momentum(k) => format!("momentum of `{}`", model.coordinate_names()[k]),
+        Slot::Multiplier(k) => format!("multiplier `{}`", model.constraint_names()[k]),
+    }
+}
+
 /// A typed error naming the first component of `state` that is NaN or infinite.
-pub fn check_finite_state<M: LagrangeDirac>(t: f64, state: &State<M>) -> Result<(), SimError>
+pub fn check_finite_state<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
     match state.components().position(|x| !x.is_finite()) {
-        Some(i) => Err(SimError::NonFinite { t, component: Layout::<M>::describe(i) }),
+        Some(i) => Err(SimError::NonFinite { t, component: describe_slot(model, i) }),
         None => Ok(()),
     }
 }
 
-/// The first entry of a block that is NaN or infinite, named: `∂L/∂q of `y``.
+/// The first entry of a vector that is NaN or infinite, named: `∂L/∂q at coordinate `y``
+/// when `per_coordinate` (a vector over the coordinates), else just `what`.
 pub(crate) fn non_finite_entry<M: LagrangeDirac>(
+    model: &M,
     t: f64,
     what: &str,
     values: &[f64],
@@ -52,12 +64,38 @@ where
     let Some(k) = values.iter().position(|x| !x.is_finite()) else {
         return Ok(());
     };
-    let component = if per_coordinate && M::NQ > 0 {
-        format!("{what} at coordinate `{}`", M::coordinate_names()[k % M::NQ])
+    let component = if per_coordinate {
+        format!("{what} at coordinate `{}`", model.coordinate_names()[k])
     } else {
         what.to_owned()
     };
     Err(SimError::NonFinite { t, component })
+}
+
+/// The first entry of an `n × n` block that is NaN or infinite, named by its row's
+/// coordinate: `the mass matrix L_vv at coordinate `y``.
+pub(crate) fn non_finite_qq<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    what: &str,
+    block: &<M::Algebra as Algebra<M>>::Qq,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut row = None;
+    M::Algebra::qq_entries(block, |i, _, x| {
+        if row.is_none() && !x.is_finite() {
+            row = Some(i);
+        }
+    });
+    match row {
+        None => Ok(()),
+        Some(i) => Err(SimError::NonFinite {
+            t,
+            component: format!("{what} at coordinate `{}`", model.coordinate_names()[i]),
+        }),
+    }
 }
 
 /// The algebraic equation that `state` violates the most beyond `tolerance` (relative to the
@@ -72,28 +110,29 @@ pub fn violated_equation<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let names = M::constraint_names();
-    let mut phi = VecH::<M>::zeros();
+    let sizes = model.sizes();
+    let mut phi = sizes.zeros_h::<M>();
     model.holonomic(&state.q, &mut phi);
-    let mut a = MatCQ::<M>::zeros();
+    let mut a = M::Algebra::zeros_cq(&model.shape());
     model.constraint_matrix(&state.q, &mut a);
     // Residuals against the size of the terms they are made of: φ / |A| is a distance in q.
-    let size_a = a.amax();
+    let size_a = amax(M::Algebra::cq_values(&a));
     let q_scale = size_a * (1.0 + state.q.amax());
     if let Some((j, r)) = worst(phi.iter().copied()).filter(|(_, r)| *r > tolerance * q_scale) {
-        return Some((format!("holonomic constraint `{}`", names[j]), r));
+        return Some((format!("holonomic constraint `{}`", model.constraint_names()[j]), r));
     }
-    let av = a * &state.v;
+    let mut av = sizes.zeros_c::<M>();
+    M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
     let v_scale = size_a * (1.0 + state.v.amax());
     if let Some((j, r)) = worst(av.iter().copied()).filter(|(_, r)| *r > tolerance * v_scale) {
-        return Some((format!("velocity constraint `{}`", names[j]), r));
+        return Some((format!("velocity constraint `{}`", model.constraint_names()[j]), r));
     }
-    let mut dl_dv = VecQ::<M>::zeros();
+    let mut dl_dv = sizes.zeros_q::<M>();
     model.dl_dv(t, &state.q, &state.v, &mut dl_dv);
     let p_scale = 1.0 + state.p.amax().max(dl_dv.amax());
     let gap = &state.p - &dl_dv;
     if let Some((i, r)) = worst(gap.iter().copied()).filter(|(_, r)| *r > tolerance * p_scale) {
-        return Some((format!("Legendre map p = ∂L/∂v of `{}`", M::coordinate_names()[i]), r));
+        return Some((format!("Legendre map p = ∂L/∂v of `{}`", model.coordinate_names()[i]), r));
     }
     None
 }
@@ -113,18 +152,27 @@ pub fn singular_cause<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ
 where
     DefaultAllocator: Storage<M>,
 {
-    let (mut lvv, mut a) = (MatQQ::<M>::zeros(), MatCQ::<M>::zeros());
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let Sizes { nq: n, nc: m, .. } = sizes;
+    if n + m > DENSE_ANALYSIS {
+        return format!(
+            "the model has {} unknowns, too many to analyse the cause; look for a coordinate without \
+             inertia or constraint, or dependent constraints",
+            n + m
+        );
+    }
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
     model.l_vv(t, q, v, &mut lvv);
     model.constraint_matrix(q, &mut a);
-    cause_of(&dense(&lvv), &dense(&a))
+    cause_of(model, &dense_qq::<M, M::Algebra>(&lvv, n), &dense_cq::<M, M::Algebra>(&a, m, n))
 }
 
 /// [`singular_cause`] for the blocks themselves.
-pub(crate) fn cause_of<M: LagrangeDirac>(lvv: &DMatrix<f64>, a: &DMatrix<f64>) -> String
+pub(crate) fn cause_of<M: LagrangeDirac>(model: &M, lvv: &DMatrix<f64>, a: &DMatrix<f64>) -> String
 where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m) = (M::NQ, M::NC);
+    let (n, m) = (lvv.nrows(), a.nrows());
     let mut kkt = DMatrix::zeros(n + m, n + m);
     kkt.view_mut((0, 0), (n, n)).copy_from(lvv);
     kkt.view_mut((0, n), (n, m)).copy_from(&a.transpose());
@@ -144,7 +192,7 @@ where
             .collect()
     };
     if dl.amax() >= dv.amax() {
-        let constraints = picked(&dl, &M::constraint_names());
+        let constraints = picked(&dl, &model.constraint_names());
         if constraints.len() == 1 {
             let j = dl.iamax();
             if a.row(j).amax() <= 1e-12 * a.amax().max(1e-300) || a.row(j).amax() == 0.0 {
@@ -165,7 +213,7 @@ where
             constraints.join(", ")
         );
     }
-    let coordinates = picked(&dv, &M::coordinate_names());
+    let coordinates = picked(&dv, &model.coordinate_names());
     format!(
         "the velocity of {} is not determined: along this motion there is no inertia (L_vv) and no \
          constraint",

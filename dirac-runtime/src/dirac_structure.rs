@@ -15,7 +15,8 @@
 
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
-use crate::dims::{MatCQ, Storage, VecQ};
+use crate::algebra::{Algebra, dense_cq};
+use crate::dims::{Storage, VecQ};
 use crate::model::LagrangeDirac;
 
 /// The induced Dirac structure of `Δ_Q = ker A` at one configuration: the rows of `A` are the
@@ -54,9 +55,10 @@ impl DiracStructure {
     where
         DefaultAllocator: Storage<M>,
     {
-        let mut a = MatCQ::<M>::zeros();
+        let sizes = model.sizes();
+        let mut a = M::Algebra::zeros_cq(&model.shape());
         model.constraint_matrix(q, &mut a);
-        DiracStructure { a: DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[(i, j)]) }
+        DiracStructure { a: dense_cq::<M, M::Algebra>(&a, sizes.nc, sizes.nq) }
     }
 
     /// The one-forms, one per row.

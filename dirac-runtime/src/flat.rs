@@ -4,8 +4,9 @@
 
 use nalgebra::DefaultAllocator;
 
+use crate::algebra::Algebra;
 use crate::blocks::{JacobianBlocks, ResidualBlocks};
-use crate::dims::{Dimensions, MatYY, Storage, VecY};
+use crate::dims::{Dimensions, MatYY, Sizes, Storage, VecY};
 use crate::layout::Layout;
 use crate::state::State;
 
@@ -14,30 +15,46 @@ pub fn residual<M: Dimensions>(state: &State<M>, blocks: &ResidualBlocks<M>, out
 where
     DefaultAllocator: Storage<M>,
 {
-    let n = M::NQ;
-    out.rows_mut(Layout::<M>::Q, n).copy_from(&state.v);
-    out.rows_mut(Layout::<M>::V, n).copy_from(&(&state.p - &blocks.dl_dv));
-    out.rows_mut(Layout::<M>::P, n).copy_from(&blocks.momentum_rate);
-    out.rows_mut(Layout::<M>::LAMBDA, M::NC).copy_from(&blocks.constraint_velocity);
+    let l = Layout::new(state.sizes());
+    let out = out.as_mut_slice();
+    out[l.q..l.v].copy_from_slice(state.v.as_slice());
+    for (i, x) in out[l.v..l.p].iter_mut().enumerate() {
+        *x = state.p[i] - blocks.dl_dv[i];
+    }
+    out[l.p..l.lambda].copy_from_slice(blocks.momentum_rate.as_slice());
+    out[l.lambda..l.len].copy_from_slice(blocks.constraint_velocity.as_slice());
 }
 
 /// `∂f/∂y` from the Jacobian blocks; the structurally zero blocks are not written.
-pub fn jacobian<M: Dimensions>(b: &JacobianBlocks<M>, out: &mut MatYY<M>)
+pub fn jacobian<M: Dimensions, A: Algebra<M>>(sizes: &Sizes, b: &JacobianBlocks<M, A>, out: &mut MatYY<M>)
 where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m) = (M::NQ, M::NC);
-    let (q, v, p, lambda) = (Layout::<M>::Q, Layout::<M>::V, Layout::<M>::P, Layout::<M>::LAMBDA);
-    for i in 0..n {
+    let Layout { q, v, p, lambda, .. } = Layout::new(*sizes);
+    for i in 0..sizes.nq {
         // q̇ = v and the Legendre map's p.
         out[(q + i, v + i)] = 1.0;
         out[(v + i, p + i)] = 1.0;
     }
-    out.view_mut((v, q), (n, n)).copy_from(&(-&b.l_vq));
-    out.view_mut((v, v), (n, n)).copy_from(&(-&b.l_vv));
-    out.view_mut((p, q), (n, n)).copy_from(&b.dpdot_dq);
-    out.view_mut((p, v), (n, n)).copy_from(&b.dpdot_dv);
-    out.view_mut((p, lambda), (n, m)).copy_from(&b.a.transpose());
-    out.view_mut((lambda, q), (m, n)).copy_from(&b.dav_dq);
-    out.view_mut((lambda, v), (m, n)).copy_from(&b.a);
+    // Blocks are zeroed where they are written, then summed: a sparse block may store an entry
+    // more than once.
+    let mut zero = |r: usize, c: usize| out[(r, c)] = 0.0;
+    A::qq_entries(&b.l_vq, |i, j, _| zero(v + i, q + j));
+    A::qq_entries(&b.l_vv, |i, j, _| zero(v + i, v + j));
+    A::qq_entries(&b.dpdot_dq, |i, j, _| zero(p + i, q + j));
+    A::qq_entries(&b.dpdot_dv, |i, j, _| zero(p + i, v + j));
+    A::cq_entries(&b.a, |k, j, _| {
+        zero(p + j, lambda + k);
+        zero(lambda + k, v + j);
+    });
+    A::cq_entries(&b.dav_dq, |k, j, _| zero(lambda + k, q + j));
+    A::qq_entries(&b.l_vq, |i, j, x| out[(v + i, q + j)] -= x);
+    A::qq_entries(&b.l_vv, |i, j, x| out[(v + i, v + j)] -= x);
+    A::qq_entries(&b.dpdot_dq, |i, j, x| out[(p + i, q + j)] += x);
+    A::qq_entries(&b.dpdot_dv, |i, j, x| out[(p + i, v + j)] += x);
+    A::cq_entries(&b.a, |k, j, x| {
+        out[(p + j, lambda + k)] += x;
+        out[(lambda + k, v + j)] += x;
+    });
+    A::cq_entries(&b.dav_dq, |k, j, x| out[(lambda + k, q + j)] += x);
 }

@@ -15,8 +15,9 @@
 
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
-use crate::diagnose::{cause_of, check_finite_state, dense, non_finite_entry, svd};
-use crate::dims::{MatCQ, MatQQ, Storage, VecH, VecQ};
+use crate::algebra::{Algebra, dense_cq, dense_qq};
+use crate::diagnose::{cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd};
+use crate::dims::{Sizes, Storage, VecQ};
 use crate::error::SimError;
 use crate::model::{LagrangeDirac, check_parameters};
 use crate::state::State;
@@ -56,19 +57,21 @@ where
         return Err(SimError::InvalidTimeSpan { reason: format!("the initial time {t} is not finite") });
     }
     check_parameters(model)?;
-    let mut s = State::<M>::zeros();
+    let sizes = model.sizes();
+    let mut s = State::<M>::with_sizes(sizes);
     s.q.copy_from(q);
     s.v.copy_from(v);
     if let Some(j) = s.q.iter().chain(s.v.iter()).position(|x| !x.is_finite()) {
-        let names = if j < M::NQ { M::coordinate_names() } else { M::velocity_names() };
-        return Err(SimError::NonFinite { t, component: names[j % M::NQ].clone() });
+        let n = sizes.nq;
+        let names = if j < n { model.coordinate_names() } else { model.velocity_names() };
+        return Err(SimError::NonFinite { t, component: names[j % n].clone() });
     }
     project_positions(model, t, &mut s.q, options)?;
     project_velocities(model, t, &s.q, &mut s.v, options)?;
     model.dl_dv(t, &s.q, &s.v, &mut s.p);
-    non_finite_entry::<M>(t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
+    non_finite_entry(model, t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
     s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v)?.as_slice());
-    check_finite_state(t, &s)?;
+    check_finite_state(model, t, &s)?;
     Ok(s)
 }
 
@@ -81,19 +84,18 @@ fn project_positions<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let h = M::NH;
+    let Sizes { nq: n, nc: m, nh: h } = model.sizes();
     if h == 0 {
         return Ok(());
     }
-    let mut phi = VecH::<M>::zeros();
-    let mut a = MatCQ::<M>::zeros();
+    let mut phi = model.sizes().zeros_h::<M>();
+    let mut a = M::Algebra::zeros_cq(&model.shape());
     for iteration in 0..=options.max_iterations {
         model.holonomic(q, &mut phi);
-        non_finite_entry::<M>(t, "a holonomic constraint φ(q)", phi.as_slice(), false)
-            .map_err(|_| holonomic_not_finite::<M>(t, &phi))?;
-        a.fill(0.0);
+        non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)
+            .map_err(|_| holonomic_not_finite(model, t, phi.as_slice()))?;
         model.constraint_matrix(q, &mut a);
-        let ah = dense(&a).rows(0, h).into_owned();
+        let ah = dense_cq::<M, M::Algebra>(&a, m, n).rows(0, h).into_owned();
         if !ah.iter().all(|x| x.is_finite()) {
             return Err(SimError::NonFinite {
                 t,
@@ -108,30 +110,30 @@ where
             break;
         }
         let correction = min_norm_solve(&ah, &DVector::from_column_slice(phi.as_slice()));
-        for i in 0..M::NQ {
+        for i in 0..n {
             q[i] -= correction[i];
         }
         if let Some(i) = q.iter().position(|x| !x.is_finite()) {
             let component =
-                format!("coordinate `{}` while projecting onto the constraints", M::coordinate_names()[i]);
+                format!("coordinate `{}` while projecting onto the constraints", model.coordinate_names()[i]);
             return Err(SimError::NonFinite { t, component });
         }
     }
     let (j, residual) =
         phi.iter().enumerate().fold((0, 0.0f64), |b, (j, x)| if x.abs() > b.1 { (j, x.abs()) } else { b });
     Err(SimError::InconsistentInitialState {
-        equation: format!("holonomic constraint `{}`", M::constraint_names()[j]),
+        equation: format!("holonomic constraint `{}`", model.constraint_names()[j]),
         residual,
         iterations: options.max_iterations,
     })
 }
 
-fn holonomic_not_finite<M: LagrangeDirac>(t: f64, phi: &VecH<M>) -> SimError
+fn holonomic_not_finite<M: LagrangeDirac>(model: &M, t: f64, phi: &[f64]) -> SimError
 where
     DefaultAllocator: Storage<M>,
 {
     let j = phi.iter().position(|x| !x.is_finite()).unwrap_or(0);
-    SimError::NonFinite { t, component: format!("holonomic constraint `{}`", M::constraint_names()[j]) }
+    SimError::NonFinite { t, component: format!("holonomic constraint `{}`", model.constraint_names()[j]) }
 }
 
 /// The minimal-norm `x` with `A x = b` (least squares if there is none); finite input only.
@@ -152,24 +154,25 @@ fn project_velocities<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m) = (M::NQ, M::NC);
+    let Sizes { nq: n, nc: m, .. } = model.sizes();
     if m == 0 {
         return Ok(());
     }
-    let mut a = MatCQ::<M>::zeros();
+    let shape = model.shape();
+    let mut a = M::Algebra::zeros_cq(&shape);
     model.constraint_matrix(q, &mut a);
-    non_finite_entry::<M>(t, "the constraint one-forms A(q)", a.as_slice(), false)?;
-    let a = dense(&a);
+    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    let a = dense_cq::<M, M::Algebra>(&a, m, n);
     let av = &a * DVector::from_column_slice(v.as_slice());
-    non_finite_entry::<M>(t, "the constraint velocities A(q) v", av.as_slice(), false)?;
+    non_finite_entry(model, t, "the constraint velocities A(q) v", av.as_slice(), false)?;
     let size_a = a.amax();
     if av.amax() <= options.tolerance * size_a * (1.0 + v.amax()) {
         return Ok(());
     }
-    let mut lvv = MatQQ::<M>::zeros();
+    let mut lvv = M::Algebra::zeros_qq(&shape);
     model.l_vv(t, q, v, &mut lvv);
-    non_finite_entry::<M>(t, "the mass matrix L_vv", lvv.as_slice(), true)?;
-    let w = dense(&lvv);
+    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
+    let w = dense_qq::<M, M::Algebra>(&lvv, n);
     // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
     let reg = 1e-10 * w.amax().max(1.0);
     let mut kkt = DMatrix::zeros(n + m, n + m);
@@ -190,7 +193,7 @@ where
             .enumerate()
             .fold((0, 0.0f64), |b, (j, x)| if x.is_nan() || x.abs() > b.1 { (j, x.abs()) } else { b });
         return Err(SimError::InconsistentInitialState {
-            equation: format!("velocity constraint `{}`", M::constraint_names()[j]),
+            equation: format!("velocity constraint `{}`", model.constraint_names()[j]),
             residual,
             iterations: 1,
         });
@@ -210,28 +213,37 @@ fn blocks<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> Resu
 where
     DefaultAllocator: Storage<M>,
 {
-    let (mut dl_dq, mut force, mut lvt) = (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let Sizes { nq: n, nc: m, .. } = sizes;
+    let (mut dl_dq, mut force, mut lvt) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
     model.dl_dq(t, q, v, &mut dl_dq);
-    non_finite_entry::<M>(t, "∂L/∂q", dl_dq.as_slice(), true)?;
+    non_finite_entry(model, t, "∂L/∂q", dl_dq.as_slice(), true)?;
     model.force(t, q, v, &mut force);
-    non_finite_entry::<M>(t, "the force", force.as_slice(), true)?;
+    non_finite_entry(model, t, "the force", force.as_slice(), true)?;
     model.l_vt(t, q, v, &mut lvt);
-    non_finite_entry::<M>(t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
-    let (mut lvv, mut lvq) = (MatQQ::<M>::zeros(), MatQQ::<M>::zeros());
+    non_finite_entry(model, t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
+    let (mut lvv, mut lvq) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_qq(&shape));
     model.l_vv(t, q, v, &mut lvv);
-    non_finite_entry::<M>(t, "the mass matrix L_vv", lvv.as_slice(), true)?;
+    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
     model.l_vq(t, q, v, &mut lvq);
-    non_finite_entry::<M>(t, "L_vq", lvq.as_slice(), true)?;
-    let (mut a, mut g) = (MatCQ::<M>::zeros(), MatCQ::<M>::zeros());
+    non_finite_qq(model, t, "L_vq", &lvq)?;
+    let (mut a, mut g) = (M::Algebra::zeros_cq(&shape), M::Algebra::zeros_cq(&shape));
     model.constraint_matrix(q, &mut a);
-    non_finite_entry::<M>(t, "the constraint one-forms A(q)", a.as_slice(), false)?;
+    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
     model.dav_dq(q, v, &mut g);
-    non_finite_entry::<M>(t, "∂(A v)/∂q", g.as_slice(), false)?;
-    let top = dl_dq + force - lvq * v - lvt;
-    non_finite_entry::<M>(t, "the momentum balance", top.as_slice(), true)?;
-    let bottom = -(dense(&g) * DVector::from_column_slice(v.as_slice()));
-    non_finite_entry::<M>(t, "the constraint accelerations", bottom.as_slice(), false)?;
-    Ok(Blocks { top: dense(&top).column(0).into_owned(), bottom, lvv: dense(&lvv), a: dense(&a) })
+    non_finite_entry(model, t, "∂(A v)/∂q", M::Algebra::cq_values(&g), false)?;
+    let mut top = dl_dq + force - lvt;
+    M::Algebra::qq_mul(&lvq, -1.0, v.as_slice(), top.as_mut_slice());
+    non_finite_entry(model, t, "the momentum balance", top.as_slice(), true)?;
+    let mut bottom = DVector::zeros(m);
+    M::Algebra::cq_mul(&g, -1.0, v.as_slice(), bottom.as_mut_slice());
+    non_finite_entry(model, t, "the constraint accelerations", bottom.as_slice(), false)?;
+    Ok(Blocks {
+        top: DVector::from_column_slice(top.as_slice()),
+        bottom,
+        lvv: dense_qq::<M, M::Algebra>(&lvv, n),
+        a: dense_cq::<M, M::Algebra>(&a, m, n),
+    })
 }
 
 /// λ from the differentiated constraints, with the accelerations as by-product.
@@ -244,7 +256,7 @@ fn multipliers<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m) = (M::NQ, M::NC);
+    let Sizes { nq: n, nc: m, .. } = model.sizes();
     let b = blocks(model, t, q, v)?;
     let mut kkt = DMatrix::zeros(n + m, n + m);
     kkt.view_mut((0, 0), (n, n)).copy_from(&b.lvv);
@@ -253,7 +265,7 @@ where
     let mut rhs = DVector::zeros(n + m);
     rhs.rows_mut(0, n).copy_from(&b.top);
     rhs.rows_mut(n, m).copy_from(&b.bottom);
-    let singular = || SimError::NotDetermined { t, cause: cause_of::<M>(&b.lvv, &b.a) };
+    let singular = || SimError::NotDetermined { t, cause: cause_of(model, &b.lvv, &b.a) };
     let Some(svd) = svd(&kkt) else {
         return Err(singular());
     };
@@ -265,7 +277,7 @@ where
     let x = svd.solve(&rhs, 0.0).expect("SVD with both factors computed");
     let lambda = x.rows(n, m).into_owned();
     if let Some(j) = lambda.iter().position(|x| !x.is_finite()) {
-        let component = format!("multiplier `{}`", M::constraint_names()[j]);
+        let component = format!("multiplier `{}`", model.constraint_names()[j]);
         return Err(SimError::NonFinite { t, component });
     }
     Ok(lambda)

@@ -80,7 +80,7 @@ where
     where
         Self: Sized,
     {
-        let mut recorder = Recorder::new(sampling, t0, t_end)?;
+        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         self.start(t0, state, t_end)?;
         recorder.record_initial(self.model(), t0, self.state());
         while !self.finished() {
@@ -113,7 +113,7 @@ where
         });
     }
     check_parameters(model)?;
-    check_finite_state(t0, state)?;
+    check_finite_state(model, t0, state)?;
     match violated_equation(model, t0, state, tolerance) {
         Some((equation, residual)) => Err(SimError::StateNotConsistent { t: t0, equation, residual }),
         None => Ok(()),

@@ -2,13 +2,15 @@
 //!
 //! `#[derive(LagrangeDirac)]` emits one associated constant per coordinate and per constraint
 //! (`Pendulum::X`, `Pendulum::ROD`), so state components are read and written by name and a
-//! typo is a compile error, never an index off by one. A key always names a position its model
-//! has: `checked` is the way to make one from a number.
+//! typo is a compile error, never an index off by one. A key of a model whose sizes are fixed
+//! when it compiles always names a position its model has: `checked` is the way to make one
+//! from a number. A model made of arrays hands out its keys from methods that check the
+//! element index against the model itself (`ladder.cells(3, Cell::Q)`).
 
 use core::fmt;
 use core::marker::PhantomData;
 
-use crate::dims::Dimensions;
+use crate::dims::Fixed;
 use crate::names::Named;
 
 /// A coordinate `q_i` of model `M`; it also names the velocity `v_i` and the momentum `p_i`.
@@ -25,7 +27,7 @@ pub struct Constraint<M: ?Sized> {
 
 macro_rules! key_impls {
     ($key:ident, $what:literal, $names:ident, $count:ident) => {
-        impl<M: Dimensions + ?Sized> $key<M> {
+        impl<M: Fixed + ?Sized> $key<M> {
             #[doc = concat!("The ", $what, " at this position, for generated code: it panics (at")]
             /// compile time in a `const`) if the model has no such position. Use the named
             /// constants the derive emits, or `checked`.
@@ -42,14 +44,22 @@ macro_rules! key_impls {
         }
 
         impl<M: ?Sized> $key<M> {
+            /// The key at this position, for generated code that has checked it against the
+            /// model. Not part of the public API.
+            #[doc(hidden)]
+            pub const fn unchecked(index: usize) -> Self {
+                Self { index, model: PhantomData }
+            }
+
             #[doc = concat!("The position of this ", $what, " in its vector.")]
             pub const fn index(self) -> usize {
                 self.index
             }
         }
 
-        impl<M: Named> $key<M> {
-            #[doc = concat!("The full dotted name of this ", $what, ", such as `left.x2`.")]
+        impl<M: Named + Fixed> $key<M> {
+            #[doc = concat!("The full dotted name of this ", $what, ", such as `left.x2` (for a")]
+            /// model made of arrays, ask the model: `model.coordinate_names()[key.index()]`).
             pub fn name(self) -> String {
                 M::NAMES.$names().swap_remove(self.index)
             }
@@ -77,7 +87,7 @@ macro_rules! key_impls {
             }
         }
 
-        impl<M: Named> fmt::Display for $key<M> {
+        impl<M: Named + Fixed> fmt::Display for $key<M> {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
                 f.write_str(&self.name())
             }

@@ -3,6 +3,8 @@
 //!
 //! Most users reach this crate through the `dirac` facade and its prelude.
 
+/// How models store their matrices and solve their linear systems: dense or sparse.
+pub mod algebra;
 /// Moving subsystem parts in and out of composites, for generated code.
 #[doc(hidden)]
 pub mod assemble;
@@ -52,15 +54,16 @@ pub mod structure;
 /// The variational integrator (discrete Hamilton-Pontryagin-d'Alembert).
 pub mod variational;
 
+pub use algebra::{Algebra, Dense};
 pub use blocks::{JacobianBlocks, ResidualBlocks};
-pub use dims::{Dimensions, MatCQ, MatKK, MatQQ, MatYY, Storage, VecC, VecH, VecK, VecQ, VecY};
+pub use dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
 pub use error::SimError;
 pub use init::{Consistency, consistent_state};
 pub use integrator::Integrator;
 pub use keys::{Constraint, Coordinate};
 pub use layout::{Layout, Slot};
-pub use model::{Equations, LagrangeDirac, OperationCounts};
+pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
 pub use radau::{Radau, RadauOptions, RadauStats};
 pub use solution::{Sampling, Solution};
@@ -77,14 +80,15 @@ pub use nalgebra;
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]
 pub mod __private {
+    pub use crate::algebra::{Algebra, Dense};
     pub use crate::assemble::{
         Slot, gather_c, gather_q, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::dims::Storage;
-    pub use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, VecC, VecH, VecQ, VecY};
+    pub use crate::dims::{Dimensions, Fixed, MatYY, Sizes, VecC, VecH, VecQ, VecY};
     pub use crate::keys::{Constraint, Coordinate};
-    pub use crate::model::{Equations, LagrangeDirac, OperationCounts};
+    pub use crate::model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
     pub use crate::names::{Named, Names, ResolveError, Resolved, Subsystem};
     pub use crate::sparse::SparseJacobian;
     pub use crate::stack::{STACK_LIMIT, stack_bytes};

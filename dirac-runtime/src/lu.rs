@@ -1,8 +1,9 @@
-//! LU factorisation with partial pivoting of a stack-allocated square matrix, real or complex,
-//! in place and without allocation.
+//! LU factorisation with partial pivoting of a dense square matrix, real or complex, in place
+//! and without allocation: on the stack for a size the type fixes, on the heap (allocated
+//! once, with the factorisation) for a size chosen at run time.
 
 use nalgebra::allocator::Allocator;
-use nalgebra::{ComplexField, DefaultAllocator, DimName, OMatrix, OVector};
+use nalgebra::{ComplexField, DefaultAllocator, Dim, OMatrix, OVector};
 
 /// Why a factorisation failed.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -12,7 +13,7 @@ pub struct Singular {
 }
 
 /// The factors `P A = L U` of a square matrix, stored in one matrix, with the row pivots.
-pub struct Lu<T: ComplexField, D: DimName>
+pub struct Lu<T: ComplexField, D: Dim>
 where
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
@@ -20,13 +21,17 @@ where
     pivots: OVector<usize, D>,
 }
 
-impl<T: ComplexField<RealField = f64> + Copy, D: DimName> Lu<T, D>
+impl<T: ComplexField<RealField = f64> + Copy, D: Dim> Lu<T, D>
 where
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
-    /// Storage for a factorisation, to be filled by [`Lu::factor`].
-    pub fn new() -> Self {
-        Lu { lu: OMatrix::<T, D, D>::zeros(), pivots: OVector::<usize, D>::from_fn(|i, _| i) }
+    /// Storage for the factorisation of an `n × n` matrix, to be filled by [`Lu::factor`].
+    pub fn new(n: usize) -> Self {
+        let d = D::from_usize(n);
+        Lu {
+            lu: OMatrix::<T, D, D>::zeros_generic(d, d),
+            pivots: OVector::<usize, D>::from_fn_generic(d, nalgebra::Const::<1>, |i, _| i),
+        }
     }
 
     /// The storage to write the matrix into before calling [`Lu::factor`].
@@ -37,7 +42,7 @@ where
     /// Factors the matrix held in [`Lu::matrix_mut`] in place. A pivot below `tiny` times the
     /// largest entry of the matrix counts as zero.
     pub fn factor(&mut self) -> Result<(), Singular> {
-        let n = D::DIM;
+        let n = self.lu.nrows();
         let scale = self.lu.iter().fold(0.0f64, |m, x| m.max(x.modulus()));
         let tiny = f64::EPSILON * 1e-3 * scale.max(f64::MIN_POSITIVE);
         for k in 0..n {
@@ -70,9 +75,26 @@ where
 
     /// Solves `A x = b` in place with the factors.
     pub fn solve(&self, b: &mut OVector<T, D>) {
-        let n = D::DIM;
+        self.solve_in(b);
+    }
+
+    /// Solves `A x = b` in place with the factors, for `b` of the matrix's size.
+    pub fn solve_slice(&self, b: &mut [T]) {
+        self.solve_in(b);
+    }
+
+    /// The substitutions, over any indexable `b`: a stack vector keeps its length known to the
+    /// compiler, which then unrolls the loops.
+    #[inline(always)]
+    fn solve_in<B: core::ops::IndexMut<usize, Output = T> + ?Sized>(&self, b: &mut B) {
+        let n = self.lu.nrows();
         for k in 0..n {
-            b.swap_rows(k, self.pivots[k]);
+            let p = self.pivots[k];
+            if p != k {
+                let x = b[k];
+                b[k] = b[p];
+                b[p] = x;
+            }
         }
         for i in 0..n {
             let mut s = b[i];
@@ -91,15 +113,6 @@ where
     }
 }
 
-impl<T: ComplexField<RealField = f64> + Copy, D: DimName> Default for Lu<T, D>
-where
-    DefaultAllocator: Allocator<D, D> + Allocator<D>,
-{
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use nalgebra::{Complex, Const, Matrix3, Vector3};
@@ -112,7 +125,7 @@ mod tests {
         let a = Matrix3::new(0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 3.0, 0.0, 1.0);
         let x = Vector3::new(1.0, -2.0, 3.0);
         let mut b = a * x;
-        let mut lu = Lu::<f64, Const<3>>::new();
+        let mut lu = Lu::<f64, Const<3>>::new(3);
         lu.matrix_mut().copy_from(&a);
         lu.factor().expect("nonsingular");
         lu.solve(&mut b);
@@ -135,7 +148,7 @@ mod tests {
         );
         let x = Vector3::new(c(1.0, 0.5), c(-2.0, 0.0), c(0.0, 3.0));
         let mut b = a * x;
-        let mut lu = Lu::<Complex<f64>, Const<3>>::new();
+        let mut lu = Lu::<Complex<f64>, Const<3>>::new(3);
         lu.matrix_mut().copy_from(&a);
         lu.factor().expect("nonsingular");
         lu.solve(&mut b);
@@ -144,7 +157,7 @@ mod tests {
 
     #[test]
     fn reports_singular_matrices() {
-        let mut lu = Lu::<f64, Const<3>>::new();
+        let mut lu = Lu::<f64, Const<3>>::new(3);
         lu.matrix_mut().copy_from(&Matrix3::new(1.0, 2.0, 3.0, 2.0, 4.0, 6.0, 0.0, 0.0, 1.0));
         assert_eq!(lu.factor(), Err(Singular { column: 1 }));
     }

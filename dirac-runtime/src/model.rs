@@ -16,12 +16,19 @@ use std::borrow::Cow;
 
 use nalgebra::DefaultAllocator;
 
+use crate::algebra::Algebra;
 use crate::blocks::{JacobianBlocks, ResidualBlocks};
-use crate::dims::{Dimensions, MatCQ, MatQQ, MatYY, Storage, VecC, VecH, VecQ, VecY};
+use crate::dims::{Dimensions, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
 use crate::keys::{Constraint, Coordinate};
 use crate::names::Named;
 use crate::state::State;
 use crate::structure::Structure;
+
+/// An `n × n` block of a model (second derivatives of L, force Jacobians): a dense matrix
+/// for models of fixed size, sparse for models made of arrays.
+pub type MatQQ<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Qq;
+/// An `m × n` block of a model (the constraint rows `A(q)`, `∂(A v)/∂q`).
+pub type MatCQ<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Cq;
 
 /// A typed error if a parameter of `model` is NaN or infinite.
 pub fn check_parameters<M: LagrangeDirac>(model: &M) -> Result<(), crate::error::SimError>
@@ -100,6 +107,11 @@ pub trait LagrangeDirac: Dimensions + Named + Sized + 'static
 where
     DefaultAllocator: Storage<Self>,
 {
+    /// How the model's blocks are stored and its linear systems solved:
+    /// [`Dense`](crate::algebra::Dense) for models whose sizes are fixed when they compile,
+    /// [`Sparse`](crate::algebra::Sparse) for models made of arrays of subsystems.
+    type Algebra: Algebra<Self>;
+
     /// The arithmetic cost of the generated kernels.
     const OPERATION_COUNTS: OperationCounts;
     /// Whether `L = ½ vᵀ M v − V(q, t)` with a constant mass matrix `M` and no external forces
@@ -112,6 +124,13 @@ where
 
     /// The derived equations, for people.
     fn equations() -> Equations;
+
+    /// The model's sizes: `n` coordinates, `m` constraint rows, the holonomic ones first.
+    fn sizes(&self) -> Sizes;
+
+    /// What the model's [`Algebra`] needs to build its blocks and solvers: the sizes of a
+    /// dense model, the sparsity pattern of a sparse one. Built once by each integrator.
+    fn shape(&self) -> <Self::Algebra as Algebra<Self>>::Shape;
 
     /// The Lagrangian `L(q, v, t)`.
     fn lagrangian(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64;
@@ -156,7 +175,7 @@ where
         q: &VecQ<Self>,
         v: &VecQ<Self>,
         lambda: &VecC<Self>,
-        out: &mut JacobianBlocks<Self>,
+        out: &mut JacobianBlocks<Self, Self::Algebra>,
     );
 
     /// The first parameter (its dotted name, `left.m1` in a composite) whose value is NaN or
@@ -185,8 +204,9 @@ where
     /// The default assembles it from [`LagrangeDirac::residual_blocks`]; the derive for a
     /// primitive model emits a specialised version.
     fn residual(&self, t: f64, y: &VecY<Self>, out: &mut VecY<Self>) {
-        let state = State::<Self>::from_y(y);
-        let mut blocks = ResidualBlocks::<Self>::zeros();
+        let sizes = self.sizes();
+        let state = State::<Self>::from_y(sizes, y);
+        let mut blocks = ResidualBlocks::<Self>::with_sizes(&sizes);
         self.residual_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);
         crate::flat::residual(&state, &blocks, out);
     }
@@ -196,46 +216,48 @@ where
     ///
     /// The default assembles it from [`LagrangeDirac::jacobian_blocks`].
     fn jacobian(&self, t: f64, y: &VecY<Self>, out: &mut MatYY<Self>) {
-        let state = State::<Self>::from_y(y);
-        let mut blocks = JacobianBlocks::<Self>::zeros();
+        let sizes = self.sizes();
+        let state = State::<Self>::from_y(sizes, y);
+        let mut blocks = JacobianBlocks::<Self, Self::Algebra>::with_shape(&self.shape());
         self.jacobian_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);
-        crate::flat::jacobian(&blocks, out);
+        crate::flat::jacobian::<Self, Self::Algebra>(&sizes, &blocks, out);
     }
 
-    /// The full dotted name of every coordinate, in the order of `q` (`left.x2` in a composite).
-    fn coordinate_names() -> Vec<String> {
+    /// The full dotted name of every coordinate, in the order of `q` (`left.x2` in a
+    /// composite, `cells[3].x` in an array).
+    fn coordinate_names(&self) -> Vec<String> {
         Self::NAMES.coordinate_names()
     }
 
     /// The full dotted name of every velocity, in the order of `v`.
-    fn velocity_names() -> Vec<String> {
+    fn velocity_names(&self) -> Vec<String> {
         Self::NAMES.velocity_names()
     }
 
     /// The full dotted name of every constraint, in the order of the rows of `A(q)` and of `λ`.
-    fn constraint_names() -> Vec<String> {
+    fn constraint_names(&self) -> Vec<String> {
         Self::NAMES.constraint_names()
     }
 
     /// The coordinates through which the model may be interconnected, at any depth.
-    fn ports() -> Vec<Coordinate<Self>> {
-        Self::NAMES.port_indices().into_iter().map(Coordinate::new).collect()
+    fn ports(&self) -> Vec<Coordinate<Self>> {
+        Self::NAMES.port_indices().into_iter().map(Coordinate::unchecked).collect()
     }
 
     /// The coordinate with this (dotted) name, if the model has one.
-    fn coordinate(name: &str) -> Option<Coordinate<Self>> {
-        Self::NAMES.coordinate_names().iter().position(|c| c == name).map(Coordinate::new)
+    fn coordinate(&self, name: &str) -> Option<Coordinate<Self>> {
+        self.coordinate_names().iter().position(|c| c == name).map(Coordinate::unchecked)
     }
 
     /// The constraint with this (dotted) name, if the model has one.
-    fn constraint(name: &str) -> Option<Constraint<Self>> {
-        Self::NAMES.constraint_names().iter().position(|c| c == name).map(Constraint::new)
+    fn constraint(&self, name: &str) -> Option<Constraint<Self>> {
+        self.constraint_names().iter().position(|c| c == name).map(Constraint::unchecked)
     }
 
     /// The power `⟨Ωᵀμ, v⟩` of the interconnection forces; zero wherever the interconnection
     /// constraints hold, since an interconnection is lossless (Tellegen's theorem).
     fn interconnection_power(&self, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>) -> f64 {
-        let mut f = VecQ::<Self>::zeros();
+        let mut f = self.sizes().zeros_q::<Self>();
         self.interconnection_forces(q, lambda, &mut f);
         f.dot(v)
     }
@@ -247,22 +269,38 @@ where
 
     /// The power of the external forces `⟨F(q, v, t), v⟩`; on solutions `dE/dt` equals it.
     fn power(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64 {
-        let mut f = VecQ::<Self>::zeros();
+        let mut f = self.sizes().zeros_q::<Self>();
         self.force(t, q, v, &mut f);
         f.dot(v)
     }
 
     /// [`LagrangeDirac::residual`] into a new vector.
     fn residual_vector(&self, t: f64, y: &VecY<Self>) -> VecY<Self> {
-        let mut out = VecY::<Self>::zeros();
+        let mut out = self.sizes().zeros_y::<Self>();
         self.residual(t, y, &mut out);
         out
     }
 
     /// [`LagrangeDirac::jacobian`] into a new, correctly zeroed matrix.
     fn jacobian_matrix(&self, t: f64, y: &VecY<Self>) -> MatYY<Self> {
-        let mut out = MatYY::<Self>::zeros();
+        let mut out = self.sizes().zeros_yy::<Self>();
         self.jacobian(t, y, &mut out);
         out
     }
+}
+
+/// A model of fixed size with dense storage on the stack: every model `#[derive(LagrangeDirac)]`
+/// makes and every composite of named subsystems. Generic code over such models may use
+/// nalgebra's dense matrices on its blocks (`MatQQ::<M>::zeros()`, `a.transpose() * λ`).
+pub trait DenseModel: LagrangeDirac<Algebra = crate::algebra::Dense> + crate::dims::Fixed
+where
+    DefaultAllocator: Storage<Self>,
+{
+}
+
+impl<M> DenseModel for M
+where
+    M: LagrangeDirac<Algebra = crate::algebra::Dense> + crate::dims::Fixed,
+    DefaultAllocator: Storage<M>,
+{
 }

@@ -1,195 +1,36 @@
 //! The linear systems of an implicit step, `(σ M − J) x = r` with `M = diag(I, 0, I, 0)`,
-//! behind one seam ([`NewtonSolver`](crate::newton::NewtonSolver)), with the condensed solver every integrator uses and a
-//! full solver kept as a reference and a benchmark baseline.
+//! behind one seam ([`NewtonSolver`]): the condensed solver of the model's
+//! [`Algebra`](crate::algebra::Algebra), which every integrator uses, and a full dense solver
+//! kept as a reference and a benchmark baseline.
 //!
-//! Condensation (design notes §2.4): the `q` and `p` rows of `σ M − J` are identity blocks,
-//!
-//! ```text
-//! q-row:  σ x_q − x_v                       = r_q
-//! v-row:  L_vq x_q + L_vv x_v − x_p         = r_v
-//! p-row:  σ x_p − K x_q − D x_v − Aᵀ x_λ    = r_p
-//! λ-row:  −G x_q − A x_v                    = r_λ
-//! ```
-//!
-//! (`K = ∂ṗ/∂q`, `D = ∂ṗ/∂v`, `G = ∂(Av)/∂q`), so with `x_q = (r_q + x_v)/σ` and
-//! `x_p = L_vq x_q + L_vv x_v − r_v` the system reduces to the saddle-point system
-//!
-//! ```text
-//! [ σ L_vv + L_vq − D − K/σ   −Aᵀ ] [x_v]   [ r_p + σ r_v − (L_vq − K/σ) r_q ]
-//! [ A + G/σ                     0  ] [x_λ] = [ −r_λ − G r_q / σ                ]
-//! ```
-//!
-//! of size `n + m` instead of `3n + m`. It is factored with its multiplier unknowns scaled,
-//! `x_λ = σ x̃_λ`, and its constraint rows multiplied by σ,
-//!
-//! ```text
-//! [ σ L_vv + L_vq − D − K/σ   −σ Aᵀ ] [x_v]   [ r_p + σ r_v − (L_vq − K/σ) r_q ]
-//! [ σ A + G                     0   ] [x̃_λ] = [ −σ r_λ − G r_q                  ]
-//! ```
-//!
-//! so that at small steps (large σ) the multipliers' pivots, `σ A L_vv⁻¹ Aᵀ`, are of the scale
-//! of the velocities' `σ L_vv` instead of `σ⁻²` times smaller.
+//! Condensation (design notes §2.4) reduces the system to a saddle-point system in
+//! `(x_v, x_λ)` of size `n + m` instead of `3n + m`; see
+//! [`DenseCondensed`](crate::algebra::DenseCondensed) for the algebra.
 
 use nalgebra::{Complex, ComplexField, DefaultAllocator, OMatrix, OVector};
 
+pub use crate::algebra::NewtonSolver;
+use crate::algebra::{Algebra, Dense};
 use crate::blocks::JacobianBlocks;
-use crate::dims::{Dimensions, Storage, VecY};
+use crate::dims::{Dimensions, Fixed, Sizes, Storage, VecY};
 use crate::layout::Layout;
 use crate::lu::{Lu, Singular};
-use crate::names::Named;
+use crate::model::LagrangeDirac;
+
+/// The condensed solver of model `M`'s algebra: the one integrators use by default.
+pub type Condensed<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Condensed;
 
 /// The unknown of a condensed system `(x_v, x_λ)` (or of a variational stage, `(v, Λ)`) at
 /// `column`, for the message of a singular matrix: "no pivot for the velocity `vx`".
-pub fn pivot_name<M: Dimensions + Named>(column: usize) -> String {
-    let names = M::NAMES;
-    if column < M::NQ {
-        format!("no pivot for the velocity `{}`", names.velocity_names()[column])
+pub fn pivot_name<M: LagrangeDirac>(model: &M, column: usize) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    let n = model.sizes().nq;
+    if column < n {
+        format!("no pivot for the velocity `{}`", model.velocity_names()[column])
     } else {
-        format!("no pivot for the multiplier `{}`", names.constraint_names()[column - M::NQ])
-    }
-}
-
-/// Solves the linear systems of a Newton iteration for one Jacobian and one pair of shifts:
-/// the real shift `σ` and the complex shift `σ_c` of Radau's transformed stage system.
-pub trait NewtonSolver<M: Dimensions>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Factors `σ M − J` and `σ_c M − J` for the Jacobian `jac`.
-    fn factor(&mut self, jac: &JacobianBlocks<M>, sigma: f64, sigma_c: Complex<f64>) -> Result<(), Singular>;
-    /// Replaces `r` by the solution of `(σ M − J) x = r`.
-    fn solve(&mut self, r: &mut VecY<M>);
-    /// Replaces `re + i im` by the solution of `(σ_c M − J) x = re + i im`.
-    fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>);
-}
-
-/// The condensed saddle-point solver of size `n + m`, on the stack.
-pub struct Condensed<M: Dimensions>
-where
-    DefaultAllocator: Storage<M>,
-{
-    jac: JacobianBlocks<M>,
-    sigma: f64,
-    sigma_c: Complex<f64>,
-    real: Lu<f64, M::Nk>,
-    complex: Lu<Complex<f64>, M::Nk>,
-}
-
-impl<M: Dimensions> Default for Condensed<M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    fn default() -> Self {
-        Condensed {
-            jac: JacobianBlocks::zeros(),
-            sigma: 1.0,
-            sigma_c: Complex::new(1.0, 0.0),
-            real: Lu::new(),
-            complex: Lu::new(),
-        }
-    }
-}
-
-/// Writes the condensed matrix for shift `sigma` into `s`.
-fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
-    jac: &JacobianBlocks<M>,
-    sigma: T,
-    s: &mut OMatrix<T, M::Nk, M::Nk>,
-) where
-    DefaultAllocator: Storage<M>,
-{
-    let (n, m) = (M::NQ, M::NC);
-    let r = |x: f64| T::from_real(x);
-    for j in 0..n {
-        for i in 0..n {
-            s[(i, j)] = sigma * r(jac.l_vv[(i, j)]) + r(jac.l_vq[(i, j)] - jac.dpdot_dv[(i, j)])
-                - r(jac.dpdot_dq[(i, j)]) / sigma;
-        }
-        for k in 0..m {
-            s[(n + k, j)] = sigma * r(jac.a[(k, j)]) + r(jac.dav_dq[(k, j)]);
-            s[(j, n + k)] = -sigma * r(jac.a[(k, j)]);
-        }
-    }
-    for k in 0..m {
-        for l in 0..m {
-            s[(n + k, n + l)] = T::zero();
-        }
-    }
-}
-
-/// Solves `(σ M − J) x = r` in place with the factored condensed matrix.
-fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
-    jac: &JacobianBlocks<M>,
-    sigma: T,
-    lu: &Lu<T, M::Nk>,
-    x: &mut OVector<T, M::Ny>,
-) where
-    DefaultAllocator: Storage<M>,
-{
-    let (n, m) = (M::NQ, M::NC);
-    let (q, v, p, lambda) = (Layout::<M>::Q, Layout::<M>::V, Layout::<M>::P, Layout::<M>::LAMBDA);
-    let r = |v: f64| T::from_real(v);
-    let mut b = OVector::<T, M::Nk>::zeros();
-    for i in 0..n {
-        let mut bi = x[p + i] + sigma * x[v + i];
-        for j in 0..n {
-            bi -= (r(jac.l_vq[(i, j)]) - r(jac.dpdot_dq[(i, j)]) / sigma) * x[q + j];
-        }
-        b[i] = bi;
-    }
-    for k in 0..m {
-        let mut bk = -sigma * x[lambda + k];
-        for j in 0..n {
-            bk -= r(jac.dav_dq[(k, j)]) * x[q + j];
-        }
-        b[n + k] = bk;
-    }
-    lu.solve(&mut b);
-    let mut xq = OVector::<T, M::Nq>::zeros();
-    for i in 0..n {
-        xq[i] = (x[q + i] + b[i]) / sigma;
-    }
-    for i in 0..n {
-        let mut xp = -x[v + i];
-        for j in 0..n {
-            xp += r(jac.l_vq[(i, j)]) * xq[j] + r(jac.l_vv[(i, j)]) * b[j];
-        }
-        x[p + i] = xp;
-    }
-    for i in 0..n {
-        x[q + i] = xq[i];
-        x[v + i] = b[i];
-    }
-    for k in 0..m {
-        x[lambda + k] = sigma * b[n + k];
-    }
-}
-
-impl<M: Dimensions> NewtonSolver<M> for Condensed<M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    fn factor(&mut self, jac: &JacobianBlocks<M>, sigma: f64, sigma_c: Complex<f64>) -> Result<(), Singular> {
-        self.jac.copy_from(jac);
-        self.sigma = sigma;
-        self.sigma_c = sigma_c;
-        condensed_matrix(jac, sigma, self.real.matrix_mut());
-        condensed_matrix(jac, sigma_c, self.complex.matrix_mut());
-        self.real.factor()?;
-        self.complex.factor()
-    }
-
-    fn solve(&mut self, r: &mut VecY<M>) {
-        condensed_solve(&self.jac, self.sigma, &self.real, r);
-    }
-
-    fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>) {
-        let mut x = OVector::<Complex<f64>, M::Ny>::from_fn(|i, _| Complex::new(re[i], im[i]));
-        condensed_solve(&self.jac, self.sigma_c, &self.complex, &mut x);
-        for i in 0..x.len() {
-            re[i] = x[i].re;
-            im[i] = x[i].im;
-        }
+        format!("no pivot for the multiplier `{}`", model.constraint_names()[column - n])
     }
 }
 
@@ -201,27 +42,39 @@ where
 {
     real: Lu<f64, M::Ny>,
     complex: Lu<Complex<f64>, M::Ny>,
+    sizes: Sizes,
 }
 
-impl<M: Dimensions> Default for Full<M>
+impl<M: Dimensions> Full<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The solver for a model of these sizes.
+    pub fn new(sizes: Sizes) -> Self {
+        Full { real: Lu::new(sizes.ny()), complex: Lu::new(sizes.ny()), sizes }
+    }
+}
+
+impl<M: Fixed> Default for Full<M>
 where
     DefaultAllocator: Storage<M>,
 {
     fn default() -> Self {
-        Full { real: Lu::new(), complex: Lu::new() }
+        Self::new(M::SIZES)
     }
 }
 
 /// Writes `σ M − J` for `y = (q, v, p, λ)` into `s`.
 fn full_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
-    jac: &JacobianBlocks<M>,
+    jac: &JacobianBlocks<M, Dense>,
     sigma: T,
+    sizes: &Sizes,
     s: &mut OMatrix<T, M::Ny, M::Ny>,
 ) where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m) = (M::NQ, M::NC);
-    let (q, v, p, lambda) = (Layout::<M>::Q, Layout::<M>::V, Layout::<M>::P, Layout::<M>::LAMBDA);
+    let (n, m) = (sizes.nq, sizes.nc);
+    let Layout { q, v, p, lambda, .. } = Layout::new(*sizes);
     let r = |x: f64| T::from_real(x);
     s.fill(T::zero());
     for i in 0..n {
@@ -243,13 +96,18 @@ fn full_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     }
 }
 
-impl<M: Dimensions> NewtonSolver<M> for Full<M>
+impl<M: Dimensions> NewtonSolver<M, Dense> for Full<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    fn factor(&mut self, jac: &JacobianBlocks<M>, sigma: f64, sigma_c: Complex<f64>) -> Result<(), Singular> {
-        full_matrix(jac, sigma, self.real.matrix_mut());
-        full_matrix(jac, sigma_c, self.complex.matrix_mut());
+    fn factor(
+        &mut self,
+        jac: &JacobianBlocks<M, Dense>,
+        sigma: f64,
+        sigma_c: Complex<f64>,
+    ) -> Result<(), Singular> {
+        full_matrix(jac, sigma, &self.sizes, self.real.matrix_mut());
+        full_matrix(jac, sigma_c, &self.sizes, self.complex.matrix_mut());
         self.real.factor()?;
         self.complex.factor()
     }
@@ -259,7 +117,10 @@ where
     }
 
     fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>) {
-        let mut x = OVector::<Complex<f64>, M::Ny>::from_fn(|i, _| Complex::new(re[i], im[i]));
+        let ny = <M::Ny as nalgebra::Dim>::from_usize(self.sizes.ny());
+        let mut x = OVector::<Complex<f64>, M::Ny>::from_fn_generic(ny, nalgebra::Const::<1>, |i, _| {
+            Complex::new(re[i], im[i])
+        });
         self.complex.solve(&mut x);
         for i in 0..x.len() {
             re[i] = x[i].re;
@@ -285,13 +146,15 @@ mod tests {
         type Ny = Const<10>;
     }
 
-    fn blocks() -> JacobianBlocks<Three> {
+    const SIZES: Sizes = Sizes { nq: 3, nc: 1, nh: 0 };
+
+    fn blocks() -> JacobianBlocks<Three, Dense> {
         let mut seed = 7u64;
         let mut next = || {
             seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         };
-        let mut b = JacobianBlocks::<Three>::zeros();
+        let mut b = JacobianBlocks::<Three, Dense>::with_shape(&SIZES);
         for x in b.dpdot_dq.iter_mut().chain(b.dpdot_dv.iter_mut()).chain(b.l_vq.iter_mut()) {
             *x = next();
         }
@@ -307,7 +170,7 @@ mod tests {
     }
 
     /// `σ M − J` as a dense complex matrix, written from the block equations independently.
-    fn dense(b: &JacobianBlocks<Three>, sigma: Complex<f64>) -> DMatrix<Complex<f64>> {
+    fn dense(b: &JacobianBlocks<Three, Dense>, sigma: Complex<f64>) -> DMatrix<Complex<f64>> {
         let c = |x: f64| Complex::new(x, 0.0);
         DMatrix::from_fn(10, 10, |i, j| {
             let (bi, ri) = (i / 3, i % 3);
@@ -330,10 +193,9 @@ mod tests {
         })
     }
 
-    fn check<S: NewtonSolver<Three> + Default>() {
+    fn check<S: NewtonSolver<Three, Dense>>(mut solver: S) {
         let b = blocks();
         let (sigma, sigma_c) = (3.7, Complex::new(2.7, 3.1));
-        let mut solver = S::default();
         solver.factor(&b, sigma, sigma_c).expect("nonsingular");
         let rhs = VecY::<Three>::from_fn(|i, _| (i as f64 * 0.37).sin());
         let mut x = rhs;
@@ -353,11 +215,11 @@ mod tests {
 
     #[test]
     fn condensed_solver_solves_the_full_system() {
-        check::<Condensed<Three>>();
+        check(<Dense as Algebra<Three>>::condensed(&SIZES));
     }
 
     #[test]
     fn full_solver_solves_the_full_system() {
-        check::<Full<Three>>();
+        check(Full::<Three>::new(SIZES));
     }
 }

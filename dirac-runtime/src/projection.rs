@@ -1,60 +1,90 @@
 //! Projection of a state onto the constraint manifold: positions onto `φ(q) = 0`, velocities
-//! onto `A(q) v = 0`, on the stack. The variational integrator's samples between steps and
-//! Radau's optional projection after accepted steps use it.
+//! onto `A(q) v = 0`, by the smallest corrections. The variational integrator's samples
+//! between steps and Radau's optional projection after accepted steps use it; its storage is
+//! allocated once, so a projection allocates nothing.
 
 use nalgebra::DefaultAllocator;
 
-use crate::dims::{MatCQ, Storage, VecC, VecH, VecQ};
-use crate::lu::Lu;
+use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
+use crate::dims::{Sizes, Storage, VecH, VecK};
 use crate::model::LagrangeDirac;
+use crate::model::MatCQ;
 
-/// Puts the positions `q` on the holonomic constraints and the velocities `v` on all of them,
-/// by minimal-norm corrections `Δ = −Aᵀ (A Aᵀ)⁻¹ r`; leaves them as they are where `A Aᵀ` is
-/// singular. Stack only.
-pub(crate) fn project<M: LagrangeDirac>(model: &M, q: &mut VecQ<M>, v: &mut VecQ<M>)
+/// The storage of a projection.
+pub(crate) struct Projector<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    let (m, nh) = (M::NC, M::NH);
-    let mut a = MatCQ::<M>::zeros();
-    let mut lu = Lu::<f64, M::Nc>::new();
-    let mut phi = VecH::<M>::zeros();
-    for _ in 0..3 {
-        model.holonomic(q, &mut phi);
-        if nh == 0 || phi.amax() <= 1e-15 * (1.0 + q.amax()) {
-            break;
+    sizes: Sizes,
+    /// The system `[I Aᵀ; A 0]`, with the identity in the rows a projection leaves out.
+    saddle: <M::Algebra as Algebra<M>>::Saddle<f64>,
+    a: MatCQ<M>,
+    phi: VecH<M>,
+    x: VecK<M>,
+}
+
+impl<M: LagrangeDirac> Projector<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new(model: &M) -> Self {
+        let (sizes, shape) = (model.sizes(), model.shape());
+        Projector {
+            sizes,
+            saddle: M::Algebra::saddle(&shape),
+            a: M::Algebra::zeros_cq(&shape),
+            phi: sizes.zeros_h::<M>(),
+            x: sizes.zeros_k::<M>(),
         }
-        model.constraint_matrix(q, &mut a);
-        // The holonomic rows' Gram matrix, with the identity on the other rows.
-        let gram = &a * a.transpose();
-        let matrix = lu.matrix_mut();
-        for i in 0..m {
-            for j in 0..m {
-                matrix[(i, j)] = if i < nh && j < nh {
-                    gram[(i, j)]
-                } else if i == j {
-                    1.0
-                } else {
-                    0.0
-                };
+    }
+
+    /// Factors `[I Aᵀ; A 0]` for the rows `A` holds, or `[I Aᵀ; A_h 0]` with the identity in
+    /// the corner of the other rows when `holonomic_only`; false where it is singular.
+    fn factor(&mut self, holonomic_only: bool) -> bool {
+        self.saddle.assemble(&SaddleTerms {
+            top: &[],
+            top_transposed: &[],
+            identity: 1.0,
+            right: &[(1.0, &self.a)],
+            bottom: &[(1.0, if holonomic_only { 0.0 } else { 1.0 }, &self.a)],
+            corner: (0.0, if holonomic_only { 1.0 } else { 0.0 }),
+        });
+        self.saddle.factor().is_ok()
+    }
+
+    /// Puts the positions `q` on the holonomic constraints and the velocities `v` on all of
+    /// them, by minimal-norm corrections `Δ = −Aᵀ (A Aᵀ)⁻¹ r`; leaves them as they are where
+    /// `A Aᵀ` is singular.
+    pub fn project(&mut self, model: &M, q: &mut crate::dims::VecQ<M>, v: &mut crate::dims::VecQ<M>) {
+        let Sizes { nq: n, nh, .. } = self.sizes;
+        for _ in 0..3 {
+            model.holonomic(q, &mut self.phi);
+            if nh == 0 || amax(self.phi.as_slice()) <= 1e-15 * (1.0 + amax(q.as_slice())) {
+                break;
+            }
+            model.constraint_matrix(q, &mut self.a);
+            if !self.factor(true) {
+                return;
+            }
+            // [I Aᵀ; A_h 0] [x; y] = [0; φ] gives x = A_hᵀ (A_h A_hᵀ)⁻¹ φ.
+            let x = self.x.as_mut_slice();
+            x.fill(0.0);
+            x[n..n + nh].copy_from_slice(self.phi.as_slice());
+            self.saddle.solve(x);
+            for i in 0..n {
+                q[i] -= x[i];
             }
         }
-        if lu.factor().is_err() {
+        model.constraint_matrix(q, &mut self.a);
+        if !self.factor(false) {
             return;
         }
-        let mut r = VecC::<M>::zeros();
-        for j in 0..nh {
-            r[j] = phi[j];
+        let x = self.x.as_mut_slice();
+        x.fill(0.0);
+        M::Algebra::cq_mul(&self.a, 1.0, v.as_slice(), &mut x[n..]);
+        self.saddle.solve(x);
+        for i in 0..n {
+            v[i] -= x[i];
         }
-        lu.solve(&mut r);
-        *q -= a.transpose() * r;
     }
-    model.constraint_matrix(q, &mut a);
-    lu.matrix_mut().copy_from(&(&a * a.transpose()));
-    if lu.factor().is_err() {
-        return;
-    }
-    let mut r = &a * &*v;
-    lu.solve(&mut r);
-    *v -= a.transpose() * r;
 }

@@ -3,9 +3,11 @@
 
 use nalgebra::DefaultAllocator;
 
-use crate::dims::{MatCQ, Storage, VecH, VecQ};
+use crate::algebra::{Algebra, amax};
+use crate::dims::{Storage, VecC, VecH, VecQ};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
+use crate::model::MatCQ;
 use crate::solution::{Columns, Sampling, Solution};
 use crate::state::State;
 
@@ -14,7 +16,7 @@ pub(crate) struct Recorder<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    table: Table,
+    table: Table<M>,
     names: Vec<String>,
     sampling: Sampling,
     next: usize,
@@ -33,8 +35,8 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// A recorder over `[t0, t_end]`, after checking the sampling against that span.
-    pub fn new(sampling: &Sampling, t0: f64, t_end: f64) -> Result<Self, SimError> {
-        let (layout, names) = Columns::of::<M>();
+    pub fn new(model: &M, sampling: &Sampling, t0: f64, t_end: f64) -> Result<Self, SimError> {
+        let (layout, names) = Columns::of(model);
         let expected = match sampling {
             Sampling::Every(dt) if dt.is_nan() || *dt <= 0.0 || dt.is_infinite() => {
                 return Err(SimError::InvalidSampling {
@@ -75,8 +77,15 @@ where
             })?;
             columns.push(column);
         }
-        let table = Table { layout, columns };
-        let buffer = State::zeros();
+        let (sizes, shape) = (model.sizes(), model.shape());
+        let scratch = Scratch {
+            a: M::Algebra::zeros_cq(&shape),
+            av: sizes.zeros_c::<M>(),
+            phi: sizes.zeros_h::<M>(),
+            forces: sizes.zeros_q::<M>(),
+        };
+        let table = Table { layout, columns, scratch };
+        let buffer = State::with_sizes(sizes);
         Ok(Recorder { table, names, sampling: sampling.clone(), next: 0, t0, t_end, last: f64::NAN, buffer })
     }
 
@@ -144,43 +153,58 @@ where
 
     /// The finished solution, with the integrator's statistics.
     pub fn finish<S>(self, stats: S) -> Solution<M, S> {
-        Solution::new(self.table.layout, self.names, self.table.columns, stats)
+        Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats)
     }
 }
 
-/// The recorded columns.
-struct Table {
+/// The recorded columns, and the storage their derived quantities are computed in.
+struct Table<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
     layout: Columns,
     columns: Vec<Vec<f64>>,
+    scratch: Scratch<M>,
 }
 
-impl Table {
+/// Storage for the derived quantities of a sample.
+struct Scratch<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    a: MatCQ<M>,
+    av: VecC<M>,
+    phi: VecH<M>,
+    forces: VecQ<M>,
+}
+
+impl<M: LagrangeDirac> Table<M>
+where
+    DefaultAllocator: Storage<M>,
+{
     /// Appends one sample of `model` at `t` in state `s`, with its derived quantities.
-    fn push<M: LagrangeDirac>(&mut self, model: &M, t: f64, s: &State<M>)
-    where
-        DefaultAllocator: Storage<M>,
-    {
+    fn push(&mut self, model: &M, t: f64, s: &State<M>) {
         let l = &self.layout;
         self.columns[0].push(t);
         for (i, x) in s.components().enumerate() {
             self.columns[l.slot(i)].push(*x);
         }
+        let w = &mut self.scratch;
         let energy = model.energy(t, &s.q, &s.v, &s.p);
         let power = model.power(t, &s.q, &s.v);
-        let mut a = MatCQ::<M>::zeros();
-        model.constraint_matrix(&s.q, &mut a);
-        let av = if M::NC == 0 { 0.0 } else { (a * &s.v).amax() };
-        let mut phi = VecH::<M>::zeros();
-        model.holonomic(&s.q, &mut phi);
-        let phi = if M::NH == 0 { 0.0 } else { phi.amax() };
-        let mut forces = VecQ::<M>::zeros();
-        model.interconnection_forces(&s.q, &s.lambda, &mut forces);
-        let ipower = forces.dot(&s.v);
+        model.constraint_matrix(&s.q, &mut w.a);
+        w.av.fill(0.0);
+        M::Algebra::cq_mul(&w.a, 1.0, s.v.as_slice(), w.av.as_mut_slice());
+        let av = amax(w.av.as_slice());
+        model.holonomic(&s.q, &mut w.phi);
+        let phi = amax(w.phi.as_slice());
+        model.interconnection_forces(&s.q, &s.lambda, &mut w.forces);
+        let ipower = w.forces.dot(&s.v);
         for (k, x) in [energy, power, av, phi, ipower].into_iter().enumerate() {
             self.columns[l.derived(k)].push(x);
         }
         for (k, &i) in l.ports.iter().enumerate() {
-            self.columns[l.port(k)].push(forces[i]);
+            self.columns[l.port(k)].push(w.forces[i]);
         }
     }
 }

@@ -6,7 +6,7 @@ use std::marker::PhantomData;
 
 use nalgebra::DefaultAllocator;
 
-use crate::dims::Storage;
+use crate::dims::{Sizes, Storage};
 use crate::keys::{Constraint, Coordinate};
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
@@ -27,8 +27,8 @@ pub enum Sampling {
 /// Where each series of a solution sits: `t`, the state's slots in the order of [`Layout`],
 /// the derived quantities, then the effort at each port.
 pub(crate) struct Columns {
-    /// The slots of the state.
-    state: usize,
+    /// Where the state's parts sit among its slots.
+    state: Layout,
     /// The ports' coordinate indices.
     pub ports: Vec<usize>,
 }
@@ -39,14 +39,18 @@ impl Columns {
         ["energy", "power", "constraint_residual", "holonomic_residual", "interconnection_power"];
 
     /// The columns of a model's solution, and their names.
-    pub fn of<M: LagrangeDirac>() -> (Columns, Vec<String>)
+    pub fn of<M: LagrangeDirac>(model: &M) -> (Columns, Vec<String>)
     where
         DefaultAllocator: Storage<M>,
     {
-        let columns = Columns { state: Layout::<M>::LEN, ports: M::NAMES.port_indices() };
-        let coordinates = M::coordinate_names();
+        let ports = model.ports().into_iter().map(|c| c.index()).collect();
+        let columns = Columns { state: Layout::new(model.sizes()), ports };
+        let coordinates = model.coordinate_names();
         let mut names = vec!["t".to_owned()];
-        names.extend(Layout::<M>::names());
+        names.extend(coordinates.iter().cloned());
+        names.extend(model.velocity_names());
+        names.extend(coordinates.iter().map(|c| format!("p({c})")));
+        names.extend(model.constraint_names().iter().map(|c| format!("lambda({c})")));
         names.extend(Self::DERIVED.iter().map(|s| (*s).to_owned()));
         names.extend(columns.ports.iter().map(|&i| format!("f({})", coordinates[i])));
         (columns, names)
@@ -59,12 +63,12 @@ impl Columns {
 
     /// The column of derived quantity `k` of [`Columns::DERIVED`].
     pub fn derived(&self, k: usize) -> usize {
-        1 + self.state + k
+        1 + self.state.len + k
     }
 
     /// The column of the effort at port `k` (an index into `ports`).
     pub fn port(&self, k: usize) -> usize {
-        1 + self.state + Self::DERIVED.len() + k
+        1 + self.state.len + Self::DERIVED.len() + k
     }
 }
 
@@ -78,6 +82,7 @@ where
     layout: Columns,
     names: Vec<String>,
     columns: Vec<Vec<f64>>,
+    sizes: Sizes,
     /// The work the integrator did.
     pub stats: S,
     model: PhantomData<fn() -> M>,
@@ -104,8 +109,14 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// A solution from recorded columns.
-    pub(crate) fn new(layout: Columns, names: Vec<String>, columns: Vec<Vec<f64>>, stats: S) -> Self {
-        Solution { layout, names, columns, stats, model: PhantomData }
+    pub(crate) fn new(
+        layout: Columns,
+        names: Vec<String>,
+        columns: Vec<Vec<f64>>,
+        sizes: Sizes,
+        stats: S,
+    ) -> Self {
+        Solution { layout, names, columns, sizes, stats, model: PhantomData }
     }
 
     /// The number of samples.
@@ -125,22 +136,22 @@ where
 
     /// The position of coordinate `c` at each sample.
     pub fn q(&self, c: Coordinate<M>) -> &[f64] {
-        &self.columns[self.layout.slot(Layout::<M>::Q + c.index())]
+        &self.columns[self.layout.slot(self.layout.state.q + c.index())]
     }
 
     /// The velocity of coordinate `c`.
     pub fn v(&self, c: Coordinate<M>) -> &[f64] {
-        &self.columns[self.layout.slot(Layout::<M>::V + c.index())]
+        &self.columns[self.layout.slot(self.layout.state.v + c.index())]
     }
 
     /// The momentum conjugate to coordinate `c`.
     pub fn p(&self, c: Coordinate<M>) -> &[f64] {
-        &self.columns[self.layout.slot(Layout::<M>::P + c.index())]
+        &self.columns[self.layout.slot(self.layout.state.p + c.index())]
     }
 
     /// The multiplier of constraint `k`.
     pub fn lambda(&self, k: Constraint<M>) -> &[f64] {
-        &self.columns[self.layout.slot(Layout::<M>::LAMBDA + k.index())]
+        &self.columns[self.layout.slot(self.layout.state.lambda + k.index())]
     }
 
     /// The generalised energy `E = ⟨p, v⟩ − L`.
@@ -190,7 +201,7 @@ where
         if i >= self.len() {
             return None;
         }
-        let mut state = State::<M>::zeros();
+        let mut state = State::<M>::with_sizes(self.sizes);
         for (k, x) in state.components_mut().enumerate() {
             *x = self.columns[self.layout.slot(k)][i];
         }

@@ -5,7 +5,7 @@ use core::fmt;
 
 use nalgebra::DefaultAllocator;
 
-use crate::dims::{Dimensions, Storage, VecC, VecQ, VecY};
+use crate::dims::{Dimensions, Fixed, Sizes, Storage, VecC, VecQ, VecY};
 use crate::keys::{Constraint, Coordinate};
 use crate::layout::Layout;
 
@@ -66,7 +66,7 @@ where
     }
 }
 
-impl<M: Dimensions> Default for State<M>
+impl<M: Fixed> Default for State<M>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -75,18 +75,36 @@ where
     }
 }
 
+impl<M: Fixed> State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The state with every component zero, for a model whose sizes are fixed when it
+    /// compiles (for any model: [`State::with_sizes`] with its
+    /// [`sizes`](crate::LagrangeDirac::sizes)).
+    pub fn zeros() -> Self {
+        Self::with_sizes(M::SIZES)
+    }
+}
+
 impl<M: Dimensions> State<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    /// The state with every component zero.
-    pub fn zeros() -> Self {
+    /// The state with every component zero for a model of these sizes.
+    pub fn with_sizes(sizes: Sizes) -> Self {
         Self {
-            q: VecQ::<M>::zeros(),
-            v: VecQ::<M>::zeros(),
-            p: VecQ::<M>::zeros(),
-            lambda: VecC::<M>::zeros(),
+            q: sizes.zeros_q::<M>(),
+            v: sizes.zeros_q::<M>(),
+            p: sizes.zeros_q::<M>(),
+            lambda: sizes.zeros_c::<M>(),
         }
+    }
+
+    /// The sizes of this state's model.
+    pub fn sizes(&self) -> Sizes {
+        // The holonomic count is not part of a state; it does not enter any use of these.
+        Sizes { nq: self.q.len(), nc: self.lambda.len(), nh: 0 }
     }
 
     /// The position of coordinate `c`.
@@ -145,32 +163,34 @@ where
 
     /// The state as one flat vector `y = (q, v, p, λ)`.
     pub fn to_y(&self) -> VecY<M> {
-        let mut y = VecY::<M>::zeros();
+        let mut y = self.sizes().zeros_y::<M>();
         self.write_y(&mut y);
         y
     }
 
     /// Writes the state into a flat vector `y = (q, v, p, λ)`.
     pub fn write_y(&self, y: &mut VecY<M>) {
-        let n = M::NQ;
-        y.rows_mut(Layout::<M>::Q, n).copy_from(&self.q);
-        y.rows_mut(Layout::<M>::V, n).copy_from(&self.v);
-        y.rows_mut(Layout::<M>::P, n).copy_from(&self.p);
-        y.rows_mut(Layout::<M>::LAMBDA, M::NC).copy_from(&self.lambda);
+        let l = Layout::new(self.sizes());
+        let y = y.as_mut_slice();
+        y[l.q..l.v].copy_from_slice(self.q.as_slice());
+        y[l.v..l.p].copy_from_slice(self.v.as_slice());
+        y[l.p..l.lambda].copy_from_slice(self.p.as_slice());
+        y[l.lambda..l.len].copy_from_slice(self.lambda.as_slice());
     }
 
     /// Reads the state from a flat vector `y = (q, v, p, λ)`.
     pub fn read_y(&mut self, y: &VecY<M>) {
-        let n = M::NQ;
-        self.q.copy_from(&y.rows(Layout::<M>::Q, n));
-        self.v.copy_from(&y.rows(Layout::<M>::V, n));
-        self.p.copy_from(&y.rows(Layout::<M>::P, n));
-        self.lambda.copy_from(&y.rows(Layout::<M>::LAMBDA, M::NC));
+        let l = Layout::new(self.sizes());
+        let y = y.as_slice();
+        self.q.as_mut_slice().copy_from_slice(&y[l.q..l.v]);
+        self.v.as_mut_slice().copy_from_slice(&y[l.v..l.p]);
+        self.p.as_mut_slice().copy_from_slice(&y[l.p..l.lambda]);
+        self.lambda.as_mut_slice().copy_from_slice(&y[l.lambda..l.len]);
     }
 
-    /// The state stored in a flat vector `y = (q, v, p, λ)`.
-    pub fn from_y(y: &VecY<M>) -> Self {
-        let mut state = Self::zeros();
+    /// The state of a model of these sizes stored in a flat vector `y = (q, v, p, λ)`.
+    pub fn from_y(sizes: Sizes, y: &VecY<M>) -> Self {
+        let mut state = Self::with_sizes(sizes);
         state.read_y(y);
         state
     }

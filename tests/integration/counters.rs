@@ -19,7 +19,7 @@ use dirac::prelude::*;
 use crate::zoo::*;
 
 /// How one run ended: the counters and the final state, or the error.
-fn radau_record<M: LagrangeDirac>(model: &M, start: &State<M>) -> String
+fn radau_record<M: DenseModel>(model: &M, start: &State<M>) -> String
 where
     DefaultAllocator: Storage<M>,
 {
@@ -42,7 +42,7 @@ where
     }
 }
 
-fn variational_record<M: LagrangeDirac>(model: &M, start: &State<M>, use_structure: bool) -> String
+fn variational_record<M: DenseModel>(model: &M, start: &State<M>, use_structure: bool) -> String
 where
     DefaultAllocator: Storage<M>,
 {
@@ -58,7 +58,7 @@ where
     }
 }
 
-fn with_state<M: LagrangeDirac>(mut line: String, state: &State<M>) -> String
+fn with_state<M: DenseModel>(mut line: String, state: &State<M>) -> String
 where
     DefaultAllocator: Storage<M>,
 {
@@ -76,7 +76,7 @@ where
 }
 
 /// The three records of a model started from positions `q` and velocities `v`.
-fn records<M: LagrangeDirac>(out: &mut String, name: &str, model: &M, q: &[f64], v: &[f64])
+fn records<M: DenseModel>(out: &mut String, name: &str, model: &M, q: &[f64], v: &[f64])
 where
     DefaultAllocator: Storage<M>,
 {

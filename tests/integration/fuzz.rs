@@ -34,7 +34,7 @@ struct Tally {
 /// The largest of |φ(q)|, |A(q) v| and |p − ∂L/∂v| of `state`, each relative to the size of
 /// the terms it is made of: `|A| (1 + |q|)` for φ (to first order, φ is A times positions),
 /// `|A| (1 + |v|)` for A v, `1 + |p| + |∂L/∂v|` for the Legendre map.
-fn violation<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> f64
+fn violation<M: DenseModel>(model: &M, t: f64, state: &State<M>) -> f64
 where
     DefaultAllocator: Storage<M>,
 {
@@ -52,7 +52,7 @@ where
     (phi.amax() / q).max(av.amax() / v).max(legendre.amax() / p)
 }
 
-fn all_finite<M: LagrangeDirac>(state: &State<M>) -> bool
+fn all_finite<M: DenseModel>(state: &State<M>) -> bool
 where
     DefaultAllocator: Storage<M>,
 {
@@ -61,7 +61,7 @@ where
 
 /// One case on one model: consistent_state, then Radau and the variational integrator over a
 /// short span, checking every `Ok`.
-fn case<M: LagrangeDirac>(model: &M, rng: &mut Rng, tally: &mut Tally, label: &str)
+fn case<M: DenseModel>(model: &M, rng: &mut Rng, tally: &mut Tally, label: &str)
 where
     DefaultAllocator: Storage<M>,
 {
@@ -96,7 +96,7 @@ where
     (0..solution.len()).map(|i| (solution.t()[i], solution.state(i).expect("a sample"))).collect()
 }
 
-fn check<M: LagrangeDirac>(
+fn check<M: DenseModel>(
     model: &M,
     result: Result<Vec<(f64, State<M>)>, SimError>,
     tolerance: f64,

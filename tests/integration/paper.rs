@@ -29,7 +29,7 @@ fn primitive_system_1_is_eq_9() {
         assert_close(rb.dl_dv[0], sys.m1 * s.v(Primitive1::X1), "p_1");
         assert_close(rb.dl_dv[1], sys.m2 * s.v(Primitive1::X2), "p_2");
     }
-    assert_eq!(Primitive1::ports(), [Primitive1::X2]);
+    assert_eq!(sys.ports(), [Primitive1::X2]);
 }
 
 /// Eq. (10): ṗ̄2 = k3 (x3 − x̄2) + f̄2, ṗ3 = −k3 (x3 − x̄2), with p̄2 = 0 (degenerate) and p3 = m3 v3.

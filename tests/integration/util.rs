@@ -28,11 +28,13 @@ impl Rng {
 }
 
 /// A random flat state with every component in `[-1, 1)`.
-pub fn random_y<M: LagrangeDirac>(rng: &mut Rng) -> VecY<M>
+pub fn random_y<M: LagrangeDirac>(model: &M, rng: &mut Rng) -> VecY<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    VecY::<M>::from_fn(|_, _| rng.uniform(-1.0, 1.0))
+    let mut y = model.sizes().zeros_y::<M>();
+    y.iter_mut().for_each(|x| *x = rng.uniform(-1.0, 1.0));
+    y
 }
 
 /// Checks `jacobian` against central differences of `residual` at `trials` random states:
@@ -42,10 +44,10 @@ where
     DefaultAllocator: Storage<M>,
 {
     let mut rng = Rng::new(seed);
-    let ny = 3 * M::NQ + M::NC;
+    let ny = model.sizes().ny();
     for _ in 0..trials {
         let t = rng.uniform(0.0, 2.0);
-        let y = random_y::<M>(&mut rng);
+        let y = random_y(model, &mut rng);
         let jac = model.jacobian_matrix(t, &y);
         for c in 0..ny {
             let h = 1e-6 * y[c].abs().max(1.0);
@@ -71,7 +73,7 @@ pub fn check_csc_against_dense<M: SparseJacobian>(model: &M, seed: u64, trials: 
 where
     DefaultAllocator: Storage<M>,
 {
-    let ny = 3 * M::NQ + M::NC;
+    let ny = model.sizes().ny();
     let (starts, rows) = (M::JACOBIAN_COLUMN_STARTS, M::JACOBIAN_ROW_INDICES);
     assert_eq!(starts.len(), ny + 1, "one start per column and the end");
     assert_eq!((starts[0], starts[ny]), (0, rows.len()));
@@ -83,11 +85,11 @@ where
     let mut values = vec![0.0; rows.len()];
     for _ in 0..trials {
         let t = rng.uniform(0.0, 2.0);
-        let y = random_y::<M>(&mut rng);
+        let y = random_y(model, &mut rng);
         let dense = model.jacobian_matrix(t, &y);
         values.fill(f64::NAN);
         model.jacobian_csc(t, &y, &mut values);
-        let mut stored = MatYY::<M>::zeros();
+        let mut stored = model.sizes().zeros_yy::<M>();
         for c in 0..ny {
             for k in starts[c]..starts[c + 1] {
                 stored[(rows[k], c)] = values[k];

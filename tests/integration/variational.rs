@@ -120,7 +120,7 @@ fn momentum_maps_are_conserved() {
 }
 
 /// Energy error of a run: the largest |E − E0| over the first and over the last 10% of steps.
-fn energy_error_windows<M: LagrangeDirac>(model: &M, start: &State<M>, h: f64, steps: usize) -> (f64, f64)
+fn energy_error_windows<M: DenseModel>(model: &M, start: &State<M>, h: f64, steps: usize) -> (f64, f64)
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {

@@ -23,9 +23,9 @@ pub struct Raw {
 }
 
 fn main() {
-    assert_eq!(Spherical::velocity_names(), ["v_theta", "v_phi"]);
-    assert_eq!(Spherical::constraint_names(), ["holonomic0"]);
+    assert_eq!(Spherical::NAMES.velocity_names(), ["v_theta", "v_phi"]);
+    assert_eq!(Spherical::NAMES.constraint_names(), ["holonomic0"]);
     let _ = Spherical::HOLONOMIC0;
-    assert_eq!(Raw::coordinate_names(), ["type"]);
+    assert_eq!(Raw::NAMES.coordinate_names(), ["type"]);
     assert_eq!(Raw::TYPE.name(), "type");
 }

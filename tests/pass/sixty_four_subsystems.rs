@@ -146,7 +146,7 @@ pub struct Line {
 }
 
 fn main() {
-    assert_eq!(<Line as Dimensions>::NQ, 128);
-    assert_eq!(<Line as Dimensions>::NC, 63);
-    assert_eq!(Line::constraint_names().len(), 63);
+    assert_eq!(<Line as Fixed>::NQ, 128);
+    assert_eq!(<Line as Fixed>::NC, 63);
+    assert_eq!(Line::NAMES.constraint_names().len(), 63);
 }

@@ -10,6 +10,21 @@ pub fn rt() -> TokenStream {
     quote! { ::dirac::__private }
 }
 
+/// The items of a `LagrangeDirac` impl for a model whose sizes are fixed when it compiles:
+/// dense storage on the stack, the sizes `sizes` (an expression of type `Sizes`).
+pub fn fixed_storage(sizes: &TokenStream) -> TokenStream {
+    let p = rt();
+    quote! {
+        type Algebra = #p::Dense;
+        fn sizes(&self) -> #p::Sizes {
+            #sizes
+        }
+        fn shape(&self) -> #p::Sizes {
+            #sizes
+        }
+    }
+}
+
 /// An argument of a generated method.
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 pub enum Arg {
@@ -126,7 +141,9 @@ impl Out {
             Out::MatQQ => quote! { #p::MatQQ<#model> },
             Out::MatCQ => quote! { #p::MatCQ<#model> },
             Out::ResidualBlocks => quote! { #p::ResidualBlocks<#model> },
-            Out::JacobianBlocks => quote! { #p::JacobianBlocks<#model> },
+            Out::JacobianBlocks => {
+                quote! { #p::JacobianBlocks<#model, <#model as #p::LagrangeDirac>::Algebra> }
+            }
             Out::VecY => quote! { #p::VecY<#model> },
             Out::MatYY => quote! { #p::MatYY<#model> },
             Out::Values => quote! { [::core::primitive::f64] },

@@ -32,10 +32,14 @@ impl CompositeModel {
         let name = composite.ident.to_string();
         let subsystems = composite.subsystems.iter().enumerate().map(|(i, sub)| {
             let ty = &sub.ty;
-            let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
+            let (qi, hi, vi) =
+                (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
+            let sizes = quote_spanned! {ty.span()=>
+                (<#ty as #p::Fixed>::NQ, <#ty as #p::Fixed>::NC, <#ty as #p::Fixed>::NH)
+            };
             quote! {{
                 let s = <#ty as #p::LagrangeDirac>::STRUCTURE;
-                let (tn, tc, th) = (<#ty as #p::Dimensions>::NQ, <#ty as #p::Dimensions>::NC, <#ty as #p::Dimensions>::NH);
+                let (tn, tc, th) = #sizes;
                 let tk = tn + tc;
                 let mut a = 0;
                 while a < tk {

@@ -135,7 +135,7 @@ pub fn inherent_items(composite: &Composite<'_>, targets: Targets<'_>, bounds: &
             (
                 quote! { #p::Coordinate::new(c.index() + #qi) },
                 quote! {
-                    let nh = <#ty as #p::Dimensions>::NH;
+                    let nh = <#ty as #p::Fixed>::NH;
                     #p::Constraint::new(if k.index() < nh { #hi + k.index() } else { #vi + k.index() - nh })
                 },
             )

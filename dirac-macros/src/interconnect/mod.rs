@@ -60,14 +60,24 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
 /// compiler's query depth does not grow with the number of subsystems.
 fn layout(composite: &Composite<'_>, rows: usize) -> TokenStream {
     let p = rt();
-    let d = quote! { #p::Dimensions };
     let u = quote! { ::core::primitive::usize };
     let count = Literal::usize_unsuffixed(composite.subsystems.len());
-    let types: Vec<&syn::Type> = composite.subsystems.iter().map(|s| &s.ty).collect();
+    // Spanned at each field's type, so that a field that is not a model is reported there.
+    let size = |name: &str| -> Vec<TokenStream> {
+        let subsystems = composite.subsystems.iter();
+        subsystems
+            .map(|s| {
+                let ty = &s.ty;
+                let name = syn::Ident::new(name, ty.span());
+                quote_spanned! {ty.span()=> <#ty as ::dirac::__private::Fixed>::#name }
+            })
+            .collect()
+    };
+    let (nqs, nhs, ncs) = (size("NQ"), size("NH"), size("NC"));
     let mut out = quote! {
-        const __NQS: [#u; #count] = [#(<#types as #d>::NQ),*];
-        const __NHS: [#u; #count] = [#(<#types as #d>::NH),*];
-        const __NCS: [#u; #count] = [#(<#types as #d>::NC),*];
+        const __NQS: [#u; #count] = [#(#nqs),*];
+        const __NHS: [#u; #count] = [#(#nhs),*];
+        const __NCS: [#u; #count] = [#(#ncs),*];
     };
     for i in 0..composite.subsystems.len() {
         let (qi, hi, vi, slot) = (
@@ -170,13 +180,13 @@ fn implementation(
     }
 }
 
-/// `where Sub: LagrangeDirac, …` for every subsystem type, at the field's type: if a field is
+/// `where Sub: DenseModel, …` for every subsystem type, at the field's type: if a field is
 /// not a model, this bound is the one error, and the bodies under it report nothing more.
 fn bounds(composite: &Composite<'_>) -> TokenStream {
     let p = rt();
     let bounds = composite.subsystems.iter().map(|s| {
         let ty = &s.ty;
-        quote_spanned! {ty.span()=> #ty: #p::LagrangeDirac, #p::DefaultAllocator: #p::Storage<#ty> }
+        quote_spanned! {ty.span()=> #ty: #p::DenseModel, #p::DefaultAllocator: #p::Storage<#ty> }
     });
     quote! { where #(#bounds),* }
 }
@@ -192,7 +202,10 @@ fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
         let ty = &s.ty;
         quote! { <#ty as #p::LagrangeDirac>::SEPARABLE }
     });
+    let sizes = quote! { #p::Sizes { nq: __NQ, nc: __NC, nh: __NH } };
+    let storage = crate::codegen::signatures::fixed_storage(&sizes);
     quote! {
+        #storage
         const SEPARABLE: ::core::primitive::bool = true #(&& #separable)*;
         const STRUCTURE: #p::Structure = #p::Structure { pattern: &__PATTERN, unknowns: &__UNKNOWNS };
         const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {

@@ -21,6 +21,13 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for AllFunctions {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
         const SEPARABLE: ::core::primitive::bool = false;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[
@@ -353,7 +360,10 @@ const _: () = {
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
-            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
         ) {
             let s0 = q[0].sin();
             let s1 = s0.powi(2);

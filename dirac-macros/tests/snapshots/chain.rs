@@ -14,16 +14,16 @@ const _: () = {
         subsystem::<Primitive2>();
     };
     const __NQS: [::core::primitive::usize; 2] = [
-        <Primitive1 as ::dirac::__private::Dimensions>::NQ,
-        <Primitive2 as ::dirac::__private::Dimensions>::NQ,
+        <Primitive1 as ::dirac::__private::Fixed>::NQ,
+        <Primitive2 as ::dirac::__private::Fixed>::NQ,
     ];
     const __NHS: [::core::primitive::usize; 2] = [
-        <Primitive1 as ::dirac::__private::Dimensions>::NH,
-        <Primitive2 as ::dirac::__private::Dimensions>::NH,
+        <Primitive1 as ::dirac::__private::Fixed>::NH,
+        <Primitive2 as ::dirac::__private::Fixed>::NH,
     ];
     const __NCS: [::core::primitive::usize; 2] = [
-        <Primitive1 as ::dirac::__private::Dimensions>::NC,
-        <Primitive2 as ::dirac::__private::Dimensions>::NC,
+        <Primitive1 as ::dirac::__private::Fixed>::NC,
+        <Primitive2 as ::dirac::__private::Fixed>::NC,
     ];
     const __Q0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 0);
     const __H0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 0);
@@ -160,9 +160,9 @@ const _: () = {
         {
             let s = <Primitive1 as ::dirac::__private::LagrangeDirac>::STRUCTURE;
             let (tn, tc, th) = (
-                <Primitive1 as ::dirac::__private::Dimensions>::NQ,
-                <Primitive1 as ::dirac::__private::Dimensions>::NC,
-                <Primitive1 as ::dirac::__private::Dimensions>::NH,
+                <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                <Primitive1 as ::dirac::__private::Fixed>::NC,
+                <Primitive1 as ::dirac::__private::Fixed>::NH,
             );
             let tk = tn + tc;
             let mut a = 0;
@@ -195,9 +195,9 @@ const _: () = {
         {
             let s = <Primitive2 as ::dirac::__private::LagrangeDirac>::STRUCTURE;
             let (tn, tc, th) = (
-                <Primitive2 as ::dirac::__private::Dimensions>::NQ,
-                <Primitive2 as ::dirac::__private::Dimensions>::NC,
-                <Primitive2 as ::dirac::__private::Dimensions>::NH,
+                <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                <Primitive2 as ::dirac::__private::Fixed>::NC,
+                <Primitive2 as ::dirac::__private::Fixed>::NH,
             );
             let tk = tn + tc;
             let mut a = 0;
@@ -250,9 +250,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Dimensions for Chain
     where
-        Primitive1: ::dirac::__private::LagrangeDirac,
+        Primitive1: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::LagrangeDirac,
+        Primitive2: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         type Nq = ::dirac::__private::Const<{ __NQ }>;
@@ -264,9 +264,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Named for Chain
     where
-        Primitive1: ::dirac::__private::LagrangeDirac,
+        Primitive1: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::LagrangeDirac,
+        Primitive2: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
@@ -297,11 +297,26 @@ const _: () = {
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for Chain
     where
-        Primitive1: ::dirac::__private::LagrangeDirac,
+        Primitive1: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::LagrangeDirac,
+        Primitive2: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            ::dirac::__private::Sizes {
+                nq: __NQ,
+                nc: __NC,
+                nh: __NH,
+            }
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            ::dirac::__private::Sizes {
+                nq: __NQ,
+                nc: __NC,
+                nh: __NH,
+            }
+        }
         const SEPARABLE: ::core::primitive::bool = true
             && <Primitive1 as ::dirac::__private::LagrangeDirac>::SEPARABLE
             && <Primitive2 as ::dirac::__private::LagrangeDirac>::SEPARABLE;
@@ -834,7 +849,10 @@ const _: () = {
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
-            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
         ) {
             {
                 let mut o = ::dirac::__private::JacobianBlocks::<Primitive1>::zeros();
@@ -1054,9 +1072,9 @@ const _: () = {
     #[automatically_derived]
     impl Chain
     where
-        Primitive1: ::dirac::__private::LagrangeDirac,
+        Primitive1: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::LagrangeDirac,
+        Primitive2: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         ///A coordinate of the subsystem `left` as a coordinate of this interconnection.
@@ -1069,7 +1087,7 @@ const _: () = {
         pub const fn left_constraint(
             k: ::dirac::__private::Constraint<Primitive1>,
         ) -> ::dirac::__private::Constraint<Self> {
-            let nh = <Primitive1 as ::dirac::__private::Dimensions>::NH;
+            let nh = <Primitive1 as ::dirac::__private::Fixed>::NH;
             ::dirac::__private::Constraint::new(
                 if k.index() < nh { __H0 + k.index() } else { __V0 + k.index() - nh },
             )
@@ -1084,7 +1102,7 @@ const _: () = {
         pub const fn right_constraint(
             k: ::dirac::__private::Constraint<Primitive2>,
         ) -> ::dirac::__private::Constraint<Self> {
-            let nh = <Primitive2 as ::dirac::__private::Dimensions>::NH;
+            let nh = <Primitive2 as ::dirac::__private::Fixed>::NH;
             ::dirac::__private::Constraint::new(
                 if k.index() < nh { __H1 + k.index() } else { __V1 + k.index() - nh },
             )

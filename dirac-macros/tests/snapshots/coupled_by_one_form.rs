@@ -14,16 +14,16 @@ const _: () = {
         subsystem::<Cart>();
     };
     const __NQS: [::core::primitive::usize; 2] = [
-        <Wheel as ::dirac::__private::Dimensions>::NQ,
-        <Cart as ::dirac::__private::Dimensions>::NQ,
+        <Wheel as ::dirac::__private::Fixed>::NQ,
+        <Cart as ::dirac::__private::Fixed>::NQ,
     ];
     const __NHS: [::core::primitive::usize; 2] = [
-        <Wheel as ::dirac::__private::Dimensions>::NH,
-        <Cart as ::dirac::__private::Dimensions>::NH,
+        <Wheel as ::dirac::__private::Fixed>::NH,
+        <Cart as ::dirac::__private::Fixed>::NH,
     ];
     const __NCS: [::core::primitive::usize; 2] = [
-        <Wheel as ::dirac::__private::Dimensions>::NC,
-        <Cart as ::dirac::__private::Dimensions>::NC,
+        <Wheel as ::dirac::__private::Fixed>::NC,
+        <Cart as ::dirac::__private::Fixed>::NC,
     ];
     const __Q0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 0);
     const __H0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 0);
@@ -240,9 +240,9 @@ const _: () = {
         {
             let s = <Wheel as ::dirac::__private::LagrangeDirac>::STRUCTURE;
             let (tn, tc, th) = (
-                <Wheel as ::dirac::__private::Dimensions>::NQ,
-                <Wheel as ::dirac::__private::Dimensions>::NC,
-                <Wheel as ::dirac::__private::Dimensions>::NH,
+                <Wheel as ::dirac::__private::Fixed>::NQ,
+                <Wheel as ::dirac::__private::Fixed>::NC,
+                <Wheel as ::dirac::__private::Fixed>::NH,
             );
             let tk = tn + tc;
             let mut a = 0;
@@ -275,9 +275,9 @@ const _: () = {
         {
             let s = <Cart as ::dirac::__private::LagrangeDirac>::STRUCTURE;
             let (tn, tc, th) = (
-                <Cart as ::dirac::__private::Dimensions>::NQ,
-                <Cart as ::dirac::__private::Dimensions>::NC,
-                <Cart as ::dirac::__private::Dimensions>::NH,
+                <Cart as ::dirac::__private::Fixed>::NQ,
+                <Cart as ::dirac::__private::Fixed>::NC,
+                <Cart as ::dirac::__private::Fixed>::NH,
             );
             let tk = tn + tc;
             let mut a = 0;
@@ -356,9 +356,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Dimensions for CoupledByOneForm
     where
-        Wheel: ::dirac::__private::LagrangeDirac,
+        Wheel: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::LagrangeDirac,
+        Cart: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         type Nq = ::dirac::__private::Const<{ __NQ }>;
@@ -370,9 +370,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Named for CoupledByOneForm
     where
-        Wheel: ::dirac::__private::LagrangeDirac,
+        Wheel: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::LagrangeDirac,
+        Cart: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
@@ -403,11 +403,26 @@ const _: () = {
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for CoupledByOneForm
     where
-        Wheel: ::dirac::__private::LagrangeDirac,
+        Wheel: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::LagrangeDirac,
+        Cart: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            ::dirac::__private::Sizes {
+                nq: __NQ,
+                nc: __NC,
+                nh: __NH,
+            }
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            ::dirac::__private::Sizes {
+                nq: __NQ,
+                nc: __NC,
+                nh: __NH,
+            }
+        }
         const SEPARABLE: ::core::primitive::bool = true
             && <Wheel as ::dirac::__private::LagrangeDirac>::SEPARABLE
             && <Cart as ::dirac::__private::LagrangeDirac>::SEPARABLE;
@@ -986,7 +1001,10 @@ const _: () = {
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
-            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
         ) {
             {
                 let mut o = ::dirac::__private::JacobianBlocks::<Wheel>::zeros();
@@ -1253,9 +1271,9 @@ const _: () = {
     #[automatically_derived]
     impl CoupledByOneForm
     where
-        Wheel: ::dirac::__private::LagrangeDirac,
+        Wheel: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::LagrangeDirac,
+        Cart: ::dirac::__private::DenseModel,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         ///A coordinate of the subsystem `wheel` as a coordinate of this interconnection.
@@ -1268,7 +1286,7 @@ const _: () = {
         pub const fn wheel_constraint(
             k: ::dirac::__private::Constraint<Wheel>,
         ) -> ::dirac::__private::Constraint<Self> {
-            let nh = <Wheel as ::dirac::__private::Dimensions>::NH;
+            let nh = <Wheel as ::dirac::__private::Fixed>::NH;
             ::dirac::__private::Constraint::new(
                 if k.index() < nh { __H0 + k.index() } else { __V0 + k.index() - nh },
             )
@@ -1283,7 +1301,7 @@ const _: () = {
         pub const fn cart_constraint(
             k: ::dirac::__private::Constraint<Cart>,
         ) -> ::dirac::__private::Constraint<Self> {
-            let nh = <Cart as ::dirac::__private::Dimensions>::NH;
+            let nh = <Cart as ::dirac::__private::Fixed>::NH;
             ::dirac::__private::Constraint::new(
                 if k.index() < nh { __H1 + k.index() } else { __V1 + k.index() - nh },
             )

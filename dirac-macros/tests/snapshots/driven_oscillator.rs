@@ -21,6 +21,13 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for DrivenOscillator {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
         const SEPARABLE: ::core::primitive::bool = false;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true],
@@ -213,7 +220,10 @@ const _: () = {
             _q: &::dirac::__private::VecQ<Self>,
             _v: &::dirac::__private::VecQ<Self>,
             _lambda: &::dirac::__private::VecC<Self>,
-            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
         ) {
             out.dpdot_dq[(0, 0)] = -self.k;
             out.dpdot_dv[(0, 0)] = -self.c;

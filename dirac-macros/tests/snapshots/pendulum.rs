@@ -21,6 +21,13 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for Pendulum {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
         const SEPARABLE: ::core::primitive::bool = true;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true, false, true, false, true, true, true, true, false],
@@ -218,7 +225,10 @@ const _: () = {
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
-            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
         ) {
             let s0 = 2f64 * lambda[0];
             out.dpdot_dq[(0, 0)] = s0;

@@ -21,6 +21,13 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for Primitive1 {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
         const SEPARABLE: ::core::primitive::bool = true;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true, true, true, true],
@@ -219,7 +226,10 @@ const _: () = {
             _q: &::dirac::__private::VecQ<Self>,
             _v: &::dirac::__private::VecQ<Self>,
             _lambda: &::dirac::__private::VecC<Self>,
-            out: &mut ::dirac::__private::JacobianBlocks<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
         ) {
             let s0 = -self.k2;
             out.dpdot_dq[(0, 0)] = -self.k1 + s0;

@@ -4,7 +4,7 @@
 use nalgebra::DefaultAllocator;
 
 use super::tableau::{C1, C2};
-use crate::dims::{Storage, VecY};
+use crate::dims::{Sizes, Storage, VecY};
 use crate::model::LagrangeDirac;
 use crate::state::State;
 
@@ -22,8 +22,8 @@ impl<M: LagrangeDirac> Dense<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub fn new() -> Self {
-        Dense { cont: [VecY::<M>::zeros(), VecY::<M>::zeros(), VecY::<M>::zeros()], h: 0.0 }
+    pub fn new(sizes: Sizes) -> Self {
+        Dense { cont: [sizes.zeros_y::<M>(), sizes.zeros_y::<M>(), sizes.zeros_y::<M>()], h: 0.0 }
     }
 
     /// Takes the polynomial of a step of size `h` with stage increments `z`.

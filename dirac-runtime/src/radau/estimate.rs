@@ -6,7 +6,7 @@ use nalgebra::DefaultAllocator;
 use super::options::norm;
 use super::stages::Step;
 use super::tableau::{DD1, DD2, DD3};
-use crate::dims::{Storage, VecY};
+use crate::dims::{Sizes, Storage, VecY};
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
@@ -19,28 +19,25 @@ where
     f2: VecY<M>,
     e: VecY<M>,
     tmp: VecY<M>,
+    sizes: Sizes,
 }
 
 /// `x ← M x` for `M = diag(I, 0, I, 0)`: zeroes the algebraic rows.
-fn zero_algebraic<M: LagrangeDirac>(x: &mut VecY<M>)
+fn zero_algebraic<M: LagrangeDirac>(l: &Layout, x: &mut VecY<M>)
 where
     DefaultAllocator: Storage<M>,
 {
-    let n = M::NQ;
-    for i in Layout::<M>::V..Layout::<M>::V + n {
-        x[i] = 0.0;
-    }
-    for i in Layout::<M>::LAMBDA..Layout::<M>::LEN {
-        x[i] = 0.0;
-    }
+    let x = x.as_mut_slice();
+    x[l.v..l.p].fill(0.0);
+    x[l.lambda..l.len].fill(0.0);
 }
 
 impl<M: LagrangeDirac> Estimator<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub fn new() -> Self {
-        Estimator { f2: VecY::<M>::zeros(), e: VecY::<M>::zeros(), tmp: VecY::<M>::zeros() }
+    pub fn new(sizes: Sizes) -> Self {
+        Estimator { f2: sizes.zeros_y::<M>(), e: sizes.zeros_y::<M>(), tmp: sizes.zeros_y::<M>(), sizes }
     }
 
     /// The weighted norm of `(γ/h M − J)⁻¹ (f(t, y) + M Σ e_i z_i)`, refined once with a
@@ -48,7 +45,7 @@ where
     /// below 1. `f0` is `f(t, y)` at the step's start.
     // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
     #[allow(clippy::needless_range_loop)]
-    pub fn error<S: NewtonSolver<M>>(
+    pub fn error<S: NewtonSolver<M, M::Algebra>>(
         &mut self,
         step: Step<'_, M, S>,
         z: &[VecY<M>; 3],
@@ -56,16 +53,17 @@ where
         refine: bool,
     ) -> f64 {
         let h = step.h;
+        let layout = Layout::new(self.sizes.typed::<M>());
         for i in 0..self.f2.len() {
             self.f2[i] = (DD1 * z[0][i] + DD2 * z[1][i] + DD3 * z[2][i]) / h;
         }
-        zero_algebraic::<M>(&mut self.f2);
+        zero_algebraic::<M>(&layout, &mut self.f2);
         // The algebraic rows of f(t_n, y_n) vanish up to the Newton tolerance of the step that
         // produced y_n: that remainder is not truncation error, and through the index-2
         // multipliers' scaling it would keep the estimate above 1 however small the step,
         // whenever a multiplier crosses zero. They are left out, as in exact arithmetic.
         self.e.copy_from(f0);
-        zero_algebraic::<M>(&mut self.e);
+        zero_algebraic::<M>(&layout, &mut self.e);
         self.e += &self.f2;
         step.solver.solve(&mut self.e);
         let mut err = norm::<M>(&self.e, step.weights).max(1e-10);
@@ -75,9 +73,8 @@ where
             step.model.residual(step.t, &self.tmp, &mut self.e);
             step.stats.residual_evaluations += 1;
             // As above: measure the algebraic rows from the state's own remainder.
-            let n = M::NQ;
-            let (v, lambda) = (Layout::<M>::V, Layout::<M>::LAMBDA);
-            for i in (v..v + n).chain(lambda..Layout::<M>::LEN) {
+            let Layout { v, p, lambda, len, .. } = layout;
+            for i in (v..p).chain(lambda..len) {
                 self.e[i] -= f0[i];
             }
             self.e += &self.f2;

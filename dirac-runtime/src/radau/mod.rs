@@ -25,23 +25,23 @@ use self::options::Tolerances;
 pub use self::options::{RadauOptions, RadauStats};
 use self::stages::{Outcome, Stages, Step};
 use self::tableau::{Eigen, eigen};
+use crate::algebra::Algebra;
 use crate::blocks::JacobianBlocks;
-use crate::diagnose::singular_cause;
+use crate::diagnose::{describe_slot, singular_cause};
 use crate::dims::{Storage, VecY};
 use crate::error::SimError;
 use crate::integrator::{Integrator, check_start};
-use crate::layout::Layout;
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 use crate::newton::{Condensed, NewtonSolver, pivot_name};
-use crate::projection::project;
+use crate::projection::Projector;
 use crate::state::State;
 
 /// Below this contraction rate of the last Newton iteration the Jacobian is kept.
 const THET: f64 = 0.001;
 
 /// The Radau IIA integrator for a model `M`, with the Newton solver `S`.
-pub struct Radau<'m, M: LagrangeDirac, S: NewtonSolver<M> = Condensed<M>>
+pub struct Radau<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra> = Condensed<M>>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -64,7 +64,9 @@ where
     estimator: Estimator<M>,
     dense: Dense<M>,
     controller: Controller,
-    jac: JacobianBlocks<M>,
+    jac: JacobianBlocks<M, M::Algebra>,
+    /// Puts accepted steps back on the constraints, when the options ask for it.
+    projector: Option<Projector<M>>,
     /// Whether `jac` was evaluated at the current state.
     jac_current: bool,
     need_jac: bool,
@@ -77,37 +79,50 @@ impl<'m, M: LagrangeDirac> Radau<'m, M>
 where
     DefaultAllocator: Storage<M>,
 {
-    /// An integrator for `model` with the condensed Newton solver.
+    /// An integrator for `model` with the condensed Newton solver of its algebra.
     pub fn new(model: &'m M, options: RadauOptions) -> Result<Self, SimError> {
-        Self::with_solver(model, options, Condensed::default())
+        options.validate()?;
+        let shape = model.shape();
+        Self::build(model, options, M::Algebra::condensed(&shape), &shape)
     }
 }
 
-impl<'m, M: LagrangeDirac, S: NewtonSolver<M>> Radau<'m, M, S>
+impl<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'m, M, S>
 where
     DefaultAllocator: Storage<M>,
 {
     /// An integrator for `model` that solves its linear systems with `solver`.
     pub fn with_solver(model: &'m M, options: RadauOptions, solver: S) -> Result<Self, SimError> {
         options.validate()?;
+        Self::build(model, options, solver, &model.shape())
+    }
+
+    fn build(
+        model: &'m M,
+        options: RadauOptions,
+        solver: S,
+        shape: &<M::Algebra as Algebra<M>>::Shape,
+    ) -> Result<Self, SimError> {
+        let sizes = model.sizes();
         Ok(Radau {
             model,
             solver,
             options,
             eig: eigen(),
-            tolerances: Tolerances::new(&options),
+            tolerances: Tolerances::new(&options, sizes),
             t: 0.0,
             t_end: 0.0,
             h: 0.0,
-            y: VecY::<M>::zeros(),
-            state: State::zeros(),
-            f0: VecY::<M>::zeros(),
-            weights: VecY::<M>::zeros(),
-            stages: Stages::new(),
-            estimator: Estimator::new(),
-            dense: Dense::new(),
+            y: sizes.zeros_y::<M>(),
+            state: State::with_sizes(sizes),
+            f0: sizes.zeros_y::<M>(),
+            weights: sizes.zeros_y::<M>(),
+            stages: Stages::new(sizes),
+            estimator: Estimator::new(sizes),
+            dense: Dense::new(sizes),
             controller: Controller::new(),
-            jac: JacobianBlocks::zeros(),
+            jac: JacobianBlocks::with_shape(shape),
+            projector: (options.projection && sizes.nc > 0).then(|| Projector::new(model)),
             jac_current: false,
             need_jac: true,
             need_factor: true,
@@ -157,7 +172,7 @@ where
                 if singular >= 6 {
                     let s = &self.state;
                     let cause = singular_cause(self.model, self.t, &s.q, &s.v);
-                    let detail = format!("{}; {cause}", pivot_name::<M>(column));
+                    let detail = format!("{}; {cause}", pivot_name(self.model, column));
                     return Err(SimError::SingularMatrix { t: self.t, h: self.h, detail });
                 }
                 reason = "singular iteration matrix";
@@ -242,9 +257,9 @@ where
         self.dense.update(&self.stages.z, h);
         self.y += &self.stages.z[2];
         self.state.read_y(&self.y);
-        if self.options.projection && M::NC > 0 {
+        if let Some(projector) = &mut self.projector {
             let s = &mut self.state;
-            project(self.model, &mut s.q, &mut s.v);
+            projector.project(self.model, &mut s.q, &mut s.v);
             self.model.dl_dv(self.t + h, &s.q, &s.v, &mut s.p);
             s.write_y(&mut self.y);
         }
@@ -267,10 +282,10 @@ where
     /// A typed error if the state or its residual `f0` holds a non-finite value.
     fn check_finite(&self, t: f64) -> Result<(), SimError> {
         if let Some(i) = self.y.iter().position(|v| !v.is_finite()) {
-            return Err(SimError::NonFinite { t, component: Layout::<M>::describe(i) });
+            return Err(SimError::NonFinite { t, component: describe_slot(self.model, i) });
         }
         if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
-            let component = format!("the equation of {}", Layout::<M>::describe(i));
+            let component = format!("the equation of {}", describe_slot(self.model, i));
             return Err(SimError::NonFinite { t, component });
         }
         Ok(())
@@ -280,14 +295,14 @@ where
     fn newton_failure(&self, why: &str) -> SimError {
         if why.starts_with("non-finite") {
             let i = self.stages.non_finite_slot();
-            let component = format!("the equation of {}", Layout::<M>::describe(i));
+            let component = format!("the equation of {}", describe_slot(self.model, i));
             return SimError::NonFinite { t: self.t, component };
         }
         SimError::NewtonDiverged { t: self.t, h: self.h, iterations: self.options.max_newton_iterations }
     }
 }
 
-impl<M: LagrangeDirac, S: NewtonSolver<M>> Integrator<M> for Radau<'_, M, S>
+impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Integrator<M> for Radau<'_, M, S>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -313,7 +328,7 @@ where
         self.model.residual(t0, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
-            let component = format!("the equation of {}", Layout::<M>::describe(i));
+            let component = format!("the equation of {}", describe_slot(self.model, i));
             return Err(SimError::NonFinite { t: t0, component });
         }
         Ok(())

@@ -2,7 +2,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use crate::dims::{Storage, VecY};
+use crate::dims::{Sizes, Storage, VecY};
 use crate::error::SimError;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
@@ -121,6 +121,8 @@ where
 {
     rtol: f64,
     atol: VecY<M>,
+    /// The model's sizes: the multipliers' weights scale with `1/h` (index 2).
+    sizes: Sizes,
     /// The Newton iteration's stopping tolerance.
     pub fnewt: f64,
 }
@@ -129,11 +131,13 @@ impl<M: LagrangeDirac> Tolerances<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub fn new(options: &RadauOptions) -> Self {
+    pub fn new(options: &RadauOptions, sizes: Sizes) -> Self {
         let rtol = 0.1 * options.rtol.powf(2.0 / 3.0);
         let atol = rtol * options.atol / options.rtol;
         let fnewt = (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt()));
-        Tolerances { rtol, atol: VecY::<M>::repeat(atol), fnewt }
+        let mut atol_y = sizes.zeros_y::<M>();
+        atol_y.fill(atol);
+        Tolerances { rtol, atol: atol_y, sizes, fnewt }
     }
 
     /// Replaces the absolute tolerances by one per component of the state.
@@ -151,9 +155,10 @@ where
     /// The error weights at state `y` for a step `h`: `atol + rtol |y|`, divided by `h` for
     /// the multipliers, index-2 variables whose error estimate is one order worse.
     pub fn weights(&self, y: &VecY<M>, h: f64, out: &mut VecY<M>) {
+        let lambda = Layout::new(self.sizes.typed::<M>()).lambda;
         for (i, s) in out.iter_mut().enumerate() {
             *s = self.atol[i] + self.rtol * y[i].abs();
-            if i >= Layout::<M>::LAMBDA {
+            if i >= lambda {
                 *s /= h;
             }
         }

@@ -7,7 +7,7 @@ use nalgebra::DefaultAllocator;
 use super::dense::Dense;
 use super::options::{RadauStats, norm};
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
-use crate::dims::{Storage, VecY};
+use crate::dims::{Sizes, Storage, VecY};
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
@@ -46,29 +46,31 @@ where
     f: [VecY<M>; 3],
     r: [VecY<M>; 3],
     tmp: VecY<M>,
+    sizes: Sizes,
     faccon: f64,
     /// The last observed contraction rate; a fresh Jacobian is needed when it is not small.
     pub theta: f64,
 }
 
-fn three<M: LagrangeDirac>() -> [VecY<M>; 3]
+fn three<M: LagrangeDirac>(sizes: Sizes) -> [VecY<M>; 3]
 where
     DefaultAllocator: Storage<M>,
 {
-    [VecY::<M>::zeros(), VecY::<M>::zeros(), VecY::<M>::zeros()]
+    [sizes.zeros_y::<M>(), sizes.zeros_y::<M>(), sizes.zeros_y::<M>()]
 }
 
 impl<M: LagrangeDirac> Stages<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub fn new() -> Self {
+    pub fn new(sizes: Sizes) -> Self {
         Stages {
-            z: three(),
-            w: three(),
-            f: three(),
-            r: three(),
-            tmp: VecY::<M>::zeros(),
+            z: three(sizes),
+            w: three(sizes),
+            f: three(sizes),
+            r: three(sizes),
+            tmp: sizes.zeros_y::<M>(),
+            sizes,
             faccon: 1.0,
             theta: 1.0,
         }
@@ -97,7 +99,7 @@ where
     }
 
     /// Iterates to convergence, or says by how much to shrink the step.
-    pub fn iterate<S: NewtonSolver<M>>(
+    pub fn iterate<S: NewtonSolver<M, M::Algebra>>(
         &mut self,
         mut step: Step<'_, M, S>,
         eig: &Eigen,
@@ -184,9 +186,8 @@ where
                 rk[i] = TI[k][0] * self.f[0][i] + TI[k][1] * self.f[1][i] + TI[k][2] * self.f[2][i];
             }
         }
-        let n = M::NQ;
-        let (q, p) = (Layout::<M>::Q, Layout::<M>::P);
-        for i in (q..q + n).chain(p..p + n) {
+        let Layout { q, v, p, lambda, .. } = Layout::new(self.sizes.typed::<M>());
+        for i in (q..v).chain(p..lambda) {
             let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
             self.r[0][i] -= gamma * w1;
             self.r[1][i] -= alpha * w2 - beta * w3;

@@ -1,12 +1,15 @@
 //! The general path of a variational step: a Newton iteration on the `(n + m)` system of each
-//! stage, for any Lagrangian (configuration-dependent or degenerate mass matrices included).
+//! stage, for any Lagrangian (configuration-dependent or degenerate mass matrices included),
+//! with the blocks stored and the systems solved as the model's algebra says.
 
 use nalgebra::DefaultAllocator;
 
-use super::work::Step;
-use crate::dims::{MatCQ, MatQQ, Storage, VecC, VecH, VecK, VecQ};
+use super::work::{StageBlocks, Step};
+use crate::algebra::{Algebra, Saddle, SaddleTerms};
+use crate::dims::{Sizes, Storage, VecH, VecQ};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
+use crate::model::MatCQ;
 
 /// Which unknowns a Newton update applies to.
 #[derive(Clone, Copy)]
@@ -28,172 +31,179 @@ where
     stage_two(s)
 }
 
+/// `x ← a + c b`, in place.
+pub(crate) fn set_axpy<M: LagrangeDirac>(x: &mut VecQ<M>, a: &VecQ<M>, c: f64, b: &VecQ<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    x.copy_from(a);
+    x.axpy(c, b, 1.0);
+}
+
 /// Stage 1: the new positions, through `(v, Λ)`.
+// Indexing keeps the several vectors of one component side by side.
+#[allow(clippy::needless_range_loop)]
 fn stage_one<M: LagrangeDirac>(s: &mut Step<'_, M>) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m, h) = (M::NQ, M::NC, s.h);
+    let (n, h) = (s.work.sizes.typed::<M>().nq, s.h);
     let (t0, t1, tm) = (s.t, s.t + h, s.t + 0.5 * h);
     let model = s.model;
-    let mut r = VecK::<M>::zeros();
     for _ in 0..s.options.max_iterations {
-        let (q, v) = (&s.state.q, &s.work.v);
-        let q1 = q + v * h;
-        let qm = q + v * (0.5 * h);
-        let (mut lv0, mut lv1, mut lq0, mut f) =
-            (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
-        model.dl_dv(t0, q, v, &mut lv0);
-        model.dl_dv(t1, &q1, v, &mut lv1);
-        model.dl_dq(t0, q, v, &mut lq0);
-        model.force(tm, &qm, v, &mut f);
-        let momentum = (lv0 + lv1) * 0.5
-            - (lq0 + f) * (0.5 * h)
-            - s.work.a0.transpose() * &s.work.big_lambda
-            - &s.state.p;
-        r.rows_mut(0, n).copy_from(&momentum);
-        let constraint = stage_one_constraints(model, h, &q1, &qm, v);
-        r.rows_mut(n, m).copy_from(&constraint);
+        let w = &mut s.work;
+        let (q, v, x) = (&s.state.q, &w.v, &mut w.vectors);
+        set_axpy::<M>(&mut x.q1, q, h, v);
+        set_axpy::<M>(&mut x.qm, q, 0.5 * h, v);
+        model.dl_dv(t0, q, v, &mut x.lv0);
+        model.dl_dv(t1, &x.q1, v, &mut x.lv1);
+        model.dl_dq(t0, q, v, &mut x.lq);
+        model.force(tm, &x.qm, v, &mut x.f);
+        // The constraint impulse A(q_k)ᵀ Λ, held in `target` (unused in this stage).
+        x.target.fill(0.0);
+        M::Algebra::cq_tr_mul(&w.a0, 1.0, w.big_lambda.as_slice(), x.target.as_mut_slice());
+        let r = x.r.as_mut_slice();
+        for i in 0..n {
+            r[i] = 0.5 * (x.lv0[i] + x.lv1[i]) - 0.5 * h * (x.lq[i] + x.f[i]) - x.target[i] - s.state.p[i];
+        }
 
-        let (mut lvv0, mut lvv1, mut lvq0, mut lvq1) =
-            (MatQQ::<M>::zeros(), MatQQ::<M>::zeros(), MatQQ::<M>::zeros(), MatQQ::<M>::zeros());
-        let (mut fq, mut fv) = (MatQQ::<M>::zeros(), MatQQ::<M>::zeros());
-        model.l_vv(t0, q, v, &mut lvv0);
-        model.l_vv(t1, &q1, v, &mut lvv1);
-        model.l_vq(t0, q, v, &mut lvq0);
-        model.l_vq(t1, &q1, v, &mut lvq1);
-        model.force_dq(tm, &qm, v, &mut fq);
-        model.force_dv(tm, &qm, v, &mut fv);
-        let top = (lvv0 + lvv1 + lvq1 * h) * 0.5 - (lvq0.transpose() + fv + fq * (0.5 * h)) * (0.5 * h);
-        let bottom = stage_one_constraint_jacobian(model, &q1, &qm, v, h);
-        let jac = s.work.lu.matrix_mut();
-        jac.fill(0.0);
-        jac.view_mut((0, 0), (n, n)).copy_from(&top);
-        jac.view_mut((0, n), (n, m)).copy_from(&(-s.work.a0.transpose()));
-        jac.view_mut((n, 0), (m, n)).copy_from(&bottom);
-        if newton_update(s, &mut r, Stage::One)? {
+        let b = &mut w.blocks;
+        model.l_vv(t0, q, v, &mut b.lvv0);
+        model.l_vv(t1, &x.q1, v, &mut b.lvv1);
+        model.l_vq(t0, q, v, &mut b.lvq0);
+        model.l_vq(t1, &x.q1, v, &mut b.lvq1);
+        model.force_dq(tm, &x.qm, v, &mut b.fq);
+        model.force_dv(tm, &x.qm, v, &mut b.fv);
+        model.constraint_matrix(&x.q1, &mut b.a1);
+        model.constraint_matrix(&x.qm, &mut b.am);
+        model.dav_dq(&x.qm, v, &mut b.gm);
+        stage_one_constraints(model, &w.sizes.typed::<M>(), h, &x.q1, &mut x.phi, &b.am, v, &mut r[n..]);
+        assemble_stage_one::<M>(&mut w.saddle, b, &w.a0, h);
+        if newton_update(s, Stage::One)? {
             return Ok(());
         }
     }
     Err(s.diverged())
 }
 
-/// `φ(q_{k+1})/h` for holonomic rows, `A(q_{k+½}) v` for the others.
-pub(crate) fn stage_one_constraints<M: LagrangeDirac>(
-    model: &M,
+/// The stage-1 matrix: `∂/∂v` of the momentum residual (top) and of the constraints (bottom).
+fn assemble_stage_one<M: LagrangeDirac>(
+    saddle: &mut <M::Algebra as Algebra<M>>::Saddle<f64>,
+    b: &StageBlocks<M>,
+    a0: &MatCQ<M>,
     h: f64,
-    q1: &VecQ<M>,
-    qm: &VecQ<M>,
-    v: &VecQ<M>,
-) -> VecC<M>
-where
+) where
     DefaultAllocator: Storage<M>,
 {
-    let (m, nh) = (M::NC, M::NH);
-    let mut out = VecC::<M>::zeros();
-    if m == 0 {
-        return out;
-    }
-    let mut phi = VecH::<M>::zeros();
-    model.holonomic(q1, &mut phi);
-    let mut am = MatCQ::<M>::zeros();
-    model.constraint_matrix(qm, &mut am);
-    let av = am * v;
-    for j in 0..m {
-        out[j] = if j < nh { phi[j] / h } else { av[j] };
-    }
-    out
+    // ½ (L_vv(q_k) + L_vv(q_{k+1}) + h L_vq(q_{k+1})) − (h/2)(L_vq(q_k)ᵀ + F_v + (h/2) F_q)
+    let top = [(0.5, &b.lvv0), (0.5, &b.lvv1), (0.5 * h, &b.lvq1), (-0.5 * h, &b.fv), (-0.25 * h * h, &b.fq)];
+    saddle.assemble(&SaddleTerms {
+        top: &top,
+        top_transposed: &[(-0.5 * h, &b.lvq0)],
+        identity: 0.0,
+        right: &[(-1.0, a0)],
+        // Holonomic rows: A(q_{k+1}); the others: A(q_{k+½}) + (h/2) ∂(A v)/∂q there.
+        bottom: &[(1.0, 0.0, &b.a1), (0.0, 1.0, &b.am), (0.0, 0.5 * h, &b.gm)],
+        corner: (0.0, 0.0),
+    });
 }
 
-/// The derivative of [`stage_one_constraints`] with respect to `v`.
-pub(crate) fn stage_one_constraint_jacobian<M: LagrangeDirac>(
+/// `φ(q_{k+1})/h` for holonomic rows, `A(q_{k+½}) v` for the others, into `out`; `am` holds
+/// `A(q_{k+½})`.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn stage_one_constraints<M: LagrangeDirac>(
     model: &M,
-    q1: &VecQ<M>,
-    qm: &VecQ<M>,
-    v: &VecQ<M>,
+    sizes: &Sizes,
     h: f64,
-) -> MatCQ<M>
-where
+    q1: &VecQ<M>,
+    phi: &mut VecH<M>,
+    am: &MatCQ<M>,
+    v: &VecQ<M>,
+    out: &mut [f64],
+) where
     DefaultAllocator: Storage<M>,
 {
-    let (m, nh) = (M::NC, M::NH);
-    let mut out = MatCQ::<M>::zeros();
-    if m == 0 {
-        return out;
+    if sizes.nc == 0 {
+        return;
     }
-    let (mut a1, mut am, mut gm) = (MatCQ::<M>::zeros(), MatCQ::<M>::zeros(), MatCQ::<M>::zeros());
-    model.constraint_matrix(q1, &mut a1);
-    model.constraint_matrix(qm, &mut am);
-    model.dav_dq(qm, v, &mut gm);
-    for j in 0..m {
-        for i in 0..M::NQ {
-            out[(j, i)] = if j < nh { a1[(j, i)] } else { am[(j, i)] + 0.5 * h * gm[(j, i)] };
-        }
+    out.fill(0.0);
+    M::Algebra::cq_mul(am, 1.0, v.as_slice(), out);
+    model.holonomic(q1, phi);
+    for j in 0..sizes.nh {
+        out[j] = phi[j] / h;
     }
-    out
 }
 
 /// Stage 2: the new momenta and velocities, through `(w, Γ)`.
+#[allow(clippy::needless_range_loop)]
 fn stage_two<M: LagrangeDirac>(s: &mut Step<'_, M>) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let (n, m, h) = (M::NQ, M::NC, s.h);
+    let (n, h) = (s.work.sizes.typed::<M>().nq, s.h);
     let (t0, t1, tm) = (s.t, s.t + h, s.t + 0.5 * h);
     let model = s.model;
-    let (q, v) = (&s.state.q, &s.work.v);
-    let q1 = q + v * h;
-    let qm = q + v * (0.5 * h);
-    let (mut lv0, mut lv1, mut lq1, mut f) =
-        (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
-    model.dl_dv(t0, q, v, &mut lv0);
-    model.dl_dv(t1, &q1, v, &mut lv1);
-    model.dl_dq(t1, &q1, v, &mut lq1);
-    model.force(tm, &qm, v, &mut f);
-    s.work.work += h * f.dot(v);
-    let target = (lv0 + lv1) * 0.5 + (lq1 + f) * (0.5 * h);
-    let mut a1 = MatCQ::<M>::zeros();
-    model.constraint_matrix(&q1, &mut a1);
-    s.state.v.copy_from(&s.work.v);
-    let mut r = VecK::<M>::zeros();
+    {
+        let w = &mut s.work;
+        let (q, v, x) = (&s.state.q, &w.v, &mut w.vectors);
+        set_axpy::<M>(&mut x.q1, q, h, v);
+        set_axpy::<M>(&mut x.qm, q, 0.5 * h, v);
+        model.dl_dv(t0, q, v, &mut x.lv0);
+        model.dl_dv(t1, &x.q1, v, &mut x.lv1);
+        model.dl_dq(t1, &x.q1, v, &mut x.lq);
+        model.force(tm, &x.qm, v, &mut x.f);
+        w.work += h * x.f.dot(v);
+        for i in 0..n {
+            x.target[i] = 0.5 * (x.lv0[i] + x.lv1[i]) + 0.5 * h * (x.lq[i] + x.f[i]);
+        }
+        model.constraint_matrix(&x.q1, &mut w.blocks.a1);
+        s.state.v.copy_from(v);
+    }
     for _ in 0..s.options.max_iterations {
-        let w = &s.state.v;
-        let mut lv = VecQ::<M>::zeros();
-        model.dl_dv(t1, &q1, w, &mut lv);
-        let momentum = &lv - a1.transpose() * &s.work.gamma - &target;
-        r.rows_mut(0, n).copy_from(&momentum);
-        r.rows_mut(n, m).copy_from(&(&a1 * w));
-        let mut lvv = MatQQ::<M>::zeros();
-        model.l_vv(t1, &q1, w, &mut lvv);
-        let jac = s.work.lu.matrix_mut();
-        jac.fill(0.0);
-        jac.view_mut((0, 0), (n, n)).copy_from(&lvv);
-        jac.view_mut((0, n), (n, m)).copy_from(&(-a1.transpose()));
-        jac.view_mut((n, 0), (m, n)).copy_from(&a1);
-        if newton_update(s, &mut r, Stage::Two)? {
-            model.dl_dv(t1, &q1, &s.state.v, &mut s.state.p);
+        let w = &mut s.work;
+        let (x, b) = (&mut w.vectors, &mut w.blocks);
+        let wv = &s.state.v;
+        model.dl_dv(t1, &x.q1, wv, &mut x.lv1);
+        // The constraint impulse A(q_{k+1})ᵀ Γ, held in `lv0` (not needed after `target`).
+        x.lv0.fill(0.0);
+        M::Algebra::cq_tr_mul(&b.a1, 1.0, w.gamma.as_slice(), x.lv0.as_mut_slice());
+        let r = x.r.as_mut_slice();
+        for i in 0..n {
+            r[i] = x.lv1[i] - x.lv0[i] - x.target[i];
+        }
+        r[n..].fill(0.0);
+        M::Algebra::cq_mul(&b.a1, 1.0, wv.as_slice(), &mut r[n..]);
+        model.l_vv(t1, &x.q1, wv, &mut b.lvv1);
+        w.saddle.assemble(&SaddleTerms {
+            top: &[(1.0, &b.lvv1)],
+            top_transposed: &[],
+            identity: 0.0,
+            right: &[(-1.0, &b.a1)],
+            bottom: &[(1.0, 1.0, &b.a1)],
+            corner: (0.0, 0.0),
+        });
+        if newton_update(s, Stage::Two)? {
+            let x = &s.work.vectors;
+            model.dl_dv(t1, &x.q1, &s.state.v, &mut s.state.p);
             return Ok(());
         }
     }
     Err(s.diverged())
 }
 
-/// Factors the stage matrix in `work.lu`, applies the Newton update to the stage's unknowns
-/// and says whether the iteration has converged.
-fn newton_update<M: LagrangeDirac>(
-    s: &mut Step<'_, M>,
-    r: &mut VecK<M>,
-    stage: Stage,
-) -> Result<bool, SimError>
+/// Factors the assembled stage matrix, applies the Newton update in `work.vectors.r` to the
+/// stage's unknowns and says whether the iteration has converged.
+fn newton_update<M: LagrangeDirac>(s: &mut Step<'_, M>, stage: Stage) -> Result<bool, SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let n = M::NQ;
+    let Sizes { nq: n, nc: m, .. } = s.work.sizes.typed::<M>();
     s.stats.factorizations += 1;
-    if let Err(singular) = s.work.lu.factor() {
+    if let Err(singular) = s.work.saddle.factor() {
         return Err(s.singular(singular.column));
     }
-    s.work.lu.solve(r);
+    let r = s.work.vectors.r.as_mut_slice();
+    s.work.saddle.solve(r);
     s.stats.newton_iterations += 1;
     let (x, mult) = match stage {
         Stage::One => (&mut s.work.v, &mut s.work.big_lambda),
@@ -201,15 +211,18 @@ where
     };
     let tolerance = s.options.tolerance;
     let mut converged = true;
+    let mut finite = true;
     for i in 0..n {
         x[i] -= r[i];
         converged &= r[i].abs() <= tolerance * (1.0 + x[i].abs());
+        finite &= r[i].is_finite();
     }
-    for j in 0..M::NC {
+    for j in 0..m {
         mult[j] -= r[n + j];
         converged &= r[n + j].abs() <= tolerance * (1.0 + mult[j].abs());
+        finite &= r[n + j].is_finite();
     }
-    if !r.iter().all(|x| x.is_finite()) {
+    if !finite {
         return Err(SimError::NonFinite {
             t: s.t,
             component: "a Newton update of the variational step".into(),

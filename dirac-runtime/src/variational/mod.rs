@@ -33,15 +33,18 @@ mod work;
 
 use nalgebra::DefaultAllocator;
 
-use self::general::general_step;
+use std::cell::RefCell;
+
+use self::general::{general_step, set_axpy};
 use self::separable::{Mass, separable_step};
 use self::work::{Step, Work};
 pub use self::work::{VariationalOptions, VariationalStats};
-use crate::dims::{MatQQ, Storage};
+use crate::algebra::Algebra;
+use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
 use crate::integrator::{Integrator, check_start};
 use crate::model::LagrangeDirac;
-use crate::projection::project;
+use crate::projection::Projector;
 use crate::state::State;
 
 /// The variational integrator for a model `M`, with fixed step `h`.
@@ -67,8 +70,11 @@ where
     /// The state at the start of the last step, for interpolation.
     previous: State<M>,
     work: Work<M>,
-    /// The factored constant mass matrix of a separable model, when the shortcut is on.
+    /// The factored constant mass matrix of a separable dense model, when the shortcut is on.
     mass: Option<Mass<M>>,
+    /// Puts interpolated samples back on the constraints.
+    projector: RefCell<Projector<M>>,
+    sizes: Sizes,
     stats: VariationalStats,
 }
 
@@ -85,6 +91,7 @@ where
             });
         }
         options.validate()?;
+        let sizes = model.sizes();
         Ok(Variational {
             model,
             h,
@@ -95,10 +102,12 @@ where
             taken: 0,
             total: 0,
             energy0: 0.0,
-            state: State::zeros(),
-            previous: State::zeros(),
-            work: Work::new(),
+            state: State::with_sizes(sizes),
+            previous: State::with_sizes(sizes),
+            work: Work::new(model),
             mass: None,
+            projector: RefCell::new(Projector::new(model)),
+            sizes,
             stats: VariationalStats::default(),
         })
     }
@@ -186,9 +195,9 @@ where
         self.stats = VariationalStats::default();
         self.mass = None;
         if M::SEPARABLE && self.options.use_structure {
-            let mut matrix = MatQQ::<M>::zeros();
-            self.model.l_vv(t0, &self.state.q, &self.state.v, &mut matrix);
-            self.mass = Mass::new(&matrix);
+            let lvv = &mut self.work.blocks.lvv0;
+            self.model.l_vv(t0, &self.state.q, &self.state.v, lvv);
+            self.mass = M::Algebra::dense_qq(lvv).and_then(|matrix| Mass::new(&self.sizes, matrix));
             self.model.dl_dq(t0, &self.state.q, &self.state.v, &mut self.work.dl_dq);
         }
         Ok(())
@@ -200,7 +209,6 @@ where
         let last = self.taken + 1 == self.total;
         let h = if last { self.t_end - self.t } else { self.h };
         self.previous.clone_from(&self.state);
-        self.work.a0.fill(0.0);
         self.model.constraint_matrix(&self.state.q, &mut self.work.a0);
         self.work.v.copy_from(&self.state.v);
         self.work.big_lambda.copy_from(&self.work.gamma);
@@ -217,17 +225,22 @@ where
             Some(mass) => separable_step(&mut step, mass)?,
             None => general_step(&mut step)?,
         }
-        let midpoint = &self.state.q + &self.work.v * (0.5 * h);
-        self.work.work -= h * self.model.dl_dt(self.t + 0.5 * h, &midpoint, &self.work.v);
-        self.state.q += &self.work.v * h;
+        let qm = &mut self.work.vectors.qm;
+        set_axpy::<M>(qm, &self.state.q, 0.5 * h, &self.work.v);
+        self.work.work -= h * self.model.dl_dt(self.t + 0.5 * h, qm, &self.work.v);
+        self.state.q.axpy(h, &self.work.v, 1.0);
         self.stats.steps += 1;
         self.taken += 1;
         self.t = if last { self.t_end } else { self.t0 + self.taken as f64 * self.h };
-        self.state.lambda.copy_from(&(&self.work.gamma * (2.0 / h)));
+        for (l, g) in self.state.lambda.iter_mut().zip(self.work.gamma.iter()) {
+            *l = g * (2.0 / h);
+        }
         let s = &self.state;
         // An index loop: the chained iterators of nalgebra cost more than the step itself.
-        if let Some(i) = (0..M::NQ).find(|&i| !(s.q[i].is_finite() && s.p[i].is_finite())) {
-            let names = M::coordinate_names();
+        if let Some(i) =
+            (0..self.sizes.typed::<M>().nq).find(|&i| !(s.q[i].is_finite() && s.p[i].is_finite()))
+        {
+            let names = self.model.coordinate_names();
             return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
         }
         if self.taken.is_multiple_of(16) || self.finished() {
@@ -260,8 +273,8 @@ where
         for (x, (a, b)) in parts {
             *x = a * (1.0 - s) + b * s;
         }
-        if M::NC > 0 {
-            project(self.model, &mut out.q, &mut out.v);
+        if self.sizes.nc > 0 {
+            self.projector.borrow_mut().project(self.model, &mut out.q, &mut out.v);
         }
         self.model.dl_dv(t, &out.q, &out.v, &mut out.p);
     }

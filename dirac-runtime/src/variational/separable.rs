@@ -1,16 +1,21 @@
 //! The separable path of a variational step, for `L = ½ vᵀ M v − V(q, t)` with a constant,
 //! nonsingular mass matrix and no forces: `M v = p_k + (h/2) ∂L/∂q(q_k) + A(q_k)ᵀ Λ`, so with
 //! `M` factored once, stage 1 is Newton on `Λ` alone (SHAKE) and stage 2 a linear system in
-//! `Γ` (RATTLE's velocity projection), both `m × m`.
+//! `Γ` (RATTLE's velocity projection), both `m × m`. Dense models only: it reads their blocks
+//! through [`Algebra::dense_cq`].
 
-use nalgebra::DefaultAllocator;
+use nalgebra::{DefaultAllocator, OMatrix};
 
-use super::general::{stage_one_constraint_jacobian, stage_one_constraints};
+use super::general::{set_axpy, stage_one_constraints};
 use super::work::Step;
-use crate::dims::{Dimensions, MatCQ, MatQQ, Storage, VecQ};
+use crate::algebra::Algebra;
+use crate::dims::{Dimensions, Sizes, Storage, VecQ};
 use crate::error::SimError;
 use crate::lu::Lu;
 use crate::model::LagrangeDirac;
+
+/// A dense `m × n` block.
+type Cq<M> = OMatrix<f64, <M as Dimensions>::Nc, <M as Dimensions>::Nq>;
 
 /// A constant, nonsingular mass matrix, ready to solve with: its inverse diagonal when it is
 /// diagonal (point masses), its LU factors otherwise.
@@ -27,14 +32,14 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// The mass matrix `matrix` ready to solve with, if it is nonsingular.
-    pub fn new(matrix: &MatQQ<M>) -> Option<Self> {
-        let n = M::NQ;
+    pub fn new(sizes: &Sizes, matrix: &OMatrix<f64, M::Nq, M::Nq>) -> Option<Self> {
+        let n = sizes.nq;
         let diagonal = (0..n).all(|i| (0..n).all(|j| i == j || matrix[(i, j)] == 0.0));
         if diagonal {
             let d = matrix.diagonal();
             return d.iter().all(|x| *x != 0.0 && x.is_finite()).then(|| Mass::Diagonal(d.map(|x| 1.0 / x)));
         }
-        let mut lu = Lu::<f64, M::Nq>::new();
+        let mut lu = Lu::<f64, M::Nq>::new(n);
         lu.matrix_mut().copy_from(matrix);
         lu.factor().ok().map(|()| Mass::Dense(lu))
     }
@@ -48,9 +53,9 @@ where
     }
 
     /// `M⁻¹ Aᵀ` for constraint rows `a`.
-    fn solve_transpose(&self, a: &MatCQ<M>) -> nalgebra::OMatrix<f64, M::Nq, M::Nc> {
+    fn solve_transpose(&self, a: &Cq<M>) -> OMatrix<f64, M::Nq, M::Nc> {
         let mut b = a.transpose();
-        for j in 0..M::NC {
+        for j in 0..b.ncols() {
             let mut column = b.column(j).into_owned();
             self.solve(&mut column);
             b.set_column(j, &column);
@@ -59,12 +64,20 @@ where
     }
 }
 
+/// A block of a dense model, which the separable path is only taken for.
+fn dense<M: LagrangeDirac>(b: &crate::model::MatCQ<M>) -> &Cq<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    M::Algebra::dense_cq(b).expect("the separable path is taken for dense models only")
+}
+
 /// Both stages on the separable path.
 pub(crate) fn separable_step<M: LagrangeDirac>(s: &mut Step<'_, M>, mass: &Mass<M>) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let (m, h) = (M::NC, s.h);
+    let (m, h) = (s.work.sizes.typed::<M>().nc, s.h);
     let t1 = s.t + h;
     let mut v_free = &s.state.p + &s.work.dl_dq * (0.5 * h);
     mass.solve(&mut v_free);
@@ -74,24 +87,23 @@ where
         shake(s, mass, &v_free)?;
     }
     let q1 = &s.state.q + &s.work.v * h;
-    let mut dl_dq1 = VecQ::<M>::zeros();
+    let mut dl_dq1 = s.work.sizes.zeros_q::<M>();
     s.model.dl_dq(t1, &q1, &s.work.v, &mut dl_dq1);
     // M v = p_k + (h/2) g_k + A_kᵀ Λ, so P(v) + (h/2) g_{k+1} needs no product with M.
-    let target =
-        &s.state.p + (&s.work.dl_dq + &dl_dq1) * (0.5 * h) + s.work.a0.transpose() * &s.work.big_lambda;
+    let a0 = dense::<M>(&s.work.a0);
+    let target = &s.state.p + (&s.work.dl_dq + &dl_dq1) * (0.5 * h) + a0.transpose() * &s.work.big_lambda;
     let mut w = target.clone();
     mass.solve(&mut w);
     if m == 0 {
         s.state.v.copy_from(&w);
         s.state.p.copy_from(&target);
     } else {
-        let mut a1 = MatCQ::<M>::zeros();
-        s.model.constraint_matrix(&q1, &mut a1);
+        s.model.constraint_matrix(&q1, &mut s.work.blocks.a1);
+        let a1 = dense::<M>(&s.work.blocks.a1).clone();
         let d = mass.solve_transpose(&a1);
-        s.work.small.matrix_mut().copy_from(&(&a1 * &d));
-        factor_small(s)?;
+        let small = factor_small(s, &(&a1 * &d))?;
         let mut gamma = -(&a1 * &w);
-        s.work.small.solve(&mut gamma);
+        small.solve(&mut gamma);
         s.work.gamma.copy_from(&gamma);
         s.state.v.copy_from(&(w + d * &gamma));
         s.state.p.copy_from(&(target + a1.transpose() * &gamma));
@@ -105,18 +117,29 @@ fn shake<M: LagrangeDirac>(s: &mut Step<'_, M>, mass: &Mass<M>, v_free: &VecQ<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    let h = s.h;
-    let b = mass.solve_transpose(&s.work.a0);
+    let (h, sizes) = (s.h, s.work.sizes.typed::<M>());
+    let b = mass.solve_transpose(dense::<M>(&s.work.a0));
     s.work.last_update = f64::INFINITY;
     for _ in 0..s.options.max_iterations {
         s.work.v.copy_from(&(v_free + &b * &s.work.big_lambda));
-        let q1 = &s.state.q + &s.work.v * h;
-        let qm = &s.state.q + &s.work.v * (0.5 * h);
-        let mut r = stage_one_constraints(s.model, h, &q1, &qm, &s.work.v);
-        let c = stage_one_constraint_jacobian(s.model, &q1, &qm, &s.work.v, h);
-        s.work.small.matrix_mut().copy_from(&(c * &b));
-        factor_small(s)?;
-        s.work.small.solve(&mut r);
+        let (w, model) = (&mut *s.work, s.model);
+        let x = &mut w.vectors;
+        set_axpy::<M>(&mut x.q1, &s.state.q, h, &w.v);
+        set_axpy::<M>(&mut x.qm, &s.state.q, 0.5 * h, &w.v);
+        model.constraint_matrix(&x.q1, &mut w.blocks.a1);
+        model.constraint_matrix(&x.qm, &mut w.blocks.am);
+        model.dav_dq(&x.qm, &w.v, &mut w.blocks.gm);
+        let mut r = sizes.zeros_c::<M>();
+        stage_one_constraints(model, &sizes, h, &x.q1, &mut x.phi, &w.blocks.am, &w.v, r.as_mut_slice());
+        // ∂/∂v of the constraints: A(q_{k+1}) in holonomic rows, A + (h/2) ∂(A v)/∂q at the
+        // midpoint in the others.
+        let (a1, am, gm) = (dense::<M>(&w.blocks.a1), dense::<M>(&w.blocks.am), dense::<M>(&w.blocks.gm));
+        let mut c = am + gm * (0.5 * h);
+        for j in 0..sizes.nh {
+            c.row_mut(j).copy_from(&a1.row(j));
+        }
+        let small = factor_small(s, &(c * &b))?;
+        small.solve(&mut r);
         s.work.big_lambda -= &r;
         s.stats.newton_iterations += 1;
         // Converged when the velocities stop moving: with a small mass a tiny impulse moves
@@ -134,14 +157,27 @@ where
     Err(s.diverged())
 }
 
-fn factor_small<M: LagrangeDirac>(s: &mut Step<'_, M>) -> Result<(), SimError>
+/// Factors the `m × m` matrix `matrix` in the work space's storage.
+fn factor_small<'s, M: LagrangeDirac>(
+    s: &'s mut Step<'_, M>,
+    matrix: &OMatrix<f64, M::Nc, M::Nc>,
+) -> Result<&'s Lu<f64, M::Nc>, SimError>
 where
     DefaultAllocator: Storage<M>,
 {
     s.stats.factorizations += 1;
-    s.work.small.factor().map_err(|e| SimError::SingularMatrix {
-        t: s.t,
-        h: s.h,
-        detail: format!("the constraint `{}` is dependent on the others", M::constraint_names()[e.column]),
-    })
+    let m = s.work.sizes.nc;
+    let small = s.work.small.get_or_insert_with(|| Lu::new(m));
+    small.matrix_mut().copy_from(matrix);
+    match small.factor() {
+        Ok(()) => Ok(small),
+        Err(e) => Err(SimError::SingularMatrix {
+            t: s.t,
+            h: s.h,
+            detail: format!(
+                "the constraint `{}` is dependent on the others",
+                s.model.constraint_names()[e.column]
+            ),
+        }),
+    }
 }

@@ -2,11 +2,13 @@
 
 use nalgebra::DefaultAllocator;
 
+use crate::algebra::Algebra;
 use crate::diagnose::singular_cause;
-use crate::dims::{MatCQ, Storage, VecC, VecQ};
+use crate::dims::{Sizes, Storage, VecC, VecH, VecK, VecQ};
 use crate::error::SimError;
 use crate::lu::Lu;
 use crate::model::LagrangeDirac;
+use crate::model::{MatCQ, MatQQ};
 use crate::newton::pivot_name;
 use crate::state::State;
 
@@ -72,6 +74,7 @@ pub(crate) struct Work<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
+    pub sizes: Sizes,
     /// The step velocity `v = (q_{k+1} − q_k)/h`.
     pub v: VecQ<M>,
     /// The stage-1 impulse Λ.
@@ -80,10 +83,14 @@ where
     pub gamma: VecC<M>,
     /// `A(q_k)`.
     pub a0: MatCQ<M>,
+    /// The blocks of the stage systems.
+    pub blocks: StageBlocks<M>,
+    /// The vectors of the stage systems.
+    pub vectors: StageVectors<M>,
     /// The `(n + m)` stage system.
-    pub lu: Lu<f64, M::Nk>,
-    /// The `m × m` systems of the separable path.
-    pub small: Lu<f64, M::Nc>,
+    pub saddle: <M::Algebra as Algebra<M>>::Saddle<f64>,
+    /// The `m × m` systems of the separable path, when it is taken.
+    pub small: Option<Lu<f64, M::Nc>>,
     /// The size of the last Newton update, for the stall test.
     pub last_update: f64,
     /// `∂L/∂q` at the current point (separable models: independent of `v`).
@@ -93,20 +100,85 @@ where
     pub work: f64,
 }
 
+/// The blocks a stage system is assembled from. Each is written by one model method only
+/// (`l_vv`, `l_vq`, `force_dq`, `force_dv`, `constraint_matrix`, `dav_dq`), so none needs
+/// zeroing between writes.
+pub(crate) struct StageBlocks<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// `L_vv` at the step's start and end.
+    pub lvv0: MatQQ<M>,
+    pub lvv1: MatQQ<M>,
+    /// `L_vq` at the step's start and end.
+    pub lvq0: MatQQ<M>,
+    pub lvq1: MatQQ<M>,
+    /// The force Jacobians at the midpoint.
+    pub fq: MatQQ<M>,
+    pub fv: MatQQ<M>,
+    /// `A` at the step's end and midpoint, and `∂(A v)/∂q` at the midpoint.
+    pub a1: MatCQ<M>,
+    pub am: MatCQ<M>,
+    pub gm: MatCQ<M>,
+}
+
+/// The vectors of a stage: end point and midpoint, the model's vectors there, the residual.
+pub(crate) struct StageVectors<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub q1: VecQ<M>,
+    pub qm: VecQ<M>,
+    pub lv0: VecQ<M>,
+    pub lv1: VecQ<M>,
+    pub lq: VecQ<M>,
+    pub f: VecQ<M>,
+    pub target: VecQ<M>,
+    pub phi: VecH<M>,
+    pub r: VecK<M>,
+}
+
 impl<M: LagrangeDirac> Work<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub fn new() -> Self {
+    pub fn new(model: &M) -> Self {
+        let (sizes, shape) = (model.sizes(), model.shape());
+        let qq = || M::Algebra::zeros_qq(&shape);
+        let cq = || M::Algebra::zeros_cq(&shape);
+        let q = || sizes.zeros_q::<M>();
         Work {
-            v: VecQ::<M>::zeros(),
-            big_lambda: VecC::<M>::zeros(),
-            gamma: VecC::<M>::zeros(),
-            a0: MatCQ::<M>::zeros(),
-            lu: Lu::new(),
-            small: Lu::new(),
+            sizes,
+            v: q(),
+            big_lambda: sizes.zeros_c::<M>(),
+            gamma: sizes.zeros_c::<M>(),
+            a0: cq(),
+            blocks: StageBlocks {
+                lvv0: qq(),
+                lvv1: qq(),
+                lvq0: qq(),
+                lvq1: qq(),
+                fq: qq(),
+                fv: qq(),
+                a1: cq(),
+                am: cq(),
+                gm: cq(),
+            },
+            vectors: StageVectors {
+                q1: q(),
+                qm: q(),
+                lv0: q(),
+                lv1: q(),
+                lq: q(),
+                f: q(),
+                target: q(),
+                phi: sizes.zeros_h::<M>(),
+                r: sizes.zeros_k::<M>(),
+            },
+            saddle: M::Algebra::saddle(&shape),
+            small: None,
             last_update: f64::INFINITY,
-            dl_dq: VecQ::<M>::zeros(),
+            dl_dq: q(),
             work: 0.0,
         }
     }
@@ -142,7 +214,7 @@ where
         SimError::SingularMatrix {
             t: self.t,
             h: self.h,
-            detail: format!("{}; {cause}", pivot_name::<M>(column)),
+            detail: format!("{}; {cause}", pivot_name(self.model, column)),
         }
     }
 }

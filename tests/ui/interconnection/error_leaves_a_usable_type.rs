@@ -29,5 +29,5 @@ fn main() {
     let state = State::<Chain>::zeros();
     let _ = state.q(Chain::left(Left::X1));
     let _ = Chain::LEFT_X2;
-    let _ = Chain::coordinate_names();
+    let _ = Chain::NAMES.coordinate_names();
 }
