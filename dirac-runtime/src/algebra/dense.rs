@@ -185,7 +185,7 @@ where
         self.lu.factor()
     }
 
-    fn solve(&self, x: &mut [T]) {
+    fn solve(&mut self, x: &mut [T]) {
         self.lu.solve_slice(x);
     }
 }

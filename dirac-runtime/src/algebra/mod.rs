@@ -18,12 +18,16 @@
 //! the structural nonzeros of models made of arrays and factors with a sparse LU whose
 //! ordering is computed once per model.
 
+mod condensed;
 mod dense;
+pub mod sparse;
 mod traits;
 
 use nalgebra::{DMatrix, DefaultAllocator};
 
+pub use self::condensed::SaddleCondensed;
 pub use self::dense::{Dense, DenseCondensed, DenseSaddle};
+pub use self::sparse::{Pattern, Sparse, SparseBlock, SparseSaddle, SparseShape};
 pub use self::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar};
 use crate::dims::{Dimensions, Storage};
 pub use crate::lu::Singular;

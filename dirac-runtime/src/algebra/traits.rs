@@ -9,7 +9,10 @@ use crate::dims::{Dimensions, Storage, VecY};
 use crate::lu::Singular;
 
 /// The scalars of linear systems: `f64`, and `Complex<f64>` for Radau's complex stage system.
-pub trait Scalar: ComplexField<RealField = f64> + Copy + Send + Sync + fmt::Debug + 'static {}
+pub trait Scalar:
+    ComplexField<RealField = f64> + faer::traits::ComplexField + Copy + Send + Sync + fmt::Debug + 'static
+{
+}
 
 impl Scalar for f64 {}
 impl Scalar for Complex<f64> {}
@@ -100,7 +103,7 @@ where
     /// first, then multipliers).
     fn factor(&mut self) -> Result<(), Singular>;
     /// Replaces `x` (`n + m` entries, velocities then multipliers) by the solution.
-    fn solve(&self, x: &mut [T]);
+    fn solve(&mut self, x: &mut [T]);
 }
 
 /// Solves the linear systems of a Newton iteration for one Jacobian and one pair of shifts:

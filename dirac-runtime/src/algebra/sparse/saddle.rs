@@ -1,0 +1,142 @@
+//! A saddle-point system of a sparse model: its pattern (the `n × n` entries with their
+//! transposes and the diagonal, the `m × n` entries below and transposed to the right, the
+//! corner's diagonal) built once, with the position of every block value in it, so that
+//! assembling is one pass over the blocks' values.
+
+use std::sync::Arc;
+
+use super::lu::SparseLu;
+use super::{Pattern, Sparse, SparseShape};
+use crate::algebra::traits::{Saddle, SaddleTerms, Scalar};
+use crate::dims::{Dimensions, Sizes, Storage};
+use crate::lu::Singular;
+use nalgebra::DefaultAllocator;
+
+/// A sparse saddle-point system with scalars `T`.
+pub struct SparseSaddle<T: Scalar> {
+    sizes: Sizes,
+    lu: SparseLu<T>,
+    /// Where each `n × n` value goes, and where its transpose goes.
+    qq_at: Vec<usize>,
+    qq_transposed_at: Vec<usize>,
+    /// Where each diagonal entry of the top-left block is.
+    diagonal_at: Vec<usize>,
+    /// The `m × n` pattern, and where each of its values goes below and to the right.
+    cq: Arc<Pattern>,
+    bottom_at: Vec<usize>,
+    right_at: Vec<usize>,
+    /// Where each diagonal entry of the corner is.
+    corner_at: Vec<usize>,
+}
+
+/// The compressed columns of the entries `(row, col)`: column starts and sorted, distinct rows.
+fn compress(k: usize, mut entries: Vec<(usize, usize)>) -> (Vec<usize>, Vec<usize>) {
+    entries.sort_unstable();
+    entries.dedup();
+    let mut col_ptr = vec![0; k + 1];
+    for &(c, _) in &entries {
+        col_ptr[c + 1] += 1;
+    }
+    for c in 0..k {
+        col_ptr[c + 1] += col_ptr[c];
+    }
+    (col_ptr, entries.into_iter().map(|(_, r)| r).collect())
+}
+
+impl<T: Scalar> SparseSaddle<T> {
+    /// The system of a model of this shape, with its column ordering.
+    pub fn new(shape: &SparseShape) -> Self {
+        let sizes = shape.sizes;
+        let (n, m, k) = (sizes.nq, sizes.nc, sizes.nk());
+        let (qq, cq) = (&*shape.qq, &*shape.cq);
+        // Entries as (column, row), to be sorted by column.
+        let mut entries = Vec::with_capacity(2 * qq.len() + 2 * cq.len() + k);
+        for (&i, &j) in qq.rows.iter().zip(&qq.cols) {
+            entries.push((j, i));
+            entries.push((i, j));
+        }
+        entries.extend((0..k).map(|i| (i, i)));
+        for (&r, &c) in cq.rows.iter().zip(&cq.cols) {
+            entries.push((c, n + r));
+            entries.push((n + r, c));
+        }
+        let (col_ptr, row_idx) = compress(k, entries);
+        let at = |row: usize, col: usize| -> usize {
+            let rows = &row_idx[col_ptr[col]..col_ptr[col + 1]];
+            col_ptr[col] + rows.binary_search(&row).expect("every entry is in the pattern")
+        };
+        let qq_at = qq.rows.iter().zip(&qq.cols).map(|(&i, &j)| at(i, j)).collect();
+        let qq_transposed_at = qq.rows.iter().zip(&qq.cols).map(|(&i, &j)| at(j, i)).collect();
+        let diagonal_at = (0..n).map(|i| at(i, i)).collect();
+        let bottom_at = cq.rows.iter().zip(&cq.cols).map(|(&r, &c)| at(n + r, c)).collect();
+        let right_at = cq.rows.iter().zip(&cq.cols).map(|(&r, &c)| at(c, n + r)).collect();
+        let corner_at = (0..m).map(|r| at(n + r, n + r)).collect();
+        SparseSaddle {
+            sizes,
+            lu: SparseLu::new(k, col_ptr, row_idx),
+            qq_at,
+            qq_transposed_at,
+            diagonal_at,
+            cq: Arc::clone(&shape.cq),
+            bottom_at,
+            right_at,
+            corner_at,
+        }
+    }
+
+    /// How many times the factorisation had to find pivots (once at the first factorisation;
+    /// again only when the reused ones had become too small).
+    pub fn pivotings(&self) -> usize {
+        self.lu.pivotings
+    }
+
+    /// The number of stored entries of the system.
+    pub fn nonzeros(&self) -> usize {
+        self.lu.row_idx().len()
+    }
+}
+
+impl<M: Dimensions, T: Scalar> Saddle<M, Sparse, T> for SparseSaddle<T>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn assemble(&mut self, terms: &SaddleTerms<'_, M, Sparse, T>) {
+        let v = &mut self.lu.values;
+        v.fill(T::zero());
+        for &(c, x) in terms.top {
+            for (&at, &value) in self.qq_at.iter().zip(&x.values) {
+                v[at] += c.scale(value);
+            }
+        }
+        for &(c, x) in terms.top_transposed {
+            for (&at, &value) in self.qq_transposed_at.iter().zip(&x.values) {
+                v[at] += c.scale(value);
+            }
+        }
+        for &at in &self.diagonal_at {
+            v[at] += terms.identity;
+        }
+        for &(c, b) in terms.right {
+            for (&at, &value) in self.right_at.iter().zip(&b.values) {
+                v[at] += c.scale(value);
+            }
+        }
+        let nh = self.sizes.nh;
+        for &(ch, co, b) in terms.bottom {
+            for ((&at, &value), &row) in self.bottom_at.iter().zip(&b.values).zip(&self.cq.rows) {
+                v[at] += (if row < nh { ch } else { co }).scale(value);
+            }
+        }
+        for (r, &at) in self.corner_at.iter().enumerate() {
+            v[at] = if r < nh { terms.corner.0 } else { terms.corner.1 };
+        }
+    }
+
+    fn factor(&mut self) -> Result<(), Singular> {
+        self.lu.factor()
+    }
+
+    fn solve(&mut self, x: &mut [T]) {
+        self.lu.solve(x);
+    }
+}
