@@ -239,11 +239,11 @@ impl Lowerer<'_> {
                 .error_spanned_by(field, "expected a subsystem member such as `left.x` or `outer.inner.x`");
             return None;
         };
-        if !self.scope.subsystems.contains(&path[0]) {
-            let hint = did_you_mean(&path[0], self.scope.subsystems.iter().map(String::as_str));
+        if !self.scope.subsystems.iter().any(|s| s == path_field(&path[0])) {
+            let hint = did_you_mean(path_field(&path[0]), self.scope.subsystems.iter().map(String::as_str));
             let message = format!(
                 "unknown subsystem `{}`{hint}\nthe subsystems of this interconnection are its non-`f64` fields: {}",
-                path[0],
+                path_field(&path[0]),
                 self.scope.subsystems.join(", ")
             );
             self.cx.error_spanned_by(&field.base, message);
@@ -333,10 +333,45 @@ pub fn member_path(expr: &Expr) -> Option<Vec<String>> {
             path.push(syn::ext::IdentExt::unraw(name).to_string());
             Some(path)
         }
+        Expr::Index(x) => {
+            let Expr::Path(base) = &*x.expr else {
+                return None;
+            };
+            let base = syn::ext::IdentExt::unraw(base.path.get_ident()?).to_string();
+            Some(vec![format!("{base}[{}]", element_index(&x.index)?)])
+        }
         Expr::Paren(p) => member_path(&p.expr),
         Expr::Group(g) => member_path(&g.expr),
         _ => None,
     }
+}
+
+/// The element of an array of subsystems that an index names, written canonically: `i`,
+/// `i+1`, `i-2` (the element index `i` of a row pattern), `3`, `last`, `last-1`.
+fn element_index(index: &Expr) -> Option<String> {
+    let name = |e: &Expr| match e {
+        Expr::Path(p) => p.path.get_ident().map(|i| i.to_string()).filter(|n| n == "i" || n == "last"),
+        _ => None,
+    };
+    let count = |e: &Expr| match e {
+        Expr::Lit(ExprLit { lit: Lit::Int(i), .. }) => i.base10_parse::<usize>().ok(),
+        _ => None,
+    };
+    match index {
+        Expr::Paren(p) => element_index(&p.expr),
+        Expr::Group(g) => element_index(&g.expr),
+        Expr::Binary(b) if matches!(b.op, BinOp::Add(_) | BinOp::Sub(_)) => {
+            let (base, k) = (name(&b.left)?, count(&b.right)?);
+            let sign = if matches!(b.op, BinOp::Add(_)) { "+" } else { "-" };
+            (base == "i" || sign == "-").then(|| format!("{base}{sign}{k}"))
+        }
+        other => name(other).or_else(|| count(other).map(|k| k.to_string())),
+    }
+}
+
+/// The field a member path's first segment names: `cells` for `cells[i+1]`.
+pub fn path_field(head: &str) -> &str {
+    head.split('[').next().unwrap_or(head)
 }
 
 fn integer(expr: &Expr) -> Option<i32> {

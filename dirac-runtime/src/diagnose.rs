@@ -13,7 +13,7 @@ use crate::model::LagrangeDirac;
 use crate::state::State;
 
 /// The most unknowns `n + m` for which failures are analysed with dense matrices.
-const DENSE_ANALYSIS: usize = 2000;
+pub(crate) const DENSE_ANALYSIS: usize = 2000;
 
 /// The singular value decomposition of `a` with a bounded number of iterations: `None` if it
 /// did not converge (it always does for finite input; the bound keeps NaN from looping).

@@ -16,9 +16,10 @@
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use crate::algebra::{Algebra, dense_cq, dense_qq};
-use crate::diagnose::{cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd};
+use crate::diagnose::{DENSE_ANALYSIS, cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd};
 use crate::dims::{Sizes, Storage, VecQ};
 use crate::error::SimError;
+use crate::init_saddle;
 use crate::model::{LagrangeDirac, check_parameters};
 use crate::state::State;
 
@@ -66,8 +67,13 @@ where
         let names = if j < n { model.coordinate_names() } else { model.velocity_names() };
         return Err(SimError::NonFinite { t, component: names[j % n].clone() });
     }
-    project_positions(model, t, &mut s.q, options)?;
-    project_velocities(model, t, &s.q, &mut s.v, options)?;
+    if sizes.nq + sizes.nc > DENSE_ANALYSIS {
+        init_saddle::project_positions(model, t, &mut s.q, options)?;
+        init_saddle::project_velocities(model, t, &s.q, &mut s.v, options)?;
+    } else {
+        project_positions(model, t, &mut s.q, options)?;
+        project_velocities(model, t, &s.q, &mut s.v, options)?;
+    }
     model.dl_dv(t, &s.q, &s.v, &mut s.p);
     non_finite_entry(model, t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
     s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v)?.as_slice());
@@ -201,20 +207,18 @@ where
     Ok(())
 }
 
-/// The blocks of the multipliers' system at `(t, q, v)`, each checked to be finite.
-struct Blocks {
-    top: DVector<f64>,
-    bottom: DVector<f64>,
-    lvv: DMatrix<f64>,
-    a: DMatrix<f64>,
-}
-
-fn blocks<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> Result<Blocks, SimError>
+/// The right-hand sides of the multipliers' system at `(t, q, v)`: the momentum balance
+/// without constraint forces and the differentiated constraints, each checked to be finite.
+fn rates<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+) -> Result<(Vec<f64>, Vec<f64>), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
     let (sizes, shape) = (model.sizes(), model.shape());
-    let Sizes { nq: n, nc: m, .. } = sizes;
     let (mut dl_dq, mut force, mut lvt) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
     model.dl_dq(t, q, v, &mut dl_dq);
     non_finite_entry(model, t, "∂L/∂q", dl_dq.as_slice(), true)?;
@@ -222,28 +226,19 @@ where
     non_finite_entry(model, t, "the force", force.as_slice(), true)?;
     model.l_vt(t, q, v, &mut lvt);
     non_finite_entry(model, t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
-    let (mut lvv, mut lvq) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_qq(&shape));
-    model.l_vv(t, q, v, &mut lvv);
-    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
+    let mut lvq = M::Algebra::zeros_qq(&shape);
     model.l_vq(t, q, v, &mut lvq);
     non_finite_qq(model, t, "L_vq", &lvq)?;
-    let (mut a, mut g) = (M::Algebra::zeros_cq(&shape), M::Algebra::zeros_cq(&shape));
-    model.constraint_matrix(q, &mut a);
-    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    let mut g = M::Algebra::zeros_cq(&shape);
     model.dav_dq(q, v, &mut g);
     non_finite_entry(model, t, "∂(A v)/∂q", M::Algebra::cq_values(&g), false)?;
     let mut top = dl_dq + force - lvt;
     M::Algebra::qq_mul(&lvq, -1.0, v.as_slice(), top.as_mut_slice());
     non_finite_entry(model, t, "the momentum balance", top.as_slice(), true)?;
-    let mut bottom = DVector::zeros(m);
-    M::Algebra::cq_mul(&g, -1.0, v.as_slice(), bottom.as_mut_slice());
-    non_finite_entry(model, t, "the constraint accelerations", bottom.as_slice(), false)?;
-    Ok(Blocks {
-        top: DVector::from_column_slice(top.as_slice()),
-        bottom,
-        lvv: dense_qq::<M, M::Algebra>(&lvv, n),
-        a: dense_cq::<M, M::Algebra>(&a, m, n),
-    })
+    let mut bottom = vec![0.0; sizes.nc];
+    M::Algebra::cq_mul(&g, -1.0, v.as_slice(), &mut bottom);
+    non_finite_entry(model, t, "the constraint accelerations", &bottom, false)?;
+    Ok((top.as_slice().to_vec(), bottom))
 }
 
 /// λ from the differentiated constraints, with the accelerations as by-product.
@@ -257,15 +252,52 @@ where
     DefaultAllocator: Storage<M>,
 {
     let Sizes { nq: n, nc: m, .. } = model.sizes();
-    let b = blocks(model, t, q, v)?;
+    let (top, bottom) = rates(model, t, q, v)?;
+    let shape = model.shape();
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
+    model.l_vv(t, q, v, &mut lvv);
+    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
+    model.constraint_matrix(q, &mut a);
+    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    let lambda = if n + m > DENSE_ANALYSIS {
+        DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)
+    } else {
+        dense_multipliers(
+            model,
+            t,
+            &dense_qq::<M, M::Algebra>(&lvv, n),
+            &dense_cq::<M, M::Algebra>(&a, m, n),
+            (&top, &bottom),
+        )?
+    };
+    if let Some(j) = lambda.iter().position(|x| !x.is_finite()) {
+        let component = format!("multiplier `{}`", model.constraint_names()[j]);
+        return Err(SimError::NonFinite { t, component });
+    }
+    Ok(lambda)
+}
+
+/// λ from the dense saddle-point system, by a singular value decomposition that names the
+/// cause when it is singular.
+fn dense_multipliers<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    lvv: &DMatrix<f64>,
+    a: &DMatrix<f64>,
+    (top, bottom): (&[f64], &[f64]),
+) -> Result<DVector<f64>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (n, m) = (lvv.nrows(), a.nrows());
     let mut kkt = DMatrix::zeros(n + m, n + m);
-    kkt.view_mut((0, 0), (n, n)).copy_from(&b.lvv);
-    kkt.view_mut((0, n), (n, m)).copy_from(&(-b.a.transpose()));
-    kkt.view_mut((n, 0), (m, n)).copy_from(&b.a);
+    kkt.view_mut((0, 0), (n, n)).copy_from(lvv);
+    kkt.view_mut((0, n), (n, m)).copy_from(&(-a.transpose()));
+    kkt.view_mut((n, 0), (m, n)).copy_from(a);
     let mut rhs = DVector::zeros(n + m);
-    rhs.rows_mut(0, n).copy_from(&b.top);
-    rhs.rows_mut(n, m).copy_from(&b.bottom);
-    let singular = || SimError::NotDetermined { t, cause: cause_of(model, &b.lvv, &b.a) };
+    rhs.rows_mut(0, n).copy_from_slice(top);
+    rhs.rows_mut(n, m).copy_from_slice(bottom);
+    let singular = || SimError::NotDetermined { t, cause: cause_of(model, lvv, a) };
     let Some(svd) = svd(&kkt) else {
         return Err(singular());
     };
@@ -275,10 +307,5 @@ where
         return Err(singular());
     }
     let x = svd.solve(&rhs, 0.0).expect("SVD with both factors computed");
-    let lambda = x.rows(n, m).into_owned();
-    if let Some(j) = lambda.iter().position(|x| !x.is_finite()) {
-        let component = format!("multiplier `{}`", model.constraint_names()[j]);
-        return Err(SimError::NonFinite { t, component });
-    }
-    Ok(lambda)
+    Ok(x.rows(n, m).into_owned())
 }

@@ -5,6 +5,9 @@
 
 /// How models store their matrices and solve their linear systems: dense or sparse.
 pub mod algebra;
+/// Where the parts of composites made of arrays sit, for generated code.
+#[doc(hidden)]
+pub mod arrays;
 /// Moving subsystem parts in and out of composites, for generated code.
 #[doc(hidden)]
 pub mod assemble;
@@ -22,6 +25,7 @@ pub mod error;
 pub mod flat;
 /// Consistent initial states.
 pub mod init;
+mod init_saddle;
 /// The driver every integrator shares, with `solve` written once.
 pub mod integrator;
 /// Typed names of coordinates and constraints.
@@ -65,7 +69,7 @@ pub use keys::{Constraint, Coordinate};
 pub use layout::{Layout, Slot};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
-pub use radau::{Radau, RadauOptions, RadauStats};
+pub use radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
 pub use solution::{Sampling, Solution};
 pub use sparse::SparseJacobian;
 pub use state::State;
@@ -80,7 +84,8 @@ pub use nalgebra;
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::algebra::{Algebra, Dense};
+    pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
+    pub use crate::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
     pub use crate::assemble::{
         Slot, gather_c, gather_q, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
@@ -93,7 +98,7 @@ pub mod __private {
     pub use crate::sparse::SparseJacobian;
     pub use crate::stack::{STACK_LIMIT, stack_bytes};
     pub use crate::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
-    pub use nalgebra::{Const, DefaultAllocator};
+    pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;
 
     /// A constant of the user's code, where generated code reads it: its type must be `f64`.

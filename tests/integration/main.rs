@@ -12,6 +12,7 @@ mod hygiene;
 mod initial;
 mod interconnection;
 mod jacobians;
+mod ladder;
 mod linkage;
 mod named_access;
 mod paper;

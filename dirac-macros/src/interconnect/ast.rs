@@ -25,10 +25,38 @@ pub struct Composite<'a> {
     pub incomplete: bool,
 }
 
-/// A field holding a subsystem.
+/// A field holding a subsystem, or an array of them.
 pub struct SubsystemField {
     pub ident: Ident,
+    /// The subsystem's type: the element type of an array.
     pub ty: Type,
+    /// Whether the field is an array of subsystems (`Vec<Cell>` or `[Cell; N]`).
+    pub array: bool,
+}
+
+impl Composite<'_> {
+    /// Whether a field is an array of subsystems: such a composite is sized when it runs.
+    pub fn has_arrays(&self) -> bool {
+        self.subsystems.iter().any(|s| s.array)
+    }
+}
+
+/// The element type of `Vec<T>` or `[T; N]`.
+fn element_type(ty: &Type) -> Option<&Type> {
+    match ty {
+        Type::Array(a) => Some(&a.elem),
+        Type::Path(p) if p.qself.is_none() => {
+            let last = p.path.segments.last()?;
+            let syn::PathArguments::AngleBracketed(args) = &last.arguments else {
+                return None;
+            };
+            match (last.ident == "Vec", args.args.first(), args.args.len()) {
+                (true, Some(syn::GenericArgument::Type(t)), 1) => Some(t),
+                _ => None,
+            }
+        }
+        _ => None,
+    }
 }
 
 /// A subsystem member named by a dotted path: `left.x2`, `chain.right.x3`.
@@ -103,6 +131,18 @@ impl<'a> Composite<'a> {
             let ident = field.ident.clone().expect("named fields have names");
             if is_f64(&field.ty) {
                 self.params.push(ident);
+            } else if let Some(elem) = element_type(&field.ty) {
+                if let Some(name) = never_a_model(elem).or_else(|| is_f64(elem).then(|| "f64".to_owned())) {
+                    cx.error_spanned_by(
+                        elem,
+                        format!(
+                            "`{name}` is not a model: an array field of an interconnection holds subsystems \
+                             (types that derive `LagrangeDirac` or `Interconnection`)"
+                        ),
+                    );
+                } else {
+                    self.subsystems.push(SubsystemField { ident, ty: elem.clone(), array: true });
+                }
             } else if let Some(name) = never_a_model(&field.ty) {
                 cx.error_spanned_by(
                     &field.ty,
@@ -112,7 +152,7 @@ impl<'a> Composite<'a> {
                     ),
                 );
             } else {
-                self.subsystems.push(SubsystemField { ident, ty: field.ty.clone() });
+                self.subsystems.push(SubsystemField { ident, ty: field.ty.clone(), array: false });
             }
         }
         if self.subsystems.is_empty() {
@@ -197,6 +237,10 @@ fn parse_member(input: ParseStream) -> syn::Result<MemberPath> {
     let expr: Expr = input.parse()?;
     match member_path(&expr) {
         Some(path) if path.len() >= 2 => Ok(MemberPath { path, expr }),
-        _ => Err(syn::Error::new_spanned(&expr, "expected a subsystem's port, such as `left.x2`")),
+        _ => Err(syn::Error::new_spanned(
+            &expr,
+            "expected a subsystem's port, such as `left.x2`, or an array element's, such as `cells[i + 1].left` \
+             (an element is `i`, `i + k`, `i - k`, an integer `k`, `last` or `last - k`)",
+        )),
     }
 }

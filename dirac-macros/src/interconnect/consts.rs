@@ -114,8 +114,8 @@ impl CompositeModel {
         let mut out = TokenStream::new();
         let mut oks = Vec::new();
         for (k, (r, _)) in self.symbols.members().enumerate() {
-            let field =
-                composite.subsystems.iter().position(|s| s.ident == r.path[0]).expect("checked field");
+            let head = crate::lower::path_field(&r.path[0]);
+            let field = composite.subsystems.iter().position(|s| s.ident == head).expect("checked field");
             let ty = &composite.subsystems[field].ty;
             let q_offset = format_ident!("__Q{}", field);
             let rest = &r.path[1..];

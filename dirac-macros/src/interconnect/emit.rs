@@ -37,6 +37,26 @@ impl Own<'_> {
     /// `let rK = …;` for every subsystem member the assignments read, then the statements;
     /// a member that is a velocity reads `v` when the method has velocities (`has_v`).
     pub fn body(&self, assigns: &[Assign], has_v: bool) -> TokenStream {
+        let index = |k: usize| {
+            let r = r_ident(k);
+            quote! { #r.index }
+        };
+        let multiplier = |j: usize| {
+            let j = lit(j);
+            quote! { lambda[__OMEGA + #j] }
+        };
+        self.body_at(assigns, has_v, &index, &multiplier)
+    }
+
+    /// [`body`](Self::body) with member `k` at coordinate `index(k)` and row `j`'s multiplier
+    /// at `multiplier(j)`.
+    pub fn body_at(
+        &self,
+        assigns: &[Assign],
+        has_v: bool,
+        index: &dyn Fn(usize) -> TokenStream,
+        multiplier: &dyn Fn(usize) -> TokenStream,
+    ) -> TokenStream {
         let m = self.model;
         let mut used = vec![false; m.members()];
         for a in assigns {
@@ -48,13 +68,13 @@ impl Own<'_> {
         }
         let mut preamble = TokenStream::new();
         for (k, _) in used.iter().enumerate().filter(|(_, u)| **u) {
-            let (r, local) = (r_ident(k), format_ident!("r{}", k));
+            let (r, local, at) = (r_ident(k), format_ident!("r{}", k), index(k));
             let velocity = if has_v {
-                quote! { v[#r.index] }
+                quote! { v[#at] }
             } else {
                 quote! { 0.0 }
             };
-            preamble.extend(quote! { let #local = if #r.velocity { #velocity } else { q[#r.index] }; });
+            preamble.extend(quote! { let #local = if #r.velocity { #velocity } else { q[#at] }; });
         }
         let leaf = |s: u32| match m.kind(s) {
             Sym::Parameter(i) => {
@@ -65,10 +85,7 @@ impl Own<'_> {
                 let local = format_ident!("r{}", k);
                 quote! { #local }
             }
-            Sym::Multiplier(j) => {
-                let j = lit(j);
-                quote! { lambda[__OMEGA + #j] }
-            }
+            Sym::Multiplier(j) => multiplier(j),
             Sym::Constant(k) => {
                 let tokens = m.symbols.constant_at(k).1;
                 // Typed where the user wrote it: a constant that is not an `f64` is an error

@@ -46,7 +46,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
 }
 
 /// The name of a symbol of the interconnection rows, for people.
-fn display_name(model: &CompositeModel, s: u32, style: Style) -> String {
+pub(super) fn display_name(model: &CompositeModel, s: u32, style: Style) -> String {
     match model.kind(s) {
         Sym::Parameter(i) => model.params[i].to_string(),
         Sym::Member(k) => {

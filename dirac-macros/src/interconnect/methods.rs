@@ -13,7 +13,7 @@ use crate::codegen::signatures::{
 };
 
 /// `Ωᵀμ` scattered with the subsystems' port efforts: the one method composites add.
-const INTERCONNECTION_FORCES: Signature =
+pub(super) const INTERCONNECTION_FORCES: Signature =
     Signature { name: "interconnection_forces", args: &[Arg::Q, Arg::Lambda], out: Out::VecQ };
 
 /// Every method of the composite's impl.

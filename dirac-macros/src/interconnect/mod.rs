@@ -12,6 +12,7 @@ mod blocks;
 mod consts;
 mod emit;
 mod items;
+mod large;
 mod methods;
 mod model;
 
@@ -42,7 +43,11 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     match (cx.into_compile_errors(), built) {
         (None, Some((mut model, linearity))) => {
             let blocks = CompositeBlocks::derive(&mut model);
-            implementation(&composite, &model, &blocks, linearity)
+            if composite.has_arrays() {
+                large::implementation(&composite, &model, &blocks, linearity)
+            } else {
+                implementation(&composite, &model, &blocks, linearity)
+            }
         }
         // A generic composite has been reported; an impl for it would only add errors.
         (errors, _) if !input.generics.params.is_empty() => quote! { #errors },

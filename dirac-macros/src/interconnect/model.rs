@@ -10,7 +10,7 @@ use syn::ext::IdentExt;
 
 use super::ast::{Composite, MemberPath};
 use crate::ctxt::Ctxt;
-use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
+use crate::lower::{Context, Lowerer, Role, Scope, additive_terms, path_field};
 use crate::suggest::did_you_mean;
 use crate::sym::{Graph, Id};
 use crate::symbol::TIME;
@@ -72,6 +72,9 @@ impl CompositeModel {
             cm.mu.push(id);
         }
         check_row_names(cx, &cm.rows);
+        if !cx.has_errors() {
+            cm.check_elements(cx, composite);
+        }
         (!cx.has_errors()).then_some(cm)
     }
 
@@ -80,14 +83,15 @@ impl CompositeModel {
         let mut seen: HashSet<(String, String)> = HashSet::new();
         for (i, c) in composite.connections.iter().enumerate() {
             let known = |m: &MemberPath| {
-                let ok = fields.contains(&m.path[0]);
+                let field = path_field(&m.path[0]);
+                let ok = fields.iter().any(|f| f == field);
                 if !ok {
-                    let hint = did_you_mean(&m.path[0], fields.iter().map(String::as_str));
+                    let hint = did_you_mean(field, fields.iter().map(String::as_str));
                     cx.error_spanned_by(
                         &m.expr,
                         format!(
                             "unknown subsystem `{}`{hint}\nthe subsystems are: {}",
-                            m.path[0],
+                            field,
                             fields.join(", ")
                         ),
                     );
@@ -151,6 +155,28 @@ impl CompositeModel {
             let omega = self.graph.add(&ids);
             let key = c.name.clone().unwrap_or_else(|| c.key.clone());
             self.rows.push(Row { name, key, omega, terms });
+        }
+    }
+
+    /// An array field is named by an element (`cells[i]`), any other field without one.
+    fn check_elements(&self, cx: &Ctxt, composite: &Composite<'_>) {
+        for (member, _) in self.symbols.members() {
+            let head = &member.path[0];
+            let field = path_field(head);
+            let Some(sub) = composite.subsystems.iter().find(|s| s.ident.unraw() == field) else {
+                continue;
+            };
+            let indexed = head.contains('[');
+            if sub.array && !indexed {
+                let message = format!(
+                    "`{field}` is an array of subsystems; name one element, as `{field}[i].{}` for every element \
+                     `i`, `{field}[0]` or `{field}[last]`",
+                    member.path[1..].join(".")
+                );
+                cx.error_spanned_by(&member.tokens, message);
+            } else if !sub.array && indexed {
+                cx.error_spanned_by(&member.tokens, format!("`{field}` is one subsystem, not an array"));
+            }
         }
     }
 

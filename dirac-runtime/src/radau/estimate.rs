@@ -66,7 +66,7 @@ where
         zero_algebraic::<M>(&layout, &mut self.e);
         self.e += &self.f2;
         step.solver.solve(&mut self.e);
-        let mut err = norm::<M>(&self.e, step.weights).max(1e-10);
+        let mut err = norm::<M>(&self.e, step.weights, step.error_norm).max(1e-10);
         if err >= 1.0 && refine {
             self.tmp.copy_from(step.y);
             self.tmp += &self.e;
@@ -79,7 +79,7 @@ where
             }
             self.e += &self.f2;
             step.solver.solve(&mut self.e);
-            err = norm::<M>(&self.e, step.weights).max(1e-10);
+            err = norm::<M>(&self.e, step.weights, step.error_norm).max(1e-10);
         }
         if err.is_finite() { err } else { 1e10 }
     }

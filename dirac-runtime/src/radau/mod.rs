@@ -22,7 +22,7 @@ use self::controller::Controller;
 use self::dense::Dense;
 use self::estimate::Estimator;
 use self::options::Tolerances;
-pub use self::options::{RadauOptions, RadauStats};
+pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
 use self::stages::{Outcome, Stages, Step};
 use self::tableau::{Eigen, eigen};
 use crate::algebra::Algebra;
@@ -240,14 +240,16 @@ where
         let dense = if self.controller.first() { None } else { Some(&self.dense) };
         self.stages.initial_guess(dense, self.h);
         let Radau { model, solver, t, h, y, weights, stats, stages, eig, tolerances, options, .. } = self;
-        let step = Step { model: *model, solver, t: *t, h: *h, y, weights, stats };
+        let step =
+            Step { model: *model, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
         stages.iterate(step, eig, tolerances.fnewt, options.max_newton_iterations)
     }
 
     fn estimate(&mut self) -> f64 {
         let refine = self.controller.cautious();
-        let Radau { model, solver, t, h, y, weights, stats, stages, estimator, f0, .. } = self;
-        let step = Step { model: *model, solver, t: *t, h: *h, y, weights, stats };
+        let Radau { model, solver, t, h, y, weights, stats, stages, estimator, f0, options, .. } = self;
+        let step =
+            Step { model: *model, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
         estimator.error(step, &stages.z, f0, refine)
     }
 

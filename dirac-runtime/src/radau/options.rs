@@ -30,6 +30,22 @@ pub struct RadauOptions {
     /// the positions are moved back onto `φ(q) = 0` and the velocities onto `A(q) v = 0`, each
     /// by the smallest correction, and the momenta follow from the Legendre map.
     pub projection: bool,
+    /// How the error estimate's components are combined (default [`ErrorNorm::Rms`]).
+    pub error_norm: ErrorNorm,
+}
+
+/// How Radau combines the scaled error of every component into the one number it keeps
+/// below 1.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ErrorNorm {
+    /// The root mean square, as in Hairer and Wanner's RADAU5: smooth, and the usual choice.
+    /// In a large model where only a few components move (a wave on a long line), the mean
+    /// dilutes their error by the square root of the share that moves.
+    #[default]
+    Rms,
+    /// The largest component: every component is held to the tolerance, whatever the size of
+    /// the model. Costs more steps where the error is spread evenly.
+    Max,
 }
 
 impl Default for RadauOptions {
@@ -42,6 +58,7 @@ impl Default for RadauOptions {
             max_steps: 1_000_000,
             max_newton_iterations: 7,
             projection: false,
+            error_norm: ErrorNorm::Rms,
         }
     }
 }
@@ -166,10 +183,13 @@ where
 }
 
 /// The weighted root-mean-square norm `√(Σ (x_i / w_i)² / len)`.
-pub(crate) fn norm<M: LagrangeDirac>(x: &VecY<M>, weights: &VecY<M>) -> f64
+pub(crate) fn norm<M: LagrangeDirac>(x: &VecY<M>, weights: &VecY<M>, kind: ErrorNorm) -> f64
 where
     DefaultAllocator: Storage<M>,
 {
-    let sum: f64 = x.iter().zip(weights.iter()).map(|(a, s)| (a / s) * (a / s)).sum();
-    (sum / x.len() as f64).sqrt()
+    let scaled = x.iter().zip(weights.iter()).map(|(a, s)| a / s);
+    match kind {
+        ErrorNorm::Rms => (scaled.map(|e| e * e).sum::<f64>() / x.len() as f64).sqrt(),
+        ErrorNorm::Max => scaled.fold(0.0, |m, e| if e.abs() > m || e.is_nan() { e.abs() } else { m }),
+    }
 }

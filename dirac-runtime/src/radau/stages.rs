@@ -5,7 +5,7 @@
 use nalgebra::DefaultAllocator;
 
 use super::dense::Dense;
-use super::options::{RadauStats, norm};
+use super::options::{ErrorNorm, RadauStats, norm};
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
 use crate::dims::{Sizes, Storage, VecY};
 use crate::layout::Layout;
@@ -31,6 +31,7 @@ where
     pub h: f64,
     pub y: &'a VecY<M>,
     pub weights: &'a VecY<M>,
+    pub error_norm: ErrorNorm,
     pub stats: &'a mut RadauStats,
 }
 
@@ -120,7 +121,8 @@ where
             step.solver.solve_complex(r2, r3);
             step.stats.newton_iterations += 1;
             let dyno = {
-                let sum: f64 = self.r.iter().map(|rk| norm::<M>(rk, step.weights).powi(2)).sum();
+                let sum: f64 =
+                    self.r.iter().map(|rk| norm::<M>(rk, step.weights, step.error_norm).powi(2)).sum();
                 (sum / 3.0).sqrt()
             };
             if newt >= 1 {

@@ -1,0 +1,286 @@
+//! The methods of a composite with arrays: a loop over every field's subsystems that gathers
+//! their arguments, calls their method and writes the result in place, then a loop over each
+//! own row pattern's instances.
+
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+use super::{Large, lit};
+use crate::codegen::signatures::{
+    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, JACOBIAN_BLOCKS, Out, REQUIRED, RESIDUAL_BLOCKS, Signature, rt,
+};
+use crate::interconnect::emit::r_ident;
+use crate::interconnect::methods::INTERCONNECTION_FORCES;
+use crate::sym::emit::Assign;
+
+/// Which own entries a method writes.
+#[derive(Clone, Copy)]
+enum Entries {
+    /// `A(q)`: the coefficients of velocities.
+    A,
+    /// `∂(A v)/∂q`: the coefficients of coordinates.
+    Dav,
+    /// `∂(Aᵀλ)/∂q`.
+    Datl,
+    /// The rows' values `Ω`.
+    Values,
+    /// The forces `Ωᵀμ`.
+    Forces,
+}
+
+impl Large<'_> {
+    /// Every method of the `LagrangeDirac` impl.
+    pub(super) fn methods(&self) -> TokenStream {
+        let mut out: TokenStream =
+            REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| self.method(sig)).collect();
+        out.extend(self.non_finite_parameter());
+        out
+    }
+
+    fn method(&self, sig: &Signature) -> TokenStream {
+        let header = sig.header(|_| true, true);
+        let members: TokenStream =
+            (0..self.composite.subsystems.len()).map(|f| self.member_part(sig, f)).collect();
+        if sig.out == Out::Scalar {
+            return quote! {
+                #[allow(unused_variables)]
+                #header {
+                    let __pl = self.__placement();
+                    let mut total = 0.0;
+                    #members
+                    total
+                }
+            };
+        }
+        let own = self.own_part(sig);
+        quote! {
+            #[allow(unused_variables)]
+            #header {
+                let __pl = self.__placement();
+                #members
+                #own
+            }
+        }
+    }
+
+    /// Field `f`'s part of a method: for each of its subsystems, the arguments gathered, the
+    /// method called, the result written in place.
+    fn member_part(&self, sig: &Signature, f: usize) -> TokenStream {
+        let p = rt();
+        let s = &self.composite.subsystems[f];
+        let (field, ty, fl) = (&s.ident, &s.ty, lit(f));
+        let count = self.count(f);
+        let sub = if s.array {
+            quote! { &self.#field[__e] }
+        } else {
+            quote! { &self.#field }
+        };
+        let name = format_ident!("{}", sig.name);
+        let args: Vec<TokenStream> = sig
+            .args
+            .iter()
+            .map(|arg| match arg {
+                Arg::T => quote! { t },
+                Arg::Q => quote! { &#p::gather_q::<#ty, Self>(q, &__s) },
+                Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &__s) },
+                Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &__s) },
+                Arg::Y => unreachable!("composites assemble their flat methods from the blocks"),
+            })
+            .collect();
+        let qq_at = quote! { __pl.qq_at(#fl, __e) };
+        let cq_at = quote! { __pl.cq_at(#fl, __e) };
+        let put = |from: TokenStream, to: TokenStream, at: &TokenStream| {
+            quote! { #p::put(&mut #to.values, #at, #from.as_slice()); }
+        };
+        let (zeros, written) = match sig.out {
+            Out::Scalar => {
+                let body = quote! { total += __sub.#name(#(#args),*); };
+                return self.over_members(f, &sub, &count, &body);
+            }
+            Out::VecQ => {
+                (quote! { #p::VecQ::<#ty>::zeros() }, quote! { #p::scatter_q::<#ty, Self>(&o, &__s, out); })
+            }
+            Out::VecH => {
+                (quote! { #p::VecH::<#ty>::zeros() }, quote! { #p::scatter_h::<#ty, Self>(&o, &__s, out); })
+            }
+            Out::MatQQ => (quote! { #p::MatQQ::<#ty>::zeros() }, put(quote! { o }, quote! { out }, &qq_at)),
+            Out::MatCQ => (quote! { #p::MatCQ::<#ty>::zeros() }, put(quote! { o }, quote! { out }, &cq_at)),
+            Out::ResidualBlocks => (
+                quote! { #p::ResidualBlocks::<#ty>::zeros() },
+                quote! {
+                    #p::scatter_q::<#ty, Self>(&o.momentum_rate, &__s, &mut out.momentum_rate);
+                    #p::scatter_q::<#ty, Self>(&o.dl_dv, &__s, &mut out.dl_dv);
+                    #p::scatter_c::<#ty, Self>(&o.constraint_velocity, &__s, &mut out.constraint_velocity);
+                },
+            ),
+            Out::JacobianBlocks => {
+                let mut w = TokenStream::new();
+                for (block, at) in [
+                    ("dpdot_dq", &qq_at),
+                    ("dpdot_dv", &qq_at),
+                    ("l_vq", &qq_at),
+                    ("l_vv", &qq_at),
+                    ("a", &cq_at),
+                    ("dav_dq", &cq_at),
+                ] {
+                    let b = format_ident!("{}", block);
+                    w.extend(put(quote! { o.#b }, quote! { out.#b }, at));
+                }
+                (quote! { #p::JacobianBlocks::<#ty>::zeros() }, w)
+            }
+            Out::VecY | Out::MatYY | Out::Values => unreachable!("not a block written by subsystems"),
+        };
+        let body = quote! {
+            let mut o = #zeros;
+            __sub.#name(#(#args,)* &mut o);
+            #written
+        };
+        self.over_members(f, &sub, &count, &body)
+    }
+
+    fn over_members(
+        &self,
+        f: usize,
+        sub: &TokenStream,
+        count: &TokenStream,
+        body: &TokenStream,
+    ) -> TokenStream {
+        let fl = lit(f);
+        quote! {
+            for __e in 0..#count {
+                let __s = __pl.slot(#fl, __e);
+                let __sub = #sub;
+                #body
+            }
+        }
+    }
+
+    /// The composite's own part of a method: a loop over each row pattern's instances.
+    fn own_part(&self, sig: &Signature) -> TokenStream {
+        let name = sig.name;
+        let (entries, has_v): (Vec<(Entries, TokenStream)>, bool) = match name {
+            _ if name == CONSTRAINT_MATRIX.name => (vec![(Entries::A, quote! { out })], false),
+            _ if name == DAV_DQ.name => (vec![(Entries::Dav, quote! { out })], true),
+            _ if name == DATL_DQ.name => (vec![(Entries::Datl, quote! { out })], false),
+            _ if name == RESIDUAL_BLOCKS.name => (
+                vec![
+                    (Entries::Values, quote! { out.constraint_velocity }),
+                    (Entries::Forces, quote! { out.momentum_rate }),
+                ],
+                true,
+            ),
+            _ if name == JACOBIAN_BLOCKS.name => (
+                vec![
+                    (Entries::A, quote! { out.a }),
+                    (Entries::Dav, quote! { out.dav_dq }),
+                    (Entries::Datl, quote! { out.dpdot_dq }),
+                ],
+                true,
+            ),
+            _ if name == INTERCONNECTION_FORCES.name => (vec![(Entries::Forces, quote! { out })], false),
+            _ => return TokenStream::new(),
+        };
+        (0..self.rows.len())
+            .map(|j| {
+                let assigns: Vec<Assign> =
+                    entries.iter().flat_map(|(what, target)| self.assigns(j, *what, target)).collect();
+                let index = |k: usize| {
+                    let g = format_ident!("__g{}", k);
+                    quote! { #g }
+                };
+                let multiplier = |_: usize| quote! { lambda[__row] };
+                let body = self.own.body_at(&assigns, has_v, &index, &multiplier);
+                self.instances(j, &body)
+            })
+            .collect()
+    }
+
+    /// Row `j`'s assignments of one kind into `target`.
+    fn assigns(&self, j: usize, what: Entries, target: &TokenStream) -> Vec<Assign> {
+        let (b, row) = (self.own.blocks, &self.rows[j]);
+        let jl = lit(j);
+        let guarded = |guard: TokenStream, target: TokenStream, value| Assign {
+            target,
+            value,
+            guard: Some(guard),
+            accumulate: false,
+        };
+        match what {
+            Entries::A | Entries::Dav => row
+                .cq
+                .iter()
+                .enumerate()
+                .map(|(e, &k)| {
+                    let r = r_ident(k);
+                    let guard = if matches!(what, Entries::A) {
+                        quote! { #r.velocity }
+                    } else {
+                        quote! { !#r.velocity }
+                    };
+                    let at = quote! { #target.values[__pl.own_cq_at(#jl, __n) + #e] };
+                    guarded(guard, at, b.d[j][k])
+                })
+                .collect(),
+            Entries::Datl => row
+                .qq
+                .iter()
+                .enumerate()
+                .map(|(e, &(k, l))| {
+                    let (rk, rl) = (r_ident(k), r_ident(l));
+                    let at = quote! { #target.values[__pl.own_qq_at(#jl, __n) + #e] };
+                    guarded(quote! { #rk.velocity && !#rl.velocity }, at, b.mu_h[j][k][l])
+                })
+                .collect(),
+            Entries::Values => vec![Assign::set(quote! { #target[__row] }, self.own.model.rows[j].omega)],
+            Entries::Forces => row
+                .cq
+                .iter()
+                .map(|&k| {
+                    let (r, g) = (r_ident(k), format_ident!("__g{}", k));
+                    Assign::add_if(quote! { #r.velocity }, quote! { #target[#g] }, b.mu_d[j][k])
+                })
+                .collect(),
+        }
+    }
+
+    /// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's,
+    /// named by their paths (`cells[3].c`).
+    fn non_finite_parameter(&self) -> TokenStream {
+        let own = self.composite.params.iter().map(|field| {
+            let name = syn::ext::IdentExt::unraw(field).to_string();
+            quote! {
+                if !self.#field.is_finite() {
+                    return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
+                }
+            }
+        });
+        let fields = self.composite.subsystems.iter().map(|s| {
+            let field = &s.ident;
+            let name = syn::ext::IdentExt::unraw(field).to_string();
+            let (sub, prefix) = if s.array {
+                (quote! { self.#field[__e] }, quote! { ::std::format!("{}[{}].", #name, __e) })
+            } else {
+                (quote! { self.#field }, quote! { ::std::format!("{}.", #name) })
+            };
+            let count = if s.array {
+                quote! { self.#field.len() }
+            } else {
+                quote! { 1 }
+            };
+            quote! {
+                for __e in 0..#count {
+                    if let ::core::option::Option::Some((name, value)) = #sub.non_finite_parameter() {
+                        return ::core::option::Option::Some((#prefix + &name, value));
+                    }
+                }
+            }
+        });
+        quote! {
+            fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+                #(#own)*
+                #(#fields)*
+                ::core::option::Option::None
+            }
+        }
+    }
+}

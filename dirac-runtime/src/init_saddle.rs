@@ -1,0 +1,188 @@
+//! The projections and multipliers of a consistent start for large models, through the
+//! model's own saddle-point solver (sparse for models made of arrays): the same problems as
+//! the dense path in [`init`](crate::init), whose singular value decompositions cost `(n + m)³`.
+//!
+//! 1. `φ(q) = 0` by Gauss-Newton with the minimal-norm correction `Δq = A_hᵀ y`,
+//!    `[I A_hᵀ; A_h 0] [Δq; y] = [0; φ]`;
+//! 2. `A(q) v = 0` with the least change in the kinetic-energy norm,
+//!    `[L_vv + εI Aᵀ; A 0] [Δv; y] = [0; −A v]`;
+//! 3. the multipliers, `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av)/∂q v]`.
+
+use nalgebra::DefaultAllocator;
+
+use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
+use crate::diagnose::{non_finite_entry, singular_cause};
+use crate::dims::{Sizes, Storage, VecQ};
+use crate::error::SimError;
+use crate::init::Consistency;
+use crate::lu::Singular;
+use crate::model::LagrangeDirac;
+
+type SaddleOf<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Saddle<f64>;
+
+/// Why a consistency system is singular: the unknown without a pivot, and what the model's
+/// structure says.
+fn not_determined<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>, s: Singular) -> SimError
+where
+    DefaultAllocator: Storage<M>,
+{
+    let n = model.sizes().nq;
+    let unknown = if s.column < n {
+        format!("velocity `{}`", model.velocity_names()[s.column])
+    } else {
+        format!("the multiplier of `{}`", model.constraint_names()[s.column - n])
+    };
+    SimError::NotDetermined {
+        t,
+        cause: format!("nothing determines {unknown}; {}", singular_cause(model, t, q, v)),
+    }
+}
+
+/// Projects `q` onto `φ(q) = 0`.
+pub(crate) fn project_positions<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &mut VecQ<M>,
+    options: Consistency,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let Sizes { nq: n, nc: m, nh: h } = sizes;
+    if h == 0 {
+        return Ok(());
+    }
+    let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
+    let (mut phi, mut a) = (sizes.zeros_h::<M>(), M::Algebra::zeros_cq(&shape));
+    let mut x = vec![0.0; n + m];
+    for iteration in 0..=options.max_iterations {
+        model.holonomic(q, &mut phi);
+        non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)?;
+        model.constraint_matrix(q, &mut a);
+        non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+        if phi.amax() <= options.tolerance * amax(M::Algebra::cq_values(&a)) * (1.0 + q.amax()) {
+            return Ok(());
+        }
+        if iteration == options.max_iterations {
+            let j = phi.iamax();
+            return Err(SimError::InconsistentInitialState {
+                equation: format!("holonomic constraint `{}`", model.constraint_names()[j]),
+                residual: phi[j].abs(),
+                iterations: options.max_iterations,
+            });
+        }
+        saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+            top: &[],
+            top_transposed: &[],
+            identity: 1.0,
+            right: &[(1.0, &a)],
+            bottom: &[(1.0, 0.0, &a)],
+            corner: (0.0, 1.0),
+        });
+        let zero_v = sizes.zeros_q::<M>();
+        saddle.factor().map_err(|s| not_determined(model, t, q, &zero_v, s))?;
+        x.fill(0.0);
+        x[n..n + h].copy_from_slice(phi.as_slice());
+        saddle.solve(&mut x);
+        for i in 0..n {
+            q[i] -= x[i];
+        }
+        non_finite_entry(model, t, "a coordinate while projecting onto the constraints", q.as_slice(), true)?;
+    }
+    unreachable!("the last iteration returns")
+}
+
+/// Projects `v` onto `A(q) v = 0`.
+pub(crate) fn project_velocities<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &mut VecQ<M>,
+    options: Consistency,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let Sizes { nq: n, nc: m, .. } = sizes;
+    if m == 0 {
+        return Ok(());
+    }
+    let mut a = M::Algebra::zeros_cq(&shape);
+    model.constraint_matrix(q, &mut a);
+    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    let mut av = vec![0.0; m];
+    M::Algebra::cq_mul(&a, 1.0, v.as_slice(), &mut av);
+    let size_a = amax(M::Algebra::cq_values(&a));
+    if amax(&av) <= options.tolerance * size_a * (1.0 + v.amax()) {
+        return Ok(());
+    }
+    let mut lvv = M::Algebra::zeros_qq(&shape);
+    model.l_vv(t, q, v, &mut lvv);
+    non_finite_entry(model, t, "the mass matrix L_vv", M::Algebra::qq_values(&lvv), false)?;
+    let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
+    saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+        top: &[(1.0, &lvv)],
+        top_transposed: &[],
+        // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
+        identity: 1e-10 * amax(M::Algebra::qq_values(&lvv)).max(1.0),
+        right: &[(1.0, &a)],
+        bottom: &[(1.0, 1.0, &a)],
+        corner: (0.0, 0.0),
+    });
+    saddle.factor().map_err(|s| not_determined(model, t, q, v, s))?;
+    let mut x = vec![0.0; n + m];
+    for (xr, avr) in x[n..].iter_mut().zip(&av) {
+        *xr = -avr;
+    }
+    saddle.solve(&mut x);
+    for i in 0..n {
+        v[i] += x[i];
+    }
+    av.fill(0.0);
+    M::Algebra::cq_mul(&a, 1.0, v.as_slice(), &mut av);
+    let limit = 1e3 * options.tolerance * size_a * (1.0 + v.amax());
+    let j = (0..m).fold(0, |b, j| if av[j].is_nan() || av[j].abs() > av[b].abs() { j } else { b });
+    if av[j].is_nan() || av[j].abs() > limit {
+        return Err(SimError::InconsistentInitialState {
+            equation: format!("velocity constraint `{}`", model.constraint_names()[j]),
+            residual: av[j].abs(),
+            iterations: 1,
+        });
+    }
+    Ok(())
+}
+
+/// The multipliers at a consistent `(t, q, v)`, from the momentum balance and the
+/// differentiated constraints with right-hand sides `top` and `bottom`.
+pub(crate) fn multipliers<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    (q, v): (&VecQ<M>, &VecQ<M>),
+    (top, bottom): (&[f64], &[f64]),
+) -> Result<Vec<f64>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let Sizes { nq: n, nc: m, .. } = sizes;
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
+    model.l_vv(t, q, v, &mut lvv);
+    model.constraint_matrix(q, &mut a);
+    let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
+    saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+        top: &[(1.0, &lvv)],
+        top_transposed: &[],
+        identity: 0.0,
+        right: &[(-1.0, &a)],
+        bottom: &[(1.0, 1.0, &a)],
+        corner: (0.0, 0.0),
+    });
+    saddle.factor().map_err(|s| not_determined(model, t, q, v, s))?;
+    let mut x = Vec::with_capacity(n + m);
+    x.extend_from_slice(top);
+    x.extend_from_slice(bottom);
+    saddle.solve(&mut x);
+    Ok(x.split_off(n))
+}
