@@ -130,3 +130,18 @@ fn variational_steps_do_not_allocate() {
         "interconnected chain"
     );
 }
+
+/// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
+/// sparse LU, under both integrators.
+#[test]
+fn steps_of_models_made_of_arrays_do_not_allocate() {
+    let ladder = unit_ladder(200);
+    let x: Vec<f64> = (0..200).map(|j| (-((j as f64 - 60.0) / 5.0).powi(2)).exp()).collect();
+    let s = ladder_at_rest(&ladder, &x);
+    assert_eq!(allocations_in_steps(&ladder, &s, 100.0), 0, "Radau, ladder");
+    assert_eq!(
+        allocations_in_variational_steps(&ladder, &s, VariationalOptions::default()),
+        0,
+        "variational, ladder"
+    );
+}

@@ -402,3 +402,48 @@ pub fn four_bar_start(model: &FourBar) -> State<FourBar> {
     let v = VecQ::<FourBar>::new(2.0, 0.0, 0.0);
     consistent_state(model, 0.0, &q, &v, Consistency::default()).expect("a consistent start")
 }
+
+/// One section of the ladder: a series inductor from the previous node (`a`) to this node
+/// (`b`), and a capacitor from this node to ground. Coordinates are node fluxes, so their
+/// velocities are node voltages.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(a => va, b => vb), port(a, b))]
+#[dirac(lagrangian = 0.5 * c * vb * vb - (b - a) * (b - a) / (2.0 * l))]
+pub struct Cell {
+    pub l: f64,
+    pub c: f64,
+}
+
+/// The ground node: its flux held at zero.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(g => vg), port(g))]
+#[dirac(lagrangian = 0.0 * vg)]
+#[dirac(holonomic(grounded) = g)]
+pub struct Ground {}
+
+/// `cells.len()` sections between ground and an open end.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(ground.g, cells[0].a), connect(cells[i].b, cells[i + 1].a))]
+pub struct Ladder {
+    pub ground: Ground,
+    pub cells: Vec<Cell>,
+}
+
+/// A ladder of `n` unit cells.
+pub fn unit_ladder(n: usize) -> Ladder {
+    Ladder { ground: Ground {}, cells: vec![Cell { l: 1.0, c: 1.0 }; n] }
+}
+
+/// The ladder's consistent state with node fluxes `x` (cell by cell) at rest.
+pub fn ladder_at_rest(ladder: &Ladder, x: &[f64]) -> State<Ladder> {
+    let sizes = ladder.sizes();
+    let mut q = sizes.zeros_q::<Ladder>();
+    for (j, &xj) in x.iter().enumerate() {
+        q[ladder.cells(j, Cell::B).index()] = xj;
+        if j + 1 < x.len() {
+            q[ladder.cells(j + 1, Cell::A).index()] = xj;
+        }
+    }
+    let v = sizes.zeros_q::<Ladder>();
+    consistent_state(ladder, 0.0, &q, &v, Consistency::default()).expect("a consistent start")
+}

@@ -70,7 +70,7 @@ where
         if err >= 1.0 && refine {
             self.tmp.copy_from(step.y);
             self.tmp += &self.e;
-            step.model.residual(step.t, &self.tmp, &mut self.e);
+            step.residual.eval(step.model, step.t, &self.tmp, &mut self.e);
             step.stats.residual_evaluations += 1;
             // As above: measure the algebraic rows from the state's own remainder.
             let Layout { v, p, lambda, len, .. } = layout;

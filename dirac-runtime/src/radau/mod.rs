@@ -30,6 +30,7 @@ use crate::blocks::JacobianBlocks;
 use crate::diagnose::{describe_slot, singular_cause};
 use crate::dims::{Storage, VecY};
 use crate::error::SimError;
+use crate::flat::Residual;
 use crate::integrator::{Integrator, check_start};
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
@@ -60,6 +61,8 @@ where
     /// `f(t, y)`.
     f0: VecY<M>,
     weights: VecY<M>,
+    /// Evaluates the flat residual without allocating.
+    residual: Residual<M>,
     stages: Stages<M>,
     estimator: Estimator<M>,
     dense: Dense<M>,
@@ -117,6 +120,7 @@ where
             state: State::with_sizes(sizes),
             f0: sizes.zeros_y::<M>(),
             weights: sizes.zeros_y::<M>(),
+            residual: Residual::new(&sizes),
             stages: Stages::new(sizes),
             estimator: Estimator::new(sizes),
             dense: Dense::new(sizes),
@@ -239,17 +243,39 @@ where
     fn newton(&mut self) -> Outcome {
         let dense = if self.controller.first() { None } else { Some(&self.dense) };
         self.stages.initial_guess(dense, self.h);
-        let Radau { model, solver, t, h, y, weights, stats, stages, eig, tolerances, options, .. } = self;
-        let step =
-            Step { model: *model, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
+        let Radau {
+            model, residual, solver, t, h, y, weights, stats, stages, eig, tolerances, options, ..
+        } = self;
+        let step = Step {
+            model: *model,
+            residual,
+            solver,
+            t: *t,
+            h: *h,
+            y,
+            weights,
+            error_norm: options.error_norm,
+            stats,
+        };
         stages.iterate(step, eig, tolerances.fnewt, options.max_newton_iterations)
     }
 
     fn estimate(&mut self) -> f64 {
         let refine = self.controller.cautious();
-        let Radau { model, solver, t, h, y, weights, stats, stages, estimator, f0, options, .. } = self;
-        let step =
-            Step { model: *model, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
+        let Radau {
+            model, residual, solver, t, h, y, weights, stats, stages, estimator, f0, options, ..
+        } = self;
+        let step = Step {
+            model: *model,
+            residual,
+            solver,
+            t: *t,
+            h: *h,
+            y,
+            weights,
+            error_norm: options.error_norm,
+            stats,
+        };
         estimator.error(step, &stages.z, f0, refine)
     }
 
@@ -267,7 +293,7 @@ where
         }
         self.t += h;
         self.stats.steps += 1;
-        self.model.residual(self.t, &self.y, &mut self.f0);
+        self.residual.eval(self.model, self.t, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         self.check_finite(self.t)?;
         let h_new = self.controller.next_step(h, quot, self.options.max_step);
@@ -327,7 +353,7 @@ where
         self.need_jac = true;
         self.need_factor = true;
         self.stats = RadauStats::default();
-        self.model.residual(t0, &self.y, &mut self.f0);
+        self.residual.eval(self.model, t0, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
             let component = format!("the equation of {}", describe_slot(self.model, i));

@@ -8,6 +8,7 @@ use super::dense::Dense;
 use super::options::{ErrorNorm, RadauStats, norm};
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
 use crate::dims::{Sizes, Storage, VecY};
+use crate::flat::Residual;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
@@ -26,6 +27,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     pub model: &'a M,
+    pub residual: &'a mut Residual<M>,
     pub solver: &'a mut S,
     pub t: f64,
     pub h: f64,
@@ -166,7 +168,7 @@ where
         for ((zk, fk), ck) in self.z.iter().zip(self.f.iter_mut()).zip([C1, C2, C3]) {
             self.tmp.copy_from(step.y);
             self.tmp += zk;
-            step.model.residual(step.t + ck * step.h, &self.tmp, fk);
+            step.residual.eval(step.model, step.t + ck * step.h, &self.tmp, fk);
             step.stats.residual_evaluations += 1;
             if !fk.iter().all(|x| x.is_finite()) {
                 return Some("non-finite residual");
