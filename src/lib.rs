@@ -65,6 +65,14 @@ pub use dirac_runtime::{
 /// and code that uses its matrices need no second, possibly different, version of it.
 pub use dirac_runtime::nalgebra;
 
+/// How models store their matrices and solve their linear systems: [`algebra::Dense`] for
+/// models of fixed size, [`algebra::Sparse`] for models made of arrays of subsystems.
+pub use dirac_runtime::algebra;
+
+/// Many simulations of one model on all cores (parameter sweeps, Monte Carlo), and sweeps
+/// larger than one machine split into independent jobs.
+pub use dirac_runtime::ensemble;
+
 /// Everything a model file needs: `use dirac::prelude::*;`.
 ///
 /// It includes the bound generic code over any model needs, so a helper over every model

@@ -19,6 +19,8 @@ pub mod diagnose;
 pub mod dims;
 /// Dirac structures as objects, with products, interconnection and membership.
 pub mod dirac_structure;
+/// Many simulations of one model on all cores, and sweeps split into jobs.
+pub mod ensemble;
 /// The typed errors of a simulation.
 pub mod error;
 /// The flat DAE assembled from a model's blocks.

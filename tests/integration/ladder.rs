@@ -103,5 +103,41 @@ fn large_models_keep_their_matrices_off_the_stack() {
     let radau = Radau::new(&ladder, RadauOptions::default()).expect("valid options");
     assert_eq!(std::mem::size_of_val(&radau), small);
     assert!(small < 16 * 1024, "a Radau integrator of a ladder takes {small} bytes of stack");
-    let _ = Ground {};
+}
+
+/// A ladder shorted at both ends: `cells[last]` names the last element, `[Cell; 6]` a fixed
+/// length.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(near.g, cells[0].a), connect(cells[i].b, cells[i + 1].a), connect(cells[last].b, far.g))]
+struct Shorted {
+    near: Ground,
+    cells: [Cell; 6],
+    far: Ground,
+}
+
+#[test]
+fn elements_counted_from_the_end_and_arrays_of_fixed_length() {
+    let shorted =
+        Shorted { near: Ground {}, cells: std::array::from_fn(|_| Cell { l: 1.0, c: 1.0 }), far: Ground {} };
+    let names = shorted.constraint_names();
+    assert_eq!(names.last().map(String::as_str), Some("connect2"));
+    assert_eq!(names[names.len() - 2], "connect1[4]");
+    let sizes = shorted.sizes();
+    assert_eq!((sizes.nq, sizes.nh, sizes.nc), (14, 2, 2 + 1 + 5 + 1));
+    // Node 3 displaced: the far node stays grounded, and energy is kept.
+    let mut q = sizes.zeros_q::<Shorted>();
+    q[shorted.cells(2, Cell::B).index()] = 0.5;
+    q[shorted.cells(3, Cell::A).index()] = 0.5;
+    let start = consistent_state(&shorted, 0.0, &q, &sizes.zeros_q::<Shorted>(), Consistency::default())
+        .expect("a consistent start");
+    let sol = Radau::new(&shorted, RadauOptions::tolerances(1e-10, 1e-10))
+        .expect("valid options")
+        .solve(0.0, &start, 20.0, &Sampling::Every(1.0))
+        .expect("integrates");
+    let last_node = sol.q(shorted.cells(5, Cell::B));
+    assert!(last_node.iter().all(|x| x.abs() < 1e-9), "{last_node:?}");
+    let e0 = sol.energy()[0];
+    assert!(sol.energy().iter().all(|e| (e - e0).abs() < 1e-7 * e0), "energy {:?}", sol.energy());
+    // The node next to it moves.
+    assert!(sol.q(shorted.cells(4, Cell::B)).iter().any(|x| x.abs() > 1e-3));
 }

@@ -302,3 +302,45 @@ pub fn implementation(
         };
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use quote::quote;
+
+    fn expand(input: proc_macro2::TokenStream) -> String {
+        let input: syn::DeriveInput = syn::parse2(input).expect("test input parses");
+        crate::interconnect::derive(&input).to_string()
+    }
+
+    #[test]
+    fn expansion_does_not_depend_on_the_length() {
+        let short = expand(quote! {
+            #[dirac(connect(ground.g, cells[0].a), connect(cells[i].b, cells[i + 1].a))]
+            pub struct Ladder { pub ground: Ground, pub cells: [Cell; 10] }
+        });
+        let long = expand(quote! {
+            #[dirac(connect(ground.g, cells[0].a), connect(cells[i].b, cells[i + 1].a))]
+            pub struct Ladder { pub ground: Ground, pub cells: [Cell; 100000] }
+        });
+        let run_time = expand(quote! {
+            #[dirac(connect(ground.g, cells[0].a), connect(cells[i].b, cells[i + 1].a))]
+            pub struct Ladder { pub ground: Ground, pub cells: Vec<Cell> }
+        });
+        assert!(!short.contains("compile_error"), "{short}");
+        assert_eq!(short, long);
+        assert_eq!(short, run_time);
+        assert!(short.len() < 60_000, "{} bytes", short.len());
+    }
+
+    #[test]
+    fn indices_name_elements() {
+        use super::Element;
+        assert_eq!(Element::parse("wall"), Element::Whole);
+        assert_eq!(Element::parse("cells[i]"), Element::Relative(0));
+        assert_eq!(Element::parse("cells[i+2]"), Element::Relative(2));
+        assert_eq!(Element::parse("cells[i-1]"), Element::Relative(-1));
+        assert_eq!(Element::parse("cells[3]"), Element::At(3));
+        assert_eq!(Element::parse("cells[last]"), Element::Last(0));
+        assert_eq!(Element::parse("cells[last-1]"), Element::Last(1));
+    }
+}
