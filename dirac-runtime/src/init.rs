@@ -68,8 +68,8 @@ where
         return Err(SimError::NonFinite { t, component: names[j % n].clone() });
     }
     if sizes.nq + sizes.nc > DENSE_ANALYSIS {
-        init_saddle::project_positions(model, t, &mut s.q, options)?;
-        init_saddle::project_velocities(model, t, &s.q, &mut s.v, options)?;
+        init_saddle::project_positions(model, t, &mut s.q, (options.tolerance, options.max_iterations))?;
+        init_saddle::project_velocities(model, t, &s.q, &mut s.v, options.tolerance)?;
     } else {
         project_positions(model, t, &mut s.q, options)?;
         project_velocities(model, t, &s.q, &mut s.v, options)?;

@@ -14,7 +14,6 @@ use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
 use crate::diagnose::{non_finite_entry, singular_cause};
 use crate::dims::{Sizes, Storage, VecQ};
 use crate::error::SimError;
-use crate::init::Consistency;
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 
@@ -43,7 +42,7 @@ pub(crate) fn project_positions<M: LagrangeDirac>(
     model: &M,
     t: f64,
     q: &mut VecQ<M>,
-    options: Consistency,
+    (tolerance, max_iterations): (f64, usize),
 ) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
@@ -56,20 +55,20 @@ where
     let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
     let (mut phi, mut a) = (sizes.zeros_h::<M>(), M::Algebra::zeros_cq(&shape));
     let mut x = vec![0.0; n + m];
-    for iteration in 0..=options.max_iterations {
+    for iteration in 0..=max_iterations {
         model.holonomic(q, &mut phi);
         non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)?;
         model.constraint_matrix(q, &mut a);
         non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
-        if phi.amax() <= options.tolerance * amax(M::Algebra::cq_values(&a)) * (1.0 + q.amax()) {
+        if phi.amax() <= tolerance * amax(M::Algebra::cq_values(&a)) * (1.0 + q.amax()) {
             return Ok(());
         }
-        if iteration == options.max_iterations {
+        if iteration == max_iterations {
             let j = phi.iamax();
             return Err(SimError::InconsistentInitialState {
                 equation: format!("holonomic constraint `{}`", model.constraint_names()[j]),
                 residual: phi[j].abs(),
-                iterations: options.max_iterations,
+                iterations: max_iterations,
             });
         }
         saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
@@ -99,7 +98,7 @@ pub(crate) fn project_velocities<M: LagrangeDirac>(
     t: f64,
     q: &VecQ<M>,
     v: &mut VecQ<M>,
-    options: Consistency,
+    tolerance: f64,
 ) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
@@ -115,7 +114,7 @@ where
     let mut av = vec![0.0; m];
     M::Algebra::cq_mul(&a, 1.0, v.as_slice(), &mut av);
     let size_a = amax(M::Algebra::cq_values(&a));
-    if amax(&av) <= options.tolerance * size_a * (1.0 + v.amax()) {
+    if amax(&av) <= tolerance * size_a * (1.0 + v.amax()) {
         return Ok(());
     }
     let mut lvv = M::Algebra::zeros_qq(&shape);
@@ -142,7 +141,7 @@ where
     }
     av.fill(0.0);
     M::Algebra::cq_mul(&a, 1.0, v.as_slice(), &mut av);
-    let limit = 1e3 * options.tolerance * size_a * (1.0 + v.amax());
+    let limit = 1e3 * tolerance * size_a * (1.0 + v.amax());
     let j = (0..m).fold(0, |b, j| if av[j].is_nan() || av[j].abs() > av[b].abs() { j } else { b });
     if av[j].is_nan() || av[j].abs() > limit {
         return Err(SimError::InconsistentInitialState {

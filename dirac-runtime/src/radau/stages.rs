@@ -6,9 +6,9 @@ use nalgebra::DefaultAllocator;
 
 use super::dense::Dense;
 use super::options::{ErrorNorm, RadauStats, norm};
+use super::residual::Residual;
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
 use crate::dims::{Sizes, Storage, VecY};
-use crate::flat::Residual;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
