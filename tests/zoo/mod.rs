@@ -447,3 +447,46 @@ pub fn ladder_at_rest(ladder: &Ladder, x: &[f64]) -> State<Ladder> {
     let v = sizes.zeros_q::<Ladder>();
     consistent_state(ladder, 0.0, &q, &v, Consistency::default()).expect("a consistent start")
 }
+
+/// The ladder's node fluxes `x_1 … x_N` (`x_0 = 0` is ground) obey `C ẍ = −(1/L) T x` with
+/// `T` tridiagonal (2 on the diagonal, 1 in the last row for the open end, −1 beside it).
+/// `T` has the eigenpairs `λ_k = 4 sin²(θ_k / 2)`, `u_k(j) = sin(j θ_k)` with
+/// `θ_k = (2k − 1)π / (2N + 1)`; each is checked here against `T` itself before it is used.
+/// Returns `x(t)` for `x(0) = x0`, `ẋ(0) = 0`.
+pub fn modal_solution(x0: &[f64], l: f64, c: f64, t: f64) -> Vec<f64> {
+    let n = x0.len();
+    let mut x = vec![0.0; n];
+    let mut u = vec![0.0; n];
+    for k in 1..=n {
+        let theta = (2 * k - 1) as f64 * std::f64::consts::PI / (2 * n + 1) as f64;
+        let lambda = 4.0 * (theta / 2.0).sin().powi(2);
+        for (j, uj) in u.iter_mut().enumerate() {
+            *uj = ((j + 1) as f64 * theta).sin();
+        }
+        for j in 0..n {
+            let left = if j == 0 { 0.0 } else { u[j - 1] };
+            let (diagonal, right) = if j + 1 == n { (1.0, 0.0) } else { (2.0, u[j + 1]) };
+            let tu = diagonal * u[j] - left - right;
+            // sin(j θ) is evaluated to about j θ ε.
+            assert!(
+                (tu - lambda * u[j]).abs() < 1e-14 * n as f64 + 1e-12,
+                "mode {k} is not an eigenvector of T"
+            );
+        }
+        let norm: f64 = u.iter().map(|v| v * v).sum();
+        let coefficient = u.iter().zip(x0).map(|(a, b)| a * b).sum::<f64>() / norm;
+        let omega = (lambda / (l * c)).sqrt();
+        let factor = coefficient * (omega * t).cos();
+        for (xj, uj) in x.iter_mut().zip(&u) {
+            *xj += factor * uj;
+        }
+    }
+    x
+}
+
+/// A smooth pulse of node fluxes, five nodes wide, centred a third of the way down a ladder
+/// of `n` nodes: it splits into two waves that travel one node per unit time.
+pub fn pulse(n: usize) -> Vec<f64> {
+    let (centre, width) = (n as f64 / 3.0, 5.0);
+    (1..=n).map(|j| (-((j as f64 - centre) / width).powi(2)).exp()).collect()
+}
