@@ -54,7 +54,7 @@ where
     }
     let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
     let (mut phi, mut a) = (sizes.zeros_h::<M>(), M::Algebra::zeros_cq(&shape));
-    let mut x = vec![0.0; n + m];
+    let (mut x, at_rest) = (vec![0.0; n + m], sizes.zeros_q::<M>());
     for iteration in 0..=max_iterations {
         model.holonomic(q, &mut phi);
         non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)?;
@@ -79,8 +79,7 @@ where
             bottom: &[(1.0, 0.0, &a)],
             corner: (0.0, 1.0),
         });
-        let zero_v = sizes.zeros_q::<M>();
-        saddle.factor().map_err(|s| not_determined(model, t, q, &zero_v, s))?;
+        saddle.factor().map_err(|s| not_determined(model, t, q, &at_rest, s))?;
         x.fill(0.0);
         x[n..n + h].copy_from_slice(phi.as_slice());
         saddle.solve(&mut x);

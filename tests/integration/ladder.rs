@@ -98,3 +98,63 @@ fn elements_counted_from_the_end_and_arrays_of_fixed_length() {
     // The node next to it moves.
     assert!(sol.q(shorted.cells(4, Cell::B)).iter().any(|x| x.abs() > 1e-3));
 }
+
+/// Bad input to a model made of arrays ends in typed errors that name the cause.
+#[test]
+fn arrays_with_bad_input_end_in_typed_errors() {
+    // A NaN parameter in one cell is named by its element.
+    let mut ladder = unit_ladder(50);
+    ladder.cells[17].c = f64::NAN;
+    let q = ladder.sizes().zeros_q::<Ladder>();
+    match consistent_state(&ladder, 0.0, &q, &q, Consistency::default()) {
+        Err(SimError::InvalidParameter { name, .. }) => assert_eq!(name, "cells[17].c"),
+        other => panic!("expected InvalidParameter, got {other:?}"),
+    }
+    // Without capacitance nothing determines the node voltages: on the dense start (small
+    // ladders) and on the saddle-point start (above 2000 unknowns) alike.
+    for n in [5, 1000] {
+        let mut ladder = unit_ladder(n);
+        for cell in &mut ladder.cells {
+            cell.c = 0.0;
+        }
+        let q = ladder.sizes().zeros_q::<Ladder>();
+        let result = consistent_state(&ladder, 0.0, &q, &q, Consistency::default());
+        assert!(matches!(result, Err(SimError::NotDetermined { .. })), "{n} cells: {result:?}");
+    }
+    // A non-finite start is named by its coordinate.
+    let ladder = unit_ladder(1000);
+    let mut q = ladder.sizes().zeros_q::<Ladder>();
+    q[ladder.cells(400, Cell::B).index()] = f64::INFINITY;
+    match consistent_state(&ladder, 0.0, &q, &ladder.sizes().zeros_q::<Ladder>(), Consistency::default()) {
+        Err(SimError::NonFinite { component, .. }) => {
+            assert!(component.contains("cells[400].b"), "{component}")
+        }
+        other => panic!("expected NonFinite, got {other:?}"),
+    }
+}
+
+/// An empty array is a model too: its patterns have no instance, and a boundary connection to
+/// an element that does not exist is left out.
+#[test]
+fn an_empty_array_is_a_model_without_cells() {
+    let ladder = unit_ladder(0);
+    let sizes = ladder.sizes();
+    assert_eq!((sizes.nq, sizes.nh, sizes.nc), (1, 1, 1));
+    assert_eq!(ladder.constraint_names(), ["ground.grounded"]);
+    let q = sizes.zeros_q::<Ladder>();
+    let start = consistent_state(&ladder, 0.0, &q, &q, Consistency::default());
+    // The ground alone has no inertia in its one velocity, fixed by its constraint.
+    let start = start.expect("a consistent start");
+    let sol = Radau::new(&ladder, RadauOptions::default())
+        .expect("valid options")
+        .solve(0.0, &start, 1.0, &Sampling::Steps)
+        .expect("integrates");
+    assert!(sol.q(ladder.ground(Ground::G)).iter().all(|&g| g == 0.0));
+}
+
+#[test]
+#[should_panic(expected = "`cells` has 3 elements; there is no element 3")]
+fn a_key_past_the_end_of_an_array_panics_like_an_index() {
+    let ladder = unit_ladder(3);
+    let _ = ladder.cells(3, Cell::A);
+}

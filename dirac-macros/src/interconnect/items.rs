@@ -46,7 +46,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
 }
 
 /// The name of a symbol of the interconnection rows, for people.
-pub(super) fn display_name(model: &CompositeModel, s: u32, style: Style) -> String {
+fn display_name(model: &CompositeModel, s: u32, style: Style) -> String {
     match model.kind(s) {
         Sym::Parameter(i) => model.params[i].to_string(),
         Sym::Member(k) => {
@@ -68,16 +68,26 @@ pub(super) fn display_name(model: &CompositeModel, s: u32, style: Style) -> Stri
 
 /// `fn equations()`: the subsystems' equations, then the interconnection rows.
 pub fn equations(composite: &Composite<'_>, model: &CompositeModel) -> TokenStream {
-    let p = rt();
     let fields: Vec<String> = composite.subsystems.iter().map(|s| s.ident.unraw().to_string()).collect();
-    let header = format!("{}: interconnection of {}", composite.ident, fields.join(", "));
+    equations_with(composite, model, &fields, &|row| format!("{row}, multiplier mu_{row}"))
+}
+
+/// [`equations`] with each field shown as `labels` says and each row's note from `note`.
+pub(super) fn equations_with(
+    composite: &Composite<'_>,
+    model: &CompositeModel,
+    labels: &[String],
+    note: &dyn Fn(&str) -> String,
+) -> TokenStream {
+    let p = rt();
+    let header = format!("{}: interconnection of {}", composite.ident, labels.join(", "));
     let show = |style: Style| -> Vec<String> {
         let name = |s: u32| display_name(model, s, style);
         let rows = model.rows.iter();
         rows.map(|row| {
             let omega = pretty(&model.graph, row.omega, style, &name);
             match style {
-                Style::Text => format!("0 = {omega}    ({}, multiplier mu_{})", row.name, row.name),
+                Style::Text => format!("0 = {omega}    ({})", note(&row.name)),
                 Style::Latex => format!("0 &= {omega} && \\text{{({})}}", row.name.replace('_', "\\_")),
             }
         })
@@ -85,7 +95,7 @@ pub fn equations(composite: &Composite<'_>, model: &CompositeModel) -> TokenStre
     };
     let text_rows = show(Style::Text).join("\n");
     let latex_rows = show(Style::Latex).join(" \\\\\n");
-    let (fields_a, fields_b) = (fields.iter(), fields.iter());
+    let (fields_a, fields_b) = (labels.iter(), labels.iter());
     let (types_a, types_b) =
         (composite.subsystems.iter().map(|s| &s.ty), composite.subsystems.iter().map(|s| &s.ty));
     quote! {
@@ -185,7 +195,8 @@ fn constants(composite: &Composite<'_>, targets: &Targets<'_>) -> TokenStream {
     };
     let mut seen = Vec::new();
     let mut out = TokenStream::new();
-    for (dotted, index) in ports {
+    // Ports of array elements (`cells[i].b`) are many: they have keys, not constants.
+    for (dotted, index) in ports.into_iter().filter(|(dotted, _)| !dotted.contains('[')) {
         let name = dotted.replace('.', "_").to_uppercase();
         if !seen.contains(&name) {
             let c = format_ident!("{}", name);

@@ -27,14 +27,7 @@ pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
 /// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's, named
 /// by their dotted paths.
 fn non_finite_parameter(composite: &Composite<'_>) -> TokenStream {
-    let own = composite.params.iter().map(|field| {
-        let name = syn::ext::IdentExt::unraw(field).to_string();
-        quote! {
-            if !self.#field.is_finite() {
-                return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
-            }
-        }
-    });
+    let own = own_parameter_checks(composite);
     let subsystems = composite.subsystems.iter().map(|s| {
         let field = &s.ident;
         let prefix = format!("{}.", syn::ext::IdentExt::unraw(field));
@@ -48,11 +41,28 @@ fn non_finite_parameter(composite: &Composite<'_>) -> TokenStream {
     });
     quote! {
         fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
-            #(#own)*
+            #own
             #(#subsystems)*
             ::core::option::Option::None
         }
     }
+}
+
+/// `return Some((name, value))` for the first of the composite's own `f64` fields that is not
+/// finite.
+pub(super) fn own_parameter_checks(composite: &Composite<'_>) -> TokenStream {
+    composite
+        .params
+        .iter()
+        .map(|field| {
+            let name = syn::ext::IdentExt::unraw(field).to_string();
+            quote! {
+                if !self.#field.is_finite() {
+                    return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
+                }
+            }
+        })
+        .collect()
 }
 
 fn method(composite: &Composite<'_>, own: &Own<'_>, sig: &Signature) -> TokenStream {

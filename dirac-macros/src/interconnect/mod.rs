@@ -138,15 +138,7 @@ fn implementation(
     let layout = layout(composite, model.rows.len());
     let resolutions = model.resolutions(composite);
     let structure = model.structure(composite, blocks);
-    let asserts = composite.subsystems.iter().map(|s| {
-        let ty = &s.ty;
-        quote_spanned! {ty.span()=>
-            const _: fn() = || {
-                fn subsystem<M: #p::LagrangeDirac>() where #p::DefaultAllocator: #p::Storage<M> {}
-                subsystem::<#ty>();
-            };
-        }
-    });
+    let asserts = subsystem_asserts(composite);
     let bounds = bounds(composite);
     let names = names(composite, model, &bounds);
     let counts = operation_counts(composite, &own);
@@ -155,7 +147,7 @@ fn implementation(
     let inherent = inherent_items(composite, Targets::Resolved(model), &bounds);
     quote! {
         const _: () = {
-            #(#asserts)*
+            #asserts
             #layout
             #resolutions
             #linearity
@@ -183,6 +175,24 @@ fn implementation(
             #inherent
         };
     }
+}
+
+/// A check, at each field's type, that the type is a model.
+fn subsystem_asserts(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    composite
+        .subsystems
+        .iter()
+        .map(|s| {
+            let ty = &s.ty;
+            quote_spanned! {ty.span()=>
+                const _: fn() = || {
+                    fn subsystem<M: #p::LagrangeDirac>() where #p::DefaultAllocator: #p::Storage<M> {}
+                    subsystem::<#ty>();
+                };
+            }
+        })
+        .collect()
 }
 
 /// `where Sub: DenseModel, …` for every subsystem type, at the field's type: if a field is

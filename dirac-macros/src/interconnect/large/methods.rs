@@ -10,7 +10,7 @@ use crate::codegen::signatures::{
     Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, JACOBIAN_BLOCKS, Out, REQUIRED, RESIDUAL_BLOCKS, Signature, rt,
 };
 use crate::interconnect::emit::r_ident;
-use crate::interconnect::methods::INTERCONNECTION_FORCES;
+use crate::interconnect::methods::{INTERCONNECTION_FORCES, own_parameter_checks};
 use crate::sym::emit::Assign;
 
 /// Which own entries a method writes.
@@ -246,14 +246,7 @@ impl Large<'_> {
     /// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's,
     /// named by their paths (`cells[3].c`).
     fn non_finite_parameter(&self) -> TokenStream {
-        let own = self.composite.params.iter().map(|field| {
-            let name = syn::ext::IdentExt::unraw(field).to_string();
-            quote! {
-                if !self.#field.is_finite() {
-                    return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
-                }
-            }
-        });
+        let own = own_parameter_checks(self.composite);
         let fields = self.composite.subsystems.iter().map(|s| {
             let field = &s.ident;
             let name = syn::ext::IdentExt::unraw(field).to_string();
@@ -277,7 +270,7 @@ impl Large<'_> {
         });
         quote! {
             fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
-                #(#own)*
+                #own
                 #(#fields)*
                 ::core::option::Option::None
             }

@@ -240,15 +240,7 @@ pub fn implementation(
         quote! { const #q: ::core::primitive::usize = 0; }
     });
     let resolutions = model.resolutions(composite);
-    let asserts = composite.subsystems.iter().map(|s| {
-        let ty = &s.ty;
-        quote_spanned! {ty.span()=>
-            const _: fn() = || {
-                fn subsystem<M: #p::LagrangeDirac>() where #p::DefaultAllocator: #p::Storage<M> {}
-                subsystem::<#ty>();
-            };
-        }
-    });
+    let asserts = super::subsystem_asserts(composite);
     let bounds = super::bounds(composite);
     let placement = large.placement();
     let shape = large.shape();
@@ -258,7 +250,7 @@ pub fn implementation(
     let consts = large.consts();
     quote! {
         const _: () = {
-            #(#asserts)*
+            #asserts
             #(#offsets)*
             #resolutions
             #linearity

@@ -7,8 +7,7 @@ use syn::ext::IdentExt;
 
 use super::{Element, Large, lit};
 use crate::codegen::signatures::rt;
-use crate::interconnect::items::display_name;
-use crate::sym::pretty::{Style, pretty};
+use crate::interconnect::items::equations_with;
 
 impl Large<'_> {
     /// `for each subsystem: f(prefix, names)`, with the prefix `cells[3].` or `wall.`.
@@ -112,9 +111,7 @@ impl Large<'_> {
 
     /// `fn equations()`: each subsystem type's equations once, then the row patterns.
     fn equations(&self) -> TokenStream {
-        let p = rt();
-        let model = self.own.model;
-        let fields: Vec<String> = self
+        let labels: Vec<String> = self
             .composite
             .subsystems
             .iter()
@@ -123,50 +120,8 @@ impl Large<'_> {
                 if s.array { format!("{name}[i]") } else { name }
             })
             .collect();
-        let header = format!("{}: interconnection of {}", self.composite.ident, fields.join(", "));
-        let show = |style: Style| -> Vec<String> {
-            let name = |s: u32| display_name(model, s, style);
-            model
-                .rows
-                .iter()
-                .map(|row| {
-                    let omega = pretty(&model.graph, row.omega, style, &name);
-                    match style {
-                        Style::Text => {
-                            format!("0 = {omega}    ({}, every i naming existing elements)", row.name)
-                        }
-                        Style::Latex => {
-                            format!("0 &= {omega} && \\text{{({})}}", row.name.replace('_', "\\_"))
-                        }
-                    }
-                })
-                .collect()
-        };
-        let (text_rows, latex_rows) = (show(Style::Text).join("\n"), show(Style::Latex).join(" \\\\\n"));
-        let (names_a, names_b) = (fields.iter(), fields.iter());
-        let (types_a, types_b) = (
-            self.composite.subsystems.iter().map(|s| &s.ty),
-            self.composite.subsystems.iter().map(|s| &s.ty),
-        );
-        quote! {
-            fn equations() -> #p::Equations {
-                let mut text = ::std::string::String::new();
-                text.push_str(#header);
-                let mut latex = ::std::string::String::new();
-                #(
-                    text.push_str(&::std::format!("\n[{}]\n{}", #names_a, <#types_a as #p::LagrangeDirac>::equations().text));
-                )*
-                #(
-                    latex.push_str(&::std::format!("\\text{{{}:}}\\\\\n{}\n", #names_b, <#types_b as #p::LagrangeDirac>::equations().latex));
-                )*
-                text.push_str("\n[interconnection]\n");
-                text.push_str(#text_rows);
-                latex.push_str("\\begin{aligned}\n");
-                latex.push_str(#latex_rows);
-                latex.push_str("\n\\end{aligned}");
-                #p::Equations { text: #p::Cow::Owned(text), latex: #p::Cow::Owned(latex) }
-            }
-        }
+        let note = |row: &str| format!("{row}, every i naming existing elements");
+        equations_with(self.composite, self.own.model, &labels, &note)
     }
 
     /// `ladder.cells(3, Cell::X)` and `ladder.cells_constraint(3, k)`: a subsystem's keys
