@@ -25,6 +25,7 @@ where
 {
     /// Zeroed blocks for a model of these sizes, ready for
     /// [`LagrangeDirac::residual_blocks`](crate::LagrangeDirac::residual_blocks).
+    #[inline]
     pub fn with_sizes(sizes: &Sizes) -> Self {
         Self {
             momentum_rate: sizes.zeros_q::<M>(),

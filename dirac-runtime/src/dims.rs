@@ -88,6 +88,7 @@ impl Sizes {
     }
 
     /// A zero vector of `n` entries.
+    #[inline]
     pub fn zeros_q<M: Dimensions>(&self) -> VecQ<M>
     where
         DefaultAllocator: Allocator<M::Nq>,
@@ -96,6 +97,7 @@ impl Sizes {
     }
 
     /// A zero vector of `m` entries.
+    #[inline]
     pub fn zeros_c<M: Dimensions>(&self) -> VecC<M>
     where
         DefaultAllocator: Allocator<M::Nc>,

@@ -11,6 +11,7 @@ use crate::layout::Layout;
 use crate::state::State;
 
 /// `f = (v, p − ∂L/∂v, ṗ, A v)` at `state` from its residual blocks.
+#[inline]
 pub fn residual<M: Dimensions>(state: &State<M>, blocks: &ResidualBlocks<M>, out: &mut VecY<M>)
 where
     DefaultAllocator: Storage<M>,

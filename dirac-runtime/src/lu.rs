@@ -42,8 +42,10 @@ where
     /// Factors the matrix held in [`Lu::matrix_mut`] in place. A pivot below `tiny` times the
     /// largest entry of the matrix counts as zero.
     pub fn factor(&mut self) -> Result<(), Singular> {
-        let n = self.lu.nrows();
-        let scale = self.lu.iter().fold(0.0f64, |m, x| m.max(x.modulus()));
+        let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
+        // Over the storage slice: nalgebra's matrix iterator costs more than the factorisation
+        // of a small matrix.
+        let scale = self.lu.as_slice().iter().fold(0.0f64, |m, x| m.max(x.modulus()));
         let tiny = f64::EPSILON * 1e-3 * scale.max(f64::MIN_POSITIVE);
         for k in 0..n {
             let (mut p, mut best) = (k, self.lu[(k, k)].modulus());
@@ -79,15 +81,19 @@ where
     }
 
     /// Solves `A x = b` in place with the factors, for `b` of the matrix's size.
+    #[inline]
     pub fn solve_slice(&self, b: &mut [T]) {
-        self.solve_in(b);
+        // Cut to the matrix's size, which a type of fixed size makes a constant: the
+        // substitutions then index without bounds checks.
+        let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
+        self.solve_in(&mut b[..n]);
     }
 
     /// The substitutions, over any indexable `b`: a stack vector keeps its length known to the
     /// compiler, which then unrolls the loops.
     #[inline(always)]
     fn solve_in<B: core::ops::IndexMut<usize, Output = T> + ?Sized>(&self, b: &mut B) {
-        let n = self.lu.nrows();
+        let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
         for k in 0..n {
             let p = self.pivots[k];
             if p != k {

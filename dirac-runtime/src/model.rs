@@ -204,7 +204,7 @@ where
     /// The default assembles it from [`LagrangeDirac::residual_blocks`]; the derive for a
     /// primitive model emits a specialised version.
     fn residual(&self, t: f64, y: &VecY<Self>, out: &mut VecY<Self>) {
-        let sizes = self.sizes();
+        let sizes = self.sizes().typed::<Self>();
         let state = State::<Self>::from_y(sizes, y);
         let mut blocks = ResidualBlocks::<Self>::with_sizes(&sizes);
         self.residual_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);

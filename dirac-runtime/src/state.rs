@@ -92,6 +92,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// The state with every component zero for a model of these sizes.
+    #[inline]
     pub fn with_sizes(sizes: Sizes) -> Self {
         Self {
             q: sizes.zeros_q::<M>(),
@@ -179,6 +180,7 @@ where
     }
 
     /// Reads the state from a flat vector `y = (q, v, p, λ)`.
+    #[inline]
     pub fn read_y(&mut self, y: &VecY<M>) {
         let l = Layout::new(self.sizes());
         let y = y.as_slice();
@@ -189,6 +191,7 @@ where
     }
 
     /// The state of a model of these sizes stored in a flat vector `y = (q, v, p, λ)`.
+    #[inline]
     pub fn from_y(sizes: Sizes, y: &VecY<M>) -> Self {
         let mut state = Self::with_sizes(sizes);
         state.read_y(y);

@@ -140,6 +140,8 @@ impl<M: Dimensions, T: Scalar> Saddle<M, Dense, T> for DenseSaddle<M, T>
 where
     DefaultAllocator: Storage<M>,
 {
+    // Inlined so that the terms, a constant array at each call, unroll.
+    #[inline(always)]
     fn assemble(&mut self, terms: &SaddleTerms<'_, M, Dense, T>) {
         let Sizes { nq: n, nc: m, nh } = self.sizes.typed::<M>();
         let s = self.lu.matrix_mut();

@@ -193,6 +193,7 @@ where
 
 /// Factors the assembled stage matrix, applies the Newton update in `work.vectors.r` to the
 /// stage's unknowns and says whether the iteration has converged.
+#[inline(always)]
 fn newton_update<M: LagrangeDirac>(s: &mut Step<'_, M>, stage: Stage) -> Result<bool, SimError>
 where
     DefaultAllocator: Storage<M>,

@@ -158,6 +158,7 @@ where
 }
 
 /// Factors the `m × m` matrix `matrix` in the work space's storage.
+#[inline(always)]
 fn factor_small<'s, M: LagrangeDirac>(
     s: &'s mut Step<'_, M>,
     matrix: &OMatrix<f64, M::Nc, M::Nc>,
