@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# dirac's Radau against SUNDIALS IDA with KLU on the LC ladder (10⁴ cells by default, or
-# DIRAC_LADDER_CELLS), at equal achieved error: the nodal flux error at t = 10 against the exact
-# modal solution. IDA, KLU and their libraries come from Debian's packages, unpacked into
-# target/peers without installing; the IDA driver (ida_ladder.c) reads the consistent start and
-# the reference that benches/ladder_peers.rs writes. Not part of CI.
+# dirac's Radau against SUNDIALS IDA with KLU and against diffsol with its sparse backend (faer)
+# on the LC ladder (10⁴ cells by default, or DIRAC_LADDER_CELLS), at equal achieved error: the
+# nodal flux error at t = 10 against the exact modal solution. IDA, KLU and their libraries come
+# from Debian's packages, unpacked into target/peers without installing; the IDA driver
+# (ida_ladder.c) integrates the same index-2 DAE as dirac. diffsol (benches/peers/diffsol,
+# src/bin/ladder.rs) gets the reduced ODE in the node fluxes, 2N unknowns, which is what a
+# diffsol user would write: its BDF cannot start an index-2 DAE. Every driver reads the
+# consistent start and the reference that benches/ladder_peers.rs writes. Not part of CI.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 peers=target/peers
@@ -23,6 +26,14 @@ gcc -O3 -o "$peers/ida_ladder" benches/peers/ida_ladder.c -I"$root/usr/include" 
 DIRAC_LADDER_CELLS=$cells cargo bench --bench ladder_peers -- setup "$peers/ladder"
 DIRAC_LADDER_CELLS=$cells cargo bench --bench ladder_peers > "$peers/ladder/radau.csv"
 LD_LIBRARY_PATH="$PWD/$lib" "$peers/ida_ladder" "$cells" "$peers/ladder" > "$peers/ladder/ida.csv"
+cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol" --bin ladder
+for method in bdf esdirk34 tsit45; do
+    "$peers/diffsol/release/ladder" "$method" "$peers/ladder" > "$peers/ladder/diffsol_$method.csv"
+done
 echo "dirac Radau:"; cat "$peers/ladder/radau.csv"
 echo "SUNDIALS IDA + KLU:"; cat "$peers/ladder/ida.csv"
-python3 benches/peers/compare.py "$peers/ladder/radau.csv" "SUNDIALS IDA + KLU=$peers/ladder/ida.csv"
+for method in bdf esdirk34 tsit45; do echo "diffsol $method:"; cat "$peers/ladder/diffsol_$method.csv"; done
+python3 benches/peers/compare.py "$peers/ladder/radau.csv" "SUNDIALS IDA + KLU=$peers/ladder/ida.csv" \
+    "diffsol BDF + sparse LU (ODE)=$peers/ladder/diffsol_bdf.csv" \
+    "diffsol ESDIRK34 + sparse LU (ODE)=$peers/ladder/diffsol_esdirk34.csv" \
+    "diffsol Tsit45 (ODE)=$peers/ladder/diffsol_tsit45.csv"
