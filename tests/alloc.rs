@@ -145,3 +145,50 @@ fn steps_of_models_made_of_arrays_do_not_allocate() {
         "variational, ladder"
     );
 }
+
+/// Inputs set between steps: each `set_input` restarts the integrator (checks, new Jacobian,
+/// new grid); a 100-step feedback loop on the forced spring and on the composite of two, with
+/// each integrator, allocates nothing.
+fn allocations_with_inputs<M: LagrangeDirac, I: Integrator<M>>(
+    integrator: &mut I,
+    start: &State<M>,
+    input: Input<M>,
+) -> usize
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    integrator.start(0.0, start, 100.0).expect("starts");
+    for _ in 0..5 {
+        integrator.step().expect("steps");
+    }
+    let before = allocations();
+    for _ in 0..100 {
+        let x = integrator.state().q[0];
+        integrator.set_input(input, -3.0 * x).expect("an exclusive model");
+        integrator.step().expect("steps");
+    }
+    allocations() - before
+}
+
+#[test]
+fn steps_with_inputs_set_between_them_do_not_allocate() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let q = VecQ::<ForcedSpring>::from([1.0]);
+    let s = consistent_state(&spring, 0.0, &q, &VecQ::<ForcedSpring>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    assert_eq!(allocations_with_inputs(&mut radau, &s, ForcedSpring::F), 0, "Radau, spring");
+    let mut vi = Variational::new(&mut spring, 0.01, VariationalOptions::default()).expect("valid");
+    assert_eq!(allocations_with_inputs(&mut vi, &s, ForcedSpring::F), 0, "variational, spring");
+
+    let spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let mut pair = ForcedPair { left: spring.clone(), right: spring };
+    let q = VecQ::<ForcedPair>::from([1.0, 1.0]);
+    let s = consistent_state(&pair, 0.0, &q, &VecQ::<ForcedPair>::zeros(), Consistency::default())
+        .expect("consistent");
+    let right_f = ForcedPair::right_input(ForcedSpring::F);
+    let mut radau = Radau::new(&mut pair, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    assert_eq!(allocations_with_inputs(&mut radau, &s, right_f), 0, "Radau, composite");
+    let mut vi = Variational::new(&mut pair, 0.01, VariationalOptions::default()).expect("valid");
+    assert_eq!(allocations_with_inputs(&mut vi, &s, right_f), 0, "variational, composite");
+}

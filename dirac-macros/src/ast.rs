@@ -8,7 +8,8 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
 use crate::symbol::{
-    CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, LAGRANGIAN, LARGE, MODEL_KEYS, PORT, PORTS,
+    CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, PORT,
+    PORTS,
 };
 
 /// A model as written by the user.
@@ -19,6 +20,8 @@ pub struct Model<'a> {
     pub params: Vec<Ident>,
     pub coordinates: Vec<CoordinateDecl>,
     pub ports: Vec<Ident>,
+    /// `input(u, ...)`: the `f64` fields that are inputs, in the order written.
+    pub inputs: Vec<Ident>,
     /// The key `lagrangian` (for error spans) and the expression.
     pub lagrangian: Option<(Ident, Expr)>,
     pub constraints: Vec<ConstraintDecl>,
@@ -85,6 +88,7 @@ impl<'a> Model<'a> {
             params: Vec::new(),
             coordinates: Vec::new(),
             ports: Vec::new(),
+            inputs: Vec::new(),
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
@@ -202,6 +206,12 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 input.parse::<Token![=]>()?;
                 let expr: Expr = input.parse()?;
                 model.constraints.push(ConstraintDecl { kind, key, name, expr });
+            }
+            INPUT => {
+                let content;
+                syn::parenthesized!(content in input);
+                let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                model.inputs.extend(names.iter().map(IdentExt::unraw));
             }
             LARGE => model.large = true,
             DEFINE => {

@@ -17,6 +17,7 @@ pub fn check(cx: &Ctxt, model: &Model<'_>) {
     check_names(cx, model);
     check_ports(cx, model);
     check_forces(cx, model);
+    check_inputs(cx, model);
 }
 
 /// A model needs coordinates and a Lagrangian.
@@ -110,6 +111,28 @@ fn check_forces(cx: &Ctxt, model: &Model<'_>) {
                 &force.coordinate,
                 format!("a second `force({name})`: write the total force on `{name}` as one expression"),
             );
+        }
+    }
+}
+
+/// Inputs are `f64` fields of the model, each listed once.
+fn check_inputs(cx: &Ctxt, model: &Model<'_>) {
+    let fields: Vec<String> = model.params.iter().map(|p| p.unraw().to_string()).collect();
+    let mut seen = HashSet::new();
+    for input in &model.inputs {
+        let name = input.to_string();
+        if !fields.contains(&name) {
+            let hint = did_you_mean(&name, fields.iter().map(String::as_str));
+            cx.error_spanned_by(
+                input,
+                format!(
+                    "input `{name}` is not a field of `{}`: an input is an `f64` field that the simulation \
+                     sets while it runs; add `{name}: f64` to the struct{hint}",
+                    model.ident
+                ),
+            );
+        } else if !seen.insert(name.clone()) {
+            cx.error_spanned_by(input, format!("input `{name}` is listed twice"));
         }
     }
 }

@@ -85,6 +85,7 @@ impl Analysed {
 struct KeyConstants {
     coordinates: Vec<(syn::Ident, String)>,
     constraints: Vec<(syn::Ident, String)>,
+    inputs: Vec<(syn::Ident, String)>,
 }
 
 /// `theta_1` → `THETA_1`, `vTheta` → `V_THETA`.
@@ -122,7 +123,8 @@ fn key_constants(cx: &Ctxt, model: &Model<'_>) -> KeyConstants {
     };
     let coordinates = model.coordinates.iter().filter_map(|c| make(&c.name, c.name.to_string())).collect();
     let constraints = model.ordered_constraints().into_iter().filter_map(|c| make(c.ident, c.name)).collect();
-    KeyConstants { coordinates, constraints }
+    let inputs = model.inputs.iter().filter_map(|u| make(u, u.to_string())).collect();
+    KeyConstants { coordinates, constraints, inputs }
 }
 
 fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
@@ -139,11 +141,17 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
         let doc = format!("The constraint `{name}`: names its row of A(q) and its multiplier in a state.");
         quote! { #[doc = #doc] #vis const #c: #p::Constraint<Self> = #p::Constraint::new(#j); }
     });
+    let inputs = names.inputs.iter().enumerate().map(|(k, (c, name))| {
+        let k = proc_macro2::Literal::usize_unsuffixed(k);
+        let doc = format!("The input `{name}`: set it between steps through the integrator.");
+        quote! { #[doc = #doc] #vis const #c: #p::Input<Self> = #p::Input::new(#k); }
+    });
     quote! {
         #[automatically_derived]
         impl #ident {
             #(#coordinates)*
             #(#constraints)*
+            #(#inputs)*
         }
     }
 }
@@ -166,7 +174,8 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
         counts.jacobian_blocks,
     );
     let constants = inherent_constants(model, names);
-    let named = named(&sym, ident);
+    let named = named(&sym, ident, &model.inputs);
+    let inputs = input_methods(&model.inputs);
     let parameters = non_finite_parameter(&sym.params);
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     quote! {
@@ -205,6 +214,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                 }
 
                 #parameters
+                #inputs
                 #methods
             }
 
@@ -237,14 +247,40 @@ fn non_finite_parameter(params: &[syn::Ident]) -> TokenStream {
     }
 }
 
+/// `input_value` and `set_input_value` over the input fields, in the order declared.
+fn input_methods(inputs: &[syn::Ident]) -> TokenStream {
+    if inputs.is_empty() {
+        return TokenStream::new();
+    }
+    let k = (0..inputs.len()).map(proc_macro2::Literal::usize_unsuffixed);
+    let count = inputs.len();
+    let panic = quote! { ::core::panic!("the model has no input {}: it has {}", k, #count) };
+    let (k1, k2) = (k.clone(), k);
+    quote! {
+        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            match k {
+                #(#k1 => self.#inputs,)*
+                _ => #panic,
+            }
+        }
+        fn set_input_value(&mut self, k: ::core::primitive::usize, value: ::core::primitive::f64) {
+            match k {
+                #(#k2 => self.#inputs = value,)*
+                _ => #panic,
+            }
+        }
+    }
+}
+
 /// The `Named` impl: the model's coordinates, velocities, constraints and ports.
-fn named(sym: &SymModel, ident: &syn::Ident) -> TokenStream {
+fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStream {
     let p = rt();
     let coordinates = sym.coordinates.iter().map(ToString::to_string);
     let velocities = sym.velocities.iter().map(ToString::to_string);
     let constraints = sym.constraints.iter().map(|c| &c.name);
     let ports = sym.ports.iter().map(|&i| proc_macro2::Literal::usize_unsuffixed(i));
     let h = proc_macro2::Literal::usize_unsuffixed(sym.h());
+    let inputs = inputs.iter().map(ToString::to_string);
     quote! {
         #[automatically_derived]
         impl #p::Named for #ident {
@@ -254,6 +290,7 @@ fn named(sym: &SymModel, ident: &syn::Ident) -> TokenStream {
                 constraints: &[#(#constraints),*],
                 holonomic: #h,
                 ports: &[#(#ports),*],
+                inputs: &[#(#inputs),*],
                 subsystems: &[],
             };
         }
@@ -296,6 +333,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 constraints: &[],
                 holonomic: 0,
                 ports: &[],
+                inputs: &[],
                 subsystems: &[],
             };
         }

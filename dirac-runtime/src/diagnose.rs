@@ -127,11 +127,25 @@ where
     if let Some((j, r)) = worst(av.iter().copied()).filter(|(_, r)| *r > tolerance * v_scale) {
         return Some((format!("velocity constraint `{}`", model.constraint_names()[j]), r));
     }
-    let mut dl_dv = sizes.zeros_q::<M>();
+    violated_legendre_map(model, t, state, tolerance)
+}
+
+/// The momentum `p = ∂L/∂v` that `state` violates most beyond `tolerance` (relative to the
+/// momenta's size), and by how much: what a change of the model while it runs may break.
+pub fn violated_legendre_map<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    tolerance: f64,
+) -> Option<(String, f64)>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut dl_dv = model.sizes().zeros_q::<M>();
     model.dl_dv(t, &state.q, &state.v, &mut dl_dv);
     let p_scale = 1.0 + state.p.amax().max(dl_dv.amax());
-    let gap = &state.p - &dl_dv;
-    if let Some((i, r)) = worst(gap.iter().copied()).filter(|(_, r)| *r > tolerance * p_scale) {
+    let gap = state.p.iter().zip(dl_dv.iter()).map(|(p, l)| p - l);
+    if let Some((i, r)) = worst(gap).filter(|(_, r)| *r > tolerance * p_scale) {
         return Some((format!("Legendre map p = ∂L/∂v of `{}`", model.coordinate_names()[i]), r));
     }
     None

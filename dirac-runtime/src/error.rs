@@ -124,6 +124,29 @@ pub enum SimError {
         /// What grew, and by how much.
         detail: String,
     },
+    /// A change of the model while it runs that moves the momenta away from the velocities.
+    #[error(
+        "the change of the model at t = {t} breaks the {equation} by {residual:e}: a change while the \
+         model runs must keep p = ∂L/∂v (inputs in forces or in the potential do); after a change of the \
+         mass matrix, start again from a consistent state"
+    )]
+    MomentumChanged {
+        /// When the model changed.
+        t: f64,
+        /// The momentum that no longer matches, such as `Legendre map p = ∂L/∂v of `x``.
+        equation: String,
+        /// By how much.
+        residual: f64,
+    },
+    /// A change of the model while it runs, through an integrator built on a shared reference.
+    #[error(
+        "cannot change the model at t = {t}: the integrator was built on `&model`; build it on \
+         `&mut model` to change inputs or parameters while it runs"
+    )]
+    SharedModel {
+        /// When the change was asked for.
+        t: f64,
+    },
     /// The step budget was exhausted.
     #[error("more than {max_steps} steps before reaching t = {t_end} (stopped at t = {t})")]
     TooManySteps {

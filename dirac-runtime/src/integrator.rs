@@ -6,9 +6,10 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
-use crate::diagnose::{check_finite_state, violated_equation};
+use crate::diagnose::{check_finite_state, violated_equation, violated_legendre_map};
 use crate::dims::Storage;
 use crate::error::SimError;
+use crate::keys::Input;
 use crate::model::{LagrangeDirac, check_parameters};
 use crate::recorder::Recorder;
 use crate::solution::{Sampling, Solution};
@@ -32,6 +33,92 @@ where
     /// Prepares to integrate from `state` at `t0` to `t_end`. The state should be consistent
     /// (see [`consistent_state`](crate::consistent_state)).
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError>;
+
+    /// The model to change between steps, if the integrator holds it exclusively (it was built
+    /// on `&mut model`).
+    fn model_mut(&mut self) -> Option<&mut M>;
+
+    /// Starts again from the current time and state, towards `t_end`, after the model changed:
+    /// step-size history, Jacobians and factorisations are dropped, the step size and the
+    /// counters kept. Positions, velocities and momenta carry over, so a change must keep
+    /// `p = ∂L/∂v` (inputs in forces or in the potential do; one in the mass matrix is refused
+    /// with [`SimError::MomentumChanged`]). Does nothing once `t_end` is reached.
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError>;
+
+    /// [`Integrator::restart_until`] the current end time.
+    fn restart(&mut self) -> Result<(), SimError> {
+        self.restart_until(self.end())
+    }
+
+    /// The end time the integration is heading for.
+    fn end(&self) -> f64;
+
+    /// Changes the model between steps (its inputs, its parameters) and restarts. The guide's
+    /// section "Inputs and controllers" shows it at work.
+    fn update(&mut self, change: impl FnOnce(&mut M)) -> Result<(), SimError>
+    where
+        Self: Sized,
+    {
+        let t = self.t();
+        change(self.model_mut().ok_or(SimError::SharedModel { t })?);
+        self.restart()
+    }
+
+    /// Runs from `t0` to `t_end` under a sampled-data controller: every `period`, from `t0` on,
+    /// `controller(t_k, state, model)` reads the state and sets the model's inputs (or
+    /// parameters), which are held until the next sample. The integration stops at each sample
+    /// instant and restarts there, so no step straddles a change. Needs an integrator built on
+    /// `&mut model`. The guide's section "Inputs and controllers" has an example.
+    fn solve_sampled(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        period: f64,
+        sampling: &Sampling,
+        mut controller: impl FnMut(f64, &State<M>, &mut M),
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+    {
+        if !(period > 0.0 && period.is_finite()) {
+            return Err(SimError::InvalidOption {
+                what: "period",
+                reason: format!("{period} is not positive and finite"),
+            });
+        }
+        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
+        let mut held = state.clone();
+        let sample = |k: usize| (t0 + k as f64 * period).min(t_end);
+        controller(t0, &held, self.model_mut().ok_or(SimError::SharedModel { t: t0 })?);
+        self.start(t0, state, t_end)?;
+        self.restart_until(sample(1))?;
+        recorder.record_initial(self.model(), t0, self.state());
+        let mut k = 1;
+        while self.t() < t_end {
+            while !self.finished() {
+                self.step()?;
+                recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
+            }
+            if self.t() >= t_end {
+                break;
+            }
+            let t = self.t();
+            held.clone_from(self.state());
+            controller(t, &held, self.model_mut().ok_or(SimError::SharedModel { t })?);
+            k += 1;
+            self.restart_until(sample(k))?;
+        }
+        Ok(recorder.finish(self.stats()))
+    }
+
+    /// Sets an input between steps and restarts.
+    fn set_input(&mut self, key: Input<M>, value: f64) -> Result<(), SimError>
+    where
+        Self: Sized,
+    {
+        self.update(|m| m.set_input(key, value))
+    }
 
     /// Takes one step (for an adaptive method: one accepted step, retrying smaller ones as
     /// needed) and returns its size.
@@ -116,6 +203,24 @@ where
     check_finite_state(model, t0, state)?;
     match violated_equation(model, t0, state, tolerance) {
         Some((equation, residual)) => Err(SimError::StateNotConsistent { t: t0, equation, residual }),
+        None => Ok(()),
+    }
+}
+
+/// The checks of a restart after the model changed: finite parameters, and momenta that
+/// still match the velocities (`p = ∂L/∂v`), since a restart carries both over.
+pub(crate) fn check_restart<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    tolerance: f64,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    check_parameters(model)?;
+    match violated_legendre_map(model, t, state, tolerance) {
+        Some((equation, residual)) => Err(SimError::MomentumChanged { t, equation, residual }),
         None => Ok(()),
     }
 }

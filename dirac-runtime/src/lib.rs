@@ -25,6 +25,8 @@ pub mod ensemble;
 pub mod error;
 /// The flat DAE assembled from a model's blocks.
 pub mod flat;
+/// How an integrator holds its model: shared, or exclusive to change it while it runs.
+pub mod held;
 /// Consistent initial states.
 pub mod init;
 mod init_saddle;
@@ -65,9 +67,10 @@ pub use blocks::{JacobianBlocks, ResidualBlocks};
 pub use dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
 pub use error::SimError;
+pub use held::Held;
 pub use init::{Consistency, consistent_state};
 pub use integrator::Integrator;
-pub use keys::{Constraint, Coordinate};
+pub use keys::{Constraint, Coordinate, Input};
 pub use layout::{Layout, Slot};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
@@ -94,7 +97,7 @@ pub mod __private {
     pub use crate::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::dims::Storage;
     pub use crate::dims::{Dimensions, Fixed, MatYY, Sizes, VecC, VecH, VecQ, VecY};
-    pub use crate::keys::{Constraint, Coordinate};
+    pub use crate::keys::{Constraint, Coordinate, Input};
     pub use crate::model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
     pub use crate::names::{Named, Names, ResolveError, Resolved, Subsystem};
     pub use crate::sparse::SparseJacobian;

@@ -19,7 +19,7 @@ use nalgebra::DefaultAllocator;
 use crate::algebra::Algebra;
 use crate::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::dims::{Dimensions, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
-use crate::keys::{Constraint, Coordinate};
+use crate::keys::{Constraint, Coordinate, Input};
 use crate::names::Named;
 use crate::state::State;
 use crate::structure::Structure;
@@ -242,6 +242,36 @@ where
     /// The coordinates through which the model may be interconnected, at any depth.
     fn ports(&self) -> Vec<Coordinate<Self>> {
         Self::NAMES.port_indices().into_iter().map(Coordinate::unchecked).collect()
+    }
+
+    /// The full dotted name of every input (`motor.voltage` in a composite), in the order of
+    /// the model's [`Input`] keys.
+    fn input_names(&self) -> Vec<String> {
+        Self::NAMES.input_names()
+    }
+
+    /// The value of input `k`, the position of an [`Input`] key. The derive implements it for
+    /// models with inputs; it panics if the model has no input `k`.
+    fn input_value(&self, k: usize) -> f64 {
+        panic!("the model has no input {k}: it has {}", Self::NAMES.input_count())
+    }
+
+    /// Sets input `k`, the position of an [`Input`] key. The derive implements it for models
+    /// with inputs; it panics if the model has no input `k`.
+    fn set_input_value(&mut self, k: usize, value: f64) {
+        let _ = value;
+        panic!("the model has no input {k}: it has {}", Self::NAMES.input_count())
+    }
+
+    /// The value of an input.
+    fn input(&self, key: Input<Self>) -> f64 {
+        self.input_value(key.index())
+    }
+
+    /// Sets an input. Between the steps of an integration, set inputs through the integrator
+    /// ([`Integrator::set_input`](crate::Integrator::set_input)), which restarts it.
+    fn set_input(&mut self, key: Input<Self>, value: f64) {
+        self.set_input_value(key.index(), value);
     }
 
     /// The coordinate with this (dotted) name, if the model has one.

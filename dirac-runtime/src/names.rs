@@ -27,6 +27,8 @@ pub struct Names {
     pub holonomic: usize,
     /// Indices into `coordinates` of the ports.
     pub ports: &'static [usize],
+    /// The model's own inputs (`input(u, ...)`: `f64` fields set while it runs).
+    pub inputs: &'static [&'static str],
     /// The subsystems of a composite, in field order.
     pub subsystems: &'static [Subsystem],
 }
@@ -44,6 +46,8 @@ pub struct Subsystem {
     pub h_offset: usize,
     /// Where its other constraint rows start in the composite's rows.
     pub v_offset: usize,
+    /// Where its inputs start in the composite's inputs.
+    pub u_offset: usize,
 }
 
 /// What a dotted name in an interconnection refers to, once resolved.
@@ -140,6 +144,33 @@ impl Names {
         Err(ResolveError::UnknownName)
     }
 
+    /// The number of inputs of the model and its subsystems, at any depth. Usable in `const`
+    /// items.
+    pub const fn input_count(&self) -> usize {
+        let mut count = self.inputs.len();
+        let mut i = 0;
+        while i < self.subsystems.len() {
+            count += self.subsystems[i].names.input_count();
+            i += 1;
+        }
+        count
+    }
+
+    /// Every input's full dotted name, in the order of the model's input keys: its
+    /// subsystems' in field order, then its own.
+    pub fn input_names(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        self.collect_inputs("", &mut out);
+        out
+    }
+
+    fn collect_inputs(&self, prefix: &str, out: &mut Vec<String>) {
+        for sub in self.subsystems {
+            sub.names.collect_inputs(&format!("{prefix}{}.", sub.field), out);
+        }
+        out.extend(self.inputs.iter().map(|n| format!("{prefix}{n}")));
+    }
+
     /// Every coordinate's full dotted name, in the order of `q`.
     pub fn coordinate_names(&self) -> Vec<String> {
         let mut out = Vec::new();
@@ -200,6 +231,7 @@ mod tests {
         constraints: &[],
         holonomic: 0,
         ports: &[1],
+        inputs: &["force"],
         subsystems: &[],
     };
     static RIGHT: Names = Names {
@@ -208,6 +240,7 @@ mod tests {
         constraints: &["slide"],
         holonomic: 0,
         ports: &[0],
+        inputs: &[],
         subsystems: &[],
     };
     static CHAIN: Names = Names {
@@ -216,11 +249,20 @@ mod tests {
         constraints: &["left.x2=right.x2bar"],
         holonomic: 0,
         ports: &[],
+        inputs: &[],
         subsystems: &[
-            Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0 },
-            Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0 },
+            Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },
+            Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0, u_offset: 1 },
         ],
     };
+
+    #[test]
+    fn inputs_are_named_through_their_subsystems() {
+        const COUNT: usize = CHAIN.input_count();
+        assert_eq!(COUNT, 1);
+        assert_eq!(CHAIN.input_names(), ["left.force"]);
+        assert_eq!(RIGHT.input_names(), Vec::<String>::new());
+    }
 
     #[test]
     fn resolves_dotted_names_at_compile_time() {

@@ -10,6 +10,7 @@ mod fuzz;
 mod hand_derivations;
 mod hygiene;
 mod initial;
+mod inputs;
 mod interconnection;
 mod jacobians;
 mod ladder;

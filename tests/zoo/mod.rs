@@ -79,6 +79,35 @@ pub struct DrivenOscillator {
     pub w: f64,
 }
 
+/// A mass on a spring driven by the input force `f`: `m ẍ = −k x + f`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), port(x), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x, force(x) = f)]
+pub struct ForcedSpring {
+    pub m: f64,
+    pub k: f64,
+    pub f: f64,
+}
+
+/// A spring whose mass has an adjustable part `dm`, an input in the mass matrix: changing it
+/// while the mass moves changes the momentum.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(dm))]
+#[dirac(lagrangian = 0.5 * (m + dm) * v * v - 0.5 * k * x * x)]
+pub struct AdjustableMass {
+    pub m: f64,
+    pub dm: f64,
+    pub k: f64,
+}
+
+/// Two forced springs whose ends are joined: the composite's inputs are `left.f` and `right.f`.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(left.x, right.x))]
+pub struct ForcedPair {
+    pub left: ForcedSpring,
+    pub right: ForcedSpring,
+}
+
 /// An L-C loop with charges as coordinates: a degenerate Lagrangian (the capacitor's charge has
 /// no inductance) closed by Kirchhoff's current law `i_l − i_c = 0` as a velocity constraint.
 #[derive(LagrangeDirac, Clone, Debug)]

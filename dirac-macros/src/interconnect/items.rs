@@ -20,6 +20,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
     let subsystems = composite.subsystems.iter().enumerate().map(|(i, s)| {
         let (ty, field) = (&s.ty, s.ident.unraw().to_string());
         let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
+        let ui = input_offset(composite, i);
         quote! {
             #p::Subsystem {
                 field: #field,
@@ -27,6 +28,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 q_offset: #qi,
                 h_offset: #hi,
                 v_offset: #vi,
+                u_offset: #ui,
             }
         }
     });
@@ -39,8 +41,61 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 constraints: &[#(#rows),*],
                 holonomic: 0,
                 ports: &[],
+                inputs: &[],
                 subsystems: &[#(#subsystems),*],
             };
+        }
+    }
+}
+
+/// Where subsystem `i`'s inputs start among the composite's: the input counts of the
+/// subsystems before it, a constant expression.
+pub fn input_offset(composite: &Composite<'_>, i: usize) -> TokenStream {
+    let p = rt();
+    let before = composite.subsystems[..i].iter().map(|s| {
+        let ty = &s.ty;
+        quote! { + <#ty as #p::Named>::NAMES.input_count() }
+    });
+    quote! { 0 #(#before)* }
+}
+
+/// `input_value` and `set_input_value` of a composite: each subsystem's inputs at its offset.
+pub fn input_methods(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    let arms = |set: bool| -> Vec<TokenStream> {
+        composite
+            .subsystems
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let (field, ty) = (&s.ident, &s.ty);
+                let offset = input_offset(composite, i);
+                let call = if set {
+                    quote! { return self.#field.set_input_value(k - start, value) }
+                } else {
+                    quote! { return self.#field.input_value(k - start) }
+                };
+                quote! {
+                    let start = #offset;
+                    if k >= start && k < start + <#ty as #p::Named>::NAMES.input_count() {
+                        #call;
+                    }
+                }
+            })
+            .collect()
+    };
+    let (get, set) = (arms(false), arms(true));
+    let panic = quote! {
+        ::core::panic!("the model has no input {}: it has {}", k, <Self as #p::Named>::NAMES.input_count())
+    };
+    quote! {
+        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            #(#get)*
+            #panic
+        }
+        fn set_input_value(&mut self, k: ::core::primitive::usize, value: ::core::primitive::f64) {
+            #(#set)*
+            #panic
         }
     }
 }
@@ -135,6 +190,9 @@ pub fn inherent_items(composite: &Composite<'_>, targets: Targets<'_>, bounds: &
         let (field, ty) = (&s.ident, &s.ty);
         let name = field.unraw().to_string();
         let lift_constraint = format_ident!("{}_constraint", field.unraw());
+        let lift_input = format_ident!("{}_input", field.unraw());
+        let offset = input_offset(composite, i);
+        let doc_u = format!("An input of the subsystem `{name}` as an input of this interconnection.");
         let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
         let doc = format!("A coordinate of the subsystem `{name}` as a coordinate of this interconnection.");
         let doc_c =
@@ -158,6 +216,10 @@ pub fn inherent_items(composite: &Composite<'_>, targets: Targets<'_>, bounds: &
             #[doc = #doc_c]
             #vis const fn #lift_constraint(k: #p::Constraint<#ty>) -> #p::Constraint<Self> {
                 #constraint
+            }
+            #[doc = #doc_u]
+            #vis const fn #lift_input(u: #p::Input<#ty>) -> #p::Input<Self> {
+                #p::Input::unchecked(u.index() + #offset)
             }
         }
     });

@@ -15,6 +15,7 @@ const _: () = {
             constraints: &["link", "slide"],
             holonomic: 1,
             ports: &[],
+            inputs: &[],
             subsystems: &[],
         };
     }

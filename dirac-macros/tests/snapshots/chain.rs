@@ -275,6 +275,7 @@ const _: () = {
             constraints: &["connect0"],
             holonomic: 0,
             ports: &[],
+            inputs: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "left",
@@ -282,6 +283,7 @@ const _: () = {
                     q_offset: __Q0,
                     h_offset: __H0,
                     v_offset: __V0,
+                    u_offset: 0,
                 },
                 ::dirac::__private::Subsystem {
                     field: "right",
@@ -289,6 +291,8 @@ const _: () = {
                     q_offset: __Q1,
                     h_offset: __H1,
                     v_offset: __V1,
+                    u_offset: 0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
                 },
             ],
         };
@@ -1068,6 +1072,56 @@ const _: () = {
             }
             ::core::option::Option::None
         }
+        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.left.input_value(k - start);
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.right.input_value(k - start);
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
+        }
+        fn set_input_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.left.set_input_value(k - start, value);
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.right.set_input_value(k - start, value);
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
+        }
     }
     #[automatically_derived]
     impl Chain
@@ -1092,6 +1146,12 @@ const _: () = {
                 if k.index() < nh { __H0 + k.index() } else { __V0 + k.index() - nh },
             )
         }
+        ///An input of the subsystem `left` as an input of this interconnection.
+        pub const fn left_input(
+            u: ::dirac::__private::Input<Primitive1>,
+        ) -> ::dirac::__private::Input<Self> {
+            ::dirac::__private::Input::unchecked(u.index() + 0)
+        }
         ///A coordinate of the subsystem `right` as a coordinate of this interconnection.
         pub const fn right(
             c: ::dirac::__private::Coordinate<Primitive2>,
@@ -1105,6 +1165,15 @@ const _: () = {
             let nh = <Primitive2 as ::dirac::__private::Fixed>::NH;
             ::dirac::__private::Constraint::new(
                 if k.index() < nh { __H1 + k.index() } else { __V1 + k.index() - nh },
+            )
+        }
+        ///An input of the subsystem `right` as an input of this interconnection.
+        pub const fn right_input(
+            u: ::dirac::__private::Input<Primitive2>,
+        ) -> ::dirac::__private::Input<Self> {
+            ::dirac::__private::Input::unchecked(
+                u.index() + 0
+                    + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
             )
         }
         ///The port `left.x2`: its effort is the interconnection force there.

@@ -381,6 +381,7 @@ const _: () = {
             constraints: &["tie"],
             holonomic: 0,
             ports: &[],
+            inputs: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "wheel",
@@ -388,6 +389,7 @@ const _: () = {
                     q_offset: __Q0,
                     h_offset: __H0,
                     v_offset: __V0,
+                    u_offset: 0,
                 },
                 ::dirac::__private::Subsystem {
                     field: "cart",
@@ -395,6 +397,8 @@ const _: () = {
                     q_offset: __Q1,
                     h_offset: __H1,
                     v_offset: __V1,
+                    u_offset: 0
+                        + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
                 },
             ],
         };
@@ -1267,6 +1271,46 @@ const _: () = {
             }
             ::core::option::Option::None
         }
+        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            let start = 0;
+            if k >= start
+                && k < start + <Wheel as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.wheel.input_value(k - start);
+            }
+            let start = 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k < start + <Cart as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.cart.input_value(k - start);
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
+        }
+        fn set_input_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            let start = 0;
+            if k >= start
+                && k < start + <Wheel as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.wheel.set_input_value(k - start, value);
+            }
+            let start = 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k < start + <Cart as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return self.cart.set_input_value(k - start, value);
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
+        }
     }
     #[automatically_derived]
     impl CoupledByOneForm
@@ -1291,6 +1335,12 @@ const _: () = {
                 if k.index() < nh { __H0 + k.index() } else { __V0 + k.index() - nh },
             )
         }
+        ///An input of the subsystem `wheel` as an input of this interconnection.
+        pub const fn wheel_input(
+            u: ::dirac::__private::Input<Wheel>,
+        ) -> ::dirac::__private::Input<Self> {
+            ::dirac::__private::Input::unchecked(u.index() + 0)
+        }
         ///A coordinate of the subsystem `cart` as a coordinate of this interconnection.
         pub const fn cart(
             c: ::dirac::__private::Coordinate<Cart>,
@@ -1304,6 +1354,14 @@ const _: () = {
             let nh = <Cart as ::dirac::__private::Fixed>::NH;
             ::dirac::__private::Constraint::new(
                 if k.index() < nh { __H1 + k.index() } else { __V1 + k.index() - nh },
+            )
+        }
+        ///An input of the subsystem `cart` as an input of this interconnection.
+        pub const fn cart_input(
+            u: ::dirac::__private::Input<Cart>,
+        ) -> ::dirac::__private::Input<Self> {
+            ::dirac::__private::Input::unchecked(
+                u.index() + 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
             )
         }
         ///The interconnection constraint `tie`: names its row and multiplier μ.

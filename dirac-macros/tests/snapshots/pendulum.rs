@@ -15,6 +15,7 @@ const _: () = {
             constraints: &["rod"],
             holonomic: 1,
             ports: &[],
+            inputs: &[],
             subsystems: &[],
         };
     }

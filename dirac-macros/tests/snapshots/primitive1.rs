@@ -15,6 +15,7 @@ const _: () = {
             constraints: &[],
             holonomic: 0,
             ports: &[1],
+            inputs: &[],
             subsystems: &[],
         };
     }

@@ -15,6 +15,7 @@ const _: () = {
             constraints: &["roll_x", "roll_y"],
             holonomic: 0,
             ports: &[],
+            inputs: &[],
             subsystems: &[],
         };
     }

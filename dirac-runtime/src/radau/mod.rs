@@ -32,7 +32,8 @@ use crate::blocks::JacobianBlocks;
 use crate::diagnose::{describe_slot, singular_cause};
 use crate::dims::{Storage, VecY};
 use crate::error::SimError;
-use crate::integrator::{Integrator, check_start};
+use crate::held::Held;
+use crate::integrator::{Integrator, check_restart, check_start};
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 use crate::newton::{Condensed, NewtonSolver, pivot_name};
@@ -47,7 +48,7 @@ pub struct Radau<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra> = Condense
 where
     DefaultAllocator: Storage<M>,
 {
-    model: &'m M,
+    model: Held<'m, M>,
     solver: S,
     options: RadauOptions,
     eig: Eigen,
@@ -76,6 +77,9 @@ where
     need_jac: bool,
     need_factor: bool,
     factored_h: f64,
+    /// The step size the control proposed before the last step was cut to end at the end
+    /// time: where a restart picks up.
+    unclipped: f64,
     stats: RadauStats,
 }
 
@@ -84,8 +88,12 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// An integrator for `model` with the condensed Newton solver of its algebra.
-    pub fn new(model: &'m M, options: RadauOptions) -> Result<Self, SimError> {
+    ///
+    /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
+    /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
+    pub fn new(model: impl Into<Held<'m, M>>, options: RadauOptions) -> Result<Self, SimError> {
         options.validate()?;
+        let model = model.into();
         let shape = model.shape();
         Self::build(model, options, M::Algebra::condensed(&shape), &shape)
     }
@@ -96,18 +104,25 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// An integrator for `model` that solves its linear systems with `solver`.
-    pub fn with_solver(model: &'m M, options: RadauOptions, solver: S) -> Result<Self, SimError> {
+    pub fn with_solver(
+        model: impl Into<Held<'m, M>>,
+        options: RadauOptions,
+        solver: S,
+    ) -> Result<Self, SimError> {
         options.validate()?;
-        Self::build(model, options, solver, &model.shape())
+        let model = model.into();
+        let shape = model.shape();
+        Self::build(model, options, solver, &shape)
     }
 
     fn build(
-        model: &'m M,
+        model: Held<'m, M>,
         options: RadauOptions,
         solver: S,
         shape: &<M::Algebra as Algebra<M>>::Shape,
     ) -> Result<Self, SimError> {
         let sizes = model.sizes();
+        let projector = (options.projection && sizes.nc > 0).then(|| Projector::new(model.get()));
         Ok(Radau {
             model,
             solver,
@@ -127,11 +142,12 @@ where
             dense: Dense::new(sizes),
             controller: Controller::new(),
             jac: JacobianBlocks::with_shape(shape),
-            projector: (options.projection && sizes.nc > 0).then(|| Projector::new(model)),
+            projector,
             jac_current: false,
             need_jac: true,
             need_factor: true,
             factored_h: 0.0,
+            unclipped: 0.0,
             stats: RadauStats::default(),
         })
     }
@@ -161,7 +177,10 @@ where
                 });
             }
             if self.t + self.h >= self.t_end - 1e-12 * self.h {
+                self.unclipped = self.unclipped.max(self.h);
                 self.h = self.t_end - self.t;
+            } else {
+                self.unclipped = 0.0;
             }
             if self.h <= Self::min_step(self.t) {
                 return Err(SimError::StepSizeTooSmall { t: self.t, h: self.h, reason: reason.to_owned() });
@@ -176,8 +195,8 @@ where
                 singular += 1;
                 if singular >= 6 {
                     let s = &self.state;
-                    let cause = singular_cause(self.model, self.t, &s.q, &s.v);
-                    let detail = format!("{}; {cause}", pivot_name(self.model, column));
+                    let cause = singular_cause(self.model.get(), self.t, &s.q, &s.v);
+                    let detail = format!("{}; {cause}", pivot_name(self.model.get(), column));
                     return Err(SimError::SingularMatrix { t: self.t, h: self.h, detail });
                 }
                 reason = "singular iteration matrix";
@@ -230,6 +249,26 @@ where
         self.need_factor = true;
     }
 
+    /// Starts stepping from `self.y` at `t0` with the step size in `self.h`, capped by the
+    /// span and the options: no step-size history, a new Jacobian and factorisation.
+    fn begin(&mut self, t0: f64, t_end: f64) -> Result<(), SimError> {
+        self.t = t0;
+        self.t_end = t_end;
+        self.h = self.h.min(t_end - t0).min(self.options.max_step);
+        self.unclipped = 0.0;
+        self.controller.restart();
+        self.stages.restart();
+        self.need_jac = true;
+        self.need_factor = true;
+        self.residual.eval(self.model.get(), t0, &self.y, &mut self.f0);
+        self.stats.residual_evaluations += 1;
+        if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
+            let component = format!("the equation of {}", describe_slot(self.model.get(), i));
+            return Err(SimError::NonFinite { t: t0, component });
+        }
+        Ok(())
+    }
+
     fn factor(&mut self) -> Result<(), Singular> {
         let e = &self.eig;
         let sigma = e.gamma / self.h;
@@ -248,7 +287,7 @@ where
             model, residual, solver, t, h, y, weights, stats, stages, eig, tolerances, options, ..
         } = self;
         let step = Step {
-            model: *model,
+            model: model.get(),
             residual,
             solver,
             t: *t,
@@ -267,7 +306,7 @@ where
             model, residual, solver, t, h, y, weights, stats, stages, estimator, f0, options, ..
         } = self;
         let step = Step {
-            model: *model,
+            model: model.get(),
             residual,
             solver,
             t: *t,
@@ -288,13 +327,13 @@ where
         self.state.read_y(&self.y);
         if let Some(projector) = &mut self.projector {
             let s = &mut self.state;
-            projector.project(self.model, &mut s.q, &mut s.v);
+            projector.project(self.model.get(), &mut s.q, &mut s.v);
             self.model.dl_dv(self.t + h, &s.q, &s.v, &mut s.p);
             s.write_y(&mut self.y);
         }
         self.t += h;
         self.stats.steps += 1;
-        self.residual.eval(self.model, self.t, &self.y, &mut self.f0);
+        self.residual.eval(self.model.get(), self.t, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         self.check_finite(self.t)?;
         let h_new = self.controller.next_step(h, quot, self.options.max_step);
@@ -311,10 +350,10 @@ where
     /// A typed error if the state or its residual `f0` holds a non-finite value.
     fn check_finite(&self, t: f64) -> Result<(), SimError> {
         if let Some(i) = self.y.iter().position(|v| !v.is_finite()) {
-            return Err(SimError::NonFinite { t, component: describe_slot(self.model, i) });
+            return Err(SimError::NonFinite { t, component: describe_slot(self.model.get(), i) });
         }
         if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
-            let component = format!("the equation of {}", describe_slot(self.model, i));
+            let component = format!("the equation of {}", describe_slot(self.model.get(), i));
             return Err(SimError::NonFinite { t, component });
         }
         Ok(())
@@ -324,7 +363,7 @@ where
     fn newton_failure(&self, why: &str) -> SimError {
         if why.starts_with("non-finite") {
             let i = self.stages.non_finite_slot();
-            let component = format!("the equation of {}", describe_slot(self.model, i));
+            let component = format!("the equation of {}", describe_slot(self.model.get(), i));
             return SimError::NonFinite { t: self.t, component };
         }
         SimError::NewtonDiverged { t: self.t, h: self.h, iterations: self.options.max_newton_iterations }
@@ -338,29 +377,34 @@ where
     type Stats = RadauStats;
 
     fn model(&self) -> &M {
-        self.model
+        self.model.get()
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
-        check_start(self.model, t0, state, t_end, self.options.rtol.max(1e-8))?;
+        check_start(self.model.get(), t0, state, t_end, self.options.rtol.max(1e-8))?;
         state.write_y(&mut self.y);
         self.state.clone_from(state);
-        self.t = t0;
-        self.t_end = t_end;
         let span = t_end - t0;
-        self.h = self.options.initial_step.unwrap_or(1e-6 * span).min(span).min(self.options.max_step);
-        self.controller.restart();
-        self.stages.restart();
-        self.need_jac = true;
-        self.need_factor = true;
+        self.h = self.options.initial_step.unwrap_or(1e-6 * span);
         self.stats = RadauStats::default();
-        self.residual.eval(self.model, t0, &self.y, &mut self.f0);
-        self.stats.residual_evaluations += 1;
-        if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
-            let component = format!("the equation of {}", describe_slot(self.model, i));
-            return Err(SimError::NonFinite { t: t0, component });
+        self.begin(t0, t_end)
+    }
+
+    fn model_mut(&mut self) -> Option<&mut M> {
+        self.model.get_mut()
+    }
+
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
+        if self.t >= t_end {
+            return Ok(());
         }
-        Ok(())
+        check_restart(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
+        self.h = self.h.max(self.unclipped);
+        self.begin(self.t, t_end)
+    }
+
+    fn end(&self) -> f64 {
+        self.t_end
     }
 
     fn step(&mut self) -> Result<f64, SimError> {

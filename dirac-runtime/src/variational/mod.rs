@@ -42,7 +42,8 @@ pub use self::work::{VariationalOptions, VariationalStats};
 use crate::algebra::Algebra;
 use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
-use crate::integrator::{Integrator, check_start};
+use crate::held::Held;
+use crate::integrator::{Integrator, check_restart, check_start};
 use crate::model::LagrangeDirac;
 use crate::projection::Projector;
 use crate::state::State;
@@ -52,7 +53,7 @@ pub struct Variational<'m, M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    model: &'m M,
+    model: Held<'m, M>,
     h: f64,
     options: VariationalOptions,
     t0: f64,
@@ -83,7 +84,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// An integrator for `model` with step `h`.
-    pub fn new(model: &'m M, h: f64, options: VariationalOptions) -> Result<Self, SimError> {
+    ///
+    /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
+    /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
+    pub fn new(model: impl Into<Held<'m, M>>, h: f64, options: VariationalOptions) -> Result<Self, SimError> {
+        let model = model.into();
         if h.is_nan() || h <= 0.0 || h.is_infinite() {
             return Err(SimError::InvalidOption {
                 what: "step",
@@ -92,6 +97,7 @@ where
         }
         options.validate()?;
         let sizes = model.sizes();
+        let (work, projector) = (Work::new(model.get()), RefCell::new(Projector::new(model.get())));
         Ok(Variational {
             model,
             h,
@@ -104,9 +110,9 @@ where
             energy0: 0.0,
             state: State::with_sizes(sizes),
             previous: State::with_sizes(sizes),
-            work: Work::new(model),
+            work,
             mass: None,
-            projector: RefCell::new(Projector::new(model)),
+            projector,
             sizes,
             stats: VariationalStats::default(),
         })
@@ -117,6 +123,30 @@ impl<M: LagrangeDirac> Variational<'_, M>
 where
     DefaultAllocator: Storage<M>,
 {
+    /// Steps from `self.state` at `t0` towards `t_end` on a new grid: the energy reference
+    /// and the work of the forces start again, and a separable model's mass matrix is
+    /// factored again (a change of the model may have changed it).
+    fn begin(&mut self, t0: f64, t_end: f64) -> Result<(), SimError> {
+        self.total = self.steps_to(t0, t_end)?;
+        self.taken = 0;
+        self.t = t0;
+        self.t0 = t0;
+        self.t_end = t_end;
+        self.work.work = 0.0;
+        let model = self.model.get();
+        let s = &self.state;
+        self.energy0 = model.energy(t0, &s.q, &s.v, &s.p);
+        self.previous.clone_from(s);
+        self.mass = None;
+        if M::SEPARABLE && self.options.use_structure {
+            let lvv = &mut self.work.blocks.lvv0;
+            model.l_vv(t0, &s.q, &s.v, lvv);
+            self.mass = M::Algebra::dense_qq(lvv).and_then(|matrix| Mass::new(&self.sizes, matrix));
+            model.dl_dq(t0, &s.q, &s.v, &mut self.work.dl_dq);
+        }
+        Ok(())
+    }
+
     /// The number of steps from `t0` to `t_end`, the last one possibly shorter; an error if
     /// the step cannot advance time at that magnitude or the budget does not allow them.
     fn steps_to(&self, t0: f64, t_end: f64) -> Result<usize, SimError> {
@@ -149,7 +179,7 @@ where
     /// a stable run it never approaches.
     fn check_stability(&self) -> Result<(), SimError> {
         let s = &self.state;
-        let lagrangian = self.model.lagrangian(self.t, &s.q, &s.v);
+        let lagrangian = self.model.get().lagrangian(self.t, &s.q, &s.v);
         let kinetic = s.p.dot(&s.v);
         let energy = kinetic - lagrangian;
         let error = (energy - self.energy0 - self.work.work).abs();
@@ -176,31 +206,32 @@ where
     type Stats = VariationalStats;
 
     fn model(&self) -> &M {
-        self.model
+        self.model.get()
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
-        check_start(self.model, t0, state, t_end, 1e-8)?;
-        self.total = self.steps_to(t0, t_end)?;
-        self.taken = 0;
-        self.t = t0;
-        self.t0 = t0;
-        self.t_end = t_end;
-        self.work.work = 0.0;
-        self.energy0 = self.model.energy(t0, &state.q, &state.v, &state.p);
+        check_start(self.model.get(), t0, state, t_end, 1e-8)?;
         self.state.clone_from(state);
-        self.previous.clone_from(state);
         self.work.big_lambda.fill(0.0);
         self.work.gamma.fill(0.0);
         self.stats = VariationalStats::default();
-        self.mass = None;
-        if M::SEPARABLE && self.options.use_structure {
-            let lvv = &mut self.work.blocks.lvv0;
-            self.model.l_vv(t0, &self.state.q, &self.state.v, lvv);
-            self.mass = M::Algebra::dense_qq(lvv).and_then(|matrix| Mass::new(&self.sizes, matrix));
-            self.model.dl_dq(t0, &self.state.q, &self.state.v, &mut self.work.dl_dq);
+        self.begin(t0, t_end)
+    }
+
+    fn model_mut(&mut self) -> Option<&mut M> {
+        self.model.get_mut()
+    }
+
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
+        if self.t >= t_end {
+            return Ok(());
         }
-        Ok(())
+        check_restart(self.model.get(), self.t, &self.state, 1e-8)?;
+        self.begin(self.t, t_end)
+    }
+
+    fn end(&self) -> f64 {
+        self.t_end
     }
 
     /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
@@ -209,11 +240,11 @@ where
         let last = self.taken + 1 == self.total;
         let h = if last { self.t_end - self.t } else { self.h };
         self.previous.clone_from(&self.state);
-        self.model.constraint_matrix(&self.state.q, &mut self.work.a0);
+        self.model.get().constraint_matrix(&self.state.q, &mut self.work.a0);
         self.work.v.copy_from(&self.state.v);
         self.work.big_lambda.copy_from(&self.work.gamma);
         let mut step = Step {
-            model: self.model,
+            model: self.model.get(),
             h,
             t: self.t,
             options: &self.options,
@@ -227,7 +258,7 @@ where
         }
         let qm = &mut self.work.vectors.qm;
         set_axpy::<M>(qm, &self.state.q, 0.5 * h, &self.work.v);
-        self.work.work -= h * self.model.dl_dt(self.t + 0.5 * h, qm, &self.work.v);
+        self.work.work -= h * self.model.get().dl_dt(self.t + 0.5 * h, qm, &self.work.v);
         self.state.q.axpy(h, &self.work.v, 1.0);
         self.stats.steps += 1;
         self.taken += 1;
@@ -240,7 +271,7 @@ where
         if let Some(i) =
             (0..self.sizes.typed::<M>().nq).find(|&i| !(s.q[i].is_finite() && s.p[i].is_finite()))
         {
-            let names = self.model.coordinate_names();
+            let names = self.model.get().coordinate_names();
             return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
         }
         if self.taken.is_multiple_of(16) || self.finished() {
@@ -274,9 +305,9 @@ where
             *x = a * (1.0 - s) + b * s;
         }
         if self.sizes.nc > 0 {
-            self.projector.borrow_mut().project(self.model, &mut out.q, &mut out.v);
+            self.projector.borrow_mut().project(self.model.get(), &mut out.q, &mut out.v);
         }
-        self.model.dl_dv(t, &out.q, &out.v, &mut out.p);
+        self.model.get().dl_dv(t, &out.q, &out.v, &mut out.p);
     }
 
     fn stats(&self) -> VariationalStats {

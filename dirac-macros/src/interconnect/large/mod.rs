@@ -240,7 +240,18 @@ pub fn implementation(
         quote! { const #q: ::core::primitive::usize = 0; }
     });
     let resolutions = model.resolutions(composite);
-    let asserts = super::subsystem_asserts(composite);
+    let mut asserts = super::subsystem_asserts(composite);
+    // Inputs are dispatched by a composite of named subsystems only, so far.
+    asserts.extend(composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        let message = format!(
+            "`{}` has inputs: a composite with arrays of subsystems cannot expose its members' inputs yet",
+            quote!(#ty)
+        );
+        quote_spanned! {ty.span()=>
+            const _: () = ::core::assert!(<#ty as #p::Named>::NAMES.input_count() == 0, #message);
+        }
+    }));
     let bounds = super::bounds(composite);
     let placement = large.placement();
     let shape = large.shape();
@@ -272,6 +283,7 @@ pub fn implementation(
                     constraints: &[],
                     holonomic: 0,
                     ports: &[],
+                    inputs: &[],
                     subsystems: &[],
                 };
             }

@@ -1,0 +1,212 @@
+//! Inputs: `f64` fields declared with `input(...)`, set between steps through the integrator,
+//! which restarts there. References are closed forms of the forced spring `m ẍ = −k x + f`
+//! with `f` held constant over each interval (the motion is harmonic about `f/k`), chained
+//! interval by interval here, independently of dirac.
+
+use dirac::prelude::*;
+
+use crate::zoo::{AdjustableMass, ForcedPair, ForcedSpring};
+
+/// `(x, v)` after `dt` from `(x, v)` under `m ẍ = −k x + f`, `f` constant.
+fn propagate((x, v): (f64, f64), f: f64, (m, k): (f64, f64), dt: f64) -> (f64, f64) {
+    let w = (k / m).sqrt();
+    let xe = f / k;
+    let (s, c) = (w * dt).sin_cos();
+    (xe + (x - xe) * c + v / w * s, -(x - xe) * w * s + v * c)
+}
+
+fn at_rest_at(model: &ForcedSpring, x: f64) -> State<ForcedSpring> {
+    let (q, v) = (VecQ::<ForcedSpring>::from([x]), VecQ::<ForcedSpring>::zeros());
+    consistent_state(model, 0.0, &q, &v, Consistency::default()).expect("consistent")
+}
+
+#[test]
+fn inputs_have_keys_names_and_values() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.5 };
+    assert_eq!(ForcedSpring::F.index(), 0);
+    assert_eq!(ForcedSpring::F.name(), "f");
+    assert_eq!(spring.input_names(), ["f"]);
+    assert_eq!(spring.input(ForcedSpring::F), 0.5);
+    spring.set_input(ForcedSpring::F, -2.0);
+    assert_eq!(spring.f, -2.0);
+    assert_eq!(Input::<ForcedSpring>::checked(1), None);
+    // A model without inputs has none.
+    assert!(crate::zoo::unit_pendulum().input_names().is_empty());
+}
+
+#[test]
+fn a_composite_exposes_its_members_inputs() {
+    let left = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let mut pair = ForcedPair { left: left.clone(), right: ForcedSpring { m: 2.0, k: 5.0, f: 0.0 } };
+    assert_eq!(pair.input_names(), ["left.f", "right.f"]);
+    let right_f = ForcedPair::right_input(ForcedSpring::F);
+    assert_eq!(right_f.index(), 1);
+    assert_eq!(right_f.name(), "right.f");
+    pair.set_input(right_f, 3.0);
+    pair.set_input(ForcedPair::left_input(ForcedSpring::F), -1.0);
+    assert_eq!((pair.left.f, pair.right.f), (-1.0, 3.0));
+    assert_eq!(pair.input(right_f), 3.0);
+}
+
+#[test]
+fn a_held_step_input_gives_the_exact_forced_response() {
+    // f = 0 on [0, 1), f = 2 on [1, 3]: two harmonic arcs about 0 and about f/k.
+    let (m, k, tol) = (1.0, 4.0, 1e-11);
+    let mut spring = ForcedSpring { m, k, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(tol, tol)).expect("valid");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    while !radau.finished() {
+        radau.step().expect("steps");
+    }
+    radau.set_input(ForcedSpring::F, 2.0).expect("an exclusive model");
+    radau.restart_until(3.0).expect("restarts");
+    while !radau.finished() {
+        radau.step().expect("steps");
+    }
+    let expected = propagate(propagate((1.0, 0.0), 0.0, (m, k), 1.0), 2.0, (m, k), 2.0);
+    let s = radau.state();
+    assert_eq!(radau.t(), 3.0);
+    assert!((s.q[0] - expected.0).abs() < 1e-8, "x = {} against {}", s.q[0], expected.0);
+    assert!((s.v[0] - expected.1).abs() < 1e-8, "v = {} against {}", s.v[0], expected.1);
+    assert!((s.p[0] - m * expected.1).abs() < 1e-8);
+}
+
+/// The variational integrator's error at t = 3 under the same held step, with step `h`.
+fn variational_step_error(h: f64) -> f64 {
+    let (m, k) = (1.0, 4.0);
+    let mut spring = ForcedSpring { m, k, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+    let mut vi = Variational::new(&mut spring, h, VariationalOptions::default()).expect("valid");
+    let solution = vi
+        .solve_sampled(0.0, &start, 3.0, 1.0, &Sampling::Times(vec![3.0]), |t, _, model| {
+            model.f = if t < 1.0 { 0.0 } else { 2.0 };
+        })
+        .expect("integrates");
+    let expected = propagate(propagate((1.0, 0.0), 0.0, (m, k), 1.0), 2.0, (m, k), 2.0);
+    (solution.last().expect("a sample").q[0] - expected.0).abs()
+}
+
+#[test]
+fn the_variational_integrator_follows_held_inputs_to_second_order() {
+    let (coarse, fine) = (variational_step_error(2e-3), variational_step_error(1e-3));
+    assert!(fine < 1e-5, "error {fine:e} at h = 1e-3");
+    let order = (coarse / fine).log2();
+    assert!((order - 2.0).abs() < 0.1, "observed order {order} (errors {coarse:e}, {fine:e})");
+}
+
+#[test]
+fn a_sampled_controller_closes_the_loop_exactly() {
+    // f_k = −K x(t_k) − D v(t_k) every T, held: the closed loop of a sampled-data controller,
+    // chained here interval by interval from the closed form.
+    let (m, k, gain, damping, period, t_end) = (1.0, 4.0, 3.0, 0.5, 0.1, 5.0);
+    let law = |x: f64, v: f64| -gain * x - damping * v;
+    let mut reference = vec![(0.0, (1.0, 0.0))];
+    let mut xv = (1.0, 0.0);
+    for step in 1..=50 {
+        xv = propagate(xv, law(xv.0, xv.1), (m, k), period);
+        reference.push((step as f64 * period, xv));
+    }
+    let mut spring = ForcedSpring { m, k, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+    let tol = 1e-11;
+    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(tol, tol)).expect("valid");
+    let times: Vec<f64> = reference.iter().map(|(t, _)| *t).collect();
+    let solution = radau
+        .solve_sampled(0.0, &start, t_end, period, &Sampling::Times(times), |_, s, model| {
+            model.set_input(ForcedSpring::F, law(s.q[0], s.v[0]));
+        })
+        .expect("integrates");
+    assert_eq!(solution.len(), reference.len());
+    let (xs, vs) = (solution.q(ForcedSpring::X), solution.v(ForcedSpring::X));
+    for (i, (t, (x, v))) in reference.iter().enumerate() {
+        assert!((solution.t()[i] - t).abs() < 1e-12);
+        assert!((xs[i] - x).abs() < 1e-8, "x({t}) = {} against {x}", xs[i]);
+        assert!((vs[i] - v).abs() < 1e-8, "v({t}) = {} against {v}", vs[i]);
+    }
+    // The controller acted: without it the amplitude stays 1; the damping term alone would
+    // leave an envelope of about e^(−D t / 2m) = e^(−1.25) ≈ 0.29 at t = 5.
+    let (_, (x_end, _)) = reference.last().copied().expect("samples");
+    assert!(x_end.abs() < 0.4, "closed loop at t = 5: {x_end}");
+}
+
+#[test]
+fn a_composite_is_driven_through_its_members_inputs() {
+    // Joined ends: (m1 + m2) ẍ = −(k1 + k2) x + f1 + f2.
+    let (left, right) = (ForcedSpring { m: 1.0, k: 4.0, f: 0.0 }, ForcedSpring { m: 2.0, k: 5.0, f: 0.0 });
+    let mut pair = ForcedPair { left, right };
+    let q = VecQ::<ForcedPair>::from([0.5, 0.5]);
+    let start = consistent_state(&pair, 0.0, &q, &VecQ::<ForcedPair>::zeros(), Consistency::default())
+        .expect("consistent");
+    let tol = 1e-11;
+    let mut radau = Radau::new(&mut pair, RadauOptions::tolerances(tol, tol)).expect("valid");
+    let right_f = ForcedPair::right_input(ForcedSpring::F);
+    let solution = radau
+        .solve_sampled(0.0, &start, 2.0, 0.5, &Sampling::Times(vec![2.0]), |t, _, model| {
+            model.set_input(right_f, if t < 1.0 { 0.0 } else { 3.0 });
+        })
+        .expect("integrates");
+    let (mass, stiffness) = (3.0, 9.0);
+    let expected = propagate(propagate((0.5, 0.0), 0.0, (mass, stiffness), 1.0), 3.0, (mass, stiffness), 1.0);
+    let end = solution.last().expect("a sample");
+    assert!((end.q[0] - expected.0).abs() < 1e-8, "x = {} against {}", end.q[0], expected.0);
+    assert!((end.q[1] - expected.0).abs() < 1e-8);
+}
+
+#[test]
+fn changing_a_shared_model_is_refused() {
+    let spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+    let mut radau = Radau::new(&spring, RadauOptions::default()).expect("valid");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    radau.step().expect("steps");
+    let error = radau.set_input(ForcedSpring::F, 1.0).expect_err("a shared model");
+    assert!(matches!(error, SimError::SharedModel { .. }), "{error}");
+    assert!(error.to_string().contains("&mut model"), "{error}");
+    let sampled = Radau::new(&spring, RadauOptions::default()).expect("valid").solve_sampled(
+        0.0,
+        &start,
+        1.0,
+        0.1,
+        &Sampling::Steps,
+        |_, _, _| {},
+    );
+    assert!(matches!(sampled, Err(SimError::SharedModel { t: 0.0 })));
+}
+
+#[test]
+fn an_input_in_the_mass_matrix_cannot_change_while_the_mass_moves() {
+    let mut model = AdjustableMass { m: 1.0, dm: 0.0, k: 4.0 };
+    let (q, v) = (VecQ::<AdjustableMass>::from([0.0]), VecQ::<AdjustableMass>::from([1.0]));
+    let start = consistent_state(&model, 0.0, &q, &v, Consistency::default()).expect("consistent");
+    let mut radau = Radau::new(&mut model, RadauOptions::default()).expect("valid");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    radau.step().expect("steps");
+    let t = radau.t();
+    let error = radau.update(|m| m.dm = 0.5).expect_err("the momentum no longer matches");
+    match &error {
+        SimError::MomentumChanged { t: at, equation, .. } => {
+            assert_eq!(*at, t);
+            assert!(equation.contains("`x`"), "{equation}");
+        }
+        other => panic!("expected MomentumChanged, got {other}"),
+    }
+    // At rest p = (m + dm) v = 0 whatever dm is: the same change is allowed there.
+    let mut resting = AdjustableMass { m: 1.0, dm: 0.0, k: 4.0 };
+    let start = consistent_state(&resting, 0.0, &q, &VecQ::<AdjustableMass>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut radau = Radau::new(&mut resting, RadauOptions::default()).expect("valid");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    radau.update(|m| m.dm = 0.5).expect("p = 0 still matches");
+}
+
+#[test]
+fn a_sampled_run_rejects_a_bad_period() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+    let mut radau = Radau::new(&mut spring, RadauOptions::default()).expect("valid");
+    for period in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let result = radau.solve_sampled(0.0, &start, 1.0, period, &Sampling::Steps, |_, _, _| {});
+        assert!(matches!(result, Err(SimError::InvalidOption { what: "period", .. })), "{period}");
+    }
+}
