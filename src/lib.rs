@@ -73,6 +73,9 @@ pub use dirac_runtime::algebra;
 /// larger than one machine split into independent jobs.
 pub use dirac_runtime::ensemble;
 
+/// Input sources read by time: tables of samples, held or interpolated.
+pub use dirac_runtime::sources;
+
 /// Everything a model file needs: `use dirac::prelude::*;`.
 ///
 /// It includes the bound generic code over any model needs, so a helper over every model

@@ -192,3 +192,27 @@ fn steps_with_inputs_set_between_them_do_not_allocate() {
     let mut vi = Variational::new(&mut pair, 0.01, VariationalOptions::default()).expect("valid");
     assert_eq!(allocations_with_inputs(&mut vi, &s, right_f), 0, "variational, composite");
 }
+
+/// Inputs driven inside the steps: a source of time and a continuous feedback with its
+/// finite-difference Jacobian, on Radau.
+#[test]
+fn steps_with_driven_inputs_do_not_allocate() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let q = VecQ::<ForcedSpring>::from([1.0]);
+    let s = consistent_state(&spring, 0.0, &q, &VecQ::<ForcedSpring>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut law = |t: f64, state: &State<ForcedSpring>, model: &mut ForcedSpring| {
+        model.f = 0.3 * t.sin() - 5.0 * state.q[0] - 0.8 * state.v[0];
+    };
+    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    radau.drive_feedback(&mut law).expect("a dense model");
+    radau.start(0.0, &s, 100.0).expect("starts");
+    for _ in 0..5 {
+        radau.step().expect("steps");
+    }
+    let before = allocations();
+    for _ in 0..200 {
+        radau.step().expect("steps");
+    }
+    assert_eq!(allocations() - before, 0);
+}

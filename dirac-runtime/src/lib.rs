@@ -51,6 +51,8 @@ pub mod radau;
 mod recorder;
 /// Simulation results with named series.
 pub mod solution;
+/// Input sources read by time: tables held or interpolated.
+pub mod sources;
 /// The flat Jacobian in compressed sparse columns.
 pub mod sparse;
 /// How much stack a model's integrators take.

@@ -47,7 +47,7 @@ where
     #[allow(clippy::needless_range_loop)]
     pub fn error<S: NewtonSolver<M, M::Algebra>>(
         &mut self,
-        step: Step<'_, M, S>,
+        step: Step<'_, '_, M, S>,
         z: &[VecY<M>; 3],
         f0: &VecY<M>,
         refine: bool,

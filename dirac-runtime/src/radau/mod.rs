@@ -11,6 +11,7 @@
 
 mod controller;
 mod dense;
+mod drive;
 mod estimate;
 mod options;
 mod residual;
@@ -21,6 +22,7 @@ use nalgebra::{Complex, DefaultAllocator};
 
 use self::controller::Controller;
 use self::dense::Dense;
+use self::drive::Feedback;
 use self::estimate::Estimator;
 use self::options::Tolerances;
 pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
@@ -63,8 +65,11 @@ where
     /// `f(t, y)`.
     f0: VecY<M>,
     weights: VecY<M>,
-    /// Evaluates the flat residual without allocating.
-    residual: Residual<M>,
+    /// Evaluates the flat residual without allocating, the inputs set first when driven.
+    residual: Residual<'m, M>,
+    /// With a drive that feeds the state back: the residual blocks at the current inputs and
+    /// at perturbed ones, and the perturbed state, for the inputs' part of the Jacobian.
+    feedback: Option<Box<Feedback<M>>>,
     stages: Stages<M>,
     estimator: Estimator<M>,
     dense: Dense<M>,
@@ -137,6 +142,7 @@ where
             f0: sizes.zeros_y::<M>(),
             weights: sizes.zeros_y::<M>(),
             residual: Residual::new(&sizes),
+            feedback: None,
             stages: Stages::new(sizes),
             estimator: Estimator::new(sizes),
             dense: Dense::new(sizes),
@@ -241,8 +247,12 @@ where
     }
 
     fn evaluate_jacobian(&mut self) {
+        self.residual.apply(&mut self.model, self.t, &self.y);
         let s = &self.state;
         self.model.jacobian_blocks(self.t, &s.q, &s.v, &s.lambda, &mut self.jac);
+        if let Some(feedback) = &mut self.feedback {
+            feedback.add_columns(&mut self.model, &mut self.residual, self.t, &self.y, &mut self.jac);
+        }
         self.stats.jacobian_evaluations += 1;
         self.need_jac = false;
         self.jac_current = true;
@@ -260,7 +270,7 @@ where
         self.stages.restart();
         self.need_jac = true;
         self.need_factor = true;
-        self.residual.eval(self.model.get(), t0, &self.y, &mut self.f0);
+        self.residual.eval(&mut self.model, t0, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
             let component = format!("the equation of {}", describe_slot(self.model.get(), i));
@@ -286,17 +296,8 @@ where
         let Radau {
             model, residual, solver, t, h, y, weights, stats, stages, eig, tolerances, options, ..
         } = self;
-        let step = Step {
-            model: model.get(),
-            residual,
-            solver,
-            t: *t,
-            h: *h,
-            y,
-            weights,
-            error_norm: options.error_norm,
-            stats,
-        };
+        let step =
+            Step { model, residual, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
         stages.iterate(step, eig, tolerances.fnewt, options.max_newton_iterations)
     }
 
@@ -305,17 +306,8 @@ where
         let Radau {
             model, residual, solver, t, h, y, weights, stats, stages, estimator, f0, options, ..
         } = self;
-        let step = Step {
-            model: model.get(),
-            residual,
-            solver,
-            t: *t,
-            h: *h,
-            y,
-            weights,
-            error_norm: options.error_norm,
-            stats,
-        };
+        let step =
+            Step { model, residual, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
         estimator.error(step, &stages.z, f0, refine)
     }
 
@@ -333,7 +325,7 @@ where
         }
         self.t += h;
         self.stats.steps += 1;
-        self.residual.eval(self.model.get(), self.t, &self.y, &mut self.f0);
+        self.residual.eval(&mut self.model, self.t, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         self.check_finite(self.t)?;
         let h_new = self.controller.next_step(h, quot, self.options.max_step);

@@ -9,6 +9,7 @@ use super::options::{ErrorNorm, RadauStats, norm};
 use super::residual::Residual;
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
 use crate::dims::{Sizes, Storage, VecY};
+use crate::held::Held;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
@@ -22,12 +23,12 @@ pub(crate) enum Outcome {
 }
 
 /// What the iteration needs from the step it solves.
-pub(crate) struct Step<'a, M: LagrangeDirac, S>
+pub(crate) struct Step<'a, 'm, M: LagrangeDirac, S>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub model: &'a M,
-    pub residual: &'a mut Residual<M>,
+    pub model: &'a mut Held<'m, M>,
+    pub residual: &'a mut Residual<'m, M>,
     pub solver: &'a mut S,
     pub t: f64,
     pub h: f64,
@@ -104,7 +105,7 @@ where
     /// Iterates to convergence, or says by how much to shrink the step.
     pub fn iterate<S: NewtonSolver<M, M::Algebra>>(
         &mut self,
-        mut step: Step<'_, M, S>,
+        mut step: Step<'_, '_, M, S>,
         eig: &Eigen,
         fnewt: f64,
         max_iterations: usize,
@@ -161,7 +162,7 @@ where
     }
 
     /// The stage residuals `f(t + c_k h, y + z_k)`; the reason to shrink if one is not finite.
-    fn residuals<S>(&mut self, step: &mut Step<'_, M, S>) -> Option<&'static str>
+    fn residuals<S>(&mut self, step: &mut Step<'_, '_, M, S>) -> Option<&'static str>
     where
         DefaultAllocator: Storage<M>,
     {
