@@ -56,8 +56,8 @@ pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
     Algebra, Consistency, Constraint, Coordinate, Dense, DenseModel, Dimensions, DiracStructure, Equations,
     ErrorNorm, Fixed, Held, Input, Integrator, JacobianBlocks, LagrangeDirac, Layout, MatCQ, MatKK, MatQQ,
-    MatYY, Membership, Named, Names, OperationCounts, Radau, RadauOptions, RadauStats, ResidualBlocks,
-    Sampling, SimError, Sizes, Slot, Solution, SparseJacobian, State, Storage, Variational,
+    MatYY, Membership, Named, Names, OperationCounts, Output, Radau, RadauOptions, RadauStats,
+    ResidualBlocks, Sampling, SimError, Sizes, Slot, Solution, SparseJacobian, State, Storage, Variational,
     VariationalOptions, VariationalStats, VecC, VecH, VecK, VecQ, VecY, consistent_state,
 };
 
@@ -110,7 +110,7 @@ pub mod prelude {
     pub use crate::{
         Algebra, Consistency, Constraint, Coordinate, DenseModel, Dimensions, DiracStructure, Equations,
         ErrorNorm, Fixed, Input, Integrator, Interconnection, JacobianBlocks, LagrangeDirac, MatCQ, MatQQ,
-        MatYY, Named, Radau, RadauOptions, ResidualBlocks, Sampling, SimError, Sizes, Solution,
+        MatYY, Named, Output, Radau, RadauOptions, ResidualBlocks, Sampling, SimError, Sizes, Solution,
         SparseJacobian, State, Storage, Variational, VariationalOptions, VecC, VecH, VecQ, VecY,
         consistent_state,
     };

@@ -8,8 +8,8 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
 use crate::symbol::{
-    CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, PORT,
-    PORTS,
+    CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT,
+    PORT, PORTS,
 };
 
 /// A model as written by the user.
@@ -28,6 +28,8 @@ pub struct Model<'a> {
     pub forces: Vec<ForceDecl>,
     /// `define(name) = expr`, in the order written.
     pub defines: Vec<DefineDecl>,
+    /// `output(name) = expr`, in the order written.
+    pub outputs: Vec<DefineDecl>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
@@ -89,6 +91,7 @@ impl<'a> Model<'a> {
             coordinates: Vec::new(),
             ports: Vec::new(),
             inputs: Vec::new(),
+            outputs: Vec::new(),
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
@@ -214,16 +217,17 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 model.inputs.extend(names.iter().map(IdentExt::unraw));
             }
             LARGE => model.large = true,
-            DEFINE => {
+            DEFINE | OUTPUT => {
                 let content;
                 syn::parenthesized!(content in input);
                 let name = content.parse::<Ident>()?.unraw();
                 if !content.is_empty() {
-                    return Err(content.error("expected one name: `define(name) = expr`"));
+                    return Err(content.error(format!("expected one name: `{key}(name) = expr`")));
                 }
                 input.parse::<Token![=]>()?;
                 let expr: Expr = input.parse()?;
-                model.defines.push(DefineDecl { name, expr });
+                let list = if key == DEFINE { &mut model.defines } else { &mut model.outputs };
+                list.push(DefineDecl { name, expr });
             }
             FORCE => {
                 let content;

@@ -36,7 +36,7 @@ fn check_required(cx: &Ctxt, model: &Model<'_>) {
     }
 }
 
-/// Parameters, coordinates, velocities, constraint names and definitions share one namespace,
+/// Parameters, coordinates, velocities, constraint names, definitions and outputs share one namespace,
 /// without `t`.
 fn check_names(cx: &Ctxt, model: &Model<'_>) {
     let mut seen: HashMap<String, &'static str> = HashMap::new();
@@ -76,6 +76,9 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
     }
     for d in &model.defines {
         declare(&d.name, "definition");
+    }
+    for o in &model.outputs {
+        declare(&o.name, "output");
     }
 }
 

@@ -86,6 +86,7 @@ struct KeyConstants {
     coordinates: Vec<(syn::Ident, String)>,
     constraints: Vec<(syn::Ident, String)>,
     inputs: Vec<(syn::Ident, String)>,
+    outputs: Vec<(syn::Ident, String)>,
 }
 
 /// `theta_1` → `THETA_1`, `vTheta` → `V_THETA`.
@@ -124,7 +125,8 @@ fn key_constants(cx: &Ctxt, model: &Model<'_>) -> KeyConstants {
     let coordinates = model.coordinates.iter().filter_map(|c| make(&c.name, c.name.to_string())).collect();
     let constraints = model.ordered_constraints().into_iter().filter_map(|c| make(c.ident, c.name)).collect();
     let inputs = model.inputs.iter().filter_map(|u| make(u, u.to_string())).collect();
-    KeyConstants { coordinates, constraints, inputs }
+    let outputs = model.outputs.iter().filter_map(|o| make(&o.name, o.name.to_string())).collect();
+    KeyConstants { coordinates, constraints, inputs, outputs }
 }
 
 fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
@@ -146,12 +148,18 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
         let doc = format!("The input `{name}`: set it between steps through the integrator.");
         quote! { #[doc = #doc] #vis const #c: #p::Input<Self> = #p::Input::new(#k); }
     });
+    let outputs = names.outputs.iter().enumerate().map(|(k, (c, name))| {
+        let k = proc_macro2::Literal::usize_unsuffixed(k);
+        let doc = format!("The output `{name}`: its series in a solution, its value from `outputs`.");
+        quote! { #[doc = #doc] #vis const #c: #p::Output<Self> = #p::Output::new(#k); }
+    });
     quote! {
         #[automatically_derived]
         impl #ident {
             #(#coordinates)*
             #(#constraints)*
             #(#inputs)*
+            #(#outputs)*
         }
     }
 }
@@ -281,6 +289,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
     let ports = sym.ports.iter().map(|&i| proc_macro2::Literal::usize_unsuffixed(i));
     let h = proc_macro2::Literal::usize_unsuffixed(sym.h());
     let inputs = inputs.iter().map(ToString::to_string);
+    let outputs = sym.outputs.iter().map(|(name, _)| name);
     quote! {
         #[automatically_derived]
         impl #p::Named for #ident {
@@ -291,6 +300,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
                 holonomic: #h,
                 ports: &[#(#ports),*],
                 inputs: &[#(#inputs),*],
+                outputs: &[#(#outputs),*],
                 subsystems: &[],
             };
         }
@@ -334,6 +344,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 holonomic: 0,
                 ports: &[],
                 inputs: &[],
+                outputs: &[],
                 subsystems: &[],
             };
         }

@@ -40,6 +40,8 @@ pub struct SymModel {
     /// `define(name) = …`: each name with its expression, in order (the symbol
     /// [`Sym::Define`] `k` is bound to the expression).
     pub defines: Vec<(String, Id)>,
+    /// `output(name) = …`: each name with its expression, in order.
+    pub outputs: Vec<(String, Id)>,
 }
 
 impl SymModel {
@@ -81,6 +83,7 @@ impl SymModel {
             phi: Vec::new(),
             constraints: Vec::new(),
             defines: Vec::new(),
+            outputs: Vec::new(),
         };
         let mut scope = sm.declare_symbols();
         sm.lower_defines(cx, model, &mut scope);
@@ -96,6 +99,11 @@ impl SymModel {
             if let (Some(x), Some(i)) = (lowered, index) {
                 sm.force[i] = x;
             }
+        }
+        for o in &model.outputs {
+            let what = format!("the output `{}`", o.name);
+            let lowered = lw.lower(&o.expr, Context { what: &what, ..all });
+            sm.outputs.push((o.name.to_string(), lowered.unwrap_or(zero)));
         }
         sm.lower_constraints(cx, model, &scope);
         sm.lagrangian = lagrangian?;

@@ -22,12 +22,14 @@ pub const DEFINE: &str = "define";
 pub const LARGE: &str = "large";
 /// `input(u, ...)`: `f64` fields the simulation sets while it runs (a torque, a voltage).
 pub const INPUT: &str = "input";
+/// `output(name) = expr`: a named quantity computed from the state, recorded by name.
+pub const OUTPUT: &str = "output";
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
 /// Every key a `#[dirac(...)]` attribute of a model accepts, for error messages.
 pub const MODEL_KEYS: &[&str] =
-    &[COORDINATES, PORT, INPUT, DEFINE, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE, LARGE];
+    &[COORDINATES, PORT, INPUT, OUTPUT, DEFINE, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE, LARGE];
 
 /// `connect(a.x, b.y)`: an interconnection of two ports, `v_a.x = v_b.y` and `f_a.x + f_b.y = 0`.
 pub const CONNECT: &str = "connect";

@@ -98,66 +98,91 @@ macro_rules! key_impls {
 key_impls!(Coordinate, "coordinate", coordinate_names, NQ);
 key_impls!(Constraint, "constraint", constraint_names, NC);
 
-/// An input of model `M` (`#[dirac(input(u))]`): an `f64` field that the simulation sets while
-/// it runs. A composite's inputs are its subsystems', in field order (`Robot::arm_input(Arm::TAU)`).
-pub struct Input<M: ?Sized> {
-    index: usize,
-    model: PhantomData<fn() -> M>,
+macro_rules! model_key {
+    ($(#[$doc:meta])* $key:ident, $what:literal, $count:ident, $names:ident, $example:literal) => {
+        $(#[$doc])*
+        pub struct $key<M: ?Sized> {
+            index: usize,
+            model: PhantomData<fn() -> M>,
+        }
+
+        impl<M: Named + ?Sized> $key<M> {
+            #[doc = concat!("The ", $what, " at this position, for generated code: it panics (at")]
+            /// compile time in a `const`) if the model has no such position. Use the named
+            /// constants the derive emits, or `checked`.
+            #[doc(hidden)]
+            pub const fn new(index: usize) -> Self {
+                assert!(index < M::NAMES.$count(), concat!("the model has no such ", $what));
+                Self { index, model: PhantomData }
+            }
+
+            #[doc = concat!("The ", $what, " at this position, if the model has one.")]
+            pub const fn checked(index: usize) -> Option<Self> {
+                if index < M::NAMES.$count() { Some(Self { index, model: PhantomData }) } else { None }
+            }
+
+            #[doc = concat!("The full dotted name of this ", $what, ", such as `", $example, "`.")]
+            pub fn name(self) -> String {
+                M::NAMES.$names().swap_remove(self.index)
+            }
+        }
+
+        impl<M: ?Sized> $key<M> {
+            /// The key at this position, for generated code that has checked it against the
+            /// model. Not part of the public API.
+            #[doc(hidden)]
+            pub const fn unchecked(index: usize) -> Self {
+                Self { index, model: PhantomData }
+            }
+
+            #[doc = concat!("The position of this ", $what, " among the model's.")]
+            pub const fn index(self) -> usize {
+                self.index
+            }
+        }
+
+        impl<M: ?Sized> Clone for $key<M> {
+            fn clone(&self) -> Self {
+                *self
+            }
+        }
+
+        impl<M: ?Sized> Copy for $key<M> {}
+
+        impl<M: ?Sized> PartialEq for $key<M> {
+            fn eq(&self, other: &Self) -> bool {
+                self.index == other.index
+            }
+        }
+
+        impl<M: ?Sized> Eq for $key<M> {}
+
+        impl<M: ?Sized> fmt::Debug for $key<M> {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                write!(f, "{}({})", stringify!($key), self.index)
+            }
+        }
+    };
 }
 
-impl<M: Named + ?Sized> Input<M> {
-    /// The input at this position, for generated code: it panics (at compile time in a
-    /// `const`) if the model has no such input. Use the named constants the derive emits, or
-    /// `checked`.
-    #[doc(hidden)]
-    pub const fn new(index: usize) -> Self {
-        assert!(index < M::NAMES.input_count(), "the model has no such input");
-        Self { index, model: PhantomData }
-    }
+model_key!(
+    /// An input of model `M` (`#[dirac(input(u))]`): an `f64` field that the simulation sets
+    /// while it runs. A composite's inputs are its subsystems', in field order
+    /// (`Robot::arm_input(Arm::TAU)`).
+    Input,
+    "input",
+    input_count,
+    input_names,
+    "motor.voltage"
+);
 
-    /// The input at this position, if the model has one.
-    pub const fn checked(index: usize) -> Option<Self> {
-        if index < M::NAMES.input_count() { Some(Self { index, model: PhantomData }) } else { None }
-    }
-
-    /// The full dotted name of this input, such as `motor.voltage`.
-    pub fn name(self) -> String {
-        M::NAMES.input_names().swap_remove(self.index)
-    }
-}
-
-impl<M: ?Sized> Input<M> {
-    /// The key at this position, for generated code that has checked it against the model.
-    /// Not part of the public API.
-    #[doc(hidden)]
-    pub const fn unchecked(index: usize) -> Self {
-        Self { index, model: PhantomData }
-    }
-
-    /// The position of this input among the model's inputs.
-    pub const fn index(self) -> usize {
-        self.index
-    }
-}
-
-impl<M: ?Sized> Clone for Input<M> {
-    fn clone(&self) -> Self {
-        *self
-    }
-}
-
-impl<M: ?Sized> Copy for Input<M> {}
-
-impl<M: ?Sized> PartialEq for Input<M> {
-    fn eq(&self, other: &Self) -> bool {
-        self.index == other.index
-    }
-}
-
-impl<M: ?Sized> Eq for Input<M> {}
-
-impl<M: ?Sized> fmt::Debug for Input<M> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Input({})", self.index)
-    }
-}
+model_key!(
+    /// An output of model `M` (`#[dirac(output(name) = …)]`): a quantity computed from the
+    /// state, recorded in solutions by name. A composite's outputs are its subsystems', in
+    /// field order (`Robot::arm_output(Arm::TIP_X)`).
+    Output,
+    "output",
+    output_count,
+    output_names,
+    "arm.tip_x"
+);

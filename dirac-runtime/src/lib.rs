@@ -72,7 +72,7 @@ pub use error::SimError;
 pub use held::Held;
 pub use init::{Consistency, consistent_state};
 pub use integrator::Integrator;
-pub use keys::{Constraint, Coordinate, Input};
+pub use keys::{Constraint, Coordinate, Input, Output};
 pub use layout::{Layout, Slot};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
@@ -99,7 +99,7 @@ pub mod __private {
     pub use crate::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::dims::Storage;
     pub use crate::dims::{Dimensions, Fixed, MatYY, Sizes, VecC, VecH, VecQ, VecY};
-    pub use crate::keys::{Constraint, Coordinate, Input};
+    pub use crate::keys::{Constraint, Coordinate, Input, Output};
     pub use crate::model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
     pub use crate::names::{Named, Names, ResolveError, Resolved, Subsystem};
     pub use crate::sparse::SparseJacobian;

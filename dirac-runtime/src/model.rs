@@ -250,6 +250,20 @@ where
         Self::NAMES.input_names()
     }
 
+    /// The full dotted name of every output (`arm.tip_x` in a composite), in the order of the
+    /// model's [`Output`](crate::Output) keys.
+    fn output_names(&self) -> Vec<String> {
+        Self::NAMES.output_names()
+    }
+
+    /// The model's outputs at `(t, q, v)`, into `out` (one value per output, in the order of
+    /// their keys). The derive implements it for models with outputs; for a model without,
+    /// there is nothing to write.
+    fn outputs(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(out.is_empty(), "outputs: the model has none, so the output slice must be empty");
+    }
+
     /// The value of input `k`, the position of an [`Input`] key. The derive implements it for
     /// models with inputs; it panics if the model has no input `k`.
     fn input_value(&self, k: usize) -> f64 {

@@ -29,6 +29,8 @@ pub struct Names {
     pub ports: &'static [usize],
     /// The model's own inputs (`input(u, ...)`: `f64` fields set while it runs).
     pub inputs: &'static [&'static str],
+    /// The model's own outputs (`output(name) = …`).
+    pub outputs: &'static [&'static str],
     /// The subsystems of a composite, in field order.
     pub subsystems: &'static [Subsystem],
 }
@@ -156,19 +158,45 @@ impl Names {
         count
     }
 
+    /// The number of outputs of the model and its subsystems, at any depth. Usable in `const`
+    /// items.
+    pub const fn output_count(&self) -> usize {
+        let mut count = self.outputs.len();
+        let mut i = 0;
+        while i < self.subsystems.len() {
+            count += self.subsystems[i].names.output_count();
+            i += 1;
+        }
+        count
+    }
+
     /// Every input's full dotted name, in the order of the model's input keys: its
     /// subsystems' in field order, then its own.
     pub fn input_names(&self) -> Vec<String> {
         let mut out = Vec::new();
-        self.collect_inputs("", &mut out);
+        self.collect_last("", &mut out, &|n| n.inputs);
         out
     }
 
-    fn collect_inputs(&self, prefix: &str, out: &mut Vec<String>) {
+    /// Every output's full dotted name, in the order of the model's output keys: its
+    /// subsystems' in field order, then its own.
+    pub fn output_names(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        self.collect_last("", &mut out, &|n| n.outputs);
+        out
+    }
+
+    /// The subsystems' names, then the model's own.
+    fn collect_last(
+        &self,
+        prefix: &str,
+        out: &mut Vec<String>,
+        pick: &dyn Fn(&Names) -> &'static [&'static str],
+    ) {
         for sub in self.subsystems {
-            sub.names.collect_inputs(&format!("{prefix}{}.", sub.field), out);
+            sub.names.collect_last(&format!("{prefix}{}.", sub.field), out, pick);
         }
-        out.extend(self.inputs.iter().map(|n| format!("{prefix}{n}")));
+        out.extend(pick(self).iter().map(|n| format!("{prefix}{n}")));
     }
 
     /// Every coordinate's full dotted name, in the order of `q`.
@@ -232,6 +260,7 @@ mod tests {
         holonomic: 0,
         ports: &[1],
         inputs: &["force"],
+        outputs: &["energy"],
         subsystems: &[],
     };
     static RIGHT: Names = Names {
@@ -241,6 +270,7 @@ mod tests {
         holonomic: 0,
         ports: &[0],
         inputs: &[],
+        outputs: &[],
         subsystems: &[],
     };
     static CHAIN: Names = Names {
@@ -250,6 +280,7 @@ mod tests {
         holonomic: 0,
         ports: &[],
         inputs: &[],
+        outputs: &[],
         subsystems: &[
             Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },
             Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0, u_offset: 1 },
@@ -262,6 +293,7 @@ mod tests {
         assert_eq!(COUNT, 1);
         assert_eq!(CHAIN.input_names(), ["left.force"]);
         assert_eq!(RIGHT.input_names(), Vec::<String>::new());
+        assert_eq!(CHAIN.output_names(), ["left.energy"]);
     }
 
     #[test]

@@ -83,6 +83,7 @@ where
             av: sizes.zeros_c::<M>(),
             phi: sizes.zeros_h::<M>(),
             forces: sizes.zeros_q::<M>(),
+            outputs: vec![0.0; layout.outputs],
         };
         let table = Table { layout, columns, scratch };
         let buffer = State::with_sizes(sizes);
@@ -176,6 +177,7 @@ where
     av: VecC<M>,
     phi: VecH<M>,
     forces: VecQ<M>,
+    outputs: Vec<f64>,
 }
 
 impl<M: LagrangeDirac> Table<M>
@@ -205,6 +207,10 @@ where
         }
         for (k, &i) in l.ports.iter().enumerate() {
             self.columns[l.port(k)].push(w.forces[i]);
+        }
+        model.outputs(t, &s.q, &s.v, &mut w.outputs);
+        for (k, &y) in w.outputs.iter().enumerate() {
+            self.columns[l.output(k)].push(y);
         }
     }
 }

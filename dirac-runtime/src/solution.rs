@@ -7,7 +7,7 @@ use std::marker::PhantomData;
 use nalgebra::DefaultAllocator;
 
 use crate::dims::{Sizes, Storage};
-use crate::keys::{Constraint, Coordinate};
+use crate::keys::{Constraint, Coordinate, Output};
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::state::State;
@@ -25,12 +25,14 @@ pub enum Sampling {
 }
 
 /// Where each series of a solution sits: `t`, the state's slots in the order of [`Layout`],
-/// the derived quantities, then the effort at each port.
+/// the derived quantities, the effort at each port, then the model's outputs.
 pub(crate) struct Columns {
     /// Where the state's parts sit among its slots.
     state: Layout,
     /// The ports' coordinate indices.
     pub ports: Vec<usize>,
+    /// The number of the model's outputs.
+    pub outputs: usize,
 }
 
 impl Columns {
@@ -44,7 +46,8 @@ impl Columns {
         DefaultAllocator: Storage<M>,
     {
         let ports = model.ports().into_iter().map(|c| c.index()).collect();
-        let columns = Columns { state: Layout::new(model.sizes()), ports };
+        let outputs = model.output_names();
+        let columns = Columns { state: Layout::new(model.sizes()), ports, outputs: outputs.len() };
         let coordinates = model.coordinate_names();
         let mut names = vec!["t".to_owned()];
         names.extend(coordinates.iter().cloned());
@@ -53,6 +56,7 @@ impl Columns {
         names.extend(model.constraint_names().iter().map(|c| format!("lambda({c})")));
         names.extend(Self::DERIVED.iter().map(|s| (*s).to_owned()));
         names.extend(columns.ports.iter().map(|&i| format!("f({})", coordinates[i])));
+        names.extend(outputs.iter().map(|o| format!("out({o})")));
         (columns, names)
     }
 
@@ -69,6 +73,11 @@ impl Columns {
     /// The column of the effort at port `k` (an index into `ports`).
     pub fn port(&self, k: usize) -> usize {
         1 + self.state.len + Self::DERIVED.len() + k
+    }
+
+    /// The column of output `k`.
+    pub fn output(&self, k: usize) -> usize {
+        1 + self.state.len + Self::DERIVED.len() + self.ports.len() + k
     }
 }
 
@@ -152,6 +161,11 @@ where
     /// The multiplier of constraint `k`.
     pub fn lambda(&self, k: Constraint<M>) -> &[f64] {
         &self.columns[self.layout.slot(self.layout.state.lambda + k.index())]
+    }
+
+    /// The series of an output (`#[dirac(output(name) = …)]`), also the column `out(name)`.
+    pub fn output(&self, key: Output<M>) -> &[f64] {
+        &self.columns[self.layout.output(key.index())]
     }
 
     /// The generalised energy `E = ⟨p, v⟩ − L`.

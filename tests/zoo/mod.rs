@@ -79,10 +79,12 @@ pub struct DrivenOscillator {
     pub w: f64,
 }
 
-/// A mass on a spring driven by the input force `f`: `m ẍ = −k x + f`.
+/// A mass on a spring driven by the input force `f`: `m ẍ = −k x + f`. Its output `energy`
+/// is the energy written out by hand, and `stretch` is `k x`, the spring's force.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(coordinates(x => v), port(x), input(f))]
 #[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x, force(x) = f)]
+#[dirac(output(energy) = 0.5 * m * v * v + 0.5 * k * x * x, output(stretch) = k * x)]
 pub struct ForcedSpring {
     pub m: f64,
     pub k: f64,

@@ -12,7 +12,7 @@ use quote::quote;
 
 use self::signatures::{
     Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DT, DL_DV, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC,
-    JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VV, LAGRANGIAN, Out, RESIDUAL,
+    JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VV, LAGRANGIAN, OUTPUTS, Out, RESIDUAL,
     RESIDUAL_BLOCKS, Signature,
 };
 use crate::blocks::Blocks;
@@ -96,7 +96,16 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         (L_VT, vector(&out, &b.l_vt)),
         (DL_DT, vec![Assign::set(quote! { value }, b.dl_dt)]),
     ];
-    let methods = table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
+    let mut methods: TokenStream =
+        table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
+    if !model.outputs.is_empty() {
+        let values: Vec<Id> = model.outputs.iter().map(|(_, id)| *id).collect();
+        let count = values.len();
+        let check = quote! {
+            ::core::assert_eq!(out.len(), #count, "outputs: the output slice must hold one value per output");
+        };
+        methods.extend(e.method(&OUTPUTS, &vector(&out, &values), check));
+    }
     Generated { methods, sparse: e.csc_jacobian(&b.flat_jacobian), counts }
 }
 

@@ -94,6 +94,8 @@ pub const JACOBIAN: Signature = method("jacobian", &[T, Y], Out::MatYY);
 
 /// `SparseJacobian::jacobian_csc`, which primitives implement.
 pub const JACOBIAN_CSC: Signature = method("jacobian_csc", &[T, Y], Out::Values);
+/// The model's outputs, in the order declared; emitted for models that have outputs.
+pub const OUTPUTS: Signature = method("outputs", &[T, Q, V], Out::Values);
 
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 17] = [

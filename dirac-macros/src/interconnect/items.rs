@@ -42,6 +42,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 holonomic: 0,
                 ports: &[],
                 inputs: &[],
+                outputs: &[],
                 subsystems: &[#(#subsystems),*],
             };
         }
@@ -51,12 +52,58 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
 /// Where subsystem `i`'s inputs start among the composite's: the input counts of the
 /// subsystems before it, a constant expression.
 pub fn input_offset(composite: &Composite<'_>, i: usize) -> TokenStream {
+    offset(composite, i, &format_ident!("input_count"))
+}
+
+/// Where subsystem `i`'s outputs start among the composite's.
+pub fn output_offset(composite: &Composite<'_>, i: usize) -> TokenStream {
+    offset(composite, i, &format_ident!("output_count"))
+}
+
+fn offset(composite: &Composite<'_>, i: usize, count: &syn::Ident) -> TokenStream {
     let p = rt();
     let before = composite.subsystems[..i].iter().map(|s| {
         let ty = &s.ty;
-        quote! { + <#ty as #p::Named>::NAMES.input_count() }
+        quote! { + <#ty as #p::Named>::NAMES.#count() }
     });
     quote! { 0 #(#before)* }
+}
+
+/// `outputs` of a composite: each subsystem's outputs at its offset, from its own `q` and `v`.
+pub fn output_method(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (field, ty) = (&s.ident, &s.ty);
+        let slot = format_ident!("__SLOT{}", i);
+        let start = output_offset(composite, i);
+        quote! {{
+            let (start, count) = (#start, <#ty as #p::Named>::NAMES.output_count());
+            if count > 0 {
+                self.#field.outputs(
+                    t,
+                    &#p::gather_q::<#ty, Self>(q, &#slot),
+                    &#p::gather_q::<#ty, Self>(v, &#slot),
+                    &mut out[start..start + count],
+                );
+            }
+        }}
+    });
+    quote! {
+        fn outputs(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(),
+                <Self as #p::Named>::NAMES.output_count(),
+                "outputs: the output slice must hold one value per output"
+            );
+            #(#parts)*
+        }
+    }
 }
 
 /// `input_value` and `set_input_value` of a composite: each subsystem's inputs at its offset.
@@ -193,6 +240,9 @@ pub fn inherent_items(composite: &Composite<'_>, targets: Targets<'_>, bounds: &
         let lift_input = format_ident!("{}_input", field.unraw());
         let offset = input_offset(composite, i);
         let doc_u = format!("An input of the subsystem `{name}` as an input of this interconnection.");
+        let lift_output = format_ident!("{}_output", field.unraw());
+        let output_start = output_offset(composite, i);
+        let doc_y = format!("An output of the subsystem `{name}` as an output of this interconnection.");
         let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
         let doc = format!("A coordinate of the subsystem `{name}` as a coordinate of this interconnection.");
         let doc_c =
@@ -220,6 +270,10 @@ pub fn inherent_items(composite: &Composite<'_>, targets: Targets<'_>, bounds: &
             #[doc = #doc_u]
             #vis const fn #lift_input(u: #p::Input<#ty>) -> #p::Input<Self> {
                 #p::Input::unchecked(u.index() + #offset)
+            }
+            #[doc = #doc_y]
+            #vis const fn #lift_output(y: #p::Output<#ty>) -> #p::Output<Self> {
+                #p::Output::unchecked(y.index() + #output_start)
             }
         }
     });

@@ -22,6 +22,7 @@ pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
         REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| method(composite, own, sig)).collect();
     out.extend(non_finite_parameter(composite));
     out.extend(super::items::input_methods(composite));
+    out.extend(super::items::output_method(composite));
     out
 }
 

@@ -16,6 +16,7 @@ const _: () = {
             holonomic: 1,
             ports: &[],
             inputs: &[],
+            outputs: &[],
             subsystems: &[],
         };
     }

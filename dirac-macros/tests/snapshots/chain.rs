@@ -276,6 +276,7 @@ const _: () = {
             holonomic: 0,
             ports: &[],
             inputs: &[],
+            outputs: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "left",
@@ -1122,6 +1123,60 @@ const _: () = {
                 ::dirac::__private::Named > ::NAMES.input_count()
             )
         }
+        fn outputs(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES.output_count(),
+                "outputs: the output slice must hold one value per output"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
+                );
+                if count > 0 {
+                    self.left
+                        .outputs(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.output_count(),
+                );
+                if count > 0 {
+                    self.right
+                        .outputs(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+        }
     }
     #[automatically_derived]
     impl Chain
@@ -1152,6 +1207,12 @@ const _: () = {
         ) -> ::dirac::__private::Input<Self> {
             ::dirac::__private::Input::unchecked(u.index() + 0)
         }
+        ///An output of the subsystem `left` as an output of this interconnection.
+        pub const fn left_output(
+            y: ::dirac::__private::Output<Primitive1>,
+        ) -> ::dirac::__private::Output<Self> {
+            ::dirac::__private::Output::unchecked(y.index() + 0)
+        }
         ///A coordinate of the subsystem `right` as a coordinate of this interconnection.
         pub const fn right(
             c: ::dirac::__private::Coordinate<Primitive2>,
@@ -1174,6 +1235,15 @@ const _: () = {
             ::dirac::__private::Input::unchecked(
                 u.index() + 0
                     + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
+            )
+        }
+        ///An output of the subsystem `right` as an output of this interconnection.
+        pub const fn right_output(
+            y: ::dirac::__private::Output<Primitive2>,
+        ) -> ::dirac::__private::Output<Self> {
+            ::dirac::__private::Output::unchecked(
+                y.index() + 0
+                    + <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
             )
         }
         ///The port `left.x2`: its effort is the interconnection force there.

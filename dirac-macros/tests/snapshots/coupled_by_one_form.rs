@@ -382,6 +382,7 @@ const _: () = {
             holonomic: 0,
             ports: &[],
             inputs: &[],
+            outputs: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "wheel",
@@ -1311,6 +1312,48 @@ const _: () = {
                 ::dirac::__private::Named > ::NAMES.input_count()
             )
         }
+        fn outputs(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES.output_count(),
+                "outputs: the output slice must hold one value per output"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
+                );
+                if count > 0 {
+                    self.wheel
+                        .outputs(
+                            t,
+                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Cart as ::dirac::__private::Named>::NAMES.output_count(),
+                );
+                if count > 0 {
+                    self.cart
+                        .outputs(
+                            t,
+                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+        }
     }
     #[automatically_derived]
     impl CoupledByOneForm
@@ -1341,6 +1384,12 @@ const _: () = {
         ) -> ::dirac::__private::Input<Self> {
             ::dirac::__private::Input::unchecked(u.index() + 0)
         }
+        ///An output of the subsystem `wheel` as an output of this interconnection.
+        pub const fn wheel_output(
+            y: ::dirac::__private::Output<Wheel>,
+        ) -> ::dirac::__private::Output<Self> {
+            ::dirac::__private::Output::unchecked(y.index() + 0)
+        }
         ///A coordinate of the subsystem `cart` as a coordinate of this interconnection.
         pub const fn cart(
             c: ::dirac::__private::Coordinate<Cart>,
@@ -1362,6 +1411,15 @@ const _: () = {
         ) -> ::dirac::__private::Input<Self> {
             ::dirac::__private::Input::unchecked(
                 u.index() + 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+            )
+        }
+        ///An output of the subsystem `cart` as an output of this interconnection.
+        pub const fn cart_output(
+            y: ::dirac::__private::Output<Cart>,
+        ) -> ::dirac::__private::Output<Self> {
+            ::dirac::__private::Output::unchecked(
+                y.index() + 0
+                    + <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
             )
         }
         ///The interconnection constraint `tie`: names its row and multiplier μ.

@@ -16,6 +16,7 @@ const _: () = {
             holonomic: 0,
             ports: &[1],
             inputs: &[],
+            outputs: &[],
             subsystems: &[],
         };
     }

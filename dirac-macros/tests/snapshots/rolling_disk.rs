@@ -16,6 +16,7 @@ const _: () = {
             holonomic: 0,
             ports: &[],
             inputs: &[],
+            outputs: &[],
             subsystems: &[],
         };
     }

@@ -241,15 +241,19 @@ pub fn implementation(
     });
     let resolutions = model.resolutions(composite);
     let mut asserts = super::subsystem_asserts(composite);
-    // Inputs are dispatched by a composite of named subsystems only, so far.
+    // Inputs and outputs are dispatched by a composite of named subsystems only, so far.
     asserts.extend(composite.subsystems.iter().map(|s| {
         let ty = &s.ty;
         let message = format!(
-            "`{}` has inputs: a composite with arrays of subsystems cannot expose its members' inputs yet",
+            "`{}` has inputs or outputs: a composite with arrays of subsystems cannot expose its \
+             members' inputs and outputs yet",
             quote!(#ty)
         );
         quote_spanned! {ty.span()=>
-            const _: () = ::core::assert!(<#ty as #p::Named>::NAMES.input_count() == 0, #message);
+            const _: () = ::core::assert!(
+                <#ty as #p::Named>::NAMES.input_count() == 0 && <#ty as #p::Named>::NAMES.output_count() == 0,
+                #message
+            );
         }
     }));
     let bounds = super::bounds(composite);
@@ -284,6 +288,7 @@ pub fn implementation(
                     holonomic: 0,
                     ports: &[],
                     inputs: &[],
+                    outputs: &[],
                     subsystems: &[],
                 };
             }
