@@ -59,6 +59,15 @@ pub struct Blocks {
     pub l_vt: Vec<Id>,
     /// `∂L/∂t`.
     pub dl_dt: Id,
+    /// `∂ṗ/∂u`, `n × n_u`.
+    pub dpdot_du: Matrix,
+    /// `∂(∂L/∂v)/∂u`, `n × n_u`: nonzero when an input enters the momenta.
+    pub l_vu: Matrix,
+    /// The outputs `y` and `∂y/∂q`, `∂y/∂v`, `∂y/∂u`.
+    pub outputs: Vec<Id>,
+    pub output_dq: Matrix,
+    pub output_dv: Matrix,
+    pub output_du: Matrix,
 }
 
 /// `[∂e/∂x for x in wrt]`.
@@ -134,6 +143,12 @@ impl Blocks {
         let flat_jacobian = jacobian(g, &flat_residual, &y);
         let l_vt = dl_dv.iter().map(|&d| g.diff(d, time)).collect();
         let dl_dt = g.diff(lagrangian, time);
+        let inputs = m.inputs.clone();
+        let dpdot_du = jacobian(g, &momentum_rate, &inputs);
+        let l_vu = jacobian(g, &dl_dv, &inputs);
+        let outputs: Vec<Id> = m.outputs.iter().map(|(_, id)| *id).collect();
+        let (output_dq, output_dv, output_du) =
+            (jacobian(g, &outputs, &q), jacobian(g, &outputs, &v), jacobian(g, &outputs, &inputs));
         Blocks {
             lagrangian,
             dl_dq,
@@ -157,6 +172,12 @@ impl Blocks {
             flat_jacobian,
             l_vt,
             dl_dt,
+            dpdot_du,
+            l_vu,
+            outputs,
+            output_dq,
+            output_dv,
+            output_du,
         }
     }
 }

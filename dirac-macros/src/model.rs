@@ -42,6 +42,8 @@ pub struct SymModel {
     pub defines: Vec<(String, Id)>,
     /// `output(name) = …`: each name with its expression, in order.
     pub outputs: Vec<(String, Id)>,
+    /// The parameter symbols that are inputs, in the order declared.
+    pub inputs: Vec<Id>,
 }
 
 impl SymModel {
@@ -84,8 +86,15 @@ impl SymModel {
             constraints: Vec::new(),
             defines: Vec::new(),
             outputs: Vec::new(),
+            inputs: Vec::new(),
         };
         let mut scope = sm.declare_symbols();
+        for u in &model.inputs {
+            if let Some(i) = sm.params.iter().position(|p| p.unraw() == *u) {
+                let id = sm.declare(Sym::Parameter(i));
+                sm.inputs.push(id);
+            }
+        }
         sm.lower_defines(cx, model, &mut scope);
         sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();
         sm.force = vec![zero; sm.n()];

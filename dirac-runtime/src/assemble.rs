@@ -111,3 +111,21 @@ where
         }
     }
 }
+
+/// Writes a subsystem's dense column-major block of `rows` rows into a composite's dense
+/// column-major block of `total_rows` rows, its first entry at `(row0, col0)`.
+pub fn place_block(
+    block: &[f64],
+    rows: usize,
+    total_rows: usize,
+    (row0, col0): (usize, usize),
+    out: &mut [f64],
+) {
+    if rows == 0 {
+        return;
+    }
+    for (j, column) in block.chunks_exact(rows).enumerate() {
+        let start = (col0 + j) * total_rows + row0;
+        out[start..start + rows].copy_from_slice(column);
+    }
+}

@@ -124,6 +124,16 @@ pub enum SimError {
         /// What grew, and by how much.
         detail: String,
     },
+    /// A linearisation asked for at a state that is not an equilibrium.
+    #[error(
+        "not an equilibrium at t = {t}: {detail}; linearise at a consistent state at rest whose momenta do not change"
+    )]
+    NotEquilibrium {
+        /// The time of the state.
+        t: f64,
+        /// Which velocity is not zero, or which momentum changes.
+        detail: String,
+    },
     /// A change of the model while it runs that moves the momenta away from the velocities.
     #[error(
         "the change of the model at t = {t} breaks the {equation} by {residual:e}: a change while the \

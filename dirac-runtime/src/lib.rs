@@ -36,6 +36,8 @@ pub mod integrator;
 pub mod keys;
 /// Where each quantity sits in the flat state `y = (q, v, p, λ)`.
 pub mod layout;
+/// Linearisation about an equilibrium, in minimal coordinates.
+pub mod linear;
 /// LU factorisation on the stack, real or complex.
 pub mod lu;
 mod matching;
@@ -74,6 +76,7 @@ pub use init::{Consistency, consistent_state};
 pub use integrator::Integrator;
 pub use keys::{Constraint, Coordinate, Input, Output};
 pub use layout::{Layout, Slot};
+pub use linear::{Linearization, linearize};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
 pub use radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
@@ -94,7 +97,7 @@ pub mod __private {
     pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
     pub use crate::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
     pub use crate::assemble::{
-        Slot, gather_c, gather_q, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
+        Slot, gather_c, gather_q, place_block, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::dims::Storage;

@@ -264,6 +264,42 @@ where
         assert!(out.is_empty(), "outputs: the model has none, so the output slice must be empty");
     }
 
+    /// `∂ṗ/∂u`, `n × n_u`, dense and column-major, into `out`; the input matrix `B` of a
+    /// linearisation. Generated for models with inputs.
+    fn dpdot_du(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
+        assert!(out.is_empty(), "dpdot_du: the model has no inputs, so the slice must be empty");
+    }
+
+    /// `∂(∂L/∂v)/∂u`, `n × n_u`, dense and column-major: nonzero when an input enters the
+    /// momenta. Generated for models with inputs.
+    fn l_vu(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(out.is_empty(), "l_vu: the model has no inputs, so the slice must be empty");
+    }
+
+    /// `∂y/∂q` of the outputs, `n_y × n`, dense and column-major. Generated for models with
+    /// outputs.
+    fn output_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(out.is_empty(), "output_dq: the model has no outputs, so the slice must be empty");
+    }
+
+    /// `∂y/∂v` of the outputs, `n_y × n`, dense and column-major.
+    fn output_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(out.is_empty(), "output_dv: the model has no outputs, so the slice must be empty");
+    }
+
+    /// `∂y/∂u` of the outputs, `n_y × n_u`, dense and column-major.
+    fn output_du(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(
+            out.is_empty(),
+            "output_du: the model has no outputs or no inputs, so the slice must be empty"
+        );
+    }
+
     /// The value of input `k`, the position of an [`Input`] key. The derive implements it for
     /// models with inputs; it panics if the model has no input `k`.
     fn input_value(&self, k: usize) -> f64 {

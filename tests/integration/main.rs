@@ -14,6 +14,7 @@ mod inputs;
 mod interconnection;
 mod jacobians;
 mod ladder;
+mod linearization;
 mod linkage;
 mod named_access;
 mod paper;

@@ -11,9 +11,9 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use self::signatures::{
-    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DT, DL_DV, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC,
-    JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VV, LAGRANGIAN, OUTPUTS, Out, RESIDUAL,
-    RESIDUAL_BLOCKS, Signature,
+    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DT, DL_DV, DPDOT_DU, FORCE, FORCE_DQ, FORCE_DV,
+    HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DQ,
+    OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL, RESIDUAL_BLOCKS, Signature,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -98,15 +98,27 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
     ];
     let mut methods: TokenStream =
         table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
-    if !model.outputs.is_empty() {
-        let values: Vec<Id> = model.outputs.iter().map(|(_, id)| *id).collect();
-        let count = values.len();
-        let check = quote! {
-            ::core::assert_eq!(out.len(), #count, "outputs: the output slice must hold one value per output");
-        };
-        methods.extend(e.method(&OUTPUTS, &vector(&out, &values), check));
+    if !b.outputs.is_empty() {
+        methods.extend(e.sized(&OUTPUTS, &b.outputs));
+    }
+    for (sig, block) in [
+        (DPDOT_DU, &b.dpdot_du),
+        (L_VU, &b.l_vu),
+        (OUTPUT_DQ, &b.output_dq),
+        (OUTPUT_DV, &b.output_dv),
+        (OUTPUT_DU, &b.output_du),
+    ] {
+        if block.iter().any(|row| !row.is_empty()) {
+            methods.extend(e.sized(&sig, &column_major(block)));
+        }
     }
     Generated { methods, sparse: e.csc_jacobian(&b.flat_jacobian), counts }
+}
+
+/// The entries of a matrix in column-major order.
+fn column_major(rows: &[Vec<Id>]) -> Vec<Id> {
+    let columns = rows.first().map_or(0, Vec::len);
+    (0..columns).flat_map(|j| rows.iter().map(move |row| row[j])).collect()
 }
 
 fn residual_blocks(b: &Blocks) -> Vec<Assign> {
@@ -187,6 +199,15 @@ impl Emitter<'_> {
                 _ => false,
             })
         })
+    }
+
+    /// A method writing `values` into a slice that must hold exactly that many.
+    fn sized(&self, sig: &Signature, values: &[Id]) -> TokenStream {
+        let (count, name) = (values.len(), sig.name);
+        let check = quote! {
+            ::core::assert_eq!(out.len(), #count, "{}: the slice must hold {} values", #name, #count);
+        };
+        self.method(sig, &vector(&quote! { out }, values), check)
     }
 
     /// One trait method: its header (`_x` for unused arguments) and a body that starts with

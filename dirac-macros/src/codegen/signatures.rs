@@ -96,6 +96,13 @@ pub const JACOBIAN: Signature = method("jacobian", &[T, Y], Out::MatYY);
 pub const JACOBIAN_CSC: Signature = method("jacobian_csc", &[T, Y], Out::Values);
 /// The model's outputs, in the order declared; emitted for models that have outputs.
 pub const OUTPUTS: Signature = method("outputs", &[T, Q, V], Out::Values);
+/// The derivatives for linearisation, each a dense column-major block in a slice; emitted for
+/// models with inputs or outputs.
+pub const DPDOT_DU: Signature = method("dpdot_du", &[T, Q, V, Lambda], Out::Values);
+pub const L_VU: Signature = method("l_vu", &[T, Q, V], Out::Values);
+pub const OUTPUT_DQ: Signature = method("output_dq", &[T, Q, V], Out::Values);
+pub const OUTPUT_DV: Signature = method("output_dv", &[T, Q, V], Out::Values);
+pub const OUTPUT_DU: Signature = method("output_du", &[T, Q, V], Out::Values);
 
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 17] = [

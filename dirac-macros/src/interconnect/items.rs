@@ -69,6 +69,82 @@ fn offset(composite: &Composite<'_>, i: usize, count: &syn::Ident) -> TokenStrea
     quote! { 0 #(#before)* }
 }
 
+/// A composite's dense derivative blocks for linearisation: each subsystem's block, computed
+/// from its own arguments, placed at its rows and columns (the blocks are block-diagonal:
+/// inputs and outputs belong to one subsystem each, and the interconnection has neither).
+pub fn linearisation_methods(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    // (method, whether it takes λ, rows: coordinates or outputs, columns: inputs or coordinates)
+    let specs = [
+        ("dpdot_du", true, false, true),
+        ("l_vu", false, false, true),
+        ("output_dq", false, true, false),
+        ("output_dv", false, true, false),
+        ("output_du", false, true, true),
+    ];
+    specs
+        .iter()
+        .map(|&(name, with_lambda, rows_are_outputs, columns_are_inputs)| {
+            let method = format_ident!("{}", name);
+            let count = |outputs: bool, ty: &TokenStream| {
+                if outputs {
+                    quote! { <#ty as #p::Named>::NAMES.output_count() }
+                } else {
+                    quote! { <#ty as #p::Fixed>::NQ }
+                }
+            };
+            let columns = |inputs: bool, ty: &TokenStream| {
+                if inputs {
+                    quote! { <#ty as #p::Named>::NAMES.input_count() }
+                } else {
+                    quote! { <#ty as #p::Fixed>::NQ }
+                }
+            };
+            let me = quote! { Self };
+            let (total_rows, total_columns) = (count(rows_are_outputs, &me), columns(columns_are_inputs, &me));
+            let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
+                let (field, ty) = (&s.ident, &s.ty);
+                let ty = quote! { #ty };
+                let slot = format_ident!("__SLOT{}", i);
+                let (rows, cols) = (count(rows_are_outputs, &ty), columns(columns_are_inputs, &ty));
+                let row0 = if rows_are_outputs { output_offset(composite, i) } else { quote! { #slot.q } };
+                let col0 = if columns_are_inputs { input_offset(composite, i) } else { quote! { #slot.q } };
+                let lambda = with_lambda.then(|| quote! { &#p::gather_c::<#ty, Self>(lambda, &#slot), });
+                quote! {{
+                    let (rows, cols) = (#rows, #cols);
+                    if rows * cols > 0 {
+                        let mut block = ::std::vec![0.0; rows * cols];
+                        self.#field.#method(
+                            t,
+                            &#p::gather_q::<#ty, Self>(q, &#slot),
+                            &#p::gather_q::<#ty, Self>(v, &#slot),
+                            #lambda
+                            &mut block,
+                        );
+                        #p::place_block(&block, rows, total_rows, (#row0, #col0), out);
+                    }
+                }}
+            });
+            let lambda_arg = with_lambda.then(|| quote! { lambda: &#p::VecC<Self>, });
+            quote! {
+                fn #method(
+                    &self,
+                    t: ::core::primitive::f64,
+                    q: &#p::VecQ<Self>,
+                    v: &#p::VecQ<Self>,
+                    #lambda_arg
+                    out: &mut [::core::primitive::f64],
+                ) {
+                    let total_rows = #total_rows;
+                    ::core::assert_eq!(out.len(), total_rows * #total_columns, "{}: wrong slice length", #name);
+                    out.fill(0.0);
+                    #(#parts)*
+                }
+            }
+        })
+        .collect()
+}
+
 /// `outputs` of a composite: each subsystem's outputs at its offset, from its own `q` and `v`.
 pub fn output_method(composite: &Composite<'_>) -> TokenStream {
     let p = rt();

@@ -1177,6 +1177,402 @@ const _: () = {
                 }
             }
         }
+        fn dpdot_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Fixed>::NQ;
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "{}: wrong slice length", "dpdot_du"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.left
+                        .dpdot_du(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &::dirac::__private::gather_c::<
+                                Primitive1,
+                                Self,
+                            >(lambda, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (__SLOT0.q, 0),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.right
+                        .dpdot_du(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &::dirac::__private::gather_c::<
+                                Primitive2,
+                                Self,
+                            >(lambda, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            __SLOT1.q,
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .input_count(),
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn l_vu(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Fixed>::NQ;
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "{}: wrong slice length", "l_vu"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.left
+                        .l_vu(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (__SLOT0.q, 0),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.right
+                        .l_vu(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            __SLOT1.q,
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .input_count(),
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn output_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "{}: wrong slice length", "output_dq"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.left
+                        .output_dq(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.right
+                        .output_dq(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .output_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn output_dv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "{}: wrong slice length", "output_dv"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.left
+                        .output_dv(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.right
+                        .output_dv(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .output_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn output_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "{}: wrong slice length", "output_du"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.left
+                        .output_du(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, 0),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.right
+                        .output_du(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .output_count(),
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .input_count(),
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
     }
     #[automatically_derived]
     impl Chain

@@ -1354,6 +1354,336 @@ const _: () = {
                 }
             }
         }
+        fn dpdot_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Fixed>::NQ;
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "{}: wrong slice length", "dpdot_du"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Fixed>::NQ,
+                    <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.wheel
+                        .dpdot_du(
+                            t,
+                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &::dirac::__private::gather_c::<
+                                Wheel,
+                                Self,
+                            >(lambda, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (__SLOT0.q, 0),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Fixed>::NQ,
+                    <Cart as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.cart
+                        .dpdot_du(
+                            t,
+                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &::dirac::__private::gather_c::<
+                                Cart,
+                                Self,
+                            >(lambda, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            __SLOT1.q,
+                            0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn l_vu(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Fixed>::NQ;
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "{}: wrong slice length", "l_vu"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Fixed>::NQ,
+                    <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.wheel
+                        .l_vu(
+                            t,
+                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (__SLOT0.q, 0),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Fixed>::NQ,
+                    <Cart as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.cart
+                        .l_vu(
+                            t,
+                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            __SLOT1.q,
+                            0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn output_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "{}: wrong slice length", "output_dq"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Wheel as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.wheel
+                        .output_dq(
+                            t,
+                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Cart as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.cart
+                        .output_dq(
+                            t,
+                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Wheel as ::dirac::__private::Named>::NAMES
+                                    .output_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn output_dv(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "{}: wrong slice length", "output_dv"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Wheel as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.wheel
+                        .output_dv(
+                            t,
+                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Cart as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.cart
+                        .output_dv(
+                            t,
+                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Wheel as ::dirac::__private::Named>::NAMES
+                                    .output_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+        fn output_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "{}: wrong slice length", "output_du"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.wheel
+                        .output_du(
+                            t,
+                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, 0),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Cart as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.cart
+                        .output_du(
+                            t,
+                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Wheel as ::dirac::__private::Named>::NAMES
+                                    .output_count(),
+                            0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
     }
     #[automatically_derived]
     impl CoupledByOneForm

@@ -1,0 +1,204 @@
+//! Linearisation about equilibria against textbook matrices: the inverted pendulum in its
+//! angle (eigenvalues ±√(g/l)), the same pendulum in Cartesian coordinates with its rod as a
+//! holonomic constraint (which must reduce to the same two states), and the cart-pole about
+//! upright (A and B derived by hand below); and against simulated responses of the nonlinear
+//! model to small perturbations, propagated by the matrix exponential of the linear one.
+
+use dirac::nalgebra::{DMatrix, DVector};
+use dirac::prelude::*;
+
+use crate::zoo::Pendulum;
+
+/// A pendulum balanced upright: `θ` from the vertical, torque `tau` at the pivot, the tip's
+/// horizontal position as output.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(theta => omega), input(tau), output(tip_x) = l * theta.sin())]
+#[dirac(lagrangian = 0.5 * m * l * l * omega * omega - m * g * l * theta.cos(), force(theta) = tau)]
+struct Inverted {
+    m: f64,
+    l: f64,
+    g: f64,
+    tau: f64,
+}
+
+/// A cart (mass `mc`, position `x`) carrying a pole (point mass `mp` at length `l`, angle `th`
+/// from upright), pushed by the force `u`; outputs the cart position and the pole angle.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(x => vx, th => w), input(u), output(cart) = x, output(angle) = th)]
+#[dirac(lagrangian = 0.5 * (mc + mp) * vx * vx + mp * l * vx * w * th.cos() + 0.5 * mp * l * l * w * w
+                   - mp * g * l * th.cos())]
+#[dirac(force(x) = u)]
+struct CartPole {
+    mc: f64,
+    mp: f64,
+    l: f64,
+    g: f64,
+    u: f64,
+}
+
+fn at_rest<M: DenseModel>(model: &M, q: &[f64]) -> State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let q = VecQ::<M>::from_column_slice(q);
+    consistent_state(model, 0.0, &q, &VecQ::<M>::zeros(), Consistency::default()).expect("consistent")
+}
+
+fn assert_close(a: &DMatrix<f64>, b: &DMatrix<f64>, tol: f64) {
+    assert_eq!(a.shape(), b.shape());
+    assert!((a - b).amax() <= tol, "{a} against {b}");
+}
+
+#[test]
+fn the_inverted_pendulum_has_its_textbook_matrices() {
+    let (m, l, g) = (0.7, 0.9, 9.81);
+    let model = Inverted { m, l, g, tau: 0.0 };
+    let lin = linearize(&model, 0.0, &at_rest(&model, &[0.0])).expect("an equilibrium");
+    assert_close(&lin.a, &DMatrix::from_row_slice(2, 2, &[0.0, 1.0, g / l, 0.0]), 1e-12);
+    assert_close(&lin.b, &DMatrix::from_row_slice(2, 1, &[0.0, 1.0 / (m * l * l)]), 1e-12);
+    assert_close(&lin.c, &DMatrix::from_row_slice(1, 2, &[l, 0.0]), 1e-12);
+    assert_close(&lin.d, &DMatrix::zeros(1, 1), 0.0);
+    let mut eigenvalues: Vec<f64> = lin.a.complex_eigenvalues().iter().map(|z| z.re).collect();
+    eigenvalues.sort_by(f64::total_cmp);
+    let rate = (g / l).sqrt();
+    assert!(
+        (eigenvalues[0] + rate).abs() < 1e-12 && (eigenvalues[1] - rate).abs() < 1e-12,
+        "{eigenvalues:?}"
+    );
+}
+
+/// The eigenvalues of a 2 × 2 state matrix from its trace and determinant.
+fn trace_and_determinant(a: &DMatrix<f64>) -> (f64, f64) {
+    assert_eq!(a.shape(), (2, 2));
+    (a.trace(), a.determinant())
+}
+
+#[test]
+fn the_cartesian_pendulum_reduces_to_the_two_states_of_the_angle_form() {
+    let (m, g, l) = (1.3, 9.81, 0.8);
+    let model = Pendulum { m, g, l };
+    // Upright, (0, l): unstable, eigenvalues ±√(g/l), so trace 0 and determinant −g/l.
+    let up = linearize(&model, 0.0, &at_rest(&model, &[0.0, l])).expect("an equilibrium");
+    assert_eq!((up.positions_count(), up.a.nrows()), (1, 2), "one position and one velocity");
+    let (trace, det) = trace_and_determinant(&up.a);
+    assert!(trace.abs() < 1e-12 && (det + g / l).abs() < 1e-10, "trace {trace}, determinant {det}");
+    // Hanging, (0, −l): oscillating at √(g/l): determinant +g/l. The constraint's curvature
+    // through λ* gives the whole stiffness: in Cartesian coordinates gravity alone has none.
+    let down = linearize(&model, 0.0, &at_rest(&model, &[0.0, -l])).expect("an equilibrium");
+    let (trace, det) = trace_and_determinant(&down.a);
+    assert!(trace.abs() < 1e-12 && (det - g / l).abs() < 1e-10, "trace {trace}, determinant {det}");
+    assert_eq!((down.b.ncols(), down.c.nrows()), (0, 0), "no inputs, no outputs");
+}
+
+#[test]
+fn the_cart_pole_about_upright_has_its_closed_form() {
+    // (mc + mp) ẍ + mp l θ̈ = u and mp l ẍ + mp l² θ̈ − mp g l θ = 0 at θ = 0 give
+    // ẍ = (u − mp g θ)/mc and θ̈ = ((mc + mp) g θ − u)/(mc l).
+    let (mc, mp, l, g) = (1.5, 0.4, 0.6, 9.81);
+    let model = CartPole { mc, mp, l, g, u: 0.0 };
+    let lin = linearize(&model, 0.0, &at_rest(&model, &[0.3, 0.0])).expect("an equilibrium");
+    #[rustfmt::skip]
+    let a = DMatrix::from_row_slice(4, 4, &[
+        0.0, 0.0, 1.0, 0.0,
+        0.0, 0.0, 0.0, 1.0,
+        0.0, -mp * g / mc, 0.0, 0.0,
+        0.0, (mc + mp) * g / (mc * l), 0.0, 0.0,
+    ]);
+    let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 1.0 / mc, -1.0 / (mc * l)]);
+    assert_close(&lin.a, &a, 1e-12);
+    assert_close(&lin.b, &b, 1e-12);
+    assert_close(&lin.c, &DMatrix::from_row_slice(2, 4, &[1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0]), 0.0);
+}
+
+/// `(δx(T), δy(T))` of the nonlinear cart-pole started at `δx0` from upright with the input
+/// held at `u`, integrated by Radau at tight tolerances.
+fn simulated(model: &CartPole, dx0: &[f64; 4], u: f64, t_end: f64) -> DVector<f64> {
+    let mut model = model.clone();
+    let start = consistent_state(
+        &model,
+        0.0,
+        &VecQ::<CartPole>::from([dx0[0], dx0[1]]),
+        &VecQ::<CartPole>::from([dx0[2], dx0[3]]),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    model.u = u;
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-12, 1e-14)).expect("valid");
+    let end = radau.solve(0.0, &start, t_end, &Sampling::Times(vec![t_end])).expect("integrates");
+    let s = end.last().expect("a sample");
+    DVector::from_column_slice(&[s.q[0], s.q[1], s.v[0], s.v[1]])
+}
+
+#[test]
+fn the_linear_model_predicts_small_simulated_responses() {
+    let (mc, mp, l, g) = (1.5, 0.4, 0.6, 9.81);
+    let model = CartPole { mc, mp, l, g, u: 0.0 };
+    let lin = linearize(&model, 0.0, &at_rest(&model, &[0.0, 0.0])).expect("an equilibrium");
+    let t_end = 0.3;
+    // A tilt of the pole: δx(T) = e^{A T} δx0.
+    let dx0 = [0.0, 1e-5, 0.0, 0.0];
+    let linear = (&lin.a * t_end).exp() * DVector::from_column_slice(&dx0);
+    let nonlinear = simulated(&model, &dx0, 0.0, t_end);
+    assert!((&nonlinear - &linear).amax() < 1e-4 * linear.amax(), "{nonlinear} against {linear}");
+    // A small push: δx(T) = ∫₀ᵀ e^{A s} B ε ds, the top-right block of exp([[A, B], [0, 0]] T).
+    let epsilon = 1e-5;
+    let mut augmented = DMatrix::zeros(5, 5);
+    augmented.view_mut((0, 0), (4, 4)).copy_from(&lin.a);
+    augmented.view_mut((0, 4), (4, 1)).copy_from(&lin.b);
+    let linear = (augmented * t_end).exp().view((0, 4), (4, 1)).column(0) * epsilon;
+    let nonlinear = simulated(&model, &[0.0; 4], epsilon, t_end);
+    assert!((&nonlinear - &linear).amax() < 1e-4 * linear.amax(), "{nonlinear} against {linear}");
+}
+
+#[test]
+fn linearising_away_from_an_equilibrium_is_refused() {
+    let model = Inverted { m: 1.0, l: 1.0, g: 9.81, tau: 0.0 };
+    // Tilted: the momentum changes.
+    let error = linearize(&model, 0.0, &at_rest(&model, &[0.3])).expect_err("not an equilibrium");
+    assert!(
+        matches!(&error, SimError::NotEquilibrium { detail, .. } if detail.contains("`theta`")),
+        "{error}"
+    );
+    // Moving.
+    let q = VecQ::<Inverted>::from([0.0]);
+    let moving = consistent_state(&model, 0.0, &q, &VecQ::<Inverted>::from([0.5]), Consistency::default())
+        .expect("consistent");
+    let error = linearize(&model, 0.0, &moving).expect_err("not at rest");
+    assert!(
+        matches!(&error, SimError::NotEquilibrium { detail, .. } if detail.contains("velocity")),
+        "{error}"
+    );
+    // Held by a torque, a tilted pendulum is an equilibrium again.
+    let held = Inverted { tau: -9.81 * 0.3f64.sin(), ..model };
+    linearize(&held, 0.0, &at_rest(&held, &[0.3])).expect("held still by the torque");
+}
+
+#[test]
+fn a_composite_linearises_through_its_members_blocks() {
+    // Two springs whose ends are joined: (m1 + m2) ẍ + (k1 + k2) x = f1 + f2, and the output
+    // `left.stretch` is k1 x. The joint is a velocity constraint, so the positions keep the
+    // offset between the two ends as a mode of its own (a zero eigenvalue) that no input moves;
+    // transfer functions do not see it: G(s) = k1 / ((m1 + m2) s² + k1 + k2) from either force.
+    use crate::zoo::{ForcedPair, ForcedSpring};
+    let (m1, m2, k1, k2) = (1.0, 2.0, 4.0, 5.0);
+    let pair = ForcedPair {
+        left: ForcedSpring { m: m1, k: k1, f: 0.0 },
+        right: ForcedSpring { m: m2, k: k2, f: 0.0 },
+    };
+    let lin = linearize(&pair, 0.0, &at_rest(&pair, &[0.0, 0.0])).expect("an equilibrium");
+    assert_eq!((lin.positions_count(), lin.a.nrows(), lin.b.ncols(), lin.c.nrows()), (2, 3, 2, 4));
+    let s = 1.0;
+    let resolvent =
+        (DMatrix::<f64>::identity(3, 3) * s - &lin.a).try_inverse().expect("s is not an eigenvalue");
+    let g = &lin.c * resolvent * &lin.b + &lin.d;
+    let denominator = (m1 + m2) * s * s + k1 + k2;
+    let left_stretch = ForcedPair::left_output(ForcedSpring::STRETCH).index();
+    let right_stretch = ForcedPair::right_output(ForcedSpring::STRETCH).index();
+    for input in [ForcedPair::left_input(ForcedSpring::F), ForcedPair::right_input(ForcedSpring::F)] {
+        let u = input.index();
+        assert!((g[(left_stretch, u)] - k1 / denominator).abs() < 1e-12, "{g}");
+        assert!((g[(right_stretch, u)] - k2 / denominator).abs() < 1e-12, "{g}");
+        // The energies are quadratic: no first-order response at rest.
+        assert!(g[(ForcedPair::left_output(ForcedSpring::ENERGY).index(), u)].abs() < 1e-12);
+    }
+}
