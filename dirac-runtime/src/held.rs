@@ -15,6 +15,7 @@ pub enum Held<'m, M> {
 
 impl<M> Held<'_, M> {
     /// The model.
+    #[inline]
     pub fn get(&self) -> &M {
         match self {
             Held::Shared(m) => m,
@@ -23,6 +24,7 @@ impl<M> Held<'_, M> {
     }
 
     /// The model to change, if it is held exclusively.
+    #[inline]
     pub fn get_mut(&mut self) -> Option<&mut M> {
         match self {
             Held::Shared(_) => None,

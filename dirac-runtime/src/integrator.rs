@@ -39,8 +39,9 @@ where
     fn model_mut(&mut self) -> Option<&mut M>;
 
     /// Starts again from the current time and state, towards `t_end`, after the model changed:
-    /// step-size history, Jacobians and factorisations are dropped, the step size and the
-    /// counters kept. Positions, velocities and momenta carry over, so a change must keep
+    /// the step-size history and the extrapolated stages are dropped, the step size and the
+    /// counters kept (Radau keeps its last Jacobian as the simplified Newton iteration's
+    /// matrix until the iteration's convergence asks for a new one). Positions, velocities and momenta carry over, so a change must keep
     /// `p = ∂L/∂v` (inputs in forces or in the potential do; one in the mass matrix is refused
     /// with [`SimError::MomentumChanged`]). Does nothing once `t_end` is reached.
     fn restart_until(&mut self, t_end: f64) -> Result<(), SimError>;

@@ -76,8 +76,12 @@ fn method(composite: &Composite<'_>, own: &Own<'_>, sig: &Signature) -> TokenStr
         .enumerate()
         .map(|(i, s)| subsystem_part(sig, &s.ident, &s.ty, i))
         .collect();
+    // `#[inline]` as for primitives: the integrators' steps are generic over the model, and
+    // without it whether a composite's blocks are inlined there depends on how the compiler
+    // splits the crate into codegen units.
     if sig.out == Out::Scalar {
         return quote! {
+            #[inline]
             #header {
                 let mut total = 0.0;
                 #parts
@@ -87,6 +91,7 @@ fn method(composite: &Composite<'_>, own: &Own<'_>, sig: &Signature) -> TokenStr
     }
     let (zero, body) = own_part(own, sig);
     quote! {
+        #[inline]
         #header {
             #parts
             #zero

@@ -383,6 +383,7 @@ const _: () = {
                 latex: ::dirac::__private::Cow::Owned(latex),
             }
         }
+        #[inline]
         fn lagrangian(
             &self,
             t: ::core::primitive::f64,
@@ -408,6 +409,7 @@ const _: () = {
                     );
             total
         }
+        #[inline]
         fn dl_dq(
             &self,
             t: ::core::primitive::f64,
@@ -438,6 +440,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn dl_dv(
             &self,
             t: ::core::primitive::f64,
@@ -468,6 +471,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn l_qq(
             &self,
             t: ::core::primitive::f64,
@@ -498,6 +502,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn l_vq(
             &self,
             t: ::core::primitive::f64,
@@ -528,6 +533,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn l_vv(
             &self,
             t: ::core::primitive::f64,
@@ -558,6 +564,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn force(
             &self,
             t: ::core::primitive::f64,
@@ -588,6 +595,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn force_dq(
             &self,
             t: ::core::primitive::f64,
@@ -618,6 +626,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn force_dv(
             &self,
             t: ::core::primitive::f64,
@@ -648,6 +657,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn constraint_matrix(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -683,6 +693,7 @@ const _: () = {
                 out[(__OMEGA + 0, __R1.index)] += -1f64;
             }
         }
+        #[inline]
         fn dav_dq(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -721,6 +732,7 @@ const _: () = {
                 out[(__OMEGA + 0, __R1.index)] += -1f64;
             }
         }
+        #[inline]
         fn datl_dq(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -754,6 +766,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn holonomic(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -778,6 +791,7 @@ const _: () = {
                 ::dirac::__private::scatter_h::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn residual_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -848,6 +862,7 @@ const _: () = {
                 out.momentum_rate[__R1.index] += -lambda[__OMEGA + 0];
             }
         }
+        #[inline]
         fn jacobian_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -958,6 +973,7 @@ const _: () = {
                 out.dav_dq[(__OMEGA + 0, __R1.index)] += -1f64;
             }
         }
+        #[inline]
         fn l_vt(
             &self,
             t: ::core::primitive::f64,
@@ -988,6 +1004,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn dl_dt(
             &self,
             t: ::core::primitive::f64,
@@ -1013,6 +1030,7 @@ const _: () = {
                     );
             total
         }
+        #[inline]
         fn interconnection_forces(
             &self,
             q: &::dirac::__private::VecQ<Self>,

@@ -489,6 +489,7 @@ const _: () = {
                 latex: ::dirac::__private::Cow::Owned(latex),
             }
         }
+        #[inline]
         fn lagrangian(
             &self,
             t: ::core::primitive::f64,
@@ -514,6 +515,7 @@ const _: () = {
                     );
             total
         }
+        #[inline]
         fn dl_dq(
             &self,
             t: ::core::primitive::f64,
@@ -544,6 +546,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn dl_dv(
             &self,
             t: ::core::primitive::f64,
@@ -574,6 +577,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn l_qq(
             &self,
             t: ::core::primitive::f64,
@@ -604,6 +608,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn l_vq(
             &self,
             t: ::core::primitive::f64,
@@ -634,6 +639,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn l_vv(
             &self,
             t: ::core::primitive::f64,
@@ -664,6 +670,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn force(
             &self,
             t: ::core::primitive::f64,
@@ -694,6 +701,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn force_dq(
             &self,
             t: ::core::primitive::f64,
@@ -724,6 +732,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn force_dv(
             &self,
             t: ::core::primitive::f64,
@@ -754,6 +763,7 @@ const _: () = {
                 ::dirac::__private::scatter_qq::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn constraint_matrix(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -799,6 +809,7 @@ const _: () = {
                 out[(__OMEGA + 0, __R3.index)] += -self.c * r2.cos();
             }
         }
+        #[inline]
         fn dav_dq(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -847,6 +858,7 @@ const _: () = {
                 out[(__OMEGA + 0, __R3.index)] += -self.c * r2.cos();
             }
         }
+        #[inline]
         fn datl_dq(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -900,6 +912,7 @@ const _: () = {
                 out[(__R3.index, __R2.index)] += s1;
             }
         }
+        #[inline]
         fn holonomic(
             &self,
             q: &::dirac::__private::VecQ<Self>,
@@ -924,6 +937,7 @@ const _: () = {
                 ::dirac::__private::scatter_h::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn residual_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -1000,6 +1014,7 @@ const _: () = {
                 out.momentum_rate[__R3.index] += -self.c * s1 * lambda[__OMEGA + 0];
             }
         }
+        #[inline]
         fn jacobian_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -1147,6 +1162,7 @@ const _: () = {
                 out.dpdot_dq[(__R3.index, __R2.index)] += s9;
             }
         }
+        #[inline]
         fn l_vt(
             &self,
             t: ::core::primitive::f64,
@@ -1177,6 +1193,7 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Cart, Self>(&o, &__SLOT1, out);
             }
         }
+        #[inline]
         fn dl_dt(
             &self,
             t: ::core::primitive::f64,
@@ -1202,6 +1219,7 @@ const _: () = {
                     );
             total
         }
+        #[inline]
         fn interconnection_forces(
             &self,
             q: &::dirac::__private::VecQ<Self>,

@@ -195,7 +195,9 @@ where
             if self.need_jac {
                 self.evaluate_jacobian();
             }
-            if (self.need_factor || self.h != self.factored_h)
+            // A step size within round-off of the factored one (a step cut to end at a sample
+            // time) keeps the factorisation: the simplified Newton matrix is approximate anyway.
+            if (self.need_factor || (self.h - self.factored_h).abs() > 1e-10 * self.h)
                 && let Err(Singular { column }) = self.factor()
             {
                 singular += 1;
@@ -260,16 +262,23 @@ where
     }
 
     /// Starts stepping from `self.y` at `t0` with the step size in `self.h`, capped by the
-    /// span and the options: no step-size history, a new Jacobian and factorisation.
-    fn begin(&mut self, t0: f64, t_end: f64) -> Result<(), SimError> {
+    /// span and the options, without step-size history or extrapolated stages. A `fresh`
+    /// start evaluates and factors a new Jacobian; a restart keeps the last one as the
+    /// simplified Newton iteration's matrix (marked out of date, so that a slow iteration
+    /// replaces it) and refactors only if the step size changed.
+    fn begin(&mut self, t0: f64, t_end: f64, fresh: bool) -> Result<(), SimError> {
         self.t = t0;
         self.t_end = t_end;
         self.h = self.h.min(t_end - t0).min(self.options.max_step);
         self.unclipped = 0.0;
         self.controller.restart();
         self.stages.restart();
-        self.need_jac = true;
-        self.need_factor = true;
+        if fresh {
+            self.need_jac = true;
+            self.need_factor = true;
+        } else {
+            self.jac_current = false;
+        }
         self.residual.eval(&mut self.model, t0, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
         if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
@@ -332,9 +341,10 @@ where
         self.jac_current = false;
         self.need_jac = self.stages.theta > THET;
         let ratio = h_new / h;
+        // A new step size is factored when the next attempt finds it differs from the
+        // factored one; a restart that cuts it back to a segment's length may find it equal.
         if self.need_jac || !(1.0..=1.2).contains(&ratio) {
             self.h = h_new;
-            self.need_factor = true;
         }
         Ok(h)
     }
@@ -379,7 +389,7 @@ where
         let span = t_end - t0;
         self.h = self.options.initial_step.unwrap_or(1e-6 * span);
         self.stats = RadauStats::default();
-        self.begin(t0, t_end)
+        self.begin(t0, t_end, true)
     }
 
     fn model_mut(&mut self) -> Option<&mut M> {
@@ -392,7 +402,7 @@ where
         }
         check_restart(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
         self.h = self.h.max(self.unclipped);
-        self.begin(self.t, t_end)
+        self.begin(self.t, t_end, false)
     }
 
     fn end(&self) -> f64 {

@@ -45,14 +45,18 @@ where
     }
 
     /// Sets the model's inputs for time `t` and state `y`, if a drive does.
+    #[inline]
     pub fn apply(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>) {
-        if let (Some((drive, state)), Some(model)) = (&mut self.drive, model.get_mut()) {
+        if let Some((drive, state)) = &mut self.drive
+            && let Some(model) = model.get_mut()
+        {
             state.read_y(y);
             drive(t, state, model);
         }
     }
 
     /// Writes `f(t, y)` into `out`, the inputs set first.
+    #[inline]
     pub fn eval(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>, out: &mut VecY<M>) {
         self.apply(model, t, y);
         let model = model.get();

@@ -89,23 +89,38 @@ where
 /// The stage-1 matrix: `∂/∂v` of the momentum residual (top) and of the constraints (bottom).
 fn assemble_stage_one<M: LagrangeDirac>(
     saddle: &mut <M::Algebra as Algebra<M>>::Saddle<f64>,
-    b: &StageBlocks<M>,
+    b: &mut StageBlocks<M>,
     a0: &MatCQ<M>,
     h: f64,
 ) where
     DefaultAllocator: Storage<M>,
 {
     // ½ (L_vv(q_k) + L_vv(q_{k+1}) + h L_vq(q_{k+1})) − (h/2)(L_vq(q_k)ᵀ + F_v + (h/2) F_q)
-    let top = [(0.5, &b.lvv0), (0.5, &b.lvv1), (0.5 * h, &b.lvq1), (-0.5 * h, &b.fv), (-0.25 * h * h, &b.fq)];
-    saddle.assemble(&SaddleTerms {
-        top: &top,
+    let terms =
+        [(0.5, &b.lvv0), (0.5, &b.lvv1), (0.5 * h, &b.lvq1), (-0.5 * h, &b.fv), (-0.25 * h * h, &b.fq)];
+    let rest = SaddleTerms {
+        top: &[],
         top_transposed: &[(-0.5 * h, &b.lvq0)],
         identity: 0.0,
         right: &[(-1.0, a0)],
         // Holonomic rows: A(q_{k+1}); the others: A(q_{k+½}) + (h/2) ∂(A v)/∂q there.
         bottom: &[(1.0, 0.0, &b.a1), (0.0, 1.0, &b.am), (0.0, 0.5 * h, &b.gm)],
         corner: (0.0, 0.0),
-    });
+    };
+    if M::Algebra::dense_qq(&b.sum).is_some() {
+        // Dense blocks store every entry in the same order: the top terms sum value by value,
+        // in plain loops over equal slices that vectorise whatever else the step inlines.
+        let sum = M::Algebra::qq_values_mut(&mut b.sum);
+        sum.fill(0.0);
+        for (c, x) in terms {
+            for (y, x) in sum.iter_mut().zip(M::Algebra::qq_values(x)) {
+                *y += c * x;
+            }
+        }
+        saddle.assemble(&SaddleTerms { top: &[(1.0, &b.sum)], ..rest });
+    } else {
+        saddle.assemble(&SaddleTerms { top: &terms, ..rest });
+    }
 }
 
 /// `φ(q_{k+1})/h` for holonomic rows, `A(q_{k+½}) v` for the others, into `out`; `am` holds

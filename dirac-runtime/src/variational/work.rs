@@ -120,6 +120,8 @@ where
     pub a1: MatCQ<M>,
     pub am: MatCQ<M>,
     pub gm: MatCQ<M>,
+    /// The stage-1 matrix's top terms summed, for dense blocks.
+    pub sum: MatQQ<M>,
 }
 
 /// The vectors of a stage: end point and midpoint, the model's vectors there, the residual.
@@ -163,6 +165,7 @@ where
                 a1: cq(),
                 am: cq(),
                 gm: cq(),
+                sum: qq(),
             },
             vectors: StageVectors {
                 q1: q(),
