@@ -14,12 +14,18 @@
 //! `connect(motor.theta, load.phi)`, ω_θ = ω_φ and f_θ + f_φ = 0. The power through the port,
 //! f_φ ω, is what the motor delivers to the load; the source's power V i goes into it, into the
 //! resistor R i² and into the motor's stored energy, and the energy balance closes.
+//!
+//! The supply voltage is an input: a second part drives the motor from a table, a ramp from
+//! 0 to 12 V over 2 s read with linear interpolation by a drive (inside the steps), then the
+//! same motor under 50% pulse-width modulation at 20 Hz, its edges met by restarts
+//! (`solve_sampled` at the half period), and plots the speeds.
 
 use std::error::Error;
 use std::fs::File;
 use std::io::BufWriter;
 
 use dirac::prelude::*;
+use dirac::sources::{Hold, Table};
 
 #[path = "support/mod.rs"]
 mod support;
@@ -27,8 +33,8 @@ mod support;
 use support::{Chart, Series, output_dir};
 
 /// A DC motor: armature circuit and rotor, coupled by the gyrator constant k.
-#[derive(LagrangeDirac)]
-#[dirac(coordinates(q => i, theta => omega), port(theta))]
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(q => i, theta => omega), port(theta), input(volt))]
 #[dirac(lagrangian = 0.5 * la * i * i + 0.5 * jm * omega * omega - k * q * omega)]
 #[dirac(force(q) = volt - r * i)]
 pub struct Motor {
@@ -45,7 +51,7 @@ pub struct Motor {
 }
 
 /// A flywheel with viscous friction.
-#[derive(LagrangeDirac)]
+#[derive(LagrangeDirac, Clone)]
 #[dirac(coordinates(phi => w), port(phi))]
 #[dirac(lagrangian = 0.5 * jl * w * w)]
 #[dirac(force(phi) = -b * w)]
@@ -148,8 +154,56 @@ fn main() -> Result<(), Box<dyn Error>> {
         log_y: false,
     }
     .write(&power)?;
-    for p in [&csv, &states, &power] {
+    let driven = driven_by_tables(&drive, &start)?;
+    for p in [&csv, &states, &power, &driven] {
         println!("wrote {}", p.display());
     }
     Ok(())
+}
+
+/// The motor from rest under a voltage ramp and under PWM; the speed plot's path.
+fn driven_by_tables(drive: &Drive, start: &State<Drive>) -> Result<std::path::PathBuf, Box<dyn Error>> {
+    let volt = Drive::motor_input(Motor::VOLT);
+    let options = RadauOptions::tolerances(1e-9, 1e-11);
+    // A ramp to 12 V over 2 s, held after: the drive sets the voltage before every evaluation.
+    let ramp = Table::new(vec![0.0, 2.0], vec![0.0, 12.0], Hold::Linear)?;
+    let mut model = Drive { motor: Motor { volt: 0.0, ..drive.motor.clone() }, load: drive.load.clone() };
+    let mut source = |t: f64, _: &State<Drive>, d: &mut Drive| d.set_input(volt, ramp.at(t));
+    let mut radau = Radau::new(&mut model, options)?;
+    radau.drive(&mut source)?;
+    let ramped = radau.solve(0.0, start, 5.0, &Sampling::Every(0.005))?;
+    // 12 V for 25 ms, 0 V for 25 ms: a zero-order-hold table whose edges are sample times.
+    let edges: Vec<f64> = (0..200).map(|k| 0.025 * k as f64).collect();
+    let levels: Vec<f64> = (0..200).map(|k| if k % 2 == 0 { 12.0 } else { 0.0 }).collect();
+    let pwm = Table::new(edges, levels, Hold::Zero)?;
+    let mut model = Drive { motor: Motor { volt: 0.0, ..drive.motor.clone() }, load: drive.load.clone() };
+    let mut radau = Radau::new(&mut model, options)?;
+    let pulsed = radau.solve_sampled(0.0, start, 5.0, 0.025, &Sampling::Every(0.005), |t, _, d| {
+        d.set_input(volt, pwm.at(t));
+    })?;
+    let (m, l) = (&drive.motor, &drive.load);
+    let steady = |v: f64| m.k * v / (m.r * l.b + m.k * m.k);
+    let speed = |s: &Solution<Drive, dirac::RadauStats>| s.v(Drive::MOTOR_THETA)[s.len() - 1];
+    println!(
+        "ramp to 12 V: speed at t = 5 s {:.4} rad/s (steady state at 12 V: {:.4}); PWM 50%: {:.4} rad/s \
+         (steady state at the mean 6 V: {:.4}), {} restarts",
+        speed(&ramped),
+        steady(12.0),
+        speed(&pulsed),
+        steady(6.0),
+        (5.0f64 / 0.025) as usize
+    );
+    let path = output_dir()?.join("motor_driven_speed.svg");
+    Chart {
+        title: "DC motor driven from voltage tables: speed",
+        x_label: "time t [s]",
+        y_label: "speed [rad/s]",
+        series: vec![
+            Series { name: "ramp 0-12 V over 2 s", x: ramped.t(), y: ramped.v(Drive::MOTOR_THETA) },
+            Series { name: "PWM 50% at 20 Hz, 12 V", x: pulsed.t(), y: pulsed.v(Drive::MOTOR_THETA) },
+        ],
+        log_y: false,
+    }
+    .write(&path)?;
+    Ok(path)
 }
