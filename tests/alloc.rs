@@ -204,15 +204,23 @@ fn steps_with_driven_inputs_do_not_allocate() {
     let mut law = |t: f64, state: &State<ForcedSpring>, model: &mut ForcedSpring| {
         model.f = 0.3 * t.sin() - 5.0 * state.q[0] - 0.8 * state.v[0];
     };
-    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
-    radau.drive_feedback(&mut law).expect("a dense model");
-    radau.start(0.0, &s, 100.0).expect("starts");
-    for _ in 0..5 {
-        radau.step().expect("steps");
+    let mut law_jacobian =
+        |_: f64, _: &State<ForcedSpring>, out: &mut [f64]| out.copy_from_slice(&[-5.0, -0.8]);
+    for given in [false, true] {
+        let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+        if given {
+            radau.drive_feedback_with(&mut law, &mut law_jacobian).expect("a dense model");
+        } else {
+            radau.drive_feedback(&mut law).expect("a dense model");
+        }
+        radau.start(0.0, &s, 100.0).expect("starts");
+        for _ in 0..5 {
+            radau.step().expect("steps");
+        }
+        let before = allocations();
+        for _ in 0..200 {
+            radau.step().expect("steps");
+        }
+        assert_eq!(allocations() - before, 0, "feedback Jacobian given: {given}");
     }
-    let before = allocations();
-    for _ in 0..200 {
-        radau.step().expect("steps");
-    }
-    assert_eq!(allocations() - before, 0);
 }

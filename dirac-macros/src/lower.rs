@@ -22,9 +22,12 @@ pub enum Role {
     Time,
     /// A named intermediate quantity (`define(len) = …`): its expression.
     Define,
+    /// A constraint's name, standing for its multiplier: only in outputs.
+    Multiplier,
 }
 
 /// The names an expression may refer to and the symbols they lower to.
+#[derive(Clone)]
 pub struct Scope {
     names: HashMap<String, (Id, Role)>,
     ordered: Vec<String>,

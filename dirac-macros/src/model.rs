@@ -109,12 +109,17 @@ impl SymModel {
                 sm.force[i] = x;
             }
         }
+        sm.lower_constraints(cx, model, &scope);
+        // Outputs may also name a constraint, standing for its multiplier.
+        let mut with_multipliers = scope.clone();
+        for (row, &lambda) in sm.constraints.iter().zip(&sm.lambda) {
+            with_multipliers.declare(row.name.clone(), lambda, Role::Multiplier);
+        }
         for o in &model.outputs {
             let what = format!("the output `{}`", o.name);
-            let lowered = lw.lower(&o.expr, Context { what: &what, ..all });
+            let lowered = sm.lowerer(cx, &with_multipliers).lower(&o.expr, Context { what: &what, ..all });
             sm.outputs.push((o.name.to_string(), lowered.unwrap_or(zero)));
         }
-        sm.lower_constraints(cx, model, &scope);
         sm.lagrangian = lagrangian?;
         (!cx.has_errors()).then_some(sm)
     }

@@ -99,6 +99,7 @@ where
         column_major(ny, n, &|out| model.output_dv(t, q, v, out)),
         column_major(ny, nu, &|out| model.output_du(t, q, v, out)),
     );
+    refuse_outputs_of_multipliers(model, t, state)?;
     let positions = kernel(&a.rows(0, nh).into_owned(), n, t)?;
     let velocities = kernel(&a, n, t)?;
     let mass = velocities.transpose() * &lvv * &velocities;
@@ -174,4 +175,38 @@ where
         });
     }
     Ok(())
+}
+
+/// Refuses outputs that read a multiplier: in minimal coordinates the multipliers are
+/// functions of the state that this linearisation does not form. Found by moving every
+/// multiplier by a different amount.
+fn refuse_outputs_of_multipliers<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.output_names();
+    if names.is_empty() || state.lambda.is_empty() {
+        return Ok(());
+    }
+    let (mut base, mut moved) = (vec![0.0; names.len()], vec![0.0; names.len()]);
+    model.outputs(t, &state.q, &state.v, &state.lambda, &mut base);
+    let mut lambda = state.lambda.clone();
+    for (j, x) in lambda.iter_mut().enumerate() {
+        *x += 1.0 + 0.37 * j as f64;
+    }
+    model.outputs(t, &state.q, &state.v, &lambda, &mut moved);
+    match base.iter().zip(&moved).position(|(a, b)| a != b) {
+        Some(k) => Err(SimError::InvalidOption {
+            what: "linearize",
+            reason: format!(
+                "the output `{}` reads a multiplier, which the linear model in minimal coordinates does not hold",
+                names[k]
+            ),
+        }),
+        None => Ok(()),
+    }
 }

@@ -256,11 +256,11 @@ where
         Self::NAMES.output_names()
     }
 
-    /// The model's outputs at `(t, q, v)`, into `out` (one value per output, in the order of
-    /// their keys). The derive implements it for models with outputs; for a model without,
+    /// The model's outputs at `(t, q, v, λ)`, into `out` (one value per output, in the order
+    /// of their keys). The derive implements it for models with outputs; for a model without,
     /// there is nothing to write.
-    fn outputs(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
-        let _ = (t, q, v);
+    fn outputs(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
         assert!(out.is_empty(), "outputs: the model has none, so the output slice must be empty");
     }
 

@@ -208,7 +208,7 @@ where
         for (k, &i) in l.ports.iter().enumerate() {
             self.columns[l.port(k)].push(w.forces[i]);
         }
-        model.outputs(t, &s.q, &s.v, &mut w.outputs);
+        model.outputs(t, &s.q, &s.v, &s.lambda, &mut w.outputs);
         for (k, &y) in w.outputs.iter().enumerate() {
             self.columns[l.output(k)].push(y);
         }

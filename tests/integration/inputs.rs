@@ -254,10 +254,18 @@ fn a_linearly_interpolated_table_gives_the_ramp_response() {
     assert!((x - exact(4.0)).abs() < 1e-8, "x(4) = {x} against {}", exact(4.0));
 }
 
-/// Radau on the forced spring under the continuous feedback `f = −K x − D v`, with or without
-/// the inputs' part of the Jacobian; the largest error against the closed loop's closed form
-/// and the Newton iterations.
-fn feedback_run(with_jacobian: bool) -> (f64, usize) {
+/// How the feedback's part of the Newton matrix is formed.
+#[derive(Clone, Copy)]
+enum FeedbackJacobian {
+    None,
+    Differences,
+    Given,
+}
+
+/// Radau on the forced spring under the continuous feedback `f = −K x − D v`, with the given
+/// Jacobian treatment; the largest error against the closed loop's closed form and the Newton
+/// iterations.
+fn feedback_run(jacobian: FeedbackJacobian) -> (f64, usize) {
     // m ẍ + D ẋ + (k + K) x = 0, x(0) = x0, ẋ(0) = 0: an underdamped oscillator.
     let (m, k, gain, damping, x0): (f64, f64, f64, f64, f64) = (1.0, 4.0, 5.0, 0.8, 1.0);
     let (sigma, wd) = (damping / (2.0 * m), ((k + gain) / m - (damping / (2.0 * m)).powi(2)).sqrt());
@@ -267,12 +275,17 @@ fn feedback_run(with_jacobian: bool) -> (f64, usize) {
     let mut law = |_: f64, s: &State<ForcedSpring>, model: &mut ForcedSpring| {
         model.f = -gain * s.q[0] - damping * s.v[0];
     };
+    // ∂f/∂(x, v), one input, two columns.
+    let mut law_jacobian =
+        |_: f64, _: &State<ForcedSpring>, out: &mut [f64]| out.copy_from_slice(&[-gain, -damping]);
     let tol = 1e-10;
     let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(tol, tol)).expect("valid");
-    if with_jacobian {
-        radau.drive_feedback(&mut law).expect("a dense model");
-    } else {
-        radau.drive(&mut law).expect("an exclusive model");
+    match jacobian {
+        FeedbackJacobian::None => radau.drive(&mut law).expect("an exclusive model"),
+        FeedbackJacobian::Differences => radau.drive_feedback(&mut law).expect("a dense model"),
+        FeedbackJacobian::Given => {
+            radau.drive_feedback_with(&mut law, &mut law_jacobian).expect("a dense model")
+        }
     }
     let times: Vec<f64> = (1..=20).map(|i| 0.25 * i as f64).collect();
     let solution = radau.solve(0.0, &start, 5.0, &Sampling::Times(times.clone())).expect("integrates");
@@ -284,11 +297,18 @@ fn feedback_run(with_jacobian: bool) -> (f64, usize) {
 
 #[test]
 fn continuous_feedback_closes_the_loop_with_its_jacobian() {
-    let (error, iterations) = feedback_run(true);
+    let (error, iterations) = feedback_run(FeedbackJacobian::Differences);
     assert!(error < 1e-8, "closed-loop error {error:e}");
+    let (error_given, iterations_given) = feedback_run(FeedbackJacobian::Given);
+    assert!(error_given < 1e-8, "closed-loop error with the given Jacobian {error_given:e}");
+    // Differences and the exact product build the same Newton matrix up to round-off.
+    assert!(
+        iterations_given.abs_diff(iterations) <= iterations / 20,
+        "{iterations_given} against {iterations}"
+    );
     // Without the inputs' part of the Newton matrix the iteration still converges on this
     // mild loop, to the same solution, but it needs more iterations.
-    let (error_without, iterations_without) = feedback_run(false);
+    let (error_without, iterations_without) = feedback_run(FeedbackJacobian::None);
     assert!(error_without < 1e-8, "closed-loop error without the feedback Jacobian {error_without:e}");
     assert!(
         iterations < iterations_without,
@@ -368,7 +388,50 @@ fn a_composite_records_its_members_outputs() {
     // Read directly from the model, as a controller would.
     let last = solution.last().expect("a sample");
     let mut values = [0.0; 4];
-    pair.outputs(2.0, &last.q, &last.v, &mut values);
+    pair.outputs(2.0, &last.q, &last.v, &last.lambda, &mut values);
     assert_eq!(values[1], 4.0 * last.q[0]);
     assert_eq!(values[3], 5.0 * last.q[1]);
+}
+
+/// The zoo's Cartesian pendulum with the rod's tension as an output: the force `Aᵀλ = 2λ q`
+/// has magnitude `2 |λ| l` along the rod.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(holonomic(rod) = x * x + y * y - l * l)]
+#[dirac(output(tension) = -2.0 * l * rod)]
+struct TautPendulum {
+    m: f64,
+    g: f64,
+    l: f64,
+}
+
+#[test]
+fn an_output_reads_a_multiplier_by_its_constraint_name() {
+    // Released at rest from the horizontal, the bob passes the bottom after a quarter period,
+    // T/4 = √(l/g) K(1/2) (DESIGN.md §3), at speed v² = 2 g l: the rod pulls m g + m v²/l = 3 m g.
+    let (m, g, l) = (1.0, 9.81, 1.0);
+    let model = TautPendulum { m, g, l };
+    let q = VecQ::<TautPendulum>::from([l, 0.0]);
+    let start = consistent_state(&model, 0.0, &q, &VecQ::<TautPendulum>::zeros(), Consistency::default())
+        .expect("consistent");
+    let quarter = 2.367_841_947_576_237_4 / 4.0;
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let solution = radau.solve(0.0, &start, quarter, &Sampling::Times(vec![quarter])).expect("integrates");
+    let tension = solution.output(TautPendulum::TENSION)[0];
+    assert!((tension - 3.0 * m * g).abs() < 1e-5 * m * g, "tension {tension} against 3 m g");
+    // Hanging at rest it carries the weight; a linearisation refuses to hold it.
+    let hanging = consistent_state(
+        &model,
+        0.0,
+        &VecQ::<TautPendulum>::from([0.0, -l]),
+        &VecQ::<TautPendulum>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    let mut values = [0.0];
+    model.outputs(0.0, &hanging.q, &hanging.v, &hanging.lambda, &mut values);
+    assert!((values[0] - m * g).abs() < 1e-12, "tension at rest {}", values[0]);
+    let error = linearize(&model, 0.0, &hanging).expect_err("an output of a multiplier");
+    assert!(error.to_string().contains("`tension` reads a multiplier"), "{error}");
 }

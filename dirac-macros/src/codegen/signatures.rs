@@ -95,7 +95,7 @@ pub const JACOBIAN: Signature = method("jacobian", &[T, Y], Out::MatYY);
 /// `SparseJacobian::jacobian_csc`, which primitives implement.
 pub const JACOBIAN_CSC: Signature = method("jacobian_csc", &[T, Y], Out::Values);
 /// The model's outputs, in the order declared; emitted for models that have outputs.
-pub const OUTPUTS: Signature = method("outputs", &[T, Q, V], Out::Values);
+pub const OUTPUTS: Signature = method("outputs", &[T, Q, V, Lambda], Out::Values);
 /// The derivatives for linearisation, each a dense column-major block in a slice; emitted for
 /// models with inputs or outputs.
 pub const DPDOT_DU: Signature = method("dpdot_du", &[T, Q, V, Lambda], Out::Values);

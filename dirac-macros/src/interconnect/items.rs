@@ -159,6 +159,7 @@ pub fn output_method(composite: &Composite<'_>) -> TokenStream {
                     t,
                     &#p::gather_q::<#ty, Self>(q, &#slot),
                     &#p::gather_q::<#ty, Self>(v, &#slot),
+                    &#p::gather_c::<#ty, Self>(lambda, &#slot),
                     &mut out[start..start + count],
                 );
             }
@@ -170,6 +171,7 @@ pub fn output_method(composite: &Composite<'_>) -> TokenStream {
             t: ::core::primitive::f64,
             q: &#p::VecQ<Self>,
             v: &#p::VecQ<Self>,
+            lambda: &#p::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             ::core::assert_eq!(

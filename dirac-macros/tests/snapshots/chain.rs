@@ -1146,6 +1146,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             ::core::assert_eq!(
@@ -1169,6 +1170,10 @@ const _: () = {
                                 Primitive1,
                                 Self,
                             >(v, &__SLOT0),
+                            &::dirac::__private::gather_c::<
+                                Primitive1,
+                                Self,
+                            >(lambda, &__SLOT0),
                             &mut out[start..start + count],
                         );
                 }
@@ -1190,6 +1195,10 @@ const _: () = {
                                 Primitive2,
                                 Self,
                             >(v, &__SLOT1),
+                            &::dirac::__private::gather_c::<
+                                Primitive2,
+                                Self,
+                            >(lambda, &__SLOT1),
                             &mut out[start..start + count],
                         );
                 }

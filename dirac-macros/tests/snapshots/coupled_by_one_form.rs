@@ -1335,6 +1335,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             ::core::assert_eq!(
@@ -1352,6 +1353,10 @@ const _: () = {
                             t,
                             &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                             &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                            &::dirac::__private::gather_c::<
+                                Wheel,
+                                Self,
+                            >(lambda, &__SLOT0),
                             &mut out[start..start + count],
                         );
                 }
@@ -1367,6 +1372,10 @@ const _: () = {
                             t,
                             &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                             &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                            &::dirac::__private::gather_c::<
+                                Cart,
+                                Self,
+                            >(lambda, &__SLOT1),
                             &mut out[start..start + count],
                         );
                 }

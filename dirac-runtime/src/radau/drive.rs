@@ -1,6 +1,7 @@
 //! Inputs set from time and state inside the steps: Radau calls a drive before every
-//! evaluation of the model, and with feedback adds the inputs' part of the Jacobian, by
-//! finite differences through the inputs alone.
+//! evaluation of the model, and with feedback adds the inputs' part of the Jacobian, from the
+//! user's `∂u/∂(q, v)` and the generated `∂ṗ/∂u`, or by finite differences through the inputs
+//! alone.
 
 use nalgebra::DefaultAllocator;
 
@@ -16,9 +17,13 @@ use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
 use crate::state::State;
 
+/// The feedback's `∂u/∂(q, v)`, written by the user as `n_u × 2n` values, column-major (the
+/// columns of `q`, then those of `v`).
+pub(crate) type FeedbackJacobian<'m, M> = &'m mut dyn FnMut(f64, &State<M>, &mut [f64]);
+
 /// The storage of the inputs' Jacobian columns: `ṗ` at the current inputs and at the inputs of
-/// a perturbed state, and that state.
-pub(crate) struct Feedback<M: LagrangeDirac>
+/// a perturbed state, and that state; with the user's `∂u/∂(q, v)`, it and `∂ṗ/∂u`.
+pub(crate) struct Feedback<'m, M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -27,19 +32,22 @@ where
     perturbed: VecY<M>,
     state: State<M>,
     sizes: Sizes,
+    exact: Option<(FeedbackJacobian<'m, M>, Vec<f64>, Vec<f64>)>,
 }
 
-impl<M: LagrangeDirac> Feedback<M>
+impl<'m, M: LagrangeDirac> Feedback<'m, M>
 where
     DefaultAllocator: Storage<M>,
 {
-    fn new(sizes: Sizes) -> Self {
+    fn new(sizes: Sizes, exact: Option<(FeedbackJacobian<'m, M>, usize)>) -> Self {
+        let n = sizes.nq;
         Feedback {
             base: ResidualBlocks::with_sizes(&sizes),
             moved: ResidualBlocks::with_sizes(&sizes),
             perturbed: sizes.zeros_y::<M>(),
             state: State::with_sizes(sizes),
             sizes,
+            exact: exact.map(|(jacobian, nu)| (jacobian, vec![0.0; n * nu], vec![0.0; nu * 2 * n])),
         }
     }
 
@@ -58,6 +66,22 @@ where
         let Layout { q: q0, v: v0, .. } = Layout::new(self.sizes);
         self.state.read_y(y);
         let s = &self.state;
+        if let Some((jacobian, du, gains)) = &mut self.exact {
+            // ∂ṗ/∂u (n × n_u) times the user's ∂u/∂(q, v) (n_u × 2n), both column-major.
+            residual.apply(model, t, y);
+            model.dpdot_du(t, &s.q, &s.v, &s.lambda, du);
+            jacobian(t, s, gains);
+            let nu = du.len() / n.max(1);
+            for column in 0..2 * n {
+                let block = if column < n { &mut jac.dpdot_dq } else { &mut jac.dpdot_dv };
+                let values = M::Algebra::qq_values_mut(block);
+                let j = column % n;
+                for i in 0..n {
+                    values[j * n + i] += (0..nu).map(|k| du[k * n + i] * gains[column * nu + k]).sum::<f64>();
+                }
+            }
+            return;
+        }
         residual.apply(model, t, y);
         model.residual_blocks(t, &s.q, &s.v, &s.lambda, &mut self.base);
         for column in 0..2 * n {
@@ -90,7 +114,7 @@ where
     /// `&mut model`; set it before `start`. The drive is borrowed for as long as the
     /// integrator lives: keep it in a variable (`let mut source = |t, _, m| …;`).
     pub fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
-        self.set_drive(drive, false)
+        self.set_drive(drive, None)
     }
 
     /// Like [`Radau::drive`], for a drive that reads the state (continuous feedback,
@@ -101,23 +125,48 @@ where
         &mut self,
         drive: &'m mut dyn FnMut(f64, &State<M>, &mut M),
     ) -> Result<(), SimError> {
+        self.check_dense()?;
+        self.set_drive(drive, Some(None))
+    }
+
+    /// Like [`Radau::drive_feedback`], with the feedback's Jacobian `∂u/∂(q, v)` from the
+    /// user: `jacobian(t, state, out)` writes it as `n_u × 2n` values, column by column (the
+    /// columns of the positions, then those of the velocities). The Newton matrix then gets
+    /// `∂ṗ/∂u · ∂u/∂(q, v)` exactly, `∂ṗ/∂u` from the generated derivatives, at the cost of
+    /// one evaluation of each per Jacobian. Dense models only.
+    pub fn drive_feedback_with(
+        &mut self,
+        drive: &'m mut dyn FnMut(f64, &State<M>, &mut M),
+        jacobian: FeedbackJacobian<'m, M>,
+    ) -> Result<(), SimError> {
+        self.check_dense()?;
+        let nu = self.model.input_names().len();
+        self.set_drive(drive, Some(Some((jacobian, nu))))
+    }
+
+    fn check_dense(&self) -> Result<(), SimError> {
         if M::Algebra::dense_qq(&self.jac.dpdot_dq).is_none() {
             return Err(SimError::InvalidOption {
                 what: "drive_feedback",
-                reason: "its finite-difference Jacobian needs a model with dense blocks (of fixed size)"
-                    .into(),
+                reason: "its Jacobian needs a model with dense blocks (of fixed size)".into(),
             });
         }
-        self.set_drive(drive, true)
+        Ok(())
     }
 
-    fn set_drive(&mut self, drive: Drive<'m, M>, feedback: bool) -> Result<(), SimError> {
+    /// Sets the drive; `feedback` is `None` for a drive without a Jacobian part, `Some(None)`
+    /// for finite differences, `Some(Some(..))` for the user's `∂u/∂(q, v)`.
+    fn set_drive(
+        &mut self,
+        drive: Drive<'m, M>,
+        feedback: Option<Option<(FeedbackJacobian<'m, M>, usize)>>,
+    ) -> Result<(), SimError> {
         if self.model.get_mut().is_none() {
             return Err(SimError::SharedModel { t: self.t });
         }
         let sizes = self.model.sizes();
         self.residual.set_drive(drive, sizes);
-        self.feedback = feedback.then(|| Box::new(Feedback::new(sizes)));
+        self.feedback = feedback.map(|exact| Box::new(Feedback::new(sizes, exact)));
         self.need_jac = true;
         Ok(())
     }

@@ -69,7 +69,7 @@ where
     residual: Residual<'m, M>,
     /// With a drive that feeds the state back: the residual blocks at the current inputs and
     /// at perturbed ones, and the perturbed state, for the inputs' part of the Jacobian.
-    feedback: Option<Box<Feedback<M>>>,
+    feedback: Option<Box<Feedback<'m, M>>>,
     stages: Stages<M>,
     estimator: Estimator<M>,
     dense: Dense<M>,
