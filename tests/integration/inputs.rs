@@ -435,3 +435,59 @@ fn an_output_reads_a_multiplier_by_its_constraint_name() {
     let error = linearize(&model, 0.0, &hanging).expect_err("an output of a multiplier");
     assert!(error.to_string().contains("`tension` reads a multiplier"), "{error}");
 }
+
+/// Springs whose ends are all joined: an array whose elements have inputs and outputs.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(springs[i].x, springs[i + 1].x))]
+struct Bundle {
+    springs: Vec<ForcedSpring>,
+}
+
+#[test]
+fn an_array_exposes_its_elements_inputs_and_outputs() {
+    // Joined ends: (Σ m) ẍ = −(Σ k) x + Σ f; element j's `stretch` is k_j x.
+    let springs: Vec<ForcedSpring> =
+        (0..4).map(|j| ForcedSpring { m: 1.0 + j as f64, k: 2.0 + j as f64, f: 0.0 }).collect();
+    let (mass, stiffness) =
+        (springs.iter().map(|s| s.m).sum::<f64>(), springs.iter().map(|s| s.k).sum::<f64>());
+    let mut bundle = Bundle { springs };
+    assert_eq!(bundle.input_names(), ["springs[0].f", "springs[1].f", "springs[2].f", "springs[3].f"]);
+    assert_eq!(bundle.output_names().len(), 8);
+    assert_eq!(bundle.output_names()[3], "springs[1].stretch");
+    let third = bundle.springs_input(2, ForcedSpring::F);
+    assert_eq!(third.index(), 2);
+    bundle.set_input(third, 1.5);
+    assert_eq!((bundle.springs[2].f, bundle.input(third)), (1.5, 1.5));
+    bundle.set_input(third, 0.0);
+    let stretch = bundle.springs_output(1, ForcedSpring::STRETCH);
+    assert_eq!(stretch.index(), 3);
+
+    let sizes = bundle.sizes();
+    let q = VecQ::<Bundle>::from_element_generic(
+        dirac::nalgebra::Dyn(sizes.nq),
+        dirac::nalgebra::Const::<1>,
+        0.4,
+    );
+    let v = VecQ::<Bundle>::zeros_generic(dirac::nalgebra::Dyn(sizes.nq), dirac::nalgebra::Const::<1>);
+    let start = consistent_state(&bundle, 0.0, &q, &v, Consistency::default()).expect("consistent");
+    let tol = 1e-11;
+    let mut radau = Radau::new(&mut bundle, RadauOptions::tolerances(tol, tol)).expect("valid");
+    let solution = radau
+        .solve_sampled(0.0, &start, 2.0, 0.5, &Sampling::Times(vec![2.0]), |t, _, model| {
+            model.set_input(third, if t < 1.0 { 0.0 } else { 2.0 });
+        })
+        .expect("integrates");
+    let expected = propagate(propagate((0.4, 0.0), 0.0, (mass, stiffness), 1.0), 2.0, (mass, stiffness), 1.0);
+    let end = solution.last().expect("a sample");
+    assert!((end.q[0] - expected.0).abs() < 1e-8, "x = {} against {}", end.q[0], expected.0);
+    let recorded = solution.output(stretch)[0];
+    assert!((recorded - 3.0 * expected.0).abs() < 1e-8, "springs[1].stretch = {recorded}");
+    assert_eq!(solution.column("out(springs[1].stretch)").map(|c| c[0]), Some(recorded));
+}
+
+#[test]
+#[should_panic(expected = "`springs` has 2 elements; there is no element 5")]
+fn a_key_past_the_end_of_an_array_of_inputs_panics() {
+    let bundle = Bundle { springs: vec![ForcedSpring { m: 1.0, k: 1.0, f: 0.0 }; 2] };
+    let _ = bundle.springs_input(5, ForcedSpring::F);
+}

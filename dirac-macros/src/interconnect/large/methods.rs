@@ -34,6 +34,7 @@ impl Large<'_> {
         let mut out: TokenStream =
             REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| self.method(sig)).collect();
         out.extend(self.non_finite_parameter());
+        out.extend(self.io_methods());
         out
     }
 

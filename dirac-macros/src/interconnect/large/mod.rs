@@ -8,6 +8,7 @@
 //! subsystem's type when the program compiles; where each element sits is computed when it
 //! runs ([`Placement`](../../../dirac_runtime/arrays/struct.Placement.html)).
 
+mod io;
 mod methods;
 mod names;
 
@@ -240,22 +241,7 @@ pub fn implementation(
         quote! { const #q: ::core::primitive::usize = 0; }
     });
     let resolutions = model.resolutions(composite);
-    let mut asserts = super::subsystem_asserts(composite);
-    // Inputs and outputs are dispatched by a composite of named subsystems only, so far.
-    asserts.extend(composite.subsystems.iter().map(|s| {
-        let ty = &s.ty;
-        let message = format!(
-            "`{}` has inputs or outputs: a composite with arrays of subsystems cannot expose its \
-             members' inputs and outputs yet",
-            quote!(#ty)
-        );
-        quote_spanned! {ty.span()=>
-            const _: () = ::core::assert!(
-                <#ty as #p::Named>::NAMES.input_count() == 0 && <#ty as #p::Named>::NAMES.output_count() == 0,
-                #message
-            );
-        }
-    }));
+    let asserts = super::subsystem_asserts(composite);
     let bounds = super::bounds(composite);
     let placement = large.placement();
     let shape = large.shape();

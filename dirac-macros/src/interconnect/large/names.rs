@@ -177,7 +177,8 @@ impl Large<'_> {
                 }
             }
         });
-        quote! { #(#items)* }
+        let io = self.io_keys();
+        quote! { #(#items)* #io }
     }
 
     /// The associated constants: operation counts of one subsystem of each field and one
