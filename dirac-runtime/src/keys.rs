@@ -121,7 +121,8 @@ macro_rules! model_key {
                 if index < M::NAMES.$count() { Some(Self { index, model: PhantomData }) } else { None }
             }
 
-            #[doc = concat!("The full dotted name of this ", $what, ", such as `", $example, "`.")]
+            #[doc = concat!("The full dotted name of this ", $what, ", such as `", $example, "` (for a model")]
+            #[doc = concat!("made of arrays, ask the model: `model.", stringify!($names), "()[key.index()]`).")]
             pub fn name(self) -> String {
                 M::NAMES.$names().swap_remove(self.index)
             }
