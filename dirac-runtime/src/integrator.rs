@@ -41,9 +41,10 @@ where
     /// Starts again from the current time and state, towards `t_end`, after the model changed:
     /// the step-size history and the extrapolated stages are dropped, the step size and the
     /// counters kept (Radau keeps its last Jacobian as the simplified Newton iteration's
-    /// matrix until the iteration's convergence asks for a new one). Positions, velocities and momenta carry over, so a change must keep
-    /// `p = ∂L/∂v` (inputs in forces or in the potential do; one in the mass matrix is refused
-    /// with [`SimError::MomentumChanged`]). Does nothing once `t_end` is reached.
+    /// matrix until the iteration's convergence asks for a new one). Positions, velocities
+    /// and momenta carry over, so a change must keep `p = ∂L/∂v` (inputs in forces or in the
+    /// potential do; one in the mass matrix is refused with [`SimError::MomentumChanged`]).
+    /// Does nothing once `t_end` is reached.
     fn restart_until(&mut self, t_end: f64) -> Result<(), SimError>;
 
     /// [`Integrator::restart_until`] the current end time.
@@ -82,18 +83,12 @@ where
     where
         Self: Sized,
     {
-        if !(period > 0.0 && period.is_finite()) {
-            return Err(SimError::InvalidOption {
-                what: "period",
-                reason: format!("{period} is not positive and finite"),
-            });
-        }
+        check_period(t0, t_end, period)?;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         let mut held = state.clone();
         let sample = |k: usize| (t0 + k as f64 * period).min(t_end);
         controller(t0, &held, self.model_mut().ok_or(SimError::SharedModel { t: t0 })?);
-        self.start(t0, state, t_end)?;
-        self.restart_until(sample(1))?;
+        self.start(t0, state, sample(1))?;
         recorder.record_initial(self.model(), t0, self.state());
         let mut k = 1;
         while self.t() < t_end {
@@ -110,7 +105,7 @@ where
             k += 1;
             self.restart_until(sample(k))?;
         }
-        Ok(recorder.finish(self.stats()))
+        recorder.finish(self.stats())
     }
 
     /// Sets an input between steps and restarts.
@@ -178,7 +173,7 @@ where
                 break;
             }
         }
-        Ok(recorder.finish(self.stats()))
+        recorder.finish(self.stats())
     }
 }
 
@@ -206,6 +201,35 @@ where
         Some((equation, residual)) => Err(SimError::StateNotConsistent { t: t0, equation, residual }),
         None => Ok(()),
     }
+}
+
+/// The most sample intervals [`Integrator::solve_sampled`] takes on: a period this short
+/// against the span is a mistake, not a controller.
+const MAX_SAMPLES: f64 = 1e9;
+
+/// A sampling period that is positive, finite, resolvable at the span's times and not absurdly
+/// short for the span.
+fn check_period(t0: f64, t_end: f64, period: f64) -> Result<(), SimError> {
+    if !(t0.is_finite() && t_end.is_finite() && t_end > t0) {
+        return Err(SimError::InvalidTimeSpan {
+            reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
+        });
+    }
+    let invalid = |reason: String| Err(SimError::InvalidOption { what: "period", reason });
+    if !(period > 0.0 && period.is_finite()) {
+        return invalid(format!("{period} is not positive and finite"));
+    }
+    let magnitude = t0.abs().max(t_end.abs());
+    if period <= 16.0 * f64::EPSILON * magnitude {
+        return invalid(format!("{period:e} is below the resolution of t at {magnitude:e}"));
+    }
+    let samples = (t_end - t0) / period;
+    if samples > MAX_SAMPLES {
+        return invalid(format!(
+            "{period:e} makes {samples:e} samples from {t0} to {t_end}, more than {MAX_SAMPLES:e}"
+        ));
+    }
+    Ok(())
 }
 
 /// The checks of a restart after the model changed: finite parameters, and momenta that

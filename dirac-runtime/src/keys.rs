@@ -25,24 +25,9 @@ pub struct Constraint<M: ?Sized> {
     model: PhantomData<fn() -> M>,
 }
 
-macro_rules! key_impls {
-    ($key:ident, $what:literal, $names:ident, $count:ident) => {
-        impl<M: Fixed + ?Sized> $key<M> {
-            #[doc = concat!("The ", $what, " at this position, for generated code: it panics (at")]
-            /// compile time in a `const`) if the model has no such position. Use the named
-            /// constants the derive emits, or `checked`.
-            #[doc(hidden)]
-            pub const fn new(index: usize) -> Self {
-                assert!(index < M::$count, "the model has no such position");
-                Self { index, model: PhantomData }
-            }
-
-            #[doc = concat!("The ", $what, " at this position, if the model has one.")]
-            pub const fn checked(index: usize) -> Option<Self> {
-                if index < M::$count { Some(Self { index, model: PhantomData }) } else { None }
-            }
-        }
-
+/// What every key type has: its position, and value semantics.
+macro_rules! common_key_impls {
+    ($key:ident, $what:literal) => {
         impl<M: ?Sized> $key<M> {
             /// The key at this position, for generated code that has checked it against the
             /// model. Not part of the public API.
@@ -51,17 +36,9 @@ macro_rules! key_impls {
                 Self { index, model: PhantomData }
             }
 
-            #[doc = concat!("The position of this ", $what, " in its vector.")]
+            #[doc = concat!("The position of this ", $what, " among the model's.")]
             pub const fn index(self) -> usize {
                 self.index
-            }
-        }
-
-        impl<M: Named + Fixed> $key<M> {
-            #[doc = concat!("The full dotted name of this ", $what, ", such as `left.x2` (for a")]
-            /// model made of arrays, ask the model: `model.coordinate_names()[key.index()]`).
-            pub fn name(self) -> String {
-                M::NAMES.$names().swap_remove(self.index)
             }
         }
 
@@ -84,6 +61,36 @@ macro_rules! key_impls {
         impl<M: ?Sized> fmt::Debug for $key<M> {
             fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
                 write!(f, "{}(#{})", stringify!($key), self.index)
+            }
+        }
+    };
+}
+
+macro_rules! key_impls {
+    ($key:ident, $what:literal, $names:ident, $count:ident) => {
+        impl<M: Fixed + ?Sized> $key<M> {
+            #[doc = concat!("The ", $what, " at this position, for generated code: it panics (at")]
+            /// compile time in a `const`) if the model has no such position. Use the named
+            /// constants the derive emits, or `checked`.
+            #[doc(hidden)]
+            pub const fn new(index: usize) -> Self {
+                assert!(index < M::$count, "the model has no such position");
+                Self { index, model: PhantomData }
+            }
+
+            #[doc = concat!("The ", $what, " at this position, if the model has one.")]
+            pub const fn checked(index: usize) -> Option<Self> {
+                if index < M::$count { Some(Self { index, model: PhantomData }) } else { None }
+            }
+        }
+
+        common_key_impls!($key, $what);
+
+        impl<M: Named + Fixed> $key<M> {
+            #[doc = concat!("The full dotted name of this ", $what, ", such as `left.x2` (for a")]
+            /// model made of arrays, ask the model: `model.coordinate_names()[key.index()]`).
+            pub fn name(self) -> String {
+                M::NAMES.$names().swap_remove(self.index)
             }
         }
 
@@ -128,41 +135,8 @@ macro_rules! model_key {
             }
         }
 
-        impl<M: ?Sized> $key<M> {
-            /// The key at this position, for generated code that has checked it against the
-            /// model. Not part of the public API.
-            #[doc(hidden)]
-            pub const fn unchecked(index: usize) -> Self {
-                Self { index, model: PhantomData }
-            }
+        common_key_impls!($key, $what);
 
-            #[doc = concat!("The position of this ", $what, " among the model's.")]
-            pub const fn index(self) -> usize {
-                self.index
-            }
-        }
-
-        impl<M: ?Sized> Clone for $key<M> {
-            fn clone(&self) -> Self {
-                *self
-            }
-        }
-
-        impl<M: ?Sized> Copy for $key<M> {}
-
-        impl<M: ?Sized> PartialEq for $key<M> {
-            fn eq(&self, other: &Self) -> bool {
-                self.index == other.index
-            }
-        }
-
-        impl<M: ?Sized> Eq for $key<M> {}
-
-        impl<M: ?Sized> fmt::Debug for $key<M> {
-            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                write!(f, "{}({})", stringify!($key), self.index)
-            }
-        }
     };
 }
 

@@ -22,7 +22,7 @@ use crate::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::diagnose::violated_equation;
 use crate::dims::Storage;
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
+use crate::model::{LagrangeDirac, check_parameters};
 use crate::state::State;
 
 /// A linear model `δẋ = A δx + B δu`, `δy = C δx + D δu` about an equilibrium, in minimal
@@ -59,6 +59,7 @@ pub fn linearize<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Resul
 where
     DefaultAllocator: Storage<M>,
 {
+    check_parameters(model)?;
     let sizes = model.sizes();
     let (n, m, nh) = (sizes.nq, sizes.nc, sizes.nh);
     let (nu, ny) = (model.input_names().len(), model.output_names().len());
@@ -165,7 +166,7 @@ where
     let mut blocks = ResidualBlocks::<M>::with_sizes(&model.sizes());
     model.residual_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);
     let size = 1.0 + blocks.dl_dv.amax();
-    if let Some(i) = blocks.momentum_rate.iter().position(|r| r.abs() > 1e-8 * size.max(1.0)) {
+    if let Some(i) = blocks.momentum_rate.iter().position(|r| r.abs() > 1e-8 * size) {
         return Err(SimError::NotEquilibrium {
             t,
             detail: format!(

@@ -85,7 +85,7 @@ where
             forces: sizes.zeros_q::<M>(),
             outputs: vec![0.0; layout.outputs],
         };
-        let table = Table { layout, columns, scratch };
+        let table = Table { layout, columns, scratch, non_finite_output: None };
         let buffer = State::with_sizes(sizes);
         Ok(Recorder { table, names, sampling: sampling.clone(), next: 0, t0, t_end, last: f64::NAN, buffer })
     }
@@ -152,9 +152,17 @@ where
         }
     }
 
-    /// The finished solution, with the integrator's statistics.
-    pub fn finish<S>(self, stats: S) -> Solution<M, S> {
-        Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats)
+    /// The finished solution, with the integrator's statistics; an error naming the first
+    /// output that was not finite, where it was not.
+    pub fn finish<S>(self, stats: S) -> Result<Solution<M, S>, SimError> {
+        if let Some((t, k)) = self.table.non_finite_output {
+            // The column is named `out(name)`.
+            let column = &self.names[self.table.layout.output(k)];
+            let name = column.strip_prefix("out(").and_then(|c| c.strip_suffix(')')).unwrap_or(column);
+            let component = format!("the output `{name}`");
+            return Err(SimError::NonFinite { t, component });
+        }
+        Ok(Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats))
     }
 }
 
@@ -166,6 +174,8 @@ where
     layout: Columns,
     columns: Vec<Vec<f64>>,
     scratch: Scratch<M>,
+    /// When and which output was first not finite.
+    non_finite_output: Option<(f64, usize)>,
 }
 
 /// Storage for the derived quantities of a sample.
@@ -211,6 +221,9 @@ where
         model.outputs(t, &s.q, &s.v, &s.lambda, &mut w.outputs);
         for (k, &y) in w.outputs.iter().enumerate() {
             self.columns[l.output(k)].push(y);
+            if !y.is_finite() && self.non_finite_output.is_none() {
+                self.non_finite_output = Some((t, k));
+            }
         }
     }
 }

@@ -491,3 +491,83 @@ fn a_key_past_the_end_of_an_array_of_inputs_panics() {
     let bundle = Bundle { springs: vec![ForcedSpring { m: 1.0, k: 1.0, f: 0.0 }; 2] };
     let _ = bundle.springs_input(5, ForcedSpring::F);
 }
+
+/// Bad input to the open-model API ends in typed errors that name the cause.
+#[test]
+fn open_models_refuse_bad_input_with_typed_errors() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+
+    // A NaN input is refused at the restart, by name.
+    let mut radau = Radau::new(&mut spring, RadauOptions::default()).expect("valid");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    radau.step().expect("steps");
+    let error = radau.set_input(ForcedSpring::F, f64::NAN).expect_err("a NaN input");
+    assert!(matches!(&error, SimError::InvalidParameter { name, .. } if name == "f"), "{error}");
+
+    // Sampling periods that are below the resolution of t, or make absurdly many samples,
+    // and spans that are not spans.
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let mut radau = Radau::new(&mut spring, RadauOptions::default()).expect("valid");
+    for (t_end, period) in [(1.0, 1e-20), (1e3, 1e-8)] {
+        let result = radau.solve_sampled(0.0, &start, t_end, period, &Sampling::Steps, |_, _, _| {});
+        assert!(matches!(result, Err(SimError::InvalidOption { what: "period", .. })), "{period:e}");
+    }
+    for t_end in [f64::NAN, 0.0, -1.0, f64::INFINITY] {
+        let result = radau.solve_sampled(0.0, &start, t_end, 0.1, &Sampling::Steps, |_, _, _| {});
+        assert!(matches!(result, Err(SimError::InvalidTimeSpan { .. })), "{t_end}");
+    }
+
+    // A drive that turns an input to NaN mid-run: an error, not a NaN solution.
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let mut source =
+        |t: f64, _: &State<ForcedSpring>, m: &mut ForcedSpring| m.f = if t < 0.5 { 0.0 } else { f64::NAN };
+    let mut radau = Radau::new(&mut spring, RadauOptions::default()).expect("valid");
+    radau.drive(&mut source).expect("exclusive");
+    let error = radau.solve(0.0, &start, 1.0, &Sampling::Steps).expect_err("a NaN input");
+    assert!(matches!(error, SimError::NonFinite { .. } | SimError::StepSizeTooSmall { .. }), "{error}");
+    assert!(error.to_string().contains("0.5") || error.to_string().contains("non-finite"), "{error}");
+
+    // A user feedback Jacobian with NaN in it is named.
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let mut law = |_: f64, s: &State<ForcedSpring>, m: &mut ForcedSpring| m.f = -s.q[0];
+    let mut bad_jacobian =
+        |_: f64, _: &State<ForcedSpring>, out: &mut [f64]| out.copy_from_slice(&[-1.0, f64::NAN]);
+    let mut radau = Radau::new(&mut spring, RadauOptions::default()).expect("valid");
+    radau.drive_feedback_with(&mut law, &mut bad_jacobian).expect("a dense model");
+    let error = radau.solve(0.0, &start, 1.0, &Sampling::Steps).expect_err("a NaN Jacobian");
+    assert!(error.to_string().contains("drive_feedback_with"), "{error}");
+
+    // Linearising a model with a NaN parameter.
+    let broken = ForcedSpring { m: 1.0, k: f64::NAN, f: 0.0 };
+    let state = State::<ForcedSpring>::zeros();
+    let error = dirac::linearize(&broken, 0.0, &state).expect_err("a NaN parameter");
+    assert!(matches!(&error, SimError::InvalidParameter { name, .. } if name == "k"), "{error}");
+}
+
+/// A model whose output is not finite somewhere along the run.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(x => v), output(root) = x.sqrt())]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+struct Rooted {
+    m: f64,
+    k: f64,
+}
+
+#[test]
+fn a_non_finite_output_is_an_error_not_a_result() {
+    // x = cos 2t turns negative at t = π/4, where √x is NaN.
+    let model = Rooted { m: 1.0, k: 4.0 };
+    let q = VecQ::<Rooted>::from([1.0]);
+    let start = consistent_state(&model, 0.0, &q, &VecQ::<Rooted>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut radau = Radau::new(&model, RadauOptions::default()).expect("valid");
+    let error = radau.solve(0.0, &start, 2.0, &Sampling::Every(0.1)).expect_err("√x of a negative x");
+    match &error {
+        SimError::NonFinite { t, component } => {
+            assert!(component.contains("output `root`"), "{component}");
+            assert!(*t > std::f64::consts::FRAC_PI_4 && *t < 1.0, "first at {t}");
+        }
+        other => panic!("expected NonFinite, got {other}"),
+    }
+}

@@ -253,3 +253,12 @@ fn both_pendulum_forms_predict_their_simulated_responses() {
     let (nonlinear, linear) = simulated_against_linear(&pendulum, &hanging, &[0.0, 0.0], &[1e-6, 0.0], 0.7);
     assert!((&nonlinear - &linear).amax() < 1e-4 * linear.amax(), "{nonlinear} against {linear}");
 }
+
+#[test]
+fn a_sparse_model_is_refused_by_name() {
+    let ladder = crate::zoo::unit_ladder(50);
+    let rest = crate::zoo::ladder_at_rest(&ladder, &[0.0; 50]);
+    let error = linearize(&ladder, 0.0, &rest).expect_err("a sparse model");
+    assert!(matches!(&error, SimError::InvalidOption { what: "linearize", .. }), "{error}");
+    assert!(error.to_string().contains("dense"), "{error}");
+}

@@ -51,9 +51,10 @@ where
         }
     }
 
-    /// Adds `∂ṗ/∂u · ∂u/∂(q, v)` to `∂ṗ/∂q` and `∂ṗ/∂v`: column by column, the change of `ṗ`
-    /// at the state `y` when the inputs are those of `y` moved in one position or velocity.
-    /// The inputs are left as the drive sets them at `y`.
+    /// Adds `∂ṗ/∂u · ∂u/∂(q, v)` to `∂ṗ/∂q` and `∂ṗ/∂v`, column by column: from the user's
+    /// `∂u/∂(q, v)` and the generated `∂ṗ/∂u`, or as the change of `ṗ` at the state `y` when
+    /// the inputs are those of `y` moved in one position or velocity. Expects the inputs set at
+    /// `y`, and leaves them so.
     pub fn add_columns(
         &mut self,
         model: &mut Held<'_, M>,
@@ -61,28 +62,37 @@ where
         t: f64,
         y: &VecY<M>,
         jac: &mut JacobianBlocks<M, M::Algebra>,
-    ) {
+    ) -> Result<(), SimError> {
         let n = self.sizes.nq;
-        let Layout { q: q0, v: v0, .. } = Layout::new(self.sizes);
         self.state.read_y(y);
         let s = &self.state;
+        // Column `column` of `[∂ṗ/∂q ∂ṗ/∂v]` gets `entry(i)` added to row `i`; the blocks are
+        // dense, column-major (checked when the drive was set).
+        let mut add = |column: usize, entry: &dyn Fn(usize) -> f64| {
+            let block = if column < n { &mut jac.dpdot_dq } else { &mut jac.dpdot_dv };
+            let values = M::Algebra::qq_values_mut(block);
+            let j = column % n;
+            for i in 0..n {
+                values[j * n + i] += entry(i);
+            }
+        };
         if let Some((jacobian, du, gains)) = &mut self.exact {
             // ∂ṗ/∂u (n × n_u) times the user's ∂u/∂(q, v) (n_u × 2n), both column-major.
-            residual.apply(model, t, y);
             model.dpdot_du(t, &s.q, &s.v, &s.lambda, du);
             jacobian(t, s, gains);
+            if gains.iter().any(|g| !g.is_finite()) {
+                return Err(SimError::NonFinite {
+                    t,
+                    component: "the feedback Jacobian ∂u/∂(q, v) given to drive_feedback_with".into(),
+                });
+            }
             let nu = du.len() / n.max(1);
             for column in 0..2 * n {
-                let block = if column < n { &mut jac.dpdot_dq } else { &mut jac.dpdot_dv };
-                let values = M::Algebra::qq_values_mut(block);
-                let j = column % n;
-                for i in 0..n {
-                    values[j * n + i] += (0..nu).map(|k| du[k * n + i] * gains[column * nu + k]).sum::<f64>();
-                }
+                add(column, &|i| (0..nu).map(|k| du[k * n + i] * gains[column * nu + k]).sum());
             }
-            return;
+            return Ok(());
         }
-        residual.apply(model, t, y);
+        let Layout { q: q0, v: v0, .. } = Layout::new(self.sizes);
         model.residual_blocks(t, &s.q, &s.v, &s.lambda, &mut self.base);
         for column in 0..2 * n {
             let slot = if column < n { q0 + column } else { v0 + column - n };
@@ -91,15 +101,11 @@ where
             self.perturbed[slot] += delta;
             residual.apply(model, t, &self.perturbed);
             model.residual_blocks(t, &s.q, &s.v, &s.lambda, &mut self.moved);
-            let block = if column < n { &mut jac.dpdot_dq } else { &mut jac.dpdot_dv };
-            // Dense blocks, column-major (checked when the drive was set).
-            let values = M::Algebra::qq_values_mut(block);
-            let j = column % n;
-            for i in 0..n {
-                values[j * n + i] += (self.moved.momentum_rate[i] - self.base.momentum_rate[i]) / delta;
-            }
+            let (moved, base) = (&self.moved.momentum_rate, &self.base.momentum_rate);
+            add(column, &|i| (moved[i] - base[i]) / delta);
         }
         residual.apply(model, t, y);
+        Ok(())
     }
 }
 

@@ -193,7 +193,7 @@ where
             }
             self.tolerances.weights(&self.y, self.h, &mut self.weights);
             if self.need_jac {
-                self.evaluate_jacobian();
+                self.evaluate_jacobian()?;
             }
             // A step size within round-off of the factored one (a step cut to end at a sample
             // time) keeps the factorisation: the simplified Newton matrix is approximate anyway.
@@ -248,17 +248,18 @@ where
         self.need_factor = true;
     }
 
-    fn evaluate_jacobian(&mut self) {
+    fn evaluate_jacobian(&mut self) -> Result<(), SimError> {
         self.residual.apply(&mut self.model, self.t, &self.y);
         let s = &self.state;
         self.model.jacobian_blocks(self.t, &s.q, &s.v, &s.lambda, &mut self.jac);
         if let Some(feedback) = &mut self.feedback {
-            feedback.add_columns(&mut self.model, &mut self.residual, self.t, &self.y, &mut self.jac);
+            feedback.add_columns(&mut self.model, &mut self.residual, self.t, &self.y, &mut self.jac)?;
         }
         self.stats.jacobian_evaluations += 1;
         self.need_jac = false;
         self.jac_current = true;
         self.need_factor = true;
+        Ok(())
     }
 
     /// Starts stepping from `self.y` at `t0` with the step size in `self.h`, capped by the
@@ -281,11 +282,7 @@ where
         }
         self.residual.eval(&mut self.model, t0, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
-        if let Some(i) = self.f0.iter().position(|v| !v.is_finite()) {
-            let component = format!("the equation of {}", describe_slot(self.model.get(), i));
-            return Err(SimError::NonFinite { t: t0, component });
-        }
-        Ok(())
+        self.check_finite(t0)
     }
 
     fn factor(&mut self) -> Result<(), Singular> {
