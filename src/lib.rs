@@ -41,7 +41,7 @@
 //!
 //! // The constraint row A = ∂φ/∂q = (2x, 2y) at (1, 0).
 //! let mut a = MatCQ::<Pendulum>::zeros();
-//! pendulum.constraint_matrix(&state.q, &mut a);
+//! pendulum.constraint_matrix(0.0, &state.q, &mut a);
 //! assert_eq!(a[(0, 0)], 2.0);
 //! assert_eq!(a[(0, 1)], 0.0);
 //!

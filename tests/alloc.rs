@@ -224,3 +224,65 @@ fn steps_with_driven_inputs_do_not_allocate() {
         assert_eq!(allocations() - before, 0, "feedback Jacobian given: {given}");
     }
 }
+
+/// Prescribed motion: constraints that depend on time (holonomic and affine velocity rows, in
+/// a primitive and in an interconnection, and an array of them) under both integrators, with
+/// Radau projecting after each step.
+#[test]
+fn steps_with_prescribed_motion_do_not_allocate() {
+    let general = VariationalOptions { use_structure: false, ..VariationalOptions::default() };
+    let crank = SliderCrank { m1: 1.0, m2: 2.0, m3: 0.5, r: 0.3, l: 1.0, g: 9.81, c: 0.8, w: 6.0 };
+    let q = VecQ::<SliderCrank>::new(0.0, 0.0, 1.3);
+    let s = consistent_state(&crank, 0.0, &q, &VecQ::<SliderCrank>::zeros(), Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_steps(&crank, &s, 100.0), 0, "Radau, slider crank");
+    assert_eq!(allocations_in_variational_steps(&crank, &s, general), 0, "variational, slider crank");
+    let mut radau =
+        Radau::new(&crank, RadauOptions { projection: true, ..RadauOptions::tolerances(1e-10, 1e-10) })
+            .expect("valid options");
+    radau.start(0.0, &s, 100.0).expect("starts");
+    radau.step().expect("steps");
+    let before = allocations();
+    for _ in 0..200 {
+        radau.step().expect("steps");
+    }
+    assert_eq!(allocations() - before, 0, "Radau with projection, slider crank");
+
+    let bead = BeadOnRod { m: 1.0, w: 0.2 };
+    let q = VecQ::<BeadOnRod>::new(1.0, 0.0);
+    let s = consistent_state(&bead, 0.0, &q, &VecQ::<BeadOnRod>::zeros(), Consistency::default())
+        .expect("consistent");
+    assert_eq!(
+        allocations_in_variational_steps(&bead, &s, VariationalOptions::default()),
+        0,
+        "variational, bead on a rod, separable path"
+    );
+
+    let disk = DiskOnBelt { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045, belt: 0.5 };
+    let v = VecQ::<DiskOnBelt>::new(1.1, 0.0, 2.0, 1.0);
+    let s = consistent_state(&disk, 0.0, &VecQ::<DiskOnBelt>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_steps(&disk, &s, 100.0), 0, "Radau, disk on a belt");
+    assert_eq!(
+        allocations_in_variational_steps(&disk, &s, VariationalOptions::default()),
+        0,
+        "variational, disk on a belt"
+    );
+
+    let pair = ShakenPair { left: FreeMass { m: 1.0 }, right: FreeMass { m: 3.0 }, a: 0.2, w: 4.0 };
+    let q = VecQ::<ShakenPair>::new(0.0, 1.0);
+    let s = consistent_state(&pair, 0.0, &q, &VecQ::<ShakenPair>::zeros(), Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_steps(&pair, &s, 100.0), 0, "Radau, shaken pair");
+
+    let row = ShakenRow { cells: (0..50).map(|_| FreeMass { m: 1.0 }).collect(), a: 0.1, w: 3.0 };
+    let q = VecQ::<ShakenRow>::from_fn(50, |i, _| i as f64);
+    let s = consistent_state(&row, 0.0, &q, &VecQ::<ShakenRow>::zeros(50), Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_steps(&row, &s, 100.0), 0, "Radau, shaken row of 50");
+    assert_eq!(
+        allocations_in_variational_steps(&row, &s, VariationalOptions::default()),
+        0,
+        "variational, shaken row of 50"
+    );
+}

@@ -33,18 +33,22 @@ pub struct Blocks {
     pub force_dq: Matrix,
     /// `∂F/∂v`.
     pub force_dv: Matrix,
-    /// `A(q)`, holonomic rows first.
+    /// `A(q, t)`, holonomic rows first.
     pub a: Matrix,
-    /// `A(q) v`.
+    /// `A(q, t) v + b(q, t)`: the constraints at velocity level, zero on solutions.
     pub a_v: Vec<Id>,
     /// `A(q)ᵀ λ`.
     pub at_lambda: Vec<Id>,
-    /// `∂(A v)/∂q`.
+    /// `∂(A v + b)/∂q`.
     pub dav_dq: Matrix,
     /// `∂(Aᵀ λ)/∂q`.
     pub datl_dq: Matrix,
-    /// `φ(q)`.
+    /// `φ(q, t)`.
     pub phi: Vec<Id>,
+    /// `b(q, t)`: what a constraint prescribes, `A v = −b`.
+    pub b: Vec<Id>,
+    /// `∂(A v + b)/∂t`.
+    pub dav_dt: Vec<Id>,
     /// `ṗ = ∂L/∂q + F + Aᵀλ`.
     pub momentum_rate: Vec<Id>,
     /// `∂ṗ/∂q`.
@@ -99,6 +103,7 @@ impl Blocks {
         let (n, rows) = (m.n(), m.m());
         let (q, v, p, lambda) = (m.q.clone(), m.v.clone(), m.p.clone(), m.lambda.clone());
         let (a, force, phi, lagrangian) = (m.a.clone(), m.force.clone(), m.phi.clone(), m.lagrangian);
+        let rates = m.b.clone();
         let time = m.symbols.declare(&mut m.graph, Sym::Time);
         let g = &mut m.graph;
         let dl_dv = gradient(g, lagrangian, &v);
@@ -124,8 +129,9 @@ impl Blocks {
         // The constraint rows of the condensed matrix, row by row.
         let mut a_v = Vec::with_capacity(rows);
         let mut dav_dq = Vec::with_capacity(rows);
-        for row in &a {
+        for (row, &rate) in a.iter().zip(&rates) {
             let av = dot(g, row, &v);
+            let av = g.add(&[av, rate]);
             a_v.push(av);
             dav_dq.push(gradient(g, av, &q));
         }
@@ -149,6 +155,7 @@ impl Blocks {
         let outputs: Vec<Id> = m.outputs.iter().map(|(_, id)| *id).collect();
         let (output_dq, output_dv, output_du) =
             (jacobian(g, &outputs, &q), jacobian(g, &outputs, &v), jacobian(g, &outputs, &inputs));
+        let dav_dt = a_v.iter().map(|&c| g.diff(c, time)).collect();
         Blocks {
             lagrangian,
             dl_dq,
@@ -165,6 +172,8 @@ impl Blocks {
             dav_dq,
             datl_dq,
             phi,
+            b: rates,
+            dav_dt,
             momentum_rate,
             dpdot_dq,
             dpdot_dv,

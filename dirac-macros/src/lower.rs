@@ -59,7 +59,6 @@ pub struct Context<'a> {
     /// For example "the Lagrangian" or "constraint `rod`".
     pub what: &'a str,
     pub velocities: bool,
-    pub time: bool,
 }
 
 /// The methods and functions model expressions support, for error messages.
@@ -192,16 +191,6 @@ impl Lowerer<'_> {
                 );
                 None
             }
-            Role::Time if !ctx.time => {
-                self.cx.error_spanned_by(
-                    ident,
-                    format!(
-                        "{} cannot depend on time `t`: constraints are `A(q) v = 0` and `φ(q) = 0`",
-                        ctx.what
-                    ),
-                );
-                None
-            }
             Role::Define => self.definition(ident, &name, id, ctx),
             _ => Some(id),
         }
@@ -215,11 +204,6 @@ impl Lowerer<'_> {
                 "{} depends on coordinates only, but the definition `{name}` depends on a velocity",
                 ctx.what
             );
-            self.cx.error_spanned_by(ident, message);
-            return None;
-        }
-        if !ctx.time && deps.contains(&Sym::Time) {
-            let message = format!("{} cannot depend on time `t`, but the definition `{name}` does", ctx.what);
             self.cx.error_spanned_by(ident, message);
             return None;
         }

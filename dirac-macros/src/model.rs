@@ -32,9 +32,12 @@ pub struct SymModel {
     pub lambda: Vec<Id>,
     pub lagrangian: Id,
     pub force: Vec<Id>,
-    /// `A(q)`, `m × n`.
+    /// `A(q, t)`, `m × n`.
     pub a: Vec<Vec<Id>>,
-    /// `φ(q)`, one per holonomic row.
+    /// `b(q, t)`, one per row: the part of `A v + b = 0` without velocities, `∂φ/∂t` for a
+    /// holonomic row. Zero unless the constraint prescribes a motion.
+    pub b: Vec<Id>,
+    /// `φ(q, t)`, one per holonomic row.
     pub phi: Vec<Id>,
     pub constraints: Vec<RowName>,
     /// `define(name) = …`: each name with its expression, in order (the symbol
@@ -82,6 +85,7 @@ impl SymModel {
             lagrangian: zero,
             force: Vec::new(),
             a: Vec::new(),
+            b: Vec::new(),
             phi: Vec::new(),
             constraints: Vec::new(),
             defines: Vec::new(),
@@ -99,7 +103,7 @@ impl SymModel {
         sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();
         sm.force = vec![zero; sm.n()];
         let mut lw = Lowerer { cx, graph: &mut sm.graph, symbols: &mut sm.symbols, scope: &scope };
-        let all = Context { what: "the Lagrangian", velocities: true, time: true };
+        let all = Context { what: "the Lagrangian", velocities: true };
         let lagrangian = model.lagrangian.as_ref().and_then(|(_, e)| lw.lower(e, all));
         for f in &model.forces {
             let what = format!("the force on `{}`", f.coordinate);
@@ -129,7 +133,7 @@ impl SymModel {
         for d in &model.defines {
             let name = d.name.to_string();
             let what = format!("the definition `{name}`");
-            let ctx = Context { what: &what, velocities: true, time: true };
+            let ctx = Context { what: &what, velocities: true };
             // A definition with errors is still declared (as zero), so that its uses report
             // nothing more; the errors already stop the expansion.
             let value = self.lowerer(cx, scope).lower(&d.expr, ctx).unwrap_or_else(|| self.graph.num(0.0));
@@ -175,10 +179,11 @@ impl SymModel {
             let what = format!("constraint `{}`", c.name);
             let row = match c.decl.kind {
                 ConstraintKind::Holonomic => self.holonomic_row(cx, &c.decl.expr, &what, scope),
-                ConstraintKind::Velocity => self.velocity_row(cx, &c.decl.expr, &what, scope),
+                ConstraintKind::Velocity => self.velocity_row(cx, &c.decl.expr, (&what, &c.name), scope),
             };
-            if let Some(row) = row {
+            if let Some((row, b)) = row {
                 self.a.push(row);
+                self.b.push(b);
                 self.constraints.push(RowName { name: c.name, ident: c.ident.clone() });
             }
         }
@@ -192,21 +197,37 @@ impl SymModel {
         Lowerer { cx, graph: &mut self.graph, symbols: &mut self.symbols, scope }
     }
 
-    fn holonomic_row(&mut self, cx: &Ctxt, expr: &syn::Expr, what: &str, scope: &Scope) -> Option<Vec<Id>> {
-        let ctx = Context { what, velocities: false, time: false };
+    /// The row `∂φ/∂q` of `φ(q, t) = 0` and its rate `∂φ/∂t`.
+    fn holonomic_row(
+        &mut self,
+        cx: &Ctxt,
+        expr: &syn::Expr,
+        what: &str,
+        scope: &Scope,
+    ) -> Option<(Vec<Id>, Id)> {
+        let ctx = Context { what, velocities: false };
         let phi = self.lowerer(cx, scope).lower(expr, ctx)?;
         let row: Vec<Id> = self.q.clone().iter().map(|q| self.graph.diff(phi, *q)).collect();
         if row.iter().all(|d| self.graph.is_zero(*d)) {
             cx.error_spanned_by(expr, format!("{what} does not depend on any coordinate"));
             return None;
         }
+        let time = self.symbols.declare(&mut self.graph, Sym::Time);
+        let rate = self.graph.diff(phi, time);
         self.phi.push(phi);
-        Some(row)
+        Some((row, rate))
     }
 
-    /// Extracts the row `a(q)` of `a(q) · v`, checking every term is linear in the velocities.
-    fn velocity_row(&mut self, cx: &Ctxt, expr: &syn::Expr, what: &str, scope: &Scope) -> Option<Vec<Id>> {
-        let ctx = Context { what, velocities: true, time: false };
+    /// Splits `a(q, t) · v + b(q, t)` into its row `a` and its rate `b`, checking that every
+    /// term is affine in the velocities.
+    fn velocity_row(
+        &mut self,
+        cx: &Ctxt,
+        expr: &syn::Expr,
+        (what, name): (&str, &str),
+        scope: &Scope,
+    ) -> Option<(Vec<Id>, Id)> {
+        let ctx = Context { what, velocities: true };
         let mut terms = Vec::new();
         additive_terms(expr, false, &mut terms);
         let mut lowered = Vec::new();
@@ -216,10 +237,13 @@ impl SymModel {
                 ok = false;
                 continue;
             };
-            if let Some(problem) = self.linearity_problem(x) {
+            if self.nonlinear_in_velocities(x) {
                 cx.error_spanned_by(
                     term,
-                    format!("{what} must be linear in the velocities, `A(q) v = 0`, but this term {problem}"),
+                    format!(
+                        "{what} must be affine in the velocities, `A(q, t) v + b(q, t) = 0`, \
+                         but this term is not linear in the velocities"
+                    ),
                 );
                 ok = false;
             }
@@ -231,28 +255,28 @@ impl SymModel {
         let c = self.graph.add(&lowered);
         let row: Vec<Id> = self.v.clone().iter().map(|v| self.graph.diff(c, *v)).collect();
         if row.iter().all(|d| self.graph.is_zero(*d)) {
-            cx.error_spanned_by(expr, format!("{what} has no velocity in it; constraints are `A(q) v = 0`"));
+            cx.error_spanned_by(
+                expr,
+                format!(
+                    "{what} has no velocity in it; velocity constraints are `A(q, t) v + b(q, t) = 0` \
+                     (write a constraint on positions as `holonomic({name}) = ...`)"
+                ),
+            );
             return None;
         }
-        Some(row)
+        let zero = self.graph.num(0.0);
+        let at_rest = self.v.iter().filter_map(|v| self.graph.as_sym(*v)).map(|s| (s, zero)).collect();
+        let b = self.graph.substitute(c, &at_rest);
+        Some((row, b))
     }
 
-    /// Why a term is not `a(q) v_i`, if it is not.
-    fn linearity_problem(&mut self, term: Id) -> Option<&'static str> {
+    /// Whether a term's derivative by some velocity still depends on a velocity.
+    fn nonlinear_in_velocities(&mut self, term: Id) -> bool {
         let velocities: Vec<Id> = self.v.clone();
         let syms: Vec<u32> = velocities.iter().filter_map(|v| self.graph.as_sym(*v)).collect();
-        if !syms.iter().any(|s| self.graph.depends_on(term, *s)) {
-            return Some("has no velocity in it");
-        }
-        for v in &velocities {
+        velocities.iter().any(|v| {
             let d = self.graph.diff(term, *v);
-            if syms.iter().any(|s| self.graph.depends_on(d, *s)) {
-                return Some("is not linear in the velocities");
-            }
-        }
-        let zero = self.graph.num(0.0);
-        let at_rest = syms.iter().map(|s| (*s, zero)).collect();
-        let rest = self.graph.substitute(term, &at_rest);
-        (!self.graph.is_zero(rest)).then_some("has a part without a velocity")
+            syms.iter().any(|s| self.graph.depends_on(d, *s))
+        })
     }
 }

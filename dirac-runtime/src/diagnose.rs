@@ -112,9 +112,9 @@ where
 {
     let sizes = model.sizes();
     let mut phi = sizes.zeros_h::<M>();
-    model.holonomic(&state.q, &mut phi);
+    model.holonomic(t, &state.q, &mut phi);
     let mut a = M::Algebra::zeros_cq(&model.shape());
-    model.constraint_matrix(&state.q, &mut a);
+    model.constraint_matrix(t, &state.q, &mut a);
     // Residuals against the size of the terms they are made of: φ / |A| is a distance in q.
     let size_a = amax(M::Algebra::cq_values(&a));
     let q_scale = size_a * (1.0 + state.q.amax());
@@ -122,6 +122,7 @@ where
         return Some((format!("holonomic constraint `{}`", model.constraint_names()[j]), r));
     }
     let mut av = sizes.zeros_c::<M>();
+    model.constraint_rate(t, &state.q, &mut av);
     M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
     let v_scale = size_a * (1.0 + state.v.amax());
     if let Some((j, r)) = worst(av.iter().copied()).filter(|(_, r)| *r > tolerance * v_scale) {
@@ -177,7 +178,7 @@ where
     }
     let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
     model.l_vv(t, q, v, &mut lvv);
-    model.constraint_matrix(q, &mut a);
+    model.constraint_matrix(t, q, &mut a);
     cause_of(model, &dense_qq::<M, M::Algebra>(&lvv, n), &dense_cq::<M, M::Algebra>(&a, m, n))
 }
 

@@ -50,14 +50,15 @@ impl DiracStructure {
         DiracStructure { a }
     }
 
-    /// The structure a model induces at configuration `q`: its constraint rows `A(q)`.
-    pub fn of_model<M: LagrangeDirac>(model: &M, q: &VecQ<M>) -> DiracStructure
+    /// The structure a model induces at time `t` and configuration `q`: its constraint rows
+    /// `A(q, t)` (of a rheonomic constraint `A v + b = 0`, the linear part).
+    pub fn of_model<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>) -> DiracStructure
     where
         DefaultAllocator: Storage<M>,
     {
         let sizes = model.sizes();
         let mut a = M::Algebra::zeros_cq(&model.shape());
-        model.constraint_matrix(q, &mut a);
+        model.constraint_matrix(t, q, &mut a);
         DiracStructure { a: dense_cq::<M, M::Algebra>(&a, sizes.nc, sizes.nq) }
     }
 

@@ -1,13 +1,13 @@
 //! Consistent initial states: from positions and velocities a user chooses, the nearest state
 //! that satisfies every algebraic equation of the implicit Lagrange-d'Alembert equations.
 //!
-//! 1. positions are projected onto `φ(q) = 0` (Gauss-Newton, minimal-norm corrections);
-//! 2. velocities are projected onto `A(q) v = 0`, minimising the kinetic-energy norm of the
-//!    change, `½ Δvᵀ L_vv Δv`, so that velocities without inertia (a degenerate Lagrangian's)
-//!    take up the correction and the others keep the values given;
+//! 1. positions are projected onto `φ(q, t) = 0` (Gauss-Newton, minimal-norm corrections);
+//! 2. velocities are projected onto `A(q, t) v + b(q, t) = 0`, minimising the kinetic-energy
+//!    norm of the change, `½ Δvᵀ L_vv Δv`, so that velocities without inertia (a degenerate
+//!    Lagrangian's) take up the correction and the others keep the values given;
 //! 3. momenta are set by the Legendre map `p = ∂L/∂v`;
 //! 4. multipliers (and accelerations) solve the differentiated constraints
-//!    `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av)/∂q v]`.
+//!    `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av + b)/∂q v − ∂(Av + b)/∂t]`.
 //!
 //! Every quantity is checked to be finite before it is used, so a NaN parameter or an
 //! overflowing state ends in a typed error that names it, never in a hung decomposition or a
@@ -97,10 +97,10 @@ where
     let mut phi = model.sizes().zeros_h::<M>();
     let mut a = M::Algebra::zeros_cq(&model.shape());
     for iteration in 0..=options.max_iterations {
-        model.holonomic(q, &mut phi);
+        model.holonomic(t, q, &mut phi);
         non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)
             .map_err(|_| holonomic_not_finite(model, t, phi.as_slice()))?;
-        model.constraint_matrix(q, &mut a);
+        model.constraint_matrix(t, q, &mut a);
         let ah = dense_cq::<M, M::Algebra>(&a, m, n).rows(0, h).into_owned();
         if !ah.iter().all(|x| x.is_finite()) {
             return Err(SimError::NonFinite {
@@ -166,11 +166,15 @@ where
     }
     let shape = model.shape();
     let mut a = M::Algebra::zeros_cq(&shape);
-    model.constraint_matrix(q, &mut a);
+    model.constraint_matrix(t, q, &mut a);
     non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
     let a = dense_cq::<M, M::Algebra>(&a, m, n);
-    let av = &a * DVector::from_column_slice(v.as_slice());
-    non_finite_entry(model, t, "the constraint velocities A(q) v", av.as_slice(), false)?;
+    let mut b = model.sizes().zeros_c::<M>();
+    model.constraint_rate(t, q, &mut b);
+    non_finite_entry(model, t, "the constraint rates b(q, t)", b.as_slice(), false)?;
+    let b = DVector::from_column_slice(b.as_slice());
+    let av = &a * DVector::from_column_slice(v.as_slice()) + &b;
+    non_finite_entry(model, t, "the constraint velocities A(q, t) v + b(q, t)", av.as_slice(), false)?;
     let size_a = a.amax();
     if av.amax() <= options.tolerance * size_a * (1.0 + v.amax()) {
         return Ok(());
@@ -191,7 +195,7 @@ where
     for i in 0..n {
         v[i] += x[i];
     }
-    let after = &a * DVector::from_column_slice(v.as_slice());
+    let after = &a * DVector::from_column_slice(v.as_slice()) + &b;
     let limit = 1e3 * options.tolerance * size_a * (1.0 + v.amax());
     if after.amax().is_nan() || after.amax() > limit {
         let (j, residual) = after
@@ -230,12 +234,15 @@ where
     model.l_vq(t, q, v, &mut lvq);
     non_finite_qq(model, t, "L_vq", &lvq)?;
     let mut g = M::Algebra::zeros_cq(&shape);
-    model.dav_dq(q, v, &mut g);
-    non_finite_entry(model, t, "∂(A v)/∂q", M::Algebra::cq_values(&g), false)?;
+    model.dav_dq(t, q, v, &mut g);
+    non_finite_entry(model, t, "∂(A v + b)/∂q", M::Algebra::cq_values(&g), false)?;
+    let mut rate = sizes.zeros_c::<M>();
+    model.dav_dt(t, q, v, &mut rate);
+    non_finite_entry(model, t, "∂(A v + b)/∂t", rate.as_slice(), false)?;
     let mut top = dl_dq + force - lvt;
     M::Algebra::qq_mul(&lvq, -1.0, v.as_slice(), top.as_mut_slice());
     non_finite_entry(model, t, "the momentum balance", top.as_slice(), true)?;
-    let mut bottom = vec![0.0; sizes.nc];
+    let mut bottom: Vec<f64> = rate.iter().map(|x| -x).collect();
     M::Algebra::cq_mul(&g, -1.0, v.as_slice(), &mut bottom);
     non_finite_entry(model, t, "the constraint accelerations", &bottom, false)?;
     Ok((top.as_slice().to_vec(), bottom))
@@ -257,7 +264,7 @@ where
     let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
     model.l_vv(t, q, v, &mut lvv);
     non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
-    model.constraint_matrix(q, &mut a);
+    model.constraint_matrix(t, q, &mut a);
     non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
     let lambda = if n + m > DENSE_ANALYSIS {
         DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)

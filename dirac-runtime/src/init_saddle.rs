@@ -4,7 +4,7 @@
 //!
 //! 1. `φ(q) = 0` by Gauss-Newton with the minimal-norm correction `Δq = A_hᵀ y`,
 //!    `[I A_hᵀ; A_h 0] [Δq; y] = [0; φ]`;
-//! 2. `A(q) v = 0` with the least change in the kinetic-energy norm,
+//! 2. `A(q, t) v + b(q, t) = 0` with the least change in the kinetic-energy norm,
 //!    `[L_vv + εI Aᵀ; A 0] [Δv; y] = [0; −A v]`;
 //! 3. the multipliers, `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av)/∂q v]`.
 
@@ -56,9 +56,9 @@ where
     let (mut phi, mut a) = (sizes.zeros_h::<M>(), M::Algebra::zeros_cq(&shape));
     let (mut x, at_rest) = (vec![0.0; n + m], sizes.zeros_q::<M>());
     for iteration in 0..=max_iterations {
-        model.holonomic(q, &mut phi);
+        model.holonomic(t, q, &mut phi);
         non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)?;
-        model.constraint_matrix(q, &mut a);
+        model.constraint_matrix(t, q, &mut a);
         non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
         if phi.amax() <= tolerance * amax(M::Algebra::cq_values(&a)) * (1.0 + q.amax()) {
             return Ok(());
@@ -91,7 +91,7 @@ where
     unreachable!("the last iteration returns")
 }
 
-/// Projects `v` onto `A(q) v = 0`.
+/// Projects `v` onto `A(q, t) v + b(q, t) = 0`.
 pub(crate) fn project_velocities<M: LagrangeDirac>(
     model: &M,
     t: f64,
@@ -108,9 +108,12 @@ where
         return Ok(());
     }
     let mut a = M::Algebra::zeros_cq(&shape);
-    model.constraint_matrix(q, &mut a);
+    model.constraint_matrix(t, q, &mut a);
     non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
-    let mut av = vec![0.0; m];
+    let mut b = sizes.zeros_c::<M>();
+    model.constraint_rate(t, q, &mut b);
+    non_finite_entry(model, t, "the constraint rates b(q, t)", b.as_slice(), false)?;
+    let mut av = b.as_slice().to_vec();
     M::Algebra::cq_mul(&a, 1.0, v.as_slice(), &mut av);
     let size_a = amax(M::Algebra::cq_values(&a));
     if amax(&av) <= tolerance * size_a * (1.0 + v.amax()) {
@@ -138,7 +141,7 @@ where
     for i in 0..n {
         v[i] += x[i];
     }
-    av.fill(0.0);
+    av.copy_from_slice(b.as_slice());
     M::Algebra::cq_mul(&a, 1.0, v.as_slice(), &mut av);
     let limit = 1e3 * tolerance * size_a * (1.0 + v.amax());
     let j = (0..m).fold(0, |b, j| if av[j].is_nan() || av[j].abs() > av[b].abs() { j } else { b });
@@ -167,7 +170,7 @@ where
     let Sizes { nq: n, nc: m, .. } = sizes;
     let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
     model.l_vv(t, q, v, &mut lvv);
-    model.constraint_matrix(q, &mut a);
+    model.constraint_matrix(t, q, &mut a);
     let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
     saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
         top: &[(1.0, &lvv)],

@@ -95,14 +95,14 @@ impl OperationCounts {
 ///
 /// ```text
 /// q̇ = v
-/// ṗ = ∂L/∂q + F(q, v, t) + A(q)ᵀ λ
+/// ṗ = ∂L/∂q + F(q, v, t) + A(q, t)ᵀ λ
 /// 0 = p − ∂L/∂v
-/// 0 = A(q) v
+/// 0 = A(q, t) v + b(q, t)
 /// ```
 ///
 /// Implement it with `#[derive(LagrangeDirac)]`; every method is generated code specialised
-/// to the model. Holonomic constraints `φ(q) = 0` contribute the first [`Dimensions::NH`] rows
-/// of `A = ∂φ/∂q`.
+/// to the model. Holonomic constraints `φ(q, t) = 0` contribute the first [`Dimensions::NH`]
+/// rows, `A = ∂φ/∂q` and `b = ∂φ/∂t`. `b` is zero unless a constraint prescribes a motion.
 pub trait LagrangeDirac: Dimensions + Named + Sized + 'static
 where
     DefaultAllocator: Storage<Self>,
@@ -150,14 +150,21 @@ where
     fn force_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
     /// `∂F/∂v` (sparse write).
     fn force_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatQQ<Self>);
-    /// The constraint rows `A(q)`; row `j` is the one-form of constraint `j` (sparse write).
-    fn constraint_matrix(&self, q: &VecQ<Self>, out: &mut MatCQ<Self>);
-    /// `∂(A(q) v)/∂q` (sparse write).
-    fn dav_dq(&self, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatCQ<Self>);
-    /// `∂(A(q)ᵀ λ)/∂q` (sparse write).
-    fn datl_dq(&self, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut MatQQ<Self>);
-    /// The holonomic constraint values `φ(q)`, zero on the constraint manifold.
-    fn holonomic(&self, q: &VecQ<Self>, out: &mut VecH<Self>);
+    /// The constraint rows `A(q, t)`; row `j` is the one-form of constraint `j` (sparse write).
+    fn constraint_matrix(&self, t: f64, q: &VecQ<Self>, out: &mut MatCQ<Self>);
+    /// `∂(A(q, t) v + b(q, t))/∂q` (sparse write).
+    fn dav_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatCQ<Self>);
+    /// `∂(A(q, t)ᵀ λ)/∂q` (sparse write).
+    fn datl_dq(&self, t: f64, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut MatQQ<Self>);
+    /// The holonomic constraint values `φ(q, t)`, zero on the constraint manifold.
+    fn holonomic(&self, t: f64, q: &VecQ<Self>, out: &mut VecH<Self>);
+    /// The rates `b(q, t)` of the constraints `A(q, t) v + b(q, t) = 0`: `∂φ/∂t` for a
+    /// holonomic row, the part without velocities for a velocity row. Zero unless a constraint
+    /// prescribes a motion (a rheonomic constraint); then it does work, and
+    /// [`constraint_power`](LagrangeDirac::constraint_power) is its power.
+    fn constraint_rate(&self, t: f64, q: &VecQ<Self>, out: &mut VecC<Self>);
+    /// `∂(A(q, t) v + b(q, t))/∂t`.
+    fn dav_dt(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecC<Self>);
 
     /// The residual blocks in one pass, sharing every common subexpression.
     fn residual_blocks(
@@ -193,8 +200,8 @@ where
 
     /// The interconnection forces `Ωᵀμ` of the model and, scattered, of its subsystems: the
     /// efforts at the ports (zero for a primitive model).
-    fn interconnection_forces(&self, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut VecQ<Self>) {
-        let _ = (q, lambda);
+    fn interconnection_forces(&self, t: f64, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut VecQ<Self>) {
+        let _ = (t, q, lambda);
         out.fill(0.0);
     }
 
@@ -335,16 +342,26 @@ where
     }
 
     /// The power `⟨Ωᵀμ, v⟩` of the interconnection forces; zero wherever the interconnection
-    /// constraints hold, since an interconnection is lossless (Tellegen's theorem).
-    fn interconnection_power(&self, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>) -> f64 {
+    /// constraints hold, since an interconnection is lossless (Tellegen's theorem), unless it
+    /// prescribes a relative motion (`Ω v + b = 0`): then it is `−⟨μ, b⟩`.
+    fn interconnection_power(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>) -> f64 {
         let mut f = self.sizes().zeros_q::<Self>();
-        self.interconnection_forces(q, lambda, &mut f);
+        self.interconnection_forces(t, q, lambda, &mut f);
         f.dot(v)
     }
 
     /// The generalised energy `E(q, v, p) = ⟨p, v⟩ − L(q, v, t)`.
     fn energy(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, p: &VecQ<Self>) -> f64 {
         p.dot(v) - self.lagrangian(t, q, v)
+    }
+
+    /// The power `⟨Aᵀλ, v⟩ = −⟨λ, b(q, t)⟩` that the constraints put into the model where
+    /// they hold: zero unless a constraint prescribes a motion. On solutions
+    /// `dE/dt = ⟨F, v⟩ − ∂L/∂t + constraint_power`.
+    fn constraint_power(&self, t: f64, q: &VecQ<Self>, lambda: &VecC<Self>) -> f64 {
+        let mut b = self.sizes().zeros_c::<Self>();
+        self.constraint_rate(t, q, &mut b);
+        -b.dot(lambda)
     }
 
     /// The power of the external forces `⟨F(q, v, t), v⟩`; on solutions `dE/dt` equals it.

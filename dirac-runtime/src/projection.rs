@@ -1,12 +1,12 @@
-//! Projection of a state onto the constraint manifold: positions onto `φ(q) = 0`, velocities
-//! onto `A(q) v = 0`, by the smallest corrections. The variational integrator's samples
+//! Projection of a state onto the constraint manifold: positions onto `φ(q, t) = 0`, velocities
+//! onto `A(q, t) v + b(q, t) = 0`, by the smallest corrections. The variational integrator's samples
 //! between steps and Radau's optional projection after accepted steps use it; its storage is
 //! allocated once, so a projection allocates nothing.
 
 use nalgebra::DefaultAllocator;
 
 use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
-use crate::dims::{Sizes, Storage, VecH, VecK};
+use crate::dims::{Sizes, Storage, VecC, VecH, VecK};
 use crate::model::LagrangeDirac;
 use crate::model::MatCQ;
 
@@ -20,6 +20,7 @@ where
     saddle: <M::Algebra as Algebra<M>>::Saddle<f64>,
     a: MatCQ<M>,
     phi: VecH<M>,
+    b: VecC<M>,
     x: VecK<M>,
 }
 
@@ -34,6 +35,7 @@ where
             saddle: M::Algebra::saddle(&shape),
             a: M::Algebra::zeros_cq(&shape),
             phi: sizes.zeros_h::<M>(),
+            b: sizes.zeros_c::<M>(),
             x: sizes.zeros_k::<M>(),
         }
     }
@@ -55,14 +57,14 @@ where
     /// Puts the positions `q` on the holonomic constraints and the velocities `v` on all of
     /// them, by minimal-norm corrections `Δ = −Aᵀ (A Aᵀ)⁻¹ r`; leaves them as they are where
     /// `A Aᵀ` is singular.
-    pub fn project(&mut self, model: &M, q: &mut crate::dims::VecQ<M>, v: &mut crate::dims::VecQ<M>) {
+    pub fn project(&mut self, model: &M, t: f64, q: &mut crate::dims::VecQ<M>, v: &mut crate::dims::VecQ<M>) {
         let Sizes { nq: n, nh, .. } = self.sizes;
         for _ in 0..3 {
-            model.holonomic(q, &mut self.phi);
+            model.holonomic(t, q, &mut self.phi);
             if nh == 0 || amax(self.phi.as_slice()) <= 1e-15 * (1.0 + amax(q.as_slice())) {
                 break;
             }
-            model.constraint_matrix(q, &mut self.a);
+            model.constraint_matrix(t, q, &mut self.a);
             if !self.factor(true) {
                 return;
             }
@@ -75,12 +77,14 @@ where
                 q[i] -= x[i];
             }
         }
-        model.constraint_matrix(q, &mut self.a);
+        model.constraint_matrix(t, q, &mut self.a);
         if !self.factor(false) {
             return;
         }
+        model.constraint_rate(t, q, &mut self.b);
         let x = self.x.as_mut_slice();
-        x.fill(0.0);
+        x[..n].fill(0.0);
+        x[n..].copy_from_slice(self.b.as_slice());
         M::Algebra::cq_mul(&self.a, 1.0, v.as_slice(), &mut x[n..]);
         self.saddle.solve(x);
         for i in 0..n {

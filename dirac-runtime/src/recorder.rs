@@ -204,15 +204,16 @@ where
         let w = &mut self.scratch;
         let energy = model.energy(t, &s.q, &s.v, &s.p);
         let power = model.power(t, &s.q, &s.v);
-        model.constraint_matrix(&s.q, &mut w.a);
-        w.av.fill(0.0);
+        model.constraint_matrix(t, &s.q, &mut w.a);
+        model.constraint_rate(t, &s.q, &mut w.av);
+        let cpower = -w.av.dot(&s.lambda);
         M::Algebra::cq_mul(&w.a, 1.0, s.v.as_slice(), w.av.as_mut_slice());
         let av = amax(w.av.as_slice());
-        model.holonomic(&s.q, &mut w.phi);
+        model.holonomic(t, &s.q, &mut w.phi);
         let phi = amax(w.phi.as_slice());
-        model.interconnection_forces(&s.q, &s.lambda, &mut w.forces);
+        model.interconnection_forces(t, &s.q, &s.lambda, &mut w.forces);
         let ipower = w.forces.dot(&s.v);
-        for (k, x) in [energy, power, av, phi, ipower].into_iter().enumerate() {
+        for (k, x) in [energy, power, av, phi, ipower, cpower].into_iter().enumerate() {
             self.columns[l.derived(k)].push(x);
         }
         for (k, &i) in l.ports.iter().enumerate() {

@@ -37,8 +37,14 @@ pub(crate) struct Columns {
 
 impl Columns {
     /// The derived quantities, in their column order.
-    pub const DERIVED: [&'static str; 5] =
-        ["energy", "power", "constraint_residual", "holonomic_residual", "interconnection_power"];
+    pub const DERIVED: [&'static str; 6] = [
+        "energy",
+        "power",
+        "constraint_residual",
+        "holonomic_residual",
+        "interconnection_power",
+        "constraint_power",
+    ];
 
     /// The columns of a model's solution, and their names.
     pub fn of<M: LagrangeDirac>(model: &M) -> (Columns, Vec<String>)
@@ -178,12 +184,12 @@ where
         &self.columns[self.layout.derived(1)]
     }
 
-    /// `‖A(q) v‖∞`.
+    /// `‖A(q, t) v + b(q, t)‖∞`.
     pub fn constraint_residual(&self) -> &[f64] {
         &self.columns[self.layout.derived(2)]
     }
 
-    /// `‖φ(q)‖∞`.
+    /// `‖φ(q, t)‖∞`.
     pub fn holonomic_residual(&self) -> &[f64] {
         &self.columns[self.layout.derived(3)]
     }
@@ -191,6 +197,13 @@ where
     /// The power of the interconnection forces, zero for a lossless interconnection.
     pub fn interconnection_power(&self) -> &[f64] {
         &self.columns[self.layout.derived(4)]
+    }
+
+    /// The power `−⟨λ, b(q, t)⟩` the constraints put in by prescribing motion; zero unless
+    /// a constraint depends on time. With [`power`](Solution::power) and `∂L/∂t` it closes the
+    /// energy balance, `dE/dt = ⟨F, v⟩ − ∂L/∂t + constraint power`.
+    pub fn constraint_power(&self) -> &[f64] {
+        &self.columns[self.layout.derived(5)]
     }
 
     /// The interconnection force (effort) at port `c`, if `c` is a port.

@@ -45,7 +45,10 @@ where
         model.dl_dv(t, &s.q, &s.v, &mut dl_dv);
         model.force(t, &s.q, &s.v, &mut force);
         let mut a = MatCQ::<M>::zeros();
-        model.constraint_matrix(&s.q, &mut a);
+        model.constraint_matrix(t, &s.q, &mut a);
+        let mut b = VecC::<M>::zeros();
+        model.constraint_rate(t, &s.q, &mut b);
+        close(&dyn_of(&(&a * &s.v + &b)), &dyn_of(&rb.constraint_velocity), "A v + b");
         let rate = dl_dq + force + a.transpose() * &s.lambda;
         close(&dyn_of(&rate), &dyn_of(&rb.momentum_rate), "dL/dq + F + A^T lambda");
         close(&dyn_of(&dl_dv), &dyn_of(&rb.dl_dv), "dl_dv");
@@ -75,8 +78,9 @@ where
         close(&mats.l_vv, &dyn_of(&jb.l_vv), "l_vv");
         close(&mats.l_vq, &dyn_of(&jb.l_vq), "l_vq");
         close(&mats.dav_dq, &dyn_of(&jb.dav_dq), "dav_dq");
-        check_holonomic_rows(model, &s.q, &a);
+        check_holonomic_rows(model, t, &s.q, &a, &b);
         check_l_vt(model, t, &s);
+        check_dav_dt(model, t, &s);
     }
 }
 
@@ -100,14 +104,14 @@ where
         dyn_of(&out)
     };
     let mut dav_dq = MatCQ::<M>::zeros();
-    model.dav_dq(&s.q, &s.v, &mut dav_dq);
+    model.dav_dq(t, &s.q, &s.v, &mut dav_dq);
     Individual {
         l_qq: qq(&|o| model.l_qq(t, &s.q, &s.v, o)),
         l_vq: qq(&|o| model.l_vq(t, &s.q, &s.v, o)),
         l_vv: qq(&|o| model.l_vv(t, &s.q, &s.v, o)),
         f_q: qq(&|o| model.force_dq(t, &s.q, &s.v, o)),
         f_v: qq(&|o| model.force_dv(t, &s.q, &s.v, o)),
-        datl_dq: qq(&|o| model.datl_dq(&s.q, &s.lambda, o)),
+        datl_dq: qq(&|o| model.datl_dq(t, &s.q, &s.lambda, o)),
         dav_dq: dyn_of(&dav_dq),
     }
 }
@@ -132,23 +136,56 @@ where
     }
 }
 
-/// The first rows of A are ∂φ/∂q: checked against central differences of `holonomic`.
-fn check_holonomic_rows<M: DenseModel>(model: &M, q: &VecQ<M>, a: &MatCQ<M>)
+/// The first rows of A are ∂φ/∂q and the first entries of b are ∂φ/∂t: checked against
+/// central differences of `holonomic`.
+fn check_holonomic_rows<M: DenseModel>(model: &M, t: f64, q: &VecQ<M>, a: &MatCQ<M>, b: &VecC<M>)
 where
     DefaultAllocator: Storage<M>,
 {
+    let h = 1e-6;
     for i in 0..M::NQ {
-        let h = 1e-6;
         let (mut plus, mut minus) = (q.clone(), q.clone());
         plus[i] += h;
         minus[i] -= h;
         let (mut phi_p, mut phi_m) = (VecH::<M>::zeros(), VecH::<M>::zeros());
-        model.holonomic(&plus, &mut phi_p);
-        model.holonomic(&minus, &mut phi_m);
+        model.holonomic(t, &plus, &mut phi_p);
+        model.holonomic(t, &minus, &mut phi_m);
         for j in 0..M::NH {
             let fd = (phi_p[j] - phi_m[j]) / (2.0 * h);
             assert!((fd - a[(j, i)]).abs() <= 1e-6 * a[(j, i)].abs().max(1.0), "dphi{j}/dq{i}");
         }
+    }
+    let (mut phi_p, mut phi_m) = (VecH::<M>::zeros(), VecH::<M>::zeros());
+    model.holonomic(t + h, q, &mut phi_p);
+    model.holonomic(t - h, q, &mut phi_m);
+    for j in 0..M::NH {
+        let fd = (phi_p[j] - phi_m[j]) / (2.0 * h);
+        assert!((fd - b[j]).abs() <= 1e-6 * b[j].abs().max(1.0), "dphi{j}/dt: {} vs {fd}", b[j]);
+    }
+}
+
+/// `∂(A v + b)/∂t` against central differences in time of `A(q, t) v + b(q, t)`.
+fn check_dav_dt<M: DenseModel>(model: &M, t: f64, s: &State<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let h = 1e-6;
+    let at = |t: f64| {
+        let (mut a, mut b) = (MatCQ::<M>::zeros(), VecC::<M>::zeros());
+        model.constraint_matrix(t, &s.q, &mut a);
+        model.constraint_rate(t, &s.q, &mut b);
+        a * &s.v + b
+    };
+    let (plus, minus) = (at(t + h), at(t - h));
+    let mut exact = VecC::<M>::zeros();
+    model.dav_dt(t, &s.q, &s.v, &mut exact);
+    for j in 0..M::NC {
+        let fd = (plus[j] - minus[j]) / (2.0 * h);
+        assert!(
+            (fd - exact[j]).abs() <= 1e-6 * exact[j].abs().max(1.0),
+            "d(Av + b)_{j}/dt: {} vs {fd}",
+            exact[j]
+        );
     }
 }
 
@@ -163,6 +200,16 @@ fn blocks_agree_with_flat_forms_for_every_model() {
     check_blocks(&LcCircuit { ind: 1.0, cap: 1.0 }, 17);
     check_blocks(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 18);
     check_blocks(&AllFunctions { m: 1.5, k: 0.7 }, 19);
+    // Rheonomic constraints: b = ∂φ/∂t and ∂(A v + b)/∂t against differences in time.
+    check_blocks(&ShakenPendulum { m: 1.3, g: 9.81, l: 0.7, a: 0.2, w: 3.0 }, 20);
+    check_blocks(&DraggedMass { m: 1.5, k: 2.0, c: 0.4 }, 21);
+    check_blocks(&BeadOnRod { m: 0.8, w: 2.5 }, 22);
+    check_blocks(&DiskOnBelt { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045, belt: 0.7 }, 23);
+    check_blocks(
+        &DiskOnAcceleratingBelt { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045, u0: 0.7, c: 0.2 },
+        24,
+    );
+    check_blocks(&SliderCrank { m1: 1.0, m2: 2.0, m3: 0.5, r: 0.3, l: 1.0, g: 9.81, c: 0.2, w: 4.0 }, 25);
     let coupled =
         CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
     check_blocks(&coupled, 20);

@@ -39,10 +39,12 @@ where
     DefaultAllocator: Storage<M>,
 {
     let mut phi = VecH::<M>::zeros();
-    model.holonomic(&state.q, &mut phi);
+    model.holonomic(t, &state.q, &mut phi);
     let mut a = MatCQ::<M>::zeros();
-    model.constraint_matrix(&state.q, &mut a);
-    let av = &a * &state.v;
+    model.constraint_matrix(t, &state.q, &mut a);
+    let mut b = VecC::<M>::zeros();
+    model.constraint_rate(t, &state.q, &mut b);
+    let av = &a * &state.v + b;
     let mut dl_dv = VecQ::<M>::zeros();
     model.dl_dv(t, &state.q, &state.v, &mut dl_dv);
     let legendre = &state.p - &dl_dv;

@@ -31,7 +31,7 @@ fn pendulum_blocks() {
         let mut rb = ResidualBlocks::<Pendulum>::zeros();
         model.residual_blocks(0.0, &s.q, &s.v, &s.lambda, &mut rb);
         let mut phi = VecH::<Pendulum>::zeros();
-        model.holonomic(&s.q, &mut phi);
+        model.holonomic(0.0, &s.q, &mut phi);
 
         assert_close(rb.momentum_rate[0], 2.0 * x * lambda, "pdot_x");
         assert_close(rb.momentum_rate[1], -m * model.g + 2.0 * y * lambda, "pdot_y");

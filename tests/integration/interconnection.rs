@@ -79,18 +79,18 @@ fn port_efforts_by_name_and_tellegen() {
         let v = [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)];
         let s = consistent_chain_state(x, v);
         let mut f = VecQ::<Chain>::zeros();
-        torn.interconnection_forces(&s.q, &s.lambda, &mut f);
+        torn.interconnection_forces(0.0, &s.q, &s.lambda, &mut f);
         let (f2, f2bar) = (f[Chain::LEFT_X2.index()], f[Chain::RIGHT_X2BAR.index()]);
         assert_close(f2bar, -torn.right.k3 * (x[2] - x[1]), "f2bar = -k3 (x3 - x2bar)");
         assert_close(f2, -f2bar, "f2 + f2bar = 0");
         assert_eq!(f[Chain::left(Primitive1::X1).index()], 0.0);
-        assert!(torn.interconnection_power(&s.q, &s.v, &s.lambda).abs() < 1e-15, "Tellegen");
+        assert!(torn.interconnection_power(0.0, &s.q, &s.v, &s.lambda).abs() < 1e-15, "Tellegen");
         // Off the constraint, the power is μ (v2 − v̄2).
         let mut off = s.clone();
         off.set_v(Chain::RIGHT_X2BAR, v[1] + 0.5);
         let mu = s.lambda(Chain::CONNECT0);
         assert_close(
-            torn.interconnection_power(&off.q, &off.v, &off.lambda),
+            torn.interconnection_power(0.0, &off.q, &off.v, &off.lambda),
             -0.5 * mu,
             "power off the constraint",
         );
@@ -179,7 +179,7 @@ fn three_level_hierarchy_is_the_five_mass_chain() {
             assert_close(rb.momentum_rate[c.index()], 0.0, "pdot of a port coordinate (consistency)");
         }
         assert!(rb.constraint_velocity.amax() == 0.0, "every connection holds");
-        assert!(model.interconnection_power(&s.q, &s.v, &s.lambda).abs() < 1e-14, "Tellegen");
+        assert!(model.interconnection_power(0.0, &s.q, &s.v, &s.lambda).abs() < 1e-14, "Tellegen");
     }
 }
 
@@ -213,10 +213,10 @@ fn rack_and_pinion_is_the_geared_model() {
         assert_close(theta_dd, hb.momentum_rate[0] / (j + m * r * r), "theta'' of the geared model");
         // The interconnection forces are Ωᵀμ = (r μ, −μ), and they do no work.
         let mut f = VecQ::<RackAndPinion>::zeros();
-        model.interconnection_forces(&s.q, &s.lambda, &mut f);
+        model.interconnection_forces(0.0, &s.q, &s.lambda, &mut f);
         assert_close(f[th.index()], r * mu, "torque on the wheel");
         assert_close(f[cx.index()], -mu, "force on the cart");
-        assert!(model.interconnection_power(&s.q, &s.v, &s.lambda).abs() < 1e-14);
+        assert!(model.interconnection_power(0.0, &s.q, &s.v, &s.lambda).abs() < 1e-14);
     }
 }
 
@@ -233,11 +233,11 @@ fn solutions_lie_in_the_interconnected_dirac_structure() {
         let s = consistent_chain_state(x, v);
         let q1 = VecQ::<Primitive1>::new(x[0], x[1]);
         let q2 = VecQ::<Primitive2>::new(x[1], x[2]);
-        let d1 = DiracStructure::of_model(&torn.left, &q1);
-        let d2 = DiracStructure::of_model(&torn.right, &q2);
+        let d1 = DiracStructure::of_model(&torn.left, 0.0, &q1);
+        let d2 = DiracStructure::of_model(&torn.right, 0.0, &q2);
         let omega = dirac::nalgebra::DMatrix::from_row_slice(1, 4, &[0.0, 1.0, -1.0, 0.0]);
         let dc = d1.product(&d2).interconnect(&omega);
-        assert_eq!(dc, DiracStructure::of_model(&torn, &s.q));
+        assert_eq!(dc, DiracStructure::of_model(&torn, 0.0, &s.q));
 
         let mut rb = ResidualBlocks::<Chain>::zeros();
         torn.residual_blocks(0.0, &s.q, &s.v, &s.lambda, &mut rb);

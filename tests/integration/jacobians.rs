@@ -25,6 +25,21 @@ fn forced_and_degenerate_models() {
 }
 
 #[test]
+fn models_with_prescribed_motion() {
+    check_jacobian_by_differences(&ShakenPendulum { m: 1.3, g: 9.81, l: 0.7, a: 0.2, w: 3.0 }, 70, 20);
+    check_jacobian_by_differences(&DraggedMass { m: 1.5, k: 2.0, c: 0.4 }, 71, 20);
+    check_jacobian_by_differences(&BeadOnRod { m: 0.8, w: 2.5 }, 72, 20);
+    check_jacobian_by_differences(
+        &DiskOnBelt { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045, belt: 0.7 },
+        73,
+        20,
+    );
+    let crank = SliderCrank { m1: 1.0, m2: 2.0, m3: 0.5, r: 0.3, l: 1.0, g: 9.81, c: 0.2, w: 4.0 };
+    check_jacobian_by_differences(&crank, 74, 20);
+    check_csc_against_dense(&crank, 75, 5);
+}
+
+#[test]
 fn eight_link_pendulum() {
     check_jacobian_by_differences(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 8, 5);
 }

@@ -18,6 +18,7 @@ mod linearization;
 mod linkage;
 mod named_access;
 mod paper;
+mod prescribed;
 mod probes;
 mod radau;
 mod util;

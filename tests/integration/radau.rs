@@ -348,8 +348,8 @@ fn simulated_curve_lies_in_the_dirac_structure() {
         let u: Vec<f64> = at.v.iter().copied().collect();
         let q1 = VecQ::<Primitive1>::new(at.q[0], at.q[1]);
         let q2 = VecQ::<Primitive2>::new(at.q[2], at.q[3]);
-        let dc = DiracStructure::of_model(&chain.left, &q1)
-            .product(&DiracStructure::of_model(&chain.right, &q2))
+        let dc = DiracStructure::of_model(&chain.left, 0.0, &q1)
+            .product(&DiracStructure::of_model(&chain.right, 0.0, &q2))
             .interconnect(&omega);
         let membership = dc.membership(&qdot, &pdot, &beta, &u);
         assert!(membership.max() < 1e-7, "sample {k}: {membership:?}");

@@ -52,6 +52,130 @@ pub struct Pendulum {
     pub l: f64,
 }
 
+/// A pendulum whose pivot is shaken along x as `a sin(ω t)`: a rheonomic holonomic
+/// constraint.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(define(pivot) = a * sin(w * t))]
+#[dirac(holonomic(rod) = 0.5 * ((x - pivot) * (x - pivot) + y * y - l * l))]
+pub struct ShakenPendulum {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+    pub a: f64,
+    pub w: f64,
+}
+
+/// A mass on a spring whose far end `e` is dragged at speed `c`: the end has no inertia, and
+/// its motion is prescribed by `e − c t = 0`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, e => ve))]
+#[dirac(lagrangian = 0.5 * m * vx * vx - 0.5 * k * (e - x) * (e - x))]
+#[dirac(holonomic(drag) = e - c * t)]
+pub struct DraggedMass {
+    pub m: f64,
+    pub k: f64,
+    pub c: f64,
+}
+
+/// A bead sliding without friction on a straight rod turned about the origin at rate `w`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy))]
+#[dirac(holonomic(rod) = x * sin(w * t) - y * cos(w * t))]
+pub struct BeadOnRod {
+    pub m: f64,
+    pub w: f64,
+}
+
+/// A free mass on a line.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), lagrangian = 0.5 * m * v * v)]
+pub struct FreeMass {
+    pub m: f64,
+}
+
+/// Two free masses whose relative velocity is prescribed, `v_r − v_l = a ω cos(ω t)`: an
+/// affine interconnection one-form.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(shake) = right.v - left.v - a * w * cos(w * t))]
+pub struct ShakenPair {
+    pub left: FreeMass,
+    pub right: FreeMass,
+    pub a: f64,
+    pub w: f64,
+}
+
+/// A row of free masses, each shaken against the one before as in [`ShakenPair`].
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(shake) = cells[i + 1].v - cells[i].v - a * w * cos(w * t))]
+pub struct ShakenRow {
+    pub cells: Vec<FreeMass>,
+    pub a: f64,
+    pub w: f64,
+}
+
+/// A vertical disk rolling without slipping on a belt that moves along x at the speed of the
+/// input `belt`: affine nonholonomic constraints, `ẋ − r cos φ θ̇ − belt = 0`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v_x, y => v_y, theta => v_theta, phi => v_phi), input(belt))]
+#[dirac(lagrangian = 0.5 * m * (v_x * v_x + v_y * v_y) + 0.5 * i_roll * v_theta * v_theta
+                   + 0.5 * i_turn * v_phi * v_phi)]
+#[dirac(constraint(roll_x) = v_x - r * phi.cos() * v_theta - belt)]
+#[dirac(constraint(roll_y) = v_y - r * sin(phi) * v_theta)]
+pub struct DiskOnBelt {
+    pub m: f64,
+    pub r: f64,
+    pub i_roll: f64,
+    pub i_turn: f64,
+    pub belt: f64,
+}
+
+/// [`DiskOnBelt`] on a belt that accelerates, written with `t`: `belt = u0 + c t`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v_x, y => v_y, theta => v_theta, phi => v_phi))]
+#[dirac(lagrangian = 0.5 * m * (v_x * v_x + v_y * v_y) + 0.5 * i_roll * v_theta * v_theta
+                   + 0.5 * i_turn * v_phi * v_phi)]
+#[dirac(constraint(roll_x) = v_x - r * phi.cos() * v_theta - (u0 + c * t))]
+#[dirac(constraint(roll_y) = v_y - r * sin(phi) * v_theta)]
+pub struct DiskOnAcceleratingBelt {
+    pub m: f64,
+    pub r: f64,
+    pub i_roll: f64,
+    pub i_turn: f64,
+    pub u0: f64,
+    pub c: f64,
+}
+
+/// A slider crank with its crank turned at constant speed, `θ − ω t = 0`: crank (uniform,
+/// length `r`, mass `m1`) about the origin, connecting rod (uniform, length `l`, mass `m2`)
+/// at angle β, slider (mass `m3`) on the x axis with a damper `c`, under gravity.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(theta => v_theta, beta => v_beta, x => v_x))]
+#[dirac(define(rod_vx) = -r * sin(theta) * v_theta - 0.5 * l * sin(beta) * v_beta)]
+#[dirac(define(rod_vy) = r * cos(theta) * v_theta - 0.5 * l * cos(beta) * v_beta)]
+#[dirac(define(rod_y) = r * sin(theta) - 0.5 * l * sin(beta))]
+#[dirac(lagrangian = 0.5 * m1 * r * r / 3.0 * v_theta * v_theta
+                   + 0.5 * m2 * (rod_vx * rod_vx + rod_vy * rod_vy)
+                   + 0.5 * m2 * l * l / 12.0 * v_beta * v_beta
+                   + 0.5 * m3 * v_x * v_x
+                   - m1 * g * 0.5 * r * sin(theta) - m2 * g * rod_y)]
+#[dirac(force(x) = -c * v_x)]
+#[dirac(holonomic(loop_x) = r * cos(theta) + l * cos(beta) - x)]
+#[dirac(holonomic(loop_y) = r * sin(theta) - l * sin(beta))]
+#[dirac(holonomic(drive) = theta - w * t)]
+pub struct SliderCrank {
+    pub m1: f64,
+    pub m2: f64,
+    pub m3: f64,
+    pub r: f64,
+    pub l: f64,
+    pub g: f64,
+    pub c: f64,
+    pub w: f64,
+}
+
 /// A vertical disk rolling without slipping: ẋ = r cos φ θ̇, ẏ = r sin φ θ̇ (nonholonomic).
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(coordinates(x => v_x, y => v_y, theta => v_theta, phi => v_phi))]

@@ -11,9 +11,9 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use self::signatures::{
-    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, DL_DQ, DL_DT, DL_DV, DPDOT_DU, FORCE, FORCE_DQ, FORCE_DV,
-    HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DQ,
-    OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL, RESIDUAL_BLOCKS, Signature,
+    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU, FORCE,
+    FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU, L_VV,
+    LAGRANGIAN, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL, RESIDUAL_BLOCKS, Signature,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -75,7 +75,7 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         residual_blocks: op_count(g, &residual_blocks),
         jacobian_blocks: op_count(g, &jacobian_blocks),
     };
-    let table: [(Signature, Vec<Assign>); 19] = [
+    let table: [(Signature, Vec<Assign>); 21] = [
         (LAGRANGIAN, vec![Assign::set(quote! { value }, b.lagrangian)]),
         (DL_DQ, vector(&out, &b.dl_dq)),
         (DL_DV, vector(&out, &b.dl_dv)),
@@ -95,6 +95,8 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         (JACOBIAN, jacobian),
         (L_VT, vector(&out, &b.l_vt)),
         (DL_DT, vec![Assign::set(quote! { value }, b.dl_dt)]),
+        (CONSTRAINT_RATE, vector(&out, &b.b)),
+        (DAV_DT, vector(&out, &b.dav_dt)),
     ];
     let mut methods: TokenStream =
         table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();

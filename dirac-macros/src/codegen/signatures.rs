@@ -46,6 +46,7 @@ pub enum Out {
     Scalar,
     VecQ,
     VecH,
+    VecC,
     MatQQ,
     MatCQ,
     ResidualBlocks,
@@ -79,10 +80,12 @@ pub const L_VV: Signature = method("l_vv", &[T, Q, V], Out::MatQQ);
 pub const FORCE: Signature = method("force", &[T, Q, V], Out::VecQ);
 pub const FORCE_DQ: Signature = method("force_dq", &[T, Q, V], Out::MatQQ);
 pub const FORCE_DV: Signature = method("force_dv", &[T, Q, V], Out::MatQQ);
-pub const CONSTRAINT_MATRIX: Signature = method("constraint_matrix", &[Q], Out::MatCQ);
-pub const DAV_DQ: Signature = method("dav_dq", &[Q, V], Out::MatCQ);
-pub const DATL_DQ: Signature = method("datl_dq", &[Q, Lambda], Out::MatQQ);
-pub const HOLONOMIC: Signature = method("holonomic", &[Q], Out::VecH);
+pub const CONSTRAINT_MATRIX: Signature = method("constraint_matrix", &[T, Q], Out::MatCQ);
+pub const DAV_DQ: Signature = method("dav_dq", &[T, Q, V], Out::MatCQ);
+pub const DATL_DQ: Signature = method("datl_dq", &[T, Q, Lambda], Out::MatQQ);
+pub const HOLONOMIC: Signature = method("holonomic", &[T, Q], Out::VecH);
+pub const CONSTRAINT_RATE: Signature = method("constraint_rate", &[T, Q], Out::VecC);
+pub const DAV_DT: Signature = method("dav_dt", &[T, Q, V], Out::VecC);
 pub const RESIDUAL_BLOCKS: Signature = method("residual_blocks", &[T, Q, V, Lambda], Out::ResidualBlocks);
 pub const JACOBIAN_BLOCKS: Signature = method("jacobian_blocks", &[T, Q, V, Lambda], Out::JacobianBlocks);
 pub const L_VT: Signature = method("l_vt", &[T, Q, V], Out::VecQ);
@@ -105,7 +108,7 @@ pub const OUTPUT_DV: Signature = method("output_dv", &[T, Q, V], Out::Values);
 pub const OUTPUT_DU: Signature = method("output_du", &[T, Q, V], Out::Values);
 
 /// The methods every model must implement, in the order they are emitted.
-pub const REQUIRED: [Signature; 17] = [
+pub const REQUIRED: [Signature; 19] = [
     LAGRANGIAN,
     DL_DQ,
     DL_DV,
@@ -123,6 +126,8 @@ pub const REQUIRED: [Signature; 17] = [
     JACOBIAN_BLOCKS,
     L_VT,
     DL_DT,
+    CONSTRAINT_RATE,
+    DAV_DT,
 ];
 
 impl Arg {
@@ -147,6 +152,7 @@ impl Out {
             Out::Scalar => quote! { ::core::primitive::f64 },
             Out::VecQ => quote! { #p::VecQ<#model> },
             Out::VecH => quote! { #p::VecH<#model> },
+            Out::VecC => quote! { #p::VecC<#model> },
             Out::MatQQ => quote! { #p::MatQQ<#model> },
             Out::MatCQ => quote! { #p::MatCQ<#model> },
             Out::ResidualBlocks => quote! { #p::ResidualBlocks<#model> },

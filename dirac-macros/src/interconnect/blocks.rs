@@ -1,9 +1,11 @@
-//! The block table of a composite's own interconnection rows `Ω(q) v = 0`: their first and
-//! second derivatives with respect to the subsystem members they name, and those times the
-//! rows' multipliers μ, computed once. The subsystems' blocks come from their own impls.
+//! The block table of a composite's own interconnection rows `Ω(q, t) v + b(q, t) = 0`: their
+//! first and second derivatives with respect to the subsystem members they name, and those
+//! times the rows' multipliers μ, and their rates in time, computed once. The subsystems'
+//! blocks come from their own impls.
 
 use super::model::CompositeModel;
 use crate::sym::Id;
+use crate::symbols::Sym;
 
 /// The derivatives of the rows `Ω_j` with respect to members `s_k`, as graph ids.
 pub struct CompositeBlocks {
@@ -15,6 +17,8 @@ pub struct CompositeBlocks {
     pub mu_d: Vec<Vec<Id>>,
     /// `μ_j ∂²Ω_j/∂s_k∂s_l`: the forces' derivatives.
     pub mu_h: Vec<Vec<Vec<Id>>>,
+    /// `∂Ω_j/∂t`: nonzero for a row that prescribes a relative motion.
+    pub dt: Vec<Id>,
 }
 
 impl CompositeBlocks {
@@ -55,6 +59,8 @@ impl CompositeBlocks {
                 }
             }
         }
-        CompositeBlocks { d, h, mu_d, mu_h }
+        let time = m.symbols.declare(g, Sym::Time);
+        let dt = m.rows.iter().map(|row| g.diff(row.omega, time)).collect();
+        CompositeBlocks { d, h, mu_d, mu_h, dt }
     }
 }

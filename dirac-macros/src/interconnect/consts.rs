@@ -182,20 +182,28 @@ impl CompositeModel {
         out
     }
 
-    /// Const checks that each term of a one-form is linear in the velocities, decided once the
-    /// members' roles are known: a table over every assignment of roles to the term's members.
+    /// Const checks, decided once the members' roles are known, that each term of a one-form
+    /// is affine in the velocities and that each one-form has a velocity in it: a table over
+    /// every assignment of roles to a term's members.
     pub fn linearity_checks(&mut self, cx: &Ctxt) -> TokenStream {
         let mut out = TokenStream::new();
         for j in 0..self.rows.len() {
             let terms = self.rows[j].terms.clone();
             let name = self.rows[j].name.clone();
+            // Per term, the expression that says whether it has a velocity in it.
+            let mut has_velocity = Vec::new();
+            let mut all_tokens = TokenStream::new();
             for (term, tokens) in terms {
+                all_tokens.extend(tokens.clone());
                 let members: Vec<usize> = (0..self.members())
                     .filter(|&k| {
                         let sym = self.graph.as_sym(self.symbols.member_id(k)).expect("a symbol");
                         self.graph.depends_on(term, sym)
                     })
                     .collect();
+                if members.is_empty() {
+                    continue;
+                }
                 if members.len() > 8 {
                     cx.error_spanned_by(
                         &tokens,
@@ -206,38 +214,51 @@ impl CompositeModel {
                 let codes: Vec<u8> =
                     (0..1usize << members.len()).map(|mask| self.term_code(term, &members, mask)).collect();
                 let count = lit(codes.len());
-                if codes.iter().all(|c| *c == 0) {
-                    continue;
+                let bits: Vec<TokenStream> = members
+                    .iter()
+                    .enumerate()
+                    .map(|(b, &k)| {
+                        let r = r_ident(k);
+                        quote! { ((#r.velocity as ::core::primitive::usize) << #b) }
+                    })
+                    .collect();
+                let code = quote! {{
+                    const CODES: [::core::primitive::u8; #count] = [#(#codes),*];
+                    CODES[0 #(| #bits)*]
+                }};
+                has_velocity.push(quote! { (#code != 1) });
+                if codes.contains(&3) {
+                    let what = format!(
+                        "interconnection constraint `{name}` must be affine in the velocities, \
+                         `Ω(q, t) v + b(q, t) = 0`, but this term is not linear in the velocities"
+                    );
+                    let nonlinear = spanning_panic(&tokens, &what);
+                    let span = tokens.span();
+                    out.extend(quote_spanned! {span=>
+                        const _: () = if __RESOLVED && #code == 3 { #nonlinear };
+                    });
                 }
-                let bits = members.iter().enumerate().map(|(b, &k)| {
-                    let r = r_ident(k);
-                    quote! { ((#r.velocity as ::core::primitive::usize) << #b) }
-                });
-                let what = format!(
-                    "interconnection constraint `{name}` must be linear in the velocities, but this term"
-                );
-                let none = spanning_panic(&tokens, &format!("{what} has no velocity in it"));
-                let affine = spanning_panic(&tokens, &format!("{what} has a part without a velocity"));
-                let nonlinear = spanning_panic(&tokens, &format!("{what} is not linear in the velocities"));
-                let span = tokens.span();
+            }
+            let none = spanning_panic(
+                &all_tokens,
+                &format!(
+                    "interconnection constraint `{name}` has no velocity in it; interconnection constraints \
+                     are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities"
+                ),
+            );
+            let span = all_tokens.span();
+            if !has_velocity.is_empty() {
                 out.extend(quote_spanned! {span=>
-                    const _: () = if __RESOLVED {
-                        const CODES: [::core::primitive::u8; #count] = [#(#codes),*];
-                        match CODES[0 #(| #bits)*] {
-                            1 => #none,
-                            2 => #affine,
-                            3 => #nonlinear,
-                            _ => {}
-                        }
-                    };
+                    const _: () = if __RESOLVED && !(false #(|| #has_velocity)*) { #none };
                 });
             }
         }
         out
     }
 
-    /// 0: linear in the velocities when the members in `mask` are velocities; 1: no velocity;
-    /// 2: a part without velocity; 3: a product of velocities.
+    /// 0: linear in the velocities when the members in `mask` are velocities; 1: no velocity
+    /// (a part of `b`); 2: a part without velocity besides a linear one; 3: a product of
+    /// velocities.
     fn term_code(&mut self, term: Id, members: &[usize], mask: usize) -> u8 {
         let velocities: Vec<usize> =
             members.iter().enumerate().filter(|(b, _)| mask >> b & 1 == 1).map(|(_, &k)| k).collect();

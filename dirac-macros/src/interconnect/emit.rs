@@ -86,6 +86,7 @@ impl Own<'_> {
                 quote! { #local }
             }
             Sym::Multiplier(j) => multiplier(j),
+            Sym::Time => quote! { t },
             Sym::Constant(k) => {
                 let tokens = m.symbols.constant_at(k).1;
                 // Typed where the user wrote it: a constant that is not an `f64` is an error
@@ -135,6 +136,16 @@ impl Own<'_> {
         rows.map(|(j, row)| {
             let j = lit(j);
             Assign::set(quote! { #target[__OMEGA + #j] }, row.omega)
+        })
+        .collect()
+    }
+
+    /// `target[j] = ∂Ω_j/∂t` for the interconnection rows of a vector over constraints.
+    pub fn time_rates(&self, target: &TokenStream) -> Vec<Assign> {
+        let rows = self.blocks.dt.iter().enumerate();
+        rows.map(|(j, &dt)| {
+            let j = lit(j);
+            Assign::set(quote! { #target[__OMEGA + #j] }, dt)
         })
         .collect()
     }

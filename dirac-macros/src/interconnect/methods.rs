@@ -9,12 +9,13 @@ use quote::{format_ident, quote};
 use super::ast::Composite;
 use super::emit::{Own, Part};
 use crate::codegen::signatures::{
-    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, JACOBIAN_BLOCKS, Out, REQUIRED, RESIDUAL_BLOCKS, Signature, rt,
+    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, JACOBIAN_BLOCKS, Out, REQUIRED,
+    RESIDUAL_BLOCKS, Signature, rt,
 };
 
 /// `Ωᵀμ` scattered with the subsystems' port efforts: the one method composites add.
 pub(super) const INTERCONNECTION_FORCES: Signature =
-    Signature { name: "interconnection_forces", args: &[Arg::Q, Arg::Lambda], out: Out::VecQ };
+    Signature { name: "interconnection_forces", args: &[Arg::T, Arg::Q, Arg::Lambda], out: Out::VecQ };
 
 /// Every method of the composite's impl.
 pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
@@ -109,6 +110,9 @@ fn own_part(own: &Own<'_>, sig: &Signature) -> (TokenStream, TokenStream) {
         _ if name == CONSTRAINT_MATRIX.name => with(own.rows_into(&out, true), false),
         _ if name == DAV_DQ.name => with(own.rows_into(&out, false), true),
         _ if name == DATL_DQ.name => with(own.datl_into(&out), false),
+        // `b`: the rows with every velocity at zero.
+        _ if name == CONSTRAINT_RATE.name => (TokenStream::new(), own.body(&own.omega_values(&out), false)),
+        _ if name == DAV_DT.name => (TokenStream::new(), own.body(&own.time_rates(&out), true)),
         _ if name == RESIDUAL_BLOCKS.name => {
             let mut assigns = own.omega_values(&quote! { out.constraint_velocity });
             assigns.extend(own.forces_into(&quote! { out.momentum_rate }));
@@ -162,6 +166,7 @@ fn subsystem_part(sig: &Signature, field: &syn::Ident, ty: &syn::Type, i: usize)
     let (zeros, scattered) = match sig.out {
         Out::VecQ => (quote! { #p::VecQ::<#ty>::zeros() }, scatter("q", o, quote! { out })),
         Out::VecH => (quote! { #p::VecH::<#ty>::zeros() }, scatter("h", o, quote! { out })),
+        Out::VecC => (quote! { #p::VecC::<#ty>::zeros() }, scatter("c", o, quote! { out })),
         Out::MatQQ => (quote! { #p::MatQQ::<#ty>::zeros() }, scatter("qq", o, quote! { out })),
         Out::MatCQ => (quote! { #p::MatCQ::<#ty>::zeros() }, scatter("cq", o, quote! { out })),
         Out::ResidualBlocks => {

@@ -1,5 +1,6 @@
-//! The symbolic form of a composite: its interconnection rows `Ω(q) v = 0` over symbols that
-//! stand for subsystem members, which are resolved to indices only when the program compiles.
+//! The symbolic form of a composite: its interconnection rows `Ω(q, t) v + b(q, t) = 0` over
+//! symbols that stand for subsystem members, which are resolved to indices only when the
+//! program compiles.
 
 use std::collections::HashSet;
 
@@ -16,7 +17,7 @@ use crate::sym::{Graph, Id};
 use crate::symbol::TIME;
 use crate::symbols::{Sym, Symbols};
 
-/// One interconnection row `Ω_j(q) v = 0`.
+/// One interconnection row `Ω_j(q, t) v + b_j(q, t) = 0`.
 pub struct Row {
     pub name: String,
     /// The tokens that declared it, for error spans.
@@ -128,7 +129,7 @@ impl CompositeModel {
         for (i, c) in composite.constraints.iter().enumerate() {
             let name = c.name.as_ref().map(ToString::to_string).unwrap_or_else(|| format!("constraint{i}"));
             let what = format!("interconnection constraint `{name}`");
-            let ctx = Context { what: &what, velocities: true, time: false };
+            let ctx = Context { what: &what, velocities: true };
             let mut syntactic = Vec::new();
             additive_terms(&c.expr, false, &mut syntactic);
             let mut terms = Vec::new();
@@ -139,17 +140,15 @@ impl CompositeModel {
                     terms.push((x, term.to_token_stream()));
                 }
             }
-            for (x, tokens) in &terms {
-                let names_a_member = self
-                    .symbols
-                    .members()
-                    .any(|(m, id)| !m.port && self.graph.depends_on(*x, self.sym_of(id)));
-                if !names_a_member {
-                    let message = format!(
-                        "{what} must be linear in the velocities of the subsystems, but this term names no subsystem member"
-                    );
-                    cx.error_spanned_by(tokens, message);
-                }
+            let names_a_member = terms.iter().any(|(x, _)| {
+                self.symbols.members().any(|(m, id)| !m.port && self.graph.depends_on(*x, self.sym_of(id)))
+            });
+            if !names_a_member && !terms.is_empty() {
+                let message = format!(
+                    "{what} names no velocity of a subsystem; interconnection constraints are \
+                     `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities"
+                );
+                cx.error_spanned_by(&c.expr, message);
             }
             let ids: Vec<Id> = terms.iter().map(|(x, _)| *x).collect();
             let omega = self.graph.add(&ids);

@@ -660,6 +660,7 @@ const _: () = {
         #[inline]
         fn constraint_matrix(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
         ) {
@@ -667,6 +668,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Primitive1>::zeros();
                 self.left
                     .constraint_matrix(
+                        t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &mut o,
                     );
@@ -676,6 +678,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Primitive2>::zeros();
                 self.right
                     .constraint_matrix(
+                        t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &mut o,
                     );
@@ -696,6 +699,7 @@ const _: () = {
         #[inline]
         fn dav_dq(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
@@ -704,6 +708,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Primitive1>::zeros();
                 self.left
                     .dav_dq(
+                        t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
                         &mut o,
@@ -714,6 +719,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Primitive2>::zeros();
                 self.right
                     .dav_dq(
+                        t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
                         &mut o,
@@ -735,6 +741,7 @@ const _: () = {
         #[inline]
         fn datl_dq(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
             out: &mut ::dirac::__private::MatQQ<Self>,
@@ -743,6 +750,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatQQ::<Primitive1>::zeros();
                 self.left
                     .datl_dq(
+                        t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_c::<
                             Primitive1,
@@ -756,6 +764,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatQQ::<Primitive2>::zeros();
                 self.right
                     .datl_dq(
+                        t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_c::<
                             Primitive2,
@@ -769,6 +778,7 @@ const _: () = {
         #[inline]
         fn holonomic(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::VecH<Self>,
         ) {
@@ -776,6 +786,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecH::<Primitive1>::zeros();
                 self.left
                     .holonomic(
+                        t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &mut o,
                     );
@@ -785,6 +796,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecH::<Primitive2>::zeros();
                 self.right
                     .holonomic(
+                        t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &mut o,
                     );
@@ -1031,8 +1043,72 @@ const _: () = {
             total
         }
         #[inline]
+        fn constraint_rate(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecC::<Primitive1>::zeros();
+                self.left
+                    .constraint_rate(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecC::<Primitive2>::zeros();
+                self.right
+                    .constraint_rate(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+            let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
+            let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
+            out[__OMEGA + 0] = r0 - r1;
+        }
+        #[inline]
+        fn dav_dt(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecC::<Primitive1>::zeros();
+                self.left
+                    .dav_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Primitive1, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecC::<Primitive2>::zeros();
+                self.right
+                    .dav_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Primitive2, Self>(&o, &__SLOT1, out);
+            }
+            out[__OMEGA + 0] = 0f64;
+        }
+        #[inline]
         fn interconnection_forces(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
             out: &mut ::dirac::__private::VecQ<Self>,
@@ -1041,6 +1117,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecQ::<Primitive1>::zeros();
                 self.left
                     .interconnection_forces(
+                        t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_c::<
                             Primitive1,
@@ -1054,6 +1131,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecQ::<Primitive2>::zeros();
                 self.right
                     .interconnection_forces(
+                        t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_c::<
                             Primitive2,

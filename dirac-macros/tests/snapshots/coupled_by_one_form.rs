@@ -184,51 +184,44 @@ const _: () = {
             <Cart as ::dirac::__private::Named>::NAMES.resolve(&["v_x"]).is_ok(),
         ] as &[::core::primitive::bool; 4],
     );
-    const _: () = if __RESOLVED {
-        const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
-        match CODES[0 | ((__R0.velocity as ::core::primitive::usize) << 0usize)
-            | ((__R1.velocity as ::core::primitive::usize) << 1usize)]
-        {
-            1 => {
-                ::core::panic!(
-                    "interconnection constraint `tie` must be linear in the velocities, but this term has no velocity in it"
-                )
-            }
-            2 => {
-                ::core::panic!(
-                    "interconnection constraint `tie` must be linear in the velocities, but this term has a part without a velocity"
-                )
-            }
-            3 => {
-                ::core::panic!(
-                    "interconnection constraint `tie` must be linear in the velocities, but this term is not linear in the velocities"
-                )
-            }
-            _ => {}
-        }
+    const _: () = if __RESOLVED
+        && {
+            const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
+            CODES[0 | ((__R0.velocity as ::core::primitive::usize) << 0usize)
+                | ((__R1.velocity as ::core::primitive::usize) << 1usize)]
+        } == 3
+    {
+        ::core::panic!(
+            "interconnection constraint `tie` must be affine in the velocities, `Ω(q, t) v + b(q, t) = 0`, but this term is not linear in the velocities"
+        )
     };
-    const _: () = if __RESOLVED {
-        const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
-        match CODES[0 | ((__R2.velocity as ::core::primitive::usize) << 0usize)
-            | ((__R3.velocity as ::core::primitive::usize) << 1usize)]
-        {
-            1 => {
-                ::core::panic!(
-                    "interconnection constraint `tie` must be linear in the velocities, but this term has no velocity in it"
-                )
-            }
-            2 => {
-                ::core::panic!(
-                    "interconnection constraint `tie` must be linear in the velocities, but this term has a part without a velocity"
-                )
-            }
-            3 => {
-                ::core::panic!(
-                    "interconnection constraint `tie` must be linear in the velocities, but this term is not linear in the velocities"
-                )
-            }
-            _ => {}
-        }
+    const _: () = if __RESOLVED
+        && {
+            const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
+            CODES[0 | ((__R2.velocity as ::core::primitive::usize) << 0usize)
+                | ((__R3.velocity as ::core::primitive::usize) << 1usize)]
+        } == 3
+    {
+        ::core::panic!(
+            "interconnection constraint `tie` must be affine in the velocities, `Ω(q, t) v + b(q, t) = 0`, but this term is not linear in the velocities"
+        )
+    };
+    const _: () = if __RESOLVED
+        && !(false
+            || ({
+                const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
+                CODES[0 | ((__R0.velocity as ::core::primitive::usize) << 0usize)
+                    | ((__R1.velocity as ::core::primitive::usize) << 1usize)]
+            } != 1)
+            || ({
+                const CODES: [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8];
+                CODES[0 | ((__R2.velocity as ::core::primitive::usize) << 0usize)
+                    | ((__R3.velocity as ::core::primitive::usize) << 1usize)]
+            } != 1))
+    {
+        ::core::panic!(
+            "interconnection constraint `tie` has no velocity in it; interconnection constraints are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities"
+        )
     };
     const __K: ::core::primitive::usize = __NQ + __NC;
     const __STRUCTURE: (
@@ -766,6 +759,7 @@ const _: () = {
         #[inline]
         fn constraint_matrix(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
         ) {
@@ -773,6 +767,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Wheel>::zeros();
                 self.wheel
                     .constraint_matrix(
+                        t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &mut o,
                     );
@@ -782,6 +777,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Cart>::zeros();
                 self.cart
                     .constraint_matrix(
+                        t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &mut o,
                     );
@@ -812,6 +808,7 @@ const _: () = {
         #[inline]
         fn dav_dq(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
@@ -820,6 +817,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Wheel>::zeros();
                 self.wheel
                     .dav_dq(
+                        t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
                         &mut o,
@@ -830,6 +828,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatCQ::<Cart>::zeros();
                 self.cart
                     .dav_dq(
+                        t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
                         &mut o,
@@ -861,6 +860,7 @@ const _: () = {
         #[inline]
         fn datl_dq(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
             out: &mut ::dirac::__private::MatQQ<Self>,
@@ -869,6 +869,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatQQ::<Wheel>::zeros();
                 self.wheel
                     .datl_dq(
+                        t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut o,
@@ -879,6 +880,7 @@ const _: () = {
                 let mut o = ::dirac::__private::MatQQ::<Cart>::zeros();
                 self.cart
                     .datl_dq(
+                        t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut o,
@@ -915,6 +917,7 @@ const _: () = {
         #[inline]
         fn holonomic(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::VecH<Self>,
         ) {
@@ -922,6 +925,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecH::<Wheel>::zeros();
                 self.wheel
                     .holonomic(
+                        t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &mut o,
                     );
@@ -931,6 +935,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecH::<Cart>::zeros();
                 self.cart
                     .holonomic(
+                        t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &mut o,
                     );
@@ -1220,8 +1225,74 @@ const _: () = {
             total
         }
         #[inline]
+        fn constraint_rate(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecC::<Wheel>::zeros();
+                self.wheel
+                    .constraint_rate(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecC::<Cart>::zeros();
+                self.cart
+                    .constraint_rate(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Cart, Self>(&o, &__SLOT1, out);
+            }
+            let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
+            let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
+            let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
+            let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
+            out[__OMEGA + 0] = (0.1f64 * r0.sin() + 1f64) * r1 - self.c * r2.cos() * r3;
+        }
+        #[inline]
+        fn dav_dt(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            {
+                let mut o = ::dirac::__private::VecC::<Wheel>::zeros();
+                self.wheel
+                    .dav_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Wheel, Self>(&o, &__SLOT0, out);
+            }
+            {
+                let mut o = ::dirac::__private::VecC::<Cart>::zeros();
+                self.cart
+                    .dav_dt(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_c::<Cart, Self>(&o, &__SLOT1, out);
+            }
+            out[__OMEGA + 0] = 0f64;
+        }
+        #[inline]
         fn interconnection_forces(
             &self,
+            t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
             out: &mut ::dirac::__private::VecQ<Self>,
@@ -1230,6 +1301,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecQ::<Wheel>::zeros();
                 self.wheel
                     .interconnection_forces(
+                        t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut o,
@@ -1240,6 +1312,7 @@ const _: () = {
                 let mut o = ::dirac::__private::VecQ::<Cart>::zeros();
                 self.cart
                     .interconnection_forces(
+                        t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut o,

@@ -179,12 +179,14 @@ const _: () = {
         #[inline]
         fn constraint_matrix(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
         ) {}
         #[inline]
         fn dav_dq(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
@@ -192,6 +194,7 @@ const _: () = {
         #[inline]
         fn datl_dq(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _lambda: &::dirac::__private::VecC<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
@@ -199,6 +202,7 @@ const _: () = {
         #[inline]
         fn holonomic(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecH<Self>,
         ) {}
@@ -276,6 +280,21 @@ const _: () = {
             value = 0f64;
             value
         }
+        #[inline]
+        fn constraint_rate(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecC<Self>,
+        ) {}
+        #[inline]
+        fn dav_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecC<Self>,
+        ) {}
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

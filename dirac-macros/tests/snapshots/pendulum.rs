@@ -170,6 +170,7 @@ const _: () = {
         #[inline]
         fn constraint_matrix(
             &self,
+            _t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
         ) {
@@ -179,6 +180,7 @@ const _: () = {
         #[inline]
         fn dav_dq(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
@@ -189,6 +191,7 @@ const _: () = {
         #[inline]
         fn datl_dq(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
             out: &mut ::dirac::__private::MatQQ<Self>,
@@ -200,6 +203,7 @@ const _: () = {
         #[inline]
         fn holonomic(
             &self,
+            _t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::VecH<Self>,
         ) {
@@ -304,6 +308,25 @@ const _: () = {
             let value: ::core::primitive::f64;
             value = 0f64;
             value
+        }
+        #[inline]
+        fn constraint_rate(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            out[0usize] = 0f64;
+        }
+        #[inline]
+        fn dav_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            out[0usize] = 0f64;
         }
     }
     #[automatically_derived]

@@ -183,12 +183,14 @@ const _: () = {
         #[inline]
         fn constraint_matrix(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
         ) {}
         #[inline]
         fn dav_dq(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
@@ -196,6 +198,7 @@ const _: () = {
         #[inline]
         fn datl_dq(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _lambda: &::dirac::__private::VecC<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
@@ -203,6 +206,7 @@ const _: () = {
         #[inline]
         fn holonomic(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecH<Self>,
         ) {}
@@ -297,6 +301,21 @@ const _: () = {
             value = 0f64;
             value
         }
+        #[inline]
+        fn constraint_rate(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecC<Self>,
+        ) {}
+        #[inline]
+        fn dav_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecC<Self>,
+        ) {}
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

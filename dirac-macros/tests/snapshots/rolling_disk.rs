@@ -193,6 +193,7 @@ const _: () = {
         #[inline]
         fn constraint_matrix(
             &self,
+            _t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
         ) {
@@ -204,6 +205,7 @@ const _: () = {
         #[inline]
         fn dav_dq(
             &self,
+            _t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
             out: &mut ::dirac::__private::MatCQ<Self>,
@@ -214,6 +216,7 @@ const _: () = {
         #[inline]
         fn datl_dq(
             &self,
+            _t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             lambda: &::dirac::__private::VecC<Self>,
             out: &mut ::dirac::__private::MatQQ<Self>,
@@ -224,6 +227,7 @@ const _: () = {
         #[inline]
         fn holonomic(
             &self,
+            _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecH<Self>,
         ) {}
@@ -359,6 +363,27 @@ const _: () = {
             let value: ::core::primitive::f64;
             value = 0f64;
             value
+        }
+        #[inline]
+        fn constraint_rate(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
+        #[inline]
+        fn dav_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
         }
     }
     #[automatically_derived]

@@ -325,7 +325,7 @@ where
         self.state.read_y(&self.y);
         if let Some(projector) = &mut self.projector {
             let s = &mut self.state;
-            projector.project(self.model.get(), &mut s.q, &mut s.v);
+            projector.project(self.model.get(), self.t + h, &mut s.q, &mut s.v);
             self.model.dl_dv(self.t + h, &s.q, &s.v, &mut s.p);
             s.write_y(&mut self.y);
         }

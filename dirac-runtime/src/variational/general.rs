@@ -6,7 +6,7 @@ use nalgebra::DefaultAllocator;
 
 use super::work::{StageBlocks, Step};
 use crate::algebra::{Algebra, Saddle, SaddleTerms};
-use crate::dims::{Sizes, Storage, VecH, VecQ};
+use crate::dims::{Sizes, Storage, VecC, VecH, VecQ};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
 use crate::model::MatCQ;
@@ -74,10 +74,19 @@ where
         model.l_vq(t1, &x.q1, v, &mut b.lvq1);
         model.force_dq(tm, &x.qm, v, &mut b.fq);
         model.force_dv(tm, &x.qm, v, &mut b.fv);
-        model.constraint_matrix(&x.q1, &mut b.a1);
-        model.constraint_matrix(&x.qm, &mut b.am);
-        model.dav_dq(&x.qm, v, &mut b.gm);
-        stage_one_constraints(model, &w.sizes.typed::<M>(), h, &x.q1, &mut x.phi, &b.am, v, &mut r[n..]);
+        model.constraint_matrix(t1, &x.q1, &mut b.a1);
+        model.constraint_matrix(tm, &x.qm, &mut b.am);
+        model.dav_dq(tm, &x.qm, v, &mut b.gm);
+        let at = StagePoints { t: t0, h, q1: &x.q1, qm: &x.qm };
+        stage_one_constraints(
+            model,
+            &w.sizes.typed::<M>(),
+            at,
+            (&mut x.phi, &mut x.rate),
+            &b.am,
+            v,
+            &mut r[n..],
+        );
         assemble_stage_one::<M>(&mut w.saddle, b, &w.a0, h);
         if newton_update(s, Stage::One)? {
             return Ok(());
@@ -123,15 +132,26 @@ fn assemble_stage_one<M: LagrangeDirac>(
     }
 }
 
-/// `φ(q_{k+1})/h` for holonomic rows, `A(q_{k+½}) v` for the others, into `out`; `am` holds
-/// `A(q_{k+½})`.
-#[allow(clippy::too_many_arguments)]
+/// Where stage 1 evaluates the constraints: the end point and the midpoint of a step of size
+/// `h` from `t`.
+#[derive(Clone, Copy)]
+pub(crate) struct StagePoints<'a, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub t: f64,
+    pub h: f64,
+    pub q1: &'a VecQ<M>,
+    pub qm: &'a VecQ<M>,
+}
+
+/// `φ(q_{k+1}, t_{k+1})/h` for holonomic rows, `A(q_{k+½}, t_{k+½}) v + b(q_{k+½}, t_{k+½})`
+/// for the others, into `out`; `am` holds `A(q_{k+½}, t_{k+½})`.
 pub(crate) fn stage_one_constraints<M: LagrangeDirac>(
     model: &M,
     sizes: &Sizes,
-    h: f64,
-    q1: &VecQ<M>,
-    phi: &mut VecH<M>,
+    at: StagePoints<'_, M>,
+    (phi, rate): (&mut VecH<M>, &mut VecC<M>),
     am: &MatCQ<M>,
     v: &VecQ<M>,
     out: &mut [f64],
@@ -141,11 +161,12 @@ pub(crate) fn stage_one_constraints<M: LagrangeDirac>(
     if sizes.nc == 0 {
         return;
     }
-    out.fill(0.0);
+    model.constraint_rate(at.t + 0.5 * at.h, at.qm, rate);
+    out.copy_from_slice(rate.as_slice());
     M::Algebra::cq_mul(am, 1.0, v.as_slice(), out);
-    model.holonomic(q1, phi);
+    model.holonomic(at.t + at.h, at.q1, phi);
     for j in 0..sizes.nh {
-        out[j] = phi[j] / h;
+        out[j] = phi[j] / at.h;
     }
 }
 
@@ -171,7 +192,8 @@ where
         for i in 0..n {
             x.target[i] = 0.5 * (x.lv0[i] + x.lv1[i]) + 0.5 * h * (x.lq[i] + x.f[i]);
         }
-        model.constraint_matrix(&x.q1, &mut w.blocks.a1);
+        model.constraint_matrix(t1, &x.q1, &mut w.blocks.a1);
+        model.constraint_rate(t1, &x.q1, &mut x.rate);
         s.state.v.copy_from(v);
     }
     for _ in 0..s.options.max_iterations {
@@ -186,7 +208,7 @@ where
         for i in 0..n {
             r[i] = x.lv1[i] - x.lv0[i] - x.target[i];
         }
-        r[n..].fill(0.0);
+        r[n..].copy_from_slice(x.rate.as_slice());
         M::Algebra::cq_mul(&b.a1, 1.0, wv.as_slice(), &mut r[n..]);
         model.l_vv(t1, &x.q1, wv, &mut b.lvv1);
         w.saddle.assemble(&SaddleTerms {

@@ -65,8 +65,8 @@ where
     /// The energy at the start, and the size of the energy's parts `|⟨p, v⟩| + |L|` there,
     /// for the stability check.
     energy0: f64,
-    /// The state reached: `v` is the stage-2 velocity `w`, and `λ = 2 Γ / h` the multiplier
-    /// that the last stage-2 impulse `A(q)ᵀ Γ` stands for over half a step.
+    /// The state reached: `v` is the stage-2 velocity `w`, and `λ` the multipliers
+    /// extrapolated from the steps' impulses to second order (see `update_multipliers`).
     state: State<M>,
     /// The state at the start of the last step, for interpolation.
     previous: State<M>,
@@ -133,6 +133,7 @@ where
         self.t0 = t0;
         self.t_end = t_end;
         self.work.work = 0.0;
+        self.work.midpoint.1 = 0.0;
         let model = self.model.get();
         let s = &self.state;
         self.energy0 = model.energy(t0, &s.q, &s.v, &s.p);
@@ -145,6 +146,39 @@ where
             model.dl_dq(t0, &s.q, &s.v, &mut self.work.dl_dq);
         }
         Ok(())
+    }
+
+    /// The multipliers at the end of a step of size `h`. Each of the impulses `Λ` and `Γ` alone
+    /// gives them to first order only; their sum over the step, `μ = (Λ + Γ)/h`, gives them at
+    /// the step's midpoint to second order. They are extrapolated from this midpoint and the
+    /// one before (from the multipliers at the start, after a start or restart) to the end of
+    /// the step, to second order.
+    fn update_multipliers(&mut self, h: f64) {
+        let w = &mut self.work;
+        let (previous, h_previous) = &mut w.midpoint;
+        // The distance from the earlier point to this midpoint, and on to the step's end.
+        let span = if *h_previous > 0.0 { 0.5 * (*h_previous + h) } else { 0.5 * h };
+        let beyond = 0.5 * h / span;
+        for j in 0..self.sizes.nc {
+            let mu = (w.big_lambda[j] + w.gamma[j]) / h;
+            let before = if *h_previous > 0.0 { previous[j] } else { self.state.lambda[j] };
+            self.state.lambda[j] = mu + (mu - before) * beyond;
+            previous[j] = mu;
+        }
+        *h_previous = h;
+    }
+
+    /// The work of the step's constraint impulses, `−⟨Λ, b(q_k, t_k)⟩ − ⟨Γ, b(q_{k+1}, t_{k+1})⟩`
+    /// (each impulse times the velocity its constraint prescribes), into the work the energy
+    /// check allows for: zero unless a constraint prescribes a motion.
+    fn add_constraint_work(&mut self, h: f64) {
+        let model = self.model.get();
+        let w = &mut self.work;
+        model.constraint_rate(self.t, &self.state.q, &mut w.vectors.rate);
+        w.work -= w.vectors.rate.dot(&w.big_lambda);
+        set_axpy::<M>(&mut w.vectors.q1, &self.state.q, h, &w.v);
+        model.constraint_rate(self.t + h, &w.vectors.q1, &mut w.vectors.rate);
+        w.work -= w.vectors.rate.dot(&w.gamma);
     }
 
     /// The number of steps from `t0` to `t_end`, the last one possibly shorter; an error if
@@ -240,7 +274,7 @@ where
         let last = self.taken + 1 == self.total;
         let h = if last { self.t_end - self.t } else { self.h };
         self.previous.clone_from(&self.state);
-        self.model.get().constraint_matrix(&self.state.q, &mut self.work.a0);
+        self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
         self.work.v.copy_from(&self.state.v);
         self.work.big_lambda.copy_from(&self.work.gamma);
         let mut step = Step {
@@ -259,13 +293,14 @@ where
         let qm = &mut self.work.vectors.qm;
         set_axpy::<M>(qm, &self.state.q, 0.5 * h, &self.work.v);
         self.work.work -= h * self.model.get().dl_dt(self.t + 0.5 * h, qm, &self.work.v);
+        if self.sizes.nc > 0 {
+            self.add_constraint_work(h);
+        }
         self.state.q.axpy(h, &self.work.v, 1.0);
         self.stats.steps += 1;
         self.taken += 1;
         self.t = if last { self.t_end } else { self.t0 + self.taken as f64 * self.h };
-        for (l, g) in self.state.lambda.iter_mut().zip(self.work.gamma.iter()) {
-            *l = g * (2.0 / h);
-        }
+        self.update_multipliers(h);
         let s = &self.state;
         // An index loop: the chained iterators of nalgebra cost more than the step itself.
         if let Some(i) =
@@ -294,8 +329,8 @@ where
     }
 
     /// The state between step points: positions and velocities interpolated linearly (second
-    /// order, like the method) and put back on the constraints (positions onto `φ(q) = 0`,
-    /// velocities onto `A(q) v = 0`, each by the smallest correction), momenta from the
+    /// order, like the method) and put back on the constraints (positions onto `φ(q, t) = 0`,
+    /// velocities onto `A(q, t) v + b(q, t) = 0`, each by the smallest correction), momenta from the
     /// Legendre map, multipliers interpolated.
     fn interpolate(&self, t: f64, out: &mut State<M>) {
         let t_previous = if self.taken == 0 { self.t0 } else { self.time_after(self.taken - 1) };
@@ -305,7 +340,7 @@ where
             *x = a * (1.0 - s) + b * s;
         }
         if self.sizes.nc > 0 {
-            self.projector.borrow_mut().project(self.model.get(), &mut out.q, &mut out.v);
+            self.projector.borrow_mut().project(self.model.get(), t, &mut out.q, &mut out.v);
         }
         self.model.get().dl_dv(t, &out.q, &out.v, &mut out.p);
     }

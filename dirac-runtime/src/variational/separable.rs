@@ -6,7 +6,7 @@
 
 use nalgebra::{DefaultAllocator, OMatrix};
 
-use super::general::{set_axpy, stage_one_constraints};
+use super::general::{StagePoints, set_axpy, stage_one_constraints};
 use super::work::Step;
 use crate::algebra::Algebra;
 use crate::dims::{Dimensions, Sizes, Storage, VecQ};
@@ -98,11 +98,12 @@ where
         s.state.v.copy_from(&w);
         s.state.p.copy_from(&target);
     } else {
-        s.model.constraint_matrix(&q1, &mut s.work.blocks.a1);
+        s.model.constraint_matrix(t1, &q1, &mut s.work.blocks.a1);
+        s.model.constraint_rate(t1, &q1, &mut s.work.vectors.rate);
         let a1 = dense::<M>(&s.work.blocks.a1).clone();
         let d = mass.solve_transpose(&a1);
+        let mut gamma = -(&a1 * &w + &s.work.vectors.rate);
         let small = factor_small(s, &(&a1 * &d))?;
-        let mut gamma = -(&a1 * &w);
         small.solve(&mut gamma);
         s.work.gamma.copy_from(&gamma);
         s.state.v.copy_from(&(w + d * &gamma));
@@ -126,12 +127,22 @@ where
         let x = &mut w.vectors;
         set_axpy::<M>(&mut x.q1, &s.state.q, h, &w.v);
         set_axpy::<M>(&mut x.qm, &s.state.q, 0.5 * h, &w.v);
-        model.constraint_matrix(&x.q1, &mut w.blocks.a1);
-        model.constraint_matrix(&x.qm, &mut w.blocks.am);
-        model.dav_dq(&x.qm, &w.v, &mut w.blocks.gm);
+        let (t1, tm) = (s.t + h, s.t + 0.5 * h);
+        model.constraint_matrix(t1, &x.q1, &mut w.blocks.a1);
+        model.constraint_matrix(tm, &x.qm, &mut w.blocks.am);
+        model.dav_dq(tm, &x.qm, &w.v, &mut w.blocks.gm);
         let mut r = sizes.zeros_c::<M>();
-        stage_one_constraints(model, &sizes, h, &x.q1, &mut x.phi, &w.blocks.am, &w.v, r.as_mut_slice());
-        // ∂/∂v of the constraints: A(q_{k+1}) in holonomic rows, A + (h/2) ∂(A v)/∂q at the
+        let at = StagePoints { t: s.t, h, q1: &x.q1, qm: &x.qm };
+        stage_one_constraints(
+            model,
+            &sizes,
+            at,
+            (&mut x.phi, &mut x.rate),
+            &w.blocks.am,
+            &w.v,
+            r.as_mut_slice(),
+        );
+        // ∂/∂v of the constraints: A(q_{k+1}) in holonomic rows, A + (h/2) ∂(A v + b)/∂q at the
         // midpoint in the others.
         let (a1, am, gm) = (dense::<M>(&w.blocks.a1), dense::<M>(&w.blocks.am), dense::<M>(&w.blocks.gm));
         let mut c = am + gm * (0.5 * h);

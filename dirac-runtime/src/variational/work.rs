@@ -81,6 +81,9 @@ where
     pub big_lambda: VecC<M>,
     /// The stage-2 impulse Γ.
     pub gamma: VecC<M>,
+    /// The multipliers at the last step's midpoint, `(Λ + Γ)/h`, and that step's size; a size
+    /// of zero when no step has been taken since the start or a restart.
+    pub midpoint: (VecC<M>, f64),
     /// `A(q_k)`.
     pub a0: MatCQ<M>,
     /// The blocks of the stage systems.
@@ -137,6 +140,8 @@ where
     pub f: VecQ<M>,
     pub target: VecQ<M>,
     pub phi: VecH<M>,
+    /// `b(q, t)` of the constraints at one of the step's points.
+    pub rate: VecC<M>,
     pub r: VecK<M>,
 }
 
@@ -154,6 +159,7 @@ where
             v: q(),
             big_lambda: sizes.zeros_c::<M>(),
             gamma: sizes.zeros_c::<M>(),
+            midpoint: (sizes.zeros_c::<M>(), 0.0),
             a0: cq(),
             blocks: StageBlocks {
                 lvv0: qq(),
@@ -176,6 +182,7 @@ where
                 f: q(),
                 target: q(),
                 phi: sizes.zeros_h::<M>(),
+                rate: sizes.zeros_c::<M>(),
                 r: sizes.zeros_k::<M>(),
             },
             saddle: M::Algebra::saddle(&shape),

@@ -7,7 +7,8 @@ use quote::{format_ident, quote};
 
 use super::{Large, lit};
 use crate::codegen::signatures::{
-    Arg, CONSTRAINT_MATRIX, DATL_DQ, DAV_DQ, JACOBIAN_BLOCKS, Out, REQUIRED, RESIDUAL_BLOCKS, Signature, rt,
+    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, JACOBIAN_BLOCKS, Out, REQUIRED,
+    RESIDUAL_BLOCKS, Signature, rt,
 };
 use crate::interconnect::emit::r_ident;
 use crate::interconnect::methods::{INTERCONNECTION_FORCES, own_parameter_checks};
@@ -24,6 +25,8 @@ enum Entries {
     Datl,
     /// The rows' values `Ω`.
     Values,
+    /// `∂Ω/∂t`.
+    TimeRates,
     /// The forces `Ωᵀμ`.
     Forces,
 }
@@ -104,6 +107,9 @@ impl Large<'_> {
             Out::VecH => {
                 (quote! { #p::VecH::<#ty>::zeros() }, quote! { #p::scatter_h::<#ty, Self>(&o, &__s, out); })
             }
+            Out::VecC => {
+                (quote! { #p::VecC::<#ty>::zeros() }, quote! { #p::scatter_c::<#ty, Self>(&o, &__s, out); })
+            }
             Out::MatQQ => (quote! { #p::MatQQ::<#ty>::zeros() }, put(quote! { o }, quote! { out }, &qq_at)),
             Out::MatCQ => (quote! { #p::MatCQ::<#ty>::zeros() }, put(quote! { o }, quote! { out }, &cq_at)),
             Out::ResidualBlocks => (
@@ -163,6 +169,9 @@ impl Large<'_> {
             _ if name == CONSTRAINT_MATRIX.name => (vec![(Entries::A, quote! { out })], false),
             _ if name == DAV_DQ.name => (vec![(Entries::Dav, quote! { out })], true),
             _ if name == DATL_DQ.name => (vec![(Entries::Datl, quote! { out })], false),
+            // `b`: the rows with every velocity at zero.
+            _ if name == CONSTRAINT_RATE.name => (vec![(Entries::Values, quote! { out })], false),
+            _ if name == DAV_DT.name => (vec![(Entries::TimeRates, quote! { out })], true),
             _ if name == RESIDUAL_BLOCKS.name => (
                 vec![
                     (Entries::Values, quote! { out.constraint_velocity }),
@@ -233,6 +242,7 @@ impl Large<'_> {
                 })
                 .collect(),
             Entries::Values => vec![Assign::set(quote! { #target[__row] }, self.own.model.rows[j].omega)],
+            Entries::TimeRates => vec![Assign::set(quote! { #target[__row] }, b.dt[j])],
             Entries::Forces => row
                 .cq
                 .iter()

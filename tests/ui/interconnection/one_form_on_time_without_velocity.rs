@@ -17,10 +17,11 @@ pub struct Right {
 }
 
 #[derive(Interconnection)]
-#[dirac(constraint(drive) = left.v1 - t * right.v3)]
+#[dirac(constraint(late) = left.x1 - c * t)]
 pub struct Chain {
     pub left: Left,
     pub right: Right,
+    pub c: f64,
 }
 
 fn main() {}

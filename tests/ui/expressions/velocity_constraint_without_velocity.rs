@@ -3,7 +3,7 @@ use dirac::prelude::*;
 #[derive(LagrangeDirac)]
 #[dirac(coordinates(x => vx, y => vy))]
 #[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy))]
-#[dirac(constraint(drift) = vx - r * y.cos())]
+#[dirac(constraint(drift) = x - r * y.cos())]
 struct Drifter {
     m: f64,
     r: f64,
