@@ -131,6 +131,60 @@ where
     violated_legendre_map(model, t, state, tolerance)
 }
 
+/// The constraint that `state` violates the most relative to the size of its terms (as in
+/// [`violated_equation`]): its row, its residual and that residual relative to the terms'
+/// size; `None` for a model without constraints. Allocates nothing for a dense model.
+pub(crate) fn worst_constraint<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+) -> Option<(usize, f64, f64)>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    if sizes.nc == 0 {
+        return None;
+    }
+    let mut phi = sizes.zeros_h::<M>();
+    model.holonomic(t, &state.q, &mut phi);
+    let mut a = M::Algebra::zeros_cq(&model.shape());
+    model.constraint_matrix(t, &state.q, &mut a);
+    let size_a = amax(M::Algebra::cq_values(&a)).max(f64::MIN_POSITIVE);
+    let (q_scale, v_scale) = (size_a * (1.0 + state.q.amax()), size_a * (1.0 + state.v.amax()));
+    let mut av = sizes.zeros_c::<M>();
+    model.constraint_rate(t, &state.q, &mut av);
+    M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
+    let holonomic = worst(phi.iter().copied()).map(|(j, r)| (j, r, r / q_scale));
+    let velocity = worst(av.iter().copied()).map(|(j, r)| (j, r, r / v_scale));
+    match (holonomic, velocity) {
+        (Some(h), Some(v)) => Some(if h.2.is_nan() || h.2 >= v.2 { h } else { v }),
+        (h, v) => h.or(v),
+    }
+}
+
+/// An error if a change of the model between steps moved a constraint off the state: its
+/// violation relative to its terms' size went from `before` to beyond `1e-8 + 2 before`. A
+/// prescribed motion (a constraint that depends on an input or a parameter) cannot jump.
+pub(crate) fn check_constraints_kept<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    before: f64,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match worst_constraint(model, t, state) {
+        Some((j, residual, relative)) if relative.is_nan() || relative > 1e-8 + 2.0 * before => {
+            let kind = if j < model.sizes().nh { "holonomic" } else { "velocity" };
+            let equation = format!("{kind} constraint `{}`", model.constraint_names()[j]);
+            Err(SimError::ConstraintMoved { t, equation, residual })
+        }
+        _ => Ok(()),
+    }
+}
+
 /// The momentum `p = ∂L/∂v` that `state` violates most beyond `tolerance` (relative to the
 /// momenta's size), and by how much: what a change of the model while it runs may break.
 pub fn violated_legendre_map<M: LagrangeDirac>(

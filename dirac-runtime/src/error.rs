@@ -157,6 +157,21 @@ pub enum SimError {
         /// When the change was asked for.
         t: f64,
     },
+    /// A change of the model between steps (an input or a parameter in a constraint) moved a
+    /// constraint off the state: a prescribed motion that jumps.
+    #[error(
+        "changing the model at t = {t} moved {equation} off the state (residual {residual:e}): a \
+         prescribed motion cannot jump; change it smoothly with a drive, or start again from a \
+         consistent state"
+    )]
+    ConstraintMoved {
+        /// When the change was made.
+        t: f64,
+        /// The constraint, such as `velocity constraint `roll_x``.
+        equation: String,
+        /// Its residual after the change.
+        residual: f64,
+    },
     /// The step budget was exhausted.
     #[error("more than {max_steps} steps before reaching t = {t_end} (stopped at t = {t})")]
     TooManySteps {

@@ -6,7 +6,9 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
-use crate::diagnose::{check_finite_state, violated_equation, violated_legendre_map};
+use crate::diagnose::{
+    check_constraints_kept, check_finite_state, violated_equation, violated_legendre_map, worst_constraint,
+};
 use crate::dims::Storage;
 use crate::error::SimError;
 use crate::keys::Input;
@@ -62,7 +64,9 @@ where
         Self: Sized,
     {
         let t = self.t();
+        let before = constraint_violation(self.model(), t, self.state());
         change(self.model_mut().ok_or(SimError::SharedModel { t })?);
+        check_constraints_kept(self.model(), t, self.state(), before)?;
         self.restart()
     }
 
@@ -101,7 +105,9 @@ where
             }
             let t = self.t();
             held.clone_from(self.state());
+            let before = constraint_violation(self.model(), t, &held);
             controller(t, &held, self.model_mut().ok_or(SimError::SharedModel { t })?);
+            check_constraints_kept(self.model(), t, &held, before)?;
             k += 1;
             self.restart_until(sample(k))?;
         }
@@ -248,4 +254,12 @@ where
         Some((equation, residual)) => Err(SimError::MomentumChanged { t, equation, residual }),
         None => Ok(()),
     }
+}
+
+/// How far `state` is from the model's constraints, relative to the size of their terms.
+fn constraint_violation<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    worst_constraint(model, t, state).map_or(0.0, |(_, _, relative)| relative)
 }

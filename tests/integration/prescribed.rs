@@ -483,3 +483,88 @@ fn an_array_of_subsystems_may_prescribe_relative_velocities() {
         }
     }
 }
+
+// ---- Bad prescriptions end in typed errors -----------------------------------------------------
+
+/// A prescription that stops being defined: `x = √(1 − t)` has no value after t = 1.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), lagrangian = 0.5 * m * v * v)]
+#[dirac(holonomic(track) = x - sqrt(1.0 - t))]
+struct EndingTrack {
+    m: f64,
+}
+
+/// A point on the unit circle prescribed to be at x = 2 + t: out of reach.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v, y => w), lagrangian = 0.5 * m * (v * v + w * w))]
+#[dirac(holonomic(ring) = x * x + y * y - 1.0, holonomic(reach) = x - 2.0 - t)]
+struct OutOfReach {
+    m: f64,
+}
+
+#[test]
+fn bad_prescriptions_end_in_typed_errors() {
+    // Started where the track has a value and run past its end: an error naming the time and
+    // the cause, not a panic, a hang or a NaN solution.
+    let track = EndingTrack { m: 1.0 };
+    let start = consistent_state(
+        &track,
+        0.0,
+        &VecQ::<EndingTrack>::from([1.0]),
+        &VecQ::<EndingTrack>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent at t = 0");
+    assert!((start.v[0] + 0.5).abs() < 1e-12, "v = d√(1 − t)/dt = −1/2 at t = 0");
+    let mut radau = Radau::new(&track, RadauOptions::tolerances(1e-8, 1e-8)).expect("valid");
+    let error = radau.solve(0.0, &start, 2.0, &Sampling::Steps).expect_err("the track ends at t = 1");
+    let message = error.to_string();
+    // Radau's Newton iteration meets the NaN of √(1 − t) past t = 1 in the track's equation.
+    assert!(matches!(error, SimError::NonFinite { .. }) && message.contains("track"), "{message}");
+    let mut vi = Variational::new(&track, 1e-2, VariationalOptions::default()).expect("valid");
+    let error = vi.solve(0.0, &start, 2.0, &Sampling::Steps).expect_err("the track ends at t = 1");
+    assert!(matches!(error, SimError::NonFinite { t, .. } if t <= 1.0 + 1e-12), "{error}");
+
+    // Past t = 1 there is no consistent state at all.
+    let error = consistent_state(
+        &track,
+        1.5,
+        &VecQ::<EndingTrack>::from([0.0]),
+        &VecQ::<EndingTrack>::zeros(),
+        Consistency::default(),
+    )
+    .expect_err("no track at t = 1.5");
+    assert!(matches!(error, SimError::NonFinite { .. }), "{error}");
+    assert!(error.to_string().contains("track"), "{error}");
+
+    // A belt whose speed jumps between steps would need an impulse: the change is refused with
+    // the constraint it moved, and the model can be put back and the run continued.
+    let mut disk = DiskOnBelt { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045, belt: 0.6 };
+    let start = disk_start(&disk, disk.r, disk.belt, (2.0, 0.9, 0.3));
+    let mut radau = Radau::new(&mut disk, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    radau.step().expect("steps");
+    let error = radau.set_input(DiskOnBelt::BELT, 0.9).expect_err("the belt cannot jump");
+    assert!(
+        matches!(&error, SimError::ConstraintMoved { equation, .. } if equation.contains("roll_x")),
+        "{error}"
+    );
+    radau.set_input(DiskOnBelt::BELT, 0.6).expect("the belt back at its speed");
+    while !radau.finished() {
+        radau.step().expect("steps");
+    }
+    // The same through a sampled controller.
+    let mut jumpy = |t: f64, _: &State<DiskOnBelt>, model: &mut DiskOnBelt| model.belt = 0.6 + t;
+    let error = radau
+        .solve_sampled(0.0, &start, 1.0, 0.25, &Sampling::Steps, &mut jumpy)
+        .expect_err("the belt cannot jump");
+    assert!(matches!(error, SimError::ConstraintMoved { t, .. } if t == 0.25), "{error}");
+
+    // A prescription out of reach: the consistent initialisation says which constraint it
+    // cannot meet.
+    let reach = OutOfReach { m: 1.0 };
+    let q = VecQ::<OutOfReach>::new(1.0, 0.0);
+    let error = consistent_state(&reach, 0.0, &q, &VecQ::<OutOfReach>::zeros(), Consistency::default())
+        .expect_err("x = 2 is off the unit circle");
+    assert!(matches!(error, SimError::InconsistentInitialState { .. }), "{error}");
+}
