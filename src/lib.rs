@@ -8,7 +8,7 @@
 //! implicit Lagrange-d'Alembert equations
 //!
 //! ```text
-//! q̇ = v,   ṗ = ∂L/∂q + F + A(q)ᵀ λ,   p = ∂L/∂v,   A(q) v = 0
+//! q̇ = v,   ṗ = ∂L/∂q + F + A(q, t)ᵀ λ,   p = ∂L/∂v,   A(q, t) v + b(q, t) = 0
 //! ```
 //!
 //! Models declared on their own are joined through their ports by
