@@ -170,6 +170,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let ident = model.ident;
     let Generated { methods, sparse, counts } = generate(&sym, &blocks);
     let separable = separable(&mut sym, &blocks);
+    let prescribed = blocks.b.iter().any(|b| !sym.graph.is_zero(*b));
     let (text, latex) = equations(&mut sym, &blocks, &ident.to_string());
     let size = proc_macro2::Literal::usize_unsuffixed;
     let (n, m, h) = (size(sym.n()), size(sym.m()), size(sym.h()));
@@ -205,6 +206,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
             impl #p::LagrangeDirac for #ident {
                 #storage
                 const SEPARABLE: ::core::primitive::bool = #separable;
+                const PRESCRIBED: ::core::primitive::bool = #prescribed;
                 const STRUCTURE: #p::Structure = #p::Structure {
                     pattern: &[#(#pattern),*],
                     unknowns: &[#(#unknowns),*],
@@ -352,6 +354,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
             #storage
             const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
             const SEPARABLE: ::core::primitive::bool = false;
+            const PRESCRIBED: ::core::primitive::bool = false;
             const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
             fn equations() -> #p::Equations { #unreachable }
             #(#methods)*

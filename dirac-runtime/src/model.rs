@@ -118,6 +118,10 @@ where
     /// (decided from the model's structure when it compiles). Integrators may take shortcuts
     /// for such models; the variational integrator's step then costs what RATTLE's does.
     const SEPARABLE: bool;
+    /// Whether some constraint prescribes a motion, `b(q, t) ≠ 0` in `A(q, t) v + b(q, t) = 0`
+    /// (decided from the model's structure when it compiles). Integrators skip the rates of
+    /// constraints, and the work they do, for models without.
+    const PRESCRIBED: bool;
     /// The sparsity pattern of the condensed Newton system and what to say about each unknown;
     /// interconnections combine their subsystems' to check themselves when they compile.
     const STRUCTURE: Structure;

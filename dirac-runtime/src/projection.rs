@@ -81,10 +81,12 @@ where
         if !self.factor(false) {
             return;
         }
-        model.constraint_rate(t, q, &mut self.b);
         let x = self.x.as_mut_slice();
-        x[..n].fill(0.0);
-        x[n..].copy_from_slice(self.b.as_slice());
+        x.fill(0.0);
+        if M::PRESCRIBED {
+            model.constraint_rate(t, q, &mut self.b);
+            x[n..].copy_from_slice(self.b.as_slice());
+        }
         M::Algebra::cq_mul(&self.a, 1.0, v.as_slice(), &mut x[n..]);
         self.saddle.solve(x);
         for i in 0..n {

@@ -568,3 +568,56 @@ fn bad_prescriptions_end_in_typed_errors() {
         .expect_err("x = 2 is off the unit circle");
     assert!(matches!(error, SimError::InconsistentInitialState { .. }), "{error}");
 }
+
+/// Two free masses, the right one's velocity set by the left one's position: the part
+/// without velocities, `−x_l`, is read from a coordinate of a subsystem.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(follow) = right.v - left.x)]
+struct Follower {
+    left: FreeMass,
+    right: FreeMass,
+}
+
+/// Two free masses moving together: nothing prescribed.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(tie) = right.v - left.v)]
+struct Tied {
+    left: FreeMass,
+    right: FreeMass,
+}
+
+/// A composite of a prescribed model and a free one.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(tie) = mass.v - bead.vx)]
+struct BeadAndMass {
+    bead: BeadOnRod,
+    mass: FreeMass,
+}
+
+#[test]
+fn models_say_whether_they_prescribe_motion() {
+    // Decided when they compile, from the constraints' parts without velocities.
+    const { assert!(ShakenPendulum::PRESCRIBED && DraggedMass::PRESCRIBED && BeadOnRod::PRESCRIBED) };
+    const { assert!(DiskOnBelt::PRESCRIBED && SliderCrank::PRESCRIBED) };
+    const {
+        assert!(
+            !crate::zoo::Pendulum::PRESCRIBED
+                && !crate::zoo::RollingDisk::PRESCRIBED
+                && !FreeMass::PRESCRIBED
+        )
+    };
+    const {
+        assert!(
+            ShakenPair::PRESCRIBED
+                && ShakenRow::PRESCRIBED
+                && Follower::PRESCRIBED
+                && BeadAndMass::PRESCRIBED
+        )
+    };
+    const { assert!(!Tied::PRESCRIBED && !crate::zoo::Chain::PRESCRIBED && !crate::zoo::Ladder::PRESCRIBED) };
+    // The follower's rate is −x_l, from the position of the left mass.
+    let follower = Follower { left: FreeMass { m: 1.0 }, right: FreeMass { m: 1.0 } };
+    let mut b = VecC::<Follower>::zeros();
+    follower.constraint_rate(0.0, &VecQ::<Follower>::new(0.7, 3.0), &mut b);
+    assert_eq!(b[0], -0.7);
+}

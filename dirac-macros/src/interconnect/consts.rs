@@ -185,8 +185,11 @@ impl CompositeModel {
     /// Const checks, decided once the members' roles are known, that each term of a one-form
     /// is affine in the velocities and that each one-form has a velocity in it: a table over
     /// every assignment of roles to a term's members.
+    ///
+    /// Also `__PRESCRIBED_OWN`: whether some row has a part without velocities, `b ≠ 0`.
     pub fn linearity_checks(&mut self, cx: &Ctxt) -> TokenStream {
         let mut out = TokenStream::new();
+        let mut prescribed = Vec::new();
         for j in 0..self.rows.len() {
             let terms = self.rows[j].terms.clone();
             let name = self.rows[j].name.clone();
@@ -202,6 +205,8 @@ impl CompositeModel {
                     })
                     .collect();
                 if members.is_empty() {
+                    // A term of parameters and time alone: all of it is `b`.
+                    prescribed.push(quote! { true });
                     continue;
                 }
                 if members.len() > 8 {
@@ -227,6 +232,9 @@ impl CompositeModel {
                     CODES[0 #(| #bits)*]
                 }};
                 has_velocity.push(quote! { (#code != 1) });
+                if codes.iter().any(|c| matches!(c, 1 | 2)) {
+                    prescribed.push(quote! { ::core::matches!(#code, 1 | 2) });
+                }
                 if codes.contains(&3) {
                     let what = format!(
                         "interconnection constraint `{name}` must be affine in the velocities, \
@@ -253,6 +261,9 @@ impl CompositeModel {
                 });
             }
         }
+        out.extend(quote! {
+            const __PRESCRIBED_OWN: ::core::primitive::bool = false #(|| #prescribed)*;
+        });
         out
     }
 

@@ -150,6 +150,7 @@ const _: () = {
             },
         ] as &[::core::primitive::bool; 2],
     );
+    const __PRESCRIBED_OWN: ::core::primitive::bool = false;
     const __K: ::core::primitive::usize = __NQ + __NC;
     const __STRUCTURE: (
         [::core::primitive::bool; __K * __K],
@@ -325,6 +326,9 @@ const _: () = {
         const SEPARABLE: ::core::primitive::bool = true
             && <Primitive1 as ::dirac::__private::LagrangeDirac>::SEPARABLE
             && <Primitive2 as ::dirac::__private::LagrangeDirac>::SEPARABLE;
+        const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN
+            || <Primitive1 as ::dirac::__private::LagrangeDirac>::PRESCRIBED
+            || <Primitive2 as ::dirac::__private::LagrangeDirac>::PRESCRIBED;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &__PATTERN,
             unknowns: &__UNKNOWNS,

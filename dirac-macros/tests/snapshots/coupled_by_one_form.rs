@@ -223,6 +223,17 @@ const _: () = {
             "interconnection constraint `tie` has no velocity in it; interconnection constraints are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities"
         )
     };
+    const __PRESCRIBED_OWN: ::core::primitive::bool = false
+        || ::core::matches!(
+            { const CODES : [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8]; CODES[0 |
+            ((__R0.velocity as ::core::primitive::usize) << 0usize) | ((__R1.velocity as
+            ::core::primitive::usize) << 1usize)] }, 1 | 2
+        )
+        || ::core::matches!(
+            { const CODES : [::core::primitive::u8; 4] = [1u8, 2u8, 0u8, 3u8]; CODES[0 |
+            ((__R2.velocity as ::core::primitive::usize) << 0usize) | ((__R3.velocity as
+            ::core::primitive::usize) << 1usize)] }, 1 | 2
+        );
     const __K: ::core::primitive::usize = __NQ + __NC;
     const __STRUCTURE: (
         [::core::primitive::bool; __K * __K],
@@ -424,6 +435,9 @@ const _: () = {
         const SEPARABLE: ::core::primitive::bool = true
             && <Wheel as ::dirac::__private::LagrangeDirac>::SEPARABLE
             && <Cart as ::dirac::__private::LagrangeDirac>::SEPARABLE;
+        const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN
+            || <Wheel as ::dirac::__private::LagrangeDirac>::PRESCRIBED
+            || <Cart as ::dirac::__private::LagrangeDirac>::PRESCRIBED;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &__PATTERN,
             unknowns: &__UNKNOWNS,

@@ -31,6 +31,7 @@ const _: () = {
             <Self as ::dirac::__private::Fixed>::SIZES
         }
         const SEPARABLE: ::core::primitive::bool = false;
+        const PRESCRIBED: ::core::primitive::bool = false;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true],
             unknowns: &[

@@ -161,8 +161,12 @@ pub(crate) fn stage_one_constraints<M: LagrangeDirac>(
     if sizes.nc == 0 {
         return;
     }
-    model.constraint_rate(at.t + 0.5 * at.h, at.qm, rate);
-    out.copy_from_slice(rate.as_slice());
+    if M::PRESCRIBED {
+        model.constraint_rate(at.t + 0.5 * at.h, at.qm, rate);
+        out.copy_from_slice(rate.as_slice());
+    } else {
+        out.fill(0.0);
+    }
     M::Algebra::cq_mul(am, 1.0, v.as_slice(), out);
     model.holonomic(at.t + at.h, at.q1, phi);
     for j in 0..sizes.nh {
@@ -193,7 +197,9 @@ where
             x.target[i] = 0.5 * (x.lv0[i] + x.lv1[i]) + 0.5 * h * (x.lq[i] + x.f[i]);
         }
         model.constraint_matrix(t1, &x.q1, &mut w.blocks.a1);
-        model.constraint_rate(t1, &x.q1, &mut x.rate);
+        if M::PRESCRIBED {
+            model.constraint_rate(t1, &x.q1, &mut x.rate);
+        }
         s.state.v.copy_from(v);
     }
     for _ in 0..s.options.max_iterations {
@@ -208,7 +214,11 @@ where
         for i in 0..n {
             r[i] = x.lv1[i] - x.lv0[i] - x.target[i];
         }
-        r[n..].copy_from_slice(x.rate.as_slice());
+        if M::PRESCRIBED {
+            r[n..].copy_from_slice(x.rate.as_slice());
+        } else {
+            r[n..].fill(0.0);
+        }
         M::Algebra::cq_mul(&b.a1, 1.0, wv.as_slice(), &mut r[n..]);
         model.l_vv(t1, &x.q1, wv, &mut b.lvv1);
         w.saddle.assemble(&SaddleTerms {

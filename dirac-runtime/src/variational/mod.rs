@@ -156,12 +156,14 @@ where
     fn update_multipliers(&mut self, h: f64) {
         let w = &mut self.work;
         let (previous, h_previous) = &mut w.midpoint;
-        // The distance from the earlier point to this midpoint, and on to the step's end.
-        let span = if *h_previous > 0.0 { 0.5 * (*h_previous + h) } else { 0.5 * h };
-        let beyond = 0.5 * h / span;
-        for j in 0..self.sizes.nc {
-            let mu = (w.big_lambda[j] + w.gamma[j]) / h;
-            let before = if *h_previous > 0.0 { previous[j] } else { self.state.lambda[j] };
+        let start = *h_previous == 0.0;
+        // The step's end lies h/2 beyond its midpoint, which lies (h_previous + h)/2 beyond
+        // the midpoint before (h/2 beyond the start after a start or restart).
+        let beyond = if start { 1.0 } else { h / (*h_previous + h) };
+        let inverse_h = 1.0 / h;
+        for j in 0..self.sizes.typed::<M>().nc {
+            let mu = (w.big_lambda[j] + w.gamma[j]) * inverse_h;
+            let before = if start { self.state.lambda[j] } else { previous[j] };
             self.state.lambda[j] = mu + (mu - before) * beyond;
             previous[j] = mu;
         }
@@ -293,7 +295,7 @@ where
         let qm = &mut self.work.vectors.qm;
         set_axpy::<M>(qm, &self.state.q, 0.5 * h, &self.work.v);
         self.work.work -= h * self.model.get().dl_dt(self.t + 0.5 * h, qm, &self.work.v);
-        if self.sizes.nc > 0 {
+        if M::PRESCRIBED {
             self.add_constraint_work(h);
         }
         self.state.q.axpy(h, &self.work.v, 1.0);

@@ -99,10 +99,13 @@ where
         s.state.p.copy_from(&target);
     } else {
         s.model.constraint_matrix(t1, &q1, &mut s.work.blocks.a1);
-        s.model.constraint_rate(t1, &q1, &mut s.work.vectors.rate);
         let a1 = dense::<M>(&s.work.blocks.a1).clone();
         let d = mass.solve_transpose(&a1);
-        let mut gamma = -(&a1 * &w + &s.work.vectors.rate);
+        let mut gamma = -(&a1 * &w);
+        if M::PRESCRIBED {
+            s.model.constraint_rate(t1, &q1, &mut s.work.vectors.rate);
+            gamma -= &s.work.vectors.rate;
+        }
         let small = factor_small(s, &(&a1 * &d))?;
         small.solve(&mut gamma);
         s.work.gamma.copy_from(&gamma);

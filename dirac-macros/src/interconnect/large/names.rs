@@ -188,9 +188,11 @@ impl Large<'_> {
         let (residual, jacobian) = self.own.op_counts();
         let types = self.composite.subsystems.iter().map(|s| &s.ty);
         let subs = types.clone().map(|ty| quote! { .plus(<#ty as #p::LagrangeDirac>::OPERATION_COUNTS) });
-        let separable = types.map(|ty| quote! { <#ty as #p::LagrangeDirac>::SEPARABLE });
+        let separable = types.clone().map(|ty| quote! { <#ty as #p::LagrangeDirac>::SEPARABLE });
+        let prescribed = types.map(|ty| quote! { <#ty as #p::LagrangeDirac>::PRESCRIBED });
         quote! {
             const SEPARABLE: ::core::primitive::bool = true #(&& #separable)*;
+            const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN #(|| #prescribed)*;
             const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
             const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
                 residual: #residual,
