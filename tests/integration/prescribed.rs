@@ -425,6 +425,8 @@ fn shaken_positions(masses: &[f64], x0: &[f64], (a, w): (f64, f64), t: f64) -> V
 fn an_interconnection_may_prescribe_a_relative_velocity() {
     let pair = ShakenPair { left: FreeMass { m: 1.0 }, right: FreeMass { m: 3.0 }, a: 0.2, w: 4.0 };
     assert_eq!(pair.constraint_names(), ["shake"]);
+    let equations = ShakenPair::equations().text;
+    assert!(equations.contains("0 = right.v - left.v - a*w*cos(w*t)"), "{equations}");
     let q = VecQ::<ShakenPair>::from([0.0, 1.0]);
     // From rest, the projection gives the masses the prescribed relative velocity a ω with no
     // momentum: the change that costs the least kinetic energy.
