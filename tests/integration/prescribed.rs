@@ -623,3 +623,28 @@ fn models_say_whether_they_prescribe_motion() {
     follower.constraint_rate(0.0, &VecQ::<Follower>::new(0.7, 3.0), &mut b);
     assert_eq!(b[0], -0.7);
 }
+
+#[test]
+fn a_consistent_state_depends_on_the_start_time() {
+    // The bead put on the rod at t0 = 0.5, where the rod points at ω t0, at rest: the projection
+    // gives it the rod's velocity there, and it slides out as r0 cosh(ω (t − t0)).
+    let bead = BeadOnRod { m: 0.7, w: 1.3 };
+    let (r0, w, t0) = (0.5, bead.w, 0.5);
+    let q = VecQ::<BeadOnRod>::new(r0 * (w * t0).cos(), r0 * (w * t0).sin());
+    let start = consistent_state(&bead, t0, &q, &VecQ::<BeadOnRod>::zeros(), Consistency::default())
+        .expect("consistent");
+    let across = VecQ::<BeadOnRod>::new(-(w * t0).sin(), (w * t0).cos()) * (w * r0);
+    assert!((start.v - across).amax() < 1e-14, "v0 = {:?}", start.v);
+    // Started at t = 0 instead, the same positions are off the rod.
+    let error = consistent_state(&bead, 0.0, &q, &VecQ::<BeadOnRod>::zeros(), Consistency::default())
+        .map(|s| (s.q - q).amax());
+    assert!(matches!(error, Ok(moved) if moved > 0.1), "{error:?}");
+    let mut radau = Radau::new(&bead, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid");
+    let solution = radau.solve(t0, &start, 2.0, &Sampling::Times(vec![1.0, 2.0])).expect("integrates");
+    for (k, &t) in [1.0, 2.0].iter().enumerate() {
+        let (x, y) = (solution.q(BeadOnRod::X)[k], solution.q(BeadOnRod::Y)[k]);
+        let r = r0 * (w * (t - t0)).cosh();
+        assert!((x.hypot(y) - r).abs() < 1e-9 * r, "r({t}) = {} against {r}", x.hypot(y));
+        assert!((y.atan2(x) - w * t).abs() < 1e-9, "on the rod at t = {t}");
+    }
+}
