@@ -46,9 +46,9 @@ pub struct CoordinateDecl {
 /// Whether a constraint is on positions or on velocities.
 #[derive(Clone, Copy, PartialEq, Eq)]
 pub enum ConstraintKind {
-    /// `φ(q) = 0`; its row of `A` is `∂φ/∂q`.
+    /// `φ(q, t) = 0`; its row of `A` is `∂φ/∂q`, its rate `b` is `∂φ/∂t`.
     Holonomic,
-    /// `A(q) v = 0`, possibly nonholonomic.
+    /// `A(q, t) v + b(q, t) = 0`, possibly nonholonomic.
     Velocity,
 }
 

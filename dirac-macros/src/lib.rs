@@ -38,8 +38,9 @@ use syn::{DeriveInput, parse_macro_input};
 ///
 /// - `coordinates(x1 => v1, x2 => v2)`: coordinates and their velocity names (default `v_x`);
 /// - `lagrangian = expr`: the Lagrangian `L(q, v, t)`, possibly degenerate;
-/// - `holonomic(name) = expr`: a position constraint `φ(q) = 0`, name optional;
-/// - `constraint(name) = expr`: a velocity constraint linear in the velocities, `A(q) v = 0`;
+/// - `holonomic(name) = expr`: a position constraint `φ(q, t) = 0`, name optional;
+/// - `constraint(name) = expr`: a velocity constraint affine in the velocities,
+///   `A(q, t) v + b(q, t) = 0`;
 /// - `force(x) = expr`: the external force on coordinate `x`, a function of `q`, `v`, `t`;
 /// - `port(x, ...)`: coordinates through which the model may be interconnected.
 ///

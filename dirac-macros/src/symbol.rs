@@ -10,9 +10,9 @@ pub const PORT: &str = "port";
 pub const PORTS: &str = "ports";
 /// `lagrangian = expr`.
 pub const LAGRANGIAN: &str = "lagrangian";
-/// `constraint = expr` or `constraint(name) = expr`: a velocity constraint `A(q) v = 0`.
+/// `constraint = expr` or `constraint(name) = expr`: a velocity constraint `A(q, t) v + b(q, t) = 0`.
 pub const CONSTRAINT: &str = "constraint";
-/// `holonomic = expr` or `holonomic(name) = expr`: a position constraint `φ(q) = 0`.
+/// `holonomic = expr` or `holonomic(name) = expr`: a position constraint `φ(q, t) = 0`.
 pub const HOLONOMIC: &str = "holonomic";
 /// `force(x) = expr`: the external force on coordinate `x`.
 pub const FORCE: &str = "force";

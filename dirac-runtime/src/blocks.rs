@@ -15,7 +15,8 @@ where
     pub momentum_rate: VecQ<M>,
     /// `∂L/∂v`, the right-hand side of the Legendre map `p = ∂L/∂v`.
     pub dl_dv: VecQ<M>,
-    /// `A(q) v`, zero on the constraint distribution Δ_Q.
+    /// `A(q, t) v + b(q, t)`, zero on the constraint distribution Δ_Q (shifted by the motion
+    /// a constraint prescribes).
     pub constraint_velocity: VecC<M>,
 }
 

@@ -99,8 +99,8 @@ where
 }
 
 /// The algebraic equation that `state` violates the most beyond `tolerance` (relative to the
-/// size of the terms it is made of: `|A| (1 + |q|)` for `φ(q) = 0`, `|A| (1 + |v|)` for
-/// `A(q) v = 0`, `1 + |p| + |∂L/∂v|` for the Legendre map `p = ∂L/∂v`), with its residual.
+/// size of the terms it is made of: `|A| (1 + |q|)` for `φ(q, t) = 0`, `|A| (1 + |v|)` for
+/// `A(q, t) v + b(q, t) = 0`, `1 + |p| + |∂L/∂v|` for the Legendre map `p = ∂L/∂v`), with its residual.
 pub fn violated_equation<M: LagrangeDirac>(
     model: &M,
     t: f64,

@@ -19,7 +19,7 @@ pub trait Dimensions {
     type Nq: Dim;
     /// `m`: the number of constraint rows of `A(q)`, holonomic rows first.
     type Nc: Dim;
-    /// The number of holonomic constraints `φ(q) = 0`; they are the first rows of `A(q)`.
+    /// The number of holonomic constraints `φ(q, t) = 0`; they are the first rows of `A`.
     type Nh: Dim;
     /// `n + m`: the size of the condensed Newton system in `(Δv, Δλ)`.
     type Nk: Dim;
@@ -177,7 +177,7 @@ where
 
 /// A vector of `n` entries: positions, velocities, momenta, forces.
 pub type VecQ<M> = OVector<f64, <M as Dimensions>::Nq>;
-/// A vector of `m` entries: multipliers λ, constraint values `A(q) v`.
+/// A vector of `m` entries: multipliers λ, constraint values `A(q, t) v + b(q, t)`.
 pub type VecC<M> = OVector<f64, <M as Dimensions>::Nc>;
 /// A vector of holonomic constraint values φ(q).
 pub type VecH<M> = OVector<f64, <M as Dimensions>::Nh>;

@@ -27,10 +27,10 @@ use crate::state::State;
 #[derive(Clone, Copy, Debug)]
 pub struct Consistency {
     /// How far positions (velocities) may remain from the constraints, relative to their size
-    /// `1 + |q|` (`1 + |v|`): a residual `φ(q)` (`A(q) v`) is accepted up to this times
+    /// `1 + |q|` (`1 + |v|`): a residual `φ(q, t)` (`A(q, t) v + b`) is accepted up to this times
     /// `|A(q)| (1 + |q|)` (`|A(q)| (1 + |v|)`).
     pub tolerance: f64,
-    /// Gauss-Newton iterations allowed for `φ(q) = 0`.
+    /// Gauss-Newton iterations allowed for `φ(q, t) = 0`.
     pub max_iterations: usize,
 }
 

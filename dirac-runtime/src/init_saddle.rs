@@ -2,7 +2,7 @@
 //! model's own saddle-point solver (sparse for models made of arrays): the same problems as
 //! the dense path in [`init`](crate::init), whose singular value decompositions cost `(n + m)³`.
 //!
-//! 1. `φ(q) = 0` by Gauss-Newton with the minimal-norm correction `Δq = A_hᵀ y`,
+//! 1. `φ(q, t) = 0` by Gauss-Newton with the minimal-norm correction `Δq = A_hᵀ y`,
 //!    `[I A_hᵀ; A_h 0] [Δq; y] = [0; φ]`;
 //! 2. `A(q, t) v + b(q, t) = 0` with the least change in the kinetic-energy norm,
 //!    `[L_vv + εI Aᵀ; A 0] [Δv; y] = [0; −A v]`;
@@ -37,7 +37,7 @@ where
     }
 }
 
-/// Projects `q` onto `φ(q) = 0`.
+/// Projects `q` onto `φ(q, t) = 0`.
 pub(crate) fn project_positions<M: LagrangeDirac>(
     model: &M,
     t: f64,

@@ -194,7 +194,8 @@ where
         &self.columns[self.layout.derived(3)]
     }
 
-    /// The power of the interconnection forces, zero for a lossless interconnection.
+    /// The power of the interconnection forces: zero for a lossless interconnection, `−⟨μ, b⟩`
+    /// for one that prescribes a relative motion.
     pub fn interconnection_power(&self) -> &[f64] {
         &self.columns[self.layout.derived(4)]
     }

@@ -142,7 +142,7 @@ where
     pub l_vv: A::Qq,
     /// The constraint rows `A(q)`.
     pub a: A::Cq,
-    /// `∂(A(q) v)/∂q`.
+    /// `∂(A(q, t) v + b(q, t))/∂q`.
     pub dav_dq: A::Cq,
 }
 

@@ -25,9 +25,9 @@ pub struct RadauOptions {
     pub max_newton_iterations: usize,
     /// Whether to project the state onto the constraints after every accepted step (default
     /// `false`). Radau integrates the equations in their index-2 form, where holonomic
-    /// constraints enter through their velocities `A(q) v = 0`: the positions then drift from
+    /// constraints enter through their velocities `A(q, t) v + b(q, t) = 0`: the positions then drift from
     /// `φ(q, t) = 0` by the accumulated local errors, slowly but without bound. With projection
-    /// the positions are moved back onto `φ(q) = 0` and the velocities onto `A(q) v = 0`, each
+    /// the positions are moved back onto `φ(q, t) = 0` and the velocities onto `A v + b = 0`, each
     /// by the smallest correction, and the momenta follow from the Legendre map.
     pub projection: bool,
     /// How the error estimate's components are combined (default [`ErrorNorm::Rms`]).
