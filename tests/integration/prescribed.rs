@@ -561,6 +561,18 @@ fn bad_prescriptions_end_in_typed_errors() {
         .solve_sampled(0.0, &start, 1.0, 0.25, &Sampling::Steps, &mut jumpy)
         .expect_err("the belt cannot jump");
     assert!(matches!(error, SimError::ConstraintMoved { t, .. } if t == 0.25), "{error}");
+    // The refused change stays in the model, for the caller to undo.
+    assert_eq!(disk.belt, 0.85);
+    disk.belt = 0.6;
+    // And through the model handed out for a change, then a restart, with either integrator.
+    let mut vi = Variational::new(&mut disk, 1e-2, VariationalOptions::default()).expect("valid");
+    vi.start(0.0, &start, 1.0).expect("starts");
+    vi.step().expect("steps");
+    vi.model_mut().expect("exclusive").belt = 0.9;
+    let error = vi.restart_until(1.0).expect_err("the belt cannot jump");
+    assert!(matches!(error, SimError::ConstraintMoved { .. }), "{error}");
+    vi.model_mut().expect("exclusive").belt = 0.6;
+    vi.restart_until(1.0).expect("the belt back at its speed");
 
     // A prescription out of reach: the consistent initialisation says which constraint it
     // cannot meet.

@@ -31,11 +31,11 @@ use self::stages::{Outcome, Stages, Step};
 use self::tableau::{Eigen, eigen};
 use crate::algebra::Algebra;
 use crate::blocks::JacobianBlocks;
-use crate::diagnose::{describe_slot, singular_cause};
+use crate::diagnose::{check_constraints_kept, describe_slot, singular_cause};
 use crate::dims::{Storage, VecY};
 use crate::error::SimError;
 use crate::held::Held;
-use crate::integrator::{Integrator, check_restart, check_start};
+use crate::integrator::{Integrator, check_restart, check_start, constraint_violation};
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 use crate::newton::{Condensed, NewtonSolver, pivot_name};
@@ -86,6 +86,9 @@ where
     /// time: where a restart picks up.
     unclipped: f64,
     stats: RadauStats,
+    /// How far the state was from the constraints when the model was last handed out for a
+    /// change ([`Integrator::model_mut`]); checked against the changed model at the restart.
+    changed_from: Option<f64>,
 }
 
 impl<'m, M: LagrangeDirac> Radau<'m, M>
@@ -155,6 +158,7 @@ where
             factored_h: 0.0,
             unclipped: 0.0,
             stats: RadauStats::default(),
+            changed_from: None,
         })
     }
 
@@ -386,16 +390,23 @@ where
         let span = t_end - t0;
         self.h = self.options.initial_step.unwrap_or(1e-6 * span);
         self.stats = RadauStats::default();
+        self.changed_from = None;
         self.begin(t0, t_end, true)
     }
 
     fn model_mut(&mut self) -> Option<&mut M> {
+        if self.model.get_mut().is_some() {
+            self.changed_from = Some(constraint_violation(self.model.get(), self.t, &self.state));
+        }
         self.model.get_mut()
     }
 
     fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
         if self.t >= t_end {
             return Ok(());
+        }
+        if let Some(before) = self.changed_from.take() {
+            check_constraints_kept(self.model.get(), self.t, &self.state, before)?;
         }
         check_restart(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
         self.h = self.h.max(self.unclipped);

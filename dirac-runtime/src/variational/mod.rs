@@ -40,10 +40,11 @@ use self::separable::{Mass, separable_step};
 use self::work::{Step, Work};
 pub use self::work::{VariationalOptions, VariationalStats};
 use crate::algebra::Algebra;
+use crate::diagnose::check_constraints_kept;
 use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
 use crate::held::Held;
-use crate::integrator::{Integrator, check_restart, check_start};
+use crate::integrator::{Integrator, check_restart, check_start, constraint_violation};
 use crate::model::LagrangeDirac;
 use crate::projection::Projector;
 use crate::state::State;
@@ -77,6 +78,9 @@ where
     projector: RefCell<Projector<M>>,
     sizes: Sizes,
     stats: VariationalStats,
+    /// How far the state was from the constraints when the model was last handed out for a
+    /// change ([`Integrator::model_mut`]); checked against the changed model at the restart.
+    changed_from: Option<f64>,
 }
 
 impl<'m, M: LagrangeDirac> Variational<'m, M>
@@ -115,6 +119,7 @@ where
             projector,
             sizes,
             stats: VariationalStats::default(),
+            changed_from: None,
         })
     }
 }
@@ -251,16 +256,23 @@ where
         self.work.big_lambda.fill(0.0);
         self.work.gamma.fill(0.0);
         self.stats = VariationalStats::default();
+        self.changed_from = None;
         self.begin(t0, t_end)
     }
 
     fn model_mut(&mut self) -> Option<&mut M> {
+        if self.model.get_mut().is_some() {
+            self.changed_from = Some(constraint_violation(self.model.get(), self.t, &self.state));
+        }
         self.model.get_mut()
     }
 
     fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
         if self.t >= t_end {
             return Ok(());
+        }
+        if let Some(before) = self.changed_from.take() {
+            check_constraints_kept(self.model.get(), self.t, &self.state, before)?;
         }
         check_restart(self.model.get(), self.t, &self.state, 1e-8)?;
         self.begin(self.t, t_end)
