@@ -110,42 +110,28 @@ pub fn violated_equation<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let sizes = model.sizes();
-    let mut phi = sizes.zeros_h::<M>();
-    model.holonomic(t, &state.q, &mut phi);
-    let mut a = M::Algebra::zeros_cq(&model.shape());
-    model.constraint_matrix(t, &state.q, &mut a);
-    // Residuals against the size of the terms they are made of: φ / |A| is a distance in q.
-    let size_a = amax(M::Algebra::cq_values(&a));
-    let q_scale = size_a * (1.0 + state.q.amax());
-    if let Some((j, r)) = worst(phi.iter().copied()).filter(|(_, r)| *r > tolerance * q_scale) {
+    let (holonomic, velocity) = constraint_residuals(model, t, state);
+    if let Some((j, r, _)) = holonomic.filter(|w| w.2 > tolerance) {
         return Some((format!("holonomic constraint `{}`", model.constraint_names()[j]), r));
     }
-    let mut av = sizes.zeros_c::<M>();
-    model.constraint_rate(t, &state.q, &mut av);
-    M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
-    let v_scale = size_a * (1.0 + state.v.amax());
-    if let Some((j, r)) = worst(av.iter().copied()).filter(|(_, r)| *r > tolerance * v_scale) {
+    if let Some((j, r, _)) = velocity.filter(|w| w.2 > tolerance) {
         return Some((format!("velocity constraint `{}`", model.constraint_names()[j]), r));
     }
     violated_legendre_map(model, t, state, tolerance)
 }
 
-/// The constraint that `state` violates the most relative to the size of its terms (as in
-/// [`violated_equation`]): its row, its residual and that residual relative to the terms'
-/// size; `None` for a model without constraints. Allocates nothing for a dense model.
-pub(crate) fn worst_constraint<M: LagrangeDirac>(
+/// The largest residual of `φ(q, t) = 0` and of `A(q, t) v + b(q, t) = 0` at `state`, each as
+/// its row, the residual, and the residual relative to the size of the terms it is made of
+/// (`φ / (|A| (1 + |q|))` is a distance in q). Allocates nothing for a dense model.
+fn constraint_residuals<M: LagrangeDirac>(
     model: &M,
     t: f64,
     state: &State<M>,
-) -> Option<(usize, f64, f64)>
+) -> (Option<Worst>, Option<Worst>)
 where
     DefaultAllocator: Storage<M>,
 {
     let sizes = model.sizes();
-    if sizes.nc == 0 {
-        return None;
-    }
     let mut phi = sizes.zeros_h::<M>();
     model.holonomic(t, &state.q, &mut phi);
     let mut a = M::Algebra::zeros_cq(&model.shape());
@@ -155,9 +141,25 @@ where
     let mut av = sizes.zeros_c::<M>();
     model.constraint_rate(t, &state.q, &mut av);
     M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
-    let holonomic = worst(phi.iter().copied()).map(|(j, r)| (j, r, r / q_scale));
-    let velocity = worst(av.iter().copied()).map(|(j, r)| (j, r, r / v_scale));
-    match (holonomic, velocity) {
+    (
+        worst(phi.iter().copied()).map(|(j, r)| (j, r, r / q_scale)),
+        worst(av.iter().copied()).map(|(j, r)| (j, r, r / v_scale)),
+    )
+}
+
+/// A constraint's row, its residual, and the residual relative to its terms' size.
+type Worst = (usize, f64, f64);
+
+/// The constraint that `state` violates the most relative to the size of its terms (as in
+/// [`violated_equation`]); `None` for a model without constraints.
+pub(crate) fn worst_constraint<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Option<Worst>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if model.sizes().nc == 0 {
+        return None;
+    }
+    match constraint_residuals(model, t, state) {
         (Some(h), Some(v)) => Some(if h.2.is_nan() || h.2 >= v.2 { h } else { v }),
         (h, v) => h.or(v),
     }

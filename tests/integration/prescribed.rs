@@ -660,3 +660,39 @@ fn a_consistent_state_depends_on_the_start_time() {
         assert!((y.atan2(x) - w * t).abs() < 1e-9, "on the rod at t = {t}");
     }
 }
+
+#[test]
+fn absurd_rates_of_prescription_end_in_typed_errors() {
+    let q = VecQ::<BeadOnRod>::new(0.5, 0.0);
+    let start = |bead: &BeadOnRod| {
+        consistent_state(bead, 0.0, &q, &VecQ::<BeadOnRod>::zeros(), Consistency::default())
+    };
+    // A NaN rate is named as a parameter.
+    let error = start(&BeadOnRod { m: 1.0, w: f64::NAN }).expect_err("NaN rate");
+    assert!(
+        matches!(&error, SimError::InvalidParameter { .. }) && error.to_string().contains("`w`"),
+        "{error}"
+    );
+    // A rate whose time derivative overflows: named at the start.
+    let error = start(&BeadOnRod { m: 1.0, w: 1e300 }).expect_err("ω² overflows");
+    assert!(
+        matches!(&error, SimError::NonFinite { .. }) && error.to_string().contains("∂(A v + b)/∂t"),
+        "{error}"
+    );
+    // A rod at rest is no prescription: the bead stays where it is.
+    let still = BeadOnRod { m: 1.0, w: 0.0 };
+    let s = start(&still).expect("consistent");
+    let mut radau = Radau::new(&still, RadauOptions::tolerances(1e-8, 1e-8)).expect("valid");
+    let solution = radau.solve(0.0, &s, 1.0, &Sampling::Steps).expect("integrates");
+    assert!(solution.q(BeadOnRod::X).iter().all(|x| (x - 0.5).abs() < 1e-12));
+    // A rod turned at 10¹² rad/s: a typed failure of either integrator at the start, not a hang
+    // or a result.
+    let fast = BeadOnRod { m: 1.0, w: 1e12 };
+    let s = start(&fast).expect("consistent at t = 0");
+    let mut radau = Radau::new(&fast, RadauOptions::tolerances(1e-8, 1e-8)).expect("valid");
+    let error = radau.solve(0.0, &s, 1.0, &Sampling::Steps).expect_err("too fast to follow");
+    assert!(matches!(error, SimError::NewtonDiverged { .. } | SimError::StepSizeTooSmall { .. }), "{error}");
+    let mut vi = Variational::new(&fast, 1e-3, VariationalOptions::default()).expect("valid");
+    let error = vi.solve(0.0, &s, 1.0, &Sampling::Steps).expect_err("too fast for the step");
+    assert!(matches!(error, SimError::NewtonDiverged { .. } | SimError::Unstable { .. }), "{error}");
+}
