@@ -54,11 +54,12 @@ extern crate self as dirac;
 
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Algebra, Consistency, Constraint, Coordinate, Dense, DenseModel, Dimensions, DiracStructure, Equations,
-    ErrorNorm, Fixed, Held, Input, Integrator, JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ,
-    MatKK, MatQQ, MatYY, Membership, Named, Names, OperationCounts, Output, Radau, RadauOptions, RadauStats,
-    ResidualBlocks, Sampling, SimError, Sizes, Slot, Solution, SparseJacobian, State, Storage, Variational,
-    VariationalOptions, VariationalStats, VecC, VecH, VecK, VecQ, VecY, consistent_state, linearize,
+    Algebra, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel, Dimensions, DiracStructure,
+    Equations, ErrorNorm, Event, EventContext, Events, Fixed, Held, Input, Integrator, JacobianBlocks,
+    LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ, MatYY, Membership, Named, Names,
+    OperationCounts, Output, Radau, RadauOptions, RadauStats, ResidualBlocks, Sampling, SimError, Sizes,
+    Slot, Solution, SolveWithEvents, SparseJacobian, State, Storage, Variational, VariationalOptions,
+    VariationalStats, VecC, VecH, VecK, VecQ, VecY, consistent_state, linearize,
 };
 
 /// The linear-algebra crate dirac is built on, re-exported so that generic code over models
@@ -108,11 +109,11 @@ pub use dirac_runtime::sources;
 pub mod prelude {
     pub use crate::nalgebra::DefaultAllocator;
     pub use crate::{
-        Algebra, Consistency, Constraint, Coordinate, DenseModel, Dimensions, DiracStructure, Equations,
-        ErrorNorm, Fixed, Input, Integrator, Interconnection, JacobianBlocks, LagrangeDirac, Linearization,
-        MatCQ, MatQQ, MatYY, Named, Output, Radau, RadauOptions, ResidualBlocks, Sampling, SimError, Sizes,
-        Solution, SparseJacobian, State, Storage, Variational, VariationalOptions, VecC, VecH, VecQ, VecY,
-        consistent_state, linearize,
+        Algebra, Consistency, Constraint, Coordinate, Crossing, DenseModel, Dimensions, DiracStructure,
+        Equations, ErrorNorm, Event, Events, Fixed, Input, Integrator, Interconnection, JacobianBlocks,
+        LagrangeDirac, Linearization, MatCQ, MatQQ, MatYY, Named, Output, Radau, RadauOptions,
+        ResidualBlocks, Sampling, SimError, Sizes, Solution, SolveWithEvents, SparseJacobian, State, Storage,
+        Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state, linearize,
     };
 }
 

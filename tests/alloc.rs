@@ -286,3 +286,43 @@ fn steps_with_prescribed_motion_do_not_allocate() {
         "variational, shaken row of 50"
     );
 }
+
+/// Steps `integrator` from `start` and locates the crossings of `x = 0` and `v = 0` after each
+/// step (every kind: several per period), returning the allocations after set-up and the
+/// number of events located.
+fn allocations_locating_events<I: Integrator<Oscillator>>(
+    mut integrator: I,
+    start: &State<Oscillator>,
+) -> (usize, usize) {
+    let mut events = dirac::Events::new()
+        .on("x", dirac::Crossing::Either, |_, s: &State<Oscillator>, _| s.q(Oscillator::X))
+        .on("v", dirac::Crossing::Falling, |_, s: &State<Oscillator>, _| s.v(Oscillator::X));
+    integrator.start(0.0, start, 40.0).expect("starts");
+    events.begin(integrator.model(), 0.0, start).expect("begins");
+    let before = allocations();
+    let mut located = 0;
+    while !integrator.finished() {
+        integrator.step().expect("steps");
+        while let Some(event) = events.locate(&integrator).expect("locates") {
+            located += 1;
+            assert!(event.t <= integrator.t());
+        }
+    }
+    (allocations() - before, located)
+}
+
+#[test]
+fn locating_events_does_not_allocate() {
+    let model = Oscillator { m: 1.0, k: 1.0 };
+    let mut start = State::<Oscillator>::zeros();
+    start.set_q(Oscillator::X, 1.0);
+    let radau = Radau::new(&model, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let (allocations, located) = allocations_locating_events(radau, &start);
+    assert_eq!(allocations, 0, "Radau with events");
+    // x = cos t over 40: 13 zeros of x, 6 falling zeros of v (at t = 2kπ, k ≥ 1).
+    assert_eq!(located, 13 + 6);
+    let variational = Variational::new(&model, 1e-2, VariationalOptions::default()).expect("valid step");
+    let (allocations, located) = allocations_locating_events(variational, &start);
+    assert_eq!(allocations, 0, "variational with events");
+    assert_eq!(located, 13 + 6);
+}

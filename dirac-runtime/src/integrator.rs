@@ -122,6 +122,11 @@ where
     /// needed) and returns its size.
     fn step(&mut self) -> Result<f64, SimError>;
 
+    /// Moves back to time `t` within the last step (or its end), to `state`, and restarts there
+    /// towards the end time, as [`Integrator::restart_until`] does: what an event whose action
+    /// reset the state or changed the model needs. The state must be consistent at `t`.
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError>;
+
     /// Whether the end time has been reached.
     fn finished(&self) -> bool;
 
@@ -203,6 +208,16 @@ where
         Some((equation, residual)) => Err(SimError::StateNotConsistent { t: t0, equation, residual }),
         None => Ok(()),
     }
+}
+
+/// A time a restart may move back to: within the last step, from `start` to `end`.
+pub(crate) fn check_within_last_step(t: f64, start: f64, end: f64) -> Result<(), SimError> {
+    if t >= start && t <= end {
+        return Ok(());
+    }
+    Err(SimError::InvalidTimeSpan {
+        reason: format!("a restart at {t} must lie within the last step, from {start} to {end}"),
+    })
 }
 
 /// The most sample intervals [`Integrator::solve_sampled`] takes on: a period this short

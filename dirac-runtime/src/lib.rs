@@ -23,6 +23,7 @@ pub mod dirac_structure;
 pub mod ensemble;
 /// The typed errors of a simulation.
 pub mod error;
+pub mod events;
 /// The flat DAE assembled from a model's blocks.
 pub mod flat;
 /// How an integrator holds its model: shared, or exclusive to change it while it runs.
@@ -71,6 +72,7 @@ pub use blocks::{JacobianBlocks, ResidualBlocks};
 pub use dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use dirac_structure::{DiracStructure, Membership};
 pub use error::SimError;
+pub use events::{EventContext, Events, SolveWithEvents};
 pub use held::Held;
 pub use init::{Consistency, consistent_state};
 pub use integrator::Integrator;
@@ -80,7 +82,7 @@ pub use linear::{Linearization, linearize};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
 pub use radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
-pub use solution::{Sampling, Solution};
+pub use solution::{Crossing, Event, Sampling, Solution};
 pub use sparse::SparseJacobian;
 pub use state::State;
 pub use structure::Structure;

@@ -8,7 +8,7 @@ use crate::dims::{Storage, VecC, VecH, VecQ};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
 use crate::model::MatCQ;
-use crate::solution::{Columns, Sampling, Solution};
+use crate::solution::{Columns, Event, Sampling, Solution};
 use crate::state::State;
 
 /// Records samples during an integration.
@@ -25,6 +25,9 @@ where
     /// The time of the last sample recorded.
     last: f64,
     buffer: State<M>,
+    /// The events located, and the names of the event functions.
+    events: Vec<Event>,
+    event_names: Vec<String>,
 }
 
 /// The most values (samples times series) a solution records: 2^27, 1 GiB of `f64`.
@@ -87,7 +90,18 @@ where
         };
         let table = Table { layout, columns, scratch, non_finite_output: None };
         let buffer = State::with_sizes(sizes);
-        Ok(Recorder { table, names, sampling: sampling.clone(), next: 0, t0, t_end, last: f64::NAN, buffer })
+        Ok(Recorder {
+            table,
+            names,
+            sampling: sampling.clone(),
+            next: 0,
+            t0,
+            t_end,
+            last: f64::NAN,
+            buffer,
+            events: Vec::new(),
+            event_names: Vec::new(),
+        })
     }
 
     /// Records the initial state if the sampling asks for it.
@@ -152,6 +166,29 @@ where
         }
     }
 
+    /// Names the event functions whose events the solution records.
+    pub fn name_events(&mut self, names: &[String]) {
+        self.event_names = names.to_vec();
+    }
+
+    /// Records an event, and the state at it unless the sampling is at chosen times (or is
+    /// [`Sampling::Steps`], whose [`Recorder::record_step`] up to the event recorded it).
+    pub fn record_event(&mut self, model: &M, event: Event, state: &State<M>) {
+        self.events.push(event);
+        if let Sampling::Every(_) = self.sampling {
+            self.table.push(model, event.t, state);
+            self.last = event.t;
+        }
+    }
+
+    /// Records the state an event's action reset, unless the sampling is at chosen times.
+    pub fn record_reset(&mut self, model: &M, t: f64, state: &State<M>) {
+        if !matches!(self.sampling, Sampling::Times(_)) {
+            self.table.push(model, t, state);
+            self.last = t;
+        }
+    }
+
     /// The finished solution, with the integrator's statistics; an error naming the first
     /// output that was not finite, where it was not.
     pub fn finish<S>(self, stats: S) -> Result<Solution<M, S>, SimError> {
@@ -162,7 +199,9 @@ where
             let component = format!("the output `{name}`");
             return Err(SimError::NonFinite { t, component });
         }
-        Ok(Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats))
+        let solution =
+            Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats);
+        Ok(solution.with_events(self.events, self.event_names))
     }
 }
 

@@ -24,6 +24,40 @@ pub enum Sampling {
     Times(Vec<f64>),
 }
 
+/// Which sign changes of an event function count as the event.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Crossing {
+    /// From negative to positive.
+    Rising,
+    /// From positive to negative.
+    Falling,
+    /// Either way.
+    Either,
+}
+
+impl Crossing {
+    /// Whether a crossing in the direction `rising` counts.
+    pub(crate) fn counts(self, rising: bool) -> bool {
+        match self {
+            Crossing::Rising => rising,
+            Crossing::Falling => !rising,
+            Crossing::Either => true,
+        }
+    }
+}
+
+/// An event located in an integration: which function crossed zero, when, and which way.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Event {
+    /// The event function's index in its [`Events`](crate::Events), in the order they were added.
+    pub index: usize,
+    /// The time of the crossing, to round-off: the first time at which the function's value is
+    /// zero or has its new sign.
+    pub t: f64,
+    /// [`Crossing::Rising`] or [`Crossing::Falling`]: the way it crossed.
+    pub crossing: Crossing,
+}
+
 /// Where each series of a solution sits: `t`, the state's slots in the order of [`Layout`],
 /// the derived quantities, the effort at each port, then the model's outputs.
 pub(crate) struct Columns {
@@ -100,6 +134,8 @@ where
     sizes: Sizes,
     /// The work the integrator did.
     pub stats: S,
+    events: Vec<Event>,
+    event_names: Vec<String>,
     model: PhantomData<fn() -> M>,
 }
 
@@ -114,6 +150,7 @@ where
             .field("samples", &self.len())
             .field("span", &span)
             .field("names", &self.names)
+            .field("events", &self.events.len())
             .field("stats", &self.stats)
             .finish()
     }
@@ -131,7 +168,41 @@ where
         sizes: Sizes,
         stats: S,
     ) -> Self {
-        Solution { layout, names, columns, sizes, stats, model: PhantomData }
+        Solution {
+            layout,
+            names,
+            columns,
+            sizes,
+            stats,
+            events: Vec::new(),
+            event_names: Vec::new(),
+            model: PhantomData,
+        }
+    }
+
+    /// This solution with the events located during it, and the names of the event functions.
+    pub(crate) fn with_events(mut self, events: Vec<Event>, names: Vec<String>) -> Self {
+        self.events = events;
+        self.event_names = names;
+        self
+    }
+
+    /// The events located, in time order ([`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events)).
+    pub fn events(&self) -> &[Event] {
+        &self.events
+    }
+
+    /// The name of `event`'s function.
+    pub fn event_name(&self, event: &Event) -> &str {
+        &self.event_names[event.index]
+    }
+
+    /// The times of the events called `name`, in order (empty for a name without events).
+    pub fn event_times(&self, name: &str) -> Vec<f64> {
+        let Some(index) = self.event_names.iter().position(|n| n == name) else {
+            return Vec::new();
+        };
+        self.events.iter().filter(|e| e.index == index).map(|e| e.t).collect()
     }
 
     /// The number of samples.

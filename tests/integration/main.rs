@@ -6,6 +6,7 @@ mod zoo;
 mod authoring;
 mod blocks;
 mod counters;
+mod events;
 mod fuzz;
 mod hand_derivations;
 mod hygiene;

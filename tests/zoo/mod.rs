@@ -645,3 +645,21 @@ pub fn pulse(n: usize) -> Vec<f64> {
     let (centre, width) = (n as f64 / 3.0, 5.0);
     (1..=n).map(|j| (-((j as f64 - centre) / width).powi(2)).exp()).collect()
 }
+
+/// A ball moving vertically under gravity `g`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+pub struct Ball {
+    pub m: f64,
+    pub g: f64,
+}
+
+/// An undamped oscillator, `x = x0 cos(√(k/m) t)`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+pub struct Oscillator {
+    pub m: f64,
+    pub k: f64,
+}

@@ -35,7 +35,9 @@ use crate::diagnose::{check_constraints_kept, describe_slot, singular_cause};
 use crate::dims::{Storage, VecY};
 use crate::error::SimError;
 use crate::held::Held;
-use crate::integrator::{Integrator, check_restart, check_start, constraint_violation};
+use crate::integrator::{
+    Integrator, check_restart, check_start, check_within_last_step, constraint_violation,
+};
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 use crate::newton::{Condensed, NewtonSolver, pivot_name};
@@ -411,6 +413,22 @@ where
         check_restart(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
         self.h = self.h.max(self.unclipped);
         self.begin(self.t, t_end, false)
+    }
+
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        check_within_last_step(t, self.t - self.dense.h, self.t)?;
+        check_start(self.model.get(), t, state, self.t_end.max(t + 1.0), self.options.rtol.max(1e-8))?;
+        self.changed_from = None;
+        state.write_y(&mut self.y);
+        self.state.clone_from(state);
+        // The state may have jumped (an impact): start again with a short step, which grows by
+        // up to 8× a step, so that the steps after the event see an event function leave zero
+        // (a ball leaving the floor) before one of them could span its return.
+        if self.dense.h > 0.0 {
+            self.h = 1e-3 * self.dense.h;
+        }
+        self.dense.h = 0.0;
+        self.begin(t, self.t_end, false)
     }
 
     fn end(&self) -> f64 {

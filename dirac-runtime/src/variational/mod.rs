@@ -44,7 +44,9 @@ use crate::diagnose::check_constraints_kept;
 use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
 use crate::held::Held;
-use crate::integrator::{Integrator, check_restart, check_start, constraint_violation};
+use crate::integrator::{
+    Integrator, check_restart, check_start, check_within_last_step, constraint_violation,
+};
 use crate::model::LagrangeDirac;
 use crate::projection::Projector;
 use crate::state::State;
@@ -276,6 +278,22 @@ where
         }
         check_restart(self.model.get(), self.t, &self.state, 1e-8)?;
         self.begin(self.t, t_end)
+    }
+
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        let t_previous = if self.taken == 0 { self.t0 } else { self.time_after(self.taken - 1) };
+        check_within_last_step(t, t_previous, self.t)?;
+        check_start(self.model.get(), t, state, self.t_end.max(t + 1.0), 1e-8)?;
+        self.changed_from = None;
+        self.state.clone_from(state);
+        self.work.big_lambda.fill(0.0);
+        self.work.gamma.fill(0.0);
+        if t >= self.t_end {
+            // At the end time: nothing is left to step.
+            (self.t, self.t0, self.taken, self.total) = (t, t, 0, 0);
+            return Ok(());
+        }
+        self.begin(t, self.t_end)
     }
 
     fn end(&self) -> f64 {

@@ -1,0 +1,453 @@
+//! Events: named functions `g(t, state, model)` whose sign changes an integration locates
+//! between steps, on the integrator's dense output, to round-off in `t`.
+//!
+//! [`Events`] holds the functions and locates their crossings after each step
+//! ([`Events::locate`], which allocates nothing); [`SolveWithEvents::solve_with_events`] runs a whole
+//! integration with them, hands each event to the user's action in time order, and restarts
+//! from a consistent state when the action reset the state or changed the model.
+//!
+//! A crossing is a change of sign between two points the locator examined: the ends of steps,
+//! and the events located. A function that touches zero without changing sign, or changes
+//! sign twice within one step, is not seen; a smaller `max_step` resolves fast ones.
+
+use std::ops::ControlFlow;
+
+use nalgebra::DefaultAllocator;
+
+use crate::diagnose::check_constraints_kept;
+use crate::dims::{Sizes, Storage};
+use crate::error::SimError;
+use crate::init::{Consistency, consistent_state};
+use crate::integrator::{Integrator, constraint_violation};
+use crate::model::LagrangeDirac;
+use crate::recorder::Recorder;
+use crate::solution::{Crossing, Event, Sampling, Solution};
+use crate::state::State;
+
+/// An event function: `g(t, state, model)`.
+type EventFunction<'e, M> = Box<dyn FnMut(f64, &State<M>, &M) -> f64 + 'e>;
+
+/// The most iterations of the root finder for one crossing; the bracket halves at least every
+/// fourth, so 4 × 64 covers the width of any `f64` interval.
+const MAX_ITERATIONS: usize = 256;
+
+/// A set of named event functions, and the locator of their crossings.
+///
+/// The facade's guide (`dirac::guide`, section "Events") has a runnable example: a ball that
+/// bounces on the floor.
+pub struct Events<'e, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    names: Vec<String>,
+    crossings: Vec<Crossing>,
+    functions: Vec<EventFunction<'e, M>>,
+    /// The last point examined: its time and the functions' values there.
+    t_lo: f64,
+    lo: Vec<f64>,
+    /// The sign each function had last when it was not zero (0 before it was ever nonzero).
+    signs: Vec<f64>,
+    /// The values at the end of the step being searched, and whether they are current.
+    t_hi: f64,
+    hi: Vec<f64>,
+    hi_current: bool,
+    /// Events that crossed at `t_lo` together with the one reported there.
+    pending: Vec<bool>,
+    /// The state at the last event located.
+    at_event: State<M>,
+    /// The state at the root finder's trial points.
+    probe: State<M>,
+    evaluations: usize,
+}
+
+impl<M: LagrangeDirac> Default for Events<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<'e, M: LagrangeDirac> Events<'e, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// No events yet.
+    pub fn new() -> Self {
+        Events {
+            names: Vec::new(),
+            crossings: Vec::new(),
+            functions: Vec::new(),
+            t_lo: f64::NAN,
+            lo: Vec::new(),
+            signs: Vec::new(),
+            t_hi: f64::NAN,
+            hi: Vec::new(),
+            hi_current: false,
+            pending: Vec::new(),
+            at_event: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
+            probe: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
+            evaluations: 0,
+        }
+    }
+
+    /// Adds the event `name`: the crossings of zero by `g(t, state, model)` in the direction
+    /// `crossing`. Its index is the number of events added before it.
+    pub fn on(
+        mut self,
+        name: impl Into<String>,
+        crossing: Crossing,
+        g: impl FnMut(f64, &State<M>, &M) -> f64 + 'e,
+    ) -> Self {
+        self.names.push(name.into());
+        self.crossings.push(crossing);
+        self.functions.push(Box::new(g));
+        self
+    }
+
+    /// The events' names, in the order of their indices.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The name of `event`.
+    pub fn name(&self, event: &Event) -> &str {
+        &self.names[event.index]
+    }
+
+    /// The index of the event called `name`.
+    pub fn index(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
+    }
+
+    /// The number of evaluations of event functions since the last [`Events::begin`].
+    pub fn evaluations(&self) -> usize {
+        self.evaluations
+    }
+
+    /// The state at the last event [`Events::locate`] returned.
+    pub fn state(&self) -> &State<M> {
+        &self.at_event
+    }
+
+    /// Starts watching from `state` at `t`: the functions' signs there are the ones a crossing
+    /// changes (a function that is zero there takes the sign it first has after). Allocates
+    /// the locator's storage; call it before the first step.
+    pub fn begin(&mut self, model: &M, t: f64, state: &State<M>) -> Result<(), SimError> {
+        let n = self.functions.len();
+        for v in [&mut self.lo, &mut self.hi, &mut self.signs] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        self.pending.clear();
+        self.pending.resize(n, false);
+        self.at_event = state.clone();
+        self.probe = state.clone();
+        self.evaluations = 0;
+        self.resume(model, t, state)?;
+        Ok(())
+    }
+
+    /// Watches on from `state` at `t` after a restart there (an action that reset the state or
+    /// changed the model): the functions are evaluated anew; one that is zero keeps the sign it
+    /// had last, so that an event whose action leaves the function at zero (a ball put back on
+    /// the floor) does not fire again before the function moves away from zero.
+    pub fn resume(&mut self, model: &M, t: f64, state: &State<M>) -> Result<(), SimError> {
+        self.t_lo = t;
+        for k in 0..self.functions.len() {
+            let g = self.evaluate(k, t, state, model)?;
+            self.lo[k] = g;
+            if g != 0.0 {
+                self.signs[k] = g.signum();
+            }
+            self.pending[k] = false;
+        }
+        self.hi_current = false;
+        Ok(())
+    }
+
+    fn evaluate(&mut self, k: usize, t: f64, state: &State<M>, model: &M) -> Result<f64, SimError> {
+        self.evaluations += 1;
+        let g = (self.functions[k])(t, state, model);
+        if g.is_nan() {
+            return Err(SimError::NonFinite {
+                t,
+                component: format!("the event function `{}`", self.names[k]),
+            });
+        }
+        Ok(g)
+    }
+
+    /// The next event within the step the integrator just took, in time order: `None` once
+    /// the step holds no more. The state at the event is then [`Events::state`]. Call it
+    /// after each step until it returns `None`, handling each event as it comes; after a
+    /// restart within the step (at an event), call [`Events::resume`]. Allocates nothing.
+    pub fn locate<I: Integrator<M>>(&mut self, integrator: &I) -> Result<Option<Event>, SimError> {
+        if let Some(k) = self.pending.iter().position(|&p| p) {
+            self.pending[k] = false;
+            return Ok(Some(self.crossed(k, self.t_lo)));
+        }
+        let t = integrator.t();
+        let model = integrator.model();
+        if !self.hi_current || self.t_hi != t {
+            for k in 0..self.functions.len() {
+                self.hi[k] = self.evaluate(k, t, integrator.state(), model)?;
+            }
+            self.t_hi = t;
+            self.hi_current = true;
+        }
+        // The earliest crossing that counts.
+        let mut first: Option<(usize, f64)> = None;
+        for k in 0..self.functions.len() {
+            let (g, sign) = (self.hi[k], self.signs[k]);
+            if g == 0.0 || g.signum() == sign || sign == 0.0 {
+                continue;
+            }
+            if !self.crossings[k].counts(g > 0.0) {
+                continue;
+            }
+            let root = self.root(k, integrator)?;
+            if first.is_none_or(|(_, t_first)| root < t_first) {
+                first = Some((k, root));
+            }
+        }
+        let Some((k, t_event)) = first else {
+            // No event in the rest of the step: its end is the next search's start.
+            self.t_lo = t;
+            for k in 0..self.functions.len() {
+                self.lo[k] = self.hi[k];
+                if self.hi[k] != 0.0 {
+                    self.signs[k] = self.hi[k].signum();
+                }
+            }
+            return Ok(None);
+        };
+        if t_event >= t {
+            self.at_event.clone_from(integrator.state());
+        } else {
+            integrator.interpolate(t_event, &mut self.at_event);
+        }
+        // The search goes on from the event; functions that changed sign by then crossed at
+        // the same time (within the root finder's resolution), or do not count.
+        self.t_lo = t_event;
+        let event = self.crossed(k, t_event);
+        for j in 0..self.functions.len() {
+            self.evaluations += 1;
+            let g = (self.functions[j])(t_event, &self.at_event, model);
+            if g.is_nan() {
+                let component = format!("the event function `{}`", self.names[j]);
+                return Err(SimError::NonFinite { t: t_event, component });
+            }
+            self.lo[j] = g;
+            if j == k || g == 0.0 || g.signum() == self.signs[j] || self.signs[j] == 0.0 {
+                continue;
+            }
+            if self.crossings[j].counts(g > 0.0) {
+                self.pending[j] = true;
+            } else {
+                self.signs[j] = g.signum();
+            }
+        }
+        Ok(Some(event))
+    }
+
+    /// Records that function `k` crossed at `t`: its sign flips.
+    fn crossed(&mut self, k: usize, t: f64) -> Event {
+        self.signs[k] = -self.signs[k];
+        let crossing = if self.signs[k] > 0.0 { Crossing::Rising } else { Crossing::Falling };
+        Event { index: k, t, crossing }
+    }
+
+    /// The root of function `k` between the last point examined and the step's end, by the
+    /// Illinois variant of regula falsi on the dense output, safeguarded by bisection: the
+    /// first time (to round-off) at which the function is zero or has its new sign.
+    fn root<I: Integrator<M>>(&mut self, k: usize, integrator: &I) -> Result<f64, SimError> {
+        let (mut a, mut fa, mut b, mut fb) = (self.t_lo, self.lo[k], self.t_hi, self.hi[k]);
+        if fa == 0.0 || fa.signum() != self.signs[k] {
+            // The function already had its new sign (or was zero) where the search starts.
+            return Ok(a);
+        }
+        let model = integrator.model();
+        let mut side = 0;
+        let mut width = b - a;
+        for iteration in 0..MAX_ITERATIONS {
+            let resolution = 4.0 * f64::EPSILON * a.abs().max(b.abs());
+            if b - a <= resolution {
+                break;
+            }
+            let mid = 0.5 * (a + b);
+            let mut c =
+                if iteration % 4 == 3 && b - a > 0.5 * width { mid } else { b - fb * (b - a) / (fb - fa) };
+            if iteration % 4 == 3 {
+                width = b - a;
+            }
+            if !(c > a && c < b) {
+                c = mid;
+                if !(c > a && c < b) {
+                    break;
+                }
+            }
+            integrator.interpolate(c, &mut self.probe);
+            self.evaluations += 1;
+            let fc = (self.functions[k])(c, &self.probe, model);
+            if fc.is_nan() {
+                return Err(SimError::NonFinite {
+                    t: c,
+                    component: format!("the event function `{}`", self.names[k]),
+                });
+            }
+            if fc == 0.0 {
+                return Ok(c);
+            }
+            if fc.signum() == fb.signum() {
+                (b, fb) = (c, fc);
+                if side == -1 {
+                    fa *= 0.5;
+                }
+                side = -1;
+            } else {
+                (a, fa) = (c, fc);
+                if side == 1 {
+                    fb *= 0.5;
+                }
+                side = 1;
+            }
+        }
+        Ok(b)
+    }
+}
+
+/// What an event's action may do: read the event's time and state, reset the state, change
+/// the model (if the integrator holds it exclusively).
+pub struct EventContext<'a, M: LagrangeDirac, I>
+where
+    DefaultAllocator: Storage<M>,
+{
+    t: f64,
+    state: &'a mut State<M>,
+    integrator: &'a mut I,
+    reset: bool,
+    /// How far the state was from the constraints before the model was first handed out.
+    before: Option<f64>,
+}
+
+impl<'a, M: LagrangeDirac, I: Integrator<M>> EventContext<'a, M, I>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub(crate) fn new(t: f64, state: &'a mut State<M>, integrator: &'a mut I) -> Self {
+        EventContext { t, state, integrator, reset: false, before: None }
+    }
+
+    /// The event's time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The state at the event.
+    pub fn state(&self) -> &State<M> {
+        self.state
+    }
+
+    /// The state at the event, to reset: the integration restarts from the consistent state
+    /// nearest to the positions and velocities left here (see
+    /// [`consistent_state`](crate::consistent_state): momenta and multipliers are computed,
+    /// not read).
+    pub fn state_mut(&mut self) -> &mut State<M> {
+        self.reset = true;
+        self.state
+    }
+
+    /// The model.
+    pub fn model(&self) -> &M {
+        self.integrator.model()
+    }
+
+    /// The model, to change (its inputs, its parameters): the integration restarts at the
+    /// event. A change that moves a constraint off the state is refused with
+    /// [`SimError::ConstraintMoved`] unless the state is reset too.
+    pub fn model_mut(&mut self) -> Result<&mut M, SimError> {
+        if self.before.is_none() {
+            self.before = Some(constraint_violation(self.integrator.model(), self.t, self.state));
+        }
+        let t = self.t;
+        self.integrator.model_mut().ok_or(SimError::SharedModel { t })
+    }
+
+    /// Whether the action reset the state or changed the model.
+    pub(crate) fn changes(&self) -> (bool, Option<f64>) {
+        (self.reset, self.before)
+    }
+}
+
+/// Running an integration with events: implemented for every [`Integrator`] (and in the
+/// facade's prelude).
+pub trait SolveWithEvents<M: LagrangeDirac>: Integrator<M> + Sized
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// [`Integrator::solve`](crate::Integrator::solve) with events: after each step, the crossings of the `events`'
+    /// functions within it are located on the dense output and handed to `action` in time
+    /// order, with an [`EventContext`] to read the state at the event, reset it
+    /// ([`EventContext::state_mut`]) or change the model ([`EventContext::model_mut`]).
+    ///
+    /// - An action that changes nothing costs no restart: the search goes on within the step.
+    /// - After a reset or a change, the integration restarts at the event from the consistent
+    ///   state nearest to the one the action left ([`consistent_state`](crate::consistent_state)).
+    /// - `ControlFlow::Break(())` ends the integration at the event.
+    ///
+    /// The solution records every event ([`Solution::events`](crate::Solution::events)) and, unless it samples at
+    /// chosen times, the state at each event, twice when the action reset it (before, then
+    /// after). The [`Events`] type has an example.
+    fn solve_with_events(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        sampling: &Sampling,
+        events: &mut Events<'_, M>,
+        mut action: impl FnMut(&Event, &mut EventContext<'_, M, Self>) -> ControlFlow<()>,
+    ) -> Result<Solution<M, Self::Stats>, SimError> {
+        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
+        recorder.name_events(events.names());
+        self.start(t0, state, t_end)?;
+        events.begin(self.model(), t0, self.state())?;
+        recorder.record_initial(self.model(), t0, self.state());
+        let mut after = state.clone();
+        while !self.finished() {
+            self.step()?;
+            let mut restarted = false;
+            while let Some(event) = events.locate(self)? {
+                let t = event.t;
+                recorder.record_step(self.model(), t, events.state(), |ts, out| self.interpolate(ts, out));
+                recorder.record_event(self.model(), event, events.state());
+                after.clone_from(events.state());
+                let mut context = EventContext::new(t, &mut after, self);
+                let flow = action(&event, &mut context);
+                let (reset, before) = context.changes();
+                if flow.is_break() {
+                    return recorder.finish(self.stats());
+                }
+                if reset || before.is_some() {
+                    if let (false, Some(before)) = (reset, before) {
+                        check_constraints_kept(self.model(), t, &after, before)?;
+                    }
+                    let consistent =
+                        consistent_state(self.model(), t, &after.q, &after.v, Consistency::default())?;
+                    self.restart_at(t, &consistent)?;
+                    events.resume(self.model(), t, &consistent)?;
+                    recorder.record_reset(self.model(), t, &consistent);
+                    restarted = true;
+                    break;
+                }
+            }
+            if !restarted {
+                recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
+            }
+        }
+        recorder.finish(self.stats())
+    }
+}
+
+impl<M: LagrangeDirac, I: Integrator<M>> SolveWithEvents<M> for I where DefaultAllocator: Storage<M> {}

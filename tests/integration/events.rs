@@ -1,0 +1,419 @@
+//! Events located on the dense output: their times against closed forms, their order within a
+//! step, directions, and the actions (go on, stop, reset the state, change the model).
+//! Every reference is a closed form computed here: free fall, the harmonic oscillator, the
+//! pendulum's quarter period by the complete elliptic integral (computed by the
+//! arithmetic-geometric mean), rolling on a straight line.
+
+use std::f64::consts::PI;
+use std::ops::ControlFlow;
+
+use dirac::prelude::*;
+use dirac::{Crossing, Events};
+
+use crate::zoo::{Ball, Oscillator, Pendulum, RollingDisk};
+
+const G: f64 = 9.81;
+
+/// A ball at rest at height `h`.
+fn dropped(h: f64) -> State<Ball> {
+    let mut start = State::<Ball>::zeros();
+    start.set_q(Ball::Y, h);
+    start
+}
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// A ball dropped from `h0` that bounces with restitution `e` touches down at
+/// `T_n = t1 (1 + 2 (e + e² + … + eⁿ))`, `t1 = √(2 h0 / g)`, and reaches its n-th apex at
+/// `T_n + eⁿ t1` at height `e²ⁿ h0`: Radau solves the parabolas exactly, so the located
+/// times and heights agree to round-off.
+#[test]
+fn a_bouncing_ball_touches_down_and_peaks_on_the_geometric_series() {
+    let (h0, e) = (1.0, 0.8);
+    let ball = Ball { m: 0.3, g: G };
+    let mut events = Events::new()
+        .on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y))
+        .on("apex", Crossing::Falling, |_, s: &State<Ball>, _| s.v(Ball::Y));
+    let touchdown = events.index("touchdown").expect("an event of that name");
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let solution = radau
+        .solve_with_events(0.0, &dropped(h0), 3.5, &Sampling::Every(0.01), &mut events, |event, at| {
+            if event.index == touchdown {
+                let v = at.state().v(Ball::Y);
+                at.state_mut().set_v(Ball::Y, -e * v);
+            }
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let t1 = (2.0 * h0 / G).sqrt();
+    let touchdown_at = |n: i32| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
+    let touchdowns = solution.event_times("touchdown");
+    let apexes = solution.event_times("apex");
+    assert!(touchdowns.len() >= 8, "{} touchdowns", touchdowns.len());
+    for (n, &t) in touchdowns.iter().enumerate() {
+        let exact = touchdown_at(n as i32);
+        assert!(relative(t, exact) < 1e-10, "touchdown {n}: {t} against {exact}");
+    }
+    for (n, &t) in apexes.iter().enumerate() {
+        let n = n as i32 + 1;
+        let exact = touchdown_at(n - 1) + e.powi(n) * t1;
+        assert!(relative(t, exact) < 1e-10, "apex {n}: {t} against {exact}");
+    }
+    // The heights at the apexes, read from the samples the solution records at its events.
+    let heights: Vec<f64> = solution
+        .t()
+        .iter()
+        .zip(solution.q(Ball::Y))
+        .filter(|(t, _)| apexes.contains(t))
+        .map(|(_, &y)| y)
+        .collect();
+    assert_eq!(heights.len(), apexes.len());
+    for (n, &y) in heights.iter().enumerate() {
+        let exact = e.powi(2 * (n as i32 + 1)) * h0;
+        assert!(relative(y, exact) < 1e-10, "apex {}: height {y} against {exact}", n + 1);
+    }
+    // Events come in time order, touchdowns and apexes alternating.
+    assert!(solution.events().windows(2).all(|w| w[0].t < w[1].t && w[0].index != w[1].index));
+    // The samples at a touchdown: before the reset (falling), then after (rising).
+    let i = solution.t().iter().position(|&t| t == touchdowns[1]).expect("a sample at the touchdown");
+    assert_eq!(solution.t()[i + 1], touchdowns[1]);
+    let (before, after) = (solution.v(Ball::Y)[i], solution.v(Ball::Y)[i + 1]);
+    assert!(before < 0.0 && relative(after, -e * before) < 1e-14, "{before} then {after}");
+}
+
+/// Radau holds a parabola exactly, so its steps grow long; after a bounce the ball leaves the
+/// floor and comes back within one flight, which a long step would span unseen. The restart
+/// at an event starts with a short step, so every touchdown is seen: the count matches the
+/// closed form's for any end time.
+#[test]
+fn every_bounce_is_seen_however_long_the_steps_grow() {
+    let (h0, e) = (1.0, 0.5);
+    let ball = Ball { m: 1.0, g: G };
+    let t1 = (2.0 * h0 / G).sqrt();
+    for t_end in [0.8, 1.0, 1.2, 1.3, 1.35] {
+        let mut events =
+            Events::new().on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y));
+        let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+        let solution = radau
+            .solve_with_events(0.0, &dropped(h0), t_end, &Sampling::Times(vec![]), &mut events, |_, at| {
+                let v = at.state().v(Ball::Y);
+                at.state_mut().set_v(Ball::Y, -e * v);
+                ControlFlow::Continue(())
+            })
+            .expect("integrates");
+        // Touchdown n at t1 (1 + 2 (e + … + eⁿ)); the end times stop short of the Zeno time
+        // t1 (1 + 2e/(1 − e)) = 3 t1 = 1.3546 (the last after nine touchdowns).
+        let expected = (0..60)
+            .take_while(|&n| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>()) < t_end)
+            .count();
+        assert_eq!(solution.event_times("touchdown").len(), expected, "up to {t_end}");
+    }
+    // Past the Zeno time, resets alone cannot go on: a typed error at t∞, not a hang.
+    let mut events = Events::new().on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y));
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &dropped(h0), 2.0, &Sampling::Times(vec![]), &mut events, |_, at| {
+            let v = at.state().v(Ball::Y);
+            at.state_mut().set_v(Ball::Y, -e * v);
+            ControlFlow::Continue(())
+        })
+        .expect_err("stops at the Zeno time");
+    match error {
+        SimError::StepSizeTooSmall { t, .. } => {
+            assert!((t - 3.0 * t1).abs() < 1e-6, "{t} against {}", 3.0 * t1)
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// Several crossings within one long step are located in time order, without restarting the
+/// integration: the steps are those of the same run without events.
+#[test]
+fn several_events_within_a_step_come_in_time_order_at_no_restart() {
+    let model = Oscillator { m: 1.0, k: 1.0 };
+    let mut start = State::<Oscillator>::zeros();
+    start.set_q(Oscillator::X, 1.0);
+    let options = RadauOptions { max_step: 10.0, ..RadauOptions::tolerances(1e-12, 1e-12) };
+    let levels = [0.9, 0.5, 0.4999, 0.4998, -0.2];
+    let mut events = Events::new();
+    for level in levels {
+        events =
+            events.on(format!("below {level}"), Crossing::Falling, move |_, s: &State<Oscillator>, _| {
+                s.q(Oscillator::X) - level
+            });
+    }
+    let mut radau = Radau::new(&model, options).expect("valid options");
+    let mut seen = Vec::new();
+    let solution = radau
+        .solve_with_events(0.0, &start, 3.0, &Sampling::Steps, &mut events, |event, at| {
+            seen.push((event.index, at.t(), at.state().q(Oscillator::X)));
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let plain = Radau::new(&model, options)
+        .expect("valid options")
+        .solve(0.0, &start, 3.0, &Sampling::Steps)
+        .expect("integrates");
+    assert_eq!(solution.stats.steps, plain.stats.steps);
+    assert_eq!(seen.iter().map(|e| e.0).collect::<Vec<_>>(), [0, 1, 2, 3, 4]);
+    for (k, &(_, t, x)) in seen.iter().enumerate() {
+        // x = cos t falls through each level at acos(level); the dense output is accurate to
+        // the tolerance, and the root of it is found to round-off.
+        assert!((t - levels[k].acos()).abs() < 1e-9, "{t} against {}", levels[k].acos());
+        assert!((x - levels[k]).abs() < 1e-9);
+    }
+    // Each event's sample sits between the steps' samples, in time order; events 1 to 3 fall
+    // within one step (no step ends between them).
+    assert!(solution.t().windows(2).all(|w| w[0] < w[1]));
+    assert_eq!(solution.len(), plain.len() + levels.len());
+    let within = |t: &f64| *t > seen[1].1 && *t < seen[3].1;
+    assert_eq!(solution.t().iter().filter(|t| within(t)).count(), 1, "only event 2 lies between 1 and 3");
+}
+
+/// Rising, falling and either: `cos t` falls through zero at π/2 + 2kπ and rises at 3π/2 + 2kπ.
+#[test]
+fn crossings_count_in_the_direction_asked() {
+    let model = Oscillator { m: 1.0, k: 1.0 };
+    let mut start = State::<Oscillator>::zeros();
+    start.set_q(Oscillator::X, 1.0);
+    let x = |_: f64, s: &State<Oscillator>, _: &Oscillator| s.q(Oscillator::X);
+    let mut events = Events::new().on("falling", Crossing::Falling, x).on("rising", Crossing::Rising, x).on(
+        "either",
+        Crossing::Either,
+        x,
+    );
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid options");
+    let solution = radau
+        .solve_with_events(0.0, &start, 4.0 * PI, &Sampling::Times(vec![]), &mut events, |_, _| {
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let close = |found: Vec<f64>, exact: &[f64]| {
+        found.len() == exact.len() && found.iter().zip(exact).all(|(a, b)| (a - b).abs() < 1e-9)
+    };
+    let falling = [0.5 * PI, 2.5 * PI];
+    let rising = [1.5 * PI, 3.5 * PI];
+    assert!(close(solution.event_times("falling"), &falling), "{:?}", solution.event_times("falling"));
+    assert!(close(solution.event_times("rising"), &rising), "{:?}", solution.event_times("rising"));
+    let either = [0.5 * PI, 1.5 * PI, 2.5 * PI, 3.5 * PI];
+    assert!(close(solution.event_times("either"), &either), "{:?}", solution.event_times("either"));
+    let directions: Vec<Crossing> =
+        solution.events().iter().filter(|e| e.index == 2).map(|e| e.crossing).collect();
+    assert_eq!(directions, [Crossing::Falling, Crossing::Rising, Crossing::Falling, Crossing::Rising]);
+    // At simultaneous crossings, events come in the order they were added.
+    let first: Vec<usize> = solution.events().iter().take(2).map(|e| e.index).collect();
+    assert_eq!(first, [0, 2]);
+    // Sampling at chosen times (none here) records no samples at events.
+    assert!(solution.is_empty());
+}
+
+/// Breaking ends the solution at the event, with the state there.
+#[test]
+fn an_action_that_breaks_ends_the_integration_at_the_event() {
+    let ball = Ball { m: 1.0, g: G };
+    let mut events =
+        Events::new().on("half way", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y) - 0.5);
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let solution = radau
+        .solve_with_events(0.0, &dropped(1.0), 10.0, &Sampling::Every(0.05), &mut events, |_, _| {
+            ControlFlow::Break(())
+        })
+        .expect("integrates");
+    let exact = (2.0 * 0.5 / G).sqrt();
+    let (t, y) = (*solution.t().last().expect("a sample"), *solution.q(Ball::Y).last().expect("a sample"));
+    assert!(relative(t, exact) < 1e-12, "{t} against {exact}");
+    assert!((y - 0.5).abs() < 1e-12);
+    assert_eq!(solution.events().len(), 1);
+    // Every 0.05 up to the event, then the event.
+    assert_eq!(solution.len(), (exact / 0.05).floor() as usize + 2);
+}
+
+/// Gravity switched off at half height: the ball goes on at the velocity it had,
+/// `y = ½ − √(g) (t − t_e)`, against the closed form after the restart.
+#[test]
+fn an_action_may_change_the_model_and_the_integration_restarts_there() {
+    let mut ball = Ball { m: 1.0, g: G };
+    let mut events =
+        Events::new().on("half way", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y) - 0.5);
+    let mut radau = Radau::new(&mut ball, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid options");
+    let solution = radau
+        .solve_with_events(0.0, &dropped(1.0), 1.0, &Sampling::Every(0.1), &mut events, |_, at| {
+            at.model_mut().expect("held exclusively").g = 0.0;
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let t_event = (1.0 / G).sqrt();
+    let speed = G * t_event;
+    for (t, y) in solution.t().iter().zip(solution.q(Ball::Y)) {
+        let exact = if *t <= t_event { 1.0 - 0.5 * G * t * t } else { 0.5 - speed * (t - t_event) };
+        assert!((y - exact).abs() < 1e-9, "t = {t}: {y} against {exact}");
+    }
+    assert_eq!(radau.model().g, 0.0);
+}
+
+/// A change needs an integrator that holds the model exclusively; a shared one says so.
+#[test]
+fn changing_a_shared_model_at_an_event_is_a_typed_error() {
+    let ball = Ball { m: 1.0, g: G };
+    let mut events =
+        Events::new().on("half way", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y) - 0.5);
+    let mut radau = Radau::new(&ball, RadauOptions::default()).expect("valid options");
+    let mut refused = None;
+    radau
+        .solve_with_events(0.0, &dropped(1.0), 1.0, &Sampling::Steps, &mut events, |_, at| {
+            refused = at.model_mut().err();
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    assert!(matches!(refused, Some(SimError::SharedModel { .. })), "{refused:?}");
+}
+
+/// An event function that returns NaN ends the integration with an error that names it.
+#[test]
+fn a_non_finite_event_function_is_named() {
+    let ball = Ball { m: 1.0, g: G };
+    let mut events =
+        Events::new().on("broken", Crossing::Either, |_, s: &State<Ball>, _| (s.q(Ball::Y) - 0.5).sqrt());
+    let mut radau = Radau::new(&ball, RadauOptions::default()).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &dropped(1.0), 1.0, &Sampling::Steps, &mut events, |_, _| {
+            ControlFlow::Continue(())
+        })
+        .expect_err("fails");
+    match error {
+        SimError::NonFinite { t, component } => {
+            assert!(component.contains("`broken`"), "{component}");
+            assert!(t > 0.0 && t <= 1.0);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// The complete elliptic integral of the first kind, `K(k) = π / (2 AGM(1, √(1 − k²)))`.
+fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0, (1.0 - k * k).sqrt());
+    // The means agree to round-off within a few iterations (the convergence is quadratic).
+    for _ in 0..40 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    PI / (2.0 * a)
+}
+
+/// A pendulum released at rest at angle θ0 strikes a wall through its pivot at the bottom,
+/// after a quarter period `√(l/g) K(sin(θ0/2))`, and rebounds with restitution e: its momentum
+/// reverses, scaled by e, and its energy (above the bottom) by e², so it next strikes after a
+/// half period at the smaller amplitude θ1, `1 − cos θ1 = e² (1 − cos θ0)`.
+#[test]
+fn a_pendulum_striking_a_wall_exchanges_momentum_and_energy_by_the_impact_law() {
+    let (m, l, e, theta0) = (0.7, 1.3, 0.6, 1.2f64);
+    let model = Pendulum { m, g: G, l };
+    let q = dirac::nalgebra::Vector2::new(l * theta0.sin(), -l * theta0.cos());
+    let start =
+        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
+    let mut events =
+        Events::new().on("wall", Crossing::Falling, |_, s: &State<Pendulum>, _| s.q(Pendulum::X));
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let mut impacts = Vec::new();
+    radau
+        .solve_with_events(0.0, &start, 4.0, &Sampling::Every(0.01), &mut events, |_, at| {
+            let before = at.state().clone();
+            let (vx, vy) = (before.v(Pendulum::X), before.v(Pendulum::Y));
+            at.state_mut().set_v(Pendulum::X, -e * vx).set_v(Pendulum::Y, -e * vy);
+            let energy = |s: &State<Pendulum>| {
+                0.5 * m * (s.v(Pendulum::X).powi(2) + s.v(Pendulum::Y).powi(2))
+                    + m * G * (s.q(Pendulum::Y) + l)
+            };
+            impacts.push((at.t(), before.p(Pendulum::X), energy(&before)));
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    assert!(impacts.len() >= 2, "{} impacts", impacts.len());
+    let omega = (G / l).sqrt();
+    let amplitude = |n: i32| (1.0 - e.powi(2 * n) * (1.0 - theta0.cos())).acos();
+    let mut t_exact = elliptic_k((0.5 * theta0).sin()) / omega;
+    for (n, &(t, p, energy)) in impacts.iter().enumerate() {
+        let n = n as i32;
+        assert!(relative(t, t_exact) < 1e-9, "impact {n} at {t} against {t_exact}");
+        // Momentum and energy arriving at impact n: those leaving impact n − 1, by e and e².
+        let energy_exact = e.powi(2 * n) * m * G * l * (1.0 - theta0.cos());
+        assert!(relative(energy, energy_exact) < 1e-9, "impact {n}: energy {energy} against {energy_exact}");
+        let speed = (2.0 * energy_exact / m).sqrt();
+        // The bob reaches the wall moving towards it (−x) each time.
+        let p_exact = -m * speed;
+        assert!(relative(p, p_exact) < 1e-8, "impact {n}: momentum {p} against {p_exact}");
+        t_exact += 2.0 * elliptic_k((0.5 * amplitude(n + 1)).sin()) / omega;
+    }
+}
+
+/// A rolling disk heading at φ0 with spin ω rolls on a straight line, `x = r cos φ0 ω t`: it
+/// reaches a wall at `x = w` at `w / (r cos φ0 ω)` and, its velocities reversed with
+/// restitution e, rolls back and reaches `x = 0` after `w / (e r cos φ0 ω)` more. The reset
+/// keeps the nonholonomic constraints (the reversed velocities satisfy them).
+#[test]
+fn a_rolling_disk_hits_a_wall_on_its_nonholonomic_constraints() {
+    let (r, phi0, omega, w, e) = (0.4, 0.3f64, 2.0, 1.5, 0.5);
+    let model = RollingDisk { m: 1.0, r, i_roll: 0.2, i_turn: 0.1 };
+    let q = dirac::nalgebra::Vector4::new(0.0, 0.0, 0.0, phi0);
+    let v = dirac::nalgebra::Vector4::new(r * phi0.cos() * omega, r * phi0.sin() * omega, omega, 0.0);
+    let start = consistent_state(&model, 0.0, &q, &v, Consistency::default()).expect("consistent");
+    let x = |_: f64, s: &State<RollingDisk>, _: &RollingDisk| s.q(RollingDisk::X);
+    let mut events = Events::new().on("wall", Crossing::Rising, move |t, s, m| x(t, s, m) - w).on(
+        "back",
+        Crossing::Falling,
+        x,
+    );
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let solution = radau
+        .solve_with_events(0.0, &start, 6.0, &Sampling::Every(0.05), &mut events, |event, at| {
+            if event.index == 0 {
+                let s = at.state_mut();
+                for c in [RollingDisk::X, RollingDisk::Y, RollingDisk::THETA] {
+                    let v = s.v(c);
+                    s.set_v(c, -e * v);
+                }
+                return ControlFlow::Continue(());
+            }
+            ControlFlow::Break(())
+        })
+        .expect("integrates");
+    let speed = r * phi0.cos() * omega;
+    let (t_wall, t_back) = (w / speed, w / speed + w / (e * speed));
+    assert!(relative(solution.event_times("wall")[0], t_wall) < 1e-10);
+    assert!(relative(solution.event_times("back")[0], t_back) < 1e-10);
+    let y_back = *solution.q(RollingDisk::Y).last().expect("a sample");
+    assert!(y_back.abs() < 1e-9, "the disk came back along its line: y = {y_back}");
+    assert!(solution.constraint_residual().iter().all(|&c| c < 1e-9));
+}
+
+/// The variational integrator locates events on its interpolation between steps (linear,
+/// projected). The ball's positions and velocities are exact at the steps (velocity Verlet
+/// under a constant force), so a touchdown is located within the interpolation's error,
+/// `g h² / 8` over the speed; the reset velocity then carries the time's error on, which
+/// grows the next flight's by `2e` times it. The bound sums both.
+#[test]
+fn the_variational_integrator_locates_events_between_its_steps() {
+    let (h0, e, h) = (1.0, 0.8, 1e-3);
+    let ball = Ball { m: 1.0, g: G };
+    let mut events = Events::new().on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y));
+    let mut variational = Variational::new(&ball, h, VariationalOptions::default()).expect("valid options");
+    let solution = variational
+        .solve_with_events(0.0, &dropped(h0), 3.0, &Sampling::Every(0.01), &mut events, |_, at| {
+            let v = at.state().v(Ball::Y);
+            at.state_mut().set_v(Ball::Y, -e * v);
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let t1 = (2.0 * h0 / G).sqrt();
+    let (mut t_exact, mut bound) = (t1, 0.0);
+    let touchdowns = solution.event_times("touchdown");
+    assert!(touchdowns.len() >= 5);
+    for (n, &t) in touchdowns.iter().enumerate() {
+        let speed = G * t1 * e.powi(n as i32);
+        bound = bound * (1.0 + 2.0 * e) + G * h * h / 8.0 / speed;
+        assert!((t - t_exact).abs() < bound, "touchdown {n}: {t} against {t_exact} (bound {bound:e})");
+        t_exact += 2.0 * t1 * e.powi(n as i32 + 1);
+    }
+    assert!(bound < 1e-4);
+}
