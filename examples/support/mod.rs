@@ -68,11 +68,21 @@ fn label(value: f64, log: bool) -> String {
 impl Chart<'_> {
     /// Writes the chart as an SVG file.
     pub fn write(&self, path: &Path) -> std::io::Result<()> {
+        self.write_with_markers(path, &[])
+    }
+
+    /// Writes the chart as an SVG file, with `markers` drawn as points (circles, in the colours
+    /// that follow the lines') rather than lines: events on a trajectory.
+    pub fn write_with_markers(&self, path: &Path, markers: &[Series<'_>]) -> std::io::Result<()> {
         // On a log scale, zeros (exact values) are left out rather than drawn at 1e-300.
         let transform =
             |y: f64| if self.log_y { if y.abs() > 0.0 { y.abs().log10() } else { f64::NAN } } else { y };
-        let points =
-            || self.series.iter().flat_map(|s| s.x.iter().zip(s.y).map(|(x, y)| (*x, transform(*y))));
+        let points = || {
+            self.series
+                .iter()
+                .chain(markers)
+                .flat_map(|s| s.x.iter().zip(s.y).map(|(x, y)| (*x, transform(*y))))
+        };
         let (mut x0, mut x1, mut y0, mut y1) =
             (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
         for (x, y) in points().filter(|(x, y)| x.is_finite() && y.is_finite()) {
@@ -164,6 +174,29 @@ impl Chart<'_> {
                 svg,
                 r#"<line x1="{lx}" y1="{ly}" x2="{}" y2="{ly}" stroke="{color}" stroke-width="2"/>"#,
                 lx + 22.0
+            );
+            let _ = writeln!(svg, r#"<text x="{}" y="{}">{}</text>"#, lx + 28.0, ly + 4.0, escape(s.name));
+        }
+        for (k, s) in markers.iter().enumerate() {
+            let k = self.series.len() + k;
+            let color = COLORS[k % COLORS.len()];
+            for (x, y) in s.x.iter().zip(s.y) {
+                let y = transform(*y);
+                if x.is_finite() && y.is_finite() {
+                    let _ = writeln!(
+                        svg,
+                        r#"<circle cx="{:.2}" cy="{:.2}" r="4" fill="none" stroke="{color}" stroke-width="1.5"/>"#,
+                        sx(*x),
+                        sy(y)
+                    );
+                }
+            }
+            let ly = TOP + 16.0 + 20.0 * k as f64;
+            let lx = LEFT + pw + 12.0;
+            let _ = writeln!(
+                svg,
+                r#"<circle cx="{}" cy="{ly}" r="4" fill="none" stroke="{color}" stroke-width="1.5"/>"#,
+                lx + 11.0
             );
             let _ = writeln!(svg, r#"<text x="{}" y="{}">{}</text>"#, lx + 28.0, ly + 4.0, escape(s.name));
         }

@@ -1,0 +1,109 @@
+//! A bouncing ball: events located on the dense output, and a reset at each touchdown.
+//!
+//! A ball dropped from h0 = 1 m falls under gravity; each touchdown (its height falling
+//! through zero) reverses its velocity and scales it by the restitution e = 0.8. Between
+//! touchdowns it flies on parabolas, so everything has a closed form, a geometric series:
+//!
+//! ```text
+//! touchdown n at   T_n = t1 (1 + 2 (e + e² + … + eⁿ)),   t1 = √(2 h0 / g),
+//! apex n at        T_{n−1} + eⁿ t1,   height e²ⁿ h0,
+//! ```
+//!
+//! and the touchdowns accumulate at the Zeno time `t∞ = t1 (1 + 2e / (1 − e))`. The example
+//! integrates to shortly before t∞, prints the located times and heights against the closed
+//! form, and plots the height with the events marked.
+
+use std::error::Error;
+use std::ops::ControlFlow;
+
+use dirac::prelude::*;
+
+#[path = "support/mod.rs"]
+mod support;
+
+use support::{Chart, Series, output_dir};
+
+/// A ball moving vertically under gravity.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(y => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+struct Ball {
+    /// Mass [kg].
+    m: f64,
+    /// Gravity [m/s²].
+    g: f64,
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let (h0, e) = (1.0, 0.8);
+    let ball = Ball { m: 0.1, g: 9.81 };
+    let t1 = (2.0 * h0 / ball.g).sqrt();
+    let zeno = t1 * (1.0 + 2.0 * e / (1.0 - e));
+    let mut start = State::<Ball>::zeros();
+    start.set_q(Ball::Y, h0);
+
+    let mut events = Events::new()
+        .on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y))
+        .on("apex", Crossing::Falling, |_, s: &State<Ball>, _| s.v(Ball::Y));
+    let touchdown = events.index("touchdown").ok_or("no touchdown event")?;
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-12, 1e-12))?;
+    let t_end = 0.9 * zeno;
+    let solution =
+        radau.solve_with_events(0.0, &start, t_end, &Sampling::Every(0.005), &mut events, |event, at| {
+            if event.index == touchdown {
+                let v = at.state().v(Ball::Y);
+                at.state_mut().set_v(Ball::Y, -e * v);
+            }
+            ControlFlow::Continue(())
+        })?;
+
+    let touchdown_at = |n: i32| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
+    let touchdowns = solution.event_times("touchdown");
+    let apexes = solution.event_times("apex");
+    println!(
+        "{} touchdowns and {} apexes up to t = {t_end:.4} s (Zeno time {zeno:.4} s)",
+        touchdowns.len(),
+        apexes.len()
+    );
+    let worst_time = touchdowns
+        .iter()
+        .enumerate()
+        .map(|(n, t)| ((t - touchdown_at(n as i32)) / touchdown_at(n as i32)).abs())
+        .fold(0.0, f64::max);
+    println!("touchdown times against the closed form: worst relative error {worst_time:.1e}");
+    // The samples the solution records at its events: the apex heights.
+    let (t, y) = (solution.t(), solution.q(Ball::Y));
+    let at_events = |times: &[f64]| -> Vec<f64> {
+        times.iter().filter_map(|te| t.iter().position(|ts| ts == te).map(|i| y[i])).collect()
+    };
+    let heights = at_events(&apexes);
+    let worst_height = heights
+        .iter()
+        .enumerate()
+        .map(|(n, h)| ((h - e.powi(2 * (n as i32 + 1)) * h0) / (e.powi(2 * (n as i32 + 1)) * h0)).abs())
+        .fold(0.0, f64::max);
+    println!("apex heights against e^(2n) h0: worst relative error {worst_height:.1e}");
+    for (n, (ta, h)) in apexes.iter().zip(&heights).take(4).enumerate() {
+        println!("  apex {}: t = {ta:.6} s, height {h:.6} m", n + 1);
+    }
+    println!("{:?}", solution.stats);
+
+    let floor = at_events(&touchdowns);
+    let path = output_dir()?.join("bouncing_ball.svg");
+    Chart {
+        title: "A ball bouncing with restitution 0.8, its events located",
+        x_label: "time t [s]",
+        y_label: "height y [m]",
+        series: vec![Series { name: "height", x: t, y }],
+        log_y: false,
+    }
+    .write_with_markers(
+        &path,
+        &[
+            Series { name: "touchdown", x: &touchdowns, y: &floor },
+            Series { name: "apex", x: &apexes, y: &heights },
+        ],
+    )?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
