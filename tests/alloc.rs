@@ -303,7 +303,7 @@ fn allocations_locating_events<I: Integrator<Oscillator>>(
     let mut located = 0;
     while !integrator.finished() {
         integrator.step().expect("steps");
-        while let Some(event) = events.locate(&integrator).expect("locates") {
+        while let Some(event) = events.locate(&mut integrator).expect("locates") {
             located += 1;
             assert!(event.t <= integrator.t());
         }
@@ -325,4 +325,33 @@ fn locating_events_does_not_allocate() {
     let (allocations, located) = allocations_locating_events(variational, &start);
     assert_eq!(allocations, 0, "variational with events");
     assert_eq!(located, 13 + 6);
+}
+
+/// Location on a driven input sets the inputs at every time it evaluates at: the drive's
+/// calls allocate nothing either.
+#[test]
+fn locating_events_on_driven_inputs_does_not_allocate() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let start = State::<ForcedSpring>::zeros();
+    let mut source = |t: f64, _: &State<ForcedSpring>, m: &mut ForcedSpring| m.f = (1.3 * t).sin();
+    let mut events = dirac::Events::new().on(
+        "half",
+        dirac::Crossing::Either,
+        |_, _: &State<ForcedSpring>, m: &ForcedSpring| m.f - 0.5,
+    );
+    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    radau.drive(&mut source).expect("held exclusively");
+    radau.start(0.0, &start, 20.0).expect("starts");
+    events.begin(radau.model(), 0.0, &start).expect("begins");
+    let before = allocations();
+    let mut located = 0;
+    while !radau.finished() {
+        radau.step().expect("steps");
+        while events.locate(&mut radau).expect("locates").is_some() {
+            located += 1;
+        }
+    }
+    assert_eq!(allocations() - before, 0);
+    // sin(1.3 t) = ½ twice per period 2π/1.3 over 20: at 0.40 + 4.83 k and 2.01 + 4.83 k.
+    assert_eq!(located, 9);
 }

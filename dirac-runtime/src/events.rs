@@ -57,6 +57,8 @@ where
     at_event: State<M>,
     /// The state at the root finder's trial points.
     probe: State<M>,
+    /// Whether the inputs were last set at an event before the step's end.
+    inputs_moved: bool,
     evaluations: usize,
 }
 
@@ -88,6 +90,7 @@ where
             pending: Vec::new(),
             at_event: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
             probe: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
+            inputs_moved: false,
             evaluations: 0,
         }
     }
@@ -164,6 +167,7 @@ where
             self.pending[k] = false;
         }
         self.hi_current = false;
+        self.inputs_moved = false;
         Ok(())
     }
 
@@ -183,14 +187,18 @@ where
     /// the step holds no more. The state at the event is then [`Events::state`]. Call it
     /// after each step until it returns `None`, handling each event as it comes; after a
     /// restart within the step (at an event), call [`Events::resume`]. Allocates nothing.
-    pub fn locate<I: Integrator<M>>(&mut self, integrator: &I) -> Result<Option<Event>, SimError> {
+    ///
+    /// Where the integrator sets inputs within its steps (a Radau drive), they are set for
+    /// each time the functions are evaluated at, left at the event's time while it is handled,
+    /// and put back at the step's end after it.
+    pub fn locate<I: Integrator<M>>(&mut self, integrator: &mut I) -> Result<Option<Event>, SimError> {
         if let Some(k) = self.pending.iter().position(|&p| p) {
             self.pending[k] = false;
             return Ok(Some(self.crossed(k, self.t_lo)));
         }
         let t = integrator.t();
-        let model = integrator.model();
         if !self.hi_current || self.t_hi != t {
+            let model = integrator.model();
             for k in 0..self.functions.len() {
                 self.hi[k] = self.evaluate(k, t, integrator.state(), model)?;
             }
@@ -208,6 +216,9 @@ where
                 continue;
             }
             let root = self.root(k, integrator)?;
+            // The inputs back as the step left them, at its end.
+            self.probe.clone_from(integrator.state());
+            integrator.set_inputs_at(t, &self.probe);
             if first.is_none_or(|(_, t_first)| root < t_first) {
                 first = Some((k, root));
             }
@@ -215,6 +226,11 @@ where
         let Some((k, t_event)) = first else {
             // No event in the rest of the step: its end is the next search's start.
             self.t_lo = t;
+            if self.inputs_moved {
+                self.probe.clone_from(integrator.state());
+                integrator.set_inputs_at(t, &self.probe);
+                self.inputs_moved = false;
+            }
             for k in 0..self.functions.len() {
                 self.lo[k] = self.hi[k];
                 if self.hi[k] != 0.0 {
@@ -227,7 +243,10 @@ where
             self.at_event.clone_from(integrator.state());
         } else {
             integrator.interpolate(t_event, &mut self.at_event);
+            integrator.set_inputs_at(t_event, &self.at_event);
+            self.inputs_moved = true;
         }
+        let model = integrator.model();
         // The search goes on from the event; functions that changed sign by then crossed at
         // the same time (within the root finder's resolution), or do not count.
         self.t_lo = t_event;
@@ -262,13 +281,12 @@ where
     /// The root of function `k` between the last point examined and the step's end, by the
     /// Illinois variant of regula falsi on the dense output, safeguarded by bisection: the
     /// first time (to round-off) at which the function is zero or has its new sign.
-    fn root<I: Integrator<M>>(&mut self, k: usize, integrator: &I) -> Result<f64, SimError> {
+    fn root<I: Integrator<M>>(&mut self, k: usize, integrator: &mut I) -> Result<f64, SimError> {
         let (mut a, mut fa, mut b, mut fb) = (self.t_lo, self.lo[k], self.t_hi, self.hi[k]);
         if fa == 0.0 || fa.signum() != self.signs[k] {
             // The function already had its new sign (or was zero) where the search starts.
             return Ok(a);
         }
-        let model = integrator.model();
         let mut side = 0;
         let mut width = b - a;
         for iteration in 0..MAX_ITERATIONS {
@@ -289,8 +307,9 @@ where
                 }
             }
             integrator.interpolate(c, &mut self.probe);
+            integrator.set_inputs_at(c, &self.probe);
             self.evaluations += 1;
-            let fc = (self.functions[k])(c, &self.probe, model);
+            let fc = (self.functions[k])(c, &self.probe, integrator.model());
             if fc.is_nan() {
                 return Err(SimError::NonFinite {
                     t: c,
@@ -395,7 +414,8 @@ where
     /// - An action that changes nothing costs no restart: the search goes on within the step.
     /// - After a reset or a change, the integration restarts at the event from the consistent
     ///   state nearest to the one the action left ([`consistent_state`](crate::consistent_state)).
-    /// - `ControlFlow::Break(())` ends the integration at the event.
+    /// - `ControlFlow::Break(())` ends the solution at the event (the integrator itself stays
+    ///   at the end of the step that held it; [`Integrator::restart_at`] moves it back).
     ///
     /// The solution records every event ([`Solution::events`](crate::Solution::events)) and, unless it samples at
     /// chosen times, the state at each event, twice when the action reset it (before, then

@@ -127,6 +127,13 @@ where
     /// reset the state or changed the model needs. The state must be consistent at `t`.
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError>;
 
+    /// Sets the model's inputs for time `t` and `state` where something sets them within the
+    /// steps (a Radau drive), so that a function of the inputs read at a time within the last
+    /// step (an event function) sees them as the step did. Does nothing otherwise.
+    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
+        let _ = (t, state);
+    }
+
     /// Whether the end time has been reached.
     fn finished(&self) -> bool;
 

@@ -10,7 +10,7 @@ use std::ops::ControlFlow;
 use dirac::prelude::*;
 use dirac::{Crossing, Events};
 
-use crate::zoo::{Ball, Oscillator, Pendulum, RollingDisk};
+use crate::zoo::{Ball, ForcedSpring, Oscillator, Pendulum, RollingDisk};
 
 const G: f64 = 9.81;
 
@@ -416,4 +416,99 @@ fn the_variational_integrator_locates_events_between_its_steps() {
         t_exact += 2.0 * t1 * e.powi(n as i32 + 1);
     }
     assert!(bound < 1e-4);
+}
+
+/// A restart moves back only within the last step, and only to a consistent state.
+#[test]
+fn a_restart_outside_the_last_step_or_off_the_constraints_is_refused() {
+    let model = Pendulum { m: 1.0, g: G, l: 1.0 };
+    let q = dirac::nalgebra::Vector2::new(0.6, -0.8);
+    let start =
+        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-8, 1e-8)).expect("valid options");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    radau.step().expect("steps");
+    radau.step().expect("steps");
+    let early = radau.restart_at(0.0, &start).expect_err("before the last step");
+    assert!(matches!(early, SimError::InvalidTimeSpan { .. }), "{early:?}");
+    let mut off = radau.state().clone();
+    off.set_q(Pendulum::X, 0.7);
+    let error = radau.restart_at(radau.t(), &off).expect_err("off the rod");
+    assert!(matches!(error, SimError::StateNotConsistent { .. }), "{error:?}");
+    let mut variational = Variational::new(&model, 0.01, VariationalOptions::default()).expect("valid step");
+    variational.start(0.0, &start, 1.0).expect("starts");
+    variational.step().expect("steps");
+    let error = variational.restart_at(0.5, &start).expect_err("beyond the last step");
+    assert!(matches!(error, SimError::InvalidTimeSpan { .. }), "{error:?}");
+}
+
+/// The variational integrator restarts at events on a constrained model: the pendulum
+/// striking the wall through its pivot, velocities reversed with restitution e, keeps its rod
+/// (the reset velocities are tangent to it) and loses the share 1 − e² of its energy at each
+/// impact, within the step's energy error.
+#[test]
+fn the_variational_integrator_restarts_at_impacts_on_a_constrained_model() {
+    let (m, l, e, theta0) = (1.0, 1.0, 0.7, 0.9f64);
+    let model = Pendulum { m, g: G, l };
+    let q = dirac::nalgebra::Vector2::new(l * theta0.sin(), -l * theta0.cos());
+    let start =
+        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
+    let mut events =
+        Events::new().on("wall", Crossing::Falling, |_, s: &State<Pendulum>, _| s.q(Pendulum::X));
+    let mut variational = Variational::new(&model, 1e-3, VariationalOptions::default()).expect("valid step");
+    let solution = variational
+        .solve_with_events(0.0, &start, 4.0, &Sampling::Every(0.01), &mut events, |_, at| {
+            let s = at.state_mut();
+            let (vx, vy) = (s.v(Pendulum::X), s.v(Pendulum::Y));
+            s.set_v(Pendulum::X, -e * vx).set_v(Pendulum::Y, -e * vy);
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let impacts = solution.event_times("wall");
+    assert!(impacts.len() >= 3, "{} impacts", impacts.len());
+    assert!(solution.holonomic_residual().iter().all(|&r| r < 1e-10));
+    // The energy above the bottom, just after each impact (the sample after the reset).
+    let energy = solution.energy();
+    let bottom = -m * G * l;
+    for (n, &t) in impacts.iter().enumerate() {
+        let i = solution.t().iter().rposition(|&ts| ts == t).expect("a sample after the reset");
+        let exact = e.powi(2 * (n as i32 + 1)) * m * G * l * (1.0 - theta0.cos());
+        assert!(
+            relative(energy[i] - bottom, exact) < 1e-4,
+            "impact {n}: {} against {exact}",
+            energy[i] - bottom
+        );
+    }
+}
+
+/// An event on a driven input: the force `f = sin(1.3 t)` set by a drive crosses ½ rising at
+/// `asin(½) / 1.3` and falling at `(π − asin(½)) / 1.3`; the event function reads the input
+/// from the model, which the locator sets for each time it evaluates at.
+#[test]
+fn an_event_on_a_driven_input_is_located_where_the_input_crosses() {
+    let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
+    let mut start = State::<ForcedSpring>::zeros();
+    start.set_q(ForcedSpring::X, 0.1);
+    let mut source = |t: f64, _: &State<ForcedSpring>, m: &mut ForcedSpring| m.f = (1.3 * t).sin();
+    let mut events =
+        Events::new().on("half", Crossing::Either, |_, _: &State<ForcedSpring>, m: &ForcedSpring| m.f - 0.5);
+    let options = RadauOptions { max_step: 0.5, ..RadauOptions::tolerances(1e-10, 1e-10) };
+    let mut radau = Radau::new(&mut spring, options).expect("valid options");
+    radau.drive(&mut source).expect("held exclusively");
+    let mut inputs = Vec::new();
+    let solution = radau
+        .solve_with_events(0.0, &start, 3.0, &Sampling::Every(0.1), &mut events, |_, at| {
+            inputs.push(at.model().f);
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let rise = 0.5f64.asin() / 1.3;
+    let exact = [rise, PI / 1.3 - rise];
+    let found = solution.event_times("half");
+    assert_eq!(found.len(), 2, "{found:?}");
+    for (t, t_exact) in found.iter().zip(exact) {
+        assert!((t - t_exact).abs() < 1e-12, "{t} against {t_exact}");
+    }
+    // The action saw the input at the event.
+    assert!(inputs.iter().all(|f| (f - 0.5).abs() < 1e-12), "{inputs:?}");
 }

@@ -415,6 +415,10 @@ where
         self.begin(self.t, t_end, false)
     }
 
+    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
+        self.residual.apply_state(&mut self.model, t, state);
+    }
+
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
         check_within_last_step(t, self.t - self.dense.h, self.t)?;
         check_start(self.model.get(), t, state, self.t_end.max(t + 1.0), self.options.rtol.max(1e-8))?;

@@ -55,6 +55,15 @@ where
         }
     }
 
+    /// Sets the model's inputs for time `t` and `state`, if a drive does.
+    pub fn apply_state(&mut self, model: &mut Held<'_, M>, t: f64, state: &State<M>) {
+        if let Some((drive, _)) = &mut self.drive
+            && let Some(model) = model.get_mut()
+        {
+            drive(t, state, model);
+        }
+    }
+
     /// Writes `f(t, y)` into `out`, the inputs set first.
     #[inline]
     pub fn eval(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>, out: &mut VecY<M>) {
