@@ -301,6 +301,18 @@ fn elliptic_k(k: f64) -> f64 {
     PI / (2.0 * a)
 }
 
+/// A pendulum of mass `m` and length `l` released at rest at angle `theta0` to the right of
+/// the vertical, and the event of its bob reaching the wall through the pivot (`x` falling
+/// through 0).
+fn pendulum_and_wall<'e>(m: f64, l: f64, theta0: f64) -> (Pendulum, State<Pendulum>, Events<'e, Pendulum>) {
+    let model = Pendulum { m, g: G, l };
+    let q = dirac::nalgebra::Vector2::new(l * theta0.sin(), -l * theta0.cos());
+    let start =
+        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
+    let events = Events::new().on("wall", Crossing::Falling, |_, s: &State<Pendulum>, _| s.q(Pendulum::X));
+    (model, start, events)
+}
+
 /// A pendulum released at rest at angle θ0 strikes a wall through its pivot at the bottom,
 /// after a quarter period `√(l/g) K(sin(θ0/2))`, and rebounds with restitution e: its momentum
 /// reverses, scaled by e, and its energy (above the bottom) by e², so it next strikes after a
@@ -308,12 +320,7 @@ fn elliptic_k(k: f64) -> f64 {
 #[test]
 fn a_pendulum_striking_a_wall_exchanges_momentum_and_energy_by_the_impact_law() {
     let (m, l, e, theta0) = (0.7, 1.3, 0.6, 1.2f64);
-    let model = Pendulum { m, g: G, l };
-    let q = dirac::nalgebra::Vector2::new(l * theta0.sin(), -l * theta0.cos());
-    let start =
-        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
-    let mut events =
-        Events::new().on("wall", Crossing::Falling, |_, s: &State<Pendulum>, _| s.q(Pendulum::X));
+    let (model, start, mut events) = pendulum_and_wall(m, l, theta0);
     let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
     let mut impacts = Vec::new();
     radau
@@ -449,12 +456,7 @@ fn a_restart_outside_the_last_step_or_off_the_constraints_is_refused() {
 #[test]
 fn the_variational_integrator_restarts_at_impacts_on_a_constrained_model() {
     let (m, l, e, theta0) = (1.0, 1.0, 0.7, 0.9f64);
-    let model = Pendulum { m, g: G, l };
-    let q = dirac::nalgebra::Vector2::new(l * theta0.sin(), -l * theta0.cos());
-    let start =
-        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
-    let mut events =
-        Events::new().on("wall", Crossing::Falling, |_, s: &State<Pendulum>, _| s.q(Pendulum::X));
+    let (model, start, mut events) = pendulum_and_wall(m, l, theta0);
     let mut variational = Variational::new(&model, 1e-3, VariationalOptions::default()).expect("valid step");
     let solution = variational
         .solve_with_events(0.0, &start, 4.0, &Sampling::Every(0.01), &mut events, |_, at| {
