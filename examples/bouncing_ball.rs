@@ -58,8 +58,8 @@ fn main() -> Result<(), Box<dyn Error>> {
         })?;
 
     let touchdown_at = |n: i32| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
-    let touchdowns = solution.event_times("touchdown");
-    let apexes = solution.event_times("apex");
+    let touchdowns = solution.event_times("touchdown").ok_or("no touchdown event")?;
+    let apexes = solution.event_times("apex").ok_or("no apex event")?;
     println!(
         "{} touchdowns and {} apexes up to t = {t_end:.4} s (Zeno time {zeno:.4} s)",
         touchdowns.len(),

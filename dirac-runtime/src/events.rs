@@ -57,7 +57,8 @@ where
     at_event: State<M>,
     /// The state at the root finder's trial points.
     probe: State<M>,
-    /// Whether the inputs were last set at an event before the step's end.
+    /// Whether the inputs were last set for a time before the step's end (a trial time of
+    /// the root finder, or an event), so that they are to be put back at the step's end.
     inputs_moved: bool,
     evaluations: usize,
 }
@@ -136,9 +137,19 @@ where
 
     /// Starts watching from `state` at `t`: the functions' signs there are the ones a crossing
     /// changes (a function that is zero there takes the sign it first has after). Allocates
-    /// the locator's storage; call it before the first step.
+    /// the locator's storage; call it before the first step. Two functions of the same name
+    /// are refused ([`SimError::InvalidOption`]).
     pub fn begin(&mut self, model: &M, t: f64, state: &State<M>) -> Result<(), SimError> {
         let n = self.functions.len();
+        if let Some(k) = (1..n).find(|&k| self.names[..k].contains(&self.names[k])) {
+            return Err(SimError::InvalidOption {
+                what: "events",
+                reason: format!(
+                    "two event functions are called `{}`: their events could not be told apart",
+                    self.names[k]
+                ),
+            });
+        }
         for v in [&mut self.lo, &mut self.hi, &mut self.signs] {
             v.clear();
             v.resize(n, 0.0);
@@ -173,14 +184,7 @@ where
 
     fn evaluate(&mut self, k: usize, t: f64, state: &State<M>, model: &M) -> Result<f64, SimError> {
         self.evaluations += 1;
-        let g = (self.functions[k])(t, state, model);
-        if g.is_nan() {
-            return Err(SimError::NonFinite {
-                t,
-                component: format!("the event function `{}`", self.names[k]),
-            });
-        }
-        Ok(g)
+        value(&mut self.functions[k], &self.names[k], t, state, model)
     }
 
     /// The next event within the step the integrator just took, in time order: `None` once
@@ -216,9 +220,6 @@ where
                 continue;
             }
             let root = self.root(k, integrator)?;
-            // The inputs back as the step left them, at its end.
-            self.probe.clone_from(integrator.state());
-            integrator.set_inputs_at(t, &self.probe);
             if first.is_none_or(|(_, t_first)| root < t_first) {
                 first = Some((k, root));
             }
@@ -243,8 +244,10 @@ where
             self.at_event.clone_from(integrator.state());
         } else {
             integrator.interpolate(t_event, &mut self.at_event);
+        }
+        if self.inputs_moved || t_event < t {
             integrator.set_inputs_at(t_event, &self.at_event);
-            self.inputs_moved = true;
+            self.inputs_moved = t_event < t;
         }
         let model = integrator.model();
         // The search goes on from the event; functions that changed sign by then crossed at
@@ -253,11 +256,7 @@ where
         let event = self.crossed(k, t_event);
         for j in 0..self.functions.len() {
             self.evaluations += 1;
-            let g = (self.functions[j])(t_event, &self.at_event, model);
-            if g.is_nan() {
-                let component = format!("the event function `{}`", self.names[j]);
-                return Err(SimError::NonFinite { t: t_event, component });
-            }
+            let g = value(&mut self.functions[j], &self.names[j], t_event, &self.at_event, model)?;
             self.lo[j] = g;
             if j == k || g == 0.0 || g.signum() == self.signs[j] || self.signs[j] == 0.0 {
                 continue;
@@ -308,14 +307,9 @@ where
             }
             integrator.interpolate(c, &mut self.probe);
             integrator.set_inputs_at(c, &self.probe);
+            self.inputs_moved = true;
             self.evaluations += 1;
-            let fc = (self.functions[k])(c, &self.probe, integrator.model());
-            if fc.is_nan() {
-                return Err(SimError::NonFinite {
-                    t: c,
-                    component: format!("the event function `{}`", self.names[k]),
-                });
-            }
+            let fc = value(&mut self.functions[k], &self.names[k], c, &self.probe, integrator.model())?;
             if fc == 0.0 {
                 return Ok(c);
             }
@@ -335,6 +329,25 @@ where
         }
         Ok(b)
     }
+}
+
+/// The value of the event function `g` called `name` at `t`: an error naming it if it is
+/// NaN.
+fn value<M: LagrangeDirac>(
+    g: &mut EventFunction<'_, M>,
+    name: &str,
+    t: f64,
+    state: &State<M>,
+    model: &M,
+) -> Result<f64, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let g = g(t, state, model);
+    if g.is_nan() {
+        return Err(SimError::NonFinite { t, component: format!("the event function `{name}`") });
+    }
+    Ok(g)
 }
 
 /// What an event's action may do: read the event's time and state, reset the state, change

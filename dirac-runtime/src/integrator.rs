@@ -209,10 +209,24 @@ where
             reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
         });
     }
+    check_state(model, t0, state, tolerance)
+}
+
+/// What a start or a restart at `t` checks of the model and the state: finite parameters, a
+/// finite state, and one that satisfies the algebraic equations to `tolerance`.
+pub(crate) fn check_state<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    tolerance: f64,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
     check_parameters(model)?;
-    check_finite_state(model, t0, state)?;
-    match violated_equation(model, t0, state, tolerance) {
-        Some((equation, residual)) => Err(SimError::StateNotConsistent { t: t0, equation, residual }),
+    check_finite_state(model, t, state)?;
+    match violated_equation(model, t, state, tolerance) {
+        Some((equation, residual)) => Err(SimError::StateNotConsistent { t, equation, residual }),
         None => Ok(()),
     }
 }

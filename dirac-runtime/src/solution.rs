@@ -197,12 +197,11 @@ where
         &self.event_names[event.index]
     }
 
-    /// The times of the events called `name`, in order (empty for a name without events).
-    pub fn event_times(&self, name: &str) -> Vec<f64> {
-        let Some(index) = self.event_names.iter().position(|n| n == name) else {
-            return Vec::new();
-        };
-        self.events.iter().filter(|e| e.index == index).map(|e| e.t).collect()
+    /// The times of the events of the function called `name`, in order; `None` if no event
+    /// function has that name (an empty list if it has, and never crossed).
+    pub fn event_times(&self, name: &str) -> Option<Vec<f64>> {
+        let index = self.event_names.iter().position(|n| n == name)?;
+        Some(self.events.iter().filter(|e| e.index == index).map(|e| e.t).collect())
     }
 
     /// The number of samples.

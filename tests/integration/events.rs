@@ -49,8 +49,8 @@ fn a_bouncing_ball_touches_down_and_peaks_on_the_geometric_series() {
         .expect("integrates");
     let t1 = (2.0 * h0 / G).sqrt();
     let touchdown_at = |n: i32| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
-    let touchdowns = solution.event_times("touchdown");
-    let apexes = solution.event_times("apex");
+    let touchdowns = solution.event_times("touchdown").expect("an event function of that name");
+    let apexes = solution.event_times("apex").expect("an event function of that name");
     assert!(touchdowns.len() >= 8, "{} touchdowns", touchdowns.len());
     for (n, &t) in touchdowns.iter().enumerate() {
         let exact = touchdown_at(n as i32);
@@ -108,7 +108,11 @@ fn every_bounce_is_seen_however_long_the_steps_grow() {
         let expected = (0..60)
             .take_while(|&n| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>()) < t_end)
             .count();
-        assert_eq!(solution.event_times("touchdown").len(), expected, "up to {t_end}");
+        assert_eq!(
+            solution.event_times("touchdown").expect("an event function of that name").len(),
+            expected,
+            "up to {t_end}"
+        );
     }
     // Past the Zeno time, resets alone cannot go on: a typed error at t∞, not a hang.
     let mut events = Events::new().on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y));
@@ -195,10 +199,22 @@ fn crossings_count_in_the_direction_asked() {
     };
     let falling = [0.5 * PI, 2.5 * PI];
     let rising = [1.5 * PI, 3.5 * PI];
-    assert!(close(solution.event_times("falling"), &falling), "{:?}", solution.event_times("falling"));
-    assert!(close(solution.event_times("rising"), &rising), "{:?}", solution.event_times("rising"));
+    assert!(
+        close(solution.event_times("falling").expect("an event function of that name"), &falling),
+        "{:?}",
+        solution.event_times("falling").expect("an event function of that name")
+    );
+    assert!(
+        close(solution.event_times("rising").expect("an event function of that name"), &rising),
+        "{:?}",
+        solution.event_times("rising").expect("an event function of that name")
+    );
     let either = [0.5 * PI, 1.5 * PI, 2.5 * PI, 3.5 * PI];
-    assert!(close(solution.event_times("either"), &either), "{:?}", solution.event_times("either"));
+    assert!(
+        close(solution.event_times("either").expect("an event function of that name"), &either),
+        "{:?}",
+        solution.event_times("either").expect("an event function of that name")
+    );
     let directions: Vec<Crossing> =
         solution.events().iter().filter(|e| e.index == 2).map(|e| e.crossing).collect();
     assert_eq!(directions, [Crossing::Falling, Crossing::Rising, Crossing::Falling, Crossing::Rising]);
@@ -387,8 +403,12 @@ fn a_rolling_disk_hits_a_wall_on_its_nonholonomic_constraints() {
         .expect("integrates");
     let speed = r * phi0.cos() * omega;
     let (t_wall, t_back) = (w / speed, w / speed + w / (e * speed));
-    assert!(relative(solution.event_times("wall")[0], t_wall) < 1e-10);
-    assert!(relative(solution.event_times("back")[0], t_back) < 1e-10);
+    assert!(
+        relative(solution.event_times("wall").expect("an event function of that name")[0], t_wall) < 1e-10
+    );
+    assert!(
+        relative(solution.event_times("back").expect("an event function of that name")[0], t_back) < 1e-10
+    );
     let y_back = *solution.q(RollingDisk::Y).last().expect("a sample");
     assert!(y_back.abs() < 1e-9, "the disk came back along its line: y = {y_back}");
     assert!(solution.constraint_residual().iter().all(|&c| c < 1e-9));
@@ -414,7 +434,7 @@ fn the_variational_integrator_locates_events_between_its_steps() {
         .expect("integrates");
     let t1 = (2.0 * h0 / G).sqrt();
     let (mut t_exact, mut bound) = (t1, 0.0);
-    let touchdowns = solution.event_times("touchdown");
+    let touchdowns = solution.event_times("touchdown").expect("an event function of that name");
     assert!(touchdowns.len() >= 5);
     for (n, &t) in touchdowns.iter().enumerate() {
         let speed = G * t1 * e.powi(n as i32);
@@ -466,7 +486,7 @@ fn the_variational_integrator_restarts_at_impacts_on_a_constrained_model() {
             ControlFlow::Continue(())
         })
         .expect("integrates");
-    let impacts = solution.event_times("wall");
+    let impacts = solution.event_times("wall").expect("an event function of that name");
     assert!(impacts.len() >= 3, "{} impacts", impacts.len());
     assert!(solution.holonomic_residual().iter().all(|&r| r < 1e-10));
     // The energy above the bottom, just after each impact (the sample after the reset).
@@ -506,11 +526,48 @@ fn an_event_on_a_driven_input_is_located_where_the_input_crosses() {
         .expect("integrates");
     let rise = 0.5f64.asin() / 1.3;
     let exact = [rise, PI / 1.3 - rise];
-    let found = solution.event_times("half");
+    let found = solution.event_times("half").expect("an event function of that name");
     assert_eq!(found.len(), 2, "{found:?}");
     for (t, t_exact) in found.iter().zip(exact) {
         assert!((t - t_exact).abs() < 1e-12, "{t} against {t_exact}");
     }
     // The action saw the input at the event.
     assert!(inputs.iter().all(|f| (f - 0.5).abs() < 1e-12), "{inputs:?}");
+}
+
+/// Bad use ends in typed errors: two event functions of one name, an action that resets the
+/// state to NaN, a name that is no event function's; an infinite event function is located
+/// by bisection.
+#[test]
+fn bad_events_and_actions_end_in_typed_errors() {
+    let ball = Ball { m: 1.0, g: G };
+    let y = |_: f64, s: &State<Ball>, _: &Ball| s.q(Ball::Y) - 0.5;
+    let mut twice = Events::new().on("y", Crossing::Falling, y).on("y", Crossing::Rising, y);
+    let mut radau = Radau::new(&ball, RadauOptions::default()).expect("valid options");
+    let go_on = |_: &dirac::Event, _: &mut dirac::EventContext<'_, Ball, _>| ControlFlow::Continue(());
+    let error = radau
+        .solve_with_events(0.0, &dropped(1.0), 1.0, &Sampling::Steps, &mut twice, go_on)
+        .expect_err("names clash");
+    assert!(matches!(&error, SimError::InvalidOption { reason, .. } if reason.contains("`y`")), "{error:?}");
+
+    let mut events = Events::new().on("half way", Crossing::Falling, y);
+    let error = radau
+        .solve_with_events(0.0, &dropped(1.0), 1.0, &Sampling::Steps, &mut events, |_, at| {
+            at.state_mut().set_v(Ball::Y, f64::NAN);
+            ControlFlow::Continue(())
+        })
+        .expect_err("a NaN velocity");
+    assert!(matches!(error, SimError::NonFinite { .. }), "{error:?}");
+
+    // +∞ above the mark, −∞ below: the crossing is still found, by bisection.
+    let mut infinite = Events::new().on("step", Crossing::Falling, |_, s: &State<Ball>, _| {
+        if s.q(Ball::Y) > 0.5 { f64::INFINITY } else { f64::NEG_INFINITY }
+    });
+    let solution = radau
+        .solve_with_events(0.0, &dropped(1.0), 1.0, &Sampling::Steps, &mut infinite, go_on)
+        .expect("integrates");
+    let t = solution.event_times("step").expect("an event function of that name");
+    assert_eq!(t.len(), 1);
+    assert!(relative(t[0], (1.0 / G).sqrt()) < 1e-12, "{t:?}");
+    assert!(solution.event_times("stpe").is_none());
 }

@@ -36,7 +36,7 @@ use crate::dims::{Storage, VecY};
 use crate::error::SimError;
 use crate::held::Held;
 use crate::integrator::{
-    Integrator, check_restart, check_start, check_within_last_step, constraint_violation,
+    Integrator, check_restart, check_start, check_state, check_within_last_step, constraint_violation,
 };
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
@@ -421,7 +421,7 @@ where
 
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
         check_within_last_step(t, self.t - self.dense.h, self.t)?;
-        check_start(self.model.get(), t, state, self.t_end.max(t + 1.0), self.options.rtol.max(1e-8))?;
+        check_state(self.model.get(), t, state, self.options.rtol.max(1e-8))?;
         self.changed_from = None;
         state.write_y(&mut self.y);
         self.state.clone_from(state);

@@ -45,7 +45,7 @@ use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
 use crate::held::Held;
 use crate::integrator::{
-    Integrator, check_restart, check_start, check_within_last_step, constraint_violation,
+    Integrator, check_restart, check_start, check_state, check_within_last_step, constraint_violation,
 };
 use crate::model::LagrangeDirac;
 use crate::projection::Projector;
@@ -283,7 +283,7 @@ where
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
         let t_previous = if self.taken == 0 { self.t0 } else { self.time_after(self.taken - 1) };
         check_within_last_step(t, t_previous, self.t)?;
-        check_start(self.model.get(), t, state, self.t_end.max(t + 1.0), 1e-8)?;
+        check_state(self.model.get(), t, state, 1e-8)?;
         self.changed_from = None;
         self.state.clone_from(state);
         self.work.big_lambda.fill(0.0);
