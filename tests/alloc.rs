@@ -355,3 +355,40 @@ fn locating_events_on_driven_inputs_does_not_allocate() {
     // sin(1.3 t) = ½ twice per period 2π/1.3 over 20: at 0.40 + 4.83 k and 2.01 + 4.83 k.
     assert_eq!(located, 9);
 }
+
+/// An elastic wall at `x = ½` for the oscillator, handled by hand: the velocity reversed at
+/// each impact and the integrator restarted there, on its grid. The variational integrator
+/// takes a step of its own to each trial time (its discrete flow); neither that nor the
+/// restart allocates.
+#[test]
+fn restarting_at_impacts_does_not_allocate() {
+    let model = Oscillator { m: 1.0, k: 1.0 };
+    // x = sin t until the wall.
+    let mut start = State::<Oscillator>::zeros();
+    start.set_v(Oscillator::X, 1.0).set_p(Oscillator::X, 1.0);
+    let mut events =
+        dirac::Events::new()
+            .on("wall", dirac::Crossing::Falling, |_, s: &State<Oscillator>, _| 0.5 - s.q(Oscillator::X));
+    let mut variational = Variational::new(&model, 1e-2, VariationalOptions::default()).expect("valid step");
+    variational.start(0.0, &start, 40.0).expect("starts");
+    let mut reflected = start.clone();
+    events.begin(variational.model(), 0.0, &start).expect("begins");
+    let before = allocations();
+    let mut impacts = 0;
+    while !variational.finished() {
+        variational.step().expect("steps");
+        while let Some(event) = events.locate(&mut variational).expect("locates") {
+            impacts += 1;
+            reflected.clone_from(events.state());
+            let (v, p) = (reflected.v(Oscillator::X), reflected.p(Oscillator::X));
+            reflected.set_v(Oscillator::X, -v).set_p(Oscillator::X, -p);
+            variational.restart_at(event.t, &reflected).expect("restarts");
+            events.resume(variational.model(), event.t, &reflected).expect("resumes");
+        }
+    }
+    assert_eq!(allocations() - before, 0);
+    // x = sin t reaches the wall at π/6; reflected there, it comes back after the rest of its
+    // period, 2π − 2π/3: 10 impacts by t = 40.
+    let period = 4.0 * std::f64::consts::FRAC_PI_3;
+    assert_eq!(impacts, ((40.0 - std::f64::consts::FRAC_PI_6) / period).floor() as usize + 1);
+}

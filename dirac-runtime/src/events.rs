@@ -243,7 +243,7 @@ where
         if t_event >= t {
             self.at_event.clone_from(integrator.state());
         } else {
-            integrator.interpolate(t_event, &mut self.at_event);
+            integrator.state_at(t_event, &mut self.at_event)?;
         }
         if self.inputs_moved || t_event < t {
             integrator.set_inputs_at(t_event, &self.at_event);
@@ -305,7 +305,7 @@ where
                     break;
                 }
             }
-            integrator.interpolate(c, &mut self.probe);
+            integrator.state_at(c, &mut self.probe)?;
             integrator.set_inputs_at(c, &self.probe);
             self.inputs_moved = true;
             self.evaluations += 1;

@@ -146,6 +146,15 @@ where
     /// Writes the state at time `t` within the last step into `out`.
     fn interpolate(&self, t: f64, out: &mut State<M>);
 
+    /// Writes the state at time `t` within the last step into `out` as the method itself would
+    /// reach it, which is where events are located: the dense output by default (Radau's is
+    /// its collocation polynomial); the variational integrator takes a step of its own to `t`
+    /// from the step's start, so that an impact time is solved on the discrete flow.
+    fn state_at(&self, t: f64, out: &mut State<M>) -> Result<(), SimError> {
+        self.interpolate(t, out);
+        Ok(())
+    }
+
     /// The work done since the last [`Integrator::start`].
     fn stats(&self) -> Self::Stats;
 

@@ -10,7 +10,7 @@ use std::ops::ControlFlow;
 use dirac::prelude::*;
 use dirac::{Crossing, Events};
 
-use crate::zoo::{Ball, ForcedSpring, Oscillator, Pendulum, RollingDisk};
+use crate::zoo::{Ball, ForcedSpring, Oscillator, Pendulum, RollingDisk, Well};
 
 const G: f64 = 9.81;
 
@@ -414,13 +414,12 @@ fn a_rolling_disk_hits_a_wall_on_its_nonholonomic_constraints() {
     assert!(solution.constraint_residual().iter().all(|&c| c < 1e-9));
 }
 
-/// The variational integrator locates events on its interpolation between steps (linear,
-/// projected). The ball's positions and velocities are exact at the steps (velocity Verlet
-/// under a constant force), so a touchdown is located within the interpolation's error,
-/// `g h² / 8` over the speed; the reset velocity then carries the time's error on, which
-/// grows the next flight's by `2e` times it. The bound sums both.
+/// The variational integrator locates events on its discrete flow: a step of the method
+/// from the step's start to the trial time. Under a constant force that flow is exact
+/// (velocity Verlet integrates parabolas exactly, at every step size), so the touchdowns
+/// agree with the geometric series to round-off, as Radau's do.
 #[test]
-fn the_variational_integrator_locates_events_between_its_steps() {
+fn the_variational_integrator_locates_events_on_its_discrete_flow() {
     let (h0, e, h) = (1.0, 0.8, 1e-3);
     let ball = Ball { m: 1.0, g: G };
     let mut events = Events::new().on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y));
@@ -433,16 +432,12 @@ fn the_variational_integrator_locates_events_between_its_steps() {
         })
         .expect("integrates");
     let t1 = (2.0 * h0 / G).sqrt();
-    let (mut t_exact, mut bound) = (t1, 0.0);
     let touchdowns = solution.event_times("touchdown").expect("an event function of that name");
     assert!(touchdowns.len() >= 5);
     for (n, &t) in touchdowns.iter().enumerate() {
-        let speed = G * t1 * e.powi(n as i32);
-        bound = bound * (1.0 + 2.0 * e) + G * h * h / 8.0 / speed;
-        assert!((t - t_exact).abs() < bound, "touchdown {n}: {t} against {t_exact} (bound {bound:e})");
-        t_exact += 2.0 * t1 * e.powi(n as i32 + 1);
+        let exact = t1 * (1.0 + 2.0 * (1..=n as i32).map(|k| e.powi(k)).sum::<f64>());
+        assert!(relative(t, exact) < 1e-10, "touchdown {n}: {t} against {exact}");
     }
-    assert!(bound < 1e-4);
 }
 
 /// A restart moves back only within the last step, and only to a consistent state.
@@ -570,4 +565,70 @@ fn bad_events_and_actions_end_in_typed_errors() {
     assert_eq!(t.len(), 1);
     assert!(relative(t[0], (1.0 / G).sqrt()) < 1e-12, "{t:?}");
     assert!(solution.event_times("stpe").is_none());
+}
+
+/// A particle in an anharmonic well inside a box of half-width `a`, reflected elastically by
+/// its four walls.
+fn particle_in_a_box(a: f64) -> (Well, State<Well>, Events<'static, Well>) {
+    let model = Well { m: 1.0, k: 1.0, c: 2.0 };
+    let mut start = State::<Well>::zeros();
+    start.set_q(Well::X, 0.2).set_q(Well::Y, -0.1).set_v(Well::X, 1.1).set_v(Well::Y, 0.7);
+    start.set_p(Well::X, 1.1).set_p(Well::Y, 0.7);
+    let events = Events::new()
+        .on("left", Crossing::Falling, move |_, s: &State<Well>, _| s.q(Well::X) + a)
+        .on("right", Crossing::Falling, move |_, s: &State<Well>, _| a - s.q(Well::X))
+        .on("bottom", Crossing::Falling, move |_, s: &State<Well>, _| s.q(Well::Y) + a)
+        .on("top", Crossing::Falling, move |_, s: &State<Well>, _| a - s.q(Well::Y));
+    (model, start, events)
+}
+
+/// The elastic law at the walls of [`particle_in_a_box`]: the normal velocity reversed.
+fn reflect<I: Integrator<Well>>(
+    event: &dirac::Event,
+    at: &mut dirac::EventContext<'_, Well, I>,
+) -> ControlFlow<()> {
+    let s = at.state_mut();
+    let key = if event.index < 2 { Well::X } else { Well::Y };
+    let (v, p) = (s.v(key), s.p(key));
+    s.set_v(key, -v).set_p(key, -p);
+    ControlFlow::Continue(())
+}
+
+/// The energy error `E − E0` of a solution: its largest size over the first and the last
+/// tenth of the samples, and its mean over each.
+fn energy_error_by_tenths<S>(solution: &Solution<Well, S>) -> ([f64; 2], [f64; 2]) {
+    let e = solution.energy();
+    let tenth = e.len() / 10;
+    let parts = [&e[..tenth], &e[e.len() - tenth..]];
+    let largest = parts.map(|part| part.iter().map(|x| (x - e[0]).abs()).fold(0.0, f64::max));
+    let mean = parts.map(|part| part.iter().map(|x| x - e[0]).sum::<f64>() / tenth as f64);
+    (largest, mean)
+}
+
+/// Over 10⁴ elastic impacts the variational integrator's energy error stays bounded: an
+/// impact is located on the discrete flow (a step of the method to it) and the step after it
+/// ends on the grid, so the map across an impact is as symmetric in time as the method. The
+/// reference is the energy at the start, which the walls and the flow keep exactly. Measured:
+/// 2.8e-5 over the first tenth and 2.9e-5 over the last at h = 0.01 (both 4× smaller at
+/// h/2, the method's second order); restarting the grid at each impact instead drifts by
+/// 1.3e-4, and locating impacts on the linear interpolation by 0.2.
+#[test]
+fn an_elastic_particle_in_a_box_keeps_its_energy_over_ten_thousand_impacts() {
+    let (model, start, mut events) = particle_in_a_box(0.5);
+    let mut variational = Variational::new(&model, 0.01, VariationalOptions::default()).expect("valid step");
+    let solution = variational
+        .solve_with_events(0.0, &start, 6000.0, &Sampling::Every(1.0), &mut events, reflect)
+        .expect("integrates");
+    let impacts: usize = ["left", "right", "bottom", "top"]
+        .iter()
+        .map(|w| solution.event_times(w).expect("a wall").len())
+        .sum();
+    assert!(impacts >= 10_000, "{impacts} impacts");
+    let ([first, last], [mean_first, mean_last]) = energy_error_by_tenths(&solution);
+    assert!(first < 5e-5 && last < 5e-5, "energy errors {first:e} and {last:e}");
+    assert!(last < 1.5 * first, "the energy error grew from {first:e} to {last:e}");
+    assert!(
+        (mean_last - mean_first).abs() < 0.2 * first,
+        "the energy drifted from {mean_first:e} to {mean_last:e}"
+    );
 }

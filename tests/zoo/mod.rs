@@ -663,3 +663,14 @@ pub struct Oscillator {
     pub m: f64,
     pub k: f64,
 }
+
+/// A particle in an anharmonic well, `V = ½ k (x² + y²) + c x² y²`, whose coupling makes
+/// its motion irregular: the particle of a billiard with a potential.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - 0.5 * k * (x * x + y * y) - c * x * x * y * y)]
+pub struct Well {
+    pub m: f64,
+    pub k: f64,
+    pub c: f64,
+}

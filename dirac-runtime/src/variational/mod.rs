@@ -23,6 +23,15 @@
 //! Lagrangian `½ vᵀ M v − V(q)` without constraints the step is velocity Verlet; with
 //! holonomic constraints it is RATTLE.
 //!
+//! Events are located on the discrete flow: the state at a time within a step is a step of
+//! the method to that time ([`Integrator::state_at`]), so an impact time is solved within the
+//! step, on the trajectory the method takes. A restart there (an impact's reset) keeps the
+//! grid: the step after it ends where the interrupted one would have, so the map across an
+//! impact (a step `αh` to it, the rest `(1 − α)h` after it) is as symmetric in time as the
+//! method, and the energy error stays bounded over many elastic impacts (a collision
+//! integrator in the sense of Fetecau, Marsden, Ortiz and West 2003, with the impact law left
+//! to the event's action).
+//!
 //! Each stage is a Newton iteration on a system of size `n + m`, the size of the condensed
 //! systems of the design notes, factored on the stack (`general`); separable models take a
 //! shortcut through `m × m` systems (`separable`). A step allocates nothing.
@@ -61,6 +70,8 @@ where
     options: VariationalOptions,
     t0: f64,
     t: f64,
+    /// The start of the last step (the start, or the restart, before the first).
+    t_previous: f64,
     t_end: f64,
     /// Steps taken since the start, and the number that reaches the end time.
     taken: usize,
@@ -78,6 +89,9 @@ where
     mass: Option<Mass<M>>,
     /// Puts interpolated samples back on the constraints.
     projector: RefCell<Projector<M>>,
+    /// The state and work space of steps to times within the last step
+    /// ([`Integrator::state_at`]), apart from the integration's own.
+    probe: RefCell<(State<M>, Work<M>, VariationalStats)>,
     sizes: Sizes,
     stats: VariationalStats,
     /// How far the state was from the constraints when the model was last handed out for a
@@ -104,12 +118,15 @@ where
         options.validate()?;
         let sizes = model.sizes();
         let (work, projector) = (Work::new(model.get()), RefCell::new(Projector::new(model.get())));
+        let probe =
+            RefCell::new((State::with_sizes(sizes), Work::new(model.get()), VariationalStats::default()));
         Ok(Variational {
             model,
             h,
             options,
             t0: 0.0,
             t: 0.0,
+            t_previous: 0.0,
             t_end: 0.0,
             taken: 0,
             total: 0,
@@ -119,6 +136,7 @@ where
             work,
             mass: None,
             projector,
+            probe,
             sizes,
             stats: VariationalStats::default(),
             changed_from: None,
@@ -136,9 +154,18 @@ where
     fn begin(&mut self, t0: f64, t_end: f64) -> Result<(), SimError> {
         self.total = self.steps_to(t0, t_end)?;
         self.taken = 0;
-        self.t = t0;
         self.t0 = t0;
         self.t_end = t_end;
+        self.rebase(t0);
+        Ok(())
+    }
+
+    /// Carries on from `self.state` at `t` on the present grid: the energy reference and the
+    /// work of the forces start again, and a separable model's mass matrix is factored again
+    /// (a change of the model may have changed it).
+    fn rebase(&mut self, t0: f64) {
+        self.t = t0;
+        self.t_previous = t0;
         self.work.work = 0.0;
         self.work.midpoint.1 = 0.0;
         let model = self.model.get();
@@ -152,7 +179,20 @@ where
             self.mass = M::Algebra::dense_qq(lvv).and_then(|matrix| Mass::new(&self.sizes, matrix));
             model.dl_dq(t0, &s.q, &s.v, &mut self.work.dl_dq);
         }
-        Ok(())
+    }
+
+    /// The size of the next step and how many grid intervals it closes: one, to the next
+    /// grid point (the end time after the last); after a restart between grid points, the
+    /// rest of the interval, joined to the next one when it is shorter than a millionth of
+    /// a step.
+    fn next_step(&self) -> (f64, usize) {
+        let k = self.taken;
+        if self.t == self.time_after(k) {
+            return (if k + 1 == self.total { self.t_end - self.t } else { self.h }, 1);
+        }
+        let short = k + 2 <= self.total && self.time_after(k + 1) - self.t < 1e-6 * self.h;
+        let intervals = if short { 2 } else { 1 };
+        (self.time_after(k + intervals) - self.t, intervals)
     }
 
     /// The multipliers at the end of a step of size `h`. Each of the impulses `Λ` and `Γ` alone
@@ -281,8 +321,7 @@ where
     }
 
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
-        let t_previous = if self.taken == 0 { self.t0 } else { self.time_after(self.taken - 1) };
-        check_within_last_step(t, t_previous, self.t)?;
+        check_within_last_step(t, self.t_previous, self.t)?;
         check_state(self.model.get(), t, state, 1e-8)?;
         self.changed_from = None;
         self.state.clone_from(state);
@@ -290,10 +329,18 @@ where
         self.work.gamma.fill(0.0);
         if t >= self.t_end {
             // At the end time: nothing is left to step.
-            (self.t, self.t0, self.taken, self.total) = (t, t, 0, 0);
+            (self.t, self.t_previous, self.t0, self.taken, self.total) = (t, t, t, 0, 0);
             return Ok(());
         }
-        self.begin(t, self.t_end)
+        // The grid stays: the next step ends where the last one did. Across an impact the map
+        // is then a step αh to it and the rest, (1 − α)h, after it, which is as symmetric in
+        // time as the method itself; restarting the grid at the impact instead makes the
+        // energy drift over many impacts.
+        if t < self.t {
+            self.taken -= 1;
+        }
+        self.rebase(t);
+        Ok(())
     }
 
     fn end(&self) -> f64 {
@@ -303,8 +350,8 @@ where
     /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
     /// returns its size.
     fn step(&mut self) -> Result<f64, SimError> {
-        let last = self.taken + 1 == self.total;
-        let h = if last { self.t_end - self.t } else { self.h };
+        let (h, intervals) = self.next_step();
+        self.t_previous = self.t;
         self.previous.clone_from(&self.state);
         self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
         self.work.v.copy_from(&self.state.v);
@@ -330,8 +377,8 @@ where
         }
         self.state.q.axpy(h, &self.work.v, 1.0);
         self.stats.steps += 1;
-        self.taken += 1;
-        self.t = if last { self.t_end } else { self.t0 + self.taken as f64 * self.h };
+        self.taken += intervals;
+        self.t = self.time_after(self.taken);
         self.update_multipliers(h);
         let s = &self.state;
         // An index loop: the chained iterators of nalgebra cost more than the step itself.
@@ -365,7 +412,7 @@ where
     /// velocities onto `A(q, t) v + b(q, t) = 0`, each by the smallest correction), momenta from the
     /// Legendre map, multipliers interpolated.
     fn interpolate(&self, t: f64, out: &mut State<M>) {
-        let t_previous = if self.taken == 0 { self.t0 } else { self.time_after(self.taken - 1) };
+        let t_previous = self.t_previous;
         let s = (t - t_previous) / (self.t - t_previous);
         let parts = out.components_mut().zip(self.previous.components().zip(self.state.components()));
         for (x, (a, b)) in parts {
@@ -375,6 +422,47 @@ where
             self.projector.borrow_mut().project(self.model.get(), t, &mut out.q, &mut out.v);
         }
         self.model.get().dl_dv(t, &out.q, &out.v, &mut out.p);
+    }
+
+    /// A step of the method from the last step's start to `t`: the discrete flow, on which
+    /// events are located, so that an impact lies on the trajectory the integrator would
+    /// have taken (the impact time solved within the step) and a restart there carries on
+    /// the method's energy behaviour instead of an interpolation's error.
+    fn state_at(&self, t: f64, out: &mut State<M>) -> Result<(), SimError> {
+        let t_previous = self.t_previous;
+        let (h, h_last) = (t - t_previous, self.t - t_previous);
+        if h <= 0.0 || h >= h_last {
+            out.clone_from(if h <= 0.0 { &self.previous } else { &self.state });
+            return Ok(());
+        }
+        let model = self.model.get();
+        let mut probe = self.probe.borrow_mut();
+        let (state, work, stats) = &mut *probe;
+        state.clone_from(&self.previous);
+        model.constraint_matrix(t_previous, &state.q, &mut work.a0);
+        work.v.copy_from(&state.v);
+        // The last step's impulses, scaled to the shorter step, start Newton.
+        let share = h / h_last;
+        work.big_lambda.copy_from(&self.work.big_lambda);
+        work.big_lambda *= share;
+        work.gamma.copy_from(&self.work.gamma);
+        work.gamma *= share;
+        let mut step = Step { model, h, t: t_previous, options: &self.options, state, work, stats };
+        match &self.mass {
+            Some(mass) => {
+                model.dl_dq(t_previous, &step.state.q, &step.state.v, &mut step.work.dl_dq);
+                separable_step(&mut step, mass)?;
+            }
+            None => general_step(&mut step)?,
+        }
+        state.q.axpy(h, &work.v, 1.0);
+        out.q.copy_from(&state.q);
+        out.v.copy_from(&state.v);
+        out.p.copy_from(&state.p);
+        // The multipliers as the interpolation has them.
+        out.lambda.copy_from(&self.previous.lambda);
+        out.lambda.axpy(share, &self.state.lambda, 1.0 - share);
+        Ok(())
     }
 
     fn stats(&self) -> VariationalStats {
