@@ -55,10 +55,10 @@ extern crate self as dirac;
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
     Algebra, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel, Dimensions, DiracStructure,
-    Equations, ErrorNorm, Event, EventContext, Events, Fixed, Held, Input, Integrator, JacobianBlocks,
-    LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ, MatYY, Membership, Named, Names,
-    OperationCounts, Output, Radau, RadauOptions, RadauStats, ResidualBlocks, Sampling, SimError, Sizes,
-    Slot, Solution, SolveWithEvents, SparseJacobian, State, Storage, Variational, VariationalOptions,
+    Equations, ErrorNorm, Event, EventContext, Events, Fixed, Held, Impact, Input, Integrator,
+    JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ, MatYY, Membership, Named,
+    Names, OperationCounts, Output, Radau, RadauOptions, RadauStats, ResidualBlocks, Sampling, SimError,
+    Sizes, Slot, Solution, SolveWithEvents, SparseJacobian, State, Storage, Variational, VariationalOptions,
     VariationalStats, VecC, VecH, VecK, VecQ, VecY, consistent_state, linearize,
 };
 

@@ -392,3 +392,29 @@ fn restarting_at_impacts_does_not_allocate() {
     let period = 4.0 * std::f64::consts::FRAC_PI_3;
     assert_eq!(impacts, ((40.0 - std::f64::consts::FRAC_PI_6) / period).floor() as usize + 1);
 }
+
+/// The event functions of declared contacts evaluate the model's unilateral constraints into
+/// storage made when they are added: watching them allocates nothing. (The impact law at an
+/// event solves a small system on the heap, once per impact, as a reset does.)
+#[test]
+fn watching_contacts_does_not_allocate() {
+    let ball = BouncingBall { m: 1.0, g: 9.81, e: 0.5 };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let mut events = dirac::Events::new().contacts(&ball);
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    events.begin(radau.model(), 0.0, &start).expect("begins");
+    let mut located = Vec::with_capacity(4);
+    let before = allocations();
+    while !radau.finished() {
+        radau.step().expect("steps");
+        while let Some(event) = events.locate(&mut radau).expect("locates") {
+            located.push(event.t);
+        }
+    }
+    assert_eq!(allocations() - before, 0);
+    // Left alone, the ball passes the floor once, at √(2 h / g).
+    assert_eq!(located.len(), 1);
+    assert!((located[0] - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
+}

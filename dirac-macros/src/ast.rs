@@ -9,7 +9,7 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 use crate::ctxt::Ctxt;
 use crate::symbol::{
     CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT,
-    PORT, PORTS,
+    PORT, PORTS, RESTITUTION, UNILATERAL,
 };
 
 /// A model as written by the user.
@@ -30,6 +30,8 @@ pub struct Model<'a> {
     pub defines: Vec<DefineDecl>,
     /// `output(name) = expr`, in the order written.
     pub outputs: Vec<DefineDecl>,
+    /// `unilateral(name, restitution = e) = expr`, in the order written.
+    pub unilaterals: Vec<UnilateralDecl>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
@@ -75,6 +77,14 @@ pub struct DefineDecl {
     pub expr: Expr,
 }
 
+/// `unilateral(name) = expr` or `unilateral(name, restitution = e) = expr`: the contact
+/// `φ(q, t) ≥ 0`.
+pub struct UnilateralDecl {
+    pub name: Ident,
+    pub restitution: Option<Expr>,
+    pub expr: Expr,
+}
+
 /// `force(x) = expr`.
 pub struct ForceDecl {
     pub coordinate: Ident,
@@ -92,6 +102,7 @@ impl<'a> Model<'a> {
             ports: Vec::new(),
             inputs: Vec::new(),
             outputs: Vec::new(),
+            unilaterals: Vec::new(),
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
@@ -229,6 +240,7 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 let list = if key == DEFINE { &mut model.defines } else { &mut model.outputs };
                 list.push(DefineDecl { name, expr });
             }
+            UNILATERAL => model.unilaterals.push(parse_unilateral(input)?),
             FORCE => {
                 let content;
                 syn::parenthesized!(content in input);
@@ -276,6 +288,32 @@ fn parse_coordinates(model: &mut Model<'_>, input: ParseStream) -> syn::Result<(
     }
     model.coordinates.extend(decls);
     Ok(())
+}
+
+/// `(name) = expr` or `(name, restitution = e) = expr`, after `unilateral`.
+fn parse_unilateral(input: ParseStream) -> syn::Result<UnilateralDecl> {
+    let content;
+    syn::parenthesized!(content in input);
+    let name = content.parse::<Ident>()?.unraw();
+    let mut restitution = None;
+    if !content.is_empty() {
+        content.parse::<Token![,]>()?;
+        let key = content.call(Ident::parse_any)?;
+        if key != RESTITUTION {
+            return Err(syn::Error::new(
+                key.span(),
+                format!("unknown option `{key}` of a unilateral constraint; expected `{RESTITUTION} = e`"),
+            ));
+        }
+        content.parse::<Token![=]>()?;
+        restitution = Some(content.parse::<Expr>()?);
+        if !content.is_empty() {
+            return Err(content.error(format!("expected `{UNILATERAL}(name, {RESTITUTION} = e) = expr`")));
+        }
+    }
+    input.parse::<Token![=]>()?;
+    let expr: Expr = input.parse()?;
+    Ok(UnilateralDecl { name, restitution, expr })
 }
 
 fn parse_optional_name(input: ParseStream) -> syn::Result<Option<Ident>> {

@@ -72,6 +72,10 @@ pub struct Blocks {
     pub output_dq: Matrix,
     pub output_dv: Matrix,
     pub output_du: Matrix,
+    /// The unilateral constraints `φ_u(q, t)`, their rows `∂φ_u/∂q` and restitutions.
+    pub unilateral: Vec<Id>,
+    pub unilateral_dq: Matrix,
+    pub restitution: Vec<Id>,
 }
 
 /// `[∂e/∂x for x in wrt]`.
@@ -156,6 +160,9 @@ impl Blocks {
         let (output_dq, output_dv, output_du) =
             (jacobian(g, &outputs, &q), jacobian(g, &outputs, &v), jacobian(g, &outputs, &inputs));
         let dav_dt = a_v.iter().map(|&c| g.diff(c, time)).collect();
+        let unilateral: Vec<Id> = m.unilaterals.iter().map(|u| u.phi).collect();
+        let unilateral_dq = jacobian(g, &unilateral, &q);
+        let restitution = m.unilaterals.iter().map(|u| u.restitution).collect();
         Blocks {
             lagrangian,
             dl_dq,
@@ -187,6 +194,9 @@ impl Blocks {
             output_dq,
             output_dv,
             output_du,
+            unilateral,
+            unilateral_dq,
+            restitution,
         }
     }
 }

@@ -36,7 +36,8 @@ fn check_required(cx: &Ctxt, model: &Model<'_>) {
     }
 }
 
-/// Parameters, coordinates, velocities, constraint names, definitions and outputs share one namespace,
+/// Parameters, coordinates, velocities, constraint names, definitions, outputs and unilateral
+/// constraints share one namespace,
 /// without `t`.
 fn check_names(cx: &Ctxt, model: &Model<'_>) {
     let mut seen: HashMap<String, &'static str> = HashMap::new();
@@ -79,6 +80,9 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
     }
     for o in &model.outputs {
         declare(&o.name, "output");
+    }
+    for u in &model.unilaterals {
+        declare(&u.name, "unilateral constraint");
     }
 }
 

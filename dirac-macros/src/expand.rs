@@ -292,6 +292,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
     let h = proc_macro2::Literal::usize_unsuffixed(sym.h());
     let inputs = inputs.iter().map(ToString::to_string);
     let outputs = sym.outputs.iter().map(|(name, _)| name);
+    let unilaterals = sym.unilaterals.iter().map(|u| &u.name);
     quote! {
         #[automatically_derived]
         impl #p::Named for #ident {
@@ -303,6 +304,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
                 ports: &[#(#ports),*],
                 inputs: &[#(#inputs),*],
                 outputs: &[#(#outputs),*],
+                unilaterals: &[#(#unilaterals),*],
                 subsystems: &[],
             };
         }
@@ -347,6 +349,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 ports: &[],
                 inputs: &[],
                 outputs: &[],
+                unilaterals: &[],
                 subsystems: &[],
             };
         }

@@ -47,6 +47,15 @@ pub struct SymModel {
     pub outputs: Vec<(String, Id)>,
     /// The parameter symbols that are inputs, in the order declared.
     pub inputs: Vec<Id>,
+    /// `unilateral(name, restitution = e) = φ`: each name with `φ(q, t)` and `e`, in order.
+    pub unilaterals: Vec<Unilateral>,
+}
+
+/// A unilateral constraint `φ(q, t) ≥ 0` with its coefficient of restitution.
+pub struct Unilateral {
+    pub name: String,
+    pub phi: Id,
+    pub restitution: Id,
 }
 
 impl SymModel {
@@ -91,6 +100,7 @@ impl SymModel {
             defines: Vec::new(),
             outputs: Vec::new(),
             inputs: Vec::new(),
+            unilaterals: Vec::new(),
         };
         let mut scope = sm.declare_symbols();
         for u in &model.inputs {
@@ -124,8 +134,52 @@ impl SymModel {
             let lowered = sm.lowerer(cx, &with_multipliers).lower(&o.expr, Context { what: &what, ..all });
             sm.outputs.push((o.name.to_string(), lowered.unwrap_or(zero)));
         }
+        sm.lower_unilaterals(cx, model, &scope);
         sm.lagrangian = lagrangian?;
         (!cx.has_errors()).then_some(sm)
+    }
+
+    /// Lowers each `unilateral(name, restitution = e) = φ`: `φ` of the coordinates and time,
+    /// `e` of the parameters (1 when not given).
+    fn lower_unilaterals(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) {
+        for u in &model.unilaterals {
+            let what = format!("unilateral constraint `{}`", u.name);
+            let ctx = Context { what: &what, velocities: false };
+            let Some(phi) = self.lowerer(cx, scope).lower(&u.expr, ctx) else { continue };
+            let q = self.q.clone();
+            if q.iter().all(|&x| {
+                let d = self.graph.diff(phi, x);
+                self.graph.is_zero(d)
+            }) {
+                cx.error_spanned_by(&u.expr, format!("{what} does not depend on any coordinate"));
+                continue;
+            }
+            let restitution = match &u.restitution {
+                None => self.graph.num(1.0),
+                Some(e) => {
+                    let what = format!("the restitution of unilateral constraint `{}`", u.name);
+                    let Some(e_id) =
+                        self.lowerer(cx, scope).lower(e, Context { what: &what, velocities: false })
+                    else {
+                        continue;
+                    };
+                    let time = self.symbols.declare(&mut self.graph, Sym::Time);
+                    let on_state = q.iter().chain([&time]).any(|&x| {
+                        let d = self.graph.diff(e_id, x);
+                        !self.graph.is_zero(d)
+                    });
+                    if on_state {
+                        cx.error_spanned_by(
+                            e,
+                            format!("{what} depends on the coordinates or on time; it must be a constant or a parameter"),
+                        );
+                        continue;
+                    }
+                    e_id
+                }
+            };
+            self.unilaterals.push(Unilateral { name: u.name.to_string(), phi, restitution });
+        }
     }
 
     /// Lowers each `define(name) = …` in order, each in the scope of the ones before it.

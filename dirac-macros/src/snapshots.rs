@@ -84,6 +84,20 @@ fn driven_oscillator_with_forces_and_time() {
 }
 
 #[test]
+fn a_pendulum_with_a_wall() {
+    check(
+        "pendulum_and_wall",
+        quote! {
+            #[dirac(coordinates(x => vx, y => vy))]
+            #[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+            #[dirac(holonomic(rod) = x * x + y * y - l * l)]
+            #[dirac(unilateral(wall, restitution = e) = x - w * (y / l).cos())]
+            pub struct PendulumAndWall { pub m: f64, pub g: f64, pub l: f64, pub e: f64, pub w: f64 }
+        },
+    );
+}
+
+#[test]
 fn every_function_with_both_kinds_of_constraint() {
     check(
         "all_functions",

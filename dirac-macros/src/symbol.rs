@@ -24,12 +24,17 @@ pub const LARGE: &str = "large";
 pub const INPUT: &str = "input";
 /// `output(name) = expr`: a named quantity computed from the state, recorded by name.
 pub const OUTPUT: &str = "output";
+/// `unilateral(name) = expr` or `unilateral(name, restitution = e) = expr`: a contact,
+/// `φ(q, t) ≥ 0`, with its coefficient of restitution (1, elastic, unless given).
+pub const UNILATERAL: &str = "unilateral";
+/// The restitution of a `unilateral` constraint.
+pub const RESTITUTION: &str = "restitution";
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
 /// Every key a `#[dirac(...)]` attribute of a model accepts, for error messages.
 pub const MODEL_KEYS: &[&str] =
-    &[COORDINATES, PORT, INPUT, OUTPUT, DEFINE, LAGRANGIAN, CONSTRAINT, HOLONOMIC, FORCE, LARGE];
+    &[COORDINATES, PORT, INPUT, OUTPUT, DEFINE, LAGRANGIAN, CONSTRAINT, HOLONOMIC, UNILATERAL, FORCE, LARGE];
 
 /// `connect(a.x, b.y)`: an interconnection of two ports, `v_a.x = v_b.y` and `f_a.x + f_b.y = 0`.
 pub const CONNECT: &str = "connect";

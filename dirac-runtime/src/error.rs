@@ -85,6 +85,23 @@ pub enum SimError {
         /// Which unknown had no pivot.
         detail: String,
     },
+    /// A unilateral constraint would stay closed: an impact left no normal velocity to
+    /// reopen it (restitution 0), or impacts accumulate towards a finite time (a Zeno
+    /// sequence: a bouncing ball coming to rest). Resting contact is not simulated: end the
+    /// integration before `t`.
+    #[error(
+        "the contact `{contact}` closes at t = {t}{}: resting contact is not simulated; end the \
+         integration before it",
+        match t_limit { Some(t_limit) => format!(" (its impacts accumulate at t ≈ {t_limit})"), None => String::new() }
+    )]
+    ContactCloses {
+        /// The unilateral constraint's name.
+        contact: String,
+        /// The time of the last impact.
+        t: f64,
+        /// Where the impacts accumulate, extrapolated from the last ones, for a Zeno sequence.
+        t_limit: Option<f64>,
+    },
     /// The step size fell below the minimum.
     #[error("step size {h:e} below the minimum at t = {t}: {reason}")]
     StepSizeTooSmall {

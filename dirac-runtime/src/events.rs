@@ -14,6 +14,7 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
+use crate::contacts::Contacts;
 use crate::diagnose::check_constraints_kept;
 use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
@@ -21,7 +22,7 @@ use crate::init::{Consistency, consistent_state};
 use crate::integrator::{Integrator, constraint_violation};
 use crate::model::LagrangeDirac;
 use crate::recorder::Recorder;
-use crate::solution::{Crossing, Event, Sampling, Solution};
+use crate::solution::{Crossing, Event, Impact, Sampling, Solution};
 use crate::state::State;
 
 /// An event function: `g(t, state, model)`.
@@ -61,6 +62,12 @@ where
     /// the root finder, or an event), so that they are to be put back at the step's end.
     inputs_moved: bool,
     evaluations: usize,
+    /// The model's unilateral constraints, when watched ([`Events::contacts`]), and which
+    /// of them each event function is.
+    contacts: Option<Contacts>,
+    contact_of: Vec<Option<usize>>,
+    /// Why the contacts cannot be watched, reported at [`Events::begin`].
+    refused: Option<String>,
 }
 
 impl<M: LagrangeDirac> Default for Events<'_, M>
@@ -93,6 +100,9 @@ where
             probe: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
             inputs_moved: false,
             evaluations: 0,
+            contacts: None,
+            contact_of: Vec::new(),
+            refused: None,
         }
     }
 
@@ -107,7 +117,73 @@ where
         self.names.push(name.into());
         self.crossings.push(crossing);
         self.functions.push(Box::new(g));
+        self.contact_of.push(None);
         self
+    }
+
+    /// Adds the model's unilateral constraints (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`), each
+    /// an event of its own name when `φ` falls through zero. At such an event
+    /// [`SolveWithEvents::solve_with_events`] applies the impact law before the action: the
+    /// momentum jumps along the constraint's one-form, `p⁺ = p⁻ + Λ ∂φ/∂q`, so that the normal
+    /// velocity is reversed and scaled by the restitution `e`, `∂φ/∂q v⁺ = −e ∂φ/∂q v⁻`,
+    /// with the model's own constraints kept; contacts that close at once share one law. The
+    /// impulses are recorded ([`Solution::impacts_at`]); the action sees the state after the
+    /// impact, and its impulse ([`EventContext::impulse`]).
+    ///
+    /// Resting contact is not simulated: an impact that leaves a contact closed (restitution
+    /// 0), or impacts that accumulate (a Zeno sequence), end the integration with
+    /// [`SimError::ContactCloses`]. An interconnection whose subsystems have unilateral
+    /// constraints is refused at [`Events::begin`]: their contacts are not gathered yet.
+    pub fn contacts(mut self, model: &M) -> Self {
+        let contacts = Contacts::new(model);
+        let k = contacts.names.len();
+        if M::NAMES.unilateral_count() > k {
+            self.refused = Some(
+                "the model's subsystems have unilateral constraints, which an interconnection does not \
+                 gather yet; declare the contacts on a primitive model"
+                    .into(),
+            );
+        }
+        for (j, name) in contacts.names.iter().enumerate() {
+            let mut values = vec![0.0; k];
+            self.names.push(name.clone());
+            self.crossings.push(Crossing::Falling);
+            self.functions.push(Box::new(move |t, s: &State<M>, m: &M| {
+                m.unilateral(t, &s.q, &mut values);
+                values[j]
+            }));
+            self.contact_of.push(Some(j));
+        }
+        self.contacts = Some(contacts);
+        self
+    }
+
+    /// The unilateral constraint event function `k` watches, if it is one.
+    fn contact_of(&self, k: usize) -> Option<usize> {
+        self.contact_of[k]
+    }
+
+    /// The impact at the contact of event `k` at `t`, together with every other contact that
+    /// is closed there too (`φ ≤ 0` at the event: its event pending at the same time, or
+    /// touching zero exactly): `state`'s velocities change by the impact law; the impulses
+    /// are returned.
+    fn impact(
+        &mut self,
+        model: &M,
+        k: usize,
+        t: f64,
+        state: &mut State<M>,
+    ) -> Result<Vec<(usize, f64)>, SimError> {
+        let contact = self.contact_of[k].expect("event k watches a contact");
+        let mut closing = vec![contact];
+        for j in 0..self.functions.len() {
+            if let (true, Some(other)) = (j != k && self.lo[j] <= 0.0, self.contact_of[j]) {
+                closing.push(other);
+                self.pending[j] = false;
+            }
+        }
+        let contacts = self.contacts.as_mut().expect("contact events come with their contacts");
+        contacts.impact(model, t, state, &closing)
     }
 
     /// The events' names, in the order of their indices.
@@ -140,6 +216,9 @@ where
     /// the locator's storage; call it before the first step. Two functions of the same name
     /// are refused ([`SimError::InvalidOption`]).
     pub fn begin(&mut self, model: &M, t: f64, state: &State<M>) -> Result<(), SimError> {
+        if let Some(reason) = &self.refused {
+            return Err(SimError::InvalidOption { what: "contacts", reason: reason.clone() });
+        }
         let n = self.functions.len();
         if let Some(k) = (1..n).find(|&k| self.names[..k].contains(&self.names[k])) {
             return Err(SimError::InvalidOption {
@@ -160,6 +239,14 @@ where
         self.probe = state.clone();
         self.evaluations = 0;
         self.resume(model, t, state)?;
+        // A contact must start open or closed, not penetrated.
+        if let Some(k) = (0..n).find(|&k| self.contact_of[k].is_some() && self.lo[k] < 0.0) {
+            return Err(SimError::StateNotConsistent {
+                t,
+                equation: format!("unilateral constraint `{}` (φ ≥ 0)", self.names[k]),
+                residual: -self.lo[k],
+            });
+        }
         Ok(())
     }
 
@@ -362,6 +449,8 @@ where
     reset: bool,
     /// How far the state was from the constraints before the model was first handed out.
     before: Option<f64>,
+    /// The impulse of the event's contact, when the event is an impact.
+    impulse: Option<f64>,
 }
 
 impl<'a, M: LagrangeDirac, I: Integrator<M>> EventContext<'a, M, I>
@@ -369,7 +458,13 @@ where
     DefaultAllocator: Storage<M>,
 {
     pub(crate) fn new(t: f64, state: &'a mut State<M>, integrator: &'a mut I) -> Self {
-        EventContext { t, state, integrator, reset: false, before: None }
+        EventContext { t, state, integrator, reset: false, before: None, impulse: None }
+    }
+
+    /// The impulse `Λ ≥ 0` the impact law gave the event's contact, when the event is a
+    /// unilateral constraint's ([`Events::contacts`]); the state is then the one after it.
+    pub fn impulse(&self) -> Option<f64> {
+        self.impulse
     }
 
     /// The event's time.
@@ -444,19 +539,43 @@ where
     ) -> Result<Solution<M, Self::Stats>, SimError> {
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         recorder.name_events(events.names());
+        if let Some(contacts) = &events.contacts {
+            recorder.name_contacts(&contacts.names);
+        }
         self.start(t0, state, t_end)?;
         events.begin(self.model(), t0, self.state())?;
         recorder.record_initial(self.model(), t0, self.state());
         let mut after = state.clone();
         while !self.finished() {
-            self.step()?;
+            if let Err(error) = self.step() {
+                // A step that fails where impacts accumulate fails because of them.
+                let zeno = match (&error, &events.contacts) {
+                    (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) => contacts.zeno(*t),
+                    _ => None,
+                };
+                return Err(zeno.unwrap_or(error));
+            }
             let mut restarted = false;
             while let Some(event) = events.locate(self)? {
                 let t = event.t;
                 recorder.record_step(self.model(), t, events.state(), |ts, out| self.interpolate(ts, out));
                 recorder.record_event(self.model(), event, events.state());
                 after.clone_from(events.state());
+                let mut impulse = None;
+                let mut impacted = false;
+                if events.contact_of(event.index).is_some() {
+                    let contact = events.contact_of(event.index);
+                    for (j, lambda) in events.impact(self.model(), event.index, t, &mut after)? {
+                        recorder.record_impact(Impact { contact: j, t, impulse: lambda });
+                        impacted |= lambda > 0.0;
+                        if Some(j) == contact {
+                            impulse = Some(lambda);
+                        }
+                    }
+                }
                 let mut context = EventContext::new(t, &mut after, self);
+                context.impulse = impulse;
+                context.reset = impacted;
                 let flow = action(&event, &mut context);
                 let (reset, before) = context.changes();
                 if flow.is_break() {

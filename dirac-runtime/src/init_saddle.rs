@@ -21,7 +21,13 @@ type SaddleOf<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Saddle<f64>;
 
 /// Why a consistency system is singular: the unknown without a pivot, and what the model's
 /// structure says.
-fn not_determined<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>, s: Singular) -> SimError
+pub(crate) fn not_determined<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    s: Singular,
+) -> SimError
 where
     DefaultAllocator: Storage<M>,
 {

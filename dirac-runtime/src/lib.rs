@@ -13,6 +13,7 @@ pub mod arrays;
 pub mod assemble;
 /// The block outputs of a model: residual blocks and Jacobian blocks.
 pub mod blocks;
+mod contacts;
 /// Finding the true cause of a failure, for the messages of typed errors.
 pub mod diagnose;
 /// Type-level sizes of a model and the allocator bound that goes with them.
@@ -82,7 +83,7 @@ pub use linear::{Linearization, linearize};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
 pub use radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
-pub use solution::{Crossing, Event, Sampling, Solution};
+pub use solution::{Crossing, Event, Impact, Sampling, Solution};
 pub use sparse::SparseJacobian;
 pub use state::State;
 pub use structure::Structure;

@@ -311,6 +311,44 @@ where
         );
     }
 
+    /// The names of the model's unilateral constraints `φ_u(q, t) ≥ 0`
+    /// (`#[dirac(unilateral(name) = φ)]`: contacts, stops, walls), in the order declared.
+    /// Interconnections have none of their own, and their subsystems' are not gathered:
+    /// [`Events::contacts`](crate::Events::contacts) refuses such a composite.
+    fn unilateral_names(&self) -> Vec<String> {
+        Self::NAMES.unilaterals.iter().map(|n| n.to_string()).collect()
+    }
+
+    /// The values `φ_u(q, t)` of the unilateral constraints, into `out` (one per constraint):
+    /// positive while open, zero at contact.
+    fn unilateral(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "unilateral: the model has no unilateral constraints, so the slice must be empty"
+        );
+    }
+
+    /// `∂φ_u/∂q`, one row per unilateral constraint (its one-form, along which an impact's
+    /// impulse acts), dense and column-major.
+    fn unilateral_dq(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "unilateral_dq: the model has no unilateral constraints, so the slice must be empty"
+        );
+    }
+
+    /// The coefficient of restitution of each unilateral constraint: the share of the normal
+    /// velocity an impact reverses (1 elastic, 0 plastic).
+    fn restitution(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "restitution: the model has no unilateral constraints, so the slice must be empty"
+        );
+    }
+
     /// The value of input `k`, the position of an [`Input`] key. The derive implements it for
     /// models with inputs; it panics if the model has no input `k`.
     fn input_value(&self, k: usize) -> f64 {

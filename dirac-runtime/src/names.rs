@@ -31,6 +31,8 @@ pub struct Names {
     pub inputs: &'static [&'static str],
     /// The model's own outputs (`output(name) = …`).
     pub outputs: &'static [&'static str],
+    /// The model's own unilateral constraints (`unilateral(name) = φ`, `φ ≥ 0`).
+    pub unilaterals: &'static [&'static str],
     /// The subsystems of a composite, in field order.
     pub subsystems: &'static [Subsystem],
 }
@@ -170,6 +172,18 @@ impl Names {
         count
     }
 
+    /// The number of unilateral constraints of the model and its subsystems, at any depth.
+    /// Usable in `const` items.
+    pub const fn unilateral_count(&self) -> usize {
+        let mut count = self.unilaterals.len();
+        let mut i = 0;
+        while i < self.subsystems.len() {
+            count += self.subsystems[i].names.unilateral_count();
+            i += 1;
+        }
+        count
+    }
+
     /// Every input's full dotted name, in the order of the model's input keys: its
     /// subsystems' in field order, then its own.
     pub fn input_names(&self) -> Vec<String> {
@@ -261,6 +275,7 @@ mod tests {
         ports: &[1],
         inputs: &["force"],
         outputs: &["energy"],
+        unilaterals: &[],
         subsystems: &[],
     };
     static RIGHT: Names = Names {
@@ -271,6 +286,7 @@ mod tests {
         ports: &[0],
         inputs: &[],
         outputs: &[],
+        unilaterals: &[],
         subsystems: &[],
     };
     static CHAIN: Names = Names {
@@ -281,6 +297,7 @@ mod tests {
         ports: &[],
         inputs: &[],
         outputs: &[],
+        unilaterals: &[],
         subsystems: &[
             Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },
             Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0, u_offset: 1 },

@@ -8,7 +8,7 @@ use crate::dims::{Storage, VecC, VecH, VecQ};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
 use crate::model::MatCQ;
-use crate::solution::{Columns, Event, Sampling, Solution};
+use crate::solution::{Columns, Event, Impact, Sampling, Solution};
 use crate::state::State;
 
 /// Records samples during an integration.
@@ -28,6 +28,9 @@ where
     /// The events located, and the names of the event functions.
     events: Vec<Event>,
     event_names: Vec<String>,
+    /// The impacts at unilateral constraints, and the constraints' names.
+    impacts: Vec<Impact>,
+    contact_names: Vec<String>,
 }
 
 /// The most values (samples times series) a solution records: 2^27, 1 GiB of `f64`.
@@ -101,6 +104,8 @@ where
             buffer,
             events: Vec::new(),
             event_names: Vec::new(),
+            impacts: Vec::new(),
+            contact_names: Vec::new(),
         })
     }
 
@@ -166,6 +171,16 @@ where
         }
     }
 
+    /// Names the unilateral constraints whose impacts the solution records.
+    pub fn name_contacts(&mut self, names: &[String]) {
+        self.contact_names = names.to_vec();
+    }
+
+    /// Records an impact.
+    pub fn record_impact(&mut self, impact: Impact) {
+        self.impacts.push(impact);
+    }
+
     /// Names the event functions whose events the solution records.
     pub fn name_events(&mut self, names: &[String]) {
         self.event_names = names.to_vec();
@@ -201,7 +216,7 @@ where
         }
         let solution =
             Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats);
-        Ok(solution.with_events(self.events, self.event_names))
+        Ok(solution.with_events(self.events, self.event_names).with_impacts(self.impacts, self.contact_names))
     }
 }
 

@@ -58,6 +58,19 @@ pub struct Event {
     pub crossing: Crossing,
 }
 
+/// An impact at a unilateral constraint `φ(q, t) ≥ 0`: which one (its index among the model's
+/// [`unilateral_names`](crate::LagrangeDirac::unilateral_names)), when, and the impulse
+/// `Λ ≥ 0` its one-form took, `p⁺ = p⁻ + Λ ∂φ/∂q`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Impact {
+    /// The unilateral constraint.
+    pub contact: usize,
+    /// The time of the impact.
+    pub t: f64,
+    /// The impulse along the constraint's one-form (a momentum: N·s for a force on a length).
+    pub impulse: f64,
+}
+
 /// Where each series of a solution sits: `t`, the state's slots in the order of [`Layout`],
 /// the derived quantities, the effort at each port, then the model's outputs.
 pub(crate) struct Columns {
@@ -136,6 +149,8 @@ where
     pub stats: S,
     events: Vec<Event>,
     event_names: Vec<String>,
+    impacts: Vec<Impact>,
+    contact_names: Vec<String>,
     model: PhantomData<fn() -> M>,
 }
 
@@ -176,6 +191,8 @@ where
             stats,
             events: Vec::new(),
             event_names: Vec::new(),
+            impacts: Vec::new(),
+            contact_names: Vec::new(),
             model: PhantomData,
         }
     }
@@ -185,6 +202,27 @@ where
         self.events = events;
         self.event_names = names;
         self
+    }
+
+    /// This solution with the impacts at the model's unilateral constraints, and their names.
+    pub(crate) fn with_impacts(mut self, impacts: Vec<Impact>, names: Vec<String>) -> Self {
+        self.impacts = impacts;
+        self.contact_names = names;
+        self
+    }
+
+    /// The impacts at the model's unilateral constraints, in time order (with
+    /// [`Events::contacts`](crate::Events::contacts)). Contacts that close at one time share
+    /// one impact law and are recorded one by one, each with its own impulse.
+    pub fn impacts(&self) -> &[Impact] {
+        &self.impacts
+    }
+
+    /// The impacts at the unilateral constraint called `name`, in order; `None` if the model
+    /// has no unilateral constraint of that name (or the contacts were not watched).
+    pub fn impacts_at(&self, name: &str) -> Option<Vec<Impact>> {
+        let index = self.contact_names.iter().position(|n| n == name)?;
+        Some(self.impacts.iter().filter(|i| i.contact == index).copied().collect())
     }
 
     /// The events located, in time order ([`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events)).

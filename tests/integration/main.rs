@@ -5,6 +5,7 @@ mod zoo;
 
 mod authoring;
 mod blocks;
+mod contacts;
 mod counters;
 mod events;
 mod fuzz;

@@ -674,3 +674,44 @@ pub struct Well {
     pub k: f64,
     pub c: f64,
 }
+
+/// A ball above a floor it bounces on with restitution `e`: the contact `y ≥ 0`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+#[dirac(unilateral(floor, restitution = e) = y)]
+pub struct BouncingBall {
+    pub m: f64,
+    pub g: f64,
+    pub e: f64,
+}
+
+/// A pendulum on a rod of length `l` that strikes the wall `x = w` (from `x > w`) with
+/// restitution `e`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(holonomic(rod) = x * x + y * y - l * l)]
+#[dirac(unilateral(wall, restitution = e) = x - w)]
+pub struct PendulumAndWall {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+    pub e: f64,
+    pub w: f64,
+}
+
+/// A bar of length `l` moving in a vertical plane above a floor, which each of its ends
+/// strikes with restitution `e`: its centre `(x, y)`, its angle `th` from the horizontal.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy, th => w))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) + 0.5 * j * w * w - m * g * y)]
+#[dirac(unilateral(left, restitution = e) = y - 0.5 * l * th.sin())]
+#[dirac(unilateral(right, restitution = e) = y + 0.5 * l * th.sin())]
+pub struct Bar {
+    pub m: f64,
+    pub j: f64,
+    pub g: f64,
+    pub l: f64,
+    pub e: f64,
+}

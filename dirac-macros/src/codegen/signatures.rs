@@ -106,6 +106,11 @@ pub const L_VU: Signature = method("l_vu", &[T, Q, V], Out::Values);
 pub const OUTPUT_DQ: Signature = method("output_dq", &[T, Q, V], Out::Values);
 pub const OUTPUT_DV: Signature = method("output_dv", &[T, Q, V], Out::Values);
 pub const OUTPUT_DU: Signature = method("output_du", &[T, Q, V], Out::Values);
+/// The unilateral constraints `φ_u(q, t) ≥ 0`, their rows `∂φ_u/∂q` (dense, column-major) and
+/// their restitutions; emitted for models that have unilateral constraints.
+pub const UNILATERAL: Signature = method("unilateral", &[T, Q], Out::Values);
+pub const UNILATERAL_DQ: Signature = method("unilateral_dq", &[T, Q], Out::Values);
+pub const RESTITUTION: Signature = method("restitution", &[T, Q], Out::Values);
 
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 19] = [

@@ -43,6 +43,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 ports: &[],
                 inputs: &[],
                 outputs: &[],
+                unilaterals: &[],
                 subsystems: &[#(#subsystems),*],
             };
         }

@@ -278,6 +278,7 @@ const _: () = {
             ports: &[],
             inputs: &[],
             outputs: &[],
+            unilaterals: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "left",

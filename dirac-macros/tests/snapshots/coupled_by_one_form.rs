@@ -387,6 +387,7 @@ const _: () = {
             ports: &[],
             inputs: &[],
             outputs: &[],
+            unilaterals: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "wheel",

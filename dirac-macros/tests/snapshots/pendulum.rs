@@ -17,6 +17,7 @@ const _: () = {
             ports: &[],
             inputs: &[],
             outputs: &[],
+            unilaterals: &[],
             subsystems: &[],
         };
     }

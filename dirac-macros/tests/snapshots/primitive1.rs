@@ -17,6 +17,7 @@ const _: () = {
             ports: &[1],
             inputs: &[],
             outputs: &[],
+            unilaterals: &[],
             subsystems: &[],
         };
     }

@@ -275,6 +275,7 @@ pub fn implementation(
                     ports: &[],
                     inputs: &[],
                     outputs: &[],
+                    unilaterals: &[],
                     subsystems: &[],
                 };
             }

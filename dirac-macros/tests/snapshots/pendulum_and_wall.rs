@@ -1,0 +1,443 @@
+const _: () = {
+    #[automatically_derived]
+    impl ::dirac::__private::Dimensions for PendulumAndWall {
+        type Nq = ::dirac::__private::Const<2>;
+        type Nc = ::dirac::__private::Const<1>;
+        type Nh = ::dirac::__private::Const<1>;
+        type Nk = ::dirac::__private::Const<3>;
+        type Ny = ::dirac::__private::Const<7>;
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Named for PendulumAndWall {
+        const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
+            coordinates: &["x", "y"],
+            velocities: &["vx", "vy"],
+            constraints: &["rod"],
+            holonomic: 1,
+            ports: &[],
+            inputs: &[],
+            outputs: &[],
+            unilaterals: &["wall"],
+            subsystems: &[],
+        };
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::LagrangeDirac for PendulumAndWall {
+        type Algebra = ::dirac::__private::Dense;
+        fn sizes(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
+        fn shape(&self) -> ::dirac::__private::Sizes {
+            <Self as ::dirac::__private::Fixed>::SIZES
+        }
+        const SEPARABLE: ::core::primitive::bool = true;
+        const PRESCRIBED: ::core::primitive::bool = false;
+        const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
+            pattern: &[true, false, true, false, true, true, true, true, false],
+            unknowns: &[
+                "structurally singular model: the velocity `vx` of `PendulumAndWall` is determined by no equation: coordinate `x` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `vy` of `PendulumAndWall` is determined by no equation: coordinate `y` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWall` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+            ],
+        };
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 15usize,
+            jacobian: 5usize,
+            residual_and_jacobian: 20usize,
+            residual_blocks: 13usize,
+            jacobian_blocks: 5usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "PendulumAndWall: L = 0.5*m*(vx^2 + vy^2) - m*g*y\ndx/dt = vx\ndy/dt = vy\ndp_x/dt = 2*x*lambda_rod\ndp_y/dt = -m*g + 2*y*lambda_rod\np_x = m*vx\np_y = m*vy\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = x^2 + y^2 - l^2    (rod, holonomic)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)}\n\\end{aligned}",
+                ),
+            }
+        }
+        fn non_finite_parameter(
+            &self,
+        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            if !self.m.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("m"),
+                    self.m,
+                ));
+            }
+            if !self.g.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("g"),
+                    self.g,
+                ));
+            }
+            if !self.l.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("l"),
+                    self.l,
+                ));
+            }
+            if !self.e.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("e"),
+                    self.e,
+                ));
+            }
+            if !self.w.is_finite() {
+                return ::core::option::Option::Some((
+                    ::std::string::ToString::to_string("w"),
+                    self.w,
+                ));
+            }
+            ::core::option::Option::None
+        }
+        #[inline]
+        fn lagrangian(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0.5f64 * self.m * (v[0].powi(2) + v[1].powi(2))
+                - self.m * self.g * q[1];
+            value
+        }
+        #[inline]
+        fn dl_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = -self.m * self.g;
+        }
+        #[inline]
+        fn dl_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = self.m * v[0];
+            out[1usize] = self.m * v[1];
+        }
+        #[inline]
+        fn l_qq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn l_vq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn l_vv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            out[(0, 0)] = self.m;
+            out[(1, 1)] = self.m;
+        }
+        #[inline]
+        fn force(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
+        #[inline]
+        fn force_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn force_dv(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {}
+        #[inline]
+        fn constraint_matrix(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            out[(0, 0)] = 2f64 * q[0];
+            out[(0, 1)] = 2f64 * q[1];
+        }
+        #[inline]
+        fn dav_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::MatCQ<Self>,
+        ) {
+            out[(0, 0)] = 2f64 * v[0];
+            out[(0, 1)] = 2f64 * v[1];
+        }
+        #[inline]
+        fn datl_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::MatQQ<Self>,
+        ) {
+            let s0 = 2f64 * lambda[0];
+            out[(0, 0)] = s0;
+            out[(1, 1)] = s0;
+        }
+        #[inline]
+        fn holonomic(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            out[0usize] = q[0].powi(2) + q[1].powi(2) - self.l.powi(2);
+        }
+        #[inline]
+        fn residual_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            out.momentum_rate[0usize] = 2f64 * q[0] * lambda[0];
+            out.momentum_rate[1usize] = -self.m * self.g + 2f64 * q[1] * lambda[0];
+            out.dl_dv[0usize] = self.m * v[0];
+            out.dl_dv[1usize] = self.m * v[1];
+            out.constraint_velocity[0usize] = 2f64 * q[0] * v[0] + 2f64 * q[1] * v[1];
+        }
+        #[inline]
+        fn jacobian_blocks(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::JacobianBlocks<
+                Self,
+                <Self as ::dirac::__private::LagrangeDirac>::Algebra,
+            >,
+        ) {
+            let s0 = 2f64 * lambda[0];
+            out.dpdot_dq[(0, 0)] = s0;
+            out.dpdot_dq[(1, 1)] = s0;
+            out.l_vv[(0, 0)] = self.m;
+            out.l_vv[(1, 1)] = self.m;
+            out.a[(0, 0)] = 2f64 * q[0];
+            out.a[(0, 1)] = 2f64 * q[1];
+            out.dav_dq[(0, 0)] = 2f64 * v[0];
+            out.dav_dq[(0, 1)] = 2f64 * v[1];
+        }
+        #[inline]
+        fn residual(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::VecY<Self>,
+        ) {
+            out[0usize] = y[2];
+            out[1usize] = y[3];
+            out[2usize] = y[4] - self.m * y[2];
+            out[3usize] = y[5] - self.m * y[3];
+            out[4usize] = 2f64 * y[0] * y[6];
+            out[5usize] = -self.m * self.g + 2f64 * y[1] * y[6];
+            out[6usize] = 2f64 * y[0] * y[2] + 2f64 * y[1] * y[3];
+        }
+        #[inline]
+        fn jacobian(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut ::dirac::__private::MatYY<Self>,
+        ) {
+            let s0 = 2f64 * y[0];
+            let s1 = 2f64 * y[1];
+            let s2 = 2f64 * y[6];
+            let s3 = -self.m;
+            out[(0, 2)] = 1f64;
+            out[(1, 3)] = 1f64;
+            out[(2, 2)] = s3;
+            out[(2, 4)] = 1f64;
+            out[(3, 3)] = s3;
+            out[(3, 5)] = 1f64;
+            out[(4, 0)] = s2;
+            out[(4, 6)] = s0;
+            out[(5, 1)] = s2;
+            out[(5, 6)] = s1;
+            out[(6, 0)] = 2f64 * y[2];
+            out[(6, 1)] = 2f64 * y[3];
+            out[(6, 2)] = s0;
+            out[(6, 3)] = s1;
+        }
+        #[inline]
+        fn l_vt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecQ<Self>,
+        ) {
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
+        #[inline]
+        fn dl_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+        ) -> ::core::primitive::f64 {
+            let value: ::core::primitive::f64;
+            value = 0f64;
+            value
+        }
+        #[inline]
+        fn constraint_rate(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            out[0usize] = 0f64;
+        }
+        #[inline]
+        fn dav_dt(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _v: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecC<Self>,
+        ) {
+            out[0usize] = 0f64;
+        }
+        #[inline]
+        fn unilateral(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 1usize, "{}: the slice must hold {} values", "unilateral",
+                1usize
+            );
+            out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
+        }
+        #[inline]
+        fn unilateral_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values", "unilateral_dq",
+                2usize
+            );
+            let s0 = self.l.powi(-1);
+            out[0usize] = 1f64;
+            out[1usize] = self.w * s0 * (q[1] * s0).sin();
+        }
+        #[inline]
+        fn restitution(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 1usize, "{}: the slice must hold {} values", "restitution",
+                1usize
+            );
+            out[0usize] = self.e;
+        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::SparseJacobian for PendulumAndWall {
+        const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[
+            0usize, 2usize, 4usize, 7usize, 10usize, 11usize, 12usize, 14usize,
+        ];
+        const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[
+            4usize, 6usize, 5usize, 6usize, 0usize, 2usize, 6usize, 1usize, 3usize,
+            6usize, 2usize, 3usize, 4usize, 5usize,
+        ];
+        #[inline]
+        fn jacobian_csc(
+            &self,
+            _t: ::core::primitive::f64,
+            y: &::dirac::__private::VecY<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 14usize,
+                "jacobian_csc: the output must hold one value per stored Jacobian entry"
+            );
+            let s0 = 2f64 * y[0];
+            let s1 = 2f64 * y[1];
+            let s2 = 2f64 * y[6];
+            let s3 = -self.m;
+            out[0] = s2;
+            out[1] = 2f64 * y[2];
+            out[2] = s2;
+            out[3] = 2f64 * y[3];
+            out[4] = 1f64;
+            out[5] = s3;
+            out[6] = s0;
+            out[7] = 1f64;
+            out[8] = s3;
+            out[9] = s1;
+            out[10] = 1f64;
+            out[11] = 1f64;
+            out[12] = s0;
+            out[13] = s1;
+        }
+    }
+    #[automatically_derived]
+    impl PendulumAndWall {
+        ///The coordinate `x`: names its position, velocity and momentum in a state.
+        pub const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            0,
+        );
+        ///The coordinate `y`: names its position, velocity and momentum in a state.
+        pub const Y: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
+            1,
+        );
+        ///The constraint `rod`: names its row of A(q) and its multiplier in a state.
+        pub const ROD: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
+            0,
+        );
+    }
+};

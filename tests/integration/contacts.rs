@@ -1,0 +1,281 @@
+//! Unilateral constraints declared on the model (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`) and
+//! the impacts at them, by Newton's law along the constraints' own one-forms. Every reference
+//! is computed here: free fall and its geometric series of bounces, the energy of a pendulum
+//! on its rod, the impact of a bar on its two ends by symmetry, and central differences.
+
+use std::ops::ControlFlow;
+
+use dirac::prelude::*;
+use dirac::{Events, Impact};
+
+use crate::zoo::{Bar, BouncingBall, PendulumAndWall};
+
+const G: f64 = 9.81;
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// Goes on at every event: the impact law is applied before the action.
+fn go_on<M: LagrangeDirac, I: Integrator<M>>(
+    _: &dirac::Event,
+    _: &mut dirac::EventContext<'_, M, I>,
+) -> ControlFlow<()>
+where
+    DefaultAllocator: Storage<M>,
+{
+    ControlFlow::Continue(())
+}
+
+/// The generated one-forms `∂φ_u/∂q` against central differences of the generated `φ_u`, at
+/// scattered points, and the restitutions against the fields they are declared as.
+#[test]
+fn the_one_forms_of_unilateral_constraints_match_central_differences() {
+    let bar = Bar { m: 1.0, j: 0.2, g: G, l: 1.5, e: 0.4 };
+    let (k, n) = (2, 3);
+    for &(x, y, th) in &[(0.1, 0.7, 0.3), (-1.2, 0.05, -1.1), (2.0, 3.0, 2.5)] {
+        let q = dirac::nalgebra::Vector3::new(x, y, th);
+        let mut rows = vec![0.0; k * n];
+        bar.unilateral_dq(0.0, &q, &mut rows);
+        for i in 0..n {
+            let step = 1e-6;
+            let (mut up, mut down) = (q, q);
+            up[i] += step;
+            down[i] -= step;
+            let (mut fu, mut fd) = ([0.0; 2], [0.0; 2]);
+            bar.unilateral(0.0, &up, &mut fu);
+            bar.unilateral(0.0, &down, &mut fd);
+            for j in 0..k {
+                let difference = (fu[j] - fd[j]) / (2.0 * step);
+                assert!((rows[j + i * k] - difference).abs() < 1e-8, "row {j}, column {i}");
+            }
+        }
+        let mut e = [0.0; 2];
+        bar.restitution(0.0, &q, &mut e);
+        assert_eq!(e, [0.4, 0.4]);
+    }
+    assert_eq!(bar.unilateral_names(), ["left", "right"]);
+}
+
+/// The ball's floor declared as `unilateral(floor, restitution = e) = y`: the touchdowns
+/// follow the geometric series `T_n = t1 (1 + 2 (e + … + eⁿ))` to round-off (Radau solves
+/// parabolas exactly), and impact n takes the impulse `m (1 + e) eⁿ √(2 g h0)`, the momentum
+/// the law reverses.
+#[test]
+fn a_ball_bounces_on_its_declared_floor_by_the_derived_impact_law() {
+    let (h0, e, m) = (1.0, 0.8, 0.3);
+    let ball = BouncingBall { m, g: G, e };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, h0);
+    let t1 = (2.0 * h0 / G).sqrt();
+    let zeno = t1 * (1.0 + 2.0 * e / (1.0 - e));
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let mut events = Events::new().contacts(&ball);
+    let solution = radau
+        .solve_with_events(0.0, &start, 0.95 * zeno, &Sampling::Every(0.01), &mut events, go_on)
+        .expect("integrates");
+    let impacts = solution.impacts_at("floor").expect("a contact of that name");
+    assert!(impacts.len() >= 10, "{} impacts", impacts.len());
+    assert_eq!(solution.event_times("floor").expect("an event of that name").len(), impacts.len());
+    for (n, &Impact { t, impulse, .. }) in impacts.iter().enumerate() {
+        let n = n as i32;
+        let exact_t = t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
+        assert!(relative(t, exact_t) < 1e-10, "touchdown {n}: {t} against {exact_t}");
+        let exact_impulse = m * (1.0 + e) * e.powi(n) * (2.0 * G * h0).sqrt();
+        assert!(relative(impulse, exact_impulse) < 1e-9, "impulse {n}: {impulse} against {exact_impulse}");
+    }
+    let lowest = solution.q(BouncingBall::Y).iter().copied().fold(f64::INFINITY, f64::min);
+    assert!(lowest > -1e-12, "the ball went through the floor to {lowest}");
+    assert!(solution.impacts_at("ceiling").is_none());
+}
+
+/// Run past the Zeno time `t∞ = t1 (1 + 2e/(1 − e))`, the bounces accumulate: resting contact
+/// is not simulated, so the integration ends in `ContactCloses`, naming the contact and
+/// the accumulation time (extrapolated from the last impacts) instead of a bare step-size
+/// failure. With restitution 0 the first impact closes the contact.
+#[test]
+fn a_closing_contact_ends_in_a_typed_error_at_its_time() {
+    let (h0, e) = (1.0, 0.5);
+    let t1 = (2.0 * h0 / G).sqrt();
+    let zeno = t1 * (1.0 + 2.0 * e / (1.0 - e));
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, h0);
+    let ball = BouncingBall { m: 1.0, g: G, e };
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let error = radau
+        .solve_with_events(
+            0.0,
+            &start,
+            2.0 * zeno,
+            &Sampling::Steps,
+            &mut Events::new().contacts(&ball),
+            go_on,
+        )
+        .expect_err("a Zeno sequence");
+    let SimError::ContactCloses { contact, t, t_limit: Some(t_limit) } = &error else {
+        panic!("{error:?}");
+    };
+    assert_eq!(contact, "floor");
+    assert!(relative(*t_limit, zeno) < 1e-6, "{t_limit} against {zeno}");
+    assert!(*t < zeno);
+
+    let plastic = BouncingBall { m: 1.0, g: G, e: 0.0 };
+    let mut radau = Radau::new(&plastic, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut Events::new().contacts(&plastic), go_on)
+        .expect_err("a plastic impact");
+    assert!(
+        matches!(&error, SimError::ContactCloses { t, t_limit: None, .. } if relative(*t, t1) < 1e-10),
+        "{error:?}"
+    );
+}
+
+/// A pendulum on its rod strikes the wall `x = w` at the angle `θw` (`w = l sin θw`). Only
+/// motion along the circle is allowed, so the law reverses the angular speed, scaled by e,
+/// and the impulse along the wall's one-form `(1, 0)` is `m (1 + e) s / cos θw` for the
+/// speed `s` along the circle: more than the momentum it reverses, since the rod takes the
+/// rest. Between impacts the energy is kept, so impact n has speed `eⁿ s0` with
+/// `½ s0² = g l (cos θw − cos θ0)`. (The pendulum's rest is beyond the wall, so its impacts
+/// come ever faster, a Zeno sequence: the run ends well before.)
+#[test]
+fn a_pendulum_strikes_a_wall_by_the_derived_impact_law_with_its_rod_kept() {
+    let (m, l, e, theta0, theta_w) = (0.7, 1.3, 0.6, 1.2f64, 0.4f64);
+    let model = PendulumAndWall { m, g: G, l, e, w: l * theta_w.sin() };
+    let q = dirac::nalgebra::Vector2::new(l * theta0.sin(), -l * theta0.cos());
+    let start =
+        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let mut after = Vec::new();
+    let solution = radau
+        .solve_with_events(
+            0.0,
+            &start,
+            2.6,
+            &Sampling::Every(0.01),
+            &mut Events::new().contacts(&model),
+            |_, at| {
+                let s = at.state();
+                after.push((s.v(PendulumAndWall::X), s.v(PendulumAndWall::Y), at.impulse()));
+                ControlFlow::Continue(())
+            },
+        )
+        .expect("integrates");
+    let impacts = solution.impacts_at("wall").expect("a contact of that name");
+    assert!(impacts.len() >= 4, "{} impacts", impacts.len());
+    let s0 = (2.0 * G * l * (theta_w.cos() - theta0.cos())).sqrt();
+    for (n, (impact, &(vx, vy, impulse))) in impacts.iter().zip(&after).enumerate() {
+        let speed = e.powi(n as i32) * s0;
+        let exact = m * (1.0 + e) * speed / theta_w.cos();
+        // Against the first impact's scale: Radau's small energy error is a growing share of
+        // the energy left as it decays by e² an impact.
+        let first = m * (1.0 + e) * s0 / theta_w.cos();
+        assert!(
+            (impact.impulse - exact).abs() < 1e-8 * first,
+            "impulse {n}: {} against {exact}",
+            impact.impulse
+        );
+        assert_eq!(impulse, Some(impact.impulse));
+        // After the impact: moving away from the wall along the circle at e times the speed.
+        assert!((vx.hypot(vy) - e * speed).abs() < 1e-8 * s0, "speed after impact {n}");
+        assert!(vx > 0.0);
+        assert!((l * theta_w.sin() * vx + -l * theta_w.cos() * vy).abs() < 1e-9, "tangent to the rod");
+    }
+    let worst = solution.holonomic_residual().iter().copied().fold(0.0, f64::max);
+    assert!(worst < 1e-8 * l * l, "the rod held to {worst:e}");
+    assert!(solution.q(PendulumAndWall::X).iter().all(|&x| x > l * theta_w.sin() - 1e-10));
+}
+
+/// A bar dropped flat from height h strikes the floor with both ends at once. The law for the
+/// two contacts together reverses the fall, scaled by e, and leaves the bar flat, each end
+/// taking half the impulse, `m (1 + e) √(2 g h) / 2`. (Taken one end after the other, the
+/// first impulse alone would set the bar spinning.)
+#[test]
+fn a_bar_falling_flat_strikes_with_both_ends_at_once() {
+    let (m, h, e) = (2.0, 0.8, 0.5);
+    let bar = Bar { m, j: 0.3, g: G, l: 1.2, e };
+    let mut start = State::<Bar>::zeros();
+    start.set_q(Bar::Y, h);
+    let mut radau = Radau::new(&bar, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let t1 = (2.0 * h / G).sqrt();
+    let solution = radau
+        .solve_with_events(
+            0.0,
+            &start,
+            1.5 * t1,
+            &Sampling::Every(0.01),
+            &mut Events::new().contacts(&bar),
+            go_on,
+        )
+        .expect("integrates");
+    let impacts = solution.impacts();
+    assert_eq!(impacts.len(), 2, "{impacts:?}");
+    let exact = m * (1.0 + e) * (2.0 * G * h).sqrt() / 2.0;
+    for impact in impacts {
+        assert!(relative(impact.t, t1) < 1e-10);
+        assert!(relative(impact.impulse, exact) < 1e-9, "{} against {exact}", impact.impulse);
+    }
+    assert!(solution.v(Bar::TH).iter().all(|w| w.abs() < 1e-12), "the bar stays flat");
+    let rise = *solution.v(Bar::Y).last().expect("a sample");
+    let exact_rise = e * (2.0 * G * h).sqrt() - G * 0.5 * t1;
+    assert!((rise - exact_rise).abs() < 1e-9, "{rise} against {exact_rise}");
+}
+
+/// The variational integrator with declared contacts: velocity Verlet solves free fall
+/// exactly, so on its discrete flow the touchdowns and impulses agree with the series too.
+#[test]
+fn the_variational_integrator_takes_the_same_impacts() {
+    let (h0, e, m) = (1.0, 0.7, 1.0);
+    let ball = BouncingBall { m, g: G, e };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, h0);
+    let mut variational = Variational::new(&ball, 1e-3, VariationalOptions::default()).expect("valid step");
+    let solution = variational
+        .solve_with_events(
+            0.0,
+            &start,
+            2.0,
+            &Sampling::Every(0.01),
+            &mut Events::new().contacts(&ball),
+            go_on,
+        )
+        .expect("integrates");
+    let t1 = (2.0 * h0 / G).sqrt();
+    let impacts = solution.impacts_at("floor").expect("a contact of that name");
+    assert!(impacts.len() >= 4);
+    for (n, impact) in impacts.iter().enumerate() {
+        let n = n as i32;
+        let exact_t = t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
+        assert!(relative(impact.t, exact_t) < 1e-10, "touchdown {n}");
+        let exact_impulse = m * (1.0 + e) * e.powi(n) * (2.0 * G * h0).sqrt();
+        assert!(relative(impact.impulse, exact_impulse) < 1e-9, "impulse {n}");
+    }
+}
+
+/// Bad use: a start inside the wall, a restitution outside [0, 1].
+#[test]
+fn bad_contacts_end_in_typed_errors() {
+    let ball = BouncingBall { m: 1.0, g: G, e: 0.5 };
+    let mut below = State::<BouncingBall>::zeros();
+    below.set_q(BouncingBall::Y, -0.1);
+    let mut radau = Radau::new(&ball, RadauOptions::default()).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &below, 1.0, &Sampling::Steps, &mut Events::new().contacts(&ball), go_on)
+        .expect_err("starts inside the floor");
+    assert!(
+        matches!(&error, SimError::StateNotConsistent { equation, residual, .. }
+            if equation.contains("`floor`") && (residual - 0.1).abs() < 1e-15),
+        "{error:?}"
+    );
+
+    let springy = BouncingBall { m: 1.0, g: G, e: 1.5 };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let mut radau = Radau::new(&springy, RadauOptions::default()).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut Events::new().contacts(&springy), go_on)
+        .expect_err("a restitution above 1");
+    assert!(
+        matches!(&error, SimError::InvalidParameter { name, value } if name.contains("`floor`") && *value == 1.5),
+        "{error:?}"
+    );
+}
