@@ -8,8 +8,8 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
 use crate::symbol::{
-    CONSTRAINT, COORDINATES, DEFINE, DIRAC, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT,
-    PORT, PORTS, RESTITUTION, UNILATERAL,
+    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIRAC, EVENT, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE,
+    MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, UNILATERAL,
 };
 
 /// A model as written by the user.
@@ -32,6 +32,8 @@ pub struct Model<'a> {
     pub outputs: Vec<DefineDecl>,
     /// `unilateral(name, restitution = e) = expr`, in the order written.
     pub unilaterals: Vec<UnilateralDecl>,
+    /// `event(name, direction) = expr`, in the order written.
+    pub events: Vec<EventDecl>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
@@ -85,6 +87,14 @@ pub struct UnilateralDecl {
     pub expr: Expr,
 }
 
+/// `event(name) = expr` or `event(name, falling | rising | either) = expr`.
+pub struct EventDecl {
+    pub name: Ident,
+    /// −1 falling, 1 rising, 0 either (the default).
+    pub direction: i8,
+    pub expr: Expr,
+}
+
 /// `force(x) = expr`.
 pub struct ForceDecl {
     pub coordinate: Ident,
@@ -103,6 +113,7 @@ impl<'a> Model<'a> {
             inputs: Vec::new(),
             outputs: Vec::new(),
             unilaterals: Vec::new(),
+            events: Vec::new(),
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
@@ -241,6 +252,7 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 list.push(DefineDecl { name, expr });
             }
             UNILATERAL => model.unilaterals.push(parse_unilateral(input)?),
+            EVENT => model.events.push(parse_event(input)?),
             FORCE => {
                 let content;
                 syn::parenthesized!(content in input);
@@ -288,6 +300,38 @@ fn parse_coordinates(model: &mut Model<'_>, input: ParseStream) -> syn::Result<(
     }
     model.coordinates.extend(decls);
     Ok(())
+}
+
+/// `(name) = expr` or `(name, direction) = expr`, after `event`.
+fn parse_event(input: ParseStream) -> syn::Result<EventDecl> {
+    let content;
+    syn::parenthesized!(content in input);
+    let name = content.parse::<Ident>()?.unraw();
+    let mut direction = 0;
+    if !content.is_empty() {
+        content.parse::<Token![,]>()?;
+        let key = content.call(Ident::parse_any)?;
+        direction = match key.to_string().as_str() {
+            "falling" => -1,
+            "rising" => 1,
+            "either" => 0,
+            other => {
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown direction `{other}` of an event; expected one of: {}",
+                        CROSSINGS.join(", ")
+                    ),
+                ));
+            }
+        };
+        if !content.is_empty() {
+            return Err(content.error(format!("expected `{EVENT}(name, falling) = expr`")));
+        }
+    }
+    input.parse::<Token![=]>()?;
+    let expr: Expr = input.parse()?;
+    Ok(EventDecl { name, direction, expr })
 }
 
 /// `(name) = expr` or `(name, restitution = e) = expr`, after `unilateral`.

@@ -76,6 +76,8 @@ pub struct Blocks {
     pub unilateral: Vec<Id>,
     pub unilateral_dq: Matrix,
     pub restitution: Vec<Id>,
+    /// The event functions `g(t, q, v, λ)`.
+    pub events: Vec<Id>,
 }
 
 /// `[∂e/∂x for x in wrt]`.
@@ -163,6 +165,7 @@ impl Blocks {
         let unilateral: Vec<Id> = m.unilaterals.iter().map(|u| u.phi).collect();
         let unilateral_dq = jacobian(g, &unilateral, &q);
         let restitution = m.unilaterals.iter().map(|u| u.restitution).collect();
+        let events = m.events.iter().map(|e| e.2).collect();
         Blocks {
             lagrangian,
             dl_dq,
@@ -197,6 +200,7 @@ impl Blocks {
             unilateral,
             unilateral_dq,
             restitution,
+            events,
         }
     }
 }

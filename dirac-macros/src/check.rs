@@ -36,8 +36,8 @@ fn check_required(cx: &Ctxt, model: &Model<'_>) {
     }
 }
 
-/// Parameters, coordinates, velocities, constraint names, definitions, outputs and unilateral
-/// constraints share one namespace,
+/// Parameters, coordinates, velocities, constraint names, definitions, outputs, unilateral
+/// constraints and events share one namespace,
 /// without `t`.
 fn check_names(cx: &Ctxt, model: &Model<'_>) {
     let mut seen: HashMap<String, &'static str> = HashMap::new();
@@ -83,6 +83,9 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
     }
     for u in &model.unilaterals {
         declare(&u.name, "unilateral constraint");
+    }
+    for e in &model.events {
+        declare(&e.name, "event");
     }
 }
 

@@ -293,6 +293,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
     let inputs = inputs.iter().map(ToString::to_string);
     let outputs = sym.outputs.iter().map(|(name, _)| name);
     let unilaterals = sym.unilaterals.iter().map(|u| &u.name);
+    let events = sym.events.iter().map(|(name, direction, _)| quote! { (#name, #direction) });
     quote! {
         #[automatically_derived]
         impl #p::Named for #ident {
@@ -305,6 +306,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
                 inputs: &[#(#inputs),*],
                 outputs: &[#(#outputs),*],
                 unilaterals: &[#(#unilaterals),*],
+                events: &[#(#events),*],
                 subsystems: &[],
             };
         }
@@ -350,6 +352,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 inputs: &[],
                 outputs: &[],
                 unilaterals: &[],
+                events: &[],
                 subsystems: &[],
             };
         }

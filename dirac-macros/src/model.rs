@@ -49,6 +49,9 @@ pub struct SymModel {
     pub inputs: Vec<Id>,
     /// `unilateral(name, restitution = e) = φ`: each name with `φ(q, t)` and `e`, in order.
     pub unilaterals: Vec<Unilateral>,
+    /// `event(name, direction) = g`: each name with its direction (−1 falling, 1 rising, 0
+    /// either) and `g(t, q, v, λ)`, in order.
+    pub events: Vec<(String, i8, Id)>,
 }
 
 /// A unilateral constraint `φ(q, t) ≥ 0` with its coefficient of restitution.
@@ -101,6 +104,7 @@ impl SymModel {
             outputs: Vec::new(),
             inputs: Vec::new(),
             unilaterals: Vec::new(),
+            events: Vec::new(),
         };
         let mut scope = sm.declare_symbols();
         for u in &model.inputs {
@@ -133,6 +137,11 @@ impl SymModel {
             let what = format!("the output `{}`", o.name);
             let lowered = sm.lowerer(cx, &with_multipliers).lower(&o.expr, Context { what: &what, ..all });
             sm.outputs.push((o.name.to_string(), lowered.unwrap_or(zero)));
+        }
+        for e in &model.events {
+            let what = format!("the event `{}`", e.name);
+            let lowered = sm.lowerer(cx, &with_multipliers).lower(&e.expr, Context { what: &what, ..all });
+            sm.events.push((e.name.to_string(), e.direction, lowered.unwrap_or(zero)));
         }
         sm.lower_unilaterals(cx, model, &scope);
         sm.lagrangian = lagrangian?;

@@ -84,7 +84,7 @@ fn driven_oscillator_with_forces_and_time() {
 }
 
 #[test]
-fn a_pendulum_with_a_wall() {
+fn a_pendulum_with_a_wall_and_events() {
     check(
         "pendulum_and_wall",
         quote! {
@@ -92,6 +92,8 @@ fn a_pendulum_with_a_wall() {
             #[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
             #[dirac(holonomic(rod) = x * x + y * y - l * l)]
             #[dirac(unilateral(wall, restitution = e) = x - w * (y / l).cos())]
+            #[dirac(event(slack, rising) = rod)]
+            #[dirac(event(level) = y * vx)]
             pub struct PendulumAndWall { pub m: f64, pub g: f64, pub l: f64, pub e: f64, pub w: f64 }
         },
     );

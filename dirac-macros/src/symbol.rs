@@ -29,12 +29,29 @@ pub const OUTPUT: &str = "output";
 pub const UNILATERAL: &str = "unilateral";
 /// The restitution of a `unilateral` constraint.
 pub const RESTITUTION: &str = "restitution";
+/// `event(name) = expr` or `event(name, falling | rising | either) = expr`: a function whose
+/// crossings of zero an integration locates.
+pub const EVENT: &str = "event";
+/// The directions of an `event`'s crossings.
+pub const CROSSINGS: &[&str] = &["falling", "rising", "either"];
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
 /// Every key a `#[dirac(...)]` attribute of a model accepts, for error messages.
-pub const MODEL_KEYS: &[&str] =
-    &[COORDINATES, PORT, INPUT, OUTPUT, DEFINE, LAGRANGIAN, CONSTRAINT, HOLONOMIC, UNILATERAL, FORCE, LARGE];
+pub const MODEL_KEYS: &[&str] = &[
+    COORDINATES,
+    PORT,
+    INPUT,
+    OUTPUT,
+    DEFINE,
+    LAGRANGIAN,
+    CONSTRAINT,
+    HOLONOMIC,
+    UNILATERAL,
+    EVENT,
+    FORCE,
+    LARGE,
+];
 
 /// `connect(a.x, b.y)`: an interconnection of two ports, `v_a.x = v_b.y` and `f_a.x + f_b.y = 0`.
 pub const CONNECT: &str = "connect";

@@ -121,6 +121,35 @@ where
         self
     }
 
+    /// Adds the events the model declares (`#[dirac(event(name, direction) = g)]`, a function
+    /// of time, positions, velocities, multipliers and inputs), each with its name and
+    /// direction. An interconnection whose subsystems declare events is refused at
+    /// [`Events::begin`]: their events are not gathered yet.
+    pub fn declared(mut self) -> Self {
+        let own = M::NAMES.events;
+        if M::NAMES.event_count() > own.len() {
+            self.refused = Some(
+                "the model's subsystems declare events, which an interconnection does not gather yet; \
+                 add them with `Events::on`"
+                    .into(),
+            );
+        }
+        let k = own.len();
+        for (j, &(name, direction)) in own.iter().enumerate() {
+            let crossing = match direction {
+                d if d < 0 => Crossing::Falling,
+                d if d > 0 => Crossing::Rising,
+                _ => Crossing::Either,
+            };
+            let mut values = vec![0.0; k];
+            self = self.on(name, crossing, move |t, s: &State<M>, m: &M| {
+                m.events(t, &s.q, &s.v, &s.lambda, &mut values);
+                values[j]
+            });
+        }
+        self
+    }
+
     /// Adds the model's unilateral constraints (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`), each
     /// an event of its own name when `φ` falls through zero. At such an event
     /// [`SolveWithEvents::solve_with_events`] applies the impact law before the action: the

@@ -349,6 +349,14 @@ where
         );
     }
 
+    /// The model's event functions `g(t, q, v, λ)` (`#[dirac(event(name, direction) = g)]`),
+    /// into `out`, one per event in the order declared (`Events::new().declared()` watches
+    /// them).
+    fn events(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
+        assert!(out.is_empty(), "events: the model declares none, so the slice must be empty");
+    }
+
     /// The value of input `k`, the position of an [`Input`] key. The derive implements it for
     /// models with inputs; it panics if the model has no input `k`.
     fn input_value(&self, k: usize) -> f64 {

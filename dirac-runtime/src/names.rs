@@ -33,6 +33,9 @@ pub struct Names {
     pub outputs: &'static [&'static str],
     /// The model's own unilateral constraints (`unilateral(name) = φ`, `φ ≥ 0`).
     pub unilaterals: &'static [&'static str],
+    /// The model's own events (`event(name, direction) = g`), each with the direction of the
+    /// crossings that count: −1 falling, 1 rising, 0 either.
+    pub events: &'static [(&'static str, i8)],
     /// The subsystems of a composite, in field order.
     pub subsystems: &'static [Subsystem],
 }
@@ -184,6 +187,18 @@ impl Names {
         count
     }
 
+    /// The number of events declared by the model and its subsystems, at any depth. Usable in
+    /// `const` items.
+    pub const fn event_count(&self) -> usize {
+        let mut count = self.events.len();
+        let mut i = 0;
+        while i < self.subsystems.len() {
+            count += self.subsystems[i].names.event_count();
+            i += 1;
+        }
+        count
+    }
+
     /// Every input's full dotted name, in the order of the model's input keys: its
     /// subsystems' in field order, then its own.
     pub fn input_names(&self) -> Vec<String> {
@@ -276,6 +291,7 @@ mod tests {
         inputs: &["force"],
         outputs: &["energy"],
         unilaterals: &[],
+        events: &[],
         subsystems: &[],
     };
     static RIGHT: Names = Names {
@@ -287,6 +303,7 @@ mod tests {
         inputs: &[],
         outputs: &[],
         unilaterals: &[],
+        events: &[],
         subsystems: &[],
     };
     static CHAIN: Names = Names {
@@ -298,6 +315,7 @@ mod tests {
         inputs: &[],
         outputs: &[],
         unilaterals: &[],
+        events: &[],
         subsystems: &[
             Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },
             Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0, u_offset: 1 },

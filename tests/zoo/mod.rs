@@ -715,3 +715,17 @@ pub struct Bar {
     pub l: f64,
     pub e: f64,
 }
+
+/// A pendulum on a string, whirled: the string goes slack when its tension, the rod's
+/// multiplier (`λ < 0` pulls), vanishes; both events are declared on the model.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(holonomic(rod) = x * x + y * y - l * l)]
+#[dirac(event(slack, rising) = rod)]
+#[dirac(event(level) = y)]
+pub struct Sling {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+}

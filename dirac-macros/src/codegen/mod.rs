@@ -11,9 +11,9 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use self::signatures::{
-    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU, FORCE,
-    FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU, L_VV,
-    LAGRANGIAN, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION,
+    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU, EVENTS,
+    FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU,
+    L_VV, LAGRANGIAN, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION,
     Signature, UNILATERAL, UNILATERAL_DQ,
 };
 use crate::blocks::Blocks;
@@ -108,6 +108,9 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         methods.extend(e.sized(&UNILATERAL, &b.unilateral));
         methods.extend(e.sized(&UNILATERAL_DQ, &column_major(&b.unilateral_dq)));
         methods.extend(e.sized(&RESTITUTION, &b.restitution));
+    }
+    if !b.events.is_empty() {
+        methods.extend(e.sized(&EVENTS, &b.events));
     }
     for (sig, block) in [
         (DPDOT_DU, &b.dpdot_du),

@@ -111,6 +111,8 @@ pub const OUTPUT_DU: Signature = method("output_du", &[T, Q, V], Out::Values);
 pub const UNILATERAL: Signature = method("unilateral", &[T, Q], Out::Values);
 pub const UNILATERAL_DQ: Signature = method("unilateral_dq", &[T, Q], Out::Values);
 pub const RESTITUTION: Signature = method("restitution", &[T, Q], Out::Values);
+/// The model's event functions, in the order declared; emitted for models that have events.
+pub const EVENTS: Signature = method("events", &[T, Q, V, Lambda], Out::Values);
 
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 19] = [

@@ -44,6 +44,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 inputs: &[],
                 outputs: &[],
                 unilaterals: &[],
+                events: &[],
                 subsystems: &[#(#subsystems),*],
             };
         }

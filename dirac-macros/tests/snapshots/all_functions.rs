@@ -18,6 +18,7 @@ const _: () = {
             inputs: &[],
             outputs: &[],
             unilaterals: &[],
+            events: &[],
             subsystems: &[],
         };
     }

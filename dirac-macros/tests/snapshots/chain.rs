@@ -279,6 +279,7 @@ const _: () = {
             inputs: &[],
             outputs: &[],
             unilaterals: &[],
+            events: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "left",

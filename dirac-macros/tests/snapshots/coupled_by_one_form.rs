@@ -388,6 +388,7 @@ const _: () = {
             inputs: &[],
             outputs: &[],
             unilaterals: &[],
+            events: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "wheel",

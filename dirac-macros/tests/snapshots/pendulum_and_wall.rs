@@ -18,6 +18,7 @@ const _: () = {
             inputs: &[],
             outputs: &[],
             unilaterals: &["wall"],
+            events: &[("slack", 1i8), ("level", 0i8)],
             subsystems: &[],
         };
     }
@@ -382,6 +383,21 @@ const _: () = {
                 1usize
             );
             out[0usize] = self.e;
+        }
+        #[inline]
+        fn events(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values", "events", 2usize
+            );
+            out[0usize] = lambda[0];
+            out[1usize] = q[1] * v[0];
         }
     }
     #[automatically_derived]

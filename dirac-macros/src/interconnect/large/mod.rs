@@ -276,6 +276,7 @@ pub fn implementation(
                     inputs: &[],
                     outputs: &[],
                     unilaterals: &[],
+                    events: &[],
                     subsystems: &[],
                 };
             }
