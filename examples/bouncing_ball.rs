@@ -1,17 +1,20 @@
-//! A bouncing ball: events located on the dense output, and a reset at each touchdown.
+//! A bouncing ball: its floor a unilateral constraint, each touchdown an impact by the law the
+//! model's own constraint gives, its apexes events.
 //!
-//! A ball dropped from h0 = 1 m falls under gravity; each touchdown (its height falling
-//! through zero) reverses its velocity and scales it by the restitution e = 0.8. Between
-//! touchdowns it flies on parabolas, so everything has a closed form, a geometric series:
+//! A ball dropped from h0 = 1 m falls under gravity onto the floor `y ≥ 0`, declared with its
+//! restitution e = 0.8; at each touchdown the impact law reverses the momentum along the
+//! floor's one-form and scales it by e, an impulse `m (1 + e) v`. Between touchdowns it flies
+//! on parabolas, so everything has a closed form, a geometric series:
 //!
 //! ```text
 //! touchdown n at   T_n = t1 (1 + 2 (e + e² + … + eⁿ)),   t1 = √(2 h0 / g),
 //! apex n at        T_{n−1} + eⁿ t1,   height e²ⁿ h0,
 //! ```
 //!
-//! and the touchdowns accumulate at the Zeno time `t∞ = t1 (1 + 2e / (1 − e))`. The example
-//! integrates to shortly before t∞, prints the located times and heights against the closed
-//! form, and plots the height with the events marked.
+//! with impulse `m (1 + e) eⁿ √(2 g h0)` at touchdown n, and the touchdowns accumulate at the
+//! Zeno time `t∞ = t1 (1 + 2e / (1 − e))`. The example integrates to shortly before t∞, prints
+//! the located times, heights and impulses against the closed form, and plots the height with
+//! the events marked.
 
 use std::error::Error;
 use std::ops::ControlFlow;
@@ -23,42 +26,40 @@ mod support;
 
 use support::{Chart, Series, output_dir};
 
-/// A ball moving vertically under gravity.
+/// A ball moving vertically under gravity above a floor.
 #[derive(LagrangeDirac, Clone)]
 #[dirac(coordinates(y => v))]
 #[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+#[dirac(unilateral(floor, restitution = e) = y)]
 struct Ball {
     /// Mass [kg].
     m: f64,
     /// Gravity [m/s²].
     g: f64,
+    /// Coefficient of restitution of the floor.
+    e: f64,
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
     let (h0, e) = (1.0, 0.8);
-    let ball = Ball { m: 0.1, g: 9.81 };
+    let ball = Ball { m: 0.1, g: 9.81, e };
     let t1 = (2.0 * h0 / ball.g).sqrt();
     let zeno = t1 * (1.0 + 2.0 * e / (1.0 - e));
     let mut start = State::<Ball>::zeros();
     start.set_q(Ball::Y, h0);
 
-    let mut events = Events::new()
-        .on("touchdown", Crossing::Falling, |_, s: &State<Ball>, _| s.q(Ball::Y))
-        .on("apex", Crossing::Falling, |_, s: &State<Ball>, _| s.v(Ball::Y));
-    let touchdown = events.index("touchdown").ok_or("no touchdown event")?;
+    // The floor's impacts, and the apexes (the velocity falling through zero).
+    let mut events =
+        Events::new().contacts(&ball).on("apex", Crossing::Falling, |_, s: &State<Ball>, _| s.v(Ball::Y));
     let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-12, 1e-12))?;
     let t_end = 0.9 * zeno;
     let solution =
-        radau.solve_with_events(0.0, &start, t_end, &Sampling::Every(0.005), &mut events, |event, at| {
-            if event.index == touchdown {
-                let v = at.state().v(Ball::Y);
-                at.state_mut().set_v(Ball::Y, -e * v);
-            }
+        radau.solve_with_events(0.0, &start, t_end, &Sampling::Every(0.005), &mut events, |_, _| {
             ControlFlow::Continue(())
         })?;
 
     let touchdown_at = |n: i32| t1 * (1.0 + 2.0 * (1..=n).map(|k| e.powi(k)).sum::<f64>());
-    let touchdowns = solution.event_times("touchdown").ok_or("no touchdown event")?;
+    let touchdowns = solution.event_times("floor").ok_or("no floor contact")?;
     let apexes = solution.event_times("apex").ok_or("no apex event")?;
     println!(
         "{} touchdowns and {} apexes up to t = {t_end:.4} s (Zeno time {zeno:.4} s)",
@@ -83,6 +84,14 @@ fn main() -> Result<(), Box<dyn Error>> {
         .map(|(n, h)| ((h - e.powi(2 * (n as i32 + 1)) * h0) / (e.powi(2 * (n as i32 + 1)) * h0)).abs())
         .fold(0.0, f64::max);
     println!("apex heights against e^(2n) h0: worst relative error {worst_height:.1e}");
+    let impacts = solution.impacts_at("floor").ok_or("no floor contact")?;
+    let first = ball.m * (1.0 + e) * (2.0 * ball.g * h0).sqrt();
+    let worst_impulse = impacts
+        .iter()
+        .enumerate()
+        .map(|(n, i)| ((i.impulse - first * e.powi(n as i32)) / (first * e.powi(n as i32))).abs())
+        .fold(0.0, f64::max);
+    println!("impulses against m (1 + e) e^n √(2 g h0): worst relative error {worst_impulse:.1e}");
     for (n, (ta, h)) in apexes.iter().zip(&heights).take(4).enumerate() {
         println!("  apex {}: t = {ta:.6} s, height {h:.6} m", n + 1);
     }
