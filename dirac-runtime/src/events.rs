@@ -66,8 +66,6 @@ where
     /// of them each event function is.
     contacts: Option<Contacts>,
     contact_of: Vec<Option<usize>>,
-    /// Why the contacts cannot be watched, reported at [`Events::begin`].
-    refused: Option<String>,
 }
 
 impl<M: LagrangeDirac> Default for Events<'_, M>
@@ -102,7 +100,6 @@ where
             evaluations: 0,
             contacts: None,
             contact_of: Vec::new(),
-            refused: None,
         }
     }
 
@@ -122,20 +119,12 @@ where
     }
 
     /// Adds the events the model declares (`#[dirac(event(name, direction) = g)]`, a function
-    /// of time, positions, velocities, multipliers and inputs), each with its name and
-    /// direction. An interconnection whose subsystems declare events is refused at
-    /// [`Events::begin`]: their events are not gathered yet.
+    /// of time, positions, velocities, multipliers and inputs), each with its name (dotted in
+    /// an interconnection: `arm.slack`) and direction.
     pub fn declared(mut self) -> Self {
-        let own = M::NAMES.events;
-        if M::NAMES.event_count() > own.len() {
-            self.refused = Some(
-                "the model's subsystems declare events, which an interconnection does not gather yet; \
-                 add them with `Events::on`"
-                    .into(),
-            );
-        }
-        let k = own.len();
-        for (j, &(name, direction)) in own.iter().enumerate() {
+        let declared = M::NAMES.event_declarations();
+        let k = declared.len();
+        for (j, (name, direction)) in declared.into_iter().enumerate() {
             let crossing = match direction {
                 d if d < 0 => Crossing::Falling,
                 d if d > 0 => Crossing::Rising,
@@ -161,18 +150,11 @@ where
     ///
     /// Resting contact is not simulated: an impact that leaves a contact closed (restitution
     /// 0), or impacts that accumulate (a Zeno sequence), end the integration with
-    /// [`SimError::ContactCloses`]. An interconnection whose subsystems have unilateral
-    /// constraints is refused at [`Events::begin`]: their contacts are not gathered yet.
+    /// [`SimError::ContactCloses`]. An interconnection watches its subsystems' contacts, by
+    /// dotted name (`ball.floor`).
     pub fn contacts(mut self, model: &M) -> Self {
         let contacts = Contacts::new(model);
         let k = contacts.names.len();
-        if M::NAMES.unilateral_count() > k {
-            self.refused = Some(
-                "the model's subsystems have unilateral constraints, which an interconnection does not \
-                 gather yet; declare the contacts on a primitive model"
-                    .into(),
-            );
-        }
         for (j, name) in contacts.names.iter().enumerate() {
             let mut values = vec![0.0; k];
             self.names.push(name.clone());
@@ -245,9 +227,6 @@ where
     /// the locator's storage; call it before the first step. Two functions of the same name
     /// are refused ([`SimError::InvalidOption`]).
     pub fn begin(&mut self, model: &M, t: f64, state: &State<M>) -> Result<(), SimError> {
-        if let Some(reason) = &self.refused {
-            return Err(SimError::InvalidOption { what: "contacts", reason: reason.clone() });
-        }
         let n = self.functions.len();
         if let Some(k) = (1..n).find(|&k| self.names[..k].contains(&self.names[k])) {
             return Err(SimError::InvalidOption {

@@ -313,10 +313,9 @@ where
 
     /// The names of the model's unilateral constraints `φ_u(q, t) ≥ 0`
     /// (`#[dirac(unilateral(name) = φ)]`: contacts, stops, walls), in the order declared.
-    /// Interconnections have none of their own, and their subsystems' are not gathered:
-    /// [`Events::contacts`](crate::Events::contacts) refuses such a composite.
+    /// An interconnection has its subsystems', by dotted name (`ball.floor`).
     fn unilateral_names(&self) -> Vec<String> {
-        Self::NAMES.unilaterals.iter().map(|n| n.to_string()).collect()
+        Self::NAMES.unilateral_names()
     }
 
     /// The values `φ_u(q, t)` of the unilateral constraints, into `out` (one per constraint):

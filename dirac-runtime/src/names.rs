@@ -215,6 +215,30 @@ impl Names {
         out
     }
 
+    /// Every unilateral constraint's full dotted name, in the order of the model's
+    /// [`unilateral`](crate::LagrangeDirac::unilateral) values: its subsystems' in field
+    /// order, then its own.
+    pub fn unilateral_names(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        self.collect_last("", &mut out, &|n| n.unilaterals);
+        out
+    }
+
+    /// Every declared event's full dotted name and direction (−1 falling, 1 rising, 0 either),
+    /// in the order of the model's [`events`](crate::LagrangeDirac::events) values.
+    pub fn event_declarations(&self) -> Vec<(String, i8)> {
+        let mut out = Vec::new();
+        self.collect_events("", &mut out);
+        out
+    }
+
+    fn collect_events(&self, prefix: &str, out: &mut Vec<(String, i8)>) {
+        for sub in self.subsystems {
+            sub.names.collect_events(&format!("{prefix}{}.", sub.field), out);
+        }
+        out.extend(self.events.iter().map(|&(n, d)| (format!("{prefix}{n}"), d)));
+    }
+
     /// The subsystems' names, then the model's own.
     fn collect_last(
         &self,

@@ -279,3 +279,37 @@ fn bad_contacts_end_in_typed_errors() {
         "{error:?}"
     );
 }
+
+/// An interconnection watches its subsystems' contacts and declared events, by dotted name:
+/// a ball carrying a free load falls as one body of mass `M = m + m_load` under the ball's
+/// weight, with acceleration `a = g m / M`; it touches down at `√(2 h / a)` and the floor's
+/// impulse reverses the momentum of both, `M (1 + e) √(2 a h)`, through the port. Its apex
+/// (the ball's own `apex` event) is at the height `e² h`.
+#[test]
+fn an_interconnection_watches_its_subsystems_contacts_and_events() {
+    use crate::zoo::{Load, LoadedBall, PortedBall};
+    let (m, m_load, e, h) = (0.4, 1.1, 0.6, 0.9);
+    let model = LoadedBall { ball: PortedBall { m, g: G, e }, load: Load { m: m_load } };
+    assert_eq!(model.unilateral_names(), ["ball.floor"]);
+    let q = dirac::nalgebra::Vector2::new(h, h);
+    let start =
+        consistent_state(&model, 0.0, &q, &Default::default(), Consistency::default()).expect("consistent");
+    let mut events = Events::new().contacts(&model).declared();
+    assert_eq!(events.names(), ["ball.floor", "ball.apex"]);
+    let mut radau = Radau::new(&model, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let a = G * m / (m + m_load);
+    let t1 = (2.0 * h / a).sqrt();
+    let solution = radau
+        .solve_with_events(0.0, &start, 1.8 * t1, &Sampling::Every(0.01), &mut events, go_on)
+        .expect("integrates");
+    let impacts = solution.impacts_at("ball.floor").expect("a contact of that name");
+    assert_eq!(impacts.len(), 1);
+    assert!(relative(impacts[0].t, t1) < 1e-10, "{} against {t1}", impacts[0].t);
+    let exact = (m + m_load) * (1.0 + e) * (2.0 * a * h).sqrt();
+    assert!(relative(impacts[0].impulse, exact) < 1e-9, "{} against {exact}", impacts[0].impulse);
+    let apex = solution.event_times("ball.apex").expect("an event of that name");
+    assert_eq!(apex.len(), 1);
+    let i = solution.t().iter().position(|&t| t == apex[0]).expect("a sample at the event");
+    let height = solution.q(LoadedBall::BALL_Y)[i];
+    assert!(relative(height, e * e * h) < 1e-9, "{height}");
+}

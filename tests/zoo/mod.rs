@@ -729,3 +729,32 @@ pub struct Sling {
     pub g: f64,
     pub l: f64,
 }
+
+/// A ball with a port at its height, a floor and an apex event.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => v), port(y))]
+#[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+#[dirac(unilateral(floor, restitution = e) = y)]
+#[dirac(event(apex, falling) = v)]
+pub struct PortedBall {
+    pub m: f64,
+    pub g: f64,
+    pub e: f64,
+}
+
+/// A free mass with a port.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(z => w), port(z))]
+#[dirac(lagrangian = 0.5 * m * w * w)]
+pub struct Load {
+    pub m: f64,
+}
+
+/// A ball carrying a load: the two move as one body of mass `m_ball + m_load` pulled down by
+/// the ball's weight alone, on the ball's floor.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(ball.y, load.z))]
+pub struct LoadedBall {
+    pub ball: PortedBall,
+    pub load: Load,
+}

@@ -186,6 +186,72 @@ pub fn output_method(composite: &Composite<'_>) -> TokenStream {
     }
 }
 
+/// `unilateral`, `restitution` and `events` of a composite: each subsystem's values at its
+/// offset, from its own arguments, written in place (event functions are evaluated at every
+/// step and must not allocate); `unilateral_dq`: each subsystem's rows at its offset and its
+/// coordinates' columns.
+pub fn contact_and_event_methods(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    // (method, count, whether it takes v and λ)
+    let specs = [
+        ("unilateral", "unilateral_count", false),
+        ("restitution", "unilateral_count", false),
+        ("events", "event_count", true),
+    ];
+    let values = specs.iter().map(|&(name, count, with_v_lambda)| {
+        let (method, count) = (format_ident!("{}", name), format_ident!("{}", count));
+        let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
+            let (field, ty) = (&s.ident, &s.ty);
+            let slot = format_ident!("__SLOT{}", i);
+            let start = offset(composite, i, &count);
+            let extra = with_v_lambda.then(|| {
+                quote! { &#p::gather_q::<#ty, Self>(v, &#slot), &#p::gather_c::<#ty, Self>(lambda, &#slot), }
+            });
+            quote! {{
+                let (start, count) = (#start, <#ty as #p::Named>::NAMES.#count());
+                if count > 0 {
+                    self.#field.#method(t, &#p::gather_q::<#ty, Self>(q, &#slot), #extra &mut out[start..start + count]);
+                }
+            }}
+        });
+        let extra_args = with_v_lambda.then(|| quote! { v: &#p::VecQ<Self>, lambda: &#p::VecC<Self>, });
+        quote! {
+            fn #method(
+                &self,
+                t: ::core::primitive::f64,
+                q: &#p::VecQ<Self>,
+                #extra_args
+                out: &mut [::core::primitive::f64],
+            ) {
+                ::core::assert_eq!(out.len(), <Self as #p::Named>::NAMES.#count(), "{}: wrong slice length", #name);
+                #(#parts)*
+            }
+        }
+    });
+    let rows = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (field, ty) = (&s.ident, &s.ty);
+        let slot = format_ident!("__SLOT{}", i);
+        let row0 = offset(composite, i, &format_ident!("unilateral_count"));
+        quote! {{
+            let (rows, cols) = (<#ty as #p::Named>::NAMES.unilateral_count(), <#ty as #p::Fixed>::NQ);
+            if rows > 0 {
+                let mut block = ::std::vec![0.0; rows * cols];
+                self.#field.unilateral_dq(t, &#p::gather_q::<#ty, Self>(q, &#slot), &mut block);
+                #p::place_block(&block, rows, total_rows, (#row0, #slot.q), out);
+            }
+        }}
+    });
+    quote! {
+        #(#values)*
+        fn unilateral_dq(&self, t: ::core::primitive::f64, q: &#p::VecQ<Self>, out: &mut [::core::primitive::f64]) {
+            let total_rows = <Self as #p::Named>::NAMES.unilateral_count();
+            ::core::assert_eq!(out.len(), total_rows * <Self as #p::Fixed>::NQ, "unilateral_dq: wrong slice length");
+            out.fill(0.0);
+            #(#rows)*
+        }
+    }
+}
+
 /// `input_value` and `set_input_value` of a composite: each subsystem's inputs at its offset.
 pub fn input_methods(composite: &Composite<'_>) -> TokenStream {
     let p = rt();

@@ -25,6 +25,7 @@ pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
     out.extend(super::items::input_methods(composite));
     out.extend(super::items::output_method(composite));
     out.extend(super::items::linearisation_methods(composite));
+    out.extend(super::items::contact_and_event_methods(composite));
     out
 }
 

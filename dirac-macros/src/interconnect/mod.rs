@@ -178,6 +178,26 @@ fn implementation(
 }
 
 /// A check, at each field's type, that the type is a model.
+/// For a composite with arrays: its subsystems may not have unilateral constraints or declared
+/// events, which it does not gather.
+fn no_contacts_or_events(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    composite
+        .subsystems
+        .iter()
+        .map(|s| {
+            let ty = &s.ty;
+            quote_spanned! {ty.span()=>
+                const _: () = ::core::assert!(
+                    <#ty as #p::Named>::NAMES.unilateral_count() == 0 && <#ty as #p::Named>::NAMES.event_count() == 0,
+                    "a composite with arrays of subsystems does not gather their unilateral constraints or declared \
+                     events yet: declare them on a composite of named subsystems, or add the events with `Events::on`"
+                );
+            }
+        })
+        .collect()
+}
+
 fn subsystem_asserts(composite: &Composite<'_>) -> TokenStream {
     let p = rt();
     composite

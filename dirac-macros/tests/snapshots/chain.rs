@@ -1684,6 +1684,232 @@ const _: () = {
                 }
             }
         }
+        fn unilateral(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .unilateral_count(), "{}: wrong slice length", "unilateral"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    self.left
+                        .unilateral(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+            {
+                let (start, count) = (
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .unilateral_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    self.right
+                        .unilateral(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+        }
+        fn restitution(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .unilateral_count(), "{}: wrong slice length", "restitution"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    self.left
+                        .restitution(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+            {
+                let (start, count) = (
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .unilateral_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    self.right
+                        .restitution(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+        }
+        fn events(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES.event_count(),
+                "{}: wrong slice length", "events"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.event_count(),
+                );
+                if count > 0 {
+                    self.left
+                        .events(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(v, &__SLOT0),
+                            &::dirac::__private::gather_c::<
+                                Primitive1,
+                                Self,
+                            >(lambda, &__SLOT0),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Primitive1 as ::dirac::__private::Named>::NAMES.event_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.event_count(),
+                );
+                if count > 0 {
+                    self.right
+                        .events(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(v, &__SLOT1),
+                            &::dirac::__private::gather_c::<
+                                Primitive2,
+                                Self,
+                            >(lambda, &__SLOT1),
+                            &mut out[start..start + count],
+                        );
+                }
+            }
+        }
+        fn unilateral_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES
+                .unilateral_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "unilateral_dq: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.left
+                        .unilateral_dq(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive1,
+                                Self,
+                            >(q, &__SLOT0),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    self.right
+                        .unilateral_dq(
+                            t,
+                            &::dirac::__private::gather_q::<
+                                Primitive2,
+                                Self,
+                            >(q, &__SLOT1),
+                            &mut block,
+                        );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .unilateral_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
     }
     #[automatically_derived]
     impl Chain

@@ -242,6 +242,7 @@ pub fn implementation(
     });
     let resolutions = model.resolutions(composite);
     let asserts = super::subsystem_asserts(composite);
+    let no_contacts = super::no_contacts_or_events(composite);
     let bounds = super::bounds(composite);
     let placement = large.placement();
     let shape = large.shape();
@@ -252,6 +253,7 @@ pub fn implementation(
     quote! {
         const _: () = {
             #asserts
+            #no_contacts
             #(#offsets)*
             #resolutions
             #linearity
