@@ -667,3 +667,29 @@ fn events_declared_on_the_model_are_watched_by_name() {
     assert!(relative(speed2, 2.0 * G * l / 3.0) < 1e-7, "v² = {speed2}");
     assert_eq!(solution.event_times("level").expect("declared").len(), 1);
 }
+
+/// After a restart within a step, the variational integrator's next step ends where the
+/// interrupted one would have, on the grid; a rest shorter than a millionth of a step is
+/// joined to the step after it rather than taken alone.
+#[test]
+fn a_variational_restart_keeps_the_grid() {
+    let model = Oscillator { m: 1.0, k: 1.0 };
+    let mut start = State::<Oscillator>::zeros();
+    start.set_q(Oscillator::X, 1.0);
+    let h = 0.01;
+    let mut variational = Variational::new(&model, h, VariationalOptions::default()).expect("valid step");
+    variational.start(0.0, &start, 1.0).expect("starts");
+    variational.step().expect("steps");
+    variational.step().expect("steps");
+    let mut at = State::<Oscillator>::zeros();
+    variational.state_at(1.3 * h, &mut at).expect("within the step");
+    variational.restart_at(1.3 * h, &at).expect("restarts");
+    let rest = variational.step().expect("steps");
+    assert!((rest - 0.7 * h).abs() < 1e-15, "{rest}");
+    assert!((variational.t() - 2.0 * h).abs() < 1e-15);
+    variational.state_at(2.0 * h - 1e-9 * h, &mut at).expect("within the step");
+    variational.restart_at(2.0 * h - 1e-9 * h, &at).expect("restarts");
+    let joined = variational.step().expect("steps");
+    assert!((joined - (h + 1e-9 * h)).abs() < 1e-15, "{joined}");
+    assert!((variational.t() - 3.0 * h).abs() < 1e-15);
+}
