@@ -35,7 +35,13 @@ pub(crate) struct Contacts {
     restitution: Vec<f64>,
     /// The times of the last three impacts at each contact, latest last (NaN before).
     recent: Vec<[f64; 3]>,
+    /// The fastest approach seen at each contact.
+    fastest: Vec<f64>,
 }
+
+/// A contact reopened at a speed below this share of its fastest approach has come to rest:
+/// its next impacts would come ever faster without end (a Zeno sequence).
+const AT_REST: f64 = 1e-9;
 
 impl Contacts {
     /// The unilateral constraints of `model`.
@@ -45,7 +51,13 @@ impl Contacts {
     {
         let names = model.unilateral_names();
         let (k, n) = (names.len(), model.sizes().nq);
-        Contacts { rows: vec![0.0; k * n], restitution: vec![0.0; k], recent: vec![[f64::NAN; 3]; k], names }
+        Contacts {
+            rows: vec![0.0; k * n],
+            restitution: vec![0.0; k],
+            recent: vec![[f64::NAN; 3]; k],
+            fastest: vec![0.0; k],
+            names,
+        }
     }
 
     /// The impact at time `t` of the contacts `closing` (their indices among the unilateral
@@ -152,8 +164,10 @@ impl Contacts {
         for (i, &j) in closing.iter().enumerate().filter(|&(i, _)| approach[i] < 0.0) {
             let recent = &mut self.recent[j];
             *recent = [recent[1], recent[2], t];
-            if reopening[i] <= 0.0 {
-                return Err(SimError::ContactCloses { contact: self.names[j].clone(), t, t_limit: None });
+            self.fastest[j] = self.fastest[j].max(-approach[i]);
+            if reopening[i] <= AT_REST * self.fastest[j] {
+                let t_limit = self.accumulation(j);
+                return Err(SimError::ContactCloses { contact: self.names[j].clone(), t, t_limit });
             }
         }
         Ok(impulses)
@@ -163,16 +177,25 @@ impl Contacts {
     /// sequence), the error that says so: the contact, the last impact, and the time the
     /// impacts accumulate at, extrapolated from the last three as a geometric series.
     pub fn zeno(&self, failed_at: f64) -> Option<SimError> {
-        self.recent.iter().zip(&self.names).find_map(|(&[t1, t2, t3], name)| {
-            let (d1, d2) = (t2 - t1, t3 - t2);
-            let ratio = d2 / d1;
-            if !(ratio > 0.0 && ratio < 1.0) {
-                return None;
-            }
-            let t_limit = t3 + d2 * ratio / (1.0 - ratio);
+        (0..self.names.len()).find_map(|j| {
+            let t_limit = self.accumulation(j)?;
+            let [_, t2, t3] = self.recent[j];
             // The step failed within the accumulation, not somewhere else.
-            let close = failed_at >= t3 && failed_at <= t_limit + 2.0 * d2;
-            close.then(|| SimError::ContactCloses { contact: name.clone(), t: t3, t_limit: Some(t_limit) })
+            let close = failed_at >= t3 && failed_at <= t_limit + 2.0 * (t3 - t2);
+            close.then(|| SimError::ContactCloses {
+                contact: self.names[j].clone(),
+                t: t3,
+                t_limit: Some(t_limit),
+            })
         })
+    }
+
+    /// Where the impacts at contact `j` accumulate, if their last three intervals shrink: the
+    /// sum of the geometric series their last two intervals start.
+    fn accumulation(&self, j: usize) -> Option<f64> {
+        let [t1, t2, t3] = self.recent[j];
+        let (d1, d2) = (t2 - t1, t3 - t2);
+        let ratio = d2 / d1;
+        (ratio > 0.0 && ratio < 1.0).then(|| t3 + d2 * ratio / (1.0 - ratio))
     }
 }

@@ -66,6 +66,9 @@ where
     /// of them each event function is.
     contacts: Option<Contacts>,
     contact_of: Vec<Option<usize>>,
+    /// Functions restarted at zero by an impact that reopened their contact: they count as
+    /// positive there, so that a closing again within the same step is seen.
+    reopened: Vec<bool>,
 }
 
 impl<M: LagrangeDirac> Default for Events<'_, M>
@@ -100,6 +103,7 @@ where
             evaluations: 0,
             contacts: None,
             contact_of: Vec::new(),
+            reopened: Vec::new(),
         }
     }
 
@@ -167,6 +171,19 @@ where
         }
         self.contacts = Some(contacts);
         self
+    }
+
+    /// After a restart at an impact: the contacts `reopened` (their indices among the
+    /// unilateral constraints) moved away from zero, so their functions count as positive
+    /// from there, whatever their sign at the impact.
+    fn reopen(&mut self, reopened: &[usize]) {
+        for k in 0..self.functions.len() {
+            if self.contact_of[k].is_some_and(|j| reopened.contains(&j)) {
+                self.reopened[k] = true;
+                self.signs[k] = 1.0;
+                self.lo[k] = self.lo[k].max(0.0);
+            }
+        }
     }
 
     /// The unilateral constraint event function `k` watches, if it is one.
@@ -243,6 +260,8 @@ where
         }
         self.pending.clear();
         self.pending.resize(n, false);
+        self.reopened.clear();
+        self.reopened.resize(n, false);
         self.at_event = state.clone();
         self.probe = state.clone();
         self.evaluations = 0;
@@ -271,6 +290,7 @@ where
                 self.signs[k] = g.signum();
             }
             self.pending[k] = false;
+            self.reopened[k] = false;
         }
         self.hi_current = false;
         self.inputs_moved = false;
@@ -328,6 +348,7 @@ where
                 self.inputs_moved = false;
             }
             for k in 0..self.functions.len() {
+                self.reopened[k] = false;
                 self.lo[k] = self.hi[k];
                 if self.hi[k] != 0.0 {
                     self.signs[k] = self.hi[k].signum();
@@ -377,7 +398,10 @@ where
     /// first time (to round-off) at which the function is zero or has its new sign.
     fn root<I: Integrator<M>>(&mut self, k: usize, integrator: &mut I) -> Result<f64, SimError> {
         let (mut a, mut fa, mut b, mut fb) = (self.t_lo, self.lo[k], self.t_hi, self.hi[k]);
-        if fa == 0.0 || fa.signum() != self.signs[k] {
+        if self.reopened[k] {
+            // Zero at the impact, positive just after it: the search is for the next zero.
+            fa = 0.0;
+        } else if fa == 0.0 || fa.signum() != self.signs[k] {
             // The function already had its new sign (or was zero) where the search starts.
             return Ok(a);
         }
@@ -554,6 +578,7 @@ where
         events.begin(self.model(), t0, self.state())?;
         recorder.record_initial(self.model(), t0, self.state());
         let mut after = state.clone();
+        let mut reopened = Vec::new();
         while !self.finished() {
             if let Err(error) = self.step() {
                 // A step that fails where impacts accumulate fails because of them.
@@ -570,17 +595,20 @@ where
                 recorder.record_event(self.model(), event, events.state());
                 after.clone_from(events.state());
                 let mut impulse = None;
-                let mut impacted = false;
+                reopened.clear();
                 if events.contact_of(event.index).is_some() {
                     let contact = events.contact_of(event.index);
                     for (j, lambda) in events.impact(self.model(), event.index, t, &mut after)? {
                         recorder.record_impact(Impact { contact: j, t, impulse: lambda });
-                        impacted |= lambda > 0.0;
+                        if lambda > 0.0 {
+                            reopened.push(j);
+                        }
                         if Some(j) == contact {
                             impulse = Some(lambda);
                         }
                     }
                 }
+                let impacted = !reopened.is_empty();
                 let mut context = EventContext::new(t, &mut after, self);
                 context.impulse = impulse;
                 context.reset = impacted;
@@ -597,6 +625,7 @@ where
                         consistent_state(self.model(), t, &after.q, &after.v, Consistency::default())?;
                     self.restart_at(t, &consistent)?;
                     events.resume(self.model(), t, &consistent)?;
+                    events.reopen(&reopened);
                     recorder.record_reset(self.model(), t, &consistent);
                     restarted = true;
                     break;

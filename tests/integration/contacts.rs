@@ -313,3 +313,31 @@ fn an_interconnection_watches_its_subsystems_contacts_and_events() {
     let height = solution.q(LoadedBall::BALL_Y)[i];
     assert!(relative(height, e * e * h) < 1e-9, "{height}");
 }
+
+/// The variational integrator, whose step is fixed, takes the bounces of a Zeno sequence on
+/// its discrete flow within ever fewer steps; it too ends in `ContactCloses` near `t∞`
+/// rather than locating bounces without end.
+#[test]
+fn a_zeno_sequence_ends_the_variational_integrator_too() {
+    let (h0, e) = (1.0, 0.5);
+    let t1 = (2.0 * h0 / G).sqrt();
+    let zeno = t1 * (1.0 + 2.0 * e / (1.0 - e));
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, h0);
+    let ball = BouncingBall { m: 1.0, g: G, e };
+    let mut variational = Variational::new(&ball, 1e-3, VariationalOptions::default()).expect("valid step");
+    let error = variational
+        .solve_with_events(
+            0.0,
+            &start,
+            2.0 * zeno,
+            &Sampling::Steps,
+            &mut Events::new().contacts(&ball),
+            go_on,
+        )
+        .expect_err("a Zeno sequence");
+    let SimError::ContactCloses { t_limit: Some(t_limit), .. } = &error else {
+        panic!("{error:?}");
+    };
+    assert!(relative(*t_limit, zeno) < 1e-6, "{t_limit} against {zeno}");
+}
