@@ -153,7 +153,8 @@ where
     /// impact, and its impulse ([`EventContext::impulse`]).
     ///
     /// Resting contact is not simulated: an impact that leaves a contact closed (restitution
-    /// 0), or impacts that accumulate (a Zeno sequence), end the integration with
+    /// 0), impacts that accumulate (a Zeno sequence), or a contact pressed in without an
+    /// impact (set down on its wall, or reached at zero normal speed) end the integration with
     /// [`SimError::ContactCloses`]. An interconnection watches its subsystems' contacts, by
     /// dotted name (`ball.floor`).
     pub fn contacts(mut self, model: &M) -> Self {
@@ -338,6 +339,24 @@ where
             if first.is_none_or(|(_, t_first)| root < t_first) {
                 first = Some((k, root));
             }
+        }
+        // A contact that is closed (its function zero or crossed, and not reopened by an impact)
+        // and goes deeper into its wall closes without an impact: resting contact begins,
+        // which is not simulated.
+        let closing = (0..self.functions.len()).find(|&k| {
+            let (g, lo) = (self.hi[k], self.lo[k]);
+            self.contact_of[k].is_some()
+                && !self.reopened[k]
+                && self.signs[k] <= 0.0
+                && g < 0.0
+                && g < lo.min(0.0)
+        });
+        if let (Some(k), None) = (closing, first) {
+            return Err(SimError::ContactCloses {
+                contact: self.names[k].clone(),
+                t: self.t_lo,
+                t_limit: None,
+            });
         }
         let Some((k, t_event)) = first else {
             // No event in the rest of the step: its end is the next search's start.

@@ -341,3 +341,24 @@ fn a_zeno_sequence_ends_the_variational_integrator_too() {
     };
     assert!(relative(*t_limit, zeno) < 1e-6, "{t_limit} against {zeno}");
 }
+
+/// A ball set down on its floor at rest is pressed into it by gravity: the contact closes
+/// without an impact, which is resting contact, not simulated; the integration says so at the
+/// start instead of letting the ball sink through the floor.
+#[test]
+fn a_ball_set_down_on_its_floor_ends_in_a_typed_error() {
+    let ball = BouncingBall { m: 1.0, g: G, e: 0.5 };
+    let on_the_floor = State::<BouncingBall>::zeros();
+    let mut radau = Radau::new(&ball, RadauOptions::default()).expect("valid options");
+    let error = radau
+        .solve_with_events(
+            0.0,
+            &on_the_floor,
+            1.0,
+            &Sampling::Steps,
+            &mut Events::new().contacts(&ball),
+            go_on,
+        )
+        .expect_err("resting contact");
+    assert!(matches!(&error, SimError::ContactCloses { t, t_limit: None, .. } if *t == 0.0), "{error:?}");
+}
