@@ -407,14 +407,15 @@ fn watching_contacts_does_not_allocate() {
     events.begin(radau.model(), 0.0, &start).expect("begins");
     let mut located = Vec::with_capacity(4);
     let before = allocations();
-    while !radau.finished() {
+    // Up to the touchdown (past it, without the impact, the contact would close).
+    while !radau.finished() && located.is_empty() {
         radau.step().expect("steps");
         while let Some(event) = events.locate(&mut radau).expect("locates") {
             located.push(event.t);
         }
     }
     assert_eq!(allocations() - before, 0);
-    // Left alone, the ball passes the floor once, at √(2 h / g).
+    // The touchdown at √(2 h / g).
     assert_eq!(located.len(), 1);
     assert!((located[0] - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
 }
