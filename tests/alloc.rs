@@ -407,10 +407,11 @@ fn watching_contacts_does_not_allocate() {
     events.begin(radau.model(), 0.0, &start).expect("begins");
     let mut located = Vec::with_capacity(4);
     let before = allocations();
-    // Up to the touchdown (past it, without the impact, the contact would close).
+    // Up to the touchdown (past it, without the impact that `solve_with_events` applies, the
+    // contact would close).
     while !radau.finished() && located.is_empty() {
         radau.step().expect("steps");
-        while let Some(event) = events.locate(&mut radau).expect("locates") {
+        if let Some(event) = events.locate(&mut radau).expect("locates") {
             located.push(event.t);
         }
     }
