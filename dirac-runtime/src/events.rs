@@ -530,7 +530,7 @@ where
 
     /// The state at the event, to reset: the integration restarts from the consistent state
     /// nearest to the positions and velocities left here (see
-    /// [`consistent_state`](crate::consistent_state): momenta and multipliers are computed,
+    /// [`consistent_state`]: momenta and multipliers are computed,
     /// not read).
     pub fn state_mut(&mut self) -> &mut State<M> {
         self.reset = true;
@@ -565,14 +565,14 @@ pub trait SolveWithEvents<M: LagrangeDirac>: Integrator<M> + Sized
 where
     DefaultAllocator: Storage<M>,
 {
-    /// [`Integrator::solve`](crate::Integrator::solve) with events: after each step, the crossings of the `events`'
+    /// [`Integrator::solve`] with events: after each step, the crossings of the `events`'
     /// functions within it are located on the dense output and handed to `action` in time
     /// order, with an [`EventContext`] to read the state at the event, reset it
     /// ([`EventContext::state_mut`]) or change the model ([`EventContext::model_mut`]).
     ///
     /// - An action that changes nothing costs no restart: the search goes on within the step.
     /// - After a reset or a change, the integration restarts at the event from the consistent
-    ///   state nearest to the one the action left ([`consistent_state`](crate::consistent_state)).
+    ///   state nearest to the one the action left ([`consistent_state`]).
     /// - `ControlFlow::Break(())` ends the solution at the event (the integrator itself stays
     ///   at the end of the step that held it; [`Integrator::restart_at`] moves it back).
     ///
