@@ -407,3 +407,47 @@ fn a_tilted_bar_strikes_with_its_lower_end_by_the_lever_law() {
         }
     }
 }
+
+/// Resting contact as a change of the model: the ball of [`SwitchedFloor`] rests on its floor
+/// (`a = 1`) with the contact force `λ = m g − f0 sin(ω t)` as the row's multiplier, until
+/// that force falls through zero at `sin(ω t_r) = m g / f0`; there the event's action opens
+/// the contact (`a = 0`) and the ball lifts off, `m ÿ = f0 sin(ω t) − m g` from rest at
+/// `t_r`. The slack coordinate stays at zero throughout.
+#[test]
+fn resting_contact_as_a_switched_holonomic_row() {
+    use crate::zoo::SwitchedFloor;
+    let (m, f0, om) = (1.3, 20.0, 1.1);
+    let mut model = SwitchedFloor { m, g: G, a: 1.0, f0, om };
+    let start =
+        consistent_state(&model, 0.0, &Default::default(), &Default::default(), Consistency::default())
+            .expect("consistent");
+    let mut events =
+        Events::new().on("release", dirac::Crossing::Falling, |_, s: &State<SwitchedFloor>, _| s.lambda[0]);
+    let options = RadauOptions { max_step: 0.05, ..RadauOptions::tolerances(1e-10, 1e-10) };
+    let mut radau = Radau::new(&mut model, options).expect("valid options");
+    let t_end = 1.5;
+    let solution = radau
+        .solve_with_events(0.0, &start, t_end, &Sampling::Every(0.05), &mut events, |_, at| {
+            at.model_mut().expect("held exclusively").a = 0.0;
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let t_r = (m * G / f0).asin() / om;
+    let release = solution.event_times("release").expect("an event of that name");
+    assert_eq!(release.len(), 1);
+    assert!((release[0] - t_r).abs() < 1e-8, "{} against {t_r}", release[0]);
+    let (t, y, lambda) = (solution.t(), solution.q(SwitchedFloor::Y), solution.lambda(SwitchedFloor::FLOOR));
+    for i in 0..solution.len() {
+        if t[i] < t_r {
+            let force = m * G - f0 * (om * t[i]).sin();
+            assert!((lambda[i] - force).abs() < 1e-8 * f0, "t = {}: {} against {force}", t[i], lambda[i]);
+            assert!(y[i].abs() < 1e-12);
+        }
+    }
+    let tau = t_end - t_r;
+    let exact_y = f0 / (m * om) * ((om * t_r).cos() * tau - ((om * t_end).sin() - (om * t_r).sin()) / om)
+        - 0.5 * G * tau * tau;
+    let y_end = *y.last().expect("a sample");
+    assert!((y_end - exact_y).abs() < 1e-8, "{y_end} against {exact_y}");
+    assert!(solution.q(SwitchedFloor::S).iter().all(|s| s.abs() < 1e-12));
+}

@@ -758,3 +758,21 @@ pub struct LoadedBall {
     pub ball: PortedBall,
     pub load: Load,
 }
+
+/// A ball on a floor, its contact a holonomic row that a parameter switches: the row
+/// `a y + (1 − a) s` holds the ball on the floor when `a = 1` (its multiplier is then the
+/// contact force) and, when `a = 0`, holds only the slack coordinate `s`, of unit mass, which
+/// stays at rest, so that the multiplier vanishes and the ball moves freely. Switching `a` at
+/// an event is a change of the model. A force `f0 sin(ω t)` pulls the ball up.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => v, s => w))]
+#[dirac(lagrangian = 0.5 * m * v * v + 0.5 * w * w - m * g * y)]
+#[dirac(holonomic(floor) = a * y + (1.0 - a) * s)]
+#[dirac(force(y) = f0 * (om * t).sin())]
+pub struct SwitchedFloor {
+    pub m: f64,
+    pub g: f64,
+    pub a: f64,
+    pub f0: f64,
+    pub om: f64,
+}
