@@ -18,6 +18,8 @@ mod blocks;
 mod check;
 #[path = "../dirac-macros/src/codegen/mod.rs"]
 mod codegen;
+#[path = "../dirac-macros/src/contacts.rs"]
+mod contacts;
 #[path = "../dirac-macros/src/ctxt.rs"]
 mod ctxt;
 #[path = "../dirac-macros/src/equations.rs"]

@@ -34,6 +34,9 @@ pub struct Model<'a> {
     pub unilaterals: Vec<UnilateralDecl>,
     /// `event(name, direction) = expr`, in the order written.
     pub events: Vec<EventDecl>,
+    /// `__contacts(a, ...)`, written by the derive on the companion it makes of a model with
+    /// unilateral constraints: the field that closes each contact, in their order.
+    pub switches: Vec<Ident>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
@@ -114,6 +117,7 @@ impl<'a> Model<'a> {
             outputs: Vec::new(),
             unilaterals: Vec::new(),
             events: Vec::new(),
+            switches: Vec::new(),
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
@@ -253,6 +257,12 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             }
             UNILATERAL => model.unilaterals.push(parse_unilateral(input)?),
             EVENT => model.events.push(parse_event(input)?),
+            "__contacts" => {
+                let content;
+                syn::parenthesized!(content in input);
+                let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                model.switches.extend(names.iter().map(IdentExt::unraw));
+            }
             FORCE => {
                 let content;
                 syn::parenthesized!(content in input);

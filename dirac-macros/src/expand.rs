@@ -32,7 +32,11 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     };
     let names = key_constants(&cx, &model);
     match (cx.into_compile_errors(), analysed) {
-        (None, Some(analysed)) => implementation(&model, analysed, &names),
+        (None, Some(analysed)) => {
+            let companion = crate::contacts::companion(input, &model);
+            let implementation = implementation(&model, analysed, &names);
+            quote! { #implementation #companion }
+        }
         // A generic model has been reported; an impl for it would only add errors.
         (errors, _) if !input.generics.params.is_empty() => quote! { #errors },
         (errors, _) => {
@@ -187,6 +191,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let inputs = input_methods(&model.inputs);
     let parameters = non_finite_parameter(&sym.params);
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
+    let switches = crate::contacts::switch_methods(model, &sym);
     quote! {
         const _: () = {
             #[automatically_derived]
@@ -225,6 +230,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
 
                 #parameters
                 #inputs
+                #switches
                 #methods
             }
 

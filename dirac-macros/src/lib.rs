@@ -10,6 +10,7 @@ mod ast;
 mod blocks;
 mod check;
 mod codegen;
+mod contacts;
 mod ctxt;
 mod equations;
 mod expand;

@@ -165,6 +165,10 @@ where
             self.names.push(name.clone());
             self.crossings.push(Crossing::Falling);
             self.functions.push(Box::new(move |t, s: &State<M>, m: &M| {
+                // A closed contact (in a companion with contacts that can rest) is held, not watched.
+                if m.contact_closed(j) {
+                    return 1.0;
+                }
                 m.unilateral(t, &s.q, &mut values);
                 values[j]
             }));

@@ -348,6 +348,28 @@ where
         );
     }
 
+    /// Whether unilateral constraint `j` is closed, held as a holonomic constraint: in the
+    /// companion the derive makes of a model with unilateral constraints
+    /// (`model.with_contacts()`, of type `<Model>WithContacts`); never in other models.
+    fn contact_closed(&self, j: usize) -> bool {
+        let _ = j;
+        false
+    }
+
+    /// Closes or opens unilateral constraint `j` of a companion with contacts that can rest;
+    /// whether the model has such a switch (false for other models, which it leaves alone).
+    fn set_contact_closed(&mut self, j: usize, closed: bool) -> bool {
+        let _ = (j, closed);
+        false
+    }
+
+    /// The constraint row that holds unilateral constraint `j` while it is closed, in a
+    /// companion with contacts that can rest: its multiplier is the contact force.
+    fn contact_row(&self, j: usize) -> Option<usize> {
+        let _ = j;
+        None
+    }
+
     /// The model's event functions `g(t, q, v, λ)` (`#[dirac(event(name, direction) = g)]`),
     /// into `out`, one per event in the order declared (`Events::new().declared()` watches
     /// them).

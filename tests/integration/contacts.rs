@@ -451,3 +451,65 @@ fn resting_contact_as_a_switched_holonomic_row() {
     assert!((y_end - exact_y).abs() < 1e-8, "{y_end} against {exact_y}");
     assert!(solution.q(SwitchedFloor::S).iter().all(|s| s.abs() < 1e-12));
 }
+
+/// The derive's companion of a model with unilateral constraints, `LiftedBallWithContacts`,
+/// in which a contact can rest: closed, its row `floor_force` holds the ball on the floor and
+/// its multiplier is the contact force `m g − f0 sin(ω t)`; an action opens it where that
+/// force falls through zero, `sin(ω t_r) = m g / f0`, and the ball lifts off as in
+/// [`resting_contact_as_a_switched_holonomic_row`]; when it comes down again, the open contact
+/// strikes by the impact law, reversing the momentum scaled by e.
+#[test]
+fn the_companion_of_a_model_lets_its_contacts_rest() {
+    use crate::zoo::{LiftedBall, LiftedBallWithContacts};
+    let (m, e, f0, om) = (1.3, 0.5, 20.0, 1.1);
+    let mut model = LiftedBall { m, g: G, e, f0, om }.with_contacts();
+    assert!(model.set_contact_closed(0, true));
+    assert!(model.contact_closed(0));
+    let row = model.contact_row(0).expect("a row for the floor");
+    assert_eq!(model.constraint_names()[row], "floor_force");
+    let start =
+        consistent_state(&model, 0.0, &Default::default(), &Default::default(), Consistency::default())
+            .expect("consistent");
+    let mut events = Events::new().contacts(&model).on(
+        "release",
+        dirac::Crossing::Falling,
+        move |_, s: &State<LiftedBallWithContacts>, m: &LiftedBallWithContacts| {
+            if m.contact_closed(0) { s.lambda[row] } else { 1.0 }
+        },
+    );
+    let release_event = events.index("release").expect("an event of that name");
+    let options = RadauOptions { max_step: 0.05, ..RadauOptions::tolerances(1e-10, 1e-10) };
+    let mut radau = Radau::new(&mut model, options).expect("valid options");
+    let solution = radau
+        .solve_with_events(0.0, &start, 5.5, &Sampling::Every(0.05), &mut events, |event, at| {
+            if event.index == release_event {
+                at.model_mut().expect("held exclusively").set_contact_closed(0, false);
+            }
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let t_r = (m * G / f0).asin() / om;
+    let release = solution.event_times("release").expect("an event of that name");
+    assert!((release[0] - t_r).abs() < 1e-8, "{} against {t_r}", release[0]);
+    let (t, y, lambda) = (
+        solution.t(),
+        solution.q(LiftedBallWithContacts::Y),
+        solution.lambda(LiftedBallWithContacts::FLOOR_FORCE),
+    );
+    for i in (0..solution.len()).filter(|&i| t[i] < t_r) {
+        let force = m * G - f0 * (om * t[i]).sin();
+        assert!((lambda[i] - force).abs() < 1e-8 * f0, "t = {}: {} against {force}", t[i], lambda[i]);
+        assert!(y[i].abs() < 1e-12);
+    }
+    // Up and down again: the first landing is an impact by the law.
+    let impacts = solution.impacts_at("floor").expect("a contact of that name");
+    assert!(!impacts.is_empty(), "the ball came down");
+    let landing = impacts[0];
+    let i = t.iter().position(|&ts| ts == landing.t).expect("a sample at the impact");
+    let v_before = solution.v(LiftedBallWithContacts::Y)[i];
+    let v_after = solution.v(LiftedBallWithContacts::Y)[i + 1];
+    assert!(v_before < 0.0);
+    assert!(relative(landing.impulse, m * (1.0 + e) * -v_before) < 1e-9, "{landing:?}");
+    assert!(relative(v_after, -e * v_before) < 1e-9, "{v_after} against {}", -e * v_before);
+    assert!(solution.q(LiftedBallWithContacts::FLOOR_SLACK).iter().all(|s| s.abs() < 1e-12));
+}

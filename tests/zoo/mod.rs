@@ -776,3 +776,17 @@ pub struct SwitchedFloor {
     pub f0: f64,
     pub om: f64,
 }
+
+/// A ball on a floor it bounces on with restitution `e`, pulled up by `f0 sin(ω t)`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+#[dirac(force(y) = f0 * (om * t).sin())]
+#[dirac(unilateral(floor, restitution = e) = y)]
+pub struct LiftedBall {
+    pub m: f64,
+    pub g: f64,
+    pub e: f64,
+    pub f0: f64,
+    pub om: f64,
+}
