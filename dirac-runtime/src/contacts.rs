@@ -27,6 +27,12 @@ use crate::init_saddle::not_determined;
 use crate::model::LagrangeDirac;
 use crate::state::State;
 
+/// What an impact did: each closing contact's impulse, and the first contact it left at rest.
+pub(crate) struct Impacts {
+    pub impulses: Vec<(usize, f64)>,
+    pub resting: Option<usize>,
+}
+
 /// The unilateral constraints of a model, evaluated into storage kept between impacts.
 pub(crate) struct Contacts {
     pub names: Vec<String>,
@@ -63,15 +69,16 @@ impl Contacts {
     /// The impact at time `t` of the contacts `closing` (their indices among the unilateral
     /// constraints): changes the velocities of `state` by Newton's law and returns each
     /// contact's impulse `Λ_j` (zero for one that was not approaching). An error if a
-    /// restitution is outside `[0, 1]`, if the impact system is singular, or if a contact
-    /// stays closed after it ([`SimError::ContactCloses`]).
+    /// restitution is outside `[0, 1]` or if the impact system is singular. A contact that the
+    /// impact leaves closed, or reopens too slowly to be told from rest, is named in
+    /// [`Impacts::resting`].
     pub fn impact<M: LagrangeDirac>(
         &mut self,
         model: &M,
         t: f64,
         state: &mut State<M>,
         closing: &[usize],
-    ) -> Result<Vec<(usize, f64)>, SimError>
+    ) -> Result<Impacts, SimError>
     where
         DefaultAllocator: Storage<M>,
     {
@@ -95,7 +102,7 @@ impl Contacts {
         let mut active: Vec<usize> = (0..closing.len()).filter(|&i| approach[i] < 0.0).collect();
         let mut impulses: Vec<(usize, f64)> = closing.iter().map(|&j| (j, 0.0)).collect();
         if active.is_empty() {
-            return Ok(impulses);
+            return Ok(Impacts { impulses, resting: None });
         }
 
         // The velocity change per unit impulse on each approaching contact.
@@ -161,33 +168,44 @@ impl Contacts {
 
         // A contact left without normal velocity stays closed.
         let reopening: Vec<f64> = closing.iter().map(|&j| dot(j, state.v.as_slice())).collect();
+        let mut resting = None;
         for (i, &j) in closing.iter().enumerate().filter(|&(i, _)| approach[i] < 0.0) {
             let recent = &mut self.recent[j];
             *recent = [recent[1], recent[2], t];
             self.fastest[j] = self.fastest[j].max(-approach[i]);
-            if reopening[i] <= AT_REST * self.fastest[j] {
-                let t_limit = self.accumulation(j);
-                return Err(SimError::ContactCloses { contact: self.names[j].clone(), t, t_limit });
+            if reopening[i] <= AT_REST * self.fastest[j] && resting.is_none() {
+                resting = Some(j);
             }
         }
-        Ok(impulses)
+        Ok(Impacts { impulses, resting })
+    }
+
+    /// The error for contact `j` closing at `t` where it cannot rest, with the time its
+    /// impacts accumulate at when they do.
+    pub fn closes(&self, j: usize, t: f64) -> SimError {
+        SimError::ContactCloses { contact: self.names[j].clone(), t, t_limit: self.accumulation(j) }
+    }
+
+    /// Forgets contact `j`'s impacts: after it rested, its next ones start a new sequence.
+    pub fn rested(&mut self, j: usize) {
+        self.recent[j] = [f64::NAN; 3];
+        self.fastest[j] = 0.0;
     }
 
     /// For a step that failed after impacts at a contact came ever closer together (a Zeno
-    /// sequence), the error that says so: the contact, the last impact, and the time the
-    /// impacts accumulate at, extrapolated from the last three as a geometric series.
-    pub fn zeno(&self, failed_at: f64) -> Option<SimError> {
-        (0..self.names.len()).find_map(|j| {
-            let t_limit = self.accumulation(j)?;
+    /// sequence), that contact: the step failed because of them.
+    pub fn zeno(&self, failed_at: f64) -> Option<usize> {
+        (0..self.names.len()).find(|&j| {
+            let Some(t_limit) = self.accumulation(j) else { return false };
             let [_, t2, t3] = self.recent[j];
             // The step failed within the accumulation, not somewhere else.
-            let close = failed_at >= t3 && failed_at <= t_limit + 2.0 * (t3 - t2);
-            close.then(|| SimError::ContactCloses {
-                contact: self.names[j].clone(),
-                t: t3,
-                t_limit: Some(t_limit),
-            })
+            failed_at >= t3 && failed_at <= t_limit + 2.0 * (t3 - t2)
         })
+    }
+
+    /// The time of the last impact at contact `j`.
+    pub fn last_impact(&self, j: usize) -> f64 {
+        self.recent[j][2]
     }
 
     /// Where the impacts at contact `j` accumulate, if their last three intervals shrink: the

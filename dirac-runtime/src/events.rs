@@ -14,7 +14,7 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
-use crate::contacts::Contacts;
+use crate::contacts::{Contacts, Impacts};
 use crate::diagnose::check_constraints_kept;
 use crate::dims::{Sizes, Storage};
 use crate::error::SimError;
@@ -66,6 +66,8 @@ where
     /// of them each event function is.
     contacts: Option<Contacts>,
     contact_of: Vec<Option<usize>>,
+    /// The contact each release event function opens (in a companion whose contacts rest).
+    release_of: Vec<Option<usize>>,
     /// Functions restarted at zero by an impact that reopened their contact: they count as
     /// positive there, so that a closing again within the same step is seen.
     reopened: Vec<bool>,
@@ -103,6 +105,7 @@ where
             evaluations: 0,
             contacts: None,
             contact_of: Vec::new(),
+            release_of: Vec::new(),
             reopened: Vec::new(),
         }
     }
@@ -119,6 +122,7 @@ where
         self.crossings.push(crossing);
         self.functions.push(Box::new(g));
         self.contact_of.push(None);
+        self.release_of.push(None);
         self
     }
 
@@ -173,6 +177,17 @@ where
                 values[j]
             }));
             self.contact_of.push(Some(j));
+            self.release_of.push(None);
+        }
+        // In a companion whose contacts rest, a closed contact opens where its force, the
+        // multiplier of its row, falls through zero.
+        for (j, name) in contacts.names.iter().enumerate() {
+            if let Some(row) = model.contact_row(j) {
+                self = self.on(format!("{name} opens"), Crossing::Falling, move |_, s: &State<M>, m: &M| {
+                    if m.contact_closed(j) { s.lambda[row] } else { 1.0 }
+                });
+                *self.release_of.last_mut().expect("just added") = Some(j);
+            }
         }
         self.contacts = Some(contacts);
         self
@@ -191,6 +206,11 @@ where
         }
     }
 
+    /// The index among the unilateral constraints of the contact called `name`.
+    fn contact_index(&self, name: &str) -> Option<usize> {
+        self.contacts.as_ref()?.names.iter().position(|n| n == name)
+    }
+
     /// The unilateral constraint event function `k` watches, if it is one.
     fn contact_of(&self, k: usize) -> Option<usize> {
         self.contact_of[k]
@@ -200,13 +220,7 @@ where
     /// is closed there too (`φ ≤ 0` at the event: its event pending at the same time, or
     /// touching zero exactly): `state`'s velocities change by the impact law; the impulses
     /// are returned.
-    fn impact(
-        &mut self,
-        model: &M,
-        k: usize,
-        t: f64,
-        state: &mut State<M>,
-    ) -> Result<Vec<(usize, f64)>, SimError> {
+    fn impact(&mut self, model: &M, k: usize, t: f64, state: &mut State<M>) -> Result<Impacts, SimError> {
         let contact = self.contact_of[k].expect("event k watches a contact");
         let mut closing = vec![contact];
         for j in 0..self.functions.len() {
@@ -604,37 +618,72 @@ where
         let mut reopened = Vec::new();
         while !self.finished() {
             if let Err(error) = self.step() {
-                // A step that fails where impacts accumulate fails because of them.
-                let zeno = match (&error, &events.contacts) {
+                // A step that fails where impacts accumulate fails because of them: the contact
+                // comes to rest where the integrator stands, if it can.
+                let Some(j) = (match (&error, &events.contacts) {
                     (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) => contacts.zeno(*t),
                     _ => None,
+                }) else {
+                    return Err(error);
                 };
-                return Err(zeno.unwrap_or(error));
+                rest_where_it_stands(self, events, &mut recorder, j)?;
+                continue;
             }
             let mut restarted = false;
-            while let Some(event) = events.locate(self)? {
+            loop {
+                let event = match events.locate(self) {
+                    Ok(Some(event)) => event,
+                    Ok(None) => break,
+                    // A contact pressed in without an impact rests from the step's end, if it can.
+                    Err(SimError::ContactCloses { contact, t_limit: None, .. })
+                        if events
+                            .contact_index(&contact)
+                            .is_some_and(|j| self.model().contact_row(j).is_some()) =>
+                    {
+                        let j = events.contact_index(&contact).expect("just found");
+                        rest_where_it_stands(self, events, &mut recorder, j)?;
+                        restarted = true;
+                        break;
+                    }
+                    Err(error) => return Err(error),
+                };
                 let t = event.t;
                 recorder.record_step(self.model(), t, events.state(), |ts, out| self.interpolate(ts, out));
                 recorder.record_event(self.model(), event, events.state());
                 after.clone_from(events.state());
                 let mut impulse = None;
+                let mut switched = false;
                 reopened.clear();
-                if events.contact_of(event.index).is_some() {
-                    let contact = events.contact_of(event.index);
-                    for (j, lambda) in events.impact(self.model(), event.index, t, &mut after)? {
+                if let Some(contact) = events.contact_of(event.index) {
+                    let impacts = events.impact(self.model(), event.index, t, &mut after)?;
+                    for &(j, lambda) in &impacts.impulses {
                         recorder.record_impact(Impact { contact: j, t, impulse: lambda });
                         if lambda > 0.0 {
                             reopened.push(j);
                         }
-                        if Some(j) == contact {
+                        if j == contact {
                             impulse = Some(lambda);
                         }
                     }
+                    if let Some(j) = impacts.resting {
+                        // Left at rest: the contact closes, if it can, and the restart
+                        // projects the state onto it (a plastic impact).
+                        if !close(self, j, true) {
+                            let contacts =
+                                events.contacts.as_ref().expect("contact events come with their contacts");
+                            return Err(contacts.closes(j, t));
+                        }
+                        events.contacts.as_mut().expect("contact events come with their contacts").rested(j);
+                        reopened.retain(|&c| c != j);
+                        switched = true;
+                    }
                 }
-                let impacted = !reopened.is_empty();
+                if let Some(j) = events.release_of[event.index] {
+                    switched |= close(self, j, false);
+                }
                 let mut context = EventContext::new(t, &mut after, self);
                 context.impulse = impulse;
-                context.reset = impacted;
+                context.reset = !reopened.is_empty() || switched;
                 let flow = action(&event, &mut context);
                 let (reset, before) = context.changes();
                 if flow.is_break() {
@@ -663,3 +712,39 @@ where
 }
 
 impl<M: LagrangeDirac, I: Integrator<M>> SolveWithEvents<M> for I where DefaultAllocator: Storage<M> {}
+
+/// Closes (or opens) contact `j` of the integrator's model, if the model can rest it (a
+/// companion made by `with_contacts`) and the integrator holds it exclusively.
+fn close<M: LagrangeDirac, I: Integrator<M>>(integrator: &mut I, j: usize, closed: bool) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    integrator.model().contact_row(j).is_some()
+        && integrator.model_mut().is_some_and(|model| model.set_contact_closed(j, closed))
+}
+
+/// Contact `j` comes to rest where the integrator stands (the end of its last step): closed,
+/// the state projected onto it, the integration restarted there. An error naming the contact
+/// if the model cannot rest it.
+fn rest_where_it_stands<M: LagrangeDirac, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    j: usize,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let t = integrator.t();
+    let contacts = events.contacts.as_mut().expect("contacts are watched");
+    if !close(integrator, j, true) {
+        return Err(contacts.closes(j, contacts.last_impact(j).min(t)));
+    }
+    contacts.rested(j);
+    let state = integrator.state();
+    let consistent = consistent_state(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
+    integrator.restart_at(t, &consistent)?;
+    events.resume(integrator.model(), t, &consistent)?;
+    recorder.record_reset(integrator.model(), t, &consistent);
+    Ok(())
+}
