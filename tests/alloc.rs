@@ -420,3 +420,30 @@ fn watching_contacts_does_not_allocate() {
     assert_eq!(located.len(), 1);
     assert!((located[0] - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
 }
+
+/// A companion whose contacts can rest watches its closed contacts' forces for their release:
+/// evaluating them allocates nothing either. The ball rests on its floor from the start.
+#[test]
+fn watching_resting_contacts_does_not_allocate() {
+    let mut ball = BouncingBall { m: 1.0, g: 9.81, e: 0.5 }.with_contacts();
+    assert!(ball.set_contact_closed(0, true));
+    let start =
+        dirac::consistent_state(&ball, 0.0, &Default::default(), &Default::default(), Default::default())
+            .expect("consistent");
+    let mut events = dirac::Events::new().contacts(&ball);
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    radau.start(0.0, &start, 1.0).expect("starts");
+    events.begin(radau.model(), 0.0, &start).expect("begins");
+    let before = allocations();
+    let mut located = 0;
+    while !radau.finished() {
+        radau.step().expect("steps");
+        while events.locate(&mut radau).expect("locates").is_some() {
+            located += 1;
+        }
+    }
+    assert_eq!(allocations() - before, 0);
+    // Held by the floor, the ball neither strikes it nor leaves it.
+    assert_eq!(located, 0);
+    assert!(radau.state().q(BouncingBallWithContacts::Y).abs() < 1e-12);
+}

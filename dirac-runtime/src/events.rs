@@ -156,9 +156,12 @@ where
     /// impulses are recorded ([`Solution::impacts_at`]); the action sees the state after the
     /// impact, and its impulse ([`EventContext::impulse`]).
     ///
-    /// Resting contact is not simulated: an impact that leaves a contact closed (restitution
-    /// 0), impacts that accumulate (a Zeno sequence), or a contact pressed in without an
-    /// impact (set down on its wall, or reached at zero normal speed) end the integration with
+    /// A contact that comes to rest (an impact leaves it closed or reopens it too slowly to
+    /// tell from rest, its impacts accumulate in a Zeno sequence, or it is pressed in without
+    /// an impact) closes in a companion made by the derive's `with_contacts()`, held by its
+    /// row `<name>_force`, and opens again where that row's multiplier, the contact force,
+    /// falls through zero (the event `<name> opens`, added here). In any other model, or one
+    /// the integrator does not hold exclusively, it ends the integration with
     /// [`SimError::ContactCloses`]. An interconnection watches its subsystems' contacts, by
     /// dotted name (`ball.floor`).
     pub fn contacts(mut self, model: &M) -> Self {
