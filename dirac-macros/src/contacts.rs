@@ -23,11 +23,12 @@ use crate::ast::Model;
 use crate::model::SymModel;
 use crate::symbol::{DIRAC, LAGRANGIAN};
 
-/// The items of `model`'s companion, `<Model>WithContacts`, and `with_contacts()` to make it;
-/// nothing for a model without unilateral constraints or that is a companion itself.
-pub fn companion(input: &DeriveInput, model: &Model<'_>) -> TokenStream {
+/// `model`'s companion, `<Model>WithContacts`, for the derive to run on, and the items to
+/// emit with its expansion (its definition and `with_contacts()` to make it); `None` for a
+/// model without unilateral constraints or that is a companion itself.
+pub fn companion(input: &DeriveInput, model: &Model<'_>) -> Option<syn::Result<(DeriveInput, TokenStream)>> {
     if model.unilaterals.is_empty() || !model.switches.is_empty() {
-        return TokenStream::new();
+        return None;
     }
     let (ident, vis) = (model.ident, model.vis);
     let name = format_ident!("{}WithContacts", ident);
@@ -63,18 +64,12 @@ pub fn companion(input: &DeriveInput, model: &Model<'_>) -> TokenStream {
         #[dirac(__contacts(#(#closed),*))]
         #definition
     };
-    let companion: DeriveInput = match syn::parse2(attributed) {
-        Ok(parsed) => parsed,
-        Err(e) => return e.to_compile_error(),
-    };
-    let expansion = crate::expand::derive(&companion);
     let with = "This model in its companion with contacts that can rest, all open.";
-    quote! {
+    let items = quote! {
         #[doc = #doc]
         #[allow(dead_code)]
         #[derive(Clone, Debug)]
         #definition
-        #expansion
         #[allow(dead_code)]
         impl #ident {
             #[doc = #with]
@@ -82,7 +77,8 @@ pub fn companion(input: &DeriveInput, model: &Model<'_>) -> TokenStream {
                 #name { #(#params: self.#params,)* #(#closed: 0.0,)* }
             }
         }
-    }
+    };
+    Some(syn::parse2(attributed).map(|companion| (companion, items)))
 }
 
 /// The items of one `#[dirac(...)]` attribute with `lagrangian = L` made `lagrangian = (L) +

@@ -33,7 +33,14 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let names = key_constants(&cx, &model);
     match (cx.into_compile_errors(), analysed) {
         (None, Some(analysed)) => {
-            let companion = crate::contacts::companion(input, &model);
+            let companion = match crate::contacts::companion(input, &model) {
+                None => TokenStream::new(),
+                Some(Ok((companion, items))) => {
+                    let expansion = derive(&companion);
+                    quote! { #items #expansion }
+                }
+                Some(Err(e)) => e.to_compile_error(),
+            };
             let implementation = implementation(&model, analysed, &names);
             quote! { #implementation #companion }
         }

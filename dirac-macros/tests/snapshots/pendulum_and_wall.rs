@@ -468,6 +468,20 @@ pub struct PendulumAndWallWithContacts {
     pub w: f64,
     pub wall_closed: f64,
 }
+#[allow(dead_code)]
+impl PendulumAndWall {
+    ///This model in its companion with contacts that can rest, all open.
+    pub fn with_contacts(&self) -> PendulumAndWallWithContacts {
+        PendulumAndWallWithContacts {
+            m: self.m,
+            g: self.g,
+            l: self.l,
+            e: self.e,
+            w: self.w,
+            wall_closed: 0.0,
+        }
+    }
+}
 const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Dimensions for PendulumAndWallWithContacts {
@@ -1058,17 +1072,3 @@ const _: () = {
         );
     }
 };
-#[allow(dead_code)]
-impl PendulumAndWall {
-    ///This model in its companion with contacts that can rest, all open.
-    pub fn with_contacts(&self) -> PendulumAndWallWithContacts {
-        PendulumAndWallWithContacts {
-            m: self.m,
-            g: self.g,
-            l: self.l,
-            e: self.e,
-            w: self.w,
-            wall_closed: 0.0,
-        }
-    }
-}
