@@ -99,6 +99,11 @@ impl Contacts {
         // Row j of ∂φ_u/∂q times x.
         let dot = |j: usize, x: &[f64]| (0..n).map(|i| rows[j + i * k] * x[i]).sum::<f64>();
         let approach: Vec<f64> = closing.iter().map(|&j| dot(j, state.v.as_slice())).collect();
+        if let Some(i) = approach.iter().position(|c| !c.is_finite()) {
+            let component =
+                format!("the one-form ∂φ/∂q of the unilateral constraint `{}`", self.names[closing[i]]);
+            return Err(SimError::NonFinite { t, component });
+        }
         let mut active: Vec<usize> = (0..closing.len()).filter(|&i| approach[i] < 0.0).collect();
         let mut impulses: Vec<(usize, f64)> = closing.iter().map(|&j| (j, 0.0)).collect();
         if active.is_empty() {

@@ -214,11 +214,6 @@ where
         self.contacts.as_ref()?.names.iter().position(|n| n == name)
     }
 
-    /// The unilateral constraint event function `k` watches, if it is one.
-    fn contact_of(&self, k: usize) -> Option<usize> {
-        self.contact_of[k]
-    }
-
     /// The impact at the contact of event `k` at `t`, together with every other contact that
     /// is closed there too (`φ ≤ 0` at the event: its event pending at the same time, or
     /// touching zero exactly): `state`'s velocities change by the impact law; the impulses
@@ -657,7 +652,7 @@ where
                 let mut impulse = None;
                 let mut switched = false;
                 reopened.clear();
-                if let Some(contact) = events.contact_of(event.index) {
+                if let Some(contact) = events.contact_of[event.index] {
                     let impacts = events.impact(self.model(), event.index, t, &mut after)?;
                     for &(j, lambda) in &impacts.impulses {
                         recorder.record_impact(Impact { contact: j, t, impulse: lambda });
@@ -696,12 +691,8 @@ where
                     if let (false, Some(before)) = (reset, before) {
                         check_constraints_kept(self.model(), t, &after, before)?;
                     }
-                    let consistent =
-                        consistent_state(self.model(), t, &after.q, &after.v, Consistency::default())?;
-                    self.restart_at(t, &consistent)?;
-                    events.resume(self.model(), t, &consistent)?;
+                    restart_from(self, events, &mut recorder, t, &after)?;
                     events.reopen(&reopened);
-                    recorder.record_reset(self.model(), t, &consistent);
                     restarted = true;
                     break;
                 }
@@ -744,7 +735,22 @@ where
         return Err(contacts.closes(j, contacts.last_impact(j).min(t)));
     }
     contacts.rested(j);
-    let state = integrator.state();
+    let state = integrator.state().clone();
+    restart_from(integrator, events, recorder, t, &state)
+}
+
+/// Restarts the integration at `t` from the consistent state nearest to `state`, watching on
+/// from there and recording it.
+fn restart_from<M: LagrangeDirac, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    t: f64,
+    state: &State<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
     let consistent = consistent_state(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
     integrator.restart_at(t, &consistent)?;
     events.resume(integrator.model(), t, &consistent)?;

@@ -597,3 +597,48 @@ fn a_pendulum_comes_to_rest_against_its_wall() {
     // accumulating impacts (each from a state consistent to 1e-8) it drifts by 5e-8.
     assert!(worst < 1e-7 * l * l, "the rod held to {worst:e}");
 }
+
+/// More bad input: a NaN restitution, a one-form that is not finite at the impact, and a
+/// companion held shared, which cannot close its contact at the Zeno time.
+#[test]
+fn more_bad_contacts_end_in_typed_errors() {
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let nan = BouncingBall { m: 1.0, g: G, e: f64::NAN };
+    let mut radau = Radau::new(&nan, RadauOptions::default()).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut Events::new().contacts(&nan), go_on)
+        .expect_err("a NaN restitution");
+    assert!(matches!(&error, SimError::InvalidParameter { name, .. } if name == "e"), "{error:?}");
+
+    /// A floor whose one-form is 0/0 along `x` where `x = 0`: `∂(c |x|)/∂x = c x/|x|`.
+    #[derive(LagrangeDirac)]
+    #[dirac(coordinates(x => vx, y => vy))]
+    #[dirac(lagrangian = 0.5 * (vx * vx + vy * vy) - g * y)]
+    #[dirac(unilateral(floor) = y + c * (x * x).sqrt())]
+    struct Kinked {
+        g: f64,
+        c: f64,
+    }
+    let kinked = Kinked { g: G, c: 0.0 };
+    let mut start = State::<Kinked>::zeros();
+    start.set_q(Kinked::Y, 1.0);
+    let mut radau = Radau::new(&kinked, RadauOptions::default()).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut Events::new().contacts(&kinked), go_on)
+        .expect_err("a 0/0 one-form");
+    assert!(
+        matches!(&error, SimError::NonFinite { component, .. } if component.contains("`floor`")),
+        "{error:?}"
+    );
+
+    use crate::zoo::BouncingBallWithContacts;
+    let companion = BouncingBall { m: 1.0, g: G, e: 0.5 }.with_contacts();
+    let mut start = State::<BouncingBallWithContacts>::zeros();
+    start.set_q(BouncingBallWithContacts::Y, 1.0);
+    let mut radau = Radau::new(&companion, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let error = radau
+        .solve_with_events(0.0, &start, 3.0, &Sampling::Steps, &mut Events::new().contacts(&companion), go_on)
+        .expect_err("held shared, the contact cannot close");
+    assert!(matches!(&error, SimError::ContactCloses { t_limit: Some(_), .. }), "{error:?}");
+}
