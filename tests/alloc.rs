@@ -447,3 +447,54 @@ fn watching_resting_contacts_does_not_allocate() {
     assert_eq!(located, 0);
     assert!(radau.state().q(BouncingBallWithContacts::Y).abs() < 1e-12);
 }
+
+/// Steps a Radau integration with forward sensitivities (`wrt`) 200 times after 5 warm-up
+/// steps, reading each sensitivity and interpolating it within the step, and returns the
+/// allocations during the 200.
+fn allocations_with_sensitivities<M: LagrangeDirac>(
+    model: &M,
+    start: &State<M>,
+    wrt: &Sensitivities<M>,
+    error_control: bool,
+) -> usize
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let wrt = wrt.clone().error_control(error_control);
+    let options = RadauOptions::tolerances(1e-10, 1e-10);
+    let mut radau = Radau::new(model, options).expect("valid").with_sensitivities(&wrt).expect("valid");
+    radau.start(0.0, start, 100.0).expect("starts");
+    let mut s = State::<M>::with_sizes(model.sizes());
+    for _ in 0..5 {
+        radau.step().expect("steps");
+    }
+    let before = allocations();
+    for _ in 0..200 {
+        let h = radau.step().expect("steps");
+        for j in 0..wrt.len() {
+            assert!(radau.sensitivity(j, &mut s));
+            assert!(radau.interpolate_sensitivity(j, radau.t() - 0.5 * h, &mut s));
+        }
+    }
+    allocations() - before
+}
+
+#[test]
+fn steps_with_sensitivities_do_not_allocate() {
+    let p = unit_pendulum();
+    let wrt = Sensitivities::all_parameters(&p).initial_position(Pendulum::X).initial_velocity(Pendulum::Y);
+    for error_control in [false, true] {
+        let n = allocations_with_sensitivities(&p, &horizontal_start(&p), &wrt, error_control);
+        assert_eq!(n, 0, "pendulum, error control {error_control}");
+    }
+    let chain = paper_chain();
+    let wrt = Sensitivities::all_parameters(&chain).initial_position(Chain::left(Primitive1::X1));
+    let n = allocations_with_sensitivities(&chain, &paper_chain_start(&chain), &wrt, true);
+    assert_eq!(n, 0, "interconnected chain");
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    let v = VecQ::<RollingDisk>::new(0.6, 0.0, 2.0, 1.0);
+    let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    let wrt = Sensitivities::all_parameters(&disk);
+    assert_eq!(allocations_with_sensitivities(&disk, &start, &wrt, false), 0, "rolling disk");
+}

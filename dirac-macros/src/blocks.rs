@@ -78,6 +78,21 @@ pub struct Blocks {
     pub restitution: Vec<Id>,
     /// The event functions `g(t, q, v, λ)`.
     pub events: Vec<Id>,
+    /// The derivatives with respect to each parameter (`f64` field), in field order.
+    pub dtheta: Vec<ParameterBlocks>,
+}
+
+/// The derivatives of the residual blocks and holonomic constraints with respect to one
+/// parameter, at fixed `(t, q, v, λ)`.
+pub struct ParameterBlocks {
+    /// `∂ṗ/∂θ`.
+    pub momentum_rate: Vec<Id>,
+    /// `∂(∂L/∂v)/∂θ`.
+    pub dl_dv: Vec<Id>,
+    /// `∂(A v + b)/∂θ`.
+    pub a_v: Vec<Id>,
+    /// `∂φ/∂θ`.
+    pub phi: Vec<Id>,
 }
 
 /// `[∂e/∂x for x in wrt]`.
@@ -166,6 +181,21 @@ impl Blocks {
         let unilateral_dq = jacobian(g, &unilateral, &q);
         let restitution = m.unilaterals.iter().map(|u| u.restitution).collect();
         let events = m.events.iter().map(|e| e.2).collect();
+        let thetas: Vec<Id> =
+            (0..m.params.len()).map(|i| m.symbols.declare(&mut m.graph, Sym::Parameter(i))).collect();
+        let g = &mut m.graph;
+        let dtheta = thetas
+            .iter()
+            .map(|&theta| {
+                let d = |g: &mut Graph, e: &[Id]| e.iter().map(|&x| g.diff(x, theta)).collect::<Vec<Id>>();
+                ParameterBlocks {
+                    momentum_rate: d(g, &momentum_rate),
+                    dl_dv: d(g, &dl_dv),
+                    a_v: d(g, &a_v),
+                    phi: d(g, &phi),
+                }
+            })
+            .collect();
         Blocks {
             lagrangian,
             dl_dq,
@@ -201,6 +231,7 @@ impl Blocks {
             unilateral_dq,
             restitution,
             events,
+            dtheta,
         }
     }
 }

@@ -307,6 +307,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
     let outputs = sym.outputs.iter().map(|(name, _)| name);
     let unilaterals = sym.unilaterals.iter().map(|u| &u.name);
     let events = sym.events.iter().map(|(name, direction, _)| quote! { (#name, #direction) });
+    let parameters = sym.params.iter().map(|p| syn::ext::IdentExt::unraw(p).to_string());
     quote! {
         #[automatically_derived]
         impl #p::Named for #ident {
@@ -320,6 +321,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
                 outputs: &[#(#outputs),*],
                 unilaterals: &[#(#unilaterals),*],
                 events: &[#(#events),*],
+                parameters: &[#(#parameters),*],
                 subsystems: &[],
             };
         }
@@ -366,6 +368,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 outputs: &[],
                 unilaterals: &[],
                 events: &[],
+                parameters: &[],
                 subsystems: &[],
             };
         }

@@ -53,6 +53,7 @@ mod projection;
 /// The Radau IIA integrator.
 pub mod radau;
 mod recorder;
+pub mod sensitivity;
 /// Simulation results with named series.
 pub mod solution;
 /// Input sources read by time: tables held or interpolated.
@@ -83,6 +84,7 @@ pub use linear::{Linearization, linearize};
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
 pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
 pub use radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
+pub use sensitivity::{Sensitivities, Wrt};
 pub use solution::{Crossing, Event, Impact, Sampling, Solution};
 pub use sparse::SparseJacobian;
 pub use state::State;

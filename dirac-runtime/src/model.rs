@@ -391,6 +391,59 @@ where
         panic!("the model has no input {k}: it has {}", Self::NAMES.input_count())
     }
 
+    /// The full dotted name of every parameter, the model's `f64` fields (`left.k` in a
+    /// composite: its subsystems' in field order, then its own), in the order of their indices:
+    /// the parameters that [`parameter_value`](LagrangeDirac::parameter_value), sensitivities
+    /// and fits name. A model made of arrays of subsystems has none.
+    fn parameter_names(&self) -> Vec<String> {
+        Self::NAMES.parameter_names()
+    }
+
+    /// The index of the parameter with this dotted name, if the model has one.
+    fn parameter_index(&self, name: &str) -> Option<usize> {
+        self.parameter_names().iter().position(|p| p == name)
+    }
+
+    /// The value of parameter `k` (an index into
+    /// [`parameter_names`](LagrangeDirac::parameter_names)). The derive implements it; it
+    /// panics if the model has no parameter `k`.
+    fn parameter_value(&self, k: usize) -> f64 {
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
+    /// Sets parameter `k`. The derive implements it; it panics if the model has no parameter
+    /// `k`. Between the steps of an integration, change parameters through the integrator
+    /// ([`Integrator::update`](crate::Integrator::update)), which restarts it.
+    fn set_parameter_value(&mut self, k: usize, value: f64) {
+        let _ = value;
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
+    /// The derivatives of the residual blocks with respect to parameter `k` at fixed
+    /// `(t, q, v, λ)`: `∂ṗ/∂θ_k`, `∂(∂L/∂v)/∂θ_k` and `∂(A v + b)/∂θ_k`, each vector written
+    /// whole. Generated symbolically, with shared subexpressions, for every parameter of a
+    /// primitive model and of a composite of named subsystems; it panics if the model has no
+    /// parameter `k`.
+    fn residual_blocks_dtheta(
+        &self,
+        k: usize,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut ResidualBlocks<Self>,
+    ) {
+        let _ = (t, q, v, lambda, out);
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
+    /// `∂φ/∂θ_k`: the derivative of the holonomic constraint values with respect to parameter
+    /// `k` at fixed `(t, q)`, written whole.
+    fn holonomic_dtheta(&self, k: usize, t: f64, q: &VecQ<Self>, out: &mut VecH<Self>) {
+        let _ = (t, q, out);
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
     /// The value of an input.
     fn input(&self, key: Input<Self>) -> f64 {
         self.input_value(key.index())

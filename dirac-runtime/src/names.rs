@@ -36,6 +36,9 @@ pub struct Names {
     /// The model's own events (`event(name, direction) = g`), each with the direction of the
     /// crossings that count: −1 falling, 1 rising, 0 either.
     pub events: &'static [(&'static str, i8)],
+    /// The model's own parameters, its `f64` fields (a composite's own, which its
+    /// interconnection rows may read), in field order.
+    pub parameters: &'static [&'static str],
     /// The subsystems of a composite, in field order.
     pub subsystems: &'static [Subsystem],
 }
@@ -163,6 +166,18 @@ impl Names {
         count
     }
 
+    /// The number of parameters of the model and its subsystems, at any depth. Usable in
+    /// `const` items.
+    pub const fn parameter_count(&self) -> usize {
+        let mut count = self.parameters.len();
+        let mut i = 0;
+        while i < self.subsystems.len() {
+            count += self.subsystems[i].names.parameter_count();
+            i += 1;
+        }
+        count
+    }
+
     /// The number of outputs of the model and its subsystems, at any depth. Usable in `const`
     /// items.
     pub const fn output_count(&self) -> usize {
@@ -204,6 +219,14 @@ impl Names {
     pub fn input_names(&self) -> Vec<String> {
         let mut out = Vec::new();
         self.collect_last("", &mut out, &|n| n.inputs);
+        out
+    }
+
+    /// Every parameter's full dotted name (`left.k`), in the order of the model's parameter
+    /// indices: its subsystems' in field order, then its own.
+    pub fn parameter_names(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        self.collect_last("", &mut out, &|n| n.parameters);
         out
     }
 
@@ -316,6 +339,7 @@ mod tests {
         outputs: &["energy"],
         unilaterals: &[],
         events: &[],
+        parameters: &[],
         subsystems: &[],
     };
     static RIGHT: Names = Names {
@@ -328,6 +352,7 @@ mod tests {
         outputs: &[],
         unilaterals: &[],
         events: &[],
+        parameters: &[],
         subsystems: &[],
     };
     static CHAIN: Names = Names {
@@ -340,6 +365,7 @@ mod tests {
         outputs: &[],
         unilaterals: &[],
         events: &[],
+        parameters: &[],
         subsystems: &[
             Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },
             Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0, u_offset: 1 },

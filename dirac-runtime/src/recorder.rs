@@ -109,6 +109,16 @@ where
         })
     }
 
+    /// The number of samples recorded.
+    pub fn len(&self) -> usize {
+        self.table.columns[0].len()
+    }
+
+    /// The time of sample `k`.
+    pub fn time(&self, k: usize) -> f64 {
+        self.table.columns[0][k]
+    }
+
     /// Records the initial state if the sampling asks for it.
     pub fn record_initial(&mut self, model: &M, t0: f64, state: &State<M>) {
         let wanted = match &self.sampling {

@@ -151,6 +151,10 @@ where
     event_names: Vec<String>,
     impacts: Vec<Impact>,
     contact_names: Vec<String>,
+    /// What the sensitivities are taken with respect to, by name ...
+    sensitivity_names: Vec<String>,
+    /// ... and their series: sensitivity `j` of state slot `i` at `j * len + i`.
+    sensitivities: Vec<Vec<f64>>,
     model: PhantomData<fn() -> M>,
 }
 
@@ -193,6 +197,8 @@ where
             event_names: Vec::new(),
             impacts: Vec::new(),
             contact_names: Vec::new(),
+            sensitivity_names: Vec::new(),
+            sensitivities: Vec::new(),
             model: PhantomData,
         }
     }
@@ -209,6 +215,75 @@ where
         self.impacts = impacts;
         self.contact_names = names;
         self
+    }
+
+    /// This solution with forward sensitivities: their names, and sensitivity `j` of state slot
+    /// `i` at `columns[j * len + i]`.
+    pub(crate) fn with_sensitivities(mut self, names: Vec<String>, columns: Vec<Vec<f64>>) -> Self {
+        self.sensitivity_names = names;
+        self.sensitivities = columns;
+        self
+    }
+
+    /// What the solution's forward sensitivities are taken with respect to, by name
+    /// ([`Sensitivities::names`](crate::Sensitivities::names)); empty without sensitivities.
+    pub fn sensitivity_names(&self) -> &[String] {
+        &self.sensitivity_names
+    }
+
+    /// The sensitivity `∂x/∂θ` of the state quantity named `quantity` (a column name of the
+    /// state: a coordinate `x`, a velocity, `p(x)`, `lambda(c)`) with respect to `wrt` (a
+    /// parameter's dotted name, or an initial value `x(t0)`), at each sample; `None` if either
+    /// name is unknown.
+    pub fn sensitivity(&self, quantity: &str, wrt: &str) -> Option<&[f64]> {
+        let len = self.layout.state.len;
+        let i = self.names[1..=len].iter().position(|n| n == quantity)?;
+        self.sensitivity_at_slot(i, wrt)
+    }
+
+    /// `∂q_c/∂θ` with respect to `wrt` at each sample.
+    pub fn dq(&self, c: Coordinate<M>, wrt: &str) -> Option<&[f64]> {
+        self.sensitivity_at_slot(self.layout.state.q + c.index(), wrt)
+    }
+
+    /// `∂v_c/∂θ` with respect to `wrt` at each sample.
+    pub fn dv(&self, c: Coordinate<M>, wrt: &str) -> Option<&[f64]> {
+        self.sensitivity_at_slot(self.layout.state.v + c.index(), wrt)
+    }
+
+    /// `∂p_c/∂θ` with respect to `wrt` at each sample.
+    pub fn dp(&self, c: Coordinate<M>, wrt: &str) -> Option<&[f64]> {
+        self.sensitivity_at_slot(self.layout.state.p + c.index(), wrt)
+    }
+
+    /// `∂λ_k/∂θ` with respect to `wrt` at each sample.
+    pub fn dlambda(&self, k: Constraint<M>, wrt: &str) -> Option<&[f64]> {
+        self.sensitivity_at_slot(self.layout.state.lambda + k.index(), wrt)
+    }
+
+    fn sensitivity_at_slot(&self, i: usize, wrt: &str) -> Option<&[f64]> {
+        let j = self.sensitivity_names.iter().position(|n| n == wrt)?;
+        Some(&self.sensitivities[j * self.layout.state.len + i])
+    }
+
+    /// The gradient `dJ/dθ` of a scalar objective `J` that depends on the state quantity
+    /// `quantity` at the samples, by the chain rule over the sensitivities: `dj_dx[k]` is
+    /// `∂J/∂x(t_k)`. For a sum of squared errors `J = Σ (x(t_k) − d_k)²` it is
+    /// `2 (x(t_k) − d_k)`. One entry per sensitivity, in the order of
+    /// [`sensitivity_names`](Solution::sensitivity_names); `None` if the quantity is unknown
+    /// or `dj_dx` has not one value per sample.
+    pub fn gradient(&self, quantity: &str, dj_dx: &[f64]) -> Option<Vec<f64>> {
+        if dj_dx.len() != self.len() {
+            return None;
+        }
+        let names = self.sensitivity_names.clone();
+        names
+            .iter()
+            .map(|wrt| {
+                let s = self.sensitivity(quantity, wrt)?;
+                Some(s.iter().zip(dj_dx).map(|(a, b)| a * b).sum())
+            })
+            .collect()
     }
 
     /// The impacts at the model's unilateral constraints, in time order (with

@@ -23,5 +23,6 @@ mod paper;
 mod prescribed;
 mod probes;
 mod radau;
+mod sensitivities;
 mod util;
 mod variational;

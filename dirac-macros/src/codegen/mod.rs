@@ -5,6 +5,7 @@
 //! nonzero entries. Code generation reads the graph and the blocks and returns what it
 //! produced: the methods, the sparse Jacobian's pattern and the operation counts.
 
+mod parameters;
 pub mod signatures;
 
 use proc_macro2::{Literal, TokenStream};
@@ -123,6 +124,7 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
             methods.extend(e.sized(&sig, &column_major(block)));
         }
     }
+    methods.extend(e.parameter_methods(b));
     Generated { methods, sparse: e.csc_jacobian(&b.flat_jacobian), counts }
 }
 
@@ -197,6 +199,9 @@ impl Emitter<'_> {
 
     /// Whether any assignment reads a symbol that argument `arg` provides.
     fn uses(&self, assigns: &[Assign], arg: Arg) -> bool {
+        if arg == Arg::K {
+            return true;
+        }
         let g = &self.model.graph;
         assigns.iter().any(|a| {
             g.deps(a.value).iter().any(|s| match (arg, self.model.kind(s)) {

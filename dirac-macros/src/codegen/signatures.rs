@@ -38,6 +38,8 @@ pub enum Arg {
     Lambda,
     /// The flat state `y = (q, v, p, λ)`.
     Y,
+    /// The index `k` of a parameter.
+    K,
 }
 
 /// What a method returns (a scalar) or writes into its `out` argument.
@@ -69,7 +71,7 @@ const fn method(name: &'static str, args: &'static [Arg], out: Out) -> Signature
     Signature { name, args, out }
 }
 
-use Arg::{Lambda, Q, T, V, Y};
+use Arg::{K, Lambda, Q, T, V, Y};
 
 pub const LAGRANGIAN: Signature = method("lagrangian", &[T, Q, V], Out::Scalar);
 pub const DL_DQ: Signature = method("dl_dq", &[T, Q, V], Out::VecQ);
@@ -114,6 +116,11 @@ pub const RESTITUTION: Signature = method("restitution", &[T, Q], Out::Values);
 /// The model's event functions, in the order declared; emitted for models that have events.
 pub const EVENTS: Signature = method("events", &[T, Q, V, Lambda], Out::Values);
 
+/// The derivatives with respect to parameter `k`; emitted for every model with parameters.
+pub const RESIDUAL_BLOCKS_DTHETA: Signature =
+    method("residual_blocks_dtheta", &[K, T, Q, V, Lambda], Out::ResidualBlocks);
+pub const HOLONOMIC_DTHETA: Signature = method("holonomic_dtheta", &[K, T, Q], Out::VecH);
+
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 19] = [
     LAGRANGIAN,
@@ -147,6 +154,7 @@ impl Arg {
             Arg::V => ("v", quote! { &#p::VecQ<Self> }),
             Arg::Lambda => ("lambda", quote! { &#p::VecC<Self> }),
             Arg::Y => ("y", quote! { &#p::VecY<Self> }),
+            Arg::K => ("k", quote! { ::core::primitive::usize }),
         }
     }
 }

@@ -19,6 +19,8 @@ pub struct CompositeBlocks {
     pub mu_h: Vec<Vec<Vec<Id>>>,
     /// `∂Ω_j/∂t`: nonzero for a row that prescribes a relative motion.
     pub dt: Vec<Id>,
+    /// For each of the composite's own parameters θ: `∂Ω_j/∂θ` and `∂(μ_j ∂Ω_j/∂s_k)/∂θ`.
+    pub dtheta: Vec<(Vec<Id>, Vec<Vec<Id>>)>,
 }
 
 impl CompositeBlocks {
@@ -61,6 +63,15 @@ impl CompositeBlocks {
         }
         let time = m.symbols.declare(g, Sym::Time);
         let dt = m.rows.iter().map(|row| g.diff(row.omega, time)).collect();
-        CompositeBlocks { d, h, mu_d, mu_h, dt }
+        let thetas: Vec<Id> = (0..m.params.len()).map(|i| m.symbols.declare(g, Sym::Parameter(i))).collect();
+        let dtheta = thetas
+            .iter()
+            .map(|&theta| {
+                let omega = m.rows.iter().map(|row| g.diff(row.omega, theta)).collect();
+                let forces = mu_d.iter().map(|row| row.iter().map(|&f| g.diff(f, theta)).collect()).collect();
+                (omega, forces)
+            })
+            .collect();
+        CompositeBlocks { d, h, mu_d, mu_h, dt, dtheta }
     }
 }

@@ -9,6 +9,7 @@ use quote::{format_ident, quote};
 
 use super::blocks::CompositeBlocks;
 use super::model::CompositeModel;
+use crate::sym::Id;
 use crate::sym::emit::{Assign, emit, op_count};
 use crate::symbols::Sym;
 
@@ -132,12 +133,20 @@ impl Own<'_> {
 
     /// `target[j] = Ω_j` for the interconnection rows of a vector over constraints.
     pub fn omega_values(&self, target: &TokenStream) -> Vec<Assign> {
-        let rows = self.model.rows.iter().enumerate();
-        rows.map(|(j, row)| {
-            let j = lit(j);
-            Assign::set(quote! { #target[__OMEGA + #j] }, row.omega)
-        })
-        .collect()
+        let values: Vec<Id> = self.model.rows.iter().map(|row| row.omega).collect();
+        Self::row_values(target, &values)
+    }
+
+    /// `target[j] = values[j]` for the interconnection rows of a vector over constraints.
+    pub fn row_values(target: &TokenStream, values: &[Id]) -> Vec<Assign> {
+        values
+            .iter()
+            .enumerate()
+            .map(|(j, &value)| {
+                let j = lit(j);
+                Assign::set(quote! { #target[__OMEGA + #j] }, value)
+            })
+            .collect()
     }
 
     /// `target[j] = ∂Ω_j/∂t` for the interconnection rows of a vector over constraints.
@@ -152,8 +161,14 @@ impl Own<'_> {
 
     /// `target[i] += (Ωᵀμ)_i`: the interconnection forces, added to a vector over coordinates.
     pub fn forces_into(&self, target: &TokenStream) -> Vec<Assign> {
+        self.forces_of(target, &self.blocks.mu_d)
+    }
+
+    /// `target[i] += Σ_j forces[j][k]` over the members `k` that are velocities: forces given
+    /// per row and member, as `μ_j ∂Ω_j/∂s_k` or a derivative of it.
+    pub fn forces_of(&self, target: &TokenStream, forces: &[Vec<Id>]) -> Vec<Assign> {
         let mut assigns = Vec::new();
-        for row in &self.blocks.mu_d {
+        for row in forces {
             for (k, &value) in row.iter().enumerate().filter(|(_, x)| !self.model.graph.is_zero(**x)) {
                 let r = r_ident(k);
                 assigns.push(Assign::add_if(quote! { #r.velocity }, quote! { #target[#r.index] }, value));

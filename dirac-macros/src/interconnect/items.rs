@@ -17,6 +17,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
     let p = rt();
     let ident = composite.ident;
     let rows = model.rows.iter().map(|r| &r.name);
+    let parameters = composite.params.iter().map(|f| f.unraw().to_string());
     let subsystems = composite.subsystems.iter().enumerate().map(|(i, s)| {
         let (ty, field) = (&s.ty, s.ident.unraw().to_string());
         let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
@@ -45,6 +46,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 outputs: &[],
                 unilaterals: &[],
                 events: &[],
+                parameters: &[#(#parameters),*],
                 subsystems: &[#(#subsystems),*],
             };
         }
@@ -55,6 +57,12 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
 /// subsystems before it, a constant expression.
 pub fn input_offset(composite: &Composite<'_>, i: usize) -> TokenStream {
     offset(composite, i, &format_ident!("input_count"))
+}
+
+/// Where subsystem `i`'s parameters start among the composite's (its own follow the last
+/// subsystem's: `i` may be the number of subsystems).
+pub fn parameter_offset(composite: &Composite<'_>, i: usize) -> TokenStream {
+    offset(composite, i, &format_ident!("parameter_count"))
 }
 
 /// Where subsystem `i`'s outputs start among the composite's.

@@ -26,6 +26,7 @@ pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
     out.extend(super::items::output_method(composite));
     out.extend(super::items::linearisation_methods(composite));
     out.extend(super::items::contact_and_event_methods(composite));
+    out.extend(super::parameters::parameter_methods(composite, own));
     out
 }
 
@@ -153,6 +154,7 @@ fn subsystem_part(sig: &Signature, field: &syn::Ident, ty: &syn::Type, i: usize)
             Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &#slot) },
             Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &#slot) },
             Arg::Y => unreachable!("composites assemble their flat methods from the blocks"),
+            Arg::K => quote! { k },
         })
         .collect();
     if sig.out == Out::Scalar {

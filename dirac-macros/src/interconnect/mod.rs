@@ -15,6 +15,7 @@ mod items;
 mod large;
 mod methods;
 mod model;
+mod parameters;
 
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote, quote_spanned};

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &["m", "k"],
             subsystems: &[],
         };
     }
@@ -642,6 +643,101 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
+        }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m,
+                1 => self.k,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 2usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m = value,
+                1 => self.k = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 2usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    let s0 = q[0].sin();
+                    let s1 = q[2].powi(2) + 1f64;
+                    out.momentum_rate[0usize] = 0.25f64 * s0 * v[0].powi(2) * q[0].cos();
+                    out.momentum_rate[1usize] = 0f64;
+                    out.momentum_rate[2usize] = -q[2] * v[1].powi(2) / s1.powi(2);
+                    out.dl_dv[0usize] = v[0] * (0.25f64 * s0.powi(2) + 1f64);
+                    out.dl_dv[1usize] = v[1] / s1;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                1 => {
+                    let s0 = q[2].powi(2) + 1f64;
+                    let s1 = q[1].powi(2);
+                    let s2 = q[0].powi(2);
+                    let s3 = s1 + 2f64;
+                    let s4 = 0.5f64 * q[2];
+                    let s5 = (s2 + s3.powi(2)).powi(-1);
+                    let s6 = (q[0] * q[1]).cosh();
+                    out.momentum_rate[0usize] = s3 * s5 - v[0] * (0.5f64 * t).cos()
+                        - (-q[0].sin() + 2f64 * q[0] / (s2 + 1f64)) + 0.1f64 * q[1] * s6;
+                    out.momentum_rate[1usize] = -2f64 * q[0] * q[1] * s5
+                        - (0.1f64 * q[1].exp() + q[1] / (s1 + 1f64).sqrt())
+                        + 0.1f64 * q[0] * s6;
+                    out.momentum_rate[2usize] = s0.powi(-1)
+                        + 0.5f64 * (s4.tan().powi(2) + 1f64) + 0.5f64 * s4.sinh()
+                        - v[2].powi(3) - 12.566370614359172f64 * q[2] / s0.powi(3);
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 2usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {
+                    out[0usize] = 0f64;
+                }
+                1 => {
+                    out[0usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 2usize)
+                }
+            }
         }
     }
     #[automatically_derived]

@@ -280,6 +280,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "left",
@@ -1908,6 +1909,247 @@ const _: () = {
                         out,
                     );
                 }
+            }
+        }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                return self.left.parameter_value(k - start);
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                return self.right.parameter_value(k - start);
+            }
+            match k
+                .wrapping_sub(
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count(),
+                )
+            {
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                return self.left.set_parameter_value(k - start, value);
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                return self.right.set_parameter_value(k - start, value);
+            }
+            match k
+                .wrapping_sub(
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count(),
+                )
+            {
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
+            }
+        }
+        #[allow(unused_variables)]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            out.momentum_rate.fill(0.0);
+            out.dl_dv.fill(0.0);
+            out.constraint_velocity.fill(0.0);
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Primitive1>::zeros();
+                self.left
+                    .residual_blocks_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Primitive1,
+                    Self,
+                >(&o.momentum_rate, &__SLOT0, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Primitive1,
+                    Self,
+                >(&o.dl_dv, &__SLOT0, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Primitive1,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT0, &mut out.constraint_velocity);
+                return;
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Primitive2>::zeros();
+                self.right
+                    .residual_blocks_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Primitive2,
+                    Self,
+                >(&o.momentum_rate, &__SLOT1, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Primitive2,
+                    Self,
+                >(&o.dl_dv, &__SLOT1, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Primitive2,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT1, &mut out.constraint_velocity);
+                return;
+            }
+            match k
+                .wrapping_sub(
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count(),
+                )
+            {
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
+            }
+        }
+        #[allow(unused_variables)]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            out.fill(0.0);
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                let mut o = ::dirac::__private::VecH::<Primitive1>::zeros();
+                self.left
+                    .holonomic_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Primitive1, Self>(&o, &__SLOT0, out);
+                return;
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+            {
+                let mut o = ::dirac::__private::VecH::<Primitive2>::zeros();
+                self.right
+                    .holonomic_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Primitive2, Self>(&o, &__SLOT1, out);
+                return;
+            }
+            if k
+                .wrapping_sub(
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .parameter_count()
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES
+                            .parameter_count(),
+                ) >= 0usize
+            {
+                ::core::panic!(
+                    "the model has no parameter {}: it has {}", k, < Self as
+                    ::dirac::__private::Named > ::NAMES.parameter_count()
+                )
             }
         }
     }

@@ -389,6 +389,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &["c"],
             subsystems: &[
                 ::dirac::__private::Subsystem {
                     field: "wheel",
@@ -1990,6 +1991,236 @@ const _: () = {
                         out,
                     );
                 }
+            }
+        }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                return self.wheel.parameter_value(k - start);
+            }
+            let start = 0
+                + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                return self.cart.parameter_value(k - start);
+            }
+            match k
+                .wrapping_sub(
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count(),
+                )
+            {
+                0 => self.c,
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                return self.wheel.set_parameter_value(k - start, value);
+            }
+            let start = 0
+                + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                return self.cart.set_parameter_value(k - start, value);
+            }
+            match k
+                .wrapping_sub(
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count(),
+                )
+            {
+                0 => self.c = value,
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
+            }
+        }
+        #[allow(unused_variables)]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            out.momentum_rate.fill(0.0);
+            out.dl_dv.fill(0.0);
+            out.constraint_velocity.fill(0.0);
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Wheel>::zeros();
+                self.wheel
+                    .residual_blocks_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Wheel,
+                    Self,
+                >(&o.momentum_rate, &__SLOT0, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Wheel,
+                    Self,
+                >(&o.dl_dv, &__SLOT0, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Wheel,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT0, &mut out.constraint_velocity);
+                return;
+            }
+            let start = 0
+                + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                let mut o = ::dirac::__private::ResidualBlocks::<Cart>::zeros();
+                self.cart
+                    .residual_blocks_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_q::<
+                    Cart,
+                    Self,
+                >(&o.momentum_rate, &__SLOT1, &mut out.momentum_rate);
+                ::dirac::__private::scatter_q::<
+                    Cart,
+                    Self,
+                >(&o.dl_dv, &__SLOT1, &mut out.dl_dv);
+                ::dirac::__private::scatter_c::<
+                    Cart,
+                    Self,
+                >(&o.constraint_velocity, &__SLOT1, &mut out.constraint_velocity);
+                return;
+            }
+            match k
+                .wrapping_sub(
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count(),
+                )
+            {
+                0 => {
+                    let r2 = if __R2.velocity { v[__R2.index] } else { q[__R2.index] };
+                    let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
+                    let s0 = r2.cos();
+                    out.constraint_velocity[__OMEGA + 0] = -s0 * r3;
+                    if __R2.velocity {
+                        out.momentum_rate[__R2.index]
+                            += r3 * lambda[__OMEGA + 0] * r2.sin();
+                    }
+                    if __R3.velocity {
+                        out.momentum_rate[__R3.index] += -s0 * lambda[__OMEGA + 0];
+                    }
+                }
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
+            }
+        }
+        #[allow(unused_variables)]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            out.fill(0.0);
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                let mut o = ::dirac::__private::VecH::<Wheel>::zeros();
+                self.wheel
+                    .holonomic_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Wheel, Self>(&o, &__SLOT0, out);
+                return;
+            }
+            let start = 0
+                + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+            if k >= start
+                && k
+                    < start
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+            {
+                let mut o = ::dirac::__private::VecH::<Cart>::zeros();
+                self.cart
+                    .holonomic_dtheta(
+                        k - start,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut o,
+                    );
+                ::dirac::__private::scatter_h::<Cart, Self>(&o, &__SLOT1, out);
+                return;
+            }
+            if k
+                .wrapping_sub(
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count(),
+                ) >= 1usize
+            {
+                ::core::panic!(
+                    "the model has no parameter {}: it has {}", k, < Self as
+                    ::dirac::__private::Named > ::NAMES.parameter_count()
+                )
             }
         }
     }

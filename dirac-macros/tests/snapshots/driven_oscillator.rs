@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &["m", "k", "c", "a", "w"],
             subsystems: &[],
         };
     }
@@ -298,6 +299,92 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecC<Self>,
         ) {}
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m,
+                1 => self.k,
+                2 => self.c,
+                3 => self.a,
+                4 => self.w,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m = value,
+                1 => self.k = value,
+                2 => self.c = value,
+                3 => self.a = value,
+                4 => self.w = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.dl_dv[0usize] = v[0];
+                }
+                1 => {
+                    out.momentum_rate[0usize] = -q[0];
+                    out.dl_dv[0usize] = 0f64;
+                }
+                2 => {
+                    out.momentum_rate[0usize] = -v[0];
+                    out.dl_dv[0usize] = 0f64;
+                }
+                3 => {
+                    out.momentum_rate[0usize] = (self.w * t).sin();
+                    out.dl_dv[0usize] = 0f64;
+                }
+                4 => {
+                    out.momentum_rate[0usize] = self.a * t * (self.w * t).cos();
+                    out.dl_dv[0usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {}
+                1 => {}
+                2 => {}
+                3 => {}
+                4 => {}
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &["m", "g", "l"],
             subsystems: &[],
         };
     }
@@ -330,6 +331,93 @@ const _: () = {
             out: &mut ::dirac::__private::VecC<Self>,
         ) {
             out[0usize] = 0f64;
+        }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m,
+                1 => self.g,
+                2 => self.l,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 3usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m = value,
+                1 => self.g = value,
+                2 => self.l = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 3usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.g;
+                    out.dl_dv[0usize] = v[0];
+                    out.dl_dv[1usize] = v[1];
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                1 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.m;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                2 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 3usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {
+                    out[0usize] = 0f64;
+                }
+                1 => {
+                    out[0usize] = 0f64;
+                }
+                2 => {
+                    out[0usize] = -2f64 * self.l;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 3usize)
+                }
+            }
         }
     }
     #[automatically_derived]

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &["wall"],
             events: &[("slack", 1i8), ("level", 0i8)],
+            parameters: &["m", "g", "l", "e", "w"],
             subsystems: &[],
         };
     }
@@ -399,6 +400,117 @@ const _: () = {
             out[0usize] = lambda[0];
             out[1usize] = q[1] * v[0];
         }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m,
+                1 => self.g,
+                2 => self.l,
+                3 => self.e,
+                4 => self.w,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m = value,
+                1 => self.g = value,
+                2 => self.l = value,
+                3 => self.e = value,
+                4 => self.w = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.g;
+                    out.dl_dv[0usize] = v[0];
+                    out.dl_dv[1usize] = v[1];
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                1 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.m;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                2 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                3 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                4 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {
+                    out[0usize] = 0f64;
+                }
+                1 => {
+                    out[0usize] = 0f64;
+                }
+                2 => {
+                    out[0usize] = -2f64 * self.l;
+                }
+                3 => {
+                    out[0usize] = 0f64;
+                }
+                4 => {
+                    out[0usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 5usize)
+                }
+            }
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
@@ -503,6 +615,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &["wall"],
             events: &[("slack", 1i8), ("level", 0i8)],
+            parameters: &["m", "g", "l", "e", "w", "wall_closed"],
             subsystems: &[],
         };
     }
@@ -987,6 +1100,167 @@ const _: () = {
             );
             out[0usize] = lambda[0];
             out[1usize] = q[1] * v[0];
+        }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m,
+                1 => self.g,
+                2 => self.l,
+                3 => self.e,
+                4 => self.w,
+                5 => self.wall_closed,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 6usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m = value,
+                1 => self.g = value,
+                2 => self.l = value,
+                3 => self.e = value,
+                4 => self.w = value,
+                5 => self.wall_closed = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 6usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.g;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.dl_dv[0usize] = v[0];
+                    out.dl_dv[1usize] = v[1];
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                1 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.m;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                2 => {
+                    let s0 = q[1] / self.l;
+                    let s1 = s0.cos();
+                    let s2 = s0.sin();
+                    let s3 = self.l.powi(-2);
+                    let s4 = self.l.powi(-3);
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = -self.w * self.wall_closed * s2
+                        * lambda[1] * s3
+                        - self.w * self.wall_closed * q[1] * s1 * lambda[1] * s4;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = -self.w * self.wall_closed * v[1]
+                        * s2 * s3 - self.w * self.wall_closed * q[1] * v[1] * s1 * s4;
+                }
+                3 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                4 => {
+                    let s0 = self.l.powi(-1);
+                    let s1 = (q[1] * s0).sin();
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = self.wall_closed * s0 * s1 * lambda[1];
+                    out.momentum_rate[2usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = self.wall_closed * v[1] * s0 * s1;
+                }
+                5 => {
+                    let s0 = self.l.powi(-1);
+                    let s1 = (q[1] * s0).sin();
+                    out.momentum_rate[0usize] = lambda[1];
+                    out.momentum_rate[1usize] = self.w * s0 * s1 * lambda[1];
+                    out.momentum_rate[2usize] = -lambda[1];
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = v[0] - v[2]
+                        + self.w * v[1] * s0 * s1;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 6usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {
+                    out[0usize] = 0f64;
+                    out[1usize] = 0f64;
+                }
+                1 => {
+                    out[0usize] = 0f64;
+                    out[1usize] = 0f64;
+                }
+                2 => {
+                    out[0usize] = -2f64 * self.l;
+                    out[1usize] = -self.w * self.wall_closed * q[1]
+                        * (q[1] / self.l).sin() / self.l.powi(2);
+                }
+                3 => {
+                    out[0usize] = 0f64;
+                    out[1usize] = 0f64;
+                }
+                4 => {
+                    out[0usize] = 0f64;
+                    out[1usize] = -self.wall_closed * (q[1] / self.l).cos();
+                }
+                5 => {
+                    out[0usize] = 0f64;
+                    out[1usize] = q[0] - self.w * (q[1] / self.l).cos() - q[2];
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 6usize)
+                }
+            }
         }
     }
     #[automatically_derived]

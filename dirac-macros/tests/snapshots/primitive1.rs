@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &["m1", "m2", "k1", "k2"],
             subsystems: &[],
         };
     }
@@ -319,6 +320,94 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecC<Self>,
         ) {}
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m1,
+                1 => self.m2,
+                2 => self.k1,
+                3 => self.k2,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m1 = value,
+                1 => self.m2 = value,
+                2 => self.k1 = value,
+                3 => self.k2 = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = v[0];
+                    out.dl_dv[1usize] = 0f64;
+                }
+                1 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = v[1];
+                }
+                2 => {
+                    out.momentum_rate[0usize] = -q[0];
+                    out.momentum_rate[1usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                }
+                3 => {
+                    let s0 = q[1] - q[0];
+                    out.momentum_rate[0usize] = s0;
+                    out.momentum_rate[1usize] = -s0;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {}
+                1 => {}
+                2 => {}
+                3 => {}
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            parameters: &["m", "r", "i_roll", "i_turn"],
             subsystems: &[],
         };
     }
@@ -387,6 +388,119 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
+        }
+        fn parameter_value(
+            &self,
+            k: ::core::primitive::usize,
+        ) -> ::core::primitive::f64 {
+            match k {
+                0 => self.m,
+                1 => self.r,
+                2 => self.i_roll,
+                3 => self.i_turn,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
+        fn set_parameter_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            match k {
+                0 => self.m = value,
+                1 => self.r = value,
+                2 => self.i_roll = value,
+                3 => self.i_turn = value,
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
+        #[inline]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut ::dirac::__private::ResidualBlocks<Self>,
+        ) {
+            match k {
+                0 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.momentum_rate[3usize] = 0f64;
+                    out.dl_dv[0usize] = v[0];
+                    out.dl_dv[1usize] = v[1];
+                    out.dl_dv[2usize] = 0f64;
+                    out.dl_dv[3usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                1 => {
+                    let s0 = q[3].cos();
+                    let s1 = q[3].sin();
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.momentum_rate[2usize] = -s0 * lambda[0] - s1 * lambda[1];
+                    out.momentum_rate[3usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.dl_dv[3usize] = 0f64;
+                    out.constraint_velocity[0usize] = -v[2] * s0;
+                    out.constraint_velocity[1usize] = -v[2] * s1;
+                }
+                2 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.momentum_rate[3usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = v[2];
+                    out.dl_dv[3usize] = 0f64;
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                3 => {
+                    out.momentum_rate[0usize] = 0f64;
+                    out.momentum_rate[1usize] = 0f64;
+                    out.momentum_rate[2usize] = 0f64;
+                    out.momentum_rate[3usize] = 0f64;
+                    out.dl_dv[0usize] = 0f64;
+                    out.dl_dv[1usize] = 0f64;
+                    out.dl_dv[2usize] = 0f64;
+                    out.dl_dv[3usize] = v[3];
+                    out.constraint_velocity[0usize] = 0f64;
+                    out.constraint_velocity[1usize] = 0f64;
+                }
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
+        }
+        #[inline]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _out: &mut ::dirac::__private::VecH<Self>,
+        ) {
+            match k {
+                0 => {}
+                1 => {}
+                2 => {}
+                3 => {}
+                _ => {
+                    ::core::panic!("the model has no parameter {}: it has {}", k, 4usize)
+                }
+            }
         }
     }
     #[automatically_derived]

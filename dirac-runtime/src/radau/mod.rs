@@ -13,8 +13,10 @@ mod controller;
 mod dense;
 mod drive;
 mod estimate;
+mod forward;
 mod options;
 mod residual;
+mod sensitivities;
 mod stages;
 mod tableau;
 
@@ -24,6 +26,7 @@ use self::controller::Controller;
 use self::dense::Dense;
 use self::drive::Feedback;
 use self::estimate::Estimator;
+use self::forward::{At, Forward};
 use self::options::Tolerances;
 pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
 use self::residual::Residual;
@@ -72,6 +75,10 @@ where
     /// With a drive that feeds the state back: the residual blocks at the current inputs and
     /// at perturbed ones, and the perturbed state, for the inputs' part of the Jacobian.
     feedback: Option<Box<Feedback<'m, M>>>,
+    /// Forward sensitivities, when asked for ([`Radau::with_sensitivities`]).
+    forward: Option<Box<Forward<M>>>,
+    /// What the sensitivities are taken with respect to, by name.
+    sensitivity_names: Vec<String>,
     stages: Stages<M>,
     estimator: Estimator<M>,
     dense: Dense<M>,
@@ -148,6 +155,8 @@ where
             weights: sizes.zeros_y::<M>(),
             residual: Residual::new(&sizes),
             feedback: None,
+            forward: None,
+            sensitivity_names: Vec::new(),
             stages: Stages::new(sizes),
             estimator: Estimator::new(sizes),
             dense: Dense::new(sizes),
@@ -229,7 +238,23 @@ where
                     }
                 }
                 Outcome::Converged(iterations) => {
-                    let err = self.estimate();
+                    let mut err = self.estimate();
+                    if err < 1.0 && self.forward.is_some() {
+                        match self.solve_sensitivities() {
+                            Some(err_s) => err = err.max(err_s),
+                            None => {
+                                reason = "the sensitivities' iteration did not converge";
+                                if self.h * 0.5 <= Self::min_step(self.t) {
+                                    return Err(self.newton_failure(reason));
+                                }
+                                self.reject(0.5);
+                                if !self.jac_current {
+                                    self.need_jac = true;
+                                }
+                                continue;
+                            }
+                        }
+                    }
                     let quot = Controller::quotient(err, iterations, self.options.max_newton_iterations);
                     if err < 1.0 {
                         return self.accept(err, quot);
@@ -288,7 +313,36 @@ where
         }
         self.residual.eval(&mut self.model, t0, &self.y, &mut self.f0);
         self.stats.residual_evaluations += 1;
+        if let Some(forward) = self.forward.as_deref_mut() {
+            forward.begin(&mut self.model, &mut self.residual, t0, &self.y);
+        }
         self.check_finite(t0)
+    }
+
+    /// Solves the sensitivities' stage systems of the converged step; their largest error
+    /// estimate (zero unless error-controlled), or `None` if their iteration failed.
+    fn solve_sensitivities(&mut self) -> Option<f64> {
+        let Radau {
+            model, residual, solver, t, h, y, stages, eig, tolerances, options, forward, stats, ..
+        } = self;
+        let forward = forward.as_deref_mut()?;
+        let at = At { t: *t, h: *h, y, z: &stages.z };
+        forward.stages(model, residual, &at);
+        stats.jacobian_evaluations += 3;
+        let h = *h;
+        let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
+        let before = forward.iterations;
+        let result = forward.solve(
+            solver,
+            eig,
+            h,
+            tolerances.fnewt,
+            4 * options.max_newton_iterations,
+            options.error_norm,
+            &weights,
+        );
+        stats.sensitivity_iterations += forward.iterations - before;
+        result
     }
 
     fn factor(&mut self) -> Result<(), Singular> {
@@ -327,6 +381,9 @@ where
         let h = self.h;
         let quot = self.controller.accepted_quotient(h, err, quot, self.stats.steps > 0);
         self.dense.update(&self.stages.z, h);
+        if let Some(forward) = self.forward.as_deref_mut() {
+            forward.accept(h);
+        }
         self.y += &self.stages.z[2];
         self.state.read_y(&self.y);
         if let Some(projector) = &mut self.projector {
@@ -393,6 +450,7 @@ where
         self.h = self.options.initial_step.unwrap_or(1e-6 * span);
         self.stats = RadauStats::default();
         self.changed_from = None;
+        self.start_sensitivities(t0, state)?;
         self.begin(t0, t_end, true)
     }
 
@@ -420,6 +478,15 @@ where
     }
 
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        if self.forward.is_some() {
+            return Err(SimError::InvalidOption {
+                what: "sensitivities",
+                reason: format!(
+                    "a restart at t = {t} (an event's reset or impact) would need the sensitivities' jump \
+                     conditions, which are not implemented: integrate with sensitivities between events"
+                ),
+            });
+        }
         check_within_last_step(t, self.t - self.dense.h, self.t)?;
         check_state(self.model.get(), t, state, self.options.rtol.max(1e-8))?;
         self.changed_from = None;

@@ -127,6 +127,8 @@ pub struct RadauStats {
     pub factorizations: usize,
     /// Newton iterations.
     pub newton_iterations: usize,
+    /// Linear iterations of the forward sensitivities' stage systems, over all sensitivities.
+    pub sensitivity_iterations: usize,
 }
 
 /// The tolerances as the error estimate and the Newton iteration use them: Hairer's

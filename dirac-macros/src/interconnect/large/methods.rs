@@ -88,7 +88,7 @@ impl Large<'_> {
                 Arg::Q => quote! { &#p::gather_q::<#ty, Self>(q, &__s) },
                 Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &__s) },
                 Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &__s) },
-                Arg::Y => unreachable!("composites assemble their flat methods from the blocks"),
+                Arg::Y | Arg::K => unreachable!("arrays assemble no flat or parameter methods"),
             })
             .collect();
         let qq_at = quote! { __pl.qq_at(#fl, __e) };

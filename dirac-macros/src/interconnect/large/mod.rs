@@ -279,6 +279,7 @@ pub fn implementation(
                     outputs: &[],
                     unilaterals: &[],
                     events: &[],
+                    parameters: &[],
                     subsystems: &[],
                 };
             }

@@ -1,0 +1,127 @@
+//! A composite's parameter methods: each parameter index dispatched to the subsystem that owns
+//! it (its derivative blocks computed on its part of the arguments and scattered into the
+//! composite's), or to the composite's own `f64` fields, whose derivatives are those of the
+//! interconnection rows and their forces.
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+use super::ast::Composite;
+use super::emit::Own;
+use super::items::parameter_offset;
+use crate::codegen::signatures::rt;
+
+/// `parameter_value`, `set_parameter_value`, `residual_blocks_dtheta` and `holonomic_dtheta`.
+pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
+    let p = rt();
+    let own_start = parameter_offset(composite, composite.subsystems.len());
+    let total = quote! { <Self as #p::Named>::NAMES.parameter_count() };
+    let panic = quote! { ::core::panic!("the model has no parameter {}: it has {}", k, #total) };
+    // `if k` is subsystem `i`'s: `call` with `k - start`, its own index.
+    let dispatch = |call: &dyn Fn(&syn::Ident, &syn::Type, usize) -> TokenStream| -> TokenStream {
+        composite
+            .subsystems
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let (start, ty) = (parameter_offset(composite, i), &s.ty);
+                let body = call(&s.ident, ty, i);
+                quote! {
+                    let start = #start;
+                    if k >= start && k < start + <#ty as #p::Named>::NAMES.parameter_count() {
+                        #body
+                    }
+                }
+            })
+            .collect()
+    };
+    let fields = &composite.params;
+    let own_count = fields.len();
+    let own_k = (0..fields.len()).map(Literal::usize_unsuffixed);
+    let (own_k1, own_k2) = (own_k.clone(), own_k);
+    let get = dispatch(&|field, _, _| quote! { return self.#field.parameter_value(k - start); });
+    let set = dispatch(&|field, _, _| quote! { return self.#field.set_parameter_value(k - start, value); });
+    let residual = dispatch(&|field, ty, i| {
+        let slot = format_ident!("__SLOT{}", i);
+        quote! {
+            let mut o = #p::ResidualBlocks::<#ty>::zeros();
+            self.#field.residual_blocks_dtheta(
+                k - start,
+                t,
+                &#p::gather_q::<#ty, Self>(q, &#slot),
+                &#p::gather_q::<#ty, Self>(v, &#slot),
+                &#p::gather_c::<#ty, Self>(lambda, &#slot),
+                &mut o,
+            );
+            #p::scatter_q::<#ty, Self>(&o.momentum_rate, &#slot, &mut out.momentum_rate);
+            #p::scatter_q::<#ty, Self>(&o.dl_dv, &#slot, &mut out.dl_dv);
+            #p::scatter_c::<#ty, Self>(&o.constraint_velocity, &#slot, &mut out.constraint_velocity);
+            return;
+        }
+    });
+    let holonomic = dispatch(&|field, ty, i| {
+        let slot = format_ident!("__SLOT{}", i);
+        quote! {
+            let mut o = #p::VecH::<#ty>::zeros();
+            self.#field.holonomic_dtheta(k - start, t, &#p::gather_q::<#ty, Self>(q, &#slot), &mut o);
+            #p::scatter_h::<#ty, Self>(&o, &#slot, out);
+            return;
+        }
+    });
+    let own_arms = own.blocks.dtheta.iter().enumerate().map(|(j, (omega, forces))| {
+        let mut assigns = Own::row_values(&quote! { out.constraint_velocity }, omega);
+        assigns.extend(own.forces_of(&quote! { out.momentum_rate }, forces));
+        let body = own.body(&assigns, true);
+        let j = Literal::usize_unsuffixed(j);
+        quote! { #j => { #body } }
+    });
+    quote! {
+        fn parameter_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            #get
+            match k.wrapping_sub(#own_start) {
+                #(#own_k1 => self.#fields,)*
+                _ => #panic,
+            }
+        }
+        fn set_parameter_value(&mut self, k: ::core::primitive::usize, value: ::core::primitive::f64) {
+            #set
+            match k.wrapping_sub(#own_start) {
+                #(#own_k2 => self.#fields = value,)*
+                _ => #panic,
+            }
+        }
+        #[allow(unused_variables)]
+        fn residual_blocks_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            lambda: &#p::VecC<Self>,
+            out: &mut #p::ResidualBlocks<Self>,
+        ) {
+            out.momentum_rate.fill(0.0);
+            out.dl_dv.fill(0.0);
+            out.constraint_velocity.fill(0.0);
+            #residual
+            match k.wrapping_sub(#own_start) {
+                #(#own_arms)*
+                _ => #panic,
+            }
+        }
+        #[allow(unused_variables)]
+        fn holonomic_dtheta(
+            &self,
+            k: ::core::primitive::usize,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            out: &mut #p::VecH<Self>,
+        ) {
+            out.fill(0.0);
+            #holonomic
+            if k.wrapping_sub(#own_start) >= #own_count {
+                #panic
+            }
+        }
+    }
+}

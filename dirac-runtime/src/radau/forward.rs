@@ -1,0 +1,394 @@
+//! Forward sensitivities in Radau by the staggered direct method: after a step's stages have
+//! converged, the sensitivities' stage equations
+//!
+//! ```text
+//! M Zs_k = h Σ_j a_kj (J_j (s_n + Zs_j) + g_j),   J_j = ∂f/∂y and g_j = ∂f/∂θ at stage j,
+//! ```
+//!
+//! linear in `Zs`, are solved by the simplified Newton iteration on the step's factored
+//! matrix, in the same transformed variables as the state's. The stage Jacobians are evaluated
+//! once per step and shared by every sensitivity; each sensitivity costs matrix-vector
+//! products and solves with the factorisation already made. Nothing allocates in a step.
+
+use nalgebra::DefaultAllocator;
+
+use super::dense::Dense;
+use super::options::{ErrorNorm, norm};
+use super::residual::Residual;
+use super::tableau::{C1, C2, C3, DD1, DD2, DD3, Eigen, T, TI};
+use crate::algebra::Algebra;
+use crate::blocks::{JacobianBlocks, ResidualBlocks};
+use crate::dims::{Sizes, Storage, VecY};
+use crate::held::Held;
+use crate::layout::Layout;
+use crate::model::LagrangeDirac;
+use crate::newton::NewtonSolver;
+use crate::sensitivity::Wrt;
+use crate::state::State;
+
+fn three<M: LagrangeDirac>(sizes: Sizes) -> [VecY<M>; 3]
+where
+    DefaultAllocator: Storage<M>,
+{
+    [sizes.zeros_y::<M>(), sizes.zeros_y::<M>(), sizes.zeros_y::<M>()]
+}
+
+/// One sensitivity: what it is with respect to, its value, its stages and its dense output.
+struct Column<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    wrt: Wrt,
+    /// `s_n`, the sensitivity at the step's start, then at its end.
+    s: VecY<M>,
+    /// The stage increments `Zs_k`.
+    z: [VecY<M>; 3],
+    /// `∂f/∂θ` at each stage (zero for an initial value).
+    g: [VecY<M>; 3],
+    /// `∂f/∂θ` at the step's start, for the error estimate.
+    g0: VecY<M>,
+    dense: Dense<M>,
+}
+
+/// The forward sensitivities of a Radau integration and their work space.
+pub(crate) struct Forward<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    columns: Vec<Column<M>>,
+    /// The Jacobians at the three stages of the step being solved.
+    jac: [JacobianBlocks<M, M::Algebra>; 3],
+    /// The Jacobian at the step's start (the last stage of the step before, or the start).
+    jac0: JacobianBlocks<M, M::Algebra>,
+    w: [VecY<M>; 3],
+    f: [VecY<M>; 3],
+    r: [VecY<M>; 3],
+    tmp: VecY<M>,
+    weights: VecY<M>,
+    state: State<M>,
+    blocks: ResidualBlocks<M>,
+    layout: Layout,
+    /// Whether the sensitivities' errors count in the step-size control.
+    pub error_control: bool,
+    /// Whether the sensitivities' multipliers at the step's start are known: not at the start
+    /// of an integration, where they enter only the error estimate, which is then skipped.
+    multipliers_known: bool,
+    /// Linear iterations of the sensitivity stage systems, over all columns.
+    pub iterations: usize,
+}
+
+/// `out = J x` for the flat Jacobian `J` given by its blocks.
+fn apply<M: LagrangeDirac>(l: &Layout, jac: &JacobianBlocks<M, M::Algebra>, x: &VecY<M>, out: &mut VecY<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (x, o) = (x.as_slice(), out.as_mut_slice());
+    let (xq, xv, xp, xl) = (&x[l.q..l.v], &x[l.v..l.p], &x[l.p..l.lambda], &x[l.lambda..l.len]);
+    o[l.q..l.v].copy_from_slice(xv);
+    o[l.v..l.p].copy_from_slice(xp);
+    o[l.p..l.len].fill(0.0);
+    {
+        let ov = &mut o[l.v..l.p];
+        M::Algebra::qq_mul(&jac.l_vq, -1.0, xq, ov);
+        M::Algebra::qq_mul(&jac.l_vv, -1.0, xv, ov);
+    }
+    {
+        let op = &mut o[l.p..l.lambda];
+        M::Algebra::qq_mul(&jac.dpdot_dq, 1.0, xq, op);
+        M::Algebra::qq_mul(&jac.dpdot_dv, 1.0, xv, op);
+        M::Algebra::cq_tr_mul(&jac.a, 1.0, xl, op);
+    }
+    let oc = &mut o[l.lambda..l.len];
+    M::Algebra::cq_mul(&jac.dav_dq, 1.0, xq, oc);
+    M::Algebra::cq_mul(&jac.a, 1.0, xv, oc);
+}
+
+/// The stage and state the sensitivities of a step are solved at.
+pub(crate) struct At<'a, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub t: f64,
+    pub h: f64,
+    pub y: &'a VecY<M>,
+    pub z: &'a [VecY<M>; 3],
+}
+
+impl<M: LagrangeDirac> Forward<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new(model: &M, wrt: &[Wrt], error_control: bool) -> Self {
+        let sizes = model.sizes();
+        let shape = model.shape();
+        let jac = || JacobianBlocks::with_shape(&shape);
+        let columns = wrt
+            .iter()
+            .map(|&wrt| Column {
+                wrt,
+                s: sizes.zeros_y::<M>(),
+                z: three(sizes),
+                g: three(sizes),
+                g0: sizes.zeros_y::<M>(),
+                dense: Dense::new(sizes),
+            })
+            .collect();
+        Forward {
+            columns,
+            jac: [jac(), jac(), jac()],
+            jac0: jac(),
+            w: three(sizes),
+            f: three(sizes),
+            r: three(sizes),
+            tmp: sizes.zeros_y::<M>(),
+            weights: sizes.zeros_y::<M>(),
+            state: State::with_sizes(sizes),
+            blocks: ResidualBlocks::with_sizes(&sizes),
+            layout: Layout::new(sizes),
+            error_control,
+            multipliers_known: false,
+            iterations: 0,
+        }
+    }
+
+    /// The number of sensitivities.
+    pub fn len(&self) -> usize {
+        self.columns.len()
+    }
+
+    /// Sensitivity `j` at the step reached.
+    pub fn value(&self, j: usize) -> &VecY<M> {
+        &self.columns[j].s
+    }
+
+    /// Sets sensitivity `j` (at a start).
+    pub fn set_value(&mut self, j: usize, s: &State<M>) {
+        s.write_y(&mut self.columns[j].s);
+        self.columns[j].dense.h = 0.0;
+        self.multipliers_known = false;
+    }
+
+    /// Writes sensitivity `j` at `t` within the last step, which ended at `t_end`, into `out`.
+    pub fn interpolate(&self, j: usize, t_end: f64, t: f64, out: &mut State<M>) {
+        let c = &self.columns[j];
+        c.dense.interpolate(&c.s, t_end, t, out);
+    }
+
+    /// What sensitivity `j` is taken with respect to.
+    pub fn wrt(&self, j: usize) -> Wrt {
+        self.columns[j].wrt
+    }
+
+    /// Sensitivity `j`'s multipliers at the start of the last step, into `out`: the quadratic
+    /// through their three stage values extrapolated to the step's start. What the multipliers'
+    /// sensitivities are at the start of an integration, where the method does not carry them
+    /// (they enter no stage equation), to `O(h³)` of the first, short, step.
+    pub fn multipliers_at_start(&self, j: usize, out: &mut State<M>) {
+        let (l, c) = (self.layout, &self.columns[j]);
+        let nodes = [C1, C2, C3];
+        let lagrange = |k: usize| {
+            let (a, b) = (nodes[(k + 1) % 3], nodes[(k + 2) % 3]);
+            a * b / ((nodes[k] - a) * (nodes[k] - b))
+        };
+        let weights = [lagrange(0), lagrange(1), lagrange(2)];
+        for i in l.lambda..l.len {
+            // The step ended at s = s_n + Zs_3, so stage k holds s − Zs_3 + Zs_k.
+            let base = c.s[i] - c.z[2][i];
+            out.lambda[i - l.lambda] = (0..3).map(|k| weights[k] * (base + c.z[k][i])).sum();
+        }
+    }
+
+    /// Evaluates the Jacobian and the parameter derivatives `∂f/∂θ` at the start of an
+    /// integration, for the first step's error estimate.
+    pub fn begin(&mut self, model: &mut Held<'_, M>, residual: &mut Residual<'_, M>, t: f64, y: &VecY<M>) {
+        residual.apply(model, t, y);
+        self.state.read_y(y);
+        let s = &self.state;
+        model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac0);
+        for c in &mut self.columns {
+            if let Wrt::Parameter(k) = c.wrt {
+                let s = &self.state;
+                model.residual_blocks_dtheta(k, t, &s.q, &s.v, &s.lambda, &mut self.blocks);
+                flat_dtheta(&self.layout, &self.blocks, &mut c.g0);
+            }
+        }
+    }
+
+    /// Evaluates the Jacobians and the parameter derivatives at the step's stages.
+    pub fn stages(&mut self, model: &mut Held<'_, M>, residual: &mut Residual<'_, M>, at: &At<'_, M>) {
+        for (k, ck) in [C1, C2, C3].into_iter().enumerate() {
+            self.tmp.copy_from(at.y);
+            self.tmp += &at.z[k];
+            let t = at.t + ck * at.h;
+            residual.apply(model, t, &self.tmp);
+            self.state.read_y(&self.tmp);
+            let s = &self.state;
+            model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac[k]);
+            for c in &mut self.columns {
+                if let Wrt::Parameter(p) = c.wrt {
+                    model.residual_blocks_dtheta(p, t, &s.q, &s.v, &s.lambda, &mut self.blocks);
+                    flat_dtheta(&self.layout, &self.blocks, &mut c.g[k]);
+                }
+            }
+        }
+    }
+
+    /// Solves every sensitivity's stage system with the factored `solver`; the iterations'
+    /// increments are measured in `weights_of(s)` against `fnewt`. Returns the largest
+    /// weighted error estimate of the sensitivities (zero unless they are error-controlled),
+    /// or `None` if an iteration does not converge.
+    #[allow(clippy::too_many_arguments)]
+    pub fn solve<S: NewtonSolver<M, M::Algebra>>(
+        &mut self,
+        solver: &mut S,
+        eig: &Eigen,
+        h: f64,
+        fnewt: f64,
+        max_iterations: usize,
+        error_norm: ErrorNorm,
+        weights_of: &dyn Fn(&VecY<M>, &mut VecY<M>),
+    ) -> Option<f64> {
+        let l = self.layout;
+        let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
+        let mut worst: f64 = 0.0;
+        for c in &mut self.columns {
+            weights_of(&c.s, &mut self.weights);
+            for k in 0..3 {
+                c.z[k].fill(0.0);
+                self.w[k].fill(0.0);
+            }
+            let mut converged = false;
+            let mut previous = f64::INFINITY;
+            for _ in 0..max_iterations {
+                // f_k = J_k (s_n + Zs_k) + g_k.
+                for k in 0..3 {
+                    self.tmp.copy_from(&c.s);
+                    self.tmp += &c.z[k];
+                    apply::<M>(&l, &self.jac[k], &self.tmp, &mut self.f[k]);
+                    if matches!(c.wrt, Wrt::Parameter(_)) {
+                        self.f[k] += &c.g[k];
+                    }
+                }
+                for (k, rk) in self.r.iter_mut().enumerate() {
+                    for i in 0..rk.len() {
+                        rk[i] = TI[k][0] * self.f[0][i] + TI[k][1] * self.f[1][i] + TI[k][2] * self.f[2][i];
+                    }
+                }
+                for i in (l.q..l.v).chain(l.p..l.lambda) {
+                    let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
+                    self.r[0][i] -= gamma * w1;
+                    self.r[1][i] -= alpha * w2 - beta * w3;
+                    self.r[2][i] -= beta * w2 + alpha * w3;
+                }
+                let [r1, r2, r3] = &mut self.r;
+                solver.solve(r1);
+                solver.solve_complex(r2, r3);
+                self.iterations += 1;
+                let dyno = {
+                    let sum: f64 =
+                        self.r.iter().map(|rk| norm::<M>(rk, &self.weights, error_norm).powi(2)).sum();
+                    (sum / 3.0).sqrt()
+                };
+                for (wk, rk) in self.w.iter_mut().zip(&self.r) {
+                    *wk += rk;
+                }
+                for i in 0..l.len {
+                    let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
+                    for (zk, tk) in c.z.iter_mut().zip(&T) {
+                        zk[i] = tk[0] * w1 + tk[1] * w2 + tk[2] * w3;
+                    }
+                }
+                if !dyno.is_finite() {
+                    return None;
+                }
+                let theta = dyno / previous;
+                if theta >= 0.99 && previous.is_finite() {
+                    return None;
+                }
+                // The linear iteration contracts by θ: what remains is about θ/(1 − θ) times
+                // the last increment. Iterate to well below the state's Newton tolerance.
+                let remaining = if previous.is_finite() { dyno * theta / (1.0 - theta) } else { dyno };
+                previous = dyno.max(f64::MIN_POSITIVE);
+                if remaining <= 1e-2 * fnewt || dyno <= 1e-3 * fnewt {
+                    converged = true;
+                    break;
+                }
+            }
+            if !converged {
+                return None;
+            }
+            if self.error_control && self.multipliers_known {
+                worst = worst.max(estimate(
+                    &l,
+                    solver,
+                    &self.jac0,
+                    c,
+                    &mut self.tmp,
+                    h,
+                    &self.weights,
+                    error_norm,
+                ));
+            }
+        }
+        Some(worst)
+    }
+
+    /// Accepts the step of size `h`: each sensitivity moves to the step's end, and the last
+    /// stage's Jacobian and parameter derivatives become the next step's start.
+    pub fn accept(&mut self, h: f64) {
+        for c in &mut self.columns {
+            c.dense.update(&c.z, h);
+            c.s += &c.z[2];
+            c.g0.copy_from(&c.g[2]);
+        }
+        self.jac0.copy_from(&self.jac[2]);
+        self.multipliers_known = true;
+    }
+}
+
+/// The flat `∂f/∂θ = (0, −∂(∂L/∂v)/∂θ, ∂ṗ/∂θ, ∂(A v + b)/∂θ)` from its blocks.
+fn flat_dtheta<M: LagrangeDirac>(l: &Layout, b: &ResidualBlocks<M>, out: &mut VecY<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let o = out.as_mut_slice();
+    o[l.q..l.v].fill(0.0);
+    for (x, d) in o[l.v..l.p].iter_mut().zip(b.dl_dv.iter()) {
+        *x = -d;
+    }
+    o[l.p..l.lambda].copy_from_slice(b.momentum_rate.as_slice());
+    o[l.lambda..l.len].copy_from_slice(b.constraint_velocity.as_slice());
+}
+
+/// The embedded error estimate of one sensitivity, as the state's
+/// ([`Estimator`](super::estimate::Estimator)) without its refinement: the weighted norm of
+/// `(γ/h M − J)⁻¹ M (f_s(t_n) + Σ e_i Zs_i / h)`, `f_s = J s + ∂f/∂θ`.
+#[allow(clippy::too_many_arguments)]
+fn estimate<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>>(
+    l: &Layout,
+    solver: &mut S,
+    jac0: &JacobianBlocks<M, M::Algebra>,
+    c: &Column<M>,
+    e: &mut VecY<M>,
+    h: f64,
+    weights: &VecY<M>,
+    error_norm: ErrorNorm,
+) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    // s_n is c.s (not yet advanced).
+    apply::<M>(l, jac0, &c.s, e);
+    if matches!(c.wrt, Wrt::Parameter(_)) {
+        *e += &c.g0;
+    }
+    for i in 0..l.len {
+        e[i] += (DD1 * c.z[0][i] + DD2 * c.z[1][i] + DD3 * c.z[2][i]) / h;
+    }
+    let x = e.as_mut_slice();
+    x[l.v..l.p].fill(0.0);
+    x[l.lambda..l.len].fill(0.0);
+    solver.solve(e);
+    let err = norm::<M>(e, weights, error_norm).max(1e-10);
+    if err.is_finite() { err } else { 1e10 }
+}

@@ -1,0 +1,372 @@
+//! Parameter derivatives and forward sensitivities.
+//!
+//! References: the generated `∂f/∂θ` blocks against central differences of the generated
+//! residual blocks in the parameter (set through `set_parameter_value`); the sensitivities of
+//! whole simulations against central differences of whole simulations at perturbed parameters
+//! and initial values, and against the closed-form solution of the harmonic oscillator.
+
+use dirac::Storage;
+use dirac::nalgebra::DefaultAllocator;
+use dirac::prelude::*;
+
+use crate::util::{Rng, random_y};
+use crate::zoo::*;
+
+/// Every parameter's generated `∂(residual blocks)/∂θ` and `∂φ/∂θ` equal central differences
+/// in the parameter at random states, to 1e-7 relative to the larger of the entry and 1.
+fn check_parameter_derivatives<M: LagrangeDirac + Clone>(model: &M, seed: u64, trials: usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut rng = Rng::new(seed);
+    let sizes = model.sizes();
+    let names = model.parameter_names();
+    for _ in 0..trials {
+        let t = rng.uniform(0.0, 2.0);
+        let y = random_y(model, &mut rng);
+        let s = State::<M>::from_y(sizes, &y);
+        for (k, name) in names.iter().enumerate() {
+            let mut exact = ResidualBlocks::<M>::with_sizes(&sizes);
+            model.residual_blocks_dtheta(k, t, &s.q, &s.v, &s.lambda, &mut exact);
+            let mut exact_phi = sizes.zeros_h::<M>();
+            model.holonomic_dtheta(k, t, &s.q, &mut exact_phi);
+            let theta = model.parameter_value(k);
+            let step = 1e-6 * theta.abs().max(1.0);
+            let at = |value: f64| {
+                let mut moved = model.clone();
+                moved.set_parameter_value(k, value);
+                let mut blocks = ResidualBlocks::<M>::with_sizes(&sizes);
+                moved.residual_blocks(t, &s.q, &s.v, &s.lambda, &mut blocks);
+                let mut phi = sizes.zeros_h::<M>();
+                moved.holonomic(t, &s.q, &mut phi);
+                (blocks, phi)
+            };
+            let ((plus, phi_plus), (minus, phi_minus)) = (at(theta + step), at(theta - step));
+            let pairs = [
+                (
+                    "momentum_rate",
+                    exact.momentum_rate.as_slice(),
+                    plus.momentum_rate.as_slice(),
+                    minus.momentum_rate.as_slice(),
+                ),
+                ("dl_dv", exact.dl_dv.as_slice(), plus.dl_dv.as_slice(), minus.dl_dv.as_slice()),
+                (
+                    "constraint_velocity",
+                    exact.constraint_velocity.as_slice(),
+                    plus.constraint_velocity.as_slice(),
+                    minus.constraint_velocity.as_slice(),
+                ),
+                ("holonomic", exact_phi.as_slice(), phi_plus.as_slice(), phi_minus.as_slice()),
+            ];
+            for (block, exact, plus, minus) in pairs {
+                for i in 0..exact.len() {
+                    let fd = (plus[i] - minus[i]) / (2.0 * step);
+                    assert!(
+                        (exact[i] - fd).abs() <= 1e-7 * exact[i].abs().max(1.0),
+                        "∂{block}[{i}]/∂{name}: generated {}, central difference {fd}",
+                        exact[i]
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn parameter_derivatives_match_central_differences() {
+    check_parameter_derivatives(&Pendulum { m: 1.3, g: 9.81, l: 0.7 }, 1, 10);
+    check_parameter_derivatives(&RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 }, 2, 10);
+    check_parameter_derivatives(&LcCircuit { ind: 1.5, cap: 0.4 }, 3, 10);
+    check_parameter_derivatives(&DrivenOscillator { m: 1.0, k: 2.0, c: 0.3, a: 0.5, w: 1.7 }, 4, 10);
+    check_parameter_derivatives(&ShakenPendulum { m: 1.3, g: 9.81, l: 0.7, a: 0.2, w: 3.0 }, 5, 10);
+    check_parameter_derivatives(
+        &DiskOnBelt { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045, belt: 0.7 },
+        6,
+        10,
+    );
+    check_parameter_derivatives(&AllFunctions { m: 1.5, k: 0.7 }, 7, 10);
+    check_parameter_derivatives(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 8, 3);
+}
+
+#[test]
+fn interconnected_parameter_derivatives_match_central_differences() {
+    check_parameter_derivatives(&paper_chain(), 11, 10);
+    let gear = RackAndPinion { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, r: 0.3 };
+    check_parameter_derivatives(&gear, 12, 10);
+    let coupled =
+        CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
+    check_parameter_derivatives(&coupled, 13, 10);
+}
+
+#[test]
+fn parameters_are_named_and_set_by_index() {
+    let chain = paper_chain();
+    assert_eq!(chain.parameter_names(), ["left.m1", "left.m2", "left.k1", "left.k2", "right.m3", "right.k3"]);
+    let gear = RackAndPinion { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, r: 0.3 };
+    assert_eq!(gear.parameter_names(), ["wheel.j", "wheel.k_theta", "cart.m", "cart.k", "r"]);
+    let mut gear = gear;
+    for k in 0..5 {
+        gear.set_parameter_value(k, 10.0 + k as f64);
+    }
+    assert_eq!(
+        (gear.wheel.j, gear.wheel.k_theta, gear.cart.m, gear.cart.k, gear.r),
+        (10.0, 11.0, 12.0, 13.0, 14.0)
+    );
+    assert_eq!(gear.parameter_value(4), 14.0);
+    assert_eq!(gear.parameter_index("cart.k"), Some(3));
+    assert_eq!(gear.parameter_index("cart.nope"), None);
+}
+
+/// The runs the sensitivity tests compare: Radau at a tight tolerance.
+fn tight() -> RadauOptions {
+    RadauOptions { rtol: 1e-11, atol: 1e-13, ..RadauOptions::default() }
+}
+
+/// `m ẍ = −k x` from `x0`, `v0`: `x = x0 cos ωt + (v0/ω) sin ωt`, `ω = √(k/m)`, so
+/// `∂x/∂ω = −x0 t sin ωt + v0 (t cos ωt / ω − sin ωt / ω²)`, `∂ω/∂k = 1/(2 m ω)`,
+/// `∂ω/∂m = −ω/(2m)`, `∂x/∂x0 = cos ωt`, `∂x/∂v0 = sin ωt / ω`.
+#[test]
+fn harmonic_oscillator_sensitivities_match_the_closed_form() {
+    let (m, k, x0, v0) = (1.3, 2.1, 0.7, -0.4);
+    let model = DrivenOscillator { m, k, c: 0.0, a: 0.0, w: 1.0 };
+    let mut state = State::<DrivenOscillator>::zeros();
+    state.set_q(DrivenOscillator::X, x0).set_v(DrivenOscillator::X, v0).set_p(DrivenOscillator::X, m * v0);
+    let wrt = Sensitivities::new(&model)
+        .parameters(&["k", "m"])
+        .expect("parameters of the model")
+        .initial_position(DrivenOscillator::X)
+        .initial_velocity(DrivenOscillator::X);
+    assert_eq!(wrt.names(), ["k", "m", "x(t0)", "v(t0)"]);
+    let times: Vec<f64> = (0..=20).map(|i| 0.5 * i as f64).collect();
+    let mut radau = Radau::new(&model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution =
+        radau.solve_with_sensitivities(0.0, &state, 10.0, &Sampling::Times(times.clone())).expect("solves");
+    let w = (k / m).sqrt();
+    let dx_dw = |t: f64| -x0 * t * (w * t).sin() + v0 * (t * (w * t).cos() / w - (w * t).sin() / (w * w));
+    let expected: [(&str, &dyn Fn(f64) -> f64); 4] = [
+        ("k", &|t| dx_dw(t) / (2.0 * m * w)),
+        ("m", &|t| -dx_dw(t) * w / (2.0 * m)),
+        ("x(t0)", &|t| (w * t).cos()),
+        ("v(t0)", &|t| (w * t).sin() / w),
+    ];
+    for (name, exact) in expected {
+        let s = solution.dq(DrivenOscillator::X, name).expect("recorded");
+        for (i, &t) in times.iter().enumerate() {
+            let want = exact(t);
+            assert!(
+                (s[i] - want).abs() <= 1e-8 * (1.0 + t),
+                "∂x/∂{name} at t = {t}: {} against {want}",
+                s[i]
+            );
+        }
+    }
+    // The momentum's: p = m v, so ∂p/∂x0 = m ∂v/∂x0 = −m ω sin ωt.
+    let dp = solution.dp(DrivenOscillator::X, "x(t0)").expect("recorded");
+    for (i, &t) in times.iter().enumerate() {
+        assert!((dp[i] + m * w * (w * t).sin()).abs() <= 1e-8 * (1.0 + t));
+    }
+}
+
+/// Central differences of whole simulations in each parameter against the sensitivities, at
+/// the samples, for the state quantities `quantities`, to `tolerance` times the larger of the
+/// sensitivity's largest value and `floor`. The differences are extrapolated (Richardson) from
+/// steps `δ = 1e-3 θ` and `2δ`, so that their truncation error is `O(δ⁴)` and the noise of the
+/// adaptive step sequence at a tolerance of 1e-11, about `1e-11 / δ`, stays near 1e-8.
+fn check_against_simulations<M: LagrangeDirac + Clone>(
+    model: &M,
+    start: &dyn Fn(&M) -> State<M>,
+    parameters: &[&str],
+    quantities: &[&str],
+    t_end: f64,
+    (tolerance, floor): (f64, f64),
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let times: Vec<f64> = (0..=8).map(|i| t_end * i as f64 / 8.0).collect();
+    let sampling = Sampling::Times(times.clone());
+    let wrt = Sensitivities::new(model).parameters(parameters).expect("parameters of the model");
+    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution = radau.solve_with_sensitivities(0.0, &start(model), t_end, &sampling).expect("solves");
+    for name in parameters {
+        let k = model.parameter_index(name).expect("a parameter");
+        let theta = model.parameter_value(k);
+        let step = 1e-3 * theta.abs().max(1e-3);
+        let run = |value: f64| {
+            let mut moved = model.clone();
+            moved.set_parameter_value(k, value);
+            let start = start(&moved);
+            Radau::new(&moved, tight()).expect("valid").solve(0.0, &start, t_end, &sampling).expect("solves")
+        };
+        let runs = [run(theta + step), run(theta - step), run(theta + 2.0 * step), run(theta - 2.0 * step)];
+        for quantity in quantities {
+            let s = solution.sensitivity(quantity, name).expect("recorded");
+            let [a, b, c, d] = runs.each_ref().map(|r| r.column(quantity).expect("a column"));
+            let scale = s.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(floor);
+            for i in 0..times.len() {
+                let (near, far) = ((a[i] - b[i]) / (2.0 * step), (c[i] - d[i]) / (4.0 * step));
+                let fd = (4.0 * near - far) / 3.0;
+                assert!(
+                    (s[i] - fd).abs() <= tolerance * scale,
+                    "∂{quantity}/∂{name} at t = {}: sensitivity {}, central difference {fd} (scale {scale})",
+                    times[i],
+                    s[i]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn holonomic_pendulum_sensitivities_match_simulations() {
+    // One guess, 0.9 rad from the vertical on the nominal circle, made consistent for each
+    // run, as the sensitivities' initial values are.
+    let start = |p: &Pendulum| {
+        let q = VecQ::<Pendulum>::new(0.7 * 0.9f64.sin(), -0.7 * 0.9f64.cos());
+        consistent_state(p, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
+            .expect("a consistent start")
+    };
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    check_against_simulations(
+        &pendulum,
+        &start,
+        &["m", "g", "l"],
+        &["x", "y", "vx", "p(y)"],
+        2.0,
+        (2e-6, 1e-2),
+    );
+}
+
+/// The rod's multiplier is `λ = m (g y − |v|²) / (2 l²)` on the constraint (from its second
+/// derivative), so `∂λ/∂g = m (y + g ∂y/∂g − 2 v·∂v/∂g) / (2 l²)` from the position and
+/// velocity sensitivities, which the test above checks against whole simulations. Central
+/// differences of the multiplier itself are no reference: between steps its dense output is
+/// accurate to about 1e-7, which a difference step turns into 1e-5.
+#[test]
+fn the_multipliers_sensitivity_follows_from_the_hidden_constraint() {
+    let p = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    let q = VecQ::<Pendulum>::new(0.7 * 0.9f64.sin(), -0.7 * 0.9f64.cos());
+    let start = consistent_state(&p, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
+        .expect("a consistent start");
+    let wrt = Sensitivities::new(&p).parameters(&["g", "l"]).expect("parameters");
+    let mut radau = Radau::new(&p, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let sol = radau.solve_with_sensitivities(0.0, &start, 2.0, &Sampling::Steps).expect("solves");
+    let column = |name: &str| sol.column(name).expect("a column");
+    let (y, vx, vy) = (column("y"), column("vx"), column("vy"));
+    // The explicit part of each derivative: ∂λ/∂g = m y / (2 l²), ∂λ/∂l = −2λ / l.
+    let by_g = |i: usize| p.m * y[i] / (2.0 * p.l * p.l);
+    let by_l = |i: usize| -p.m * (p.g * y[i] - vx[i] * vx[i] - vy[i] * vy[i]) / (p.l * p.l * p.l);
+    let explicit: [(&str, &dyn Fn(usize) -> f64); 2] = [("g", &by_g), ("l", &by_l)];
+    for (wrt, explicit) in explicit {
+        let d = |name: &str| sol.sensitivity(name, wrt).expect("recorded");
+        let (dy, dvx, dvy, dlambda) = (d("y"), d("vx"), d("vy"), d("lambda(rod)"));
+        let scale = dlambda.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for i in 0..sol.len() {
+            let want = explicit(i)
+                + p.m * (p.g * dy[i] - 2.0 * (vx[i] * dvx[i] + vy[i] * dvy[i])) / (2.0 * p.l * p.l);
+            // Radau's multipliers are of order 3 (index 2), the positions and velocities of order
+            // 5: the multiplier itself meets its formula to about 1e-7 relative here.
+            assert!(
+                (dlambda[i] - want).abs() <= 1e-5 * scale,
+                "∂λ/∂{wrt} at t = {}: {} against {want}",
+                sol.t()[i],
+                dlambda[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn nonholonomic_rolling_disk_sensitivities_match_simulations() {
+    // Rolling along x at the nominal radius 0.3; other radii make the guess consistent.
+    let start = |d: &RollingDisk| {
+        let mut v = VecQ::<RollingDisk>::zeros();
+        v[2] = 2.0;
+        v[3] = 0.7;
+        v[0] = 0.3 * v[2];
+        consistent_state(d, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+            .expect("consistent")
+    };
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    check_against_simulations(
+        &disk,
+        &start,
+        &["r", "m"],
+        &["x", "y", "v_x", "lambda(roll_x)"],
+        3.0,
+        (2e-6, 1e-2),
+    );
+}
+
+#[test]
+fn degenerate_circuit_sensitivities_match_simulations() {
+    let start = |c: &LcCircuit| {
+        consistent_state(
+            c,
+            0.0,
+            &VecQ::<LcCircuit>::new(0.0, 0.5),
+            &VecQ::<LcCircuit>::zeros(),
+            Consistency::default(),
+        )
+        .expect("consistent")
+    };
+    let circuit = LcCircuit { ind: 1.5, cap: 0.4 };
+    check_against_simulations(
+        &circuit,
+        &start,
+        &["ind", "cap"],
+        &["q_c", "i_l", "lambda(kcl)"],
+        4.0,
+        (2e-6, 1e-2),
+    );
+}
+
+#[test]
+fn interconnected_sensitivities_match_simulations() {
+    check_against_simulations(
+        &paper_chain(),
+        &paper_chain_start,
+        &["left.m1", "left.k2", "right.k3"],
+        &["left.x1", "right.x3", "lambda(connect0)"],
+        3.0,
+        (2e-6, 1e-2),
+    );
+    let coupled =
+        CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
+    let start = |c: &CoupledByOneForm| {
+        let mut q = VecQ::<CoupledByOneForm>::zeros();
+        q[0] = 0.3;
+        consistent_state(c, 0.0, &q, &VecQ::<CoupledByOneForm>::zeros(), Consistency::default())
+            .expect("consistent")
+    };
+    check_against_simulations(
+        &coupled,
+        &start,
+        &["c", "wheel.j", "cart.k"],
+        &["wheel.theta", "cart.x", "lambda(tie)"],
+        2.0,
+        (2e-6, 1e-2),
+    );
+}
+
+#[test]
+fn sensitivities_are_refused_where_they_cannot_be_honest() {
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    let err = Sensitivities::new(&pendulum).parameter("mass").err();
+    assert!(
+        matches!(&err, Some(SimError::InvalidOption { reason, .. }) if reason.contains("[m, g, l]")),
+        "{err:?}"
+    );
+    let err = Sensitivities::new(&pendulum).parameters(&["m", "m"]).err();
+    assert!(
+        matches!(&err, Some(SimError::InvalidOption { reason, .. }) if reason.contains("twice")),
+        "{err:?}"
+    );
+    let none = Sensitivities::new(&pendulum);
+    assert!(Radau::new(&pendulum, tight()).expect("valid").with_sensitivities(&none).is_err());
+    let projected = RadauOptions { projection: true, ..tight() };
+    let wrt = Sensitivities::new(&pendulum).parameter("l").expect("a parameter");
+    assert!(Radau::new(&pendulum, projected).expect("valid").with_sensitivities(&wrt).is_err());
+    let mut plain = Radau::new(&pendulum, tight()).expect("valid");
+    let err = plain.solve_with_sensitivities(0.0, &horizontal_start(&pendulum), 1.0, &Sampling::Steps).err();
+    assert!(matches!(err, Some(SimError::InvalidOption { what: "sensitivities", .. })), "{err:?}");
+}
