@@ -8,6 +8,7 @@ mod blocks;
 mod contacts;
 mod counters;
 mod events;
+mod fitting;
 mod fuzz;
 mod hand_derivations;
 mod hygiene;

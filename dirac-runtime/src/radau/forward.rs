@@ -48,6 +48,8 @@ where
     /// `∂f/∂θ` at the step's start, for the error estimate.
     g0: VecY<M>,
     dense: Dense<M>,
+    /// The contraction rate the column's iteration showed last (none yet: infinite).
+    theta: f64,
 }
 
 /// The forward sensitivities of a Radau integration and their work space.
@@ -103,6 +105,16 @@ where
     M::Algebra::cq_mul(&jac.a, 1.0, xv, oc);
 }
 
+/// How the sensitivities' iteration runs: the state's Newton tolerance `fnewt`, the most
+/// iterations, the norm of the increments, and the contraction rate `theta` the state's
+/// iteration showed last.
+pub(crate) struct Iteration {
+    pub fnewt: f64,
+    pub max_iterations: usize,
+    pub norm: ErrorNorm,
+    pub theta: f64,
+}
+
 /// The stage and state the sensitivities of a step are solved at.
 pub(crate) struct At<'a, M: LagrangeDirac>
 where
@@ -131,6 +143,7 @@ where
                 g: three(sizes),
                 g0: sizes.zeros_y::<M>(),
                 dense: Dense::new(sizes),
+                theta: f64::INFINITY,
             })
             .collect();
         Forward {
@@ -233,19 +246,16 @@ where
         }
     }
 
-    /// Solves every sensitivity's stage system with the factored `solver`; the iterations'
-    /// increments are measured in `weights_of(s)` against `fnewt`. Returns the largest
-    /// weighted error estimate of the sensitivities (zero unless they are error-controlled),
-    /// or `None` if an iteration does not converge.
-    #[allow(clippy::too_many_arguments)]
+    /// Solves every sensitivity's stage system with the factored `solver`, the iteration's
+    /// increments measured in `weights_of(s)`. Returns the largest weighted error estimate of
+    /// the sensitivities (zero unless they are error-controlled), or `None` if an iteration
+    /// does not converge.
     pub fn solve<S: NewtonSolver<M, M::Algebra>>(
         &mut self,
         solver: &mut S,
         eig: &Eigen,
         h: f64,
-        fnewt: f64,
-        max_iterations: usize,
-        error_norm: ErrorNorm,
+        iteration: &Iteration,
         weights_of: &dyn Fn(&VecY<M>, &mut VecY<M>),
     ) -> Option<f64> {
         let l = self.layout;
@@ -253,13 +263,26 @@ where
         let mut worst: f64 = 0.0;
         for c in &mut self.columns {
             weights_of(&c.s, &mut self.weights);
-            for k in 0..3 {
-                c.z[k].fill(0.0);
-                self.w[k].fill(0.0);
+            // Start from the last step's polynomial extrapolated, as the state's iteration does.
+            if c.dense.h > 0.0 {
+                c.dense.extrapolate(h, &mut c.z);
+            } else {
+                c.z.iter_mut().for_each(|z| z.fill(0.0));
+            }
+            for i in 0..l.len {
+                let (z1, z2, z3) = (c.z[0][i], c.z[1][i], c.z[2][i]);
+                for (wk, tk) in self.w.iter_mut().zip(&TI) {
+                    wk[i] = tk[0] * z1 + tk[1] * z2 + tk[2] * z3;
+                }
             }
             let mut converged = false;
+            // The iteration is linear: it contracts about as it did in the last step (as the
+            // state's did, at first), until it shows its rate in this one; relaxed as RADAU5
+            // relaxes the state's rate from step to step.
+            let last = if c.theta.is_finite() { c.theta } else { iteration.theta };
+            let mut theta = last.clamp(f64::EPSILON, 0.9).powf(0.8);
             let mut previous = f64::INFINITY;
-            for _ in 0..max_iterations {
+            for newt in 0..iteration.max_iterations {
                 // f_k = J_k (s_n + Zs_k) + g_k.
                 for k in 0..3 {
                     self.tmp.copy_from(&c.s);
@@ -286,7 +309,7 @@ where
                 self.iterations += 1;
                 let dyno = {
                     let sum: f64 =
-                        self.r.iter().map(|rk| norm::<M>(rk, &self.weights, error_norm).powi(2)).sum();
+                        self.r.iter().map(|rk| norm::<M>(rk, &self.weights, iteration.norm).powi(2)).sum();
                     (sum / 3.0).sqrt()
                 };
                 for (wk, rk) in self.w.iter_mut().zip(&self.r) {
@@ -301,15 +324,17 @@ where
                 if !dyno.is_finite() {
                     return None;
                 }
-                let theta = dyno / previous;
-                if theta >= 0.99 && previous.is_finite() {
-                    return None;
+                if newt > 0 {
+                    theta = dyno / previous;
+                    if theta >= 0.99 {
+                        return None;
+                    }
+                    c.theta = theta;
                 }
-                // The linear iteration contracts by θ: what remains is about θ/(1 − θ) times
-                // the last increment. Iterate to well below the state's Newton tolerance.
-                let remaining = if previous.is_finite() { dyno * theta / (1.0 - theta) } else { dyno };
+                // What remains is about θ/(1 − θ) times the last increment: iterate to the
+                // state's Newton tolerance, as the state's own iteration does.
                 previous = dyno.max(f64::MIN_POSITIVE);
-                if remaining <= 1e-2 * fnewt || dyno <= 1e-3 * fnewt {
+                if dyno * theta / (1.0 - theta) <= iteration.fnewt {
                     converged = true;
                     break;
                 }
@@ -326,7 +351,7 @@ where
                     &mut self.tmp,
                     h,
                     &self.weights,
-                    error_norm,
+                    iteration.norm,
                 ));
             }
         }

@@ -26,7 +26,7 @@ use self::controller::Controller;
 use self::dense::Dense;
 use self::drive::Feedback;
 use self::estimate::Estimator;
-use self::forward::{At, Forward};
+use self::forward::{At, Forward, Iteration};
 use self::options::Tolerances;
 pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
 use self::residual::Residual;
@@ -332,15 +332,13 @@ where
         let h = *h;
         let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
         let before = forward.iterations;
-        let result = forward.solve(
-            solver,
-            eig,
-            h,
-            tolerances.fnewt,
-            4 * options.max_newton_iterations,
-            options.error_norm,
-            &weights,
-        );
+        let iteration = Iteration {
+            fnewt: tolerances.fnewt,
+            max_iterations: 4 * options.max_newton_iterations,
+            norm: options.error_norm,
+            theta: stages.theta,
+        };
+        let result = forward.solve(solver, eig, h, &iteration, &weights);
         stats.sensitivity_iterations += forward.iterations - before;
         result
     }

@@ -1,0 +1,99 @@
+//! What forward sensitivities cost, in one process: a solve with `N_θ` sensitivities against
+//! one plain solve of the same model, so that the ratio is free of the machine's speed. The
+//! alternatives it is set against are `1 + N_θ` plain solves (what forward differences of
+//! whole simulations cost: a gradient from one-sided differences) and `1 + 2 N_θ` (central
+//! differences, which the accuracy of a fit usually needs).
+//!
+//! - the five-mass chain `MassSpringChain5` (ten parameters) over 20 s with `N_θ` = 1, 2, 5, 10;
+//! - the interconnected chain of the paper (six parameters) over 20 s with all six;
+//! - the pendulum in Cartesian coordinates (holonomic) over 10 s with its three parameters;
+//! - the rolling disk (nonholonomic) over 10 s with its four parameters.
+//!
+//! Every solve is at `rtol = atol = 1e-8`, recording the state every 0.1 s, timed as the median
+//! of 21 solves. Run: `cargo bench --bench sensitivities`.
+
+#![allow(missing_docs)]
+
+#[path = "../tests/zoo/mod.rs"]
+mod zoo;
+
+#[path = "support/median.rs"]
+mod median;
+
+use std::hint::black_box;
+
+use dirac::Storage;
+use dirac::nalgebra::DefaultAllocator;
+use dirac::prelude::*;
+use median::median_seconds;
+use zoo::*;
+
+fn options() -> RadauOptions {
+    RadauOptions::tolerances(1e-8, 1e-8)
+}
+
+/// One row: the median times of a plain solve and of one with the first `count` parameters'
+/// sensitivities, and the ratio.
+fn row<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, t_end: f64, count: usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sampling = Sampling::Every(0.1);
+    let (plain, steps) = median_seconds(|| {
+        let solution = Radau::new(model, options()).expect("valid").solve(0.0, start, t_end, &sampling);
+        black_box(solution.expect("solves")).stats.steps
+    });
+    let names = model.parameter_names();
+    let chosen: Vec<&str> = names.iter().take(count).map(String::as_str).collect();
+    let wrt = Sensitivities::new(model).parameters(&chosen).expect("parameters");
+    let (with, steps_with) = median_seconds(|| {
+        let mut radau = Radau::new(model, options()).expect("valid").with_sensitivities(&wrt).expect("valid");
+        let solution = radau.solve_with_sensitivities(0.0, start, t_end, &sampling);
+        black_box(solution.expect("solves")).stats.steps
+    });
+    assert_eq!(steps, steps_with, "the sensitivities leave the steps alone");
+    let ratio = with / plain;
+    println!(
+        "| {name} | {count} | {steps} | {:.3} ms | {:.3} ms | {ratio:.2} | {} | {} | {:.2} |",
+        plain * 1e3,
+        with * 1e3,
+        1 + count,
+        1 + 2 * count,
+        ratio / (1 + count) as f64,
+    );
+}
+
+fn main() {
+    println!(
+        "| model | N_θ | steps | plain solve | with sensitivities | ratio | forward differences | central differences | ratio / (1 + N_θ) |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let chain = MassSpringChain5 {
+        m1: 1.0,
+        m2: 2.0,
+        m3: 1.5,
+        m4: 1.0,
+        m5: 0.5,
+        k1: 4.0,
+        k2: 5.0,
+        k3: 6.0,
+        k4: 3.0,
+        k5: 2.0,
+    };
+    let mut q = VecQ::<MassSpringChain5>::zeros();
+    q[0] = 0.1;
+    let start = consistent_state(&chain, 0.0, &q, &VecQ::<MassSpringChain5>::zeros(), Consistency::default())
+        .expect("consistent");
+    for count in [1, 2, 5, 10] {
+        row("five-mass chain", &chain, &start, 20.0, count);
+    }
+    let paper = paper_chain();
+    row("paper chain (interconnected)", &paper, &paper_chain_start(&paper), 20.0, 6);
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    row("pendulum (holonomic)", &pendulum, &horizontal_start(&pendulum), 10.0, 3);
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    let v = VecQ::<RollingDisk>::new(0.6, 0.0, 2.0, 1.0);
+    let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    row("rolling disk (nonholonomic)", &disk, &start, 10.0, 4);
+}
