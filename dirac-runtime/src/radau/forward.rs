@@ -277,10 +277,10 @@ where
             }
             let mut converged = false;
             // The iteration is linear: it contracts about as it did in the last step (as the
-            // state's did, at first), until it shows its rate in this one; relaxed as RADAU5
-            // relaxes the state's rate from step to step.
+            // state's did, at first), until it shows its rate in this one; relaxed to its square
+            // root, more cautious than RADAU5's relaxation of the state's rate (a power 0.8).
             let last = if c.theta.is_finite() { c.theta } else { iteration.theta };
-            let mut theta = last.clamp(f64::EPSILON, 0.9).powf(0.8);
+            let mut theta = last.clamp(f64::EPSILON, 0.81).sqrt();
             let mut previous = f64::INFINITY;
             for newt in 0..iteration.max_iterations {
                 // f_k = J_k (s_n + Zs_k) + g_k.
