@@ -15,6 +15,7 @@ use nalgebra::DefaultAllocator;
 use super::dense::Dense;
 use super::options::{ErrorNorm, norm};
 use super::residual::Residual;
+use super::stages::{transform, transformed_residuals};
 use super::tableau::{C1, C2, C3, DD1, DD2, DD3, Eigen, T, TI};
 use crate::algebra::Algebra;
 use crate::blocks::{JacobianBlocks, ResidualBlocks};
@@ -70,6 +71,7 @@ where
     state: State<M>,
     blocks: ResidualBlocks<M>,
     layout: Layout,
+    sizes: Sizes,
     /// Whether the sensitivities' errors count in the step-size control.
     pub error_control: bool,
     /// Whether the sensitivities' multipliers at the step's start are known: not at the start
@@ -158,6 +160,7 @@ where
             state: State::with_sizes(sizes),
             blocks: ResidualBlocks::with_sizes(&sizes),
             layout: Layout::new(sizes),
+            sizes,
             error_control,
             multipliers_known: false,
             iterations: 0,
@@ -259,7 +262,6 @@ where
         weights_of: &dyn Fn(&VecY<M>, &mut VecY<M>),
     ) -> Option<f64> {
         let l = self.layout;
-        let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
         let mut worst: f64 = 0.0;
         for c in &mut self.columns {
             weights_of(&c.s, &mut self.weights);
@@ -269,12 +271,7 @@ where
             } else {
                 c.z.iter_mut().for_each(|z| z.fill(0.0));
             }
-            for i in 0..l.len {
-                let (z1, z2, z3) = (c.z[0][i], c.z[1][i], c.z[2][i]);
-                for (wk, tk) in self.w.iter_mut().zip(&TI) {
-                    wk[i] = tk[0] * z1 + tk[1] * z2 + tk[2] * z3;
-                }
-            }
+            transform(&TI, &c.z, &mut self.w);
             let mut converged = false;
             // The iteration is linear: it contracts about as it did in the last step (as the
             // state's did, at first), until it shows its rate in this one; relaxed to its square
@@ -292,17 +289,7 @@ where
                         self.f[k] += &c.g[k];
                     }
                 }
-                for (k, rk) in self.r.iter_mut().enumerate() {
-                    for i in 0..rk.len() {
-                        rk[i] = TI[k][0] * self.f[0][i] + TI[k][1] * self.f[1][i] + TI[k][2] * self.f[2][i];
-                    }
-                }
-                for i in (l.q..l.v).chain(l.p..l.lambda) {
-                    let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
-                    self.r[0][i] -= gamma * w1;
-                    self.r[1][i] -= alpha * w2 - beta * w3;
-                    self.r[2][i] -= beta * w2 + alpha * w3;
-                }
+                transformed_residuals::<M>(self.sizes, eig, h, &self.f, &self.w, &mut self.r);
                 let [r1, r2, r3] = &mut self.r;
                 solver.solve(r1);
                 solver.solve_complex(r2, r3);
@@ -315,12 +302,7 @@ where
                 for (wk, rk) in self.w.iter_mut().zip(&self.r) {
                     *wk += rk;
                 }
-                for i in 0..l.len {
-                    let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
-                    for (zk, tk) in c.z.iter_mut().zip(&T) {
-                        zk[i] = tk[0] * w1 + tk[1] * w2 + tk[2] * w3;
-                    }
-                }
+                transform(&T, &self.w, &mut c.z);
                 if !dyno.is_finite() {
                     return None;
                 }

@@ -185,36 +185,57 @@ where
 
     /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w`, with `M` the identity on the differential rows.
     fn transformed_residuals(&mut self, eig: &Eigen, h: f64) {
-        let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
-        for (k, rk) in self.r.iter_mut().enumerate() {
-            for i in 0..rk.len() {
-                rk[i] = TI[k][0] * self.f[0][i] + TI[k][1] * self.f[1][i] + TI[k][2] * self.f[2][i];
-            }
-        }
-        let Layout { q, v, p, lambda, .. } = Layout::new(self.sizes.typed::<M>());
-        for i in (q..v).chain(p..lambda) {
-            let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
-            self.r[0][i] -= gamma * w1;
-            self.r[1][i] -= alpha * w2 - beta * w3;
-            self.r[2][i] -= beta * w2 + alpha * w3;
-        }
+        transformed_residuals::<M>(self.sizes, eig, h, &self.f, &self.w, &mut self.r);
     }
 
     fn transform_to_z(&mut self) {
-        for i in 0..self.z[0].len() {
-            let (w1, w2, w3) = (self.w[0][i], self.w[1][i], self.w[2][i]);
-            for (zk, tk) in self.z.iter_mut().zip(&T) {
-                zk[i] = tk[0] * w1 + tk[1] * w2 + tk[2] * w3;
-            }
-        }
+        transform(&T, &self.w, &mut self.z);
     }
 
     fn transform_to_w(&mut self) {
-        for i in 0..self.z[0].len() {
-            let (z1, z2, z3) = (self.z[0][i], self.z[1][i], self.z[2][i]);
-            for (wk, tk) in self.w.iter_mut().zip(&TI) {
-                wk[i] = tk[0] * z1 + tk[1] * z2 + tk[2] * z3;
-            }
+        transform(&TI, &self.z, &mut self.w);
+    }
+}
+
+/// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w_k`: the residuals of the stage system in the transformed
+/// variables `w`, for stage right-hand sides `f` (Hairer & Wanner, §IV.8), with `M` the
+/// identity on the differential rows of a model of these sizes.
+// Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
+#[allow(clippy::needless_range_loop)]
+pub(crate) fn transformed_residuals<M: LagrangeDirac>(
+    sizes: Sizes,
+    eig: &Eigen,
+    h: f64,
+    f: &[VecY<M>; 3],
+    w: &[VecY<M>; 3],
+    r: &mut [VecY<M>; 3],
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
+    for (k, rk) in r.iter_mut().enumerate() {
+        for i in 0..rk.len() {
+            rk[i] = TI[k][0] * f[0][i] + TI[k][1] * f[1][i] + TI[k][2] * f[2][i];
+        }
+    }
+    let Layout { q, v, p, lambda, .. } = Layout::new(sizes.typed::<M>());
+    for i in (q..v).chain(p..lambda) {
+        let (w1, w2, w3) = (w[0][i], w[1][i], w[2][i]);
+        r[0][i] -= gamma * w1;
+        r[1][i] -= alpha * w2 - beta * w3;
+        r[2][i] -= beta * w2 + alpha * w3;
+    }
+}
+
+/// `to_k = Σ_j matrix[k][j] from_j` component by component: `z = T w` or `w = T⁻¹ z`.
+pub(crate) fn transform<M: LagrangeDirac>(matrix: &[[f64; 3]; 3], from: &[VecY<M>; 3], to: &mut [VecY<M>; 3])
+where
+    DefaultAllocator: Storage<M>,
+{
+    for i in 0..from[0].len() {
+        let (x1, x2, x3) = (from[0][i], from[1][i], from[2][i]);
+        for (tk, mk) in to.iter_mut().zip(matrix) {
+            tk[i] = mk[0] * x1 + mk[1] * x2 + mk[2] * x3;
         }
     }
 }
