@@ -63,6 +63,28 @@ where
     );
 }
 
+/// The paper chain's `x1(20)` and its sensitivities to its six parameters, to set beside the
+/// peer's (`benches/peers/idas_sens.c`).
+fn final_sensitivities(chain: &Chain, start: &State<Chain>) {
+    let wrt = Sensitivities::all_parameters(chain);
+    let mut radau = Radau::new(chain, options()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution = radau.solve_with_sensitivities(0.0, start, 20.0, &Sampling::Every(0.1)).expect("solves");
+    let x1 = Chain::left(Primitive1::X1);
+    let last = solution.len() - 1;
+    let d: Vec<String> = wrt
+        .names()
+        .iter()
+        .map(|name| format!("{:.8}", solution.dq(x1, name).expect("recorded")[last]))
+        .collect();
+    println!();
+    println!(
+        "dirac x1(20) = {:.10}, d x1(20)/d({}) = {}",
+        solution.q(x1)[last],
+        wrt.names().join(", "),
+        d.join(" ")
+    );
+}
+
 fn main() {
     println!(
         "| model | N_θ | steps | plain solve | with sensitivities | ratio | forward differences | central differences | ratio / (1 + N_θ) |"
@@ -89,6 +111,7 @@ fn main() {
     }
     let paper = paper_chain();
     row("paper chain (interconnected)", &paper, &paper_chain_start(&paper), 20.0, 6);
+    final_sensitivities(&paper, &paper_chain_start(&paper));
     let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
     row("pendulum (holonomic)", &pendulum, &horizontal_start(&pendulum), 10.0, 3);
     let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
