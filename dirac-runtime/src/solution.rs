@@ -424,11 +424,19 @@ where
         self.state(self.len().checked_sub(1)?)
     }
 
-    /// Writes the solution as CSV: a header of names, then one row per sample.
+    /// Writes the solution as CSV: a header of names, then one row per sample. Sensitivities,
+    /// if the solution has them, follow the other columns as `d(x)/d(k)`: the state quantity
+    /// `x` with respect to `k`.
     pub fn write_csv(&self, mut out: impl Write) -> io::Result<()> {
-        writeln!(out, "{}", self.names.join(","))?;
+        let len = self.layout.state.len;
+        let mut names = self.names.clone();
+        for wrt in &self.sensitivity_names {
+            names.extend(self.names[1..=len].iter().map(|quantity| format!("d({quantity})/d({wrt})")));
+        }
+        writeln!(out, "{}", names.join(","))?;
         for i in 0..self.len() {
-            let row: Vec<String> = self.columns.iter().map(|c| format!("{:e}", c[i])).collect();
+            let row: Vec<String> =
+                self.columns.iter().chain(&self.sensitivities).map(|c| format!("{:e}", c[i])).collect();
             writeln!(out, "{}", row.join(","))?;
         }
         Ok(())

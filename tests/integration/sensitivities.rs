@@ -243,6 +243,16 @@ fn harmonic_oscillator_sensitivities_match_the_closed_form() {
             );
         }
     }
+    // The CSV has every sensitivity after the state and derived quantities, by name.
+    let mut csv = Vec::new();
+    solution.write_csv(&mut csv).expect("writes");
+    let csv = String::from_utf8(csv).expect("text");
+    let header: Vec<&str> = csv.lines().next().expect("a header").split(',').collect();
+    let column = header.iter().position(|n| *n == "d(x)/d(k)").expect("a sensitivity column");
+    let row: Vec<f64> =
+        csv.lines().nth(3).expect("a row").split(',').map(|x| x.parse().expect("a number")).collect();
+    assert_eq!(row.len(), header.len());
+    assert_eq!(row[column], solution.dq(DrivenOscillator::X, "k").expect("recorded")[2]);
     // The momentum's: p = m v, so ∂p/∂x0 = m ∂v/∂x0 = −m ω sin ωt.
     let dp = solution.dp(DrivenOscillator::X, "x(t0)").expect("recorded");
     for (i, &t) in times.iter().enumerate() {
@@ -267,9 +277,15 @@ fn check_against_simulations<M: LagrangeDirac + Clone>(
 {
     let times: Vec<f64> = (0..=8).map(|i| t_end * i as f64 / 8.0).collect();
     let sampling = Sampling::Times(times.clone());
-    let wrt = Sensitivities::new(model).parameters(parameters).expect("parameters of the model");
-    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
-    let solution = radau.solve_with_sensitivities(0.0, &start(model), t_end, &sampling).expect("solves");
+    // Once with the steps of the plain solve, once with the sensitivities' errors controlled too.
+    let solutions = [false, true].map(|error_control| {
+        let wrt = Sensitivities::new(model)
+            .parameters(parameters)
+            .expect("parameters of the model")
+            .error_control(error_control);
+        let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+        radau.solve_with_sensitivities(0.0, &start(model), t_end, &sampling).expect("solves")
+    });
     for name in parameters {
         let k = model.parameter_index(name).expect("a parameter");
         let theta = model.parameter_value(k);
@@ -281,7 +297,7 @@ fn check_against_simulations<M: LagrangeDirac + Clone>(
             Radau::new(&moved, tight()).expect("valid").solve(0.0, &start, t_end, &sampling).expect("solves")
         };
         let runs = [run(theta + step), run(theta - step), run(theta + 2.0 * step), run(theta - 2.0 * step)];
-        for quantity in quantities {
+        for (quantity, solution) in quantities.iter().flat_map(|q| solutions.iter().map(move |s| (q, s))) {
             let s = solution.sensitivity(quantity, name).expect("recorded");
             let [a, b, c, d] = runs.each_ref().map(|r| r.column(quantity).expect("a column"));
             let scale = s.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(floor);
