@@ -24,6 +24,8 @@ where
     t_end: f64,
     /// The time of the last sample recorded.
     last: f64,
+    /// The number of samples the sampling asks for (0 for every step: not known).
+    expected: f64,
     buffer: State<M>,
     /// The events located, and the names of the event functions.
     events: Vec<Event>,
@@ -101,12 +103,31 @@ where
             t0,
             t_end,
             last: f64::NAN,
+            expected,
             buffer,
             events: Vec::new(),
             event_names: Vec::new(),
             impacts: Vec::new(),
             contact_names: Vec::new(),
         })
+    }
+
+    /// Checks that `series` more series (sensitivities) at the same samples stay within what a
+    /// solution may hold.
+    pub fn check_extra_series(&self, series: usize) -> Result<(), SimError> {
+        let values = self.expected * (self.names.len() + series) as f64;
+        if values > MAX_VALUES {
+            return Err(SimError::InvalidSampling {
+                reason: format!(
+                    "{:?} asks for {:e} samples of {} series with the sensitivities, more than the {MAX_VALUES:e} \
+                     values a solution holds: sample less often, or at chosen times",
+                    self.sampling,
+                    self.expected,
+                    self.names.len() + series
+                ),
+            });
+        }
+        Ok(())
     }
 
     /// The number of samples recorded.

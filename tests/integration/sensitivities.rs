@@ -200,6 +200,15 @@ fn parameters_are_named_and_set_by_index() {
     assert_eq!(gear.parameter_index("cart.nope"), None);
 }
 
+/// A spring whose stiffness enters as `√k`: at `k = 0` its derivative is infinite.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k.sqrt() * x * x)]
+struct RootSpring {
+    m: f64,
+    k: f64,
+}
+
 /// The runs the sensitivity tests compare: Radau at a tight tolerance.
 fn tight() -> RadauOptions {
     RadauOptions { rtol: 1e-11, atol: 1e-13, ..RadauOptions::default() }
@@ -465,6 +474,38 @@ fn sensitivities_are_refused_where_they_cannot_be_honest() {
     let projected = RadauOptions { projection: true, ..tight() };
     let wrt = Sensitivities::new(&pendulum).parameter("l").expect("a parameter");
     assert!(Radau::new(&pendulum, projected).expect("valid").with_sensitivities(&wrt).is_err());
+    // A NaN parameter is refused at the start, naming it.
+    let broken = Pendulum { l: f64::NAN, ..pendulum.clone() };
+    let mut radau = Radau::new(&broken, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let err = radau.solve_with_sensitivities(0.0, &horizontal_start(&pendulum), 1.0, &Sampling::Steps).err();
+    assert!(matches!(&err, Some(SimError::InvalidParameter { name, .. }) if name == "l"), "{err:?}");
+    // A parameter whose derivative is infinite where the model is evaluated: a typed NonFinite
+    // naming the sensitivity, not a NaN series returned as success.
+    let root = RootSpring { m: 1.0, k: 0.0 };
+    let mut start = State::<RootSpring>::zeros();
+    start.set_q(RootSpring::X, 0.5);
+    let by_k = Sensitivities::new(&root).parameter("k").expect("a parameter");
+    let mut radau = Radau::new(&root, tight()).expect("valid").with_sensitivities(&by_k).expect("valid");
+    let err = radau.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps).err();
+    assert!(
+        matches!(&err, Some(SimError::NonFinite { component, .. }) if component.contains("to k")),
+        "{err:?}"
+    );
+    // Sampling that would hold too many values with the sensitivities is refused before it runs.
+    let every = Sensitivities::all_parameters(&pendulum);
+    let mut radau = Radau::new(&pendulum, tight()).expect("valid").with_sensitivities(&every).expect("valid");
+    let err =
+        radau.solve_with_sensitivities(0.0, &horizontal_start(&pendulum), 1e6, &Sampling::Every(1e-2)).err();
+    assert!(matches!(err, Some(SimError::InvalidSampling { .. })), "{err:?}");
+    // Unknown names and a gradient of the wrong length read as None.
+    let mut radau = Radau::new(&pendulum, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution = radau
+        .solve_with_sensitivities(0.0, &horizontal_start(&pendulum), 0.5, &Sampling::Steps)
+        .expect("solves");
+    assert!(solution.sensitivity("x", "mass").is_none());
+    assert!(solution.sensitivity("nope", "l").is_none());
+    assert!(solution.gradient("x", &[1.0]).is_none());
+    assert!(solution.sensitivity("x", "l").is_some_and(|s| s.iter().all(|x| x.is_finite())));
     let mut plain = Radau::new(&pendulum, tight()).expect("valid");
     let err = plain.solve_with_sensitivities(0.0, &horizontal_start(&pendulum), 1.0, &Sampling::Steps).err();
     assert!(matches!(err, Some(SimError::InvalidOption { what: "sensitivities", .. })), "{err:?}");

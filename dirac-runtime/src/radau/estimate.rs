@@ -3,7 +3,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use super::options::norm;
+use super::options::{ErrorNorm, norm};
 use super::stages::Step;
 use super::tableau::{DD1, DD2, DD3};
 use crate::dims::{Sizes, Storage, VecY};
@@ -23,7 +23,7 @@ where
 }
 
 /// `x ← M x` for `M = diag(I, 0, I, 0)`: zeroes the algebraic rows.
-fn zero_algebraic<M: LagrangeDirac>(l: &Layout, x: &mut VecY<M>)
+pub(crate) fn zero_algebraic<M: LagrangeDirac>(l: &Layout, x: &mut VecY<M>)
 where
     DefaultAllocator: Storage<M>,
 {
@@ -66,7 +66,7 @@ where
         zero_algebraic::<M>(&layout, &mut self.e);
         self.e += &self.f2;
         step.solver.solve(&mut self.e);
-        let mut err = norm::<M>(&self.e, step.weights, step.error_norm).max(1e-10);
+        let mut err = scaled_error::<M>(&self.e, step.weights, step.error_norm);
         if err >= 1.0 && refine {
             self.tmp.copy_from(step.y);
             self.tmp += &self.e;
@@ -79,8 +79,18 @@ where
             }
             self.e += &self.f2;
             step.solver.solve(&mut self.e);
-            err = norm::<M>(&self.e, step.weights, step.error_norm).max(1e-10);
+            err = scaled_error::<M>(&self.e, step.weights, step.error_norm);
         }
-        if err.is_finite() { err } else { 1e10 }
+        err
     }
+}
+
+/// The weighted norm of an error estimate `e` for the step-size control: at least 1e-10, and
+/// 1e10 (reject) if it is not finite.
+pub(crate) fn scaled_error<M: LagrangeDirac>(e: &VecY<M>, weights: &VecY<M>, kind: ErrorNorm) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    let err = norm::<M>(e, weights, kind).max(1e-10);
+    if err.is_finite() { err } else { 1e10 }
 }

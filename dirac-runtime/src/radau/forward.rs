@@ -13,26 +13,20 @@
 use nalgebra::DefaultAllocator;
 
 use super::dense::Dense;
+use super::estimate::{scaled_error, zero_algebraic};
 use super::options::{ErrorNorm, norm};
 use super::residual::Residual;
-use super::stages::{transform, transformed_residuals};
+use super::stages::{three, transform, transformed_residuals};
 use super::tableau::{C1, C2, C3, DD1, DD2, DD3, Eigen, T, TI};
 use crate::algebra::Algebra;
 use crate::blocks::{JacobianBlocks, ResidualBlocks};
-use crate::dims::{Sizes, Storage, VecY};
+use crate::dims::{Storage, VecY};
 use crate::held::Held;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
 use crate::sensitivity::Wrt;
 use crate::state::State;
-
-fn three<M: LagrangeDirac>(sizes: Sizes) -> [VecY<M>; 3]
-where
-    DefaultAllocator: Storage<M>,
-{
-    [sizes.zeros_y::<M>(), sizes.zeros_y::<M>(), sizes.zeros_y::<M>()]
-}
 
 /// One sensitivity: what it is with respect to, its value, its stages and its dense output.
 struct Column<M: LagrangeDirac>
@@ -71,7 +65,6 @@ where
     state: State<M>,
     blocks: ResidualBlocks<M>,
     layout: Layout,
-    sizes: Sizes,
     /// Whether the sensitivities' errors count in the step-size control.
     pub error_control: bool,
     /// Whether the sensitivities' multipliers at the step's start are known: not at the start
@@ -105,6 +98,15 @@ where
     let oc = &mut o[l.lambda..l.len];
     M::Algebra::cq_mul(&jac.dav_dq, 1.0, xq, oc);
     M::Algebra::cq_mul(&jac.a, 1.0, xv, oc);
+}
+
+/// Why the sensitivities of a step could not be solved.
+pub(crate) enum Failure {
+    /// Their linear iteration did not converge with this step size.
+    NotConverged,
+    /// The right-hand side of sensitivity `column` is not finite in state slot `slot` (a
+    /// parameter derivative or a Jacobian entry that is not, at a stage).
+    NonFinite { column: usize, slot: usize },
 }
 
 /// How the sensitivities' iteration runs: the state's Newton tolerance `fnewt`, the most
@@ -160,7 +162,6 @@ where
             state: State::with_sizes(sizes),
             blocks: ResidualBlocks::with_sizes(&sizes),
             layout: Layout::new(sizes),
-            sizes,
             error_control,
             multipliers_known: false,
             iterations: 0,
@@ -215,8 +216,12 @@ where
     }
 
     /// Evaluates the Jacobian and the parameter derivatives `∂f/∂θ` at the start of an
-    /// integration, for the first step's error estimate.
+    /// integration or a restart, for the next step's error estimate, if the sensitivities'
+    /// errors are controlled.
     pub fn begin(&mut self, model: &mut Held<'_, M>, residual: &mut Residual<'_, M>, t: f64, y: &VecY<M>) {
+        if !self.error_control {
+            return;
+        }
         residual.apply(model, t, y);
         self.state.read_y(y);
         let s = &self.state;
@@ -251,8 +256,7 @@ where
 
     /// Solves every sensitivity's stage system with the factored `solver`, the iteration's
     /// increments measured in `weights_of(s)`. Returns the largest weighted error estimate of
-    /// the sensitivities (zero unless they are error-controlled), or `None` if an iteration
-    /// does not converge.
+    /// the sensitivities (zero unless they are error-controlled), or why it failed.
     pub fn solve<S: NewtonSolver<M, M::Algebra>>(
         &mut self,
         solver: &mut S,
@@ -260,10 +264,10 @@ where
         h: f64,
         iteration: &Iteration,
         weights_of: &dyn Fn(&VecY<M>, &mut VecY<M>),
-    ) -> Option<f64> {
+    ) -> Result<f64, Failure> {
         let l = self.layout;
         let mut worst: f64 = 0.0;
-        for c in &mut self.columns {
+        for (column, c) in self.columns.iter_mut().enumerate() {
             weights_of(&c.s, &mut self.weights);
             // Start from the last step's polynomial extrapolated, as the state's iteration does.
             if c.dense.h > 0.0 {
@@ -288,8 +292,11 @@ where
                     if matches!(c.wrt, Wrt::Parameter(_)) {
                         self.f[k] += &c.g[k];
                     }
+                    if let Some(slot) = self.f[k].iter().position(|x| !x.is_finite()) {
+                        return Err(Failure::NonFinite { column, slot });
+                    }
                 }
-                transformed_residuals::<M>(self.sizes, eig, h, &self.f, &self.w, &mut self.r);
+                transformed_residuals::<M>(&l, eig, h, &self.f, &self.w, &mut self.r);
                 let [r1, r2, r3] = &mut self.r;
                 solver.solve(r1);
                 solver.solve_complex(r2, r3);
@@ -304,12 +311,12 @@ where
                 }
                 transform(&T, &self.w, &mut c.z);
                 if !dyno.is_finite() {
-                    return None;
+                    return Err(Failure::NotConverged);
                 }
                 if newt > 0 {
                     theta = dyno / previous;
                     if theta >= 0.99 {
-                        return None;
+                        return Err(Failure::NotConverged);
                     }
                     c.theta = theta;
                 }
@@ -322,7 +329,7 @@ where
                 }
             }
             if !converged {
-                return None;
+                return Err(Failure::NotConverged);
             }
             if self.error_control && self.multipliers_known {
                 worst = worst.max(estimate(
@@ -337,18 +344,23 @@ where
                 ));
             }
         }
-        Some(worst)
+        Ok(worst)
     }
 
-    /// Accepts the step of size `h`: each sensitivity moves to the step's end, and the last
-    /// stage's Jacobian and parameter derivatives become the next step's start.
+    /// Accepts the step of size `h`: each sensitivity moves to the step's end, and (for the
+    /// error estimate) the last stage's Jacobian and parameter derivatives become the next
+    /// step's start.
     pub fn accept(&mut self, h: f64) {
         for c in &mut self.columns {
             c.dense.update(&c.z, h);
             c.s += &c.z[2];
-            c.g0.copy_from(&c.g[2]);
+            if self.error_control {
+                c.g0.copy_from(&c.g[2]);
+            }
         }
-        self.jac0.copy_from(&self.jac[2]);
+        if self.error_control {
+            self.jac0.copy_from(&self.jac[2]);
+        }
         self.multipliers_known = true;
     }
 }
@@ -392,10 +404,7 @@ where
     for i in 0..l.len {
         e[i] += (DD1 * c.z[0][i] + DD2 * c.z[1][i] + DD3 * c.z[2][i]) / h;
     }
-    let x = e.as_mut_slice();
-    x[l.v..l.p].fill(0.0);
-    x[l.lambda..l.len].fill(0.0);
+    zero_algebraic::<M>(l, e);
     solver.solve(e);
-    let err = norm::<M>(e, weights, error_norm).max(1e-10);
-    if err.is_finite() { err } else { 1e10 }
+    scaled_error::<M>(e, weights, error_norm)
 }

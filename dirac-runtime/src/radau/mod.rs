@@ -26,7 +26,7 @@ use self::controller::Controller;
 use self::dense::Dense;
 use self::drive::Feedback;
 use self::estimate::Estimator;
-use self::forward::{At, Forward, Iteration};
+use self::forward::{At, Failure, Forward, Iteration};
 use self::options::Tolerances;
 pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
 use self::residual::Residual;
@@ -241,11 +241,24 @@ where
                     let mut err = self.estimate();
                     if err < 1.0 && self.forward.is_some() {
                         match self.solve_sensitivities() {
-                            Some(err_s) => err = err.max(err_s),
-                            None => {
-                                reason = "the sensitivities' iteration did not converge";
+                            Ok(err_s) => err = err.max(err_s),
+                            Err(Failure::NonFinite { column, slot }) => {
+                                let component = format!(
+                                    "the sensitivity of {} to {}",
+                                    describe_slot(self.model.get(), slot),
+                                    self.sensitivity_names[column]
+                                );
+                                return Err(SimError::NonFinite { t: self.t, component });
+                            }
+                            Err(Failure::NotConverged) => {
+                                reason = "the sensitivities' linear iteration did not converge";
                                 if self.h * 0.5 <= Self::min_step(self.t) {
-                                    return Err(self.newton_failure(reason));
+                                    let (t, h) = (self.t, self.h);
+                                    return Err(SimError::StepSizeTooSmall {
+                                        t,
+                                        h,
+                                        reason: reason.to_owned(),
+                                    });
                                 }
                                 self.reject(0.5);
                                 if !self.jac_current {
@@ -320,12 +333,14 @@ where
     }
 
     /// Solves the sensitivities' stage systems of the converged step; their largest error
-    /// estimate (zero unless error-controlled), or `None` if their iteration failed.
-    fn solve_sensitivities(&mut self) -> Option<f64> {
+    /// estimate (zero unless error-controlled), or why they could not be solved.
+    fn solve_sensitivities(&mut self) -> Result<f64, Failure> {
         let Radau {
             model, residual, solver, t, h, y, stages, eig, tolerances, options, forward, stats, ..
         } = self;
-        let forward = forward.as_deref_mut()?;
+        let Some(forward) = forward.as_deref_mut() else {
+            return Ok(0.0);
+        };
         let at = At { t: *t, h: *h, y, z: &stages.z };
         forward.stages(model, residual, &at);
         stats.jacobian_evaluations += 3;

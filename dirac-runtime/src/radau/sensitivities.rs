@@ -92,6 +92,15 @@ where
         let mut s = State::with_sizes(self.model.sizes());
         for j in 0..forward.len() {
             initial(self.model.get(), t0, state, forward.wrt(j), &mut s)?;
+            if let Some(slot) = s.components().position(|x| !x.is_finite()) {
+                let model = self.model.get();
+                let component = format!(
+                    "the initial sensitivity of {} to {} (a parameter derivative that is not finite at the start)",
+                    crate::diagnose::describe_slot(model, slot),
+                    self.sensitivity_names[j]
+                );
+                return Err(SimError::NonFinite { t: t0, component });
+            }
             forward.set_value(j, &s);
         }
         Ok(())
@@ -119,6 +128,7 @@ where
         let layout = crate::layout::Layout::new(self.model.sizes());
         let len = layout.len;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
+        recorder.check_extra_series(count * len)?;
         let mut columns: Vec<Vec<f64>> = vec![Vec::new(); count * len];
         let mut buffer = State::<M>::with_sizes(self.model.sizes());
         self.start(t0, state, t_end)?;

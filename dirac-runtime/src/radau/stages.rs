@@ -56,7 +56,8 @@ where
     pub theta: f64,
 }
 
-fn three<M: LagrangeDirac>(sizes: Sizes) -> [VecY<M>; 3]
+/// Three zero vectors over the flat state: one per stage.
+pub(crate) fn three<M: LagrangeDirac>(sizes: Sizes) -> [VecY<M>; 3]
 where
     DefaultAllocator: Storage<M>,
 {
@@ -185,7 +186,14 @@ where
 
     /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w`, with `M` the identity on the differential rows.
     fn transformed_residuals(&mut self, eig: &Eigen, h: f64) {
-        transformed_residuals::<M>(self.sizes, eig, h, &self.f, &self.w, &mut self.r);
+        transformed_residuals::<M>(
+            &Layout::new(self.sizes.typed::<M>()),
+            eig,
+            h,
+            &self.f,
+            &self.w,
+            &mut self.r,
+        );
     }
 
     fn transform_to_z(&mut self) {
@@ -199,11 +207,11 @@ where
 
 /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w_k`: the residuals of the stage system in the transformed
 /// variables `w`, for stage right-hand sides `f` (Hairer & Wanner, §IV.8), with `M` the
-/// identity on the differential rows of a model of these sizes.
+/// identity on the differential rows of the state's layout `l`.
 // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
 #[allow(clippy::needless_range_loop)]
 pub(crate) fn transformed_residuals<M: LagrangeDirac>(
-    sizes: Sizes,
+    l: &Layout,
     eig: &Eigen,
     h: f64,
     f: &[VecY<M>; 3],
@@ -218,8 +226,7 @@ pub(crate) fn transformed_residuals<M: LagrangeDirac>(
             rk[i] = TI[k][0] * f[0][i] + TI[k][1] * f[1][i] + TI[k][2] * f[2][i];
         }
     }
-    let Layout { q, v, p, lambda, .. } = Layout::new(sizes.typed::<M>());
-    for i in (q..v).chain(p..lambda) {
+    for i in (l.q..l.v).chain(l.p..l.lambda) {
         let (w1, w2, w3) = (w[0][i], w[1][i], w[2][i]);
         r[0][i] -= gamma * w1;
         r[1][i] -= alpha * w2 - beta * w3;
