@@ -38,16 +38,25 @@ fn row<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, t_end: f64, co
 where
     DefaultAllocator: Storage<M>,
 {
+    let names = model.parameter_names();
+    let chosen: Vec<&str> = names.iter().take(count).map(String::as_str).collect();
+    let wrt = Sensitivities::new(model).parameters(&chosen).expect("parameters");
+    row_wrt(name, model, start, t_end, &wrt);
+}
+
+/// One row for the sensitivities `wrt`.
+fn row_wrt<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, t_end: f64, wrt: &Sensitivities<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let count = wrt.names().len();
     let sampling = Sampling::Every(0.1);
     let (plain, steps) = median_seconds(|| {
         let solution = Radau::new(model, options()).expect("valid").solve(0.0, start, t_end, &sampling);
         black_box(solution.expect("solves")).stats.steps
     });
-    let names = model.parameter_names();
-    let chosen: Vec<&str> = names.iter().take(count).map(String::as_str).collect();
-    let wrt = Sensitivities::new(model).parameters(&chosen).expect("parameters");
     let (with, steps_with) = median_seconds(|| {
-        let mut radau = Radau::new(model, options()).expect("valid").with_sensitivities(&wrt).expect("valid");
+        let mut radau = Radau::new(model, options()).expect("valid").with_sensitivities(wrt).expect("valid");
         let solution = radau.solve_with_sensitivities(0.0, start, t_end, &sampling);
         black_box(solution.expect("solves")).stats.steps
     });
@@ -119,4 +128,18 @@ fn main() {
     let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
         .expect("consistent");
     row("rolling disk (nonholonomic)", &disk, &start, 10.0, 4);
+    let links = Pendulum8 { m: 0.5, l: 0.25, g: 9.81 };
+    let q = VecQ::<Pendulum8>::from_fn(|i, _| 0.3 + 0.05 * i as f64);
+    let start = consistent_state(&links, 0.0, &q, &VecQ::<Pendulum8>::zeros(), Consistency::default())
+        .expect("consistent");
+    row("8-link pendulum (nonlinear)", &links, &start, 5.0, 3);
+    for n in [10, 100, 1000] {
+        let ladder = unit_ladder(n);
+        let centre = n as f64 / 3.0;
+        let x: Vec<f64> = (1..=n).map(|j| (-((j as f64 - centre) / 5.0).powi(2)).exp()).collect();
+        let start = ladder_at_rest(&ladder, &x);
+        let wrt = (0..4)
+            .fold(Sensitivities::new(&ladder), |w, j| w.initial_position(ladder.cells(j * n / 4, Cell::B)));
+        row_wrt(&format!("LC ladder, {n} cells (sparse)"), &ladder, &start, 5.0, &wrt);
+    }
 }

@@ -497,4 +497,14 @@ fn steps_with_sensitivities_do_not_allocate() {
         .expect("consistent");
     let wrt = Sensitivities::all_parameters(&disk);
     assert_eq!(allocations_with_sensitivities(&disk, &start, &wrt, false), 0, "rolling disk");
+    // A model made of an array of cells: stored sparse and factored by a sparse LU.
+    let ladder = unit_ladder(20);
+    let start = ladder_at_rest(&ladder, &pulse(20));
+    let wrt = Sensitivities::new(&ladder)
+        .initial_position(ladder.cells(5, zoo::Cell::B))
+        .initial_velocity(ladder.cells(6, zoo::Cell::A));
+    for error_control in [false, true] {
+        let n = allocations_with_sensitivities(&ladder, &start, &wrt, error_control);
+        assert_eq!(n, 0, "ladder (sparse), error control {error_control}");
+    }
 }

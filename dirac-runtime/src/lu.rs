@@ -19,6 +19,8 @@ where
 {
     lu: OMatrix<T, D, D>,
     pivots: OVector<usize, D>,
+    /// The reciprocals of `U`'s diagonal, so that the back substitution multiplies.
+    inv_diagonal: OVector<T, D>,
 }
 
 impl<T: ComplexField<RealField = f64> + Copy, D: Dim> Lu<T, D>
@@ -31,6 +33,7 @@ where
         Lu {
             lu: OMatrix::<T, D, D>::zeros_generic(d, d),
             pivots: OVector::<usize, D>::from_fn_generic(d, nalgebra::Const::<1>, |i, _| i),
+            inv_diagonal: OVector::<T, D>::from_element_generic(d, nalgebra::Const::<1>, T::one()),
         }
     }
 
@@ -40,17 +43,19 @@ where
     }
 
     /// Factors the matrix held in [`Lu::matrix_mut`] in place. A pivot below `tiny` times the
-    /// largest entry of the matrix counts as zero.
+    /// largest entry of the matrix counts as zero. Entries are compared by `|re| + |im|`, as
+    /// LAPACK's complex pivoting does: as good a choice as the modulus, without its square
+    /// root.
     pub fn factor(&mut self) -> Result<(), Singular> {
         let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
         // Over the storage slice: nalgebra's matrix iterator costs more than the factorisation
         // of a small matrix.
-        let scale = self.lu.as_slice().iter().fold(0.0f64, |m, x| m.max(x.modulus()));
+        let scale = self.lu.as_slice().iter().fold(0.0f64, |m, x| m.max(x.norm1()));
         let tiny = f64::EPSILON * 1e-3 * scale.max(f64::MIN_POSITIVE);
         for k in 0..n {
-            let (mut p, mut best) = (k, self.lu[(k, k)].modulus());
+            let (mut p, mut best) = (k, self.lu[(k, k)].norm1());
             for i in k + 1..n {
-                let x = self.lu[(i, k)].modulus();
+                let x = self.lu[(i, k)].norm1();
                 if x > best {
                     (p, best) = (i, x);
                 }
@@ -62,9 +67,10 @@ where
             if p != k {
                 self.lu.swap_rows(k, p);
             }
-            let pivot = self.lu[(k, k)];
+            let inv_pivot = T::one() / self.lu[(k, k)];
+            self.inv_diagonal[k] = inv_pivot;
             for i in k + 1..n {
-                let factor = self.lu[(i, k)] / pivot;
+                let factor = self.lu[(i, k)] * inv_pivot;
                 self.lu[(i, k)] = factor;
                 for j in k + 1..n {
                     let ukj = self.lu[(k, j)];
@@ -114,7 +120,7 @@ where
             for j in i + 1..n {
                 s -= self.lu[(i, j)] * b[j];
             }
-            b[i] = s / self.lu[(i, i)];
+            b[i] = s * self.inv_diagonal[i];
         }
     }
 }

@@ -9,10 +9,12 @@
 //! converged, the sensitivities' stage equations are solved with the step's factored iteration
 //! matrix, so the result is the exact derivative of the discrete solution.
 
-use nalgebra::{DMatrix, DVector, DefaultAllocator};
+use nalgebra::DefaultAllocator;
 
+use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
 use crate::dims::Storage;
 use crate::error::SimError;
+use crate::init_saddle;
 use crate::keys::Coordinate;
 use crate::model::LagrangeDirac;
 use crate::state::State;
@@ -169,96 +171,140 @@ where
     }
 }
 
-/// Consistent initial sensitivities of `state` at `t0` with respect to `wrt`, into `out`
-/// (`q`, `v` and `p` parts; the multipliers' are left at zero, they do not enter the method's
-/// stages): the derivative of [`consistent_state`](crate::consistent_state) at a consistent
-/// start. From zero for a parameter, or the unit vector of an initial value, the position part
-/// is corrected onto `∂φ/∂q s_q + ∂φ/∂θ = 0` by the smallest change, the velocity part onto
+type SaddleOf<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Saddle<f64>;
+
+/// Consistent initial sensitivities at a consistent start: the derivative of
+/// [`consistent_state`](crate::consistent_state) there. From zero for a parameter, or the unit
+/// vector of an initial value, the position part is corrected onto
+/// `∂φ/∂q s_q + ∂φ/∂θ = 0` by the smallest change, the velocity part onto
 /// `A s_v + ∂(A v + b)/∂q s_q + ∂(A v + b)/∂θ = 0` by the change of least kinetic energy,
 /// and the momenta follow the linearised Legendre map `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`.
+/// The multipliers' are left at zero: they do not enter the method's stages.
 ///
-/// Allocates; called once at the start.
-pub(crate) fn initial<M: LagrangeDirac>(
-    model: &M,
-    t0: f64,
-    state: &State<M>,
-    wrt: Wrt,
-    out: &mut State<M>,
-) -> Result<(), SimError>
+/// Both corrections are the saddle-point problems `consistent_state` solves for a large model,
+/// `[I A_hᵀ; A_h 0]` and `[L_vv + εI Aᵀ; A 0]`, assembled and factored once by the model's own
+/// saddle-point solver (sparse for models made of arrays) and then solved for each
+/// sensitivity. Allocates; made once at the start.
+pub(crate) struct Initial<'a, M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    use crate::algebra::{Algebra, dense_cq, dense_qq};
-    let sizes = model.sizes();
-    let (n, m, nh) = (sizes.nq, sizes.nc, sizes.nh);
-    let shape = model.shape();
-    let mut a_blocks = M::Algebra::zeros_cq(&shape);
-    model.constraint_matrix(t0, &state.q, &mut a_blocks);
-    let a = dense_cq::<M, M::Algebra>(&a_blocks, m, n);
-    let mut g_blocks = M::Algebra::zeros_cq(&shape);
-    model.dav_dq(t0, &state.q, &state.v, &mut g_blocks);
-    let g = dense_cq::<M, M::Algebra>(&g_blocks, m, n);
-    let mut s_q = DVector::<f64>::zeros(n);
-    let mut s_v = DVector::<f64>::zeros(n);
-    let mut phi_theta = DVector::<f64>::zeros(nh);
-    let mut av_theta = DVector::<f64>::zeros(m);
-    let mut lv_theta = DVector::<f64>::zeros(n);
-    match wrt {
-        Wrt::Parameter(k) => {
-            let mut h = sizes.zeros_h::<M>();
-            model.holonomic_dtheta(k, t0, &state.q, &mut h);
-            phi_theta.copy_from_slice(h.as_slice());
-            let mut blocks = crate::blocks::ResidualBlocks::<M>::with_sizes(&sizes);
-            model.residual_blocks_dtheta(k, t0, &state.q, &state.v, &state.lambda, &mut blocks);
-            av_theta.copy_from_slice(blocks.constraint_velocity.as_slice());
-            lv_theta.copy_from_slice(blocks.dl_dv.as_slice());
-        }
-        Wrt::InitialPosition(i) => s_q[i] = 1.0,
-        Wrt::InitialVelocity(i) => s_v[i] = 1.0,
-    }
-    // Positions: the smallest correction δ of s_q with A_h (s_q + δ) = −∂φ/∂θ, as
-    // `consistent_state` projects positions (minimal-norm Gauss-Newton steps).
-    let a_h = a.rows(0, nh).into_owned();
-    if nh > 0 {
-        let r = &a_h * &s_q + &phi_theta;
-        let y = solve_min_norm(&(&a_h * a_h.transpose()), &r)?;
-        s_q -= a_h.transpose() * y;
-    }
-    // Velocities: the correction of least kinetic energy, as `consistent_state` projects
-    // velocities: [W Aᵀ; A 0] [δ; μ] = [0; −(A s_v + ∂(Av + b)/∂q s_q + ∂(Av + b)/∂θ)], with
-    // W = L_vv and the same small multiple of I where L_vv is singular.
-    let mut l_vq = M::Algebra::zeros_qq(&shape);
-    let mut l_vv = M::Algebra::zeros_qq(&shape);
-    model.l_vq(t0, &state.q, &state.v, &mut l_vq);
-    model.l_vv(t0, &state.q, &state.v, &mut l_vv);
-    if m > 0 {
-        let w = dense_qq::<M, M::Algebra>(&l_vv, n);
-        let reg = 1e-10 * w.amax().max(1.0);
-        let mut kkt = DMatrix::<f64>::zeros(n + m, n + m);
-        kkt.view_mut((0, 0), (n, n)).copy_from(&(w + DMatrix::identity(n, n) * reg));
-        kkt.view_mut((0, n), (n, m)).copy_from(&a.transpose());
-        kkt.view_mut((n, 0), (m, n)).copy_from(&a);
-        let c = &a * &s_v + &g * &s_q + &av_theta;
-        let mut rhs = DVector::<f64>::zeros(n + m);
-        rhs.rows_mut(n, m).copy_from(&(-c));
-        let x = solve_min_norm(&kkt, &rhs)?;
-        s_v += x.rows(0, n);
-    }
-    let mut s_p = lv_theta;
-    M::Algebra::qq_mul(&l_vq, 1.0, s_q.as_slice(), s_p.as_mut_slice());
-    M::Algebra::qq_mul(&l_vv, 1.0, s_v.as_slice(), s_p.as_mut_slice());
-    out.q.as_mut_slice().copy_from_slice(s_q.as_slice());
-    out.v.as_mut_slice().copy_from_slice(s_v.as_slice());
-    out.p.as_mut_slice().copy_from_slice(s_p.as_slice());
-    out.lambda.fill(0.0);
-    Ok(())
+    model: &'a M,
+    t0: f64,
+    state: &'a State<M>,
+    a: <M::Algebra as Algebra<M>>::Cq,
+    g: <M::Algebra as Algebra<M>>::Cq,
+    l_vq: <M::Algebra as Algebra<M>>::Qq,
+    l_vv: <M::Algebra as Algebra<M>>::Qq,
+    positions: Option<SaddleOf<M>>,
+    velocities: Option<SaddleOf<M>>,
 }
 
-/// The minimal-norm solution of `a x = b` (a least-squares one if `a` is singular).
-fn solve_min_norm(a: &DMatrix<f64>, b: &DVector<f64>) -> Result<DVector<f64>, SimError> {
-    let eps = 1e-13 * a.amax().max(f64::MIN_POSITIVE);
-    a.clone().svd(true, true).solve(b, eps).map_err(|e| SimError::InvalidOption {
-        what: "sensitivities",
-        reason: format!("the constraints at the initial state admit no consistent sensitivity: {e}"),
-    })
+impl<'a, M: LagrangeDirac> Initial<'a, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Evaluates and factors the two corrections' systems at `state`.
+    pub fn new(model: &'a M, t0: f64, state: &'a State<M>) -> Result<Self, SimError> {
+        let (sizes, shape) = (model.sizes(), model.shape());
+        let mut a = M::Algebra::zeros_cq(&shape);
+        model.constraint_matrix(t0, &state.q, &mut a);
+        let mut g = M::Algebra::zeros_cq(&shape);
+        model.dav_dq(t0, &state.q, &state.v, &mut g);
+        let mut l_vq = M::Algebra::zeros_qq(&shape);
+        let mut l_vv = M::Algebra::zeros_qq(&shape);
+        model.l_vq(t0, &state.q, &state.v, &mut l_vq);
+        model.l_vv(t0, &state.q, &state.v, &mut l_vv);
+        let not_determined = |s| init_saddle::not_determined(model, t0, &state.q, &state.v, s);
+        let positions = if sizes.nh > 0 {
+            let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
+            saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+                top: &[],
+                top_transposed: &[],
+                identity: 1.0,
+                right: &[(1.0, &a)],
+                bottom: &[(1.0, 0.0, &a)],
+                corner: (0.0, 1.0),
+            });
+            saddle.factor().map_err(not_determined)?;
+            Some(saddle)
+        } else {
+            None
+        };
+        let velocities = if sizes.nc > 0 {
+            let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
+            saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+                top: &[(1.0, &l_vv)],
+                top_transposed: &[],
+                // The same small multiple of I as `consistent_state`, where L_vv is singular.
+                identity: 1e-10 * amax(M::Algebra::qq_values(&l_vv)).max(1.0),
+                right: &[(1.0, &a)],
+                bottom: &[(1.0, 1.0, &a)],
+                corner: (0.0, 0.0),
+            });
+            saddle.factor().map_err(not_determined)?;
+            Some(saddle)
+        } else {
+            None
+        };
+        Ok(Initial { model, t0, state, a, g, l_vq, l_vv, positions, velocities })
+    }
+
+    /// The initial sensitivity with respect to `wrt`, into `out`.
+    pub fn solve(&mut self, wrt: Wrt, out: &mut State<M>) {
+        let (model, t0, state) = (self.model, self.t0, self.state);
+        let sizes = model.sizes();
+        let (n, m, nh) = (sizes.nq, sizes.nc, sizes.nh);
+        out.q.fill(0.0);
+        out.v.fill(0.0);
+        out.p.fill(0.0);
+        out.lambda.fill(0.0);
+        let mut phi_theta = vec![0.0; nh];
+        let mut av_theta = vec![0.0; m];
+        match wrt {
+            Wrt::Parameter(k) => {
+                let mut h = sizes.zeros_h::<M>();
+                model.holonomic_dtheta(k, t0, &state.q, &mut h);
+                phi_theta.copy_from_slice(h.as_slice());
+                let mut blocks = crate::blocks::ResidualBlocks::<M>::with_sizes(&sizes);
+                model.residual_blocks_dtheta(k, t0, &state.q, &state.v, &state.lambda, &mut blocks);
+                av_theta.copy_from_slice(blocks.constraint_velocity.as_slice());
+                out.p.copy_from(&blocks.dl_dv);
+            }
+            Wrt::InitialPosition(i) => out.q[i] = 1.0,
+            Wrt::InitialVelocity(i) => out.v[i] = 1.0,
+        }
+        let mut x = vec![0.0; n + m];
+        // Positions: the smallest correction δ = −A_hᵀ y of s_q with A_h (s_q + δ) = −∂φ/∂θ.
+        if let Some(saddle) = &mut self.positions {
+            let mut r = vec![0.0; m];
+            M::Algebra::cq_mul(&self.a, 1.0, out.q.as_slice(), &mut r);
+            x[..n].fill(0.0);
+            for ((xi, ri), pi) in x[n..n + nh].iter_mut().zip(&r).zip(&phi_theta) {
+                *xi = ri + pi;
+            }
+            x[n + nh..].fill(0.0);
+            saddle.solve(&mut x);
+            for (sq, xi) in out.q.iter_mut().zip(&x[..n]) {
+                *sq -= xi;
+            }
+        }
+        // Velocities: the correction of least kinetic energy onto the linearised velocity
+        // constraints, c = A s_v + ∂(Av + b)/∂q s_q + ∂(Av + b)/∂θ.
+        if let Some(saddle) = &mut self.velocities {
+            let mut c = av_theta;
+            M::Algebra::cq_mul(&self.a, 1.0, out.v.as_slice(), &mut c);
+            M::Algebra::cq_mul(&self.g, 1.0, out.q.as_slice(), &mut c);
+            x[..n].fill(0.0);
+            for (xi, ci) in x[n..].iter_mut().zip(&c) {
+                *xi = -ci;
+            }
+            saddle.solve(&mut x);
+            for (sv, xi) in out.v.iter_mut().zip(&x[..n]) {
+                *sv += xi;
+            }
+        }
+        M::Algebra::qq_mul(&self.l_vq, 1.0, out.q.as_slice(), out.p.as_mut_slice());
+        M::Algebra::qq_mul(&self.l_vv, 1.0, out.v.as_slice(), out.p.as_mut_slice());
+    }
 }

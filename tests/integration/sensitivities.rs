@@ -217,6 +217,54 @@ fn tight() -> RadauOptions {
 /// `m ẍ = −k x` from `x0`, `v0`: `x = x0 cos ωt + (v0/ω) sin ωt`, `ω = √(k/m)`, so
 /// `∂x/∂ω = −x0 t sin ωt + v0 (t cos ωt / ω − sin ωt / ω²)`, `∂ω/∂k = 1/(2 m ω)`,
 /// `∂ω/∂m = −ω/(2m)`, `∂x/∂x0 = cos ωt`, `∂x/∂v0 = sin ωt / ω`.
+/// A model made of an array of cells, on the sparse path: the LC ladder's node fluxes obey the
+/// linear `C ẍ = −(1/L) T x`, so their sensitivity to node `j`'s initial flux is the ladder's
+/// motion from the unit pulse `e_j` at rest, which the exact modal solution gives
+/// (`zoo::modal_solution`). Node `j`'s flux is the coordinate `b` of cell `j` and `a` of cell
+/// `j + 1`, independent coordinates tied by a velocity constraint, so the node's sensitivity
+/// is the sum of the two coordinates'.
+#[test]
+fn a_ladders_sensitivities_to_its_initial_fluxes_follow_its_modes() {
+    let n = 30;
+    let ladder = unit_ladder(n);
+    let start = ladder_at_rest(&ladder, &pulse(n));
+    let nodes = [4, 17, n - 1];
+    let mut wrt = Sensitivities::new(&ladder);
+    for &j in &nodes {
+        wrt = wrt.initial_position(ladder.cells(j, Cell::B));
+        if j + 1 < n {
+            wrt = wrt.initial_position(ladder.cells(j + 1, Cell::A));
+        }
+    }
+    // A unit flux at one node holds the ladder's fastest modes, which the smooth pulse of the
+    // state does not: the sensitivities' own errors must steer the steps.
+    let wrt = wrt.error_control(true);
+    let times: Vec<f64> = (0..=8).map(|i| 1.25 * i as f64).collect();
+    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(1e-10, 1e-10) };
+    let mut radau = Radau::new(&ladder, options).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution =
+        radau.solve_with_sensitivities(0.0, &start, 10.0, &Sampling::Times(times.clone())).expect("solves");
+    let names = wrt.names();
+    let mut worst: f64 = 0.0;
+    for (index, &j) in nodes.iter().enumerate() {
+        let mut e = vec![0.0; n];
+        e[j] = 1.0;
+        // The names in the order pushed: b of cell j, then a of cell j + 1 unless j is last.
+        let first = nodes[..index].iter().map(|&i| if i + 1 < n { 2 } else { 1 }).sum::<usize>();
+        let own: Vec<&String> = names[first..first + if j + 1 < n { 2 } else { 1 }].iter().collect();
+        for (i, &t) in times.iter().enumerate() {
+            let exact = modal_solution(&e, 1.0, 1.0, t);
+            for (node, want) in exact.iter().enumerate() {
+                let key = ladder.cells(node, Cell::B);
+                let got: f64 = own.iter().map(|name| solution.dq(key, name).expect("recorded")[i]).sum();
+                worst = worst.max((got - want).abs());
+            }
+        }
+    }
+    // A global error of a few times the tolerance, as the ladder's own against its modes.
+    assert!(worst < 1e-8, "largest difference from the modes {worst:e}");
+}
+
 #[test]
 fn harmonic_oscillator_sensitivities_match_the_closed_form() {
     let (m, k, x0, v0) = (1.3, 2.1, 0.7, -0.4);

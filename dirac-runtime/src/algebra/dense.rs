@@ -218,11 +218,51 @@ where
     DefaultAllocator: Storage<M>,
 {
     jac: JacobianBlocks<M, Dense>,
-    sigma: f64,
-    sigma_c: Complex<f64>,
-    real: Lu<f64, M::Nk>,
-    complex: Lu<Complex<f64>, M::Nk>,
+    real: Shifted<M, f64>,
+    complex: Shifted<M, Complex<f64>>,
     sizes: Sizes,
+}
+
+/// The condensed system for one shift `σ`: its factors, `1/σ`, and the coupling
+/// `L_vq − K/σ` that every solve applies to `r_q`, formed once with the factors.
+struct Shifted<M: Dimensions, T: ComplexField<RealField = f64> + Copy>
+where
+    DefaultAllocator: Storage<M>,
+{
+    sigma: T,
+    inv_sigma: T,
+    coupling: OMatrix<T, M::Nq, M::Nq>,
+    lu: Lu<T, M::Nk>,
+}
+
+impl<M: Dimensions, T: ComplexField<RealField = f64> + Copy> Shifted<M, T>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn new(sizes: &Sizes) -> Self {
+        let n = M::Nq::from_usize(sizes.nq);
+        Shifted {
+            sigma: T::one(),
+            inv_sigma: T::one(),
+            coupling: OMatrix::<T, M::Nq, M::Nq>::zeros_generic(n, n),
+            lu: Lu::new(sizes.nk()),
+        }
+    }
+
+    /// Forms and factors the condensed matrix of `jac` for the shift `sigma`.
+    fn factor(&mut self, jac: &JacobianBlocks<M, Dense>, sigma: T) -> Result<(), Singular> {
+        self.sigma = sigma;
+        self.inv_sigma = T::one() / sigma;
+        let n = jac.l_vq.nrows();
+        for j in 0..n {
+            for i in 0..n {
+                self.coupling[(i, j)] =
+                    T::from_real(jac.l_vq[(i, j)]) - T::from_real(jac.dpdot_dq[(i, j)]) * self.inv_sigma;
+            }
+        }
+        condensed_matrix(jac, sigma, self.lu.matrix_mut());
+        self.lu.factor()
+    }
 }
 
 impl<M: Dimensions> DenseCondensed<M>
@@ -233,10 +273,8 @@ where
     pub fn new(sizes: Sizes) -> Self {
         DenseCondensed {
             jac: JacobianBlocks::with_shape(&sizes),
-            sigma: 1.0,
-            sigma_c: Complex::new(1.0, 0.0),
-            real: Lu::new(sizes.nk()),
-            complex: Lu::new(sizes.nk()),
+            real: Shifted::new(&sizes),
+            complex: Shifted::new(&sizes),
             sizes,
         }
     }
@@ -281,8 +319,7 @@ fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
 /// Solves `(σ M − J) x = r` in place with the factored condensed matrix.
 fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     jac: &JacobianBlocks<M, Dense>,
-    sigma: T,
-    lu: &Lu<T, M::Nk>,
+    shifted: &Shifted<M, T>,
     sizes: &Sizes,
     x: &mut OVector<T, M::Ny>,
 ) where
@@ -291,15 +328,18 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     let sizes = sizes.typed::<M>();
     let (n, m) = (sizes.nq, sizes.nc);
     let Layout { q, v, p, lambda, .. } = Layout::new(sizes);
+    let (sigma, inv_sigma, coupling) = (shifted.sigma, shifted.inv_sigma, &shifted.coupling);
     let r = |v: f64| T::from_real(v);
     let nk = M::Nk::from_usize(sizes.nk());
     let mut b = OVector::<T, M::Nk>::zeros_generic(nk, nalgebra::Const::<1>);
     for i in 0..n {
-        let mut bi = x[p + i] + sigma * x[v + i];
-        for j in 0..n {
-            bi -= (r(jac.l_vq[(i, j)]) - r(jac.dpdot_dq[(i, j)]) / sigma) * x[q + j];
+        b[i] = x[p + i] + sigma * x[v + i];
+    }
+    for j in 0..n {
+        let xq = x[q + j];
+        for i in 0..n {
+            b[i] -= coupling[(i, j)] * xq;
         }
-        b[i] = bi;
     }
     for k in 0..m {
         let mut bk = -sigma * x[lambda + k];
@@ -308,18 +348,20 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
         }
         b[n + k] = bk;
     }
-    lu.solve(&mut b);
+    shifted.lu.solve(&mut b);
     let nq = M::Nq::from_usize(n);
     let mut xq = OVector::<T, M::Nq>::zeros_generic(nq, nalgebra::Const::<1>);
     for i in 0..n {
-        xq[i] = (x[q + i] + b[i]) / sigma;
+        xq[i] = (x[q + i] + b[i]) * inv_sigma;
     }
     for i in 0..n {
-        let mut xp = -x[v + i];
-        for j in 0..n {
-            xp += r(jac.l_vq[(i, j)]) * xq[j] + r(jac.l_vv[(i, j)]) * b[j];
+        x[p + i] = -x[v + i];
+    }
+    for j in 0..n {
+        let (xqj, bj) = (xq[j], b[j]);
+        for i in 0..n {
+            x[p + i] += r(jac.l_vq[(i, j)]) * xqj + r(jac.l_vv[(i, j)]) * bj;
         }
-        x[p + i] = xp;
     }
     for i in 0..n {
         x[q + i] = xq[i];
@@ -341,16 +383,12 @@ where
         sigma_c: Complex<f64>,
     ) -> Result<(), Singular> {
         self.jac.copy_from(jac);
-        self.sigma = sigma;
-        self.sigma_c = sigma_c;
-        condensed_matrix(jac, sigma, self.real.matrix_mut());
-        condensed_matrix(jac, sigma_c, self.complex.matrix_mut());
-        self.real.factor()?;
-        self.complex.factor()
+        self.real.factor(jac, sigma)?;
+        self.complex.factor(jac, sigma_c)
     }
 
     fn solve(&mut self, r: &mut VecY<M>) {
-        condensed_solve(&self.jac, self.sigma, &self.real, &self.sizes, r);
+        condensed_solve(&self.jac, &self.real, &self.sizes, r);
     }
 
     fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>) {
@@ -358,7 +396,7 @@ where
         let mut x = OVector::<Complex<f64>, M::Ny>::from_fn_generic(ny, nalgebra::Const::<1>, |i, _| {
             Complex::new(re[i], im[i])
         });
-        condensed_solve(&self.jac, self.sigma_c, &self.complex, &self.sizes, &mut x);
+        condensed_solve(&self.jac, &self.complex, &self.sizes, &mut x);
         for i in 0..x.len() {
             re[i] = x[i].re;
             im[i] = x[i].im;

@@ -30,13 +30,15 @@ where
     // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
     #[allow(clippy::needless_range_loop)]
     pub fn update(&mut self, z: &[VecY<M>; 3], h: f64) {
-        let (c1m1, c2m1, c1mc2) = (C1 - 1.0, C2 - 1.0, C1 - C2);
+        // Reciprocals of constants, folded by the compiler: the loop multiplies.
+        let (c1m1, c2m1, c1mc2) = (1.0 / (C1 - 1.0), 1.0 / (C2 - 1.0), 1.0 / (C1 - C2));
+        let (c1, c2) = (1.0 / C1, 1.0 / C2);
         for i in 0..z[0].len() {
             let (z1, z2, z3) = (z[0][i], z[1][i], z[2][i]);
-            let d1 = (z2 - z3) / c2m1;
-            let ak = (z1 - z2) / c1mc2;
-            let acont3 = (ak - z1 / C1) / C2;
-            let d2 = (ak - d1) / c1m1;
+            let d1 = (z2 - z3) * c2m1;
+            let ak = (z1 - z2) * c1mc2;
+            let acont3 = (ak - z1 * c1) * c2;
+            let d2 = (ak - d1) * c1m1;
             self.cont[0][i] = d1;
             self.cont[1][i] = d2;
             self.cont[2][i] = d2 - acont3;

@@ -292,9 +292,6 @@ where
                     if matches!(c.wrt, Wrt::Parameter(_)) {
                         self.f[k] += &c.g[k];
                     }
-                    if let Some(slot) = self.f[k].iter().position(|x| !x.is_finite()) {
-                        return Err(Failure::NonFinite { column, slot });
-                    }
                 }
                 transformed_residuals::<M>(&l, eig, h, &self.f, &self.w, &mut self.r);
                 let [r1, r2, r3] = &mut self.r;
@@ -311,7 +308,13 @@ where
                 }
                 transform(&T, &self.w, &mut c.z);
                 if !dyno.is_finite() {
-                    return Err(Failure::NotConverged);
+                    // A right-hand side that is not finite is the cause to name; otherwise the
+                    // iteration diverged.
+                    return Err(self
+                        .f
+                        .iter()
+                        .find_map(|fk| fk.iter().position(|x| !x.is_finite()))
+                        .map_or(Failure::NotConverged, |slot| Failure::NonFinite { column, slot }));
                 }
                 if newt > 0 {
                     theta = dyno / previous;

@@ -13,7 +13,7 @@ use crate::integrator::Integrator;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
 use crate::recorder::Recorder;
-use crate::sensitivity::{Sensitivities, initial};
+use crate::sensitivity::{Initial, Sensitivities};
 use crate::solution::{Sampling, Solution};
 use crate::state::State;
 
@@ -90,8 +90,9 @@ where
             });
         }
         let mut s = State::with_sizes(self.model.sizes());
+        let mut initial = Initial::new(self.model.get(), t0, state)?;
         for j in 0..forward.len() {
-            initial(self.model.get(), t0, state, forward.wrt(j), &mut s)?;
+            initial.solve(forward.wrt(j), &mut s);
             if let Some(slot) = s.components().position(|x| !x.is_finite()) {
                 let model = self.model.get();
                 let component = format!(
