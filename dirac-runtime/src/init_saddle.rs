@@ -17,7 +17,7 @@ use crate::error::SimError;
 use crate::lu::Singular;
 use crate::model::LagrangeDirac;
 
-type SaddleOf<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Saddle<f64>;
+pub(crate) type SaddleOf<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Saddle<f64>;
 
 /// Why a consistency system is singular: the unknown without a pivot, and what the model's
 /// structure says.
@@ -41,6 +41,44 @@ where
         t,
         cause: format!("nothing determines {unknown}; {}", singular_cause(model, t, q, v)),
     }
+}
+
+/// `[I A_hᵀ; A_h 0]`: the system of the smallest position correction onto the holonomic
+/// constraints (the other constraints' rows hold only a unit diagonal).
+pub(crate) fn assemble_positions<M: LagrangeDirac>(
+    saddle: &mut SaddleOf<M>,
+    a: &<M::Algebra as Algebra<M>>::Cq,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+        top: &[],
+        top_transposed: &[],
+        identity: 1.0,
+        right: &[(1.0, a)],
+        bottom: &[(1.0, 0.0, a)],
+        corner: (0.0, 1.0),
+    });
+}
+
+/// `[L_vv + εI Aᵀ; A 0]`: the system of the velocity correction of least kinetic energy onto
+/// the velocity constraints.
+pub(crate) fn assemble_velocities<M: LagrangeDirac>(
+    saddle: &mut SaddleOf<M>,
+    l_vv: &<M::Algebra as Algebra<M>>::Qq,
+    a: &<M::Algebra as Algebra<M>>::Cq,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+        top: &[(1.0, l_vv)],
+        top_transposed: &[],
+        // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
+        identity: 1e-10 * amax(M::Algebra::qq_values(l_vv)).max(1.0),
+        right: &[(1.0, a)],
+        bottom: &[(1.0, 1.0, a)],
+        corner: (0.0, 0.0),
+    });
 }
 
 /// Projects `q` onto `φ(q, t) = 0`.
@@ -77,14 +115,7 @@ where
                 iterations: max_iterations,
             });
         }
-        saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
-            top: &[],
-            top_transposed: &[],
-            identity: 1.0,
-            right: &[(1.0, &a)],
-            bottom: &[(1.0, 0.0, &a)],
-            corner: (0.0, 1.0),
-        });
+        assemble_positions(&mut saddle, &a);
         saddle.factor().map_err(|s| not_determined(model, t, q, &at_rest, s))?;
         x.fill(0.0);
         x[n..n + h].copy_from_slice(phi.as_slice());
@@ -129,15 +160,7 @@ where
     model.l_vv(t, q, v, &mut lvv);
     non_finite_entry(model, t, "the mass matrix L_vv", M::Algebra::qq_values(&lvv), false)?;
     let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
-    saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
-        top: &[(1.0, &lvv)],
-        top_transposed: &[],
-        // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
-        identity: 1e-10 * amax(M::Algebra::qq_values(&lvv)).max(1.0),
-        right: &[(1.0, &a)],
-        bottom: &[(1.0, 1.0, &a)],
-        corner: (0.0, 0.0),
-    });
+    assemble_velocities(&mut saddle, &lvv, &a);
     saddle.factor().map_err(|s| not_determined(model, t, q, v, s))?;
     let mut x = vec![0.0; n + m];
     for (xr, avr) in x[n..].iter_mut().zip(&av) {

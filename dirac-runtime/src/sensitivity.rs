@@ -11,10 +11,10 @@
 
 use nalgebra::DefaultAllocator;
 
-use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
+use crate::algebra::{Algebra, Saddle};
 use crate::dims::Storage;
 use crate::error::SimError;
-use crate::init_saddle;
+use crate::init_saddle::{self, SaddleOf};
 use crate::keys::Coordinate;
 use crate::model::LagrangeDirac;
 use crate::state::State;
@@ -171,8 +171,6 @@ where
     }
 }
 
-type SaddleOf<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Saddle<f64>;
-
 /// Consistent initial sensitivities at a consistent start: the derivative of
 /// [`consistent_state`](crate::consistent_state) there. From zero for a parameter, or the unit
 /// vector of an initial value, the position part is corrected onto
@@ -216,37 +214,18 @@ where
         model.l_vq(t0, &state.q, &state.v, &mut l_vq);
         model.l_vv(t0, &state.q, &state.v, &mut l_vv);
         let not_determined = |s| init_saddle::not_determined(model, t0, &state.q, &state.v, s);
-        let positions = if sizes.nh > 0 {
+        // The systems `consistent_state` solves, factored once for every sensitivity.
+        let factored = |assemble: &dyn Fn(&mut SaddleOf<M>)| -> Result<SaddleOf<M>, SimError> {
             let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
-            saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
-                top: &[],
-                top_transposed: &[],
-                identity: 1.0,
-                right: &[(1.0, &a)],
-                bottom: &[(1.0, 0.0, &a)],
-                corner: (0.0, 1.0),
-            });
+            assemble(&mut saddle);
             saddle.factor().map_err(not_determined)?;
-            Some(saddle)
-        } else {
-            None
+            Ok(saddle)
         };
-        let velocities = if sizes.nc > 0 {
-            let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
-            saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
-                top: &[(1.0, &l_vv)],
-                top_transposed: &[],
-                // The same small multiple of I as `consistent_state`, where L_vv is singular.
-                identity: 1e-10 * amax(M::Algebra::qq_values(&l_vv)).max(1.0),
-                right: &[(1.0, &a)],
-                bottom: &[(1.0, 1.0, &a)],
-                corner: (0.0, 0.0),
-            });
-            saddle.factor().map_err(not_determined)?;
-            Some(saddle)
-        } else {
-            None
-        };
+        let positions =
+            (sizes.nh > 0).then(|| factored(&|s| init_saddle::assemble_positions::<M>(s, &a))).transpose()?;
+        let velocities = (sizes.nc > 0)
+            .then(|| factored(&|s| init_saddle::assemble_velocities::<M>(s, &l_vv, &a)))
+            .transpose()?;
         Ok(Initial { model, t0, state, a, g, l_vq, l_vv, positions, velocities })
     }
 
