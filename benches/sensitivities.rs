@@ -10,7 +10,8 @@
 //! - the rolling disk (nonholonomic) over 10 s with its four parameters.
 //!
 //! Every solve is at `rtol = atol = 1e-8`, recording the state every 0.1 s, timed as the median
-//! of 21 solves. Run: `cargo bench --bench sensitivities`.
+//! of 21 solves. Run: `cargo bench --bench sensitivities` (`-- WORD` for the rows whose model
+//! names WORD).
 
 #![allow(missing_docs)]
 
@@ -49,6 +50,12 @@ fn row_wrt<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, t_end: f64
 where
     DefaultAllocator: Storage<M>,
 {
+    // `cargo bench --bench sensitivities -- WORD` runs only the rows whose model names WORD.
+    if let Some(word) = std::env::args().skip(1).find(|a| !a.starts_with('-'))
+        && !name.contains(&word)
+    {
+        return;
+    }
     let count = wrt.names().len();
     let sampling = Sampling::Every(0.1);
     let (plain, steps) = median_seconds(|| {

@@ -281,6 +281,9 @@ fn harmonic_oscillator_sensitivities_match_the_closed_form() {
     let mut radau = Radau::new(&model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
     let solution =
         radau.solve_with_sensitivities(0.0, &state, 10.0, &Sampling::Times(times.clone())).expect("solves");
+    // A linear model's Jacobian is the same at every stage as the one factored: each step's
+    // sensitivities are one solve each, not an iteration.
+    assert_eq!(solution.stats.sensitivity_iterations, 4 * solution.stats.steps);
     let w = (k / m).sqrt();
     let dx_dw = |t: f64| -x0 * t * (w * t).sin() + v0 * (t * (w * t).cos() / w - (w * t).sin() / (w * w));
     let expected: [(&str, &dyn Fn(f64) -> f64); 4] = [

@@ -163,6 +163,21 @@ where
         }
     }
 
+    /// Whether every block holds the same values as `other`'s (exactly: a Jacobian that does
+    /// not change with the state, as a linear model's).
+    pub fn same_values(&self, other: &Self) -> bool {
+        [
+            (&self.dpdot_dq, &other.dpdot_dq),
+            (&self.dpdot_dv, &other.dpdot_dv),
+            (&self.l_vq, &other.l_vq),
+            (&self.l_vv, &other.l_vv),
+        ]
+        .into_iter()
+        .all(|(a, b)| A::qq_values(a) == A::qq_values(b))
+            && A::cq_values(&self.a) == A::cq_values(&other.a)
+            && A::cq_values(&self.dav_dq) == A::cq_values(&other.dav_dq)
+    }
+
     /// Copies every block of `other` into these, without allocating.
     pub fn copy_from(&mut self, other: &Self) {
         for (to, from) in [

@@ -8,7 +8,10 @@
 //! linear in `Zs`, are solved by the simplified Newton iteration on the step's factored
 //! matrix, in the same transformed variables as the state's. The stage Jacobians are evaluated
 //! once per step and shared by every sensitivity; each sensitivity costs matrix-vector
-//! products and solves with the factorisation already made. Nothing allocates in a step.
+//! products and solves with the factorisation already made. Where the Jacobian is the same at
+//! every stage as the one factored for the step (a linear model's), the factored matrix is the
+//! stage system's own and one solve from zero is the solution, with nothing to iterate.
+//! Nothing allocates in a step.
 
 use nalgebra::DefaultAllocator;
 
@@ -53,18 +56,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     columns: Vec<Column<M>>,
-    /// The Jacobians at the three stages of the step being solved.
-    jac: [JacobianBlocks<M, M::Algebra>; 3],
+    work: Work<M>,
     /// The Jacobian at the step's start (the last stage of the step before, or the start).
     jac0: JacobianBlocks<M, M::Algebra>,
-    w: [VecY<M>; 3],
-    f: [VecY<M>; 3],
-    r: [VecY<M>; 3],
-    tmp: VecY<M>,
-    weights: VecY<M>,
     state: State<M>,
     blocks: ResidualBlocks<M>,
-    layout: Layout,
     /// Whether the sensitivities' errors count in the step-size control.
     pub error_control: bool,
     /// Whether the sensitivities' multipliers at the step's start are known: not at the start
@@ -72,6 +68,22 @@ where
     multipliers_known: bool,
     /// Linear iterations of the sensitivity stage systems, over all columns.
     pub iterations: usize,
+}
+
+/// What solving one sensitivity's stage system works with: the stage Jacobians, shared by all
+/// sensitivities, and vectors for the iteration.
+struct Work<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The Jacobians at the three stages of the step being solved.
+    jac: [JacobianBlocks<M, M::Algebra>; 3],
+    w: [VecY<M>; 3],
+    f: [VecY<M>; 3],
+    r: [VecY<M>; 3],
+    tmp: VecY<M>,
+    weights: VecY<M>,
+    layout: Layout,
 }
 
 /// `out = J x` for the flat Jacobian `J` given by its blocks.
@@ -117,6 +129,10 @@ pub(crate) struct Iteration {
     pub max_iterations: usize,
     pub norm: ErrorNorm,
     pub theta: f64,
+    /// Whether the factored matrix is the sensitivities' exact stage matrix: factored for this
+    /// step's size from a Jacobian equal to the one at every stage (a linear model's). Then one
+    /// solve from zero is the solution, and there is nothing to iterate.
+    pub exact: bool,
 }
 
 /// The stage and state the sensitivities of a step are solved at.
@@ -150,18 +166,21 @@ where
                 theta: f64::INFINITY,
             })
             .collect();
-        Forward {
-            columns,
+        let work = Work {
             jac: [jac(), jac(), jac()],
-            jac0: jac(),
             w: three(sizes),
             f: three(sizes),
             r: three(sizes),
             tmp: sizes.zeros_y::<M>(),
             weights: sizes.zeros_y::<M>(),
+            layout: Layout::new(sizes),
+        };
+        Forward {
+            columns,
+            work,
+            jac0: jac(),
             state: State::with_sizes(sizes),
             blocks: ResidualBlocks::with_sizes(&sizes),
-            layout: Layout::new(sizes),
             error_control,
             multipliers_known: false,
             iterations: 0,
@@ -201,7 +220,7 @@ where
     /// sensitivities are at the start of an integration, where the method does not carry them
     /// (they enter no stage equation), to `O(h³)` of the first, short, step.
     pub fn multipliers_at_start(&self, j: usize, out: &mut State<M>) {
-        let (l, c) = (self.layout, &self.columns[j]);
+        let (l, c) = (self.work.layout, &self.columns[j]);
         let nodes = [C1, C2, C3];
         let lagrange = |k: usize| {
             let (a, b) = (nodes[(k + 1) % 3], nodes[(k + 2) % 3]);
@@ -230,7 +249,7 @@ where
             if let Wrt::Parameter(k) = c.wrt {
                 let s = &self.state;
                 model.residual_blocks_dtheta(k, t, &s.q, &s.v, &s.lambda, &mut self.blocks);
-                flat_dtheta(&self.layout, &self.blocks, &mut c.g0);
+                flat_dtheta(&self.work.layout, &self.blocks, &mut c.g0);
             }
         }
     }
@@ -238,20 +257,26 @@ where
     /// Evaluates the Jacobians and the parameter derivatives at the step's stages.
     pub fn stages(&mut self, model: &mut Held<'_, M>, residual: &mut Residual<'_, M>, at: &At<'_, M>) {
         for (k, ck) in [C1, C2, C3].into_iter().enumerate() {
-            self.tmp.copy_from(at.y);
-            self.tmp += &at.z[k];
+            let w = &mut self.work;
+            w.tmp.copy_from(at.y);
+            w.tmp += &at.z[k];
             let t = at.t + ck * at.h;
-            residual.apply(model, t, &self.tmp);
-            self.state.read_y(&self.tmp);
+            residual.apply(model, t, &w.tmp);
+            self.state.read_y(&w.tmp);
             let s = &self.state;
-            model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac[k]);
+            model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut w.jac[k]);
             for c in &mut self.columns {
                 if let Wrt::Parameter(p) = c.wrt {
                     model.residual_blocks_dtheta(p, t, &s.q, &s.v, &s.lambda, &mut self.blocks);
-                    flat_dtheta(&self.layout, &self.blocks, &mut c.g[k]);
+                    flat_dtheta(&w.layout, &self.blocks, &mut c.g[k]);
                 }
             }
         }
+    }
+
+    /// Whether the Jacobians at the three stages of the step all equal `jac`.
+    pub fn stage_jacobians_equal(&self, jac: &JacobianBlocks<M, M::Algebra>) -> bool {
+        self.work.jac.iter().all(|j| j.same_values(jac))
     }
 
     /// Solves every sensitivity's stage system with the factored `solver`, the iteration's
@@ -265,84 +290,31 @@ where
         iteration: &Iteration,
         weights_of: &dyn Fn(&VecY<M>, &mut VecY<M>),
     ) -> Result<f64, Failure> {
-        let l = self.layout;
         let mut worst: f64 = 0.0;
+        let w = &mut self.work;
         for (column, c) in self.columns.iter_mut().enumerate() {
-            weights_of(&c.s, &mut self.weights);
-            // Start from the last step's polynomial extrapolated, as the state's iteration does.
-            if c.dense.h > 0.0 {
-                c.dense.extrapolate(h, &mut c.z);
+            let measured = !iteration.exact || (self.error_control && self.multipliers_known);
+            if measured {
+                weights_of(&c.s, &mut w.weights);
+            }
+            let solved = if iteration.exact {
+                w.direct(solver, eig, h, c)
             } else {
-                c.z.iter_mut().for_each(|z| z.fill(0.0));
-            }
-            transform(&TI, &c.z, &mut self.w);
-            let mut converged = false;
-            // The iteration is linear: it contracts about as it did in the last step (as the
-            // state's did, at first), until it shows its rate in this one; relaxed to its square
-            // root, more cautious than RADAU5's relaxation of the state's rate (a power 0.8).
-            let last = if c.theta.is_finite() { c.theta } else { iteration.theta };
-            let mut theta = last.clamp(f64::EPSILON, 0.81).sqrt();
-            let mut previous = f64::INFINITY;
-            for newt in 0..iteration.max_iterations {
-                // f_k = J_k (s_n + Zs_k) + g_k.
-                for k in 0..3 {
-                    self.tmp.copy_from(&c.s);
-                    self.tmp += &c.z[k];
-                    apply::<M>(&l, &self.jac[k], &self.tmp, &mut self.f[k]);
-                    if matches!(c.wrt, Wrt::Parameter(_)) {
-                        self.f[k] += &c.g[k];
-                    }
-                }
-                transformed_residuals::<M>(&l, eig, h, &self.f, &self.w, &mut self.r);
-                let [r1, r2, r3] = &mut self.r;
-                solver.solve(r1);
-                solver.solve_complex(r2, r3);
-                self.iterations += 1;
-                let dyno = {
-                    let sum: f64 =
-                        self.r.iter().map(|rk| norm::<M>(rk, &self.weights, iteration.norm).powi(2)).sum();
-                    (sum / 3.0).sqrt()
-                };
-                for (wk, rk) in self.w.iter_mut().zip(&self.r) {
-                    *wk += rk;
-                }
-                transform(&T, &self.w, &mut c.z);
-                if !dyno.is_finite() {
-                    // A right-hand side that is not finite is the cause to name; otherwise the
-                    // iteration diverged.
-                    return Err(self
-                        .f
-                        .iter()
-                        .find_map(|fk| fk.iter().position(|x| !x.is_finite()))
-                        .map_or(Failure::NotConverged, |slot| Failure::NonFinite { column, slot }));
-                }
-                if newt > 0 {
-                    theta = dyno / previous;
-                    if theta >= 0.99 {
-                        return Err(Failure::NotConverged);
-                    }
-                    c.theta = theta;
-                }
-                // What remains is about θ/(1 − θ) times the last increment: iterate to the
-                // state's Newton tolerance, as the state's own iteration does.
-                previous = dyno.max(f64::MIN_POSITIVE);
-                if dyno * theta / (1.0 - theta) <= iteration.fnewt {
-                    converged = true;
-                    break;
-                }
-            }
-            if !converged {
-                return Err(Failure::NotConverged);
-            }
+                w.iterate(solver, eig, h, iteration, c)
+            };
+            self.iterations += solved.map_err(|slot| match slot {
+                Some(slot) => Failure::NonFinite { column, slot },
+                None => Failure::NotConverged,
+            })?;
             if self.error_control && self.multipliers_known {
                 worst = worst.max(estimate(
-                    &l,
+                    &w.layout,
                     solver,
                     &self.jac0,
                     c,
-                    &mut self.tmp,
+                    &mut w.tmp,
                     h,
-                    &self.weights,
+                    &w.weights,
                     iteration.norm,
                 ));
             }
@@ -362,9 +334,124 @@ where
             }
         }
         if self.error_control {
-            self.jac0.copy_from(&self.jac[2]);
+            self.jac0.copy_from(&self.work.jac[2]);
         }
         self.multipliers_known = true;
+    }
+}
+
+impl<M: LagrangeDirac> Work<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// `f_k`: the stage right-hand sides of sensitivity `c`, `J_k (s_n + Zs_k) + g_k`.
+    fn stage_right_hand_sides(&mut self, c: &Column<M>) {
+        for k in 0..3 {
+            self.tmp.copy_from(&c.s);
+            self.tmp += &c.z[k];
+            apply::<M>(&self.layout, &self.jac[k], &self.tmp, &mut self.f[k]);
+            if matches!(c.wrt, Wrt::Parameter(_)) {
+                self.f[k] += &c.g[k];
+            }
+        }
+    }
+
+    /// The first slot of the stage right-hand sides that is not finite, if any: the cause of
+    /// increments that are not.
+    fn non_finite_slot(&self) -> Option<usize> {
+        self.f.iter().find_map(|f| f.iter().position(|x| !x.is_finite()))
+    }
+
+    /// Solves the stage system of `c` when the factored matrix is its exact matrix (a Jacobian
+    /// the same at every stage, factored for this step's size): from zero, one solve is the
+    /// solution, `M Zs = h (A ⊗ I)(J s_n + g)` in the transformed variables. One linear
+    /// iteration, or why it failed, as [`Work::iterate`] says.
+    fn direct<S: NewtonSolver<M, M::Algebra>>(
+        &mut self,
+        solver: &mut S,
+        eig: &Eigen,
+        h: f64,
+        c: &mut Column<M>,
+    ) -> Result<usize, Option<usize>> {
+        apply::<M>(&self.layout, &self.jac[0], &c.s, &mut self.tmp);
+        for (fk, gk) in self.f.iter_mut().zip(&c.g) {
+            fk.copy_from(&self.tmp);
+            if matches!(c.wrt, Wrt::Parameter(_)) {
+                *fk += gk;
+            }
+        }
+        self.w.iter_mut().for_each(|w| w.fill(0.0));
+        transformed_residuals::<M>(&self.layout, eig, h, &self.f, &self.w, &mut self.r);
+        let [r1, r2, r3] = &mut self.r;
+        solver.solve(r1);
+        solver.solve_complex(r2, r3);
+        if self.r.iter().any(|r| r.iter().any(|x| !x.is_finite())) {
+            return Err(self.non_finite_slot());
+        }
+        transform(&T, &self.r, &mut c.z);
+        Ok(1)
+    }
+
+    /// Solves the stage system of `c` by the simplified Newton iteration on the factored
+    /// matrix, its increments measured in `self.weights`, to the state's Newton tolerance. The
+    /// number of iterations, or why it failed: the slot whose right-hand side is not finite,
+    /// or none if the iteration diverged.
+    fn iterate<S: NewtonSolver<M, M::Algebra>>(
+        &mut self,
+        solver: &mut S,
+        eig: &Eigen,
+        h: f64,
+        iteration: &Iteration,
+        c: &mut Column<M>,
+    ) -> Result<usize, Option<usize>> {
+        // Start from the last step's polynomial extrapolated, as the state's iteration does.
+        if c.dense.h > 0.0 {
+            c.dense.extrapolate(h, &mut c.z);
+        } else {
+            c.z.iter_mut().for_each(|z| z.fill(0.0));
+        }
+        transform(&TI, &c.z, &mut self.w);
+        // The iteration is linear: it contracts about as it did in the last step (as the
+        // state's did, at first), until it shows its rate in this one; relaxed to its square
+        // root, more cautious than RADAU5's relaxation of the state's rate (a power 0.8).
+        let last = if c.theta.is_finite() { c.theta } else { iteration.theta };
+        let mut theta = last.clamp(f64::EPSILON, 0.81).sqrt();
+        let mut previous = f64::INFINITY;
+        for newt in 0..iteration.max_iterations {
+            self.stage_right_hand_sides(c);
+            transformed_residuals::<M>(&self.layout, eig, h, &self.f, &self.w, &mut self.r);
+            let [r1, r2, r3] = &mut self.r;
+            solver.solve(r1);
+            solver.solve_complex(r2, r3);
+            let dyno = {
+                let sum: f64 =
+                    self.r.iter().map(|rk| norm::<M>(rk, &self.weights, iteration.norm).powi(2)).sum();
+                (sum / 3.0).sqrt()
+            };
+            for (wk, rk) in self.w.iter_mut().zip(&self.r) {
+                *wk += rk;
+            }
+            transform(&T, &self.w, &mut c.z);
+            if !dyno.is_finite() {
+                // A right-hand side that is not finite is the cause to name; otherwise the
+                // iteration diverged.
+                return Err(self.non_finite_slot());
+            }
+            if newt > 0 {
+                theta = dyno / previous;
+                if theta >= 0.99 {
+                    return Err(None);
+                }
+                c.theta = theta;
+            }
+            // What remains is about θ/(1 − θ) times the last increment: iterate to the
+            // state's Newton tolerance, as the state's own iteration does.
+            previous = dyno.max(f64::MIN_POSITIVE);
+            if dyno * theta / (1.0 - theta) <= iteration.fnewt {
+                return Ok(newt + 1);
+            }
+        }
+        Err(None)
     }
 }
 

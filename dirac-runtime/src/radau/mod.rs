@@ -336,13 +336,28 @@ where
     /// estimate (zero unless error-controlled), or why they could not be solved.
     fn solve_sensitivities(&mut self) -> Result<f64, Failure> {
         let Radau {
-            model, residual, solver, t, h, y, stages, eig, tolerances, options, forward, stats, ..
+            model,
+            residual,
+            solver,
+            t,
+            h,
+            y,
+            stages,
+            eig,
+            tolerances,
+            options,
+            forward,
+            stats,
+            jac,
+            factored_h,
+            ..
         } = self;
         let Some(forward) = forward.as_deref_mut() else {
             return Ok(0.0);
         };
         let at = At { t: *t, h: *h, y, z: &stages.z };
         forward.stages(model, residual, &at);
+        let exact = *factored_h == *h && forward.stage_jacobians_equal(jac);
         stats.jacobian_evaluations += 3;
         let h = *h;
         let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
@@ -352,6 +367,7 @@ where
             max_iterations: 4 * options.max_newton_iterations,
             norm: options.error_norm,
             theta: stages.theta,
+            exact,
         };
         let result = forward.solve(solver, eig, h, &iteration, &weights);
         stats.sensitivity_iterations += forward.iterations - before;
