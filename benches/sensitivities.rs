@@ -7,10 +7,13 @@
 //! - the five-mass chain `MassSpringChain5` (ten parameters) over 20 s with `N_θ` = 1, 2, 5, 10;
 //! - the interconnected chain of the paper (six parameters) over 20 s with all six;
 //! - the pendulum in Cartesian coordinates (holonomic) over 10 s with its three parameters;
-//! - the rolling disk (nonholonomic) over 10 s with its four parameters.
+//! - the rolling disk (nonholonomic) over 10 s with its four parameters;
+//! - the 8-link pendulum (nonlinear, eight angles) over 5 s with its three parameters;
+//! - the LC ladder (an array of cells, on the sparse path) of 10, 100 and 1000 cells over 5 s,
+//!   with the initial fluxes of four nodes (arrays of subsystems expose no parameters).
 //!
-//! Every solve is at `rtol = atol = 1e-8`, recording the state every 0.1 s, timed as the median
-//! of 21 solves. Run: `cargo bench --bench sensitivities` (`-- WORD` for the rows whose model
+//! Every solve is at `rtol = atol = 1e-8`, recording the state every 0.1 s. The two solves of a
+//! row are timed in 31 alternating pairs, and the ratio is the median of the pairs' ratios. Run: `cargo bench --bench sensitivities` (`-- WORD` for the rows whose model
 //! names WORD).
 
 #![allow(missing_docs)]
@@ -18,15 +21,12 @@
 #[path = "../tests/zoo/mod.rs"]
 mod zoo;
 
-#[path = "support/median.rs"]
-mod median;
-
 use std::hint::black_box;
+use std::time::Instant;
 
 use dirac::Storage;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
-use median::median_seconds;
 use zoo::*;
 
 fn options() -> RadauOptions {
@@ -58,17 +58,18 @@ where
     }
     let count = wrt.names().len();
     let sampling = Sampling::Every(0.1);
-    let (plain, steps) = median_seconds(|| {
+    let plain = || {
         let solution = Radau::new(model, options()).expect("valid").solve(0.0, start, t_end, &sampling);
         black_box(solution.expect("solves")).stats.steps
-    });
-    let (with, steps_with) = median_seconds(|| {
+    };
+    let with = || {
         let mut radau = Radau::new(model, options()).expect("valid").with_sensitivities(wrt).expect("valid");
         let solution = radau.solve_with_sensitivities(0.0, start, t_end, &sampling);
         black_box(solution.expect("solves")).stats.steps
-    });
-    assert_eq!(steps, steps_with, "the sensitivities leave the steps alone");
-    let ratio = with / plain;
+    };
+    assert_eq!(plain(), with(), "the sensitivities leave the steps alone");
+    let steps = plain();
+    let (plain, with, ratio) = paired(plain, with);
     println!(
         "| {name} | {count} | {steps} | {:.3} ms | {:.3} ms | {ratio:.2} | {} | {} | {:.2} |",
         plain * 1e3,
@@ -77,6 +78,40 @@ where
         1 + 2 * count,
         ratio / (1 + count) as f64,
     );
+}
+
+/// The median times of `a` and `b` and the median of their ratios `b / a`, over 31 pairs run
+/// alternately (`a b`, then `b a`), each timing enough calls to take at least 5 ms: a change in
+/// the machine's speed during the run then falls on both sides of most pairs.
+fn paired(mut a: impl FnMut() -> usize, mut b: impl FnMut() -> usize) -> (f64, f64, f64) {
+    let start = Instant::now();
+    a();
+    let calls = (5e-3 / start.elapsed().as_secs_f64()).ceil().max(1.0) as usize;
+    let time = |f: &mut dyn FnMut() -> usize| {
+        let start = Instant::now();
+        for _ in 0..calls {
+            f();
+        }
+        start.elapsed().as_secs_f64() / calls as f64
+    };
+    let (mut ta, mut tb, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+    for pair in 0..31 {
+        let (x, y) = if pair % 2 == 0 {
+            let x = time(&mut a);
+            (x, time(&mut b))
+        } else {
+            let y = time(&mut b);
+            (time(&mut a), y)
+        };
+        ta.push(x);
+        tb.push(y);
+        ratios.push(y / x);
+    }
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    (median(ta), median(tb), median(ratios))
 }
 
 /// The paper chain's `x1(20)` and its sensitivities to its six parameters, to set beside the
