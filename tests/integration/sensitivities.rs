@@ -561,3 +561,26 @@ fn sensitivities_are_refused_where_they_cannot_be_honest() {
     let err = plain.solve_with_sensitivities(0.0, &horizontal_start(&pendulum), 1.0, &Sampling::Steps).err();
     assert!(matches!(err, Some(SimError::InvalidOption { what: "sensitivities", .. })), "{err:?}");
 }
+
+/// A bead held twice on the same line: its two holonomic constraints are one, so no
+/// sensitivity of its start is determined. The simulation cannot start either: both end in a
+/// typed error naming the cause, not a least-squares guess returned as success.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(holonomic(on_line) = y - x)]
+#[dirac(holonomic(again) = 2.0 * y - 2.0 * x)]
+struct HeldTwice {
+    m: f64,
+    g: f64,
+}
+
+#[test]
+fn redundant_constraints_give_a_typed_error_not_a_sensitivity() {
+    let bead = HeldTwice { m: 1.0, g: 9.81 };
+    let start = State::<HeldTwice>::zeros();
+    let wrt = Sensitivities::all_parameters(&bead).initial_position(HeldTwice::X);
+    let radau = Radau::new(&bead, RadauOptions::default()).expect("valid").with_sensitivities(&wrt);
+    let result = radau.and_then(|mut r| r.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps));
+    assert!(matches!(result, Err(SimError::NotDetermined { .. })), "{result:?}");
+}

@@ -260,7 +260,7 @@ where
                     T::from_real(jac.l_vq[(i, j)]) - T::from_real(jac.dpdot_dq[(i, j)]) * self.inv_sigma;
             }
         }
-        condensed_matrix(jac, sigma, self.lu.matrix_mut());
+        condensed_matrix(jac, sigma, &self.coupling, self.lu.matrix_mut());
         self.lu.factor()
     }
 }
@@ -289,10 +289,12 @@ where
     }
 }
 
-/// Writes the condensed matrix for shift `sigma` into `s`.
+/// Writes the condensed matrix for shift `sigma` into `s`, with the coupling `L_vq − K/σ`
+/// already formed.
 fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     jac: &JacobianBlocks<M, Dense>,
     sigma: T,
+    coupling: &OMatrix<T, M::Nq, M::Nq>,
     s: &mut OMatrix<T, M::Nk, M::Nk>,
 ) where
     DefaultAllocator: Storage<M>,
@@ -301,8 +303,7 @@ fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     let r = |x: f64| T::from_real(x);
     for j in 0..n {
         for i in 0..n {
-            s[(i, j)] = sigma * r(jac.l_vv[(i, j)]) + r(jac.l_vq[(i, j)] - jac.dpdot_dv[(i, j)])
-                - r(jac.dpdot_dq[(i, j)]) / sigma;
+            s[(i, j)] = sigma * r(jac.l_vv[(i, j)]) - r(jac.dpdot_dv[(i, j)]) + coupling[(i, j)];
         }
         for k in 0..m {
             s[(n + k, j)] = sigma * r(jac.a[(k, j)]) + r(jac.dav_dq[(k, j)]);

@@ -292,9 +292,13 @@ where
     ) -> Result<f64, Failure> {
         let mut worst: f64 = 0.0;
         let w = &mut self.work;
+        let estimated = self.error_control && self.multipliers_known;
+        if iteration.exact {
+            // The direct solve starts from zero in the transformed variables, for every column.
+            w.w.iter_mut().for_each(|w| w.fill(0.0));
+        }
         for (column, c) in self.columns.iter_mut().enumerate() {
-            let measured = !iteration.exact || (self.error_control && self.multipliers_known);
-            if measured {
+            if !iteration.exact || estimated {
                 weights_of(&c.s, &mut w.weights);
             }
             let solved = if iteration.exact {
@@ -306,7 +310,7 @@ where
                 Some(slot) => Failure::NonFinite { column, slot },
                 None => Failure::NotConverged,
             })?;
-            if self.error_control && self.multipliers_known {
+            if estimated {
                 worst = worst.max(estimate(
                     &w.layout,
                     solver,
@@ -380,7 +384,7 @@ where
                 *fk += gk;
             }
         }
-        self.w.iter_mut().for_each(|w| w.fill(0.0));
+        // `self.w` is zero (set for the step by `Forward::solve`).
         transformed_residuals::<M>(&self.layout, eig, h, &self.f, &self.w, &mut self.r);
         let [r1, r2, r3] = &mut self.r;
         solver.solve(r1);
