@@ -66,6 +66,8 @@ pub mod stack;
 pub mod state;
 /// Structural nonsingularity of the condensed system, checked at compile time.
 pub mod structure;
+#[cfg(test)]
+mod testing;
 /// The variational integrator (discrete Hamilton-Pontryagin-d'Alembert).
 pub mod variational;
 

@@ -131,42 +131,15 @@ where
 
 #[cfg(test)]
 mod tests {
-    use nalgebra::{Complex, Const, DMatrix, DVector};
+    use nalgebra::{Complex, DMatrix, DVector};
 
     use super::*;
+    use crate::testing::{self, THREE, Three};
 
-    /// Sizes of a model with 3 coordinates and 1 constraint, for testing the solvers alone.
-    struct Three;
-
-    impl Dimensions for Three {
-        type Nq = Const<3>;
-        type Nc = Const<1>;
-        type Nh = Const<0>;
-        type Nk = Const<4>;
-        type Ny = Const<10>;
-    }
-
-    const SIZES: Sizes = Sizes { nq: 3, nc: 1, nh: 0 };
+    const SIZES: Sizes = THREE;
 
     fn blocks() -> JacobianBlocks<Three, Dense> {
-        let mut seed = 7u64;
-        let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
-        let mut b = JacobianBlocks::<Three, Dense>::with_shape(&SIZES);
-        for x in b.dpdot_dq.iter_mut().chain(b.dpdot_dv.iter_mut()).chain(b.l_vq.iter_mut()) {
-            *x = next();
-        }
-        for x in b.a.iter_mut().chain(b.dav_dq.iter_mut()) {
-            *x = next();
-        }
-        // A degenerate L_vv: the third velocity has no inertia, as in the paper's system 2.
-        b.l_vv[(0, 0)] = 2.0;
-        b.l_vv[(1, 1)] = 1.5;
-        b.l_vv[(0, 1)] = 0.3;
-        b.l_vv[(1, 0)] = 0.3;
-        b
+        testing::blocks(7)
     }
 
     /// `σ M − J` as a dense complex matrix, written from the block equations independently.

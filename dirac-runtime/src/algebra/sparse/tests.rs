@@ -8,6 +8,7 @@ use super::{Pattern, Sparse, SparseBlock, SparseShape};
 use crate::algebra::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms};
 use crate::algebra::{Dense, DenseCondensed};
 use crate::dims::{Dimensions, Sizes, VecY};
+use crate::testing::numbers;
 
 /// Sizes of a model with 6 coordinates and 2 constraints, the first holonomic.
 struct Six;
@@ -21,15 +22,6 @@ impl Dimensions for Six {
 }
 
 const SIZES: Sizes = Sizes { nq: 6, nc: 2, nh: 1 };
-
-/// A seeded generator of numbers in [-0.5, 0.5).
-fn numbers(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    }
-}
 
 /// Full patterns in nalgebra's column order, so that a dense block's values are a sparse
 /// block's values.
