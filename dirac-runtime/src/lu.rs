@@ -52,10 +52,15 @@ where
         // of a small matrix.
         let scale = self.lu.as_slice().iter().fold(0.0f64, |m, x| m.max(x.norm1()));
         let tiny = f64::EPSILON * 1e-3 * scale.max(f64::MIN_POSITIVE);
+        // Column by column over the storage (column-major): the updates of a column run over
+        // contiguous memory, and every entry sees the same operations in the same order as a
+        // row-by-row elimination.
+        let a = self.lu.as_mut_slice();
         for k in 0..n {
-            let (mut p, mut best) = (k, self.lu[(k, k)].norm1());
+            let col_k = k * n;
+            let (mut p, mut best) = (k, a[col_k + k].norm1());
             for i in k + 1..n {
-                let x = self.lu[(i, k)].norm1();
+                let x = a[col_k + i].norm1();
                 if x > best {
                     (p, best) = (i, x);
                 }
@@ -65,16 +70,21 @@ where
             }
             self.pivots[k] = p;
             if p != k {
-                self.lu.swap_rows(k, p);
+                for j in 0..n {
+                    a.swap(j * n + k, j * n + p);
+                }
             }
-            let inv_pivot = T::one() / self.lu[(k, k)];
+            let inv_pivot = T::one() / a[col_k + k];
             self.inv_diagonal[k] = inv_pivot;
-            for i in k + 1..n {
-                let factor = self.lu[(i, k)] * inv_pivot;
-                self.lu[(i, k)] = factor;
-                for j in k + 1..n {
-                    let ukj = self.lu[(k, j)];
-                    self.lu[(i, j)] -= factor * ukj;
+            for x in &mut a[col_k + k + 1..col_k + n] {
+                *x *= inv_pivot;
+            }
+            let (left, right) = a.split_at_mut((k + 1) * n);
+            let factors = &left[col_k + k + 1..col_k + n];
+            for column in right.chunks_exact_mut(n) {
+                let ukj = column[k];
+                for (x, &factor) in column[k + 1..].iter_mut().zip(factors) {
+                    *x -= factor * ukj;
                 }
             }
         }
@@ -93,6 +103,34 @@ where
         // substitutions then index without bounds checks.
         let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
         self.solve_in(&mut b[..n]);
+    }
+
+    /// Solves `A x = b` in place with the factors, for `b` of the matrix's size, by columns:
+    /// each substitution step subtracts a multiple of one contiguous column of the factors,
+    /// which suits a size chosen at run time (the sums run in another order than
+    /// [`Lu::solve_slice`]'s, so the two agree to rounding).
+    pub fn solve_by_columns(&self, b: &mut [T]) {
+        let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
+        let b = &mut b[..n];
+        let a = self.lu.as_slice();
+        for (k, &p) in self.pivots.iter().enumerate() {
+            b.swap(k, p);
+        }
+        for (j, column) in a.chunks_exact(n).enumerate() {
+            let (head, tail) = b.split_at_mut(j + 1);
+            let bj = head[j];
+            for (bi, &l) in tail.iter_mut().zip(&column[j + 1..]) {
+                *bi -= l * bj;
+            }
+        }
+        for (j, column) in a.chunks_exact(n).enumerate().rev() {
+            let (head, tail) = b.split_at_mut(j);
+            let bj = tail[0] * self.inv_diagonal[j];
+            tail[0] = bj;
+            for (bi, &u) in head.iter_mut().zip(&column[..j]) {
+                *bi -= u * bj;
+            }
+        }
     }
 
     /// The substitutions, over any indexable `b`: a stack vector keeps its length known to the
@@ -141,6 +179,19 @@ mod tests {
         lu.matrix_mut().copy_from(&a);
         lu.factor().expect("nonsingular");
         lu.solve(&mut b);
+        assert!((b - x).amax() < 1e-14);
+    }
+
+    /// The column-oriented substitutions solve the same system, to rounding.
+    #[test]
+    fn solves_by_columns_with_pivoting() {
+        let a = Matrix3::new(0.0, 2.0, 1.0, 1.0, 1.0, 0.0, 3.0, 0.0, 1.0);
+        let x = Vector3::new(1.0, -2.0, 3.0);
+        let mut b = a * x;
+        let mut lu = Lu::<f64, nalgebra::Dyn>::new(3);
+        lu.matrix_mut().copy_from(&a);
+        lu.factor().expect("nonsingular");
+        lu.solve_by_columns(b.as_mut_slice());
         assert!((b - x).amax() < 1e-14);
     }
 

@@ -5,16 +5,23 @@
 //! M Zs_k = h Σ_j a_kj (J_j (s_n + Zs_j) + g_j),   J_j = ∂f/∂y and g_j = ∂f/∂θ at stage j,
 //! ```
 //!
-//! linear in `Zs`, are solved by the simplified Newton iteration on the step's factored
-//! matrix, in the same transformed variables as the state's. The stage Jacobians are evaluated
-//! once per step and shared by every sensitivity; each sensitivity costs matrix-vector
-//! products and solves with the factorisation already made. Where the Jacobian is the same at
-//! every stage as the one factored for the step (a linear model's), the factored matrix is the
-//! stage system's own and one solve from zero is the solution, with nothing to iterate.
+//! linear in `Zs`, are solved in one of three ways. The stage Jacobians are evaluated once per
+//! step and shared by every sensitivity.
+//!
+//! - Where the Jacobian is the same at every stage as the one factored for the step (a linear
+//!   model's), the factored matrix is the stage system's own and one solve from zero is the
+//!   solution, with nothing to iterate ([`Work::direct`]).
+//! - On a small model whose sensitivities would take enough iterations in all, the three
+//!   stages' coupled system is factored once a step and solved once per sensitivity
+//!   ([`Coupled`]).
+//! - Otherwise by the simplified Newton iteration on the step's factored matrix, in the same
+//!   transformed variables as the state's ([`Work::iterate`]).
+//!
 //! Nothing allocates in a step.
 
 use nalgebra::DefaultAllocator;
 
+use super::coupled::{Coupled, WORTH_FROM};
 use super::dense::Dense;
 use super::estimate::{scaled_error, zero_algebraic};
 use super::options::{ErrorNorm, norm};
@@ -57,6 +64,8 @@ where
 {
     columns: Vec<Column<M>>,
     work: Work<M>,
+    /// The three stages' coupled system, solved exactly on models small enough.
+    coupled: Option<Coupled>,
     /// The Jacobian at the step's start (the last stage of the step before, or the start).
     jac0: JacobianBlocks<M, M::Algebra>,
     state: State<M>,
@@ -133,6 +142,9 @@ pub(crate) struct Iteration {
     /// step's size from a Jacobian equal to the one at every stage (a linear model's). Then one
     /// solve from zero is the solution, and there is nothing to iterate.
     pub exact: bool,
+    /// The state's Newton iterations in this step: about what each sensitivity's iteration
+    /// would need.
+    pub state_iterations: usize,
 }
 
 /// The stage and state the sensitivities of a step are solved at.
@@ -175,9 +187,11 @@ where
             weights: sizes.zeros_y::<M>(),
             layout: Layout::new(sizes),
         };
+        let coupled = Coupled::new(&work.layout);
         Forward {
             columns,
             work,
+            coupled,
             jac0: jac(),
             state: State::with_sizes(sizes),
             blocks: ResidualBlocks::with_sizes(&sizes),
@@ -297,12 +311,24 @@ where
             // The direct solve starts from zero in the transformed variables, for every column.
             w.w.iter_mut().for_each(|w| w.fill(0.0));
         }
+        // Otherwise the coupled system where it is small enough, cheaper than the iterations
+        // it saves, and not singular; the iteration on the step's factored matrix where not.
+        let worth = self.columns.len() * iteration.state_iterations >= WORTH_FROM;
+        let mut coupled = match self.coupled.as_mut() {
+            Some(coupled) if !iteration.exact && worth => {
+                coupled.factor(&w.jac, h).is_ok().then_some(coupled)
+            }
+            _ => None,
+        };
+        let iterated = !iteration.exact && coupled.is_none();
         for (column, c) in self.columns.iter_mut().enumerate() {
-            if !iteration.exact || estimated {
+            if iterated || estimated {
                 weights_of(&c.s, &mut w.weights);
             }
             let solved = if iteration.exact {
                 w.direct(solver, eig, h, c)
+            } else if let Some(coupled) = coupled.as_deref_mut() {
+                w.coupled(coupled, h, c)
             } else {
                 w.iterate(solver, eig, h, iteration, c)
             };
@@ -393,6 +419,23 @@ where
             return Err(self.non_finite_slot());
         }
         transform(&T, &self.r, &mut c.z);
+        Ok(1)
+    }
+
+    /// Solves the stage system of `c` exactly, with the step's factored coupled system: one
+    /// linear solve, or why it failed, as [`Work::iterate`] says.
+    fn coupled(&mut self, coupled: &mut Coupled, h: f64, c: &mut Column<M>) -> Result<usize, Option<usize>> {
+        let g = matches!(c.wrt, Wrt::Parameter(_)).then_some(&c.g);
+        coupled.solve(&self.layout, &self.jac, h, &c.s, g, &mut c.z);
+        if c.z.iter().any(|z| z.iter().any(|x| !x.is_finite())) {
+            for (k, fk) in self.f.iter_mut().enumerate() {
+                apply::<M>(&self.layout, &self.jac[k], &c.s, fk);
+                if let Some(g) = g {
+                    *fk += &g[k];
+                }
+            }
+            return Err(self.non_finite_slot());
+        }
         Ok(1)
     }
 

@@ -10,6 +10,7 @@
 //! matrix lives in the integrator, on the stack sizes the model fixes.
 
 mod controller;
+mod coupled;
 mod dense;
 mod drive;
 mod estimate;
@@ -240,7 +241,7 @@ where
                 Outcome::Converged(iterations) => {
                     let mut err = self.estimate();
                     if err < 1.0 && self.forward.is_some() {
-                        match self.solve_sensitivities() {
+                        match self.solve_sensitivities(iterations) {
                             Ok(err_s) => err = err.max(err_s),
                             Err(Failure::NonFinite { column, slot }) => {
                                 let component = format!(
@@ -332,9 +333,10 @@ where
         self.check_finite(t0)
     }
 
-    /// Solves the sensitivities' stage systems of the converged step; their largest error
+    /// Solves the sensitivities' stage systems of the step, converged in `state_iterations`
+    /// Newton iterations; their largest error
     /// estimate (zero unless error-controlled), or why they could not be solved.
-    fn solve_sensitivities(&mut self) -> Result<f64, Failure> {
+    fn solve_sensitivities(&mut self, state_iterations: usize) -> Result<f64, Failure> {
         let Radau {
             model,
             residual,
@@ -368,6 +370,7 @@ where
             norm: options.error_norm,
             theta: stages.theta,
             exact,
+            state_iterations,
         };
         let result = forward.solve(solver, eig, h, &iteration, &weights);
         stats.sensitivity_iterations += forward.iterations - before;

@@ -19,6 +19,13 @@ pub const DD2: f64 = (-13.0 + 7.0 * SQ6) / 3.0;
 /// Third weight.
 pub const DD3: f64 = -1.0 / 3.0;
 
+/// The Butcher matrix `A` of Radau IIA, order 5, in closed form.
+pub const A: [[f64; 3]; 3] = [
+    [(88.0 - 7.0 * SQ6) / 360.0, (296.0 - 169.0 * SQ6) / 1800.0, (-2.0 + 3.0 * SQ6) / 225.0],
+    [(296.0 + 169.0 * SQ6) / 1800.0, (88.0 + 7.0 * SQ6) / 360.0, (-2.0 - 3.0 * SQ6) / 225.0],
+    [(16.0 - SQ6) / 36.0, (16.0 + SQ6) / 36.0, 1.0 / 9.0],
+];
+
 /// The eigenvalues of `A⁻¹`: the real `γ` and the complex pair `α ± iβ`.
 pub struct Eigen {
     pub gamma: f64,
@@ -56,19 +63,8 @@ mod tests {
 
     use super::*;
 
-    /// The Butcher matrix of Radau IIA, order 5, in closed form.
     fn butcher() -> Matrix3<f64> {
-        Matrix3::new(
-            (88.0 - 7.0 * SQ6) / 360.0,
-            (296.0 - 169.0 * SQ6) / 1800.0,
-            (-2.0 + 3.0 * SQ6) / 225.0,
-            (296.0 + 169.0 * SQ6) / 1800.0,
-            (88.0 + 7.0 * SQ6) / 360.0,
-            (-2.0 - 3.0 * SQ6) / 225.0,
-            (16.0 - SQ6) / 36.0,
-            (16.0 + SQ6) / 36.0,
-            1.0 / 9.0,
-        )
+        Matrix3::from_fn(|i, j| A[i][j])
     }
 
     #[test]
