@@ -8,13 +8,14 @@
 //! - the interconnected chain of the paper (six parameters) over 20 s with all six;
 //! - the pendulum in Cartesian coordinates (holonomic) over 10 s with its three parameters;
 //! - the rolling disk (nonholonomic) over 10 s with its four parameters;
-//! - the 8-link pendulum (nonlinear, eight angles) over 5 s with its three parameters;
+//! - the 8-link pendulum (nonlinear, eight angles) over 5 s with one and with its three
+//!   parameters, and with its eight initial angles;
 //! - the LC ladder (an array of cells, on the sparse path) of 10, 100 and 1000 cells over 5 s,
 //!   with the initial fluxes of four nodes (arrays of subsystems expose no parameters).
 //!
 //! Every solve is at `rtol = atol = 1e-8`, recording the state every 0.1 s. The two solves of a
-//! row are timed in 31 alternating pairs, and the ratio is the median of the pairs' ratios. Run: `cargo bench --bench sensitivities` (`-- WORD` for the rows whose model
-//! names WORD).
+//! row are timed in 31 alternating pairs, and the ratio is the median of the pairs' ratios. Run:
+//! `cargo bench --bench sensitivities` (`-- WORD` for the rows whose model names WORD).
 
 #![allow(missing_docs)]
 
@@ -174,7 +175,21 @@ fn main() {
     let q = VecQ::<Pendulum8>::from_fn(|i, _| 0.3 + 0.05 * i as f64);
     let start = consistent_state(&links, 0.0, &q, &VecQ::<Pendulum8>::zeros(), Consistency::default())
         .expect("consistent");
-    row("8-link pendulum (nonlinear)", &links, &start, 5.0, 3);
+    for count in [1, 3] {
+        row("8-link pendulum (nonlinear)", &links, &start, 5.0, count);
+    }
+    let angles = [
+        Pendulum8::TH1,
+        Pendulum8::TH2,
+        Pendulum8::TH3,
+        Pendulum8::TH4,
+        Pendulum8::TH5,
+        Pendulum8::TH6,
+        Pendulum8::TH7,
+        Pendulum8::TH8,
+    ];
+    let wrt = angles.into_iter().fold(Sensitivities::new(&links), |w, c| w.initial_position(c));
+    row_wrt("8-link pendulum (nonlinear), initial angles", &links, &start, 5.0, &wrt);
     for n in [10, 100, 1000] {
         let ladder = unit_ladder(n);
         let centre = n as f64 / 3.0;
