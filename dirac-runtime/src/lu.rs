@@ -52,15 +52,10 @@ where
         // of a small matrix.
         let scale = self.lu.as_slice().iter().fold(0.0f64, |m, x| m.max(x.norm1()));
         let tiny = f64::EPSILON * 1e-3 * scale.max(f64::MIN_POSITIVE);
-        // Column by column over the storage (column-major): the updates of a column run over
-        // contiguous memory, and every entry sees the same operations in the same order as a
-        // row-by-row elimination.
-        let a = self.lu.as_mut_slice();
         for k in 0..n {
-            let col_k = k * n;
-            let (mut p, mut best) = (k, a[col_k + k].norm1());
+            let (mut p, mut best) = (k, self.lu[(k, k)].norm1());
             for i in k + 1..n {
-                let x = a[col_k + i].norm1();
+                let x = self.lu[(i, k)].norm1();
                 if x > best {
                     (p, best) = (i, x);
                 }
@@ -70,21 +65,16 @@ where
             }
             self.pivots[k] = p;
             if p != k {
-                for j in 0..n {
-                    a.swap(j * n + k, j * n + p);
-                }
+                self.lu.swap_rows(k, p);
             }
-            let inv_pivot = T::one() / a[col_k + k];
+            let inv_pivot = T::one() / self.lu[(k, k)];
             self.inv_diagonal[k] = inv_pivot;
-            for x in &mut a[col_k + k + 1..col_k + n] {
-                *x *= inv_pivot;
-            }
-            let (left, right) = a.split_at_mut((k + 1) * n);
-            let factors = &left[col_k + k + 1..col_k + n];
-            for column in right.chunks_exact_mut(n) {
-                let ukj = column[k];
-                for (x, &factor) in column[k + 1..].iter_mut().zip(factors) {
-                    *x -= factor * ukj;
+            for i in k + 1..n {
+                let factor = self.lu[(i, k)] * inv_pivot;
+                self.lu[(i, k)] = factor;
+                for j in k + 1..n {
+                    let ukj = self.lu[(k, j)];
+                    self.lu[(i, j)] -= factor * ukj;
                 }
             }
         }
