@@ -437,6 +437,27 @@ where
         panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
     }
 
+    /// The derivatives of the residual blocks with respect to every parameter at once, into
+    /// `out[k]` for parameter `k`; it panics if `out` holds fewer blocks than the model has
+    /// parameters. The same values as
+    /// [`residual_blocks_dtheta`](LagrangeDirac::residual_blocks_dtheta) for each `k`, but a
+    /// primitive model's derive evaluates what the parameters' derivatives share (its
+    /// trigonometry, its mass matrix) once for all of them; elsewhere it calls
+    /// `residual_blocks_dtheta` for each parameter.
+    fn residual_blocks_dtheta_all(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut [ResidualBlocks<Self>],
+    ) {
+        let count = Self::NAMES.parameter_count();
+        for (k, out) in out[..count].iter_mut().enumerate() {
+            self.residual_blocks_dtheta(k, t, q, v, lambda, out);
+        }
+    }
+
     /// `∂φ/∂θ_k`: the derivative of the holonomic constraint values with respect to parameter
     /// `k` at fixed `(t, q)`, written whole.
     fn holonomic_dtheta(&self, k: usize, t: f64, q: &VecQ<Self>, out: &mut VecH<Self>) {

@@ -1,12 +1,15 @@
 //! The parameter methods of a primitive model: each `f64` field read and written by index,
 //! and the derivatives of the residual blocks and holonomic constraints with respect to it,
 //! one straight-line schedule per parameter (its subexpressions shared) behind a `match` on
-//! the parameter's index.
+//! the parameter's index; and the residual blocks' derivatives with respect to all of them in
+//! one schedule, the subexpressions common to all parameters evaluated once.
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-use super::signatures::{Arg, HOLONOMIC_DTHETA, RESIDUAL_BLOCKS_DTHETA, Signature};
+use super::signatures::{
+    Arg, HOLONOMIC_DTHETA, RESIDUAL_BLOCKS_DTHETA, RESIDUAL_BLOCKS_DTHETA_ALL, Signature,
+};
 use super::{Emitter, vector};
 use crate::blocks::{Blocks, ParameterBlocks};
 use crate::sym::emit::{Assign, emit};
@@ -27,6 +30,7 @@ impl Emitter<'_> {
             assigns
         });
         let holonomic = self.by_parameter(&HOLONOMIC_DTHETA, b, &|d| vector(&quote! { out }, &d.phi));
+        let all = self.all_parameters(b);
         quote! {
             fn parameter_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
                 match k {
@@ -42,6 +46,35 @@ impl Emitter<'_> {
             }
             #residual
             #holonomic
+            #all
+        }
+    }
+
+    /// `residual_blocks_dtheta_all`: every parameter's derivatives, into `out[k]`, in one
+    /// schedule (nothing for a model without parameters: the trait's loop does nothing).
+    fn all_parameters(&self, b: &Blocks) -> TokenStream {
+        if b.dtheta.is_empty() {
+            return TokenStream::new();
+        }
+        let assigns: Vec<Assign> = b
+            .dtheta
+            .iter()
+            .enumerate()
+            .flat_map(|(k, d)| {
+                let k = Literal::usize_unsuffixed(k);
+                let mut assigns = vector(&quote! { out[#k].momentum_rate }, &d.momentum_rate);
+                assigns.extend(vector(&quote! { out[#k].dl_dv }, &d.dl_dv));
+                assigns.extend(vector(&quote! { out[#k].constraint_velocity }, &d.a_v));
+                assigns
+            })
+            .collect();
+        let header = RESIDUAL_BLOCKS_DTHETA_ALL.header(|arg| self.uses(&assigns, arg), !assigns.is_empty());
+        let body = emit(&self.model.graph, &assigns, &|s| self.leaf(s, false));
+        quote! {
+            #[inline]
+            #header {
+                #body
+            }
         }
     }
 

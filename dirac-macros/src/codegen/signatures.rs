@@ -52,6 +52,8 @@ pub enum Out {
     MatQQ,
     MatCQ,
     ResidualBlocks,
+    /// One `ResidualBlocks` per parameter, `&mut [ResidualBlocks<Self>]`.
+    ResidualBlocksEach,
     JacobianBlocks,
     VecY,
     MatYY,
@@ -120,6 +122,10 @@ pub const EVENTS: Signature = method("events", &[T, Q, V, Lambda], Out::Values);
 pub const RESIDUAL_BLOCKS_DTHETA: Signature =
     method("residual_blocks_dtheta", &[K, T, Q, V, Lambda], Out::ResidualBlocks);
 pub const HOLONOMIC_DTHETA: Signature = method("holonomic_dtheta", &[K, T, Q], Out::VecH);
+/// The derivatives with respect to every parameter at once; emitted for primitive models with
+/// parameters (the trait provides it from the one above for the others).
+pub const RESIDUAL_BLOCKS_DTHETA_ALL: Signature =
+    method("residual_blocks_dtheta_all", &[T, Q, V, Lambda], Out::ResidualBlocksEach);
 
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 19] = [
@@ -171,6 +177,7 @@ impl Out {
             Out::MatQQ => quote! { #p::MatQQ<#model> },
             Out::MatCQ => quote! { #p::MatCQ<#model> },
             Out::ResidualBlocks => quote! { #p::ResidualBlocks<#model> },
+            Out::ResidualBlocksEach => quote! { [#p::ResidualBlocks<#model>] },
             Out::JacobianBlocks => {
                 quote! { #p::JacobianBlocks<#model, <#model as #p::LagrangeDirac>::Algebra> }
             }

@@ -193,7 +193,7 @@ fn subsystem_part(sig: &Signature, field: &syn::Ident, ty: &syn::Type, i: usize)
             }
             (quote! { #p::JacobianBlocks::<#ty>::zeros() }, s)
         }
-        Out::Scalar | Out::VecY | Out::MatYY | Out::Values => {
+        Out::Scalar | Out::VecY | Out::MatYY | Out::Values | Out::ResidualBlocksEach => {
             unreachable!("not a block written by subsystems")
         }
     };

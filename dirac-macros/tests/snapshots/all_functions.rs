@@ -739,6 +739,45 @@ const _: () = {
                 }
             }
         }
+        #[inline]
+        fn residual_blocks_dtheta_all(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            let s0 = q[0].sin();
+            let s1 = q[2].powi(2) + 1f64;
+            let s2 = s1.powi(-1);
+            let s3 = q[1].powi(2);
+            let s4 = q[0].powi(2);
+            let s5 = s3 + 2f64;
+            let s6 = 0.5f64 * q[2];
+            let s7 = (s4 + s5.powi(2)).powi(-1);
+            let s8 = (q[0] * q[1]).cosh();
+            out[0].momentum_rate[0usize] = 0.25f64 * s0 * v[0].powi(2) * q[0].cos();
+            out[0].momentum_rate[1usize] = 0f64;
+            out[0].momentum_rate[2usize] = -q[2] * v[1].powi(2) / s1.powi(2);
+            out[0].dl_dv[0usize] = v[0] * (0.25f64 * s0.powi(2) + 1f64);
+            out[0].dl_dv[1usize] = v[1] * s2;
+            out[0].dl_dv[2usize] = 0f64;
+            out[0].constraint_velocity[0usize] = 0f64;
+            out[0].constraint_velocity[1usize] = 0f64;
+            out[1].momentum_rate[0usize] = s5 * s7 - v[0] * (0.5f64 * t).cos()
+                - (-s0 + 2f64 * q[0] / (s4 + 1f64)) + 0.1f64 * q[1] * s8;
+            out[1].momentum_rate[1usize] = -2f64 * q[0] * q[1] * s7
+                - (0.1f64 * q[1].exp() + q[1] / (s3 + 1f64).sqrt()) + 0.1f64 * q[0] * s8;
+            out[1].momentum_rate[2usize] = s2 + 0.5f64 * (s6.tan().powi(2) + 1f64)
+                + 0.5f64 * s6.sinh() - v[2].powi(3)
+                - 12.566370614359172f64 * q[2] / s1.powi(3);
+            out[1].dl_dv[0usize] = 0f64;
+            out[1].dl_dv[1usize] = 0f64;
+            out[1].dl_dv[2usize] = 0f64;
+            out[1].constraint_velocity[0usize] = 0f64;
+            out[1].constraint_velocity[1usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -385,6 +385,27 @@ const _: () = {
                 }
             }
         }
+        #[inline]
+        fn residual_blocks_dtheta_all(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            let s0 = self.w * t;
+            out[0].momentum_rate[0usize] = 0f64;
+            out[0].dl_dv[0usize] = v[0];
+            out[1].momentum_rate[0usize] = -q[0];
+            out[1].dl_dv[0usize] = 0f64;
+            out[2].momentum_rate[0usize] = -v[0];
+            out[2].dl_dv[0usize] = 0f64;
+            out[3].momentum_rate[0usize] = s0.sin();
+            out[3].dl_dv[0usize] = 0f64;
+            out[4].momentum_rate[0usize] = self.a * t * s0.cos();
+            out[4].dl_dv[0usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -511,6 +511,41 @@ const _: () = {
                 }
             }
         }
+        #[inline]
+        fn residual_blocks_dtheta_all(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            out[0].momentum_rate[0usize] = 0f64;
+            out[0].momentum_rate[1usize] = -self.g;
+            out[0].dl_dv[0usize] = v[0];
+            out[0].dl_dv[1usize] = v[1];
+            out[0].constraint_velocity[0usize] = 0f64;
+            out[1].momentum_rate[0usize] = 0f64;
+            out[1].momentum_rate[1usize] = -self.m;
+            out[1].dl_dv[0usize] = 0f64;
+            out[1].dl_dv[1usize] = 0f64;
+            out[1].constraint_velocity[0usize] = 0f64;
+            out[2].momentum_rate[0usize] = 0f64;
+            out[2].momentum_rate[1usize] = 0f64;
+            out[2].dl_dv[0usize] = 0f64;
+            out[2].dl_dv[1usize] = 0f64;
+            out[2].constraint_velocity[0usize] = 0f64;
+            out[3].momentum_rate[0usize] = 0f64;
+            out[3].momentum_rate[1usize] = 0f64;
+            out[3].dl_dv[0usize] = 0f64;
+            out[3].dl_dv[1usize] = 0f64;
+            out[3].constraint_velocity[0usize] = 0f64;
+            out[4].momentum_rate[0usize] = 0f64;
+            out[4].momentum_rate[1usize] = 0f64;
+            out[4].dl_dv[0usize] = 0f64;
+            out[4].dl_dv[1usize] = 0f64;
+            out[4].constraint_velocity[0usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
@@ -1261,6 +1296,72 @@ const _: () = {
                     ::core::panic!("the model has no parameter {}: it has {}", k, 6usize)
                 }
             }
+        }
+        #[inline]
+        fn residual_blocks_dtheta_all(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            let s0 = self.l.powi(-1);
+            let s1 = q[1] * s0;
+            let s2 = s1.cos();
+            let s3 = s1.sin();
+            let s4 = self.l.powi(-2);
+            let s5 = self.l.powi(-3);
+            out[0].momentum_rate[0usize] = 0f64;
+            out[0].momentum_rate[1usize] = -self.g;
+            out[0].momentum_rate[2usize] = 0f64;
+            out[0].dl_dv[0usize] = v[0];
+            out[0].dl_dv[1usize] = v[1];
+            out[0].dl_dv[2usize] = 0f64;
+            out[0].constraint_velocity[0usize] = 0f64;
+            out[0].constraint_velocity[1usize] = 0f64;
+            out[1].momentum_rate[0usize] = 0f64;
+            out[1].momentum_rate[1usize] = -self.m;
+            out[1].momentum_rate[2usize] = 0f64;
+            out[1].dl_dv[0usize] = 0f64;
+            out[1].dl_dv[1usize] = 0f64;
+            out[1].dl_dv[2usize] = 0f64;
+            out[1].constraint_velocity[0usize] = 0f64;
+            out[1].constraint_velocity[1usize] = 0f64;
+            out[2].momentum_rate[0usize] = 0f64;
+            out[2].momentum_rate[1usize] = -self.w * self.wall_closed * s3 * lambda[1]
+                * s4 - self.w * self.wall_closed * q[1] * s2 * lambda[1] * s5;
+            out[2].momentum_rate[2usize] = 0f64;
+            out[2].dl_dv[0usize] = 0f64;
+            out[2].dl_dv[1usize] = 0f64;
+            out[2].dl_dv[2usize] = 0f64;
+            out[2].constraint_velocity[0usize] = 0f64;
+            out[2].constraint_velocity[1usize] = -self.w * self.wall_closed * v[1] * s3
+                * s4 - self.w * self.wall_closed * q[1] * v[1] * s2 * s5;
+            out[3].momentum_rate[0usize] = 0f64;
+            out[3].momentum_rate[1usize] = 0f64;
+            out[3].momentum_rate[2usize] = 0f64;
+            out[3].dl_dv[0usize] = 0f64;
+            out[3].dl_dv[1usize] = 0f64;
+            out[3].dl_dv[2usize] = 0f64;
+            out[3].constraint_velocity[0usize] = 0f64;
+            out[3].constraint_velocity[1usize] = 0f64;
+            out[4].momentum_rate[0usize] = 0f64;
+            out[4].momentum_rate[1usize] = self.wall_closed * s0 * s3 * lambda[1];
+            out[4].momentum_rate[2usize] = 0f64;
+            out[4].dl_dv[0usize] = 0f64;
+            out[4].dl_dv[1usize] = 0f64;
+            out[4].dl_dv[2usize] = 0f64;
+            out[4].constraint_velocity[0usize] = 0f64;
+            out[4].constraint_velocity[1usize] = self.wall_closed * v[1] * s0 * s3;
+            out[5].momentum_rate[0usize] = lambda[1];
+            out[5].momentum_rate[1usize] = self.w * s0 * s3 * lambda[1];
+            out[5].momentum_rate[2usize] = -lambda[1];
+            out[5].dl_dv[0usize] = 0f64;
+            out[5].dl_dv[1usize] = 0f64;
+            out[5].dl_dv[2usize] = 0f64;
+            out[5].constraint_velocity[0usize] = 0f64;
+            out[5].constraint_velocity[1usize] = v[0] - v[2] + self.w * v[1] * s0 * s3;
         }
     }
     #[automatically_derived]

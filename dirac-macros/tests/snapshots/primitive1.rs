@@ -408,6 +408,34 @@ const _: () = {
                 }
             }
         }
+        #[inline]
+        fn residual_blocks_dtheta_all(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            let s0 = -q[0];
+            let s1 = q[1] + s0;
+            out[0].momentum_rate[0usize] = 0f64;
+            out[0].momentum_rate[1usize] = 0f64;
+            out[0].dl_dv[0usize] = v[0];
+            out[0].dl_dv[1usize] = 0f64;
+            out[1].momentum_rate[0usize] = 0f64;
+            out[1].momentum_rate[1usize] = 0f64;
+            out[1].dl_dv[0usize] = 0f64;
+            out[1].dl_dv[1usize] = v[1];
+            out[2].momentum_rate[0usize] = s0;
+            out[2].momentum_rate[1usize] = 0f64;
+            out[2].dl_dv[0usize] = 0f64;
+            out[2].dl_dv[1usize] = 0f64;
+            out[3].momentum_rate[0usize] = s1;
+            out[3].momentum_rate[1usize] = -s1;
+            out[3].dl_dv[0usize] = 0f64;
+            out[3].dl_dv[1usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -502,6 +502,58 @@ const _: () = {
                 }
             }
         }
+        #[inline]
+        fn residual_blocks_dtheta_all(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            let s0 = q[3].cos();
+            let s1 = q[3].sin();
+            out[0].momentum_rate[0usize] = 0f64;
+            out[0].momentum_rate[1usize] = 0f64;
+            out[0].momentum_rate[2usize] = 0f64;
+            out[0].momentum_rate[3usize] = 0f64;
+            out[0].dl_dv[0usize] = v[0];
+            out[0].dl_dv[1usize] = v[1];
+            out[0].dl_dv[2usize] = 0f64;
+            out[0].dl_dv[3usize] = 0f64;
+            out[0].constraint_velocity[0usize] = 0f64;
+            out[0].constraint_velocity[1usize] = 0f64;
+            out[1].momentum_rate[0usize] = 0f64;
+            out[1].momentum_rate[1usize] = 0f64;
+            out[1].momentum_rate[2usize] = -s0 * lambda[0] - s1 * lambda[1];
+            out[1].momentum_rate[3usize] = 0f64;
+            out[1].dl_dv[0usize] = 0f64;
+            out[1].dl_dv[1usize] = 0f64;
+            out[1].dl_dv[2usize] = 0f64;
+            out[1].dl_dv[3usize] = 0f64;
+            out[1].constraint_velocity[0usize] = -v[2] * s0;
+            out[1].constraint_velocity[1usize] = -v[2] * s1;
+            out[2].momentum_rate[0usize] = 0f64;
+            out[2].momentum_rate[1usize] = 0f64;
+            out[2].momentum_rate[2usize] = 0f64;
+            out[2].momentum_rate[3usize] = 0f64;
+            out[2].dl_dv[0usize] = 0f64;
+            out[2].dl_dv[1usize] = 0f64;
+            out[2].dl_dv[2usize] = v[2];
+            out[2].dl_dv[3usize] = 0f64;
+            out[2].constraint_velocity[0usize] = 0f64;
+            out[2].constraint_velocity[1usize] = 0f64;
+            out[3].momentum_rate[0usize] = 0f64;
+            out[3].momentum_rate[1usize] = 0f64;
+            out[3].momentum_rate[2usize] = 0f64;
+            out[3].momentum_rate[3usize] = 0f64;
+            out[3].dl_dv[0usize] = 0f64;
+            out[3].dl_dv[1usize] = 0f64;
+            out[3].dl_dv[2usize] = 0f64;
+            out[3].dl_dv[3usize] = v[3];
+            out[3].constraint_velocity[0usize] = 0f64;
+            out[3].constraint_velocity[1usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

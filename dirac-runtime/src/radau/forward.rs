@@ -70,6 +70,9 @@ where
     jac0: JacobianBlocks<M, M::Algebra>,
     state: State<M>,
     blocks: ResidualBlocks<M>,
+    /// Every parameter's `∂f/∂θ` blocks, evaluated together where at least half of the
+    /// model's parameters (and two or more) are asked for; empty where each is evaluated alone.
+    all: Vec<ResidualBlocks<M>>,
     /// Whether the sensitivities' errors count in the step-size control.
     pub error_control: bool,
     /// Whether the sensitivities' multipliers at the step's start are known: not at the start
@@ -188,6 +191,14 @@ where
             layout: Layout::new(sizes),
         };
         let coupled = Coupled::new(&work.layout);
+        let asked = wrt.iter().filter(|w| matches!(w, Wrt::Parameter(_))).count();
+        let count = M::NAMES.parameter_count();
+        let together = asked >= 2 && 2 * asked >= count;
+        let all = if together {
+            (0..count).map(|_| ResidualBlocks::with_sizes(&sizes)).collect()
+        } else {
+            Vec::new()
+        };
         Forward {
             columns,
             work,
@@ -195,6 +206,7 @@ where
             jac0: jac(),
             state: State::with_sizes(sizes),
             blocks: ResidualBlocks::with_sizes(&sizes),
+            all,
             error_control,
             multipliers_known: false,
             iterations: 0,
@@ -259,13 +271,9 @@ where
         self.state.read_y(y);
         let s = &self.state;
         model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac0);
-        for c in &mut self.columns {
-            if let Wrt::Parameter(k) = c.wrt {
-                let s = &self.state;
-                model.residual_blocks_dtheta(k, t, &s.q, &s.v, &s.lambda, &mut self.blocks);
-                flat_dtheta(&self.work.layout, &self.blocks, &mut c.g0);
-            }
-        }
+        let mut derivatives =
+            Derivatives { layout: &self.work.layout, blocks: &mut self.blocks, all: &mut self.all };
+        derivatives.write(model.get(), t, s, &mut self.columns, |c| &mut c.g0);
     }
 
     /// Evaluates the Jacobians and the parameter derivatives at the step's stages.
@@ -279,12 +287,9 @@ where
             self.state.read_y(&w.tmp);
             let s = &self.state;
             model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut w.jac[k]);
-            for c in &mut self.columns {
-                if let Wrt::Parameter(p) = c.wrt {
-                    model.residual_blocks_dtheta(p, t, &s.q, &s.v, &s.lambda, &mut self.blocks);
-                    flat_dtheta(&w.layout, &self.blocks, &mut c.g[k]);
-                }
-            }
+            let mut derivatives =
+                Derivatives { layout: &w.layout, blocks: &mut self.blocks, all: &mut self.all };
+            derivatives.write(model.get(), t, s, &mut self.columns, |c| &mut c.g[k]);
         }
     }
 
@@ -499,6 +504,47 @@ where
             }
         }
         Err(None)
+    }
+}
+
+/// Where the parameters' derivatives are evaluated: one block at a time, or all together.
+struct Derivatives<'a, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    layout: &'a Layout,
+    blocks: &'a mut ResidualBlocks<M>,
+    /// Every parameter's blocks, or empty to evaluate each column's alone.
+    all: &'a mut [ResidualBlocks<M>],
+}
+
+impl<M: LagrangeDirac> Derivatives<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Writes each parameter column's flat `∂f/∂θ` at `(t, s)` into `slot(column)`.
+    fn write(
+        &mut self,
+        model: &M,
+        t: f64,
+        s: &State<M>,
+        columns: &mut [Column<M>],
+        slot: impl Fn(&mut Column<M>) -> &mut VecY<M>,
+    ) {
+        if !self.all.is_empty() {
+            model.residual_blocks_dtheta_all(t, &s.q, &s.v, &s.lambda, self.all);
+        }
+        for c in columns {
+            if let Wrt::Parameter(p) = c.wrt {
+                let blocks = if self.all.is_empty() {
+                    model.residual_blocks_dtheta(p, t, &s.q, &s.v, &s.lambda, self.blocks);
+                    &*self.blocks
+                } else {
+                    &self.all[p]
+                };
+                flat_dtheta(self.layout, blocks, slot(c));
+            }
+        }
     }
 }
 

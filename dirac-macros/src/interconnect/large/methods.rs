@@ -135,7 +135,9 @@ impl Large<'_> {
                 }
                 (quote! { #p::JacobianBlocks::<#ty>::zeros() }, w)
             }
-            Out::VecY | Out::MatYY | Out::Values => unreachable!("not a block written by subsystems"),
+            Out::VecY | Out::MatYY | Out::Values | Out::ResidualBlocksEach => {
+                unreachable!("not a block written by subsystems")
+            }
         };
         let body = quote! {
             let mut o = #zeros;
