@@ -77,14 +77,7 @@ where
                 ),
             });
         }
-        let mut columns = Vec::new();
-        for _ in 0..names.len() {
-            let mut column = Vec::new();
-            column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
-                reason: format!("no memory for {expected:e} samples of {} series", names.len()),
-            })?;
-            columns.push(column);
-        }
+        let columns = reserved_columns(names.len(), expected)?;
         let (sizes, shape) = (model.sizes(), model.shape());
         let scratch = Scratch {
             a: M::Algebra::zeros_cq(&shape),
@@ -114,7 +107,7 @@ where
 
     /// Checks that `series` more series (sensitivities) at the same samples stay within what a
     /// solution may hold.
-    pub fn check_extra_series(&self, series: usize) -> Result<(), SimError> {
+    fn check_extra_series(&self, series: usize) -> Result<(), SimError> {
         let values = self.expected * (self.names.len() + series) as f64;
         if values > MAX_VALUES {
             return Err(SimError::InvalidSampling {
@@ -128,6 +121,17 @@ where
             });
         }
         Ok(())
+    }
+
+    /// Room for `series` more values (sensitivities) at each sample expected, after checking
+    /// that they stay within what a solution may hold.
+    pub fn extra_series(&self, series: usize) -> Result<Vec<f64>, SimError> {
+        self.check_extra_series(series)?;
+        let mut values = Vec::new();
+        values.try_reserve_exact(self.expected as usize * series).map_err(|_| SimError::InvalidSampling {
+            reason: format!("no memory for {:e} samples of {series} sensitivity series", self.expected),
+        })?;
+        Ok(values)
     }
 
     /// The number of samples recorded.
@@ -249,6 +253,20 @@ where
             Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats);
         Ok(solution.with_events(self.events, self.event_names).with_impacts(self.impacts, self.contact_names))
     }
+}
+
+/// `count` empty columns with room for `expected` samples each, so that recording does not
+/// reallocate; a typed error if the memory is not there.
+fn reserved_columns(count: usize, expected: f64) -> Result<Vec<Vec<f64>>, SimError> {
+    let mut columns = Vec::new();
+    for _ in 0..count {
+        let mut column = Vec::new();
+        column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
+            reason: format!("no memory for {expected:e} samples of {count} series"),
+        })?;
+        columns.push(column);
+    }
+    Ok(columns)
 }
 
 /// The recorded columns, and the storage their derived quantities are computed in.

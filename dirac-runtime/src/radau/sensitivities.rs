@@ -129,20 +129,18 @@ where
         let layout = crate::layout::Layout::new(self.model.sizes());
         let len = layout.len;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
-        recorder.check_extra_series(count * len)?;
-        let mut columns: Vec<Vec<f64>> = vec![Vec::new(); count * len];
+        // Recorded sample by sample, each sample's values side by side (contiguous writes), and
+        // turned into one column per value at the end.
+        let series = count * len;
+        let mut rows = recorder.extra_series(series)?;
         let mut buffer = State::<M>::with_sizes(self.model.sizes());
         self.start(t0, state, t_end)?;
         recorder.record_initial(self.model(), t0, self.state());
-        let push = |columns: &mut Vec<Vec<f64>>, j: usize, s: &State<M>| {
-            for (i, x) in s.components().enumerate() {
-                columns[j * len + i].push(*x);
-            }
-        };
-        for j in 0..count {
-            self.sensitivity(j, &mut buffer);
-            if recorder.len() > 0 {
-                push(&mut columns, j, &buffer);
+        let push = |rows: &mut Vec<f64>, s: &State<M>| rows.extend(s.components());
+        if recorder.len() > 0 {
+            for j in 0..count {
+                self.sensitivity(j, &mut buffer);
+                push(&mut rows, &buffer);
             }
         }
         let mut first = true;
@@ -156,9 +154,7 @@ where
                 for j in 0..count {
                     buffer.read_y(forward.value(j));
                     forward.multipliers_at_start(j, &mut buffer);
-                    for i in layout.lambda..layout.len {
-                        columns[j * len + i][0] = buffer.lambda[i - layout.lambda];
-                    }
+                    rows[j * len + layout.lambda..(j + 1) * len].copy_from_slice(buffer.lambda.as_slice());
                 }
             }
             first = false;
@@ -170,10 +166,12 @@ where
                     } else {
                         self.interpolate_sensitivity(j, ts, &mut buffer);
                     }
-                    push(&mut columns, j, &buffer);
+                    push(&mut rows, &buffer);
                 }
             }
         }
+        let samples = recorder.len();
+        let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
         let solution = recorder.finish(self.stats())?;
         Ok(solution.with_sensitivities(self.sensitivity_names.clone(), columns))
     }
