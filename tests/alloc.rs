@@ -450,13 +450,14 @@ fn watching_resting_contacts_does_not_allocate() {
 
 /// Steps a Radau integration with forward sensitivities (`wrt`) 200 times after 5 warm-up
 /// steps, reading each sensitivity and interpolating it within the step, and returns the
-/// allocations during the 200.
+/// allocations during the 200 and how many of them solved the sensitivities with the stages'
+/// coupled system.
 fn allocations_with_sensitivities<M: LagrangeDirac>(
     model: &M,
     start: &State<M>,
     wrt: &Sensitivities<M>,
     error_control: bool,
-) -> usize
+) -> (usize, usize)
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
@@ -468,6 +469,7 @@ where
     for _ in 0..5 {
         radau.step().expect("steps");
     }
+    let coupled = radau.stats().coupled_sensitivity_steps;
     let before = allocations();
     for _ in 0..200 {
         let h = radau.step().expect("steps");
@@ -476,7 +478,8 @@ where
             assert!(radau.interpolate_sensitivity(j, radau.t() - 0.5 * h, &mut s));
         }
     }
-    allocations() - before
+    let allocated = allocations() - before;
+    (allocated, radau.stats().coupled_sensitivity_steps - coupled)
 }
 
 #[test]
@@ -484,19 +487,23 @@ fn steps_with_sensitivities_do_not_allocate() {
     let p = unit_pendulum();
     let wrt = Sensitivities::all_parameters(&p).initial_position(Pendulum::X).initial_velocity(Pendulum::Y);
     for error_control in [false, true] {
-        let n = allocations_with_sensitivities(&p, &horizontal_start(&p), &wrt, error_control);
+        let (n, coupled) = allocations_with_sensitivities(&p, &horizontal_start(&p), &wrt, error_control);
         assert_eq!(n, 0, "pendulum, error control {error_control}");
+        // The path for small nonlinear models was among those counted.
+        assert!(coupled > 0, "pendulum: no step solved the stages' coupled system");
     }
     let chain = paper_chain();
     let wrt = Sensitivities::all_parameters(&chain).initial_position(Chain::left(Primitive1::X1));
-    let n = allocations_with_sensitivities(&chain, &paper_chain_start(&chain), &wrt, true);
+    let (n, _) = allocations_with_sensitivities(&chain, &paper_chain_start(&chain), &wrt, true);
     assert_eq!(n, 0, "interconnected chain");
     let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
     let v = VecQ::<RollingDisk>::new(0.6, 0.0, 2.0, 1.0);
     let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
         .expect("consistent");
     let wrt = Sensitivities::all_parameters(&disk);
-    assert_eq!(allocations_with_sensitivities(&disk, &start, &wrt, false), 0, "rolling disk");
+    let (n, coupled) = allocations_with_sensitivities(&disk, &start, &wrt, false);
+    assert_eq!(n, 0, "rolling disk");
+    assert!(coupled > 0, "rolling disk: no step solved the stages' coupled system");
     // A model made of an array of cells: stored sparse and factored by a sparse LU.
     let ladder = unit_ladder(20);
     let start = ladder_at_rest(&ladder, &pulse(20));
@@ -504,7 +511,7 @@ fn steps_with_sensitivities_do_not_allocate() {
         .initial_position(ladder.cells(5, zoo::Cell::B))
         .initial_velocity(ladder.cells(6, zoo::Cell::A));
     for error_control in [false, true] {
-        let n = allocations_with_sensitivities(&ladder, &start, &wrt, error_control);
+        let (n, _) = allocations_with_sensitivities(&ladder, &start, &wrt, error_control);
         assert_eq!(n, 0, "ladder (sparse), error control {error_control}");
     }
 }

@@ -80,6 +80,8 @@ where
     multipliers_known: bool,
     /// Linear iterations of the sensitivity stage systems, over all columns.
     pub iterations: usize,
+    /// Steps solved with the coupled system.
+    pub coupled_steps: usize,
 }
 
 /// What solving one sensitivity's stage system works with: the stage Jacobians, shared by all
@@ -210,6 +212,7 @@ where
             error_control,
             multipliers_known: false,
             iterations: 0,
+            coupled_steps: 0,
         }
     }
 
@@ -326,6 +329,7 @@ where
             _ => None,
         };
         let iterated = !iteration.exact && coupled.is_none();
+        self.coupled_steps += usize::from(coupled.is_some());
         for (column, c) in self.columns.iter_mut().enumerate() {
             if iterated || estimated {
                 weights_of(&c.s, &mut w.weights);

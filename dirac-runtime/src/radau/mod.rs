@@ -363,7 +363,7 @@ where
         stats.jacobian_evaluations += 3;
         let h = *h;
         let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
-        let before = forward.iterations;
+        let (before, coupled_before) = (forward.iterations, forward.coupled_steps);
         let iteration = Iteration {
             fnewt: tolerances.fnewt,
             max_iterations: 4 * options.max_newton_iterations,
@@ -374,6 +374,7 @@ where
         };
         let result = forward.solve(solver, eig, h, &iteration, &weights);
         stats.sensitivity_iterations += forward.iterations - before;
+        stats.coupled_sensitivity_steps += forward.coupled_steps - coupled_before;
         result
     }
 

@@ -129,6 +129,10 @@ pub struct RadauStats {
     pub newton_iterations: usize,
     /// Linear iterations of the forward sensitivities' stage systems, over all sensitivities.
     pub sensitivity_iterations: usize,
+    /// Step attempts whose sensitivities were solved with the three stages' coupled system,
+    /// factored once for all of them (small nonlinear models; each sensitivity then counts one
+    /// linear iteration).
+    pub coupled_sensitivity_steps: usize,
 }
 
 /// The tolerances as the error estimate and the Newton iteration use them: Hairer's
