@@ -384,6 +384,15 @@ mod tests {
         }
     }
 
+    /// Without inertia, forces or constraint rows the stage system has no unknown to solve
+    /// for: the factorisation says so (and the sensitivities then iterate instead).
+    #[test]
+    fn a_singular_coupled_system_is_reported() {
+        let zero = || JacobianBlocks::<Three, Dense>::with_shape(&SIZES);
+        let mut coupled = Coupled::new(&Layout::new(SIZES)).expect("small enough");
+        assert!(coupled.factor(&[zero(), zero(), zero()], 0.1).is_err());
+    }
+
     #[test]
     fn models_too_large_are_left_to_the_iteration() {
         let sizes = Sizes { nq: 6, nc: 3, nh: 0 };
