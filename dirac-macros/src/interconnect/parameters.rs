@@ -1,7 +1,8 @@
 //! A composite's parameter methods: each parameter index dispatched to the subsystem that owns
 //! it (its derivative blocks computed on its part of the arguments and scattered into the
 //! composite's), or to the composite's own `f64` fields, whose derivatives are those of the
-//! interconnection rows and their forces.
+//! interconnection rows and their forces. All parameters at once: each subsystem's together
+//! (sharing what its parameters' derivatives share), the composite's own one by one.
 
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
@@ -11,7 +12,8 @@ use super::emit::Own;
 use super::items::parameter_offset;
 use crate::codegen::signatures::rt;
 
-/// `parameter_value`, `set_parameter_value`, `residual_blocks_dtheta` and `holonomic_dtheta`.
+/// `parameter_value`, `set_parameter_value`, `residual_blocks_dtheta`,
+/// `residual_blocks_dtheta_all` and `holonomic_dtheta`.
 pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
     let p = rt();
     let own_start = parameter_offset(composite, composite.subsystems.len());
@@ -57,6 +59,40 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
             #p::scatter_q::<#ty, Self>(&o.dl_dv, &#slot, &mut out.dl_dv);
             #p::scatter_c::<#ty, Self>(&o.constraint_velocity, &#slot, &mut out.constraint_velocity);
             return;
+        }
+    });
+    let together = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (start, ty, field) = (parameter_offset(composite, i), &s.ty, &s.ident);
+        let slot = format_ident!("__SLOT{}", i);
+        quote! {{
+            const COUNT: ::core::primitive::usize = <#ty as #p::Named>::NAMES.parameter_count();
+            let start = #start;
+            let mut each: [#p::ResidualBlocks<#ty>; COUNT] =
+                ::core::array::from_fn(|_| #p::ResidualBlocks::<#ty>::zeros());
+            self.#field.residual_blocks_dtheta_all(
+                t,
+                &#p::gather_q::<#ty, Self>(q, &#slot),
+                &#p::gather_q::<#ty, Self>(v, &#slot),
+                &#p::gather_c::<#ty, Self>(lambda, &#slot),
+                &mut each,
+            );
+            for j in 0..COUNT {
+                let (o, out) = (&each[j], &mut out[start + j]);
+                out.momentum_rate.fill(0.0);
+                out.dl_dv.fill(0.0);
+                out.constraint_velocity.fill(0.0);
+                #p::scatter_q::<#ty, Self>(&o.momentum_rate, &#slot, &mut out.momentum_rate);
+                #p::scatter_q::<#ty, Self>(&o.dl_dv, &#slot, &mut out.dl_dv);
+                #p::scatter_c::<#ty, Self>(&o.constraint_velocity, &#slot, &mut out.constraint_velocity);
+            }
+        }}
+    });
+    // The composite's own parameters one at a time (none: no loop, which lints would flag).
+    let own_each = (own_count > 0).then(|| {
+        quote! {
+            for j in 0..#own_count {
+                self.residual_blocks_dtheta(#own_start + j, t, q, v, lambda, &mut out[#own_start + j]);
+            }
         }
     });
     let holonomic = dispatch(&|field, ty, i| {
@@ -108,6 +144,17 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
                 #(#own_arms)*
                 _ => #panic,
             }
+        }
+        fn residual_blocks_dtheta_all(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            lambda: &#p::VecC<Self>,
+            out: &mut [#p::ResidualBlocks<Self>],
+        ) {
+            #(#together)*
+            #own_each
         }
         #[allow(unused_variables)]
         fn holonomic_dtheta(

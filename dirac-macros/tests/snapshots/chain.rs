@@ -2091,6 +2091,90 @@ const _: () = {
                 }
             }
         }
+        fn residual_blocks_dtheta_all(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            {
+                const COUNT: ::core::primitive::usize = <Primitive1 as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0;
+                let mut each: [::dirac::__private::ResidualBlocks<Primitive1>; COUNT] = ::core::array::from_fn(|
+                    _|
+                ::dirac::__private::ResidualBlocks::<Primitive1>::zeros());
+                self.left
+                    .residual_blocks_dtheta_all(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut each,
+                    );
+                for j in 0..COUNT {
+                    let (o, out) = (&each[j], &mut out[start + j]);
+                    out.momentum_rate.fill(0.0);
+                    out.dl_dv.fill(0.0);
+                    out.constraint_velocity.fill(0.0);
+                    ::dirac::__private::scatter_q::<
+                        Primitive1,
+                        Self,
+                    >(&o.momentum_rate, &__SLOT0, &mut out.momentum_rate);
+                    ::dirac::__private::scatter_q::<
+                        Primitive1,
+                        Self,
+                    >(&o.dl_dv, &__SLOT0, &mut out.dl_dv);
+                    ::dirac::__private::scatter_c::<
+                        Primitive1,
+                        Self,
+                    >(&o.constraint_velocity, &__SLOT0, &mut out.constraint_velocity);
+                }
+            }
+            {
+                const COUNT: ::core::primitive::usize = <Primitive2 as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0
+                    + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+                let mut each: [::dirac::__private::ResidualBlocks<Primitive2>; COUNT] = ::core::array::from_fn(|
+                    _|
+                ::dirac::__private::ResidualBlocks::<Primitive2>::zeros());
+                self.right
+                    .residual_blocks_dtheta_all(
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut each,
+                    );
+                for j in 0..COUNT {
+                    let (o, out) = (&each[j], &mut out[start + j]);
+                    out.momentum_rate.fill(0.0);
+                    out.dl_dv.fill(0.0);
+                    out.constraint_velocity.fill(0.0);
+                    ::dirac::__private::scatter_q::<
+                        Primitive2,
+                        Self,
+                    >(&o.momentum_rate, &__SLOT1, &mut out.momentum_rate);
+                    ::dirac::__private::scatter_q::<
+                        Primitive2,
+                        Self,
+                    >(&o.dl_dv, &__SLOT1, &mut out.dl_dv);
+                    ::dirac::__private::scatter_c::<
+                        Primitive2,
+                        Self,
+                    >(&o.constraint_velocity, &__SLOT1, &mut out.constraint_velocity);
+                }
+            }
+        }
         #[allow(unused_variables)]
         fn holonomic_dtheta(
             &self,

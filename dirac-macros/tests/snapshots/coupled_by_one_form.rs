@@ -2167,6 +2167,99 @@ const _: () = {
                 }
             }
         }
+        fn residual_blocks_dtheta_all(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::dirac::__private::ResidualBlocks<Self>],
+        ) {
+            {
+                const COUNT: ::core::primitive::usize = <Wheel as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0;
+                let mut each: [::dirac::__private::ResidualBlocks<Wheel>; COUNT] = ::core::array::from_fn(|
+                    _|
+                ::dirac::__private::ResidualBlocks::<Wheel>::zeros());
+                self.wheel
+                    .residual_blocks_dtheta_all(
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut each,
+                    );
+                for j in 0..COUNT {
+                    let (o, out) = (&each[j], &mut out[start + j]);
+                    out.momentum_rate.fill(0.0);
+                    out.dl_dv.fill(0.0);
+                    out.constraint_velocity.fill(0.0);
+                    ::dirac::__private::scatter_q::<
+                        Wheel,
+                        Self,
+                    >(&o.momentum_rate, &__SLOT0, &mut out.momentum_rate);
+                    ::dirac::__private::scatter_q::<
+                        Wheel,
+                        Self,
+                    >(&o.dl_dv, &__SLOT0, &mut out.dl_dv);
+                    ::dirac::__private::scatter_c::<
+                        Wheel,
+                        Self,
+                    >(&o.constraint_velocity, &__SLOT0, &mut out.constraint_velocity);
+                }
+            }
+            {
+                const COUNT: ::core::primitive::usize = <Cart as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0
+                    + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+                let mut each: [::dirac::__private::ResidualBlocks<Cart>; COUNT] = ::core::array::from_fn(|
+                    _|
+                ::dirac::__private::ResidualBlocks::<Cart>::zeros());
+                self.cart
+                    .residual_blocks_dtheta_all(
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut each,
+                    );
+                for j in 0..COUNT {
+                    let (o, out) = (&each[j], &mut out[start + j]);
+                    out.momentum_rate.fill(0.0);
+                    out.dl_dv.fill(0.0);
+                    out.constraint_velocity.fill(0.0);
+                    ::dirac::__private::scatter_q::<
+                        Cart,
+                        Self,
+                    >(&o.momentum_rate, &__SLOT1, &mut out.momentum_rate);
+                    ::dirac::__private::scatter_q::<
+                        Cart,
+                        Self,
+                    >(&o.dl_dv, &__SLOT1, &mut out.dl_dv);
+                    ::dirac::__private::scatter_c::<
+                        Cart,
+                        Self,
+                    >(&o.constraint_velocity, &__SLOT1, &mut out.constraint_velocity);
+                }
+            }
+            for j in 0..1usize {
+                self.residual_blocks_dtheta(
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + j,
+                    t,
+                    q,
+                    v,
+                    lambda,
+                    &mut out[0
+                        + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + j],
+                );
+            }
+        }
         #[allow(unused_variables)]
         fn holonomic_dtheta(
             &self,
