@@ -97,7 +97,7 @@ where
 
     /// Solves `A x = b` in place with the factors, for `b` of the matrix's size, by columns:
     /// each substitution step subtracts a multiple of one contiguous column of the factors,
-    /// which suits a size chosen at run time (the sums run in another order than
+    /// which suits matrices too large to unroll (the sums run in another order than
     /// [`Lu::solve_slice`]'s, so the two agree to rounding).
     pub fn solve_by_columns(&self, b: &mut [T]) {
         let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());

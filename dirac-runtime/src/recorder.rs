@@ -77,7 +77,14 @@ where
                 ),
             });
         }
-        let columns = reserved_columns(names.len(), expected)?;
+        let mut columns = Vec::new();
+        for _ in 0..names.len() {
+            let mut column = Vec::new();
+            column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
+                reason: format!("no memory for {expected:e} samples of {} series", names.len()),
+            })?;
+            columns.push(column);
+        }
         let (sizes, shape) = (model.sizes(), model.shape());
         let scratch = Scratch {
             a: M::Algebra::zeros_cq(&shape),
@@ -253,20 +260,6 @@ where
             Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats);
         Ok(solution.with_events(self.events, self.event_names).with_impacts(self.impacts, self.contact_names))
     }
-}
-
-/// `count` empty columns with room for `expected` samples each, so that recording does not
-/// reallocate; a typed error if the memory is not there.
-fn reserved_columns(count: usize, expected: f64) -> Result<Vec<Vec<f64>>, SimError> {
-    let mut columns = Vec::new();
-    for _ in 0..count {
-        let mut column = Vec::new();
-        column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
-            reason: format!("no memory for {expected:e} samples of {count} series"),
-        })?;
-        columns.push(column);
-    }
-    Ok(columns)
 }
 
 /// The recorded columns, and the storage their derived quantities are computed in.

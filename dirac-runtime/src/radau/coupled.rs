@@ -160,12 +160,9 @@ impl Coupled {
     }
 
     /// Where `V_k` and `Λ_k` start among the unknowns.
-    fn v(&self, k: usize) -> usize {
-        k * (self.n + self.m)
-    }
-
-    fn lambda(&self, k: usize) -> usize {
-        k * (self.n + self.m) + self.n
+    fn starts(&self, k: usize) -> (usize, usize) {
+        let stage = k * (self.n + self.m);
+        (stage, stage + self.n)
     }
 
     /// Assembles and factors the coupled matrix of a step of size `h` with the stage
@@ -178,7 +175,8 @@ impl Coupled {
     where
         DefaultAllocator: Storage<M>,
     {
-        let (vs, ls) = ([self.v(0), self.v(1), self.v(2)], [self.lambda(0), self.lambda(1), self.lambda(2)]);
+        let starts = [self.starts(0), self.starts(1), self.starts(2)];
+        let (vs, ls) = (starts.map(|s| s.0), starts.map(|s| s.1));
         let size = 3 * (self.n + self.m);
         // Column-major storage: entry (row, column) at `column * size + row`.
         let mat = self.lu.matrix();
@@ -243,7 +241,7 @@ impl Coupled {
             Alg::qq_mul(&jj.dpdot_dq, 1.0, q0, dq);
         }
         for (k, jk) in jac.iter().enumerate() {
-            let (v, lambda) = (self.v(k), self.lambda(k));
+            let (v, lambda) = self.starts(k);
             let x = self.x.as_mut_slice();
             let rp = &mut x[v..lambda];
             rp.copy_from_slice(p0);
@@ -272,14 +270,15 @@ impl Coupled {
         }
         self.lu.solve(self.x.as_mut_slice());
         let (n, m) = (self.n, self.m);
-        let x = self.x.as_slice();
+        let vs = [0, 1, 2].map(|c| self.starts(c).0);
         for (k, (jk, zk)) in jac.iter().zip(z.iter_mut()).enumerate() {
-            let (v, lambda) = (k * (n + m), k * (n + m) + n);
+            let (v, lambda) = self.starts(k);
+            let x = self.x.as_slice();
             let zk = zk.as_mut_slice();
             // Q_k − Q₀ = h Σ_l a_kl V_l, and Q_k kept for the momenta.
             let qk = &mut self.dq[0];
             for i in 0..n {
-                let dq = h * (0..3).map(|c| A[k][c] * x[c * (n + m) + i]).sum::<f64>();
+                let dq = h * (0..3).map(|c| A[k][c] * x[vs[c] + i]).sum::<f64>();
                 zk[l.q + i] = dq;
                 qk[i] = q0[i] + dq;
             }
