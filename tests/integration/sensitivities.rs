@@ -216,6 +216,17 @@ fn parameters_are_named_and_set_by_index() {
     assert_eq!(gear.parameter_index("cart.nope"), None);
 }
 
+/// Two pendulums (nonlinear, so that six sensitivities take the coupled solve), one pulled by
+/// `|k − t|^½`: finite for all `t`, its derivative in `k` is not at `t = k`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) + x.cos() + y.cos())]
+#[dirac(force(x) = ((k - t) * (k - t)).powf(0.25))]
+struct FadingPull {
+    m: f64,
+    k: f64,
+}
+
 /// A spring whose stiffness enters as `√k`: at `k = 0` its derivative is infinite.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(coordinates(x => v))]
@@ -593,6 +604,25 @@ fn sensitivities_are_refused_where_they_cannot_be_honest() {
         matches!(&err, Some(SimError::NonFinite { component, .. }) if component.contains("to k")),
         "{err:?}"
     );
+    // A parameter derivative that is finite at the start and not finite later, at the last stage
+    // of the last step (`t = k`), where the state itself is fine: a typed NonFinite naming it,
+    // with six sensitivities, so that every step of this nonlinear model takes the coupled solve.
+    let pull = FadingPull { m: 1.0, k: 1.0 };
+    let mut start = State::<FadingPull>::zeros();
+    start.set_q(FadingPull::X, 0.5);
+    let by_all = Sensitivities::all_parameters(&pull)
+        .initial_position(FadingPull::X)
+        .initial_position(FadingPull::Y)
+        .initial_velocity(FadingPull::X)
+        .initial_velocity(FadingPull::Y);
+    let mut radau = Radau::new(&pull, tight()).expect("valid").with_sensitivities(&by_all).expect("valid");
+    let err = radau.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps).err();
+    assert!(
+        matches!(&err, Some(SimError::NonFinite { component, .. }) if component.contains("to k")),
+        "{err:?}"
+    );
+    let plain = Radau::new(&pull, tight()).expect("valid").solve(0.0, &start, 1.0, &Sampling::Steps);
+    assert!(plain.is_ok(), "the state alone integrates: {:?}", plain.err());
     // Sampling that would hold too many values with the sensitivities is refused before it runs.
     let every = Sensitivities::all_parameters(&pendulum);
     let mut radau = Radau::new(&pendulum, tight()).expect("valid").with_sensitivities(&every).expect("valid");
