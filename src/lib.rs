@@ -77,6 +77,8 @@ pub use dirac_runtime::ensemble;
 /// Input sources read by time: tables of samples, held or interpolated.
 pub use dirac_runtime::sources;
 
+pub mod fmi;
+
 /// Everything a model file needs: `use dirac::prelude::*;`.
 ///
 /// It includes the bound generic code over any model needs, so a helper over every model

@@ -1,5 +1,6 @@
-//! How an integrator holds its model: shared, for a model that stays as it is, or exclusive,
-//! for a model whose inputs and parameters change between steps.
+//! How an integrator holds its model: shared, for a model that stays as it is; exclusive, for
+//! a model whose inputs and parameters change between steps; or owned, for an integrator that
+//! must outlive any borrow (an FMU instance keeps its model and integrator together).
 
 use core::ops::Deref;
 
@@ -11,6 +12,9 @@ pub enum Held<'m, M> {
     Shared(&'m M),
     /// Changeable between steps.
     Exclusive(&'m mut M),
+    /// Owned by the integrator, changeable between steps. Built explicitly:
+    /// `Radau::new(Held::Owned(model), options)`.
+    Owned(M),
 }
 
 impl<M> Held<'_, M> {
@@ -20,6 +24,7 @@ impl<M> Held<'_, M> {
         match self {
             Held::Shared(m) => m,
             Held::Exclusive(m) => m,
+            Held::Owned(m) => m,
         }
     }
 
@@ -29,6 +34,7 @@ impl<M> Held<'_, M> {
         match self {
             Held::Shared(_) => None,
             Held::Exclusive(m) => Some(m),
+            Held::Owned(m) => Some(m),
         }
     }
 }

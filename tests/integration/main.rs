@@ -9,6 +9,7 @@ mod contacts;
 mod counters;
 mod events;
 mod fitting;
+mod fmi;
 mod fuzz;
 mod hand_derivations;
 mod hygiene;

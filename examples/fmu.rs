@@ -1,0 +1,34 @@
+//! Builds an example model's FMU: `cargo run --release --example fmu -- MODEL [OUT]`, with
+//! MODEL `paper_chain` or `driven_pendulum`; OUT defaults to `target/fmu/MODEL.fmu`.
+//!
+//! It runs `cargo build` for the model's `cdylib` example (`fmu_paper_chain`,
+//! `fmu_driven_pendulum`), in the same profile, and packs the library with the model's
+//! `modelDescription.xml` ([`dirac::fmi::build`]). In a crate of your own, the library is the
+//! crate's (`crate-type = ["cdylib", "rlib"]`) and the arguments `["--release", "--lib"]`.
+
+use std::error::Error;
+use std::path::PathBuf;
+
+#[path = "fmu/driven_pendulum.rs"]
+mod driven_pendulum;
+#[path = "fmu/paper_chain.rs"]
+mod paper_chain;
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let mut args = std::env::args().skip(1);
+    let usage = "usage: cargo run --release --example fmu -- paper_chain|driven_pendulum [OUT]";
+    let model = args.next().ok_or(usage)?;
+    let out = args.next().map_or_else(|| PathBuf::from(format!("target/fmu/{model}.fmu")), PathBuf::from);
+    let example = format!("fmu_{model}");
+    let mut cargo = vec!["--example", &example];
+    if !cfg!(debug_assertions) {
+        cargo.push("--release");
+    }
+    let library = match model.as_str() {
+        "paper_chain" => dirac::fmi::build::<paper_chain::PaperChain>(&cargo, &out)?,
+        "driven_pendulum" => dirac::fmi::build::<driven_pendulum::DrivenPendulum>(&cargo, &out)?,
+        other => return Err(format!("no example model {other}; {usage}").into()),
+    };
+    println!("{} (from {})", out.display(), library.display());
+    Ok(())
+}

@@ -1,0 +1,157 @@
+//! Packing a built library and its description into an `.fmu` file.
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use zip::write::SimpleFileOptions;
+
+use crate::Storage;
+use crate::nalgebra::DefaultAllocator;
+
+use super::Export;
+use super::variables::{self, DescriptionError};
+
+/// Why an FMU could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum FmuError {
+    /// The model cannot be described.
+    #[error(transparent)]
+    Description(#[from] DescriptionError),
+    /// A file could not be read or written.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The failure.
+        source: std::io::Error,
+    },
+    /// The zip could not be written.
+    #[error("writing {path}: {source}")]
+    Zip {
+        /// The FMU file.
+        path: PathBuf,
+        /// The failure.
+        source: zip::result::ZipError,
+    },
+    /// `cargo build` failed or built no shared library.
+    #[error("cargo build {args}: {reason}")]
+    Build {
+        /// Its arguments.
+        args: String,
+        /// What went wrong.
+        reason: String,
+    },
+    /// FMI names no binary directory for this platform.
+    #[error("FMI 3.0 names no binary directory for {0}")]
+    Platform(String),
+}
+
+/// FMI 3.0's name for this platform's binaries, and its shared libraries' extension.
+fn platform() -> Result<(String, &'static str), FmuError> {
+    let os = match std::env::consts::OS {
+        "linux" => "linux",
+        "macos" => "darwin",
+        "windows" => "windows",
+        other => return Err(FmuError::Platform(other.to_string())),
+    };
+    let arch = match std::env::consts::ARCH {
+        "x86_64" => "x86_64",
+        "aarch64" => "aarch64",
+        "x86" => "x86",
+        other => return Err(FmuError::Platform(other.to_string())),
+    };
+    Ok((format!("{arch}-{os}"), std::env::consts::DLL_EXTENSION))
+}
+
+/// Writes the FMU of model `M` to `out`: its `modelDescription.xml` and `library`, the
+/// shared library of a crate that invokes [`export_fmu!`](crate::export_fmu) for `M`, built
+/// for this platform.
+pub fn write_fmu<M: Export>(library: &Path, out: &Path) -> Result<(), FmuError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (description, _) = variables::description(&M::instantiate())?;
+    let (platform, extension) = platform()?;
+    let binary = std::fs::read(library).map_err(|source| FmuError::Io { path: library.into(), source })?;
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|source| FmuError::Io { path: dir.into(), source })?;
+    }
+    let io = |source| FmuError::Io { path: out.into(), source };
+    let zipped = |source| FmuError::Zip { path: out.into(), source };
+    let file = std::fs::File::create(out).map_err(io)?;
+    let mut zip = zip::ZipWriter::new(file);
+    let options = SimpleFileOptions::default().compression_method(zip::CompressionMethod::Stored);
+    zip.start_file("modelDescription.xml", options).map_err(zipped)?;
+    zip.write_all(description.as_bytes()).map_err(io)?;
+    let name = format!("binaries/{platform}/{}.{extension}", M::MODEL_IDENTIFIER);
+    zip.start_file(name, options.unix_permissions(0o755)).map_err(zipped)?;
+    zip.write_all(&binary).map_err(io)?;
+    zip.finish().map_err(zipped)?;
+    Ok(())
+}
+
+/// Runs `cargo build` with `args` (for example `["--release", "--lib"]` or
+/// `["--example", "fmu_paper_chain"]`), takes the shared library it builds, and writes the FMU
+/// of model `M` to `out` ([`write_fmu`]). Returns the library's path.
+///
+/// Called from a program that `cargo run` started, it runs the same cargo.
+pub fn build<M: Export>(args: &[&str], out: &Path) -> Result<PathBuf, FmuError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let joined = args.join(" ");
+    let failed = |reason: String| FmuError::Build { args: joined.clone(), reason };
+    let output = Command::new(cargo)
+        .arg("build")
+        .args(args)
+        .arg("--message-format=json-render-diagnostics")
+        .stderr(std::process::Stdio::inherit())
+        .output()
+        .map_err(|e| failed(format!("cargo did not run: {e}")))?;
+    if !output.status.success() {
+        return Err(failed(format!("it exited with {}", output.status)));
+    }
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let library = shared_library(&stdout).ok_or_else(|| failed("it built no cdylib".to_string()))?;
+    write_fmu::<M>(&library, out)?;
+    Ok(library)
+}
+
+/// The last `cdylib` among cargo's JSON messages.
+fn shared_library(messages: &str) -> Option<PathBuf> {
+    let extension = format!(".{}", std::env::consts::DLL_EXTENSION);
+    messages
+        .lines()
+        .rev()
+        .filter(|line| line.contains("\"reason\":\"compiler-artifact\"") && line.contains("\"cdylib\""))
+        .find_map(|line| {
+            let start = line.find("\"filenames\":[")? + "\"filenames\":[".len();
+            let list = &line[start..start + line[start..].find(']')?];
+            list.split(',')
+                .map(|quoted| quoted.trim().trim_matches('"').replace("\\\\", "\\"))
+                .find(|path| path.ends_with(&extension))
+        })
+        .map(PathBuf::from)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn the_shared_library_is_found_among_cargos_messages() {
+        let messages = concat!(
+            r#"{"reason":"compiler-artifact","target":{"crate_types":["lib"]},"filenames":["/t/libdep.rlib"]}"#,
+            "\n",
+            r#"{"reason":"compiler-artifact","target":{"kind":["cdylib"],"crate_types":["cdylib"]},"#,
+            r#""filenames":["/t/debug/examples/libfmu_chain.so"],"executable":null}"#,
+            "\n",
+            r#"{"reason":"build-finished","success":true}"#,
+        );
+        assert_eq!(shared_library(messages), Some(PathBuf::from("/t/debug/examples/libfmu_chain.so")));
+        assert_eq!(shared_library(r#"{"reason":"build-finished","success":true}"#), None);
+    }
+}

@@ -1,0 +1,394 @@
+//! The FMU's variables: which value reference names which part of the model, and the
+//! `modelDescription.xml` that lists them.
+
+use std::fmt::Write as _;
+
+use crate::nalgebra::DefaultAllocator;
+use crate::{LagrangeDirac, Storage, VecQ};
+
+use super::Export;
+
+/// What a value reference refers to. The references are numbered in this order: time, then
+/// the parameters, inputs, outputs, positions, velocities and multipliers, each in the
+/// model's own order of them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Variable {
+    /// The independent variable.
+    Time,
+    /// Parameter `k` of [`LagrangeDirac::parameter_value`] (inputs, which are parameters to
+    /// the model, are inputs to the FMU).
+    Parameter(usize),
+    /// Input `k` of [`LagrangeDirac::input_value`].
+    Input(usize),
+    /// Output `k` of [`LagrangeDirac::outputs`].
+    Output(usize),
+    /// Position `q[k]`.
+    Position(usize),
+    /// Velocity `v[k]`.
+    Velocity(usize),
+    /// Multiplier `λ[k]`.
+    Multiplier(usize),
+}
+
+/// How many variables of each kind the FMU has.
+#[derive(Clone, Debug)]
+pub(crate) struct Table {
+    /// The model's parameters that are not inputs, by their index in the model.
+    pub parameters: Vec<usize>,
+    pub inputs: usize,
+    pub outputs: usize,
+    pub coordinates: usize,
+    pub constraints: usize,
+}
+
+impl Table {
+    pub fn of<M: LagrangeDirac>(model: &M) -> Table
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let sizes = model.sizes();
+        let inputs = model.input_names();
+        let parameters = model.parameter_names();
+        Table {
+            parameters: (0..parameters.len()).filter(|&k| !inputs.contains(&parameters[k])).collect(),
+            inputs: inputs.len(),
+            outputs: model.output_names().len(),
+            coordinates: sizes.nq,
+            constraints: sizes.nc,
+        }
+    }
+
+    /// The variable with value reference `vr`, if there is one.
+    pub fn variable(&self, vr: u32) -> Option<Variable> {
+        let mut k = usize::try_from(vr).ok()?;
+        if k == 0 {
+            return Some(Variable::Time);
+        }
+        k -= 1;
+        type Kind = fn(usize) -> Variable;
+        let kinds: [(usize, Kind); 6] = [
+            (self.parameters.len(), Variable::Parameter),
+            (self.inputs, Variable::Input),
+            (self.outputs, Variable::Output),
+            (self.coordinates, Variable::Position),
+            (self.coordinates, Variable::Velocity),
+            (self.constraints, Variable::Multiplier),
+        ];
+        for (count, kind) in kinds {
+            if k < count {
+                return Some(match kind(k) {
+                    Variable::Parameter(k) => Variable::Parameter(self.parameters[k]),
+                    variable => variable,
+                });
+            }
+            k -= count;
+        }
+        None
+    }
+
+    /// The value reference of a variable.
+    pub fn reference(&self, variable: Variable) -> u32 {
+        let before = |skip: usize| 1 + skip;
+        let parameters = self.parameters.len();
+        let k = match variable {
+            Variable::Time => 0,
+            Variable::Parameter(k) => {
+                before(self.parameters.iter().position(|&p| p == k).unwrap_or(usize::MAX - 1))
+            }
+            Variable::Input(k) => before(parameters) + k,
+            Variable::Output(k) => before(parameters + self.inputs) + k,
+            Variable::Position(k) => before(parameters + self.inputs + self.outputs) + k,
+            Variable::Velocity(k) => before(parameters + self.inputs + self.outputs + self.coordinates) + k,
+            Variable::Multiplier(k) => {
+                before(parameters + self.inputs + self.outputs + 2 * self.coordinates) + k
+            }
+        };
+        // Value references are 32 bits wide; a model with more variables than that is refused
+        // when its description is written.
+        u32::try_from(k).unwrap_or(u32::MAX)
+    }
+
+    /// The number of value references in use.
+    pub fn len(&self) -> usize {
+        1 + self.parameters.len() + self.inputs + self.outputs + 2 * self.coordinates + self.constraints
+    }
+}
+
+/// Escapes text for an XML attribute value.
+fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            c if (c as u32) < 0x20 => {
+                let _ = write!(out, "&#{};", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A start value as XML writes a double. Non-finite values were refused before.
+fn number(x: f64) -> String {
+    format!("{x:?}")
+}
+
+/// Why a model cannot be described as an FMU.
+#[derive(Debug, thiserror::Error)]
+pub enum DescriptionError {
+    /// A start value is not a finite number.
+    #[error("the start value of {name} is {value}: an FMU's start values must be finite")]
+    NotFinite {
+        /// The variable.
+        name: String,
+        /// Its value.
+        value: f64,
+    },
+    /// Two variables have the same name.
+    #[error("two variables are named {0}: an FMU's variable names must be unique")]
+    DuplicateName(String),
+    /// The model has more variables than 32-bit value references can number.
+    #[error("the model has {0} variables, more than FMI's 32-bit value references can number")]
+    TooManyVariables(usize),
+}
+
+/// The text of `modelDescription.xml` without its instantiation token, and the token: a hash
+/// of the rest, so that a library and a description written from different versions of a model
+/// refuse each other.
+pub(crate) fn description<M: Export>(model: &M) -> Result<(String, String), DescriptionError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let body = body(model)?;
+    let token = token(&body);
+    let text = body.replacen("@TOKEN@", &token, 1);
+    Ok((text, token))
+}
+
+/// An FNV-1a hash of the description, written like a GUID.
+fn token(body: &str) -> String {
+    let mut hash: u128 = 0x6c62272e07bb014262b821756295c58d;
+    for byte in body.bytes() {
+        hash ^= u128::from(byte);
+        hash = hash.wrapping_mul(0x0000000001000000000000000000013B);
+    }
+    let h = format!("{hash:032x}");
+    format!("{{{}-{}-{}-{}-{}}}", &h[0..8], &h[8..12], &h[12..16], &h[16..20], &h[20..32])
+}
+
+/// One `<Float64>` element.
+struct Float64<'a> {
+    name: &'a str,
+    vr: u32,
+    causality: &'a str,
+    variability: &'a str,
+    initial: Option<&'a str>,
+    start: Option<f64>,
+    description: &'a str,
+}
+
+impl Float64<'_> {
+    fn write(&self, out: &mut String) -> Result<(), DescriptionError> {
+        let _ = write!(
+            out,
+            "    <Float64 name=\"{}\" valueReference=\"{}\" causality=\"{}\" variability=\"{}\"",
+            escape(self.name),
+            self.vr,
+            self.causality,
+            self.variability
+        );
+        if let Some(initial) = self.initial {
+            let _ = write!(out, " initial=\"{initial}\"");
+        }
+        if let Some(start) = self.start {
+            if !start.is_finite() {
+                return Err(DescriptionError::NotFinite { name: self.name.to_string(), value: start });
+            }
+            let _ = write!(out, " start=\"{}\"", number(start));
+        }
+        if !self.description.is_empty() {
+            let _ = write!(out, " description=\"{}\"", escape(self.description));
+        }
+        out.push_str("/>\n");
+        Ok(())
+    }
+}
+
+fn body<M: Export>(model: &M) -> Result<String, DescriptionError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let table = Table::of(model);
+    if u32::try_from(table.len()).is_err() {
+        return Err(DescriptionError::TooManyVariables(table.len()));
+    }
+    let sizes = model.sizes();
+    let (mut q, mut v): (VecQ<M>, VecQ<M>) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+    model.start(&mut q, &mut v);
+    let parameters = model.parameter_names();
+    let inputs = model.input_names();
+    let outputs = model.output_names();
+    let coordinates = model.coordinate_names();
+    let velocities = model.velocity_names();
+    let constraints = model.constraint_names();
+
+    let mut seen = std::collections::HashSet::new();
+    let mut variables = String::new();
+    let mut element = |e: Float64| -> Result<(), DescriptionError> {
+        if !seen.insert(e.name.to_string()) {
+            return Err(DescriptionError::DuplicateName(e.name.to_string()));
+        }
+        e.write(&mut variables)
+    };
+    let (continuous, local) = ("continuous", "local");
+    element(Float64 {
+        name: "time",
+        vr: table.reference(super::variables::Variable::Time),
+        causality: "independent",
+        variability: continuous,
+        initial: None,
+        start: None,
+        description: "Simulation time",
+    })?;
+    for &k in &table.parameters {
+        element(Float64 {
+            name: &parameters[k],
+            vr: table.reference(Variable::Parameter(k)),
+            causality: "parameter",
+            variability: "fixed",
+            initial: None,
+            start: Some(model.parameter_value(k)),
+            description: "Parameter, settable before initialisation",
+        })?;
+    }
+    for (k, name) in inputs.iter().enumerate() {
+        element(Float64 {
+            name,
+            vr: table.reference(Variable::Input(k)),
+            causality: "input",
+            variability: continuous,
+            initial: None,
+            start: Some(model.input_value(k)),
+            description: "Input, held constant over each communication step",
+        })?;
+    }
+    for (k, name) in outputs.iter().enumerate() {
+        element(Float64 {
+            name,
+            vr: table.reference(Variable::Output(k)),
+            causality: "output",
+            variability: continuous,
+            initial: None,
+            start: None,
+            description: "Output",
+        })?;
+    }
+    for (k, name) in coordinates.iter().enumerate() {
+        element(Float64 {
+            name,
+            vr: table.reference(Variable::Position(k)),
+            causality: local,
+            variability: continuous,
+            initial: Some("exact"),
+            start: Some(q[k]),
+            description: "Position; its start value is made consistent with the constraints",
+        })?;
+    }
+    for (k, name) in velocities.iter().enumerate() {
+        element(Float64 {
+            name,
+            vr: table.reference(Variable::Velocity(k)),
+            causality: local,
+            variability: continuous,
+            initial: Some("exact"),
+            start: Some(v[k]),
+            description: "Velocity; its start value is made consistent with the constraints",
+        })?;
+    }
+    for (k, name) in constraints.iter().enumerate() {
+        element(Float64 {
+            name: &format!("lambda({name})"),
+            vr: table.reference(Variable::Multiplier(k)),
+            causality: local,
+            variability: continuous,
+            initial: Some("calculated"),
+            start: None,
+            description: "Constraint multiplier",
+        })?;
+    }
+
+    let experiment = M::default_experiment();
+    let mut out = String::new();
+    out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    let _ = writeln!(
+        out,
+        "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"{}\" instantiationToken=\"@TOKEN@\" \
+         description=\"{}\" generationTool=\"dirac {}\" variableNamingConvention=\"flat\">",
+        escape(M::MODEL_IDENTIFIER),
+        escape(M::DESCRIPTION),
+        env!("CARGO_PKG_VERSION"),
+    );
+    let _ = writeln!(
+        out,
+        "  <CoSimulation modelIdentifier=\"{}\" canHandleVariableCommunicationStepSize=\"true\" \
+         canGetAndSetFMUState=\"true\" canSerializeFMUState=\"true\" hasEventMode=\"false\"/>",
+        escape(M::MODEL_IDENTIFIER)
+    );
+    out.push_str("  <LogCategories>\n");
+    out.push_str("    <Category name=\"logStatusError\" description=\"Calls that failed\"/>\n");
+    out.push_str("    <Category name=\"logStatusDiscard\" description=\"Steps that could not be taken\"/>\n");
+    out.push_str("  </LogCategories>\n");
+    let _ = writeln!(
+        out,
+        "  <DefaultExperiment startTime=\"{}\" stopTime=\"{}\" tolerance=\"{}\" stepSize=\"{}\"/>",
+        number(experiment.start),
+        number(experiment.stop),
+        number(experiment.tolerance),
+        number(experiment.step)
+    );
+    out.push_str("  <ModelVariables>\n");
+    out.push_str(&variables);
+    out.push_str("  </ModelVariables>\n  <ModelStructure>\n");
+    for k in 0..table.outputs {
+        let _ = writeln!(out, "    <Output valueReference=\"{}\"/>", table.reference(Variable::Output(k)));
+    }
+    for k in 0..table.outputs {
+        let _ = writeln!(
+            out,
+            "    <InitialUnknown valueReference=\"{}\"/>",
+            table.reference(Variable::Output(k))
+        );
+    }
+    out.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn references_and_variables_are_inverse() {
+        // Model parameters 0 and 2; parameter 1 is the input.
+        let table = Table { parameters: vec![0, 2], inputs: 1, outputs: 3, coordinates: 4, constraints: 2 };
+        for vr in 0..table.len() as u32 {
+            let variable = table.variable(vr).expect("in range");
+            assert_eq!(table.reference(variable), vr, "{variable:?}");
+        }
+        assert_eq!(table.variable(table.len() as u32), None);
+        assert_eq!(table.variable(u32::MAX), None);
+        assert_eq!(table.variable(2), Some(Variable::Parameter(2)));
+        assert_eq!(table.variable(3), Some(Variable::Input(0)));
+        assert_eq!(table.variable(11), Some(Variable::Velocity(0)));
+    }
+
+    #[test]
+    fn attribute_text_is_escaped() {
+        assert_eq!(escape("a<b & \"c\"\n"), "a&lt;b &amp; &quot;c&quot;&#10;");
+    }
+}

@@ -1,0 +1,229 @@
+//! FMI export, checked by an importer nobody here wrote: FMPy (installed from the Python
+//! package index into `target/tmp/fmpy` on first use) validates each FMU and simulates it, and
+//! its results must agree with dirac's own simulation of the same model at the same
+//! tolerance. Bad use through FMI's C functions (`tests/fmi/misuse.py`, through FMPy's
+//! bindings) must return `fmi3Error` or `fmi3Discard` with a logged message.
+//!
+//! The FMUs' libraries are the `cdylib` examples `fmu_paper_chain` and `fmu_driven_pendulum`,
+//! which `cargo test` builds with the other examples (`cargo build --examples` builds them
+//! for a run of this test alone).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+use dirac::fmi::Export;
+use dirac::prelude::*;
+
+#[path = "../../examples/fmu/driven_pendulum.rs"]
+mod driven_pendulum;
+#[path = "../../examples/fmu/paper_chain.rs"]
+mod paper_chain;
+
+use driven_pendulum::DrivenPendulum;
+use paper_chain::PaperChain;
+
+/// The FMPy version the tests were written against.
+const FMPY: &str = "fmpy==0.3.32";
+
+/// A Python with FMPy: `DIRAC_FMPY_PYTHON` if set, otherwise a virtual environment in the
+/// target directory, created with FMPy on first use.
+fn python() -> &'static Path {
+    static PYTHON: OnceLock<Result<PathBuf, String>> = OnceLock::new();
+    let found = PYTHON.get_or_init(|| {
+        if let Some(python) = std::env::var_os("DIRAC_FMPY_PYTHON") {
+            return Ok(python.into());
+        }
+        let venv = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmpy");
+        let python = venv.join("bin").join("python");
+        let has_fmpy = |python: &Path| {
+            Command::new(python).args(["-c", "import fmpy"]).output().is_ok_and(|o| o.status.success())
+        };
+        if has_fmpy(&python) {
+            return Ok(python);
+        }
+        let run = |program: &Path, args: &[&str]| -> Result<(), String> {
+            let output =
+                Command::new(program).args(args).output().map_err(|e| format!("{program:?}: {e}"))?;
+            if output.status.success() {
+                Ok(())
+            } else {
+                Err(format!("{program:?} {args:?}: {}", String::from_utf8_lossy(&output.stderr)))
+            }
+        };
+        let venv_text = venv.to_string_lossy();
+        run(Path::new("python3"), &["-m", "venv", &venv_text])?;
+        run(&venv.join("bin").join("pip"), &["install", "--quiet", FMPY])?;
+        if has_fmpy(&python) { Ok(python) } else { Err("FMPy did not install".to_string()) }
+    });
+    match found {
+        Ok(python) => python,
+        Err(why) => panic!("the FMI tests need Python 3 with venv and the package index for FMPy: {why}"),
+    }
+}
+
+/// The shared library of a `cdylib` example, next to this test's binary.
+fn example_library(example: &str) -> PathBuf {
+    let exe = std::env::current_exe().expect("the test binary's path");
+    let profile = exe.parent().and_then(Path::parent).expect("target/<profile>/deps/<test>");
+    let name = format!("{}{example}{}", std::env::consts::DLL_PREFIX, std::env::consts::DLL_SUFFIX);
+    let library = profile.join("examples").join(name);
+    assert!(
+        library.exists(),
+        "{} is not built: run `cargo build --examples` (cargo test builds it)",
+        library.display()
+    );
+    library
+}
+
+/// Packs the FMU of `M` from its example library into the test's directory.
+fn fmu<M: Export>(example: &str) -> PathBuf
+where
+    DefaultAllocator: Storage<M>,
+{
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join(format!("{example}.fmu"));
+    dirac::fmi::write_fmu::<M>(&example_library(example), &out).expect("the FMU is written");
+    out
+}
+
+/// Runs a script of `tests/fmi` with FMPy's Python; its stdout.
+fn script(name: &str, args: &[&str]) -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("fmi").join(name);
+    let output = Command::new(python()).arg(path).args(args).output().expect("python runs");
+    let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+    assert!(output.status.success(), "{name} failed:\n{stdout}\n{}", String::from_utf8_lossy(&output.stderr));
+    stdout
+}
+
+/// A CSV written by `simulate.py`: its header and rows.
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).expect("the CSV is written");
+    let mut lines = text.lines();
+    let header = lines.next().expect("a header").split(',').map(str::to_string).collect();
+    let rows = lines.map(|line| line.split(',').map(|x| x.parse().expect("a number")).collect()).collect();
+    (header, rows)
+}
+
+/// The column of `solution` that holds the FMU variable `name` (outputs are `out(name)` there).
+fn column<'s, M: LagrangeDirac, S>(solution: &'s Solution<M, S>, name: &str) -> &'s [f64]
+where
+    DefaultAllocator: Storage<M>,
+{
+    let ours = match name {
+        "time" => "t".to_string(),
+        _ if solution.column(name).is_none() => format!("out({name})"),
+        _ => name.to_string(),
+    };
+    solution.column(&ours).unwrap_or_else(|| panic!("dirac's solution has no column for {name}"))
+}
+
+/// The largest difference between two sets of samples of the FMU's variables, each variable's
+/// relative to `1 + max |x|` of the reference over the run, and where it is.
+fn largest_difference<M: LagrangeDirac, S>(
+    header: &[String],
+    samples: &dyn Fn(usize) -> Vec<f64>,
+    reference: &Solution<M, S>,
+) -> (f64, String)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut worst = (0.0, String::new());
+    for (j, name) in header.iter().enumerate() {
+        let expected = column(reference, name);
+        let ours = samples(j);
+        assert_eq!(ours.len(), expected.len(), "{name}: different numbers of samples");
+        let scale = 1.0 + expected.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for (k, (x, y)) in ours.iter().zip(expected).enumerate() {
+            let d = (x - y).abs() / scale;
+            assert!(d.is_finite(), "{name}: {x} against {y}");
+            if d > worst.0 {
+                worst = (d, format!("{name} at sample {k}"));
+            }
+        }
+    }
+    worst
+}
+
+/// FMPy's results (`csv`) against a reference solution computed by dirac at a tolerance a
+/// thousand times tighter, and dirac's own result at the FMU's tolerance against the same
+/// reference: the FMU must be as accurate as dirac itself, within a factor of 10. Returns the
+/// largest difference between FMPy's results and dirac's own.
+fn assert_as_accurate_as_dirac<M: LagrangeDirac, S>(
+    csv: &Path,
+    ours: &Solution<M, S>,
+    reference: &Solution<M, S>,
+    tol: f64,
+) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (header, rows) = read_csv(csv);
+    let fmu = largest_difference(&header, &|j| rows.iter().map(|r| r[j]).collect(), reference);
+    let dirac = largest_difference(&header, &|j| column(ours, &header[j]).to_vec(), reference);
+    eprintln!("FMU error {:.2e} ({}), dirac's error {:.2e} ({})", fmu.0, fmu.1, dirac.0, dirac.1);
+    assert!(
+        fmu.0 <= 10.0 * dirac.0.max(tol),
+        "FMPy's result is off by {:.2e} ({}), dirac's own by {:.2e} ({})",
+        fmu.0,
+        fmu.1,
+        dirac.0,
+        dirac.1
+    );
+    largest_difference(&header, &|j| rows.iter().map(|r| r[j]).collect(), ours).0
+}
+
+#[test]
+fn the_paper_chain_fmu_validates_and_fmpy_simulates_it_as_dirac_does() {
+    let fmu = fmu::<PaperChain>("fmu_paper_chain");
+    let csv = fmu.with_extension("csv");
+    let (stop, step, tol) = (20.0, 0.01, 1e-10);
+    let report =
+        script("simulate.py", &[&*fmu.to_string_lossy(), &*csv.to_string_lossy(), "20", "0.01", "1e-10"]);
+    assert!(report.contains("2001 samples"), "{report}");
+
+    let chain = PaperChain::instantiate();
+    let sizes = chain.sizes();
+    let (mut q, mut v) = (sizes.zeros_q::<PaperChain>(), sizes.zeros_q::<PaperChain>());
+    chain.start(&mut q, &mut v);
+    let start = consistent_state(&chain, 0.0, &q, &v, Consistency::default()).expect("consistent");
+    let solve = |tol: f64| {
+        Radau::new(&chain, RadauOptions::tolerances(tol, tol))
+            .expect("valid")
+            .solve(0.0, &start, stop, &Sampling::Every(step))
+            .expect("integrates")
+    };
+    assert_as_accurate_as_dirac(&csv, &solve(tol), &solve(1e-3 * tol), tol);
+}
+
+#[test]
+fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
+    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum");
+    let csv = fmu.with_extension("csv");
+    let (stop, step, tol, amplitude, frequency) = (10.0, 0.01, 1e-10, 2.0, 3.0);
+    let report = script(
+        "simulate.py",
+        &[&*fmu.to_string_lossy(), &*csv.to_string_lossy(), "10", "0.01", "1e-10", "f", "2", "3"],
+    );
+    assert!(report.contains("1001 samples"), "{report}");
+
+    // The same held input, set at each communication point t_k = k h.
+    let mut pendulum = DrivenPendulum::instantiate();
+    let sizes = pendulum.sizes();
+    let (mut q, mut v) = (sizes.zeros_q::<DrivenPendulum>(), sizes.zeros_q::<DrivenPendulum>());
+    pendulum.start(&mut q, &mut v);
+    assert_eq!(q[DrivenPendulum::X.index()], driven_pendulum::START_ANGLE.sin());
+    let start = consistent_state(&pendulum, 0.0, &q, &v, Consistency::default()).expect("consistent");
+    let mut solve = |tol: f64| {
+        Radau::new(&mut pendulum, RadauOptions::tolerances(tol, tol))
+            .expect("valid")
+            .solve_sampled(0.0, &start, stop, step, &Sampling::Every(step), |t, _, model| {
+                model.set_input(DrivenPendulum::F, amplitude * (frequency * t).sin());
+            })
+            .expect("integrates")
+    };
+    let (ours, reference) = (solve(tol), solve(1e-3 * tol));
+    let difference = assert_as_accurate_as_dirac(&csv, &ours, &reference, tol);
+    // The FMU restarts its integrator at each communication point as `solve_sampled` does,
+    // so the two runs take the same steps.
+    assert!(difference < 1e-12, "FMPy's result differs from dirac's by {difference:e}");
+}
