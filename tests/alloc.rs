@@ -515,3 +515,79 @@ fn steps_with_sensitivities_do_not_allocate() {
         assert_eq!(n, 0, "ladder (sparse), error control {error_control}");
     }
 }
+
+#[path = "../examples/fmu/driven_pendulum.rs"]
+mod driven_pendulum;
+
+/// An FMU's communication steps through its C functions (`dirac::fmi::abi`, what
+/// `export_fmu!` exports): set the input, step, read outputs, positions and the multiplier.
+/// After the first step, which builds the integrator, 100 such rounds allocate nothing.
+#[test]
+#[allow(unsafe_code)]
+fn fmu_communication_steps_do_not_allocate() {
+    use driven_pendulum::DrivenPendulum;
+    use std::ffi::CString;
+    use std::ptr::null_mut;
+
+    let description = dirac::fmi::model_description(&<DrivenPendulum as dirac::fmi::Export>::instantiate())
+        .expect("described");
+    let token = description
+        .split("instantiationToken=\"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .expect("a token");
+    let (name, token) = (CString::new("alloc").expect("no NUL"), CString::new(token).expect("no NUL"));
+    let abi = |status: i32| assert_eq!(status, 0, "an FMI call failed");
+    // SAFETY: the calls follow FMI: one instance, used and freed here, with valid pointers and
+    // lengths.
+    unsafe {
+        use dirac::fmi::abi;
+        let instance = abi::instantiate_co_simulation::<DrivenPendulum>(
+            name.as_ptr(),
+            token.as_ptr(),
+            false,
+            null_mut(),
+            None,
+        );
+        assert!(!instance.is_null());
+        abi(abi::enter_initialization_mode::<DrivenPendulum>(instance, true, 1e-8, 0.0, false, 0.0));
+        abi(abi::exit_initialization_mode::<DrivenPendulum>(instance));
+        let vr = |name: &str| -> u32 {
+            let element = format!("name=\"{name}\" valueReference=\"");
+            let rest = description.split(&element).nth(1).expect("the variable is described");
+            rest.split('"').next().and_then(|n| n.parse().ok()).expect("a value reference")
+        };
+        let f = vr("f");
+        let read = ["time", "energy", "height", "x", "y", "vx", "vy", "lambda(rod)"].map(vr);
+        let mut values = [0.0; 8];
+        let mut round = |k: usize| {
+            let t = 0.01 * k as f64;
+            let u = [2.0 * (3.0 * t).sin()];
+            abi(abi::set_float64::<DrivenPendulum>(instance, &f, 1, u.as_ptr(), 1));
+            abi(abi::do_step::<DrivenPendulum>(
+                instance,
+                t,
+                0.01,
+                null_mut(),
+                null_mut(),
+                null_mut(),
+                null_mut(),
+            ));
+            abi(abi::get_float64::<DrivenPendulum>(
+                instance,
+                read.as_ptr(),
+                read.len(),
+                values.as_mut_ptr(),
+                8,
+            ));
+        };
+        round(0);
+        let before = allocations();
+        for k in 1..=100 {
+            round(k);
+        }
+        assert_eq!(allocations() - before, 0, "allocations in 100 communication steps");
+        assert!((values[0] - 1.01).abs() < 1e-12, "t = {}", values[0]);
+        abi::free_instance::<DrivenPendulum>(instance);
+    }
+}

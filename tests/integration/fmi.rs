@@ -227,3 +227,11 @@ fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
     // so the two runs take the same steps.
     assert!(difference < 1e-12, "FMPy's result differs from dirac's by {difference:e}");
 }
+
+#[test]
+fn bad_use_returns_fmi_errors_with_logged_messages_and_the_instance_survives() {
+    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum");
+    let report = script("misuse.py", &[&*fmu.to_string_lossy()]);
+    eprintln!("{report}");
+    assert!(report.ends_with("all checks passed\n"), "{report}");
+}
