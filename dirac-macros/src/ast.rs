@@ -9,7 +9,7 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 use crate::ctxt::Ctxt;
 use crate::symbol::{
     CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIRAC, EVENT, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE,
-    MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, UNILATERAL,
+    MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, UNILATERAL, UNIT,
 };
 
 /// A model as written by the user.
@@ -39,6 +39,12 @@ pub struct Model<'a> {
     pub switches: Vec<Ident>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
+    /// The struct's doc comment.
+    pub doc: String,
+    /// The doc comments of the `f64` fields that have one.
+    pub param_docs: Vec<(Ident, String)>,
+    /// `unit(name, ...) = "text"`: each name with its unit, in the order written.
+    pub units: Vec<(Ident, syn::LitStr)>,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
     /// the rules that would only report consequences of the syntax error.
     pub incomplete: bool,
@@ -123,6 +129,9 @@ impl<'a> Model<'a> {
             forces: Vec::new(),
             defines: Vec::new(),
             large: false,
+            doc: doc_comment(&input.attrs),
+            param_docs: Vec::new(),
+            units: Vec::new(),
             incomplete: false,
         };
         if !input.generics.params.is_empty() {
@@ -132,6 +141,14 @@ impl<'a> Model<'a> {
             );
         }
         model.params = parse_params(cx, input);
+        if let Data::Struct(s) = &input.data {
+            model.param_docs = s
+                .fields
+                .iter()
+                .filter_map(|f| Some((f.ident.as_ref()?.unraw(), doc_comment(&f.attrs))))
+                .filter(|(_, doc)| !doc.is_empty())
+                .collect();
+        }
         for attr in input.attrs.iter().filter(|a| a.path().is_ident(DIRAC)) {
             let parser = |stream: ParseStream| parse_items(cx, &mut model, stream);
             if let Err(e) = attr.parse_args_with(parser) {
@@ -155,6 +172,18 @@ impl Model<'_> {
         }
         out
     }
+}
+
+/// The text of `///` comments (`#[doc = "..."]` attributes), lines joined by spaces.
+pub fn doc_comment(attrs: &[syn::Attribute]) -> String {
+    let lines = attrs.iter().filter_map(|a| match &a.meta {
+        syn::Meta::NameValue(nv) if nv.path.is_ident("doc") => match &nv.value {
+            Expr::Lit(syn::ExprLit { lit: syn::Lit::Str(s), .. }) => Some(s.value().trim().to_string()),
+            _ => None,
+        },
+        _ => None,
+    });
+    lines.filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" ")
 }
 
 fn parse_params(cx: &Ctxt, input: &DeriveInput) -> Vec<Ident> {
@@ -256,6 +285,20 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 list.push(DefineDecl { name, expr });
             }
             UNILATERAL => model.unilaterals.push(parse_unilateral(input)?),
+            UNIT => {
+                let content;
+                syn::parenthesized!(content in input);
+                let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                input.parse::<Token![=]>()?;
+                let unit: syn::LitStr = input.parse()?;
+                if unit.value().trim().is_empty() {
+                    return Err(syn::Error::new(
+                        unit.span(),
+                        "a unit cannot be empty: write `unit(x) = \"m\"`",
+                    ));
+                }
+                model.units.extend(names.iter().map(|n| (n.unraw(), unit.clone())));
+            }
             EVENT => model.events.push(parse_event(input)?),
             "__contacts" => {
                 let content;

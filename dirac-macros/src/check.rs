@@ -17,6 +17,7 @@ pub fn check(cx: &Ctxt, model: &Model<'_>) {
     check_names(cx, model);
     check_ports(cx, model);
     check_forces(cx, model);
+    check_units(cx, model);
     check_inputs(cx, model);
 }
 
@@ -86,6 +87,30 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
     }
     for e in &model.events {
         declare(&e.name, "event");
+    }
+}
+
+/// Units name coordinates, velocities, parameters (inputs among them) or outputs, each once.
+fn check_units(cx: &Ctxt, model: &Model<'_>) {
+    let names: Vec<String> = (model.coordinates.iter().flat_map(|c| [&c.name, &c.velocity]))
+        .chain(&model.params)
+        .chain(model.outputs.iter().map(|o| &o.name))
+        .map(ToString::to_string)
+        .collect();
+    let mut seen = HashSet::new();
+    for (ident, _) in &model.units {
+        let name = ident.to_string();
+        if !names.contains(&name) {
+            let hint = did_you_mean(&name, names.iter().map(String::as_str));
+            cx.error_spanned_by(
+                ident,
+                format!(
+                    "`unit({name})` names no coordinate, velocity, parameter, input or output of this model{hint}"
+                ),
+            );
+        } else if !seen.insert(name.clone()) {
+            cx.error_spanned_by(ident, format!("`{name}` is given a unit twice"));
+        }
     }
 }
 

@@ -194,7 +194,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
         counts.jacobian_blocks,
     );
     let constants = inherent_constants(model, names);
-    let named = named(&sym, ident, &model.inputs);
+    let named = named(&sym, ident, model);
     let inputs = input_methods(&model.inputs);
     let parameters = non_finite_parameter(&sym.params);
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
@@ -296,7 +296,8 @@ fn input_methods(inputs: &[syn::Ident]) -> TokenStream {
 }
 
 /// The `Named` impl: the model's coordinates, velocities, constraints and ports.
-fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStream {
+fn named(sym: &SymModel, ident: &syn::Ident, model: &Model<'_>) -> TokenStream {
+    let inputs = &model.inputs;
     let p = rt();
     let coordinates = sym.coordinates.iter().map(ToString::to_string);
     let velocities = sym.velocities.iter().map(ToString::to_string);
@@ -308,6 +309,15 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
     let unilaterals = sym.unilaterals.iter().map(|u| &u.name);
     let events = sym.events.iter().map(|(name, direction, _)| quote! { (#name, #direction) });
     let parameters = sym.params.iter().map(|p| syn::ext::IdentExt::unraw(p).to_string());
+    let doc = &model.doc;
+    let docs = model.param_docs.iter().map(|(name, doc)| {
+        let name = name.to_string();
+        quote! { (#name, #doc) }
+    });
+    let units = model.units.iter().map(|(name, unit)| {
+        let name = name.to_string();
+        quote! { (#name, #unit) }
+    });
     quote! {
         #[automatically_derived]
         impl #p::Named for #ident {
@@ -323,6 +333,9 @@ fn named(sym: &SymModel, ident: &syn::Ident, inputs: &[syn::Ident]) -> TokenStre
                 events: &[#(#events),*],
                 parameters: &[#(#parameters),*],
                 subsystems: &[],
+                doc: #doc,
+                docs: &[#(#docs),*],
+                units: &[#(#units),*],
             };
         }
     }
@@ -370,6 +383,9 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 events: &[],
                 parameters: &[],
                 subsystems: &[],
+                doc: "",
+                docs: &[],
+                units: &[],
             };
         }
         impl #p::LagrangeDirac for #ident {

@@ -27,6 +27,9 @@ pub const OUTPUT: &str = "output";
 /// `unilateral(name) = expr` or `unilateral(name, restitution = e) = expr`: a contact,
 /// `φ(q, t) ≥ 0`, with its coefficient of restitution (1, elastic, unless given).
 pub const UNILATERAL: &str = "unilateral";
+/// `unit(name, ...) = "text"`: the unit of coordinates, velocities, parameters, inputs or
+/// outputs, for people and for exported descriptions (an FMU's `modelDescription.xml`).
+pub const UNIT: &str = "unit";
 /// The restitution of a `unilateral` constraint.
 pub const RESTITUTION: &str = "restitution";
 /// `event(name) = expr` or `event(name, falling | rising | either) = expr`: a function whose
@@ -50,6 +53,7 @@ pub const MODEL_KEYS: &[&str] = &[
     UNILATERAL,
     EVENT,
     FORCE,
+    UNIT,
     LARGE,
 ];
 

@@ -41,6 +41,13 @@ pub struct Names {
     pub parameters: &'static [&'static str],
     /// The subsystems of a composite, in field order.
     pub subsystems: &'static [Subsystem],
+    /// The model's doc comment.
+    pub doc: &'static str,
+    /// The doc comments of the model's own parameter fields, as `(name, text)`.
+    pub docs: &'static [(&'static str, &'static str)],
+    /// Units declared with `unit(name, ...) = "text"`, as `(name, unit)`: of the model's own
+    /// coordinates, velocities, parameters, inputs and outputs.
+    pub units: &'static [(&'static str, &'static str)],
 }
 
 /// A subsystem of a composite: the field that holds it and where its parts sit in the composite.
@@ -214,6 +221,31 @@ impl Names {
         count
     }
 
+    /// The doc comment of the parameter (or input field) with this full dotted name
+    /// (`left.k1`), if it has one.
+    pub fn doc_of(&self, name: &str) -> Option<&'static str> {
+        let (names, own) = self.owner(name)?;
+        names.docs.iter().find(|(n, _)| *n == own).map(|&(_, doc)| doc)
+    }
+
+    /// The declared unit of the coordinate, velocity, parameter, input or output with this
+    /// full dotted name, if it has one.
+    pub fn unit_of(&self, name: &str) -> Option<&'static str> {
+        let (names, own) = self.owner(name)?;
+        names.units.iter().find(|(n, _)| *n == own).map(|&(_, unit)| unit)
+    }
+
+    /// The names of the (sub)model a dotted name belongs to, and the name within it.
+    fn owner<'n>(&self, name: &'n str) -> Option<(&Names, &'n str)> {
+        match name.split_once('.') {
+            None => Some((self, name)),
+            Some((field, rest)) => {
+                let sub = self.subsystems.iter().find(|s| s.field == field)?;
+                sub.names.owner(rest)
+            }
+        }
+    }
+
     /// Every input's full dotted name, in the order of the model's input keys: its
     /// subsystems' in field order, then its own.
     pub fn input_names(&self) -> Vec<String> {
@@ -339,8 +371,11 @@ mod tests {
         outputs: &["energy"],
         unilaterals: &[],
         events: &[],
-        parameters: &[],
+        parameters: &["k"],
         subsystems: &[],
+        doc: "The left half.",
+        docs: &[("k", "Stiffness.")],
+        units: &[("x1", "m"), ("k", "N/m")],
     };
     static RIGHT: Names = Names {
         coordinates: &["x2bar", "x3"],
@@ -354,6 +389,9 @@ mod tests {
         events: &[],
         parameters: &[],
         subsystems: &[],
+        doc: "",
+        docs: &[],
+        units: &[("x3", "mm")],
     };
     static CHAIN: Names = Names {
         coordinates: &[],
@@ -370,7 +408,23 @@ mod tests {
             Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },
             Subsystem { field: "right", names: &RIGHT, q_offset: 2, h_offset: 0, v_offset: 0, u_offset: 1 },
         ],
+        doc: "",
+        docs: &[],
+        units: &[],
     };
+
+    #[test]
+    fn units_and_docs_are_found_through_their_subsystems() {
+        assert_eq!(CHAIN.unit_of("left.x1"), Some("m"));
+        assert_eq!(CHAIN.unit_of("left.k"), Some("N/m"));
+        assert_eq!(CHAIN.unit_of("right.x3"), Some("mm"));
+        assert_eq!(CHAIN.unit_of("right.x2bar"), None);
+        assert_eq!(CHAIN.unit_of("x1"), None);
+        assert_eq!(CHAIN.unit_of("left"), None);
+        assert_eq!(CHAIN.doc_of("left.k"), Some("Stiffness."));
+        assert_eq!(CHAIN.doc_of("right.k"), None);
+        assert_eq!(LEFT.doc, "The left half.");
+    }
 
     #[test]
     fn inputs_are_named_through_their_subsystems() {

@@ -11,6 +11,8 @@ use dirac::prelude::*;
 #[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y, force(x) = f)]
 #[dirac(holonomic(rod) = x * x + y * y - l * l)]
 #[dirac(output(energy) = 0.5 * m * (vx * vx + vy * vy) + m * g * y, output(height) = y)]
+#[dirac(unit(x, y, l, height) = "m", unit(vx, vy) = "m/s", unit(m) = "kg", unit(g) = "m/s2")]
+#[dirac(unit(f) = "N", unit(energy) = "J")]
 pub struct DrivenPendulum {
     /// Mass of the bob.
     pub m: f64,
@@ -26,8 +28,8 @@ pub struct DrivenPendulum {
 pub const START_ANGLE: f64 = 0.5;
 
 impl Export for DrivenPendulum {
+    // The description is the struct's doc comment.
     const MODEL_IDENTIFIER: &'static str = "driven_pendulum";
-    const DESCRIPTION: &'static str = "A pendulum in Cartesian coordinates pushed sideways by an input force";
 
     fn instantiate() -> Self {
         DrivenPendulum { m: 1.0, g: 9.81, l: 1.0, f: 0.0 }

@@ -8,6 +8,7 @@ use dirac::prelude::*;
 /// Primitive system 1: wall —k1— m1 —k2— m2, port at x2.
 #[derive(LagrangeDirac)]
 #[dirac(coordinates(x1 => v1, x2 => v2), port(x2))]
+#[dirac(unit(x1, x2) = "m", unit(v1, v2) = "m/s", unit(m1, m2) = "kg", unit(k1, k2) = "N/m")]
 #[dirac(lagrangian = 0.5 * m1 * v1 * v1 + 0.5 * m2 * v2 * v2
                    - 0.5 * k1 * x1 * x1 - 0.5 * k2 * (x2 - x1).powi(2))]
 pub struct Primitive1 {
@@ -24,6 +25,7 @@ pub struct Primitive1 {
 /// Primitive system 2: x̄2 —k3— m3, port at x̄2; degenerate (no kinetic energy in v̄2).
 #[derive(LagrangeDirac)]
 #[dirac(coordinates(x2bar => v2bar, x3 => v3), port(x2bar))]
+#[dirac(unit(x2bar, x3) = "m", unit(v2bar, v3) = "m/s", unit(m3) = "kg", unit(k3) = "N/m")]
 #[dirac(lagrangian = 0.5 * m3 * v3 * v3 - 0.5 * k3 * (x3 - x2bar).powi(2))]
 pub struct Primitive2 {
     /// Mass m3.

@@ -189,6 +189,7 @@ struct Float64<'a> {
     variability: &'a str,
     initial: Option<&'a str>,
     start: Option<f64>,
+    unit: Option<&'a str>,
     description: &'a str,
 }
 
@@ -210,6 +211,9 @@ impl Float64<'_> {
                 return Err(DescriptionError::NotFinite { name: self.name.to_string(), value: start });
             }
             let _ = write!(out, " start=\"{}\"", number(start));
+        }
+        if let Some(unit) = self.unit {
+            let _ = write!(out, " unit=\"{}\"", escape(unit));
         }
         if !self.description.is_empty() {
             let _ = write!(out, " description=\"{}\"", escape(self.description));
@@ -237,6 +241,17 @@ where
     let velocities = model.velocity_names();
     let constraints = model.constraint_names();
 
+    let names = M::NAMES;
+    let mut units: Vec<&str> = Vec::new();
+    let mut unit = |name: &str| {
+        let unit = names.unit_of(name);
+        if let Some(u) = unit
+            && !units.contains(&u)
+        {
+            units.push(u);
+        }
+        unit
+    };
     let mut seen = std::collections::HashSet::new();
     let mut variables = String::new();
     let mut element = |e: Float64| -> Result<(), DescriptionError> {
@@ -253,6 +268,7 @@ where
         variability: continuous,
         initial: None,
         start: None,
+        unit: None,
         description: "Simulation time",
     })?;
     for &k in &table.parameters {
@@ -263,7 +279,8 @@ where
             variability: "fixed",
             initial: None,
             start: Some(model.parameter_value(k)),
-            description: "Parameter, settable before initialisation",
+            unit: unit(&parameters[k]),
+            description: names.doc_of(&parameters[k]).unwrap_or("Parameter"),
         })?;
     }
     for (k, name) in inputs.iter().enumerate() {
@@ -274,7 +291,8 @@ where
             variability: continuous,
             initial: None,
             start: Some(model.input_value(k)),
-            description: "Input, held constant over each communication step",
+            unit: unit(name),
+            description: names.doc_of(name).unwrap_or("Input, held over each communication step"),
         })?;
     }
     for (k, name) in outputs.iter().enumerate() {
@@ -285,6 +303,7 @@ where
             variability: continuous,
             initial: None,
             start: None,
+            unit: unit(name),
             description: "Output",
         })?;
     }
@@ -296,6 +315,7 @@ where
             variability: continuous,
             initial: Some("exact"),
             start: Some(q[k]),
+            unit: unit(name),
             description: "Position; its start value is made consistent with the constraints",
         })?;
     }
@@ -307,6 +327,7 @@ where
             variability: continuous,
             initial: Some("exact"),
             start: Some(v[k]),
+            unit: unit(name),
             description: "Velocity; its start value is made consistent with the constraints",
         })?;
     }
@@ -318,6 +339,7 @@ where
             variability: continuous,
             initial: Some("calculated"),
             start: None,
+            unit: None,
             description: "Constraint multiplier",
         })?;
     }
@@ -330,7 +352,7 @@ where
         "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"{}\" instantiationToken=\"@TOKEN@\" \
          description=\"{}\" generationTool=\"dirac {}\" variableNamingConvention=\"flat\">",
         escape(M::MODEL_IDENTIFIER),
-        escape(M::DESCRIPTION),
+        escape(if M::DESCRIPTION.is_empty() { names.doc } else { M::DESCRIPTION }),
         env!("CARGO_PKG_VERSION"),
     );
     let _ = writeln!(
@@ -339,6 +361,13 @@ where
          canGetAndSetFMUState=\"true\" canSerializeFMUState=\"true\" hasEventMode=\"false\"/>",
         escape(M::MODEL_IDENTIFIER)
     );
+    if !units.is_empty() {
+        out.push_str("  <UnitDefinitions>\n");
+        for unit in &units {
+            let _ = writeln!(out, "    <Unit name=\"{}\"/>", escape(unit));
+        }
+        out.push_str("  </UnitDefinitions>\n");
+    }
     out.push_str("  <LogCategories>\n");
     out.push_str("    <Category name=\"logStatusError\" description=\"Calls that failed\"/>\n");
     out.push_str("    <Category name=\"logStatusDiscard\" description=\"Steps that could not be taken\"/>\n");

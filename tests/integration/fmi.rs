@@ -235,3 +235,36 @@ fn bad_use_returns_fmi_errors_with_logged_messages_and_the_instance_survives() {
     eprintln!("{report}");
     assert!(report.ends_with("all checks passed\n"), "{report}");
 }
+
+#[test]
+fn the_description_carries_units_and_doc_comments() {
+    // Units from `unit(...)` and descriptions from doc comments, through a composite's names.
+    let names = PaperChain::NAMES;
+    assert_eq!(names.unit_of("left.x1"), Some("m"));
+    assert_eq!(names.unit_of("right.v3"), Some("m/s"));
+    assert_eq!(names.unit_of("right.k3"), Some("N/m"));
+    assert_eq!(names.doc_of("right.k3"), Some("Spring constant k3 (m2 to m3)."));
+    assert_eq!(names.unit_of("left.nothing"), None);
+    assert_eq!(names.unit_of("middle.x1"), None);
+    assert_eq!(
+        DrivenPendulum::NAMES.doc.split('.').next(),
+        Some(
+            "A bob of mass `m` on a rod of length `l` under gravity `g`, pushed along `x` by the input force `f`"
+        )
+    );
+
+    let xml = dirac::fmi::model_description(&DrivenPendulum::instantiate()).expect("described");
+    for element in [
+        r#"<Float64 name="m" valueReference="1" causality="parameter" variability="fixed" start="1.0" unit="kg" description="Mass of the bob."/>"#,
+        r#"<Float64 name="f" valueReference="4" causality="input" variability="continuous" start="0.0" unit="N""#,
+        r#"<Float64 name="energy" valueReference="5" causality="output" variability="continuous" unit="J""#,
+        r#"<Float64 name="lambda(rod)" valueReference="11" causality="local""#,
+        r#"<Output valueReference="5"/>"#,
+    ] {
+        assert!(xml.contains(element), "{element} is missing from\n{xml}");
+    }
+    // Each unit is defined once, and every unit used is defined.
+    for unit in ["kg", "m", "m/s", "m/s2", "N", "J"] {
+        assert_eq!(xml.matches(&format!("<Unit name=\"{unit}\"/>")).count(), 1, "{unit}");
+    }
+}

@@ -23,6 +23,10 @@ pub struct Composite<'a> {
     pub large: bool,
     /// Whether an attribute failed to parse (later stages then report nothing more).
     pub incomplete: bool,
+    /// The struct's doc comment.
+    pub doc: String,
+    /// The doc comments of the `f64` fields that have one.
+    pub param_docs: Vec<(Ident, String)>,
 }
 
 /// A field holding a subsystem, or an array of them.
@@ -97,6 +101,8 @@ impl<'a> Composite<'a> {
             constraints: Vec::new(),
             large: false,
             incomplete: false,
+            doc: crate::ast::doc_comment(&input.attrs),
+            param_docs: Vec::new(),
         };
         if !input.generics.params.is_empty() {
             cx.error_spanned_by(
@@ -130,6 +136,10 @@ impl<'a> Composite<'a> {
         for field in &named.named {
             let ident = field.ident.clone().expect("named fields have names");
             if is_f64(&field.ty) {
+                let doc = crate::ast::doc_comment(&field.attrs);
+                if !doc.is_empty() {
+                    self.param_docs.push((ident.unraw(), doc));
+                }
                 self.params.push(ident);
             } else if let Some(elem) = element_type(&field.ty) {
                 if let Some(name) = never_a_model(elem).or_else(|| is_f64(elem).then(|| "f64".to_owned())) {

@@ -18,6 +18,11 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
     let ident = composite.ident;
     let rows = model.rows.iter().map(|r| &r.name);
     let parameters = composite.params.iter().map(|f| f.unraw().to_string());
+    let doc = &composite.doc;
+    let docs = composite.param_docs.iter().map(|(name, doc)| {
+        let name = name.to_string();
+        quote! { (#name, #doc) }
+    });
     let subsystems = composite.subsystems.iter().enumerate().map(|(i, s)| {
         let (ty, field) = (&s.ty, s.ident.unraw().to_string());
         let (qi, hi, vi) = (format_ident!("__Q{}", i), format_ident!("__H{}", i), format_ident!("__V{}", i));
@@ -48,6 +53,9 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 events: &[],
                 parameters: &[#(#parameters),*],
                 subsystems: &[#(#subsystems),*],
+                doc: #doc,
+                docs: &[#(#docs),*],
+                units: &[],
             };
         }
     }

@@ -21,6 +21,9 @@ const _: () = {
             events: &[],
             parameters: &["m", "k"],
             subsystems: &[],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

@@ -300,6 +300,9 @@ const _: () = {
                         + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
                 },
             ],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

@@ -409,6 +409,9 @@ const _: () = {
                         + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
                 },
             ],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

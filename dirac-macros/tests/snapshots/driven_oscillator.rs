@@ -21,6 +21,9 @@ const _: () = {
             events: &[],
             parameters: &["m", "k", "c", "a", "w"],
             subsystems: &[],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

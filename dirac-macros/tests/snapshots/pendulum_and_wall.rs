@@ -21,6 +21,9 @@ const _: () = {
             events: &[("slack", 1i8), ("level", 0i8)],
             parameters: &["m", "g", "l", "e", "w"],
             subsystems: &[],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]
@@ -652,6 +655,9 @@ const _: () = {
             events: &[("slack", 1i8), ("level", 0i8)],
             parameters: &["m", "g", "l", "e", "w", "wall_closed"],
             subsystems: &[],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

@@ -21,6 +21,9 @@ const _: () = {
             events: &[],
             parameters: &["m1", "m2", "k1", "k2"],
             subsystems: &[],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

@@ -21,6 +21,9 @@ const _: () = {
             events: &[],
             parameters: &["m", "r", "i_roll", "i_turn"],
             subsystems: &[],
+            doc: "",
+            docs: &[],
+            units: &[],
         };
     }
     #[automatically_derived]

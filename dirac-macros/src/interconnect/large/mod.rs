@@ -281,6 +281,9 @@ pub fn implementation(
                     events: &[],
                     parameters: &[],
                     subsystems: &[],
+                    doc: "",
+                    docs: &[],
+                    units: &[],
                 };
             }
 
