@@ -152,6 +152,12 @@ pub enum DescriptionError {
     /// Two variables have the same name.
     #[error("two variables are named {0}: an FMU's variable names must be unique")]
     DuplicateName(String),
+    /// The model has unilateral constraints, which an FMU's steps would not keep.
+    #[error(
+        "the model has unilateral constraints ({0}): an FMU integrates without impacts or contact forces, so \
+         it would pass through them; export the model without them"
+    )]
+    Unilateral(String),
     /// The model has more variables than 32-bit value references can number.
     #[error("the model has {0} variables, more than FMI's 32-bit value references can number")]
     TooManyVariables(usize),
@@ -227,6 +233,10 @@ fn body<M: Export>(model: &M) -> Result<String, DescriptionError>
 where
     DefaultAllocator: Storage<M>,
 {
+    let unilaterals = model.unilateral_names();
+    if !unilaterals.is_empty() {
+        return Err(DescriptionError::Unilateral(unilaterals.join(", ")));
+    }
     let table = Table::of(model);
     if u32::try_from(table.len()).is_err() {
         return Err(DescriptionError::TooManyVariables(table.len()));

@@ -23,10 +23,10 @@ mod paper_chain;
 use driven_pendulum::DrivenPendulum;
 use paper_chain::PaperChain;
 
-/// The FMPy version the tests were written against.
-const FMPY: &str = "fmpy==0.3.32";
+/// The FMPy version the tests were written against, and matplotlib for the README's snippet.
+const PACKAGES: [&str; 2] = ["fmpy==0.3.32", "matplotlib>=3.8,<4"];
 
-/// A Python with FMPy: `DIRAC_FMPY_PYTHON` if set, otherwise a virtual environment in the
+/// A Python with FMPy and matplotlib: `DIRAC_FMPY_PYTHON` if set, otherwise a virtual environment in the
 /// target directory, created with FMPy on first use.
 fn python() -> &'static Path {
     static PYTHON: OnceLock<Result<PathBuf, String>> = OnceLock::new();
@@ -37,7 +37,8 @@ fn python() -> &'static Path {
         let venv = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmpy");
         let python = venv.join("bin").join("python");
         let has_fmpy = |python: &Path| {
-            Command::new(python).args(["-c", "import fmpy"]).output().is_ok_and(|o| o.status.success())
+            let imports = ["-c", "import fmpy, matplotlib"];
+            Command::new(python).args(imports).output().is_ok_and(|o| o.status.success())
         };
         if has_fmpy(&python) {
             return Ok(python);
@@ -53,7 +54,7 @@ fn python() -> &'static Path {
         };
         let venv_text = venv.to_string_lossy();
         run(Path::new("python3"), &["-m", "venv", &venv_text])?;
-        run(&venv.join("bin").join("pip"), &["install", "--quiet", FMPY])?;
+        run(&venv.join("bin").join("pip"), &[&["install", "--quiet"][..], &PACKAGES].concat())?;
         if has_fmpy(&python) { Ok(python) } else { Err("FMPy did not install".to_string()) }
     });
     match found {
@@ -76,12 +77,13 @@ fn example_library(example: &str) -> PathBuf {
     library
 }
 
-/// Packs the FMU of `M` from its example library into the test's directory.
-fn fmu<M: Export>(example: &str) -> PathBuf
+/// Packs the FMU of `M` from its example library into the test's directory, as
+/// `<example>-<test>.fmu` (tests run in parallel, each on its own file).
+fn fmu<M: Export>(example: &str, test: &str) -> PathBuf
 where
     DefaultAllocator: Storage<M>,
 {
-    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join(format!("{example}.fmu"));
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join(format!("{example}-{test}.fmu"));
     dirac::fmi::write_fmu::<M>(&example_library(example), &out).expect("the FMU is written");
     out
 }
@@ -174,7 +176,7 @@ where
 
 #[test]
 fn the_paper_chain_fmu_validates_and_fmpy_simulates_it_as_dirac_does() {
-    let fmu = fmu::<PaperChain>("fmu_paper_chain");
+    let fmu = fmu::<PaperChain>("fmu_paper_chain", "simulate");
     let csv = fmu.with_extension("csv");
     let (stop, step, tol) = (20.0, 0.01, 1e-10);
     let report =
@@ -197,7 +199,7 @@ fn the_paper_chain_fmu_validates_and_fmpy_simulates_it_as_dirac_does() {
 
 #[test]
 fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
-    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum");
+    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum", "simulate");
     let csv = fmu.with_extension("csv");
     let (stop, step, tol, amplitude, frequency) = (10.0, 0.01, 1e-10, 2.0, 3.0);
     let report = script(
@@ -230,7 +232,7 @@ fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
 
 #[test]
 fn bad_use_returns_fmi_errors_with_logged_messages_and_the_instance_survives() {
-    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum");
+    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum", "misuse");
     let report = script("misuse.py", &[&*fmu.to_string_lossy()]);
     eprintln!("{report}");
     assert!(report.ends_with("all checks passed\n"), "{report}");
@@ -267,4 +269,46 @@ fn the_description_carries_units_and_doc_comments() {
     for unit in ["kg", "m", "m/s", "m/s2", "N", "J"] {
         assert_eq!(xml.matches(&format!("<Unit name=\"{unit}\"/>")).count(), 1, "{unit}");
     }
+}
+
+#[test]
+fn the_readmes_python_snippet_simulates_and_plots_an_fmu() {
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).expect("README");
+    let snippet = readme
+        .split("```python\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("the README has a Python snippet");
+    // The snippet's paths are relative to a crate's root: give it one with the FMU in place.
+    let root = Path::new(env!("CARGO_TARGET_TMPDIR")).join("readme");
+    let fmu_dir = root.join("target").join("fmu");
+    std::fs::create_dir_all(&fmu_dir).expect("a directory");
+    let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum", "readme");
+    std::fs::copy(&fmu, fmu_dir.join("driven_pendulum.fmu")).expect("copied");
+    let plot = root.join("driven_pendulum.svg");
+    let _ = std::fs::remove_file(&plot);
+    let script = root.join("simulate.py");
+    std::fs::write(&script, snippet).expect("written");
+    let output = Command::new(python()).arg(&script).current_dir(&root).output().expect("python runs");
+    assert!(output.status.success(), "the snippet failed:\n{}", String::from_utf8_lossy(&output.stderr));
+    let svg = std::fs::read_to_string(&plot).expect("the snippet saves its plot");
+    assert!(svg.contains("<svg") && svg.len() > 10_000, "{} bytes of plot", svg.len());
+}
+
+impl Export for crate::zoo::BouncingBall {
+    const MODEL_IDENTIFIER: &'static str = "ball";
+    fn instantiate() -> Self {
+        crate::zoo::BouncingBall { m: 1.0, g: 9.81, e: 0.8 }
+    }
+}
+
+#[test]
+fn a_model_with_unilateral_constraints_is_refused() {
+    use crate::zoo::BouncingBall;
+    let refused = dirac::fmi::model_description(&BouncingBall::instantiate());
+    let message = refused.expect_err("a floor an FMU would pass through").to_string();
+    assert!(message.contains("unilateral constraints (floor)"), "{message}");
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join("ball.fmu");
+    assert!(dirac::fmi::write_fmu::<BouncingBall>(Path::new("unused.so"), &out).is_err());
 }
