@@ -375,7 +375,11 @@ where
                 "the communication step size {h} is not positive and finite"
             )));
         }
-        let (at, end) = (self.t, self.t + h);
+        // The importer's grid, not a sum of its steps: no drift between the two clocks.
+        let (at, end) = (self.t, t + h);
+        if end <= at {
+            return Err(Failure::error(format!("the communication step size {h} is too small at t = {at}")));
+        }
         let result = match self.radau.as_mut() {
             Some(radau) => Self::advance(radau, end, false),
             None => {
