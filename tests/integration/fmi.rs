@@ -312,3 +312,49 @@ fn a_model_with_unilateral_constraints_is_refused() {
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join("ball.fmu");
     assert!(dirac::fmi::write_fmu::<BouncingBall>(Path::new("unused.so"), &out).is_err());
 }
+
+/// The 60-cell LC ladder, an array of subsystems stored sparse, as an FMU: flux 1 at the
+/// first cell's node, the others at rest.
+impl Export for crate::zoo::Ladder {
+    const MODEL_IDENTIFIER: &'static str = "ladder";
+
+    fn instantiate() -> Self {
+        crate::zoo::unit_ladder(60)
+    }
+
+    fn start(&self, q: &mut VecQ<Self>, _v: &mut VecQ<Self>) {
+        q[self.cells(0, crate::zoo::Cell::B).index()] = 1.0;
+        q[self.cells(1, crate::zoo::Cell::A).index()] = 1.0;
+    }
+}
+
+/// The value reference of a variable, from the description.
+fn value_reference(xml: &str, name: &str) -> u32 {
+    let element = format!("name=\"{name}\" valueReference=\"");
+    let rest = xml.split(&element).nth(1).unwrap_or_else(|| panic!("{name} is not described"));
+    rest.split('"').next().and_then(|n| n.parse().ok()).expect("a number")
+}
+
+#[test]
+fn a_ladder_of_60_cells_runs_as_an_fmu_and_follows_its_modes() {
+    // Reference: the ladder's modal solution (`zoo::modal_solution`), independent of dirac.
+    use crate::zoo::{Ladder, modal_solution};
+    use dirac::fmi::Instance;
+    let xml = dirac::fmi::model_description(&Ladder::instantiate()).expect("described");
+    let nodes: Vec<u32> = (0..60).map(|j| value_reference(&xml, &format!("cells[{j}].b"))).collect();
+    let mut fmu = Instance::<Ladder>::new();
+    fmu.enter_initialization(Some(1e-10), 0.0, None).expect("initialisation");
+    fmu.exit_initialization().expect("a consistent start");
+    let mut x = vec![0.0; 60];
+    for k in 0..20 {
+        fmu.do_step(0.1 * k as f64, 0.1).expect("steps");
+    }
+    fmu.get(&nodes, &mut x).expect("read");
+    let mut x0 = vec![0.0; 60];
+    x0[0] = 1.0;
+    let exact = modal_solution(&x0, 1.0, 1.0, 2.0);
+    let error = x.iter().zip(&exact).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+    eprintln!("largest node error {error:e} at t = 2");
+    assert!(error < 1e-7, "largest node error {error:e} at t = 2");
+    assert!((fmu.time() - 2.0).abs() < 1e-12);
+}
