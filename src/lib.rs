@@ -21,6 +21,9 @@
 //! - [`paper`]: each concept of the paper and where it lives in the API;
 //! - [`compile_time_checks`]: everything `cargo build` checks in a model.
 //!
+//! Models export as FMI 3.0 co-simulation FMUs for Python, Simulink, Dymola and every other
+//! FMI importer: [`fmi`].
+//!
 //! ```
 //! use dirac::prelude::*;
 //!

@@ -1,12 +1,12 @@
 """Validates an FMU with FMPy and simulates it there, for tests/integration/fmi.rs.
 
-usage: simulate.py FMU OUT.csv STOP STEP TOLERANCE [INPUT AMPLITUDE FREQUENCY]
+usage: simulate.py FMU OUT.csv STOP STEP TOLERANCE [input=NAME,AMPLITUDE,FREQUENCY] [NAME=VALUE ...]
 
 Prints FMPy's validation problems (none expected) and exits with 1 if there are any. Writes
-every Float64 variable that is not a parameter or an input, at each communication point, to OUT.csv. With
-INPUT, the input of that name follows AMPLITUDE * sin(FREQUENCY * t), given to FMPy as a table
-at the communication points (FMPy interpolates it linearly, so at those points it takes the
-table's values).
+every Float64 variable that is not a parameter or an input, at each communication point, to
+OUT.csv. With `input=...`, the input NAME follows AMPLITUDE * sin(FREQUENCY * t), given to FMPy
+as a table at the communication points (FMPy interpolates it linearly, so at those points it
+takes the table's values). Each NAME=VALUE is a start value FMPy sets before initialisation.
 """
 
 import sys
@@ -31,8 +31,14 @@ names = [
 ]
 
 signals = None
-if len(sys.argv) > 6:
-    name, amplitude, frequency = sys.argv[6], float(sys.argv[7]), float(sys.argv[8])
+start_values = {}
+for argument in sys.argv[6:]:
+    key, value = argument.split("=", 1)
+    if key != "input":
+        start_values[key] = float(value)
+        continue
+    name, amplitude, frequency = value.split(",")
+    amplitude, frequency = float(amplitude), float(frequency)
     times = np.arange(round(stop / step) + 1) * step
     signals = np.array(
         list(zip(times, amplitude * np.sin(frequency * times))),
@@ -45,6 +51,7 @@ result = simulate_fmu(
     output_interval=step,
     relative_tolerance=tolerance,
     input=signals,
+    start_values=start_values,
     output=names,
     validate=True,
 )

@@ -176,17 +176,31 @@ where
 
 #[test]
 fn the_paper_chain_fmu_validates_and_fmpy_simulates_it_as_dirac_does() {
+    // FMPy sets a parameter and a start position before initialisation; dirac runs the same
+    // chain from the same start.
     let fmu = fmu::<PaperChain>("fmu_paper_chain", "simulate");
     let csv = fmu.with_extension("csv");
     let (stop, step, tol) = (20.0, 0.01, 1e-10);
-    let report =
-        script("simulate.py", &[&*fmu.to_string_lossy(), &*csv.to_string_lossy(), "20", "0.01", "1e-10"]);
+    let report = script(
+        "simulate.py",
+        &[
+            &*fmu.to_string_lossy(),
+            &*csv.to_string_lossy(),
+            "20",
+            "0.01",
+            "1e-10",
+            "right.k3=9",
+            "left.x1=0.2",
+        ],
+    );
     assert!(report.contains("2001 samples"), "{report}");
 
-    let chain = PaperChain::instantiate();
+    let mut chain = PaperChain::instantiate();
+    chain.right.k3 = 9.0;
     let sizes = chain.sizes();
     let (mut q, mut v) = (sizes.zeros_q::<PaperChain>(), sizes.zeros_q::<PaperChain>());
     chain.start(&mut q, &mut v);
+    q[PaperChain::left(paper_chain::Primitive1::X1).index()] = 0.2;
     let start = consistent_state(&chain, 0.0, &q, &v, Consistency::default()).expect("consistent");
     let solve = |tol: f64| {
         Radau::new(&chain, RadauOptions::tolerances(tol, tol))
@@ -194,7 +208,31 @@ fn the_paper_chain_fmu_validates_and_fmpy_simulates_it_as_dirac_does() {
             .solve(0.0, &start, stop, &Sampling::Every(step))
             .expect("integrates")
     };
-    assert_as_accurate_as_dirac(&csv, &solve(tol), &solve(1e-3 * tol), tol);
+    let (ours, reference) = (solve(tol), solve(1e-3 * tol));
+    assert_as_accurate_as_dirac(&csv, &ours, &reference, tol);
+    // The start values took: x1 starts at 0.2, and k3 = 9 changes the motion (against the
+    // default k3 = 6, run by dirac here).
+    let (header, rows) = read_csv(&csv);
+    let x1 = header.iter().position(|n| n == "left.x1").expect("x1 is recorded");
+    assert_eq!(rows[0][x1], 0.2);
+    let mut default = PaperChain::instantiate();
+    default.right.k3 = 6.0;
+    let other = Radau::new(&default, RadauOptions::tolerances(tol, tol))
+        .expect("valid")
+        .solve(
+            0.0,
+            &consistent_state(&default, 0.0, &q, &v, Consistency::default()).expect("consistent"),
+            stop,
+            &Sampling::Every(step),
+        )
+        .expect("integrates");
+    let x3 = header.iter().position(|n| n == "right.x3").expect("x3 is recorded");
+    let apart = rows
+        .iter()
+        .zip(other.column("right.x3").expect("x3"))
+        .map(|(r, y)| (r[x3] - y).abs())
+        .fold(0.0, f64::max);
+    assert!(apart > 1e-3, "k3 = 9 and k3 = 6 give the same x3 (apart by {apart:e})");
 }
 
 #[test]
@@ -204,7 +242,7 @@ fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
     let (stop, step, tol, amplitude, frequency) = (10.0, 0.01, 1e-10, 2.0, 3.0);
     let report = script(
         "simulate.py",
-        &[&*fmu.to_string_lossy(), &*csv.to_string_lossy(), "10", "0.01", "1e-10", "f", "2", "3"],
+        &[&*fmu.to_string_lossy(), &*csv.to_string_lossy(), "10", "0.01", "1e-10", "input=f,2,3"],
     );
     assert!(report.contains("1001 samples"), "{report}");
 
