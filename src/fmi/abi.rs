@@ -17,13 +17,40 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use crate::Storage;
 use crate::nalgebra::DefaultAllocator;
 
-use super::Export;
 use super::instance::{Failure, Instance, Phase, Snapshot, Status};
+use super::{Export, Version};
 
 /// FMI's `fmi3LogMessageCallback`.
 pub type LogMessage = Option<
     unsafe extern "C" fn(env: *mut c_void, status: i32, category: *const c_char, message: *const c_char),
 >;
+
+/// FMI 2.0's `fmi2CallbackLogger`: its message is a `printf` format.
+pub type Logger2 = Option<
+    unsafe extern "C" fn(
+        env: *mut c_void,
+        instance_name: *const c_char,
+        status: i32,
+        category: *const c_char,
+        message: *const c_char,
+        ...
+    ),
+>;
+
+/// FMI 2.0's `fmi2CallbackFunctions`.
+#[repr(C)]
+pub struct Callbacks2 {
+    /// The log callback.
+    pub logger: Logger2,
+    /// Not used: dirac allocates with Rust's allocator.
+    pub allocate_memory: *const c_void,
+    /// Not used.
+    pub free_memory: *const c_void,
+    /// Not used: steps are never asynchronous.
+    pub step_finished: *const c_void,
+    /// Passed back to the logger.
+    pub component_environment: *mut c_void,
+}
 
 /// What an instance pointer points to: the instance and how to reach the importer's log.
 pub struct Handle<M: Export>
@@ -32,19 +59,31 @@ where
 {
     instance: Instance<M>,
     logger: Logger,
+    /// FMI 2.0's `fmi2SetupExperiment`: tolerance, start and stop, for the initialisation.
+    experiment: (Option<f64>, f64, Option<f64>),
 }
 
 /// The importer's log callback and the instance's name.
 struct Logger {
-    name: String,
+    name: CString,
     env: *mut c_void,
-    callback: LogMessage,
+    callback: Callback,
     debug: bool,
 }
 
+/// The log callback of either version.
+enum Callback {
+    Fmi3(LogMessage),
+    Fmi2(Logger2),
+}
+
 impl Logger {
+    fn new(name: *const c_char, env: *mut c_void, callback: Callback, debug: bool) -> Logger {
+        let name = CString::new(text(name)).unwrap_or_default();
+        Logger { name, env, callback, debug }
+    }
+
     fn log(&self, status: Status, message: &str) {
-        let Some(callback) = self.callback else { return };
         let category = match status {
             Status::Discard => c"logStatusDiscard",
             Status::Ok => c"logEvents",
@@ -53,11 +92,25 @@ impl Logger {
         if status == Status::Ok && !self.debug {
             return;
         }
-        let text = format!("{}: {message}", self.name).replace('\0', " ");
-        let Ok(text) = CString::new(text) else { return };
-        // SAFETY: the importer gave this callback and environment for this instance's messages;
-        // both strings are NUL-terminated and live across the call.
-        unsafe { callback(self.env, status as i32, category.as_ptr(), text.as_ptr()) };
+        let name = self.name.to_string_lossy();
+        match self.callback {
+            Callback::Fmi3(Some(callback)) => {
+                let Ok(text) = CString::new(format!("{name}: {message}").replace('\0', " ")) else { return };
+                // SAFETY: the importer gave this callback and environment for this instance's
+                // messages; both strings are NUL-terminated and live across the call.
+                unsafe { callback(self.env, status as i32, category.as_ptr(), text.as_ptr()) };
+            }
+            Callback::Fmi2(Some(callback)) => {
+                // The message is the format, with no arguments: importers that format it show
+                // `%%` as `%`, and those that print it as it is (FMPy) show the text.
+                let Ok(text) = CString::new(message.replace('\0', " ").replace('%', "%%")) else { return };
+                // SAFETY: as above; the format has no conversions, so no arguments are read.
+                unsafe {
+                    callback(self.env, self.name.as_ptr(), status as i32, category.as_ptr(), text.as_ptr())
+                };
+            }
+            Callback::Fmi3(None) | Callback::Fmi2(None) => {}
+        }
     }
 }
 
@@ -159,16 +212,23 @@ pub unsafe fn instantiate_co_simulation<M: Export>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let logger = Logger { name: text(name), env, callback, debug: logging_on };
-    let given = text(token);
+    let logger = Logger::new(name, env, Callback::Fmi3(callback), logging_on);
+    instantiate::<M>(logger, text(token), Version::Fmi3)
+}
+
+/// A new instance for a library of either version, or null with a logged message.
+fn instantiate<M: Export>(logger: Logger, given: String, version: Version) -> *mut c_void
+where
+    DefaultAllocator: Storage<M>,
+{
     let made = catch_unwind(|| {
         let instance = Instance::<M>::new();
-        let expected = super::variables::description(&M::instantiate()).map(|(_, token)| token);
+        let expected = super::variables::description(&M::instantiate(), version).map(|(_, token)| token);
         (instance, expected)
     });
     match made {
         Ok((instance, Ok(expected))) if expected == given => {
-            Box::into_raw(Box::new(Handle { instance, logger })).cast()
+            Box::into_raw(Box::new(Handle { instance, logger, experiment: (None, 0.0, None) })).cast()
         }
         Ok((_, Ok(expected))) => {
             logger.log(
@@ -198,7 +258,7 @@ pub unsafe fn instantiate_other(
     env: *mut c_void,
     callback: LogMessage,
 ) -> *mut c_void {
-    let logger = Logger { name: text(name), env, callback, debug: false };
+    let logger = Logger::new(name, env, Callback::Fmi3(callback), false);
     logger.log(
         Status::Error,
         &format!(
@@ -493,6 +553,106 @@ where
             } else {
                 *old.cast::<Snapshot>() = snapshot;
             }
+            Ok(())
+        })
+    }
+}
+
+/// `fmi2GetVersion`.
+pub fn version2() -> *const c_char {
+    c"2.0".as_ptr()
+}
+
+/// `fmi2GetTypesPlatform`.
+pub fn types_platform2() -> *const c_char {
+    c"default".as_ptr()
+}
+
+/// `fmi2Instantiate`: a co-simulation instance, or null with a logged message.
+pub unsafe fn instantiate2<M: Export>(
+    name: *const c_char,
+    fmu_type: i32,
+    guid: *const c_char,
+    callbacks: *const Callbacks2,
+    logging_on: i32,
+) -> *mut c_void
+where
+    DefaultAllocator: Storage<M>,
+{
+    // SAFETY: FMI passes a pointer to the callbacks, valid for the instance's life; a null
+    // pointer leaves the instance without a log.
+    let (logger, env) = match unsafe { callbacks.as_ref() } {
+        Some(c) => (c.logger, c.component_environment),
+        None => (None, std::ptr::null_mut()),
+    };
+    let logger = Logger::new(name, env, Callback::Fmi2(logger), logging_on != 0);
+    const CO_SIMULATION: i32 = 1;
+    if fmu_type != CO_SIMULATION {
+        logger.log(Status::Error, "this FMU supports co-simulation only, not model exchange");
+        return std::ptr::null_mut();
+    }
+    instantiate::<M>(logger, text(guid), Version::Fmi2)
+}
+
+/// `fmi2SetupExperiment`: kept for `fmi2EnterInitializationMode`.
+pub unsafe fn setup_experiment2<M: Export>(
+    instance: *mut c_void,
+    tolerance_defined: i32,
+    tolerance: f64,
+    start: f64,
+    stop_defined: i32,
+    stop: f64,
+) -> i32
+where
+    DefaultAllocator: Storage<M>,
+{
+    if instance.is_null() {
+        return ERROR;
+    }
+    // SAFETY: as in `with`.
+    let handle = unsafe { &mut *instance.cast::<Handle<M>>() };
+    if handle.instance.phase == Phase::Instantiated {
+        handle.experiment =
+            ((tolerance_defined != 0).then_some(tolerance), start, (stop_defined != 0).then_some(stop));
+    }
+    unsafe {
+        with::<M>(instance, |i| match i.phase {
+            Phase::Instantiated => Ok(()),
+            _ => {
+                Err(Failure::error("fmi2SetupExperiment is allowed only before fmi2EnterInitializationMode"))
+            }
+        })
+    }
+}
+
+/// `fmi2EnterInitializationMode`, with the experiment `fmi2SetupExperiment` gave.
+pub unsafe fn enter_initialization_mode2<M: Export>(instance: *mut c_void) -> i32
+where
+    DefaultAllocator: Storage<M>,
+{
+    if instance.is_null() {
+        return ERROR;
+    }
+    // SAFETY: as in `with`.
+    let (tolerance, start, stop) = unsafe { &*instance.cast::<Handle<M>>() }.experiment;
+    unsafe { with::<M>(instance, |i| i.enter_initialization(tolerance, start, stop)) }
+}
+
+/// `fmi2GetRealStatus`: the last successful time (`fmi2LastSuccessfulTime`, kind 2).
+pub unsafe fn get_real_status2<M: Export>(instance: *mut c_void, kind: i32, value: *mut f64) -> i32
+where
+    DefaultAllocator: Storage<M>,
+{
+    unsafe {
+        with::<M>(instance, |i| {
+            const LAST_SUCCESSFUL_TIME: i32 = 2;
+            if kind != LAST_SUCCESSFUL_TIME {
+                return Err(Failure::error(format!("fmi2GetRealStatus of kind {kind} is not provided")));
+            }
+            if value.is_null() {
+                return Err(Failure::error("value is a null pointer"));
+            }
+            value.write(i.time());
             Ok(())
         })
     }

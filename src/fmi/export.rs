@@ -1,7 +1,8 @@
 //! [`export_fmu!`](crate::export_fmu): the FMI 3.0 C functions, named as the standard names
 //! them, each calling its generic counterpart in [`abi`](super::abi).
 
-/// Exports a model as the FMI 3.0 co-simulation functions of the library it is invoked in.
+/// Exports a model as the FMI 3.0 and FMI 2.0 co-simulation functions of the library it is
+/// invoked in.
 ///
 /// The model implements [`fmi::Export`](crate::fmi::Export); the invoking crate is built as a
 /// `cdylib` (`crate-type = ["cdylib", "rlib"]`, the `rlib` so that a packaging program can
@@ -9,9 +10,10 @@
 /// [`fmi::write_fmu`](crate::fmi::write_fmu) packs the library and its
 /// `modelDescription.xml` into an `.fmu`. One model per library: the C names are global.
 ///
-/// Every function of FMI 3.0 is exported, as importers load them all; those the FMU does not
-/// provide (model exchange, scheduled execution, clocks, derivatives, variables other than
-/// `Float64`) log why and return `fmi3Error`.
+/// Every function of FMI 3.0, and every common and co-simulation function of FMI 2.0, is
+/// exported, as importers load them all; those the FMU does not provide (model exchange,
+/// scheduled execution, clocks, derivatives, variables other than `Float64`/`Real`) log why
+/// and return an error.
 #[macro_export]
 macro_rules! export_fmu {
     ($model:ty) => {
@@ -279,6 +281,201 @@ macro_rules! export_fmu {
                 }
             }
 
+            // FMI 2.0: the same instance behind the 2.0 names.
+            #[unsafe(no_mangle)]
+            pub extern "C" fn fmi2GetTypesPlatform() -> *const c_char {
+                abi::types_platform2()
+            }
+
+            #[unsafe(no_mangle)]
+            pub extern "C" fn fmi2GetVersion() -> *const c_char {
+                abi::version2()
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2SetDebugLogging(
+                instance: *mut c_void,
+                logging_on: i32,
+                _n_categories: usize,
+                _categories: *const *const c_char,
+            ) -> i32 {
+                unsafe { abi::set_debug_logging::<Model>(instance, logging_on != 0) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2Instantiate(
+                name: *const c_char,
+                fmu_type: i32,
+                guid: *const c_char,
+                _resource_location: *const c_char,
+                callbacks: *const abi::Callbacks2,
+                _visible: i32,
+                logging_on: i32,
+            ) -> *mut c_void {
+                unsafe { abi::instantiate2::<Model>(name, fmu_type, guid, callbacks, logging_on) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2FreeInstance(instance: *mut c_void) {
+                unsafe { abi::free_instance::<Model>(instance) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2SetupExperiment(
+                instance: *mut c_void,
+                tolerance_defined: i32,
+                tolerance: f64,
+                start_time: f64,
+                stop_time_defined: i32,
+                stop_time: f64,
+            ) -> i32 {
+                unsafe {
+                    abi::setup_experiment2::<Model>(
+                        instance,
+                        tolerance_defined,
+                        tolerance,
+                        start_time,
+                        stop_time_defined,
+                        stop_time,
+                    )
+                }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2EnterInitializationMode(instance: *mut c_void) -> i32 {
+                unsafe { abi::enter_initialization_mode2::<Model>(instance) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2ExitInitializationMode(instance: *mut c_void) -> i32 {
+                unsafe { abi::exit_initialization_mode::<Model>(instance) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2Terminate(instance: *mut c_void) -> i32 {
+                unsafe { abi::terminate::<Model>(instance) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2Reset(instance: *mut c_void) -> i32 {
+                unsafe { abi::reset::<Model>(instance) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2GetReal(
+                instance: *mut c_void,
+                vrs: *const u32,
+                n_vrs: usize,
+                values: *mut f64,
+            ) -> i32 {
+                unsafe { abi::get_float64::<Model>(instance, vrs, n_vrs, values, n_vrs) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2SetReal(
+                instance: *mut c_void,
+                vrs: *const u32,
+                n_vrs: usize,
+                values: *const f64,
+            ) -> i32 {
+                unsafe { abi::set_float64::<Model>(instance, vrs, n_vrs, values, n_vrs) }
+            }
+
+            $crate::__fmi2_no_variables!(
+                Model;
+                fmi2GetInteger fmi2SetInteger "Integer",
+                fmi2GetBoolean fmi2SetBoolean "Boolean",
+                fmi2GetString fmi2SetString "String",
+            );
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2GetFMUstate(instance: *mut c_void, state: *mut *mut c_void) -> i32 {
+                unsafe { abi::get_fmu_state::<Model>(instance, state) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2SetFMUstate(instance: *mut c_void, state: *mut c_void) -> i32 {
+                unsafe { abi::set_fmu_state::<Model>(instance, state) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2FreeFMUstate(instance: *mut c_void, state: *mut *mut c_void) -> i32 {
+                unsafe { abi::free_fmu_state::<Model>(instance, state) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
+                instance: *mut c_void,
+                state: *mut c_void,
+                size: *mut usize,
+            ) -> i32 {
+                unsafe { abi::serialized_size::<Model>(instance, state, size) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2SerializeFMUstate(
+                instance: *mut c_void,
+                state: *mut c_void,
+                bytes: *mut u8,
+                size: usize,
+            ) -> i32 {
+                unsafe { abi::serialize::<Model>(instance, state, bytes, size) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
+                instance: *mut c_void,
+                bytes: *const u8,
+                size: usize,
+                state: *mut *mut c_void,
+            ) -> i32 {
+                unsafe { abi::deserialize::<Model>(instance, bytes, size, state) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2DoStep(
+                instance: *mut c_void,
+                current_communication_point: f64,
+                communication_step_size: f64,
+                _no_set_fmu_state_prior_to_current_point: i32,
+            ) -> i32 {
+                let null = ::core::ptr::null_mut();
+                unsafe {
+                    abi::do_step::<Model>(
+                        instance,
+                        current_communication_point,
+                        communication_step_size,
+                        null,
+                        null,
+                        null,
+                        ::core::ptr::null_mut(),
+                    )
+                }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn fmi2GetRealStatus(
+                instance: *mut c_void,
+                kind: i32,
+                value: *mut f64,
+            ) -> i32 {
+                unsafe { abi::get_real_status2::<Model>(instance, kind, value) }
+            }
+
+            $crate::__fmi_unsupported!(
+                Model;
+                fmi2GetDirectionalDerivative(
+                    a: *const u32, na: usize, b: *const u32, nb: usize, c: *const f64, d: *mut f64
+                ),
+                fmi2SetRealInputDerivatives(a: *const u32, n: usize, b: *const i32, c: *const f64),
+                fmi2GetRealOutputDerivatives(a: *const u32, n: usize, b: *const i32, c: *mut f64),
+                fmi2CancelStep(),
+                fmi2GetStatus(kind: i32, value: *mut i32),
+                fmi2GetIntegerStatus(kind: i32, value: *mut i32),
+                fmi2GetBooleanStatus(kind: i32, value: *mut i32),
+                fmi2GetStringStatus(kind: i32, value: *mut *const c_char),
+            );
+
             // Not provided; each is declared with FMI's parameters and refused.
             $crate::__fmi_unsupported!(
                 Model;
@@ -367,6 +564,35 @@ macro_rules! __fmi_unsupported {
             #[unsafe(no_mangle)]
             pub unsafe extern "C" fn $name(instance: *mut ::core::ffi::c_void, $(_: $ty),*) -> i32 {
                 unsafe { $crate::fmi::abi::unsupported::<$model>(instance, stringify!($name)) }
+            }
+        )*
+    };
+}
+
+/// FMI 2.0's getters and setters of the types the model has none of.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __fmi2_no_variables {
+    ($model:ty; $($get:ident $set:ident $kind:literal),* $(,)?) => {
+        $(
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn $get(
+                instance: *mut ::core::ffi::c_void,
+                vrs: *const u32,
+                n_vrs: usize,
+                _values: *mut ::core::ffi::c_void,
+            ) -> i32 {
+                unsafe { $crate::fmi::abi::no_variables::<$model>(instance, vrs, n_vrs, $kind) }
+            }
+
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn $set(
+                instance: *mut ::core::ffi::c_void,
+                vrs: *const u32,
+                n_vrs: usize,
+                _values: *const ::core::ffi::c_void,
+            ) -> i32 {
+                unsafe { $crate::fmi::abi::no_variables::<$model>(instance, vrs, n_vrs, $kind) }
             }
         )*
     };

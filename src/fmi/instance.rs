@@ -175,6 +175,8 @@ where
         model
     }
 
+    /// Refuses a call (named without its `fmi2`/`fmi3` prefix: one instance serves both) in
+    /// the wrong state.
     fn expect(&self, allowed: &[Phase], call: &str) -> Result<(), Failure> {
         if allowed.contains(&self.phase) {
             Ok(())
@@ -190,7 +192,7 @@ where
         start: f64,
         stop: Option<f64>,
     ) -> Result<(), Failure> {
-        self.expect(&[Phase::Instantiated], "fmi3EnterInitializationMode")?;
+        self.expect(&[Phase::Instantiated], "EnterInitializationMode")?;
         if let Some(tol) = tolerance {
             if !(tol > 0.0 && tol.is_finite()) {
                 return Err(Failure::error(format!("the tolerance {tol} is not positive and finite")));
@@ -229,7 +231,7 @@ where
 
     /// `fmi3ExitInitializationMode`.
     pub fn exit_initialization(&mut self) -> Result<(), Failure> {
-        self.expect(&[Phase::Initialization], "fmi3ExitInitializationMode")?;
+        self.expect(&[Phase::Initialization], "ExitInitializationMode")?;
         self.initial_state()?;
         self.phase = Phase::Step;
         Ok(())
@@ -237,7 +239,7 @@ where
 
     /// `fmi3Terminate`.
     pub fn terminate(&mut self) -> Result<(), Failure> {
-        self.expect(&[Phase::Step], "fmi3Terminate")?;
+        self.expect(&[Phase::Step], "Terminate")?;
         self.phase = Phase::Terminated;
         Ok(())
     }
@@ -251,7 +253,7 @@ where
     pub fn get(&mut self, vrs: &[u32], values: &mut [f64]) -> Result<(), Failure> {
         if self.phase == Phase::Instantiated {
             return Err(Failure::error(
-                "fmi3GetFloat64 is not allowed before fmi3EnterInitializationMode: no value is computed yet",
+                "reading values is not allowed before EnterInitializationMode: no value is computed yet",
             ));
         }
         if vrs.len() != values.len() {
@@ -362,11 +364,11 @@ where
     /// `fmi3DoStep`: integrates from `t` to `t + h` with the inputs held, restarting the
     /// integrator at `t` (inputs may have jumped there). On failure the instance stays at `t`.
     pub fn do_step(&mut self, t: f64, h: f64) -> Result<(), Failure> {
-        self.expect(&[Phase::Step], "fmi3DoStep")?;
+        self.expect(&[Phase::Step], "DoStep")?;
         let scale = 1.0 + self.t.abs();
         if !t.is_finite() || (t - self.t).abs() > 1e-12 * scale {
             return Err(Failure::error(format!(
-                "fmi3DoStep from t = {t}, but the instance is at t = {}",
+                "DoStep from t = {t}, but the instance is at t = {}",
                 self.t
             )));
         }

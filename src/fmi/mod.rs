@@ -1,5 +1,5 @@
-//! Export of a model as an FMI 3.0 co-simulation FMU, for Python (FMPy), Simulink, Dymola,
-//! OpenModelica and every other importer of the Functional Mock-up Interface.
+//! Export of a model as an FMI 3.0 (or 2.0) co-simulation FMU, for Python (FMPy), Simulink,
+//! Dymola, OpenModelica and every other importer of the Functional Mock-up Interface.
 //!
 //! An FMU is a zip of a shared library that implements FMI's C functions and a
 //! `modelDescription.xml` that lists the model's variables. Three pieces make one from a
@@ -8,7 +8,9 @@
 //! 1. [`Export`], on the model: its identifier, the instance an importer starts from, and
 //!    optionally start positions and velocities and a default experiment;
 //! 2. [`export_fmu!`](crate::export_fmu), in a crate built as a `cdylib`: the C functions;
-//! 3. [`write_fmu`] (or [`build`], which also runs `cargo build`): the `.fmu` file.
+//! 3. [`write_fmu`] (or [`build`], which also runs `cargo build`): the `.fmu` file, for
+//!    [`Version::Fmi3`] or [`Version::Fmi2`] (one library implements both; the description
+//!    says which the importer reads).
 //!
 //! The variables, in the order of their value references:
 //!
@@ -42,6 +44,17 @@ pub use variables::DescriptionError;
 
 use crate::nalgebra::DefaultAllocator;
 use crate::{LagrangeDirac, Storage, VecQ};
+
+/// The version of the FMI standard an FMU follows. One library serves both: `export_fmu!`
+/// exports the functions of each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Version {
+    /// FMI 3.0.
+    #[default]
+    Fmi3,
+    /// FMI 2.0, for importers that do not read 3.0 yet.
+    Fmi2,
+}
 
 /// The simulation an importer runs by default (`<DefaultExperiment>`).
 #[derive(Clone, Copy, Debug)]
@@ -118,10 +131,18 @@ where
     }
 }
 
-/// The text of the model's `modelDescription.xml`.
+/// The text of the model's FMI 3.0 `modelDescription.xml`.
 pub fn model_description<M: Export>(model: &M) -> Result<String, DescriptionError>
 where
     DefaultAllocator: Storage<M>,
 {
-    variables::description(model).map(|(text, _)| text)
+    model_description_for(model, Version::Fmi3)
+}
+
+/// The text of the model's `modelDescription.xml` for an FMI version.
+pub fn model_description_for<M: Export>(model: &M, version: Version) -> Result<String, DescriptionError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    variables::description(model, version).map(|(text, _)| text)
 }

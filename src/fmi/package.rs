@@ -9,8 +9,8 @@ use zip::write::SimpleFileOptions;
 use crate::Storage;
 use crate::nalgebra::DefaultAllocator;
 
-use super::Export;
 use super::variables::{self, DescriptionError};
+use super::{Export, Version};
 
 /// Why an FMU could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -43,36 +43,56 @@ pub enum FmuError {
         reason: String,
     },
     /// FMI names no binary directory for this platform.
-    #[error("FMI 3.0 names no binary directory for {0}")]
+    #[error("FMI names no binary directory for {0}")]
     Platform(String),
 }
 
-/// FMI 3.0's name for this platform's binaries, and its shared libraries' extension.
-fn platform() -> Result<(String, &'static str), FmuError> {
-    let os = match std::env::consts::OS {
-        "linux" => "linux",
-        "macos" => "darwin",
-        "windows" => "windows",
-        other => return Err(FmuError::Platform(other.to_string())),
+/// The FMI version's name for this platform's binary directory, and its shared libraries'
+/// extension: `x86_64-linux` in FMI 3.0, `linux64` in FMI 2.0.
+fn platform(version: Version) -> Result<(String, &'static str), FmuError> {
+    let unknown = |what: &str| FmuError::Platform(what.to_string());
+    let (os, arch) = (std::env::consts::OS, std::env::consts::ARCH);
+    let name = match version {
+        Version::Fmi3 => {
+            let os = match os {
+                "linux" => "linux",
+                "macos" => "darwin",
+                "windows" => "windows",
+                other => return Err(unknown(other)),
+            };
+            let arch = match arch {
+                "x86_64" | "aarch64" | "x86" => arch,
+                other => return Err(unknown(other)),
+            };
+            format!("{arch}-{os}")
+        }
+        Version::Fmi2 => {
+            let os = match os {
+                "linux" => "linux",
+                "macos" => "darwin",
+                "windows" => "win",
+                other => return Err(unknown(other)),
+            };
+            let bits = match arch {
+                "x86_64" | "aarch64" => "64",
+                "x86" => "32",
+                other => return Err(unknown(other)),
+            };
+            format!("{os}{bits}")
+        }
     };
-    let arch = match std::env::consts::ARCH {
-        "x86_64" => "x86_64",
-        "aarch64" => "aarch64",
-        "x86" => "x86",
-        other => return Err(FmuError::Platform(other.to_string())),
-    };
-    Ok((format!("{arch}-{os}"), std::env::consts::DLL_EXTENSION))
+    Ok((name, std::env::consts::DLL_EXTENSION))
 }
 
-/// Writes the FMU of model `M` to `out`: its `modelDescription.xml` and `library`, the
-/// shared library of a crate that invokes [`export_fmu!`](crate::export_fmu) for `M`, built
-/// for this platform.
-pub fn write_fmu<M: Export>(library: &Path, out: &Path) -> Result<(), FmuError>
+/// Writes the FMU of model `M` to `out`: its `modelDescription.xml` for `version` and
+/// `library`, the shared library of a crate that invokes [`export_fmu!`](crate::export_fmu)
+/// for `M`, built for this platform (it implements both versions).
+pub fn write_fmu<M: Export>(library: &Path, out: &Path, version: Version) -> Result<(), FmuError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let (description, _) = variables::description(&M::instantiate())?;
-    let (platform, extension) = platform()?;
+    let (description, _) = variables::description(&M::instantiate(), version)?;
+    let (platform, extension) = platform(version)?;
     let binary = std::fs::read(library).map_err(|source| FmuError::Io { path: library.into(), source })?;
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(|source| FmuError::Io { path: dir.into(), source })?;
@@ -93,10 +113,10 @@ where
 
 /// Runs `cargo build` with `args` (for example `["--release", "--lib"]` or
 /// `["--example", "fmu_paper_chain"]`), takes the shared library it builds, and writes the FMU
-/// of model `M` to `out` ([`write_fmu`]). Returns the library's path.
+/// of model `M` for `version` to `out` ([`write_fmu`]). Returns the library's path.
 ///
 /// Called from a program that `cargo run` started, it runs the same cargo.
-pub fn build<M: Export>(args: &[&str], out: &Path) -> Result<PathBuf, FmuError>
+pub fn build<M: Export>(args: &[&str], out: &Path, version: Version) -> Result<PathBuf, FmuError>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -115,7 +135,7 @@ where
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
     let library = shared_library(&stdout).ok_or_else(|| failed("it built no cdylib".to_string()))?;
-    write_fmu::<M>(&library, out)?;
+    write_fmu::<M>(&library, out, version)?;
     Ok(library)
 }
 

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use crate::nalgebra::DefaultAllocator;
 use crate::{LagrangeDirac, Storage, VecQ};
 
-use super::Export;
+use super::{Export, Version};
 
 /// What a value reference refers to. The references are numbered in this order: time, then
 /// the parameters, inputs, outputs, positions, velocities and multipliers, each in the
@@ -166,11 +166,14 @@ pub enum DescriptionError {
 /// The text of `modelDescription.xml` without its instantiation token, and the token: a hash
 /// of the rest, so that a library and a description written from different versions of a model
 /// refuse each other.
-pub(crate) fn description<M: Export>(model: &M) -> Result<(String, String), DescriptionError>
+pub(crate) fn description<M: Export>(
+    model: &M,
+    version: Version,
+) -> Result<(String, String), DescriptionError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let body = body(model)?;
+    let body = body(model, version)?;
     let token = token(&body);
     let text = body.replacen("@TOKEN@", &token, 1);
     Ok((text, token))
@@ -200,10 +203,15 @@ struct Float64<'a> {
 }
 
 impl Float64<'_> {
-    fn write(&self, out: &mut String) -> Result<(), DescriptionError> {
+    /// FMI 3.0's `<Float64 .../>`, or FMI 2.0's `<ScalarVariable ...><Real .../></ScalarVariable>`.
+    fn write(&self, out: &mut String, version: Version) -> Result<(), DescriptionError> {
+        let element = match version {
+            Version::Fmi3 => "Float64",
+            Version::Fmi2 => "ScalarVariable",
+        };
         let _ = write!(
             out,
-            "    <Float64 name=\"{}\" valueReference=\"{}\" causality=\"{}\" variability=\"{}\"",
+            "    <{element} name=\"{}\" valueReference=\"{}\" causality=\"{}\" variability=\"{}\"",
             escape(self.name),
             self.vr,
             self.causality,
@@ -211,6 +219,12 @@ impl Float64<'_> {
         );
         if let Some(initial) = self.initial {
             let _ = write!(out, " initial=\"{initial}\"");
+        }
+        if !self.description.is_empty() {
+            let _ = write!(out, " description=\"{}\"", escape(self.description));
+        }
+        if version == Version::Fmi2 {
+            out.push_str(">\n      <Real");
         }
         if let Some(start) = self.start {
             if !start.is_finite() {
@@ -221,15 +235,15 @@ impl Float64<'_> {
         if let Some(unit) = self.unit {
             let _ = write!(out, " unit=\"{}\"", escape(unit));
         }
-        if !self.description.is_empty() {
-            let _ = write!(out, " description=\"{}\"", escape(self.description));
-        }
         out.push_str("/>\n");
+        if version == Version::Fmi2 {
+            out.push_str("    </ScalarVariable>\n");
+        }
         Ok(())
     }
 }
 
-fn body<M: Export>(model: &M) -> Result<String, DescriptionError>
+fn body<M: Export>(model: &M, version: Version) -> Result<String, DescriptionError>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -268,7 +282,7 @@ where
         if !seen.insert(e.name.to_string()) {
             return Err(DescriptionError::DuplicateName(e.name.to_string()));
         }
-        e.write(&mut variables)
+        e.write(&mut variables, version)
     };
     let (continuous, local) = ("continuous", "local");
     element(Float64 {
@@ -355,22 +369,39 @@ where
     }
 
     let experiment = M::default_experiment();
+    let description = if M::DESCRIPTION.is_empty() { names.doc } else { M::DESCRIPTION };
+    let (identifier, tool) = (escape(M::MODEL_IDENTIFIER), env!("CARGO_PKG_VERSION"));
     let mut out = String::new();
     out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    let _ = writeln!(
-        out,
-        "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"{}\" instantiationToken=\"@TOKEN@\" \
-         description=\"{}\" generationTool=\"dirac {}\" variableNamingConvention=\"flat\">",
-        escape(M::MODEL_IDENTIFIER),
-        escape(if M::DESCRIPTION.is_empty() { names.doc } else { M::DESCRIPTION }),
-        env!("CARGO_PKG_VERSION"),
-    );
-    let _ = writeln!(
-        out,
-        "  <CoSimulation modelIdentifier=\"{}\" canHandleVariableCommunicationStepSize=\"true\" \
-         canGetAndSetFMUState=\"true\" canSerializeFMUState=\"true\" hasEventMode=\"false\"/>",
-        escape(M::MODEL_IDENTIFIER)
-    );
+    match version {
+        Version::Fmi3 => {
+            let _ = writeln!(
+                out,
+                "<fmiModelDescription fmiVersion=\"3.0\" modelName=\"{identifier}\" instantiationToken=\"@TOKEN@\" \
+                 description=\"{}\" generationTool=\"dirac {tool}\" variableNamingConvention=\"flat\">",
+                escape(description),
+            );
+            let _ = writeln!(
+                out,
+                "  <CoSimulation modelIdentifier=\"{identifier}\" canHandleVariableCommunicationStepSize=\"true\" \
+                 canGetAndSetFMUState=\"true\" canSerializeFMUState=\"true\" hasEventMode=\"false\"/>",
+            );
+        }
+        Version::Fmi2 => {
+            let _ = writeln!(
+                out,
+                "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"{identifier}\" guid=\"@TOKEN@\" \
+                 description=\"{}\" generationTool=\"dirac {tool}\" variableNamingConvention=\"flat\" \
+                 numberOfEventIndicators=\"0\">",
+                escape(description),
+            );
+            let _ = writeln!(
+                out,
+                "  <CoSimulation modelIdentifier=\"{identifier}\" canHandleVariableCommunicationStepSize=\"true\" \
+                 canGetAndSetFMUstate=\"true\" canSerializeFMUstate=\"true\"/>",
+            );
+        }
+    }
     if !units.is_empty() {
         out.push_str("  <UnitDefinitions>\n");
         for unit in &units {
@@ -393,15 +424,28 @@ where
     out.push_str("  <ModelVariables>\n");
     out.push_str(&variables);
     out.push_str("  </ModelVariables>\n  <ModelStructure>\n");
-    for k in 0..table.outputs {
-        let _ = writeln!(out, "    <Output valueReference=\"{}\"/>", table.reference(Variable::Output(k)));
-    }
-    for k in 0..table.outputs {
-        let _ = writeln!(
-            out,
-            "    <InitialUnknown valueReference=\"{}\"/>",
-            table.reference(Variable::Output(k))
-        );
+    let outputs = (0..table.outputs).map(|k| table.reference(Variable::Output(k)));
+    match version {
+        Version::Fmi3 => {
+            for vr in outputs.clone() {
+                let _ = writeln!(out, "    <Output valueReference=\"{vr}\"/>");
+            }
+            for vr in outputs {
+                let _ = writeln!(out, "    <InitialUnknown valueReference=\"{vr}\"/>");
+            }
+        }
+        Version::Fmi2 if table.outputs > 0 => {
+            // FMI 2.0 names variables by their 1-based place in ModelVariables: the value
+            // references count from 0 in that order.
+            for list in ["Outputs", "InitialUnknowns"] {
+                let _ = writeln!(out, "    <{list}>");
+                for vr in outputs.clone() {
+                    let _ = writeln!(out, "      <Unknown index=\"{}\"/>", vr + 1);
+                }
+                let _ = writeln!(out, "    </{list}>");
+            }
+        }
+        Version::Fmi2 => {}
     }
     out.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
     Ok(out)

@@ -1,6 +1,6 @@
 """Bad use of a dirac FMU through FMI's C functions, for tests/integration/fmi.rs.
 
-usage: misuse.py DRIVEN_PENDULUM.fmu
+usage: misuse.py DRIVEN_PENDULUM.fmu [DRIVEN_PENDULUM_FMI2.fmu]
 
 Each check calls the FMU the wrong way through FMPy's bindings and expects the status FMI
 prescribes (fmi3Error, or fmi3Discard for a step that cannot be taken), a message in the log
@@ -188,4 +188,38 @@ check("a null instance to free", fmu.fmi3FreeInstance(None) is None)
 fmu.freeInstance()
 
 shutil.rmtree(unzipped, ignore_errors=True)
+
+# FMI 2.0, through the same library: a call in the wrong state is refused and logged through
+# FMI 2.0's logger.
+if len(sys.argv) > 2:
+    from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+    def log2(env, name, status, category, message):
+        messages.append((status, category.decode(), message.decode()))
+
+    description2 = read_model_description(sys.argv[2])
+    unzipped2 = extract(sys.argv[2])
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = fmi2CallbackLoggerTYPE(log2)
+    fmu2 = FMU2Slave(
+        guid=description2.guid,
+        unzipDirectory=unzipped2,
+        modelIdentifier=description2.coSimulation.modelIdentifier,
+        instanceName="misuse2",
+    )
+    fmu2.instantiate(callbacks=callbacks)
+    expect("FMI 2.0: fmi2DoStep before initialisation", lambda: fmu2.doStep(0.0, 0.1), ERROR, "not allowed")
+    fmu2.setupExperiment(tolerance=1e-8)
+    fmu2.enterInitializationMode()
+    fmu2.exitInitializationMode()
+    expect("FMI 2.0: an invalid value reference", lambda: fmu2.getReal([9999]), ERROR, "value reference 9999")
+    fmu2.setReal([vr["f"]], [1e300])
+    check("FMI 2.0: a step that cannot be taken is discarded", status_of(lambda: fmu2.doStep(0.0, 0.1)) == DISCARD)
+    check("FMI 2.0: the last successful time", fmu2.getRealStatus(2) == 0.0)
+    fmu2.setReal([vr["f"]], [0.0])
+    check("FMI 2.0: and the run goes on", status_of(lambda: fmu2.doStep(0.0, 0.1)) == OK)
+    fmu2.terminate()
+    fmu2.freeInstance()
+    shutil.rmtree(unzipped2, ignore_errors=True)
+    print("FMI 2.0 checks passed")
 print("all checks passed")

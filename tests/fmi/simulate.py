@@ -27,7 +27,7 @@ description = read_model_description(fmu)
 names = [
     v.name
     for v in description.modelVariables
-    if v.type == "Float64" and v.causality not in ("parameter", "independent", "input")
+    if v.type in ("Float64", "Real") and v.causality not in ("parameter", "independent", "input")
 ]
 
 signals = None

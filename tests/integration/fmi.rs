@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 
-use dirac::fmi::Export;
+use dirac::fmi::{Export, Version};
 use dirac::prelude::*;
 
 #[path = "../../examples/fmu/driven_pendulum.rs"]
@@ -83,8 +83,16 @@ fn fmu<M: Export>(example: &str, test: &str) -> PathBuf
 where
     DefaultAllocator: Storage<M>,
 {
+    fmu_for::<M>(example, test, Version::Fmi3)
+}
+
+/// [`fmu`] for an FMI version.
+fn fmu_for<M: Export>(example: &str, test: &str, version: Version) -> PathBuf
+where
+    DefaultAllocator: Storage<M>,
+{
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join(format!("{example}-{test}.fmu"));
-    dirac::fmi::write_fmu::<M>(&example_library(example), &out).expect("the FMU is written");
+    dirac::fmi::write_fmu::<M>(&example_library(example), &out, version).expect("the FMU is written");
     out
 }
 
@@ -160,6 +168,9 @@ where
     DefaultAllocator: Storage<M>,
 {
     let (header, rows) = read_csv(csv);
+    for name in M::NAMES.coordinate_names().iter().chain(&M::NAMES.velocity_names()) {
+        assert!(header.contains(name), "FMPy recorded no {name}: {header:?}");
+    }
     let fmu = largest_difference(&header, &|j| rows.iter().map(|r| r[j]).collect(), reference);
     let dirac = largest_difference(&header, &|j| column(ours, &header[j]).to_vec(), reference);
     eprintln!("FMU error {:.2e} ({}), dirac's error {:.2e} ({})", fmu.0, fmu.1, dirac.0, dirac.1);
@@ -176,9 +187,18 @@ where
 
 #[test]
 fn the_paper_chain_fmu_validates_and_fmpy_simulates_it_as_dirac_does() {
+    paper_chain_through_fmpy(Version::Fmi3);
+}
+
+#[test]
+fn the_paper_chain_as_an_fmi2_fmu_too() {
+    paper_chain_through_fmpy(Version::Fmi2);
+}
+
+fn paper_chain_through_fmpy(version: Version) {
     // FMPy sets a parameter and a start position before initialisation; dirac runs the same
     // chain from the same start.
-    let fmu = fmu::<PaperChain>("fmu_paper_chain", "simulate");
+    let fmu = fmu_for::<PaperChain>("fmu_paper_chain", &format!("simulate-{version:?}"), version);
     let csv = fmu.with_extension("csv");
     let (stop, step, tol) = (20.0, 0.01, 1e-10);
     let report = script(
@@ -271,7 +291,9 @@ fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
 #[test]
 fn bad_use_returns_fmi_errors_with_logged_messages_and_the_instance_survives() {
     let fmu = fmu::<DrivenPendulum>("fmu_driven_pendulum", "misuse");
-    let report = script("misuse.py", &[&*fmu.to_string_lossy()]);
+    let fmu2 = fmu_for::<DrivenPendulum>("fmu_driven_pendulum", "misuse-fmi2", Version::Fmi2);
+    let report = script("misuse.py", &[&*fmu.to_string_lossy(), &*fmu2.to_string_lossy()]);
+    assert!(report.contains("FMI 2.0 checks passed"), "{report}");
     eprintln!("{report}");
     assert!(report.ends_with("all checks passed\n"), "{report}");
 }
@@ -295,9 +317,9 @@ fn the_description_carries_units_and_doc_comments() {
 
     let xml = dirac::fmi::model_description(&DrivenPendulum::instantiate()).expect("described");
     for element in [
-        r#"<Float64 name="m" valueReference="1" causality="parameter" variability="fixed" start="1.0" unit="kg" description="Mass of the bob."/>"#,
-        r#"<Float64 name="f" valueReference="4" causality="input" variability="continuous" start="0.0" unit="N""#,
-        r#"<Float64 name="energy" valueReference="5" causality="output" variability="continuous" unit="J""#,
+        r#"<Float64 name="m" valueReference="1" causality="parameter" variability="fixed" description="Mass of the bob." start="1.0" unit="kg"/>"#,
+        r#"<Float64 name="f" valueReference="4" causality="input" variability="continuous" description="Horizontal force on the bob (the input)." start="0.0" unit="N"/>"#,
+        r#"<Float64 name="energy" valueReference="5" causality="output" variability="continuous" description="Output" unit="J"/>"#,
         r#"<Float64 name="lambda(rod)" valueReference="11" causality="local""#,
         r#"<Output valueReference="5"/>"#,
     ] {
@@ -348,7 +370,7 @@ fn a_model_with_unilateral_constraints_is_refused() {
     let message = refused.expect_err("a floor an FMU would pass through").to_string();
     assert!(message.contains("unilateral constraints (floor)"), "{message}");
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join("ball.fmu");
-    assert!(dirac::fmi::write_fmu::<BouncingBall>(Path::new("unused.so"), &out).is_err());
+    assert!(dirac::fmi::write_fmu::<BouncingBall>(Path::new("unused.so"), &out, Version::Fmi3).is_err());
 }
 
 /// The 60-cell LC ladder, an array of subsystems stored sparse, as an FMU: flux 1 at the
