@@ -1,11 +1,11 @@
-//! The C functions of FMI 3.0, generic over the model. [`export_fmu!`](crate::export_fmu)
+//! The C functions of FMI 3.0 and 2.0, generic over the model. [`export_fmu!`](crate::export_fmu)
 //! gives each its C name in the user's library; everything here turns raw pointers into
 //! checked slices and references, calls [`Instance`], catches panics, and logs failures
 //! through the importer's callback.
 //!
 //! Pointers are trusted as FMI specifies them (an instance pointer is one this library
 //! returned and has not freed); null pointers and lengths that do not match are refused with
-//! `fmi3Error`.
+//! an error status.
 
 #![allow(unsafe_code)]
 #![allow(clippy::missing_safety_doc)]

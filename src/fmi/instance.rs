@@ -17,8 +17,8 @@ pub enum Status {
     Warning = 1,
     /// A step could not be taken; the instance is where it was before the call.
     Discard = 2,
-    /// The call was wrong or failed; the instance stays usable only for `fmi3Reset`,
-    /// `fmi3FreeInstance` and reading values.
+    /// The call was wrong and changed nothing, or failed inside (a panic, caught): after
+    /// that, only reading values, `Reset` and `FreeInstance` are allowed.
     Error = 3,
     /// Not returned: nothing dirac does corrupts the process.
     Fatal = 4,
@@ -50,8 +50,8 @@ pub(crate) enum Phase {
     Initialization,
     Step,
     Terminated,
-    /// A call returned `fmi3Error`: only reading values, `fmi3Reset` and `fmi3FreeInstance`
-    /// are allowed.
+    /// A call panicked (the panic was caught): only reading values, `Reset` and
+    /// `FreeInstance` are allowed.
     Failed,
 }
 
@@ -62,7 +62,7 @@ impl Phase {
             Phase::Initialization => "initialization mode",
             Phase::Step => "step mode",
             Phase::Terminated => "terminated",
-            Phase::Failed => "failed (after an error)",
+            Phase::Failed => "failed (after an internal error)",
         }
     }
 

@@ -418,3 +418,46 @@ fn a_ladder_of_60_cells_runs_as_an_fmu_and_follows_its_modes() {
     assert!(error < 1e-7, "largest node error {error:e} at t = 2");
     assert!((fmu.time() - 2.0).abs() < 1e-12);
 }
+
+/// Messages logged through the FMI 3.0 callback of `a_panic_does_not_cross_into_the_importer`.
+static LOGGED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+extern "C" fn record(
+    _env: *mut std::ffi::c_void,
+    status: i32,
+    _category: *const std::ffi::c_char,
+    message: *const std::ffi::c_char,
+) {
+    // SAFETY: the FMU passes a NUL-terminated message that lives across the call.
+    #[allow(unsafe_code)]
+    let text = unsafe { std::ffi::CStr::from_ptr(message) }.to_string_lossy().into_owned();
+    LOGGED.lock().expect("not poisoned").push(format!("{status}: {text}"));
+}
+
+/// A model whose instantiation panics.
+impl Export for crate::zoo::ForcedSpring {
+    const MODEL_IDENTIFIER: &'static str = "spring";
+    fn instantiate() -> Self {
+        panic!("no spring today")
+    }
+}
+
+#[test]
+#[allow(unsafe_code)]
+fn a_panic_does_not_cross_into_the_importer() {
+    use crate::zoo::ForcedSpring;
+    let (name, token) = (c"panicky", c"{any}");
+    // SAFETY: valid NUL-terminated strings and a callback of FMI's signature.
+    let instance = unsafe {
+        dirac::fmi::abi::instantiate_co_simulation::<ForcedSpring>(
+            name.as_ptr(),
+            token.as_ptr(),
+            false,
+            std::ptr::null_mut(),
+            Some(record),
+        )
+    };
+    assert!(instance.is_null(), "no instance from a model that cannot be made");
+    let logged = LOGGED.lock().expect("not poisoned").join("\n");
+    assert!(logged.contains("3: panicky: internal error: no spring today"), "{logged}");
+}
