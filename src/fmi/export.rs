@@ -213,49 +213,11 @@ macro_rules! export_fmu {
                 unsafe { abi::no_variables::<Model>(instance, vrs, n_vrs, "Clock") }
             }
 
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3GetFMUState(instance: *mut c_void, state: *mut *mut c_void) -> i32 {
-                unsafe { abi::get_fmu_state::<Model>(instance, state) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3SetFMUState(instance: *mut c_void, state: *mut c_void) -> i32 {
-                unsafe { abi::set_fmu_state::<Model>(instance, state) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3FreeFMUState(instance: *mut c_void, state: *mut *mut c_void) -> i32 {
-                unsafe { abi::free_fmu_state::<Model>(instance, state) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3SerializedFMUStateSize(
-                instance: *mut c_void,
-                state: *mut c_void,
-                size: *mut usize,
-            ) -> i32 {
-                unsafe { abi::serialized_size::<Model>(instance, state, size) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3SerializeFMUState(
-                instance: *mut c_void,
-                state: *mut c_void,
-                bytes: *mut u8,
-                size: usize,
-            ) -> i32 {
-                unsafe { abi::serialize::<Model>(instance, state, bytes, size) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3DeserializeFMUState(
-                instance: *mut c_void,
-                bytes: *const u8,
-                size: usize,
-                state: *mut *mut c_void,
-            ) -> i32 {
-                unsafe { abi::deserialize::<Model>(instance, bytes, size, state) }
-            }
+            $crate::__fmi_state_functions!(
+                Model;
+                fmi3GetFMUState fmi3SetFMUState fmi3FreeFMUState
+                fmi3SerializedFMUStateSize fmi3SerializeFMUState fmi3DeserializeFMUState
+            );
 
             #[unsafe(no_mangle)]
             pub unsafe extern "C" fn fmi3DoStep(
@@ -388,49 +350,11 @@ macro_rules! export_fmu {
                 fmi2GetString fmi2SetString "String",
             );
 
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2GetFMUstate(instance: *mut c_void, state: *mut *mut c_void) -> i32 {
-                unsafe { abi::get_fmu_state::<Model>(instance, state) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2SetFMUstate(instance: *mut c_void, state: *mut c_void) -> i32 {
-                unsafe { abi::set_fmu_state::<Model>(instance, state) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2FreeFMUstate(instance: *mut c_void, state: *mut *mut c_void) -> i32 {
-                unsafe { abi::free_fmu_state::<Model>(instance, state) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2SerializedFMUstateSize(
-                instance: *mut c_void,
-                state: *mut c_void,
-                size: *mut usize,
-            ) -> i32 {
-                unsafe { abi::serialized_size::<Model>(instance, state, size) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2SerializeFMUstate(
-                instance: *mut c_void,
-                state: *mut c_void,
-                bytes: *mut u8,
-                size: usize,
-            ) -> i32 {
-                unsafe { abi::serialize::<Model>(instance, state, bytes, size) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
-                instance: *mut c_void,
-                bytes: *const u8,
-                size: usize,
-                state: *mut *mut c_void,
-            ) -> i32 {
-                unsafe { abi::deserialize::<Model>(instance, bytes, size, state) }
-            }
+            $crate::__fmi_state_functions!(
+                Model;
+                fmi2GetFMUstate fmi2SetFMUstate fmi2FreeFMUstate
+                fmi2SerializedFMUstateSize fmi2SerializeFMUstate fmi2DeSerializeFMUstate
+            );
 
             #[unsafe(no_mangle)]
             pub unsafe extern "C" fn fmi2DoStep(
@@ -595,5 +519,65 @@ macro_rules! __fmi2_no_variables {
                 unsafe { $crate::fmi::abi::no_variables::<$model>(instance, vrs, n_vrs, $kind) }
             }
         )*
+    };
+}
+
+/// The six FMU-state functions, the same in FMI 3.0 and 2.0 but for their names.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __fmi_state_functions {
+    ($model:ty; $get:ident $set:ident $free:ident $size:ident $serialize:ident $deserialize:ident) => {
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $get(
+            instance: *mut ::core::ffi::c_void,
+            state: *mut *mut ::core::ffi::c_void,
+        ) -> i32 {
+            unsafe { $crate::fmi::abi::get_fmu_state::<$model>(instance, state) }
+        }
+
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $set(
+            instance: *mut ::core::ffi::c_void,
+            state: *mut ::core::ffi::c_void,
+        ) -> i32 {
+            unsafe { $crate::fmi::abi::set_fmu_state::<$model>(instance, state) }
+        }
+
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $free(
+            instance: *mut ::core::ffi::c_void,
+            state: *mut *mut ::core::ffi::c_void,
+        ) -> i32 {
+            unsafe { $crate::fmi::abi::free_fmu_state::<$model>(instance, state) }
+        }
+
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $size(
+            instance: *mut ::core::ffi::c_void,
+            state: *mut ::core::ffi::c_void,
+            size: *mut usize,
+        ) -> i32 {
+            unsafe { $crate::fmi::abi::serialized_size::<$model>(instance, state, size) }
+        }
+
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $serialize(
+            instance: *mut ::core::ffi::c_void,
+            state: *mut ::core::ffi::c_void,
+            bytes: *mut u8,
+            size: usize,
+        ) -> i32 {
+            unsafe { $crate::fmi::abi::serialize::<$model>(instance, state, bytes, size) }
+        }
+
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $deserialize(
+            instance: *mut ::core::ffi::c_void,
+            bytes: *const u8,
+            size: usize,
+            state: *mut *mut ::core::ffi::c_void,
+        ) -> i32 {
+            unsafe { $crate::fmi::abi::deserialize::<$model>(instance, bytes, size, state) }
+        }
     };
 }
