@@ -20,7 +20,7 @@ use std::ffi::CString;
 use std::ptr::null_mut;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use dirac::fmi::{Export, abi};
+use dirac::fmi::{Export, Version, abi};
 use dirac::prelude::*;
 use driven_pendulum::DrivenPendulum;
 use paper_chain::PaperChain;
@@ -40,8 +40,8 @@ where
     DefaultAllocator: Storage<M>,
 {
     let description = dirac::fmi::model_description(&M::instantiate()).expect("described");
-    let token = description.split("instantiationToken=\"").nth(1).and_then(|r| r.split('"').next());
-    let token = CString::new(token.expect("a token")).expect("no NUL");
+    let token = dirac::fmi::instantiation_token::<M>(Version::Fmi3).expect("described");
+    let token = CString::new(token).expect("no NUL");
     let name = CString::new("bench").expect("no NUL");
     let variables = description.matches("<Float64 ").count() as u32;
     let all: Vec<u32> = (0..variables).collect();
@@ -94,13 +94,7 @@ fn benches(c: &mut Criterion) {
     group.bench_function("solve_sampled", |b| b.iter(|| sampled::<PaperChain>(2000, None)));
     group.finish();
 
-    let description = dirac::fmi::model_description(&DrivenPendulum::instantiate()).expect("described");
-    let f = description
-        .split("name=\"f\" valueReference=\"")
-        .nth(1)
-        .and_then(|r| r.split('"').next())
-        .and_then(|n| n.parse().ok())
-        .expect("the input's value reference");
+    let f = dirac::fmi::value_reference(&DrivenPendulum::instantiate(), "f").expect("the input");
     let mut group = c.benchmark_group("fmu/driven_pendulum, 1000 communication steps");
     group.bench_function("through FMI's C functions", |b| {
         b.iter(|| through_fmi::<DrivenPendulum>(1000, Some(f)))

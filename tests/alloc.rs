@@ -529,13 +529,9 @@ fn fmu_communication_steps_do_not_allocate() {
     use std::ffi::CString;
     use std::ptr::null_mut;
 
-    let description = dirac::fmi::model_description(&<DrivenPendulum as dirac::fmi::Export>::instantiate())
-        .expect("described");
-    let token = description
-        .split("instantiationToken=\"")
-        .nth(1)
-        .and_then(|rest| rest.split('"').next())
-        .expect("a token");
+    use dirac::fmi::{Export, Version};
+    let token = dirac::fmi::instantiation_token::<DrivenPendulum>(Version::Fmi3).expect("described");
+    let model = DrivenPendulum::instantiate();
     let (name, token) = (CString::new("alloc").expect("no NUL"), CString::new(token).expect("no NUL"));
     let abi = |status: i32| assert_eq!(status, 0, "an FMI call failed");
     // SAFETY: the calls follow FMI: one instance, used and freed here, with valid pointers and
@@ -552,11 +548,7 @@ fn fmu_communication_steps_do_not_allocate() {
         assert!(!instance.is_null());
         abi(abi::enter_initialization_mode::<DrivenPendulum>(instance, true, 1e-8, 0.0, false, 0.0));
         abi(abi::exit_initialization_mode::<DrivenPendulum>(instance));
-        let vr = |name: &str| -> u32 {
-            let element = format!("name=\"{name}\" valueReference=\"");
-            let rest = description.split(&element).nth(1).expect("the variable is described");
-            rest.split('"').next().and_then(|n| n.parse().ok()).expect("a value reference")
-        };
+        let vr = |name: &str| dirac::fmi::value_reference(&model, name).expect("a variable of the FMU");
         let f = vr("f");
         let read = ["time", "energy", "height", "x", "y", "vx", "vy", "lambda(rod)"].map(vr);
         let mut values = [0.0; 8];

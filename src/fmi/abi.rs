@@ -223,7 +223,7 @@ where
 {
     let made = catch_unwind(|| {
         let instance = Instance::<M>::new();
-        let expected = super::variables::description(&M::instantiate(), version).map(|(_, token)| token);
+        let expected = super::instantiation_token::<M>(version);
         (instance, expected)
     });
     match made {

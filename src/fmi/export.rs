@@ -117,20 +117,12 @@ macro_rules! export_fmu {
                 }
             }
 
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3ExitInitializationMode(instance: *mut c_void) -> i32 {
-                unsafe { abi::exit_initialization_mode::<Model>(instance) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3Terminate(instance: *mut c_void) -> i32 {
-                unsafe { abi::terminate::<Model>(instance) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi3Reset(instance: *mut c_void) -> i32 {
-                unsafe { abi::reset::<Model>(instance) }
-            }
+            $crate::__fmi_instance_calls!(
+                Model;
+                fmi3ExitInitializationMode => exit_initialization_mode,
+                fmi3Terminate => terminate,
+                fmi3Reset => reset,
+            );
 
             #[unsafe(no_mangle)]
             pub unsafe extern "C" fn fmi3GetFloat64(
@@ -308,20 +300,12 @@ macro_rules! export_fmu {
                 unsafe { abi::enter_initialization_mode2::<Model>(instance) }
             }
 
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2ExitInitializationMode(instance: *mut c_void) -> i32 {
-                unsafe { abi::exit_initialization_mode::<Model>(instance) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2Terminate(instance: *mut c_void) -> i32 {
-                unsafe { abi::terminate::<Model>(instance) }
-            }
-
-            #[unsafe(no_mangle)]
-            pub unsafe extern "C" fn fmi2Reset(instance: *mut c_void) -> i32 {
-                unsafe { abi::reset::<Model>(instance) }
-            }
+            $crate::__fmi_instance_calls!(
+                Model;
+                fmi2ExitInitializationMode => exit_initialization_mode,
+                fmi2Terminate => terminate,
+                fmi2Reset => reset,
+            );
 
             #[unsafe(no_mangle)]
             pub unsafe extern "C" fn fmi2GetReal(
@@ -579,5 +563,19 @@ macro_rules! __fmi_state_functions {
         ) -> i32 {
             unsafe { $crate::fmi::abi::deserialize::<$model>(instance, bytes, size, state) }
         }
+    };
+}
+
+/// Calls that take the instance alone, named per version.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __fmi_instance_calls {
+    ($model:ty; $($name:ident => $call:ident),* $(,)?) => {
+        $(
+            #[unsafe(no_mangle)]
+            pub unsafe extern "C" fn $name(instance: *mut ::core::ffi::c_void) -> i32 {
+                unsafe { $crate::fmi::abi::$call::<$model>(instance) }
+            }
+        )*
     };
 }

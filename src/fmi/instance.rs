@@ -117,6 +117,10 @@ fn not_computed() -> Failure {
 
 const SNAPSHOT_MAGIC: f64 = 17.03;
 
+/// The most steps (accepted and rejected) one communication step may take: Radau's default
+/// limit, for each communication step rather than for the integrator's whole life.
+pub const STEPS_PER_COMMUNICATION_STEP: usize = 1_000_000;
+
 impl<M: Export> Instance<M>
 where
     DefaultAllocator: Storage<M>,
@@ -161,18 +165,25 @@ where
         }
     }
 
-    /// A new model with this one's parameter and input values, to build a new integrator on:
-    /// after a failed step, or to go back to a snapshot.
-    fn rebuilt(&self) -> M {
-        let current = self.model();
+    /// A new model with these parameter and input values (in the order of the FMU's
+    /// variables), to build a new integrator on: after a failed step (the current values), or
+    /// to go back to a snapshot (its values).
+    fn model_with(&self, parameters: &[f64], inputs: &[f64]) -> M {
         let mut model = M::instantiate();
-        for &k in &self.table.parameters {
-            model.set_parameter_value(k, current.parameter_value(k));
+        for (&k, &x) in self.table.parameters.iter().zip(parameters) {
+            model.set_parameter_value(k, x);
         }
-        for k in 0..self.table.inputs {
-            model.set_input_value(k, current.input_value(k));
+        for (k, &x) in inputs.iter().enumerate() {
+            model.set_input_value(k, x);
         }
         model
+    }
+
+    /// The current parameter and input values, in the order of the FMU's variables.
+    fn values(&self) -> (Vec<f64>, Vec<f64>) {
+        let model = self.model();
+        let parameters = self.table.parameters.iter().map(|&k| model.parameter_value(k)).collect();
+        (parameters, (0..self.table.inputs).map(|k| model.input_value(k)).collect())
     }
 
     /// Refuses a call (named without its `fmi2`/`fmi3` prefix: one instance serves both) in
@@ -232,6 +243,9 @@ where
     /// `fmi3ExitInitializationMode`.
     pub fn exit_initialization(&mut self) -> Result<(), Failure> {
         self.expect(&[Phase::Initialization], "ExitInitializationMode")?;
+        // The integrator checks its options when it is built: refuse a tolerance it would
+        // refuse now, not at the first step.
+        Radau::new(self.model(), self.options()).map_err(|e| Failure::error(e.to_string()))?;
         self.initial_state()?;
         self.phase = Phase::Step;
         Ok(())
@@ -379,13 +393,16 @@ where
         }
         // The importer's grid, not a sum of its steps: no drift between the two clocks.
         let (at, end) = (self.t, t + h);
+        if !end.is_finite() {
+            return Err(Failure::error(format!("the step from t = {t} by {h} ends beyond the largest time")));
+        }
         if end <= at {
             return Err(Failure::error(format!("the communication step size {h} is too small at t = {at}")));
         }
         let result = match self.radau.as_mut() {
             Some(radau) => Self::advance(radau, end, false),
             None => {
-                let options = RadauOptions::tolerances(self.tolerance, self.tolerance);
+                let options = self.options();
                 let model = self.model.take().expect("the model, before the first step");
                 let mut radau =
                     Radau::new(Held::Owned(model), options).map_err(|e| Failure::error(e.to_string()))?;
@@ -406,7 +423,8 @@ where
             }
             Err(e) => {
                 // Back to `t`: a new integrator on the same model starts from the state kept there.
-                let model = self.rebuilt();
+                let (parameters, inputs) = self.values();
+                let model = self.model_with(&parameters, &inputs);
                 self.radau = None;
                 self.model = Some(model);
                 Err(Failure::discard(format!("the step from t = {at} to {end} failed: {e}")))
@@ -414,12 +432,29 @@ where
         }
     }
 
-    /// Steps to `end`, restarting there first unless the integrator was just started.
+    /// The integrator's options: the tolerance, relative and absolute, and no limit on the
+    /// steps of its whole life (it lives across communication steps); [`Self::advance`] limits
+    /// each communication step instead.
+    fn options(&self) -> RadauOptions {
+        RadauOptions { max_steps: usize::MAX, ..RadauOptions::tolerances(self.tolerance, self.tolerance) }
+    }
+
+    /// Steps to `end`, restarting there first unless the integrator was just started, with at
+    /// most [`STEPS_PER_COMMUNICATION_STEP`] steps and rejections.
     fn advance(radau: &mut Radau<'static, M>, end: f64, started: bool) -> Result<(), crate::SimError> {
         if !started {
             radau.restart_until(end)?;
         }
+        let count = |radau: &Radau<'static, M>| {
+            let stats = radau.stats();
+            stats.steps + stats.rejected
+        };
+        let before = count(radau);
         while !radau.finished() {
+            if count(radau) - before >= STEPS_PER_COMMUNICATION_STEP {
+                let max_steps = STEPS_PER_COMMUNICATION_STEP;
+                return Err(crate::SimError::TooManySteps { max_steps, t: radau.t(), t_end: end });
+            }
             radau.step()?;
         }
         Ok(())
@@ -433,10 +468,9 @@ where
     /// Everything `fmi3SetFMUState` needs to come back here, as numbers (also its serialised
     /// form).
     pub fn snapshot(&self) -> Snapshot {
-        let table = &self.table;
         let mut values = vec![SNAPSHOT_MAGIC, self.phase.code(), self.t, self.tolerance];
-        values.extend(table.parameters.iter().map(|&k| self.model().parameter_value(k)));
-        values.extend((0..table.inputs).map(|k| self.model().input_value(k)));
+        let (parameters, inputs) = self.values();
+        values.extend(parameters.iter().chain(&inputs));
         values.extend(self.start_q.iter().chain(self.start_v.iter()));
         match &self.state {
             Some(state) => {
@@ -453,6 +487,9 @@ where
         let refuse = || Failure::error("the FMU state does not belong to this model");
         let table = self.table.clone();
         let n = self.start_q.len();
+        if !snapshot.values.iter().all(|x| x.is_finite()) {
+            return Err(refuse());
+        }
         let mut values = snapshot.values.iter().copied();
         let mut next = || values.next().ok_or_else(refuse);
         if next()? != SNAPSHOT_MAGIC {
@@ -477,13 +514,7 @@ where
         if next().is_ok() {
             return Err(refuse());
         }
-        let mut model = M::instantiate();
-        for (&k, &x) in table.parameters.iter().zip(&parameters) {
-            model.set_parameter_value(k, x);
-        }
-        for (k, &x) in inputs.iter().enumerate() {
-            model.set_input_value(k, x);
-        }
+        let model = self.model_with(&parameters, &inputs);
         // A new integrator starts at the snapshot's time and state at the next step.
         self.radau = None;
         self.model = Some(model);

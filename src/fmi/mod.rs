@@ -38,7 +38,7 @@ mod instance;
 mod package;
 mod variables;
 
-pub use instance::{Failure, Instance, Snapshot, Status};
+pub use instance::{Failure, Instance, STEPS_PER_COMMUNICATION_STEP, Snapshot, Status};
 pub use package::{FmuError, build, write_fmu};
 pub use variables::DescriptionError;
 
@@ -145,4 +145,23 @@ where
     DefaultAllocator: Storage<M>,
 {
     variables::description(model, version).map(|(text, _)| text)
+}
+
+/// The instantiation token (in FMI 2.0, the GUID) of model `M`'s FMU: what an importer passes
+/// when it instantiates the FMU, read from the description by FMI tools.
+pub fn instantiation_token<M: Export>(version: Version) -> Result<String, DescriptionError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    variables::description(&M::instantiate(), version).map(|(_, token)| token)
+}
+
+/// The value reference of the variable named `name` in `model`'s FMU (`"time"`, `"left.k1"`,
+/// `"lambda(rod)"`), if it has one: for code that drives the FMU's C functions itself.
+pub fn value_reference<M: Export>(model: &M, name: &str) -> Option<u32>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let table = variables::Table::of(model);
+    table.named(model, name).map(|variable| table.reference(variable))
 }

@@ -108,6 +108,30 @@ impl Table {
         u32::try_from(k).unwrap_or(u32::MAX)
     }
 
+    /// The variable a name refers to in `model`'s FMU (`time`, `left.k1`, `lambda(rod)`, …).
+    pub fn named<M: LagrangeDirac>(&self, model: &M, name: &str) -> Option<Variable>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let at = |names: Vec<String>| names.iter().position(|n| n == name);
+        if name == "time" {
+            return Some(Variable::Time);
+        }
+        let parameters = model.parameter_names();
+        let parameter =
+            self.parameters.iter().find(|&&k| parameters[k] == name).map(|&k| Variable::Parameter(k));
+        let multiplier = name.strip_prefix("lambda(").and_then(|rest| rest.strip_suffix(')'));
+        parameter
+            .or_else(|| at(model.input_names()).map(Variable::Input))
+            .or_else(|| at(model.output_names()).map(Variable::Output))
+            .or_else(|| at(model.coordinate_names()).map(Variable::Position))
+            .or_else(|| at(model.velocity_names()).map(Variable::Velocity))
+            .or_else(|| {
+                let row = model.constraint_names().iter().position(|n| Some(n.as_str()) == multiplier)?;
+                Some(Variable::Multiplier(row))
+            })
+    }
+
     /// The number of value references in use.
     pub fn len(&self) -> usize {
         1 + self.parameters.len() + self.inputs + self.outputs + 2 * self.coordinates + self.constraints

@@ -388,8 +388,8 @@ impl Export for crate::zoo::Ladder {
     }
 }
 
-/// The value reference of a variable, from the description.
-fn value_reference(xml: &str, name: &str) -> u32 {
+/// The value reference of a variable, read from the description's text.
+fn value_reference_in(xml: &str, name: &str) -> u32 {
     let element = format!("name=\"{name}\" valueReference=\"");
     let rest = xml.split(&element).nth(1).unwrap_or_else(|| panic!("{name} is not described"));
     rest.split('"').next().and_then(|n| n.parse().ok()).expect("a number")
@@ -401,7 +401,7 @@ fn a_ladder_of_60_cells_runs_as_an_fmu_and_follows_its_modes() {
     use crate::zoo::{Ladder, modal_solution};
     use dirac::fmi::Instance;
     let xml = dirac::fmi::model_description(&Ladder::instantiate()).expect("described");
-    let nodes: Vec<u32> = (0..60).map(|j| value_reference(&xml, &format!("cells[{j}].b"))).collect();
+    let nodes: Vec<u32> = (0..60).map(|j| value_reference_in(&xml, &format!("cells[{j}].b"))).collect();
     let mut fmu = Instance::<Ladder>::new();
     fmu.enter_initialization(Some(1e-10), 0.0, None).expect("initialisation");
     fmu.exit_initialization().expect("a consistent start");
@@ -460,4 +460,81 @@ fn a_panic_does_not_cross_into_the_importer() {
     assert!(instance.is_null(), "no instance from a model that cannot be made");
     let logged = LOGGED.lock().expect("not poisoned").join("\n");
     assert!(logged.contains("3: panicky: internal error: no spring today"), "{logged}");
+}
+
+#[test]
+fn value_references_by_name_match_the_description() {
+    // Every variable's reference from `value_reference` against the description's text.
+    fn check<M: Export>()
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let model = M::instantiate();
+        let xml = dirac::fmi::model_description(&model).expect("described");
+        let names: Vec<&str> =
+            xml.split("<Float64 name=\"").skip(1).filter_map(|r| r.split('"').next()).collect();
+        assert!(names.len() > 5);
+        for name in &names {
+            assert_eq!(
+                dirac::fmi::value_reference(&model, name),
+                Some(value_reference_in(&xml, name)),
+                "{name}"
+            );
+        }
+        assert_eq!(dirac::fmi::value_reference(&model, "no such variable"), None);
+        assert_eq!(dirac::fmi::value_reference(&model, "lambda(nothing)"), None);
+    }
+    check::<PaperChain>();
+    check::<DrivenPendulum>();
+}
+
+#[test]
+fn absurd_arguments_are_refused_and_lose_nothing() {
+    use dirac::fmi::{Instance, Status};
+    let started = || {
+        let mut fmu = Instance::<DrivenPendulum>::new();
+        fmu.enter_initialization(Some(1e-8), 0.0, None).expect("initialisation");
+        fmu.exit_initialization().expect("a consistent start");
+        fmu
+    };
+    let error = |result: Result<(), dirac::fmi::Failure>| {
+        let failure = result.expect_err("refused");
+        assert_eq!(failure.status, Status::Error, "{}", failure.message);
+        failure.message
+    };
+
+    // A tolerance Radau cannot meet is refused when initialisation ends, not at the first step.
+    let mut fmu = Instance::<DrivenPendulum>::new();
+    fmu.enter_initialization(Some(1e-300), 0.0, None).expect("positive and finite");
+    assert!(error(fmu.exit_initialization()).contains("rtol"));
+    let mut fmu = Instance::<DrivenPendulum>::new();
+    assert!(error(fmu.enter_initialization(Some(f64::NAN), 0.0, None)).contains("tolerance"));
+    assert!(error(fmu.enter_initialization(None, 0.0, Some(-1.0))).contains("before the start"));
+
+    let mut fmu = started();
+    assert!(error(fmu.do_step(0.0, f64::NAN)).contains("not positive and finite"));
+    assert!(error(fmu.do_step(f64::NAN, 0.1)).contains("instance is at t = 0"));
+    let huge = fmu.do_step(0.0, f64::MAX).expect_err("no step of 1.8e308");
+    assert_eq!(huge.status, Status::Discard, "{}", huge.message);
+    assert!(error(fmu.do_step(0.0, 0.0)).contains("not positive"));
+    let mut two = [0.0; 2];
+    assert!(error(fmu.get(&[0], &mut two)).contains("1 value references but 2 values"));
+    assert!(error(fmu.set(&[u32::MAX], &[1.0])).contains("no Float64 variable"));
+    // After all that, the instance is where it was and steps on.
+    assert_eq!(fmu.time(), 0.0);
+    fmu.do_step(0.0, 0.1).expect("steps");
+
+    let mut late = Instance::<DrivenPendulum>::new();
+    late.enter_initialization(None, 1e308, None).expect("a finite start");
+    late.exit_initialization().expect("a consistent start");
+    assert!(error(late.do_step(1e308, 1e308)).contains("beyond the largest time"));
+
+    // A communication step far longer than the model allows in its step budget ends in a
+    // discard, at the step's start, not in a hang.
+    let mut fmu = started();
+    let failure = fmu.do_step(0.0, 1e9).expect_err("too long");
+    assert_eq!(failure.status, Status::Discard, "{}", failure.message);
+    assert!(failure.message.contains("1000000"), "{}", failure.message);
+    assert_eq!(fmu.time(), 0.0);
+    fmu.do_step(0.0, 0.1).expect("steps on");
 }
