@@ -243,9 +243,8 @@ where
     /// `fmi3ExitInitializationMode`.
     pub fn exit_initialization(&mut self) -> Result<(), Failure> {
         self.expect(&[Phase::Initialization], "ExitInitializationMode")?;
-        // The integrator checks its options when it is built: refuse a tolerance it would
-        // refuse now, not at the first step.
-        Radau::new(self.model(), self.options()).map_err(|e| Failure::error(e.to_string()))?;
+        // The integrator is built at the first step: refuse a tolerance it would refuse now.
+        self.options().validate().map_err(|e| Failure::error(e.to_string()))?;
         self.initial_state()?;
         self.phase = Phase::Step;
         Ok(())

@@ -69,8 +69,11 @@ impl RadauOptions {
         RadauOptions { rtol, atol, ..RadauOptions::default() }
     }
 
-    /// Checks every option, naming the first one out of its range.
-    pub(crate) fn validate(&self) -> Result<(), SimError> {
+    /// Checks every option, naming the first one out of its range: what [`Radau::new`]
+    /// checks, for code that holds options before it builds the integrator.
+    ///
+    /// [`Radau::new`]: crate::Radau::new
+    pub fn validate(&self) -> Result<(), SimError> {
         for (what, value) in [("rtol", self.rtol), ("atol", self.atol)] {
             if value.is_nan() || value <= 0.0 || value.is_infinite() {
                 return Err(SimError::InvalidTolerance { what, value });
