@@ -1,5 +1,5 @@
 //! No heap allocation inside an integration step: a counting global allocator observes the
-//! allocations of this thread while `Radau::step` runs, after set-up.
+//! allocations of this thread while an integrator's steps run, after set-up.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -133,6 +133,54 @@ fn variational_steps_do_not_allocate() {
 
 /// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
 /// sparse LU, under both integrators.
+/// Steps the explicit integrator 200 times after 5 warm-up steps, reading the state within
+/// each step as a recorder does, and returns the allocations during the 200.
+fn allocations_in_explicit_steps<M: LagrangeDirac>(model: &M, start: &State<M>, t_end: f64) -> usize
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let mut explicit =
+        Explicit::new(model, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    explicit.start(0.0, start, t_end).expect("starts");
+    for _ in 0..5 {
+        explicit.step().expect("steps");
+    }
+    let mut within = start.clone();
+    let before = allocations();
+    for _ in 0..200 {
+        if explicit.finished() {
+            break;
+        }
+        let h = explicit.step().expect("steps");
+        explicit.interpolate(explicit.t() - 0.5 * h, &mut within);
+    }
+    allocations() - before
+}
+
+/// Holonomic (the pendulum, on the separable m × m path, and the 8-link pendulum, on the
+/// saddle-point path), nonholonomic (the rolling disk), interconnected and degenerate (the
+/// paper's chain) and array models (the LC ladder, sparse).
+#[test]
+fn explicit_steps_do_not_allocate() {
+    let p = unit_pendulum();
+    assert_eq!(allocations_in_explicit_steps(&p, &horizontal_start(&p), 100.0), 0, "pendulum");
+    let chain = paper_chain();
+    assert_eq!(allocations_in_explicit_steps(&chain, &paper_chain_start(&chain), 100.0), 0, "chain");
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    let v = VecQ::<RollingDisk>::from([0.6, 0.0, 2.0, 1.0]);
+    let s = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_explicit_steps(&disk, &s, 100.0), 0, "rolling disk");
+    let eight = Pendulum8 { m: 0.5, l: 0.25, g: 9.81 };
+    let q = VecQ::<Pendulum8>::from_fn(|i, _| 0.3 + 0.05 * i as f64);
+    let s = consistent_state(&eight, 0.0, &q, &VecQ::<Pendulum8>::zeros(), Consistency::default())
+        .expect("consistent");
+    assert_eq!(allocations_in_explicit_steps(&eight, &s, 100.0), 0, "8-link pendulum");
+    let ladder = unit_ladder(50);
+    let x: Vec<f64> = (0..50).map(|j| (-((j as f64 - 20.0) / 5.0).powi(2)).exp()).collect();
+    assert_eq!(allocations_in_explicit_steps(&ladder, &ladder_at_rest(&ladder, &x), 100.0), 0, "ladder");
+}
+
 #[test]
 fn steps_of_models_made_of_arrays_do_not_allocate() {
     let ladder = unit_ladder(200);
@@ -180,6 +228,8 @@ fn steps_with_inputs_set_between_them_do_not_allocate() {
     assert_eq!(allocations_with_inputs(&mut radau, &s, ForcedSpring::F), 0, "Radau, spring");
     let mut vi = Variational::new(&mut spring, 0.01, VariationalOptions::default()).expect("valid");
     assert_eq!(allocations_with_inputs(&mut vi, &s, ForcedSpring::F), 0, "variational, spring");
+    let mut explicit = Explicit::new(&mut spring, ExplicitOptions::default()).expect("valid");
+    assert_eq!(allocations_with_inputs(&mut explicit, &s, ForcedSpring::F), 0, "explicit, spring");
 
     let spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
     let mut pair = ForcedPair { left: spring.clone(), right: spring };
@@ -324,6 +374,10 @@ fn locating_events_does_not_allocate() {
     let variational = Variational::new(&model, 1e-2, VariationalOptions::default()).expect("valid step");
     let (allocations, located) = allocations_locating_events(variational, &start);
     assert_eq!(allocations, 0, "variational with events");
+    assert_eq!(located, 13 + 6);
+    let explicit = Explicit::new(&model, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let (allocations, located) = allocations_locating_events(explicit, &start);
+    assert_eq!(allocations, 0, "explicit with events");
     assert_eq!(located, 13 + 6);
 }
 

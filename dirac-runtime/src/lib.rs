@@ -25,6 +25,7 @@ pub mod ensemble;
 /// The typed errors of a simulation.
 pub mod error;
 pub mod events;
+pub mod explicit;
 /// The flat DAE assembled from a model's blocks.
 pub mod flat;
 /// How an integrator holds its model: shared, or exclusive to change it while it runs.
@@ -77,6 +78,7 @@ pub use dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK
 pub use dirac_structure::{DiracStructure, Membership};
 pub use error::SimError;
 pub use events::{EventContext, Events, SolveWithEvents};
+pub use explicit::{Explicit, ExplicitOptions, ExplicitStats};
 pub use held::Held;
 pub use init::{Consistency, consistent_state};
 pub use integrator::Integrator;

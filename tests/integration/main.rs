@@ -8,6 +8,7 @@ mod blocks;
 mod contacts;
 mod counters;
 mod events;
+mod explicit;
 mod fitting;
 mod fmi;
 mod fuzz;

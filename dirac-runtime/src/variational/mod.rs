@@ -37,7 +37,7 @@
 //! shortcut through `m × m` systems (`separable`). A step allocates nothing.
 
 mod general;
-mod separable;
+pub(crate) mod separable;
 mod work;
 
 use nalgebra::DefaultAllocator;

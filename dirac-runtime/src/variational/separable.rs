@@ -45,7 +45,7 @@ where
     }
 
     /// `x ← M⁻¹ x`.
-    fn solve(&self, x: &mut VecQ<M>) {
+    pub(crate) fn solve(&self, x: &mut VecQ<M>) {
         match self {
             Mass::Diagonal(inverse) => x.component_mul_assign(inverse),
             Mass::Dense(lu) => lu.solve(x),
@@ -53,7 +53,7 @@ where
     }
 
     /// `M⁻¹ Aᵀ` for constraint rows `a`.
-    fn solve_transpose(&self, a: &Cq<M>) -> OMatrix<f64, M::Nq, M::Nc> {
+    pub(crate) fn solve_transpose(&self, a: &Cq<M>) -> OMatrix<f64, M::Nq, M::Nc> {
         let mut b = a.transpose();
         for j in 0..b.ncols() {
             let mut column = b.column(j).into_owned();

@@ -14,6 +14,10 @@
 //! solving the algebraic rows for the algebraic unknowns, which index-2 multipliers (absent
 //! from every algebraic row) do not allow.
 //!
+//! - pendulum8: the zoo's 8-link pendulum in its angles, `M(θ) θ̈ = r(θ, ω)` solved per
+//!   evaluation, error of the angles at t = 2 against the reference `run.sh` passes (from
+//!   `cargo bench --bench work_precision -- reference`).
+//!
 //! Prints CSV `problem,tol,error,seconds,steps` for the method named by the first argument
 //! (`bdf`, `esdirk34` or `tsit45`); seconds is the median of 21 solves, each creating the
 //! solver (with its initial step and Jacobian) and integrating to the end time.
@@ -77,6 +81,83 @@ fn chain_jac_mul(_y: &[f64], _p: &[f64], _t: f64, w: &[f64], jw: &mut [f64]) {
     chain_accel(&w[..3], &mut jw[3..]);
 }
 
+/// The 8-link pendulum of the zoo (absolute angles from the downward vertical, equal masses m
+/// at the joints, equal lengths l), as a diffsol user would write it: `M(θ) θ̈ = r(θ, ω)` with
+/// `M_kj = (8 − max(k, j)) m l² cos(θ_k − θ_j)` and
+/// `r_k = −Σ_j (8 − max(k, j)) m l² ω_j² sin(θ_k − θ_j) − (8 − k) m g l sin θ_k` (0-based),
+/// solved by a Cholesky factorisation on the stack.
+const LINKS: usize = 8;
+const LINK_MASS: f64 = 0.5;
+const LINK_LENGTH: f64 = 0.25;
+
+fn pendulum8_rhs(y: &[f64], _p: &[f64], _t: f64, f: &mut [f64]) {
+    let (theta, omega) = y.split_at(LINKS);
+    let ml2 = LINK_MASS * LINK_LENGTH * LINK_LENGTH;
+    let mut m = [[0.0; LINKS]; LINKS];
+    let mut r = [0.0; LINKS];
+    for k in 0..LINKS {
+        r[k] = -((LINKS - k) as f64) * LINK_MASS * G * LINK_LENGTH * theta[k].sin();
+        for j in 0..LINKS {
+            let c = (LINKS - k.max(j)) as f64 * ml2;
+            let (sin, cos) = (theta[k] - theta[j]).sin_cos();
+            m[k][j] = c * cos;
+            r[k] -= c * omega[j] * omega[j] * sin;
+        }
+    }
+    // Cholesky M = L Lᵀ in place (lower triangle), then the two triangular solves.
+    for j in 0..LINKS {
+        let mut d = m[j][j];
+        for k in 0..j {
+            d -= m[j][k] * m[j][k];
+        }
+        let d = d.sqrt();
+        m[j][j] = d;
+        for i in j + 1..LINKS {
+            let mut s = m[i][j];
+            for k in 0..j {
+                s -= m[i][k] * m[j][k];
+            }
+            m[i][j] = s / d;
+        }
+    }
+    for i in 0..LINKS {
+        for k in 0..i {
+            r[i] -= m[i][k] * r[k];
+        }
+        r[i] /= m[i][i];
+    }
+    for i in (0..LINKS).rev() {
+        for k in i + 1..LINKS {
+            r[i] -= m[k][i] * r[k];
+        }
+        r[i] /= m[i][i];
+    }
+    f[..LINKS].copy_from_slice(omega);
+    f[LINKS..].copy_from_slice(&r);
+}
+
+/// The Jacobian-vector product of the 8-link pendulum by a forward difference (its analytic
+/// form, through the derivative of `M(θ)⁻¹`, is not what a user writes by hand); used only by
+/// the implicit methods' Newton iterations.
+fn pendulum8_jac_mul(y: &[f64], p: &[f64], t: f64, w: &[f64], jw: &mut [f64]) {
+    let norm = w.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if norm == 0.0 {
+        jw.fill(0.0);
+        return;
+    }
+    let eps = 1e-7 * (1.0 + y.iter().map(|x| x * x).sum::<f64>().sqrt()) / norm;
+    let mut shifted = [0.0; 2 * LINKS];
+    for i in 0..2 * LINKS {
+        shifted[i] = y[i] + eps * w[i];
+    }
+    let (mut f0, mut f1) = ([0.0; 2 * LINKS], [0.0; 2 * LINKS]);
+    pendulum8_rhs(y, p, t, &mut f0);
+    pendulum8_rhs(&shifted, p, t, &mut f1);
+    for i in 0..2 * LINKS {
+        jw[i] = (f1[i] - f0[i]) / eps;
+    }
+}
+
 /// Integrates `solver` to `t_end`; returns the final state and the number of steps.
 fn run<'a, Eqn, S>(mut solver: S, t_end: f64) -> (Vec<f64>, usize)
 where
@@ -103,12 +184,13 @@ macro_rules! solve {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    if args.len() != 5 {
-        eprintln!("usage: dirac-peer-diffsol bdf|esdirk34|tsit45 x1(20) x2(20) x3(20)");
+    if args.len() != 5 + LINKS {
+        eprintln!("usage: dirac-peer-diffsol bdf|esdirk34|tsit45 x1(20) x2(20) x3(20) θ1(2) … θ8(2)");
         std::process::exit(2);
     }
     let method = args[1].as_str();
-    let chain_ref: Vec<f64> = args[2..].iter().map(|a| a.parse().expect("a number")).collect();
+    let reference: Vec<f64> = args[2..].iter().map(|a| a.parse().expect("a number")).collect();
+    let (chain_ref, pendulum8_ref) = reference.split_at(3);
     let tols = [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
     println!("problem,tol,error,seconds,steps");
     for tol in tols {
@@ -145,5 +227,30 @@ fn main() {
             steps
         });
         println!("chain,{tol},{error:.3e},{seconds:.6e},{steps}");
+    }
+    for tol in tols {
+        let problem = OdeBuilder::<M>::new()
+            .rtol(tol)
+            .atol([tol; 2 * LINKS])
+            .rhs_implicit(pendulum8_rhs, pendulum8_jac_mul)
+            .init(
+                |_p, _t, y| {
+                    let mut start = [0.0; 2 * LINKS];
+                    for (i, theta) in start[..LINKS].iter_mut().enumerate() {
+                        *theta = 0.3 + 0.05 * i as f64;
+                    }
+                    y.copy_from_slice(&start);
+                },
+                2 * LINKS,
+            )
+            .build()
+            .expect("8-link pendulum problem");
+        let mut error = 0.0;
+        let (seconds, steps) = median_seconds(|| {
+            let (y, steps) = solve!(problem, method, 2.0);
+            error = (0..LINKS).map(|i| (y[i] - pendulum8_ref[i]).abs()).fold(0.0, f64::max);
+            steps
+        });
+        println!("pendulum8,{tol},{error:.3e},{seconds:.6e},{steps}");
     }
 }

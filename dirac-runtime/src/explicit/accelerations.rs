@@ -1,0 +1,303 @@
+//! The accelerations and multipliers at `(t, q, v)`: the differentiated equations of motion
+//! with the constraints at acceleration level,
+//!
+//! ```text
+//! [ L_vv  −Aᵀ ] [ v̇ ]   [ ∂L/∂q + F − L_vt − L_vq v ]
+//! [ A      0  ] [ λ ] = [ −∂(A v + b)/∂q v − ∂(A v + b)/∂t ]
+//! ```
+//!
+//! one saddle-point solve per evaluation, with the storage the model's algebra gives (on the
+//! stack for a dense model). The system is regular exactly when `L_vv` is positive definite
+//! on the constraint distribution, which a degenerate Lagrangian whose massless coordinates
+//! are held by constraints (the paper's torn chain) satisfies: its algebraic velocities are
+//! eliminated here.
+//!
+//! Two shortcuts for separable models (constant `L_vv`, [`LagrangeDirac::SEPARABLE`]): with a
+//! nonsingular mass matrix `M` (dense models), `M` is factored once and each evaluation solves
+//! the `m × m` system `A M⁻¹ Aᵀ λ = …` (as RATTLE does); otherwise the factorisation of the
+//! saddle-point system is kept while `A` does not change (linear constraints, or none).
+//!
+//! The factorisation of the last evaluation also projects a nearby state onto the
+//! constraints ([`Accelerations::project`]), by corrections orthogonal in the metric `L_vv`.
+
+use nalgebra::{DefaultAllocator, OMatrix};
+
+use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
+use crate::blocks::ResidualBlocks;
+use crate::dims::{Dimensions, Sizes, Storage, VecC, VecH, VecK, VecQ};
+use crate::init_saddle::SaddleOf;
+use crate::lu::Lu;
+use crate::model::{LagrangeDirac, MatCQ, MatQQ};
+use crate::variational::separable::Mass;
+
+/// The `m × m` path of a separable dense model with a nonsingular mass matrix: `M` factored,
+/// `B = M⁻¹ Aᵀ` and `S = A B` factored for the constraint rows of the last factorisation.
+struct Schur<M: Dimensions>
+where
+    DefaultAllocator: Storage<M>,
+{
+    mass: Mass<M>,
+    a: OMatrix<f64, M::Nc, M::Nq>,
+    b: OMatrix<f64, M::Nq, M::Nc>,
+    s: Lu<f64, M::Nc>,
+    top: VecQ<M>,
+    bottom: VecC<M>,
+}
+
+/// The storage of an evaluation.
+pub(crate) struct Accelerations<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    sizes: Sizes,
+    lvv: MatQQ<M>,
+    lvq: MatQQ<M>,
+    a: MatCQ<M>,
+    dav: MatCQ<M>,
+    /// The constraint rows of the factored system, for a separable model whose factorisation
+    /// is kept while they stay the same.
+    factored_a: Vec<f64>,
+    factored: bool,
+    saddle: SaddleOf<M>,
+    /// The separable shortcut, once the mass matrix is known to allow it; `checked` once it
+    /// was looked for.
+    schur: Option<Schur<M>>,
+    checked: bool,
+    blocks: ResidualBlocks<M>,
+    zero_lambda: VecC<M>,
+    lvt: VecQ<M>,
+    rate: VecC<M>,
+    phi: VecH<M>,
+    /// The constraint rows and rates at a projected state.
+    a_projected: MatCQ<M>,
+    residual: VecC<M>,
+    x: VecK<M>,
+    /// Factorisations done, for the statistics.
+    pub factorizations: usize,
+}
+
+impl<M: LagrangeDirac> Accelerations<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new(model: &M) -> Self {
+        let (sizes, shape) = (model.sizes(), model.shape());
+        let a = M::Algebra::zeros_cq(&shape);
+        let factored_a = M::Algebra::cq_values(&a).to_vec();
+        Accelerations {
+            sizes,
+            lvv: M::Algebra::zeros_qq(&shape),
+            lvq: M::Algebra::zeros_qq(&shape),
+            a_projected: a.clone(),
+            a,
+            dav: M::Algebra::zeros_cq(&shape),
+            factored_a,
+            factored: false,
+            saddle: M::Algebra::saddle(&shape),
+            schur: None,
+            checked: false,
+            blocks: ResidualBlocks::with_sizes(&sizes),
+            zero_lambda: sizes.zeros_c::<M>(),
+            lvt: sizes.zeros_q::<M>(),
+            rate: sizes.zeros_c::<M>(),
+            phi: sizes.zeros_h::<M>(),
+            residual: sizes.zeros_c::<M>(),
+            x: sizes.zeros_k::<M>(),
+            factorizations: 0,
+        }
+    }
+
+    /// `∂L/∂v` at the point of the last evaluation: the momenta there.
+    pub fn momenta(&self) -> &VecQ<M> {
+        &self.blocks.dl_dv
+    }
+
+    /// Forgets the factorisation and the mass matrix: the model may have changed.
+    pub fn forget(&mut self) {
+        self.factored = false;
+        self.checked = false;
+        self.schur = None;
+    }
+
+    /// Looks once for the separable shortcut: a constant, nonsingular mass matrix of a dense
+    /// model.
+    fn look_for_mass(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) {
+        self.checked = true;
+        if !M::SEPARABLE {
+            return;
+        }
+        model.l_vv(t, q, v, &mut self.lvv);
+        let Some(mass) = M::Algebra::dense_qq(&self.lvv).and_then(|matrix| Mass::new(&self.sizes, matrix))
+        else {
+            return;
+        };
+        let m = self.sizes.nc;
+        self.schur = Some(Schur {
+            mass,
+            a: OMatrix::<f64, M::Nc, M::Nq>::zeros_generic(
+                <M::Nc as nalgebra::Dim>::from_usize(m),
+                <M::Nq as nalgebra::Dim>::from_usize(self.sizes.nq),
+            ),
+            b: OMatrix::<f64, M::Nq, M::Nc>::zeros_generic(
+                <M::Nq as nalgebra::Dim>::from_usize(self.sizes.nq),
+                <M::Nc as nalgebra::Dim>::from_usize(m),
+            ),
+            s: Lu::new(m),
+            top: self.sizes.zeros_q::<M>(),
+            bottom: self.sizes.zeros_c::<M>(),
+        });
+    }
+
+    /// Writes `v̇` and `λ` at `(t, q, v)`; false where the system is singular.
+    pub fn evaluate(
+        &mut self,
+        model: &M,
+        t: f64,
+        (q, v): (&VecQ<M>, &VecQ<M>),
+        acceleration: &mut VecQ<M>,
+        lambda: &mut VecC<M>,
+    ) -> bool {
+        let Sizes { nq: n, nc: m, .. } = self.sizes;
+        if !self.checked {
+            self.look_for_mass(model, t, (q, v));
+        }
+        model.residual_blocks(t, q, v, &self.zero_lambda, &mut self.blocks);
+        let x = self.x.as_mut_slice();
+        x[..n].copy_from_slice(self.blocks.momentum_rate.as_slice());
+        if !M::SEPARABLE {
+            model.l_vt(t, q, v, &mut self.lvt);
+            for (x, l) in x[..n].iter_mut().zip(self.lvt.iter()) {
+                *x -= l;
+            }
+            model.l_vq(t, q, v, &mut self.lvq);
+            M::Algebra::qq_mul(&self.lvq, -1.0, v.as_slice(), &mut x[..n]);
+        }
+        if m > 0 {
+            model.constraint_matrix(t, q, &mut self.a);
+            model.dav_dq(t, q, v, &mut self.dav);
+            model.dav_dt(t, q, v, &mut self.rate);
+            for (x, r) in x[n..].iter_mut().zip(self.rate.iter()) {
+                *x = -r;
+            }
+            M::Algebra::cq_mul(&self.dav, -1.0, v.as_slice(), &mut x[n..]);
+        }
+        let keep =
+            M::SEPARABLE && self.factored && M::Algebra::cq_values(&self.a) == self.factored_a.as_slice();
+        if !keep {
+            self.factored = self.factor(model, t, (q, v));
+            if !self.factored {
+                return false;
+            }
+            if M::SEPARABLE {
+                self.factored_a.copy_from_slice(M::Algebra::cq_values(&self.a));
+            }
+        }
+        self.solve();
+        let x = self.x.as_slice();
+        acceleration.as_mut_slice().copy_from_slice(&x[..n]);
+        lambda.as_mut_slice().copy_from_slice(&x[n..]);
+        true
+    }
+
+    /// Factors the system for the constraint rows in `a` (and `L_vv` at `(t, q, v)`).
+    fn factor(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) -> bool {
+        self.factorizations += 1;
+        if let Some(schur) = &mut self.schur {
+            if self.sizes.nc == 0 {
+                return true;
+            }
+            let a = M::Algebra::dense_cq(&self.a).expect("the shortcut is taken for dense models only");
+            schur.a.copy_from(a);
+            schur.b = schur.mass.solve_transpose(a);
+            schur.a.mul_to(&schur.b, schur.s.matrix_mut());
+            return schur.s.factor().is_ok();
+        }
+        model.l_vv(t, q, v, &mut self.lvv);
+        self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+            top: &[(1.0, &self.lvv)],
+            top_transposed: &[],
+            identity: 0.0,
+            right: &[(-1.0, &self.a)],
+            bottom: &[(1.0, 1.0, &self.a)],
+            corner: (0.0, 0.0),
+        });
+        self.saddle.factor().is_ok()
+    }
+
+    /// Replaces `x = (top, bottom)` by the solution `(v̇, λ)` with the factorisation held.
+    fn solve(&mut self) {
+        let Some(schur) = &mut self.schur else {
+            self.saddle.solve(self.x.as_mut_slice());
+            return;
+        };
+        let n = self.sizes.nq;
+        let x = self.x.as_mut_slice();
+        // v̇ = M⁻¹ (top + Aᵀ λ) with A M⁻¹ Aᵀ λ = bottom − A M⁻¹ top.
+        schur.top.as_mut_slice().copy_from_slice(&x[..n]);
+        schur.mass.solve(&mut schur.top);
+        if self.sizes.nc > 0 {
+            schur.bottom.as_mut_slice().copy_from_slice(&x[n..]);
+            schur.bottom.gemv(-1.0, &schur.a, &schur.top, 1.0);
+            schur.s.solve(&mut schur.bottom);
+            schur.top.gemv(1.0, &schur.b, &schur.bottom, 1.0);
+            x[n..].copy_from_slice(schur.bottom.as_slice());
+        }
+        x[..n].copy_from_slice(schur.top.as_slice());
+    }
+
+    /// Puts `(q, v)` at time `t` onto the constraints with the factorisation of the last
+    /// evaluation, which must have been near `q`: positions onto `φ(q, t) = 0` by simplified
+    /// Newton, corrections `Δq` with `L_vv Δq ∈ range Aᵀ` and `A Δq = (−φ, 0)` (moving along
+    /// the other constraints); then velocities onto `A(q, t) v + b(q, t) = 0` likewise.
+    /// Iterations stop at round-off, at most four each. Returns whether `(q, v)` moved.
+    pub fn project(&mut self, model: &M, t: f64, q: &mut VecQ<M>, v: &mut VecQ<M>) -> bool {
+        let Sizes { nq: n, nh, nc: m, .. } = self.sizes;
+        if m == 0 || !self.factored {
+            return false;
+        }
+        let mut moved = false;
+        for _ in 0..4 {
+            if nh == 0 {
+                break;
+            }
+            model.holonomic(t, q, &mut self.phi);
+            if amax(self.phi.as_slice()) <= 1e-15 * (1.0 + amax(q.as_slice())) {
+                break;
+            }
+            let x = self.x.as_mut_slice();
+            x.fill(0.0);
+            for (x, phi) in x[n..n + nh].iter_mut().zip(self.phi.iter()) {
+                *x = -phi;
+            }
+            self.solve();
+            moved = true;
+            for i in 0..n {
+                q[i] += self.x[i];
+            }
+        }
+        model.constraint_matrix(t, q, &mut self.a_projected);
+        let scale = amax(M::Algebra::cq_values(&self.a_projected)) * amax(v.as_slice());
+        for _ in 0..4 {
+            self.residual.fill(0.0);
+            if M::PRESCRIBED {
+                model.constraint_rate(t, q, &mut self.residual);
+            }
+            M::Algebra::cq_mul(&self.a_projected, 1.0, v.as_slice(), self.residual.as_mut_slice());
+            let r = amax(self.residual.as_slice());
+            if r <= 1e-15 * scale || r == 0.0 || !r.is_finite() {
+                break;
+            }
+            let x = self.x.as_mut_slice();
+            x.fill(0.0);
+            for (x, r) in x[n..].iter_mut().zip(self.residual.iter()) {
+                *x = -r;
+            }
+            self.solve();
+            moved = true;
+            for i in 0..n {
+                v[i] += self.x[i];
+            }
+        }
+        moved
+    }
+}
