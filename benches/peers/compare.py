@@ -1,7 +1,8 @@
-"""Compares work-precision curves: for every dirac Radau point, the wall time each peer needs for
-the same achieved error (log-log interpolation between the peer's points), and the ratio; with
---svg, draws all curves in one log-log work-precision diagram.
-Usage: compare.py radau.csv LABEL=peer.csv [LABEL=peer.csv ...] [--svg out.svg]"""
+"""Compares work-precision curves: for every point of the first (dirac) curve, the wall time each
+peer needs for the same achieved error (log-log interpolation between the peer's points), and the
+ratio; with --svg, draws all curves in one log-log work-precision diagram.
+Usage: compare.py [LABEL=]dirac.csv LABEL=peer.csv [LABEL=peer.csv ...] [--svg out.svg]
+(the first curve's label defaults to "dirac Radau")."""
 import csv
 import math
 import sys
@@ -33,11 +34,12 @@ if "--svg" in args:
     k = args.index("--svg")
     svg = args[k + 1]
     del args[k:k + 2]
-radau = load(args[0])
+base_label, base_path = args[0].split("=", 1) if "=" in args[0] else ("dirac Radau", args[0])
+radau = load(base_path)
 peers = [(label, load(path)) for label, path in (a.split("=", 1) for a in args[1:])]
 for label, peer in peers:
-    print(f"dirac Radau against {label}:")
-    print(f"{'problem':10} {'tol':>8} {'error':>10} {'radau s':>11} {'peer s':>11} {'ratio':>7}")
+    print(f"{base_label} against {label}:")
+    print(f"{'problem':10} {'tol':>8} {'error':>10} {'dirac s':>11} {'peer s':>11} {'ratio':>7}")
     for problem, points in radau.items():
         for error, seconds, steps, tol in points:
             other = time_at(peer.get(problem, []), error)
@@ -51,21 +53,21 @@ def work_precision_svg(path):
     """Log-log work-precision plot: achieved error against wall time, every solver and problem."""
     series = []
     palette = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"]
-    dashes = {"pendulum": "", "chain": "6,3"}
-    for k, (solver, data) in enumerate([("dirac Radau", radau)] + peers):
+    dashes = {"pendulum": "", "chain": "6,3", "pendulum8": "2,3"}
+    for k, (solver, data) in enumerate([(base_label, radau)] + peers):
         for problem, pts in data.items():
             pts = sorted((math.log10(e), math.log10(s)) for e, s, _, _ in pts if e > 0)
             series.append((f"{solver}, {problem}", palette[k % len(palette)], dashes.get(problem, ""), pts))
     xs = [x for *_, p in series for x, _ in p]
     ys = [y for *_, p in series for _, y in p]
     x0, x1, y0, y1 = math.floor(min(xs)), math.ceil(max(xs)), math.floor(min(ys)), math.ceil(max(ys))
-    w, h, left, right, top, bottom = 960, 480, 90, 330, 40, 60
+    w, h, left, right, top, bottom = 1000, 560, 90, 330, 40, 60
     pw, ph = w - left - right, h - top - bottom
     sx = lambda x: left + (x - x0) / (x1 - x0) * pw
     sy = lambda y: top + (y1 - y) / (y1 - y0) * ph
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="13">',
            f'<rect width="{w}" height="{h}" fill="white"/>',
-           f'<text x="{left + pw / 2}" y="24" text-anchor="middle" font-size="16">Work-precision: dirac Radau against its peers</text>',
+           f'<text x="{left + pw / 2}" y="24" text-anchor="middle" font-size="16">Work-precision: dirac against its peers</text>',
            f'<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>']
     for x in range(x0, x1 + 1):
         out.append(f'<line x1="{sx(x)}" y1="{top}" x2="{sx(x)}" y2="{top + ph}" stroke="#ddd"/>')

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Runs dirac's Radau, SUNDIALS IDA and diffsol side by side on the pendulum and the paper's chain,
-# prints wall-time ratios at equal achieved error and draws the work-precision diagram. Not part
-# of CI.
+# Runs dirac's Radau and Explicit integrators, SUNDIALS IDA and diffsol side by side on the
+# pendulum, the paper's chain and (all but IDA) the 8-link pendulum, prints wall-time ratios at
+# equal achieved error and draws the work-precision diagram. Not part of CI.
 #
 # IDA comes from Debian's packages, unpacked into target/peers without installing (its -dev
 # package pulls in PETSc and MPI through dependencies the driver does not need), and is
@@ -24,15 +24,20 @@ gcc -O3 -o "$peers/ida_driver" benches/peers/ida_driver.c -I"$peers/sundials/usr
 cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol"
 cargo bench --bench work_precision -- reference > "$peers/reference.txt"
 # shellcheck disable=SC2046
-"$peers/ida_driver" $(cat "$peers/reference.txt") > "$peers/ida.csv"
+"$peers/ida_driver" $(cut -d' ' -f1-3 "$peers/reference.txt") > "$peers/ida.csv"
 for method in bdf esdirk34 tsit45; do
     # shellcheck disable=SC2046
     "$peers/diffsol/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") > "$peers/diffsol_$method.csv"
 done
-cargo bench --bench work_precision > "$peers/radau.csv"
+cargo bench --bench work_precision -- radau > "$peers/radau.csv"
+cargo bench --bench work_precision -- explicit > "$peers/explicit.csv"
 echo "dirac Radau:"; cat "$peers/radau.csv"
+echo "dirac Explicit:"; cat "$peers/explicit.csv"
 echo "SUNDIALS IDA:"; cat "$peers/ida.csv"
 for method in bdf esdirk34 tsit45; do echo "diffsol $method:"; cat "$peers/diffsol_$method.csv"; done
-python3 benches/peers/compare.py "$peers/radau.csv" "SUNDIALS IDA=$peers/ida.csv" \
+python3 benches/peers/compare.py "dirac Radau=$peers/radau.csv" "SUNDIALS IDA=$peers/ida.csv" \
     "diffsol BDF=$peers/diffsol_bdf.csv" "diffsol ESDIRK34=$peers/diffsol_esdirk34.csv" \
-    "diffsol Tsit45 (ODE)=$peers/diffsol_tsit45.csv" --svg "$peers/work_precision.svg"
+    "diffsol Tsit45 (ODE)=$peers/diffsol_tsit45.csv" "dirac Explicit=$peers/explicit.csv" \
+    --svg "$peers/work_precision.svg"
+python3 benches/peers/compare.py "dirac Explicit=$peers/explicit.csv" \
+    "diffsol Tsit45 (ODE)=$peers/diffsol_tsit45.csv" "diffsol BDF=$peers/diffsol_bdf.csv"

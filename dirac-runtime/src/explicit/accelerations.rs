@@ -107,6 +107,11 @@ where
         }
     }
 
+    /// Whether the model's blocks are dense (its factorisations allocate nothing, ever).
+    pub fn is_dense(&self) -> bool {
+        M::Algebra::dense_qq(&self.lvv).is_some()
+    }
+
     /// `∂L/∂v` at the point of the last evaluation: the momenta there.
     pub fn momenta(&self) -> &VecQ<M> {
         &self.blocks.dl_dv
@@ -246,10 +251,12 @@ where
     }
 
     /// Puts `(q, v)` at time `t` onto the constraints with the factorisation of the last
-    /// evaluation, which must have been near `q`: positions onto `φ(q, t) = 0` by simplified
+    /// evaluation: positions onto `φ(q, t) = 0` by simplified
     /// Newton, corrections `Δq` with `L_vv Δq ∈ range Aᵀ` and `A Δq = (−φ, 0)` (moving along
     /// the other constraints); then velocities onto `A(q, t) v + b(q, t) = 0` likewise.
     /// Iterations stop at round-off, at most four each. Returns whether `(q, v)` moved.
+    /// The last evaluation must have been at this `q` and `t` (its constraint rows are reused
+    /// while the positions stay).
     pub fn project(&mut self, model: &M, t: f64, q: &mut VecQ<M>, v: &mut VecQ<M>) -> bool {
         let Sizes { nq: n, nh, nc: m, .. } = self.sizes;
         if m == 0 || !self.factored {
@@ -275,14 +282,20 @@ where
                 q[i] += self.x[i];
             }
         }
-        model.constraint_matrix(t, q, &mut self.a_projected);
-        let scale = amax(M::Algebra::cq_values(&self.a_projected)) * amax(v.as_slice());
+        // The constraint rows at `q`: the last evaluation's, unless the positions moved.
+        let positions_moved = moved;
+        if positions_moved {
+            model.constraint_matrix(t, q, &mut self.a_projected);
+        }
+        let scale = amax(M::Algebra::cq_values(if positions_moved { &self.a_projected } else { &self.a }))
+            * amax(v.as_slice());
         for _ in 0..4 {
             self.residual.fill(0.0);
             if M::PRESCRIBED {
                 model.constraint_rate(t, q, &mut self.residual);
             }
-            M::Algebra::cq_mul(&self.a_projected, 1.0, v.as_slice(), self.residual.as_mut_slice());
+            let rows = if positions_moved { &self.a_projected } else { &self.a };
+            M::Algebra::cq_mul(rows, 1.0, v.as_slice(), self.residual.as_mut_slice());
             let r = amax(self.residual.as_slice());
             if r <= 1e-15 * scale || r == 0.0 || !r.is_finite() {
                 break;

@@ -60,6 +60,8 @@ const BETA: f64 = 0.04;
 const SAFETY: f64 = 0.9;
 const MAX_GROWTH: f64 = 10.0;
 const MAX_SHRINK: f64 = 0.2;
+/// The PI controller's memory at a start, `(10⁻⁴)^β`, as DOPRI5 has it.
+const ERROR_OLD_START: f64 = 0.691_830_970_918_936_5;
 
 /// Why the last attempt was rejected, for the error when steps become too small.
 #[derive(Clone, Copy)]
@@ -111,8 +113,8 @@ where
     /// The fifth-order solution at the end of the last step, before the projection.
     q_new: VecQ<M>,
     v_new: VecQ<M>,
-    /// The PI controller's memory: the last accepted error, and whether the last attempt was
-    /// rejected.
+    /// The PI controller's memory: the last accepted error to the power `β`, and whether the
+    /// last attempt was rejected.
     error_old: f64,
     rejected_last: bool,
     /// The multipliers and accelerations of interpolated states, apart from the integration's.
@@ -156,7 +158,7 @@ where
             lambda_stage: sizes.zeros_c::<M>(),
             q_new: zeros(),
             v_new: zeros(),
-            error_old: 1e-4,
+            error_old: ERROR_OLD_START,
             rejected_last: false,
             stats: ExplicitStats::default(),
             changed_from: None,
@@ -333,13 +335,13 @@ where
                 (Ok(error), None) => {
                     let grow = error.powf(0.2 - 0.75 * BETA);
                     if error <= 1.0 {
-                        let ratio = (grow / self.error_old.powf(BETA) / SAFETY)
-                            .clamp(1.0 / MAX_GROWTH, 1.0 / MAX_SHRINK);
+                        let ratio =
+                            (grow / self.error_old / SAFETY).clamp(1.0 / MAX_GROWTH, 1.0 / MAX_SHRINK);
                         let mut next = h / ratio;
                         if self.rejected_last {
                             next = next.min(h);
                         }
-                        self.error_old = error.max(1e-4);
+                        self.error_old = error.max(1e-4).powf(BETA);
                         self.rejected_last = false;
                         self.h = next.min(self.options.max_step);
                         return Ok(h);
@@ -402,9 +404,11 @@ where
         // The interpolation's own system, factored once here: a sparse factorisation finds
         // its pivots (and allocates) the first time only.
         let (probe, acceleration) = self.probe.get_mut();
-        let s = &self.state;
-        probe.evaluate(self.model.get(), t0, (&s.q, &s.v), acceleration, &mut self.lambda_stage);
-        (self.error_old, self.rejected_last) = (1e-4, false);
+        if !probe.is_dense() {
+            let s = &self.state;
+            probe.evaluate(self.model.get(), t0, (&s.q, &s.v), acceleration, &mut self.lambda_stage);
+        }
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
         self.h = self.initial_step();
         Ok(())
     }
@@ -427,7 +431,7 @@ where
         self.t_end = t_end;
         self.forget();
         self.evaluate_start()?;
-        (self.error_old, self.rejected_last) = (1e-4, false);
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
         Ok(())
     }
 
@@ -440,7 +444,7 @@ where
         (self.t, self.t_previous, self.h_last) = (t, t, 0.0);
         self.forget();
         self.evaluate_start()?;
-        (self.error_old, self.rejected_last) = (1e-4, false);
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
         Ok(())
     }
 
