@@ -24,7 +24,7 @@ use nalgebra::{DefaultAllocator, OMatrix};
 
 use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
 use crate::blocks::ResidualBlocks;
-use crate::dims::{Dimensions, Sizes, Storage, VecC, VecH, VecK, VecQ};
+use crate::dims::{Dimensions, MatKK, Sizes, Storage, VecC, VecH, VecK, VecQ};
 use crate::init_saddle::SaddleOf;
 use crate::lu::Lu;
 use crate::model::{LagrangeDirac, MatCQ, MatQQ};
@@ -59,6 +59,12 @@ where
     factored_a: Vec<f64>,
     factored: bool,
     saddle: SaddleOf<M>,
+    /// The inverse of a dense saddle-point matrix whose factorisation was kept for a second
+    /// evaluation (a separable model with constant constraint rows): its product is
+    /// independent multiply-adds where the triangular solves are a chain of dependent ones.
+    inverse: Option<MatKK<M>>,
+    inverse_ready: bool,
+    product: VecK<M>,
     /// The separable shortcut, once the mass matrix is known to allow it; `checked` once it
     /// was looked for.
     schur: Option<Schur<M>>,
@@ -84,6 +90,7 @@ where
         let (sizes, shape) = (model.sizes(), model.shape());
         let a = M::Algebra::zeros_cq(&shape);
         let factored_a = M::Algebra::cq_values(&a).to_vec();
+        let dense = M::Algebra::dense_cq(&a).is_some();
         Accelerations {
             sizes,
             lvv: M::Algebra::zeros_qq(&shape),
@@ -94,6 +101,12 @@ where
             factored_a,
             factored: false,
             saddle: M::Algebra::saddle(&shape),
+            inverse: dense.then(|| {
+                let k = <M::Nk as nalgebra::Dim>::from_usize(sizes.nq + sizes.nc);
+                MatKK::<M>::zeros_generic(k, k)
+            }),
+            inverse_ready: false,
+            product: sizes.zeros_k::<M>(),
             schur: None,
             checked: false,
             blocks: ResidualBlocks::with_sizes(&sizes),
@@ -120,6 +133,7 @@ where
     /// Forgets the factorisation and the mass matrix: the model may have changed.
     pub fn forget(&mut self) {
         self.factored = false;
+        self.inverse_ready = false;
         self.checked = false;
         self.schur = None;
     }
@@ -196,6 +210,8 @@ where
             if M::SEPARABLE {
                 self.factored_a.copy_from_slice(M::Algebra::cq_values(&self.a));
             }
+        } else if !self.inverse_ready && self.schur.is_none() {
+            self.invert();
         }
         self.solve();
         let x = self.x.as_slice();
@@ -204,9 +220,27 @@ where
         true
     }
 
+    /// Forms the inverse of the factored saddle-point matrix, column by column, where it is
+    /// dense.
+    fn invert(&mut self) {
+        let Some(inverse) = &mut self.inverse else {
+            return;
+        };
+        let k = self.sizes.nq + self.sizes.nc;
+        for j in 0..k {
+            let column = self.product.as_mut_slice();
+            column.fill(0.0);
+            column[j] = 1.0;
+            self.saddle.solve(column);
+            inverse.column_mut(j).copy_from(&self.product);
+        }
+        self.inverse_ready = true;
+    }
+
     /// Factors the system for the constraint rows in `a` (and `L_vv` at `(t, q, v)`).
     fn factor(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) -> bool {
         self.factorizations += 1;
+        self.inverse_ready = false;
         if let Some(schur) = &mut self.schur {
             if self.sizes.nc == 0 {
                 return true;
@@ -232,22 +266,44 @@ where
     /// Replaces `x = (top, bottom)` by the solution `(v̇, λ)` with the factorisation held.
     fn solve(&mut self) {
         let Some(schur) = &mut self.schur else {
-            self.saddle.solve(self.x.as_mut_slice());
+            match &self.inverse {
+                Some(inverse) if self.inverse_ready => {
+                    inverse.mul_to(&self.x, &mut self.product);
+                    std::mem::swap(&mut self.x, &mut self.product);
+                }
+                _ => self.saddle.solve(self.x.as_mut_slice()),
+            }
             return;
         };
-        let n = self.sizes.nq;
+        let Sizes { nq: n, nc: m, .. } = self.sizes;
         let x = self.x.as_mut_slice();
-        // v̇ = M⁻¹ (top + Aᵀ λ) with A M⁻¹ Aᵀ λ = bottom − A M⁻¹ top.
-        schur.top.as_mut_slice().copy_from_slice(&x[..n]);
+        // v̇ = M⁻¹ (top + Aᵀ λ) with A M⁻¹ Aᵀ λ = bottom − A M⁻¹ top; index loops over the
+        // column-major storage, which for these small blocks cost less than nalgebra's
+        // general products.
+        let top = schur.top.as_mut_slice();
+        top.copy_from_slice(&x[..n]);
         schur.mass.solve(&mut schur.top);
-        if self.sizes.nc > 0 {
-            schur.bottom.as_mut_slice().copy_from_slice(&x[n..]);
-            schur.bottom.gemv(-1.0, &schur.a, &schur.top, 1.0);
+        if m > 0 {
+            let (top, a, b) = (schur.top.as_slice(), schur.a.as_slice(), schur.b.as_slice());
+            let bottom = schur.bottom.as_mut_slice();
+            bottom.copy_from_slice(&x[n..]);
+            for (j, t) in top.iter().enumerate() {
+                for (r, y) in bottom.iter_mut().enumerate() {
+                    *y -= a[r + j * m] * t;
+                }
+            }
             schur.s.solve(&mut schur.bottom);
-            schur.top.gemv(1.0, &schur.b, &schur.bottom, 1.0);
-            x[n..].copy_from_slice(schur.bottom.as_slice());
+            let lambda = schur.bottom.as_slice();
+            x[..n].copy_from_slice(top);
+            for (j, l) in lambda.iter().enumerate() {
+                for (i, y) in x[..n].iter_mut().enumerate() {
+                    *y += b[i + j * n] * l;
+                }
+            }
+            x[n..].copy_from_slice(lambda);
+        } else {
+            x[..n].copy_from_slice(schur.top.as_slice());
         }
-        x[..n].copy_from_slice(schur.top.as_slice());
     }
 
     /// Puts `(q, v)` at time `t` onto the constraints with the factorisation of the last

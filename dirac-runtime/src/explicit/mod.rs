@@ -63,6 +63,12 @@ const MAX_SHRINK: f64 = 0.2;
 /// The PI controller's memory at a start, `(10⁻⁴)^β`, as DOPRI5 has it.
 const ERROR_OLD_START: f64 = 0.691_830_970_918_936_5;
 
+/// `x^y` to single precision, all a step-size factor needs, at half the cost of the double
+/// one (two powers a step are a tenth of a small model's step).
+fn rough_power(x: f64, y: f64) -> f64 {
+    f64::from((x as f32).powf(y as f32))
+}
+
 /// Why the last attempt was rejected, for the error when steps become too small.
 #[derive(Clone, Copy)]
 enum Rejection {
@@ -333,7 +339,7 @@ where
             self.stats.factorizations = self.accelerations.factorizations;
             match (outcome, fixed) {
                 (Ok(error), None) => {
-                    let grow = error.powf(0.2 - 0.75 * BETA);
+                    let grow = rough_power(error, 0.2 - 0.75 * BETA);
                     if error <= 1.0 {
                         let ratio =
                             (grow / self.error_old / SAFETY).clamp(1.0 / MAX_GROWTH, 1.0 / MAX_SHRINK);
@@ -341,7 +347,7 @@ where
                         if self.rejected_last {
                             next = next.min(h);
                         }
-                        self.error_old = error.max(1e-4).powf(BETA);
+                        self.error_old = rough_power(error.max(1e-4), BETA);
                         self.rejected_last = false;
                         self.h = next.min(self.options.max_step);
                         return Ok(h);
