@@ -1,7 +1,8 @@
-//! An explicit integrator for non-stiff models: the Dormand-Prince 5(4) pair with step-size
-//! control and dense output (Hairer, Nørsett & Wanner's DOPRI5), applied to the positions and
-//! velocities, with the multipliers from one saddle-point solve per stage and every accepted
-//! step projected back onto the constraints.
+//! An explicit integrator for non-stiff models: Tsitouras' 5(4) Runge-Kutta pair with PI
+//! step-size control and dense output (as Hairer, Nørsett & Wanner's DOPRI5 drives the
+//! Dormand-Prince pair), applied to the positions and velocities, with the multipliers from
+//! one saddle-point solve per stage and every accepted step projected back onto the
+//! constraints.
 //!
 //! Each stage is explicit in the differential part, `q̇ = v`, and takes the accelerations and
 //! the multipliers from the equations of motion with the constraints differentiated once
@@ -43,7 +44,7 @@ use nalgebra::DefaultAllocator;
 
 use self::accelerations::Accelerations;
 pub use self::options::{ExplicitOptions, ExplicitStats};
-use self::tableau::{A, C, D, E};
+use self::tableau::{A, C, E, weights_at};
 use crate::diagnose::{check_constraints_kept, singular_cause};
 use crate::dims::{Sizes, Storage, VecC, VecQ};
 use crate::error::SimError;
@@ -507,17 +508,16 @@ where
             return;
         }
         let theta = ((t - self.t_previous) / self.h_last).clamp(0.0, 1.0);
-        let (h, rest) = (self.h_last, 1.0 - theta);
-        let dense = |y0: f64, y1: f64, k: &[VecQ<M>; 7], i: usize| {
-            let r2 = y1 - y0;
-            let r3 = h * k[0][i] - r2;
-            let r4 = r2 - h * k[6][i] - r3;
-            let r5 = h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>();
-            y0 + theta * (r2 + rest * (r3 + theta * (r4 + rest * r5)))
-        };
+        let weights = weights_at(theta);
+        let h = self.h_last;
         for i in 0..self.sizes.nq {
-            out.q[i] = dense(self.previous.q[i], self.q_new[i], &self.kq, i);
-            out.v[i] = dense(self.previous.v[i], self.v_new[i], &self.kv, i);
+            let (mut dq, mut dv) = (0.0, 0.0);
+            for (k, w) in weights.iter().enumerate() {
+                dq += w * self.kq[k][i];
+                dv += w * self.kv[k][i];
+            }
+            out.q[i] = self.previous.q[i] + h * dq;
+            out.v[i] = self.previous.v[i] + h * dv;
         }
         let model = self.model.get();
         let mut probe = self.probe.borrow_mut();
