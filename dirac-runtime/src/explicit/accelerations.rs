@@ -268,8 +268,17 @@ where
         let Some(schur) = &mut self.schur else {
             match &self.inverse {
                 Some(inverse) if self.inverse_ready => {
-                    inverse.mul_to(&self.x, &mut self.product);
-                    std::mem::swap(&mut self.x, &mut self.product);
+                    // The size as a constant where the model fixes it, so that the loops unroll.
+                    let k = <M::Nk as nalgebra::Dim>::try_to_usize().unwrap_or(self.sizes.nq + self.sizes.nc);
+                    let (inverse, x) = (&inverse.as_slice()[..k * k], &mut self.x.as_mut_slice()[..k]);
+                    let product = &mut self.product.as_mut_slice()[..k];
+                    product.fill(0.0);
+                    for (column, &xj) in inverse.chunks_exact(k).zip(x.iter()) {
+                        for (p, a) in product.iter_mut().zip(column) {
+                            *p += a * xj;
+                        }
+                    }
+                    x.copy_from_slice(product);
                 }
                 _ => self.saddle.solve(self.x.as_mut_slice()),
             }

@@ -4,6 +4,9 @@
 //! solution (first same as last). Its error constants are smaller than Dormand and Prince's
 //! pair of the same cost, so it reaches a given error in fewer steps.
 
+// The coefficients carry the digits they are published with, some beyond a double's.
+#![allow(clippy::excessive_precision)]
+
 /// The nodes `c_i` of the seven stages.
 pub const C: [f64; 7] = [0.0, 0.161, 0.327, 0.9, 0.980_025_540_904_509_7, 1.0, 1.0];
 
