@@ -13,8 +13,10 @@
 //!
 //! Models declared on their own are joined through their ports by
 //! `#[derive(Interconnection)]` into a model of the same kind, and simulated by
-//! [`Radau`] (Radau IIA, order 5, adaptive) or [`Variational`] (a structure-preserving
-//! integrator from the discrete Hamilton-Pontryagin-d'Alembert principle).
+//! [`Explicit`] (explicit Runge-Kutta, order 5, adaptive, projected onto the constraints: for
+//! models that are not stiff), [`Radau`] (Radau IIA, order 5, adaptive: for stiff models) or
+//! [`Variational`] (a structure-preserving integrator from the discrete
+//! Hamilton-Pontryagin-d'Alembert principle: for long runs).
 //!
 //! - [`guide`]: a tutorial from a Lagrangian to a plot;
 //! - [`attributes`]: the `#[dirac(...)]` reference;

@@ -15,7 +15,7 @@ use crate::recorder::Recorder;
 use crate::solution::{Sampling, Solution};
 use crate::state::State;
 
-/// An integrator of a model `M`: [`Radau`](crate::Radau) or
+/// An integrator of a model `M`: [`Explicit`](crate::Explicit), [`Radau`](crate::Radau) or
 /// [`Variational`](crate::Variational).
 ///
 /// The required methods take one step at a time; the provided ones run a whole integration.
@@ -305,4 +305,42 @@ where
     DefaultAllocator: Storage<M>,
 {
     worst_constraint(model, t, state).map_or(0.0, |(_, _, relative)| relative)
+}
+
+/// The options every adaptive integrator checks: positive, finite tolerances, a relative one
+/// in `[10 ε, 1)`, a positive largest step and a positive, finite first step if one is given.
+pub(crate) fn check_step_options(
+    rtol: f64,
+    atol: f64,
+    max_step: f64,
+    initial_step: Option<f64>,
+) -> Result<(), SimError> {
+    for (what, value) in [("rtol", rtol), ("atol", atol)] {
+        if value.is_nan() || value <= 0.0 || value.is_infinite() {
+            return Err(SimError::InvalidTolerance { what, value });
+        }
+    }
+    // Above 1 a relative tolerance controls nothing; below 10 ε it asks for more than double
+    // precision holds.
+    if !(10.0 * f64::EPSILON..1.0).contains(&rtol) {
+        return Err(SimError::InvalidOption {
+            what: "rtol",
+            reason: format!(
+                "{rtol} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
+                 and below 10 machine epsilons no step can meet it"
+            ),
+        });
+    }
+    if max_step.is_nan() || max_step <= 0.0 {
+        return Err(SimError::InvalidOption {
+            what: "max_step",
+            reason: format!("{max_step} is not positive"),
+        });
+    }
+    if let Some(h) = initial_step
+        && (h.is_nan() || h <= 0.0 || h.is_infinite())
+    {
+        return Err(SimError::InvalidOption { what: "initial_step", reason: format!("{h} is not positive") });
+    }
+    Ok(())
 }

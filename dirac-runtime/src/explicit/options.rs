@@ -1,6 +1,7 @@
 //! The explicit integrator's options and counters.
 
 use crate::error::SimError;
+use crate::integrator::check_step_options;
 
 /// Tolerances and limits of an [`Explicit`](crate::Explicit) integration.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,36 +48,14 @@ impl ExplicitOptions {
 
     /// Checks every option, naming the first one out of its range.
     pub fn validate(&self) -> Result<(), SimError> {
-        for (what, value) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if value.is_nan() || value <= 0.0 || value.is_infinite() {
-                return Err(SimError::InvalidTolerance { what, value });
-            }
-        }
-        if !(10.0 * f64::EPSILON..1.0).contains(&self.rtol) {
+        check_step_options(self.rtol, self.atol, self.max_step, self.initial_step)?;
+        if let Some(h) = self.fixed_step
+            && (h.is_nan() || h <= 0.0 || h.is_infinite())
+        {
             return Err(SimError::InvalidOption {
-                what: "rtol",
-                reason: format!(
-                    "{} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
-                     and below 10 machine epsilons no step can meet it",
-                    self.rtol
-                ),
+                what: "fixed_step",
+                reason: format!("{h} is not positive and finite"),
             });
-        }
-        if self.max_step.is_nan() || self.max_step <= 0.0 {
-            return Err(SimError::InvalidOption {
-                what: "max_step",
-                reason: format!("{} is not positive", self.max_step),
-            });
-        }
-        for (what, step) in [("initial_step", self.initial_step), ("fixed_step", self.fixed_step)] {
-            if let Some(h) = step
-                && (h.is_nan() || h <= 0.0 || h.is_infinite())
-            {
-                return Err(SimError::InvalidOption {
-                    what,
-                    reason: format!("{h} is not positive and finite"),
-                });
-            }
         }
         Ok(())
     }

@@ -4,6 +4,7 @@ use nalgebra::DefaultAllocator;
 
 use crate::dims::{Sizes, Storage, VecY};
 use crate::error::SimError;
+use crate::integrator::check_step_options;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::state::State;
@@ -74,37 +75,7 @@ impl RadauOptions {
     ///
     /// [`Radau::new`]: crate::Radau::new
     pub fn validate(&self) -> Result<(), SimError> {
-        for (what, value) in [("rtol", self.rtol), ("atol", self.atol)] {
-            if value.is_nan() || value <= 0.0 || value.is_infinite() {
-                return Err(SimError::InvalidTolerance { what, value });
-            }
-        }
-        // Above 1 a relative tolerance controls nothing; below 10 ε it asks for more than
-        // double precision holds.
-        if !(10.0 * f64::EPSILON..1.0).contains(&self.rtol) {
-            return Err(SimError::InvalidOption {
-                what: "rtol",
-                reason: format!(
-                    "{} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
-                                 and below 10 machine epsilons no step can meet it",
-                    self.rtol
-                ),
-            });
-        }
-        if self.max_step.is_nan() || self.max_step <= 0.0 {
-            return Err(SimError::InvalidOption {
-                what: "max_step",
-                reason: format!("{} is not positive", self.max_step),
-            });
-        }
-        if let Some(h) = self.initial_step
-            && (h.is_nan() || h <= 0.0 || h.is_infinite())
-        {
-            return Err(SimError::InvalidOption {
-                what: "initial_step",
-                reason: format!("{h} is not positive"),
-            });
-        }
+        check_step_options(self.rtol, self.atol, self.max_step, self.initial_step)?;
         if self.max_newton_iterations < 2 {
             return Err(SimError::InvalidOption {
                 what: "max_newton_iterations",
