@@ -1,6 +1,8 @@
 //! Recording a solution while an integrator runs: the samples the [`Sampling`] asks for, each
 //! with the derived series (energy, power, constraint residuals, port efforts).
 
+use std::sync::Arc;
+
 use nalgebra::DefaultAllocator;
 
 use crate::algebra::{Algebra, amax};
@@ -17,7 +19,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     table: Table<M>,
-    names: Vec<String>,
+    names: Arc<[String]>,
     sampling: Sampling,
     next: usize,
     t0: f64,
