@@ -30,7 +30,9 @@
 //! with [`SimError::NotDetermined`], naming the free unknown.
 //!
 //! The method is explicit: on a stiff model (a stiff spring, a fast electrical mode) its step
-//! is held to the stability limit by the error control and the integration ends in
+//! is held to the stability limit by the error control. Hairer's stiffness test notices (the
+//! last two stages estimate `h |λ|`) and the integration stops with [`SimError::Unstable`]
+//! saying the model is stiff, where it would otherwise crawl on to
 //! [`SimError::TooManySteps`]. Use [`Radau`](crate::Radau) there; the facade's guide has a
 //! table of which integrator suits which model. A step allocates nothing.
 
@@ -61,6 +63,10 @@ use crate::state::State;
 const SAFETY: f64 = 0.9;
 const MAX_GROWTH: f64 = 10.0;
 const MAX_SHRINK: f64 = 0.2;
+/// Where the stiffness test counts a step as held by stability: `h |λ|` near the boundary of
+/// the method's stability region on the negative real axis (about −3.5 for Tsitouras' pair;
+/// Hairer's DOPRI5 takes 3.25 for a boundary of −3.3).
+const STIFF_H_LAMBDA: f64 = 3.25;
 /// The PI controller's memory at a start, `(10⁻⁴)^β`, as DOPRI5 has it.
 const ERROR_OLD_START: f64 = 0.691_830_970_918_936_5;
 
@@ -124,6 +130,9 @@ where
     /// last attempt was rejected.
     error_old: f64,
     rejected_last: bool,
+    /// The stiffness test's counts of accepted steps in a row at and below the stability limit.
+    stiff_steps: usize,
+    nonstiff_steps: usize,
     /// The multipliers and accelerations of interpolated states, apart from the integration's.
     probe: RefCell<(Accelerations<M>, VecQ<M>)>,
     stats: ExplicitStats,
@@ -167,6 +176,8 @@ where
             v_new: zeros(),
             error_old: ERROR_OLD_START,
             rejected_last: false,
+            stiff_steps: 0,
+            nonstiff_steps: 0,
             stats: ExplicitStats::default(),
             changed_from: None,
         })
@@ -316,6 +327,51 @@ where
         if error.is_finite() { Ok(error) } else { Err(Rejection::NonFinite) }
     }
 
+    /// Hairer's stiffness test (DOPRI5): the sixth and seventh stages both sit at the step's
+    /// end, so `h ‖k₇ − k₆‖ / ‖y₇ − y₆‖` estimates `h |λ|` for the dominant eigenvalue along
+    /// their difference. Held above the stability boundary's neighbourhood on fifteen accepted
+    /// steps in a row (six below it reset the count), the step is limited by stability, not by
+    /// accuracy: the model is stiff, and an implicit method would take far larger steps.
+    fn test_stiffness(&mut self, h: f64) -> Result<(), SimError> {
+        let (mut numerator, mut denominator) = (0.0, 0.0);
+        for i in 0..self.sizes.nq {
+            let (mut dq, mut dv) = (0.0, 0.0);
+            // y₇ − y₆ = h Σ_j (b_j − a_6j) k_j; row 6 of the table ends in a zero.
+            for (j, (b, a)) in A[6].iter().zip(&A[5]).enumerate() {
+                let w = b - a;
+                dq += w * self.kq[j][i];
+                dv += w * self.kv[j][i];
+            }
+            denominator += (h * dq).powi(2) + (h * dv).powi(2);
+            numerator += (self.kq[6][i] - self.kq[5][i]).powi(2) + (self.kv[6][i] - self.kv[5][i]).powi(2);
+        }
+        if denominator <= 0.0 {
+            return Ok(());
+        }
+        let h_lambda = h * (numerator / denominator).sqrt();
+        if h_lambda > STIFF_H_LAMBDA {
+            self.stiff_steps += 1;
+            self.nonstiff_steps = 0;
+        } else {
+            self.nonstiff_steps += 1;
+            if self.nonstiff_steps == 6 {
+                self.stiff_steps = 0;
+            }
+        }
+        if self.stiff_steps < 15 {
+            return Ok(());
+        }
+        Err(SimError::Unstable {
+            t: self.t + h,
+            h,
+            detail: format!(
+                "the model is stiff here: 15 steps in a row were held at the explicit method's stability \
+                 limit (h·|λ| ≈ {h_lambda:.1}), so it would crawl; integrate it with Radau (or set \
+                 ExplicitOptions::stiffness_test to false to go on)"
+            ),
+        })
+    }
+
     /// Attempts until a step is accepted; returns its size.
     fn attempt(&mut self) -> Result<f64, SimError> {
         let mut reason = Rejection::Error;
@@ -354,6 +410,9 @@ where
                         self.error_old = if error >= 1e-4 { u4 } else { ERROR_OLD_START };
                         self.rejected_last = false;
                         self.h = next.min(self.options.max_step);
+                        if self.options.stiffness_test {
+                            self.test_stiffness(h)?;
+                        }
                         return Ok(h);
                     }
                     reason = Rejection::Error;
@@ -419,6 +478,7 @@ where
             probe.evaluate(self.model.get(), t0, (&s.q, &s.v), acceleration, &mut self.lambda_stage);
         }
         (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
         self.h = self.initial_step();
         Ok(())
     }
@@ -442,6 +502,7 @@ where
         self.forget();
         self.evaluate_start()?;
         (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
         Ok(())
     }
 
@@ -455,6 +516,7 @@ where
         self.forget();
         self.evaluate_start()?;
         (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
         Ok(())
     }
 

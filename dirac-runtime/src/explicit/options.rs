@@ -20,6 +20,11 @@ pub struct ExplicitOptions {
     /// Steps of exactly this size (the last one shorter, to end at the end time), without
     /// error control, where set (default: adaptive steps).
     pub fixed_step: Option<f64>,
+    /// Whether to stop with [`SimError::Unstable`] when the model turns out stiff: when
+    /// stability, not accuracy, has held fifteen adaptive steps in a row (default `true`).
+    /// An explicit method then crawls at its stability limit where Radau would take large
+    /// steps.
+    pub stiffness_test: bool,
 }
 
 impl Default for ExplicitOptions {
@@ -31,6 +36,7 @@ impl Default for ExplicitOptions {
             max_step: f64::INFINITY,
             max_steps: 1_000_000,
             fixed_step: None,
+            stiffness_test: true,
         }
     }
 }
