@@ -131,7 +131,8 @@ pub enum SimError {
         component: String,
     },
     /// A fixed-step integration grew without bound: the step is beyond the method's stability
-    /// limit for this model.
+    /// limit for this model. Or an adaptive explicit integration was held at its stability
+    /// limit step after step: the model is stiff, and wants an implicit method.
     #[error("unstable at t = {t} with step {h:e}: {detail}")]
     Unstable {
         /// Where the growth was found.
