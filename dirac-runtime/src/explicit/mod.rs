@@ -413,7 +413,7 @@ where
                         // Every tenth step, and every step once one looked stiff, as DOPRI5
                         // tests (there every thousandth): a test costs a tenth of a small
                         // model's step.
-                        let due = self.stats.steps % 10 == 0 || self.stiff_steps > 0;
+                        let due = self.stats.steps.is_multiple_of(10) || self.stiff_steps > 0;
                         if self.options.stiffness_test && due {
                             self.test_stiffness(h)?;
                         }
