@@ -307,3 +307,46 @@ fn bad_options_are_refused_by_name() {
         assert!(error.to_string().contains(what), "{what}: {error}");
     }
 }
+
+/// Absurd input ends in a typed error naming the cause, or in a finite result on the
+/// constraints: a NaN parameter, a NaN or inconsistent start, a reversed span, a fixed step
+/// far beyond the span, a sampling interval of zero.
+#[test]
+fn absurd_input_is_refused_or_stays_finite_and_on_the_constraints() {
+    let p = unit_pendulum();
+    let start = horizontal_start(&p);
+    let run =
+        |model: &Pendulum, options: ExplicitOptions, state: &State<Pendulum>, t_end: f64, s: &Sampling| {
+            Explicit::new(model, options).and_then(|mut e| e.solve(0.0, state, t_end, s))
+        };
+    let at_end = Sampling::Times(vec![1.0]);
+    let bad = Pendulum { g: f64::NAN, ..unit_pendulum() };
+    let error = run(&bad, ExplicitOptions::default(), &start, 1.0, &at_end).expect_err("NaN parameter");
+    assert!(matches!(&error, SimError::InvalidParameter { name, .. } if name == "g"), "{error:?}");
+    let mut nan = start.clone();
+    nan.set_v(Pendulum::X, f64::NAN);
+    let error = run(&p, ExplicitOptions::default(), &nan, 1.0, &at_end).expect_err("NaN start");
+    assert!(error.to_string().contains("vx"), "{error}");
+    let mut off = start.clone();
+    off.set_q(Pendulum::X, 2.0);
+    let error = run(&p, ExplicitOptions::default(), &off, 1.0, &at_end).expect_err("off the rod");
+    assert!(matches!(error, SimError::StateNotConsistent { .. }), "{error:?}");
+    let error =
+        run(&p, ExplicitOptions::default(), &start, -1.0, &Sampling::Steps).expect_err("reversed span");
+    assert!(matches!(error, SimError::InvalidTimeSpan { .. }), "{error:?}");
+    let error =
+        run(&p, ExplicitOptions::default(), &start, 1.0, &Sampling::Every(0.0)).expect_err("zero interval");
+    assert!(matches!(error, SimError::InvalidSampling { .. }), "{error:?}");
+    // A fixed step of 1e300 is cut to the span: one step of 1 s, finite and on the rod (or a
+    // typed error), never a wrong answer passed off as one that violates the constraint.
+    match run(&p, ExplicitOptions::fixed(1e300), &start, 1.0, &at_end) {
+        Ok(sol) => {
+            let (x, y) = (sol.q(Pendulum::X)[0], sol.q(Pendulum::Y)[0]);
+            assert!(x.is_finite() && y.is_finite() && (x * x + y * y - 1.0).abs() < 1e-12, "({x}, {y})");
+            assert_eq!(sol.stats.steps, 1);
+        }
+        Err(error) => {
+            assert!(matches!(error, SimError::Unstable { .. } | SimError::NonFinite { .. }), "{error:?}")
+        }
+    }
+}

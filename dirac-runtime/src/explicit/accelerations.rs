@@ -44,6 +44,15 @@ where
     bottom: VecC<M>,
 }
 
+/// What a projection did.
+#[derive(Clone, Copy)]
+pub(crate) struct Projection {
+    /// Whether the positions or velocities moved.
+    pub moved: bool,
+    /// Whether they reached the constraints.
+    pub reached: bool,
+}
+
 /// The storage of an evaluation.
 pub(crate) struct Accelerations<M: LagrangeDirac>
 where
@@ -319,21 +328,28 @@ where
     /// evaluation: positions onto `φ(q, t) = 0` by simplified
     /// Newton, corrections `Δq` with `L_vv Δq ∈ range Aᵀ` and `A Δq = (−φ, 0)` (moving along
     /// the other constraints); then velocities onto `A(q, t) v + b(q, t) = 0` likewise.
-    /// Iterations stop at round-off, at most four each. Returns whether `(q, v)` moved.
+    /// Iterations stop at round-off, at most four each. Says whether `(q, v)` moved, and
+    /// whether it reached the constraints (to 1e-10 of their scale): a step too long for the
+    /// simplified Newton iteration leaves them unreached.
     /// The last evaluation must have been at this `q` and `t` (its constraint rows are reused
     /// while the positions stay).
-    pub fn project(&mut self, model: &M, t: f64, q: &mut VecQ<M>, v: &mut VecQ<M>) -> bool {
+    pub fn project(&mut self, model: &M, t: f64, q: &mut VecQ<M>, v: &mut VecQ<M>) -> Projection {
         let Sizes { nq: n, nh, nc: m, .. } = self.sizes;
+        let mut done = Projection { moved: false, reached: true };
         if m == 0 || !self.factored {
-            return false;
+            return done;
         }
-        let mut moved = false;
-        for _ in 0..4 {
+        for k in 0..=4 {
             if nh == 0 {
                 break;
             }
             model.holonomic(t, q, &mut self.phi);
-            if amax(self.phi.as_slice()) <= 1e-15 * (1.0 + amax(q.as_slice())) {
+            let (r, size) = (amax(self.phi.as_slice()), 1.0 + amax(q.as_slice()));
+            if r <= 1e-15 * size {
+                break;
+            }
+            if k == 4 {
+                done.reached = r <= 1e-10 * size;
                 break;
             }
             let x = self.x.as_mut_slice();
@@ -342,19 +358,19 @@ where
                 *x = -phi;
             }
             self.solve();
-            moved = true;
+            done.moved = true;
             for i in 0..n {
                 q[i] += self.x[i];
             }
         }
         // The constraint rows at `q`: the last evaluation's, unless the positions moved.
-        let positions_moved = moved;
+        let positions_moved = done.moved;
         if positions_moved {
             model.constraint_matrix(t, q, &mut self.a_projected);
         }
         let scale = amax(M::Algebra::cq_values(if positions_moved { &self.a_projected } else { &self.a }))
             * amax(v.as_slice());
-        for _ in 0..4 {
+        for k in 0..=4 {
             self.residual.fill(0.0);
             if M::PRESCRIBED {
                 model.constraint_rate(t, q, &mut self.residual);
@@ -362,7 +378,11 @@ where
             let rows = if positions_moved { &self.a_projected } else { &self.a };
             M::Algebra::cq_mul(rows, 1.0, v.as_slice(), self.residual.as_mut_slice());
             let r = amax(self.residual.as_slice());
-            if r <= 1e-15 * scale || r == 0.0 || !r.is_finite() {
+            if r <= 1e-15 * scale || r == 0.0 {
+                break;
+            }
+            if k == 4 || !r.is_finite() {
+                done.reached &= r <= 1e-10 * scale;
                 break;
             }
             let x = self.x.as_mut_slice();
@@ -371,11 +391,11 @@ where
                 *x = -r;
             }
             self.solve();
-            moved = true;
+            done.moved = true;
             for i in 0..n {
                 v[i] += self.x[i];
             }
         }
-        moved
+        done
     }
 }

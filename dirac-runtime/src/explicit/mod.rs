@@ -543,8 +543,17 @@ where
         // last). The projection moves the solution by about the local error, O(h⁶), so the
         // first stage is then taken that far from the state: a perturbation of O(h⁷) in the
         // next step, below its local error, which keeps the order.
-        let moved =
-            self.sizes.nc > 0 && self.accelerations.project(self.model.get(), self.t, &mut s.q, &mut s.v);
+        let projection = self.accelerations.project(self.model.get(), self.t, &mut s.q, &mut s.v);
+        if !projection.reached {
+            return Err(SimError::Unstable {
+                t: self.t,
+                h,
+                detail: "the step left the constraints too far for the projection to bring the state \
+                         back to them: take a smaller step (a fixed step), or adaptive steps"
+                    .to_owned(),
+            });
+        }
+        let moved = projection.moved;
         self.start_acceleration.copy_from(&self.kv[6]);
         s.lambda.copy_from(&self.lambda_stage);
         if moved {
