@@ -316,6 +316,53 @@ fn continuous_feedback_closes_the_loop_with_its_jacobian() {
     );
 }
 
+/// Radau on the forced spring under the nonlinear feedback `f = −K x³ − D v` from x(0) = 1 at
+/// rest: x at t = 5, the Newton iterations and the Jacobian evaluations.
+fn cubic_feedback_run(jacobian: FeedbackJacobian, tol: f64) -> (f64, usize, usize) {
+    let (gain, damping) = (20.0, 0.3);
+    let mut spring = ForcedSpring { m: 1.0, k: 1.0, f: 0.0 };
+    let start = at_rest_at(&spring, 1.0);
+    let mut law = |_: f64, s: &State<ForcedSpring>, model: &mut ForcedSpring| {
+        model.f = -gain * s.q[0].powi(3) - damping * s.v[0];
+    };
+    let mut law_jacobian = |_: f64, s: &State<ForcedSpring>, out: &mut [f64]| {
+        out.copy_from_slice(&[-3.0 * gain * s.q[0] * s.q[0], -damping]);
+    };
+    let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(tol, tol)).expect("valid");
+    match jacobian {
+        FeedbackJacobian::None => radau.drive(&mut law).expect("an exclusive model"),
+        FeedbackJacobian::Differences => radau.drive_feedback(&mut law).expect("a dense model"),
+        FeedbackJacobian::Given => {
+            radau.drive_feedback_with(&mut law, &mut law_jacobian).expect("a dense model")
+        }
+    }
+    let solution = radau.solve(0.0, &start, 5.0, &Sampling::Times(vec![5.0])).expect("integrates");
+    let x = solution.q(ForcedSpring::X)[0];
+    (x, solution.stats.newton_iterations, solution.stats.jacobian_evaluations)
+}
+
+#[test]
+fn a_nonlinear_feedback_keeps_its_jacobian_through_reevaluations() {
+    // The law's Jacobian changes along the motion, so the Newton matrix is evaluated again and
+    // again; each evaluation must carry the feedback's part once, not once more every time.
+    let (reference, ..) = cubic_feedback_run(FeedbackJacobian::None, 1e-12);
+    let (x_without, iterations_without, _) = cubic_feedback_run(FeedbackJacobian::None, 1e-8);
+    let (x_given, iterations_given, evaluations) = cubic_feedback_run(FeedbackJacobian::Given, 1e-8);
+    let (x_differences, iterations_differences, _) = cubic_feedback_run(FeedbackJacobian::Differences, 1e-8);
+    assert!(evaluations > 10, "{evaluations} Jacobian evaluations");
+    for x in [x_without, x_given, x_differences] {
+        assert!((x - reference).abs() < 1e-6, "x(5) = {x} against {reference} (rtol 1e-12)");
+    }
+    assert!(
+        iterations_given.abs_diff(iterations_differences) <= iterations_given / 20,
+        "{iterations_given} against {iterations_differences}"
+    );
+    assert!(
+        iterations_given < iterations_without,
+        "{iterations_given} Newton iterations with the feedback Jacobian, {iterations_without} without"
+    );
+}
+
 #[test]
 fn tables_refuse_bad_samples() {
     use dirac::sources::{Hold, Table};

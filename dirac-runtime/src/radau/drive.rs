@@ -51,6 +51,14 @@ where
         }
     }
 
+    /// Zeroes `∂ṗ/∂q` and `∂ṗ/∂v` before the model writes them: the generated blocks set only
+    /// their structural nonzeros, and [`Feedback::add_columns`] adds into the others too, which
+    /// would otherwise keep the last evaluation's feedback and add it again at every new one.
+    pub fn clear_columns(jac: &mut JacobianBlocks<M, M::Algebra>) {
+        M::Algebra::qq_values_mut(&mut jac.dpdot_dq).fill(0.0);
+        M::Algebra::qq_values_mut(&mut jac.dpdot_dv).fill(0.0);
+    }
+
     /// Adds `∂ṗ/∂u · ∂u/∂(q, v)` to `∂ṗ/∂q` and `∂ṗ/∂v`, column by column: from the user's
     /// `∂u/∂(q, v)` and the generated `∂ṗ/∂u`, or as the change of `ṗ` at the state `y` when
     /// the inputs are those of `y` moved in one position or velocity. Expects the inputs set at

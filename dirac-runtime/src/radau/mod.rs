@@ -295,6 +295,9 @@ where
 
     fn evaluate_jacobian(&mut self) -> Result<(), SimError> {
         self.residual.apply(&mut self.model, self.t, &self.y);
+        if self.feedback.is_some() {
+            Feedback::clear_columns(&mut self.jac);
+        }
         let s = &self.state;
         self.model.jacobian_blocks(self.t, &s.q, &s.v, &s.lambda, &mut self.jac);
         if let Some(feedback) = &mut self.feedback {
