@@ -53,6 +53,7 @@ use crate::error::SimError;
 use crate::held::Held;
 use crate::integrator::{
     Integrator, check_restart, check_start, check_state, check_within_last_step, constraint_violation,
+    rough_power,
 };
 use crate::model::LagrangeDirac;
 use crate::state::State;
@@ -69,12 +70,6 @@ const MAX_SHRINK: f64 = 0.2;
 const STIFF_H_LAMBDA: f64 = 3.25;
 /// The PI controller's memory at a start, `(10⁻⁴)^β`, as DOPRI5 has it.
 const ERROR_OLD_START: f64 = 0.691_830_970_918_936_5;
-
-/// `x^y` to single precision, all a step-size factor needs, at half the cost of the double
-/// one (two powers a step are a tenth of a small model's step).
-fn rough_power(x: f64, y: f64) -> f64 {
-    f64::from((x as f32).powf(y as f32))
-}
 
 /// Why the last attempt was rejected, for the error when steps become too small.
 #[derive(Clone, Copy)]

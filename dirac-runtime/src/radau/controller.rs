@@ -48,7 +48,7 @@ impl Controller {
     pub fn quotient(err: f64, iterations: usize, max_iterations: usize) -> f64 {
         let max = max_iterations as f64;
         let fac = SAFE.min((1.0 + 2.0 * max) * SAFE / (iterations as f64 + 2.0 * max));
-        FACR.max(FACL.min(err.powf(0.25) / fac))
+        FACR.max(FACL.min(err.sqrt().sqrt() / fac))
     }
 
     /// Records a rejection and returns the factor for the step after an error estimate too
@@ -71,7 +71,8 @@ impl Controller {
     pub fn accepted_quotient(&mut self, h: f64, err: f64, quot: f64, predictive: bool) -> f64 {
         let mut quot = quot;
         if predictive {
-            let facgus = ((self.h_acc / h) * (err * err / self.err_acc).powf(0.25) / SAFE).clamp(FACR, FACL);
+            let facgus =
+                ((self.h_acc / h) * (err * err / self.err_acc).sqrt().sqrt() / SAFE).clamp(FACR, FACL);
             quot = quot.max(facgus);
         }
         self.h_acc = h;

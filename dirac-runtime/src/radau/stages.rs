@@ -10,6 +10,7 @@ use super::residual::Residual;
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
 use crate::dims::{Sizes, Storage, VecY};
 use crate::held::Held;
+use crate::integrator::rough_power;
 use crate::layout::Layout;
 use crate::model::LagrangeDirac;
 use crate::newton::NewtonSolver;
@@ -112,7 +113,7 @@ where
         max_iterations: usize,
     ) -> Outcome {
         let h = step.h;
-        let mut faccon = self.faccon.max(f64::EPSILON).powf(0.8);
+        let mut faccon = rough_power(self.faccon.max(f64::EPSILON), 0.8);
         let mut theta = self.theta.abs();
         let (mut dyno_old, mut thq_old) = (1.0, 1.0);
         for newt in 0..max_iterations {
