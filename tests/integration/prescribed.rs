@@ -378,8 +378,10 @@ fn a_slider_crank_with_a_prescribed_crank_closes_its_power_balance_under_radau()
     let at_steps = steps.holonomic_residual().iter().fold(0.0f64, |m, x| m.max(*x));
     assert!(at_steps < 1e-11, "|φ| up to {at_steps:e} at the steps");
     // The drive's torque does work against gravity, inertia and the damper.
+    // 1.9e-9 with the first step HINIT chooses, below 1e-9 from a first step of 1e-6 of the
+    // span: where the samples fall in the steps moves the multipliers' interpolation error.
     let error = balance_error(&solution, dt);
-    assert!(error < 1e-9, "power balance error {error:e}");
+    assert!(error < 5e-9, "power balance error {error:e}");
     let drive = solution.lambda(SliderCrank::DRIVE);
     assert!(drive.iter().any(|x| x.abs() > 1.0), "the drive carries a torque");
 }
@@ -477,11 +479,14 @@ fn an_array_of_subsystems_may_prescribe_relative_velocities() {
     let mut radau = Radau::new(&row, RadauOptions::tolerances(tol, tol)).expect("valid");
     let times = vec![0.5, 1.0, 1.5, 2.0];
     let solution = radau.solve(0.0, &start, 2.0, &Sampling::Times(times.clone())).expect("integrates");
+    // Samples inside a step come from its collocation polynomial, not held to the tolerance:
+    // the worst error at t = 0.5 and 1.5 ranges from 1.9e-10 to 1.3e-9 as the first step
+    // ranges from 2e-6 to 1e-2 and moves the steps; at t = 1 and 2 it stays below 2e-11.
     for (k, &t) in times.iter().enumerate() {
         let x = shaken_positions(&masses, &x0, (0.1, 3.0), t);
         for (i, xi) in x.iter().enumerate() {
             let key = row.cells(i, FreeMass::X);
-            assert!((solution.q(key)[k] - xi).abs() < 1e-9, "cells[{i}] at t = {t}");
+            assert!((solution.q(key)[k] - xi).abs() < 5e-9, "cells[{i}] at t = {t}");
         }
     }
 }
@@ -653,10 +658,13 @@ fn a_consistent_state_depends_on_the_start_time() {
     assert!(matches!(error, Ok(moved) if moved > 0.1), "{error:?}");
     let mut radau = Radau::new(&bead, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid");
     let solution = radau.solve(t0, &start, 2.0, &Sampling::Times(vec![1.0, 2.0])).expect("integrates");
-    for (k, &t) in [1.0, 2.0].iter().enumerate() {
+    // t = 2 ends the last step; t = 1 falls inside one and is read from its collocation
+    // polynomial, whose error is not held to the tolerance: from 8e-11 to 1.5e-9 relative as
+    // the first step ranges from 1e-6 to 1e-2 and moves the steps around t = 1.
+    for (k, t, bound) in [(0, 1.0, 5e-9), (1, 2.0, 1e-10)] {
         let (x, y) = (solution.q(BeadOnRod::X)[k], solution.q(BeadOnRod::Y)[k]);
         let r = r0 * (w * (t - t0)).cosh();
-        assert!((x.hypot(y) - r).abs() < 1e-9 * r, "r({t}) = {} against {r}", x.hypot(y));
+        assert!((x.hypot(y) - r).abs() < bound * r, "r({t}) = {} against {r}", x.hypot(y));
         assert!((y.atan2(x) - w * t).abs() < 1e-9, "on the rod at t = {t}");
     }
 }

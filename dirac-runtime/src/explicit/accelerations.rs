@@ -324,6 +324,51 @@ where
         }
     }
 
+    /// A first step size for an integration from `(t, q, v)` with accelerations `a0`, as
+    /// DOPRI5's `HINIT` chooses it on the motion's ODE `q̇ = v`, `v̇ = a(t, q, v)`: the size of
+    /// the state and of its derivative (an explicit Euler step's error of about 1% of the
+    /// tolerance), and the derivative's change over such a step, which bounds the step by
+    /// `(0.01 / |y''|)^exponent`, `exponent` one over the order of the error the step size
+    /// controls; at most `max`. `scale(i, y)` weighs component `i` of `(q, v)` (`v` from `nq`)
+    /// of value `y`. The Euler step's positions, velocities, accelerations and multipliers go to
+    /// `scratch`; one evaluation, at that step's end.
+    pub fn initial_step(
+        &mut self,
+        model: &M,
+        (t, q, v, a0): (f64, &VecQ<M>, &VecQ<M>, &VecQ<M>),
+        scale: impl Fn(usize, f64) -> f64,
+        (exponent, max): (f64, f64),
+        scratch: (&mut VecQ<M>, &mut VecQ<M>, &mut VecQ<M>, &mut VecC<M>),
+    ) -> f64 {
+        let n = self.sizes.nq;
+        let (q1, v1, a1, lambda) = scratch;
+        let (mut dy, mut df) = (0.0, 0.0);
+        for i in 0..n {
+            let (sq, sv) = (scale(i, q[i]), scale(n + i, v[i]));
+            dy += (q[i] / sq).powi(2) + (v[i] / sv).powi(2);
+            df += (v[i] / sq).powi(2) + (a0[i] / sv).powi(2);
+        }
+        let mut h = if dy <= 1e-10 || df <= 1e-10 { 1e-6 } else { 0.01 * (dy / df).sqrt() };
+        h = h.min(max);
+        // An explicit Euler step of that size, and the derivative there.
+        q1.copy_from(q);
+        q1.axpy(h, v, 1.0);
+        v1.copy_from(v);
+        v1.axpy(h, a0, 1.0);
+        if !self.evaluate(model, t + h, (q1, v1), a1, lambda) {
+            return h;
+        }
+        let mut d2 = 0.0;
+        for i in 0..n {
+            d2 += ((v1[i] - v[i]) / scale(i, q[i])).powi(2) + ((a1[i] - a0[i]) / scale(n + i, v[i])).powi(2);
+        }
+        let d2 = d2.sqrt() / h;
+        let d12 = d2.max(df.sqrt());
+        let h1 =
+            if d12 <= 1e-15 || !d12.is_finite() { (h * 1e-3).max(1e-6) } else { (0.01 / d12).powf(exponent) };
+        (100.0 * h).min(h1).min(max)
+    }
+
     /// Puts `(q, v)` at time `t` onto the constraints with the factorisation of the last
     /// evaluation: positions onto `φ(q, t) = 0` by simplified
     /// Newton, corrections `Δq` with `L_vv Δq ∈ range Aᵀ` and `A Δq = (−φ, 0)` (moving along

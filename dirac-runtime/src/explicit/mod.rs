@@ -36,7 +36,7 @@
 //! [`SimError::TooManySteps`]. Use [`Radau`](crate::Radau) there; the facade's guide has a
 //! table of which integrator suits which model. A step allocates nothing.
 
-mod accelerations;
+pub(crate) mod accelerations;
 mod options;
 mod tableau;
 
@@ -245,36 +245,15 @@ where
             return h.min(max);
         }
         let (rtol, atol) = (self.options.rtol, self.options.atol);
-        let s = &self.state;
-        let n = self.sizes.nq;
-        let scale = |y: f64| atol + rtol * y.abs();
-        let (mut dy, mut df) = (0.0, 0.0);
-        for i in 0..n {
-            dy += (s.q[i] / scale(s.q[i])).powi(2) + (s.v[i] / scale(s.v[i])).powi(2);
-            df += (s.v[i] / scale(s.q[i])).powi(2) + (self.start_acceleration[i] / scale(s.v[i])).powi(2);
-        }
-        let mut h = if dy <= 1e-10 || df <= 1e-10 { 1e-6 } else { 0.01 * (dy / df).sqrt() };
-        h = h.min(max);
-        // An explicit Euler step of that size, and the derivative there.
-        self.q_stage.copy_from(&s.q);
-        self.q_stage.axpy(h, &s.v, 1.0);
-        self.kq[1].copy_from(&s.v);
-        self.kq[1].axpy(h, &self.start_acceleration, 1.0);
-        let model = self.model.get();
         self.stats.evaluations += 1;
-        let stage = (&self.q_stage, &self.kq[1]);
-        if !self.accelerations.evaluate(model, self.t + h, stage, &mut self.kv[1], &mut self.lambda_stage) {
-            return h;
-        }
-        let mut d2 = 0.0;
-        for i in 0..n {
-            d2 += ((self.kq[1][i] - s.v[i]) / scale(s.q[i])).powi(2)
-                + ((self.kv[1][i] - self.start_acceleration[i]) / scale(s.v[i])).powi(2);
-        }
-        let d2 = d2.sqrt() / h;
-        let d12 = d2.max(df.sqrt());
-        let h1 = if d12 <= 1e-15 || !d12.is_finite() { (h * 1e-3).max(1e-6) } else { (0.01 / d12).powf(0.2) };
-        (100.0 * h).min(h1).min(max)
+        let s = &self.state;
+        self.accelerations.initial_step(
+            self.model.get(),
+            (self.t, &s.q, &s.v, &self.start_acceleration),
+            |_, y| atol + rtol * y.abs(),
+            (0.2, max),
+            (&mut self.q_stage, &mut self.kq[1], &mut self.kv[1], &mut self.lambda_stage),
+        )
     }
 
     /// The stages of a step of size `h` from the state reached, the fifth-order solution in

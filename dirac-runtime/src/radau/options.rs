@@ -16,7 +16,10 @@ pub struct RadauOptions {
     pub rtol: f64,
     /// Absolute tolerance (default `1e-8`).
     pub atol: f64,
-    /// The first step size; by default `1e-6` of the time span.
+    /// The first step size. By default it is chosen from the start's positions, velocities
+    /// and accelerations, as DOPRI5's `HINIT` chooses it, for the tolerances and the order of
+    /// Radau's error estimate; `1e-6` of the time span where the start's accelerations are not
+    /// determined.
     pub initial_step: Option<f64>,
     /// The largest step size (default: unbounded).
     pub max_step: f64,
@@ -147,6 +150,14 @@ where
             *slot = a * factor;
         }
         Ok(())
+    }
+
+    /// The error weight of a position (`i < nq`) or velocity (`nq + i`) of value `y`, for the
+    /// first step's choice.
+    pub fn motion_scale(&self, i: usize, y: f64) -> f64 {
+        let l = Layout::new(self.sizes.typed::<M>());
+        let slot = if i < self.sizes.nq { l.q + i } else { l.v + i - self.sizes.nq };
+        self.atol[slot] + self.rtol * y.abs()
     }
 
     /// The error weights at state `y` for a step `h`: `atol + rtol |y|`, divided by `h` for
