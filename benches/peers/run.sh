@@ -23,14 +23,25 @@ gcc -O3 -o "$peers/ida_driver" benches/peers/ida_driver.c -I"$peers/sundials/usr
     -lsundials_sunmatrixdense -lm
 cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol"
 cargo bench --bench work_precision -- reference > "$peers/reference.txt"
-# shellcheck disable=SC2046
-"$peers/ida_driver" $(cut -d' ' -f1-3 "$peers/reference.txt") > "$peers/ida.csv"
-for method in bdf esdirk34 tsit45; do
+# Every solver runs once per round, the rounds one after the other (A B C … A B C …), and each
+# row's time is the median over the rounds: on a shared machine the load drifts over minutes,
+# and solvers timed at different moments would carry that drift into their ratios.
+rounds="${PEER_ROUNDS:-5}"
+mkdir -p "$peers/rounds"
+for round in $(seq "$rounds"); do
     # shellcheck disable=SC2046
-    "$peers/diffsol/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") > "$peers/diffsol_$method.csv"
+    "$peers/ida_driver" $(cut -d' ' -f1-3 "$peers/reference.txt") > "$peers/rounds/ida.$round.csv"
+    for method in bdf esdirk34 tsit45; do
+        # shellcheck disable=SC2046
+        "$peers/diffsol/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") \
+            > "$peers/rounds/diffsol_$method.$round.csv"
+    done
+    cargo bench -q --bench work_precision -- radau > "$peers/rounds/radau.$round.csv" 2>/dev/null
+    cargo bench -q --bench work_precision -- explicit > "$peers/rounds/explicit.$round.csv" 2>/dev/null
 done
-cargo bench --bench work_precision -- radau > "$peers/radau.csv"
-cargo bench --bench work_precision -- explicit > "$peers/explicit.csv"
+for name in ida diffsol_bdf diffsol_esdirk34 diffsol_tsit45 radau explicit; do
+    python3 benches/peers/median.py "$peers"/rounds/"$name".*.csv > "$peers/$name.csv"
+done
 echo "dirac Radau:"; cat "$peers/radau.csv"
 echo "dirac Explicit:"; cat "$peers/explicit.csv"
 echo "SUNDIALS IDA:"; cat "$peers/ida.csv"
