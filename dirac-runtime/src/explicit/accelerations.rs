@@ -222,6 +222,22 @@ where
         } else if !self.inverse_ready && self.schur.is_none() {
             self.invert();
         }
+        if self.schur.is_none()
+            && self.inverse_ready
+            && let Some(inverse) = &self.inverse
+        {
+            // The kept inverse's product, written straight into the results.
+            let k = <M::Nk as nalgebra::Dim>::try_to_usize().unwrap_or(n + m);
+            let (inverse, x) = (&inverse.as_slice()[..k * k], &self.x.as_slice()[..k]);
+            for (i, out) in acceleration.iter_mut().chain(lambda.iter_mut()).enumerate().take(k) {
+                let mut sum = 0.0;
+                for (j, xj) in x.iter().enumerate() {
+                    sum += inverse[j * k + i] * xj;
+                }
+                *out = sum;
+            }
+            return true;
+        }
         self.solve();
         let x = self.x.as_slice();
         acceleration.as_mut_slice().copy_from_slice(&x[..n]);
