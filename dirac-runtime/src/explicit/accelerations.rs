@@ -44,6 +44,20 @@ where
     bottom: VecC<M>,
 }
 
+/// Writes row `i` of `inverse · x` to the `i`-th slot `out` yields, for the `k × k` inverse
+/// stored by columns (`k = x.len()`). Each sum runs over `j` in order: bit for bit what the
+/// column-by-column accumulation gives.
+fn inverse_product<'a>(inverse: &[f64], x: &[f64], out: impl Iterator<Item = &'a mut f64>) {
+    let k = x.len();
+    for (i, out) in out.enumerate().take(k) {
+        let mut sum = 0.0;
+        for (j, xj) in x.iter().enumerate() {
+            sum += inverse[j * k + i] * xj;
+        }
+        *out = sum;
+    }
+}
+
 /// What a projection did.
 #[derive(Clone, Copy)]
 pub(crate) struct Projection {
@@ -226,16 +240,10 @@ where
             && self.inverse_ready
             && let Some(inverse) = &self.inverse
         {
-            // The kept inverse's product, written straight into the results.
+            // Written straight into the results, without a round trip through `x`.
             let k = <M::Nk as nalgebra::Dim>::try_to_usize().unwrap_or(n + m);
-            let (inverse, x) = (&inverse.as_slice()[..k * k], &self.x.as_slice()[..k]);
-            for (i, out) in acceleration.iter_mut().chain(lambda.iter_mut()).enumerate().take(k) {
-                let mut sum = 0.0;
-                for (j, xj) in x.iter().enumerate() {
-                    sum += inverse[j * k + i] * xj;
-                }
-                *out = sum;
-            }
+            let out = acceleration.iter_mut().chain(lambda.iter_mut());
+            inverse_product(&inverse.as_slice()[..k * k], &self.x.as_slice()[..k], out);
             return true;
         }
         self.solve();
@@ -297,12 +305,7 @@ where
                     let k = <M::Nk as nalgebra::Dim>::try_to_usize().unwrap_or(self.sizes.nq + self.sizes.nc);
                     let (inverse, x) = (&inverse.as_slice()[..k * k], &mut self.x.as_mut_slice()[..k]);
                     let product = &mut self.product.as_mut_slice()[..k];
-                    product.fill(0.0);
-                    for (column, &xj) in inverse.chunks_exact(k).zip(x.iter()) {
-                        for (p, a) in product.iter_mut().zip(column) {
-                            *p += a * xj;
-                        }
-                    }
+                    inverse_product(inverse, x, product.iter_mut());
                     x.copy_from_slice(product);
                 }
                 _ => self.saddle.solve(self.x.as_mut_slice()),
