@@ -330,7 +330,6 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     let (n, m) = (sizes.nq, sizes.nc);
     let Layout { q, v, p, lambda, .. } = Layout::new(sizes);
     let (sigma, inv_sigma, coupling) = (shifted.sigma, shifted.inv_sigma, &shifted.coupling);
-    let r = |v: f64| T::from_real(v);
     let nk = M::Nk::from_usize(sizes.nk());
     let mut b = OVector::<T, M::Nk>::zeros_generic(nk, nalgebra::Const::<1>);
     for i in 0..n {
@@ -345,7 +344,7 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     for k in 0..m {
         let mut bk = -sigma * x[lambda + k];
         for j in 0..n {
-            bk -= r(jac.dav_dq[(k, j)]) * x[q + j];
+            bk -= x[q + j].scale(jac.dav_dq[(k, j)]);
         }
         b[n + k] = bk;
     }
@@ -361,7 +360,7 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     for j in 0..n {
         let (xqj, bj) = (xq[j], b[j]);
         for i in 0..n {
-            x[p + i] += r(jac.l_vq[(i, j)]) * xqj + r(jac.l_vv[(i, j)]) * bj;
+            x[p + i] += xqj.scale(jac.l_vq[(i, j)]) + bj.scale(jac.l_vv[(i, j)]);
         }
     }
     for i in 0..n {

@@ -130,7 +130,9 @@ where
             step.solver.solve(r1);
             step.solver.solve_complex(r2, r3);
             step.stats.newton_iterations += 1;
-            let dyno = self.increment_norm(step.weights, step.error_norm);
+            // The iterates advance before the tests: an attempt that ends in a shrink starts
+            // the next one from fresh starting values.
+            let dyno = self.advance(step.weights, step.error_norm);
             if newt >= 1 {
                 let thq = dyno / dyno_old;
                 theta = if newt == 1 { thq } else { (thq * thq_old).sqrt() };
@@ -151,7 +153,6 @@ where
                 }
             }
             dyno_old = dyno.max(f64::EPSILON);
-            self.advance();
             if faccon * dyno <= fnewt {
                 self.faccon = faccon;
                 self.theta = theta;
@@ -161,29 +162,35 @@ where
         Outcome::Shrink(0.5, "Newton iteration did not converge")
     }
 
-    /// The size of the Newton increments `r`: the root mean square of the three stages' norms.
-    /// The root-mean-square norm multiplies by the reciprocal weights, formed once an attempt:
-    /// three divisions a component in every iteration were a tenth of a small model's
-    /// iteration.
+    /// `w += r` and `z = T w`, in one pass over the components, and the size of the Newton
+    /// increments `r`: the root mean square of the three stages' norms. The root-mean-square
+    /// norm multiplies by the reciprocal weights, formed once an attempt: three divisions a
+    /// component in every iteration were a tenth of a small model's iteration.
     // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
     #[allow(clippy::needless_range_loop)]
-    fn increment_norm(&self, weights: &VecY<M>, kind: ErrorNorm) -> f64 {
-        match kind {
-            ErrorNorm::Rms => {
-                let mut sum = 0.0;
-                for rk in &self.r {
-                    for i in 0..rk.len() {
-                        let x = rk[i] * self.inverse_weights[i];
-                        sum += x * x;
-                    }
-                }
-                (sum / (3 * weights.len()) as f64).sqrt()
-            }
+    fn advance(&mut self, weights: &VecY<M>, kind: ErrorNorm) -> f64 {
+        let dyno = match kind {
+            ErrorNorm::Rms => None,
             ErrorNorm::Max => {
                 let sum: f64 = self.r.iter().map(|rk| norm::<M>(rk, weights, kind).powi(2)).sum();
-                (sum / 3.0).sqrt()
+                Some((sum / 3.0).sqrt())
+            }
+        };
+        let [w1, w2, w3] = &mut self.w;
+        let [r1, r2, r3] = &self.r;
+        let mut sum = 0.0;
+        for i in 0..w1.len() {
+            let (d1, d2, d3) = (r1[i], r2[i], r3[i]);
+            let iw = self.inverse_weights[i];
+            let (e1, e2, e3) = (d1 * iw, d2 * iw, d3 * iw);
+            sum += e1 * e1 + e2 * e2 + e3 * e3;
+            let (x1, x2, x3) = (w1[i] + d1, w2[i] + d2, w3[i] + d3);
+            (w1[i], w2[i], w3[i]) = (x1, x2, x3);
+            for (zk, tk) in self.z.iter_mut().zip(&T) {
+                zk[i] = tk[0] * x1 + tk[1] * x2 + tk[2] * x3;
             }
         }
+        dyno.unwrap_or_else(|| (sum / (3 * weights.len()) as f64).sqrt())
     }
 
     /// The stage residuals `f(t + c_k h, y + z_k)`; the reason to shrink if one is not finite.
@@ -220,19 +227,6 @@ where
         );
     }
 
-    /// `w += r` and `z = T w`, in one pass over the components.
-    fn advance(&mut self) {
-        let [w1, w2, w3] = &mut self.w;
-        let [r1, r2, r3] = &self.r;
-        for i in 0..w1.len() {
-            let (x1, x2, x3) = (w1[i] + r1[i], w2[i] + r2[i], w3[i] + r3[i]);
-            (w1[i], w2[i], w3[i]) = (x1, x2, x3);
-            for (zk, tk) in self.z.iter_mut().zip(&T) {
-                zk[i] = tk[0] * x1 + tk[1] * x2 + tk[2] * x3;
-            }
-        }
-    }
-
     fn transform_to_w(&mut self) {
         transform(&TI, &self.z, &mut self.w);
     }
@@ -254,16 +248,22 @@ pub(crate) fn transformed_residuals<M: LagrangeDirac>(
     DefaultAllocator: Storage<M>,
 {
     let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
-    for (k, rk) in r.iter_mut().enumerate() {
-        for i in 0..rk.len() {
-            rk[i] = TI[k][0] * f[0][i] + TI[k][1] * f[1][i] + TI[k][2] * f[2][i];
-        }
+    let [r1, r2, r3] = r;
+    for i in 0..r1.len() {
+        let (f1, f2, f3) = (f[0][i], f[1][i], f[2][i]);
+        r1[i] = TI[0][0] * f1 + TI[0][1] * f2 + TI[0][2] * f3;
+        r2[i] = TI[1][0] * f1 + TI[1][1] * f2 + TI[1][2] * f3;
+        r3[i] = TI[2][0] * f1 + TI[2][1] * f2 + TI[2][2] * f3;
     }
-    for i in (l.q..l.v).chain(l.p..l.lambda) {
-        let (w1, w2, w3) = (w[0][i], w[1][i], w[2][i]);
-        r[0][i] -= gamma * w1;
-        r[1][i] -= alpha * w2 - beta * w3;
-        r[2][i] -= beta * w2 + alpha * w3;
+    // The differential rows, positions and momenta, as two plain ranges: a chained iterator
+    // costs more than the arithmetic of a small model.
+    for rows in [l.q..l.v, l.p..l.lambda] {
+        for i in rows {
+            let (w1, w2, w3) = (w[0][i], w[1][i], w[2][i]);
+            r1[i] -= gamma * w1;
+            r2[i] -= alpha * w2 - beta * w3;
+            r3[i] -= beta * w2 + alpha * w3;
+        }
     }
 }
 
