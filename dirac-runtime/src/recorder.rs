@@ -79,7 +79,7 @@ where
                 ),
             });
         }
-        let mut columns = Vec::new();
+        let mut columns = Vec::with_capacity(names.len());
         for _ in 0..names.len() {
             let mut column = Vec::new();
             column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
