@@ -257,7 +257,7 @@ where
         for j in 0..n {
             for i in 0..n {
                 self.coupling[(i, j)] =
-                    T::from_real(jac.l_vq[(i, j)]) - T::from_real(jac.dpdot_dq[(i, j)]) * self.inv_sigma;
+                    T::from_real(jac.l_vq[(i, j)]) - self.inv_sigma.scale(jac.dpdot_dq[(i, j)]);
             }
         }
         condensed_matrix(jac, sigma, &self.coupling, self.lu.matrix_mut());
@@ -303,11 +303,11 @@ fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     let r = |x: f64| T::from_real(x);
     for j in 0..n {
         for i in 0..n {
-            s[(i, j)] = sigma * r(jac.l_vv[(i, j)]) - r(jac.dpdot_dv[(i, j)]) + coupling[(i, j)];
+            s[(i, j)] = sigma.scale(jac.l_vv[(i, j)]) - r(jac.dpdot_dv[(i, j)]) + coupling[(i, j)];
         }
         for k in 0..m {
-            s[(n + k, j)] = sigma * r(jac.a[(k, j)]) + r(jac.dav_dq[(k, j)]);
-            s[(j, n + k)] = -sigma * r(jac.a[(k, j)]);
+            s[(n + k, j)] = sigma.scale(jac.a[(k, j)]) + r(jac.dav_dq[(k, j)]);
+            s[(j, n + k)] = -sigma.scale(jac.a[(k, j)]);
         }
     }
     for k in 0..m {

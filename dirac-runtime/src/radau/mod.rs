@@ -495,7 +495,7 @@ where
     /// The error when Newton's iteration fails at the smallest step, for reason `why`.
     fn newton_failure(&self, why: &str) -> SimError {
         if why.starts_with("non-finite") {
-            let i = self.stages.non_finite_slot();
+            let i = self.stages.non_finite_slot().unwrap_or(0);
             let component = format!("the equation of {}", describe_slot(self.model.get(), i));
             return SimError::NonFinite { t: self.t, component };
         }

@@ -122,17 +122,20 @@ where
         let mut theta = self.theta.abs();
         let (mut dyno_old, mut thq_old) = (1.0, 1.0);
         for newt in 0..max_iterations {
-            if let Some(why) = self.residuals(&mut step) {
-                return Outcome::Shrink(0.5, why);
-            }
+            self.residuals(&mut step);
             self.transformed_residuals(eig, h);
             let [r1, r2, r3] = &mut self.r;
             step.solver.solve(r1);
             step.solver.solve_complex(r2, r3);
-            step.stats.newton_iterations += 1;
             // The iterates advance before the tests: an attempt that ends in a shrink starts
             // the next one from fresh starting values.
             let dyno = self.advance(step.weights, step.error_norm);
+            // A non-finite residual makes the increments, and so their norm, non-finite: the
+            // residuals are searched only then, not on every iteration.
+            if !dyno.is_finite() && self.non_finite_slot().is_some() {
+                return Outcome::Shrink(0.5, "non-finite residual");
+            }
+            step.stats.newton_iterations += 1;
             if newt >= 1 {
                 let thq = dyno / dyno_old;
                 theta = if newt == 1 { thq } else { (thq * thq_old).sqrt() };
@@ -193,26 +196,25 @@ where
         dyno.unwrap_or_else(|| (sum / (3 * weights.len()) as f64).sqrt())
     }
 
-    /// The stage residuals `f(t + c_k h, y + z_k)`; the reason to shrink if one is not finite.
-    fn residuals<S>(&mut self, step: &mut Step<'_, '_, M, S>) -> Option<&'static str>
+    /// The stage residuals `f(t + c_k h, y + z_k)`.
+    // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
+    #[allow(clippy::needless_range_loop)]
+    fn residuals<S>(&mut self, step: &mut Step<'_, '_, M, S>)
     where
         DefaultAllocator: Storage<M>,
     {
         for ((zk, fk), ck) in self.z.iter().zip(self.f.iter_mut()).zip([C1, C2, C3]) {
-            self.tmp.copy_from(step.y);
-            self.tmp += zk;
+            for i in 0..zk.len() {
+                self.tmp[i] = step.y[i] + zk[i];
+            }
             step.residual.eval(step.model, step.t + ck * step.h, &self.tmp, fk);
             step.stats.residual_evaluations += 1;
-            if !fk.iter().all(|x| x.is_finite()) {
-                return Some("non-finite residual");
-            }
         }
-        None
     }
 
-    /// The slot of the first non-finite value among the stage residuals.
-    pub fn non_finite_slot(&self) -> usize {
-        self.f.iter().find_map(|f| f.iter().position(|v| !v.is_finite())).unwrap_or(0)
+    /// The slot of the first non-finite value among the stage residuals, if there is one.
+    pub fn non_finite_slot(&self) -> Option<usize> {
+        self.f.iter().find_map(|f| f.iter().position(|v| !v.is_finite()))
     }
 
     /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w`, with `M` the identity on the differential rows.
