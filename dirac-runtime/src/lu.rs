@@ -50,7 +50,7 @@ where
         let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
         // Over the storage slice: nalgebra's matrix iterator costs more than the factorisation
         // of a small matrix.
-        let scale = self.lu.as_slice().iter().fold(0.0f64, |m, x| m.max(x.norm1()));
+        let scale = crate::algebra::amax_by(self.lu.as_slice(), |x| x.norm1());
         let tiny = f64::EPSILON * 1e-3 * scale.max(f64::MIN_POSITIVE);
         for k in 0..n {
             let (mut p, mut best) = (k, self.lu[(k, k)].norm1());
@@ -65,7 +65,13 @@ where
             }
             self.pivots[k] = p;
             if p != k {
-                self.lu.swap_rows(k, p);
+                // Element by element: nalgebra's `swap_rows` costs more than a small matrix's
+                // elimination.
+                for j in 0..n {
+                    let x = self.lu[(k, j)];
+                    self.lu[(k, j)] = self.lu[(p, j)];
+                    self.lu[(p, j)] = x;
+                }
             }
             let inv_pivot = T::one() / self.lu[(k, k)];
             self.inv_diagonal[k] = inv_pivot;

@@ -56,5 +56,14 @@ where
 /// passed over, as `f64::max` passes them over, by a plain comparison that costs less).
 #[inline]
 pub fn amax(values: &[f64]) -> f64 {
-    values.iter().fold(0.0f64, |m, x| if x.abs() > m { x.abs() } else { m })
+    amax_by(values, |x| x.abs())
+}
+
+/// The largest of `size(x)` over `values` (0 for none; NaNs passed over, as by `amax`).
+#[inline]
+pub(crate) fn amax_by<T: Copy>(values: &[T], size: impl Fn(T) -> f64) -> f64 {
+    values.iter().fold(0.0f64, |m, &x| {
+        let s = size(x);
+        if s > m { s } else { m }
+    })
 }
