@@ -3,7 +3,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use super::tableau::{C1, C2};
+use super::tableau::{C1, C2, TI};
 use crate::dims::{Sizes, Storage, VecY};
 use crate::model::LagrangeDirac;
 use crate::state::State;
@@ -58,6 +58,21 @@ where
         let s = (t - t_end) / self.h;
         for (i, x) in out.components_mut().enumerate() {
             *x = y[i] + self.increment(i, s);
+        }
+    }
+
+    /// [`Dense::extrapolate`] and the starting values' transforms `w = (T⁻¹ ⊗ I) z`, in one
+    /// pass over the components.
+    // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
+    #[allow(clippy::needless_range_loop)]
+    pub fn extrapolate_transformed(&self, h: f64, z: &mut [VecY<M>; 3], w: &mut [VecY<M>; 3]) {
+        let s = [C1 * h / self.h, C2 * h / self.h, h / self.h];
+        for i in 0..z[0].len() {
+            let x = s.map(|s| self.increment(i, s));
+            for k in 0..3 {
+                z[k][i] = x[k];
+                w[k][i] = TI[k][0] * x[0] + TI[k][1] * x[1] + TI[k][2] * x[2];
+            }
         }
     }
 

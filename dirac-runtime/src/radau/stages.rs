@@ -100,8 +100,7 @@ where
                 }
             }
             Some(dense) => {
-                dense.extrapolate(h, &mut self.z);
-                self.transform_to_w();
+                dense.extrapolate_transformed(h, &mut self.z, &mut self.w);
             }
         }
     }
@@ -227,10 +226,6 @@ where
             &self.w,
             &mut self.r,
         );
-    }
-
-    fn transform_to_w(&mut self) {
-        transform(&TI, &self.z, &mut self.w);
     }
 }
 
