@@ -22,6 +22,8 @@ where
     names: Arc<[String]>,
     sampling: Sampling,
     next: usize,
+    /// A time before which a step's end needs nothing recorded (see [`Recorder::quiet_until`]).
+    quiet: f64,
     t0: f64,
     t_end: f64,
     /// The time of the last sample recorded.
@@ -97,11 +99,12 @@ where
         };
         let table = Table { layout, columns, scratch, non_finite_output: None };
         let buffer = State::with_sizes(sizes);
-        Ok(Recorder {
+        let mut recorder = Recorder {
             table,
             names,
             sampling: sampling.clone(),
             next: 0,
+            quiet: f64::NEG_INFINITY,
             t0,
             t_end,
             last: f64::NAN,
@@ -111,7 +114,24 @@ where
             event_names: Vec::new(),
             impacts: Vec::new(),
             contact_names: Vec::new(),
-        })
+        };
+        recorder.quiet = recorder.quiet_until();
+        Ok(recorder)
+    }
+
+    /// A time before which a step that ends there records nothing: before the next sample
+    /// time (with room for the grid's tolerance) and before the end time. Steps in between
+    /// samples then cost one comparison.
+    fn quiet_until(&self) -> f64 {
+        match &self.sampling {
+            Sampling::Steps => f64::NEG_INFINITY,
+            Sampling::Times(times) => times.get(self.next).copied().unwrap_or(f64::INFINITY),
+            Sampling::Every(dt) => {
+                // A sample is due at t when ts ≤ t + 1e-14 |t|; below this bound it is not.
+                let ts = self.t0 + self.next as f64 * dt;
+                (ts - 4e-14 * (ts.abs() + 1.0)).min(self.t_end)
+            }
+        }
     }
 
     /// Checks that `series` more series (sensitivities) at the same samples stay within what a
@@ -163,6 +183,7 @@ where
             self.table.push(model, t0, state);
             self.last = t0;
             self.next = 1;
+            self.quiet = self.quiet_until();
         }
     }
 
@@ -175,6 +196,9 @@ where
         state: &State<M>,
         interpolate: impl Fn(f64, &mut State<M>),
     ) {
+        if t < self.quiet {
+            return;
+        }
         loop {
             let ts = match &self.sampling {
                 Sampling::Steps => {
@@ -212,6 +236,7 @@ where
             self.table.push(model, ts, &self.buffer);
             self.last = ts;
             self.next += 1;
+            self.quiet = self.quiet_until();
         }
     }
 
