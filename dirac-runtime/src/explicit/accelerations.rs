@@ -79,7 +79,7 @@ where
     dav: MatCQ<M>,
     /// The constraint rows of the factored system, for a separable model whose factorisation
     /// is kept while they stay the same.
-    factored_a: Vec<f64>,
+    factored_a: MatCQ<M>,
     factored: bool,
     saddle: SaddleOf<M>,
     /// The inverse of a dense saddle-point matrix whose factorisation was kept for a second
@@ -112,16 +112,15 @@ where
     pub fn new(model: &M) -> Self {
         let (sizes, shape) = (model.sizes(), model.shape());
         let a = M::Algebra::zeros_cq(&shape);
-        let factored_a = M::Algebra::cq_values(&a).to_vec();
         let dense = M::Algebra::dense_cq(&a).is_some();
         Accelerations {
             sizes,
             lvv: M::Algebra::zeros_qq(&shape),
             lvq: M::Algebra::zeros_qq(&shape),
             a_projected: a.clone(),
+            factored_a: a.clone(),
             a,
             dav: M::Algebra::zeros_cq(&shape),
-            factored_a,
             factored: false,
             saddle: M::Algebra::saddle(&shape),
             inverse: dense.then(|| {
@@ -223,15 +222,17 @@ where
             }
             M::Algebra::cq_mul(&self.dav, -1.0, v.as_slice(), &mut x[n..]);
         }
-        let keep =
-            M::SEPARABLE && self.factored && M::Algebra::cq_values(&self.a) == self.factored_a.as_slice();
+        let keep = M::SEPARABLE
+            && self.factored
+            && M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a);
         if !keep {
             self.factored = self.factor(model, t, (q, v));
             if !self.factored {
                 return false;
             }
             if M::SEPARABLE {
-                self.factored_a.copy_from_slice(M::Algebra::cq_values(&self.a));
+                M::Algebra::cq_values_mut(&mut self.factored_a)
+                    .copy_from_slice(M::Algebra::cq_values(&self.a));
             }
         } else if !self.inverse_ready && self.schur.is_none() {
             self.invert();
