@@ -27,6 +27,8 @@ cargo bench --bench work_precision -- reference > "$peers/reference.txt"
 # row's time is the median over the rounds: on a shared machine the load drifts over minutes,
 # and solvers timed at different moments would carry that drift into their ratios.
 rounds="${PEER_ROUNDS:-5}"
+# A fresh directory: a longer earlier run's extra rounds must not enter this run's medians.
+rm -rf "$peers/rounds"
 mkdir -p "$peers/rounds"
 for round in $(seq "$rounds"); do
     # shellcheck disable=SC2046
