@@ -2,14 +2,20 @@
 steps`): one row per problem and tolerance, its seconds the median over the rounds. Errors and
 steps do not depend on the round (the solvers are deterministic); a round that disagrees on them
 is refused.
-Usage: median.py round1.csv round2.csv ... > merged.csv"""
+With --min, the fastest round instead: the time without interference from other work on the
+machine, which only ever adds time (the statistic `timeit` and BenchmarkTools.jl recommend
+for comparing code).
+Usage: median.py [--min] round1.csv round2.csv ... > merged.csv"""
 import csv
 import statistics
 import sys
 
+args = sys.argv[1:]
+fastest = "--min" in args
+paths = [a for a in args if a != "--min"]
 rows = {}
 order = []
-for path in sys.argv[1:]:
+for path in paths:
     with open(path) as f:
         for r in csv.DictReader(f):
             key = (r["problem"], r["tol"])
@@ -24,4 +30,5 @@ for path in sys.argv[1:]:
 print("problem,tol,error,seconds,steps")
 for key in order:
     error, steps, seconds = rows[key]
-    print(f"{key[0]},{key[1]},{error},{statistics.median(seconds):.6e},{steps}")
+    time = min(seconds) if fastest else statistics.median(seconds)
+    print(f"{key[0]},{key[1]},{error},{time:.6e},{steps}")
