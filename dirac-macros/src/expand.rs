@@ -182,6 +182,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let Generated { methods, sparse, counts } = generate(&sym, &blocks);
     let separable = separable(&mut sym, &blocks);
     let prescribed = blocks.b.iter().any(|b| !sym.graph.is_zero(*b));
+    let constant_constraints = !prescribed && crate::structure::constant_rows(&sym, &blocks);
     let (text, latex) = equations(&mut sym, &blocks, &ident.to_string());
     let size = proc_macro2::Literal::usize_unsuffixed;
     let (n, m, h) = (size(sym.n()), size(sym.m()), size(sym.h()));
@@ -219,6 +220,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                 #storage
                 const SEPARABLE: ::core::primitive::bool = #separable;
                 const PRESCRIBED: ::core::primitive::bool = #prescribed;
+                const CONSTANT_CONSTRAINTS: ::core::primitive::bool = #constant_constraints;
                 const STRUCTURE: #p::Structure = #p::Structure {
                     pattern: &[#(#pattern),*],
                     unknowns: &[#(#unknowns),*],

@@ -109,6 +109,14 @@ pub fn separable(model: &mut SymModel, b: &Blocks) -> bool {
         })
 }
 
+/// Whether every entry of the constraint rows `A` depends on the model's parameters alone.
+pub fn constant_rows(model: &SymModel, b: &Blocks) -> bool {
+    let (graph, symbols) = (&model.graph, &model.symbols);
+    b.a.iter()
+        .flatten()
+        .all(|&entry| graph.deps(entry).iter().all(|s| matches!(symbols.kind(s), Sym::Parameter(_))))
+}
+
 #[cfg(test)]
 mod tests {
     use super::unpaired;

@@ -122,6 +122,12 @@ where
     /// (decided from the model's structure when it compiles). Integrators skip the rates of
     /// constraints, and the work they do, for models without.
     const PRESCRIBED: bool;
+    /// Whether the constraint rows `A` depend on nothing but the model's parameters (not on
+    /// `q`, `t` or a coordinate of another subsystem) and no constraint prescribes a motion
+    /// (decided from the model's structure when it compiles; `false` unless known). Between
+    /// changes to the model, `A` is then constant and `∂(A v + b)/∂(q, t)` zero: integrators
+    /// keep what they derived from it.
+    const CONSTANT_CONSTRAINTS: bool = false;
     /// The sparsity pattern of the condensed Newton system and what to say about each unknown;
     /// interconnections combine their subsystems' to check themselves when they compile.
     const STRUCTURE: Structure;

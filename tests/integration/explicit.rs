@@ -350,3 +350,50 @@ fn absurd_input_is_refused_or_stays_finite_and_on_the_constraints() {
         }
     }
 }
+
+/// The macros' decision that a model's constraint rows are constant (they depend on its
+/// parameters alone, and nothing is prescribed), against each model's constraints read by hand:
+/// the chain's port (v2 − v̄2), the rack and pinion's `r θ̇ − ẋ` (r a parameter) and the L-C
+/// loop's `i_l − i_c` are; the pendulum's `2x ẋ + 2y ẏ`, the one-form whose coefficients hold
+/// `sin θ` and `cos x`, the shaken pair's prescribed `a ω cos(ω t)`, the rolling disk's
+/// `cos φ` and the belt's input are not.
+#[test]
+fn constant_constraint_rows_are_recognised_when_the_model_compiles() {
+    const {
+        assert!(
+            Chain::CONSTANT_CONSTRAINTS
+                && RackAndPinion::CONSTANT_CONSTRAINTS
+                && LcCircuit::CONSTANT_CONSTRAINTS
+        );
+        assert!(!Pendulum::CONSTANT_CONSTRAINTS && !CoupledByOneForm::CONSTANT_CONSTRAINTS);
+        assert!(!ShakenPair::CONSTANT_CONSTRAINTS && !RollingDisk::CONSTANT_CONSTRAINTS);
+        assert!(!DiskOnBelt::CONSTANT_CONSTRAINTS);
+    };
+}
+
+/// A model with constant constraint rows keeps its factorisation from step to step, but not
+/// across a change of the parameter in those rows: the rack and pinion solved twice by one
+/// integrator, with r = 0.3 and then r = 0.8, follows the geared model's exact
+/// θ(t) = θ0 cos(ω t), ω² = (kθ + k r²) / (J + m r²), each time (reference: the substitution
+/// x = r θ by hand, as in `GearedByHand`).
+#[test]
+fn a_parameter_change_in_constant_constraint_rows_is_not_missed() {
+    let (j, k_theta, m, k, theta0) = (0.2, 3.0, 1.5, 2.0, 0.4);
+    let mut rack = RackAndPinion { wheel: Wheel { j, k_theta }, cart: Cart { m, k }, r: 0.3 };
+    let mut explicit = Explicit::new(&mut rack, ExplicitOptions::tolerances(1e-10, 1e-12)).expect("valid");
+    for r in [0.3, 0.8] {
+        explicit.model_mut().expect("an exclusive model").r = r;
+        let (th, cx) = (RackAndPinion::wheel(Wheel::THETA), RackAndPinion::cart(Cart::X));
+        let mut start = State::<RackAndPinion>::zeros();
+        start.set_q(th, theta0).set_q(cx, r * theta0);
+        let start = consistent_state(explicit.model(), 0.0, &start.q, &start.v, Consistency::default())
+            .expect("at rest, any gear ratio is met");
+        let sol = explicit.solve(0.0, &start, 3.0, &Sampling::Times(vec![3.0])).expect("integrates");
+        let end = sol.state(0).expect("a sample");
+        let omega = ((k_theta + k * r * r) / (j + m * r * r)).sqrt();
+        let exact = theta0 * (omega * 3.0).cos();
+        assert!((end.q(th) - exact).abs() < 1e-7, "r = {r}: θ(3) = {}, exact {exact}", end.q(th));
+        let gear = r * end.v(th) - end.v(cx);
+        assert!(gear.abs() < 1e-12, "r = {r}: the gear's rate r θ̇ − ẋ = {gear:e}");
+    }
+}

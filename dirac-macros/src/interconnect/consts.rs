@@ -14,6 +14,7 @@ use super::model::CompositeModel;
 use crate::codegen::signatures::rt;
 use crate::ctxt::Ctxt;
 use crate::sym::Id;
+use crate::symbols::Sym;
 
 fn lit(i: usize) -> Literal {
     Literal::usize_unsuffixed(i)
@@ -186,10 +187,12 @@ impl CompositeModel {
     /// is affine in the velocities and that each one-form has a velocity in it: a table over
     /// every assignment of roles to a term's members.
     ///
-    /// Also `__PRESCRIBED_OWN`: whether some row has a part without velocities, `b ≠ 0`.
+    /// Also `__PRESCRIBED_OWN`: whether some row has a part without velocities, `b ≠ 0`; and
+    /// `__VARYING_OWN`: whether some row's velocity coefficients depend on coordinates or time.
     pub fn linearity_checks(&mut self, cx: &Ctxt) -> TokenStream {
         let mut out = TokenStream::new();
         let mut prescribed = Vec::new();
+        let mut varying = Vec::new();
         for j in 0..self.rows.len() {
             let terms = self.rows[j].terms.clone();
             let name = self.rows[j].name.clone();
@@ -231,6 +234,16 @@ impl CompositeModel {
                     const CODES: [::core::primitive::u8; #count] = [#(#codes),*];
                     CODES[0 #(| #bits)*]
                 }};
+                let moving: Vec<bool> = (0..1usize << members.len())
+                    .map(|mask| self.varying_coefficient(term, &members, mask))
+                    .collect();
+                if moving.iter().any(|&m| m) {
+                    let count = lit(moving.len());
+                    varying.push(quote! {{
+                        const MOVING: [::core::primitive::bool; #count] = [#(#moving),*];
+                        MOVING[0 #(| #bits)*]
+                    }});
+                }
                 has_velocity.push(quote! { (#code != 1) });
                 if codes.iter().any(|c| matches!(c, 1 | 2)) {
                     prescribed.push(quote! { ::core::matches!(#code, 1 | 2) });
@@ -263,8 +276,22 @@ impl CompositeModel {
         }
         out.extend(quote! {
             const __PRESCRIBED_OWN: ::core::primitive::bool = false #(|| #prescribed)*;
+            const __VARYING_OWN: ::core::primitive::bool = false #(|| #varying)*;
         });
         out
+    }
+
+    /// Whether, when the members in `mask` are velocities, the term's coefficient of one of
+    /// them depends on anything but constants and parameters: another member (a coordinate)
+    /// or time.
+    fn varying_coefficient(&mut self, term: Id, members: &[usize], mask: usize) -> bool {
+        members.iter().enumerate().filter(|(b, _)| mask >> b & 1 == 1).any(|(_, &k)| {
+            let coefficient = self.graph.diff(term, self.symbols.member_id(k));
+            self.graph
+                .deps(coefficient)
+                .iter()
+                .any(|s| !matches!(self.symbols.kind(s), Sym::Parameter(_) | Sym::Constant(_)))
+        })
     }
 
     /// 0: linear in the velocities when the members in `mask` are velocities; 1: no velocity

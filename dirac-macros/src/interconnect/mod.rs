@@ -242,12 +242,18 @@ fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
         let ty = &s.ty;
         quote! { <#ty as #p::LagrangeDirac>::PRESCRIBED }
     });
+    let constant = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote! { <#ty as #p::LagrangeDirac>::CONSTANT_CONSTRAINTS }
+    });
     let sizes = quote! { #p::Sizes { nq: __NQ, nc: __NC, nh: __NH } };
     let storage = crate::codegen::signatures::fixed_storage(&sizes);
     quote! {
         #storage
         const SEPARABLE: ::core::primitive::bool = true #(&& #separable)*;
         const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN #(|| #prescribed)*;
+        const CONSTANT_CONSTRAINTS: ::core::primitive::bool =
+            !__PRESCRIBED_OWN && !__VARYING_OWN #(&& #constant)*;
         const STRUCTURE: #p::Structure = #p::Structure { pattern: &__PATTERN, unknowns: &__UNKNOWNS };
         const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
             residual: #residual,

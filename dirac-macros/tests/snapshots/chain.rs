@@ -151,6 +151,7 @@ const _: () = {
         ] as &[::core::primitive::bool; 2],
     );
     const __PRESCRIBED_OWN: ::core::primitive::bool = false;
+    const __VARYING_OWN: ::core::primitive::bool = false;
     const __K: ::core::primitive::usize = __NQ + __NC;
     const __STRUCTURE: (
         [::core::primitive::bool; __K * __K],
@@ -335,6 +336,10 @@ const _: () = {
         const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN
             || <Primitive1 as ::dirac::__private::LagrangeDirac>::PRESCRIBED
             || <Primitive2 as ::dirac::__private::LagrangeDirac>::PRESCRIBED;
+        const CONSTANT_CONSTRAINTS: ::core::primitive::bool = !__PRESCRIBED_OWN
+            && !__VARYING_OWN
+            && <Primitive1 as ::dirac::__private::LagrangeDirac>::CONSTANT_CONSTRAINTS
+            && <Primitive2 as ::dirac::__private::LagrangeDirac>::CONSTANT_CONSTRAINTS;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &__PATTERN,
             unknowns: &__UNKNOWNS,

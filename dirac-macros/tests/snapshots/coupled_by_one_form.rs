@@ -234,6 +234,17 @@ const _: () = {
             ((__R2.velocity as ::core::primitive::usize) << 0usize) | ((__R3.velocity as
             ::core::primitive::usize) << 1usize)] }, 1 | 2
         );
+    const __VARYING_OWN: ::core::primitive::bool = false
+        || {
+            const MOVING: [::core::primitive::bool; 4] = [false, true, true, true];
+            MOVING[0 | ((__R0.velocity as ::core::primitive::usize) << 0usize)
+                | ((__R1.velocity as ::core::primitive::usize) << 1usize)]
+        }
+        || {
+            const MOVING: [::core::primitive::bool; 4] = [false, true, true, true];
+            MOVING[0 | ((__R2.velocity as ::core::primitive::usize) << 0usize)
+                | ((__R3.velocity as ::core::primitive::usize) << 1usize)]
+        };
     const __K: ::core::primitive::usize = __NQ + __NC;
     const __STRUCTURE: (
         [::core::primitive::bool; __K * __K],
@@ -444,6 +455,10 @@ const _: () = {
         const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN
             || <Wheel as ::dirac::__private::LagrangeDirac>::PRESCRIBED
             || <Cart as ::dirac::__private::LagrangeDirac>::PRESCRIBED;
+        const CONSTANT_CONSTRAINTS: ::core::primitive::bool = !__PRESCRIBED_OWN
+            && !__VARYING_OWN
+            && <Wheel as ::dirac::__private::LagrangeDirac>::CONSTANT_CONSTRAINTS
+            && <Cart as ::dirac::__private::LagrangeDirac>::CONSTANT_CONSTRAINTS;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &__PATTERN,
             unknowns: &__UNKNOWNS,

@@ -38,6 +38,7 @@ const _: () = {
         }
         const SEPARABLE: ::core::primitive::bool = true;
         const PRESCRIBED: ::core::primitive::bool = false;
+        const CONSTANT_CONSTRAINTS: ::core::primitive::bool = false;
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[
                 true, false, false, false, true, false, false, true, false, false, false,

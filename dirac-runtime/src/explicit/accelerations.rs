@@ -213,7 +213,12 @@ where
             model.l_vq(t, q, v, &mut self.lvq);
             M::Algebra::qq_mul(&self.lvq, -1.0, v.as_slice(), &mut x[..n]);
         }
-        if m > 0 {
+        // Constraint rows that depend on parameters alone are those of the factorisation held:
+        // with no rates and no `∂(A v)/∂q`, the constraints' right-hand side is zero.
+        let constant = M::CONSTANT_CONSTRAINTS && self.factored;
+        if m > 0 && constant {
+            x[n..].fill(0.0);
+        } else if m > 0 {
             model.constraint_matrix(t, q, &mut self.a);
             model.dav_dq(t, q, v, &mut self.dav);
             model.dav_dt(t, q, v, &mut self.rate);
@@ -224,7 +229,7 @@ where
         }
         let keep = M::SEPARABLE
             && self.factored
-            && M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a);
+            && (constant || M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a));
         if !keep {
             self.factored = self.factor(model, t, (q, v));
             if !self.factored {
