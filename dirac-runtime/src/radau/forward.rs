@@ -420,7 +420,7 @@ where
             }
         }
         // `self.w` is zero (set for the step by `Forward::solve`).
-        transformed_residuals::<M>(&self.layout, eig, h, &self.f, &self.w, &mut self.r);
+        transformed_residuals::<M>(&self.layout, &eig.over(h), &self.f, &self.w, &mut self.r);
         let [r1, r2, r3] = &mut self.r;
         solver.solve(r1);
         solver.solve_complex(r2, r3);
@@ -475,7 +475,7 @@ where
         let mut previous = f64::INFINITY;
         for newt in 0..iteration.max_iterations {
             self.stage_right_hand_sides(c);
-            transformed_residuals::<M>(&self.layout, eig, h, &self.f, &self.w, &mut self.r);
+            transformed_residuals::<M>(&self.layout, &eig.over(h), &self.f, &self.w, &mut self.r);
             let [r1, r2, r3] = &mut self.r;
             solver.solve(r1);
             solver.solve_complex(r2, r3);

@@ -120,9 +120,10 @@ where
         let mut faccon = rough_power(self.faccon.max(f64::EPSILON), 0.8);
         let mut theta = self.theta.abs();
         let (mut dyno_old, mut thq_old) = (1.0, 1.0);
+        let shifts = eig.over(h);
         for newt in 0..max_iterations {
             self.residuals(&mut step);
-            self.transformed_residuals(eig, h);
+            self.transformed_residuals(&shifts);
             let [r1, r2, r3] = &mut self.r;
             step.solver.solve(r1);
             step.solver.solve_complex(r2, r3);
@@ -216,12 +217,12 @@ where
         self.f.iter().find_map(|f| f.iter().position(|v| !v.is_finite()))
     }
 
-    /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w`, with `M` the identity on the differential rows.
-    fn transformed_residuals(&mut self, eig: &Eigen, h: f64) {
+    /// `r_k = (T⁻¹ f)_k − (Λ/h ⊗ M) w`, with `M` the identity on the differential rows and
+    /// `shifts` the eigenvalues `Λ/h`.
+    fn transformed_residuals(&mut self, shifts: &Eigen) {
         transformed_residuals::<M>(
             &Layout::new(self.sizes.typed::<M>()),
-            eig,
-            h,
+            shifts,
             &self.f,
             &self.w,
             &mut self.r,
@@ -236,15 +237,14 @@ where
 #[allow(clippy::needless_range_loop)]
 pub(crate) fn transformed_residuals<M: LagrangeDirac>(
     l: &Layout,
-    eig: &Eigen,
-    h: f64,
+    shifts: &Eigen,
     f: &[VecY<M>; 3],
     w: &[VecY<M>; 3],
     r: &mut [VecY<M>; 3],
 ) where
     DefaultAllocator: Storage<M>,
 {
-    let (gamma, alpha, beta) = (eig.gamma / h, eig.alpha / h, eig.beta / h);
+    let Eigen { gamma, alpha, beta } = *shifts;
     let [r1, r2, r3] = r;
     for i in 0..r1.len() {
         let (f1, f2, f3) = (f[0][i], f[1][i], f[2][i]);

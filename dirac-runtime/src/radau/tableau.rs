@@ -27,10 +27,19 @@ pub const A: [[f64; 3]; 3] = [
 ];
 
 /// The eigenvalues of `A⁻¹`: the real `γ` and the complex pair `α ± iβ`.
+#[derive(Clone, Copy)]
 pub struct Eigen {
     pub gamma: f64,
     pub alpha: f64,
     pub beta: f64,
+}
+
+impl Eigen {
+    /// `γ/h`, `α/h`, `β/h`: the shifts of a step of size `h`, formed once a step rather than in
+    /// every iteration.
+    pub fn over(&self, h: f64) -> Eigen {
+        Eigen { gamma: self.gamma / h, alpha: self.alpha / h, beta: self.beta / h }
+    }
 }
 
 /// `γ`, `α`, `β` from their closed forms.
