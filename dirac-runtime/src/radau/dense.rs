@@ -61,8 +61,8 @@ where
         }
     }
 
-    /// [`Dense::extrapolate`] and the starting values' transforms `w = (T⁻¹ ⊗ I) z`, in one
-    /// pass over the components.
+    /// Starting values of the stages of a next step of size `h`, the polynomial extrapolated to
+    /// its nodes, and their transforms `w = (T⁻¹ ⊗ I) z`, in one pass over the components.
     // Indexing vectors of a size known to the compiler beats nalgebra's strided iterators.
     #[allow(clippy::needless_range_loop)]
     pub fn extrapolate_transformed(&self, h: f64, z: &mut [VecY<M>; 3], w: &mut [VecY<M>; 3]) {
@@ -72,17 +72,6 @@ where
             for k in 0..3 {
                 z[k][i] = x[k];
                 w[k][i] = TI[k][0] * x[0] + TI[k][1] * x[1] + TI[k][2] * x[2];
-            }
-        }
-    }
-
-    /// Starting values of the stages of a next step of size `h`: the polynomial extrapolated
-    /// to its nodes.
-    pub fn extrapolate(&self, h: f64, z: &mut [VecY<M>; 3]) {
-        for (zk, ck) in z.iter_mut().zip([C1, C2, 1.0]) {
-            let s = ck * h / self.h;
-            for i in 0..zk.len() {
-                zk[i] = self.increment(i, s);
             }
         }
     }

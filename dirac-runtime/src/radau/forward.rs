@@ -27,7 +27,7 @@ use super::estimate::{scaled_error, zero_algebraic};
 use super::options::{ErrorNorm, norm};
 use super::residual::Residual;
 use super::stages::{three, transform, transformed_residuals};
-use super::tableau::{C1, C2, C3, DD1, DD2, DD3, Eigen, T, TI};
+use super::tableau::{C1, C2, C3, DD1, DD2, DD3, Eigen, T};
 use crate::algebra::Algebra;
 use crate::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::dims::{Storage, VecY};
@@ -462,11 +462,10 @@ where
     ) -> Result<usize, Option<usize>> {
         // Start from the last step's polynomial extrapolated, as the state's iteration does.
         if c.dense.h > 0.0 {
-            c.dense.extrapolate(h, &mut c.z);
+            c.dense.extrapolate_transformed(h, &mut c.z, &mut self.w);
         } else {
-            c.z.iter_mut().for_each(|z| z.fill(0.0));
+            c.z.iter_mut().chain(self.w.iter_mut()).for_each(|z| z.fill(0.0));
         }
-        transform(&TI, &c.z, &mut self.w);
         // The iteration is linear: it contracts about as it did in the last step (as the
         // state's did, at first), until it shows its rate in this one; relaxed to its square
         // root, more cautious than RADAU5's relaxation of the state's rate (a power 0.8).
