@@ -262,6 +262,25 @@ enum FeedbackJacobian {
     Given,
 }
 
+/// A feedback law on the forced spring, and its `∂u/∂(q, v)`.
+type Law<'m> = &'m mut dyn FnMut(f64, &State<ForcedSpring>, &mut ForcedSpring);
+type LawJacobian<'m> = &'m mut dyn FnMut(f64, &State<ForcedSpring>, &mut [f64]);
+
+/// Attaches the feedback `law` to `radau` with the Jacobian treatment `jacobian`
+/// (`law_jacobian` its `∂u/∂(q, v)` for `Given`).
+fn attach<'m>(
+    radau: &mut Radau<'m, ForcedSpring>,
+    jacobian: FeedbackJacobian,
+    law: Law<'m>,
+    law_jacobian: LawJacobian<'m>,
+) {
+    match jacobian {
+        FeedbackJacobian::None => radau.drive(law).expect("an exclusive model"),
+        FeedbackJacobian::Differences => radau.drive_feedback(law).expect("a dense model"),
+        FeedbackJacobian::Given => radau.drive_feedback_with(law, law_jacobian).expect("a dense model"),
+    }
+}
+
 /// Radau on the forced spring under the continuous feedback `f = −K x − D v`, with the given
 /// Jacobian treatment; the largest error against the closed loop's closed form and the Newton
 /// iterations.
@@ -280,13 +299,7 @@ fn feedback_run(jacobian: FeedbackJacobian) -> (f64, usize) {
         |_: f64, _: &State<ForcedSpring>, out: &mut [f64]| out.copy_from_slice(&[-gain, -damping]);
     let tol = 1e-10;
     let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(tol, tol)).expect("valid");
-    match jacobian {
-        FeedbackJacobian::None => radau.drive(&mut law).expect("an exclusive model"),
-        FeedbackJacobian::Differences => radau.drive_feedback(&mut law).expect("a dense model"),
-        FeedbackJacobian::Given => {
-            radau.drive_feedback_with(&mut law, &mut law_jacobian).expect("a dense model")
-        }
-    }
+    attach(&mut radau, jacobian, &mut law, &mut law_jacobian);
     let times: Vec<f64> = (1..=20).map(|i| 0.25 * i as f64).collect();
     let solution = radau.solve(0.0, &start, 5.0, &Sampling::Times(times.clone())).expect("integrates");
     let xs = solution.q(ForcedSpring::X);
@@ -329,13 +342,7 @@ fn cubic_feedback_run(jacobian: FeedbackJacobian, tol: f64) -> (f64, usize, usiz
         out.copy_from_slice(&[-3.0 * gain * s.q[0] * s.q[0], -damping]);
     };
     let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(tol, tol)).expect("valid");
-    match jacobian {
-        FeedbackJacobian::None => radau.drive(&mut law).expect("an exclusive model"),
-        FeedbackJacobian::Differences => radau.drive_feedback(&mut law).expect("a dense model"),
-        FeedbackJacobian::Given => {
-            radau.drive_feedback_with(&mut law, &mut law_jacobian).expect("a dense model")
-        }
-    }
+    attach(&mut radau, jacobian, &mut law, &mut law_jacobian);
     let solution = radau.solve(0.0, &start, 5.0, &Sampling::Times(vec![5.0])).expect("integrates");
     let x = solution.q(ForcedSpring::X)[0];
     (x, solution.stats.newton_iterations, solution.stats.jacobian_evaluations)
