@@ -1,7 +1,7 @@
-//! Solver counters of every zoo model under both integrators, snapshotted.
+//! Solver counters of every zoo model under every integrator, snapshotted.
 //!
 //! For each model of `tests/zoo/mod.rs` and each integrator (Radau, the variational
-//! integrator on its default path and on its general Newton path) this runs one short
+//! integrator on its default path and on its general Newton path, Explicit) this runs one short
 //! integration and records the work counters (steps, rejections, Newton iterations, LU
 //! factorisations, residual and Jacobian evaluations) and the final state, or the error the
 //! run ended in. The reference is `tests/snapshots/solver_counters.txt`, written by this same
@@ -58,6 +58,24 @@ where
     }
 }
 
+fn explicit_record<M: DenseModel>(model: &M, start: &State<M>) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut explicit = Explicit::new(model, ExplicitOptions::tolerances(1e-8, 1e-10)).expect("valid options");
+    match explicit.solve(0.0, start, 2.0, &Sampling::Times(vec![2.0])) {
+        Ok(sol) => {
+            let s = &sol.stats;
+            let counters = format!(
+                "steps={} rejected={} evaluations={} lu={}",
+                s.steps, s.rejected, s.evaluations, s.factorizations
+            );
+            with_state(counters, &sol.state(0).expect("a sample at the end"))
+        }
+        Err(e) => format!("error={e}"),
+    }
+}
+
 fn with_state<M: DenseModel>(mut line: String, state: &State<M>) -> String
 where
     DefaultAllocator: Storage<M>,
@@ -95,6 +113,7 @@ where
     writeln!(out, "{name} radau {}", radau_record(model, &start)).expect("write to a string");
     writeln!(out, "{name} variational {}", variational_record(model, &start, true)).expect("write");
     writeln!(out, "{name} variational_general {}", variational_record(model, &start, false)).expect("write");
+    writeln!(out, "{name} explicit {}", explicit_record(model, &start)).expect("write to a string");
 }
 
 fn all_records() -> String {
