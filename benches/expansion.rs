@@ -1,56 +1,12 @@
 //! Macro expansion time and generated code size of `#[derive(LagrangeDirac)]`.
 //!
-//! The expander's modules are compiled into this benchmark from `dirac-macros/src` (they use
-//! only proc-macro2, syn and quote, never the compiler's `proc_macro`), so criterion times
-//! exactly the work the derive does inside `cargo build`: parse, check, lower, differentiate,
-//! schedule and emit. Models: the 8-link pendulum of the test zoo (angle coordinates,
-//! cos(θi − θj) terms) and N-link pendulums for N = 2, 4, 8, 16.
+//! The derive's implementation is the library `dirac-expand` (proc-macro2, syn and quote, never
+//! the compiler's `proc_macro`), so criterion times exactly the work the derive does inside
+//! `cargo build`: parse, check, lower, differentiate, schedule and emit. Models: the 8-link
+//! pendulum of the test zoo (angle coordinates, cos(θi − θj) terms) and N-link pendulums for
+//! N = 2, 4, 8, 16.
 //!
 //! Run: `cargo bench --bench expansion`.
-
-#![allow(dead_code, missing_docs, unused_imports)]
-
-#[path = "../dirac-macros/src/ast.rs"]
-mod ast;
-#[path = "../dirac-macros/src/blocks.rs"]
-mod blocks;
-#[path = "../dirac-macros/src/check.rs"]
-mod check;
-#[path = "../dirac-macros/src/codegen/mod.rs"]
-mod codegen;
-#[path = "../dirac-macros/src/contacts.rs"]
-mod contacts;
-#[path = "../dirac-macros/src/ctxt.rs"]
-mod ctxt;
-#[path = "../dirac-macros/src/equations.rs"]
-mod equations;
-#[path = "../dirac-macros/src/expand.rs"]
-mod expand;
-#[path = "../dirac-macros/src/lower.rs"]
-mod lower;
-#[path = "../dirac-macros/src/model.rs"]
-mod model;
-#[path = "../dirac-runtime/src/stack.rs"]
-mod stack;
-#[path = "../dirac-macros/src/structure.rs"]
-mod structure;
-#[path = "../dirac-macros/src/suggest.rs"]
-mod suggest;
-/// The engine's modules without its unit tests (benchmarks are built with `cfg(test)`).
-#[path = "../dirac-macros/src/sym"]
-mod sym {
-    mod diff;
-    pub mod emit;
-    mod eval;
-    pub mod graph;
-    pub mod pretty;
-
-    pub use graph::{Func, Graph, Id};
-}
-#[path = "../dirac-macros/src/symbol.rs"]
-mod symbol;
-#[path = "../dirac-macros/src/symbols.rs"]
-mod symbols;
 
 use std::hint::black_box;
 
@@ -97,13 +53,13 @@ fn expansion(c: &mut Criterion) {
     let mut group = c.benchmark_group("expansion");
     group.sample_size(10);
     let zoo = zoo_model("Pendulum8");
-    group.bench_function("zoo Pendulum8", |b| b.iter(|| expand::derive(black_box(&zoo))));
+    group.bench_function("zoo Pendulum8", |b| b.iter(|| dirac_expand::lagrange_dirac(black_box(&zoo))));
     for n in [2, 4, 8, 16] {
         let input = n_link_pendulum(n);
-        let code = expand::derive(&input).to_string();
+        let code = dirac_expand::lagrange_dirac(&input).to_string();
         println!("N = {n:2}: generated code {} kB", code.len() / 1000);
         group.bench_function(format!("N-link pendulum N={n}"), |b| {
-            b.iter(|| expand::derive(black_box(&input)))
+            b.iter(|| dirac_expand::lagrange_dirac(black_box(&input)))
         });
     }
     group.finish();

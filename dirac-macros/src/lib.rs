@@ -4,32 +4,8 @@
 //! The derive parses a model, checks it, lowers its expressions into a symbolic graph over
 //! typed symbols, differentiates them once into a table of blocks, analyses the blocks and
 //! emits straight-line Rust from them: attributes → model AST (with spans) → checks →
-//! symbolic graph → block table → structure → CSE schedule → Rust tokens.
-
-mod ast;
-mod blocks;
-mod check;
-mod codegen;
-mod contacts;
-mod ctxt;
-mod equations;
-mod expand;
-mod interconnect;
-mod lower;
-mod model;
-mod structure;
-mod suggest;
-mod sym;
-mod symbol;
-mod symbols;
-
-#[cfg(test)]
-mod snapshots;
-
-/// The runtime's estimate of a model's stack use, shared so that both decide alike.
-#[path = "../../dirac-runtime/src/stack.rs"]
-#[allow(dead_code)]
-mod stack;
+//! symbolic graph → block table → structure → CSE schedule → Rust tokens. That work is the
+//! library `dirac-expand`; this crate is its entry points.
 
 use proc_macro::TokenStream;
 use syn::{DeriveInput, parse_macro_input};
@@ -49,7 +25,7 @@ use syn::{DeriveInput, parse_macro_input};
 #[proc_macro_derive(LagrangeDirac, attributes(dirac))]
 pub fn derive_lagrange_dirac(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
-    expand::derive(&input).into()
+    dirac_expand::lagrange_dirac(&input).into()
 }
 
 /// Derives `dirac::LagrangeDirac` for a struct whose fields are Lagrange-Dirac systems (its
@@ -65,5 +41,5 @@ pub fn derive_lagrange_dirac(input: TokenStream) -> TokenStream {
 #[proc_macro_derive(Interconnection, attributes(dirac))]
 pub fn derive_interconnection(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
-    interconnect::derive(&input).into()
+    dirac_expand::interconnection(&input).into()
 }

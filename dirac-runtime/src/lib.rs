@@ -1,99 +1,72 @@
-//! The runtime of dirac: the trait that generated models implement, their state with named
-//! access, and the numerics that simulate them on stack-allocated nalgebra matrices.
+//! The runtime of dirac: the traits that generated models implement, their state with named
+//! access, and the numerics that simulate them on stack-allocated nalgebra matrices (heap and
+//! sparse for models made of arrays).
 //!
 //! Most users reach this crate through the `dirac` facade and its prelude.
+//!
+//! # Layers
+//!
+//! The crate is built in six layers, each a folder whose modules import only from the layers
+//! below it (and from [`error`], which every layer may use):
+//!
+//! - [`shape`]: sizes as type-level dimensions, where each quantity sits in the flat state
+//!   `y = (q, v, p, λ)`, and how much stack an integrator takes.
+//! - [`algebra`]: dense and sparse block storage, LU factorisations, the saddle-point solvers
+//!   and the Newton seam every implicit step goes through.
+//! - [`model`]: the model traits (a core trait and one trait per optional capability), typed
+//!   names and keys, the state, blocks, the flat DAE and the pieces of composites.
+//! - [`analysis`]: a model at one instant: consistent initialisation, projection onto the
+//!   constraints, linearisation, Dirac structures, and the diagnosis behind every error message.
+//! - [`simulate`]: the [`Integrator`] driver with `solve` written once, events, impacts,
+//!   sensitivities, the recorder and the [`Solution`], input sources and ensembles.
+//! - [`methods`]: [`Radau`], [`Explicit`] and [`Variational`].
 
-/// How models store their matrices and solve their linear systems: dense or sparse.
 pub mod algebra;
-/// Where the parts of composites made of arrays sit, for generated code.
-#[doc(hidden)]
-pub mod arrays;
-/// Moving subsystem parts in and out of composites, for generated code.
-#[doc(hidden)]
-pub mod assemble;
-/// The block outputs of a model: residual blocks and Jacobian blocks.
-pub mod blocks;
-mod contacts;
-/// Finding the true cause of a failure, for the messages of typed errors.
-pub mod diagnose;
-/// Type-level sizes of a model and the allocator bound that goes with them.
-pub mod dims;
-/// Dirac structures as objects, with products, interconnection and membership.
-pub mod dirac_structure;
-/// Many simulations of one model on all cores, and sweeps split into jobs.
-pub mod ensemble;
+pub mod analysis;
 /// The typed errors of a simulation.
 pub mod error;
-pub mod events;
-pub mod explicit;
-/// The flat DAE assembled from a model's blocks.
-pub mod flat;
-/// How an integrator holds its model: shared, or exclusive to change it while it runs.
-pub mod held;
-/// Consistent initial states.
-pub mod init;
-mod init_saddle;
-/// The driver every integrator shares, with `solve` written once.
-pub mod integrator;
-/// Typed names of coordinates and constraints.
-pub mod keys;
-/// Where each quantity sits in the flat state `y = (q, v, p, λ)`.
-pub mod layout;
-/// Linearisation about an equilibrium, in minimal coordinates.
-pub mod linear;
-/// LU factorisation on the stack, real or complex.
-pub mod lu;
-mod matching;
-/// The model trait.
+pub mod methods;
 pub mod model;
-/// Names of a model as a tree that `const` code can search.
-pub mod names;
-/// The linear systems of implicit steps: condensed and full solvers.
-pub mod newton;
-mod projection;
-/// The Radau IIA integrator.
-pub mod radau;
-mod recorder;
-pub mod sensitivity;
-/// Simulation results with named series.
-pub mod solution;
-/// Input sources read by time: tables held or interpolated.
-pub mod sources;
-/// The flat Jacobian in compressed sparse columns.
-pub mod sparse;
-/// How much stack a model's integrators take.
-pub mod stack;
-/// The state `(q, v, p, λ)` with named access.
-pub mod state;
-/// Structural nonsingularity of the condensed system, checked at compile time.
-pub mod structure;
-#[cfg(test)]
-mod testing;
-/// The variational integrator (discrete Hamilton-Pontryagin-d'Alembert).
-pub mod variational;
+pub mod shape;
+pub mod simulate;
 
 pub use algebra::{Algebra, Dense};
-pub use blocks::{JacobianBlocks, ResidualBlocks};
-pub use dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
-pub use dirac_structure::{DiracStructure, Membership};
+pub use analysis::dirac_structure::{DiracStructure, Membership};
+pub use analysis::init::{Consistency, consistent_state};
+pub use analysis::linear::{Linearization, linearize};
 pub use error::SimError;
-pub use events::{EventContext, Events, SolveWithEvents};
-pub use explicit::{Explicit, ExplicitOptions, ExplicitStats};
-pub use held::Held;
-pub use init::{Consistency, consistent_state};
-pub use integrator::Integrator;
-pub use keys::{Constraint, Coordinate, Input, Output};
-pub use layout::{Layout, Slot};
-pub use linear::{Linearization, linearize};
+pub use methods::explicit::{Explicit, ExplicitOptions, ExplicitStats};
+pub use methods::radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
+pub use methods::variational::{Variational, VariationalOptions, VariationalStats};
+pub use model::blocks::{JacobianBlocks, ResidualBlocks};
+pub use model::keys::{Constraint, Coordinate, Input, Output};
+pub use model::names::{Named, Names, ResolveError, Resolved, Subsystem};
+pub use model::sparse::SparseJacobian;
+pub use model::state::State;
+pub use model::structure::Structure;
 pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
-pub use names::{Named, Names, ResolveError, Resolved, Subsystem};
-pub use radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
-pub use sensitivity::{Sensitivities, Wrt};
-pub use solution::{Crossing, Event, Impact, Sampling, Solution};
-pub use sparse::SparseJacobian;
-pub use state::State;
-pub use structure::Structure;
-pub use variational::{Variational, VariationalOptions, VariationalStats};
+pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
+pub use shape::layout::{Layout, Slot};
+pub use simulate::events::{EventContext, Events, SolveWithEvents};
+pub use simulate::held::Held;
+pub use simulate::integrator::Integrator;
+pub use simulate::sensitivity::{Sensitivities, Wrt};
+pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
+
+// The modules under the paths they had before the layers, for code that names them.
+pub use algebra::lu;
+pub use analysis::{diagnose, dirac_structure, init, linear};
+pub use methods::{explicit, radau, variational};
+pub use model::{blocks, flat, keys, names, sparse, state, structure};
+pub use shape::{dims, layout, stack};
+pub use simulate::{ensemble, events, held, integrator, sensitivity, solution, sources};
+
+/// The linear systems of implicit steps: the seam every method solves through, the condensed
+/// solver a model's algebra provides, and a full reference solver.
+pub mod newton {
+    pub use crate::algebra::newton::{Full, NewtonSolver};
+    pub use crate::model::Condensed;
+}
 
 /// The linear-algebra crate the runtime is built on, for generic code over models (the
 /// [`DefaultAllocator`](nalgebra::DefaultAllocator) of the [`Storage`] bound) and for users
@@ -104,19 +77,18 @@ pub use nalgebra;
 #[doc(hidden)]
 pub mod __private {
     pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
-    pub use crate::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
-    pub use crate::assemble::{
-        Slot, gather_c, gather_q, place_block, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
+    pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
+    pub use crate::model::assemble::{
+        Offsets, gather_c, gather_q, place_block, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
-    pub use crate::blocks::{JacobianBlocks, ResidualBlocks};
-    pub use crate::dims::Storage;
-    pub use crate::dims::{Dimensions, Fixed, MatYY, Sizes, VecC, VecH, VecQ, VecY};
-    pub use crate::keys::{Constraint, Coordinate, Input, Output};
+    pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+    pub use crate::model::keys::{Constraint, Coordinate, Input, Output};
+    pub use crate::model::names::{Named, Names, ResolveError, Resolved, Subsystem};
+    pub use crate::model::sparse::SparseJacobian;
+    pub use crate::model::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
     pub use crate::model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
-    pub use crate::names::{Named, Names, ResolveError, Resolved, Subsystem};
-    pub use crate::sparse::SparseJacobian;
-    pub use crate::stack::{STACK_LIMIT, stack_bytes};
-    pub use crate::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
+    pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
+    pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;
 

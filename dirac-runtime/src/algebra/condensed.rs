@@ -5,9 +5,9 @@
 use nalgebra::{Complex, DefaultAllocator};
 
 use super::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar};
-use crate::dims::{Dimensions, Sizes, Storage, VecY};
-use crate::layout::Layout;
-use crate::lu::Singular;
+use crate::algebra::lu::Singular;
+use crate::shape::dims::{Dimensions, Sizes, Storage, VecY};
+use crate::shape::layout::Layout;
 
 /// The condensed real and complex systems of Radau's stages, as saddle-point systems of the
 /// algebra `A`.

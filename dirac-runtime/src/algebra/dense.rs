@@ -5,9 +5,9 @@
 use nalgebra::{Complex, ComplexField, DefaultAllocator, Dim, OMatrix, OVector};
 
 use super::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar};
-use crate::dims::{Dimensions, Fixed, Sizes, Storage, VecY};
-use crate::layout::Layout;
-use crate::lu::{Lu, Singular};
+use crate::algebra::lu::{Lu, Singular};
+use crate::shape::dims::{Dimensions, Fixed, Sizes, Storage, VecY};
+use crate::shape::layout::Layout;
 
 /// Dense blocks and dense LU factorisations.
 #[derive(Clone, Copy, Debug, Default)]
@@ -280,7 +280,7 @@ where
     }
 }
 
-impl<M: crate::dims::Fixed> Default for DenseCondensed<M>
+impl<M: crate::shape::dims::Fixed> Default for DenseCondensed<M>
 where
     DefaultAllocator: Storage<M>,
 {

@@ -17,20 +17,32 @@
 //! [`Dense`] keeps nalgebra matrices (on the stack for models of fixed size), [`Sparse`] keeps
 //! the structural nonzeros of models made of arrays and factors with a sparse LU whose
 //! ordering is computed once per model.
+//!
+//! The layer above the sizes (`shape`): it knows blocks and their dimensions, not the models
+//! that fill them, so the model layer and everything above it may use it.
 
 mod condensed;
 mod dense;
+/// LU factorisation on the stack, real or complex.
+pub mod lu;
+pub(crate) mod mass;
+/// The linear systems of implicit steps: the seam and a full reference solver.
+pub mod newton;
 pub mod sparse;
+#[cfg(test)]
+mod sparse_against_dense;
+#[cfg(test)]
+pub(crate) mod testing;
 mod traits;
 
 use nalgebra::{DMatrix, DefaultAllocator};
 
 pub use self::condensed::SaddleCondensed;
 pub use self::dense::{Dense, DenseCondensed, DenseSaddle};
+pub use self::lu::{Singular, amax};
 pub use self::sparse::{Pattern, Sparse, SparseBlock, SparseSaddle, SparseShape};
 pub use self::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar};
-use crate::dims::{Dimensions, Storage};
-pub use crate::lu::Singular;
+use crate::shape::dims::{Dimensions, Storage};
 
 /// A dense copy of an `n × n` block, for set-up and failure analysis of small models.
 pub fn dense_qq<M: Dimensions, A: Algebra<M>>(a: &A::Qq, n: usize) -> DMatrix<f64>
@@ -50,20 +62,4 @@ where
     let mut out = DMatrix::zeros(m, n);
     A::cq_entries(b, |i, j, x| out[(i, j)] += x);
     out
-}
-
-/// The largest absolute value of a block's stored values (0 for an empty block; NaNs are
-/// passed over, as `f64::max` passes them over, by a plain comparison that costs less).
-#[inline]
-pub fn amax(values: &[f64]) -> f64 {
-    amax_by(values, |x| x.abs())
-}
-
-/// The largest of `size(x)` over `values` (0 for none; NaNs passed over, as by `amax`).
-#[inline]
-pub(crate) fn amax_by<T: Copy>(values: &[T], size: impl Fn(T) -> f64) -> f64 {
-    values.iter().fold(0.0f64, |m, &x| {
-        let s = size(x);
-        if s > m { s } else { m }
-    })
 }

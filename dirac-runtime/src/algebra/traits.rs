@@ -5,8 +5,8 @@ use core::fmt;
 
 use nalgebra::{Complex, ComplexField, DefaultAllocator, OMatrix};
 
-use crate::dims::{Dimensions, Storage, VecY};
-use crate::lu::Singular;
+use crate::algebra::lu::Singular;
+use crate::shape::dims::{Dimensions, Storage, VecY};
 
 /// The scalars of linear systems: `f64`, and `Complex<f64>` for Radau's complex stage system.
 pub trait Scalar:

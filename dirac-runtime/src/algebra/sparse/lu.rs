@@ -13,8 +13,8 @@ use faer::sparse::linalg::lu::simplicial::{
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 
+use crate::algebra::lu::Singular;
 use crate::algebra::traits::Scalar;
-use crate::lu::Singular;
 
 /// A reused pivot smaller than this fraction of the largest entry below it in its column
 /// calls for new pivots.

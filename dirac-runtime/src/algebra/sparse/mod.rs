@@ -6,8 +6,6 @@
 
 mod lu;
 mod saddle;
-#[cfg(test)]
-mod tests;
 
 use std::sync::Arc;
 
@@ -16,7 +14,7 @@ use nalgebra::{DefaultAllocator, OMatrix};
 pub use self::saddle::SparseSaddle;
 use super::condensed::SaddleCondensed;
 use super::traits::{Algebra, Scalar};
-use crate::dims::{Dimensions, Sizes, Storage};
+use crate::shape::dims::{Dimensions, Sizes, Storage};
 
 /// Where the stored values of a sparse block sit: one `(row, column)` per value, in the
 /// order the model writes them. An entry may appear more than once; its values add up.

@@ -7,9 +7,9 @@ use std::sync::Arc;
 
 use super::lu::SparseLu;
 use super::{Pattern, Sparse, SparseShape};
+use crate::algebra::lu::Singular;
 use crate::algebra::traits::{Saddle, SaddleTerms, Scalar};
-use crate::dims::{Dimensions, Sizes, Storage};
-use crate::lu::Singular;
+use crate::shape::dims::{Dimensions, Sizes, Storage};
 use nalgebra::DefaultAllocator;
 
 /// A sparse saddle-point system with scalars `T`.

@@ -1,0 +1,266 @@
+//! `#[derive(Interconnection)]`: a composite of Lagrange-Dirac systems joined by a Dirac
+//! structure, itself a Lagrange-Dirac system (paper §IV–V): `L = Σ Lᵢ`, `F = ⊕ Fᵢ`, constraint
+//! rows `[blockdiag(Aᵢ); Ω]` with multipliers `(λᵢ, μ)`.
+//!
+//! Parse ([`ast`]), lower the interconnection rows ([`model`]), check their linearity, derive
+//! their block table ([`blocks`]), then emit: the `const` items that resolve and check the
+//! composite when the program compiles ([`consts`]), the methods from the signature table
+//! ([`methods`], with the rows' own parts from [`emit`]) and the named items ([`items`]).
+
+mod ast;
+mod blocks;
+mod consts;
+mod emit;
+mod items;
+mod large;
+mod methods;
+mod model;
+mod parameters;
+
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote, quote_spanned};
+use syn::DeriveInput;
+use syn::spanned::Spanned;
+
+use self::ast::Composite;
+use self::blocks::CompositeBlocks;
+use self::emit::Own;
+use self::items::{Targets, equations, inherent_items, names};
+use self::methods::methods;
+use self::model::CompositeModel;
+use crate::codegen::signatures::rt;
+use crate::ctxt::Ctxt;
+use crate::expand::stub_impls;
+
+/// Expands the derive on `input`; user errors become `compile_error!` next to a stub impl.
+pub fn derive(input: &DeriveInput) -> TokenStream {
+    let cx = Ctxt::new();
+    let composite = Composite::from_input(&cx, input);
+    let model = if composite.incomplete { None } else { CompositeModel::build(&cx, &composite) };
+    let built = model.map(|mut model| {
+        let linearity = model.linearity_checks(&cx);
+        (model, linearity)
+    });
+    match (cx.into_compile_errors(), built) {
+        (None, Some((mut model, linearity))) => {
+            let blocks = CompositeBlocks::derive(&mut model);
+            if composite.has_arrays() {
+                large::implementation(&composite, &model, &blocks, linearity)
+            } else {
+                implementation(&composite, &model, &blocks, linearity)
+            }
+        }
+        // A generic composite has been reported; an impl for it would only add errors.
+        (errors, _) if !input.generics.params.is_empty() => quote! { #errors },
+        (errors, _) => {
+            // One coordinate and one constraint, so that the stub's keys (index 0) are valid.
+            let impls = stub_impls(composite.ident, (1, 1));
+            let items = inherent_items(&composite, Targets::Stub, &TokenStream::new());
+            quote! { #errors const _: () = { #impls #items }; }
+        }
+    }
+}
+
+/// The offsets of each subsystem and the composite's sizes, as const items. Each offset is a
+/// prefix sum over arrays of the subsystems' sizes, not a chain of constants, so that the
+/// compiler's query depth does not grow with the number of subsystems.
+fn layout(composite: &Composite<'_>, rows: usize) -> TokenStream {
+    let p = rt();
+    let u = quote! { ::core::primitive::usize };
+    let count = Literal::usize_unsuffixed(composite.subsystems.len());
+    // Spanned at each field's type, so that a field that is not a model is reported there.
+    let size = |name: &str| -> Vec<TokenStream> {
+        let subsystems = composite.subsystems.iter();
+        subsystems
+            .map(|s| {
+                let ty = &s.ty;
+                let name = syn::Ident::new(name, ty.span());
+                quote_spanned! {ty.span()=> <#ty as ::dirac::__private::Fixed>::#name }
+            })
+            .collect()
+    };
+    let (nqs, nhs, ncs) = (size("NQ"), size("NH"), size("NC"));
+    let mut out = quote! {
+        const __NQS: [#u; #count] = [#(#nqs),*];
+        const __NHS: [#u; #count] = [#(#nhs),*];
+        const __NCS: [#u; #count] = [#(#ncs),*];
+    };
+    for i in 0..composite.subsystems.len() {
+        let (qi, hi, vi, slot) = (
+            format_ident!("__Q{}", i),
+            format_ident!("__H{}", i),
+            format_ident!("__V{}", i),
+            format_ident!("__SLOT{}", i),
+        );
+        let i = Literal::usize_unsuffixed(i);
+        out.extend(quote! {
+            const #qi: #u = #p::prefix_sum(&__NQS, #i);
+            const #hi: #u = #p::prefix_sum(&__NHS, #i);
+            const #vi: #u = __NH + #p::prefix_sum(&__NCS, #i) - #p::prefix_sum(&__NHS, #i);
+            const #slot: #p::Offsets = #p::Offsets { q: #qi, h: #hi, v: #vi };
+        });
+    }
+    let rows = Literal::usize_unsuffixed(rows);
+    if !composite.large {
+        let message = format!(
+            "`{}` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more \
+             than the {} KiB of stack a model may take without asking (threads Rust spawns have 2 MiB, and \
+             overflowing a stack aborts the process); add `#[dirac(large)]` and run the simulation on a \
+             thread with a larger stack, such as `std::thread::Builder::new().stack_size(64 << 20)`",
+            composite.ident,
+            dirac_stack_limit() / 1024
+        );
+        out.extend(quote! {
+            const _: () = if #p::stack_bytes(__NQ, __NC) > #p::STACK_LIMIT { ::core::panic!(#message) };
+        });
+    }
+    out.extend(quote! {
+        const __NQ: #u = #p::prefix_sum(&__NQS, #count);
+        const __NH: #u = #p::prefix_sum(&__NHS, #count);
+        const __OMEGA: #u = __NH + #p::prefix_sum(&__NCS, #count) - __NH;
+        const __NC: #u = __OMEGA + #rows;
+    });
+    out
+}
+
+fn dirac_stack_limit() -> usize {
+    dirac_structure::stack::STACK_LIMIT
+}
+
+fn implementation(
+    composite: &Composite<'_>,
+    model: &CompositeModel,
+    blocks: &CompositeBlocks,
+    linearity: TokenStream,
+) -> TokenStream {
+    let p = rt();
+    let ident = composite.ident;
+    let own = Own { model, blocks };
+    let layout = layout(composite, model.rows.len());
+    let resolutions = model.resolutions(composite);
+    let structure = model.structure(composite, blocks);
+    let asserts = subsystem_asserts(composite);
+    let bounds = bounds(composite);
+    let names = names(composite, model, &bounds);
+    let counts = operation_counts(composite, &own);
+    let equations = equations(composite, model);
+    let methods = methods(composite, &own);
+    let inherent = inherent_items(composite, Targets::Resolved(model), &bounds);
+    quote! {
+        const _: () = {
+            #asserts
+            #layout
+            #resolutions
+            #linearity
+            #structure
+
+            #[automatically_derived]
+            impl #p::Dimensions for #ident #bounds {
+                type Nq = #p::Const<{ __NQ }>;
+                type Nc = #p::Const<{ __NC }>;
+                type Nh = #p::Const<{ __NH }>;
+                type Nk = #p::Const<{ __NQ + __NC }>;
+                type Ny = #p::Const<{ 3 * __NQ + __NC }>;
+            }
+
+            #names
+
+            #[automatically_derived]
+            #[allow(clippy::approx_constant)]
+            impl #p::LagrangeDirac for #ident #bounds {
+                #counts
+                #equations
+                #methods
+            }
+
+            #inherent
+        };
+    }
+}
+
+/// A check, at each field's type, that the type is a model.
+/// For a composite with arrays: its subsystems may not have unilateral constraints or declared
+/// events, which it does not gather.
+fn no_contacts_or_events(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    composite
+        .subsystems
+        .iter()
+        .map(|s| {
+            let ty = &s.ty;
+            quote_spanned! {ty.span()=>
+                const _: () = ::core::assert!(
+                    <#ty as #p::Named>::NAMES.unilateral_count() == 0 && <#ty as #p::Named>::NAMES.event_count() == 0,
+                    "a composite with arrays of subsystems does not gather their unilateral constraints or declared \
+                     events yet: declare them on a composite of named subsystems, or add the events with `Events::on`"
+                );
+            }
+        })
+        .collect()
+}
+
+fn subsystem_asserts(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    composite
+        .subsystems
+        .iter()
+        .map(|s| {
+            let ty = &s.ty;
+            quote_spanned! {ty.span()=>
+                const _: fn() = || {
+                    fn subsystem<M: #p::LagrangeDirac>() where #p::DefaultAllocator: #p::Storage<M> {}
+                    subsystem::<#ty>();
+                };
+            }
+        })
+        .collect()
+}
+
+/// `where Sub: DenseModel, …` for every subsystem type, at the field's type: if a field is
+/// not a model, this bound is the one error, and the bodies under it report nothing more.
+fn bounds(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    let bounds = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote_spanned! {ty.span()=> #ty: #p::DenseModel, #p::DefaultAllocator: #p::Storage<#ty> }
+    });
+    quote! { where #(#bounds),* }
+}
+
+fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
+    let p = rt();
+    let (residual, jacobian) = own.op_counts();
+    let subs = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote! { .plus(<#ty as #p::LagrangeDirac>::OPERATION_COUNTS) }
+    });
+    let separable = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote! { <#ty as #p::LagrangeDirac>::SEPARABLE }
+    });
+    let prescribed = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote! { <#ty as #p::LagrangeDirac>::PRESCRIBED }
+    });
+    let constant = composite.subsystems.iter().map(|s| {
+        let ty = &s.ty;
+        quote! { <#ty as #p::LagrangeDirac>::CONSTANT_CONSTRAINTS }
+    });
+    let sizes = quote! { #p::Sizes { nq: __NQ, nc: __NC, nh: __NH } };
+    let storage = crate::codegen::signatures::fixed_storage(&sizes);
+    quote! {
+        #storage
+        const SEPARABLE: ::core::primitive::bool = true #(&& #separable)*;
+        const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN #(|| #prescribed)*;
+        const CONSTANT_CONSTRAINTS: ::core::primitive::bool =
+            !__PRESCRIBED_OWN && !__VARYING_OWN #(&& #constant)*;
+        const STRUCTURE: #p::Structure = #p::Structure { pattern: &__PATTERN, unknowns: &__UNKNOWNS };
+        const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
+            residual: #residual,
+            jacobian: #jacobian,
+            residual_and_jacobian: #residual + #jacobian,
+            residual_blocks: #residual,
+            jacobian_blocks: #jacobian,
+        } #(#subs)*;
+    }
+}

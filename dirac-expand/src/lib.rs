@@ -1,0 +1,44 @@
+//! The implementation of dirac's derive macros, as a library of `proc_macro2` code: what
+//! `#[derive(LagrangeDirac)]` and `#[derive(Interconnection)]` do, callable outside a
+//! compiler plugin so that its unit tests, snapshot tests and expansion benchmarks run it as
+//! it is. Not for direct use: `dirac-macros` calls it, and the `dirac` crate re-exports the
+//! derives.
+//!
+//! A model is parsed, checked, lowered into a symbolic graph over typed symbols, differentiated
+//! once into a table of blocks, analysed and emitted as straight-line Rust: attributes → model
+//! AST (with spans) → checks → symbolic graph → block table → structure → CSE schedule → Rust
+//! tokens.
+
+mod ast;
+mod blocks;
+mod check;
+mod codegen;
+mod contacts;
+mod ctxt;
+mod equations;
+mod expand;
+mod interconnect;
+mod lower;
+mod model;
+mod structure;
+mod suggest;
+mod sym;
+mod symbol;
+mod symbols;
+
+#[cfg(test)]
+mod snapshots;
+
+use proc_macro2::TokenStream;
+use syn::DeriveInput;
+
+/// The expansion of `#[derive(LagrangeDirac)]` on `input`: the trait impls, or the errors
+/// (every one found, with its span) beside stub impls.
+pub fn lagrange_dirac(input: &DeriveInput) -> TokenStream {
+    expand::derive(input)
+}
+
+/// The expansion of `#[derive(Interconnection)]` on `input`.
+pub fn interconnection(input: &DeriveInput) -> TokenStream {
+    interconnect::derive(input)
+}

@@ -1,0 +1,305 @@
+//! Finding the true cause of a failure, for the messages of typed errors: which parameter or
+//! state component is not finite, which algebraic equation a state violates, and why a
+//! consistency or Newton matrix is singular (a coordinate without inertia or constraint, a
+//! vanishing or dependent constraint). Failure paths only: these functions allocate.
+
+use nalgebra::{DMatrix, DefaultAllocator, SVD};
+
+use crate::algebra::{Algebra, amax, dense_cq, dense_qq};
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::state::State;
+use crate::shape::dims::{Sizes, Storage, VecQ};
+use crate::shape::layout::{Layout, Slot, Unknown, Unknowns};
+
+/// The most unknowns `n + m` for which failures are analysed with dense matrices.
+pub(crate) const DENSE_ANALYSIS: usize = 2000;
+
+/// The singular value decomposition of `a` with a bounded number of iterations: `None` if it
+/// did not converge (it always does for finite input; the bound keeps NaN from looping).
+pub(crate) fn svd(a: &DMatrix<f64>) -> Option<SVD<f64, nalgebra::Dyn, nalgebra::Dyn>> {
+    if !a.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    // nalgebra's default tolerance, with a bound on the iterations.
+    SVD::try_new(a.clone(), true, true, 5.0 * f64::EPSILON, 10_000)
+}
+
+/// Slot `i` of `model`'s state in words, for messages: "coordinate `x`", "momentum of `x`".
+pub fn describe_slot<M: LagrangeDirac>(model: &M, i: usize) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    match Layout::new(model.sizes()).slot(i) {
+        Slot::Position(k) => format!("coordinate `{}`", model.coordinate_names()[k]),
+        Slot::Velocity(k) => format!("velocity `{}`", model.velocity_names()[k]),
+        Slot::Momentum(k) => format!("momentum of `{}`", model.coordinate_names()[k]),
+        Slot::Multiplier(k) => format!("multiplier `{}`", model.constraint_names()[k]),
+    }
+}
+
+/// A typed error naming the first component of `state` that is NaN or infinite.
+pub fn check_finite_state<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match state.components().position(|x| !x.is_finite()) {
+        Some(i) => Err(SimError::NonFinite { t, component: describe_slot(model, i) }),
+        None => Ok(()),
+    }
+}
+
+/// The first entry of a vector that is NaN or infinite, named: `∂L/∂q at coordinate `y``
+/// when `per_coordinate` (a vector over the coordinates), else just `what`.
+pub(crate) fn non_finite_entry<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    what: &str,
+    values: &[f64],
+    per_coordinate: bool,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let Some(k) = values.iter().position(|x| !x.is_finite()) else {
+        return Ok(());
+    };
+    let component = if per_coordinate {
+        format!("{what} at coordinate `{}`", model.coordinate_names()[k])
+    } else {
+        what.to_owned()
+    };
+    Err(SimError::NonFinite { t, component })
+}
+
+/// The first entry of an `n × n` block that is NaN or infinite, named by its row's
+/// coordinate: `the mass matrix L_vv at coordinate `y``.
+pub(crate) fn non_finite_qq<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    what: &str,
+    block: &<M::Algebra as Algebra<M>>::Qq,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut row = None;
+    M::Algebra::qq_entries(block, |i, _, x| {
+        if row.is_none() && !x.is_finite() {
+            row = Some(i);
+        }
+    });
+    match row {
+        None => Ok(()),
+        Some(i) => Err(SimError::NonFinite {
+            t,
+            component: format!("{what} at coordinate `{}`", model.coordinate_names()[i]),
+        }),
+    }
+}
+
+/// The algebraic equation that `state` violates the most beyond `tolerance` (relative to the
+/// size of the terms it is made of: `|A| (1 + |q|)` for `φ(q, t) = 0`, `|A| (1 + |v|)` for
+/// `A(q, t) v + b(q, t) = 0`, `1 + |p| + |∂L/∂v|` for the Legendre map `p = ∂L/∂v`), with its residual.
+pub fn violated_equation<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    tolerance: f64,
+) -> Option<(String, f64)>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (holonomic, velocity) = constraint_residuals(model, t, state);
+    if let Some((j, r, _)) = holonomic.filter(|w| w.2 > tolerance) {
+        return Some((format!("holonomic constraint `{}`", model.constraint_names()[j]), r));
+    }
+    if let Some((j, r, _)) = velocity.filter(|w| w.2 > tolerance) {
+        return Some((format!("velocity constraint `{}`", model.constraint_names()[j]), r));
+    }
+    violated_legendre_map(model, t, state, tolerance)
+}
+
+/// The largest residual of `φ(q, t) = 0` and of `A(q, t) v + b(q, t) = 0` at `state`, each as
+/// its row, the residual, and the residual relative to the size of the terms it is made of
+/// (`φ / (|A| (1 + |q|))` is a distance in q). Allocates nothing for a dense model.
+fn constraint_residuals<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+) -> (Option<Worst>, Option<Worst>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let mut phi = sizes.zeros_h::<M>();
+    model.holonomic(t, &state.q, &mut phi);
+    let mut a = M::Algebra::zeros_cq(&model.shape());
+    model.constraint_matrix(t, &state.q, &mut a);
+    let size_a = amax(M::Algebra::cq_values(&a)).max(f64::MIN_POSITIVE);
+    let (q_scale, v_scale) = (size_a * (1.0 + state.q.amax()), size_a * (1.0 + state.v.amax()));
+    let mut av = sizes.zeros_c::<M>();
+    model.constraint_rate(t, &state.q, &mut av);
+    M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
+    (
+        worst(phi.iter().copied()).map(|(j, r)| (j, r, r / q_scale)),
+        worst(av.iter().copied()).map(|(j, r)| (j, r, r / v_scale)),
+    )
+}
+
+/// A constraint's row, its residual, and the residual relative to its terms' size.
+type Worst = (usize, f64, f64);
+
+/// The constraint that `state` violates the most relative to the size of its terms (as in
+/// [`violated_equation`]); `None` for a model without constraints.
+pub(crate) fn worst_constraint<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Option<Worst>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if model.sizes().nc == 0 {
+        return None;
+    }
+    match constraint_residuals(model, t, state) {
+        (Some(h), Some(v)) => Some(if h.2.is_nan() || h.2 >= v.2 { h } else { v }),
+        (h, v) => h.or(v),
+    }
+}
+
+/// An error if a change of the model between steps moved a constraint off the state: its
+/// violation relative to its terms' size went from `before` to beyond `1e-8 + 2 before`. A
+/// prescribed motion (a constraint that depends on an input or a parameter) cannot jump.
+pub(crate) fn check_constraints_kept<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    before: f64,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match worst_constraint(model, t, state) {
+        Some((j, residual, relative)) if relative.is_nan() || relative > 1e-8 + 2.0 * before => {
+            let kind = if j < model.sizes().nh { "holonomic" } else { "velocity" };
+            let equation = format!("{kind} constraint `{}`", model.constraint_names()[j]);
+            Err(SimError::ConstraintMoved { t, equation, residual })
+        }
+        _ => Ok(()),
+    }
+}
+
+/// The momentum `p = ∂L/∂v` that `state` violates most beyond `tolerance` (relative to the
+/// momenta's size), and by how much: what a change of the model while it runs may break.
+pub fn violated_legendre_map<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    tolerance: f64,
+) -> Option<(String, f64)>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut dl_dv = model.sizes().zeros_q::<M>();
+    model.dl_dv(t, &state.q, &state.v, &mut dl_dv);
+    let p_scale = 1.0 + state.p.amax().max(dl_dv.amax());
+    let gap = state.p.iter().zip(dl_dv.iter()).map(|(p, l)| p - l);
+    if let Some((i, r)) = worst(gap).filter(|(_, r)| *r > tolerance * p_scale) {
+        return Some((format!("Legendre map p = ∂L/∂v of `{}`", model.coordinate_names()[i]), r));
+    }
+    None
+}
+
+/// The index and size of the largest entry in absolute value.
+fn worst(values: impl Iterator<Item = f64>) -> Option<(usize, f64)> {
+    values.map(f64::abs).enumerate().fold(None, |best, (i, x)| match best {
+        Some((_, b)) if b >= x => best,
+        _ => Some((i, x)),
+    })
+}
+
+/// Why the saddle-point matrix `[L_vv Aᵀ; A 0]` of `model` at `(t, q, v)` is singular: the
+/// unknowns its null space moves, read as the cause. For the messages of consistency and
+/// Newton failures.
+pub fn singular_cause<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let Sizes { nq: n, nc: m, .. } = sizes;
+    if n + m > DENSE_ANALYSIS {
+        return format!(
+            "the model has {} unknowns, too many to analyse the cause; look for a coordinate without \
+             inertia or constraint, or dependent constraints",
+            n + m
+        );
+    }
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
+    model.l_vv(t, q, v, &mut lvv);
+    model.constraint_matrix(t, q, &mut a);
+    cause_of(model, &dense_qq::<M, M::Algebra>(&lvv, n), &dense_cq::<M, M::Algebra>(&a, m, n))
+}
+
+/// [`singular_cause`] for the blocks themselves.
+pub(crate) fn cause_of<M: LagrangeDirac>(model: &M, lvv: &DMatrix<f64>, a: &DMatrix<f64>) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (n, m) = (lvv.nrows(), a.nrows());
+    let mut kkt = DMatrix::zeros(n + m, n + m);
+    kkt.view_mut((0, 0), (n, n)).copy_from(lvv);
+    kkt.view_mut((0, n), (n, m)).copy_from(&a.transpose());
+    kkt.view_mut((n, 0), (m, n)).copy_from(a);
+    let Some(svd) = svd(&kkt) else {
+        return "the matrix holds values that are not finite".to_owned();
+    };
+    let v_t = svd.v_t.as_ref().expect("V computed");
+    let null = v_t.row(svd.singular_values.imin()).transpose();
+    let (dv, dl) = (null.rows(0, n), null.rows(n, m));
+    let largest = null.amax().max(f64::MIN_POSITIVE);
+    let picked = |x: &nalgebra::DVectorView<'_, f64>, names: &[String]| -> Vec<String> {
+        x.iter()
+            .enumerate()
+            .filter(|(_, z)| z.abs() > 0.3 * largest)
+            .map(|(i, _)| format!("`{}`", names[i]))
+            .collect()
+    };
+    if dl.amax() >= dv.amax() {
+        let constraints = picked(&dl, &model.constraint_names());
+        if constraints.len() == 1 {
+            let j = dl.iamax();
+            if a.row(j).amax() <= 1e-12 * a.amax().max(1e-300) || a.row(j).amax() == 0.0 {
+                return format!(
+                    "the one-form of constraint {} is zero at this state (its ∂φ/∂q or A(q) row vanishes), \
+                     so its multiplier is not determined",
+                    constraints[0]
+                );
+            }
+            return format!(
+                "the multiplier of constraint {} is not determined at this state",
+                constraints[0]
+            );
+        }
+        return format!(
+            "the constraints {} are dependent at this state (their one-forms are linearly dependent), \
+             so their multipliers are not determined",
+            constraints.join(", ")
+        );
+    }
+    let coordinates = picked(&dv, &model.coordinate_names());
+    format!(
+        "the velocity of {} is not determined: along this motion there is no inertia (L_vv) and no \
+         constraint",
+        coordinates.join(", ")
+    )
+}
+
+/// The unknown of a condensed system `(x_v, x_λ)` (or of a variational stage, `(v, Λ)`) at
+/// `column`, for the message of a singular matrix: "no pivot for the velocity `vx`".
+pub fn pivot_name<M: LagrangeDirac>(model: &M, column: usize) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    match Unknowns::new(model.sizes()).unknown(column) {
+        Unknown::Velocity(i) => format!("no pivot for the velocity `{}`", model.velocity_names()[i]),
+        Unknown::Multiplier(j) => format!("no pivot for the multiplier `{}`", model.constraint_names()[j]),
+    }
+}

@@ -1,0 +1,324 @@
+//! Consistent initial states: from positions and velocities a user chooses, the nearest state
+//! that satisfies every algebraic equation of the implicit Lagrange-d'Alembert equations.
+//!
+//! 1. positions are projected onto `φ(q, t) = 0` (Gauss-Newton, minimal-norm corrections);
+//! 2. velocities are projected onto `A(q, t) v + b(q, t) = 0`, minimising the kinetic-energy
+//!    norm of the change, `½ Δvᵀ L_vv Δv`, so that velocities without inertia (a degenerate
+//!    Lagrangian's) take up the correction and the others keep the values given;
+//! 3. momenta are set by the Legendre map `p = ∂L/∂v`;
+//! 4. multipliers (and accelerations) solve the differentiated constraints
+//!    `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av + b)/∂q v − ∂(Av + b)/∂t]`.
+//!
+//! Every quantity is checked to be finite before it is used, so a NaN parameter or an
+//! overflowing state ends in a typed error that names it, never in a hung decomposition or a
+//! NaN multiplier returned as success. Set-up code: it allocates, unlike a step.
+
+use nalgebra::{DMatrix, DVector, DefaultAllocator};
+
+use crate::algebra::{Algebra, dense_cq, dense_qq};
+use crate::analysis::diagnose::{
+    DENSE_ANALYSIS, cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd,
+};
+use crate::analysis::init_saddle;
+use crate::error::SimError;
+use crate::model::configuration;
+use crate::model::state::State;
+use crate::model::{LagrangeDirac, check_parameters};
+use crate::shape::dims::{Sizes, Storage, VecQ};
+use crate::shape::layout::{Layout, Slot};
+
+/// Tolerance and iteration budget of the projections.
+#[derive(Clone, Copy, Debug)]
+pub struct Consistency {
+    /// How far positions (velocities) may remain from the constraints, relative to their size
+    /// `1 + |q|` (`1 + |v|`): a residual `φ(q, t)` (`A(q, t) v + b`) is accepted up to this times
+    /// `|A(q)| (1 + |q|)` (`|A(q)| (1 + |v|)`).
+    pub tolerance: f64,
+    /// Gauss-Newton iterations allowed for `φ(q, t) = 0`.
+    pub max_iterations: usize,
+}
+
+impl Default for Consistency {
+    fn default() -> Self {
+        Consistency { tolerance: 1e-13, max_iterations: 50 }
+    }
+}
+
+/// The consistent state nearest to positions `q` and velocities `v` at time `t`.
+pub fn consistent_state<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    options: Consistency,
+) -> Result<State<M>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !(options.tolerance > 0.0 && options.tolerance.is_finite()) {
+        return Err(SimError::InvalidTolerance { what: "consistency tolerance", value: options.tolerance });
+    }
+    if !t.is_finite() {
+        return Err(SimError::InvalidTimeSpan { reason: format!("the initial time {t} is not finite") });
+    }
+    check_parameters(model)?;
+    let sizes = model.sizes();
+    let mut s = State::<M>::with_sizes(sizes);
+    s.q.copy_from(q);
+    s.v.copy_from(v);
+    if let Some(j) = s.q.iter().chain(s.v.iter()).position(|x| !x.is_finite()) {
+        // `(q, v)` is the start of the flat state: its layout names the slot.
+        let (names, i) = match Layout::new(sizes).slot(j) {
+            Slot::Position(i) => (model.coordinate_names(), i),
+            Slot::Velocity(i) => (model.velocity_names(), i),
+            slot => unreachable!("slot {j} of (q, v) is a position or a velocity, not {slot:?}"),
+        };
+        return Err(SimError::NonFinite { t, component: names[i].clone() });
+    }
+    if sizes.nq + sizes.nc > DENSE_ANALYSIS {
+        init_saddle::project_positions(model, t, &mut s.q, (options.tolerance, options.max_iterations))?;
+        init_saddle::project_velocities(model, t, &s.q, &mut s.v, options.tolerance)?;
+    } else {
+        project_positions(model, t, &mut s.q, options)?;
+        project_velocities(model, t, &s.q, &mut s.v, options)?;
+    }
+    model.dl_dv(t, &s.q, &s.v, &mut s.p);
+    non_finite_entry(model, t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
+    s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v)?.as_slice());
+    check_finite_state(model, t, &s)?;
+    Ok(s)
+}
+
+fn project_positions<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &mut VecQ<M>,
+    options: Consistency,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let Sizes { nq: n, nc: m, nh: h } = model.sizes();
+    if h == 0 {
+        return Ok(());
+    }
+    let mut phi = model.sizes().zeros_h::<M>();
+    let mut a = M::Algebra::zeros_cq(&model.shape());
+    for iteration in 0..=options.max_iterations {
+        model.holonomic(t, q, &mut phi);
+        non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)
+            .map_err(|_| holonomic_not_finite(model, t, phi.as_slice()))?;
+        model.constraint_matrix(t, q, &mut a);
+        let ah = dense_cq::<M, M::Algebra>(&a, m, n).rows(0, h).into_owned();
+        if !ah.iter().all(|x| x.is_finite()) {
+            return Err(SimError::NonFinite {
+                t,
+                component: "a holonomic constraint's one-form ∂φ/∂q".into(),
+            });
+        }
+        // φ / |∂φ/∂q| is how far the positions are from the constraint, to first order.
+        if phi.amax() <= options.tolerance * ah.amax() * (1.0 + q.amax()) {
+            return Ok(());
+        }
+        if iteration == options.max_iterations {
+            break;
+        }
+        let correction = min_norm_solve(&ah, &DVector::from_column_slice(phi.as_slice()));
+        configuration::advance_in_place::<M>(q, -1.0, correction.as_slice());
+        if let Some(i) = q.iter().position(|x| !x.is_finite()) {
+            let component =
+                format!("coordinate `{}` while projecting onto the constraints", model.coordinate_names()[i]);
+            return Err(SimError::NonFinite { t, component });
+        }
+    }
+    let (j, residual) =
+        phi.iter().enumerate().fold((0, 0.0f64), |b, (j, x)| if x.abs() > b.1 { (j, x.abs()) } else { b });
+    Err(SimError::InconsistentInitialState {
+        equation: format!("holonomic constraint `{}`", model.constraint_names()[j]),
+        residual,
+        iterations: options.max_iterations,
+    })
+}
+
+fn holonomic_not_finite<M: LagrangeDirac>(model: &M, t: f64, phi: &[f64]) -> SimError
+where
+    DefaultAllocator: Storage<M>,
+{
+    let j = phi.iter().position(|x| !x.is_finite()).unwrap_or(0);
+    SimError::NonFinite { t, component: format!("holonomic constraint `{}`", model.constraint_names()[j]) }
+}
+
+/// The minimal-norm `x` with `A x = b` (least squares if there is none); finite input only.
+fn min_norm_solve(a: &DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
+    match svd(a) {
+        Some(svd) => svd.solve(b, 1e-14 * a.amax().max(1e-300)).expect("SVD with both factors computed"),
+        None => DVector::from_element(a.ncols(), f64::NAN),
+    }
+}
+
+fn project_velocities<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &mut VecQ<M>,
+    options: Consistency,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let Sizes { nq: n, nc: m, .. } = model.sizes();
+    if m == 0 {
+        return Ok(());
+    }
+    let shape = model.shape();
+    let mut a = M::Algebra::zeros_cq(&shape);
+    model.constraint_matrix(t, q, &mut a);
+    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    let a = dense_cq::<M, M::Algebra>(&a, m, n);
+    let mut b = model.sizes().zeros_c::<M>();
+    model.constraint_rate(t, q, &mut b);
+    non_finite_entry(model, t, "the constraint rates b(q, t)", b.as_slice(), false)?;
+    let b = DVector::from_column_slice(b.as_slice());
+    let av = &a * DVector::from_column_slice(v.as_slice()) + &b;
+    non_finite_entry(model, t, "the constraint velocities A(q, t) v + b(q, t)", av.as_slice(), false)?;
+    let size_a = a.amax();
+    if av.amax() <= options.tolerance * size_a * (1.0 + v.amax()) {
+        return Ok(());
+    }
+    let mut lvv = M::Algebra::zeros_qq(&shape);
+    model.l_vv(t, q, v, &mut lvv);
+    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
+    let w = dense_qq::<M, M::Algebra>(&lvv, n);
+    // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
+    let reg = 1e-10 * w.amax().max(1.0);
+    let mut kkt = DMatrix::zeros(n + m, n + m);
+    kkt.view_mut((0, 0), (n, n)).copy_from(&(w + DMatrix::identity(n, n) * reg));
+    kkt.view_mut((0, n), (n, m)).copy_from(&a.transpose());
+    kkt.view_mut((n, 0), (m, n)).copy_from(&a);
+    let mut rhs = DVector::zeros(n + m);
+    rhs.rows_mut(n, m).copy_from(&(-av));
+    let x = min_norm_solve(&kkt, &rhs);
+    for i in 0..n {
+        v[i] += x[i];
+    }
+    let after = &a * DVector::from_column_slice(v.as_slice()) + &b;
+    let limit = 1e3 * options.tolerance * size_a * (1.0 + v.amax());
+    if after.amax().is_nan() || after.amax() > limit {
+        let (j, residual) = after
+            .iter()
+            .enumerate()
+            .fold((0, 0.0f64), |b, (j, x)| if x.is_nan() || x.abs() > b.1 { (j, x.abs()) } else { b });
+        return Err(SimError::InconsistentInitialState {
+            equation: format!("velocity constraint `{}`", model.constraint_names()[j]),
+            residual,
+            iterations: 1,
+        });
+    }
+    Ok(())
+}
+
+/// The right-hand sides of the multipliers' system at `(t, q, v)`: the momentum balance
+/// without constraint forces and the differentiated constraints, each checked to be finite.
+fn rates<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+) -> Result<(Vec<f64>, Vec<f64>), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let (mut dl_dq, mut force, mut lvt) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+    model.dl_dq(t, q, v, &mut dl_dq);
+    non_finite_entry(model, t, "∂L/∂q", dl_dq.as_slice(), true)?;
+    model.force(t, q, v, &mut force);
+    non_finite_entry(model, t, "the force", force.as_slice(), true)?;
+    model.l_vt(t, q, v, &mut lvt);
+    non_finite_entry(model, t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
+    let mut lvq = M::Algebra::zeros_qq(&shape);
+    model.l_vq(t, q, v, &mut lvq);
+    non_finite_qq(model, t, "L_vq", &lvq)?;
+    let mut g = M::Algebra::zeros_cq(&shape);
+    model.dav_dq(t, q, v, &mut g);
+    non_finite_entry(model, t, "∂(A v + b)/∂q", M::Algebra::cq_values(&g), false)?;
+    let mut rate = sizes.zeros_c::<M>();
+    model.dav_dt(t, q, v, &mut rate);
+    non_finite_entry(model, t, "∂(A v + b)/∂t", rate.as_slice(), false)?;
+    let mut top = dl_dq + force - lvt;
+    M::Algebra::qq_mul(&lvq, -1.0, v.as_slice(), top.as_mut_slice());
+    non_finite_entry(model, t, "the momentum balance", top.as_slice(), true)?;
+    let mut bottom: Vec<f64> = rate.iter().map(|x| -x).collect();
+    M::Algebra::cq_mul(&g, -1.0, v.as_slice(), &mut bottom);
+    non_finite_entry(model, t, "the constraint accelerations", &bottom, false)?;
+    Ok((top.as_slice().to_vec(), bottom))
+}
+
+/// λ from the differentiated constraints, with the accelerations as by-product.
+fn multipliers<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+) -> Result<DVector<f64>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let Sizes { nq: n, nc: m, .. } = model.sizes();
+    let (top, bottom) = rates(model, t, q, v)?;
+    let shape = model.shape();
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
+    model.l_vv(t, q, v, &mut lvv);
+    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
+    model.constraint_matrix(t, q, &mut a);
+    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    let lambda = if n + m > DENSE_ANALYSIS {
+        DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)
+    } else {
+        dense_multipliers(
+            model,
+            t,
+            &dense_qq::<M, M::Algebra>(&lvv, n),
+            &dense_cq::<M, M::Algebra>(&a, m, n),
+            (&top, &bottom),
+        )?
+    };
+    if let Some(j) = lambda.iter().position(|x| !x.is_finite()) {
+        let component = format!("multiplier `{}`", model.constraint_names()[j]);
+        return Err(SimError::NonFinite { t, component });
+    }
+    Ok(lambda)
+}
+
+/// λ from the dense saddle-point system, by a singular value decomposition that names the
+/// cause when it is singular.
+fn dense_multipliers<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    lvv: &DMatrix<f64>,
+    a: &DMatrix<f64>,
+    (top, bottom): (&[f64], &[f64]),
+) -> Result<DVector<f64>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (n, m) = (lvv.nrows(), a.nrows());
+    let mut kkt = DMatrix::zeros(n + m, n + m);
+    kkt.view_mut((0, 0), (n, n)).copy_from(lvv);
+    kkt.view_mut((0, n), (n, m)).copy_from(&(-a.transpose()));
+    kkt.view_mut((n, 0), (m, n)).copy_from(a);
+    let mut rhs = DVector::zeros(n + m);
+    rhs.rows_mut(0, n).copy_from_slice(top);
+    rhs.rows_mut(n, m).copy_from_slice(bottom);
+    let singular = || SimError::NotDetermined { t, cause: cause_of(model, lvv, a) };
+    let Some(svd) = svd(&kkt) else {
+        return Err(singular());
+    };
+    let smallest = svd.singular_values.min();
+    let largest = svd.singular_values.max().max(1e-300);
+    if smallest <= 1e-12 * largest {
+        return Err(singular());
+    }
+    let x = svd.solve(&rhs, 0.0).expect("SVD with both factors computed");
+    Ok(x.rows(n, m).into_owned())
+}

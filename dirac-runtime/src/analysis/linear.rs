@@ -1,0 +1,213 @@
+//! Linearisation about an equilibrium, in minimal coordinates of the constrained system.
+//!
+//! With `v* = 0` and `ṗ* = 0`, the implicit Lagrange-d'Alembert equations linearise to
+//! `L_vv δv̇ = K δq + D δv + Aᵀ δλ + ∂ṗ/∂u δu` with `K = ∂ṗ/∂q` (which holds the constraint
+//! curvature `∂(Aᵀλ)/∂q` at `λ*`) and `D = ∂ṗ/∂v − L_vq`, `δq̇ = δv`, `A_h δq = 0` and
+//! `A δv = 0`. Positions move in `ker A_h` (`δq = N_h δz`), velocities in `ker A`
+//! (`δv = N δw`); projecting the momentum balance on `N` removes the multipliers. The state is
+//! `x = (δz, δw)`:
+//!
+//! ```text
+//! δż = N_hᵀ N δw
+//! δẇ = M_r⁻¹ (Nᵀ K N_h δz + Nᵀ D N δw + Nᵀ ∂ṗ/∂u δu),   M_r = Nᵀ L_vv N
+//! δy = ∂y/∂q N_h δz + ∂y/∂v N δw + ∂y/∂u δu
+//! ```
+//!
+//! Every matrix comes from the model's generated derivatives, none from differences.
+
+use nalgebra::{DMatrix, DefaultAllocator, SVD};
+
+use crate::algebra::Algebra;
+use crate::analysis::diagnose::violated_equation;
+use crate::error::SimError;
+use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+use crate::model::state::State;
+use crate::model::{LagrangeDirac, check_parameters};
+use crate::shape::dims::Storage;
+
+/// A linear model `δẋ = A δx + B δu`, `δy = C δx + D δu` about an equilibrium, in minimal
+/// coordinates: `x = (δz, δw)` with `δq = positions · δz` and `δv = velocities · δw`.
+#[derive(Clone, Debug)]
+pub struct Linearization {
+    /// The state matrix.
+    pub a: DMatrix<f64>,
+    /// The input matrix, one column per input.
+    pub b: DMatrix<f64>,
+    /// The output matrix, one row per output.
+    pub c: DMatrix<f64>,
+    /// The feedthrough matrix.
+    pub d: DMatrix<f64>,
+    /// An orthonormal basis of the position directions the holonomic constraints allow
+    /// (`n × (n − h)`; the identity without holonomic constraints).
+    pub positions: DMatrix<f64>,
+    /// An orthonormal basis of the velocities all constraints allow (`n × (n − m)`; the
+    /// identity without constraints).
+    pub velocities: DMatrix<f64>,
+}
+
+impl Linearization {
+    /// The number of position coordinates `δz`; the velocity coordinates `δw` follow them.
+    pub fn positions_count(&self) -> usize {
+        self.positions.ncols()
+    }
+}
+
+/// Linearises `model` about the equilibrium `state` at time `t`: a consistent state at rest
+/// (`v = 0`) whose momenta do not change (`ṗ = 0`, with the multipliers that hold it there,
+/// as [`consistent_state`](crate::analysis::init::consistent_state) computes them). Dense models only.
+pub fn linearize<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Result<Linearization, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    check_parameters(model)?;
+    let sizes = model.sizes();
+    let (n, m, nh) = (sizes.nq, sizes.nc, sizes.nh);
+    let (nu, ny) = (model.input_names().len(), model.output_names().len());
+    if let Some((equation, residual)) = violated_equation(model, t, state, 1e-8) {
+        return Err(SimError::StateNotConsistent { t, equation, residual });
+    }
+    check_equilibrium(model, t, state)?;
+    let mut jac = JacobianBlocks::<M, M::Algebra>::with_shape(&model.shape());
+    model.jacobian_blocks(t, &state.q, &state.v, &state.lambda, &mut jac);
+    let qq = |a: &<M::Algebra as Algebra<M>>::Qq| -> Result<DMatrix<f64>, SimError> {
+        M::Algebra::dense_qq(a).map(|x| DMatrix::from_column_slice(n, n, x.as_slice())).ok_or(
+            SimError::InvalidOption {
+                what: "linearize",
+                reason: "needs a model with dense blocks (of fixed size)".into(),
+            },
+        )
+    };
+    let (k, dv, lvq, lvv) = (qq(&jac.dpdot_dq)?, qq(&jac.dpdot_dv)?, qq(&jac.l_vq)?, qq(&jac.l_vv)?);
+    let a = DMatrix::from_column_slice(m, n, M::Algebra::cq_values(&jac.a));
+    let column_major = |rows: usize, cols: usize, f: &dyn Fn(&mut [f64])| {
+        let mut values = vec![0.0; rows * cols];
+        f(&mut values);
+        DMatrix::from_column_slice(rows, cols, &values)
+    };
+    let (q, v, lambda) = (&state.q, &state.v, &state.lambda);
+    let bu = column_major(n, nu, &|out| model.dpdot_du(t, q, v, lambda, out));
+    let lvu = column_major(n, nu, &|out| model.l_vu(t, q, v, out));
+    if lvu.amax() > 0.0 {
+        return Err(SimError::InvalidOption {
+            what: "linearize",
+            reason: "an input enters the momenta ∂L/∂v (the mass matrix or a velocity offset): it acts \
+                     through its rate, which a state-space model (A, B, C, D) cannot hold"
+                .into(),
+        });
+    }
+    let (yq, yv, yu) = (
+        column_major(ny, n, &|out| model.output_dq(t, q, v, out)),
+        column_major(ny, n, &|out| model.output_dv(t, q, v, out)),
+        column_major(ny, nu, &|out| model.output_du(t, q, v, out)),
+    );
+    refuse_outputs_of_multipliers(model, t, state)?;
+    let positions = kernel(&a.rows(0, nh).into_owned(), n, t)?;
+    let velocities = kernel(&a, n, t)?;
+    let mass = velocities.transpose() * &lvv * &velocities;
+    let Some(inverse) = mass.clone().try_inverse() else {
+        return Err(SimError::NotDetermined {
+            t,
+            cause: "the mass matrix restricted to the allowed velocities is singular: a velocity without \
+                    inertia is left free (eliminate it before linearising)"
+                .into(),
+        });
+    };
+    let (nz, nw) = (positions.ncols(), velocities.ncols());
+    let mut state_matrix = DMatrix::zeros(nz + nw, nz + nw);
+    state_matrix.view_mut((0, nz), (nz, nw)).copy_from(&(positions.transpose() * &velocities));
+    let nt = velocities.transpose();
+    state_matrix.view_mut((nz, 0), (nw, nz)).copy_from(&(&inverse * &nt * &k * &positions));
+    state_matrix.view_mut((nz, nz), (nw, nw)).copy_from(&(&inverse * &nt * (&dv - &lvq) * &velocities));
+    let mut input_matrix = DMatrix::zeros(nz + nw, nu);
+    input_matrix.view_mut((nz, 0), (nw, nu)).copy_from(&(&inverse * &nt * &bu));
+    let mut output_matrix = DMatrix::zeros(ny, nz + nw);
+    output_matrix.view_mut((0, 0), (ny, nz)).copy_from(&(&yq * &positions));
+    output_matrix.view_mut((0, nz), (ny, nw)).copy_from(&(&yv * &velocities));
+    Ok(Linearization { a: state_matrix, b: input_matrix, c: output_matrix, d: yu, positions, velocities })
+}
+
+/// An orthonormal basis of `ker rows` in `R^n`: the identity when there are no rows.
+fn kernel(rows: &DMatrix<f64>, n: usize, t: f64) -> Result<DMatrix<f64>, SimError> {
+    let r = rows.nrows();
+    if r == 0 {
+        return Ok(DMatrix::identity(n, n));
+    }
+    // Padded to square, the SVD's V is complete; its rows beyond the rank span the kernel.
+    let mut square = DMatrix::zeros(n.max(r), n);
+    square.view_mut((0, 0), (r, n)).copy_from(rows);
+    let svd = SVD::new(square, false, true);
+    let vt = svd.v_t.as_ref().expect("asked for V");
+    let largest = svd.singular_values.max();
+    let tolerance = 1e-10 * largest.max(f64::MIN_POSITIVE);
+    let independent = svd.singular_values.iter().filter(|&&s| s > tolerance).count();
+    if independent < r {
+        return Err(SimError::NotDetermined {
+            t,
+            cause: "the constraints are dependent at this state".into(),
+        });
+    }
+    let kernel: Vec<usize> = (0..n).filter(|&i| svd.singular_values[i] <= tolerance).collect();
+    Ok(DMatrix::from_fn(n, kernel.len(), |i, j| vt[(kernel[j], i)]))
+}
+
+/// Refuses a state that is not at rest or whose momenta change.
+fn check_equilibrium<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.coordinate_names();
+    let scale = 1.0 + state.q.amax();
+    if let Some(i) = state.v.iter().position(|v| v.abs() > 1e-10 * scale) {
+        return Err(SimError::NotEquilibrium {
+            t,
+            detail: format!("the velocity of `{}` is {:e}, not 0", names[i], state.v[i]),
+        });
+    }
+    let mut blocks = ResidualBlocks::<M>::with_sizes(&model.sizes());
+    model.residual_blocks(t, &state.q, &state.v, &state.lambda, &mut blocks);
+    let size = 1.0 + blocks.dl_dv.amax();
+    if let Some(i) = blocks.momentum_rate.iter().position(|r| r.abs() > 1e-8 * size) {
+        return Err(SimError::NotEquilibrium {
+            t,
+            detail: format!(
+                "the momentum of `{}` changes at the rate {:e}",
+                names[i], blocks.momentum_rate[i]
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// Refuses outputs that read a multiplier: in minimal coordinates the multipliers are
+/// functions of the state that this linearisation does not form. Found by moving every
+/// multiplier by a different amount.
+fn refuse_outputs_of_multipliers<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.output_names();
+    if names.is_empty() || state.lambda.is_empty() {
+        return Ok(());
+    }
+    let (mut base, mut moved) = (vec![0.0; names.len()], vec![0.0; names.len()]);
+    model.outputs(t, &state.q, &state.v, &state.lambda, &mut base);
+    let mut lambda = state.lambda.clone();
+    for (j, x) in lambda.iter_mut().enumerate() {
+        *x += 1.0 + 0.37 * j as f64;
+    }
+    model.outputs(t, &state.q, &state.v, &lambda, &mut moved);
+    match base.iter().zip(&moved).position(|(a, b)| a != b) {
+        Some(k) => Err(SimError::InvalidOption {
+            what: "linearize",
+            reason: format!(
+                "the output `{}` reads a multiplier, which the linear model in minimal coordinates does not hold",
+                names[k]
+            ),
+        }),
+        None => Ok(()),
+    }
+}

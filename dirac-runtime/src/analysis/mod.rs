@@ -1,0 +1,16 @@
+//! Analysis of a model at one instant, outside any integration: consistent initial states,
+//! projection onto the constraints, linearisation about an equilibrium, Dirac structures as
+//! objects, and the diagnosis that names the true cause of a failure.
+//!
+//! It uses the model surface and the algebra; the simulation driver and the methods use it.
+
+/// Finding the true cause of a failure, for the messages of typed errors.
+pub mod diagnose;
+/// Dirac structures as objects, with products, interconnection and membership.
+pub mod dirac_structure;
+/// Consistent initial states.
+pub mod init;
+pub(crate) mod init_saddle;
+/// Linearisation about an equilibrium, in minimal coordinates.
+pub mod linear;
+pub(crate) mod projection;

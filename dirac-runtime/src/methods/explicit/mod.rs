@@ -1,0 +1,600 @@
+//! An explicit integrator for non-stiff models: Tsitouras' 5(4) Runge-Kutta pair with PI
+//! step-size control and dense output (as Hairer, Nørsett & Wanner's DOPRI5 drives the
+//! Dormand-Prince pair), applied to the positions and velocities, with the multipliers from
+//! one saddle-point solve per stage and every accepted step projected back onto the
+//! constraints.
+//!
+//! Each stage is explicit in the differential part, `q̇ = v`, and takes the accelerations and
+//! the multipliers from the equations of motion with the constraints differentiated once
+//! more (`accelerations`):
+//!
+//! ```text
+//! [ L_vv  −Aᵀ ] [ v̇ ]   [ ∂L/∂q + F − L_vt − L_vq v ]
+//! [ A      0  ] [ λ ] = [ −∂(A v + b)/∂q v − ∂(A v + b)/∂t ]
+//! ```
+//!
+//! the same saddle-point structure as Radau's condensed Newton systems, without a Newton
+//! iteration, a Jacobian or a complex factorisation. The stages satisfy the constraints at
+//! acceleration level only, so after every accepted step the positions are put back onto
+//! `φ(q, t) = 0` and the velocities onto `A(q, t) v + b(q, t) = 0` by the smallest
+//! corrections (a projection method, Hairer, Lubich & Wanner, *Geometric Numerical
+//! Integration*, §IV.4; Hairer & Wanner, *Solving ODEs II*, §VII.2): the constraint residuals
+//! stay at round-off instead of drifting, and the order of the method is kept. The momenta
+//! follow from the Legendre map and the multipliers from the system above at the projected
+//! state.
+//!
+//! The system is regular when `L_vv` is positive definite on the constraint distribution. A
+//! degenerate Lagrangian whose massless coordinates are held by constraints (the paper's torn
+//! chain, `p̄2 = 0`) is therefore integrated as it is: its algebraic velocities are eliminated
+//! by the solve. A model whose motion the system does not determine is refused at the start
+//! with [`SimError::NotDetermined`], naming the free unknown.
+//!
+//! The method is explicit: on a stiff model (a stiff spring, a fast electrical mode) its step
+//! is held to the stability limit by the error control. Hairer's stiffness test notices (the
+//! last two stages estimate `h |λ|`) and the integration stops with [`SimError::Unstable`]
+//! saying the model is stiff, where it would otherwise crawl on to
+//! [`SimError::TooManySteps`]. Use [`Radau`](crate::methods::radau::Radau) there; the facade's guide has a
+//! table of which integrator suits which model. A step allocates nothing.
+
+pub(crate) mod accelerations;
+mod options;
+mod tableau;
+
+use std::cell::RefCell;
+
+use nalgebra::DefaultAllocator;
+
+use self::accelerations::Accelerations;
+pub use self::options::{ExplicitOptions, ExplicitStats};
+use self::tableau::{A, C, E, weights_at};
+use crate::analysis::diagnose::singular_cause;
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::configuration;
+use crate::model::state::State;
+use crate::shape::dims::{Sizes, Storage, VecC, VecQ};
+use crate::simulate::held::Held;
+use crate::simulate::integrator::{Integrator, rough_power};
+use crate::simulate::restart::Restarts;
+
+/// The step-size controller's constants, as in DOPRI5: the safety factor and the bounds on
+/// the ratio of new to old step. Its PI control takes the new step as
+/// `h · SAFETY / (error^0.17 / error_old^β)` with `β = 0.04` (and `0.17 = 1/5 − 0.75 β`).
+const SAFETY: f64 = 0.9;
+const MAX_GROWTH: f64 = 10.0;
+const MAX_SHRINK: f64 = 0.2;
+/// Where the stiffness test counts a step as held by stability: `h |λ|` near the boundary of
+/// the method's stability region on the negative real axis (about −3.5 for Tsitouras' pair;
+/// Hairer's DOPRI5 takes 3.25 for a boundary of −3.3).
+const STIFF_H_LAMBDA: f64 = 3.25;
+/// The PI controller's memory at a start, `(10⁻⁴)^β`, as DOPRI5 has it.
+const ERROR_OLD_START: f64 = 0.691_830_970_918_936_5;
+
+/// Why the last attempt was rejected, for the error when steps become too small.
+#[derive(Clone, Copy)]
+enum Rejection {
+    Error,
+    NonFinite,
+    Singular,
+}
+
+impl Rejection {
+    fn reason(self) -> &'static str {
+        match self {
+            Rejection::Error => "the local error stayed above the tolerance",
+            Rejection::NonFinite => "the stages held values that are not finite",
+            Rejection::Singular => "the accelerations were not determined at a stage",
+        }
+    }
+}
+
+/// The explicit integrator for a model `M`: see the [module](self) documentation.
+pub struct Explicit<'m, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    model: Held<'m, M>,
+    options: ExplicitOptions,
+    sizes: Sizes,
+    accelerations: Accelerations<M>,
+    t: f64,
+    t_end: f64,
+    /// The start of the last step, and its size (zero before the first step and after a
+    /// restart: no step to interpolate in).
+    t_previous: f64,
+    h_last: f64,
+    /// The size of the next step.
+    h: f64,
+    /// The state reached ...
+    state: State<M>,
+    /// ... and at the start of the last step.
+    previous: State<M>,
+    /// The accelerations at the state reached: the first stage of the next step.
+    start_acceleration: VecQ<M>,
+    /// The stages' velocities and accelerations, `k_i = (V_i, v̇_i)`, of the last attempt.
+    kq: [VecQ<M>; 7],
+    kv: [VecQ<M>; 7],
+    /// A stage's positions and multipliers.
+    q_stage: VecQ<M>,
+    lambda_stage: VecC<M>,
+    /// The fifth-order solution at the end of the last step, before the projection.
+    q_new: VecQ<M>,
+    v_new: VecQ<M>,
+    /// The PI controller's memory: the last accepted error to the power `β`, and whether the
+    /// last attempt was rejected.
+    error_old: f64,
+    rejected_last: bool,
+    /// The stiffness test's counts of accepted steps in a row at and below the stability limit.
+    stiff_steps: usize,
+    nonstiff_steps: usize,
+    /// The multipliers and accelerations of interpolated states, apart from the integration's.
+    probe: RefCell<(Accelerations<M>, VecQ<M>)>,
+    stats: ExplicitStats,
+    /// What a restart checks after the model was handed out for a change.
+    restarts: Restarts,
+}
+
+impl<'m, M: LagrangeDirac> Explicit<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// An integrator for `model`.
+    ///
+    /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
+    /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
+    pub fn new(model: impl Into<Held<'m, M>>, options: ExplicitOptions) -> Result<Self, SimError> {
+        options.validate()?;
+        let model = model.into();
+        let sizes = model.sizes();
+        let zeros = || sizes.zeros_q::<M>();
+        Ok(Explicit {
+            accelerations: Accelerations::new(model.get()),
+            probe: RefCell::new((Accelerations::new(model.get()), zeros())),
+            model,
+            options,
+            sizes,
+            t: 0.0,
+            t_end: 0.0,
+            t_previous: 0.0,
+            h_last: 0.0,
+            h: 0.0,
+            state: State::with_sizes(sizes),
+            previous: State::with_sizes(sizes),
+            start_acceleration: zeros(),
+            kq: std::array::from_fn(|_| zeros()),
+            kv: std::array::from_fn(|_| zeros()),
+            q_stage: zeros(),
+            lambda_stage: sizes.zeros_c::<M>(),
+            q_new: zeros(),
+            v_new: zeros(),
+            error_old: ERROR_OLD_START,
+            rejected_last: false,
+            stiff_steps: 0,
+            nonstiff_steps: 0,
+            stats: ExplicitStats::default(),
+            restarts: Restarts::default(),
+        })
+    }
+
+    /// Forgets the factorisations and the mass matrix: the model may have changed.
+    fn forget(&mut self) {
+        self.accelerations.forget();
+        self.probe.get_mut().0.forget();
+    }
+
+    /// The smallest step allowed at time `t`.
+    fn min_step(t: f64) -> f64 {
+        16.0 * f64::EPSILON * t.abs().max(1.0)
+    }
+
+    /// Evaluates the accelerations, multipliers and momenta at the state reached (a start, a
+    /// restart, an accepted step that was projected), with the cause named if the motion is
+    /// not determined there.
+    fn evaluate_start(&mut self) -> Result<(), SimError> {
+        let model = self.model.get();
+        let s = &mut self.state;
+        self.stats.evaluations += 1;
+        let determined = self.accelerations.evaluate(
+            model,
+            self.t,
+            (&s.q, &s.v),
+            &mut self.start_acceleration,
+            &mut s.lambda,
+        );
+        self.stats.factorizations = self.accelerations.factorizations;
+        if !determined {
+            return Err(SimError::NotDetermined {
+                t: self.t,
+                cause: singular_cause(model, self.t, &s.q, &s.v),
+            });
+        }
+        s.p.copy_from(self.accelerations.momenta());
+        self.check_finite()
+    }
+
+    /// A typed error naming the first component of the state reached that is not finite.
+    fn check_finite(&self) -> Result<(), SimError> {
+        let s = &self.state;
+        // x · 0 is zero for every finite x and NaN otherwise: one pass without branches tells
+        // whether all are finite, and only then is the culprit searched for.
+        let zeros = |x: &[f64]| x.iter().fold(0.0, |sum, x| sum + x * 0.0);
+        let all = [s.q.as_slice(), s.v.as_slice(), s.p.as_slice(), s.lambda.as_slice()];
+        if all.iter().map(|x| zeros(x)).sum::<f64>() + zeros(self.start_acceleration.as_slice()) == 0.0 {
+            return Ok(());
+        }
+        let n = self.sizes.nq;
+        if let Some(i) = (0..n).find(|&i| !(s.q[i].is_finite() && s.v[i].is_finite() && s.p[i].is_finite())) {
+            let names = self.model.get().coordinate_names();
+            return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
+        }
+        if let Some(j) = s.lambda.iter().position(|x| !x.is_finite()) {
+            let names = self.model.get().constraint_names();
+            return Err(SimError::NonFinite { t: self.t, component: format!("multiplier `{}`", names[j]) });
+        }
+        if let Some(i) = self.start_acceleration.iter().position(|x| !x.is_finite()) {
+            let names = self.model.get().velocity_names();
+            return Err(SimError::NonFinite {
+                t: self.t,
+                component: format!("the acceleration of {}", names[i]),
+            });
+        }
+        Ok(())
+    }
+
+    /// The first step size, from the size of the state and its derivatives, as DOPRI5's
+    /// `HINIT` chooses it: an explicit Euler step's error of about 1% of the tolerance.
+    fn initial_step(&mut self) -> f64 {
+        let span = self.t_end - self.t;
+        let max = self.options.max_step.min(span);
+        if let Some(h) = self.options.initial_step {
+            return h.min(max);
+        }
+        let (rtol, atol) = (self.options.rtol, self.options.atol);
+        self.stats.evaluations += 1;
+        let s = &self.state;
+        self.accelerations.initial_step(
+            self.model.get(),
+            (self.t, &s.q, &s.v, &self.start_acceleration),
+            |_, y| atol + rtol * y.abs(),
+            (0.2, max),
+            (&mut self.q_stage, &mut self.kq[1], &mut self.kv[1], &mut self.lambda_stage),
+        )
+    }
+
+    /// The stages of a step of size `h` from the state reached, the fifth-order solution in
+    /// `q_new`, `v_new`, and the scaled local error (`None` with the reason where a stage is
+    /// not determined).
+    fn stages(&mut self, h: f64) -> Result<f64, Rejection> {
+        let model = self.model.get();
+        let n = self.sizes.nq;
+        let s = &self.state;
+        self.kq[0].copy_from(&s.v);
+        self.kv[0].copy_from(&self.start_acceleration);
+        for i in 1..7 {
+            // The stage's positions move along the stages' velocities; its velocities are
+            // built in `v_new`, which after the seventh stage holds the new solution's.
+            let along = A[i][..i].iter().zip(&self.kq).filter(|(a, _)| **a != 0.0);
+            configuration::advance_by::<M>(&s.q, along.map(|(a, k)| (h * a, k)), &mut self.q_stage);
+            self.v_new.copy_from(&s.v);
+            for (j, &a) in A[i][..i].iter().enumerate() {
+                if a != 0.0 {
+                    self.v_new.axpy(h * a, &self.kv[j], 1.0);
+                }
+            }
+            self.stats.evaluations += 1;
+            let t = self.t + C[i] * h;
+            let stage = (&self.q_stage, &self.v_new);
+            if !self.accelerations.evaluate(model, t, stage, &mut self.kv[i], &mut self.lambda_stage) {
+                return Err(Rejection::Singular);
+            }
+            self.kq[i].copy_from(&self.v_new);
+        }
+        self.q_new.copy_from(&self.q_stage);
+        let (rtol, atol) = (self.options.rtol, self.options.atol);
+        let mut sum = 0.0;
+        for i in 0..n {
+            let (mut eq, mut ev) = (0.0, 0.0);
+            for (j, &e) in E.iter().enumerate() {
+                eq += e * self.kq[j][i];
+                ev += e * self.kv[j][i];
+            }
+            let wq = atol + rtol * s.q[i].abs().max(self.q_new[i].abs());
+            let wv = atol + rtol * s.v[i].abs().max(self.v_new[i].abs());
+            sum += (h * eq / wq).powi(2) + (h * ev / wv).powi(2);
+        }
+        let error = (sum / (2 * n).max(1) as f64).sqrt();
+        if error.is_finite() { Ok(error) } else { Err(Rejection::NonFinite) }
+    }
+
+    /// Hairer's stiffness test (DOPRI5): the sixth and seventh stages both sit at the step's
+    /// end, so `h ‖k₇ − k₆‖ / ‖y₇ − y₆‖` estimates `h |λ|` for the dominant eigenvalue along
+    /// their difference. Held above the stability boundary's neighbourhood on fifteen accepted
+    /// steps in a row (six below it reset the count), the step is limited by stability, not by
+    /// accuracy: the model is stiff, and an implicit method would take far larger steps.
+    fn test_stiffness(&mut self, h: f64) -> Result<(), SimError> {
+        let (mut numerator, mut denominator) = (0.0, 0.0);
+        for i in 0..self.sizes.nq {
+            let (mut dq, mut dv) = (0.0, 0.0);
+            // y₇ − y₆ = h Σ_j (b_j − a_6j) k_j; row 6 of the table ends in a zero.
+            for (j, (b, a)) in A[6].iter().zip(&A[5]).enumerate() {
+                let w = b - a;
+                dq += w * self.kq[j][i];
+                dv += w * self.kv[j][i];
+            }
+            denominator += (h * dq).powi(2) + (h * dv).powi(2);
+            numerator += (self.kq[6][i] - self.kq[5][i]).powi(2) + (self.kv[6][i] - self.kv[5][i]).powi(2);
+        }
+        if denominator <= 0.0 {
+            return Ok(());
+        }
+        let h_lambda = h * (numerator / denominator).sqrt();
+        if h_lambda > STIFF_H_LAMBDA {
+            self.stiff_steps += 1;
+            self.nonstiff_steps = 0;
+        } else {
+            self.nonstiff_steps += 1;
+            if self.nonstiff_steps == 6 {
+                self.stiff_steps = 0;
+            }
+        }
+        if self.stiff_steps < 15 {
+            return Ok(());
+        }
+        Err(SimError::Unstable {
+            t: self.t + h,
+            h,
+            detail: format!(
+                "the model is stiff here: 15 steps in a row were held at the explicit method's stability \
+                 limit (h·|λ| ≈ {h_lambda:.1}), so it would crawl; integrate it with Radau (or set \
+                 ExplicitOptions::stiffness_test to false to go on)"
+            ),
+        })
+    }
+
+    /// Attempts until a step is accepted; returns its size.
+    fn attempt(&mut self) -> Result<f64, SimError> {
+        let mut reason = Rejection::Error;
+        loop {
+            if self.stats.steps + self.stats.rejected >= self.options.max_steps {
+                return Err(SimError::TooManySteps {
+                    max_steps: self.options.max_steps,
+                    t: self.t,
+                    t_end: self.t_end,
+                });
+            }
+            let fixed = self.options.fixed_step;
+            let mut h = fixed.unwrap_or(self.h).min(self.options.max_step);
+            // The last step ends at the end time, taken whole if within 1% of it.
+            if self.t + 1.01 * h >= self.t_end || fixed.is_some() && self.t + 1.000_001 * h >= self.t_end {
+                h = self.t_end - self.t;
+            }
+            if h < Self::min_step(self.t) {
+                return Err(SimError::StepSizeTooSmall { t: self.t, h, reason: reason.reason().to_owned() });
+            }
+            let outcome = self.stages(h);
+            self.stats.factorizations = self.accelerations.factorizations;
+            match (outcome, fixed) {
+                (Ok(error), None) => {
+                    // error^0.17 and error^β = error^0.04 from one power, error^0.01.
+                    let u = rough_power(error, 0.01);
+                    let u4 = (u * u) * (u * u);
+                    let grow = (u4 * u4) * (u4 * u4) * u;
+                    if error <= 1.0 {
+                        let ratio =
+                            (grow / self.error_old / SAFETY).clamp(1.0 / MAX_GROWTH, 1.0 / MAX_SHRINK);
+                        let mut next = h / ratio;
+                        if self.rejected_last {
+                            next = next.min(h);
+                        }
+                        self.error_old = if error >= 1e-4 { u4 } else { ERROR_OLD_START };
+                        self.rejected_last = false;
+                        self.h = next.min(self.options.max_step);
+                        // Every tenth step, and every step once one looked stiff, as DOPRI5
+                        // tests (there every thousandth): a test costs a tenth of a small
+                        // model's step.
+                        let due = self.stats.steps.is_multiple_of(10) || self.stiff_steps > 0;
+                        if self.options.stiffness_test && due {
+                            self.test_stiffness(h)?;
+                        }
+                        return Ok(h);
+                    }
+                    reason = Rejection::Error;
+                    self.h = h / (grow / SAFETY).min(1.0 / MAX_SHRINK);
+                }
+                (Ok(_), Some(_)) => return Ok(h),
+                (Err(why), None) => {
+                    reason = why;
+                    self.h = 0.1 * h;
+                }
+                (Err(why), Some(_)) => {
+                    return Err(match why {
+                        Rejection::Singular => {
+                            let model = self.model.get();
+                            SimError::NotDetermined {
+                                t: self.t,
+                                cause: singular_cause(model, self.t, &self.state.q, &self.state.v),
+                            }
+                        }
+                        _ => SimError::Unstable {
+                            t: self.t,
+                            h,
+                            detail: format!(
+                                "{}: the fixed step is beyond the stability limit of the method for this \
+                                 model; take a smaller step or adaptive steps",
+                                why.reason()
+                            ),
+                        },
+                    });
+                }
+            }
+            self.stats.rejected += 1;
+            self.rejected_last = true;
+        }
+    }
+}
+
+impl<M: LagrangeDirac> Integrator<M> for Explicit<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    type Stats = ExplicitStats;
+
+    fn model(&self) -> &M {
+        self.model.get()
+    }
+
+    fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
+        self.state.clone_from(state);
+        self.previous.clone_from(state);
+        (self.t, self.t_previous, self.h_last, self.t_end) = (t0, t0, 0.0, t_end);
+        self.stats = ExplicitStats::default();
+        self.accelerations.factorizations = 0;
+        self.forget();
+        self.evaluate_start()?;
+        // The interpolation's own system, factored once here: a sparse factorisation finds
+        // its pivots (and allocates) the first time only.
+        let (probe, acceleration) = self.probe.get_mut();
+        if !probe.is_dense() {
+            let s = &self.state;
+            probe.evaluate(self.model.get(), t0, (&s.q, &s.v), acceleration, &mut self.lambda_stage);
+        }
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
+        self.h = self.initial_step();
+        Ok(())
+    }
+
+    fn model_mut(&mut self) -> Option<&mut M> {
+        self.restarts.model_mut(&mut self.model, self.t, &self.state)
+    }
+
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
+        if self.t >= t_end {
+            return Ok(());
+        }
+        self.restarts.resume(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
+        self.t_end = t_end;
+        self.forget();
+        self.evaluate_start()?;
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
+        Ok(())
+    }
+
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        self.restarts.jump(
+            self.model.get(),
+            t,
+            (self.t_previous, self.t),
+            state,
+            self.options.rtol.max(1e-8),
+        )?;
+        self.state.clone_from(state);
+        self.previous.clone_from(state);
+        (self.t, self.t_previous, self.h_last) = (t, t, 0.0);
+        self.forget();
+        self.evaluate_start()?;
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
+        Ok(())
+    }
+
+    fn end(&self) -> f64 {
+        self.t_end
+    }
+
+    fn step(&mut self) -> Result<f64, SimError> {
+        let h = self.attempt()?;
+        self.t_previous = self.t;
+        self.h_last = h;
+        self.previous.clone_from(&self.state);
+        self.t = if self.t_end - self.t == h { self.t_end } else { self.t + h };
+        self.stats.steps += 1;
+        let s = &mut self.state;
+        s.q.copy_from(&self.q_new);
+        s.v.copy_from(&self.v_new);
+        // The seventh stage was evaluated at the new solution: its factorisation projects it,
+        // and its accelerations and multipliers are the next step's first stage (first same as
+        // last). The projection moves the solution by about the local error, O(h⁶), so the
+        // first stage is then taken that far from the state: a perturbation of O(h⁷) in the
+        // next step, below its local error, which keeps the order.
+        let projection = self.accelerations.project(self.model.get(), self.t, &mut s.q, &mut s.v);
+        if !projection.reached {
+            return Err(SimError::Unstable {
+                t: self.t,
+                h,
+                detail: "the step left the constraints too far for the projection to bring the state \
+                         back to them: take a smaller step (a fixed step), or adaptive steps"
+                    .to_owned(),
+            });
+        }
+        let moved = projection.moved;
+        self.start_acceleration.copy_from(&self.kv[6]);
+        s.lambda.copy_from(&self.lambda_stage);
+        if moved {
+            self.model.get().dl_dv(self.t, &s.q, &s.v, &mut s.p);
+        } else {
+            s.p.copy_from(self.accelerations.momenta());
+        }
+        self.check_finite()?;
+        Ok(h)
+    }
+
+    fn finished(&self) -> bool {
+        self.t >= self.t_end
+    }
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn state(&self) -> &State<M> {
+        &self.state
+    }
+
+    /// The state within the last step: positions and velocities from the method's continuous
+    /// extension (order 4), put back on the constraints as the steps are; momenta from the
+    /// Legendre map and multipliers from the accelerations' system there.
+    fn interpolate(&self, t: f64, out: &mut State<M>) {
+        if self.h_last == 0.0 {
+            out.clone_from(&self.state);
+            return;
+        }
+        let theta = ((t - self.t_previous) / self.h_last).clamp(0.0, 1.0);
+        let weights = weights_at(theta);
+        let h = self.h_last;
+        // The positions' tangent `Σ w_k k_k` is built in `out.q`, then the positions move
+        // along it from the step's start.
+        for i in 0..self.sizes.nq {
+            let (mut dq, mut dv) = (0.0, 0.0);
+            for (k, w) in weights.iter().enumerate() {
+                dq += w * self.kq[k][i];
+                dv += w * self.kv[k][i];
+            }
+            out.q[i] = dq;
+            out.v[i] = self.previous.v[i] + h * dv;
+        }
+        configuration::advance_onto::<M>(&self.previous.q, h, &mut out.q);
+        let model = self.model.get();
+        let mut probe = self.probe.borrow_mut();
+        let (accelerations, acceleration) = &mut *probe;
+        let mut determined =
+            accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
+        if determined && self.sizes.nc > 0 {
+            accelerations.project(model, t, &mut out.q, &mut out.v);
+            determined = accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
+        }
+        if determined {
+            out.p.copy_from(accelerations.momenta());
+        } else {
+            out.lambda.copy_from(&self.previous.lambda);
+            out.lambda.axpy(theta, &self.state.lambda, 1.0 - theta);
+            model.dl_dv(t, &out.q, &out.v, &mut out.p);
+        }
+    }
+
+    fn stats(&self) -> ExplicitStats {
+        self.stats
+    }
+}

@@ -1,0 +1,81 @@
+//! The flat residual of a model evaluated without allocating, for Radau's stages, with the
+//! model's inputs set first when a drive sets them from time and state.
+
+use nalgebra::DefaultAllocator;
+
+use crate::model::LagrangeDirac;
+use crate::model::blocks::ResidualBlocks;
+use crate::model::flat::residual;
+use crate::model::state::State;
+use crate::shape::dims::{Sizes, Storage, VecY};
+use crate::simulate::held::Held;
+
+/// Sets a model's inputs from time and state before each evaluation. Borrowed, not boxed: an
+/// integrator holds nothing that needs dropping at the end of its borrows.
+pub(crate) type Drive<'m, M> = &'m mut dyn FnMut(f64, &State<M>, &mut M);
+
+/// Evaluates a model's flat residual `f(t, y)` without allocating: through the model's own
+/// [`LagrangeDirac::residual`](crate::model::LagrangeDirac::residual) when its sizes are fixed (its
+/// temporaries are on the stack), else through its residual blocks into storage kept here.
+pub(crate) struct Residual<'m, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// `None` for a model of fixed size.
+    scratch: Option<(State<M>, ResidualBlocks<M>)>,
+    /// The drive of the inputs and the state it reads, when there is one.
+    drive: Option<(Drive<'m, M>, State<M>)>,
+}
+
+impl<'m, M: LagrangeDirac> Residual<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The evaluator for a model of these sizes.
+    pub fn new(sizes: &Sizes) -> Self {
+        use nalgebra::Dim;
+        let fixed = M::Nq::try_to_usize().is_some() && M::Nc::try_to_usize().is_some();
+        let scratch = (!fixed).then(|| (State::with_sizes(*sizes), ResidualBlocks::with_sizes(sizes)));
+        Residual { scratch, drive: None }
+    }
+
+    /// Sets the inputs before every evaluation from now on.
+    pub fn set_drive(&mut self, drive: Drive<'m, M>, sizes: Sizes) {
+        self.drive = Some((drive, State::with_sizes(sizes)));
+    }
+
+    /// Sets the model's inputs for time `t` and state `y`, if a drive does.
+    #[inline]
+    pub fn apply(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>) {
+        if let Some((drive, state)) = &mut self.drive
+            && let Some(model) = model.get_mut()
+        {
+            state.read_y(y);
+            drive(t, state, model);
+        }
+    }
+
+    /// Sets the model's inputs for time `t` and `state`, if a drive does.
+    pub fn apply_state(&mut self, model: &mut Held<'_, M>, t: f64, state: &State<M>) {
+        if let Some((drive, _)) = &mut self.drive
+            && let Some(model) = model.get_mut()
+        {
+            drive(t, state, model);
+        }
+    }
+
+    /// Writes `f(t, y)` into `out`, the inputs set first.
+    #[inline]
+    pub fn eval(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>, out: &mut VecY<M>) {
+        self.apply(model, t, y);
+        let model = model.get();
+        match &mut self.scratch {
+            None => model.residual(t, y, out),
+            Some((state, blocks)) => {
+                state.read_y(y);
+                model.residual_blocks(t, &state.q, &state.v, &state.lambda, blocks);
+                residual(state, blocks, out);
+            }
+        }
+    }
+}

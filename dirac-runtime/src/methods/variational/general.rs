@@ -1,0 +1,276 @@
+//! The general path of a variational step: a Newton iteration on the `(n + m)` system of each
+//! stage, for any Lagrangian (configuration-dependent or degenerate mass matrices included),
+//! with the blocks stored and the systems solved as the model's algebra says.
+
+use nalgebra::DefaultAllocator;
+
+use super::work::{StageBlocks, Step};
+use crate::algebra::{Algebra, Saddle, SaddleTerms};
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::MatCQ;
+use crate::model::configuration;
+use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
+use crate::shape::layout::Unknowns;
+
+/// Which unknowns a Newton update applies to.
+#[derive(Clone, Copy)]
+enum Stage {
+    /// `(v, Λ)`.
+    One,
+    /// `(w, Γ)`: the new velocities and the stage-2 impulse.
+    Two,
+}
+
+/// Both stages.
+pub(crate) fn general_step<M: LagrangeDirac>(s: &mut Step<'_, M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    s.work.last_update = f64::INFINITY;
+    stage_one(s)?;
+    s.work.last_update = f64::INFINITY;
+    stage_two(s)
+}
+
+/// Stage 1: the new positions, through `(v, Λ)`.
+// Indexing keeps the several vectors of one component side by side.
+#[allow(clippy::needless_range_loop)]
+fn stage_one<M: LagrangeDirac>(s: &mut Step<'_, M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let unknowns = Unknowns::new(s.work.sizes.typed::<M>());
+    let (n, h) = (unknowns.n, s.h);
+    let (t0, t1, tm) = (s.t, s.t + h, s.t + 0.5 * h);
+    let model = s.model;
+    for _ in 0..s.options.max_iterations {
+        let w = &mut s.work;
+        let (q, v, x) = (&s.state.q, &w.v, &mut w.vectors);
+        configuration::advance::<M>(q, h, v, &mut x.q1);
+        configuration::advance::<M>(q, 0.5 * h, v, &mut x.qm);
+        model.dl_dv(t0, q, v, &mut x.lv0);
+        model.dl_dv(t1, &x.q1, v, &mut x.lv1);
+        model.dl_dq(t0, q, v, &mut x.lq);
+        model.force(tm, &x.qm, v, &mut x.f);
+        // The constraint impulse A(q_k)ᵀ Λ, held in `target` (unused in this stage).
+        x.target.fill(0.0);
+        M::Algebra::cq_tr_mul(&w.a0, 1.0, w.big_lambda.as_slice(), x.target.as_mut_slice());
+        let r = x.r.as_mut_slice();
+        for i in 0..n {
+            r[i] = 0.5 * (x.lv0[i] + x.lv1[i]) - 0.5 * h * (x.lq[i] + x.f[i]) - x.target[i] - s.state.p[i];
+        }
+
+        let b = &mut w.blocks;
+        model.l_vv(t0, q, v, &mut b.lvv0);
+        model.l_vv(t1, &x.q1, v, &mut b.lvv1);
+        model.l_vq(t0, q, v, &mut b.lvq0);
+        model.l_vq(t1, &x.q1, v, &mut b.lvq1);
+        model.force_dq(tm, &x.qm, v, &mut b.fq);
+        model.force_dv(tm, &x.qm, v, &mut b.fv);
+        model.constraint_matrix(t1, &x.q1, &mut b.a1);
+        model.constraint_matrix(tm, &x.qm, &mut b.am);
+        model.dav_dq(tm, &x.qm, v, &mut b.gm);
+        let at = StagePoints { t: t0, h, q1: &x.q1, qm: &x.qm };
+        stage_one_constraints(
+            model,
+            &w.sizes.typed::<M>(),
+            at,
+            (&mut x.phi, &mut x.rate),
+            &b.am,
+            v,
+            unknowns.split_mut(r).1,
+        );
+        assemble_stage_one::<M>(&mut w.saddle, b, &w.a0, h);
+        if newton_update(s, Stage::One)? {
+            return Ok(());
+        }
+    }
+    Err(s.diverged())
+}
+
+/// The stage-1 matrix: `∂/∂v` of the momentum residual (top) and of the constraints (bottom).
+fn assemble_stage_one<M: LagrangeDirac>(
+    saddle: &mut <M::Algebra as Algebra<M>>::Saddle<f64>,
+    b: &mut StageBlocks<M>,
+    a0: &MatCQ<M>,
+    h: f64,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    // ½ (L_vv(q_k) + L_vv(q_{k+1}) + h L_vq(q_{k+1})) − (h/2)(L_vq(q_k)ᵀ + F_v + (h/2) F_q)
+    let terms =
+        [(0.5, &b.lvv0), (0.5, &b.lvv1), (0.5 * h, &b.lvq1), (-0.5 * h, &b.fv), (-0.25 * h * h, &b.fq)];
+    let rest = SaddleTerms {
+        top: &[],
+        top_transposed: &[(-0.5 * h, &b.lvq0)],
+        identity: 0.0,
+        right: &[(-1.0, a0)],
+        // Holonomic rows: A(q_{k+1}); the others: A(q_{k+½}) + (h/2) ∂(A v)/∂q there.
+        bottom: &[(1.0, 0.0, &b.a1), (0.0, 1.0, &b.am), (0.0, 0.5 * h, &b.gm)],
+        corner: (0.0, 0.0),
+    };
+    if M::Algebra::dense_qq(&b.sum).is_some() {
+        // Dense blocks store every entry in the same order: the top terms sum value by value,
+        // in plain loops over equal slices that vectorise whatever else the step inlines.
+        let sum = M::Algebra::qq_values_mut(&mut b.sum);
+        sum.fill(0.0);
+        for (c, x) in terms {
+            for (y, x) in sum.iter_mut().zip(M::Algebra::qq_values(x)) {
+                *y += c * x;
+            }
+        }
+        saddle.assemble(&SaddleTerms { top: &[(1.0, &b.sum)], ..rest });
+    } else {
+        saddle.assemble(&SaddleTerms { top: &terms, ..rest });
+    }
+}
+
+/// Where stage 1 evaluates the constraints: the end point and the midpoint of a step of size
+/// `h` from `t`.
+#[derive(Clone, Copy)]
+pub(crate) struct StagePoints<'a, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub t: f64,
+    pub h: f64,
+    pub q1: &'a VecQ<M>,
+    pub qm: &'a VecQ<M>,
+}
+
+/// `φ(q_{k+1}, t_{k+1})/h` for holonomic rows, `A(q_{k+½}, t_{k+½}) v + b(q_{k+½}, t_{k+½})`
+/// for the others, into `out`; `am` holds `A(q_{k+½}, t_{k+½})`.
+pub(crate) fn stage_one_constraints<M: LagrangeDirac>(
+    model: &M,
+    sizes: &Sizes,
+    at: StagePoints<'_, M>,
+    (phi, rate): (&mut VecH<M>, &mut VecC<M>),
+    am: &MatCQ<M>,
+    v: &VecQ<M>,
+    out: &mut [f64],
+) where
+    DefaultAllocator: Storage<M>,
+{
+    if sizes.nc == 0 {
+        return;
+    }
+    if M::PRESCRIBED {
+        model.constraint_rate(at.t + 0.5 * at.h, at.qm, rate);
+        out.copy_from_slice(rate.as_slice());
+    } else {
+        out.fill(0.0);
+    }
+    M::Algebra::cq_mul(am, 1.0, v.as_slice(), out);
+    model.holonomic(at.t + at.h, at.q1, phi);
+    for j in 0..sizes.nh {
+        out[j] = phi[j] / at.h;
+    }
+}
+
+/// Stage 2: the new momenta and velocities, through `(w, Γ)`.
+#[allow(clippy::needless_range_loop)]
+fn stage_two<M: LagrangeDirac>(s: &mut Step<'_, M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let unknowns = Unknowns::new(s.work.sizes.typed::<M>());
+    let (n, h) = (unknowns.n, s.h);
+    let (t0, t1, tm) = (s.t, s.t + h, s.t + 0.5 * h);
+    let model = s.model;
+    {
+        let w = &mut s.work;
+        let (q, v, x) = (&s.state.q, &w.v, &mut w.vectors);
+        configuration::advance::<M>(q, h, v, &mut x.q1);
+        configuration::advance::<M>(q, 0.5 * h, v, &mut x.qm);
+        model.dl_dv(t0, q, v, &mut x.lv0);
+        model.dl_dv(t1, &x.q1, v, &mut x.lv1);
+        model.dl_dq(t1, &x.q1, v, &mut x.lq);
+        model.force(tm, &x.qm, v, &mut x.f);
+        w.work += h * x.f.dot(v);
+        for i in 0..n {
+            x.target[i] = 0.5 * (x.lv0[i] + x.lv1[i]) + 0.5 * h * (x.lq[i] + x.f[i]);
+        }
+        model.constraint_matrix(t1, &x.q1, &mut w.blocks.a1);
+        if M::PRESCRIBED {
+            model.constraint_rate(t1, &x.q1, &mut x.rate);
+        }
+        s.state.v.copy_from(v);
+    }
+    for _ in 0..s.options.max_iterations {
+        let w = &mut s.work;
+        let (x, b) = (&mut w.vectors, &mut w.blocks);
+        let wv = &s.state.v;
+        model.dl_dv(t1, &x.q1, wv, &mut x.lv1);
+        // The constraint impulse A(q_{k+1})ᵀ Γ, held in `lv0` (not needed after `target`).
+        x.lv0.fill(0.0);
+        M::Algebra::cq_tr_mul(&b.a1, 1.0, w.gamma.as_slice(), x.lv0.as_mut_slice());
+        let (r_v, r_lambda) = unknowns.split_mut(x.r.as_mut_slice());
+        for (i, r) in r_v.iter_mut().enumerate() {
+            *r = x.lv1[i] - x.lv0[i] - x.target[i];
+        }
+        if M::PRESCRIBED {
+            r_lambda.copy_from_slice(x.rate.as_slice());
+        } else {
+            r_lambda.fill(0.0);
+        }
+        M::Algebra::cq_mul(&b.a1, 1.0, wv.as_slice(), r_lambda);
+        model.l_vv(t1, &x.q1, wv, &mut b.lvv1);
+        w.saddle.assemble(&SaddleTerms {
+            top: &[(1.0, &b.lvv1)],
+            top_transposed: &[],
+            identity: 0.0,
+            right: &[(-1.0, &b.a1)],
+            bottom: &[(1.0, 1.0, &b.a1)],
+            corner: (0.0, 0.0),
+        });
+        if newton_update(s, Stage::Two)? {
+            let x = &s.work.vectors;
+            model.dl_dv(t1, &x.q1, &s.state.v, &mut s.state.p);
+            return Ok(());
+        }
+    }
+    Err(s.diverged())
+}
+
+/// Factors the assembled stage matrix, applies the Newton update in `work.vectors.r` to the
+/// stage's unknowns and says whether the iteration has converged.
+#[inline(always)]
+fn newton_update<M: LagrangeDirac>(s: &mut Step<'_, M>, stage: Stage) -> Result<bool, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let unknowns = Unknowns::new(s.work.sizes.typed::<M>());
+    s.stats.factorizations += 1;
+    if let Err(singular) = s.work.saddle.factor() {
+        return Err(s.singular(singular.column));
+    }
+    let r = s.work.vectors.r.as_mut_slice();
+    s.work.saddle.solve(r);
+    s.stats.newton_iterations += 1;
+    let (x, mult) = match stage {
+        Stage::One => (&mut s.work.v, &mut s.work.big_lambda),
+        Stage::Two => (&mut s.state.v, &mut s.work.gamma),
+    };
+    let tolerance = s.options.tolerance;
+    let mut converged = true;
+    let mut finite = true;
+    let (r_v, r_lambda) = unknowns.split(r);
+    for (i, r) in r_v.iter().enumerate() {
+        x[i] -= r;
+        converged &= r.abs() <= tolerance * (1.0 + x[i].abs());
+        finite &= r.is_finite();
+    }
+    for (j, r) in r_lambda.iter().enumerate() {
+        mult[j] -= r;
+        converged &= r.abs() <= tolerance * (1.0 + mult[j].abs());
+        finite &= r.is_finite();
+    }
+    if !finite {
+        return Err(SimError::NonFinite {
+            t: s.t,
+            component: "a Newton update of the variational step".into(),
+        });
+    }
+    Ok(converged)
+}

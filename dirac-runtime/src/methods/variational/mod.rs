@@ -1,0 +1,468 @@
+//! A variational integrator from the discrete Hamilton-Pontryagin-d'Alembert principle:
+//! second order, fixed step, symplectic for unconstrained and holonomic systems, with
+//! constraints of every kind (holonomic, nonholonomic, interconnection) enforced at every step.
+//!
+//! The discrete Lagrangian is the trapezoidal `L_d = (h/2) [L(q_k, v, t_k) + L(q_{k+1}, v, t_{k+1})]`
+//! with `v = (q_{k+1} − q_k)/h`, forces enter by the discrete Lagrange-d'Alembert principle at
+//! the midpoint (`F_d± = (h/2) F(q_{k+½}, v, t_{k+½})`), and constraint impulses act at both
+//! ends, as in RATTLE (Marsden & West 2001, §3.4). With `P(v) = ½ [L_v(q_k, v) + L_v(q_{k+1}, v)]`
+//! one step from `(q_k, p_k)` solves
+//!
+//! ```text
+//! stage 1, for (v, Λ):  p_k = P(v) − (h/2)(L_q(q_k, v) + F) − A(q_k)ᵀ Λ
+//!                       φ(q_k + h v) = 0                      (holonomic rows)
+//!                       A(q_k + h v/2) v = 0                  (other rows: nonholonomic and
+//!                                                              interconnection one-forms)
+//! stage 2, for (w, Γ):  L_v(q_{k+1}, w) − A(q_{k+1})ᵀ Γ = P(v) + (h/2)(L_q(q_{k+1}, v) + F)
+//!                       A(q_{k+1}) w = 0
+//! ```
+//!
+//! and sets `p_{k+1} = L_v(q_{k+1}, w)`: the new state lies on the constraint manifold and in
+//! the image of the Legendre map of the constraint distribution, so a degenerate Lagrangian
+//! (whose momenta are constrained, `p̄2 = 0`) is handled like any other. For a regular
+//! Lagrangian `½ vᵀ M v − V(q)` without constraints the step is velocity Verlet; with
+//! holonomic constraints it is RATTLE.
+//!
+//! Events are located on the discrete flow: the state at a time within a step is a step of
+//! the method to that time ([`Integrator::state_at`]), so an impact time is solved within the
+//! step, on the trajectory the method takes. A restart there (an impact's reset) keeps the
+//! grid: the step after it ends where the interrupted one would have, so the map across an
+//! impact (a step `αh` to it, the rest `(1 − α)h` after it) is as symmetric in time as the
+//! method, and the energy error stays bounded over many elastic impacts (a collision
+//! integrator in the sense of Fetecau, Marsden, Ortiz and West 2003, with the impact law left
+//! to the event's action).
+//!
+//! Each stage is a Newton iteration on a system of size `n + m`, the size of the condensed
+//! systems of the design notes, factored on the stack (`general`); separable models take a
+//! shortcut through `m × m` systems (`separable`). A step allocates nothing.
+
+mod general;
+pub(crate) mod separable;
+mod work;
+
+use nalgebra::DefaultAllocator;
+
+use std::cell::RefCell;
+
+use self::general::general_step;
+use self::separable::separable_step;
+use self::work::{Step, Work};
+pub use self::work::{VariationalOptions, VariationalStats};
+use crate::algebra::Algebra;
+use crate::algebra::mass::Mass;
+use crate::analysis::projection::Projector;
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::configuration;
+use crate::model::state::State;
+use crate::shape::dims::{Sizes, Storage};
+use crate::simulate::held::Held;
+use crate::simulate::integrator::Integrator;
+use crate::simulate::restart::Restarts;
+
+/// The variational integrator for a model `M`, with fixed step `h`.
+pub struct Variational<'m, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    model: Held<'m, M>,
+    h: f64,
+    options: VariationalOptions,
+    t0: f64,
+    t: f64,
+    /// The start of the last step (the start, or the restart, before the first).
+    t_previous: f64,
+    t_end: f64,
+    /// Steps taken since the start, and the number that reaches the end time.
+    taken: usize,
+    total: usize,
+    /// The energy at the start, and the size of the energy's parts `|⟨p, v⟩| + |L|` there,
+    /// for the stability check.
+    energy0: f64,
+    /// The largest size of the energy's parts since the start (restarts included): errors far
+    /// below it are round-off, even where the energy's parts vanish (a body come to rest).
+    energy_scale: f64,
+    /// The state reached: `v` is the stage-2 velocity `w`, and `λ` the multipliers
+    /// extrapolated from the steps' impulses to second order (see `update_multipliers`).
+    state: State<M>,
+    /// The state at the start of the last step, for interpolation.
+    previous: State<M>,
+    work: Work<M>,
+    /// The factored constant mass matrix of a separable dense model, when the shortcut is on.
+    mass: Option<Mass<M>>,
+    /// Puts interpolated samples back on the constraints.
+    projector: RefCell<Projector<M>>,
+    /// The state and work space of steps to times within the last step
+    /// ([`Integrator::state_at`]), apart from the integration's own.
+    probe: RefCell<(State<M>, Work<M>, VariationalStats)>,
+    sizes: Sizes,
+    stats: VariationalStats,
+    /// What a restart checks after the model was handed out for a change.
+    restarts: Restarts,
+}
+
+impl<'m, M: LagrangeDirac> Variational<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// An integrator for `model` with step `h`.
+    ///
+    /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
+    /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
+    pub fn new(model: impl Into<Held<'m, M>>, h: f64, options: VariationalOptions) -> Result<Self, SimError> {
+        let model = model.into();
+        if h.is_nan() || h <= 0.0 || h.is_infinite() {
+            return Err(SimError::InvalidOption {
+                what: "step",
+                reason: format!("{h} is not positive and finite"),
+            });
+        }
+        options.validate()?;
+        let sizes = model.sizes();
+        let (work, projector) = (Work::new(model.get()), RefCell::new(Projector::new(model.get())));
+        let probe =
+            RefCell::new((State::with_sizes(sizes), Work::new(model.get()), VariationalStats::default()));
+        Ok(Variational {
+            model,
+            h,
+            options,
+            t0: 0.0,
+            t: 0.0,
+            t_previous: 0.0,
+            t_end: 0.0,
+            taken: 0,
+            total: 0,
+            energy0: 0.0,
+            energy_scale: 0.0,
+            state: State::with_sizes(sizes),
+            previous: State::with_sizes(sizes),
+            work,
+            mass: None,
+            projector,
+            probe,
+            sizes,
+            stats: VariationalStats::default(),
+            restarts: Restarts::default(),
+        })
+    }
+}
+
+impl<M: LagrangeDirac> Variational<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Steps from `self.state` at `t0` towards `t_end` on a new grid: the energy reference
+    /// and the work of the forces start again, and a separable model's mass matrix is
+    /// factored again (a change of the model may have changed it).
+    fn begin(&mut self, t0: f64, t_end: f64) -> Result<(), SimError> {
+        self.total = self.steps_to(t0, t_end)?;
+        self.taken = 0;
+        self.t0 = t0;
+        self.t_end = t_end;
+        self.rebase(t0);
+        Ok(())
+    }
+
+    /// Carries on from `self.state` at `t` on the present grid: the energy reference and the
+    /// work of the forces start again, and a separable model's mass matrix is factored again
+    /// (a change of the model may have changed it).
+    fn rebase(&mut self, t0: f64) {
+        self.t = t0;
+        self.t_previous = t0;
+        self.work.work = 0.0;
+        self.work.midpoint.1 = 0.0;
+        let model = self.model.get();
+        let s = &self.state;
+        self.energy0 = model.energy(t0, &s.q, &s.v, &s.p);
+        self.previous.clone_from(s);
+        self.mass = None;
+        if M::SEPARABLE && self.options.use_structure {
+            let lvv = &mut self.work.blocks.lvv0;
+            model.l_vv(t0, &s.q, &s.v, lvv);
+            self.mass = M::Algebra::dense_qq(lvv).and_then(|matrix| Mass::new(&self.sizes, matrix));
+            model.dl_dq(t0, &s.q, &s.v, &mut self.work.dl_dq);
+        }
+    }
+
+    /// The size of the next step and how many grid intervals it closes: one, to the next
+    /// grid point (the end time after the last); after a restart between grid points, the
+    /// rest of the interval, joined to the next one when it is shorter than a millionth of
+    /// a step.
+    fn next_step(&self) -> (f64, usize) {
+        let k = self.taken;
+        if self.t == self.time_after(k) {
+            return (if k + 1 == self.total { self.t_end - self.t } else { self.h }, 1);
+        }
+        let short = k + 2 <= self.total && self.time_after(k + 1) - self.t < 1e-6 * self.h;
+        let intervals = if short { 2 } else { 1 };
+        (self.time_after(k + intervals) - self.t, intervals)
+    }
+
+    /// The multipliers at the end of a step of size `h`. Each of the impulses `Λ` and `Γ` alone
+    /// gives them to first order only; their sum over the step, `μ = (Λ + Γ)/h`, gives them at
+    /// the step's midpoint to second order. They are extrapolated from this midpoint and the
+    /// one before (from the multipliers at the start, after a start or restart) to the end of
+    /// the step, to second order.
+    fn update_multipliers(&mut self, h: f64) {
+        let w = &mut self.work;
+        let (previous, h_previous) = &mut w.midpoint;
+        let start = *h_previous == 0.0;
+        // The step's end lies h/2 beyond its midpoint, which lies (h_previous + h)/2 beyond
+        // the midpoint before (h/2 beyond the start after a start or restart).
+        let beyond = if start { 1.0 } else { h / (*h_previous + h) };
+        let inverse_h = 1.0 / h;
+        for j in 0..self.sizes.typed::<M>().nc {
+            let mu = (w.big_lambda[j] + w.gamma[j]) * inverse_h;
+            let before = if start { self.state.lambda[j] } else { previous[j] };
+            self.state.lambda[j] = mu + (mu - before) * beyond;
+            previous[j] = mu;
+        }
+        *h_previous = h;
+    }
+
+    /// The work of the step's constraint impulses, `−⟨Λ, b(q_k, t_k)⟩ − ⟨Γ, b(q_{k+1}, t_{k+1})⟩`
+    /// (each impulse times the velocity its constraint prescribes), into the work the energy
+    /// check allows for: zero unless a constraint prescribes a motion.
+    fn add_constraint_work(&mut self, h: f64) {
+        let model = self.model.get();
+        let w = &mut self.work;
+        model.constraint_rate(self.t, &self.state.q, &mut w.vectors.rate);
+        w.work -= w.vectors.rate.dot(&w.big_lambda);
+        configuration::advance::<M>(&self.state.q, h, &w.v, &mut w.vectors.q1);
+        model.constraint_rate(self.t + h, &w.vectors.q1, &mut w.vectors.rate);
+        w.work -= w.vectors.rate.dot(&w.gamma);
+    }
+
+    /// The number of steps from `t0` to `t_end`, the last one possibly shorter; an error if
+    /// the step cannot advance time at that magnitude or the budget does not allow them.
+    fn steps_to(&self, t0: f64, t_end: f64) -> Result<usize, SimError> {
+        let h = self.h;
+        if h <= f64::EPSILON * t0.abs().max(t_end.abs()) {
+            return Err(SimError::StepSizeTooSmall {
+                t: t0,
+                h,
+                reason: format!(
+                    "the step does not advance time at t = {t0}: its size is below the resolution of t"
+                ),
+            });
+        }
+        // A last step shorter than a millionth of h is folded into the one before it.
+        let steps = ((t_end - t0) / h - 1e-6).ceil().max(1.0);
+        if steps > self.options.max_steps as f64 {
+            return Err(SimError::TooManySteps { max_steps: self.options.max_steps, t: t0, t_end });
+        }
+        Ok(steps as usize)
+    }
+
+    /// The time after `k` steps: `t0 + k h`, except the end time after the last.
+    fn time_after(&self, k: usize) -> f64 {
+        if k >= self.total { self.t_end } else { self.t0 + k as f64 * self.h }
+    }
+
+    /// A fixed step beyond the method's stability limit makes the discrete solution grow
+    /// geometrically: the energy error (corrected by the work of the forces and of the
+    /// Lagrangian's time dependence) then becomes as large as the energy's own parts, which in
+    /// a stable run it never approaches.
+    fn check_stability(&mut self) -> Result<(), SimError> {
+        let s = &self.state;
+        let lagrangian = self.model.get().lagrangian(self.t, &s.q, &s.v);
+        let kinetic = s.p.dot(&s.v);
+        let energy = kinetic - lagrangian;
+        let error = (energy - self.energy0 - self.work.work).abs();
+        let size = kinetic.abs() + lagrangian.abs() + self.energy0.abs();
+        self.energy_scale = self.energy_scale.max(size);
+        if error.is_finite() && error <= 0.5 * size.max(1e-9 * self.energy_scale) || size == 0.0 {
+            return Ok(());
+        }
+        Err(SimError::Unstable {
+            t: self.t,
+            h: self.h,
+            detail: format!(
+                "the energy went from {:e} to {energy:e} (the forces did {:e} of work): the step is beyond \
+                 the stability limit of the method for this model; take a smaller step",
+                self.energy0, self.work.work
+            ),
+        })
+    }
+}
+
+impl<M: LagrangeDirac> Integrator<M> for Variational<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    type Stats = VariationalStats;
+
+    fn model(&self) -> &M {
+        self.model.get()
+    }
+
+    fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        self.restarts.start(self.model.get(), (t0, t_end), state, 1e-8)?;
+        self.state.clone_from(state);
+        self.work.big_lambda.fill(0.0);
+        self.work.gamma.fill(0.0);
+        self.stats = VariationalStats::default();
+        self.energy_scale = 0.0;
+        self.begin(t0, t_end)
+    }
+
+    fn model_mut(&mut self) -> Option<&mut M> {
+        self.restarts.model_mut(&mut self.model, self.t, &self.state)
+    }
+
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
+        if self.t >= t_end {
+            return Ok(());
+        }
+        self.restarts.resume(self.model.get(), self.t, &self.state, 1e-8)?;
+        self.begin(self.t, t_end)
+    }
+
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        self.restarts.jump(self.model.get(), t, (self.t_previous, self.t), state, 1e-8)?;
+        self.state.clone_from(state);
+        self.work.big_lambda.fill(0.0);
+        self.work.gamma.fill(0.0);
+        if t >= self.t_end {
+            // At the end time: nothing is left to step.
+            (self.t, self.t_previous, self.t0, self.taken, self.total) = (t, t, t, 0, 0);
+            return Ok(());
+        }
+        // The grid stays: the next step ends where the last one did. Across an impact the map
+        // is then a step αh to it and the rest, (1 − α)h, after it, which is as symmetric in
+        // time as the method itself; restarting the grid at the impact instead makes the
+        // energy drift over many impacts.
+        if t < self.t {
+            self.taken -= 1;
+        }
+        self.rebase(t);
+        Ok(())
+    }
+
+    fn end(&self) -> f64 {
+        self.t_end
+    }
+
+    /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
+    /// returns its size.
+    fn step(&mut self) -> Result<f64, SimError> {
+        let (h, intervals) = self.next_step();
+        self.t_previous = self.t;
+        self.previous.clone_from(&self.state);
+        self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
+        self.work.v.copy_from(&self.state.v);
+        self.work.big_lambda.copy_from(&self.work.gamma);
+        let mut step = Step {
+            model: self.model.get(),
+            h,
+            t: self.t,
+            options: &self.options,
+            state: &mut self.state,
+            work: &mut self.work,
+            stats: &mut self.stats,
+        };
+        match &self.mass {
+            Some(mass) => separable_step(&mut step, mass)?,
+            None => general_step(&mut step)?,
+        }
+        let qm = &mut self.work.vectors.qm;
+        configuration::advance::<M>(&self.state.q, 0.5 * h, &self.work.v, qm);
+        self.work.work -= h * self.model.get().dl_dt(self.t + 0.5 * h, qm, &self.work.v);
+        if M::PRESCRIBED {
+            self.add_constraint_work(h);
+        }
+        configuration::advance_in_place::<M>(&mut self.state.q, h, self.work.v.as_slice());
+        self.stats.steps += 1;
+        self.taken += intervals;
+        self.t = self.time_after(self.taken);
+        self.update_multipliers(h);
+        let s = &self.state;
+        // An index loop: the chained iterators of nalgebra cost more than the step itself.
+        if let Some(i) =
+            (0..self.sizes.typed::<M>().nq).find(|&i| !(s.q[i].is_finite() && s.p[i].is_finite()))
+        {
+            let names = self.model.get().coordinate_names();
+            return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
+        }
+        if self.taken.is_multiple_of(16) || self.finished() {
+            self.check_stability()?;
+        }
+        Ok(h)
+    }
+
+    /// Whether the end time has been reached.
+    fn finished(&self) -> bool {
+        self.taken >= self.total
+    }
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn state(&self) -> &State<M> {
+        &self.state
+    }
+
+    /// The state between step points: positions and velocities interpolated linearly (second
+    /// order, like the method) and put back on the constraints (positions onto `φ(q, t) = 0`,
+    /// velocities onto `A(q, t) v + b(q, t) = 0`, each by the smallest correction), momenta from the
+    /// Legendre map, multipliers interpolated.
+    fn interpolate(&self, t: f64, out: &mut State<M>) {
+        let t_previous = self.t_previous;
+        let s = (t - t_previous) / (self.t - t_previous);
+        configuration::between::<M>(&self.previous.q, &self.state.q, s, &mut out.q);
+        // Velocities and multipliers by the same weights; momenta from the Legendre map below.
+        let (a, b) = (&self.previous, &self.state);
+        out.v.zip_zip_apply(&a.v, &b.v, |x, a, b| *x = a * (1.0 - s) + b * s);
+        out.lambda.zip_zip_apply(&a.lambda, &b.lambda, |x, a, b| *x = a * (1.0 - s) + b * s);
+        if self.sizes.nc > 0 {
+            self.projector.borrow_mut().project(self.model.get(), t, &mut out.q, &mut out.v);
+        }
+        self.model.get().dl_dv(t, &out.q, &out.v, &mut out.p);
+    }
+
+    /// A step of the method from the last step's start to `t`: the discrete flow, on which
+    /// events are located, so that an impact lies on the trajectory the integrator would
+    /// have taken (the impact time solved within the step) and a restart there carries on
+    /// the method's energy behaviour instead of an interpolation's error.
+    fn state_at(&self, t: f64, out: &mut State<M>) -> Result<(), SimError> {
+        let t_previous = self.t_previous;
+        let (h, h_last) = (t - t_previous, self.t - t_previous);
+        if h <= 0.0 || h >= h_last {
+            out.clone_from(if h <= 0.0 { &self.previous } else { &self.state });
+            return Ok(());
+        }
+        let model = self.model.get();
+        let mut probe = self.probe.borrow_mut();
+        let (state, work, stats) = &mut *probe;
+        state.clone_from(&self.previous);
+        model.constraint_matrix(t_previous, &state.q, &mut work.a0);
+        work.v.copy_from(&state.v);
+        // The last step's impulses, scaled to the shorter step, start Newton.
+        let share = h / h_last;
+        work.big_lambda.copy_from(&self.work.big_lambda);
+        work.big_lambda *= share;
+        work.gamma.copy_from(&self.work.gamma);
+        work.gamma *= share;
+        let mut step = Step { model, h, t: t_previous, options: &self.options, state, work, stats };
+        match &self.mass {
+            Some(mass) => {
+                model.dl_dq(t_previous, &step.state.q, &step.state.v, &mut step.work.dl_dq);
+                separable_step(&mut step, mass)?;
+            }
+            None => general_step(&mut step)?,
+        }
+        configuration::advance_in_place::<M>(&mut state.q, h, work.v.as_slice());
+        out.q.copy_from(&state.q);
+        out.v.copy_from(&state.v);
+        out.p.copy_from(&state.p);
+        // The multipliers as the interpolation has them.
+        out.lambda.copy_from(&self.previous.lambda);
+        out.lambda.axpy(share, &self.state.lambda, 1.0 - share);
+        Ok(())
+    }
+
+    fn stats(&self) -> VariationalStats {
+        self.stats
+    }
+}

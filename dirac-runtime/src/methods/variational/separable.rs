@@ -1,0 +1,154 @@
+//! The separable path of a variational step, for `L = ½ vᵀ M v − V(q, t)` with a constant,
+//! nonsingular mass matrix and no forces: `M v = p_k + (h/2) ∂L/∂q(q_k) + A(q_k)ᵀ Λ`, so with
+//! `M` factored once, stage 1 is Newton on `Λ` alone (SHAKE) and stage 2 a linear system in
+//! `Γ` (RATTLE's velocity projection), both `m × m`. Dense models only: it reads their blocks
+//! through [`Algebra::dense_cq`].
+
+use nalgebra::{DefaultAllocator, OMatrix};
+
+use super::general::{StagePoints, stage_one_constraints};
+use super::work::Step;
+use crate::algebra::Algebra;
+use crate::algebra::lu::Lu;
+use crate::algebra::mass::Mass;
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::configuration;
+use crate::shape::dims::{Dimensions, Storage, VecQ};
+
+/// A dense `m × n` block.
+type Cq<M> = OMatrix<f64, <M as Dimensions>::Nc, <M as Dimensions>::Nq>;
+
+/// A block of a dense model, which the separable path is only taken for.
+fn dense<M: LagrangeDirac>(b: &crate::model::MatCQ<M>) -> &Cq<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    M::Algebra::dense_cq(b).expect("the separable path is taken for dense models only")
+}
+
+/// Both stages on the separable path.
+pub(crate) fn separable_step<M: LagrangeDirac>(s: &mut Step<'_, M>, mass: &Mass<M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (m, h) = (s.work.sizes.typed::<M>().nc, s.h);
+    let t1 = s.t + h;
+    let mut v_free = &s.state.p + &s.work.dl_dq * (0.5 * h);
+    mass.solve(&mut v_free);
+    if m == 0 {
+        s.work.v.copy_from(&v_free);
+    } else {
+        shake(s, mass, &v_free)?;
+    }
+    let mut q1 = s.work.sizes.zeros_q::<M>();
+    configuration::advance::<M>(&s.state.q, h, &s.work.v, &mut q1);
+    let mut dl_dq1 = s.work.sizes.zeros_q::<M>();
+    s.model.dl_dq(t1, &q1, &s.work.v, &mut dl_dq1);
+    // M v = p_k + (h/2) g_k + A_kᵀ Λ, so P(v) + (h/2) g_{k+1} needs no product with M.
+    let a0 = dense::<M>(&s.work.a0);
+    let target = &s.state.p + (&s.work.dl_dq + &dl_dq1) * (0.5 * h) + a0.transpose() * &s.work.big_lambda;
+    let mut w = target.clone();
+    mass.solve(&mut w);
+    if m == 0 {
+        s.state.v.copy_from(&w);
+        s.state.p.copy_from(&target);
+    } else {
+        s.model.constraint_matrix(t1, &q1, &mut s.work.blocks.a1);
+        let a1 = dense::<M>(&s.work.blocks.a1).clone();
+        let d = mass.solve_transpose(&a1);
+        let mut gamma = -(&a1 * &w);
+        if M::PRESCRIBED {
+            s.model.constraint_rate(t1, &q1, &mut s.work.vectors.rate);
+            gamma -= &s.work.vectors.rate;
+        }
+        let small = factor_small(s, &(&a1 * &d))?;
+        small.solve(&mut gamma);
+        s.work.gamma.copy_from(&gamma);
+        s.state.v.copy_from(&(w + d * &gamma));
+        s.state.p.copy_from(&(target + a1.transpose() * &gamma));
+    }
+    s.work.dl_dq.copy_from(&dl_dq1);
+    Ok(())
+}
+
+/// Stage 1: Newton on `Λ` for `v = v_free + M⁻¹ A(q_k)ᵀ Λ` on the constraints.
+fn shake<M: LagrangeDirac>(s: &mut Step<'_, M>, mass: &Mass<M>, v_free: &VecQ<M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (h, sizes) = (s.h, s.work.sizes.typed::<M>());
+    let b = mass.solve_transpose(dense::<M>(&s.work.a0));
+    s.work.last_update = f64::INFINITY;
+    for _ in 0..s.options.max_iterations {
+        s.work.v.copy_from(&(v_free + &b * &s.work.big_lambda));
+        let (w, model) = (&mut *s.work, s.model);
+        let x = &mut w.vectors;
+        configuration::advance::<M>(&s.state.q, h, &w.v, &mut x.q1);
+        configuration::advance::<M>(&s.state.q, 0.5 * h, &w.v, &mut x.qm);
+        let (t1, tm) = (s.t + h, s.t + 0.5 * h);
+        model.constraint_matrix(t1, &x.q1, &mut w.blocks.a1);
+        model.constraint_matrix(tm, &x.qm, &mut w.blocks.am);
+        model.dav_dq(tm, &x.qm, &w.v, &mut w.blocks.gm);
+        let mut r = sizes.zeros_c::<M>();
+        let at = StagePoints { t: s.t, h, q1: &x.q1, qm: &x.qm };
+        stage_one_constraints(
+            model,
+            &sizes,
+            at,
+            (&mut x.phi, &mut x.rate),
+            &w.blocks.am,
+            &w.v,
+            r.as_mut_slice(),
+        );
+        // ∂/∂v of the constraints: A(q_{k+1}) in holonomic rows, A + (h/2) ∂(A v + b)/∂q at the
+        // midpoint in the others.
+        let (a1, am, gm) = (dense::<M>(&w.blocks.a1), dense::<M>(&w.blocks.am), dense::<M>(&w.blocks.gm));
+        let mut c = am + gm * (0.5 * h);
+        for j in 0..sizes.nh {
+            c.row_mut(j).copy_from(&a1.row(j));
+        }
+        let small = factor_small(s, &(c * &b))?;
+        small.solve(&mut r);
+        s.work.big_lambda -= &r;
+        s.stats.newton_iterations += 1;
+        // Converged when the velocities stop moving: with a small mass a tiny impulse moves
+        // them far, so the impulse's own update says nothing.
+        let size = (&b * &r).amax();
+        let scale = 1.0 + s.work.v.amax();
+        let tolerance = s.options.tolerance;
+        let stalled = size >= 0.5 * s.work.last_update && size <= 1e3 * tolerance * scale;
+        s.work.last_update = size;
+        if size <= tolerance * scale || stalled {
+            s.work.v.copy_from(&(v_free + &b * &s.work.big_lambda));
+            return Ok(());
+        }
+    }
+    Err(s.diverged())
+}
+
+/// Factors the `m × m` matrix `matrix` in the work space's storage.
+#[inline(always)]
+fn factor_small<'s, M: LagrangeDirac>(
+    s: &'s mut Step<'_, M>,
+    matrix: &OMatrix<f64, M::Nc, M::Nc>,
+) -> Result<&'s Lu<f64, M::Nc>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    s.stats.factorizations += 1;
+    let m = s.work.sizes.nc;
+    let small = s.work.small.get_or_insert_with(|| Lu::new(m));
+    small.matrix_mut().copy_from(matrix);
+    match small.factor() {
+        Ok(()) => Ok(small),
+        Err(e) => Err(SimError::SingularMatrix {
+            t: s.t,
+            h: s.h,
+            detail: format!(
+                "the constraint `{}` is dependent on the others",
+                s.model.constraint_names()[e.column]
+            ),
+        }),
+    }
+}

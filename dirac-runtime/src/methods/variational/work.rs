@@ -1,0 +1,229 @@
+//! The options, counters and work space of a variational step, shared by its two paths.
+
+use nalgebra::DefaultAllocator;
+
+use crate::algebra::Algebra;
+use crate::algebra::lu::Lu;
+use crate::analysis::diagnose::{pivot_name, singular_cause};
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::state::State;
+use crate::model::{MatCQ, MatQQ};
+use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecK, VecQ};
+
+/// Newton tolerances of the two stages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VariationalOptions {
+    /// Converged when the Newton update is below `tolerance · (1 + |x|)` in every component
+    /// (default `1e-12`), or when it has stalled at round-off below `1e3 · tolerance`.
+    pub tolerance: f64,
+    /// Newton iterations allowed per stage.
+    pub max_iterations: usize,
+    /// Whether to use the shortcut for separable models ([`LagrangeDirac::SEPARABLE`] with a
+    /// nonsingular mass matrix): the same discrete equations, solved through `m × m` systems
+    /// in the multipliers as RATTLE does. On by default.
+    pub use_structure: bool,
+    /// The most steps an integration may take (default `10_000_000`): a time span that needs
+    /// more is refused at the start.
+    pub max_steps: usize,
+}
+
+impl Default for VariationalOptions {
+    fn default() -> Self {
+        VariationalOptions {
+            tolerance: 1e-12,
+            max_iterations: 20,
+            use_structure: true,
+            max_steps: 10_000_000,
+        }
+    }
+}
+
+impl VariationalOptions {
+    /// Checks every option, naming the first one out of its range.
+    pub(crate) fn validate(&self) -> Result<(), SimError> {
+        if !(self.tolerance > 0.0 && self.tolerance < 1.0) {
+            return Err(SimError::InvalidTolerance { what: "tolerance", value: self.tolerance });
+        }
+        if self.max_iterations == 0 {
+            return Err(SimError::InvalidOption { what: "max_iterations", reason: "at least 1".into() });
+        }
+        if self.max_steps == 0 {
+            return Err(SimError::InvalidOption { what: "max_steps", reason: "at least 1".into() });
+        }
+        Ok(())
+    }
+}
+
+/// Counters of the work a variational integration did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct VariationalStats {
+    /// Steps taken.
+    pub steps: usize,
+    /// Newton iterations, both stages.
+    pub newton_iterations: usize,
+    /// LU factorisations: one per Newton iteration on the general path; on the separable path
+    /// one per multiplier update and one for the velocity projection.
+    pub factorizations: usize,
+}
+
+/// The unknowns and matrices of one step, kept between steps so that a step allocates nothing
+/// and Newton starts from the previous step's solution.
+pub(crate) struct Work<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub sizes: Sizes,
+    /// The step velocity `v = (q_{k+1} − q_k)/h`.
+    pub v: VecQ<M>,
+    /// The stage-1 impulse Λ.
+    pub big_lambda: VecC<M>,
+    /// The stage-2 impulse Γ.
+    pub gamma: VecC<M>,
+    /// The multipliers at the last step's midpoint, `(Λ + Γ)/h`, and that step's size; a size
+    /// of zero when no step has been taken since the start or a restart.
+    pub midpoint: (VecC<M>, f64),
+    /// `A(q_k)`.
+    pub a0: MatCQ<M>,
+    /// The blocks of the stage systems.
+    pub blocks: StageBlocks<M>,
+    /// The vectors of the stage systems.
+    pub vectors: StageVectors<M>,
+    /// The `(n + m)` stage system.
+    pub saddle: <M::Algebra as Algebra<M>>::Saddle<f64>,
+    /// The `m × m` systems of the separable path, when it is taken.
+    pub small: Option<Lu<f64, M::Nc>>,
+    /// The size of the last Newton update, for the stall test.
+    pub last_update: f64,
+    /// `∂L/∂q` at the current point (separable models: independent of `v`).
+    pub dl_dq: VecQ<M>,
+    /// The energy put in since the start by the external forces and by the Lagrangian's
+    /// dependence on time, `Σ h (⟨F, v_k⟩ − ∂L/∂t)` at the steps' midpoints.
+    pub work: f64,
+}
+
+/// The blocks a stage system is assembled from. Each is written by one model method only
+/// (`l_vv`, `l_vq`, `force_dq`, `force_dv`, `constraint_matrix`, `dav_dq`), so none needs
+/// zeroing between writes.
+pub(crate) struct StageBlocks<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// `L_vv` at the step's start and end.
+    pub lvv0: MatQQ<M>,
+    pub lvv1: MatQQ<M>,
+    /// `L_vq` at the step's start and end.
+    pub lvq0: MatQQ<M>,
+    pub lvq1: MatQQ<M>,
+    /// The force Jacobians at the midpoint.
+    pub fq: MatQQ<M>,
+    pub fv: MatQQ<M>,
+    /// `A` at the step's end and midpoint, and `∂(A v)/∂q` at the midpoint.
+    pub a1: MatCQ<M>,
+    pub am: MatCQ<M>,
+    pub gm: MatCQ<M>,
+    /// The stage-1 matrix's top terms summed, for dense blocks.
+    pub sum: MatQQ<M>,
+}
+
+/// The vectors of a stage: end point and midpoint, the model's vectors there, the residual.
+pub(crate) struct StageVectors<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub q1: VecQ<M>,
+    pub qm: VecQ<M>,
+    pub lv0: VecQ<M>,
+    pub lv1: VecQ<M>,
+    pub lq: VecQ<M>,
+    pub f: VecQ<M>,
+    pub target: VecQ<M>,
+    pub phi: VecH<M>,
+    /// `b(q, t)` of the constraints at one of the step's points.
+    pub rate: VecC<M>,
+    pub r: VecK<M>,
+}
+
+impl<M: LagrangeDirac> Work<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn new(model: &M) -> Self {
+        let (sizes, shape) = (model.sizes(), model.shape());
+        let qq = || M::Algebra::zeros_qq(&shape);
+        let cq = || M::Algebra::zeros_cq(&shape);
+        let q = || sizes.zeros_q::<M>();
+        Work {
+            sizes,
+            v: q(),
+            big_lambda: sizes.zeros_c::<M>(),
+            gamma: sizes.zeros_c::<M>(),
+            midpoint: (sizes.zeros_c::<M>(), 0.0),
+            a0: cq(),
+            blocks: StageBlocks {
+                lvv0: qq(),
+                lvv1: qq(),
+                lvq0: qq(),
+                lvq1: qq(),
+                fq: qq(),
+                fv: qq(),
+                a1: cq(),
+                am: cq(),
+                gm: cq(),
+                sum: qq(),
+            },
+            vectors: StageVectors {
+                q1: q(),
+                qm: q(),
+                lv0: q(),
+                lv1: q(),
+                lq: q(),
+                f: q(),
+                target: q(),
+                phi: sizes.zeros_h::<M>(),
+                rate: sizes.zeros_c::<M>(),
+                r: sizes.zeros_k::<M>(),
+            },
+            saddle: M::Algebra::saddle(&shape),
+            small: None,
+            last_update: f64::INFINITY,
+            dl_dq: q(),
+            work: 0.0,
+        }
+    }
+}
+
+/// One step from `state` at `t`, being taken.
+pub(crate) struct Step<'a, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub model: &'a M,
+    pub h: f64,
+    pub t: f64,
+    pub options: &'a VariationalOptions,
+    /// The state at the step's start; the paths write the new momenta and velocities into it.
+    pub state: &'a mut State<M>,
+    pub work: &'a mut Work<M>,
+    pub stats: &'a mut VariationalStats,
+}
+
+impl<M: LagrangeDirac> Step<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The error for a Newton iteration that ran out of iterations.
+    pub fn diverged(&self) -> SimError {
+        SimError::NewtonDiverged { t: self.t, h: self.h, iterations: self.options.max_iterations }
+    }
+
+    /// The error for a singular stage matrix, at the unknown without a pivot, with its cause.
+    pub fn singular(&self, column: usize) -> SimError {
+        let cause = singular_cause(self.model, self.t, &self.state.q, &self.state.v);
+        SimError::SingularMatrix {
+            t: self.t,
+            h: self.h,
+            detail: format!("{}; {cause}", pivot_name(self.model, column)),
+        }
+    }
+}

@@ -1,0 +1,273 @@
+//! The driver every integrator shares: start, step, read the state, interpolate within the
+//! last step; and, written once on top of those, `solve` and `solve_observed`, which run an
+//! integration and record a [`Solution`].
+
+use std::ops::ControlFlow;
+
+use nalgebra::DefaultAllocator;
+
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::keys::Input;
+use crate::model::state::State;
+use crate::shape::dims::Storage;
+use crate::simulate::recorder::Recorder;
+use crate::simulate::solution::{Sampling, Solution};
+
+/// An integrator of a model `M`: [`Explicit`](crate::Explicit), [`Radau`](crate::Radau) or
+/// [`Variational`](crate::Variational).
+///
+/// The required methods take one step at a time; the provided ones run a whole integration.
+/// The facade's guide (`dirac::guide`, "Step by step") has a runnable example of both.
+pub trait Integrator<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The integrator's own counters of the work it did.
+    type Stats: Copy + core::fmt::Debug;
+
+    /// The model integrated.
+    fn model(&self) -> &M;
+
+    /// Prepares to integrate from `state` at `t0` to `t_end`. The state should be consistent
+    /// (see [`consistent_state`](crate::analysis::init::consistent_state)).
+    fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError>;
+
+    /// The model to change between steps, if the integrator holds it exclusively (it was built
+    /// on `&mut model`). Restart after the change ([`Integrator::restart_until`]): the restart
+    /// refuses a change that moved a constraint off the state
+    /// ([`SimError::ConstraintMoved`](crate::error::SimError::ConstraintMoved)).
+    fn model_mut(&mut self) -> Option<&mut M>;
+
+    /// Starts again from the current time and state, towards `t_end`, after the model changed:
+    /// the step-size history and the extrapolated stages are dropped, the step size and the
+    /// counters kept (Radau keeps its last Jacobian as the simplified Newton iteration's
+    /// matrix until the iteration's convergence asks for a new one). Positions, velocities
+    /// and momenta carry over, so a change must keep `p = ∂L/∂v` (inputs in forces or in the
+    /// potential do; one in the mass matrix is refused with [`SimError::MomentumChanged`]).
+    /// Does nothing once `t_end` is reached.
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError>;
+
+    /// [`Integrator::restart_until`] the current end time.
+    fn restart(&mut self) -> Result<(), SimError> {
+        self.restart_until(self.end())
+    }
+
+    /// The end time the integration is heading for.
+    fn end(&self) -> f64;
+
+    /// Changes the model between steps (its inputs, its parameters) and restarts. The guide's
+    /// section "Inputs and controllers" shows it at work.
+    fn update(&mut self, change: impl FnOnce(&mut M)) -> Result<(), SimError>
+    where
+        Self: Sized,
+    {
+        let t = self.t();
+        change(self.model_mut().ok_or(SimError::SharedModel { t })?);
+        self.restart()
+    }
+
+    /// Runs from `t0` to `t_end` under a sampled-data controller: every `period`, from `t0` on,
+    /// `controller(t_k, state, model)` reads the state and sets the model's inputs (or
+    /// parameters), which are held until the next sample. The integration stops at each sample
+    /// instant and restarts there, so no step straddles a change. Needs an integrator built on
+    /// `&mut model`. The guide's section "Inputs and controllers" has an example.
+    fn solve_sampled(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        period: f64,
+        sampling: &Sampling,
+        mut controller: impl FnMut(f64, &State<M>, &mut M),
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+    {
+        check_period(t0, t_end, period)?;
+        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
+        let mut held = state.clone();
+        let sample = |k: usize| (t0 + k as f64 * period).min(t_end);
+        controller(t0, &held, self.model_mut().ok_or(SimError::SharedModel { t: t0 })?);
+        self.start(t0, state, sample(1))?;
+        recorder.record_initial(self.model(), t0, self.state());
+        let mut k = 1;
+        while self.t() < t_end {
+            while !self.finished() {
+                self.step()?;
+                recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
+            }
+            if self.t() >= t_end {
+                break;
+            }
+            let t = self.t();
+            held.clone_from(self.state());
+            controller(t, &held, self.model_mut().ok_or(SimError::SharedModel { t })?);
+            k += 1;
+            self.restart_until(sample(k))?;
+        }
+        recorder.finish(self.stats())
+    }
+
+    /// Sets an input between steps and restarts.
+    fn set_input(&mut self, key: Input<M>, value: f64) -> Result<(), SimError>
+    where
+        Self: Sized,
+    {
+        self.update(|m| m.set_input(key, value))
+    }
+
+    /// Takes one step (for an adaptive method: one accepted step, retrying smaller ones as
+    /// needed) and returns its size.
+    fn step(&mut self) -> Result<f64, SimError>;
+
+    /// Moves back to time `t` within the last step (or its end), to `state`, and restarts there
+    /// towards the end time, as [`Integrator::restart_until`] does: what an event whose action
+    /// reset the state or changed the model needs. The state must be consistent at `t`.
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError>;
+
+    /// Sets the model's inputs for time `t` and `state` where something sets them within the
+    /// steps (a Radau drive), so that a function of the inputs read at a time within the last
+    /// step (an event function) sees them as the step did. Does nothing otherwise.
+    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
+        let _ = (t, state);
+    }
+
+    /// Whether the end time has been reached.
+    fn finished(&self) -> bool;
+
+    /// The time reached.
+    fn t(&self) -> f64;
+
+    /// The state reached.
+    fn state(&self) -> &State<M>;
+
+    /// Writes the state at time `t` within the last step into `out`.
+    fn interpolate(&self, t: f64, out: &mut State<M>);
+
+    /// Writes the state at time `t` within the last step into `out` as the method itself would
+    /// reach it, which is where events are located: the dense output by default (Radau's is
+    /// its collocation polynomial); the variational integrator takes a step of its own to `t`
+    /// from the step's start, so that an impact time is solved on the discrete flow.
+    fn state_at(&self, t: f64, out: &mut State<M>) -> Result<(), SimError> {
+        self.interpolate(t, out);
+        Ok(())
+    }
+
+    /// The work done since the last [`Integrator::start`].
+    fn stats(&self) -> Self::Stats;
+
+    /// Integrates from `state` at `t0` to `t_end`, recording samples as `sampling` says.
+    fn solve(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        sampling: &Sampling,
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+    {
+        self.solve_observed(t0, state, t_end, sampling, |_, _| ControlFlow::Continue(()))
+    }
+
+    /// [`Integrator::solve`] with an observer called after every step with the time and the
+    /// state reached (read by name: `state.q(Model::X)`); returning `ControlFlow::Break(())`
+    /// stops the integration there.
+    fn solve_observed(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        sampling: &Sampling,
+        mut observer: impl FnMut(f64, &State<M>) -> ControlFlow<()>,
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+    {
+        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
+        self.start(t0, state, t_end)?;
+        recorder.record_initial(self.model(), t0, self.state());
+        while !self.finished() {
+            self.step()?;
+            recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
+            if observer(self.t(), self.state()).is_break() {
+                break;
+            }
+        }
+        recorder.finish(self.stats())
+    }
+}
+
+/// The most sample intervals [`Integrator::solve_sampled`] takes on: a period this short
+/// against the span is a mistake, not a controller.
+const MAX_SAMPLES: f64 = 1e9;
+
+/// A sampling period that is positive, finite, resolvable at the span's times and not absurdly
+/// short for the span.
+fn check_period(t0: f64, t_end: f64, period: f64) -> Result<(), SimError> {
+    if !(t0.is_finite() && t_end.is_finite() && t_end > t0) {
+        return Err(SimError::InvalidTimeSpan {
+            reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
+        });
+    }
+    let invalid = |reason: String| Err(SimError::InvalidOption { what: "period", reason });
+    if !(period > 0.0 && period.is_finite()) {
+        return invalid(format!("{period} is not positive and finite"));
+    }
+    let magnitude = t0.abs().max(t_end.abs());
+    if period <= 16.0 * f64::EPSILON * magnitude {
+        return invalid(format!("{period:e} is below the resolution of t at {magnitude:e}"));
+    }
+    let samples = (t_end - t0) / period;
+    if samples > MAX_SAMPLES {
+        return invalid(format!(
+            "{period:e} makes {samples:e} samples from {t0} to {t_end}, more than {MAX_SAMPLES:e}"
+        ));
+    }
+    Ok(())
+}
+
+/// `x^y` to single precision, all a step-size factor or a convergence heuristic needs, at half
+/// the cost of the double one (two powers a step are a tenth of a small model's step).
+pub(crate) fn rough_power(x: f64, y: f64) -> f64 {
+    f64::from((x as f32).powf(y as f32))
+}
+
+/// The options every adaptive integrator checks: positive, finite tolerances, a relative one
+/// in `[10 ε, 1)`, a positive largest step and a positive, finite first step if one is given.
+pub(crate) fn check_step_options(
+    rtol: f64,
+    atol: f64,
+    max_step: f64,
+    initial_step: Option<f64>,
+) -> Result<(), SimError> {
+    for (what, value) in [("rtol", rtol), ("atol", atol)] {
+        if value.is_nan() || value <= 0.0 || value.is_infinite() {
+            return Err(SimError::InvalidTolerance { what, value });
+        }
+    }
+    // Above 1 a relative tolerance controls nothing; below 10 ε it asks for more than double
+    // precision holds.
+    if !(10.0 * f64::EPSILON..1.0).contains(&rtol) {
+        return Err(SimError::InvalidOption {
+            what: "rtol",
+            reason: format!(
+                "{rtol} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
+                 and below 10 machine epsilons no step can meet it"
+            ),
+        });
+    }
+    if max_step.is_nan() || max_step <= 0.0 {
+        return Err(SimError::InvalidOption {
+            what: "max_step",
+            reason: format!("{max_step} is not positive"),
+        });
+    }
+    if let Some(h) = initial_step
+        && (h.is_nan() || h <= 0.0 || h.is_infinite())
+    {
+        return Err(SimError::InvalidOption { what: "initial_step", reason: format!("{h} is not positive") });
+    }
+    Ok(())
+}

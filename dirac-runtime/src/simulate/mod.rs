@@ -1,0 +1,22 @@
+//! The simulation driver and its results: the [`Integrator`](integrator::Integrator) trait
+//! every method implements, with `solve` written once on top of its steps; how an integrator
+//! holds its model; events, impacts and sensitivities over any method; the recorder and the
+//! solution it fills; input sources and ensembles.
+//!
+//! It uses analysis, the model surface and the algebra; the methods implement its traits.
+
+pub(crate) mod contacts;
+/// Many simulations of one model on all cores, and sweeps split into jobs.
+pub mod ensemble;
+pub mod events;
+/// How an integrator holds its model: shared, or exclusive to change it while it runs.
+pub mod held;
+/// The driver every integrator shares, with `solve` written once.
+pub mod integrator;
+pub(crate) mod recorder;
+pub(crate) mod restart;
+pub mod sensitivity;
+/// Simulation results with named series.
+pub mod solution;
+/// Input sources read by time: tables held or interpolated.
+pub mod sources;

@@ -1,0 +1,138 @@
+//! What every integrator checks when it starts, when its model is changed between steps and
+//! when it restarts, written once: [`Restarts`] keeps the one fact a restart needs from the
+//! moment the model was handed out (how far the state then was from the constraints), and
+//! its methods run the checks in the order every method needs them.
+
+use nalgebra::DefaultAllocator;
+
+use crate::analysis::diagnose::{
+    check_constraints_kept, check_finite_state, violated_equation, violated_legendre_map, worst_constraint,
+};
+use crate::error::SimError;
+use crate::model::state::State;
+use crate::model::{LagrangeDirac, check_parameters};
+use crate::shape::dims::Storage;
+use crate::simulate::held::Held;
+
+/// The restart bookkeeping an integrator keeps beside its model.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Restarts {
+    /// How far the state was from the constraints when the model was last handed out for a
+    /// change ([`Integrator::model_mut`](crate::Integrator::model_mut)), relative to the size
+    /// of their terms; checked against the changed model at the restart.
+    changed_from: Option<f64>,
+}
+
+impl Restarts {
+    /// The checks of a start from `state` at `t0` towards `t_end`: a finite span, finite
+    /// parameters, a finite state that satisfies the algebraic equations to `tolerance`; then
+    /// forgets any change noted before.
+    pub fn start<M: LagrangeDirac>(
+        &mut self,
+        model: &M,
+        (t0, t_end): (f64, f64),
+        state: &State<M>,
+        tolerance: f64,
+    ) -> Result<(), SimError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        if !t0.is_finite() || !t_end.is_finite() || t_end <= t0 {
+            return Err(SimError::InvalidTimeSpan {
+                reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
+            });
+        }
+        check_state(model, t0, state, tolerance)?;
+        self.changed_from = None;
+        Ok(())
+    }
+
+    /// The model to change, if it is held exclusively, with the state's distance from the
+    /// constraints noted for the restart's check.
+    pub fn model_mut<'a, M: LagrangeDirac>(
+        &mut self,
+        model: &'a mut Held<'_, M>,
+        t: f64,
+        state: &State<M>,
+    ) -> Option<&'a mut M>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        if model.get_mut().is_some() {
+            self.changed_from = Some(constraint_violation(model.get(), t, state));
+        }
+        model.get_mut()
+    }
+
+    /// The checks of a restart at the state reached after the model may have changed: the
+    /// change moved no constraint off the state, the parameters are finite and the momenta
+    /// still match the velocities (`p = ∂L/∂v`), since a restart carries both over.
+    pub fn resume<M: LagrangeDirac>(
+        &mut self,
+        model: &M,
+        t: f64,
+        state: &State<M>,
+        tolerance: f64,
+    ) -> Result<(), SimError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        if let Some(before) = self.changed_from.take() {
+            check_constraints_kept(model, t, state, before)?;
+        }
+        check_parameters(model)?;
+        match violated_legendre_map(model, t, state, tolerance) {
+            Some((equation, residual)) => Err(SimError::MomentumChanged { t, equation, residual }),
+            None => Ok(()),
+        }
+    }
+
+    /// The checks of a restart at time `t` within the last step, from `last_step.0` to
+    /// `last_step.1`, to a new `state` (an event's reset): the time lies in the step and the
+    /// state is finite and consistent to `tolerance`. Forgets any change noted before: the
+    /// new state is checked against the model as it is.
+    pub fn jump<M: LagrangeDirac>(
+        &mut self,
+        model: &M,
+        t: f64,
+        last_step: (f64, f64),
+        state: &State<M>,
+        tolerance: f64,
+    ) -> Result<(), SimError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let (start, end) = last_step;
+        if !(t >= start && t <= end) {
+            return Err(SimError::InvalidTimeSpan {
+                reason: format!("a restart at {t} must lie within the last step, from {start} to {end}"),
+            });
+        }
+        check_state(model, t, state, tolerance)?;
+        self.changed_from = None;
+        Ok(())
+    }
+}
+
+/// What a start or a restart at `t` checks of the model and the state: finite parameters, a
+/// finite state, and one that satisfies the algebraic equations to `tolerance` (relative to
+/// the size of the quantities in them).
+fn check_state<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>, tolerance: f64) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    check_parameters(model)?;
+    check_finite_state(model, t, state)?;
+    match violated_equation(model, t, state, tolerance) {
+        Some((equation, residual)) => Err(SimError::StateNotConsistent { t, equation, residual }),
+        None => Ok(()),
+    }
+}
+
+/// How far `state` is from the model's constraints, relative to the size of their terms.
+pub(crate) fn constraint_violation<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    worst_constraint(model, t, state).map_or(0.0, |(_, _, relative)| relative)
+}
