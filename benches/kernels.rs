@@ -407,7 +407,7 @@ where
     M::JACOBIAN_ROW_INDICES.len()
 }
 
-fn operation_counts<M: DenseModel>(_: &M) -> dirac::OperationCounts
+fn operation_counts<M: DenseModel + Derivation>(_: &M) -> dirac::OperationCounts
 where
     DefaultAllocator: dirac::Storage<M>,
 {

@@ -36,7 +36,7 @@ fn options() -> RadauOptions {
 
 /// One row: the median times of a plain solve and of one with the first `count` parameters'
 /// sensitivities, and the ratio.
-fn row<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, t_end: f64, count: usize)
+fn row<M: Parameters>(name: &str, model: &M, start: &State<M>, t_end: f64, count: usize)
 where
     DefaultAllocator: Storage<M>,
 {
@@ -47,7 +47,7 @@ where
 }
 
 /// One row for the sensitivities `wrt`.
-fn row_wrt<M: LagrangeDirac>(name: &str, model: &M, start: &State<M>, t_end: f64, wrt: &Sensitivities<M>)
+fn row_wrt<M: Parameters>(name: &str, model: &M, start: &State<M>, t_end: f64, wrt: &Sensitivities<M>)
 where
     DefaultAllocator: Storage<M>,
 {

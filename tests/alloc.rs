@@ -197,7 +197,7 @@ fn steps_of_models_made_of_arrays_do_not_allocate() {
 /// Inputs set between steps: each `set_input` restarts the integrator (checks, new Jacobian,
 /// new grid); a 100-step feedback loop on the forced spring and on the composite of two, with
 /// each integrator, allocates nothing.
-fn allocations_with_inputs<M: LagrangeDirac, I: Integrator<M>>(
+fn allocations_with_inputs<M: InputsOutputs, I: Integrator<M>>(
     integrator: &mut I,
     start: &State<M>,
     input: Input<M>,
@@ -506,7 +506,7 @@ fn watching_resting_contacts_does_not_allocate() {
 /// steps, reading each sensitivity and interpolating it within the step, and returns the
 /// allocations during the 200 and how many of them solved the sensitivities with the stages'
 /// coupled system.
-fn allocations_with_sensitivities<M: LagrangeDirac>(
+fn allocations_with_sensitivities<M: Parameters>(
     model: &M,
     start: &State<M>,
     wrt: &Sensitivities<M>,

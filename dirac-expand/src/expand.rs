@@ -179,7 +179,8 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let p = rt();
     let Analysed { mut sym, blocks, pattern, unknowns } = analysed;
     let ident = model.ident;
-    let Generated { methods, sparse, counts } = generate(&sym, &blocks);
+    let Generated { methods, inputs_outputs, hybrid, parameters: parameter_methods, sparse, counts } =
+        generate(&sym, &blocks);
     let separable = separable(&mut sym, &blocks);
     let prescribed = blocks.b.iter().any(|b| !sym.graph.is_zero(*b));
     let constant_constraints = !prescribed && crate::structure::constant_rows(&sym, &blocks);
@@ -225,6 +226,13 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                     pattern: &[#(#pattern),*],
                     unknowns: &[#(#unknowns),*],
                 };
+
+                #parameters
+                #methods
+            }
+
+            #[automatically_derived]
+            impl #p::Derivation for #ident {
                 const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
                     residual: #r,
                     jacobian: #j,
@@ -236,11 +244,25 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                 fn equations() -> #p::Equations {
                     #p::Equations { text: #p::Cow::Borrowed(#text), latex: #p::Cow::Borrowed(#latex) }
                 }
+            }
 
-                #parameters
+            #[automatically_derived]
+            impl #p::InputsOutputs for #ident {
                 #inputs
+                #inputs_outputs
+            }
+
+            #[automatically_derived]
+            #[allow(clippy::approx_constant)]
+            impl #p::Parameters for #ident {
+                #parameter_methods
+            }
+
+            #[automatically_derived]
+            #[allow(clippy::approx_constant)]
+            impl #p::Hybrid for #ident {
                 #switches
-                #methods
+                #hybrid
             }
 
             #[automatically_derived]
@@ -392,12 +414,17 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
         }
         impl #p::LagrangeDirac for #ident {
             #storage
-            const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
             const SEPARABLE: ::core::primitive::bool = false;
             const PRESCRIBED: ::core::primitive::bool = false;
             const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
-            fn equations() -> #p::Equations { #unreachable }
             #(#methods)*
         }
+        impl #p::Derivation for #ident {
+            const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts::ZERO;
+            fn equations() -> #p::Equations { #unreachable }
+        }
+        impl #p::InputsOutputs for #ident {}
+        impl #p::Parameters for #ident {}
+        impl #p::Hybrid for #ident {}
     }
 }

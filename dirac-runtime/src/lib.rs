@@ -38,13 +38,17 @@ pub use error::SimError;
 pub use methods::explicit::{Explicit, ExplicitOptions, ExplicitStats};
 pub use methods::radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
 pub use methods::variational::{Variational, VariationalOptions, VariationalStats};
+pub use model::Named;
 pub use model::blocks::{JacobianBlocks, ResidualBlocks};
 pub use model::keys::{Constraint, Coordinate, Input, Output};
-pub use model::names::{Named, Names, ResolveError, Resolved, Subsystem};
+pub use model::names::{Names, ResolveError, Resolved, Subsystem};
 pub use model::sparse::SparseJacobian;
 pub use model::state::State;
 pub use model::structure::Structure;
-pub use model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
+pub use model::{
+    DenseModel, Derivation, EnergyBalance, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
+    OperationCounts, Parameters,
+};
 pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use shape::layout::{Layout, Slot};
 pub use simulate::events::{EventContext, Events, SolveWithEvents};
@@ -77,20 +81,39 @@ pub use nalgebra;
 #[doc(hidden)]
 pub mod __private {
     pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
+    pub use crate::model::Named;
     pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
     pub use crate::model::assemble::{
         Offsets, gather_c, gather_q, place_block, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};
-    pub use crate::model::names::{Named, Names, ResolveError, Resolved, Subsystem};
+    pub use crate::model::names::{Names, ResolveError, Resolved, Subsystem};
     pub use crate::model::sparse::SparseJacobian;
     pub use crate::model::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
-    pub use crate::model::{DenseModel, Equations, LagrangeDirac, MatCQ, MatQQ, OperationCounts};
+    pub use crate::model::{
+        DenseModel, Derivation, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
+        OperationCounts, Parameters,
+    };
     pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;
+
+    /// What a subsystem of an interconnection must be: a model of fixed size with every
+    /// capability the derives implement, as one bound (one error where a field is not a model).
+    pub trait Member: DenseModel + InputsOutputs + Parameters + Hybrid + Derivation
+    where
+        DefaultAllocator: Storage<Self>,
+    {
+    }
+
+    impl<M> Member for M
+    where
+        M: DenseModel + InputsOutputs + Parameters + Hybrid + Derivation,
+        DefaultAllocator: Storage<M>,
+    {
+    }
 
     /// A constant of the user's code, where generated code reads it: its type must be `f64`.
     #[inline(always)]

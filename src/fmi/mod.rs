@@ -43,7 +43,7 @@ pub use package::{FmuError, build, write_fmu};
 pub use variables::DescriptionError;
 
 use crate::nalgebra::DefaultAllocator;
-use crate::{LagrangeDirac, Storage, VecQ};
+use crate::{InputsOutputs, LagrangeDirac, Parameters, Storage, VecQ};
 
 /// The version of the FMI standard an FMU follows. One library serves both: `export_fmu!`
 /// exports the functions of each.
@@ -104,7 +104,7 @@ impl Default for Experiment {
 /// assert!(xml.contains(r#"<Float64 name="x" valueReference="5""#));
 /// # Ok::<(), dirac::fmi::DescriptionError>(())
 /// ```
-pub trait Export: LagrangeDirac
+pub trait Export: LagrangeDirac + InputsOutputs + Parameters
 where
     DefaultAllocator: Storage<Self>,
 {

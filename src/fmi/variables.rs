@@ -15,12 +15,12 @@ use super::{Export, Version};
 pub(crate) enum Variable {
     /// The independent variable.
     Time,
-    /// Parameter `k` of [`LagrangeDirac::parameter_value`] (inputs, which are parameters to
+    /// Parameter `k` of [`Parameters::parameter_value`](crate::Parameters::parameter_value) (inputs, which are parameters to
     /// the model, are inputs to the FMU).
     Parameter(usize),
-    /// Input `k` of [`LagrangeDirac::input_value`].
+    /// Input `k` of [`InputsOutputs::input_value`](crate::InputsOutputs::input_value).
     Input(usize),
-    /// Output `k` of [`LagrangeDirac::outputs`].
+    /// Output `k` of [`LagrangeDirac::outputs`](crate::LagrangeDirac::outputs).
     Output(usize),
     /// Position `q[k]`.
     Position(usize),

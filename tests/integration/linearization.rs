@@ -205,7 +205,7 @@ fn a_composite_linearises_through_its_members_blocks() {
 
 /// The nonlinear response `(δq(T), δv(T))` of `model` from `equilibrium` moved by `(dq, dv)`
 /// (made consistent), against the linear model's `e^{A T} x0` mapped back through its bases.
-fn simulated_against_linear<M: DenseModel>(
+fn simulated_against_linear<M: DenseModel + InputsOutputs>(
     model: &M,
     equilibrium: &State<M>,
     dq: &[f64],

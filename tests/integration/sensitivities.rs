@@ -16,7 +16,7 @@ use crate::zoo::*;
 /// in the parameter at random states, to 1e-7 relative to the larger of the entry and 1; and
 /// all parameters' blocks evaluated together (`residual_blocks_dtheta_all`, one schedule for
 /// all of them in a primitive model) equal each evaluated alone, to rounding.
-fn check_parameter_derivatives<M: LagrangeDirac + Clone>(model: &M, seed: u64, trials: usize)
+fn check_parameter_derivatives<M: Parameters + Clone>(model: &M, seed: u64, trials: usize)
 where
     DefaultAllocator: Storage<M>,
 {
@@ -352,7 +352,7 @@ fn harmonic_oscillator_sensitivities_match_the_closed_form() {
 /// sensitivity's largest value and `floor`. The differences are extrapolated (Richardson) from
 /// steps `δ = 1e-3 θ` and `2δ`, so that their truncation error is `O(δ⁴)` and the noise of the
 /// adaptive step sequence at a tolerance of 1e-11, about `1e-11 / δ`, stays near 1e-8.
-fn check_against_simulations<M: LagrangeDirac + Clone>(
+fn check_against_simulations<M: Parameters + Clone>(
     model: &M,
     start: &dyn Fn(&M) -> State<M>,
     parameters: &[&str],

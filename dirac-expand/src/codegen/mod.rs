@@ -32,10 +32,16 @@ pub struct OpCounts {
     pub jacobian_blocks: usize,
 }
 
-/// What code generation produced for a primitive model.
+/// What code generation produced for a primitive model: the methods of each trait impl.
 pub struct Generated {
     /// The methods of its `LagrangeDirac` impl.
     pub methods: TokenStream,
+    /// The derivatives of its `InputsOutputs` impl.
+    pub inputs_outputs: TokenStream,
+    /// The methods of its `Hybrid` impl: unilateral constraints and events.
+    pub hybrid: TokenStream,
+    /// The methods of its `Parameters` impl.
+    pub parameters: TokenStream,
     /// The items of its `SparseJacobian` impl.
     pub sparse: TokenStream,
     pub counts: OpCounts,
@@ -105,14 +111,16 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
     if !b.outputs.is_empty() {
         methods.extend(e.sized(&OUTPUTS, &b.outputs));
     }
+    let mut hybrid = TokenStream::new();
     if !b.unilateral.is_empty() {
-        methods.extend(e.sized(&UNILATERAL, &b.unilateral));
-        methods.extend(e.sized(&UNILATERAL_DQ, &column_major(&b.unilateral_dq)));
-        methods.extend(e.sized(&RESTITUTION, &b.restitution));
+        hybrid.extend(e.sized(&UNILATERAL, &b.unilateral));
+        hybrid.extend(e.sized(&UNILATERAL_DQ, &column_major(&b.unilateral_dq)));
+        hybrid.extend(e.sized(&RESTITUTION, &b.restitution));
     }
     if !b.events.is_empty() {
-        methods.extend(e.sized(&EVENTS, &b.events));
+        hybrid.extend(e.sized(&EVENTS, &b.events));
     }
+    let mut inputs_outputs = TokenStream::new();
     for (sig, block) in [
         (DPDOT_DU, &b.dpdot_du),
         (L_VU, &b.l_vu),
@@ -121,11 +129,18 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         (OUTPUT_DU, &b.output_du),
     ] {
         if block.iter().any(|row| !row.is_empty()) {
-            methods.extend(e.sized(&sig, &column_major(block)));
+            inputs_outputs.extend(e.sized(&sig, &column_major(block)));
         }
     }
-    methods.extend(e.parameter_methods(b));
-    Generated { methods, sparse: e.csc_jacobian(&b.flat_jacobian), counts }
+    let parameters = e.parameter_methods(b);
+    Generated {
+        methods,
+        inputs_outputs,
+        hybrid,
+        parameters,
+        sparse: e.csc_jacobian(&b.flat_jacobian),
+        counts,
+    }
 }
 
 /// The entries of a matrix in column-major order.

@@ -132,7 +132,8 @@ pub fn linearisation_methods(composite: &Composite<'_>) -> TokenStream {
                     let (rows, cols) = (#rows, #cols);
                     if rows * cols > 0 {
                         let mut block = ::std::vec![0.0; rows * cols];
-                        self.#field.#method(
+                        <#ty as #p::InputsOutputs>::#method(
+                            &self.#field,
                             t,
                             &#p::gather_q::<#ty, Self>(q, &#slot),
                             &#p::gather_q::<#ty, Self>(v, &#slot),
@@ -173,7 +174,8 @@ pub fn output_method(composite: &Composite<'_>) -> TokenStream {
         quote! {{
             let (start, count) = (#start, <#ty as #p::Named>::NAMES.output_count());
             if count > 0 {
-                self.#field.outputs(
+                <#ty as #p::LagrangeDirac>::outputs(
+                    &self.#field,
                     t,
                     &#p::gather_q::<#ty, Self>(q, &#slot),
                     &#p::gather_q::<#ty, Self>(v, &#slot),
@@ -226,7 +228,7 @@ pub fn contact_and_event_methods(composite: &Composite<'_>) -> TokenStream {
             quote! {{
                 let (start, count) = (#start, <#ty as #p::Named>::NAMES.#count());
                 if count > 0 {
-                    self.#field.#method(t, &#p::gather_q::<#ty, Self>(q, &#slot), #extra &mut out[start..start + count]);
+                    <#ty as #p::Hybrid>::#method(&self.#field, t, &#p::gather_q::<#ty, Self>(q, &#slot), #extra &mut out[start..start + count]);
                 }
             }}
         });
@@ -252,7 +254,7 @@ pub fn contact_and_event_methods(composite: &Composite<'_>) -> TokenStream {
             let (rows, cols) = (<#ty as #p::Named>::NAMES.unilateral_count(), <#ty as #p::Fixed>::NQ);
             if rows > 0 {
                 let mut block = ::std::vec![0.0; rows * cols];
-                self.#field.unilateral_dq(t, &#p::gather_q::<#ty, Self>(q, &#slot), &mut block);
+                <#ty as #p::Hybrid>::unilateral_dq(&self.#field, t, &#p::gather_q::<#ty, Self>(q, &#slot), &mut block);
                 #p::place_block(&block, rows, total_rows, (#row0, #slot.q), out);
             }
         }}
@@ -280,9 +282,9 @@ pub fn input_methods(composite: &Composite<'_>) -> TokenStream {
                 let (field, ty) = (&s.ident, &s.ty);
                 let offset = input_offset(composite, i);
                 let call = if set {
-                    quote! { return self.#field.set_input_value(k - start, value) }
+                    quote! { return <#ty as #p::InputsOutputs>::set_input_value(&mut self.#field, k - start, value) }
                 } else {
-                    quote! { return self.#field.input_value(k - start) }
+                    quote! { return <#ty as #p::InputsOutputs>::input_value(&self.#field, k - start) }
                 };
                 quote! {
                     let start = #offset;
@@ -368,10 +370,10 @@ pub(super) fn equations_with(
             text.push_str(#header);
             let mut latex = ::std::string::String::new();
             #(
-                text.push_str(&::std::format!("\n[{}]\n{}", #fields_a, <#types_a as #p::LagrangeDirac>::equations().text));
+                text.push_str(&::std::format!("\n[{}]\n{}", #fields_a, <#types_a as #p::Derivation>::equations().text));
             )*
             #(
-                latex.push_str(&::std::format!("\\text{{{}:}}\\\\\n{}\n", #fields_b, <#types_b as #p::LagrangeDirac>::equations().latex));
+                latex.push_str(&::std::format!("\\text{{{}:}}\\\\\n{}\n", #fields_b, <#types_b as #p::Derivation>::equations().latex));
             )*
             text.push_str("\n[interconnection]\n");
             text.push_str(#text_rows);

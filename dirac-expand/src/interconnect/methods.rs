@@ -17,17 +17,32 @@ use crate::codegen::signatures::{
 pub(super) const INTERCONNECTION_FORCES: Signature =
     Signature { name: "interconnection_forces", args: &[Arg::T, Arg::Q, Arg::Lambda], out: Out::VecQ };
 
-/// Every method of the composite's impl.
-pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
-    let mut out: TokenStream =
+/// The methods of a composite's trait impls.
+pub struct Methods {
+    /// `LagrangeDirac`.
+    pub core: TokenStream,
+    /// `InputsOutputs`.
+    pub inputs_outputs: TokenStream,
+    /// `Parameters`.
+    pub parameters: TokenStream,
+    /// `Hybrid`.
+    pub hybrid: TokenStream,
+}
+
+/// Every method of the composite's impls.
+pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> Methods {
+    let mut core: TokenStream =
         REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| method(composite, own, sig)).collect();
-    out.extend(non_finite_parameter(composite));
-    out.extend(super::items::input_methods(composite));
-    out.extend(super::items::output_method(composite));
-    out.extend(super::items::linearisation_methods(composite));
-    out.extend(super::items::contact_and_event_methods(composite));
-    out.extend(super::parameters::parameter_methods(composite, own));
-    out
+    core.extend(non_finite_parameter(composite));
+    core.extend(super::items::output_method(composite));
+    let mut inputs_outputs = super::items::input_methods(composite);
+    inputs_outputs.extend(super::items::linearisation_methods(composite));
+    Methods {
+        core,
+        inputs_outputs,
+        parameters: super::parameters::parameter_methods(composite, own),
+        hybrid: super::items::contact_and_event_methods(composite),
+    }
 }
 
 /// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's, named

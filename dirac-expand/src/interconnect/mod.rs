@@ -26,7 +26,7 @@ use self::ast::Composite;
 use self::blocks::CompositeBlocks;
 use self::emit::Own;
 use self::items::{Targets, equations, inherent_items, names};
-use self::methods::methods;
+use self::methods::{Methods, methods};
 use self::model::CompositeModel;
 use crate::codegen::signatures::rt;
 use crate::ctxt::Ctxt;
@@ -142,9 +142,9 @@ fn implementation(
     let asserts = subsystem_asserts(composite);
     let bounds = bounds(composite);
     let names = names(composite, model, &bounds);
-    let counts = operation_counts(composite, &own);
+    let (consts, counts) = operation_counts(composite, &own);
     let equations = equations(composite, model);
-    let methods = methods(composite, &own);
+    let Methods { core, inputs_outputs, parameters, hybrid } = methods(composite, &own);
     let inherent = inherent_items(composite, Targets::Resolved(model), &bounds);
     quote! {
         const _: () = {
@@ -168,9 +168,30 @@ fn implementation(
             #[automatically_derived]
             #[allow(clippy::approx_constant)]
             impl #p::LagrangeDirac for #ident #bounds {
+                #consts
+                #core
+            }
+
+            #[automatically_derived]
+            impl #p::Derivation for #ident #bounds {
                 #counts
                 #equations
-                #methods
+            }
+
+            #[automatically_derived]
+            impl #p::InputsOutputs for #ident #bounds {
+                #inputs_outputs
+            }
+
+            #[automatically_derived]
+            #[allow(clippy::approx_constant)]
+            impl #p::Parameters for #ident #bounds {
+                #parameters
+            }
+
+            #[automatically_derived]
+            impl #p::Hybrid for #ident #bounds {
+                #hybrid
             }
 
             #inherent
@@ -216,23 +237,25 @@ fn subsystem_asserts(composite: &Composite<'_>) -> TokenStream {
         .collect()
 }
 
-/// `where Sub: DenseModel, …` for every subsystem type, at the field's type: if a field is
+/// `where Sub: Member, …` (a model of fixed size with every capability) for every subsystem type, at the field's type: if a field is
 /// not a model, this bound is the one error, and the bodies under it report nothing more.
 fn bounds(composite: &Composite<'_>) -> TokenStream {
     let p = rt();
     let bounds = composite.subsystems.iter().map(|s| {
         let ty = &s.ty;
-        quote_spanned! {ty.span()=> #ty: #p::DenseModel, #p::DefaultAllocator: #p::Storage<#ty> }
+        quote_spanned! {ty.span()=> #ty: #p::Member, #p::DefaultAllocator: #p::Storage<#ty> }
     });
     quote! { where #(#bounds),* }
 }
 
-fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
+/// The associated constants of the `LagrangeDirac` impl, and the operation counts of the
+/// `Derivation` impl.
+fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> (TokenStream, TokenStream) {
     let p = rt();
     let (residual, jacobian) = own.op_counts();
     let subs = composite.subsystems.iter().map(|s| {
         let ty = &s.ty;
-        quote! { .plus(<#ty as #p::LagrangeDirac>::OPERATION_COUNTS) }
+        quote! { .plus(<#ty as #p::Derivation>::OPERATION_COUNTS) }
     });
     let separable = composite.subsystems.iter().map(|s| {
         let ty = &s.ty;
@@ -248,13 +271,15 @@ fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
     });
     let sizes = quote! { #p::Sizes { nq: __NQ, nc: __NC, nh: __NH } };
     let storage = crate::codegen::signatures::fixed_storage(&sizes);
-    quote! {
+    let consts = quote! {
         #storage
         const SEPARABLE: ::core::primitive::bool = true #(&& #separable)*;
         const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN #(|| #prescribed)*;
         const CONSTANT_CONSTRAINTS: ::core::primitive::bool =
             !__PRESCRIBED_OWN && !__VARYING_OWN #(&& #constant)*;
         const STRUCTURE: #p::Structure = #p::Structure { pattern: &__PATTERN, unknowns: &__UNKNOWNS };
+    };
+    let counts = quote! {
         const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
             residual: #residual,
             jacobian: #jacobian,
@@ -262,5 +287,6 @@ fn operation_counts(composite: &Composite<'_>, own: &Own<'_>) -> TokenStream {
             residual_blocks: #residual,
             jacobian_blocks: #jacobian,
         } #(#subs)*;
-    }
+    };
+    (consts, counts)
 }

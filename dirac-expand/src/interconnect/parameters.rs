@@ -41,13 +41,18 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
     let own_count = fields.len();
     let own_k = (0..fields.len()).map(Literal::usize_unsuffixed);
     let (own_k1, own_k2) = (own_k.clone(), own_k);
-    let get = dispatch(&|field, _, _| quote! { return self.#field.parameter_value(k - start); });
-    let set = dispatch(&|field, _, _| quote! { return self.#field.set_parameter_value(k - start, value); });
+    let get = dispatch(
+        &|field, ty, _| quote! { return <#ty as #p::Parameters>::parameter_value(&self.#field, k - start); },
+    );
+    let set = dispatch(
+        &|field, ty, _| quote! { return <#ty as #p::Parameters>::set_parameter_value(&mut self.#field, k - start, value); },
+    );
     let residual = dispatch(&|field, ty, i| {
         let slot = format_ident!("__SLOT{}", i);
         quote! {
             let mut o = #p::ResidualBlocks::<#ty>::zeros();
-            self.#field.residual_blocks_dtheta(
+            <#ty as #p::Parameters>::residual_blocks_dtheta(
+                &self.#field,
                 k - start,
                 t,
                 &#p::gather_q::<#ty, Self>(q, &#slot),
@@ -69,7 +74,8 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
             let start = #start;
             let mut each: [#p::ResidualBlocks<#ty>; COUNT] =
                 ::core::array::from_fn(|_| #p::ResidualBlocks::<#ty>::zeros());
-            self.#field.residual_blocks_dtheta_all(
+            <#ty as #p::Parameters>::residual_blocks_dtheta_all(
+                &self.#field,
                 t,
                 &#p::gather_q::<#ty, Self>(q, &#slot),
                 &#p::gather_q::<#ty, Self>(v, &#slot),
@@ -91,7 +97,7 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
     let own_each = (own_count > 0).then(|| {
         quote! {
             for j in 0..#own_count {
-                self.residual_blocks_dtheta(#own_start + j, t, q, v, lambda, &mut out[#own_start + j]);
+                <Self as #p::Parameters>::residual_blocks_dtheta(self, #own_start + j, t, q, v, lambda, &mut out[#own_start + j]);
             }
         }
     });
@@ -99,7 +105,7 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
         let slot = format_ident!("__SLOT{}", i);
         quote! {
             let mut o = #p::VecH::<#ty>::zeros();
-            self.#field.holonomic_dtheta(k - start, t, &#p::gather_q::<#ty, Self>(q, &#slot), &mut o);
+            <#ty as #p::Parameters>::holonomic_dtheta(&self.#field, k - start, t, &#p::gather_q::<#ty, Self>(q, &#slot), &mut o);
             #p::scatter_h::<#ty, Self>(&o, &#slot, out);
             return;
         }

@@ -53,23 +53,6 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `slide` of `AllFunctions` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 370usize,
-            jacobian: 611usize,
-            residual_and_jacobian: 705usize,
-            residual_blocks: 367usize,
-            jacobian_blocks: 603usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "AllFunctions: L = 0.5*m*(0.25*sin(a)^2 + 1)*va^2 + 0.5*m*vb^2/(c^2 + 1) + 0.5*(tanh(vc) + 2)*vc^2 - k*(cos(a) + sqrt(b^2 + 1) + ln(a^2 + 1) + 0.1*exp(b)) + k*atan2(a, b^2 + 2) + k*tan(0.5*c) + k*atan(c) + 0.1*k*sinh(a*b) + k*cosh(0.5*c) + (b^2 + 1)^(0.75) + (a^2 + 2)^(0.1*b) + 3.141592653589793*k/(c^2 + 1)^2\nda/dt = va\ndb/dt = vb\ndc/dt = vc\ndp_a/dt = -k*va*cos(0.5*t) + 0.25*m*sin(a)*va^2*cos(a) - k*(-sin(a) + 2*a/(a^2 + 1)) + k*(b^2 + 2)/(a^2 + (b^2 + 2)^2) + 0.1*k*b*cosh(a*b) + 0.2*a*b*(a^2 + 2)^(0.1*b - 1) + 2*a*lambda_link\ndp_b/dt = lambda_link - k*(0.1*exp(b) + b/sqrt(b^2 + 1)) - 2*k*a*b/(a^2 + (b^2 + 2)^2) + 0.1*k*a*cosh(a*b) + 1.5*b*(b^2 + 1)^(-0.25) + 0.1*(a^2 + 2)^(0.1*b)*ln(a^2 + 2) + cos(a)*lambda_slide\ndp_c/dt = -k*vc^3 + b/(t^2 + 1) - m*c*vb^2/(c^2 + 1)^2 + 0.5*k*(tan(0.5*c)^2 + 1) + k/(c^2 + 1) + 0.5*k*sinh(0.5*c) - 12.566370614359172*k*c/(c^2 + 1)^3 - cos(c)*lambda_link - (a^2 + 1)*lambda_slide\np_a = m*va*(0.25*sin(a)^2 + 1)\np_b = m*vb/(c^2 + 1)\np_c = 0.5*vc^2*(-tanh(vc)^2 + 1) + vc*(tanh(vc) + 2)\n0 = vb + 2*a*va - vc*cos(c)    (link)\n0 = vb*cos(a) - vc*(a^2 + 1)    (slide)\n0 = b + a^2 - sin(c)    (link, holonomic)",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m \\left(0.25 \\sin\\left(a\\right)^{2} + 1\\right) \\mathrm{va}^{2} + \\frac{0.5 m \\mathrm{vb}^{2}}{c^{2} + 1} + 0.5 \\left(\\tanh\\left(\\mathrm{vc}\\right) + 2\\right) \\mathrm{vc}^{2} - k \\left(\\cos\\left(a\\right) + \\sqrt{b^{2} + 1} + \\ln\\left(a^{2} + 1\\right) + 0.1 \\exp\\left(b\\right)\\right) + k \\operatorname{atan2}\\left(a, b^{2} + 2\\right) + k \\tan\\left(0.5 c\\right) + k \\atan\\left(c\\right) + 0.1 k \\sinh\\left(a b\\right) + k \\cosh\\left(0.5 c\\right) + \\left(b^{2} + 1\\right)^{0.75} + \\left(a^{2} + 2\\right)^{0.1 b} + \\frac{3.141592653589793 k}{\\left(c^{2} + 1\\right)^{2}} \\\\\n\\dot{a} &= \\mathrm{va} \\\\\n\\dot{b} &= \\mathrm{vb} \\\\\n\\dot{c} &= \\mathrm{vc} \\\\\n\\dot{p}_{a} &= -k \\mathrm{va} \\cos\\left(0.5 t\\right) + 0.25 m \\sin\\left(a\\right) \\mathrm{va}^{2} \\cos\\left(a\\right) - k \\left(-\\sin\\left(a\\right) + \\frac{2 a}{a^{2} + 1}\\right) + \\frac{k \\left(b^{2} + 2\\right)}{a^{2} + \\left(b^{2} + 2\\right)^{2}} + 0.1 k b \\cosh\\left(a b\\right) + 0.2 a b \\left(a^{2} + 2\\right)^{0.1 b - 1} + 2 a \\lambda_{\\mathrm{link}} \\\\\n\\dot{p}_{b} &= \\lambda_{\\mathrm{link}} - k \\left(0.1 \\exp\\left(b\\right) + \\frac{b}{\\sqrt{b^{2} + 1}}\\right) - \\frac{2 k a b}{a^{2} + \\left(b^{2} + 2\\right)^{2}} + 0.1 k a \\cosh\\left(a b\\right) + 1.5 b \\left(b^{2} + 1\\right)^{-0.25} + 0.1 \\left(a^{2} + 2\\right)^{0.1 b} \\ln\\left(a^{2} + 2\\right) + \\cos\\left(a\\right) \\lambda_{\\mathrm{slide}} \\\\\n\\dot{p}_{c} &= -k \\mathrm{vc}^{3} + \\frac{b}{t^{2} + 1} - \\frac{m c \\mathrm{vb}^{2}}{\\left(c^{2} + 1\\right)^{2}} + 0.5 k \\left(\\tan\\left(0.5 c\\right)^{2} + 1\\right) + \\frac{k}{c^{2} + 1} + 0.5 k \\sinh\\left(0.5 c\\right) - \\frac{12.566370614359172 k c}{\\left(c^{2} + 1\\right)^{3}} - \\cos\\left(c\\right) \\lambda_{\\mathrm{link}} - \\left(a^{2} + 1\\right) \\lambda_{\\mathrm{slide}} \\\\\np_{a} &= m \\mathrm{va} \\left(0.25 \\sin\\left(a\\right)^{2} + 1\\right) \\\\\np_{b} &= \\frac{m \\mathrm{vb}}{c^{2} + 1} \\\\\np_{c} &= 0.5 \\mathrm{vc}^{2} \\left(-\\tanh\\left(\\mathrm{vc}\\right)^{2} + 1\\right) + \\mathrm{vc} \\left(\\tanh\\left(\\mathrm{vc}\\right) + 2\\right) \\\\\n0 &= \\mathrm{vb} + 2 a \\mathrm{va} - \\mathrm{vc} \\cos\\left(c\\right) && \\text{(link)} \\\\\n0 &= \\mathrm{vb} \\cos\\left(a\\right) - \\mathrm{vc} \\left(a^{2} + 1\\right) && \\text{(slide)} \\\\\n0 &= b + a^{2} - \\sin\\left(c\\right) && \\text{(link, holonomic)}\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -648,6 +631,32 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for AllFunctions {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 370usize,
+            jacobian: 611usize,
+            residual_and_jacobian: 705usize,
+            residual_blocks: 367usize,
+            jacobian_blocks: 603usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "AllFunctions: L = 0.5*m*(0.25*sin(a)^2 + 1)*va^2 + 0.5*m*vb^2/(c^2 + 1) + 0.5*(tanh(vc) + 2)*vc^2 - k*(cos(a) + sqrt(b^2 + 1) + ln(a^2 + 1) + 0.1*exp(b)) + k*atan2(a, b^2 + 2) + k*tan(0.5*c) + k*atan(c) + 0.1*k*sinh(a*b) + k*cosh(0.5*c) + (b^2 + 1)^(0.75) + (a^2 + 2)^(0.1*b) + 3.141592653589793*k/(c^2 + 1)^2\nda/dt = va\ndb/dt = vb\ndc/dt = vc\ndp_a/dt = -k*va*cos(0.5*t) + 0.25*m*sin(a)*va^2*cos(a) - k*(-sin(a) + 2*a/(a^2 + 1)) + k*(b^2 + 2)/(a^2 + (b^2 + 2)^2) + 0.1*k*b*cosh(a*b) + 0.2*a*b*(a^2 + 2)^(0.1*b - 1) + 2*a*lambda_link\ndp_b/dt = lambda_link - k*(0.1*exp(b) + b/sqrt(b^2 + 1)) - 2*k*a*b/(a^2 + (b^2 + 2)^2) + 0.1*k*a*cosh(a*b) + 1.5*b*(b^2 + 1)^(-0.25) + 0.1*(a^2 + 2)^(0.1*b)*ln(a^2 + 2) + cos(a)*lambda_slide\ndp_c/dt = -k*vc^3 + b/(t^2 + 1) - m*c*vb^2/(c^2 + 1)^2 + 0.5*k*(tan(0.5*c)^2 + 1) + k/(c^2 + 1) + 0.5*k*sinh(0.5*c) - 12.566370614359172*k*c/(c^2 + 1)^3 - cos(c)*lambda_link - (a^2 + 1)*lambda_slide\np_a = m*va*(0.25*sin(a)^2 + 1)\np_b = m*vb/(c^2 + 1)\np_c = 0.5*vc^2*(-tanh(vc)^2 + 1) + vc*(tanh(vc) + 2)\n0 = vb + 2*a*va - vc*cos(c)    (link)\n0 = vb*cos(a) - vc*(a^2 + 1)    (slide)\n0 = b + a^2 - sin(c)    (link, holonomic)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(0.25 \\sin\\left(a\\right)^{2} + 1\\right) \\mathrm{va}^{2} + \\frac{0.5 m \\mathrm{vb}^{2}}{c^{2} + 1} + 0.5 \\left(\\tanh\\left(\\mathrm{vc}\\right) + 2\\right) \\mathrm{vc}^{2} - k \\left(\\cos\\left(a\\right) + \\sqrt{b^{2} + 1} + \\ln\\left(a^{2} + 1\\right) + 0.1 \\exp\\left(b\\right)\\right) + k \\operatorname{atan2}\\left(a, b^{2} + 2\\right) + k \\tan\\left(0.5 c\\right) + k \\atan\\left(c\\right) + 0.1 k \\sinh\\left(a b\\right) + k \\cosh\\left(0.5 c\\right) + \\left(b^{2} + 1\\right)^{0.75} + \\left(a^{2} + 2\\right)^{0.1 b} + \\frac{3.141592653589793 k}{\\left(c^{2} + 1\\right)^{2}} \\\\\n\\dot{a} &= \\mathrm{va} \\\\\n\\dot{b} &= \\mathrm{vb} \\\\\n\\dot{c} &= \\mathrm{vc} \\\\\n\\dot{p}_{a} &= -k \\mathrm{va} \\cos\\left(0.5 t\\right) + 0.25 m \\sin\\left(a\\right) \\mathrm{va}^{2} \\cos\\left(a\\right) - k \\left(-\\sin\\left(a\\right) + \\frac{2 a}{a^{2} + 1}\\right) + \\frac{k \\left(b^{2} + 2\\right)}{a^{2} + \\left(b^{2} + 2\\right)^{2}} + 0.1 k b \\cosh\\left(a b\\right) + 0.2 a b \\left(a^{2} + 2\\right)^{0.1 b - 1} + 2 a \\lambda_{\\mathrm{link}} \\\\\n\\dot{p}_{b} &= \\lambda_{\\mathrm{link}} - k \\left(0.1 \\exp\\left(b\\right) + \\frac{b}{\\sqrt{b^{2} + 1}}\\right) - \\frac{2 k a b}{a^{2} + \\left(b^{2} + 2\\right)^{2}} + 0.1 k a \\cosh\\left(a b\\right) + 1.5 b \\left(b^{2} + 1\\right)^{-0.25} + 0.1 \\left(a^{2} + 2\\right)^{0.1 b} \\ln\\left(a^{2} + 2\\right) + \\cos\\left(a\\right) \\lambda_{\\mathrm{slide}} \\\\\n\\dot{p}_{c} &= -k \\mathrm{vc}^{3} + \\frac{b}{t^{2} + 1} - \\frac{m c \\mathrm{vb}^{2}}{\\left(c^{2} + 1\\right)^{2}} + 0.5 k \\left(\\tan\\left(0.5 c\\right)^{2} + 1\\right) + \\frac{k}{c^{2} + 1} + 0.5 k \\sinh\\left(0.5 c\\right) - \\frac{12.566370614359172 k c}{\\left(c^{2} + 1\\right)^{3}} - \\cos\\left(c\\right) \\lambda_{\\mathrm{link}} - \\left(a^{2} + 1\\right) \\lambda_{\\mathrm{slide}} \\\\\np_{a} &= m \\mathrm{va} \\left(0.25 \\sin\\left(a\\right)^{2} + 1\\right) \\\\\np_{b} &= \\frac{m \\mathrm{vb}}{c^{2} + 1} \\\\\np_{c} &= 0.5 \\mathrm{vc}^{2} \\left(-\\tanh\\left(\\mathrm{vc}\\right)^{2} + 1\\right) + \\mathrm{vc} \\left(\\tanh\\left(\\mathrm{vc}\\right) + 2\\right) \\\\\n0 &= \\mathrm{vb} + 2 a \\mathrm{va} - \\mathrm{vc} \\cos\\left(c\\right) && \\text{(link)} \\\\\n0 &= \\mathrm{vb} \\cos\\left(a\\right) - \\mathrm{vc} \\left(a^{2} + 1\\right) && \\text{(slide)} \\\\\n0 &= b + a^{2} - \\sin\\left(c\\right) && \\text{(link, holonomic)}\n\\end{aligned}",
+                ),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for AllFunctions {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for AllFunctions {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -783,6 +792,9 @@ const _: () = {
             out[1].constraint_velocity[1usize] = 0f64;
         }
     }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for AllFunctions {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::SparseJacobian for AllFunctions {

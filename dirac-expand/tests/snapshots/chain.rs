@@ -252,9 +252,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Dimensions for Chain
     where
-        Primitive1: ::dirac::__private::DenseModel,
+        Primitive1: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::DenseModel,
+        Primitive2: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         type Nq = ::dirac::__private::Const<{ __NQ }>;
@@ -266,9 +266,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Named for Chain
     where
-        Primitive1: ::dirac::__private::DenseModel,
+        Primitive1: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::DenseModel,
+        Primitive2: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
@@ -310,9 +310,9 @@ const _: () = {
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for Chain
     where
-        Primitive1: ::dirac::__private::DenseModel,
+        Primitive1: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::DenseModel,
+        Primitive2: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         type Algebra = ::dirac::__private::Dense;
@@ -344,60 +344,6 @@ const _: () = {
             pattern: &__PATTERN,
             unknowns: &__UNKNOWNS,
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 1usize,
-            jacobian: 0usize,
-            residual_and_jacobian: 1usize + 0usize,
-            residual_blocks: 1usize,
-            jacobian_blocks: 0usize,
-        }
-            .plus(<Primitive1 as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS)
-            .plus(<Primitive2 as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS);
-        fn equations() -> ::dirac::__private::Equations {
-            let mut text = ::std::string::String::new();
-            text.push_str("Chain: interconnection of left, right");
-            let mut latex = ::std::string::String::new();
-            text.push_str(
-                &::std::format!(
-                    "\n[{}]\n{}", "left", < Primitive1 as
-                    ::dirac::__private::LagrangeDirac > ::equations().text
-                ),
-            );
-            text.push_str(
-                &::std::format!(
-                    "\n[{}]\n{}", "right", < Primitive2 as
-                    ::dirac::__private::LagrangeDirac > ::equations().text
-                ),
-            );
-            latex
-                .push_str(
-                    &::std::format!(
-                        "\\text{{{}:}}\\\\\n{}\n", "left", < Primitive1 as
-                        ::dirac::__private::LagrangeDirac > ::equations().latex
-                    ),
-                );
-            latex
-                .push_str(
-                    &::std::format!(
-                        "\\text{{{}:}}\\\\\n{}\n", "right", < Primitive2 as
-                        ::dirac::__private::LagrangeDirac > ::equations().latex
-                    ),
-                );
-            text.push_str("\n[interconnection]\n");
-            text.push_str(
-                "0 = v[left.x2] - v[right.x2bar]    (connect0, multiplier mu_connect0)",
-            );
-            latex.push_str("\\begin{aligned}\n");
-            latex
-                .push_str(
-                    "0 &= v_{\\mathrm{left.x2}} - v_{\\mathrm{right.x2bar}} && \\text{(connect0)}",
-                );
-            latex.push_str("\n\\end{aligned}");
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Owned(text),
-                latex: ::dirac::__private::Cow::Owned(latex),
-            }
-        }
         #[inline]
         fn lagrangian(
             &self,
@@ -1184,56 +1130,6 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
-            let start = 0;
-            if k >= start
-                && k
-                    < start
-                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.left.input_value(k - start);
-            }
-            let start = 0
-                + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
-            if k >= start
-                && k
-                    < start
-                        + <Primitive2 as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.right.input_value(k - start);
-            }
-            ::core::panic!(
-                "the model has no input {}: it has {}", k, < Self as
-                ::dirac::__private::Named > ::NAMES.input_count()
-            )
-        }
-        fn set_input_value(
-            &mut self,
-            k: ::core::primitive::usize,
-            value: ::core::primitive::f64,
-        ) {
-            let start = 0;
-            if k >= start
-                && k
-                    < start
-                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.left.set_input_value(k - start, value);
-            }
-            let start = 0
-                + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
-            if k >= start
-                && k
-                    < start
-                        + <Primitive2 as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.right.set_input_value(k - start, value);
-            }
-            ::core::panic!(
-                "the model has no input {}: it has {}", k, < Self as
-                ::dirac::__private::Named > ::NAMES.input_count()
-            )
-        }
         fn outputs(
             &self,
             t: ::core::primitive::f64,
@@ -1252,23 +1148,17 @@ const _: () = {
                     <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
                 );
                 if count > 0 {
-                    self.left
-                        .outputs(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &::dirac::__private::gather_c::<
-                                Primitive1,
-                                Self,
-                            >(lambda, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
+                    <Primitive1 as ::dirac::__private::LagrangeDirac>::outputs(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
                 }
             }
             {
@@ -1277,25 +1167,155 @@ const _: () = {
                     <Primitive2 as ::dirac::__private::Named>::NAMES.output_count(),
                 );
                 if count > 0 {
-                    self.right
-                        .outputs(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &::dirac::__private::gather_c::<
-                                Primitive2,
-                                Self,
-                            >(lambda, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
+                    <Primitive2 as ::dirac::__private::LagrangeDirac>::outputs(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
                 }
             }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for Chain
+    where
+        Primitive1: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 1usize,
+            jacobian: 0usize,
+            residual_and_jacobian: 1usize + 0usize,
+            residual_blocks: 1usize,
+            jacobian_blocks: 0usize,
+        }
+            .plus(<Primitive1 as ::dirac::__private::Derivation>::OPERATION_COUNTS)
+            .plus(<Primitive2 as ::dirac::__private::Derivation>::OPERATION_COUNTS);
+        fn equations() -> ::dirac::__private::Equations {
+            let mut text = ::std::string::String::new();
+            text.push_str("Chain: interconnection of left, right");
+            let mut latex = ::std::string::String::new();
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "left", < Primitive1 as ::dirac::__private::Derivation
+                    > ::equations().text
+                ),
+            );
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "right", < Primitive2 as ::dirac::__private::Derivation
+                    > ::equations().text
+                ),
+            );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "left", < Primitive1 as
+                        ::dirac::__private::Derivation > ::equations().latex
+                    ),
+                );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "right", < Primitive2 as
+                        ::dirac::__private::Derivation > ::equations().latex
+                    ),
+                );
+            text.push_str("\n[interconnection]\n");
+            text.push_str(
+                "0 = v[left.x2] - v[right.x2bar]    (connect0, multiplier mu_connect0)",
+            );
+            latex.push_str("\\begin{aligned}\n");
+            latex
+                .push_str(
+                    "0 &= v_{\\mathrm{left.x2}} - v_{\\mathrm{right.x2bar}} && \\text{(connect0)}",
+                );
+            latex.push_str("\n\\end{aligned}");
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Owned(text),
+                latex: ::dirac::__private::Cow::Owned(latex),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for Chain
+    where
+        Primitive1: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
+        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Primitive1 as ::dirac::__private::InputsOutputs>::input_value(
+                    &self.left,
+                    k - start,
+                );
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Primitive2 as ::dirac::__private::InputsOutputs>::input_value(
+                    &self.right,
+                    k - start,
+                );
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
+        }
+        fn set_input_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            let start = 0;
+            if k >= start
+                && k
+                    < start
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Primitive1 as ::dirac::__private::InputsOutputs>::set_input_value(
+                    &mut self.left,
+                    k - start,
+                    value,
+                );
+            }
+            let start = 0
+                + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k
+                    < start
+                        + <Primitive2 as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Primitive2 as ::dirac::__private::InputsOutputs>::set_input_value(
+                    &mut self.right,
+                    k - start,
+                    value,
+                );
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
         }
         fn dpdot_du(
             &self,
@@ -1318,23 +1338,17 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.left
-                        .dpdot_du(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &::dirac::__private::gather_c::<
-                                Primitive1,
-                                Self,
-                            >(lambda, &__SLOT0),
-                            &mut block,
-                        );
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::dpdot_du(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1351,23 +1365,17 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.right
-                        .dpdot_du(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &::dirac::__private::gather_c::<
-                                Primitive2,
-                                Self,
-                            >(lambda, &__SLOT1),
-                            &mut block,
-                        );
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::dpdot_du(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1403,19 +1411,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.left
-                        .l_vu(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::l_vu(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1432,19 +1434,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.right
-                        .l_vu(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::l_vu(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1480,19 +1476,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.left
-                        .output_dq(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::output_dq(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1509,19 +1499,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.right
-                        .output_dq(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::output_dq(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1557,19 +1541,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.left
-                        .output_dv(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::output_dv(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1586,19 +1564,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.right
-                        .output_dv(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::output_dv(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1634,19 +1606,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.left
-                        .output_du(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::output_du(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1663,19 +1629,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.right
-                        .output_du(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::output_du(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1693,232 +1653,16 @@ const _: () = {
                 }
             }
         }
-        fn unilateral(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), < Self as ::dirac::__private::Named > ::NAMES
-                .unilateral_count(), "{}: wrong slice length", "unilateral"
-            );
-            {
-                let (start, count) = (
-                    0,
-                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.left
-                        .unilateral(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-            {
-                let (start, count) = (
-                    0
-                        + <Primitive1 as ::dirac::__private::Named>::NAMES
-                            .unilateral_count(),
-                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.right
-                        .unilateral(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-        }
-        fn restitution(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), < Self as ::dirac::__private::Named > ::NAMES
-                .unilateral_count(), "{}: wrong slice length", "restitution"
-            );
-            {
-                let (start, count) = (
-                    0,
-                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.left
-                        .restitution(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-            {
-                let (start, count) = (
-                    0
-                        + <Primitive1 as ::dirac::__private::Named>::NAMES
-                            .unilateral_count(),
-                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.right
-                        .restitution(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-        }
-        fn events(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            lambda: &::dirac::__private::VecC<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), < Self as ::dirac::__private::Named > ::NAMES.event_count(),
-                "{}: wrong slice length", "events"
-            );
-            {
-                let (start, count) = (
-                    0,
-                    <Primitive1 as ::dirac::__private::Named>::NAMES.event_count(),
-                );
-                if count > 0 {
-                    self.left
-                        .events(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(v, &__SLOT0),
-                            &::dirac::__private::gather_c::<
-                                Primitive1,
-                                Self,
-                            >(lambda, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-            {
-                let (start, count) = (
-                    0 + <Primitive1 as ::dirac::__private::Named>::NAMES.event_count(),
-                    <Primitive2 as ::dirac::__private::Named>::NAMES.event_count(),
-                );
-                if count > 0 {
-                    self.right
-                        .events(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(v, &__SLOT1),
-                            &::dirac::__private::gather_c::<
-                                Primitive2,
-                                Self,
-                            >(lambda, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-        }
-        fn unilateral_dq(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            let total_rows = <Self as ::dirac::__private::Named>::NAMES
-                .unilateral_count();
-            ::core::assert_eq!(
-                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
-                "unilateral_dq: wrong slice length"
-            );
-            out.fill(0.0);
-            {
-                let (rows, cols) = (
-                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
-                );
-                if rows > 0 {
-                    let mut block = ::std::vec![0.0; rows * cols];
-                    self.left
-                        .unilateral_dq(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive1,
-                                Self,
-                            >(q, &__SLOT0),
-                            &mut block,
-                        );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, __SLOT0.q),
-                        out,
-                    );
-                }
-            }
-            {
-                let (rows, cols) = (
-                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
-                );
-                if rows > 0 {
-                    let mut block = ::std::vec![0.0; rows * cols];
-                    self.right
-                        .unilateral_dq(
-                            t,
-                            &::dirac::__private::gather_q::<
-                                Primitive2,
-                                Self,
-                            >(q, &__SLOT1),
-                            &mut block,
-                        );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
-                                + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .unilateral_count(),
-                            __SLOT1.q,
-                        ),
-                        out,
-                    );
-                }
-            }
-        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for Chain
+    where
+        Primitive1: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -1930,7 +1674,10 @@ const _: () = {
                         + <Primitive1 as ::dirac::__private::Named>::NAMES
                             .parameter_count()
             {
-                return self.left.parameter_value(k - start);
+                return <Primitive1 as ::dirac::__private::Parameters>::parameter_value(
+                    &self.left,
+                    k - start,
+                );
             }
             let start = 0
                 + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
@@ -1940,7 +1687,10 @@ const _: () = {
                         + <Primitive2 as ::dirac::__private::Named>::NAMES
                             .parameter_count()
             {
-                return self.right.parameter_value(k - start);
+                return <Primitive2 as ::dirac::__private::Parameters>::parameter_value(
+                    &self.right,
+                    k - start,
+                );
             }
             match k
                 .wrapping_sub(
@@ -1971,7 +1721,11 @@ const _: () = {
                         + <Primitive1 as ::dirac::__private::Named>::NAMES
                             .parameter_count()
             {
-                return self.left.set_parameter_value(k - start, value);
+                return <Primitive1 as ::dirac::__private::Parameters>::set_parameter_value(
+                    &mut self.left,
+                    k - start,
+                    value,
+                );
             }
             let start = 0
                 + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
@@ -1981,7 +1735,11 @@ const _: () = {
                         + <Primitive2 as ::dirac::__private::Named>::NAMES
                             .parameter_count()
             {
-                return self.right.set_parameter_value(k - start, value);
+                return <Primitive2 as ::dirac::__private::Parameters>::set_parameter_value(
+                    &mut self.right,
+                    k - start,
+                    value,
+                );
             }
             match k
                 .wrapping_sub(
@@ -2021,18 +1779,15 @@ const _: () = {
                             .parameter_count()
             {
                 let mut o = ::dirac::__private::ResidualBlocks::<Primitive1>::zeros();
-                self.left
-                    .residual_blocks_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
-                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
-                        &::dirac::__private::gather_c::<
-                            Primitive1,
-                            Self,
-                        >(lambda, &__SLOT0),
-                        &mut o,
-                    );
+                <Primitive1 as ::dirac::__private::Parameters>::residual_blocks_dtheta(
+                    &self.left,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                    &::dirac::__private::gather_c::<Primitive1, Self>(lambda, &__SLOT0),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_q::<
                     Primitive1,
                     Self,
@@ -2056,18 +1811,15 @@ const _: () = {
                             .parameter_count()
             {
                 let mut o = ::dirac::__private::ResidualBlocks::<Primitive2>::zeros();
-                self.right
-                    .residual_blocks_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
-                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
-                        &::dirac::__private::gather_c::<
-                            Primitive2,
-                            Self,
-                        >(lambda, &__SLOT1),
-                        &mut o,
-                    );
+                <Primitive2 as ::dirac::__private::Parameters>::residual_blocks_dtheta(
+                    &self.right,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                    &::dirac::__private::gather_c::<Primitive2, Self>(lambda, &__SLOT1),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_q::<
                     Primitive2,
                     Self,
@@ -2114,17 +1866,14 @@ const _: () = {
                 let mut each: [::dirac::__private::ResidualBlocks<Primitive1>; COUNT] = ::core::array::from_fn(|
                     _|
                 ::dirac::__private::ResidualBlocks::<Primitive1>::zeros());
-                self.left
-                    .residual_blocks_dtheta_all(
-                        t,
-                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
-                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
-                        &::dirac::__private::gather_c::<
-                            Primitive1,
-                            Self,
-                        >(lambda, &__SLOT0),
-                        &mut each,
-                    );
+                <Primitive1 as ::dirac::__private::Parameters>::residual_blocks_dtheta_all(
+                    &self.left,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                    &::dirac::__private::gather_c::<Primitive1, Self>(lambda, &__SLOT0),
+                    &mut each,
+                );
                 for j in 0..COUNT {
                     let (o, out) = (&each[j], &mut out[start + j]);
                     out.momentum_rate.fill(0.0);
@@ -2152,17 +1901,14 @@ const _: () = {
                 let mut each: [::dirac::__private::ResidualBlocks<Primitive2>; COUNT] = ::core::array::from_fn(|
                     _|
                 ::dirac::__private::ResidualBlocks::<Primitive2>::zeros());
-                self.right
-                    .residual_blocks_dtheta_all(
-                        t,
-                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
-                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
-                        &::dirac::__private::gather_c::<
-                            Primitive2,
-                            Self,
-                        >(lambda, &__SLOT1),
-                        &mut each,
-                    );
+                <Primitive2 as ::dirac::__private::Parameters>::residual_blocks_dtheta_all(
+                    &self.right,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                    &::dirac::__private::gather_c::<Primitive2, Self>(lambda, &__SLOT1),
+                    &mut each,
+                );
                 for j in 0..COUNT {
                     let (o, out) = (&each[j], &mut out[start + j]);
                     out.momentum_rate.fill(0.0);
@@ -2200,13 +1946,13 @@ const _: () = {
                             .parameter_count()
             {
                 let mut o = ::dirac::__private::VecH::<Primitive1>::zeros();
-                self.left
-                    .holonomic_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
-                        &mut o,
-                    );
+                <Primitive1 as ::dirac::__private::Parameters>::holonomic_dtheta(
+                    &self.left,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_h::<Primitive1, Self>(&o, &__SLOT0, out);
                 return;
             }
@@ -2219,13 +1965,13 @@ const _: () = {
                             .parameter_count()
             {
                 let mut o = ::dirac::__private::VecH::<Primitive2>::zeros();
-                self.right
-                    .holonomic_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
-                        &mut o,
-                    );
+                <Primitive2 as ::dirac::__private::Parameters>::holonomic_dtheta(
+                    &self.right,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_h::<Primitive2, Self>(&o, &__SLOT1, out);
                 return;
             }
@@ -2246,11 +1992,216 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    impl ::dirac::__private::Hybrid for Chain
+    where
+        Primitive1: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {
+        fn unilateral(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .unilateral_count(), "{}: wrong slice length", "unilateral"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Primitive1 as ::dirac::__private::Hybrid>::unilateral(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+            {
+                let (start, count) = (
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .unilateral_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Primitive2 as ::dirac::__private::Hybrid>::unilateral(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+        }
+        fn restitution(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .unilateral_count(), "{}: wrong slice length", "restitution"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Primitive1 as ::dirac::__private::Hybrid>::restitution(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+            {
+                let (start, count) = (
+                    0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .unilateral_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Primitive2 as ::dirac::__private::Hybrid>::restitution(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+        }
+        fn events(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES.event_count(),
+                "{}: wrong slice length", "events"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.event_count(),
+                );
+                if count > 0 {
+                    <Primitive1 as ::dirac::__private::Hybrid>::events(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Primitive1 as ::dirac::__private::Named>::NAMES.event_count(),
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.event_count(),
+                );
+                if count > 0 {
+                    <Primitive2 as ::dirac::__private::Hybrid>::events(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+        }
+        fn unilateral_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES
+                .unilateral_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "unilateral_dq: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Primitive1 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Primitive1 as ::dirac::__private::Hybrid>::unilateral_dq(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &mut block,
+                    );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Primitive2 as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Primitive2 as ::dirac::__private::Hybrid>::unilateral_dq(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &mut block,
+                    );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .unilateral_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+    }
+    #[automatically_derived]
     impl Chain
     where
-        Primitive1: ::dirac::__private::DenseModel,
+        Primitive1: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
-        Primitive2: ::dirac::__private::DenseModel,
+        Primitive2: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
     {
         ///A coordinate of the subsystem `left` as a coordinate of this interconnection.

@@ -371,9 +371,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Dimensions for CoupledByOneForm
     where
-        Wheel: ::dirac::__private::DenseModel,
+        Wheel: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::DenseModel,
+        Cart: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         type Nq = ::dirac::__private::Const<{ __NQ }>;
@@ -385,9 +385,9 @@ const _: () = {
     #[automatically_derived]
     impl ::dirac::__private::Named for CoupledByOneForm
     where
-        Wheel: ::dirac::__private::DenseModel,
+        Wheel: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::DenseModel,
+        Cart: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         const NAMES: &'static ::dirac::__private::Names = &::dirac::__private::Names {
@@ -429,9 +429,9 @@ const _: () = {
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::LagrangeDirac for CoupledByOneForm
     where
-        Wheel: ::dirac::__private::DenseModel,
+        Wheel: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::DenseModel,
+        Cart: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         type Algebra = ::dirac::__private::Dense;
@@ -463,60 +463,6 @@ const _: () = {
             pattern: &__PATTERN,
             unknowns: &__UNKNOWNS,
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 19usize,
-            jacobian: 21usize,
-            residual_and_jacobian: 19usize + 21usize,
-            residual_blocks: 19usize,
-            jacobian_blocks: 21usize,
-        }
-            .plus(<Wheel as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS)
-            .plus(<Cart as ::dirac::__private::LagrangeDirac>::OPERATION_COUNTS);
-        fn equations() -> ::dirac::__private::Equations {
-            let mut text = ::std::string::String::new();
-            text.push_str("CoupledByOneForm: interconnection of wheel, cart");
-            let mut latex = ::std::string::String::new();
-            text.push_str(
-                &::std::format!(
-                    "\n[{}]\n{}", "wheel", < Wheel as ::dirac::__private::LagrangeDirac >
-                    ::equations().text
-                ),
-            );
-            text.push_str(
-                &::std::format!(
-                    "\n[{}]\n{}", "cart", < Cart as ::dirac::__private::LagrangeDirac >
-                    ::equations().text
-                ),
-            );
-            latex
-                .push_str(
-                    &::std::format!(
-                        "\\text{{{}:}}\\\\\n{}\n", "wheel", < Wheel as
-                        ::dirac::__private::LagrangeDirac > ::equations().latex
-                    ),
-                );
-            latex
-                .push_str(
-                    &::std::format!(
-                        "\\text{{{}:}}\\\\\n{}\n", "cart", < Cart as
-                        ::dirac::__private::LagrangeDirac > ::equations().latex
-                    ),
-                );
-            text.push_str("\n[interconnection]\n");
-            text.push_str(
-                "0 = (0.1*sin(wheel.theta) + 1)*wheel.v_theta - c*cos(cart.x)*cart.v_x    (tie, multiplier mu_tie)",
-            );
-            latex.push_str("\\begin{aligned}\n");
-            latex
-                .push_str(
-                    "0 &= \\left(0.1 \\sin\\left(\\mathrm{wheel.theta}\\right) + 1\\right) \\mathrm{wheel.v\\_theta} - c \\cos\\left(\\mathrm{cart.x}\\right) \\mathrm{cart.v\\_x} && \\text{(tie)}",
-                );
-            latex.push_str("\n\\end{aligned}");
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Owned(text),
-                latex: ::dirac::__private::Cow::Owned(latex),
-            }
-        }
         #[inline]
         fn lagrangian(
             &self,
@@ -1398,46 +1344,6 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
-            let start = 0;
-            if k >= start
-                && k < start + <Wheel as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.wheel.input_value(k - start);
-            }
-            let start = 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
-            if k >= start
-                && k < start + <Cart as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.cart.input_value(k - start);
-            }
-            ::core::panic!(
-                "the model has no input {}: it has {}", k, < Self as
-                ::dirac::__private::Named > ::NAMES.input_count()
-            )
-        }
-        fn set_input_value(
-            &mut self,
-            k: ::core::primitive::usize,
-            value: ::core::primitive::f64,
-        ) {
-            let start = 0;
-            if k >= start
-                && k < start + <Wheel as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.wheel.set_input_value(k - start, value);
-            }
-            let start = 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
-            if k >= start
-                && k < start + <Cart as ::dirac::__private::Named>::NAMES.input_count()
-            {
-                return self.cart.set_input_value(k - start, value);
-            }
-            ::core::panic!(
-                "the model has no input {}: it has {}", k, < Self as
-                ::dirac::__private::Named > ::NAMES.input_count()
-            )
-        }
         fn outputs(
             &self,
             t: ::core::primitive::f64,
@@ -1456,17 +1362,14 @@ const _: () = {
                     <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
                 );
                 if count > 0 {
-                    self.wheel
-                        .outputs(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &::dirac::__private::gather_c::<
-                                Wheel,
-                                Self,
-                            >(lambda, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
+                    <Wheel as ::dirac::__private::LagrangeDirac>::outputs(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
                 }
             }
             {
@@ -1475,19 +1378,142 @@ const _: () = {
                     <Cart as ::dirac::__private::Named>::NAMES.output_count(),
                 );
                 if count > 0 {
-                    self.cart
-                        .outputs(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &::dirac::__private::gather_c::<
-                                Cart,
-                                Self,
-                            >(lambda, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
+                    <Cart as ::dirac::__private::LagrangeDirac>::outputs(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
                 }
             }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 19usize,
+            jacobian: 21usize,
+            residual_and_jacobian: 19usize + 21usize,
+            residual_blocks: 19usize,
+            jacobian_blocks: 21usize,
+        }
+            .plus(<Wheel as ::dirac::__private::Derivation>::OPERATION_COUNTS)
+            .plus(<Cart as ::dirac::__private::Derivation>::OPERATION_COUNTS);
+        fn equations() -> ::dirac::__private::Equations {
+            let mut text = ::std::string::String::new();
+            text.push_str("CoupledByOneForm: interconnection of wheel, cart");
+            let mut latex = ::std::string::String::new();
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "wheel", < Wheel as ::dirac::__private::Derivation >
+                    ::equations().text
+                ),
+            );
+            text.push_str(
+                &::std::format!(
+                    "\n[{}]\n{}", "cart", < Cart as ::dirac::__private::Derivation >
+                    ::equations().text
+                ),
+            );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "wheel", < Wheel as
+                        ::dirac::__private::Derivation > ::equations().latex
+                    ),
+                );
+            latex
+                .push_str(
+                    &::std::format!(
+                        "\\text{{{}:}}\\\\\n{}\n", "cart", < Cart as
+                        ::dirac::__private::Derivation > ::equations().latex
+                    ),
+                );
+            text.push_str("\n[interconnection]\n");
+            text.push_str(
+                "0 = (0.1*sin(wheel.theta) + 1)*wheel.v_theta - c*cos(cart.x)*cart.v_x    (tie, multiplier mu_tie)",
+            );
+            latex.push_str("\\begin{aligned}\n");
+            latex
+                .push_str(
+                    "0 &= \\left(0.1 \\sin\\left(\\mathrm{wheel.theta}\\right) + 1\\right) \\mathrm{wheel.v\\_theta} - c \\cos\\left(\\mathrm{cart.x}\\right) \\mathrm{cart.v\\_x} && \\text{(tie)}",
+                );
+            latex.push_str("\n\\end{aligned}");
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Owned(text),
+                latex: ::dirac::__private::Cow::Owned(latex),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
+        fn input_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+            let start = 0;
+            if k >= start
+                && k < start + <Wheel as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Wheel as ::dirac::__private::InputsOutputs>::input_value(
+                    &self.wheel,
+                    k - start,
+                );
+            }
+            let start = 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k < start + <Cart as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Cart as ::dirac::__private::InputsOutputs>::input_value(
+                    &self.cart,
+                    k - start,
+                );
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
+        }
+        fn set_input_value(
+            &mut self,
+            k: ::core::primitive::usize,
+            value: ::core::primitive::f64,
+        ) {
+            let start = 0;
+            if k >= start
+                && k < start + <Wheel as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Wheel as ::dirac::__private::InputsOutputs>::set_input_value(
+                    &mut self.wheel,
+                    k - start,
+                    value,
+                );
+            }
+            let start = 0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
+            if k >= start
+                && k < start + <Cart as ::dirac::__private::Named>::NAMES.input_count()
+            {
+                return <Cart as ::dirac::__private::InputsOutputs>::set_input_value(
+                    &mut self.cart,
+                    k - start,
+                    value,
+                );
+            }
+            ::core::panic!(
+                "the model has no input {}: it has {}", k, < Self as
+                ::dirac::__private::Named > ::NAMES.input_count()
+            )
         }
         fn dpdot_du(
             &self,
@@ -1510,17 +1536,14 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.wheel
-                        .dpdot_du(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &::dirac::__private::gather_c::<
-                                Wheel,
-                                Self,
-                            >(lambda, &__SLOT0),
-                            &mut block,
-                        );
+                    <Wheel as ::dirac::__private::InputsOutputs>::dpdot_du(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1537,17 +1560,14 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.cart
-                        .dpdot_du(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &::dirac::__private::gather_c::<
-                                Cart,
-                                Self,
-                            >(lambda, &__SLOT1),
-                            &mut block,
-                        );
+                    <Cart as ::dirac::__private::InputsOutputs>::dpdot_du(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1581,13 +1601,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.wheel
-                        .l_vu(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Wheel as ::dirac::__private::InputsOutputs>::l_vu(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1604,13 +1624,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.cart
-                        .l_vu(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Cart as ::dirac::__private::InputsOutputs>::l_vu(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1644,13 +1664,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.wheel
-                        .output_dq(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Wheel as ::dirac::__private::InputsOutputs>::output_dq(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1667,13 +1687,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.cart
-                        .output_dq(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Cart as ::dirac::__private::InputsOutputs>::output_dq(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1709,13 +1729,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.wheel
-                        .output_dv(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Wheel as ::dirac::__private::InputsOutputs>::output_dv(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1732,13 +1752,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.cart
-                        .output_dv(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Cart as ::dirac::__private::InputsOutputs>::output_dv(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1774,13 +1794,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.wheel
-                        .output_du(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &mut block,
-                        );
+                    <Wheel as ::dirac::__private::InputsOutputs>::output_du(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1797,13 +1817,13 @@ const _: () = {
                 );
                 if rows * cols > 0 {
                     let mut block = ::std::vec![0.0; rows * cols];
-                    self.cart
-                        .output_du(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &mut block,
-                        );
+                    <Cart as ::dirac::__private::InputsOutputs>::output_du(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
                     ::dirac::__private::place_block(
                         &block,
                         rows,
@@ -1819,198 +1839,16 @@ const _: () = {
                 }
             }
         }
-        fn unilateral(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), < Self as ::dirac::__private::Named > ::NAMES
-                .unilateral_count(), "{}: wrong slice length", "unilateral"
-            );
-            {
-                let (start, count) = (
-                    0,
-                    <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.wheel
-                        .unilateral(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-            {
-                let (start, count) = (
-                    0 + <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                    <Cart as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.cart
-                        .unilateral(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-        }
-        fn restitution(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), < Self as ::dirac::__private::Named > ::NAMES
-                .unilateral_count(), "{}: wrong slice length", "restitution"
-            );
-            {
-                let (start, count) = (
-                    0,
-                    <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.wheel
-                        .restitution(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-            {
-                let (start, count) = (
-                    0 + <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                    <Cart as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                );
-                if count > 0 {
-                    self.cart
-                        .restitution(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-        }
-        fn events(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            lambda: &::dirac::__private::VecC<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), < Self as ::dirac::__private::Named > ::NAMES.event_count(),
-                "{}: wrong slice length", "events"
-            );
-            {
-                let (start, count) = (
-                    0,
-                    <Wheel as ::dirac::__private::Named>::NAMES.event_count(),
-                );
-                if count > 0 {
-                    self.wheel
-                        .events(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                            &::dirac::__private::gather_c::<
-                                Wheel,
-                                Self,
-                            >(lambda, &__SLOT0),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-            {
-                let (start, count) = (
-                    0 + <Wheel as ::dirac::__private::Named>::NAMES.event_count(),
-                    <Cart as ::dirac::__private::Named>::NAMES.event_count(),
-                );
-                if count > 0 {
-                    self.cart
-                        .events(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                            &::dirac::__private::gather_c::<
-                                Cart,
-                                Self,
-                            >(lambda, &__SLOT1),
-                            &mut out[start..start + count],
-                        );
-                }
-            }
-        }
-        fn unilateral_dq(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            let total_rows = <Self as ::dirac::__private::Named>::NAMES
-                .unilateral_count();
-            ::core::assert_eq!(
-                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
-                "unilateral_dq: wrong slice length"
-            );
-            out.fill(0.0);
-            {
-                let (rows, cols) = (
-                    <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                    <Wheel as ::dirac::__private::Fixed>::NQ,
-                );
-                if rows > 0 {
-                    let mut block = ::std::vec![0.0; rows * cols];
-                    self.wheel
-                        .unilateral_dq(
-                            t,
-                            &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                            &mut block,
-                        );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, __SLOT0.q),
-                        out,
-                    );
-                }
-            }
-            {
-                let (rows, cols) = (
-                    <Cart as ::dirac::__private::Named>::NAMES.unilateral_count(),
-                    <Cart as ::dirac::__private::Fixed>::NQ,
-                );
-                if rows > 0 {
-                    let mut block = ::std::vec![0.0; rows * cols];
-                    self.cart
-                        .unilateral_dq(
-                            t,
-                            &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                            &mut block,
-                        );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
-                                + <Wheel as ::dirac::__private::Named>::NAMES
-                                    .unilateral_count(),
-                            __SLOT1.q,
-                        ),
-                        out,
-                    );
-                }
-            }
-        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -2021,7 +1859,10 @@ const _: () = {
                     < start
                         + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
             {
-                return self.wheel.parameter_value(k - start);
+                return <Wheel as ::dirac::__private::Parameters>::parameter_value(
+                    &self.wheel,
+                    k - start,
+                );
             }
             let start = 0
                 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
@@ -2030,7 +1871,10 @@ const _: () = {
                     < start
                         + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
             {
-                return self.cart.parameter_value(k - start);
+                return <Cart as ::dirac::__private::Parameters>::parameter_value(
+                    &self.cart,
+                    k - start,
+                );
             }
             match k
                 .wrapping_sub(
@@ -2058,7 +1902,11 @@ const _: () = {
                     < start
                         + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
             {
-                return self.wheel.set_parameter_value(k - start, value);
+                return <Wheel as ::dirac::__private::Parameters>::set_parameter_value(
+                    &mut self.wheel,
+                    k - start,
+                    value,
+                );
             }
             let start = 0
                 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
@@ -2067,7 +1915,11 @@ const _: () = {
                     < start
                         + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
             {
-                return self.cart.set_parameter_value(k - start, value);
+                return <Cart as ::dirac::__private::Parameters>::set_parameter_value(
+                    &mut self.cart,
+                    k - start,
+                    value,
+                );
             }
             match k
                 .wrapping_sub(
@@ -2104,15 +1956,15 @@ const _: () = {
                         + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
             {
                 let mut o = ::dirac::__private::ResidualBlocks::<Wheel>::zeros();
-                self.wheel
-                    .residual_blocks_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
-                        &mut o,
-                    );
+                <Wheel as ::dirac::__private::Parameters>::residual_blocks_dtheta(
+                    &self.wheel,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                    &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_q::<
                     Wheel,
                     Self,
@@ -2135,15 +1987,15 @@ const _: () = {
                         + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
             {
                 let mut o = ::dirac::__private::ResidualBlocks::<Cart>::zeros();
-                self.cart
-                    .residual_blocks_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
-                        &mut o,
-                    );
+                <Cart as ::dirac::__private::Parameters>::residual_blocks_dtheta(
+                    &self.cart,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                    &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_q::<
                     Cart,
                     Self,
@@ -2200,14 +2052,14 @@ const _: () = {
                 let mut each: [::dirac::__private::ResidualBlocks<Wheel>; COUNT] = ::core::array::from_fn(|
                     _|
                 ::dirac::__private::ResidualBlocks::<Wheel>::zeros());
-                self.wheel
-                    .residual_blocks_dtheta_all(
-                        t,
-                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
-                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
-                        &mut each,
-                    );
+                <Wheel as ::dirac::__private::Parameters>::residual_blocks_dtheta_all(
+                    &self.wheel,
+                    t,
+                    &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                    &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                    &mut each,
+                );
                 for j in 0..COUNT {
                     let (o, out) = (&each[j], &mut out[start + j]);
                     out.momentum_rate.fill(0.0);
@@ -2235,14 +2087,14 @@ const _: () = {
                 let mut each: [::dirac::__private::ResidualBlocks<Cart>; COUNT] = ::core::array::from_fn(|
                     _|
                 ::dirac::__private::ResidualBlocks::<Cart>::zeros());
-                self.cart
-                    .residual_blocks_dtheta_all(
-                        t,
-                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
-                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
-                        &mut each,
-                    );
+                <Cart as ::dirac::__private::Parameters>::residual_blocks_dtheta_all(
+                    &self.cart,
+                    t,
+                    &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                    &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                    &mut each,
+                );
                 for j in 0..COUNT {
                     let (o, out) = (&each[j], &mut out[start + j]);
                     out.momentum_rate.fill(0.0);
@@ -2263,7 +2115,8 @@ const _: () = {
                 }
             }
             for j in 0..1usize {
-                self.residual_blocks_dtheta(
+                <Self as ::dirac::__private::Parameters>::residual_blocks_dtheta(
+                    self,
                     0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
                         + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
                         + j,
@@ -2294,13 +2147,13 @@ const _: () = {
                         + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
             {
                 let mut o = ::dirac::__private::VecH::<Wheel>::zeros();
-                self.wheel
-                    .holonomic_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
-                        &mut o,
-                    );
+                <Wheel as ::dirac::__private::Parameters>::holonomic_dtheta(
+                    &self.wheel,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_h::<Wheel, Self>(&o, &__SLOT0, out);
                 return;
             }
@@ -2312,13 +2165,13 @@ const _: () = {
                         + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
             {
                 let mut o = ::dirac::__private::VecH::<Cart>::zeros();
-                self.cart
-                    .holonomic_dtheta(
-                        k - start,
-                        t,
-                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
-                        &mut o,
-                    );
+                <Cart as ::dirac::__private::Parameters>::holonomic_dtheta(
+                    &self.cart,
+                    k - start,
+                    t,
+                    &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                    &mut o,
+                );
                 ::dirac::__private::scatter_h::<Cart, Self>(&o, &__SLOT1, out);
                 return;
             }
@@ -2336,11 +2189,206 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    impl ::dirac::__private::Hybrid for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {
+        fn unilateral(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .unilateral_count(), "{}: wrong slice length", "unilateral"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Wheel as ::dirac::__private::Hybrid>::unilateral(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Cart as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Cart as ::dirac::__private::Hybrid>::unilateral(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+        }
+        fn restitution(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .unilateral_count(), "{}: wrong slice length", "restitution"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Wheel as ::dirac::__private::Hybrid>::restitution(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Cart as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                );
+                if count > 0 {
+                    <Cart as ::dirac::__private::Hybrid>::restitution(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+        }
+        fn events(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES.event_count(),
+                "{}: wrong slice length", "events"
+            );
+            {
+                let (start, count) = (
+                    0,
+                    <Wheel as ::dirac::__private::Named>::NAMES.event_count(),
+                );
+                if count > 0 {
+                    <Wheel as ::dirac::__private::Hybrid>::events(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+            {
+                let (start, count) = (
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.event_count(),
+                    <Cart as ::dirac::__private::Named>::NAMES.event_count(),
+                );
+                if count > 0 {
+                    <Cart as ::dirac::__private::Hybrid>::events(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut out[start..start + count],
+                    );
+                }
+            }
+        }
+        fn unilateral_dq(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES
+                .unilateral_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NQ,
+                "unilateral_dq: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Wheel as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Wheel as ::dirac::__private::Hybrid>::unilateral_dq(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &mut block,
+                    );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (0, __SLOT0.q),
+                        out,
+                    );
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Named>::NAMES.unilateral_count(),
+                    <Cart as ::dirac::__private::Fixed>::NQ,
+                );
+                if rows > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Cart as ::dirac::__private::Hybrid>::unilateral_dq(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &mut block,
+                    );
+                    ::dirac::__private::place_block(
+                        &block,
+                        rows,
+                        total_rows,
+                        (
+                            0
+                                + <Wheel as ::dirac::__private::Named>::NAMES
+                                    .unilateral_count(),
+                            __SLOT1.q,
+                        ),
+                        out,
+                    );
+                }
+            }
+        }
+    }
+    #[automatically_derived]
     impl CoupledByOneForm
     where
-        Wheel: ::dirac::__private::DenseModel,
+        Wheel: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
-        Cart: ::dirac::__private::DenseModel,
+        Cart: ::dirac::__private::Member,
         ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
     {
         ///A coordinate of the subsystem `wheel` as a coordinate of this interconnection.

@@ -45,23 +45,6 @@ const _: () = {
                 "structurally singular model: the velocity `v` of `DrivenOscillator` is determined by no equation: coordinate `x` has no inertia, and no potential or constraint fixes it",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 9usize,
-            jacobian: 0usize,
-            residual_and_jacobian: 9usize,
-            residual_blocks: 8usize,
-            jacobian_blocks: 0usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "DrivenOscillator: L = 0.5*m*v^2 - 0.5*k*x^2\ndx/dt = v\ndp_x/dt = -c*v + a*sin(w*t) - k*x\np_x = m*v",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m v^{2} - 0.5 k x^{2} \\\\\n\\dot{x} &= v \\\\\n\\dot{p}_{x} &= -c v + a \\sin\\left(w t\\right) - k x \\\\\np_{x} &= m v\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -303,6 +286,32 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecC<Self>,
         ) {}
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for DrivenOscillator {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 9usize,
+            jacobian: 0usize,
+            residual_and_jacobian: 9usize,
+            residual_blocks: 8usize,
+            jacobian_blocks: 0usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "DrivenOscillator: L = 0.5*m*v^2 - 0.5*k*x^2\ndx/dt = v\ndp_x/dt = -c*v + a*sin(w*t) - k*x\np_x = m*v",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m v^{2} - 0.5 k x^{2} \\\\\n\\dot{x} &= v \\\\\n\\dot{p}_{x} &= -c v + a \\sin\\left(w t\\right) - k x \\\\\np_{x} &= m v\n\\end{aligned}",
+                ),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for DrivenOscillator {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for DrivenOscillator {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -411,6 +420,9 @@ const _: () = {
             out[4].dl_dv[0usize] = 0f64;
         }
     }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for DrivenOscillator {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::SparseJacobian for DrivenOscillator {

@@ -47,23 +47,6 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `rod` of `Pendulum` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 15usize,
-            jacobian: 5usize,
-            residual_and_jacobian: 20usize,
-            residual_blocks: 13usize,
-            jacobian_blocks: 5usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "Pendulum: L = 0.5*m*(vx^2 + vy^2) - m*g*y\ndx/dt = vx\ndy/dt = vy\ndp_x/dt = 2*x*lambda_rod\ndp_y/dt = -m*g + 2*y*lambda_rod\np_x = m*vx\np_y = m*vy\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = x^2 + y^2 - l^2    (rod, holonomic)",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)}\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -336,6 +319,32 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
         }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for Pendulum {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 15usize,
+            jacobian: 5usize,
+            residual_and_jacobian: 20usize,
+            residual_blocks: 13usize,
+            jacobian_blocks: 5usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "Pendulum: L = 0.5*m*(vx^2 + vy^2) - m*g*y\ndx/dt = vx\ndy/dt = vy\ndp_x/dt = 2*x*lambda_rod\ndp_y/dt = -m*g + 2*y*lambda_rod\np_x = m*vx\np_y = m*vy\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = x^2 + y^2 - l^2    (rod, holonomic)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)}\n\\end{aligned}",
+                ),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for Pendulum {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for Pendulum {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -449,6 +458,9 @@ const _: () = {
             out[2].constraint_velocity[0usize] = 0f64;
         }
     }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for Pendulum {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::SparseJacobian for Pendulum {

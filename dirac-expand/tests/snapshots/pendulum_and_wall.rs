@@ -47,23 +47,6 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWall` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 15usize,
-            jacobian: 5usize,
-            residual_and_jacobian: 20usize,
-            residual_blocks: 13usize,
-            jacobian_blocks: 5usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "PendulumAndWall: L = 0.5*m*(vx^2 + vy^2) - m*g*y\ndx/dt = vx\ndy/dt = vy\ndp_x/dt = 2*x*lambda_rod\ndp_y/dt = -m*g + 2*y*lambda_rod\np_x = m*vx\np_y = m*vy\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = x^2 + y^2 - l^2    (rod, holonomic)",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)}\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -348,62 +331,32 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
         }
-        #[inline]
-        fn unilateral(
-            &self,
-            _t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 1usize, "{}: the slice must hold {} values", "unilateral",
-                1usize
-            );
-            out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for PendulumAndWall {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 15usize,
+            jacobian: 5usize,
+            residual_and_jacobian: 20usize,
+            residual_blocks: 13usize,
+            jacobian_blocks: 5usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "PendulumAndWall: L = 0.5*m*(vx^2 + vy^2) - m*g*y\ndx/dt = vx\ndy/dt = vy\ndp_x/dt = 2*x*lambda_rod\ndp_y/dt = -m*g + 2*y*lambda_rod\np_x = m*vx\np_y = m*vy\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = x^2 + y^2 - l^2    (rod, holonomic)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)}\n\\end{aligned}",
+                ),
+            }
         }
-        #[inline]
-        fn unilateral_dq(
-            &self,
-            _t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 2usize, "{}: the slice must hold {} values", "unilateral_dq",
-                2usize
-            );
-            let s0 = self.l.powi(-1);
-            out[0usize] = 1f64;
-            out[1usize] = self.w * s0 * (q[1] * s0).sin();
-        }
-        #[inline]
-        fn restitution(
-            &self,
-            _t: ::core::primitive::f64,
-            _q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 1usize, "{}: the slice must hold {} values", "restitution",
-                1usize
-            );
-            out[0usize] = self.e;
-        }
-        #[inline]
-        fn events(
-            &self,
-            _t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            lambda: &::dirac::__private::VecC<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 2usize, "{}: the slice must hold {} values", "events", 2usize
-            );
-            out[0usize] = lambda[0];
-            out[1usize] = q[1] * v[0];
-        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for PendulumAndWall {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for PendulumAndWall {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -553,6 +506,66 @@ const _: () = {
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for PendulumAndWall {
+        #[inline]
+        fn unilateral(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 1usize, "{}: the slice must hold {} values", "unilateral",
+                1usize
+            );
+            out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
+        }
+        #[inline]
+        fn unilateral_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values", "unilateral_dq",
+                2usize
+            );
+            let s0 = self.l.powi(-1);
+            out[0usize] = 1f64;
+            out[1usize] = self.w * s0 * (q[1] * s0).sin();
+        }
+        #[inline]
+        fn restitution(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 1usize, "{}: the slice must hold {} values", "restitution",
+                1usize
+            );
+            out[0usize] = self.e;
+        }
+        #[inline]
+        fn events(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values", "events", 2usize
+            );
+            out[0usize] = lambda[0];
+            out[1usize] = q[1] * v[0];
+        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::SparseJacobian for PendulumAndWall {
         const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[
             0usize, 2usize, 4usize, 7usize, 10usize, 11usize, 12usize, 14usize,
@@ -688,23 +701,6 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `wall_force` of `PendulumAndWallWithContacts` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 67usize,
-            jacobian: 85usize,
-            residual_and_jacobian: 117usize,
-            residual_blocks: 64usize,
-            jacobian_blocks: 85usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "PendulumAndWallWithContacts: L = 0.5*m*(vx^2 + vy^2) - m*g*y + 0.5*wall_slack_rate^2\ndx/dt = vx\ndy/dt = vy\ndwall_slack/dt = wall_slack_rate\ndp_x/dt = 2*x*lambda_rod + wall_closed*lambda_wall_force\ndp_y/dt = -m*g + 2*y*lambda_rod + w*wall_closed*sin(y/l)*lambda_wall_force/l\ndp_wall_slack/dt = (-wall_closed + 1)*lambda_wall_force\np_x = m*vx\np_y = m*vy\np_wall_slack = wall_slack_rate\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = wall_closed*vx + w*wall_closed*vy*sin(y/l)/l + wall_slack_rate*(-wall_closed + 1)    (wall_force)\n0 = x^2 + y^2 - l^2    (rod, holonomic)\n0 = wall_closed*(x - w*cos(y/l)) + wall_slack*(-wall_closed + 1)    (wall_force, holonomic)",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y + 0.5 \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}}^{2} \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{\\mathrm{wall}}_{\\mathrm{slack}} &= \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} + \\mathrm{wall}_{\\mathrm{closed}} \\lambda_{\\mathrm{wall\\_force}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} + \\frac{w \\mathrm{wall}_{\\mathrm{closed}} \\sin\\left(\\frac{y}{l}\\right) \\lambda_{\\mathrm{wall\\_force}}}{l} \\\\\n\\dot{p}_{\\mathrm{wall}_{\\mathrm{slack}}} &= \\left(-\\mathrm{wall}_{\\mathrm{closed}} + 1\\right) \\lambda_{\\mathrm{wall\\_force}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\np_{\\mathrm{wall}_{\\mathrm{slack}}} &= \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= \\mathrm{wall}_{\\mathrm{closed}} \\mathrm{vx} + \\frac{w \\mathrm{wall}_{\\mathrm{closed}} \\mathrm{vy} \\sin\\left(\\frac{y}{l}\\right)}{l} + \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}} \\left(-\\mathrm{wall}_{\\mathrm{closed}} + 1\\right) && \\text{(wall\\_force)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)} \\\\\n0 &= \\mathrm{wall}_{\\mathrm{closed}} \\left(x - w \\cos\\left(\\frac{y}{l}\\right)\\right) + \\mathrm{wall}_{\\mathrm{slack}} \\left(-\\mathrm{wall}_{\\mathrm{closed}} + 1\\right) && \\text{(wall\\_force, holonomic)}\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -745,38 +741,6 @@ const _: () = {
                 ));
             }
             ::core::option::Option::None
-        }
-        fn contact_closed(
-            &self,
-            j: ::core::primitive::usize,
-        ) -> ::core::primitive::bool {
-            match j {
-                0usize => self.wall_closed != 0.0,
-                _ => false,
-            }
-        }
-        fn set_contact_closed(
-            &mut self,
-            j: ::core::primitive::usize,
-            closed: ::core::primitive::bool,
-        ) -> ::core::primitive::bool {
-            let value = if closed { 1.0 } else { 0.0 };
-            match j {
-                0usize => {
-                    self.wall_closed = value;
-                    true
-                }
-                _ => false,
-            }
-        }
-        fn contact_row(
-            &self,
-            j: ::core::primitive::usize,
-        ) -> ::core::option::Option<::core::primitive::usize> {
-            match j {
-                0usize => ::core::option::Option::Some(1usize),
-                _ => ::core::option::Option::None,
-            }
         }
         #[inline]
         fn lagrangian(
@@ -1087,63 +1051,32 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
-        fn unilateral(
-            &self,
-            _t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 1usize, "{}: the slice must hold {} values", "unilateral",
-                1usize
-            );
-            out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for PendulumAndWallWithContacts {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 67usize,
+            jacobian: 85usize,
+            residual_and_jacobian: 117usize,
+            residual_blocks: 64usize,
+            jacobian_blocks: 85usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "PendulumAndWallWithContacts: L = 0.5*m*(vx^2 + vy^2) - m*g*y + 0.5*wall_slack_rate^2\ndx/dt = vx\ndy/dt = vy\ndwall_slack/dt = wall_slack_rate\ndp_x/dt = 2*x*lambda_rod + wall_closed*lambda_wall_force\ndp_y/dt = -m*g + 2*y*lambda_rod + w*wall_closed*sin(y/l)*lambda_wall_force/l\ndp_wall_slack/dt = (-wall_closed + 1)*lambda_wall_force\np_x = m*vx\np_y = m*vy\np_wall_slack = wall_slack_rate\n0 = 2*x*vx + 2*y*vy    (rod)\n0 = wall_closed*vx + w*wall_closed*vy*sin(y/l)/l + wall_slack_rate*(-wall_closed + 1)    (wall_force)\n0 = x^2 + y^2 - l^2    (rod, holonomic)\n0 = wall_closed*(x - w*cos(y/l)) + wall_slack*(-wall_closed + 1)    (wall_force, holonomic)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(\\mathrm{vx}^{2} + \\mathrm{vy}^{2}\\right) - m g y + 0.5 \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}}^{2} \\\\\n\\dot{x} &= \\mathrm{vx} \\\\\n\\dot{y} &= \\mathrm{vy} \\\\\n\\dot{\\mathrm{wall}}_{\\mathrm{slack}} &= \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}} \\\\\n\\dot{p}_{x} &= 2 x \\lambda_{\\mathrm{rod}} + \\mathrm{wall}_{\\mathrm{closed}} \\lambda_{\\mathrm{wall\\_force}} \\\\\n\\dot{p}_{y} &= -m g + 2 y \\lambda_{\\mathrm{rod}} + \\frac{w \\mathrm{wall}_{\\mathrm{closed}} \\sin\\left(\\frac{y}{l}\\right) \\lambda_{\\mathrm{wall\\_force}}}{l} \\\\\n\\dot{p}_{\\mathrm{wall}_{\\mathrm{slack}}} &= \\left(-\\mathrm{wall}_{\\mathrm{closed}} + 1\\right) \\lambda_{\\mathrm{wall\\_force}} \\\\\np_{x} &= m \\mathrm{vx} \\\\\np_{y} &= m \\mathrm{vy} \\\\\np_{\\mathrm{wall}_{\\mathrm{slack}}} &= \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}} \\\\\n0 &= 2 x \\mathrm{vx} + 2 y \\mathrm{vy} && \\text{(rod)} \\\\\n0 &= \\mathrm{wall}_{\\mathrm{closed}} \\mathrm{vx} + \\frac{w \\mathrm{wall}_{\\mathrm{closed}} \\mathrm{vy} \\sin\\left(\\frac{y}{l}\\right)}{l} + \\mathrm{wall}_{\\mathrm{slack},\\mathrm{rate}} \\left(-\\mathrm{wall}_{\\mathrm{closed}} + 1\\right) && \\text{(wall\\_force)} \\\\\n0 &= x^{2} + y^{2} - l^{2} && \\text{(rod, holonomic)} \\\\\n0 &= \\mathrm{wall}_{\\mathrm{closed}} \\left(x - w \\cos\\left(\\frac{y}{l}\\right)\\right) + \\mathrm{wall}_{\\mathrm{slack}} \\left(-\\mathrm{wall}_{\\mathrm{closed}} + 1\\right) && \\text{(wall\\_force, holonomic)}\n\\end{aligned}",
+                ),
+            }
         }
-        #[inline]
-        fn unilateral_dq(
-            &self,
-            _t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 3usize, "{}: the slice must hold {} values", "unilateral_dq",
-                3usize
-            );
-            let s0 = self.l.powi(-1);
-            out[0usize] = 1f64;
-            out[1usize] = self.w * s0 * (q[1] * s0).sin();
-            out[2usize] = 0f64;
-        }
-        #[inline]
-        fn restitution(
-            &self,
-            _t: ::core::primitive::f64,
-            _q: &::dirac::__private::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 1usize, "{}: the slice must hold {} values", "restitution",
-                1usize
-            );
-            out[0usize] = self.e;
-        }
-        #[inline]
-        fn events(
-            &self,
-            _t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            lambda: &::dirac::__private::VecC<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            ::core::assert_eq!(
-                out.len(), 2usize, "{}: the slice must hold {} values", "events", 2usize
-            );
-            out[0usize] = lambda[0];
-            out[1usize] = q[1] * v[0];
-        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for PendulumAndWallWithContacts {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for PendulumAndWallWithContacts {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -1370,6 +1303,99 @@ const _: () = {
             out[5].dl_dv[2usize] = 0f64;
             out[5].constraint_velocity[0usize] = 0f64;
             out[5].constraint_velocity[1usize] = v[0] - v[2] + self.w * v[1] * s0 * s3;
+        }
+    }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for PendulumAndWallWithContacts {
+        fn contact_closed(
+            &self,
+            j: ::core::primitive::usize,
+        ) -> ::core::primitive::bool {
+            match j {
+                0usize => self.wall_closed != 0.0,
+                _ => false,
+            }
+        }
+        fn set_contact_closed(
+            &mut self,
+            j: ::core::primitive::usize,
+            closed: ::core::primitive::bool,
+        ) -> ::core::primitive::bool {
+            let value = if closed { 1.0 } else { 0.0 };
+            match j {
+                0usize => {
+                    self.wall_closed = value;
+                    true
+                }
+                _ => false,
+            }
+        }
+        fn contact_row(
+            &self,
+            j: ::core::primitive::usize,
+        ) -> ::core::option::Option<::core::primitive::usize> {
+            match j {
+                0usize => ::core::option::Option::Some(1usize),
+                _ => ::core::option::Option::None,
+            }
+        }
+        #[inline]
+        fn unilateral(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 1usize, "{}: the slice must hold {} values", "unilateral",
+                1usize
+            );
+            out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
+        }
+        #[inline]
+        fn unilateral_dq(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 3usize, "{}: the slice must hold {} values", "unilateral_dq",
+                3usize
+            );
+            let s0 = self.l.powi(-1);
+            out[0usize] = 1f64;
+            out[1usize] = self.w * s0 * (q[1] * s0).sin();
+            out[2usize] = 0f64;
+        }
+        #[inline]
+        fn restitution(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 1usize, "{}: the slice must hold {} values", "restitution",
+                1usize
+            );
+            out[0usize] = self.e;
+        }
+        #[inline]
+        fn events(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values", "events", 2usize
+            );
+            out[0usize] = lambda[0];
+            out[1usize] = q[1] * v[0];
         }
     }
     #[automatically_derived]

@@ -46,23 +46,6 @@ const _: () = {
                 "structurally singular model: the velocity `v2` of `Primitive1` is determined by no equation: coordinate `x2` has no inertia, and no potential or constraint fixes it",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 9usize,
-            jacobian: 1usize,
-            residual_and_jacobian: 10usize,
-            residual_blocks: 7usize,
-            jacobian_blocks: 1usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "Primitive1: L = 0.5*m1*v1^2 + 0.5*m2*v2^2 - 0.5*k1*x1^2 - 0.5*k2*(x2 - x1)^2\ndx1/dt = v1\ndx2/dt = v2\ndp_x1/dt = -k1*x1 + k2*(x2 - x1)\ndp_x2/dt = -k2*(x2 - x1) + f_x2\np_x1 = m1*v1\np_x2 = m2*v2",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m_{1} v_{1}^{2} + 0.5 m_{2} v_{2}^{2} - 0.5 k_{1} x_{1}^{2} - 0.5 k_{2} \\left(x_{2} - x_{1}\\right)^{2} \\\\\n\\dot{x}_{1} &= v_{1} \\\\\n\\dot{x}_{2} &= v_{2} \\\\\n\\dot{p}_{x_{1}} &= -k_{1} x_{1} + k_{2} \\left(x_{2} - x_{1}\\right) \\\\\n\\dot{p}_{x_{2}} &= -k_{2} \\left(x_{2} - x_{1}\\right) + f_{x_{2}} \\\\\np_{x_{1}} &= m_{1} v_{1} \\\\\np_{x_{2}} &= m_{2} v_{2}\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -324,6 +307,32 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecC<Self>,
         ) {}
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for Primitive1 {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 9usize,
+            jacobian: 1usize,
+            residual_and_jacobian: 10usize,
+            residual_blocks: 7usize,
+            jacobian_blocks: 1usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "Primitive1: L = 0.5*m1*v1^2 + 0.5*m2*v2^2 - 0.5*k1*x1^2 - 0.5*k2*(x2 - x1)^2\ndx1/dt = v1\ndx2/dt = v2\ndp_x1/dt = -k1*x1 + k2*(x2 - x1)\ndp_x2/dt = -k2*(x2 - x1) + f_x2\np_x1 = m1*v1\np_x2 = m2*v2",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m_{1} v_{1}^{2} + 0.5 m_{2} v_{2}^{2} - 0.5 k_{1} x_{1}^{2} - 0.5 k_{2} \\left(x_{2} - x_{1}\\right)^{2} \\\\\n\\dot{x}_{1} &= v_{1} \\\\\n\\dot{x}_{2} &= v_{2} \\\\\n\\dot{p}_{x_{1}} &= -k_{1} x_{1} + k_{2} \\left(x_{2} - x_{1}\\right) \\\\\n\\dot{p}_{x_{2}} &= -k_{2} \\left(x_{2} - x_{1}\\right) + f_{x_{2}} \\\\\np_{x_{1}} &= m_{1} v_{1} \\\\\np_{x_{2}} &= m_{2} v_{2}\n\\end{aligned}",
+                ),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for Primitive1 {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for Primitive1 {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -441,6 +450,9 @@ const _: () = {
             out[3].dl_dv[1usize] = 0f64;
         }
     }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for Primitive1 {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::SparseJacobian for Primitive1 {

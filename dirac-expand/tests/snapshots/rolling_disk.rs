@@ -55,23 +55,6 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `roll_y` of `RollingDisk` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
-            residual: 21usize,
-            jacobian: 13usize,
-            residual_and_jacobian: 30usize,
-            residual_blocks: 17usize,
-            jacobian_blocks: 13usize,
-        };
-        fn equations() -> ::dirac::__private::Equations {
-            ::dirac::__private::Equations {
-                text: ::dirac::__private::Cow::Borrowed(
-                    "RollingDisk: L = 0.5*m*(v_x^2 + v_y^2) + 0.5*i_roll*v_theta^2 + 0.5*i_turn*v_phi^2\ndx/dt = v_x\ndy/dt = v_y\ndtheta/dt = v_theta\ndphi/dt = v_phi\ndp_x/dt = lambda_roll_x\ndp_y/dt = lambda_roll_y\ndp_theta/dt = -r*cos(phi)*lambda_roll_x - r*sin(phi)*lambda_roll_y\ndp_phi/dt = 0\np_x = m*v_x\np_y = m*v_y\np_theta = i_roll*v_theta\np_phi = i_turn*v_phi\n0 = v_x - r*v_theta*cos(phi)    (roll_x)\n0 = v_y - r*v_theta*sin(phi)    (roll_y)",
-                ),
-                latex: ::dirac::__private::Cow::Borrowed(
-                    "\\begin{aligned}\nL &= 0.5 m \\left(v_{x}^{2} + v_{y}^{2}\\right) + 0.5 i_{\\mathrm{roll}} v_{\\theta}^{2} + 0.5 i_{\\mathrm{turn}} v_{\\phi}^{2} \\\\\n\\dot{x} &= v_{x} \\\\\n\\dot{y} &= v_{y} \\\\\n\\dot{\\theta} &= v_{\\theta} \\\\\n\\dot{\\phi} &= v_{\\phi} \\\\\n\\dot{p}_{x} &= \\lambda_{\\mathrm{roll\\_x}} \\\\\n\\dot{p}_{y} &= \\lambda_{\\mathrm{roll\\_y}} \\\\\n\\dot{p}_{\\theta} &= -r \\cos\\left(\\phi\\right) \\lambda_{\\mathrm{roll\\_x}} - r \\sin\\left(\\phi\\right) \\lambda_{\\mathrm{roll\\_y}} \\\\\n\\dot{p}_{\\phi} &= 0 \\\\\np_{x} &= m v_{x} \\\\\np_{y} &= m v_{y} \\\\\np_{\\theta} &= i_{\\mathrm{roll}} v_{\\theta} \\\\\np_{\\phi} &= i_{\\mathrm{turn}} v_{\\phi} \\\\\n0 &= v_{x} - r v_{\\theta} \\cos\\left(\\phi\\right) && \\text{(roll\\_x)} \\\\\n0 &= v_{y} - r v_{\\theta} \\sin\\left(\\phi\\right) && \\text{(roll\\_y)}\n\\end{aligned}",
-                ),
-            }
-        }
         fn non_finite_parameter(
             &self,
         ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
@@ -393,6 +376,32 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::Derivation for RollingDisk {
+        const OPERATION_COUNTS: ::dirac::__private::OperationCounts = ::dirac::__private::OperationCounts {
+            residual: 21usize,
+            jacobian: 13usize,
+            residual_and_jacobian: 30usize,
+            residual_blocks: 17usize,
+            jacobian_blocks: 13usize,
+        };
+        fn equations() -> ::dirac::__private::Equations {
+            ::dirac::__private::Equations {
+                text: ::dirac::__private::Cow::Borrowed(
+                    "RollingDisk: L = 0.5*m*(v_x^2 + v_y^2) + 0.5*i_roll*v_theta^2 + 0.5*i_turn*v_phi^2\ndx/dt = v_x\ndy/dt = v_y\ndtheta/dt = v_theta\ndphi/dt = v_phi\ndp_x/dt = lambda_roll_x\ndp_y/dt = lambda_roll_y\ndp_theta/dt = -r*cos(phi)*lambda_roll_x - r*sin(phi)*lambda_roll_y\ndp_phi/dt = 0\np_x = m*v_x\np_y = m*v_y\np_theta = i_roll*v_theta\np_phi = i_turn*v_phi\n0 = v_x - r*v_theta*cos(phi)    (roll_x)\n0 = v_y - r*v_theta*sin(phi)    (roll_y)",
+                ),
+                latex: ::dirac::__private::Cow::Borrowed(
+                    "\\begin{aligned}\nL &= 0.5 m \\left(v_{x}^{2} + v_{y}^{2}\\right) + 0.5 i_{\\mathrm{roll}} v_{\\theta}^{2} + 0.5 i_{\\mathrm{turn}} v_{\\phi}^{2} \\\\\n\\dot{x} &= v_{x} \\\\\n\\dot{y} &= v_{y} \\\\\n\\dot{\\theta} &= v_{\\theta} \\\\\n\\dot{\\phi} &= v_{\\phi} \\\\\n\\dot{p}_{x} &= \\lambda_{\\mathrm{roll\\_x}} \\\\\n\\dot{p}_{y} &= \\lambda_{\\mathrm{roll\\_y}} \\\\\n\\dot{p}_{\\theta} &= -r \\cos\\left(\\phi\\right) \\lambda_{\\mathrm{roll\\_x}} - r \\sin\\left(\\phi\\right) \\lambda_{\\mathrm{roll\\_y}} \\\\\n\\dot{p}_{\\phi} &= 0 \\\\\np_{x} &= m v_{x} \\\\\np_{y} &= m v_{y} \\\\\np_{\\theta} &= i_{\\mathrm{roll}} v_{\\theta} \\\\\np_{\\phi} &= i_{\\mathrm{turn}} v_{\\phi} \\\\\n0 &= v_{x} - r v_{\\theta} \\cos\\left(\\phi\\right) && \\text{(roll\\_x)} \\\\\n0 &= v_{y} - r v_{\\theta} \\sin\\left(\\phi\\right) && \\text{(roll\\_y)}\n\\end{aligned}",
+                ),
+            }
+        }
+    }
+    #[automatically_derived]
+    impl ::dirac::__private::InputsOutputs for RollingDisk {}
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Parameters for RollingDisk {
         fn parameter_value(
             &self,
             k: ::core::primitive::usize,
@@ -559,6 +568,9 @@ const _: () = {
             out[3].constraint_velocity[1usize] = 0f64;
         }
     }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::Hybrid for RollingDisk {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::SparseJacobian for RollingDisk {

@@ -19,7 +19,7 @@ impl Scalar for Complex<f64> {}
 
 /// The storage of a model's blocks and the solvers of its linear systems.
 ///
-/// Implemented by [`Dense`] and [`Sparse`]; the derives choose one for each model.
+/// Implemented by [`Dense`](crate::algebra::Dense) and [`Sparse`](crate::algebra::Sparse); the derives choose one for each model.
 pub trait Algebra<M: Dimensions>: Sized + 'static
 where
     DefaultAllocator: Storage<M>,
@@ -73,7 +73,7 @@ where
     fn cq_tr_mul<T: Scalar>(b: &Self::Cq, c: T, x: &[T], y: &mut [T]);
 }
 
-/// The terms of a saddle-point system (see the [module](self) documentation).
+/// The terms of a saddle-point system (see the [`algebra`](crate::algebra) documentation).
 pub struct SaddleTerms<'a, M: Dimensions, A: Algebra<M>, T>
 where
     DefaultAllocator: Storage<M>,

@@ -22,7 +22,7 @@ use crate::analysis::diagnose::violated_equation;
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
-use crate::model::{LagrangeDirac, check_parameters};
+use crate::model::{InputsOutputs, LagrangeDirac, check_parameters};
 use crate::shape::dims::Storage;
 
 /// A linear model `δẋ = A δx + B δu`, `δy = C δx + D δu` about an equilibrium, in minimal
@@ -55,7 +55,7 @@ impl Linearization {
 /// Linearises `model` about the equilibrium `state` at time `t`: a consistent state at rest
 /// (`v = 0`) whose momenta do not change (`ṗ = 0`, with the multipliers that hold it there,
 /// as [`consistent_state`](crate::analysis::init::consistent_state) computes them). Dense models only.
-pub fn linearize<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Result<Linearization, SimError>
+pub fn linearize<M: InputsOutputs>(model: &M, t: f64, state: &State<M>) -> Result<Linearization, SimError>
 where
     DefaultAllocator: Storage<M>,
 {

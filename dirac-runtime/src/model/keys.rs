@@ -10,7 +10,7 @@
 use core::fmt;
 use core::marker::PhantomData;
 
-use crate::model::names::Named;
+use crate::model::named::Named;
 use crate::shape::dims::Fixed;
 
 /// A coordinate `q_i` of model `M`; it also names the velocity `v_i` and the momentum `p_i`.

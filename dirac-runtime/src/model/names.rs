@@ -5,15 +5,6 @@
 //! tree is a `const`, an interconnection resolves `left.x2` to an index while the program is
 //! compiled, and a name that does not exist stops the build with a message.
 
-/// A type whose parts have names: every model, through its derive.
-///
-/// The names live apart from [`LagrangeDirac`](crate::model::LagrangeDirac) so that the typed keys
-/// and the state layout can name things without depending on the whole model trait.
-pub trait Named {
-    /// The names of the model's coordinates, velocities, constraints, ports and subsystems.
-    const NAMES: &'static Names;
-}
-
 /// The names of one model.
 #[derive(Debug)]
 pub struct Names {
@@ -271,7 +262,7 @@ impl Names {
     }
 
     /// Every unilateral constraint's full dotted name, in the order of the model's
-    /// [`unilateral`](crate::model::LagrangeDirac::unilateral) values: its subsystems' in field
+    /// [`unilateral`](crate::model::Hybrid::unilateral) values: its subsystems' in field
     /// order, then its own.
     pub fn unilateral_names(&self) -> Vec<String> {
         let mut out = Vec::new();
@@ -280,7 +271,7 @@ impl Names {
     }
 
     /// Every declared event's full dotted name and direction (−1 falling, 1 rising, 0 either),
-    /// in the order of the model's [`events`](crate::model::LagrangeDirac::events) values.
+    /// in the order of the model's [`events`](crate::model::Hybrid::events) values.
     pub fn event_declarations(&self) -> Vec<(String, i8)> {
         let mut out = Vec::new();
         self.collect_events("", &mut out);

@@ -2,7 +2,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use crate::model::LagrangeDirac;
+use crate::model::lagrange_dirac::LagrangeDirac;
 use crate::shape::dims::{Storage, VecY};
 
 /// The flat Jacobian `∂f/∂y` in compressed sparse columns, for sparse linear algebra and for

@@ -3,10 +3,10 @@
 //!
 //! A model whose sizes are known when it compiles (every primitive model and every composite
 //! of named subsystems) sets its dimensions to concrete `nalgebra::Const<N>`: its vectors and
-//! matrices are stack arrays, and [`Fixed`] gives its sizes as constants. A model made of
+//! matrices are stack arrays, and [`Fixed`](crate::shape::dims::Fixed) gives its sizes as constants. A model made of
 //! arrays of subsystems sets them to `nalgebra::Dyn`: its vectors live on the heap, sized from
-//! the model itself ([`Sizes`]). Generic runtime code never computes a size from a type; it
-//! asks the model for its [`Sizes`] and builds its vectors with them.
+//! the model itself ([`Sizes`](crate::shape::dims::Sizes)). Generic runtime code never computes a size from a type; it
+//! asks the model for its [`Sizes`](crate::shape::dims::Sizes) and builds its vectors with them.
 
 use nalgebra::allocator::Allocator;
 use nalgebra::{Const, DefaultAllocator, Dim, DimName, OMatrix, OVector};

@@ -1,7 +1,7 @@
 //! Where each quantity sits in the flat state `y = (q, v, p, λ)` of the semi-explicit DAE
 //! `M ẏ = f(t, y)`, `M = diag(I, 0, I, 0)`, and what each slot is called: the one place that
 //! knows the slot arithmetic. Integrators, linear solvers, results and error messages ask it
-//! instead of computing offsets; [`Unknowns`] answers the same questions for the saddle-point
+//! instead of computing offsets; [`Unknowns`](crate::shape::layout::Unknowns) answers the same questions for the saddle-point
 //! systems in `(v, λ)` that condensed Newton steps, projections and accelerations solve.
 
 use crate::shape::dims::Sizes;

@@ -23,7 +23,7 @@ use nalgebra::{DMatrix, DVector, DefaultAllocator};
 use crate::algebra::{Algebra, Saddle, SaddleTerms};
 use crate::analysis::init_saddle::not_determined;
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
+use crate::model::Hybrid;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage};
 
@@ -51,7 +51,7 @@ const AT_REST: f64 = 1e-9;
 
 impl Contacts {
     /// The unilateral constraints of `model`.
-    pub fn new<M: LagrangeDirac>(model: &M) -> Self
+    pub fn new<M: Hybrid>(model: &M) -> Self
     where
         DefaultAllocator: Storage<M>,
     {
@@ -72,7 +72,7 @@ impl Contacts {
     /// restitution is outside `[0, 1]` or if the impact system is singular. A contact that the
     /// impact leaves closed, or reopens too slowly to be told from rest, is named in
     /// [`Impacts::resting`].
-    pub fn impact<M: LagrangeDirac>(
+    pub fn impact<M: Hybrid>(
         &mut self,
         model: &M,
         t: f64,

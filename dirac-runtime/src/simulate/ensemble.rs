@@ -2,15 +2,15 @@
 //! sweeps larger than one machine split into independent jobs.
 //!
 //! Each run is independent: it builds its own model value and integrator and returns what it
-//! keeps (a final state, an output, an error). [`sweep`] runs them on rayon's worker threads,
+//! keeps (a final state, an output, an error). [`sweep`](crate::simulate::ensemble::sweep) runs them on rayon's worker threads,
 //! one per core, and returns the results in the order of the inputs, whatever order they
 //! finished in.
 //!
 //! # Larger than one machine
 //!
 //! A sweep of `N` runs split into `K` jobs (a cluster's job array, `K` processes, `K`
-//! machines) needs no coordination: job `k` takes the inputs [`Shard::range`] gives it, runs
-//! them with [`sweep`], and writes its results with their input indices (one file per job,
+//! machines) needs no coordination: job `k` takes the inputs [`Shard::range`](crate::simulate::ensemble::Shard::range) gives it, runs
+//! them with [`sweep`](crate::simulate::ensemble::sweep), and writes its results with their input indices (one file per job,
 //! `results-{k}.csv`). Every job computes the same split from `N` and `K`, so the shards cover
 //! every input exactly once; concatenating the files in job order gives the results in input
 //! order. Inputs should be generated from their index (a grid, or a random generator seeded by

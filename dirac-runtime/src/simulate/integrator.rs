@@ -1,15 +1,15 @@
 //! The driver every integrator shares: start, step, read the state, interpolate within the
 //! last step; and, written once on top of those, `solve` and `solve_observed`, which run an
-//! integration and record a [`Solution`].
+//! integration and record a [`Solution`](crate::Solution).
 
 use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::keys::Input;
 use crate::model::state::State;
+use crate::model::{InputsOutputs, LagrangeDirac};
 use crate::shape::dims::Storage;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::solution::{Sampling, Solution};
@@ -36,7 +36,7 @@ where
     /// The model to change between steps, if the integrator holds it exclusively (it was built
     /// on `&mut model`). Restart after the change ([`Integrator::restart_until`]): the restart
     /// refuses a change that moved a constraint off the state
-    /// ([`SimError::ConstraintMoved`](crate::error::SimError::ConstraintMoved)).
+    /// ([`SimError::ConstraintMoved`]).
     fn model_mut(&mut self) -> Option<&mut M>;
 
     /// Starts again from the current time and state, towards `t_end`, after the model changed:
@@ -113,6 +113,7 @@ where
     fn set_input(&mut self, key: Input<M>, value: f64) -> Result<(), SimError>
     where
         Self: Sized,
+        M: InputsOutputs,
     {
         self.update(|m| m.set_input(key, value))
     }

@@ -7,9 +7,9 @@ use nalgebra::DefaultAllocator;
 
 use crate::algebra::{Algebra, amax};
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::MatCQ;
 use crate::model::state::State;
+use crate::model::{EnergyBalance, LagrangeDirac};
 use crate::shape::dims::{Storage, VecC, VecH, VecQ};
 use crate::simulate::solution::{Columns, Event, Impact, Sampling, Solution};
 

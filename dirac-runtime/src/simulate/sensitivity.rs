@@ -4,7 +4,7 @@
 //! A sensitivity `s = ∂y/∂θ` of the state `y = (q, v, p, λ)` with respect to a parameter or an
 //! initial value `θ` solves the linearised equations `M ṡ = J(t, y) s + ∂f/∂θ`, with the
 //! Jacobian `J = ∂f/∂y` of the model and the parameter derivatives `∂f/∂θ` that the derive
-//! generates ([`LagrangeDirac::residual_blocks_dtheta`]). [`Radau`](crate::Radau) integrates
+//! generates ([`Parameters::residual_blocks_dtheta`](crate::Parameters::residual_blocks_dtheta)). [`Radau`](crate::Radau) integrates
 //! them alongside the state by the staggered direct method: once a step's stages have
 //! converged, the sensitivities' stage equations are solved with the step's factored iteration
 //! matrix, so the result is the exact derivative of the discrete solution.
@@ -14,16 +14,16 @@ use nalgebra::DefaultAllocator;
 use crate::algebra::{Algebra, Saddle};
 use crate::analysis::init_saddle::{self, SaddleOf};
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::keys::Coordinate;
 use crate::model::state::State;
+use crate::model::{LagrangeDirac, ParameterDerivatives};
 use crate::shape::dims::Storage;
 
 /// One quantity a sensitivity is taken with respect to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Wrt {
     /// Parameter `k` of the model (an index into its
-    /// [`parameter_names`](LagrangeDirac::parameter_names)).
+    /// [`parameter_names`](crate::model::Named::parameter_names)).
     Parameter(usize),
     /// The initial position of coordinate `i`.
     InitialPosition(usize),
@@ -188,6 +188,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     model: &'a M,
+    derivatives: ParameterDerivatives<M>,
     t0: f64,
     state: &'a State<M>,
     a: <M::Algebra as Algebra<M>>::Cq,
@@ -202,8 +203,14 @@ impl<'a, M: LagrangeDirac> Initial<'a, M>
 where
     DefaultAllocator: Storage<M>,
 {
-    /// Evaluates and factors the two corrections' systems at `state`.
-    pub fn new(model: &'a M, t0: f64, state: &'a State<M>) -> Result<Self, SimError> {
+    /// Evaluates and factors the two corrections' systems at `state`; parameters are
+    /// differentiated with respect to through `derivatives`.
+    pub fn new(
+        model: &'a M,
+        derivatives: ParameterDerivatives<M>,
+        t0: f64,
+        state: &'a State<M>,
+    ) -> Result<Self, SimError> {
         let (sizes, shape) = (model.sizes(), model.shape());
         let mut a = M::Algebra::zeros_cq(&shape);
         model.constraint_matrix(t0, &state.q, &mut a);
@@ -226,7 +233,7 @@ where
         let velocities = (sizes.nc > 0)
             .then(|| factored(&|s| init_saddle::assemble_velocities::<M>(s, &l_vv, &a)))
             .transpose()?;
-        Ok(Initial { model, t0, state, a, g, l_vq, l_vv, positions, velocities })
+        Ok(Initial { model, derivatives, t0, state, a, g, l_vq, l_vv, positions, velocities })
     }
 
     /// The initial sensitivity with respect to `wrt`, into `out`.
@@ -243,10 +250,10 @@ where
         match wrt {
             Wrt::Parameter(k) => {
                 let mut h = sizes.zeros_h::<M>();
-                model.holonomic_dtheta(k, t0, &state.q, &mut h);
+                (self.derivatives.holonomic)(model, k, t0, &state.q, &mut h);
                 phi_theta.copy_from_slice(h.as_slice());
                 let mut blocks = crate::model::blocks::ResidualBlocks::<M>::with_sizes(&sizes);
-                model.residual_blocks_dtheta(k, t0, &state.q, &state.v, &state.lambda, &mut blocks);
+                (self.derivatives.blocks)(model, k, t0, &state.q, &state.v, &state.lambda, &mut blocks);
                 av_theta.copy_from_slice(blocks.constraint_velocity.as_slice());
                 out.p.copy_from(&blocks.dl_dv);
             }

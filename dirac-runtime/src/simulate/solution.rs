@@ -61,7 +61,7 @@ pub struct Event {
 }
 
 /// An impact at a unilateral constraint `φ(q, t) ≥ 0`: which one (its index among the model's
-/// [`unilateral_names`](crate::model::LagrangeDirac::unilateral_names)), when, and the impulse
+/// [`unilateral_names`](crate::model::Named::unilateral_names)), when, and the impulse
 /// `Λ ≥ 0` its one-form took, `p⁺ = p⁻ + Λ ∂φ/∂q`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Impact {

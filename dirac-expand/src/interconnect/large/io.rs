@@ -42,8 +42,8 @@ impl Large<'_> {
         quote! { 0 #(#before)* + e * #per }
     }
 
-    /// `input_names`, `output_names`, `input_value`, `set_input_value` and `outputs`.
-    pub(super) fn io_methods(&self) -> TokenStream {
+    /// `input_names` and `output_names`, of the `Named` impl.
+    pub(super) fn io_names(&self) -> TokenStream {
         let p = rt();
         let names = |port: Port| {
             let method = port.names();
@@ -59,7 +59,7 @@ impl Large<'_> {
                 quote! {
                     for e in 0..#count {
                         let prefix = #prefix;
-                        names.extend(#sub.#method().into_iter().map(|n| ::std::format!("{}{}", prefix, n)));
+                        names.extend(#p::Named::#method(&#sub).into_iter().map(|n| ::std::format!("{}{}", prefix, n)));
                     }
                 }
             });
@@ -71,9 +71,16 @@ impl Large<'_> {
                 }
             }
         };
+        let (inputs, outputs) = (names(Port::Input), names(Port::Output));
+        quote! { #inputs #outputs }
+    }
+
+    /// `input_value` and `set_input_value`, of the `InputsOutputs` impl.
+    pub(super) fn input_methods(&self) -> TokenStream {
+        let p = rt();
         let value = |set: bool| {
             let fields = self.composite.subsystems.iter().enumerate().map(|(f, s)| {
-                let field = &s.ident;
+                let (field, ty) = (&s.ident, &s.ty);
                 let (count, per) = (self.count(f), self.per(f, Port::Input));
                 let sub = if s.array {
                     quote! { self.#field[e] }
@@ -81,9 +88,9 @@ impl Large<'_> {
                     quote! { self.#field }
                 };
                 let call = if set {
-                    quote! { return #sub.set_input_value(k % #per, value) }
+                    quote! { return <#ty as #p::InputsOutputs>::set_input_value(&mut #sub, k % #per, value) }
                 } else {
-                    quote! { return #sub.input_value(k % #per) }
+                    quote! { return <#ty as #p::InputsOutputs>::input_value(&#sub, k % #per) }
                 };
                 quote! {
                     let size = #count * #per;
@@ -104,10 +111,17 @@ impl Large<'_> {
                 #header {
                     let (asked, mut k) = (k, k);
                     #(#fields)*
-                    ::core::panic!("the model has no input {}: it has {}", asked, self.input_names().len())
+                    ::core::panic!("the model has no input {}: it has {}", asked, #p::Named::input_names(self).len())
                 }
             }
         };
+        let (get, set) = (value(false), value(true));
+        quote! { #get #set }
+    }
+
+    /// `outputs`, of the `LagrangeDirac` impl.
+    pub(super) fn outputs_method(&self) -> TokenStream {
+        let p = rt();
         let outputs = self.composite.subsystems.iter().enumerate().map(|(f, s)| {
             let (field, ty, fl) = (&s.ident, &s.ty, lit(f));
             let (count, per) = (self.count(f), self.per(f, Port::Output));
@@ -120,7 +134,8 @@ impl Large<'_> {
                 if #per > 0 {
                     for e in 0..#count {
                         let s = __pl.slot(#fl, e);
-                        #sub.outputs(
+                        <#ty as #p::LagrangeDirac>::outputs(
+                            &#sub,
                             t,
                             &#p::gather_q::<#ty, Self>(q, &s),
                             &#p::gather_q::<#ty, Self>(v, &s),
@@ -132,13 +147,7 @@ impl Large<'_> {
                 }
             }
         });
-        let (inputs, outputs_names, get, set) =
-            (names(Port::Input), names(Port::Output), value(false), value(true));
         quote! {
-            #inputs
-            #outputs_names
-            #get
-            #set
             #[allow(unused_variables, unused_mut, unused_assignments)]
             fn outputs(
                 &self,

@@ -32,12 +32,12 @@ enum Entries {
 }
 
 impl Large<'_> {
-    /// Every method of the `LagrangeDirac` impl.
+    /// The methods of the `LagrangeDirac` impl but `ports`.
     pub(super) fn methods(&self) -> TokenStream {
         let mut out: TokenStream =
             REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| self.method(sig)).collect();
         out.extend(self.non_finite_parameter());
-        out.extend(self.io_methods());
+        out.extend(self.outputs_method());
         out
     }
 

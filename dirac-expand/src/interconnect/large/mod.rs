@@ -247,9 +247,10 @@ pub fn implementation(
     let placement = large.placement();
     let shape = large.shape();
     let methods = large.methods();
-    let names = large.names();
+    let (names, ports, equations) = large.names();
+    let (io_names, inputs) = (large.io_names(), large.input_methods());
     let inherent = large.inherent_items();
-    let consts = large.consts();
+    let (consts, counts) = large.consts();
     quote! {
         const _: () = {
             #asserts
@@ -285,6 +286,8 @@ pub fn implementation(
                     docs: &[],
                     units: &[],
                 };
+                #names
+                #io_names
             }
 
             #[automatically_derived]
@@ -294,8 +297,25 @@ pub fn implementation(
                 #consts
                 #shape
                 #methods
-                #names
+                #ports
             }
+
+            #[automatically_derived]
+            impl #p::Derivation for #ident #bounds {
+                #counts
+                #equations
+            }
+
+            #[automatically_derived]
+            impl #p::InputsOutputs for #ident #bounds {
+                #inputs
+            }
+
+            #[automatically_derived]
+            impl #p::Parameters for #ident #bounds {}
+
+            #[automatically_derived]
+            impl #p::Hybrid for #ident #bounds {}
 
             #[automatically_derived]
             impl #ident #bounds {

@@ -33,8 +33,9 @@ impl Large<'_> {
         quote! { #(#parts)* }
     }
 
-    /// The name methods of the `LagrangeDirac` impl, and `fn equations`.
-    pub(super) fn names(&self) -> TokenStream {
+    /// The name methods of the `Named` impl; `fn ports` of the `LagrangeDirac` impl; `fn
+    /// equations` of the `Derivation` impl.
+    pub(super) fn names(&self) -> (TokenStream, TokenStream, TokenStream) {
         let p = rt();
         let list = |what: TokenStream| {
             self.each_member(&|ty| {
@@ -77,8 +78,15 @@ impl Large<'_> {
             }
         });
         let equations = self.equations();
-        quote! {
-            #equations
+        let ports = quote! {
+            #[allow(unused_variables)]
+            fn ports(&self) -> ::std::vec::Vec<#p::Coordinate<Self>> {
+                let (__pl, mut out) = (self.__placement(), ::std::vec::Vec::new());
+                #ports
+                out
+            }
+        };
+        let names = quote! {
             #[allow(unused_variables)]
             fn coordinate_names(&self) -> ::std::vec::Vec<::std::string::String> {
                 let (__pl, mut out) = (self.__placement(), ::std::vec::Vec::new());
@@ -100,13 +108,8 @@ impl Large<'_> {
                 #(#own)*
                 holonomic
             }
-            #[allow(unused_variables)]
-            fn ports(&self) -> ::std::vec::Vec<#p::Coordinate<Self>> {
-                let (__pl, mut out) = (self.__placement(), ::std::vec::Vec::new());
-                #ports
-                out
-            }
-        }
+        };
+        (names, ports, equations)
     }
 
     /// `fn equations()`: each subsystem type's equations once, then the row patterns.
@@ -181,19 +184,22 @@ impl Large<'_> {
         quote! { #(#items)* #io }
     }
 
-    /// The associated constants: operation counts of one subsystem of each field and one
-    /// instance of each row pattern, separability, and no compile-time structure.
-    pub(super) fn consts(&self) -> TokenStream {
+    /// The associated constants: separability and no compile-time structure (`LagrangeDirac`);
+    /// the operation counts of one subsystem of each field and one instance of each row
+    /// pattern (`Derivation`).
+    pub(super) fn consts(&self) -> (TokenStream, TokenStream) {
         let p = rt();
         let (residual, jacobian) = self.own.op_counts();
         let types = self.composite.subsystems.iter().map(|s| &s.ty);
-        let subs = types.clone().map(|ty| quote! { .plus(<#ty as #p::LagrangeDirac>::OPERATION_COUNTS) });
+        let subs = types.clone().map(|ty| quote! { .plus(<#ty as #p::Derivation>::OPERATION_COUNTS) });
         let separable = types.clone().map(|ty| quote! { <#ty as #p::LagrangeDirac>::SEPARABLE });
         let prescribed = types.map(|ty| quote! { <#ty as #p::LagrangeDirac>::PRESCRIBED });
-        quote! {
+        let core = quote! {
             const SEPARABLE: ::core::primitive::bool = true #(&& #separable)*;
             const PRESCRIBED: ::core::primitive::bool = __PRESCRIBED_OWN #(|| #prescribed)*;
             const STRUCTURE: #p::Structure = #p::Structure { pattern: &[], unknowns: &[] };
+        };
+        let counts = quote! {
             const OPERATION_COUNTS: #p::OperationCounts = #p::OperationCounts {
                 residual: #residual,
                 jacobian: #jacobian,
@@ -201,6 +207,7 @@ impl Large<'_> {
                 residual_blocks: #residual,
                 jacobian_blocks: #jacobian,
             } #(#subs)*;
-        }
+        };
+        (core, counts)
     }
 }

@@ -37,6 +37,7 @@
 //! table of which integrator suits which model. A step allocates nothing.
 
 pub(crate) mod accelerations;
+mod integrator;
 mod options;
 mod tableau;
 
@@ -46,7 +47,7 @@ use nalgebra::DefaultAllocator;
 
 use self::accelerations::Accelerations;
 pub use self::options::{ExplicitOptions, ExplicitStats};
-use self::tableau::{A, C, E, weights_at};
+use self::tableau::{A, C, E};
 use crate::analysis::diagnose::singular_cause;
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
@@ -54,7 +55,7 @@ use crate::model::configuration;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecC, VecQ};
 use crate::simulate::held::Held;
-use crate::simulate::integrator::{Integrator, rough_power};
+use crate::simulate::integrator::rough_power;
 use crate::simulate::restart::Restarts;
 
 /// The step-size controller's constants, as in DOPRI5: the safety factor and the bounds on
@@ -141,7 +142,7 @@ where
     /// An integrator for `model`.
     ///
     /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
-    /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
+    /// change it between steps ([`Integrator::update`](crate::Integrator::update), [`Integrator::set_input`](crate::Integrator::set_input)).
     pub fn new(model: impl Into<Held<'m, M>>, options: ExplicitOptions) -> Result<Self, SimError> {
         options.validate()?;
         let model = model.into();
@@ -430,171 +431,5 @@ where
             self.stats.rejected += 1;
             self.rejected_last = true;
         }
-    }
-}
-
-impl<M: LagrangeDirac> Integrator<M> for Explicit<'_, M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    type Stats = ExplicitStats;
-
-    fn model(&self) -> &M {
-        self.model.get()
-    }
-
-    fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
-        self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
-        self.state.clone_from(state);
-        self.previous.clone_from(state);
-        (self.t, self.t_previous, self.h_last, self.t_end) = (t0, t0, 0.0, t_end);
-        self.stats = ExplicitStats::default();
-        self.accelerations.factorizations = 0;
-        self.forget();
-        self.evaluate_start()?;
-        // The interpolation's own system, factored once here: a sparse factorisation finds
-        // its pivots (and allocates) the first time only.
-        let (probe, acceleration) = self.probe.get_mut();
-        if !probe.is_dense() {
-            let s = &self.state;
-            probe.evaluate(self.model.get(), t0, (&s.q, &s.v), acceleration, &mut self.lambda_stage);
-        }
-        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
-        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
-        self.h = self.initial_step();
-        Ok(())
-    }
-
-    fn model_mut(&mut self) -> Option<&mut M> {
-        self.restarts.model_mut(&mut self.model, self.t, &self.state)
-    }
-
-    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
-        if self.t >= t_end {
-            return Ok(());
-        }
-        self.restarts.resume(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
-        self.t_end = t_end;
-        self.forget();
-        self.evaluate_start()?;
-        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
-        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
-        Ok(())
-    }
-
-    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
-        self.restarts.jump(
-            self.model.get(),
-            t,
-            (self.t_previous, self.t),
-            state,
-            self.options.rtol.max(1e-8),
-        )?;
-        self.state.clone_from(state);
-        self.previous.clone_from(state);
-        (self.t, self.t_previous, self.h_last) = (t, t, 0.0);
-        self.forget();
-        self.evaluate_start()?;
-        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
-        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
-        Ok(())
-    }
-
-    fn end(&self) -> f64 {
-        self.t_end
-    }
-
-    fn step(&mut self) -> Result<f64, SimError> {
-        let h = self.attempt()?;
-        self.t_previous = self.t;
-        self.h_last = h;
-        self.previous.clone_from(&self.state);
-        self.t = if self.t_end - self.t == h { self.t_end } else { self.t + h };
-        self.stats.steps += 1;
-        let s = &mut self.state;
-        s.q.copy_from(&self.q_new);
-        s.v.copy_from(&self.v_new);
-        // The seventh stage was evaluated at the new solution: its factorisation projects it,
-        // and its accelerations and multipliers are the next step's first stage (first same as
-        // last). The projection moves the solution by about the local error, O(h⁶), so the
-        // first stage is then taken that far from the state: a perturbation of O(h⁷) in the
-        // next step, below its local error, which keeps the order.
-        let projection = self.accelerations.project(self.model.get(), self.t, &mut s.q, &mut s.v);
-        if !projection.reached {
-            return Err(SimError::Unstable {
-                t: self.t,
-                h,
-                detail: "the step left the constraints too far for the projection to bring the state \
-                         back to them: take a smaller step (a fixed step), or adaptive steps"
-                    .to_owned(),
-            });
-        }
-        let moved = projection.moved;
-        self.start_acceleration.copy_from(&self.kv[6]);
-        s.lambda.copy_from(&self.lambda_stage);
-        if moved {
-            self.model.get().dl_dv(self.t, &s.q, &s.v, &mut s.p);
-        } else {
-            s.p.copy_from(self.accelerations.momenta());
-        }
-        self.check_finite()?;
-        Ok(h)
-    }
-
-    fn finished(&self) -> bool {
-        self.t >= self.t_end
-    }
-
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    fn state(&self) -> &State<M> {
-        &self.state
-    }
-
-    /// The state within the last step: positions and velocities from the method's continuous
-    /// extension (order 4), put back on the constraints as the steps are; momenta from the
-    /// Legendre map and multipliers from the accelerations' system there.
-    fn interpolate(&self, t: f64, out: &mut State<M>) {
-        if self.h_last == 0.0 {
-            out.clone_from(&self.state);
-            return;
-        }
-        let theta = ((t - self.t_previous) / self.h_last).clamp(0.0, 1.0);
-        let weights = weights_at(theta);
-        let h = self.h_last;
-        // The positions' tangent `Σ w_k k_k` is built in `out.q`, then the positions move
-        // along it from the step's start.
-        for i in 0..self.sizes.nq {
-            let (mut dq, mut dv) = (0.0, 0.0);
-            for (k, w) in weights.iter().enumerate() {
-                dq += w * self.kq[k][i];
-                dv += w * self.kv[k][i];
-            }
-            out.q[i] = dq;
-            out.v[i] = self.previous.v[i] + h * dv;
-        }
-        configuration::advance_onto::<M>(&self.previous.q, h, &mut out.q);
-        let model = self.model.get();
-        let mut probe = self.probe.borrow_mut();
-        let (accelerations, acceleration) = &mut *probe;
-        let mut determined =
-            accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
-        if determined && self.sizes.nc > 0 {
-            accelerations.project(model, t, &mut out.q, &mut out.v);
-            determined = accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
-        }
-        if determined {
-            out.p.copy_from(accelerations.momenta());
-        } else {
-            out.lambda.copy_from(&self.previous.lambda);
-            out.lambda.axpy(theta, &self.state.lambda, 1.0 - theta);
-            model.dl_dv(t, &out.q, &out.v, &mut out.p);
-        }
-    }
-
-    fn stats(&self) -> ExplicitStats {
-        self.stats
     }
 }

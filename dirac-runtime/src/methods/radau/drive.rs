@@ -10,16 +10,35 @@ use super::residual::{Drive, Residual};
 use crate::algebra::Algebra;
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
-use crate::shape::dims::{Sizes, Storage, VecY};
+use crate::model::{InputsOutputs, LagrangeDirac};
+use crate::shape::dims::{Sizes, Storage, VecC, VecQ, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::held::Held;
 
 /// The feedback's `∂u/∂(q, v)`, written by the user as `n_u × 2n` values, column-major (the
 /// columns of `q`, then those of `v`).
 pub(crate) type FeedbackJacobian<'m, M> = &'m mut dyn FnMut(f64, &State<M>, &mut [f64]);
+
+/// The model's `∂ṗ/∂u` ([`InputsOutputs::dpdot_du`]), kept when the feedback was set under
+/// that bound.
+type DpdotDu<M> = fn(&M, f64, &VecQ<M>, &VecQ<M>, &VecC<M>, &mut [f64]);
+
+/// What a feedback with an exact Jacobian is set with: the user's `∂u/∂(q, v)`, the model's
+/// `∂ṗ/∂u` and the number of inputs.
+type ExactParts<'m, M> = (FeedbackJacobian<'m, M>, DpdotDu<M>, usize);
+
+/// The user's `∂u/∂(q, v)` with the model's `∂ṗ/∂u`, and their storage.
+struct Exact<'m, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    jacobian: FeedbackJacobian<'m, M>,
+    dpdot_du: DpdotDu<M>,
+    du: Vec<f64>,
+    gains: Vec<f64>,
+}
 
 /// The storage of the inputs' Jacobian columns: `ṗ` at the current inputs and at the inputs of
 /// a perturbed state, and that state; with the user's `∂u/∂(q, v)`, it and `∂ṗ/∂u`.
@@ -32,14 +51,14 @@ where
     perturbed: VecY<M>,
     state: State<M>,
     sizes: Sizes,
-    exact: Option<(FeedbackJacobian<'m, M>, Vec<f64>, Vec<f64>)>,
+    exact: Option<Exact<'m, M>>,
 }
 
 impl<'m, M: LagrangeDirac> Feedback<'m, M>
 where
     DefaultAllocator: Storage<M>,
 {
-    fn new(sizes: Sizes, exact: Option<(FeedbackJacobian<'m, M>, usize)>) -> Self {
+    fn new(sizes: Sizes, exact: Option<ExactParts<'m, M>>) -> Self {
         let n = sizes.nq;
         Feedback {
             base: ResidualBlocks::with_sizes(&sizes),
@@ -47,7 +66,12 @@ where
             perturbed: sizes.zeros_y::<M>(),
             state: State::with_sizes(sizes),
             sizes,
-            exact: exact.map(|(jacobian, nu)| (jacobian, vec![0.0; n * nu], vec![0.0; nu * 2 * n])),
+            exact: exact.map(|(jacobian, dpdot_du, nu)| Exact {
+                jacobian,
+                dpdot_du,
+                du: vec![0.0; n * nu],
+                gains: vec![0.0; nu * 2 * n],
+            }),
         }
     }
 
@@ -84,9 +108,9 @@ where
                 values[j * n + i] += entry(i);
             }
         };
-        if let Some((jacobian, du, gains)) = &mut self.exact {
+        if let Some(Exact { jacobian, dpdot_du, du, gains }) = &mut self.exact {
             // ∂ṗ/∂u (n × n_u) times the user's ∂u/∂(q, v) (n_u × 2n), both column-major.
-            model.dpdot_du(t, &s.q, &s.v, &s.lambda, du);
+            dpdot_du(model.get(), t, &s.q, &s.v, &s.lambda, du);
             jacobian(t, s, gains);
             if gains.iter().any(|g| !g.is_finite()) {
                 return Err(SimError::NonFinite {
@@ -152,10 +176,13 @@ where
         &mut self,
         drive: &'m mut dyn FnMut(f64, &State<M>, &mut M),
         jacobian: FeedbackJacobian<'m, M>,
-    ) -> Result<(), SimError> {
+    ) -> Result<(), SimError>
+    where
+        M: InputsOutputs,
+    {
         self.check_dense()?;
         let nu = self.model.input_names().len();
-        self.set_drive(drive, Some(Some((jacobian, nu))))
+        self.set_drive(drive, Some(Some((jacobian, M::dpdot_du, nu))))
     }
 
     fn check_dense(&self) -> Result<(), SimError> {
@@ -173,7 +200,7 @@ where
     fn set_drive(
         &mut self,
         drive: Drive<'m, M>,
-        feedback: Option<Option<(FeedbackJacobian<'m, M>, usize)>>,
+        feedback: Option<Option<ExactParts<'m, M>>>,
     ) -> Result<(), SimError> {
         if self.model.get_mut().is_none() {
             return Err(SimError::SharedModel { t: self.t });

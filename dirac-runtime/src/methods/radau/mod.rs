@@ -15,6 +15,7 @@ mod dense;
 mod drive;
 mod estimate;
 mod forward;
+mod integrator;
 mod options;
 mod residual;
 mod sensitivities;
@@ -27,7 +28,7 @@ use self::controller::Controller;
 use self::dense::Dense;
 use self::drive::Feedback;
 use self::estimate::Estimator;
-use self::forward::{At, Failure, Forward, Iteration};
+use self::forward::{Failure, Forward};
 use self::options::Tolerances;
 pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
 use self::residual::Residual;
@@ -46,7 +47,6 @@ use crate::model::blocks::JacobianBlocks;
 use crate::model::state::State;
 use crate::shape::dims::{Storage, VecY};
 use crate::simulate::held::Held;
-use crate::simulate::integrator::Integrator;
 use crate::simulate::restart::Restarts;
 
 /// Below this contraction rate of the last Newton iteration the Jacobian is kept.
@@ -111,7 +111,7 @@ where
     /// An integrator for `model` with the condensed Newton solver of its algebra.
     ///
     /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
-    /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
+    /// change it between steps ([`Integrator::update`](crate::Integrator::update), [`Integrator::set_input`](crate::Integrator::set_input)).
     pub fn new(model: impl Into<Held<'m, M>>, options: RadauOptions) -> Result<Self, SimError> {
         options.validate()?;
         let model = model.into();
@@ -370,51 +370,6 @@ where
         self.check_finite(t0)
     }
 
-    /// Solves the sensitivities' stage systems of the step, converged in `state_iterations`
-    /// Newton iterations; their largest error
-    /// estimate (zero unless error-controlled), or why they could not be solved.
-    fn solve_sensitivities(&mut self, state_iterations: usize) -> Result<f64, Failure> {
-        let Radau {
-            model,
-            residual,
-            solver,
-            t,
-            h,
-            y,
-            stages,
-            eig,
-            tolerances,
-            options,
-            forward,
-            stats,
-            jac,
-            factored_h,
-            ..
-        } = self;
-        let Some(forward) = forward.as_deref_mut() else {
-            return Ok(0.0);
-        };
-        let at = At { t: *t, h: *h, y, z: &stages.z };
-        forward.stages(model, residual, &at);
-        let exact = *factored_h == *h && forward.stage_jacobians_equal(jac);
-        stats.jacobian_evaluations += 3;
-        let h = *h;
-        let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
-        let (before, coupled_before) = (forward.iterations, forward.coupled_steps);
-        let iteration = Iteration {
-            fnewt: tolerances.fnewt,
-            max_iterations: 4 * options.max_newton_iterations,
-            norm: options.error_norm,
-            theta: stages.theta,
-            exact,
-            state_iterations,
-        };
-        let result = forward.solve(solver, eig, h, &iteration, &weights);
-        stats.sensitivity_iterations += forward.iterations - before;
-        stats.coupled_sensitivity_steps += forward.coupled_steps - coupled_before;
-        result
-    }
-
     fn factor(&mut self) -> Result<(), Singular> {
         let e = &self.eig;
         let sigma = e.gamma / self.h;
@@ -499,104 +454,5 @@ where
             return SimError::NonFinite { t: self.t, component };
         }
         SimError::NewtonDiverged { t: self.t, h: self.h, iterations: self.options.max_newton_iterations }
-    }
-}
-
-impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Integrator<M> for Radau<'_, M, S>
-where
-    DefaultAllocator: Storage<M>,
-{
-    type Stats = RadauStats;
-
-    fn model(&self) -> &M {
-        self.model.get()
-    }
-
-    fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
-        self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
-        state.write_y(&mut self.y);
-        self.state.clone_from(state);
-        let span = t_end - t0;
-        self.stats = RadauStats::default();
-        self.h = match self.options.initial_step {
-            Some(h) => h,
-            None => self.first_step(t0, state, span),
-        };
-        self.start_sensitivities(t0, state)?;
-        self.begin(t0, t_end, true)
-    }
-
-    fn model_mut(&mut self) -> Option<&mut M> {
-        self.restarts.model_mut(&mut self.model, self.t, &self.state)
-    }
-
-    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
-        if self.t >= t_end {
-            return Ok(());
-        }
-        self.restarts.resume(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
-        self.h = self.h.max(self.unclipped);
-        self.begin(self.t, t_end, false)
-    }
-
-    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
-        self.residual.apply_state(&mut self.model, t, state);
-    }
-
-    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
-        if self.forward.is_some() {
-            return Err(SimError::InvalidOption {
-                what: "sensitivities",
-                reason: format!(
-                    "a restart at t = {t} (an event's reset or impact) would need the sensitivities' jump \
-                     conditions, which are not implemented: integrate with sensitivities between events"
-                ),
-            });
-        }
-        self.restarts.jump(
-            self.model.get(),
-            t,
-            (self.t - self.dense.h, self.t),
-            state,
-            self.options.rtol.max(1e-8),
-        )?;
-        state.write_y(&mut self.y);
-        self.state.clone_from(state);
-        // The state may have jumped (an impact): start again with a short step, which grows by
-        // up to 8× a step, so that the steps after the event see an event function leave zero
-        // (a ball leaving the floor) before one of them could span its return.
-        if self.dense.h > 0.0 {
-            self.h = 1e-3 * self.dense.h;
-        }
-        self.dense.h = 0.0;
-        self.begin(t, self.t_end, false)
-    }
-
-    fn end(&self) -> f64 {
-        self.t_end
-    }
-
-    fn step(&mut self) -> Result<f64, SimError> {
-        self.attempt()
-    }
-
-    fn finished(&self) -> bool {
-        self.t >= self.t_end
-    }
-
-    fn t(&self) -> f64 {
-        self.t
-    }
-
-    fn state(&self) -> &State<M> {
-        &self.state
-    }
-
-    fn interpolate(&self, t: f64, out: &mut State<M>) {
-        self.dense.interpolate(&self.y, self.t, t, out);
-    }
-
-    fn stats(&self) -> RadauStats {
-        self.stats
     }
 }

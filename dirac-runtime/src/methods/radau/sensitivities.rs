@@ -6,12 +6,12 @@ use nalgebra::DefaultAllocator;
 
 use super::Radau;
 use super::RadauStats;
-use super::forward::Forward;
+use super::forward::{At, Failure, Forward, Iteration};
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::state::State;
-use crate::shape::dims::Storage;
+use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
+use crate::shape::dims::{Storage, VecY};
 use crate::simulate::integrator::Integrator;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::sensitivity::{Initial, Sensitivities};
@@ -29,7 +29,10 @@ where
     ///
     /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
     /// projection's derivative is not carried) or with no sensitivity asked for.
-    pub fn with_sensitivities(mut self, wrt: &Sensitivities<M>) -> Result<Self, SimError> {
+    pub fn with_sensitivities(mut self, wrt: &Sensitivities<M>) -> Result<Self, SimError>
+    where
+        M: Parameters,
+    {
         let invalid =
             |reason: &str| Err(SimError::InvalidOption { what: "sensitivities", reason: reason.into() });
         if wrt.is_empty() {
@@ -38,7 +41,9 @@ where
         if self.options.projection {
             return invalid("they are not carried through the projection onto the constraints: turn it off");
         }
-        self.forward = Some(Box::new(Forward::new(self.model.get(), wrt.wrt(), wrt.error_control)));
+        let derivatives = ParameterDerivatives::of();
+        self.forward =
+            Some(Box::new(Forward::new(self.model.get(), derivatives, wrt.wrt(), wrt.error_control)));
         self.sensitivity_names = wrt.names().to_vec();
         Ok(self)
     }
@@ -90,7 +95,7 @@ where
             });
         }
         let mut s = State::with_sizes(self.model.sizes());
-        let mut initial = Initial::new(self.model.get(), t0, state)?;
+        let mut initial = Initial::new(self.model.get(), forward.derivatives, t0, state)?;
         for j in 0..forward.len() {
             initial.solve(forward.wrt(j), &mut s);
             if let Some(slot) = s.components().position(|x| !x.is_finite()) {
@@ -174,5 +179,55 @@ where
         let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
         let solution = recorder.finish(self.stats())?;
         Ok(solution.with_sensitivities(self.sensitivity_names.clone(), columns))
+    }
+}
+
+impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'_, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Solves the sensitivities' stage systems of the step, converged in `state_iterations`
+    /// Newton iterations; their largest error
+    /// estimate (zero unless error-controlled), or why they could not be solved.
+    pub(super) fn solve_sensitivities(&mut self, state_iterations: usize) -> Result<f64, Failure> {
+        let Radau {
+            model,
+            residual,
+            solver,
+            t,
+            h,
+            y,
+            stages,
+            eig,
+            tolerances,
+            options,
+            forward,
+            stats,
+            jac,
+            factored_h,
+            ..
+        } = self;
+        let Some(forward) = forward.as_deref_mut() else {
+            return Ok(0.0);
+        };
+        let at = At { t: *t, h: *h, y, z: &stages.z };
+        forward.stages(model, residual, &at);
+        let exact = *factored_h == *h && forward.stage_jacobians_equal(jac);
+        stats.jacobian_evaluations += 3;
+        let h = *h;
+        let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
+        let (before, coupled_before) = (forward.iterations, forward.coupled_steps);
+        let iteration = Iteration {
+            fnewt: tolerances.fnewt,
+            max_iterations: 4 * options.max_newton_iterations,
+            norm: options.error_norm,
+            theta: stages.theta,
+            exact,
+            state_iterations,
+        };
+        let result = forward.solve(solver, eig, h, &iteration, &weights);
+        stats.sensitivity_iterations += forward.iterations - before;
+        stats.coupled_sensitivity_steps += forward.coupled_steps - coupled_before;
+        result
     }
 }

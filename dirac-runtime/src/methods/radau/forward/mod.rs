@@ -19,20 +19,23 @@
 //!
 //! Nothing allocates in a step.
 
+mod derivatives;
+mod work;
+
+use self::derivatives::{Derivatives, estimate};
+
 use nalgebra::DefaultAllocator;
 
 use super::coupled::{Coupled, WORTH_FROM};
 use super::dense::Dense;
-use super::estimate::{scaled_error, zero_algebraic};
-use super::options::{ErrorNorm, norm};
+use super::options::ErrorNorm;
 use super::residual::Residual;
-use super::stages::{three, transform, transformed_residuals};
-use super::tableau::{C1, C2, C3, DD1, DD2, DD3, Eigen, T};
-use crate::algebra::Algebra;
+use super::stages::three;
+use super::tableau::{C1, C2, C3, Eigen};
 use crate::algebra::newton::NewtonSolver;
-use crate::model::LagrangeDirac;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
+use crate::model::{LagrangeDirac, ParameterDerivatives};
 use crate::shape::dims::{Storage, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::held::Held;
@@ -73,6 +76,8 @@ where
     /// Every parameter's `∂f/∂θ` blocks, evaluated together where at least half of the
     /// model's parameters (and two or more) are asked for; empty where each is evaluated alone.
     all: Vec<ResidualBlocks<M>>,
+    /// The model's parameter derivatives.
+    pub derivatives: ParameterDerivatives<M>,
     /// Whether the sensitivities' errors count in the step-size control.
     pub error_control: bool,
     /// Whether the sensitivities' multipliers at the step's start are known: not at the start
@@ -98,32 +103,6 @@ where
     tmp: VecY<M>,
     weights: VecY<M>,
     layout: Layout,
-}
-
-/// `out = J x` for the flat Jacobian `J` given by its blocks.
-fn apply<M: LagrangeDirac>(l: &Layout, jac: &JacobianBlocks<M, M::Algebra>, x: &VecY<M>, out: &mut VecY<M>)
-where
-    DefaultAllocator: Storage<M>,
-{
-    let (x, o) = (x.as_slice(), out.as_mut_slice());
-    let (xq, xv, xp, xl) = (&x[l.q..l.v], &x[l.v..l.p], &x[l.p..l.lambda], &x[l.lambda..l.len]);
-    o[l.q..l.v].copy_from_slice(xv);
-    o[l.v..l.p].copy_from_slice(xp);
-    o[l.p..l.len].fill(0.0);
-    {
-        let ov = &mut o[l.v..l.p];
-        M::Algebra::qq_mul(&jac.l_vq, -1.0, xq, ov);
-        M::Algebra::qq_mul(&jac.l_vv, -1.0, xv, ov);
-    }
-    {
-        let op = &mut o[l.p..l.lambda];
-        M::Algebra::qq_mul(&jac.dpdot_dq, 1.0, xq, op);
-        M::Algebra::qq_mul(&jac.dpdot_dv, 1.0, xv, op);
-        M::Algebra::cq_tr_mul(&jac.a, 1.0, xl, op);
-    }
-    let oc = &mut o[l.lambda..l.len];
-    M::Algebra::cq_mul(&jac.dav_dq, 1.0, xq, oc);
-    M::Algebra::cq_mul(&jac.a, 1.0, xv, oc);
 }
 
 /// Why the sensitivities of a step could not be solved.
@@ -167,7 +146,7 @@ impl<M: LagrangeDirac> Forward<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub fn new(model: &M, wrt: &[Wrt], error_control: bool) -> Self {
+    pub fn new(model: &M, derivatives: ParameterDerivatives<M>, wrt: &[Wrt], error_control: bool) -> Self {
         let sizes = model.sizes();
         let shape = model.shape();
         let jac = || JacobianBlocks::with_shape(&shape);
@@ -209,6 +188,7 @@ where
             state: State::with_sizes(sizes),
             blocks: ResidualBlocks::with_sizes(&sizes),
             all,
+            derivatives,
             error_control,
             multipliers_known: false,
             iterations: 0,
@@ -274,8 +254,12 @@ where
         self.state.read_y(y);
         let s = &self.state;
         model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac0);
-        let mut derivatives =
-            Derivatives { layout: &self.work.layout, blocks: &mut self.blocks, all: &mut self.all };
+        let mut derivatives = Derivatives {
+            of: self.derivatives,
+            layout: &self.work.layout,
+            blocks: &mut self.blocks,
+            all: &mut self.all,
+        };
         derivatives.write(model.get(), t, s, &mut self.columns, |c| &mut c.g0);
     }
 
@@ -290,8 +274,12 @@ where
             self.state.read_y(&w.tmp);
             let s = &self.state;
             model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut w.jac[k]);
-            let mut derivatives =
-                Derivatives { layout: &w.layout, blocks: &mut self.blocks, all: &mut self.all };
+            let mut derivatives = Derivatives {
+                of: self.derivatives,
+                layout: &w.layout,
+                blocks: &mut self.blocks,
+                all: &mut self.all,
+            };
             derivatives.write(model.get(), t, s, &mut self.columns, |c| &mut c.g[k]);
         }
     }
@@ -377,220 +365,4 @@ where
         }
         self.multipliers_known = true;
     }
-}
-
-impl<M: LagrangeDirac> Work<M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// `f_k`: the stage right-hand sides of sensitivity `c`, `J_k (s_n + Zs_k) + g_k`.
-    fn stage_right_hand_sides(&mut self, c: &Column<M>) {
-        for k in 0..3 {
-            self.tmp.copy_from(&c.s);
-            self.tmp += &c.z[k];
-            apply::<M>(&self.layout, &self.jac[k], &self.tmp, &mut self.f[k]);
-            if matches!(c.wrt, Wrt::Parameter(_)) {
-                self.f[k] += &c.g[k];
-            }
-        }
-    }
-
-    /// The first slot of the stage right-hand sides that is not finite, if any: the cause of
-    /// increments that are not.
-    fn non_finite_slot(&self) -> Option<usize> {
-        self.f.iter().find_map(|f| f.iter().position(|x| !x.is_finite()))
-    }
-
-    /// Solves the stage system of `c` when the factored matrix is its exact matrix (a Jacobian
-    /// the same at every stage, factored for this step's size): from zero, one solve is the
-    /// solution, `M Zs = h (A ⊗ I)(J s_n + g)` in the transformed variables. One linear
-    /// iteration, or why it failed, as [`Work::iterate`] says.
-    fn direct<S: NewtonSolver<M, M::Algebra>>(
-        &mut self,
-        solver: &mut S,
-        eig: &Eigen,
-        h: f64,
-        c: &mut Column<M>,
-    ) -> Result<usize, Option<usize>> {
-        apply::<M>(&self.layout, &self.jac[0], &c.s, &mut self.tmp);
-        for (fk, gk) in self.f.iter_mut().zip(&c.g) {
-            fk.copy_from(&self.tmp);
-            if matches!(c.wrt, Wrt::Parameter(_)) {
-                *fk += gk;
-            }
-        }
-        // `self.w` is zero (set for the step by `Forward::solve`).
-        transformed_residuals::<M>(&self.layout, &eig.over(h), &self.f, &self.w, &mut self.r);
-        let [r1, r2, r3] = &mut self.r;
-        solver.solve(r1);
-        solver.solve_complex(r2, r3);
-        if self.r.iter().any(|r| r.iter().any(|x| !x.is_finite())) {
-            return Err(self.non_finite_slot());
-        }
-        transform(&T, &self.r, &mut c.z);
-        Ok(1)
-    }
-
-    /// Solves the stage system of `c` exactly, with the step's factored coupled system: one
-    /// linear solve, or why it failed, as [`Work::iterate`] says.
-    fn coupled(&mut self, coupled: &mut Coupled, h: f64, c: &mut Column<M>) -> Result<usize, Option<usize>> {
-        let g = matches!(c.wrt, Wrt::Parameter(_)).then_some(&c.g);
-        coupled.solve(&self.layout, &self.jac, h, &c.s, g, &mut c.z);
-        if c.z.iter().any(|z| z.iter().any(|x| !x.is_finite())) {
-            for (k, fk) in self.f.iter_mut().enumerate() {
-                apply::<M>(&self.layout, &self.jac[k], &c.s, fk);
-                if let Some(g) = g {
-                    *fk += &g[k];
-                }
-            }
-            return Err(self.non_finite_slot());
-        }
-        Ok(1)
-    }
-
-    /// Solves the stage system of `c` by the simplified Newton iteration on the factored
-    /// matrix, its increments measured in `self.weights`, to the state's Newton tolerance. The
-    /// number of iterations, or why it failed: the slot whose right-hand side is not finite,
-    /// or none if the iteration diverged.
-    fn iterate<S: NewtonSolver<M, M::Algebra>>(
-        &mut self,
-        solver: &mut S,
-        eig: &Eigen,
-        h: f64,
-        iteration: &Iteration,
-        c: &mut Column<M>,
-    ) -> Result<usize, Option<usize>> {
-        // Start from the last step's polynomial extrapolated, as the state's iteration does.
-        if c.dense.h > 0.0 {
-            c.dense.extrapolate_transformed(h, &mut c.z, &mut self.w);
-        } else {
-            c.z.iter_mut().chain(self.w.iter_mut()).for_each(|z| z.fill(0.0));
-        }
-        // The iteration is linear: it contracts about as it did in the last step (as the
-        // state's did, at first), until it shows its rate in this one; relaxed to its square
-        // root, more cautious than RADAU5's relaxation of the state's rate (a power 0.8).
-        let last = if c.theta.is_finite() { c.theta } else { iteration.theta };
-        let mut theta = last.clamp(f64::EPSILON, 0.81).sqrt();
-        let mut previous = f64::INFINITY;
-        for newt in 0..iteration.max_iterations {
-            self.stage_right_hand_sides(c);
-            transformed_residuals::<M>(&self.layout, &eig.over(h), &self.f, &self.w, &mut self.r);
-            let [r1, r2, r3] = &mut self.r;
-            solver.solve(r1);
-            solver.solve_complex(r2, r3);
-            let dyno = {
-                let sum: f64 =
-                    self.r.iter().map(|rk| norm::<M>(rk, &self.weights, iteration.norm).powi(2)).sum();
-                (sum / 3.0).sqrt()
-            };
-            for (wk, rk) in self.w.iter_mut().zip(&self.r) {
-                *wk += rk;
-            }
-            transform(&T, &self.w, &mut c.z);
-            if !dyno.is_finite() {
-                // A right-hand side that is not finite is the cause to name; otherwise the
-                // iteration diverged.
-                return Err(self.non_finite_slot());
-            }
-            if newt > 0 {
-                theta = dyno / previous;
-                if theta >= 0.99 {
-                    return Err(None);
-                }
-                c.theta = theta;
-            }
-            // What remains is about θ/(1 − θ) times the last increment: iterate to the
-            // state's Newton tolerance, as the state's own iteration does.
-            previous = dyno.max(f64::MIN_POSITIVE);
-            if dyno * theta / (1.0 - theta) <= iteration.fnewt {
-                return Ok(newt + 1);
-            }
-        }
-        Err(None)
-    }
-}
-
-/// Where the parameters' derivatives are evaluated: one block at a time, or all together.
-struct Derivatives<'a, M: LagrangeDirac>
-where
-    DefaultAllocator: Storage<M>,
-{
-    layout: &'a Layout,
-    blocks: &'a mut ResidualBlocks<M>,
-    /// Every parameter's blocks, or empty to evaluate each column's alone.
-    all: &'a mut [ResidualBlocks<M>],
-}
-
-impl<M: LagrangeDirac> Derivatives<'_, M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Writes each parameter column's flat `∂f/∂θ` at `(t, s)` into `slot(column)`.
-    fn write(
-        &mut self,
-        model: &M,
-        t: f64,
-        s: &State<M>,
-        columns: &mut [Column<M>],
-        slot: impl Fn(&mut Column<M>) -> &mut VecY<M>,
-    ) {
-        if !self.all.is_empty() {
-            model.residual_blocks_dtheta_all(t, &s.q, &s.v, &s.lambda, self.all);
-        }
-        for c in columns {
-            if let Wrt::Parameter(p) = c.wrt {
-                let blocks = if self.all.is_empty() {
-                    model.residual_blocks_dtheta(p, t, &s.q, &s.v, &s.lambda, self.blocks);
-                    &*self.blocks
-                } else {
-                    &self.all[p]
-                };
-                flat_dtheta(self.layout, blocks, slot(c));
-            }
-        }
-    }
-}
-
-/// The flat `∂f/∂θ = (0, −∂(∂L/∂v)/∂θ, ∂ṗ/∂θ, ∂(A v + b)/∂θ)` from its blocks.
-fn flat_dtheta<M: LagrangeDirac>(l: &Layout, b: &ResidualBlocks<M>, out: &mut VecY<M>)
-where
-    DefaultAllocator: Storage<M>,
-{
-    let o = out.as_mut_slice();
-    o[l.q..l.v].fill(0.0);
-    for (x, d) in o[l.v..l.p].iter_mut().zip(b.dl_dv.iter()) {
-        *x = -d;
-    }
-    o[l.p..l.lambda].copy_from_slice(b.momentum_rate.as_slice());
-    o[l.lambda..l.len].copy_from_slice(b.constraint_velocity.as_slice());
-}
-
-/// The embedded error estimate of one sensitivity, as the state's
-/// ([`Estimator`](super::estimate::Estimator)) without its refinement: the weighted norm of
-/// `(γ/h M − J)⁻¹ M (f_s(t_n) + Σ e_i Zs_i / h)`, `f_s = J s + ∂f/∂θ`.
-#[allow(clippy::too_many_arguments)]
-fn estimate<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>>(
-    l: &Layout,
-    solver: &mut S,
-    jac0: &JacobianBlocks<M, M::Algebra>,
-    c: &Column<M>,
-    e: &mut VecY<M>,
-    h: f64,
-    weights: &VecY<M>,
-    error_norm: ErrorNorm,
-) -> f64
-where
-    DefaultAllocator: Storage<M>,
-{
-    // s_n is c.s (not yet advanced).
-    apply::<M>(l, jac0, &c.s, e);
-    if matches!(c.wrt, Wrt::Parameter(_)) {
-        *e += &c.g0;
-    }
-    for i in 0..l.len {
-        e[i] += (DD1 * c.z[0][i] + DD2 * c.z[1][i] + DD3 * c.z[2][i]) / h;
-    }
-    zero_algebraic::<M>(l, e);
-    solver.solve(e);
-    scaled_error::<M>(e, weights, error_norm)
 }

@@ -1,0 +1,111 @@
+//! Radau as an [`Integrator`]: start, change and restart, step, and the state between
+//! steps.
+
+use nalgebra::DefaultAllocator;
+
+use super::{Radau, RadauStats};
+use crate::algebra::newton::NewtonSolver;
+use crate::error::SimError;
+use crate::model::LagrangeDirac;
+use crate::model::state::State;
+use crate::shape::dims::Storage;
+use crate::simulate::integrator::Integrator;
+
+impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Integrator<M> for Radau<'_, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    type Stats = RadauStats;
+
+    fn model(&self) -> &M {
+        self.model.get()
+    }
+
+    fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
+        state.write_y(&mut self.y);
+        self.state.clone_from(state);
+        let span = t_end - t0;
+        self.stats = RadauStats::default();
+        self.h = match self.options.initial_step {
+            Some(h) => h,
+            None => self.first_step(t0, state, span),
+        };
+        self.start_sensitivities(t0, state)?;
+        self.begin(t0, t_end, true)
+    }
+
+    fn model_mut(&mut self) -> Option<&mut M> {
+        self.restarts.model_mut(&mut self.model, self.t, &self.state)
+    }
+
+    fn restart_until(&mut self, t_end: f64) -> Result<(), SimError> {
+        if self.t >= t_end {
+            return Ok(());
+        }
+        self.restarts.resume(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
+        self.h = self.h.max(self.unclipped);
+        self.begin(self.t, t_end, false)
+    }
+
+    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
+        self.residual.apply_state(&mut self.model, t, state);
+    }
+
+    fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        if self.forward.is_some() {
+            return Err(SimError::InvalidOption {
+                what: "sensitivities",
+                reason: format!(
+                    "a restart at t = {t} (an event's reset or impact) would need the sensitivities' jump \
+                     conditions, which are not implemented: integrate with sensitivities between events"
+                ),
+            });
+        }
+        self.restarts.jump(
+            self.model.get(),
+            t,
+            (self.t - self.dense.h, self.t),
+            state,
+            self.options.rtol.max(1e-8),
+        )?;
+        state.write_y(&mut self.y);
+        self.state.clone_from(state);
+        // The state may have jumped (an impact): start again with a short step, which grows by
+        // up to 8× a step, so that the steps after the event see an event function leave zero
+        // (a ball leaving the floor) before one of them could span its return.
+        if self.dense.h > 0.0 {
+            self.h = 1e-3 * self.dense.h;
+        }
+        self.dense.h = 0.0;
+        self.begin(t, self.t_end, false)
+    }
+
+    fn end(&self) -> f64 {
+        self.t_end
+    }
+
+    fn step(&mut self) -> Result<f64, SimError> {
+        self.attempt()
+    }
+
+    fn finished(&self) -> bool {
+        self.t >= self.t_end
+    }
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn state(&self) -> &State<M> {
+        &self.state
+    }
+
+    fn interpolate(&self, t: f64, out: &mut State<M>) {
+        self.dense.interpolate(&self.y, self.t, t, out);
+    }
+
+    fn stats(&self) -> RadauStats {
+        self.stats
+    }
+}

@@ -1,0 +1,78 @@
+//! The hybrid capability: what makes a model's motion piecewise, its event functions
+//! `g(t, q, v, λ)` and its unilateral constraints `φ_u(q, t) ≥ 0` (contacts, stops, walls)
+//! with their one-forms, restitutions and, in the companion that lets contacts rest, the switch
+//! that holds a closed contact as a constraint row.
+
+use nalgebra::DefaultAllocator;
+
+use crate::model::lagrange_dirac::LagrangeDirac;
+use crate::shape::dims::{Storage, VecC, VecQ};
+
+/// A model with event functions and unilateral constraints. The derives implement it for
+/// every model they make (one without keeps the defaults: no events, no contacts);
+/// [`Events::declared`](crate::Events::declared) and [`Events::contacts`](crate::Events::contacts)
+/// ask for it in their bounds.
+pub trait Hybrid: LagrangeDirac
+where
+    DefaultAllocator: Storage<Self>,
+{
+    /// The model's event functions `g(t, q, v, λ)` (`#[dirac(event(name, direction) = g)]`),
+    /// into `out`, one per event in the order declared (`Events::new().declared()` watches
+    /// them).
+    fn events(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
+        assert!(out.is_empty(), "events: the model declares none, so the slice must be empty");
+    }
+
+    /// The values `φ_u(q, t)` of the unilateral constraints, into `out` (one per constraint):
+    /// positive while open, zero at contact.
+    fn unilateral(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "unilateral: the model has no unilateral constraints, so the slice must be empty"
+        );
+    }
+
+    /// `∂φ_u/∂q`, one row per unilateral constraint (its one-form, along which an impact's
+    /// impulse acts), dense and column-major.
+    fn unilateral_dq(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "unilateral_dq: the model has no unilateral constraints, so the slice must be empty"
+        );
+    }
+
+    /// The coefficient of restitution of each unilateral constraint: the share of the normal
+    /// velocity an impact reverses (1 elastic, 0 plastic).
+    fn restitution(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "restitution: the model has no unilateral constraints, so the slice must be empty"
+        );
+    }
+
+    /// Whether unilateral constraint `j` is closed, held as a holonomic constraint: in the
+    /// companion the derive makes of a model with unilateral constraints
+    /// (`model.with_contacts()`, of type `<Model>WithContacts`); never in other models.
+    fn contact_closed(&self, j: usize) -> bool {
+        let _ = j;
+        false
+    }
+
+    /// Closes or opens unilateral constraint `j` of a companion with contacts that can rest;
+    /// whether the model has such a switch (false for other models, which it leaves alone).
+    fn set_contact_closed(&mut self, j: usize, closed: bool) -> bool {
+        let _ = (j, closed);
+        false
+    }
+
+    /// The constraint row that holds unilateral constraint `j` while it is closed, in a
+    /// companion with contacts that can rest: its multiplier is the contact force.
+    fn contact_row(&self, j: usize) -> Option<usize> {
+        let _ = j;
+        None
+    }
+}

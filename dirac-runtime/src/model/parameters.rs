@@ -1,0 +1,125 @@
+//! The parameters capability: a model's `f64` fields read and written by index, and the
+//! derivatives of its residual blocks and holonomic constraints with respect to each of them,
+//! which forward sensitivities (and fits) need.
+
+use nalgebra::DefaultAllocator;
+
+use crate::model::blocks::ResidualBlocks;
+use crate::model::lagrange_dirac::LagrangeDirac;
+use crate::shape::dims::{Storage, VecC, VecH, VecQ};
+
+/// A model whose parameters can be read, set and differentiated with respect to.
+/// `#[derive(LagrangeDirac)]` and `#[derive(Interconnection)]` implement it for every model
+/// they make (a model made of arrays of subsystems has no parameters and keeps the defaults);
+/// sensitivities and the FMI export ask for it in their bounds.
+pub trait Parameters: LagrangeDirac
+where
+    DefaultAllocator: Storage<Self>,
+{
+    /// The value of parameter `k` (an index into
+    /// [`parameter_names`](crate::model::Named::parameter_names)). The derive implements it; it
+    /// panics if the model has no parameter `k`.
+    fn parameter_value(&self, k: usize) -> f64 {
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
+    /// Sets parameter `k`. The derive implements it; it panics if the model has no parameter
+    /// `k`. Between the steps of an integration, change parameters through the integrator
+    /// ([`Integrator::update`](crate::Integrator::update)), which restarts it.
+    fn set_parameter_value(&mut self, k: usize, value: f64) {
+        let _ = value;
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
+    /// The derivatives of the residual blocks with respect to parameter `k` at fixed
+    /// `(t, q, v, λ)`: `∂ṗ/∂θ_k`, `∂(∂L/∂v)/∂θ_k` and `∂(A v + b)/∂θ_k`, each vector written
+    /// whole. Generated symbolically, with shared subexpressions, for every parameter of a
+    /// primitive model and of a composite of named subsystems; it panics if the model has no
+    /// parameter `k`.
+    fn residual_blocks_dtheta(
+        &self,
+        k: usize,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut ResidualBlocks<Self>,
+    ) {
+        let _ = (t, q, v, lambda, out);
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+
+    /// The derivatives of the residual blocks with respect to every parameter at once, into
+    /// `out[k]` for parameter `k`; it panics if `out` holds fewer blocks than the model has
+    /// parameters. The same values as
+    /// [`residual_blocks_dtheta`](Parameters::residual_blocks_dtheta) for each `k`, but a
+    /// primitive model's derive evaluates what the parameters' derivatives share (its
+    /// trigonometry, its mass matrix) once for all of them; elsewhere it calls
+    /// `residual_blocks_dtheta` for each parameter.
+    fn residual_blocks_dtheta_all(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut [ResidualBlocks<Self>],
+    ) {
+        let count = Self::NAMES.parameter_count();
+        for (k, out) in out[..count].iter_mut().enumerate() {
+            self.residual_blocks_dtheta(k, t, q, v, lambda, out);
+        }
+    }
+
+    /// `∂φ/∂θ_k`: the derivative of the holonomic constraint values with respect to parameter
+    /// `k` at fixed `(t, q)`, written whole.
+    fn holonomic_dtheta(&self, k: usize, t: f64, q: &VecQ<Self>, out: &mut VecH<Self>) {
+        let _ = (t, q, out);
+        panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
+    }
+}
+
+/// [`Parameters::residual_blocks_dtheta`] of models of type `M`.
+type BlocksDtheta<M> = fn(&M, usize, f64, &VecQ<M>, &VecQ<M>, &VecC<M>, &mut ResidualBlocks<M>);
+/// [`Parameters::residual_blocks_dtheta_all`] of models of type `M`.
+type BlocksDthetaAll<M> = fn(&M, f64, &VecQ<M>, &VecQ<M>, &VecC<M>, &mut [ResidualBlocks<M>]);
+
+/// A model's parameter derivatives as function pointers: what code that holds a model of any
+/// kind keeps when it was built under a [`Parameters`] bound (an integrator asked for
+/// sensitivities), so that its steps differentiate with respect to parameters without
+/// every method of it asking for the capability.
+pub(crate) struct ParameterDerivatives<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// [`Parameters::residual_blocks_dtheta`].
+    pub blocks: BlocksDtheta<M>,
+    /// [`Parameters::residual_blocks_dtheta_all`].
+    pub all: BlocksDthetaAll<M>,
+    /// [`Parameters::holonomic_dtheta`].
+    pub holonomic: fn(&M, usize, f64, &VecQ<M>, &mut VecH<M>),
+}
+
+impl<M: Parameters> ParameterDerivatives<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The parameter derivatives of models of type `M`.
+    pub fn of() -> Self {
+        ParameterDerivatives {
+            blocks: M::residual_blocks_dtheta,
+            all: M::residual_blocks_dtheta_all,
+            holonomic: M::holonomic_dtheta,
+        }
+    }
+}
+
+impl<M: LagrangeDirac> Clone for ParameterDerivatives<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<M: LagrangeDirac> Copy for ParameterDerivatives<M> where DefaultAllocator: Storage<M> {}

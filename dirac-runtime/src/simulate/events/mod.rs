@@ -1,0 +1,263 @@
+//! Events: named functions `g(t, state, model)` whose sign changes an integration locates
+//! between steps, on the integrator's dense output, to round-off in `t`.
+//!
+//! [`Events`] holds the functions and locates their crossings after each step
+//! ([`Events::locate`], which allocates nothing); [`SolveWithEvents::solve_with_events`] runs a whole
+//! integration with them, hands each event to the user's action in time order, and restarts
+//! from a consistent state when the action reset the state or changed the model.
+//!
+//! A crossing is a change of sign between two points the locator examined: the ends of steps,
+//! and the events located. A function that touches zero without changing sign, or changes
+//! sign twice within one step, is not seen; a smaller `max_step` resolves fast ones.
+
+use nalgebra::DefaultAllocator;
+
+use crate::error::SimError;
+use crate::model::state::State;
+use crate::model::{Hybrid, LagrangeDirac};
+use crate::shape::dims::{Sizes, Storage};
+use crate::simulate::contacts::{Contacts, Impacts};
+use crate::simulate::solution::{Crossing, Event};
+
+mod locate;
+mod solve;
+
+pub use self::solve::{EventContext, SolveWithEvents};
+
+/// An event function: `g(t, state, model)`.
+type EventFunction<'e, M> = Box<dyn FnMut(f64, &State<M>, &M) -> f64 + 'e>;
+
+/// The most iterations of the root finder for one crossing; the bracket halves at least every
+/// fourth, so 4 × 64 covers the width of any `f64` interval.
+const MAX_ITERATIONS: usize = 256;
+
+/// A set of named event functions, and the locator of their crossings.
+///
+/// The facade's guide (`dirac::guide`, section "Events") has a runnable example: a ball that
+/// bounces on the floor.
+pub struct Events<'e, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    names: Vec<String>,
+    crossings: Vec<Crossing>,
+    functions: Vec<EventFunction<'e, M>>,
+    /// The last point examined: its time and the functions' values there.
+    t_lo: f64,
+    lo: Vec<f64>,
+    /// The sign each function had last when it was not zero (0 before it was ever nonzero).
+    signs: Vec<f64>,
+    /// The values at the end of the step being searched, and whether they are current.
+    t_hi: f64,
+    hi: Vec<f64>,
+    hi_current: bool,
+    /// Events that crossed at `t_lo` together with the one reported there.
+    pending: Vec<bool>,
+    /// The state at the last event located.
+    at_event: State<M>,
+    /// The state at the root finder's trial points.
+    probe: State<M>,
+    /// Whether the inputs were last set for a time before the step's end (a trial time of
+    /// the root finder, or an event), so that they are to be put back at the step's end.
+    inputs_moved: bool,
+    evaluations: usize,
+    /// The model's unilateral constraints, when watched ([`Events::contacts`]), and which
+    /// of them each event function is.
+    contacts: Option<Contacts>,
+    contact_of: Vec<Option<usize>>,
+    /// The contact each release event function opens (in a companion whose contacts rest).
+    release_of: Vec<Option<usize>>,
+    /// Functions restarted at zero by an impact that reopened their contact: they count as
+    /// positive there, so that a closing again within the same step is seen.
+    reopened: Vec<bool>,
+}
+
+impl<M: LagrangeDirac> Default for Events<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<'e, M: LagrangeDirac> Events<'e, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// No events yet.
+    pub fn new() -> Self {
+        Events {
+            names: Vec::new(),
+            crossings: Vec::new(),
+            functions: Vec::new(),
+            t_lo: f64::NAN,
+            lo: Vec::new(),
+            signs: Vec::new(),
+            t_hi: f64::NAN,
+            hi: Vec::new(),
+            hi_current: false,
+            pending: Vec::new(),
+            at_event: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
+            probe: State::with_sizes(Sizes { nq: 0, nc: 0, nh: 0 }.typed::<M>()),
+            inputs_moved: false,
+            evaluations: 0,
+            contacts: None,
+            contact_of: Vec::new(),
+            release_of: Vec::new(),
+            reopened: Vec::new(),
+        }
+    }
+
+    /// Adds the event `name`: the crossings of zero by `g(t, state, model)` in the direction
+    /// `crossing`. Its index is the number of events added before it.
+    pub fn on(
+        mut self,
+        name: impl Into<String>,
+        crossing: Crossing,
+        g: impl FnMut(f64, &State<M>, &M) -> f64 + 'e,
+    ) -> Self {
+        self.names.push(name.into());
+        self.crossings.push(crossing);
+        self.functions.push(Box::new(g));
+        self.contact_of.push(None);
+        self.release_of.push(None);
+        self
+    }
+
+    /// After a restart at an impact: the contacts `reopened` (their indices among the
+    /// unilateral constraints) moved away from zero, so their functions count as positive
+    /// from there, whatever their sign at the impact.
+    fn reopen(&mut self, reopened: &[usize]) {
+        for k in 0..self.functions.len() {
+            if self.contact_of[k].is_some_and(|j| reopened.contains(&j)) {
+                self.reopened[k] = true;
+                self.signs[k] = 1.0;
+                self.lo[k] = self.lo[k].max(0.0);
+            }
+        }
+    }
+
+    /// The index among the unilateral constraints of the contact called `name`.
+    fn contact_index(&self, name: &str) -> Option<usize> {
+        self.contacts.as_ref()?.names.iter().position(|n| n == name)
+    }
+
+    /// The events' names, in the order of their indices.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The name of `event`.
+    pub fn name(&self, event: &Event) -> &str {
+        &self.names[event.index]
+    }
+
+    /// The index of the event called `name`.
+    pub fn index(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
+    }
+
+    /// The number of evaluations of event functions since the last [`Events::begin`].
+    pub fn evaluations(&self) -> usize {
+        self.evaluations
+    }
+
+    /// The state at the last event [`Events::locate`] returned.
+    pub fn state(&self) -> &State<M> {
+        &self.at_event
+    }
+}
+
+/// What the model's [`Hybrid`] capability adds: its declared events and its contacts.
+impl<M: Hybrid> Events<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Adds the events the model declares (`#[dirac(event(name, direction) = g)]`, a function
+    /// of time, positions, velocities, multipliers and inputs), each with its name (dotted in
+    /// an interconnection: `arm.slack`) and direction.
+    pub fn declared(mut self) -> Self {
+        let declared = M::NAMES.event_declarations();
+        let k = declared.len();
+        for (j, (name, direction)) in declared.into_iter().enumerate() {
+            let crossing = match direction {
+                d if d < 0 => Crossing::Falling,
+                d if d > 0 => Crossing::Rising,
+                _ => Crossing::Either,
+            };
+            let mut values = vec![0.0; k];
+            self = self.on(name, crossing, move |t, s: &State<M>, m: &M| {
+                m.events(t, &s.q, &s.v, &s.lambda, &mut values);
+                values[j]
+            });
+        }
+        self
+    }
+
+    /// Adds the model's unilateral constraints (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`), each
+    /// an event of its own name when `φ` falls through zero. At such an event
+    /// [`SolveWithEvents::solve_with_events`] applies the impact law before the action: the
+    /// momentum jumps along the constraint's one-form, `p⁺ = p⁻ + Λ ∂φ/∂q`, so that the normal
+    /// velocity is reversed and scaled by the restitution `e`, `∂φ/∂q v⁺ = −e ∂φ/∂q v⁻`,
+    /// with the model's own constraints kept; contacts that close at once share one law. The
+    /// impulses are recorded ([`Solution::impacts_at`](crate::Solution::impacts_at)); the action sees the state after the
+    /// impact, and its impulse ([`EventContext::impulse`]).
+    ///
+    /// A contact that comes to rest (an impact leaves it closed or reopens it too slowly to
+    /// tell from rest, its impacts accumulate in a Zeno sequence, or it is pressed in without
+    /// an impact) closes in a companion made by the derive's `with_contacts()`, held by its
+    /// row `<name>_force`, and opens again where that row's multiplier, the contact force,
+    /// falls through zero (the event `<name> opens`, added here). In any other model, or one
+    /// the integrator does not hold exclusively, it ends the integration with
+    /// [`SimError::ContactCloses`]. An interconnection watches its subsystems' contacts, by
+    /// dotted name (`ball.floor`).
+    pub fn contacts(mut self, model: &M) -> Self {
+        let contacts = Contacts::new(model);
+        let k = contacts.names.len();
+        for (j, name) in contacts.names.iter().enumerate() {
+            let mut values = vec![0.0; k];
+            self.names.push(name.clone());
+            self.crossings.push(Crossing::Falling);
+            self.functions.push(Box::new(move |t, s: &State<M>, m: &M| {
+                // A closed contact (in a companion with contacts that can rest) is held, not watched.
+                if m.contact_closed(j) {
+                    return 1.0;
+                }
+                m.unilateral(t, &s.q, &mut values);
+                values[j]
+            }));
+            self.contact_of.push(Some(j));
+            self.release_of.push(None);
+        }
+        // In a companion whose contacts rest, a closed contact opens where its force, the
+        // multiplier of its row, falls through zero.
+        for (j, name) in contacts.names.iter().enumerate() {
+            if let Some(row) = model.contact_row(j) {
+                self = self.on(format!("{name} opens"), Crossing::Falling, move |_, s: &State<M>, m: &M| {
+                    if m.contact_closed(j) { s.lambda[row] } else { 1.0 }
+                });
+                *self.release_of.last_mut().expect("just added") = Some(j);
+            }
+        }
+        self.contacts = Some(contacts);
+        self
+    }
+
+    /// The impact at the contact of event `k` at `t`, together with every other contact that
+    /// is closed there too (`φ ≤ 0` at the event: its event pending at the same time, or
+    /// touching zero exactly): `state`'s velocities change by the impact law; the impulses
+    /// are returned.
+    fn impact(&mut self, model: &M, k: usize, t: f64, state: &mut State<M>) -> Result<Impacts, SimError> {
+        let contact = self.contact_of[k].expect("event k watches a contact");
+        let mut closing = vec![contact];
+        for j in 0..self.functions.len() {
+            if let (true, Some(other)) = (j != k && self.lo[j] <= 0.0, self.contact_of[j]) {
+                closing.push(other);
+                self.pending[j] = false;
+            }
+        }
+        let contacts = self.contacts.as_mut().expect("contact events come with their contacts");
+        contacts.impact(model, t, state, &closing)
+    }
+}
