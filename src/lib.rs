@@ -60,7 +60,7 @@ extern crate self as dirac;
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
     Algebra, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel, Derivation, Dimensions,
-    DiracStructure, EnergyBalance, Equations, ErrorNorm, Event, EventContext, Events, Explicit,
+    DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event, EventContext, Events, Explicit,
     ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input, InputsOutputs, Integrator,
     JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ, MatYY, Membership, Named,
     Names, OperationCounts, Output, Parameters, Radau, RadauOptions, RadauStats, ResidualBlocks, Sampling,
@@ -119,8 +119,8 @@ pub mod prelude {
     pub use crate::nalgebra::DefaultAllocator;
     pub use crate::{
         Algebra, Consistency, Constraint, Coordinate, Crossing, DenseModel, Derivation, Dimensions,
-        DiracStructure, EnergyBalance, Equations, ErrorNorm, Event, Events, Explicit, ExplicitOptions, Fixed,
-        Hybrid, Input, InputsOutputs, Integrator, Interconnection, JacobianBlocks, LagrangeDirac,
+        DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event, Events, Explicit, ExplicitOptions,
+        Fixed, Hybrid, Input, InputsOutputs, Integrator, Interconnection, JacobianBlocks, LagrangeDirac,
         Linearization, MatCQ, MatQQ, MatYY, Named, Output, Parameters, Radau, RadauOptions, ResidualBlocks,
         Sampling, Sensitivities, SimError, Sizes, Solution, SolveWithEvents, SparseJacobian, State, Storage,
         Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state, linearize,

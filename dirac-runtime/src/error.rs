@@ -200,4 +200,14 @@ pub enum SimError {
         /// Where it was going.
         t_end: f64,
     },
+    /// A capability asked of an integration method that it does not offer.
+    #[error("{method} does not offer {capability}: {instead}")]
+    Unsupported {
+        /// The method asked: `Radau`, `Explicit` or `Variational`.
+        method: &'static str,
+        /// What was asked, such as `forward sensitivities`.
+        capability: &'static str,
+        /// What offers it instead.
+        instead: &'static str,
+    },
 }

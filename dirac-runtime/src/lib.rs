@@ -53,7 +53,7 @@ pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, Vec
 pub use shape::layout::{Layout, Slot};
 pub use simulate::events::{EventContext, Events, SolveWithEvents};
 pub use simulate::held::Held;
-pub use simulate::integrator::Integrator;
+pub use simulate::integrator::{Drive, Integrator};
 pub use simulate::sensitivity::{Sensitivities, Wrt};
 pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
 

@@ -38,6 +38,7 @@ where
     }
 
     /// `x ← M⁻¹ x`.
+    #[inline]
     pub(crate) fn solve(&self, x: &mut VecQ<M>) {
         match self {
             Mass::Diagonal(inverse) => x.component_mul_assign(inverse),
@@ -46,6 +47,7 @@ where
     }
 
     /// `M⁻¹ Aᵀ` for constraint rows `a`.
+    #[inline]
     pub(crate) fn solve_transpose(&self, a: &Cq<M>) -> OMatrix<f64, M::Nq, M::Nc> {
         let mut b = a.transpose();
         for j in 0..b.ncols() {

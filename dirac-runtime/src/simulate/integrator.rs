@@ -9,9 +9,11 @@ use nalgebra::DefaultAllocator;
 use crate::error::SimError;
 use crate::model::keys::Input;
 use crate::model::state::State;
-use crate::model::{InputsOutputs, LagrangeDirac};
+use crate::model::{InputsOutputs, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
+use crate::shape::layout::Layout;
 use crate::simulate::recorder::Recorder;
+use crate::simulate::sensitivity::Sensitivities;
 use crate::simulate::solution::{Sampling, Solution};
 
 /// An integrator of a model `M`: [`Explicit`](crate::Explicit), [`Radau`](crate::Radau) or
@@ -25,6 +27,12 @@ where
 {
     /// The integrator's own counters of the work it did.
     type Stats: Copy + core::fmt::Debug;
+
+    /// The method's name, for messages: `Radau`, `Explicit` or `Variational`.
+    const NAME: &'static str;
+
+    /// Whether the method carries forward sensitivities ([`Integrator::carry_sensitivities`]).
+    const SENSITIVITIES: bool = false;
 
     /// The model integrated.
     fn model(&self) -> &M;
@@ -158,6 +166,63 @@ where
     /// The work done since the last [`Integrator::start`].
     fn stats(&self) -> Self::Stats;
 
+    /// Asks the integrator to carry the forward sensitivities of its solution with respect to
+    /// `wrt`'s parameters and initial values from its next start. [`Radau`](crate::Radau)
+    /// carries them (the staggered direct method); a method that does not refuses with
+    /// [`SimError::Unsupported`].
+    fn carry_sensitivities(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
+    where
+        M: Parameters,
+    {
+        let _ = wrt;
+        Err(no_sensitivities::<M, Self>())
+    }
+
+    /// The names of the sensitivities carried, in order: what they are taken with respect to
+    /// (none unless asked for).
+    fn sensitivity_names(&self) -> &[String] {
+        &[]
+    }
+
+    /// Writes sensitivity `j` at the time reached, `∂(q, v, p, λ)/∂θ_j`, into `out`; `false`
+    /// (leaving `out` alone) if there is no sensitivity `j`.
+    fn sensitivity(&self, j: usize, out: &mut State<M>) -> bool {
+        let _ = (j, out);
+        false
+    }
+
+    /// Writes sensitivity `j` at time `t` within the last step into `out`; `false` if there is
+    /// no sensitivity `j`.
+    fn interpolate_sensitivity(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
+        let _ = (j, t, out);
+        false
+    }
+
+    /// Completes sensitivity `j` at the start of the integration, in `out`, with what the first
+    /// step taught: the multipliers' sensitivities, which a method may not carry at the start
+    /// (Radau extrapolates them from its first step's stages). Does nothing by default.
+    fn complete_initial_sensitivity(&self, j: usize, out: &mut State<M>) {
+        let _ = (j, out);
+    }
+
+    /// Integrates from `state` at `t0` to `t_end` with the sensitivities asked for
+    /// ([`Integrator::carry_sensitivities`]), recording the state as [`Integrator::solve`] does
+    /// and every sensitivity at the same samples: read them from the solution by quantity and
+    /// name ([`Solution::sensitivity`]). A method that does not carry sensitivities refuses
+    /// with [`SimError::Unsupported`].
+    fn solve_with_sensitivities(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        sampling: &Sampling,
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+    {
+        record_with_sensitivities(self, t0, state, t_end, sampling)
+    }
+
     /// Integrates from `state` at `t0` to `t_end`, recording samples as `sampling` says.
     fn solve(
         &mut self,
@@ -271,4 +336,120 @@ pub(crate) fn check_step_options(
         return Err(SimError::InvalidOption { what: "initial_step", reason: format!("{h} is not positive") });
     }
     Ok(())
+}
+
+/// An integrator that sets the model's inputs from time and state before every evaluation of
+/// the model, within its steps: a source such as `u0 sin(ω t)`, a table read with linear
+/// interpolation, a continuous feedback. [`Radau`](crate::Radau) offers it
+/// ([`Radau::drive`](crate::Radau::drive), and with the feedback's Jacobian
+/// `Radau::drive_feedback`); a method that does not refuses with [`SimError::Unsupported`].
+/// Every method sets inputs between steps ([`Integrator::set_input`],
+/// [`Integrator::solve_sampled`]).
+pub trait Drive<'m, M: LagrangeDirac>: Integrator<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Sets the model's inputs with `drive(t, state, model)` before every evaluation of the
+    /// model from now on. Needs an integrator built on `&mut model`; set it before `start`.
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError>;
+}
+
+/// The refusal of a method that does not drive inputs within its steps.
+pub(crate) fn no_drive(method: &'static str) -> SimError {
+    SimError::Unsupported {
+        method,
+        capability: "inputs set within its steps (a drive)",
+        instead: "Radau drives them (`Radau::drive`); every method sets them between steps (`set_input`, \
+                  `solve_sampled`)",
+    }
+}
+
+/// The refusal of a method that does not carry sensitivities.
+fn no_sensitivities<M: LagrangeDirac, I: Integrator<M> + ?Sized>() -> SimError
+where
+    DefaultAllocator: Storage<M>,
+{
+    SimError::Unsupported {
+        method: I::NAME,
+        capability: "forward sensitivities",
+        instead: "Radau carries them (`Radau::with_sensitivities`)",
+    }
+}
+
+/// [`Integrator::solve_with_sensitivities`]: the samples of the state, and at each the
+/// sensitivities, recorded sample by sample (each sample's values side by side, contiguous
+/// writes) and turned into one column per value at the end.
+fn record_with_sensitivities<M: LagrangeDirac, I: Integrator<M>>(
+    integrator: &mut I,
+    t0: f64,
+    state: &State<M>,
+    t_end: f64,
+    sampling: &Sampling,
+) -> Result<Solution<M, I::Stats>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !I::SENSITIVITIES {
+        return Err(no_sensitivities::<M, I>());
+    }
+    let count = integrator.sensitivity_names().len();
+    if count == 0 {
+        return Err(SimError::InvalidOption {
+            what: "sensitivities",
+            reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
+        });
+    }
+    let sizes = integrator.model().sizes();
+    let len = Layout::new(sizes).len;
+    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
+    let series = count * len;
+    let mut rows = recorder.extra_series(series)?;
+    let mut buffer = State::<M>::with_sizes(sizes);
+    integrator.start(t0, state, t_end)?;
+    recorder.record_initial(integrator.model(), t0, integrator.state());
+    let push = |rows: &mut Vec<f64>, s: &State<M>| rows.extend(s.components());
+    if recorder.len() > 0 {
+        for j in 0..count {
+            integrator.sensitivity(j, &mut buffer);
+            push(&mut rows, &buffer);
+        }
+    }
+    let mut first = true;
+    while !integrator.finished() {
+        let before = recorder.len();
+        integrator.step()?;
+        recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
+            integrator.interpolate(t, out)
+        });
+        if first && before > 0 {
+            // The sample at t0, completed by what the first step taught.
+            for j in 0..count {
+                let row = &mut rows[j * len..(j + 1) * len];
+                for (x, &v) in buffer.components_mut().zip(row.iter()) {
+                    *x = v;
+                }
+                integrator.complete_initial_sensitivity(j, &mut buffer);
+                for (x, &v) in row.iter_mut().zip(buffer.components()) {
+                    *x = v;
+                }
+            }
+        }
+        first = false;
+        for k in before..recorder.len() {
+            let ts = recorder.time(k);
+            for j in 0..count {
+                if ts >= integrator.t() {
+                    integrator.sensitivity(j, &mut buffer);
+                } else {
+                    integrator.interpolate_sensitivity(j, ts, &mut buffer);
+                }
+                push(&mut rows, &buffer);
+            }
+        }
+    }
+    let samples = recorder.len();
+    let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
+    let names = integrator.sensitivity_names().to_vec();
+    let solution = recorder.finish(integrator.stats())?;
+    Ok(solution.with_sensitivities(names, columns))
 }

@@ -9,13 +9,15 @@ use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, configuration};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
+use crate::simulate::integrator::{Drive, Integrator, no_drive};
 
 impl<M: LagrangeDirac> Integrator<M> for Explicit<'_, M>
 where
     DefaultAllocator: Storage<M>,
 {
     type Stats = ExplicitStats;
+
+    const NAME: &'static str = "Explicit";
 
     fn model(&self) -> &M {
         self.model.get()
@@ -174,5 +176,15 @@ where
 
     fn stats(&self) -> ExplicitStats {
         self.stats
+    }
+}
+
+impl<'m, M: LagrangeDirac> Drive<'m, M> for Explicit<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
+        let _ = drive;
+        Err(no_drive(Self::NAME))
     }
 }

@@ -6,7 +6,7 @@
 use nalgebra::DefaultAllocator;
 
 use super::Radau;
-use super::residual::{Drive, Residual};
+use super::residual::{DriveFn, Residual};
 use crate::algebra::Algebra;
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
@@ -16,6 +16,7 @@ use crate::model::{InputsOutputs, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage, VecC, VecQ, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::held::Held;
+use crate::simulate::integrator::Drive;
 
 /// The feedback's `∂u/∂(q, v)`, written by the user as `n_u × 2n` values, column-major (the
 /// columns of `q`, then those of `v`).
@@ -199,7 +200,7 @@ where
     /// for finite differences, `Some(Some(..))` for the user's `∂u/∂(q, v)`.
     fn set_drive(
         &mut self,
-        drive: Drive<'m, M>,
+        drive: DriveFn<'m, M>,
         feedback: Option<Option<ExactParts<'m, M>>>,
     ) -> Result<(), SimError> {
         if self.model.get_mut().is_none() {
@@ -210,5 +211,14 @@ where
         self.feedback = feedback.map(|exact| Box::new(Feedback::new(sizes, exact)));
         self.need_jac = true;
         Ok(())
+    }
+}
+
+impl<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Drive<'m, M> for Radau<'m, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
+        Radau::drive(self, drive)
     }
 }

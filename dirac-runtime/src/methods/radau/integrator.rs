@@ -6,16 +6,44 @@ use nalgebra::DefaultAllocator;
 use super::{Radau, RadauStats};
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::state::State;
+use crate::model::{LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::simulate::integrator::Integrator;
+use crate::simulate::sensitivity::Sensitivities;
 
 impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Integrator<M> for Radau<'_, M, S>
 where
     DefaultAllocator: Storage<M>,
 {
     type Stats = RadauStats;
+
+    const NAME: &'static str = "Radau";
+
+    const SENSITIVITIES: bool = true;
+
+    fn carry_sensitivities(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
+    where
+        M: Parameters,
+    {
+        self.carry(wrt)
+    }
+
+    fn sensitivity_names(&self) -> &[String] {
+        &self.sensitivity_names
+    }
+
+    fn sensitivity(&self, j: usize, out: &mut State<M>) -> bool {
+        self.sensitivity_now(j, out)
+    }
+
+    fn interpolate_sensitivity(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
+        self.sensitivity_within(j, t, out)
+    }
+
+    fn complete_initial_sensitivity(&self, j: usize, out: &mut State<M>) {
+        self.initial_multipliers(j, out);
+    }
 
     fn model(&self) -> &M {
         self.model.get()

@@ -12,7 +12,7 @@ use crate::simulate::held::Held;
 
 /// Sets a model's inputs from time and state before each evaluation. Borrowed, not boxed: an
 /// integrator holds nothing that needs dropping at the end of its borrows.
-pub(crate) type Drive<'m, M> = &'m mut dyn FnMut(f64, &State<M>, &mut M);
+pub(crate) type DriveFn<'m, M> = &'m mut dyn FnMut(f64, &State<M>, &mut M);
 
 /// Evaluates a model's flat residual `f(t, y)` without allocating: through the model's own
 /// [`LagrangeDirac::residual`](crate::model::LagrangeDirac::residual) when its sizes are fixed (its
@@ -24,7 +24,7 @@ where
     /// `None` for a model of fixed size.
     scratch: Option<(State<M>, ResidualBlocks<M>)>,
     /// The drive of the inputs and the state it reads, when there is one.
-    drive: Option<(Drive<'m, M>, State<M>)>,
+    drive: Option<(DriveFn<'m, M>, State<M>)>,
 }
 
 impl<'m, M: LagrangeDirac> Residual<'m, M>
@@ -40,7 +40,7 @@ where
     }
 
     /// Sets the inputs before every evaluation from now on.
-    pub fn set_drive(&mut self, drive: Drive<'m, M>, sizes: Sizes) {
+    pub fn set_drive(&mut self, drive: DriveFn<'m, M>, sizes: Sizes) {
         self.drive = Some((drive, State::with_sizes(sizes)));
     }
 

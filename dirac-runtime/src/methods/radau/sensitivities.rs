@@ -1,11 +1,10 @@
 //! The forward sensitivities of a Radau integration, as its users see them: asked for with
-//! [`Radau::with_sensitivities`], read step by step, or recorded in a [`Solution`] by
-//! [`Radau::solve_with_sensitivities`].
+//! [`Radau::with_sensitivities`] (or [`Integrator::carry_sensitivities`]), read step by step,
+//! or recorded in a [`Solution`](crate::Solution) by [`Integrator::solve_with_sensitivities`].
 
 use nalgebra::DefaultAllocator;
 
 use super::Radau;
-use super::RadauStats;
 use super::forward::{At, Failure, Forward, Iteration};
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
@@ -13,9 +12,7 @@ use crate::model::state::State;
 use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Storage, VecY};
 use crate::simulate::integrator::Integrator;
-use crate::simulate::recorder::Recorder;
 use crate::simulate::sensitivity::{Initial, Sensitivities};
-use crate::simulate::solution::{Sampling, Solution};
 
 impl<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'m, M, S>
 where
@@ -25,11 +22,22 @@ where
     /// `wrt`'s parameters and initial values alongside it (the staggered direct method: each
     /// step's sensitivities are solved with the step's factored iteration matrix, once its
     /// state has converged). Their initial values are made consistent at the start; read them
-    /// with [`Radau::sensitivity`], or record them with [`Radau::solve_with_sensitivities`].
+    /// with [`Integrator::sensitivity`], or record them with
+    /// [`Integrator::solve_with_sensitivities`]. The same as
+    /// [`Integrator::carry_sensitivities`], as a builder.
     ///
     /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
     /// projection's derivative is not carried) or with no sensitivity asked for.
     pub fn with_sensitivities(mut self, wrt: &Sensitivities<M>) -> Result<Self, SimError>
+    where
+        M: Parameters,
+    {
+        self.carry_sensitivities(wrt)?;
+        Ok(self)
+    }
+
+    /// [`Integrator::carry_sensitivities`].
+    pub(super) fn carry(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
     where
         M: Parameters,
     {
@@ -45,17 +53,11 @@ where
         self.forward =
             Some(Box::new(Forward::new(self.model.get(), derivatives, wrt.wrt(), wrt.error_control)));
         self.sensitivity_names = wrt.names().to_vec();
-        Ok(self)
+        Ok(())
     }
 
-    /// The names of the sensitivities, in order: what they are taken with respect to.
-    pub fn sensitivity_names(&self) -> &[String] {
-        &self.sensitivity_names
-    }
-
-    /// Writes sensitivity `j` at the time reached, `∂(q, v, p, λ)/∂θ_j`, into `out`; `false`
-    /// (leaving `out` alone) if there is no sensitivity `j`.
-    pub fn sensitivity(&self, j: usize, out: &mut State<M>) -> bool {
+    /// [`Integrator::sensitivity`].
+    pub(super) fn sensitivity_now(&self, j: usize, out: &mut State<M>) -> bool {
         match &self.forward {
             Some(forward) if j < forward.len() => {
                 out.read_y(forward.value(j));
@@ -65,9 +67,8 @@ where
         }
     }
 
-    /// Writes sensitivity `j` at time `t` within the last step into `out` (the collocation
-    /// polynomial of its stages); `false` if there is no sensitivity `j`.
-    pub fn interpolate_sensitivity(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
+    /// [`Integrator::interpolate_sensitivity`]: the collocation polynomial of the stages.
+    pub(super) fn sensitivity_within(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
         match &self.forward {
             Some(forward) if j < forward.len() => {
                 if self.dense.h > 0.0 {
@@ -78,6 +79,16 @@ where
                 true
             }
             _ => false,
+        }
+    }
+
+    /// [`Integrator::complete_initial_sensitivity`]: the multipliers' sensitivities at the
+    /// start, extrapolated from the first step's stages.
+    pub(super) fn initial_multipliers(&self, j: usize, out: &mut State<M>) {
+        if let Some(forward) = self.forward.as_deref()
+            && j < forward.len()
+        {
+            forward.multipliers_at_start(j, out);
         }
     }
 
@@ -110,75 +121,6 @@ where
             forward.set_value(j, &s);
         }
         Ok(())
-    }
-
-    /// Integrates from `state` at `t0` to `t_end` with the sensitivities asked for
-    /// ([`Radau::with_sensitivities`]), recording the state as [`Integrator::solve`] does and
-    /// every sensitivity at the same samples: read them from the solution by quantity and name
-    /// ([`Solution::sensitivity`]). The multipliers' sensitivities at `t0`, which the method
-    /// does not carry, are extrapolated from the first step's stages.
-    pub fn solve_with_sensitivities(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        sampling: &Sampling,
-    ) -> Result<Solution<M, RadauStats>, SimError> {
-        if self.forward.is_none() {
-            return Err(SimError::InvalidOption {
-                what: "sensitivities",
-                reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
-            });
-        }
-        let count = self.sensitivity_names.len();
-        let layout = crate::shape::layout::Layout::new(self.model.sizes());
-        let len = layout.len;
-        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
-        // Recorded sample by sample, each sample's values side by side (contiguous writes), and
-        // turned into one column per value at the end.
-        let series = count * len;
-        let mut rows = recorder.extra_series(series)?;
-        let mut buffer = State::<M>::with_sizes(self.model.sizes());
-        self.start(t0, state, t_end)?;
-        recorder.record_initial(self.model(), t0, self.state());
-        let push = |rows: &mut Vec<f64>, s: &State<M>| rows.extend(s.components());
-        if recorder.len() > 0 {
-            for j in 0..count {
-                self.sensitivity(j, &mut buffer);
-                push(&mut rows, &buffer);
-            }
-        }
-        let mut first = true;
-        while !self.finished() {
-            let before = recorder.len();
-            self.step()?;
-            recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
-            let forward = self.forward.as_deref().expect("sensitivities asked for");
-            if first && before > 0 {
-                // The sample at t0: its multipliers' sensitivities from the first step.
-                for j in 0..count {
-                    buffer.read_y(forward.value(j));
-                    forward.multipliers_at_start(j, &mut buffer);
-                    rows[j * len + layout.lambda..(j + 1) * len].copy_from_slice(buffer.lambda.as_slice());
-                }
-            }
-            first = false;
-            for k in before..recorder.len() {
-                let ts = recorder.time(k);
-                for j in 0..count {
-                    if ts >= self.t() {
-                        self.sensitivity(j, &mut buffer);
-                    } else {
-                        self.interpolate_sensitivity(j, ts, &mut buffer);
-                    }
-                    push(&mut rows, &buffer);
-                }
-            }
-        }
-        let samples = recorder.len();
-        let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
-        let solution = recorder.finish(self.stats())?;
-        Ok(solution.with_sensitivities(self.sensitivity_names.clone(), columns))
     }
 }
 

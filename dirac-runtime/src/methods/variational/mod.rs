@@ -57,7 +57,7 @@ use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
 use crate::simulate::held::Held;
-use crate::simulate::integrator::Integrator;
+use crate::simulate::integrator::{Drive, Integrator, no_drive};
 use crate::simulate::restart::Restarts;
 
 /// The variational integrator for a model `M`, with fixed step `h`.
@@ -292,6 +292,8 @@ where
 {
     type Stats = VariationalStats;
 
+    const NAME: &'static str = "Variational";
+
     fn model(&self) -> &M {
         self.model.get()
     }
@@ -464,5 +466,15 @@ where
 
     fn stats(&self) -> VariationalStats {
         self.stats
+    }
+}
+
+impl<'m, M: LagrangeDirac> Drive<'m, M> for Variational<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
+        let _ = drive;
+        Err(no_drive(Self::NAME))
     }
 }
