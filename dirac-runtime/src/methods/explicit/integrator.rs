@@ -72,6 +72,14 @@ where
         )?;
         self.state.clone_from(state);
         self.previous.clone_from(state);
+        // The state may have jumped (an impact): start again with a short step, which grows by
+        // up to ten times a step, so that the steps after the event see an event function
+        // leave zero (a ball leaving the floor) before one of them could span its return, as
+        // Radau does. A step that spanned the ball's whole flight saw its height negative at
+        // both ends and let it fall through the floor.
+        if self.h_last > 0.0 && self.options.fixed_step.is_none() {
+            self.h = 1e-3 * self.h_last;
+        }
         (self.t, self.t_previous, self.h_last) = (t, t, 0.0);
         self.forget();
         self.evaluate_start()?;

@@ -74,6 +74,8 @@ const ERROR_OLD_START: f64 = 0.691_830_970_918_936_5;
 /// Why the last attempt was rejected, for the error when steps become too small.
 #[derive(Clone, Copy)]
 enum Rejection {
+    /// None yet: the first attempt's step was already too small for `t` to move.
+    Resolution,
     Error,
     NonFinite,
     Singular,
@@ -82,6 +84,7 @@ enum Rejection {
 impl Rejection {
     fn reason(self) -> &'static str {
         match self {
+            Rejection::Resolution => "it would not advance t: steps this small are below the resolution of t",
             Rejection::Error => "the local error stayed above the tolerance",
             Rejection::NonFinite => "the stages held values that are not finite",
             Rejection::Singular => "the accelerations were not determined at a stage",
@@ -354,7 +357,7 @@ where
 
     /// Attempts until a step is accepted; returns its size.
     fn attempt(&mut self) -> Result<f64, SimError> {
-        let mut reason = Rejection::Error;
+        let mut reason = Rejection::Resolution;
         loop {
             if self.stats.steps + self.stats.rejected >= self.options.max_steps {
                 return Err(SimError::TooManySteps {
