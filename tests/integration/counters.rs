@@ -12,66 +12,55 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use dirac::Storage;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
+use dirac::{ExplicitStats, RadauStats, Storage, VariationalStats};
 
 use crate::zoo::*;
 
-/// How one run ended: the counters and the final state, or the error.
-fn radau_record<M: DenseModel>(model: &M, start: &State<M>) -> String
-where
-    DefaultAllocator: Storage<M>,
-{
-    let mut radau = Radau::new(model, RadauOptions::tolerances(1e-8, 1e-10)).expect("valid options");
-    match radau.solve(0.0, start, 2.0, &Sampling::Times(vec![2.0])) {
-        Ok(sol) => {
-            let s = &sol.stats;
-            let counters = format!(
-                "steps={} rejected={} newton={} lu={} jacobians={} residuals={}",
-                s.steps,
-                s.rejected,
-                s.newton_iterations,
-                s.factorizations,
-                s.jacobian_evaluations,
-                s.residual_evaluations
-            );
-            with_state(counters, &sol.state(0).expect("a sample at the end"))
-        }
-        Err(e) => format!("error={e}"),
+/// An integrator's counters as the snapshot writes them.
+trait Counted {
+    fn counters(&self) -> String;
+}
+
+impl Counted for RadauStats {
+    fn counters(&self) -> String {
+        format!(
+            "steps={} rejected={} newton={} lu={} jacobians={} residuals={}",
+            self.steps,
+            self.rejected,
+            self.newton_iterations,
+            self.factorizations,
+            self.jacobian_evaluations,
+            self.residual_evaluations
+        )
     }
 }
 
-fn variational_record<M: DenseModel>(model: &M, start: &State<M>, use_structure: bool) -> String
-where
-    DefaultAllocator: Storage<M>,
-{
-    let options = VariationalOptions { use_structure, ..VariationalOptions::default() };
-    let mut vi = Variational::new(model, 0.01, options).expect("valid options");
-    match vi.solve(0.0, start, 1.0, &Sampling::Times(vec![1.0])) {
-        Ok(sol) => {
-            let s = &sol.stats;
-            let counters = format!("steps={} newton={}", s.steps, s.newton_iterations);
-            with_state(counters, &sol.state(0).expect("a sample at the end"))
-        }
-        Err(e) => format!("error={e}"),
+impl Counted for VariationalStats {
+    fn counters(&self) -> String {
+        format!("steps={} newton={}", self.steps, self.newton_iterations)
     }
 }
 
-fn explicit_record<M: DenseModel>(model: &M, start: &State<M>) -> String
+impl Counted for ExplicitStats {
+    fn counters(&self) -> String {
+        format!(
+            "steps={} rejected={} evaluations={} lu={}",
+            self.steps, self.rejected, self.evaluations, self.factorizations
+        )
+    }
+}
+
+/// How one run of any integrator from `start` to `t_end` ended: its counters and the final
+/// state, or the error.
+fn record<M: DenseModel, I: Integrator<M>>(mut integrator: I, start: &State<M>, t_end: f64) -> String
 where
     DefaultAllocator: Storage<M>,
+    I::Stats: Counted,
 {
-    let mut explicit = Explicit::new(model, ExplicitOptions::tolerances(1e-8, 1e-10)).expect("valid options");
-    match explicit.solve(0.0, start, 2.0, &Sampling::Times(vec![2.0])) {
-        Ok(sol) => {
-            let s = &sol.stats;
-            let counters = format!(
-                "steps={} rejected={} evaluations={} lu={}",
-                s.steps, s.rejected, s.evaluations, s.factorizations
-            );
-            with_state(counters, &sol.state(0).expect("a sample at the end"))
-        }
+    match integrator.solve(0.0, start, t_end, &Sampling::Times(vec![t_end])) {
+        Ok(sol) => with_state(sol.stats.counters(), &sol.state(0).expect("a sample at the end")),
         Err(e) => format!("error={e}"),
     }
 }
@@ -93,7 +82,7 @@ where
     line
 }
 
-/// The three records of a model started from positions `q` and velocities `v`.
+/// The records of a model started from positions `q` and velocities `v`.
 fn records<M: DenseModel>(out: &mut String, name: &str, model: &M, q: &[f64], v: &[f64])
 where
     DefaultAllocator: Storage<M>,
@@ -110,10 +99,22 @@ where
             s
         }
     };
-    writeln!(out, "{name} radau {}", radau_record(model, &start)).expect("write to a string");
-    writeln!(out, "{name} variational {}", variational_record(model, &start, true)).expect("write");
-    writeln!(out, "{name} variational_general {}", variational_record(model, &start, false)).expect("write");
-    writeln!(out, "{name} explicit {}", explicit_record(model, &start)).expect("write to a string");
+    let (tight, step) = ((1e-8, 1e-10), 0.01);
+    let radau = Radau::new(model, RadauOptions::tolerances(tight.0, tight.1)).expect("valid options");
+    let structured = VariationalOptions { use_structure: true, ..VariationalOptions::default() };
+    let variational = Variational::new(model, step, structured).expect("valid options");
+    let general = VariationalOptions { use_structure: false, ..VariationalOptions::default() };
+    let variational_general = Variational::new(model, step, general).expect("valid options");
+    let explicit =
+        Explicit::new(model, ExplicitOptions::tolerances(tight.0, tight.1)).expect("valid options");
+    for (method, line) in [
+        ("radau", record(radau, &start, 2.0)),
+        ("variational", record(variational, &start, 1.0)),
+        ("variational_general", record(variational_general, &start, 1.0)),
+        ("explicit", record(explicit, &start, 2.0)),
+    ] {
+        writeln!(out, "{name} {method} {line}").expect("write to a string");
+    }
 }
 
 fn all_records() -> String {

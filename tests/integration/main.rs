@@ -3,6 +3,9 @@
 #[path = "../zoo/mod.rs"]
 mod zoo;
 
+#[macro_use]
+mod every_method;
+
 mod authoring;
 mod blocks;
 mod contacts;

@@ -8,6 +8,7 @@ use std::time::Duration;
 
 use dirac::prelude::*;
 
+use crate::every_method::{Fineness, Method};
 use crate::zoo::*;
 
 /// Runs `f` on its own thread and fails the test if it panics or takes longer than `seconds`.
@@ -39,7 +40,7 @@ fn expect_parameter<T: std::fmt::Debug>(result: Result<T, SimError>, name: &str)
 }
 
 /// A NaN or infinite parameter is named, wherever it is first met: in consistent_state (which
-/// used to hang in its SVD on m = NaN) and in both integrators, for a primitive model and for
+/// used to hang in its SVD on m = NaN) and in every integrator, for a primitive model and for
 /// a composite (dotted name).
 #[test]
 fn non_finite_parameters_are_named() {
@@ -53,10 +54,9 @@ fn non_finite_parameters_are_named() {
         ] {
             expect_parameter(start_of(&p, 1.0, 0.0), name);
             let good = horizontal_start(&unit_pendulum());
-            let radau = Radau::new(&p, RadauOptions::default()).expect("valid options");
-            expect_parameter(radau.into_solution(&good), name);
-            let vi = Variational::new(&p, 0.01, VariationalOptions::default()).expect("valid options");
-            expect_parameter(vi.into_solution(&good), name);
+            each_integrator!(&p, Fineness::new(1e-6, 1e-8, 0.01), |_method, integrator| {
+                expect_parameter(integrator.into_solution(&good), name)
+            });
         }
         let mut chain = paper_chain();
         chain.left.m1 = f64::NAN;
@@ -123,56 +123,55 @@ fn non_finite_starts_and_times_are_errors() {
         // t = inf in a start given straight to an integrator.
         let osc = DrivenOscillator { m: 1.0, k: 1.0, c: 0.0, a: 1.0, w: 1.0 };
         let start = State::<DrivenOscillator>::zeros();
-        let err = Radau::new(&osc, RadauOptions::default()).expect("valid").solve(
-            f64::INFINITY,
-            &start,
-            1.0,
-            &Sampling::Steps,
-        );
-        assert!(matches!(err, Err(SimError::InvalidTimeSpan { .. })), "{err:?}");
+        each_integrator!(&osc, Fineness::new(1e-6, 1e-8, 0.01), |method, integrator| {
+            for (t0, t_end) in [(f64::INFINITY, 1.0), (0.0, f64::NAN), (1.0, 0.0), (0.0, f64::INFINITY)] {
+                let err = integrator.solve(t0, &start, t_end, &Sampling::Steps);
+                assert!(
+                    matches!(err, Err(SimError::InvalidTimeSpan { .. })),
+                    "{method:?} {t0} {t_end}: {err:?}"
+                );
+            }
+        });
     });
 }
 
 /// A state off the constraint given straight to an integrator is refused and the equation
-/// named, instead of integrated (Radau) or silently snapped (variational).
+/// named, by every integrator, instead of integrated or silently snapped.
 #[test]
 fn inconsistent_starts_are_refused() {
     within(20, || {
+        let fine = Fineness::new(1e-6, 1e-8, 0.01);
         let p = unit_pendulum();
         let mut off = State::<Pendulum>::zeros();
         off.set_q(Pendulum::X, 5.0);
-        for err in [
-            Radau::new(&p, RadauOptions::default()).expect("valid").into_solution(&off).err(),
-            Variational::new(&p, 0.01, VariationalOptions::default())
-                .expect("valid")
-                .into_solution(&off)
-                .err(),
-        ] {
-            match err {
-                Some(SimError::StateNotConsistent { equation, residual, t }) => {
-                    assert_eq!(equation, "holonomic constraint `rod`");
-                    assert_eq!(residual, 24.0, "x² + y² − l² at x = 5");
-                    assert_eq!(t, 0.0);
-                }
-                other => panic!("expected the rod to be named, got {other:?}"),
+        each_integrator!(&p, fine, |method, integrator| match integrator.into_solution(&off).err() {
+            Some(SimError::StateNotConsistent { equation, residual, t }) => {
+                assert_eq!(equation, "holonomic constraint `rod`");
+                assert_eq!(residual, 24.0, "x² + y² − l² at x = 5");
+                assert_eq!(t, 0.0);
             }
-        }
+            other => panic!("{method:?}: expected the rod to be named, got {other:?}"),
+        });
         // Moving across a rolling disk's no-slip constraint, and a momentum that is not m v.
         let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
         let mut slipping = State::<RollingDisk>::zeros();
         slipping.set_v(RollingDisk::Y, 1.0).set_p(RollingDisk::Y, 2.0);
-        let err = Radau::new(&disk, RadauOptions::default()).expect("valid").into_solution(&slipping).err();
-        assert!(
-            matches!(&err, Some(SimError::StateNotConsistent { equation, .. }) if equation == "velocity constraint `roll_y`"),
-            "{err:?}"
-        );
+        each_integrator!(&disk, fine, |method, integrator| {
+            let err = integrator.into_solution(&slipping).err();
+            assert!(
+                matches!(&err, Some(SimError::StateNotConsistent { equation, .. }) if equation == "velocity constraint `roll_y`"),
+                "{method:?}: {err:?}"
+            );
+        });
         let mut heavy = State::<Pendulum>::zeros();
         heavy.set_q(Pendulum::X, 1.0).set_v(Pendulum::Y, 1.0).set_p(Pendulum::Y, 3.0);
-        let err = Radau::new(&p, RadauOptions::default()).expect("valid").into_solution(&heavy).err();
-        assert!(
-            matches!(&err, Some(SimError::StateNotConsistent { equation, .. }) if equation.contains("Legendre map")),
-            "{err:?}"
-        );
+        each_integrator!(&p, fine, |method, integrator| {
+            let err = integrator.into_solution(&heavy).err();
+            assert!(
+                matches!(&err, Some(SimError::StateNotConsistent { equation, .. }) if equation.contains("Legendre map")),
+                "{method:?}: {err:?}"
+            );
+        });
     });
 }
 
@@ -315,6 +314,28 @@ fn end_times_are_kept() {
             .expect("integrates");
         assert_eq!(sol.t().len(), 12, "t = 0, 0.1, …, 1.0 and the end time 1.05");
         assert_eq!(*sol.t().last().expect("samples"), 1.05);
+        // Every integrator ends exactly there, far from t = 0 too.
+        let start = horizontal_start(&p);
+        each_integrator!(&p, Fineness::new(1e-6, 1e-8, 0.01), |method, integrator| {
+            let sol = integrator.solve(0.0, &start, 1.05, &Sampling::Every(0.1)).expect("integrates");
+            assert_eq!(sol.t().len(), 12, "{method:?}: t = 0, 0.1, …, 1.0 and the end time 1.05");
+            assert_eq!(*sol.t().last().expect("samples"), 1.05, "{method:?}");
+            assert_eq!(integrator.t(), 1.05, "{method:?}");
+        });
+        // At t = 1e15, where t moves in steps of 0.125: the variational step of 0.25 ends there
+        // exactly; an adaptive method whose steps fall below that says so.
+        let start =
+            consistent_state(&chain, 1e15, &q, &VecQ::<MassSpringChain>::zeros(), Consistency::default())
+                .expect("consistent");
+        each_integrator!(&chain, Fineness::new(1e-6, 1e-8, 0.25), |method, integrator| {
+            match integrator.solve(1e15, &start, 1e15 + 25.0, &Sampling::Steps) {
+                Ok(_) => assert_eq!(integrator.t(), 1e15 + 25.0, "{method:?}"),
+                Err(SimError::StepSizeTooSmall { reason, .. }) if method != Method::Variational => {
+                    assert!(reason.contains("resolution of t"), "{method:?}: {reason}")
+                }
+                Err(e) => panic!("{method:?}: {e}"),
+            }
+        });
     });
 }
 
@@ -383,6 +404,21 @@ fn singular_systems_name_their_cause() {
             }
             other => panic!("expected dependent constraints, got {other:?}"),
         }
+        // A massless coordinate that nothing holds, given straight to each integrator: the
+        // error names its velocity, at the start.
+        // (From x3 = 0.1, where the spring pulls on x̄2 and nothing answers.)
+        let mut pulled = State::<Primitive2>::zeros();
+        pulled.set_q(Primitive2::X3, 0.1);
+        each_integrator!(
+            &Primitive2 { m3: 3.0, k3: 6.0 },
+            Fineness::new(1e-6, 1e-8, 0.01),
+            |method, integrator| {
+                let err = integrator.into_solution(&pulled).err();
+                let message = err.as_ref().map(ToString::to_string).unwrap_or_default();
+                assert!(message.contains("v2bar") || message.contains("x2bar"), "{method:?}: {err:?}");
+                assert!(message.contains("t = 0"), "{method:?}: {message}");
+            }
+        );
         // m = 0: nothing has inertia; the rod fixes one velocity, the other is free.
         let err = start_of(&pendulum(0.0, 9.81, 1.0), 1.0, 0.0).err();
         match err {
@@ -403,10 +439,11 @@ fn unusual_but_well_posed_models_run() {
             right: Primitive2 { m3: 3.0, k3: 6.0 },
         };
         let start = paper_chain_start(&chain);
-        let sol = Radau::new(&chain, RadauOptions::default())
-            .expect("valid")
-            .solve(0.0, &start, 1.0, &Sampling::Steps)
-            .expect("a negative spring is unstable but integrable");
-        assert!(sol.q(Chain::left(Primitive1::X1)).iter().all(|x| x.is_finite()));
+        each_integrator!(&chain, Fineness::new(1e-6, 1e-8, 0.01), |method, integrator| {
+            let sol = integrator
+                .solve(0.0, &start, 1.0, &Sampling::Steps)
+                .unwrap_or_else(|e| panic!("{method:?}: a negative spring is unstable but integrable: {e}"));
+            assert!(sol.q(Chain::left(Primitive1::X1)).iter().all(|x| x.is_finite()), "{method:?}");
+        });
     });
 }

@@ -1,0 +1,51 @@
+//! Contacts declared on the model (`unilateral(floor, restitution = e) = y`) through every
+//! integrator: the impact law applied at each touchdown, the touchdowns on the geometric
+//! series of free fall, and each impulse the momentum the law reverses, `m (1 + e) |v⁻|`.
+
+use std::ops::ControlFlow;
+
+use dirac::prelude::*;
+use dirac::{Events, Impact};
+
+use super::Fineness;
+use crate::zoo::BouncingBall;
+
+const G: f64 = 9.81;
+
+fn relative(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// Touchdown `n` at `T_n = t1 (1 + 2 (e + … + eⁿ))`, `t1 = √(2 h0 / g)`, with the impulse
+/// `m (1 + e) eⁿ √(2 g h0)`; each method integrates the parabolas between them exactly.
+#[test]
+fn a_ball_bounces_on_its_declared_floor_under_every_method() {
+    let (h0, e, m) = (1.0, 0.8, 0.3);
+    let ball = BouncingBall { m, g: G, e };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, h0);
+    let t1 = (2.0 * h0 / G).sqrt();
+    let zeno = t1 * (1.0 + 2.0 * e / (1.0 - e));
+    each_integrator!(&ball, Fineness::new(1e-12, 1e-12, 0.01), |method, integrator| {
+        let mut events = Events::new().contacts(&ball);
+        let solution = integrator
+            .solve_with_events(0.0, &start, 0.95 * zeno, &Sampling::Every(0.01), &mut events, |_, _| {
+                ControlFlow::Continue(())
+            })
+            .unwrap_or_else(|error| panic!("{method:?}: {error}"));
+        let impacts = solution.impacts_at("floor").expect("a contact of that name");
+        assert!(impacts.len() >= 10, "{method:?}: {} impacts", impacts.len());
+        for (n, &Impact { t, impulse, .. }) in impacts.iter().enumerate() {
+            let exact_t = t1 * (1.0 + 2.0 * (1..=n as i32).map(|k| e.powi(k)).sum::<f64>());
+            let exact_impulse = m * (1.0 + e) * e.powi(n as i32) * (2.0 * G * h0).sqrt();
+            assert!(relative(t, exact_t) < 1e-8, "{method:?}: impact {n} at {t}, not {exact_t}");
+            assert!(
+                relative(impulse, exact_impulse) < 1e-7,
+                "{method:?}: impulse {n} {impulse}, not {exact_impulse}"
+            );
+        }
+        // Between impacts the ball stays above its floor, at every sample.
+        let lowest = solution.q(BouncingBall::Y).iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(lowest > -1e-9, "{method:?}: the ball went {lowest} below the floor");
+    });
+}

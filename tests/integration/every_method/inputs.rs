@@ -1,0 +1,133 @@
+//! Inputs through every integrator: set between steps (by hand, by `solve_sampled`), refused
+//! on a model held shared, and set within the steps by a drive where the method offers one
+//! (Radau; the others refuse by name). References: the forced spring `m ẍ = −k x + u` solved
+//! piecewise in closed form for an input held constant over each interval.
+
+use dirac::prelude::*;
+
+use super::{Fineness, Method};
+use crate::zoo::ForcedSpring;
+
+const M: f64 = 1.0;
+const K: f64 = 4.0;
+
+/// The spring's position and velocity after `s` from `(x, v)` under the constant force `u`.
+fn held(x: f64, v: f64, u: f64, s: f64) -> (f64, f64) {
+    let w = (K / M).sqrt();
+    let rest = u / K;
+    let (c, sn) = ((w * s).cos(), (w * s).sin());
+    (rest + (x - rest) * c + v / w * sn, -(x - rest) * w * sn + v * c)
+}
+
+fn released(x0: f64) -> State<ForcedSpring> {
+    let mut start = State::<ForcedSpring>::zeros();
+    start.set_q(ForcedSpring::X, x0);
+    start
+}
+
+/// Accuracy of each method at the suites' settings: the adaptive methods hold their
+/// tolerance; the variational integrator is second order in its step.
+fn tolerance(method: Method) -> f64 {
+    if method == Method::Variational { 1e-4 } else { 1e-7 }
+}
+
+/// A sampled controller `u_k = −g x(t_k)`, held for a period: the solution against the
+/// closed form chained over the periods.
+#[test]
+fn a_sampled_controller_is_held_between_samples() {
+    let (x0, gain, period, t_end) = (0.5, 3.0, 0.25, 5.0);
+    let (mut x, mut v) = (x0, 0.0);
+    let mut t = 0.0;
+    while t < t_end - 1e-12 {
+        (x, v) = held(x, v, -gain * x, period);
+        t += period;
+    }
+    let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
+        let solution = integrator
+            .solve_sampled(0.0, &released(x0), t_end, period, &Sampling::Times(vec![t_end]), |_, s, model| {
+                model.f = -gain * s.q(ForcedSpring::X);
+            })
+            .unwrap_or_else(|error| panic!("{method:?}: {error}"));
+        let end = solution.last().expect("a sample at the end");
+        assert!(
+            (end.q(ForcedSpring::X) - x).abs() < tolerance(method),
+            "{method:?}: x = {}, not {x}",
+            end.q(ForcedSpring::X)
+        );
+        assert!(
+            (end.v(ForcedSpring::X) - v).abs() < 10.0 * tolerance(method),
+            "{method:?}: v = {}, not {v}",
+            end.v(ForcedSpring::X)
+        );
+    });
+}
+
+/// An input set by hand between steps (`set_input`, which restarts the integrator), step by
+/// step through the trait: the force switches on at the first step end past `t = 1`.
+#[test]
+fn an_input_set_between_steps_acts_from_there() {
+    let (x0, force, t_end) = (0.5, 1.5, 3.0);
+    let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
+        // The model is shared by the three runs: each starts from no force.
+        integrator.model_mut().expect("held exclusively").f = 0.0;
+        integrator.start(0.0, &released(x0), t_end).expect("starts");
+        while integrator.t() < 1.0 {
+            integrator.step().unwrap_or_else(|error| panic!("{method:?}: {error}"));
+        }
+        let t1 = integrator.t();
+        let (x1, v1) = held(x0, 0.0, 0.0, t1);
+        integrator.set_input(ForcedSpring::F, force).expect("an exclusive model");
+        while !integrator.finished() {
+            integrator.step().unwrap_or_else(|error| panic!("{method:?}: {error}"));
+        }
+        let (x, _) = held(x1, v1, force, t_end - t1);
+        let reached = integrator.state().q(ForcedSpring::X);
+        assert!((reached - x).abs() < tolerance(method), "{method:?}: x = {reached}, not {x}");
+        assert_eq!(integrator.model().f, force, "{method:?}");
+    });
+}
+
+/// An integrator built on `&model` reads the model and may not change it: a typed error, the
+/// model untouched.
+#[test]
+fn a_shared_model_refuses_changes() {
+    let spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    each_integrator!(&spring, Fineness::new(1e-8, 1e-10, 1e-2), |method, integrator| {
+        integrator.start(0.0, &released(0.5), 1.0).expect("starts");
+        let error = integrator.set_input(ForcedSpring::F, 2.0).err();
+        assert!(matches!(error, Some(SimError::SharedModel { t: 0.0 })), "{method:?}: {error:?}");
+        assert_eq!(integrator.model().f, 0.0, "{method:?}");
+    });
+}
+
+/// An input set within the steps from time, `u = a sin(Ω t)`: Radau offers it (against the
+/// closed form of the driven spring, `x = x0 cos ωt + a/(m(ω² − Ω²)) (sin Ωt − (Ω/ω) sin ωt)`);
+/// Explicit and the variational integrator refuse it by name.
+#[test]
+fn inputs_within_the_steps_are_driven_where_the_method_offers_it() {
+    let (x0, a, big_omega, t_end) = (0.5, 0.8, 1.3, 4.0);
+    let w = (K / M).sqrt();
+    let exact = x0 * (w * t_end).cos()
+        + a / (M * (w * w - big_omega * big_omega))
+            * ((big_omega * t_end).sin() - big_omega / w * (w * t_end).sin());
+    let mut source =
+        |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = a * (big_omega * t).sin();
+    let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
+        match (method, Drive::drive(&mut integrator, &mut source)) {
+            (Method::Radau, Ok(())) => {
+                let solution = integrator
+                    .solve(0.0, &released(x0), t_end, &Sampling::Times(vec![t_end]))
+                    .expect("integrates");
+                let x = solution.last().expect("a sample").q(ForcedSpring::X);
+                assert!((x - exact).abs() < 1e-8, "Radau: x = {x}, not {exact}");
+            }
+            (Method::Explicit | Method::Variational, Err(SimError::Unsupported { method: name, .. })) => {
+                assert_eq!(name, method.name())
+            }
+            (method, other) => panic!("{method:?}: {other:?}"),
+        }
+    });
+}
