@@ -7,19 +7,34 @@
 //! # Layers
 //!
 //! The crate is built in six layers, each a folder whose modules import only from the layers
-//! below it (and from [`error`], which every layer may use):
+//! below it (and from [`error`], the typed errors, which every layer may use).
 //!
-//! - [`shape`]: sizes as type-level dimensions, where each quantity sits in the flat state
-//!   `y = (q, v, p, λ)`, and how much stack an integrator takes.
-//! - [`algebra`]: dense and sparse block storage, LU factorisations, the saddle-point solvers
-//!   and the Newton seam every implicit step goes through.
-//! - [`model`]: the model traits (a core trait and one trait per optional capability), typed
-//!   names and keys, the state, blocks, the flat DAE and the pieces of composites.
-//! - [`analysis`]: a model at one instant: consistent initialisation, projection onto the
-//!   constraints, linearisation, Dirac structures, and the diagnosis behind every error message.
-//! - [`simulate`]: the [`Integrator`] driver with `solve` written once, events, impacts,
-//!   sensitivities, the recorder and the [`Solution`], input sources and ensembles.
-//! - [`methods`]: [`Radau`], [`Explicit`] and [`Variational`].
+//! [`shape`] holds sizes and layout: a model's dimensions as types the derive fixes, where each
+//! quantity sits in the flat state `y = (q, v, p, λ)` and in the `(v, λ)` unknowns of a
+//! saddle-point system, and how much stack an integrator takes. It knows nothing of models
+//! beyond their sizes.
+//!
+//! [`algebra`] stores blocks and solves linear systems: dense blocks on the stack, sparse ones
+//! for models made of arrays, LU factorisations, the saddle-point solvers and the Newton seam
+//! every implicit step solves through. It knows blocks, not the models that fill them.
+//!
+//! [`model`] is what a model is to the rest: the core trait [`LagrangeDirac`] with the blocks
+//! every method needs, one trait per optional capability ([`InputsOutputs`], [`Parameters`],
+//! [`Hybrid`], [`Derivation`], [`EnergyBalance`], [`SparseJacobian`]), which is where a new
+//! capability adds its blocks, the typed names and keys, the [`State`], the flat DAE, the
+//! pieces of composites, and [`model::configuration`], the one seam through which methods
+//! move positions (`q ⊕ h v`).
+//!
+//! [`analysis`] looks at a model at one instant: consistent initialisation, projection onto
+//! the constraints, linearisation about an equilibrium, Dirac structures as objects, and the
+//! diagnosis that names the true cause of every failure.
+//!
+//! [`simulate`] is the driver: the [`Integrator`] trait with `solve`, sampled control and
+//! sensitivities written once on top of its steps, the restart checks every method shares,
+//! events and impacts, the recorder and the [`Solution`], input sources and ensembles.
+//!
+//! [`methods`] holds [`Radau`], [`Explicit`] and [`Variational`], each an [`Integrator`];
+//! nothing but the re-exports below uses them.
 
 pub mod algebra;
 pub mod analysis;
