@@ -59,9 +59,9 @@ extern crate self as dirac;
 
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Algebra, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel, Derivation, Dimensions,
-    DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event, EventContext, Events, Explicit,
-    ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input, InputsOutputs, Integrator,
+    Algebra, Capability, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel, Derivation,
+    Dimensions, DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event, EventContext, Events,
+    Explicit, ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input, InputsOutputs, Integrator,
     JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ, MatYY, Membership, Named,
     Names, OperationCounts, Output, Parameters, Radau, RadauOptions, RadauStats, ResidualBlocks, Sampling,
     Sensitivities, SimError, Sizes, Slot, Solution, SolveWithEvents, SparseJacobian, State, Storage,

@@ -201,13 +201,34 @@ pub enum SimError {
         t_end: f64,
     },
     /// A capability asked of an integration method that it does not offer.
-    #[error("{method} does not offer {capability}: {instead}")]
+    #[error("{method} does not offer {capability}")]
     Unsupported {
         /// The method asked: `Radau`, `Explicit` or `Variational`.
         method: &'static str,
-        /// What was asked, such as `forward sensitivities`.
-        capability: &'static str,
-        /// What offers it instead.
-        instead: &'static str,
+        /// What was asked.
+        capability: Capability,
     },
+}
+
+/// A capability of an integration method that not every method offers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Capability {
+    /// Forward sensitivities carried with the solution.
+    Sensitivities,
+    /// Inputs set within the steps from time and state (a drive).
+    Drive,
+}
+
+impl core::fmt::Display for Capability {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            Capability::Sensitivities => {
+                "forward sensitivities: Radau carries them (`Radau::with_sensitivities`)"
+            }
+            Capability::Drive => {
+                "inputs set within its steps (a drive): Radau drives them (`Radau::drive`); every method \
+                 sets them between steps (`set_input`, `solve_sampled`)"
+            }
+        })
+    }
 }

@@ -49,7 +49,7 @@ pub use algebra::{Algebra, Dense};
 pub use analysis::dirac_structure::{DiracStructure, Membership};
 pub use analysis::init::{Consistency, consistent_state};
 pub use analysis::linear::{Linearization, linearize};
-pub use error::SimError;
+pub use error::{Capability, SimError};
 pub use methods::explicit::{Explicit, ExplicitOptions, ExplicitStats};
 pub use methods::radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
 pub use methods::variational::{Variational, VariationalOptions, VariationalStats};

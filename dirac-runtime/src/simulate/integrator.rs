@@ -6,7 +6,7 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
-use crate::error::SimError;
+use crate::error::{Capability, SimError};
 use crate::model::keys::Input;
 use crate::model::state::State;
 use crate::model::{InputsOutputs, LagrangeDirac, Parameters};
@@ -350,17 +350,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// Sets the model's inputs with `drive(t, state, model)` before every evaluation of the
-    /// model from now on. Needs an integrator built on `&mut model`; set it before `start`.
-    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError>;
-}
-
-/// The refusal of a method that does not drive inputs within its steps.
-pub(crate) fn no_drive(method: &'static str) -> SimError {
-    SimError::Unsupported {
-        method,
-        capability: "inputs set within its steps (a drive)",
-        instead: "Radau drives them (`Radau::drive`); every method sets them between steps (`set_input`, \
-                  `solve_sampled`)",
+    /// model from now on. Needs an integrator built on `&mut model`; set it before `start`. By
+    /// default the method refuses.
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
+        let _ = drive;
+        Err(SimError::Unsupported { method: Self::NAME, capability: Capability::Drive })
     }
 }
 
@@ -369,11 +363,7 @@ fn no_sensitivities<M: LagrangeDirac, I: Integrator<M> + ?Sized>() -> SimError
 where
     DefaultAllocator: Storage<M>,
 {
-    SimError::Unsupported {
-        method: I::NAME,
-        capability: "forward sensitivities",
-        instead: "Radau carries them (`Radau::with_sensitivities`)",
-    }
+    SimError::Unsupported { method: I::NAME, capability: Capability::Sensitivities }
 }
 
 /// [`Integrator::solve_with_sensitivities`]: the samples of the state, and at each the

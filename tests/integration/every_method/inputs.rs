@@ -124,8 +124,12 @@ fn inputs_within_the_steps_are_driven_where_the_method_offers_it() {
                 let x = solution.last().expect("a sample").q(ForcedSpring::X);
                 assert!((x - exact).abs() < 1e-8, "Radau: x = {x}, not {exact}");
             }
-            (Method::Explicit | Method::Variational, Err(SimError::Unsupported { method: name, .. })) => {
-                assert_eq!(name, method.name())
+            (
+                Method::Explicit | Method::Variational,
+                Err(SimError::Unsupported { method: name, capability }),
+            ) => {
+                assert_eq!(name, method.name());
+                assert_eq!(capability, dirac::Capability::Drive);
             }
             (method, other) => panic!("{method:?}: {other:?}"),
         }

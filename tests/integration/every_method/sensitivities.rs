@@ -38,7 +38,7 @@ fn sensitivities_are_carried_where_the_method_offers_them() {
                 Err(SimError::Unsupported { method: name, capability, .. }),
             ) => {
                 assert_eq!(name, method.name());
-                assert_eq!(capability, "forward sensitivities");
+                assert_eq!(capability, dirac::Capability::Sensitivities);
                 let recorded = integrator.solve_with_sensitivities(0.0, &start, 4.0, &Sampling::Steps).err();
                 assert!(matches!(recorded, Some(SimError::Unsupported { .. })), "{method:?}: {recorded:?}");
                 let mut s = State::<Oscillator>::zeros();

@@ -9,7 +9,7 @@ use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, configuration};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::{Drive, Integrator, no_drive};
+use crate::simulate::integrator::{Drive, Integrator};
 
 impl<M: LagrangeDirac> Integrator<M> for Explicit<'_, M>
 where
@@ -187,12 +187,6 @@ where
     }
 }
 
-impl<'m, M: LagrangeDirac> Drive<'m, M> for Explicit<'m, M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
-        let _ = drive;
-        Err(no_drive(Self::NAME))
-    }
-}
+/// Inputs are set between steps only ([`Integrator::set_input`]): asked for a drive, the
+/// method refuses with [`SimError::Unsupported`].
+impl<'m, M: LagrangeDirac> Drive<'m, M> for Explicit<'m, M> where DefaultAllocator: Storage<M> {}

@@ -174,6 +174,7 @@ where
 }
 
 /// The weighted root-mean-square norm `√(Σ (x_i / w_i)² / len)`.
+#[inline]
 pub(crate) fn norm<M: LagrangeDirac>(x: &VecY<M>, weights: &VecY<M>, kind: ErrorNorm) -> f64
 where
     DefaultAllocator: Storage<M>,

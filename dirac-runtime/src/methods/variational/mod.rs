@@ -57,7 +57,7 @@ use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
 use crate::simulate::held::Held;
-use crate::simulate::integrator::{Drive, Integrator, no_drive};
+use crate::simulate::integrator::{Drive, Integrator};
 use crate::simulate::restart::Restarts;
 
 /// The variational integrator for a model `M`, with fixed step `h`.
@@ -469,12 +469,6 @@ where
     }
 }
 
-impl<'m, M: LagrangeDirac> Drive<'m, M> for Variational<'m, M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
-        let _ = drive;
-        Err(no_drive(Self::NAME))
-    }
-}
+/// Inputs are set between steps only ([`Integrator::set_input`]): asked for a drive, the
+/// method refuses with [`SimError::Unsupported`].
+impl<'m, M: LagrangeDirac> Drive<'m, M> for Variational<'m, M> where DefaultAllocator: Storage<M> {}
