@@ -5,7 +5,8 @@
 //! Cases: Radau on the paper's chain (t = 20, tol 1e-8/1e-10), on the Cartesian pendulum
 //! (t = 10, tol 1e-8) and on the 8-link pendulum (t = 10, tol 1e-8/1e-10); 2000 variational
 //! steps of h = 0.01 on the pendulum (separable path and, with `use_structure: false`, general
-//! path) and on the chain (general path).
+//! path) and on the chain (general path); Explicit on the chain (t = 20, tol 1e-8/1e-10) and on
+//! the Cartesian pendulum (t = 10, tol 1e-8).
 
 #![allow(missing_docs)]
 
@@ -21,6 +22,15 @@ where
 {
     let mut radau = Radau::new(model, RadauOptions::tolerances(rtol, atol)).expect("valid");
     let solution = radau.solve(0.0, start, t_end, &Sampling::Times(vec![t_end])).expect("integrates");
+    solution.stats.steps as f64
+}
+
+fn explicit<M: DenseModel>(model: &M, start: &State<M>, t_end: f64, rtol: f64, atol: f64) -> f64
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let mut explicit = Explicit::new(model, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+    let solution = explicit.solve(0.0, start, t_end, &Sampling::Times(vec![t_end])).expect("integrates");
     solution.stats.steps as f64
 }
 
@@ -65,10 +75,13 @@ fn main() {
             "variational-pendulum" => variational(&pendulum, &pendulum_start, VariationalOptions::default()),
             "variational-pendulum-general" => variational(&pendulum, &pendulum_start, general),
             "variational-chain" => variational(&chain, &chain_start, general),
+            "explicit-chain" => explicit(&chain, &chain_start, 20.0, 1e-8, 1e-10),
+            "explicit-pendulum" => explicit(&pendulum, &pendulum_start, 10.0, 1e-8, 1e-8),
             _ => {
                 eprintln!(
                     "usage: small_models CASE [REPEATS], CASE one of radau-chain, radau-pendulum, \
-                     radau-pendulum8, variational-pendulum, variational-pendulum-general, variational-chain"
+                     radau-pendulum8, variational-pendulum, variational-pendulum-general, variational-chain, \
+                     explicit-chain, explicit-pendulum"
                 );
                 std::process::exit(2);
             }

@@ -45,19 +45,27 @@ where
     }
 }
 
-/// `out = q ⊕ Σ c_j δ_j`: the configuration reached along a combination of tangent vectors
-/// (a Runge-Kutta stage), the terms taken in order.
+/// A stage point of a Runge-Kutta step on the motion `(q, v)`: `q_out = q ⊕ s Σ c_j kq_j`, the
+/// configuration reached along a combination of tangent vectors, and `v_out = v + s Σ c_j
+/// kv_j` (velocities form a vector space on a group too, in its algebra), with `s` the step
+/// and `c_j` a row of the method's table; the terms in order, those with `c_j = 0` skipped.
 #[inline]
-pub fn advance_by<'a, M: Dimensions>(
-    q: &VecQ<M>,
-    terms: impl IntoIterator<Item = (f64, &'a VecQ<M>)>,
-    out: &mut VecQ<M>,
+pub fn advance_by<M: Dimensions>(
+    (q, v): (&VecQ<M>, &VecQ<M>),
+    s: f64,
+    c: &[f64],
+    (kq, kv): (&[VecQ<M>], &[VecQ<M>]),
+    (q_out, v_out): (&mut VecQ<M>, &mut VecQ<M>),
 ) where
     DefaultAllocator: Storage<M>,
 {
-    out.copy_from(q);
-    for (c, delta) in terms {
-        out.axpy(c, delta, 1.0);
+    q_out.copy_from(q);
+    v_out.copy_from(v);
+    for ((&c, kq), kv) in c.iter().zip(kq).zip(kv) {
+        if c != 0.0 {
+            q_out.axpy(s * c, kq, 1.0);
+            v_out.axpy(s * c, kv, 1.0);
+        }
     }
 }
 
@@ -109,9 +117,9 @@ mod tests {
         let mut back = VecQ::<Two>::zeros();
         difference::<Two>(&moved, &q, &mut back);
         assert!((back - v * 0.1).amax() < 1e-15);
-        let mut by = VecQ::<Two>::zeros();
-        advance_by::<Two>(&q, [(0.1, &v), (-0.1, &v)], &mut by);
-        assert_eq!(by, q);
+        let (mut by, mut w) = (VecQ::<Two>::zeros(), VecQ::<Two>::zeros());
+        advance_by::<Two>((&q, &v), 0.1, &[1.0, 0.0, -1.0], (&[v, q, v], &[q, q, q]), (&mut by, &mut w));
+        assert_eq!((by, w), (q, v));
         let mut onto = v;
         advance_onto::<Two>(&q, 0.1, &mut onto);
         assert_eq!(onto, moved);

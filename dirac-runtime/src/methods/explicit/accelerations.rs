@@ -199,35 +199,34 @@ where
         acceleration: &mut VecQ<M>,
         lambda: &mut VecC<M>,
     ) -> bool {
-        let unknowns = Unknowns::new(self.sizes);
-        let m = unknowns.m;
+        let Sizes { nq: n, nc: m, .. } = self.sizes;
         if !self.checked {
             self.look_for_mass(model, t, (q, v));
         }
         model.residual_blocks(t, q, v, &self.zero_lambda, &mut self.blocks);
-        let (top, bottom) = unknowns.split_mut(self.x.as_mut_slice());
-        top.copy_from_slice(self.blocks.momentum_rate.as_slice());
+        let x = self.x.as_mut_slice();
+        x[..n].copy_from_slice(self.blocks.momentum_rate.as_slice());
         if !M::SEPARABLE {
             model.l_vt(t, q, v, &mut self.lvt);
-            for (x, l) in top.iter_mut().zip(self.lvt.iter()) {
+            for (x, l) in x[..n].iter_mut().zip(self.lvt.iter()) {
                 *x -= l;
             }
             model.l_vq(t, q, v, &mut self.lvq);
-            M::Algebra::qq_mul(&self.lvq, -1.0, v.as_slice(), top);
+            M::Algebra::qq_mul(&self.lvq, -1.0, v.as_slice(), &mut x[..n]);
         }
         // Constraint rows that depend on parameters alone are those of the factorisation held:
         // with no rates and no `∂(A v)/∂q`, the constraints' right-hand side is zero.
         let constant = M::CONSTANT_CONSTRAINTS && self.factored;
         if m > 0 && constant {
-            bottom.fill(0.0);
+            x[n..].fill(0.0);
         } else if m > 0 {
             model.constraint_matrix(t, q, &mut self.a);
             model.dav_dq(t, q, v, &mut self.dav);
             model.dav_dt(t, q, v, &mut self.rate);
-            for (x, r) in bottom.iter_mut().zip(self.rate.iter()) {
+            for (x, r) in x[n..].iter_mut().zip(self.rate.iter()) {
                 *x = -r;
             }
-            M::Algebra::cq_mul(&self.dav, -1.0, v.as_slice(), bottom);
+            M::Algebra::cq_mul(&self.dav, -1.0, v.as_slice(), &mut x[n..]);
         }
         let keep = M::SEPARABLE
             && self.factored
@@ -249,15 +248,15 @@ where
             && let Some(inverse) = &self.inverse
         {
             // Written straight into the results, without a round trip through `x`.
-            let k = <M::Nk as nalgebra::Dim>::try_to_usize().unwrap_or(unknowns.len());
+            let k = <M::Nk as nalgebra::Dim>::try_to_usize().unwrap_or(n + m);
             let out = acceleration.iter_mut().chain(lambda.iter_mut());
             inverse_product(&inverse.as_slice()[..k * k], &self.x.as_slice()[..k], out);
             return true;
         }
         self.solve();
-        let (top, bottom) = unknowns.split(self.x.as_slice());
-        acceleration.as_mut_slice().copy_from_slice(top);
-        lambda.as_mut_slice().copy_from_slice(bottom);
+        let x = self.x.as_slice();
+        acceleration.as_mut_slice().copy_from_slice(&x[..n]);
+        lambda.as_mut_slice().copy_from_slice(&x[n..]);
         true
     }
 
@@ -320,18 +319,18 @@ where
             }
             return;
         };
-        let Unknowns { n, m } = Unknowns::new(self.sizes);
-        let (x_v, x_lambda) = Unknowns { n, m }.split_mut(self.x.as_mut_slice());
+        let Sizes { nq: n, nc: m, .. } = self.sizes;
+        let x = self.x.as_mut_slice();
         // v̇ = M⁻¹ (top + Aᵀ λ) with A M⁻¹ Aᵀ λ = bottom − A M⁻¹ top; index loops over the
         // column-major storage, which for these small blocks cost less than nalgebra's
         // general products.
         let top = schur.top.as_mut_slice();
-        top.copy_from_slice(x_v);
+        top.copy_from_slice(&x[..n]);
         schur.mass.solve(&mut schur.top);
         if m > 0 {
             let (top, a, b) = (schur.top.as_slice(), schur.a.as_slice(), schur.b.as_slice());
             let bottom = schur.bottom.as_mut_slice();
-            bottom.copy_from_slice(x_lambda);
+            bottom.copy_from_slice(&x[n..]);
             for (j, t) in top.iter().enumerate() {
                 for (r, y) in bottom.iter_mut().enumerate() {
                     *y -= a[r + j * m] * t;
@@ -339,15 +338,15 @@ where
             }
             schur.s.solve(&mut schur.bottom);
             let lambda = schur.bottom.as_slice();
-            x_v.copy_from_slice(top);
+            x[..n].copy_from_slice(top);
             for (j, l) in lambda.iter().enumerate() {
-                for (i, y) in x_v.iter_mut().enumerate() {
+                for (i, y) in x[..n].iter_mut().enumerate() {
                     *y += b[i + j * n] * l;
                 }
             }
-            x_lambda.copy_from_slice(lambda);
+            x[n..].copy_from_slice(lambda);
         } else {
-            x_v.copy_from_slice(schur.top.as_slice());
+            x[..n].copy_from_slice(schur.top.as_slice());
         }
     }
 

@@ -277,14 +277,8 @@ where
         for i in 1..7 {
             // The stage's positions move along the stages' velocities; its velocities are
             // built in `v_new`, which after the seventh stage holds the new solution's.
-            let along = A[i][..i].iter().zip(&self.kq).filter(|(a, _)| **a != 0.0);
-            configuration::advance_by::<M>(&s.q, along.map(|(a, k)| (h * a, k)), &mut self.q_stage);
-            self.v_new.copy_from(&s.v);
-            for (j, &a) in A[i][..i].iter().enumerate() {
-                if a != 0.0 {
-                    self.v_new.axpy(h * a, &self.kv[j], 1.0);
-                }
-            }
+            let (k, stage) = ((&self.kq[..i], &self.kv[..i]), (&mut self.q_stage, &mut self.v_new));
+            configuration::advance_by::<M>((&s.q, &s.v), h, &A[i][..i], k, stage);
             self.stats.evaluations += 1;
             let t = self.t + C[i] * h;
             let stage = (&self.q_stage, &self.v_new);
