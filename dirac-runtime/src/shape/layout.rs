@@ -88,21 +88,6 @@ impl Unknowns {
         Unknowns { n: sizes.nq, m: sizes.nc }
     }
 
-    /// The number of unknowns, `n + m`.
-    pub const fn len(&self) -> usize {
-        self.n + self.m
-    }
-
-    /// Whether there are none.
-    pub const fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
-    /// Where the multiplier of constraint `j` sits.
-    pub const fn multiplier(&self, j: usize) -> usize {
-        self.n + j
-    }
-
     /// What unknown `column` is.
     pub fn unknown(&self, column: usize) -> Unknown {
         if column < self.n { Unknown::Velocity(column) } else { Unknown::Multiplier(column - self.n) }
@@ -139,9 +124,8 @@ mod tests {
     #[test]
     fn saddle_unknowns_are_velocities_then_multipliers() {
         let unknowns = Unknowns::new(Sizes { nq: 2, nc: 1, nh: 0 });
-        let kinds: Vec<Unknown> = (0..unknowns.len()).map(|c| unknowns.unknown(c)).collect();
+        let kinds: Vec<Unknown> = (0..3).map(|c| unknowns.unknown(c)).collect();
         assert_eq!(kinds, [Unknown::Velocity(0), Unknown::Velocity(1), Unknown::Multiplier(0)]);
-        assert_eq!(unknowns.multiplier(0), 2);
         let x = [1.0, 2.0, 3.0];
         assert_eq!(unknowns.split(&x), (&x[..2], &x[2..]));
     }

@@ -135,3 +135,19 @@ fn inputs_within_the_steps_are_driven_where_the_method_offers_it() {
         }
     });
 }
+
+/// A drive asked of an integrator that holds its model shared: Radau refuses it as it refuses
+/// any change (the drive sets the model), the others as they refuse any drive; nothing runs.
+#[test]
+fn a_drive_on_a_shared_model_is_refused() {
+    let mut source = |_: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = 1.0;
+    let spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    each_integrator!(&spring, Fineness::new(1e-8, 1e-10, 1e-2), |method, integrator| {
+        let error = Drive::drive(&mut integrator, &mut source).err();
+        match method {
+            Method::Radau => assert!(matches!(error, Some(SimError::SharedModel { .. })), "{error:?}"),
+            _ => assert!(matches!(error, Some(SimError::Unsupported { .. })), "{method:?}: {error:?}"),
+        }
+    });
+    assert_eq!(spring.f, 0.0);
+}

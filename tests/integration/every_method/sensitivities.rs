@@ -48,3 +48,46 @@ fn sensitivities_are_carried_where_the_method_offers_them() {
         }
     });
 }
+
+/// Bad requests of the capability end in typed errors naming their cause: Radau asked for no
+/// sensitivity at all, or asked to record some it was never asked to carry; a NaN parameter
+/// differentiated with respect to, refused at the start by name. The methods that do not carry
+/// sensitivities refuse each request as they refuse any.
+#[test]
+fn bad_requests_for_sensitivities_are_typed_errors() {
+    let model = Oscillator { m: 1.0, k: f64::NAN };
+    let mut start = State::<Oscillator>::zeros();
+    start.set_q(Oscillator::X, 0.5);
+    let none = Sensitivities::new(&model);
+    let wrt = Sensitivities::new(&model).parameter("k").expect("a parameter of the model");
+    each_integrator!(&model, Fineness::new(1e-8, 1e-10, 1e-2), |method, integrator| {
+        let empty = integrator.carry_sensitivities(&none).err();
+        let unasked = integrator.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps).err();
+        match method {
+            Method::Radau => {
+                assert!(
+                    matches!(empty, Some(SimError::InvalidOption { what: "sensitivities", .. })),
+                    "{empty:?}"
+                );
+                assert!(
+                    matches!(unasked, Some(SimError::InvalidOption { what: "sensitivities", .. })),
+                    "{unasked:?}"
+                );
+                integrator.carry_sensitivities(&wrt).expect("k is a parameter");
+                let nan = integrator.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps).err();
+                assert!(
+                    matches!(&nan, Some(SimError::InvalidParameter { name, .. }) if name == "k"),
+                    "{nan:?}"
+                );
+            }
+            Method::Explicit | Method::Variational => {
+                for error in [empty, unasked] {
+                    assert!(
+                        matches!(error, Some(SimError::Unsupported { method: name, .. }) if name == method.name()),
+                        "{method:?}: {error:?}"
+                    );
+                }
+            }
+        }
+    });
+}
