@@ -51,7 +51,7 @@ pub use analysis::init::{Consistency, consistent_state};
 pub use analysis::linear::{Linearization, linearize};
 pub use error::{Capability, SimError};
 pub use methods::explicit::{Explicit, ExplicitOptions, ExplicitStats};
-pub use methods::radau::{ErrorNorm, Radau, RadauOptions, RadauStats};
+pub use methods::radau::{DenseOutput, ErrorNorm, Radau, RadauOptions, RadauStats};
 pub use methods::variational::{Variational, VariationalOptions, VariationalStats};
 pub use model::Named;
 pub use model::blocks::{JacobianBlocks, ResidualBlocks};

@@ -10,6 +10,7 @@ mod authoring;
 mod blocks;
 mod contacts;
 mod counters;
+mod dense_output;
 mod events;
 mod explicit;
 mod fitting;

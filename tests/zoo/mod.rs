@@ -89,6 +89,39 @@ pub struct BeadOnRod {
     pub w: f64,
 }
 
+/// The Kepler problem, `μ = 1`: an ODE with a closed form ([`kepler_exact`]) whose steps vary
+/// tenfold along an eccentric orbit.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * (vx * vx + vy * vy) + 1.0 / (x * x + y * y).sqrt())]
+pub struct Kepler {}
+
+/// `[x, y, vx, vy]` at time `t` on the Kepler orbit of eccentricity `e` and semi-major axis 1
+/// that starts at perihelion on the x axis: Kepler's equation `E − e sin E = t` solved by
+/// Newton's method to round-off.
+pub fn kepler_exact(e: f64, t: f64) -> [f64; 4] {
+    let mut anomaly = t;
+    for _ in 0..50 {
+        let step = (anomaly - e * anomaly.sin() - t) / (1.0 - e * anomaly.cos());
+        anomaly -= step;
+        if step.abs() < 1e-16 {
+            break;
+        }
+    }
+    let (s, c) = anomaly.sin_cos();
+    let b = (1.0 - e * e).sqrt();
+    let rate = 1.0 / (1.0 - e * c);
+    [c - e, b * s, -s * rate, b * c * rate]
+}
+
+/// `[x, y, vx, vy]` at time `t` of the bead on the rod turned at rate `w`, released at
+/// `r0` on the x axis at rest along the rod: `r = r0 cosh ωt`.
+pub fn bead_exact(w: f64, r0: f64, t: f64) -> [f64; 4] {
+    let (r, dr) = (r0 * (w * t).cosh(), r0 * w * (w * t).sinh());
+    let (s, c) = (w * t).sin_cos();
+    [r * c, r * s, dr * c - r * w * s, dr * s + r * w * c]
+}
+
 /// A free mass on a line.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(coordinates(x => v), lagrangian = 0.5 * m * v * v)]

@@ -3,7 +3,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use super::{Radau, RadauStats};
+use super::{DenseOutput, Radau, RadauStats};
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
 use crate::model::state::State;
@@ -131,6 +131,14 @@ where
 
     fn interpolate(&self, t: f64, out: &mut State<M>) {
         self.dense.interpolate(&self.y, self.t, t, out);
+        // The model's inputs are those of the step's end: a drive that sets them along the step
+        // would need the model mutably, so driven models keep the velocities' extension.
+        if self.options.dense_output == DenseOutput::Corrected
+            && self.start.refine(&self.dense, (&self.y, &self.f0), (self.t, self.dense.h), t, out)
+            && !self.residual.driven()
+        {
+            self.legendre.correct(self.model.get(), &self.jac.l_vv, (self.t, &self.state.q), t, out);
+        }
     }
 
     fn stats(&self) -> RadauStats {

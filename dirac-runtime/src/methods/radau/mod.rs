@@ -25,12 +25,12 @@ mod tableau;
 use nalgebra::{Complex, DefaultAllocator};
 
 use self::controller::Controller;
-use self::dense::Dense;
+use self::dense::{Dense, Legendre, Start};
 use self::drive::Feedback;
 use self::estimate::Estimator;
 use self::forward::{Failure, Forward};
 use self::options::Tolerances;
-pub use self::options::{ErrorNorm, RadauOptions, RadauStats};
+pub use self::options::{DenseOutput, ErrorNorm, RadauOptions, RadauStats};
 use self::residual::Residual;
 use self::stages::{Outcome, Stages, Step};
 use self::tableau::{Eigen, eigen};
@@ -87,6 +87,10 @@ where
     stages: Stages<M>,
     estimator: Estimator<M>,
     dense: Dense<M>,
+    /// The last step's start, for sampling between steps.
+    start: Start<M>,
+    /// Velocities between steps from the Legendre map.
+    legendre: Legendre<M>,
     controller: Controller,
     jac: JacobianBlocks<M, M::Algebra>,
     /// Puts accepted steps back on the constraints, when the options ask for it.
@@ -144,6 +148,7 @@ where
     ) -> Result<Self, SimError> {
         let sizes = model.sizes();
         let projector = (options.projection && sizes.nc > 0).then(|| Projector::new(model.get()));
+        let legendre = Legendre::new(model.get());
         Ok(Radau {
             model,
             solver,
@@ -164,6 +169,8 @@ where
             stages: Stages::new(sizes),
             estimator: Estimator::new(sizes),
             dense: Dense::new(sizes),
+            start: Start::new(sizes),
+            legendre,
             controller: Controller::new(),
             jac: JacobianBlocks::with_shape(shape),
             projector,
@@ -356,6 +363,7 @@ where
         self.unclipped = 0.0;
         self.controller.restart();
         self.stages.restart();
+        self.start.forget();
         if fresh {
             self.need_jac = true;
             self.need_factor = true;
@@ -405,6 +413,8 @@ where
     fn accept(&mut self, err: f64, quot: f64) -> Result<f64, SimError> {
         let h = self.h;
         let quot = self.controller.accepted_quotient(h, err, quot, self.stats.steps > 0);
+        self.start.push(&self.y, &self.f0);
+        self.legendre.forget();
         self.dense.update(&self.stages.z, h);
         if let Some(forward) = self.forward.as_deref_mut() {
             forward.accept(h);

@@ -36,6 +36,23 @@ pub struct RadauOptions {
     pub projection: bool,
     /// How the error estimate's components are combined (default [`ErrorNorm::Rms`]).
     pub error_norm: ErrorNorm,
+    /// What values between steps are taken from (default [`DenseOutput::Corrected`]).
+    pub dense_output: DenseOutput,
+}
+
+/// How Radau samples its solution between steps (`Sampling::Every`, `Sampling::Times`,
+/// events, [`Integrator::interpolate`](crate::Integrator::interpolate)).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DenseOutput {
+    /// The collocation polynomial corrected by the step's ends, the velocities from the
+    /// Legendre map and the constraints: values between steps as accurate as the steps' ends
+    /// (`O(h⁵)`), the velocities on the constraints.
+    #[default]
+    Corrected,
+    /// The collocation polynomial of RADAU5 alone: `O(h⁴)` inside a step while its end is
+    /// `O(h⁶)`, so that at tight tolerances values between steps are tens to hundreds of times
+    /// less accurate than at the steps' ends. Slightly cheaper to evaluate.
+    Collocation,
 }
 
 /// How Radau combines the scaled error of every component into the one number it keeps
@@ -63,6 +80,7 @@ impl Default for RadauOptions {
             max_newton_iterations: 7,
             projection: false,
             error_norm: ErrorNorm::Rms,
+            dense_output: DenseOutput::Corrected,
         }
     }
 }

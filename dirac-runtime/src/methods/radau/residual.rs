@@ -44,6 +44,11 @@ where
         self.drive = Some((drive, State::with_sizes(sizes)));
     }
 
+    /// Whether a drive sets the model's inputs.
+    pub fn driven(&self) -> bool {
+        self.drive.is_some()
+    }
+
     /// Sets the model's inputs for time `t` and state `y`, if a drive does.
     #[inline]
     pub fn apply(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>) {
