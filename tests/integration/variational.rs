@@ -306,3 +306,36 @@ fn multipliers_converge_at_second_order() {
     assert!((order - 2.0).abs() < 0.2, "order {order:.3} (errors {coarse:e}, {fine:e})");
     assert!(fine < 2e-3, "largest error {fine:e} in a tension of about 30");
 }
+
+#[test]
+fn a_step_beyond_the_stability_limit_ends_in_unstable_at_once() {
+    // The paper's interconnected chain: its fastest mode has ω = 3.374 (the square root of the
+    // largest eigenvalue, 11.38, of M⁻¹K with M = diag(1, 2, 3) and K = [9 −5 0; −5 11 −6;
+    // 0 −6 6], by power iteration), so the method's limit h < 2/ω is 0.593. Beyond it the discrete solution grows
+    // geometrically; a run used to succeed with the energy grown 10³¹-fold, or stop at NaN
+    // after a hundred steps.
+    let chain = crate::zoo::paper_chain();
+    let start = crate::zoo::paper_chain_start(&chain);
+    for h in [0.8, 1.5, 2.0, 3.0] {
+        for t_end in [20.0, 200.0] {
+            let mut vi = Variational::new(&chain, h, VariationalOptions::default()).expect("valid");
+            match vi.solve(0.0, &start, t_end, &Sampling::Steps) {
+                Err(SimError::Unstable { t, h: step, detail }) => {
+                    assert!(t <= 4.0 * h, "h = {h}: found at t = {t}, after {} steps", t / h);
+                    assert_eq!(step, h);
+                    assert!(detail.contains("take a smaller step") && detail.contains("h < 2/ω"), "{detail}");
+                }
+                other => panic!("h = {h}, t_end = {t_end}: {:?}", other.map(|s| s.energy()[s.len() - 1])),
+            }
+        }
+    }
+    // Within the limit the same run ends, its energy bounded.
+    for h in [0.05, 0.25] {
+        let solution = Variational::new(&chain, h, VariationalOptions::default())
+            .expect("valid")
+            .solve(0.0, &start, 200.0, &Sampling::Steps)
+            .expect("stable");
+        let e0 = solution.energy()[0];
+        assert!(solution.energy().iter().all(|e| (e - e0).abs() < 0.5 * e0), "h = {h}");
+    }
+}

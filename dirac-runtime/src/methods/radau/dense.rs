@@ -11,8 +11,8 @@ use super::tableau::{C1, C2, TI};
 use crate::algebra::Algebra;
 use crate::algebra::{Saddle, SaddleTerms};
 use crate::model::LagrangeDirac;
-use crate::model::state::State;
 use crate::model::MatCQ;
+use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecC, VecK, VecQ, VecY};
 use crate::shape::layout::Layout;
 

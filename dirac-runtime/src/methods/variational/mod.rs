@@ -82,6 +82,12 @@ where
     /// The largest size of the energy's parts since the start (restarts included): errors far
     /// below it are round-off, even where the energy's parts vanish (a body come to rest).
     energy_scale: f64,
+    /// The size of the energy's parts at the (re)start: an energy error a hundred times the
+    /// size of the energy there and of the work done since is growth, not error.
+    size0: f64,
+    /// The largest momentum at the last stability check that passed: a step that multiplies it
+    /// by 8 is checked at once.
+    p_checked: f64,
     /// The state reached: `v` is the stage-2 velocity `w`, and `λ` the multipliers
     /// extrapolated from the steps' impulses to second order (see `update_multipliers`).
     state: State<M>,
@@ -133,6 +139,8 @@ where
             taken: 0,
             total: 0,
             energy0: 0.0,
+            size0: 0.0,
+            p_checked: 0.0,
             energy_scale: 0.0,
             state: State::with_sizes(sizes),
             previous: State::with_sizes(sizes),
@@ -174,6 +182,8 @@ where
         let model = self.model.get();
         let s = &self.state;
         self.energy0 = model.energy(t0, &s.q, &s.v, &s.p);
+        self.size0 = s.p.dot(&s.v).abs() + model.lagrangian(t0, &s.q, &s.v).abs();
+        self.p_checked = s.p.amax();
         self.previous.clone_from(s);
         self.mass = None;
         if M::SEPARABLE && self.options.use_structure {
@@ -262,25 +272,37 @@ where
     /// A fixed step beyond the method's stability limit makes the discrete solution grow
     /// geometrically: the energy error (corrected by the work of the forces and of the
     /// Lagrangian's time dependence) then becomes as large as the energy's own parts, which in
-    /// a stable run it never approaches.
-    fn check_stability(&mut self) -> Result<(), SimError> {
+    /// a stable run it never approaches, and far larger than the energy at the start and the
+    /// work done since (the energy's parts grow with the solution, so the first test alone
+    /// would let a run grow without bound when they grow alike). Checked every 16 steps, and
+    /// at once after a step that multiplies the largest momentum by 8 (`pmax`).
+    fn check_stability(&mut self, pmax: f64) -> Result<(), SimError> {
         let s = &self.state;
         let lagrangian = self.model.get().lagrangian(self.t, &s.q, &s.v);
         let kinetic = s.p.dot(&s.v);
         let energy = kinetic - lagrangian;
         let error = (energy - self.energy0 - self.work.work).abs();
         let size = kinetic.abs() + lagrangian.abs() + self.energy0.abs();
-        self.energy_scale = self.energy_scale.max(size);
-        if error.is_finite() && error <= 0.5 * size.max(1e-9 * self.energy_scale) || size == 0.0 {
+        // Growth: far beyond the energy at the start, the work done since and the largest
+        // energy's parts of a check whose error was small (those of a growing solution are not).
+        let reference = self.size0 + self.work.work.abs() + self.energy_scale;
+        let grown = reference > 0.0 && error > 100.0 * reference && error > 1e-3 * size;
+        if !grown && (error.is_finite() && error <= 0.5 * size.max(1e-9 * self.energy_scale) || size == 0.0) {
+            if error <= 0.1 * size {
+                self.energy_scale = self.energy_scale.max(size);
+            }
+            self.p_checked = self.p_checked.max(pmax);
             return Ok(());
         }
         Err(SimError::Unstable {
             t: self.t,
             h: self.h,
             detail: format!(
-                "the energy went from {:e} to {energy:e} (the forces did {:e} of work): the step is beyond \
-                 the stability limit of the method for this model; take a smaller step",
-                self.energy0, self.work.work
+                "the energy went from {:e} to {energy:e} (the forces did {:e} of work): the step {:e} is \
+                 beyond the stability limit of the method for this model; take a smaller step (the \
+                 limit of a linear oscillation of frequency ω is h < 2/ω) or Radau, whose steps follow \
+                 the motion",
+                self.energy0, self.work.work, self.h
             ),
         })
     }
@@ -380,14 +402,16 @@ where
         self.update_multipliers(h);
         let s = &self.state;
         // An index loop: the chained iterators of nalgebra cost more than the step itself.
-        if let Some(i) =
-            (0..self.sizes.typed::<M>().nq).find(|&i| !(s.q[i].is_finite() && s.p[i].is_finite()))
-        {
-            let names = self.model.get().coordinate_names();
-            return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
+        let mut pmax = 0.0f64;
+        for i in 0..self.sizes.typed::<M>().nq {
+            if !(s.q[i].is_finite() && s.p[i].is_finite()) {
+                let names = self.model.get().coordinate_names();
+                return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
+            }
+            pmax = pmax.max(s.p[i].abs());
         }
-        if self.taken.is_multiple_of(16) || self.finished() {
-            self.check_stability()?;
+        if self.taken.is_multiple_of(16) || self.finished() || pmax > 8.0 * self.p_checked {
+            self.check_stability(pmax)?;
         }
         Ok(h)
     }
