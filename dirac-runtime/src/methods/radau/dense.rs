@@ -270,6 +270,8 @@ where
     /// Corrects the velocities of `out` at `t` so that they match its positions and momenta
     /// and satisfy the constraints; `l_vv` is the mass matrix of the last Jacobian and
     /// `(t_end, q_end)` the step's end.
+    // Indexing keeps the unknowns, the momenta and the velocities side by side.
+    #[allow(clippy::needless_range_loop)]
     pub fn correct(
         &self,
         model: &M,
@@ -280,7 +282,7 @@ where
     ) {
         let work = &mut *self.work.borrow_mut();
         let n = out.q.len();
-        let constrained = work.b.len() > 0;
+        let constrained = !work.b.is_empty();
         if work.factored.is_none() {
             if constrained {
                 model.constraint_matrix(t_end, q_end, &mut work.a);

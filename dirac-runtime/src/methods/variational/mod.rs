@@ -55,10 +55,10 @@ use crate::error::SimError;
 use crate::model::configuration;
 use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
-use crate::shape::dims::{Sizes, Storage};
+use crate::shape::dims::{Sizes, Storage, VecC};
 use crate::simulate::held::Held;
 use crate::simulate::integrator::{Drive, Integrator};
-use crate::simulate::restart::Restarts;
+use crate::simulate::restart::{Restarts, constraint_violation};
 
 /// The variational integrator for a model `M`, with fixed step `h`.
 pub struct Variational<'m, M: LagrangeDirac>
@@ -93,6 +93,8 @@ where
     state: State<M>,
     /// The state at the start of the last step, for interpolation.
     previous: State<M>,
+    /// The multipliers at the last midpoint before a step taken as sub-steps.
+    saved_midpoint: VecC<M>,
     work: Work<M>,
     /// The factored constant mass matrix of a separable dense model, when the shortcut is on.
     mass: Option<Mass<M>>,
@@ -144,6 +146,7 @@ where
             energy_scale: 0.0,
             state: State::with_sizes(sizes),
             previous: State::with_sizes(sizes),
+            saved_midpoint: sizes.zeros_c::<M>(),
             work,
             mass: None,
             projector,
@@ -269,6 +272,88 @@ where
         if k >= self.total { self.t_end } else { self.t0 + k as f64 * self.h }
     }
 
+    /// One step of the method of size `h` from `self.t` and `self.state`, with its work and
+    /// multipliers; `self.t` is left at the step's start.
+    fn advance(&mut self, h: f64) -> Result<(), SimError> {
+        self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
+        self.work.v.copy_from(&self.state.v);
+        self.work.big_lambda.copy_from(&self.work.gamma);
+        let mut step = Step {
+            model: self.model.get(),
+            h,
+            t: self.t,
+            options: &self.options,
+            state: &mut self.state,
+            work: &mut self.work,
+            stats: &mut self.stats,
+        };
+        match &self.mass {
+            Some(mass) => separable_step(&mut step, mass)?,
+            None => general_step(&mut step)?,
+        }
+        let qm = &mut self.work.vectors.qm;
+        configuration::advance::<M>(&self.state.q, 0.5 * h, &self.work.v, qm);
+        self.work.work -= h * self.model.get().dl_dt(self.t + 0.5 * h, qm, &self.work.v);
+        if M::PRESCRIBED {
+            self.add_constraint_work(h);
+        }
+        configuration::advance_in_place::<M>(&mut self.state.q, h, self.work.v.as_slice());
+        self.update_multipliers(h);
+        Ok(())
+    }
+
+    /// The step of size `h` from `self.previous` at `self.t` as ever more equal sub-steps, until
+    /// every sub-step converges; `error` if 64 do not.
+    fn substeps(&mut self, h: f64, error: SimError) -> Result<(), SimError> {
+        let t0 = self.t;
+        let work0 = self.work.work;
+        let (midpoint, h_midpoint) = &self.work.midpoint;
+        self.saved_midpoint.copy_from(midpoint);
+        let h_midpoint = *h_midpoint;
+        let mut parts = 2;
+        loop {
+            self.state.clone_from(&self.previous);
+            self.work.work = work0;
+            self.work.midpoint.0.copy_from(&self.saved_midpoint);
+            self.work.midpoint.1 = h_midpoint;
+            self.work.gamma.fill(0.0);
+            if self.mass.is_some() {
+                let s = &self.state;
+                self.model.get().dl_dq(t0, &s.q, &s.v, &mut self.work.dl_dq);
+            }
+            let hs = h / parts as f64;
+            let mut converged = true;
+            for j in 0..parts {
+                self.t = t0 + j as f64 * hs;
+                match self.advance(hs) {
+                    Ok(()) => self.stats.substeps += 1,
+                    Err(SimError::NewtonDiverged { .. }) => {
+                        converged = false;
+                        break;
+                    }
+                    Err(other) => {
+                        self.t = t0;
+                        return Err(other);
+                    }
+                }
+            }
+            self.t = t0;
+            // Sub-steps whose iterations stopped short of the constraints (a singular direction
+            // the step size does not cure) are no better than the step that diverged.
+            if converged {
+                let end = t0 + h;
+                return match constraint_violation(self.model.get(), end, &self.state) <= 1e-10 {
+                    true => Ok(()),
+                    false => Err(error),
+                };
+            }
+            if parts >= 64 {
+                return Err(error);
+            }
+            parts *= 2;
+        }
+    }
+
     /// A fixed step beyond the method's stability limit makes the discrete solution grow
     /// geometrically: the energy error (corrected by the work of the forces and of the
     /// Lagrangian's time dependence) then becomes as large as the energy's own parts, which in
@@ -368,38 +453,24 @@ where
     }
 
     /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
-    /// returns its size.
+    /// returns its size. Where Newton's iteration does not converge (the step's equations may
+    /// have no solution near the motion: RATTLE's projection of a pendulum swinging through
+    /// more than its length in a step misses the circle), the step is taken as 2, 4, …, 64
+    /// equal sub-steps of the method; the result is then a composition of variational steps,
+    /// as symplectic and of the same order, counted in [`VariationalStats::substeps`].
     fn step(&mut self) -> Result<f64, SimError> {
         let (h, intervals) = self.next_step();
         self.t_previous = self.t;
         self.previous.clone_from(&self.state);
-        self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
-        self.work.v.copy_from(&self.state.v);
-        self.work.big_lambda.copy_from(&self.work.gamma);
-        let mut step = Step {
-            model: self.model.get(),
-            h,
-            t: self.t,
-            options: &self.options,
-            state: &mut self.state,
-            work: &mut self.work,
-            stats: &mut self.stats,
-        };
-        match &self.mass {
-            Some(mass) => separable_step(&mut step, mass)?,
-            None => general_step(&mut step)?,
+        if let Err(error) = self.advance(h) {
+            if !matches!(error, SimError::NewtonDiverged { .. }) {
+                return Err(error);
+            }
+            self.substeps(h, error)?;
         }
-        let qm = &mut self.work.vectors.qm;
-        configuration::advance::<M>(&self.state.q, 0.5 * h, &self.work.v, qm);
-        self.work.work -= h * self.model.get().dl_dt(self.t + 0.5 * h, qm, &self.work.v);
-        if M::PRESCRIBED {
-            self.add_constraint_work(h);
-        }
-        configuration::advance_in_place::<M>(&mut self.state.q, h, self.work.v.as_slice());
         self.stats.steps += 1;
         self.taken += intervals;
         self.t = self.time_after(self.taken);
-        self.update_multipliers(h);
         let s = &self.state;
         // An index loop: the chained iterators of nalgebra cost more than the step itself.
         let mut pmax = 0.0f64;

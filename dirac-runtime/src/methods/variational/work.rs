@@ -65,6 +65,9 @@ pub struct VariationalStats {
     /// LU factorisations: one per Newton iteration on the general path; on the separable path
     /// one per multiplier update and one for the velocity projection.
     pub factorizations: usize,
+    /// Sub-steps taken where a whole step's Newton iteration did not converge (see
+    /// [`Variational`](crate::Variational)): each counts here, the step they make up in `steps`.
+    pub substeps: usize,
 }
 
 /// The unknowns and matrices of one step, kept between steps so that a step allocates nothing
