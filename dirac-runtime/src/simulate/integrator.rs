@@ -93,6 +93,7 @@ where
         Self: Sized,
     {
         check_period(t0, t_end, period)?;
+        refuse_unwatched_contacts(self.model())?;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         let mut held = state.clone();
         let sample = |k: usize| (t0 + k as f64 * period).min(t_end);
@@ -251,6 +252,7 @@ where
     where
         Self: Sized,
     {
+        refuse_unwatched_contacts(self.model())?;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         self.start(t0, state, t_end)?;
         recorder.record_initial(self.model(), t0, self.state());
@@ -442,4 +444,27 @@ where
     let names = integrator.sensitivity_names().to_vec();
     let solution = recorder.finish(integrator.stats())?;
     Ok(solution.with_sensitivities(names, columns))
+}
+
+/// A typed error if `model` declares unilateral constraints that the solve would not watch:
+/// the motion would pass through them.
+pub(crate) fn refuse_unwatched_contacts<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.unilateral_names();
+    if names.is_empty() {
+        return Ok(());
+    }
+    let list = names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ");
+    Err(SimError::InvalidOption {
+        what: "contacts",
+        reason: format!(
+            "the model declares the unilateral constraint(s) {list}, which this solve would not watch: \
+             its motion would pass through them. Solve with \
+             `solve_with_events(t0, &state, t_end, &sampling, &mut Events::new().contacts(&model), |_, _| \
+             ControlFlow::Continue(()))`, or, for the motion without them, with \
+             `Events::new().free_motion()`"
+        ),
+    })
 }

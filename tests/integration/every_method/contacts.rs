@@ -67,3 +67,43 @@ fn a_ball_bounces_on_its_declared_floor_under_every_method() {
         }
     });
 }
+
+/// A declared floor is never passed unannounced: a plain solve, a sampled-controller solve and
+/// a solve with events that watch nothing end at once in a typed error naming the floor and
+/// the two ways on; with `Events::free_motion()` the ball falls through it, as asked.
+#[test]
+fn no_solve_passes_through_a_declared_floor_unannounced() {
+    let ball = BouncingBall { m: 0.3, g: G, e: 0.8 };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let refused = |method: Method, result: Result<(), SimError>| match result {
+        Err(SimError::InvalidOption { what: "contacts", reason }) => {
+            assert!(
+                reason.contains("`floor`") && reason.contains("Events::new().contacts(&model)"),
+                "{reason}"
+            );
+            assert!(reason.contains("free_motion()"), "{reason}");
+        }
+        other => panic!("{method:?}: {other:?}"),
+    };
+    each_integrator!(&ball, Fineness::new(1e-8, 1e-8, 0.01), |method, integrator| {
+        refused(method, integrator.solve(0.0, &start, 1.0, &Sampling::Steps).map(|_| ()));
+        let sampled = integrator.solve_sampled(0.0, &start, 1.0, 0.1, &Sampling::Steps, |_, _, _| {});
+        refused(method, sampled.map(|_| ()));
+        let mut events = Events::new();
+        let watched_nothing =
+            integrator.solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut events, |_, _| {
+                ControlFlow::Continue(())
+            });
+        refused(method, watched_nothing.map(|_| ()));
+        // The opt-out: free fall through the floor, y = 1 − g t²/2 = −3.905 at t = 1.
+        let mut events = Events::new().free_motion();
+        let free = integrator
+            .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut events, |_, _| {
+                ControlFlow::Continue(())
+            })
+            .unwrap_or_else(|error| panic!("{method:?}: {error}"));
+        let y = *free.q(BouncingBall::Y).last().expect("samples");
+        assert!((y - (1.0 - 0.5 * G)).abs() < 1e-6, "{method:?}: {y}");
+    });
+}

@@ -87,7 +87,7 @@ fn the_pendulum_passes_below_its_pivot_after_a_quarter_period() {
 
 /// Events the model declares (`#[dirac(event(apex, falling) = v)]` on the ported ball): thrown
 /// up at `v0` from `y0`, the ball's apex is at `v0/g`, at the height `y0 + v0²/(2g)`; its
-/// floor, not watched here, is not reached.
+/// floor, watched, is not reached.
 #[test]
 fn declared_events_are_located_by_every_method() {
     let (y0, v0) = (1.0, 2.0);
@@ -95,7 +95,7 @@ fn declared_events_are_located_by_every_method() {
     let mut start = State::<PortedBall>::zeros();
     start.set_q(PortedBall::Y, y0).set_v(PortedBall::Y, v0).set_p(PortedBall::Y, 0.5 * v0);
     each_integrator!(&ball, Fineness::new(1e-12, 1e-12, 0.01), |method, integrator| {
-        let mut events = Events::new().declared();
+        let mut events = Events::new().declared().contacts(&ball);
         let solution = integrator
             .solve_with_events(0.0, &start, 0.5, &Sampling::Steps, &mut events, |_, _| {
                 ControlFlow::Continue(())

@@ -64,6 +64,9 @@ where
     /// The model's unilateral constraints, when watched ([`Events::contacts`]), and which
     /// of them each event function is.
     contacts: Option<Contacts>,
+    /// Whether the model's unilateral constraints are left unwatched on purpose
+    /// ([`Events::free_motion`]).
+    pub(crate) free_motion: bool,
     contact_of: Vec<Option<usize>>,
     /// The contact each release event function opens (in a companion whose contacts rest).
     release_of: Vec<Option<usize>>,
@@ -103,6 +106,7 @@ where
             inputs_moved: false,
             evaluations: 0,
             contacts: None,
+            free_motion: false,
             contact_of: Vec::new(),
             release_of: Vec::new(),
             reopened: Vec::new(),
@@ -195,6 +199,16 @@ where
         self
     }
 
+    /// Leaves the model's unilateral constraints unwatched: the motion passes through them as
+    /// if they were not there. Without it (or [`Events::contacts`]), a solve of a model that
+    /// declares unilateral constraints ends at once in [`SimError::InvalidOption`], and so
+    /// does a plain [`Integrator::solve`](crate::Integrator::solve): a declared wall never lets
+    /// a motion through unannounced.
+    pub fn free_motion(mut self) -> Self {
+        self.free_motion = true;
+        self
+    }
+
     /// Adds the model's unilateral constraints (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`), each
     /// an event of its own name when `φ` falls through zero. At such an event
     /// [`SolveWithEvents::solve_with_events`] applies the impact law before the action: the
@@ -213,6 +227,7 @@ where
     /// [`SimError::ContactCloses`]. An interconnection watches its subsystems' contacts, by
     /// dotted name (`ball.floor`).
     pub fn contacts(mut self, model: &M) -> Self {
+        self.free_motion = false;
         let contacts = Contacts::new(model);
         let k = contacts.names.len();
         for (j, name) in contacts.names.iter().enumerate() {

@@ -13,7 +13,7 @@ use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
+use crate::simulate::integrator::{Integrator, refuse_unwatched_contacts};
 use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::constraint_violation;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
@@ -118,6 +118,9 @@ where
         events: &mut Events<'_, M>,
         mut action: impl FnMut(&Event, &mut EventContext<'_, M, Self>) -> ControlFlow<()>,
     ) -> Result<Solution<M, Self::Stats>, SimError> {
+        if events.contacts.is_none() && !events.free_motion {
+            refuse_unwatched_contacts(self.model())?;
+        }
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         recorder.name_events(events.names());
         if let Some(contacts) = &events.contacts {
