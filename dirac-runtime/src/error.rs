@@ -55,7 +55,7 @@ pub enum SimError {
     /// An integration was started from a state that violates an algebraic equation.
     #[error(
         "the state at t = {t} violates the {equation} by {residual:e}: integrators start from consistent \
-         states (make one with `consistent_state`)"
+         states (make one with `consistent_state`, which also computes the momenta from the velocities)"
     )]
     StateNotConsistent {
         /// The start time.
@@ -191,7 +191,11 @@ pub enum SimError {
         residual: f64,
     },
     /// The step budget was exhausted.
-    #[error("more than {max_steps} steps before reaching t = {t_end} (stopped at t = {t})")]
+    #[error(
+        "more than {max_steps} steps before reaching t = {t_end} (stopped at t = {t}): raise `max_steps` in the \
+         method's options (`RadauOptions`, `ExplicitOptions`, `VariationalOptions`), or loosen the tolerances (take a larger \
+         step, with the variational integrator)"
+    )]
     TooManySteps {
         /// The budget.
         max_steps: usize,

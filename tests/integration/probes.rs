@@ -447,3 +447,47 @@ fn unusual_but_well_posed_models_run() {
         });
     });
 }
+
+/// Messages as a new user meets them: each says what is wrong in the user's words and what to
+/// do about it.
+#[test]
+fn messages_say_what_is_wrong_and_what_to_do() {
+    // A restitution outside [0, 1] names the range, not finiteness.
+    let ball = BouncingBall { m: 0.3, g: 9.81, e: 1.5 };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let mut events = dirac::Events::new().contacts(&ball);
+    let error = Radau::new(&ball, RadauOptions::default())
+        .expect("valid")
+        .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut events, |_, _| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .expect_err("refused at the first impact")
+        .to_string();
+    assert!(error.contains("restitution of `floor` is 1.5: it must lie in [0, 1]"), "{error}");
+    assert!(!error.contains("finite"), "{error}");
+
+    // The step budget names the option that raises it.
+    let pendulum = unit_pendulum();
+    let q = VecQ::<Pendulum>::from([1f64.sin(), -1f64.cos()]);
+    let start = consistent_state(&pendulum, 0.0, &q, &VecQ::<Pendulum>::zeros(), Consistency::default())
+        .expect("consistent");
+    let options = RadauOptions { max_steps: 5, ..RadauOptions::default() };
+    let error = Radau::new(&pendulum, options)
+        .expect("valid")
+        .solve(0.0, &start, 10.0, &Sampling::Steps)
+        .expect_err("out of steps")
+        .to_string();
+    assert!(error.contains("raise `max_steps`") && error.contains("RadauOptions"), "{error}");
+
+    // A momentum that disagrees with the velocity says so, and how to make a consistent start.
+    let mut wrong = start.clone();
+    wrong.p[0] += 1.0;
+    let error = Radau::new(&pendulum, RadauOptions::default())
+        .expect("valid")
+        .solve(0.0, &wrong, 1.0, &Sampling::Steps)
+        .expect_err("inconsistent")
+        .to_string();
+    assert!(error.contains("the momentum of `x` does not match its velocity"), "{error}");
+    assert!(error.contains("consistent_state"), "{error}");
+}

@@ -203,7 +203,13 @@ where
     let p_scale = 1.0 + state.p.amax().max(dl_dv.amax());
     let gap = state.p.iter().zip(dl_dv.iter()).map(|(p, l)| p - l);
     if let Some((i, r)) = worst(gap).filter(|(_, r)| *r > tolerance * p_scale) {
-        return Some((format!("Legendre map p = ∂L/∂v of `{}`", model.coordinate_names()[i]), r));
+        let name = &model.coordinate_names()[i];
+        return Some((
+            format!(
+                "Legendre map p = ∂L/∂v of `{name}` (the momentum of `{name}` does not match its velocity)"
+            ),
+            r,
+        ));
     }
     None
 }

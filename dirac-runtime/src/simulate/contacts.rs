@@ -89,9 +89,13 @@ impl Contacts {
         for &j in closing {
             let e = self.restitution[j];
             if !(0.0..=1.0).contains(&e) {
-                return Err(SimError::InvalidParameter {
-                    name: format!("restitution of `{}` (it must lie in [0, 1])", self.names[j]),
-                    value: e,
+                return Err(SimError::InvalidOption {
+                    what: "restitution",
+                    reason: format!(
+                        "the coefficient of restitution of `{}` is {e}: it must lie in [0, 1] (0 a plastic \
+                         impact, 1 an elastic one)",
+                        self.names[j]
+                    ),
                 });
             }
         }
