@@ -59,14 +59,14 @@ extern crate self as dirac;
 
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
-    Algebra, Capability, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel, DenseOutput,
-    Derivation, Dimensions, DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event, EventContext,
-    Events, Explicit, ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input, InputsOutputs,
-    Integrator, JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ, MatYY, Membership,
-    Named, Names, OperationCounts, Output, Parameters, Radau, RadauOptions, RadauStats, ResidualBlocks,
-    Sampling, Sensitivities, SimError, Sizes, Slot, Solution, SolveWithEvents, SparseJacobian, State,
-    Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH, VecK, VecQ, VecY, Wrt,
-    consistent_state, linearize,
+    Algebra, Basis, Capability, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel,
+    DenseOutput, Derivation, Dimensions, DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event,
+    EventContext, Events, Explicit, ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input,
+    InputsOutputs, Integrator, JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ,
+    MatYY, Membership, Named, Names, OperationCounts, Output, Parameters, Radau, RadauOptions, RadauStats,
+    ResidualBlocks, Sampling, Sensitivities, SimError, Sizes, Slot, Solution, SolveWithEvents,
+    SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH, VecK,
+    VecQ, VecY, Wrt, consistent_state, linearize,
 };
 
 /// The linear-algebra crate dirac is built on, re-exported so that generic code over models

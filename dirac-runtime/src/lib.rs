@@ -48,7 +48,7 @@ pub mod simulate;
 pub use algebra::{Algebra, Dense};
 pub use analysis::dirac_structure::{DiracStructure, Membership};
 pub use analysis::init::{Consistency, consistent_state};
-pub use analysis::linear::{Linearization, linearize};
+pub use analysis::linear::{Basis, Linearization, linearize};
 pub use error::{Capability, SimError};
 pub use methods::explicit::{Explicit, ExplicitOptions, ExplicitStats};
 pub use methods::radau::{DenseOutput, ErrorNorm, Radau, RadauOptions, RadauStats};

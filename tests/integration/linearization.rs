@@ -262,3 +262,73 @@ fn a_sparse_model_is_refused_by_name() {
     assert!(matches!(&error, SimError::InvalidOption { what: "linearize", .. }), "{error}");
     assert!(error.to_string().contains("dense"), "{error}");
 }
+
+/// The cart-pole in Cartesian coordinates: the cart at `x`, the bob at `(bx, by)` on a rod of
+/// length `l` from the cart, the force `u` on the cart.
+#[derive(LagrangeDirac, Clone)]
+#[dirac(coordinates(x => vx, bx => vbx, by => vby), input(u), output(cart) = x)]
+#[dirac(lagrangian = 0.5 * mc * vx * vx + 0.5 * mp * (vbx * vbx + vby * vby) - mp * g * by)]
+#[dirac(force(x) = u, holonomic(rod) = (bx - x) * (bx - x) + by * by - l * l)]
+struct CartesianCartPole {
+    mc: f64,
+    mp: f64,
+    l: f64,
+    g: f64,
+    u: f64,
+}
+
+#[test]
+fn linearize_in_named_coordinates_gives_the_textbook_matrices() {
+    // By hand, upright in (x, bx), s = bx − x: by = √(l² − s²) ≈ l − s²/(2l), so the
+    // potential is mp g l − mp g s²/(2l) and the kinetic energy ½ mc ẋ² + ½ mp ḃx² to second
+    // order: mc ẍ = u − (mp g/l)(bx − x), mp b̈x = (mp g/l)(bx − x).
+    let (mc, mp, l, g) = (1.5, 0.4, 0.6, 9.81);
+    let cartesian = CartesianCartPole { mc, mp, l, g, u: 0.0 };
+    let up = at_rest(&cartesian, &[0.2, 0.2, l]);
+    let lin = linearize(&cartesian, 0.0, &up)
+        .expect("an equilibrium")
+        .in_coordinates(&cartesian, &[CartesianCartPole::X, CartesianCartPole::BX])
+        .expect("they parametrise the rod");
+    let (k1, k2) = (mp * g / (mc * l), g / l);
+    #[rustfmt::skip]
+    let a = DMatrix::from_row_slice(4, 4, &[
+        0.0, 0.0, 1.0, 0.0,
+        0.0, 0.0, 0.0, 1.0,
+        k1, -k1, 0.0, 0.0,
+        -k2, k2, 0.0, 0.0,
+    ]);
+    assert_close(&lin.a, &a, 1e-10);
+    assert_close(&lin.b, &DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 1.0 / mc, 0.0]), 1e-10);
+    assert_close(&lin.c, &DMatrix::from_row_slice(1, 4, &[1.0, 0.0, 0.0, 0.0]), 1e-10);
+    assert_eq!(lin.basis, dirac::Basis::Coordinates(vec!["x".into(), "bx".into()]));
+    // δq from the named coordinates: by does not move to first order.
+    assert_close(&lin.positions, &DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 1.0, 0.0, 0.0]), 1e-10);
+
+    // The angle form of the same machine: the same eigenvalues and the same transfer
+    // function from the force to the cart's position, G(s) = C (sI − A)⁻¹ B.
+    let angle = CartPole { mc, mp, l, g, u: 0.0 };
+    let polar = linearize(&angle, 0.0, &at_rest(&angle, &[0.2, 0.0])).expect("an equilibrium");
+    let sorted = |a: &DMatrix<f64>| {
+        let mut e: Vec<(f64, f64)> = a.complex_eigenvalues().iter().map(|z| (z.re, z.im)).collect();
+        e.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.total_cmp(&y.1)));
+        e
+    };
+    for (x, y) in sorted(&lin.a).iter().zip(sorted(&polar.a)) {
+        assert!((x.0 - y.0).abs() < 1e-6 && (x.1 - y.1).abs() < 1e-6, "{x:?} against {y:?}");
+    }
+    let transfer = |lin: &dirac::Linearization, s: f64| {
+        let resolvent = (DMatrix::identity(4, 4) * s - &lin.a).try_inverse().expect("s is no eigenvalue");
+        (lin.c.rows(0, 1) * resolvent * &lin.b)[(0, 0)]
+    };
+    for s in [0.5, 1.7, 3.1, -2.2, 10.0] {
+        let (g1, g2) = (transfer(&lin, s), transfer(&polar, s));
+        assert!((g1 - g2).abs() < 1e-10 * (1.0 + g2.abs()), "G({s}) = {g1} against {g2}");
+    }
+
+    // Coordinates that do not parametrise the rod (the bob's height at the top) are refused.
+    let error = linearize(&cartesian, 0.0, &up)
+        .expect("an equilibrium")
+        .in_coordinates(&cartesian, &[CartesianCartPole::X, CartesianCartPole::BY])
+        .expect_err("the height is fixed to first order");
+    assert!(error.to_string().contains("do not parametrise"), "{error}");
+}

@@ -21,9 +21,10 @@ use crate::algebra::Algebra;
 use crate::analysis::diagnose::violated_equation;
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+use crate::model::keys::Coordinate;
 use crate::model::state::State;
-use crate::model::{InputsOutputs, LagrangeDirac, check_parameters};
-use crate::shape::dims::Storage;
+use crate::model::{InputsOutputs, LagrangeDirac, Named, check_parameters};
+use crate::shape::dims::{Dimensions, Storage};
 
 /// A linear model `δẋ = A δx + B δu`, `δy = C δx + D δu` about an equilibrium, in minimal
 /// coordinates: `x = (δz, δw)` with `δq = positions · δz` and `δv = velocities · δw`.
@@ -43,12 +44,106 @@ pub struct Linearization {
     /// An orthonormal basis of the velocities all constraints allow (`n × (n − m)`; the
     /// identity without constraints).
     pub velocities: DMatrix<f64>,
+    /// What the state's components are.
+    pub basis: Basis,
+}
+
+/// The coordinates a [`Linearization`]'s state is expressed in.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Basis {
+    /// `x = (δz, δw)`, coordinates along the orthonormal bases
+    /// [`Linearization::positions`] and [`Linearization::velocities`] of the directions the
+    /// constraints allow (the model's own coordinates when it has no constraints).
+    Orthonormal,
+    /// `x = (δq_s, δv_s)`: the displacements and velocities of these coordinates of the model,
+    /// by name ([`Linearization::in_coordinates`]).
+    Coordinates(Vec<String>),
 }
 
 impl Linearization {
     /// The number of position coordinates `δz`; the velocity coordinates `δw` follow them.
     pub fn positions_count(&self) -> usize {
         self.positions.ncols()
+    }
+
+    /// The same linear model with its state expressed in coordinates of the model's own choosing:
+    /// `x = (δq_s, δv_s)` for the coordinates `coordinates`, which must be as many as the
+    /// constraints leave free and parametrise the constraints near the equilibrium (a cart's
+    /// position and a pendulum bob's horizontal position, not its height at the top). Then
+    /// `A`, `B`, `C` are the textbook matrices in those coordinates, the eigenvalues and
+    /// transfer functions unchanged; `positions` and `velocities` give the full `δq`, `δv`
+    /// from them. For models whose constraints are all holonomic.
+    /// The guide's section on linearisation has an example.
+    pub fn in_coordinates<M: Named + Dimensions>(
+        &self,
+        model: &M,
+        coordinates: &[Coordinate<M>],
+    ) -> Result<Linearization, SimError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let names = model.coordinate_names();
+        let chosen: Vec<String> = coordinates.iter().map(|c| names[c.index()].clone()).collect();
+        let (nz, nw) = (self.positions.ncols(), self.velocities.ncols());
+        if nz != nw {
+            return Err(SimError::InvalidOption {
+                what: "coordinates",
+                reason: format!(
+                    "the constraints leave {nz} positions but {nw} velocities free: named coordinates \
+                     need constraints that are all holonomic"
+                ),
+            });
+        }
+        if coordinates.len() != nz {
+            return Err(SimError::InvalidOption {
+                what: "coordinates",
+                reason: format!(
+                    "{} named ({}), but the constraints leave {nz} free: name {nz}",
+                    coordinates.len(),
+                    chosen.join(", ")
+                ),
+            });
+        }
+        // δq_s = S N_h δz and δv_s = S N δw: both invertible where the coordinates
+        // parametrise the constraints.
+        let select =
+            |basis: &DMatrix<f64>| DMatrix::from_fn(nz, nz, |i, j| basis[(coordinates[i].index(), j)]);
+        let (p, q) = (select(&self.positions), select(&self.velocities));
+        let not_parametrising = || SimError::InvalidOption {
+            what: "coordinates",
+            reason: format!(
+                "the coordinates {} do not parametrise the constraints at this equilibrium (the constraints \
+                 fix them to first order): choose others",
+                chosen.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+            ),
+        };
+        let conditioned = |m: &DMatrix<f64>| {
+            let singular = m.singular_values();
+            singular.min() > 1e-10 * singular.max().max(f64::MIN_POSITIVE)
+        };
+        if nz > 0 && !(conditioned(&p) && conditioned(&q)) {
+            return Err(not_parametrising());
+        }
+        let (p_inverse, q_inverse) = (
+            p.clone().try_inverse().ok_or_else(not_parametrising)?,
+            q.clone().try_inverse().ok_or_else(not_parametrising)?,
+        );
+        let n = nz + nw;
+        let mut t = DMatrix::zeros(n, n);
+        let mut t_inverse = DMatrix::zeros(n, n);
+        t.view_mut((0, 0), (nz, nz)).copy_from(&p);
+        t.view_mut((nz, nz), (nw, nw)).copy_from(&q);
+        t_inverse.view_mut((0, 0), (nz, nz)).copy_from(&p_inverse);
+        t_inverse.view_mut((nz, nz), (nw, nw)).copy_from(&q_inverse);
+        Ok(Linearization {
+            a: &t * &self.a * &t_inverse,
+            b: &t * &self.b,
+            c: &self.c * &t_inverse,
+            d: self.d.clone(),
+            positions: &self.positions * p_inverse,
+            velocities: &self.velocities * q_inverse,
+            basis: Basis::Coordinates(chosen),
+        })
     }
 }
 
@@ -123,7 +218,16 @@ where
     let mut output_matrix = DMatrix::zeros(ny, nz + nw);
     output_matrix.view_mut((0, 0), (ny, nz)).copy_from(&(&yq * &positions));
     output_matrix.view_mut((0, nz), (ny, nw)).copy_from(&(&yv * &velocities));
-    Ok(Linearization { a: state_matrix, b: input_matrix, c: output_matrix, d: yu, positions, velocities })
+    let basis = Basis::Orthonormal;
+    Ok(Linearization {
+        a: state_matrix,
+        b: input_matrix,
+        c: output_matrix,
+        d: yu,
+        positions,
+        velocities,
+        basis,
+    })
 }
 
 /// An orthonormal basis of `ker rows` in `R^n`: the identity when there are no rows.
