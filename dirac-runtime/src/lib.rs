@@ -103,7 +103,7 @@ pub mod __private {
     };
     pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};
-    pub use crate::model::names::{Names, ResolveError, Resolved, Subsystem};
+    pub use crate::model::names::{Message, Names, ResolveError, Resolved, Subsystem};
     pub use crate::model::sparse::SparseJacobian;
     pub use crate::model::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
     pub use crate::model::{

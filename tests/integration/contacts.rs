@@ -275,7 +275,8 @@ fn bad_contacts_end_in_typed_errors() {
         .solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut Events::new().contacts(&springy), go_on)
         .expect_err("a restitution above 1");
     assert!(
-        matches!(&error, SimError::InvalidParameter { name, value } if name.contains("`floor`") && *value == 1.5),
+        matches!(&error, SimError::InvalidOption { what: "restitution", reason }
+            if reason.contains("`floor` is 1.5") && reason.contains("[0, 1]")),
         "{error:?}"
     );
 }

@@ -122,12 +122,15 @@ impl CompositeModel {
             let rest = &r.path[1..];
             let dotted = r.dotted();
             let (sub, last) = (&r.path[..r.path.len() - 1].join("."), rest.last().expect("a member path"));
-            let unknown_field = message(&format!("`{dotted}`: `{sub}` has no subsystem `{}`", rest[0]));
-            let unknown = if r.port {
-                message(&format!("`{last}` is not a coordinate of `{sub}`"))
+            // The field that does not resolve is the first of `rest` a subsystem lacks; the
+            // message names the path as written and suggests the nearest name there.
+            let unknown_field =
+                Literal::string(&format!("`{dotted}`: `{sub}` has no subsystem `{}`", rest[0]));
+            let unknown = Literal::string(&if r.port {
+                format!("`{last}` is not a coordinate of `{sub}`")
             } else {
-                message(&format!("`{last}` is not a coordinate or velocity of `{sub}`"))
-            };
+                format!("`{last}` is not a coordinate or velocity of `{sub}`")
+            });
             let checks = if r.port {
                 let velocity = message(&format!(
                     "`{dotted}` is a velocity; `connect` joins ports, named by their coordinates"
@@ -151,6 +154,18 @@ impl CompositeModel {
             let span = last_span(&r.tokens);
             let name = proc_macro2::Ident::new(&format!("__R{k}"), span);
             let resolve = quote! { <#ty as #p::Named>::NAMES.resolve(&[#(#rest),*]) };
+            let suggest = quote! { <#ty as #p::Named>::NAMES.suggest(&[#(#rest),*]) };
+            let at = last_span(&r.tokens);
+            let explained = |text: &Literal| {
+                quote_spanned! {at=> {
+                    const MESSAGE: #p::Message<512> = match #suggest {
+                        ::core::option::Option::Some(name) => #p::Message::new(&[#text, "; did you mean `", name, "`?"]),
+                        ::core::option::Option::None => #p::Message::new(&[#text]),
+                    };
+                    ::core::panic!("{}", MESSAGE.as_str())
+                }}
+            };
+            let (unknown_field, unknown) = (explained(&unknown_field), explained(&unknown));
             // The member itself never fails to evaluate (a placeholder stands in for a name that
             // does not resolve), so the one error is the check's, with no note from the
             // constants that use the member.
@@ -163,8 +178,8 @@ impl CompositeModel {
                 };
                 const _: () = match #resolve {
                     ::core::result::Result::Ok(r) => { #checks }
-                    ::core::result::Result::Err(#p::ResolveError::UnknownField) => ::core::panic!(#unknown_field),
-                    ::core::result::Result::Err(#p::ResolveError::UnknownName) => ::core::panic!(#unknown),
+                    ::core::result::Result::Err(#p::ResolveError::UnknownField) => #unknown_field,
+                    ::core::result::Result::Err(#p::ResolveError::UnknownName) => #unknown,
                 };
             });
             let ok = if r.port {

@@ -90,10 +90,48 @@ const _: () = {
             }
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
-            ::core::panic!("`left.x2`: `left` has no subsystem `x2`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Primitive1 as ::dirac::__private::Named>::NAMES
+                .suggest(&["x2"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`left.x2`: `left` has no subsystem `x2`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`left.x2`: `left` has no subsystem `x2`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
-            ::core::panic!("`x2` is not a coordinate of `left`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Primitive1 as ::dirac::__private::Named>::NAMES
+                .suggest(&["x2"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`x2` is not a coordinate of `left`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`x2` is not a coordinate of `left`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
     };
     const __R1: ::dirac::__private::Resolved = match <Primitive2 as ::dirac::__private::Named>::NAMES
@@ -130,10 +168,48 @@ const _: () = {
             }
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
-            ::core::panic!("`right.x2bar`: `right` has no subsystem `x2bar`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Primitive2 as ::dirac::__private::Named>::NAMES
+                .suggest(&["x2bar"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`right.x2bar`: `right` has no subsystem `x2bar`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`right.x2bar`: `right` has no subsystem `x2bar`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
-            ::core::panic!("`x2bar` is not a coordinate of `right`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Primitive2 as ::dirac::__private::Named>::NAMES
+                .suggest(&["x2bar"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`x2bar` is not a coordinate of `right`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`x2bar` is not a coordinate of `right`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
     };
     /// Whether every member resolved to what its use needs: the checks that depend on the

@@ -80,10 +80,48 @@ const _: () = {
             let _ = r;
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
-            ::core::panic!("`wheel.theta`: `wheel` has no subsystem `theta`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Wheel as ::dirac::__private::Named>::NAMES
+                .suggest(&["theta"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`wheel.theta`: `wheel` has no subsystem `theta`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`wheel.theta`: `wheel` has no subsystem `theta`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
-            ::core::panic!("`theta` is not a coordinate or velocity of `wheel`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Wheel as ::dirac::__private::Named>::NAMES
+                .suggest(&["theta"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`theta` is not a coordinate or velocity of `wheel`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`theta` is not a coordinate or velocity of `wheel`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
     };
     const __R1: ::dirac::__private::Resolved = match <Wheel as ::dirac::__private::Named>::NAMES
@@ -110,10 +148,48 @@ const _: () = {
             let _ = r;
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
-            ::core::panic!("`wheel.v_theta`: `wheel` has no subsystem `v_theta`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Wheel as ::dirac::__private::Named>::NAMES
+                .suggest(&["v_theta"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`wheel.v_theta`: `wheel` has no subsystem `v_theta`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`wheel.v_theta`: `wheel` has no subsystem `v_theta`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
-            ::core::panic!("`v_theta` is not a coordinate or velocity of `wheel`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Wheel as ::dirac::__private::Named>::NAMES
+                .suggest(&["v_theta"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`v_theta` is not a coordinate or velocity of `wheel`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`v_theta` is not a coordinate or velocity of `wheel`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
     };
     const __R2: ::dirac::__private::Resolved = match <Cart as ::dirac::__private::Named>::NAMES
@@ -139,10 +215,48 @@ const _: () = {
             let _ = r;
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
-            ::core::panic!("`cart.x`: `cart` has no subsystem `x`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Cart as ::dirac::__private::Named>::NAMES
+                .suggest(&["x"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`cart.x`: `cart` has no subsystem `x`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`cart.x`: `cart` has no subsystem `x`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
-            ::core::panic!("`x` is not a coordinate or velocity of `cart`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Cart as ::dirac::__private::Named>::NAMES
+                .suggest(&["x"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`x` is not a coordinate or velocity of `cart`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`x` is not a coordinate or velocity of `cart`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
     };
     const __R3: ::dirac::__private::Resolved = match <Cart as ::dirac::__private::Named>::NAMES
@@ -168,10 +282,48 @@ const _: () = {
             let _ = r;
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownField) => {
-            ::core::panic!("`cart.v_x`: `cart` has no subsystem `v_x`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Cart as ::dirac::__private::Named>::NAMES
+                .suggest(&["v_x"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`cart.v_x`: `cart` has no subsystem `v_x`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`cart.v_x`: `cart` has no subsystem `v_x`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
         ::core::result::Result::Err(::dirac::__private::ResolveError::UnknownName) => {
-            ::core::panic!("`v_x` is not a coordinate or velocity of `cart`")
+            const MESSAGE: ::dirac::__private::Message<512> = match <Cart as ::dirac::__private::Named>::NAMES
+                .suggest(&["v_x"])
+            {
+                ::core::option::Option::Some(name) => {
+                    ::dirac::__private::Message::new(
+                        &[
+                            "`v_x` is not a coordinate or velocity of `cart`",
+                            "; did you mean `",
+                            name,
+                            "`?",
+                        ],
+                    )
+                }
+                ::core::option::Option::None => {
+                    ::dirac::__private::Message::new(
+                        &["`v_x` is not a coordinate or velocity of `cart`"],
+                    )
+                }
+            };
+            ::core::panic!("{}", MESSAGE.as_str())
         }
     };
     /// Whether every member resolved to what its use needs: the checks that depend on the

@@ -78,6 +78,115 @@ pub enum ResolveError {
     UnknownName,
 }
 
+/// `best`, or `candidate` if it is nearer to `name` and near enough to be a typo of it.
+const fn closer(
+    best: Option<(&'static str, usize)>,
+    name: &str,
+    candidate: &'static str,
+) -> Option<(&'static str, usize)> {
+    let Some(d) = edit_distance(name.as_bytes(), candidate.as_bytes()) else {
+        return best;
+    };
+    let limit = if name.len() / 3 > 1 { name.len() / 3 } else { 1 };
+    if d > limit || d >= name.len() {
+        return best;
+    }
+    match best {
+        Some((_, b)) if b <= d => best,
+        _ => Some((candidate, d)),
+    }
+}
+
+/// The edit distance between two names of at most 64 bytes (`None` for longer ones), in a
+/// `const fn`.
+const fn edit_distance(a: &[u8], b: &[u8]) -> Option<usize> {
+    if a.len() > 64 || b.len() > 64 {
+        return None;
+    }
+    let mut previous = [0usize; 65];
+    let mut current = [0usize; 65];
+    let mut j = 0;
+    while j <= b.len() {
+        previous[j] = j;
+        j += 1;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        current[0] = i + 1;
+        let mut j = 0;
+        while j < b.len() {
+            let cost = if a[i] == b[j] { 0 } else { 1 };
+            let mut best = previous[j] + cost;
+            if previous[j + 1] + 1 < best {
+                best = previous[j + 1] + 1;
+            }
+            if current[j] + 1 < best {
+                best = current[j] + 1;
+            }
+            current[j + 1] = best;
+            j += 1;
+        }
+        previous = current;
+        i += 1;
+    }
+    Some(previous[b.len()])
+}
+
+/// A message assembled from parts in a `const` item (where `format!` is not available), for a
+/// compile-time error: `Message::<256>::new(&["`", name, "` is unknown"]).as_str()`.
+pub struct Message<const N: usize> {
+    bytes: [u8; N],
+    len: usize,
+}
+
+impl<const N: usize> Message<N> {
+    /// The parts one after the other, cut at `N` bytes (on a character boundary).
+    pub const fn new(parts: &[&str]) -> Self {
+        let mut bytes = [0u8; N];
+        let mut len = 0;
+        let mut i = 0;
+        while i < parts.len() {
+            let part = parts[i].as_bytes();
+            let mut j = 0;
+            while j < part.len() && len < N {
+                bytes[len] = part[j];
+                len += 1;
+                j += 1;
+            }
+            i += 1;
+        }
+        // A character cut at the end is dropped whole.
+        if len > 0 {
+            let mut start = len - 1;
+            while start > 0 && (bytes[start] & 0xC0) == 0x80 {
+                start -= 1;
+            }
+            let lead = bytes[start];
+            let width = if lead < 0x80 {
+                1
+            } else if lead >= 0xF0 {
+                4
+            } else if lead >= 0xE0 {
+                3
+            } else {
+                2
+            };
+            if start + width > len {
+                len = start;
+            }
+        }
+        Message { bytes, len }
+    }
+
+    /// The message.
+    pub const fn as_str(&self) -> &str {
+        match core::str::from_utf8(self.bytes.split_at(self.len).0) {
+            Ok(text) => text,
+            Err(_) => "a name does not resolve",
+        }
+    }
+}
+
 const fn str_eq(a: &str, b: &str) -> bool {
     let (a, b) = (a.as_bytes(), b.as_bytes());
     if a.len() != b.len() {
@@ -150,6 +259,61 @@ impl Names {
             return Ok(Resolved { velocity: true, index: offset + i, port: contains(names.ports, i) });
         }
         Err(ResolveError::UnknownName)
+    }
+
+    /// The name closest to the misspelt last segment of `path` (a field of the subsystem, when
+    /// that is what is unknown; a coordinate or velocity of the subsystem named by the rest of
+    /// the path otherwise), if it is close enough to be a typo: the same rule as the derive's
+    /// other suggestions (an edit distance of at most a third of the name's length). Usable in
+    /// `const` items, where an interconnection's names are resolved.
+    pub const fn suggest(&'static self, path: &[&str]) -> Option<&'static str> {
+        let mut names = self;
+        let mut depth = 0;
+        while depth + 1 < path.len() {
+            let mut found = None;
+            let mut i = 0;
+            while i < names.subsystems.len() {
+                if str_eq(names.subsystems[i].field, path[depth]) {
+                    found = Some(&names.subsystems[i]);
+                }
+                i += 1;
+            }
+            match found {
+                Some(sub) => names = sub.names,
+                None => {
+                    // The field at this depth is what is unknown.
+                    let mut best: Option<(&'static str, usize)> = None;
+                    let mut i = 0;
+                    while i < names.subsystems.len() {
+                        best = closer(best, path[depth], names.subsystems[i].field);
+                        i += 1;
+                    }
+                    return match best {
+                        Some((name, _)) => Some(name),
+                        None => None,
+                    };
+                }
+            }
+            depth += 1;
+        }
+        let Some(last) = path.last() else {
+            return None;
+        };
+        let mut best: Option<(&'static str, usize)> = None;
+        let mut i = 0;
+        while i < names.coordinates.len() {
+            best = closer(best, last, names.coordinates[i]);
+            i += 1;
+        }
+        let mut i = 0;
+        while i < names.velocities.len() {
+            best = closer(best, last, names.velocities[i]);
+            i += 1;
+        }
+        match best {
+            Some((name, _)) => Some(name),
+            None => None,
+        }
     }
 
     /// The number of inputs of the model and its subsystems, at any depth. Usable in `const`
