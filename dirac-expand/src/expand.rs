@@ -7,7 +7,7 @@ use syn::DeriveInput;
 use crate::ast::Model;
 use crate::blocks::Blocks;
 use crate::check::check;
-use crate::codegen::signatures::{REQUIRED, fixed_storage, rt};
+use crate::codegen::signatures::{REQUIRED, fixed_storage, rt, solve_with_contacts};
 use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
 use crate::equations::equations;
@@ -177,6 +177,7 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
 
 fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -> TokenStream {
     let p = rt();
+    let solve_with_contacts = solve_with_contacts();
     let Analysed { mut sym, blocks, pattern, unknowns } = analysed;
     let ident = model.ident;
     let Generated { methods, inputs_outputs, hybrid, parameters: parameter_methods, sparse, counts } =
@@ -229,6 +230,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
 
                 #parameters
                 #methods
+                #solve_with_contacts
             }
 
             #[automatically_derived]

@@ -96,6 +96,7 @@ pub use nalgebra;
 #[doc(hidden)]
 pub mod __private {
     pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
+    pub use crate::error::SimError;
     pub use crate::model::Named;
     pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
     pub use crate::model::assemble::{
@@ -105,6 +106,7 @@ pub mod __private {
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};
     pub use crate::model::names::{Message, Names, ResolveError, Resolved, Subsystem};
     pub use crate::model::sparse::SparseJacobian;
+    pub use crate::model::state::State;
     pub use crate::model::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
     pub use crate::model::{
         DenseModel, Derivation, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
@@ -112,6 +114,9 @@ pub mod __private {
     };
     pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
+    pub use crate::simulate::events::{Events, SolveWithEvents};
+    pub use crate::simulate::integrator::Integrator;
+    pub use crate::simulate::solution::{Sampling, Solution};
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;
 

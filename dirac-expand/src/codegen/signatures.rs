@@ -10,6 +10,35 @@ pub fn rt() -> TokenStream {
     quote! { ::dirac::__private }
 }
 
+/// The `LagrangeDirac` item that lets a plain `solve` watch a model's unilateral constraints:
+/// `solve_with_events` with `Events::new().contacts(model)`, which needs the `Hybrid` impl the
+/// derives also emit (the runtime calls it only for models that declare such constraints).
+pub fn solve_with_contacts() -> TokenStream {
+    let p = rt();
+    quote! {
+        fn __solve_with_contacts<I: #p::Integrator<Self>>(
+            integrator: &mut I,
+            t0: ::core::primitive::f64,
+            state: &#p::State<Self>,
+            t_end: ::core::primitive::f64,
+            sampling: &#p::Sampling,
+        ) -> ::core::option::Option<
+            ::core::result::Result<#p::Solution<Self, <I as #p::Integrator<Self>>::Stats>, #p::SimError>,
+        > {
+            let mut events = #p::Events::new().contacts(#p::Integrator::model(integrator));
+            ::core::option::Option::Some(#p::SolveWithEvents::solve_with_events(
+                integrator,
+                t0,
+                state,
+                t_end,
+                sampling,
+                &mut events,
+                |_, _| ::core::ops::ControlFlow::Continue(()),
+            ))
+        }
+    }
+}
+
 /// The items of a `LagrangeDirac` impl for a model whose sizes are fixed when it compiles:
 /// dense storage on the stack, the sizes `sizes` (an expression of type `Sizes`).
 pub fn fixed_storage(sizes: &TokenStream) -> TokenStream {

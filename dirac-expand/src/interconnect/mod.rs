@@ -28,7 +28,7 @@ use self::emit::Own;
 use self::items::{Targets, equations, inherent_items, names};
 use self::methods::{Methods, methods};
 use self::model::CompositeModel;
-use crate::codegen::signatures::rt;
+use crate::codegen::signatures::{rt, solve_with_contacts};
 use crate::ctxt::Ctxt;
 use crate::expand::stub_impls;
 
@@ -134,6 +134,7 @@ fn implementation(
     linearity: TokenStream,
 ) -> TokenStream {
     let p = rt();
+    let solve_with_contacts = solve_with_contacts();
     let ident = composite.ident;
     let own = Own { model, blocks };
     let layout = layout(composite, model.rows.len());
@@ -170,6 +171,7 @@ fn implementation(
             impl #p::LagrangeDirac for #ident #bounds {
                 #consts
                 #core
+                #solve_with_contacts
             }
 
             #[automatically_derived]

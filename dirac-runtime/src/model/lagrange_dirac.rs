@@ -235,6 +235,23 @@ where
         self.jacobian(t, y, &mut out);
         out
     }
+
+    /// A plain [`Integrator::solve`](crate::Integrator::solve) of a model that declares
+    /// unilateral constraints, with them watched: `solve_with_events` and
+    /// `Events::new().contacts(model)`, which the [`Hybrid`](crate::model::Hybrid) capability
+    /// allows and the plain solve's bounds do not name. The derives implement it; `None` from a
+    /// model that cannot, which the solve then refuses.
+    #[doc(hidden)]
+    fn __solve_with_contacts<I: crate::simulate::integrator::Integrator<Self>>(
+        integrator: &mut I,
+        t0: f64,
+        state: &State<Self>,
+        t_end: f64,
+        sampling: &crate::simulate::solution::Sampling,
+    ) -> Option<Result<crate::simulate::solution::Solution<Self, I::Stats>, crate::error::SimError>> {
+        let _ = (integrator, t0, state, t_end, sampling);
+        None
+    }
 }
 
 /// A model of fixed size with dense storage on the stack: every model `#[derive(LagrangeDirac)]`

@@ -224,7 +224,10 @@ where
         record_with_sensitivities(self, t0, state, t_end, sampling)
     }
 
-    /// Integrates from `state` at `t0` to `t_end`, recording samples as `sampling` says.
+    /// Integrates from `state` at `t0` to `t_end`, recording samples as `sampling` says. A model
+    /// that declares unilateral constraints (`unilateral(...)`) is integrated with them watched,
+    /// as [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events)
+    /// with [`Events::contacts`](crate::Events::contacts) does: its impacts are in the solution.
     fn solve(
         &mut self,
         t0: f64,
@@ -235,6 +238,12 @@ where
     where
         Self: Sized,
     {
+        // A model with unilateral constraints is solved with them watched.
+        if !self.model().unilateral_names().is_empty()
+            && let Some(solution) = M::__solve_with_contacts(self, t0, state, t_end, sampling)
+        {
+            return solution;
+        }
         self.solve_observed(t0, state, t_end, sampling, |_, _| ControlFlow::Continue(()))
     }
 
@@ -461,7 +470,7 @@ where
         what: "contacts",
         reason: format!(
             "the model declares the unilateral constraint(s) {list}, which this solve would not watch: \
-             its motion would pass through them. Solve with \
+             its motion would pass through them. Solve with `solve` (which watches them), or with \
              `solve_with_events(t0, &state, t_end, &sampling, &mut Events::new().contacts(&model), |_, _| \
              ControlFlow::Continue(()))`, or, for the motion without them, with \
              `Events::new().free_motion()`"

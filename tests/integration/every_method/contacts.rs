@@ -68,9 +68,10 @@ fn a_ball_bounces_on_its_declared_floor_under_every_method() {
     });
 }
 
-/// A declared floor is never passed unannounced: a plain solve, a sampled-controller solve and
-/// a solve with events that watch nothing end at once in a typed error naming the floor and
-/// the two ways on; with `Events::free_motion()` the ball falls through it, as asked.
+/// A declared floor is never passed unannounced: a plain solve watches it (the ball bounces
+/// off it), a sampled-controller solve, an observed solve and a solve with events that watch
+/// nothing end at once in a typed error naming the floor and the two ways on; with
+/// `Events::free_motion()` the ball falls through it, as asked.
 #[test]
 fn no_solve_passes_through_a_declared_floor_unannounced() {
     let ball = BouncingBall { m: 0.3, g: G, e: 0.8 };
@@ -87,7 +88,18 @@ fn no_solve_passes_through_a_declared_floor_unannounced() {
         other => panic!("{method:?}: {other:?}"),
     };
     each_integrator!(&ball, Fineness::new(1e-8, 1e-8, 0.01), |method, integrator| {
-        refused(method, integrator.solve(0.0, &start, 1.0, &Sampling::Steps).map(|_| ()));
+        let bounced = integrator
+            .solve(0.0, &start, 1.0, &Sampling::Every(0.01))
+            .unwrap_or_else(|error| panic!("{method:?}: {error}"));
+        // The touchdown at √(2 h0/g) = 0.4515 s; the next, 2 · 0.8 · 0.4515 s later, is past 1 s.
+        let impacts = bounced.impacts_at("floor").expect("the floor");
+        assert_eq!(impacts.len(), 1, "{method:?}: {impacts:?}");
+        assert!((impacts[0].t - (2.0 / G).sqrt()).abs() < 1e-7, "{method:?}: {impacts:?}");
+        let lowest = bounced.q(BouncingBall::Y).iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(lowest > -1e-9, "{method:?}: {lowest}");
+        let observed =
+            integrator.solve_observed(0.0, &start, 1.0, &Sampling::Steps, |_, _| ControlFlow::Continue(()));
+        refused(method, observed.map(|_| ()));
         let sampled = integrator.solve_sampled(0.0, &start, 1.0, 0.1, &Sampling::Steps, |_, _, _| {});
         refused(method, sampled.map(|_| ()));
         let mut events = Events::new();

@@ -200,9 +200,10 @@ where
     }
 
     /// Leaves the model's unilateral constraints unwatched: the motion passes through them as
-    /// if they were not there. Without it (or [`Events::contacts`]), a solve of a model that
-    /// declares unilateral constraints ends at once in [`SimError::InvalidOption`], and so
-    /// does a plain [`Integrator::solve`](crate::Integrator::solve): a declared wall never lets
+    /// if they were not there. Without it (or [`Events::contacts`]), a solve with events of a
+    /// model that declares unilateral constraints ends at once in [`SimError::InvalidOption`],
+    /// and so do `solve_observed` and `solve_sampled`; a plain
+    /// [`Integrator::solve`](crate::Integrator::solve) watches them. A declared wall never lets
     /// a motion through unannounced.
     pub fn free_motion(mut self) -> Self {
         self.free_motion = true;
