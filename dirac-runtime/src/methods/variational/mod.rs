@@ -305,9 +305,15 @@ where
         Ok(())
     }
 
-    /// The step of size `h` from `self.previous` at `self.t` as ever more equal sub-steps, until
-    /// every sub-step converges; `error` if 64 do not.
+    /// The step of size `h` from `self.previous` at `self.t`, whose iteration failed with
+    /// `error`, as ever more equal sub-steps, until every sub-step converges; `error` if 64 do
+    /// not, or at once if it is not a Newton iteration's divergence.
+    #[cold]
+    #[inline(never)]
     fn substeps(&mut self, h: f64, error: SimError) -> Result<(), SimError> {
+        if !matches!(error, SimError::NewtonDiverged { .. }) {
+            return Err(error);
+        }
         let t0 = self.t;
         let work0 = self.work.work;
         let (midpoint, h_midpoint) = &self.work.midpoint;
@@ -364,6 +370,7 @@ where
     /// work done since (the energy's parts grow with the solution, so the first test alone
     /// would let a run grow without bound when they grow alike). Checked every 16 steps, and
     /// at once after a step that multiplies the largest momentum by 8 (`pmax`).
+    #[inline(never)]
     fn check_stability(&mut self, pmax: f64) -> Result<(), SimError> {
         let s = &self.state;
         let lagrangian = self.model.get().lagrangian(self.t, &s.q, &s.v);
@@ -461,14 +468,12 @@ where
     /// more than its length in a step misses the circle), the step is taken as 2, 4, …, 64
     /// equal sub-steps of the method; the result is then a composition of variational steps,
     /// as symplectic and of the same order, counted in [`VariationalStats::substeps`].
+    #[inline]
     fn step(&mut self) -> Result<f64, SimError> {
         let (h, intervals) = self.next_step();
         self.t_previous = self.t;
         self.previous.clone_from(&self.state);
         if let Err(error) = self.advance(h) {
-            if !matches!(error, SimError::NewtonDiverged { .. }) {
-                return Err(error);
-            }
             self.substeps(h, error)?;
         }
         self.stats.steps += 1;
@@ -476,16 +481,16 @@ where
         self.t = self.time_after(self.taken);
         let s = &self.state;
         // An index loop: the chained iterators of nalgebra cost more than the step itself.
-        let mut pmax = 0.0f64;
-        for i in 0..self.sizes.typed::<M>().nq {
-            if !(s.q[i].is_finite() && s.p[i].is_finite()) {
-                let names = self.model.get().coordinate_names();
-                return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
-            }
-            pmax = pmax.max(s.p[i].abs());
+        if let Some(i) =
+            (0..self.sizes.typed::<M>().nq).find(|&i| !(s.q[i].is_finite() && s.p[i].is_finite()))
+        {
+            let names = self.model.get().coordinate_names();
+            return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
         }
-        if self.taken.is_multiple_of(16) || self.finished() || pmax > 8.0 * self.p_checked {
-            self.check_stability(pmax)?;
+        let limit = 8.0 * self.p_checked;
+        let grew = (0..self.sizes.typed::<M>().nq).any(|i| s.p[i].abs() > limit);
+        if grew || self.taken.is_multiple_of(16) || self.finished() {
+            self.check_stability(s.p.amax())?;
         }
         Ok(h)
     }
