@@ -352,7 +352,8 @@ mod tests {
         assert!(!short.contains("compile_error"), "{short}");
         assert_eq!(short, long);
         assert_eq!(short, run_time);
-        assert!(short.len() < 60_000, "{} bytes", short.len());
+        // 62 kB since misspelt members carry a suggestion (a const message per member).
+        assert!(short.len() < 70_000, "{} bytes", short.len());
     }
 
     #[test]
