@@ -331,4 +331,17 @@ fn linearize_in_named_coordinates_gives_the_textbook_matrices() {
         .in_coordinates(&cartesian, &[CartesianCartPole::X, CartesianCartPole::BY])
         .expect_err("the height is fixed to first order");
     assert!(error.to_string().contains("do not parametrise"), "{error}");
+    // The same coordinate twice, and too few or too many, are refused by name and count.
+    let lin = linearize(&cartesian, 0.0, &up).expect("an equilibrium");
+    let twice =
+        lin.in_coordinates(&cartesian, &[CartesianCartPole::X, CartesianCartPole::X]).expect_err("twice");
+    assert!(twice.to_string().contains("do not parametrise"), "{twice}");
+    for chosen in [
+        &[][..],
+        &[CartesianCartPole::X][..],
+        &[CartesianCartPole::X, CartesianCartPole::BX, CartesianCartPole::BY][..],
+    ] {
+        let error = lin.in_coordinates(&cartesian, chosen).expect_err("a wrong count");
+        assert!(error.to_string().contains("the constraints leave 2 free: name 2"), "{error}");
+    }
 }

@@ -228,6 +228,29 @@ impl Names {
     /// Resolves a path such as `["right", "x3"]` (the name `right.x3`) to a coordinate or a
     /// velocity of this model. Usable in `const` items.
     pub const fn resolve(&'static self, path: &[&str]) -> Result<Resolved, ResolveError> {
+        let (names, offset) = match self.descend(path) {
+            Ok(found) => found,
+            Err(_) => return Err(ResolveError::UnknownField),
+        };
+        let Some(last) = path.last() else {
+            return Err(ResolveError::UnknownName);
+        };
+        if let Some(i) = position(names.coordinates, last) {
+            return Ok(Resolved { velocity: false, index: offset + i, port: contains(names.ports, i) });
+        }
+        if let Some(i) = position(names.velocities, last) {
+            return Ok(Resolved { velocity: true, index: offset + i, port: contains(names.ports, i) });
+        }
+        Err(ResolveError::UnknownName)
+    }
+
+    /// The names of the subsystem the path's segments but the last lead to, and the offset of
+    /// its coordinates; `Err((names, depth))` where segment `depth` names no subsystem of
+    /// `names`.
+    const fn descend(
+        &'static self,
+        path: &[&str],
+    ) -> Result<(&'static Names, usize), (&'static Names, usize)> {
         let mut names = self;
         let mut offset = 0;
         let mut depth = 0;
@@ -245,20 +268,11 @@ impl Names {
                     offset += sub.q_offset;
                     names = sub.names;
                 }
-                None => return Err(ResolveError::UnknownField),
+                None => return Err((names, depth)),
             }
             depth += 1;
         }
-        let Some(last) = path.last() else {
-            return Err(ResolveError::UnknownName);
-        };
-        if let Some(i) = position(names.coordinates, last) {
-            return Ok(Resolved { velocity: false, index: offset + i, port: contains(names.ports, i) });
-        }
-        if let Some(i) = position(names.velocities, last) {
-            return Ok(Resolved { velocity: true, index: offset + i, port: contains(names.ports, i) });
-        }
-        Err(ResolveError::UnknownName)
+        Ok((names, offset))
     }
 
     /// The name closest to the misspelt last segment of `path` (a field of the subsystem, when
@@ -267,48 +281,31 @@ impl Names {
     /// other suggestions (an edit distance of at most a third of the name's length). Usable in
     /// `const` items, where an interconnection's names are resolved.
     pub const fn suggest(&'static self, path: &[&str]) -> Option<&'static str> {
-        let mut names = self;
-        let mut depth = 0;
-        while depth + 1 < path.len() {
-            let mut found = None;
-            let mut i = 0;
-            while i < names.subsystems.len() {
-                if str_eq(names.subsystems[i].field, path[depth]) {
-                    found = Some(&names.subsystems[i]);
-                }
-                i += 1;
-            }
-            match found {
-                Some(sub) => names = sub.names,
-                None => {
-                    // The field at this depth is what is unknown.
-                    let mut best: Option<(&'static str, usize)> = None;
-                    let mut i = 0;
-                    while i < names.subsystems.len() {
-                        best = closer(best, path[depth], names.subsystems[i].field);
-                        i += 1;
-                    }
-                    return match best {
-                        Some((name, _)) => Some(name),
-                        None => None,
-                    };
-                }
-            }
-            depth += 1;
-        }
-        let Some(last) = path.last() else {
-            return None;
-        };
         let mut best: Option<(&'static str, usize)> = None;
-        let mut i = 0;
-        while i < names.coordinates.len() {
-            best = closer(best, last, names.coordinates[i]);
-            i += 1;
-        }
-        let mut i = 0;
-        while i < names.velocities.len() {
-            best = closer(best, last, names.velocities[i]);
-            i += 1;
+        match self.descend(path) {
+            Err((names, depth)) => {
+                // The field at this depth is what is unknown.
+                let mut i = 0;
+                while i < names.subsystems.len() {
+                    best = closer(best, path[depth], names.subsystems[i].field);
+                    i += 1;
+                }
+            }
+            Ok((names, _)) => {
+                let Some(last) = path.last() else {
+                    return None;
+                };
+                let mut i = 0;
+                while i < names.coordinates.len() {
+                    best = closer(best, last, names.coordinates[i]);
+                    i += 1;
+                }
+                let mut i = 0;
+                while i < names.velocities.len() {
+                    best = closer(best, last, names.velocities[i]);
+                    i += 1;
+                }
+            }
         }
         match best {
             Some((name, _)) => Some(name),

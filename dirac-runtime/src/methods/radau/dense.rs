@@ -223,7 +223,8 @@ where
 /// matrix of the last Jacobian, the constraints at the step's end; factored once per step, when
 /// first sampled) give velocities as accurate as the positions and momenta they come from, on
 /// the constraints. Where that matrix is singular (a velocity fixed by neither inertia nor
-/// constraints) the derivative is kept.
+/// constraints) the whole state keeps the collocation polynomial, whose velocities and momenta
+/// agree at the stages.
 pub(crate) struct Legendre<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
@@ -267,24 +268,18 @@ where
         self.work.get_mut().factored = None;
     }
 
-    /// Corrects the velocities of `out` at `t` so that they match its positions and momenta
-    /// and satisfy the constraints; `l_vv` is the mass matrix of the last Jacobian and
-    /// `(t_end, q_end)` the step's end.
-    // Indexing keeps the unknowns, the momenta and the velocities side by side.
-    #[allow(clippy::needless_range_loop)]
-    pub fn correct(
+    /// Whether the velocities can be corrected in the last step: `[L_vv Aᵀ; A 0]`, with the
+    /// mass matrix `l_vv` of the last Jacobian and the constraints at the step's end
+    /// `(t_end, q_end)`, factored at the step's first sample, is nonsingular.
+    pub fn ready(
         &self,
         model: &M,
         l_vv: &<M::Algebra as Algebra<M>>::Qq,
         (t_end, q_end): (f64, &VecQ<M>),
-        t: f64,
-        out: &mut State<M>,
-    ) {
+    ) -> bool {
         let work = &mut *self.work.borrow_mut();
-        let n = out.q.len();
-        let constrained = !work.b.is_empty();
         if work.factored.is_none() {
-            if constrained {
+            if !work.b.is_empty() {
                 model.constraint_matrix(t_end, q_end, &mut work.a);
             }
             work.saddle.assemble(&SaddleTerms {
@@ -297,8 +292,25 @@ where
             });
             work.factored = Some(work.saddle.factor().is_ok());
         }
-        if work.factored != Some(true) {
-            return;
+        work.factored == Some(true)
+    }
+
+    /// Corrects the velocities of `out` at `t` so that they match its positions and momenta
+    /// and satisfy the constraints, with the matrix [`Legendre::ready`] factored.
+    // Indexing keeps the unknowns, the momenta and the velocities side by side.
+    #[allow(clippy::needless_range_loop)]
+    pub fn correct(&self, model: &M, t: f64, out: &mut State<M>) {
+        let work = &mut *self.work.borrow_mut();
+        let n = out.q.len();
+        let constrained = !work.b.is_empty();
+        // The constraints at the sample, `A(q) v + b`: q does not change in the iterations.
+        if constrained {
+            model.constraint_matrix(t, &out.q, &mut work.a);
+            if M::PRESCRIBED {
+                model.constraint_rate(t, &out.q, &mut work.b);
+            } else {
+                work.b.fill(0.0);
+            }
         }
         let iterations = if M::SEPARABLE && !constrained { 1 } else { 2 };
         for _ in 0..iterations {
@@ -308,14 +320,7 @@ where
                 x[i] = out.p[i] - work.dl_dv[i];
             }
             if constrained {
-                // −(A v + b) at the sample.
-                model.constraint_matrix(t, &out.q, &mut work.a);
-                if M::PRESCRIBED {
-                    model.constraint_rate(t, &out.q, &mut work.b);
-                    x[n..].copy_from_slice(work.b.as_slice());
-                } else {
-                    x[n..].fill(0.0);
-                }
+                x[n..].copy_from_slice(work.b.as_slice());
                 M::Algebra::cq_mul(&work.a, 1.0, out.v.as_slice(), &mut x[n..]);
                 for r in &mut x[n..] {
                     *r = -*r;
@@ -325,6 +330,13 @@ where
             for i in 0..n {
                 out.v[i] += x[i];
             }
+        }
+        // With constraints the two conditions are more than the velocities can meet: the
+        // solve keeps `A v + b = 0` and leaves `Aᵀ μ` of the Legendre map, the share of the
+        // momenta's error across the constraints. The momenta follow the velocities, so that the
+        // sample is consistent, as the steps' ends are.
+        if constrained {
+            model.dl_dv(t, &out.q, &out.v, &mut out.p);
         }
     }
 }

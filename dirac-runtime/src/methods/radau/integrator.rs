@@ -131,13 +131,17 @@ where
 
     fn interpolate(&self, t: f64, out: &mut State<M>) {
         self.dense.interpolate(&self.y, self.t, t, out);
-        // The model's inputs are those of the step's end: a drive that sets them along the step
-        // would need the model mutably, so driven models keep the velocities' extension.
+        // The correction needs velocities from the Legendre map and the constraints, with the
+        // model's inputs those of the step's end: a drive that sets them along the step would
+        // need the model mutably, so driven models keep the collocation polynomial, and so do
+        // models whose velocities that map does not determine.
+        let model = self.model.get();
         if self.options.dense_output == DenseOutput::Corrected
-            && self.start.refine(&self.dense, (&self.y, &self.f0), (self.t, self.dense.h), t, out)
             && !self.residual.driven()
+            && self.legendre.ready(model, &self.jac.l_vv, (self.t, &self.state.q))
+            && self.start.refine(&self.dense, (&self.y, &self.f0), (self.t, self.dense.h), t, out)
         {
-            self.legendre.correct(self.model.get(), &self.jac.l_vv, (self.t, &self.state.q), t, out);
+            self.legendre.correct(model, t, out);
         }
     }
 
