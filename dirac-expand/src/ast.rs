@@ -8,8 +8,8 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
 use crate::symbol::{
-    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIRAC, EVENT, FORCE, HOLONOMIC, INPUT, LAGRANGIAN, LARGE,
-    MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, UNILATERAL, UNIT,
+    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIRAC, DISSIPATION, EVENT, FORCE, HOLONOMIC, INPUT,
+    LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, UNILATERAL, UNIT,
 };
 
 /// A model as written by the user.
@@ -26,6 +26,8 @@ pub struct Model<'a> {
     pub lagrangian: Option<(Ident, Expr)>,
     pub constraints: Vec<ConstraintDecl>,
     pub forces: Vec<ForceDecl>,
+    /// The key `dissipation` (for error spans) and the Rayleigh function `R(q, v, t)`.
+    pub dissipation: Option<(Ident, Expr)>,
     /// `define(name) = expr`, in the order written.
     pub defines: Vec<DefineDecl>,
     /// `output(name) = expr`, in the order written.
@@ -127,6 +129,7 @@ impl<'a> Model<'a> {
             lagrangian: None,
             constraints: Vec::new(),
             forces: Vec::new(),
+            dissipation: None,
             defines: Vec::new(),
             large: false,
             doc: doc_comment(&input.attrs),
@@ -255,6 +258,18 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                     cx.error_spanned_by(&key, "duplicate `lagrangian`: a model has one Lagrangian");
                 } else {
                     model.lagrangian = Some((key, expr));
+                }
+            }
+            DISSIPATION => {
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                if model.dissipation.is_some() {
+                    cx.error_spanned_by(
+                        &key,
+                        "duplicate `dissipation`: a model has one Rayleigh function; add the terms into one",
+                    );
+                } else {
+                    model.dissipation = Some((key, expr));
                 }
             }
             CONSTRAINT | HOLONOMIC => {

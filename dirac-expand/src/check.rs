@@ -9,7 +9,7 @@ use syn::ext::IdentExt;
 use crate::ast::Model;
 use crate::ctxt::Ctxt;
 use crate::suggest::did_you_mean;
-use crate::symbol::TIME;
+use crate::symbol::{DISSIPATED_POWER, TIME};
 
 /// Checks the rules that relate items of a model to each other.
 pub fn check(cx: &Ctxt, model: &Model<'_>) {
@@ -80,6 +80,15 @@ fn check_names(cx: &Ctxt, model: &Model<'_>) {
         declare(&d.name, "definition");
     }
     for o in &model.outputs {
+        if o.name == DISSIPATED_POWER {
+            cx.error_spanned_by(
+                &o.name,
+                format!(
+                    "`{DISSIPATED_POWER}` is the output under which the power a `dissipation` takes is \
+                     recorded; give this output another name"
+                ),
+            );
+        }
         declare(&o.name, "output");
     }
     for u in &model.unilaterals {
@@ -96,6 +105,7 @@ fn check_units(cx: &Ctxt, model: &Model<'_>) {
         .chain(&model.params)
         .chain(model.outputs.iter().map(|o| &o.name))
         .map(ToString::to_string)
+        .chain(model.dissipation.as_ref().map(|_| DISSIPATED_POWER.to_owned()))
         .collect();
     let mut seen = HashSet::new();
     for (ident, _) in &model.units {

@@ -1,5 +1,6 @@
 //! `#[derive(LagrangeDirac)]`: parse, check, lower, derive the block table, analyse, emit.
 
+use crate::symbol::DISSIPATED_POWER;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::DeriveInput;
@@ -136,7 +137,14 @@ fn key_constants(cx: &Ctxt, model: &Model<'_>) -> KeyConstants {
     let coordinates = model.coordinates.iter().filter_map(|c| make(&c.name, c.name.to_string())).collect();
     let constraints = model.ordered_constraints().into_iter().filter_map(|c| make(c.ident, c.name)).collect();
     let inputs = model.inputs.iter().filter_map(|u| make(u, u.to_string())).collect();
-    let outputs = model.outputs.iter().filter_map(|o| make(&o.name, o.name.to_string())).collect();
+    let mut outputs: Vec<_> =
+        model.outputs.iter().filter_map(|o| make(&o.name, o.name.to_string())).collect();
+    // The power a dissipation takes is the output after the user's.
+    if let Some((key, _)) = &model.dissipation
+        && !model.outputs.iter().any(|o| o.name == DISSIPATED_POWER)
+    {
+        outputs.extend(make(key, DISSIPATED_POWER.to_owned()));
+    }
     KeyConstants { coordinates, constraints, inputs, outputs }
 }
 

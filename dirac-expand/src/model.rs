@@ -7,8 +7,8 @@ use syn::ext::IdentExt;
 use crate::ast::{ConstraintKind, Model};
 use crate::ctxt::Ctxt;
 use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
-use crate::sym::{Graph, Id};
-use crate::symbol::TIME;
+use crate::sym::{Graph, Id, Node};
+use crate::symbol::{DISSIPATED_POWER, TIME};
 use crate::symbols::{Sym, Symbols};
 
 /// A constraint row's name and the tokens that named it.
@@ -127,6 +127,11 @@ impl SymModel {
                 sm.force[i] = x;
             }
         }
+        let dissipation = model.dissipation.as_ref().and_then(|(_, e)| {
+            let what = "the dissipation function";
+            lw.lower(e, Context { what, ..all }).map(|r| (e, r))
+        });
+        let dissipated_power = dissipation.and_then(|(e, r)| sm.dissipate(cx, e, r));
         sm.lower_constraints(cx, model, &scope);
         // Outputs may also name a constraint, standing for its multiplier.
         let mut with_multipliers = scope.clone();
@@ -138,6 +143,9 @@ impl SymModel {
             let lowered = sm.lowerer(cx, &with_multipliers).lower(&o.expr, Context { what: &what, ..all });
             sm.outputs.push((o.name.to_string(), lowered.unwrap_or(zero)));
         }
+        if let Some(power) = dissipated_power {
+            sm.outputs.push((DISSIPATED_POWER.to_owned(), power));
+        }
         for e in &model.events {
             let what = format!("the event `{}`", e.name);
             let lowered = sm.lowerer(cx, &with_multipliers).lower(&e.expr, Context { what: &what, ..all });
@@ -146,6 +154,35 @@ impl SymModel {
         sm.lower_unilaterals(cx, model, &scope);
         sm.lagrangian = lagrangian?;
         (!cx.has_errors()).then_some(sm)
+    }
+
+    /// Adds the forces `−∂R/∂v` of the Rayleigh function `R` to the model's and returns the
+    /// power they take, `⟨∂R/∂v, v⟩`; `None` after an error at `expr` if `R` depends on no
+    /// velocity or is never positive (where its form decides it).
+    fn dissipate(&mut self, cx: &Ctxt, expr: &syn::Expr, r: Id) -> Option<Id> {
+        let gradient: Vec<Id> = self.v.clone().iter().map(|&v| self.graph.diff(r, v)).collect();
+        if gradient.iter().all(|&d| self.graph.is_zero(d)) {
+            cx.error_spanned_by(
+                expr,
+                "the dissipation function depends on no velocity, so its forces −∂R/∂v vanish; a Rayleigh \
+                 function is written in the velocities, as `dissipation = 0.5 * c * v * v`",
+            );
+            return None;
+        }
+        if never_positive(&self.graph, r) {
+            cx.error_spanned_by(
+                expr,
+                "the dissipation function is never positive, so it would put power into the model; a \
+                 Rayleigh function R ≥ 0 takes power out (its forces are −∂R/∂v), as `0.5 * c * v * v`",
+            );
+            return None;
+        }
+        let mut terms = Vec::with_capacity(gradient.len());
+        for (i, &d) in gradient.iter().enumerate() {
+            self.force[i] = self.graph.sub(self.force[i], d);
+            terms.push(self.graph.mul2(d, self.v[i]));
+        }
+        Some(self.graph.add(&terms))
     }
 
     /// Lowers each `unilateral(name, restitution = e) = φ`: `φ` of the coordinates and time,
@@ -342,4 +379,32 @@ impl SymModel {
             syms.iter().any(|s| self.graph.depends_on(d, *s))
         })
     }
+}
+
+/// Whether an expression is `≥ 0` for every value of its symbols, by its form alone (even
+/// powers, square roots, exponentials, and sums and positive multiples of them).
+fn never_negative(graph: &Graph, id: Id) -> bool {
+    use crate::sym::Func;
+    match graph.node(id) {
+        Node::Num(c) => c.get() >= 0.0,
+        Node::Powi(_, k) => k % 2 == 0,
+        Node::Call(Func::Sqrt | Func::Exp | Func::Cosh, _) => true,
+        Node::Mul(c, factors) => c.get() >= 0.0 && factors.iter().all(|&f| never_negative(graph, f)),
+        Node::Add(c, terms) => c.get() >= 0.0 && terms.iter().all(|&x| never_negative(graph, x)),
+        _ => false,
+    }
+}
+
+/// Whether an expression is `≤ 0` for every value of its symbols and not zero, by its form.
+fn never_positive(graph: &Graph, id: Id) -> bool {
+    let nonpositive = |x: Id| match graph.node(x) {
+        Node::Num(c) => c.get() <= 0.0,
+        Node::Mul(c, factors) => c.get() < 0.0 && factors.iter().all(|&f| never_negative(graph, f)),
+        _ => false,
+    };
+    !graph.is_zero(id)
+        && match graph.node(id) {
+            Node::Add(c, terms) => c.get() <= 0.0 && terms.iter().all(|&x| nonpositive(x)),
+            _ => nonpositive(id),
+        }
 }

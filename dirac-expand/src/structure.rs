@@ -53,7 +53,8 @@ pub fn unknown_messages(model: &SymModel, name: &str) -> Vec<String> {
     let velocities = model.velocities.iter().zip(&model.coordinates).map(|(v, c)| {
         format!(
             "structurally singular model: the velocity `{v}` of `{name}` is determined by no equation: \
-             coordinate `{c}` has no inertia, and no potential or constraint fixes it"
+             coordinate `{c}` has no inertia, no potential or constraint fixes it, and no force or dissipation \
+             depends on its velocity"
         )
     });
     let multipliers = model.constraints.iter().map(|c| {

@@ -16,6 +16,10 @@ pub const CONSTRAINT: &str = "constraint";
 pub const HOLONOMIC: &str = "holonomic";
 /// `force(x) = expr`: the external force on coordinate `x`.
 pub const FORCE: &str = "force";
+/// `dissipation = expr`: a Rayleigh function `R(q, v, t)`, whose forces are `−∂R/∂v`.
+pub const DISSIPATION: &str = "dissipation";
+/// The output under which the derive records a dissipation's power `⟨∂R/∂v, v⟩`.
+pub const DISSIPATED_POWER: &str = "dissipated_power";
 /// `define(name) = expr`: a named intermediate quantity, usable in every later expression.
 pub const DEFINE: &str = "define";
 /// `large`: the model may take more stack than [`STACK_LIMIT`](crate::stack::STACK_LIMIT).
@@ -53,6 +57,7 @@ pub const MODEL_KEYS: &[&str] = &[
     UNILATERAL,
     EVENT,
     FORCE,
+    DISSIPATION,
     UNIT,
     LARGE,
 ];

@@ -14,4 +14,4 @@ mod sexpr;
 #[cfg(test)]
 mod tests;
 
-pub use graph::{Func, Graph, Id};
+pub use graph::{Func, Graph, Id, Node};

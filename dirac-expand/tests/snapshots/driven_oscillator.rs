@@ -42,7 +42,7 @@ const _: () = {
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true],
             unknowns: &[
-                "structurally singular model: the velocity `v` of `DrivenOscillator` is determined by no equation: coordinate `x` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `v` of `DrivenOscillator` is determined by no equation: coordinate `x` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
             ],
         };
         fn non_finite_parameter(

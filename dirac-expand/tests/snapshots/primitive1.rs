@@ -42,8 +42,8 @@ const _: () = {
         const STRUCTURE: ::dirac::__private::Structure = ::dirac::__private::Structure {
             pattern: &[true, true, true, true],
             unknowns: &[
-                "structurally singular model: the velocity `v1` of `Primitive1` is determined by no equation: coordinate `x1` has no inertia, and no potential or constraint fixes it",
-                "structurally singular model: the velocity `v2` of `Primitive1` is determined by no equation: coordinate `x2` has no inertia, and no potential or constraint fixes it",
+                "structurally singular model: the velocity `v1` of `Primitive1` is determined by no equation: coordinate `x1` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
+                "structurally singular model: the velocity `v2` of `Primitive1` is determined by no equation: coordinate `x2` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
             ],
         };
         fn non_finite_parameter(

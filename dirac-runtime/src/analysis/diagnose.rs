@@ -292,8 +292,8 @@ where
     }
     let coordinates = picked(&dv, &model.coordinate_names());
     format!(
-        "the velocity of {} is not determined: along this motion there is no inertia (L_vv) and no \
-         constraint",
+        "the velocity of {} is not determined: along this motion there is no inertia (L_vv), no \
+         constraint, and no force or dissipation that depends on it (∂F/∂v)",
         coordinates.join(", ")
     )
 }

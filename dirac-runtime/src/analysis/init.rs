@@ -5,8 +5,13 @@
 //! 2. velocities are projected onto `A(q, t) v + b(q, t) = 0`, minimising the kinetic-energy
 //!    norm of the change, `½ Δvᵀ L_vv Δv`, so that velocities without inertia (a degenerate
 //!    Lagrangian's) take up the correction and the others keep the values given;
-//! 3. momenta are set by the Legendre map `p = ∂L/∂v`;
-//! 4. multipliers (and accelerations) solve the differentiated constraints
+//! 3. velocities that neither inertia nor constraints fix (the directions `N` of
+//!    `ker L_vv ∩ ker A`: a capacitor's current, a massless node between dampers) solve the
+//!    momentum balance projected on them, `Nᵀ (∂L/∂q + F − L_vq v − ∂²L/∂v∂t) = 0`, an
+//!    equation in `v` without `v̇` (`Nᵀ L_vv = 0`, `Nᵀ Aᵀ = 0`), by Newton's method with the
+//!    matrix `Nᵀ (L_qv − L_vq + F_v) N` (dissipation `−R_vv` is part of `F_v`);
+//! 4. momenta are set by the Legendre map `p = ∂L/∂v`;
+//! 5. multipliers (and accelerations) solve the differentiated constraints
 //!    `[L_vv −Aᵀ; A 0] [v̇; λ] = [∂L/∂q + F − L_vq v − ∂²L/∂v∂t; −∂(Av + b)/∂q v − ∂(Av + b)/∂t]`.
 //!
 //! Every quantity is checked to be finite before it is used, so a NaN parameter or an
@@ -75,16 +80,19 @@ where
         };
         return Err(SimError::NonFinite { t, component: names[i].clone() });
     }
-    if sizes.nq + sizes.nc > DENSE_ANALYSIS {
+    // Large models keep the saddle path, which has no velocities fixed by forces (yet).
+    let free = if sizes.nq + sizes.nc > DENSE_ANALYSIS {
         init_saddle::project_positions(model, t, &mut s.q, (options.tolerance, options.max_iterations))?;
         init_saddle::project_velocities(model, t, &s.q, &mut s.v, options.tolerance)?;
+        0
     } else {
         project_positions(model, t, &mut s.q, options)?;
         project_velocities(model, t, &s.q, &mut s.v, options)?;
-    }
+        algebraic_velocities(model, t, &s.q, &mut s.v, options)?
+    };
     model.dl_dv(t, &s.q, &s.v, &mut s.p);
     non_finite_entry(model, t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
-    s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v)?.as_slice());
+    s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v, free)?.as_slice());
     check_finite_state(model, t, &s)?;
     Ok(s)
 }
@@ -260,6 +268,7 @@ fn multipliers<M: LagrangeDirac>(
     t: f64,
     q: &VecQ<M>,
     v: &VecQ<M>,
+    free: usize,
 ) -> Result<DVector<f64>, SimError>
 where
     DefaultAllocator: Storage<M>,
@@ -281,6 +290,7 @@ where
             &dense_qq::<M, M::Algebra>(&lvv, n),
             &dense_cq::<M, M::Algebra>(&a, m, n),
             (&top, &bottom),
+            free,
         )?
     };
     if let Some(j) = lambda.iter().position(|x| !x.is_finite()) {
@@ -291,13 +301,16 @@ where
 }
 
 /// λ from the dense saddle-point system, by a singular value decomposition that names the
-/// cause when it is singular.
+/// cause when it is singular. Its null space may hold the `free` directions of
+/// `ker L_vv ∩ ker A` in `v̇` (velocities the forces fix): they leave `λ` unique, and the
+/// minimal-norm solution takes it.
 fn dense_multipliers<M: LagrangeDirac>(
     model: &M,
     t: f64,
     lvv: &DMatrix<f64>,
     a: &DMatrix<f64>,
     (top, bottom): (&[f64], &[f64]),
+    free: usize,
 ) -> Result<DVector<f64>, SimError>
 where
     DefaultAllocator: Storage<M>,
@@ -314,11 +327,164 @@ where
     let Some(svd) = svd(&kkt) else {
         return Err(singular());
     };
-    let smallest = svd.singular_values.min();
     let largest = svd.singular_values.max().max(1e-300);
-    if smallest <= 1e-12 * largest {
+    let null = svd.singular_values.iter().filter(|&&x| x <= 1e-12 * largest).count();
+    if null > free {
         return Err(singular());
     }
-    let x = svd.solve(&rhs, 0.0).expect("SVD with both factors computed");
+    let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
     Ok(x.rows(n, m).into_owned())
+}
+
+/// An orthonormal basis (by columns) of `ker L_vv ∩ ker A`: the velocities that neither
+/// inertia nor constraints fix. Each kernel is taken relative to its own matrix's size (a
+/// model whose masses are all 1e-300 has inertia all the same): first `Z` spanning `ker A`,
+/// then the kernel of `Zᵀ L_vv Z`.
+pub(crate) fn free_directions(lvv: &DMatrix<f64>, a: &DMatrix<f64>) -> Option<DMatrix<f64>> {
+    let n = lvv.nrows();
+    let z = if a.nrows() == 0 { DMatrix::identity(n, n) } else { null_space(a, 1e-10)? };
+    if z.ncols() == 0 {
+        return Some(z);
+    }
+    let reduced = z.transpose() * lvv * &z;
+    if lvv.amax() == 0.0 {
+        return Some(z);
+    }
+    let inner = null_space(&reduced, 1e-10 * lvv.amax() / reduced.amax().max(f64::MIN_POSITIVE))?;
+    Some(z * inner)
+}
+
+/// An orthonormal basis (by columns) of the null space of `a`: the right singular vectors
+/// whose singular values are at most `relative` times the largest (all of them when `a` is
+/// zero).
+fn null_space(a: &DMatrix<f64>, relative: f64) -> Option<DMatrix<f64>> {
+    let n = a.ncols();
+    // A square matrix, so that the decomposition has a right singular vector per column.
+    let rows = a.nrows().max(n);
+    let mut square = DMatrix::zeros(rows, n);
+    square.view_mut((0, 0), (a.nrows(), n)).copy_from(a);
+    let svd = svd(&square)?;
+    let v_t = svd.v_t.as_ref().expect("V computed");
+    let largest = svd.singular_values.max();
+    let columns: Vec<_> = (0..n)
+        .filter(|&k| svd.singular_values[k] <= relative * largest)
+        .map(|k| v_t.row(k).transpose())
+        .collect();
+    Some(if columns.is_empty() { DMatrix::zeros(n, 0) } else { DMatrix::from_columns(&columns) })
+}
+
+/// `Nᵀ (L_qv − L_vq + F_v) N`: how the momentum balance along the free directions `N`
+/// changes with the velocities along them (the terms with third derivatives of `L` left out;
+/// they change Newton's rate, not its solution).
+pub(crate) fn free_matrix<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    (q, v): (&VecQ<M>, &VecQ<M>),
+    free: &DMatrix<f64>,
+) -> DMatrix<f64>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (n, shape) = (model.sizes().nq, model.shape());
+    let (mut lvq, mut fv) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_qq(&shape));
+    model.l_vq(t, q, v, &mut lvq);
+    model.force_dv(t, q, v, &mut fv);
+    let lvq = dense_qq::<M, M::Algebra>(&lvq, n);
+    let d = lvq.transpose() - &lvq + dense_qq::<M, M::Algebra>(&fv, n);
+    free.transpose() * d * free
+}
+
+/// Solves for the velocities along the free directions `N` of `ker L_vv ∩ ker A` the momentum
+/// balance projected on them (step 3 of the module's list); returns the number of such
+/// directions. A singular `Nᵀ (L_qv − L_vq + F_v) N` leaves some of them undetermined: the
+/// error names their coordinates.
+fn algebraic_velocities<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &mut VecQ<M>,
+    options: Consistency,
+) -> Result<usize, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let Sizes { nq: n, nc: m, .. } = model.sizes();
+    let shape = model.shape();
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
+    model.l_vv(t, q, v, &mut lvv);
+    non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
+    model.constraint_matrix(t, q, &mut a);
+    let (lvv, a) = (dense_qq::<M, M::Algebra>(&lvv, n), dense_cq::<M, M::Algebra>(&a, m, n));
+    let Some(free) = free_directions(&lvv, &a) else {
+        return Err(SimError::NonFinite { t, component: "the mass matrix or the constraint rows".into() });
+    };
+    let k = free.ncols();
+    if k == 0 {
+        return Ok(0);
+    }
+    let mut residual = f64::NAN;
+    for _ in 0..options.max_iterations {
+        // The matrix first: where it is singular, some velocity is not determined, whatever
+        // the balance's residual.
+        let j = free_matrix(model, t, (q, v), &free);
+        let Some(svd) = svd(&j) else {
+            return Err(SimError::NonFinite {
+                t,
+                component: "∂F/∂v along the velocities without inertia".into(),
+            });
+        };
+        let largest = svd.singular_values.max();
+        if svd.singular_values.min() <= 1e-12 * largest || largest == 0.0 {
+            let v_t = svd.v_t.as_ref().expect("V computed");
+            let direction = &free * v_t.row(svd.singular_values.imin()).transpose();
+            return Err(SimError::NotDetermined { t, cause: undetermined_velocities(model, &direction) });
+        }
+        let (top, _) = rates(model, t, q, v)?;
+        let top = DVector::from_vec(top);
+        let r = free.transpose() * &top;
+        // The size of the terms the balance is made of, for a relative test.
+        let mut force = model.sizes().zeros_q::<M>();
+        model.force(t, q, v, &mut force);
+        let scale = 1.0 + top.amax().max(force.amax());
+        residual = r.amax();
+        if residual <= 1e2 * options.tolerance * scale {
+            return Ok(k);
+        }
+        let y = svd.solve(&r, 0.0).expect("SVD with both factors computed");
+        let step = &free * y;
+        for i in 0..n {
+            v[i] -= step[i];
+        }
+        if let Some(i) = v.iter().position(|x| !x.is_finite()) {
+            let component = format!("velocity `{}` of the momentum balance", model.velocity_names()[i]);
+            return Err(SimError::NonFinite { t, component });
+        }
+    }
+    let worst = free.column_iter().map(|c| c.iamax()).next().unwrap_or(0);
+    Err(SimError::InconsistentInitialState {
+        equation: format!(
+            "the momentum balance of `{}` (its velocity has no inertia and is fixed by the forces)",
+            model.coordinate_names()[worst]
+        ),
+        residual,
+        iterations: options.max_iterations,
+    })
+}
+
+/// The message for a direction of velocities that nothing determines.
+pub(crate) fn undetermined_velocities<M: LagrangeDirac>(model: &M, direction: &DVector<f64>) -> String
+where
+    DefaultAllocator: Storage<M>,
+{
+    let largest = direction.amax();
+    let names = model.coordinate_names();
+    let picked: Vec<String> = (direction.iter().enumerate())
+        .filter(|(_, z)| z.abs() > 0.3 * largest)
+        .map(|(i, _)| format!("`{}`", names[i]))
+        .collect();
+    format!(
+        "the velocity of {} is not determined: along this motion there is no inertia (L_vv), no \
+         constraint, and no force or dissipation that depends on it (∂F/∂v)",
+        picked.join(", ")
+    )
 }

@@ -9,6 +9,7 @@ pub mod diagnose;
 /// Dirac structures as objects, with products, interconnection and membership.
 pub mod dirac_structure;
 /// Consistent initial states.
+pub(crate) mod free;
 pub mod init;
 pub(crate) mod init_saddle;
 /// Linearisation about an equilibrium, in minimal coordinates.

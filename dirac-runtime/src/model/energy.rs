@@ -19,7 +19,8 @@ where
         p.dot(v) - self.lagrangian(t, q, v)
     }
 
-    /// The power of the external forces `⟨F(q, v, t), v⟩`; on solutions `dE/dt` equals it.
+    /// The power of the external forces `⟨F(q, v, t), v⟩`, the dissipation's `−∂R/∂v`
+    /// included; on solutions `dE/dt` equals it (plus `−∂L/∂t` and the constraints' power).
     fn power(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64 {
         let mut f = self.sizes().zeros_q::<Self>();
         self.force(t, q, v, &mut f);

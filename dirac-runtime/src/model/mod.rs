@@ -35,6 +35,10 @@ pub mod state;
 /// Structural nonsingularity of the condensed system, checked at compile time.
 pub mod structure;
 
+/// The output under which a model's derive records the power its `dissipation` takes,
+/// `⟨∂R/∂v, v⟩`; a solution's `dissipated_power` sums every output of this name, at any depth.
+pub const DISSIPATED_POWER: &str = "dissipated_power";
+
 pub use self::derivation::{Derivation, Equations, OperationCounts};
 pub use self::energy::EnergyBalance;
 pub use self::hybrid::Hybrid;

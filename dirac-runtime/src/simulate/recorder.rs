@@ -336,13 +336,15 @@ where
         let phi = amax(w.phi.as_slice());
         model.interconnection_forces(t, &s.q, &s.lambda, &mut w.forces);
         let ipower = w.forces.dot(&s.v);
-        for (k, x) in [energy, power, av, phi, ipower, cpower].into_iter().enumerate() {
+        model.outputs(t, &s.q, &s.v, &s.lambda, &mut w.outputs);
+        let dissipated: f64 = l.dissipation.iter().map(|&k| w.outputs[k]).sum();
+        let sources = power + dissipated;
+        for (k, x) in [energy, sources, dissipated, av, phi, ipower, cpower].into_iter().enumerate() {
             self.columns[l.derived(k)].push(x);
         }
         for (k, &i) in l.ports.iter().enumerate() {
             self.columns[l.port(k)].push(w.forces[i]);
         }
-        model.outputs(t, &s.q, &s.v, &s.lambda, &mut w.outputs);
         for (k, &y) in w.outputs.iter().enumerate() {
             self.columns[l.output(k)].push(y);
             if !y.is_finite() && self.non_finite_output.is_none() {

@@ -8,9 +8,9 @@ use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 use nalgebra::{DefaultAllocator, Dim};
 
-use crate::model::LagrangeDirac;
 use crate::model::keys::{Constraint, Coordinate, Output};
 use crate::model::state::State;
+use crate::model::{DISSIPATED_POWER, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
 use crate::shape::layout::Layout;
 
@@ -83,13 +83,17 @@ pub(crate) struct Columns {
     pub ports: Vec<usize>,
     /// The number of the model's outputs.
     pub outputs: usize,
+    /// The outputs that are the power a subsystem's dissipation takes (named
+    /// `dissipated_power`, at any depth): their sum is the model's dissipated power.
+    pub dissipation: Vec<usize>,
 }
 
 impl Columns {
     /// The derived quantities, in their column order.
-    pub const DERIVED: [&'static str; 6] = [
+    pub const DERIVED: [&'static str; 7] = [
         "energy",
         "power",
+        "dissipated_power",
         "constraint_residual",
         "holonomic_residual",
         "interconnection_power",
@@ -133,7 +137,12 @@ impl Columns {
     {
         let ports = model.ports().into_iter().map(|c| c.index()).collect();
         let outputs = model.output_names();
-        let columns = Columns { state: Layout::new(model.sizes()), ports, outputs: outputs.len() };
+        let dissipation = (outputs.iter().enumerate())
+            .filter(|(_, o)| o.rsplit('.').next() == Some(DISSIPATED_POWER))
+            .map(|(k, _)| k)
+            .collect();
+        let columns =
+            Columns { state: Layout::new(model.sizes()), ports, outputs: outputs.len(), dissipation };
         let coordinates = model.coordinate_names();
         let mut names = vec!["t".to_owned()];
         names.extend(coordinates.iter().cloned());
@@ -395,32 +404,43 @@ where
         &self.columns[self.layout.derived(0)]
     }
 
-    /// The power of the external forces `⟨F, v⟩`.
+    /// The power the external forces put in, `⟨F, v⟩`, the dissipation's forces `−∂R/∂v`
+    /// excepted (they are [`dissipated_power`](Solution::dissipated_power)): the power of the
+    /// sources.
     pub fn power(&self) -> &[f64] {
         &self.columns[self.layout.derived(1)]
     }
 
+    /// The power the dissipation takes out, `⟨∂R/∂v, v⟩ ≥ 0`, summed over the model and its
+    /// subsystems (each one's is also the output `dissipated_power`, `motor.dissipated_power`
+    /// in an interconnection). On solutions
+    /// `dE/dt = power − dissipated power − ∂L/∂t + constraint power`.
+    pub fn dissipated_power(&self) -> &[f64] {
+        &self.columns[self.layout.derived(2)]
+    }
+
     /// `‖A(q, t) v + b(q, t)‖∞`.
     pub fn constraint_residual(&self) -> &[f64] {
-        &self.columns[self.layout.derived(2)]
+        &self.columns[self.layout.derived(3)]
     }
 
     /// `‖φ(q, t)‖∞`.
     pub fn holonomic_residual(&self) -> &[f64] {
-        &self.columns[self.layout.derived(3)]
+        &self.columns[self.layout.derived(4)]
     }
 
     /// The power of the interconnection forces: zero for a lossless interconnection, `−⟨μ, b⟩`
     /// for one that prescribes a relative motion.
     pub fn interconnection_power(&self) -> &[f64] {
-        &self.columns[self.layout.derived(4)]
+        &self.columns[self.layout.derived(5)]
     }
 
     /// The power `−⟨λ, b(q, t)⟩` the constraints put in by prescribing motion; zero unless
-    /// a constraint depends on time. With [`power`](Solution::power) and `∂L/∂t` it closes the
-    /// energy balance, `dE/dt = ⟨F, v⟩ − ∂L/∂t + constraint power`.
+    /// a constraint depends on time. With [`power`](Solution::power),
+    /// [`dissipated_power`](Solution::dissipated_power) and `∂L/∂t` it closes the energy
+    /// balance, `dE/dt = power − dissipated power − ∂L/∂t + constraint power`.
     pub fn constraint_power(&self) -> &[f64] {
-        &self.columns[self.layout.derived(5)]
+        &self.columns[self.layout.derived(6)]
     }
 
     /// The interconnection force (effort) at port `c`, if `c` is a port.

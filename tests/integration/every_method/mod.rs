@@ -89,6 +89,7 @@ macro_rules! each_integrator {
 }
 
 mod contacts;
+mod dissipation;
 mod events;
 mod inputs;
 mod sensitivities;

@@ -25,7 +25,9 @@ use nalgebra::{DefaultAllocator, OMatrix};
 use crate::algebra::lu::Lu;
 use crate::algebra::mass::Mass;
 use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
+use crate::analysis::free::FreeVelocities;
 use crate::analysis::init_saddle::SaddleOf;
+use crate::error::SimError;
 use crate::model::blocks::ResidualBlocks;
 use crate::model::{LagrangeDirac, MatCQ, MatQQ, configuration};
 use crate::shape::dims::{Dimensions, MatKK, Sizes, Storage, VecC, VecH, VecK, VecQ};
@@ -104,6 +106,9 @@ where
     x: VecK<M>,
     /// Factorisations done, for the statistics.
     pub factorizations: usize,
+    /// The velocities no inertia or constraint fixes, solved from the forces at every
+    /// evaluation ([`Accelerations::prepare`] finds them).
+    free: Option<FreeVelocities<M>>,
 }
 
 impl<M: LagrangeDirac> Accelerations<M>
@@ -140,6 +145,24 @@ where
             residual: sizes.zeros_c::<M>(),
             x: sizes.zeros_k::<M>(),
             factorizations: 0,
+            free: None,
+        }
+    }
+
+    /// Finds the velocities that only the forces fix at a start `(t, q, v)` (set-up: it
+    /// allocates), so that every evaluation solves them from the momentum balance.
+    pub fn prepare(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) -> Result<(), SimError> {
+        self.free = FreeVelocities::find(model, t, (q, v), "Explicit")?;
+        Ok(())
+    }
+
+    /// Puts the velocities that only the forces fix onto their momentum balance at `(t, q)`;
+    /// false where that fails (a singular matrix, no convergence). Nothing to do for a model
+    /// without such velocities.
+    pub fn settle(&mut self, model: &M, t: f64, q: &VecQ<M>, v: &mut VecQ<M>) -> bool {
+        match &mut self.free {
+            Some(free) => free.settle(model, t, q, v),
+            None => true,
         }
     }
 
@@ -292,8 +315,21 @@ where
             return schur.s.factor().is_ok();
         }
         model.l_vv(t, q, v, &mut self.lvv);
+        // Along the velocities the forces fix, `L_vv` vanishes; `N Nᵀ` there makes the matrix
+        // regular and sets their accelerations to `Nᵀ` of the balance, zero once settled.
+        let (one, two);
+        let top: &[(f64, &MatQQ<M>)] = match &self.free {
+            Some(free) => {
+                two = [(1.0, &self.lvv), (1.0, &free.projector)];
+                &two
+            }
+            None => {
+                one = [(1.0, &self.lvv)];
+                &one
+            }
+        };
         self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
-            top: &[(1.0, &self.lvv)],
+            top,
             top_transposed: &[],
             identity: 0.0,
             right: &[(-1.0, &self.a)],
@@ -381,7 +417,7 @@ where
         configuration::advance::<M>(q, h, v, q1);
         v1.copy_from(v);
         v1.axpy(h, a0, 1.0);
-        if !self.evaluate(model, t + h, (q1, v1), a1, lambda) {
+        if !self.settle(model, t + h, q1, v1) || !self.evaluate(model, t + h, (q1, v1), a1, lambda) {
             return h;
         }
         let mut d2 = 0.0;

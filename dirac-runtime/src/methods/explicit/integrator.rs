@@ -31,6 +31,11 @@ where
         self.stats = ExplicitStats::default();
         self.accelerations.factorizations = 0;
         self.forget();
+        // The velocities only the forces fix, found once per start (a restart keeps them: which
+        // coordinates lack inertia is the model's structure).
+        let s = &self.state;
+        self.accelerations.prepare(self.model.get(), t0, (&s.q, &s.v))?;
+        self.probe.get_mut().0.prepare(self.model.get(), t0, (&s.q, &s.v))?;
         self.evaluate_start()?;
         // The interpolation's own system, factored once here: a sparse factorisation finds
         // its pivots (and allocates) the first time only.
@@ -167,8 +172,8 @@ where
         let model = self.model.get();
         let mut probe = self.probe.borrow_mut();
         let (accelerations, acceleration) = &mut *probe;
-        let mut determined =
-            accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
+        let mut determined = accelerations.settle(model, t, &out.q, &mut out.v)
+            && accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
         if determined && self.sizes.nc > 0 {
             accelerations.project(model, t, &mut out.q, &mut out.v);
             determined = accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);

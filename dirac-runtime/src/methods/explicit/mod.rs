@@ -198,13 +198,14 @@ where
         let model = self.model.get();
         let s = &mut self.state;
         self.stats.evaluations += 1;
-        let determined = self.accelerations.evaluate(
-            model,
-            self.t,
-            (&s.q, &s.v),
-            &mut self.start_acceleration,
-            &mut s.lambda,
-        );
+        let determined = self.accelerations.settle(model, self.t, &s.q, &mut s.v)
+            && self.accelerations.evaluate(
+                model,
+                self.t,
+                (&s.q, &s.v),
+                &mut self.start_acceleration,
+                &mut s.lambda,
+            );
         self.stats.factorizations = self.accelerations.factorizations;
         if !determined {
             return Err(SimError::NotDetermined {
@@ -281,6 +282,9 @@ where
             configuration::advance_by::<M>((&s.q, &s.v), h, &A[i][..i], k, stage);
             self.stats.evaluations += 1;
             let t = self.t + C[i] * h;
+            if !self.accelerations.settle(model, t, &self.q_stage, &mut self.v_new) {
+                return Err(Rejection::Singular);
+            }
             let stage = (&self.q_stage, &self.v_new);
             if !self.accelerations.evaluate(model, t, stage, &mut self.kv[i], &mut self.lambda_stage) {
                 return Err(Rejection::Singular);

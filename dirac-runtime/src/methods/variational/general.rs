@@ -8,8 +8,8 @@ use super::work::{StageBlocks, Step};
 use crate::algebra::{Algebra, Saddle, SaddleTerms};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
-use crate::model::MatCQ;
 use crate::model::configuration;
+use crate::model::{MatCQ, MatQQ};
 use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
 use crate::shape::layout::Unknowns;
 
@@ -59,6 +59,18 @@ where
         let r = x.r.as_mut_slice();
         for i in 0..n {
             r[i] = 0.5 * (x.lv0[i] + x.lv1[i]) - 0.5 * h * (x.lq[i] + x.f[i]) - x.target[i] - s.state.p[i];
+        }
+        if let Some(free) = &w.free {
+            // Along the velocities only the forces fix, the row is the momentum balance at the
+            // midpoint, `−(h/2) Nᵀ (∂L/∂q + F − L_vq v)` there (the discrete Lagrange-d'Alembert
+            // force fixes the step velocity, as the implicit midpoint rule does): `∂L/∂q` moves
+            // from the step's start to its midpoint. With `∂L/∂q` at the start the rows were
+            // the explicit Euler method's, first order.
+            model.dl_dq(tm, &x.qm, v, &mut x.target);
+            for (d, (lq, lm)) in x.f.iter_mut().zip(x.lq.iter().zip(x.target.iter())) {
+                *d = 0.5 * h * (lq - lm);
+            }
+            free.add_along(&mut r[..n], x.f.as_slice());
         }
 
         let b = &mut w.blocks;
@@ -216,8 +228,23 @@ where
         }
         M::Algebra::cq_mul(&b.a1, 1.0, wv.as_slice(), r_lambda);
         model.l_vv(t1, &x.q1, wv, &mut b.lvv1);
+        // Along the velocities only the forces fix, the Legendre map does not depend on them:
+        // `N Nᵀ` completes the matrix, their rows are dropped here, and they are solved from
+        // the momentum balance at the step's end once the others have converged.
+        let (one, two);
+        let top: &[(f64, &MatQQ<M>)] = match &w.free {
+            Some(free) => {
+                free.remove(r_v);
+                two = [(1.0, &b.lvv1), (1.0, &free.projector)];
+                &two
+            }
+            None => {
+                one = [(1.0, &b.lvv1)];
+                &one
+            }
+        };
         w.saddle.assemble(&SaddleTerms {
-            top: &[(1.0, &b.lvv1)],
+            top,
             top_transposed: &[],
             identity: 0.0,
             right: &[(-1.0, &b.a1)],
@@ -225,6 +252,12 @@ where
             corner: (0.0, 0.0),
         });
         if newton_update(s, Stage::Two, iteration)? {
+            let w = &mut s.work;
+            if let Some(free) = &mut w.free
+                && !free.settle(model, t1, &w.vectors.q1, &mut s.state.v)
+            {
+                return Err(s.diverged());
+            }
             let x = &s.work.vectors;
             model.dl_dv(t1, &x.q1, &s.state.v, &mut s.state.p);
             return Ok(());

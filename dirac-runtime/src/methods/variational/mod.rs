@@ -40,6 +40,7 @@ mod general;
 pub(crate) mod separable;
 mod work;
 
+use crate::analysis::free::FreeVelocities;
 use nalgebra::DefaultAllocator;
 
 use std::cell::RefCell;
@@ -422,6 +423,11 @@ where
         self.work.gamma.fill(0.0);
         self.stats = VariationalStats::default();
         self.energy_scale = 0.0;
+        // The velocities only the forces fix, found once per start (a restart keeps them:
+        // which coordinates lack inertia is the model's structure).
+        let free = |model: &M| FreeVelocities::find(model, t0, (&state.q, &state.v), "Variational");
+        self.work.free = free(self.model.get())?;
+        self.probe.get_mut().1.free = free(self.model.get())?;
         self.begin(t0, t_end)
     }
 

@@ -1,5 +1,6 @@
 //! The options, counters and work space of a variational step, shared by its two paths.
 
+use crate::analysis::free::FreeVelocities;
 use nalgebra::DefaultAllocator;
 
 use crate::algebra::Algebra;
@@ -103,6 +104,9 @@ where
     /// The energy put in since the start by the external forces and by the Lagrangian's
     /// dependence on time, `Σ h (⟨F, v_k⟩ − ∂L/∂t)` at the steps' midpoints.
     pub work: f64,
+    /// The velocities no inertia or constraint fixes, solved from the forces at every step's
+    /// end; found at the start.
+    pub free: Option<FreeVelocities<M>>,
 }
 
 /// The blocks a stage system is assembled from. Each is written by one model method only
@@ -192,6 +196,7 @@ where
             last_update: f64::INFINITY,
             dl_dq: q(),
             work: 0.0,
+            free: None,
         }
     }
 }
