@@ -131,6 +131,27 @@ fn variational_steps_do_not_allocate() {
     );
 }
 
+/// Velocities no inertia fixes but the forces do (the motor's current): Explicit settles them
+/// at every stage and in its dense output, the variational step at its end, Radau needs
+/// nothing more. The recorder's dissipated power is an output like any other.
+#[test]
+fn steps_with_velocities_fixed_by_forces_do_not_allocate() {
+    let motor = AcMotor { r: 1.5, k: 0.8, j: 0.2, b: 0.1, u0: 12.0, om: 3.0 };
+    let s = consistent_state(
+        &motor,
+        0.0,
+        &VecQ::<AcMotor>::zeros(),
+        &VecQ::<AcMotor>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    assert_eq!(allocations_in_steps(&motor, &s, 100.0), 0, "Radau");
+    assert_eq!(allocations_in_explicit_steps(&motor, &s, 100.0), 0, "Explicit");
+    let general = VariationalOptions { use_structure: false, ..VariationalOptions::default() };
+    assert_eq!(allocations_in_variational_steps(&motor, &s, VariationalOptions::default()), 0, "Variational");
+    assert_eq!(allocations_in_variational_steps(&motor, &s, general), 0, "Variational, general path");
+}
+
 /// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
 /// sparse LU, under both integrators.
 /// Steps the explicit integrator 200 times after 5 warm-up steps, reading the state within

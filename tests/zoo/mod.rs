@@ -823,3 +823,19 @@ pub struct LiftedBall {
     pub f0: f64,
     pub om: f64,
 }
+
+/// A DC motor without armature inductance under an alternating voltage: its current `i` has
+/// no inertia and the armature's resistance fixes it (`k w = u − r i`); `j ẇ = k i − b w`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(q => i, th => w))]
+#[dirac(lagrangian = 0.5 * j * w * w + k * i * th)]
+#[dirac(dissipation = 0.5 * r * i * i + 0.5 * b * w * w)]
+#[dirac(force(q) = u0 * (om * t).sin())]
+pub struct AcMotor {
+    pub r: f64,
+    pub k: f64,
+    pub j: f64,
+    pub b: f64,
+    pub u0: f64,
+    pub om: f64,
+}

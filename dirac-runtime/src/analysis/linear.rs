@@ -13,6 +13,14 @@
 //! δy = ∂y/∂q N_h δz + ∂y/∂v N δw + ∂y/∂u δu
 //! ```
 //!
+//! Where `M_r` is singular, some allowed velocities have no inertia and the forces fix them
+//! (an RC circuit's current, design notes §5.1): with `M_r`'s eigenvectors split into `U₁`
+//! (inertia) and `U₂` (none), the rows along `U₂` are algebraic,
+//! `0 = K₂ δz + D₂₁ δw₁ + D₂₂ δw₂ + B₂ δu` (`X₂ = U₂ᵀ Nᵀ X …`), and eliminate `δw₂`: the state
+//! is `x = (δz, δw₁)`, [`Linearization::velocities`] spans the velocities with inertia, and the
+//! others are functions of the state and the inputs. `D₂₂` singular is a velocity nothing
+//! fixes, an error.
+//!
 //! Every matrix comes from the model's generated derivatives, none from differences.
 
 use nalgebra::{DMatrix, DefaultAllocator, SVD};
@@ -42,7 +50,8 @@ pub struct Linearization {
     /// (`n × (n − h)`; the identity without holonomic constraints).
     pub positions: DMatrix<f64>,
     /// An orthonormal basis of the velocities all constraints allow (`n × (n − m)`; the
-    /// identity without constraints).
+    /// identity without constraints) that have inertia: velocities the forces fix instead
+    /// (no inertia along them) are eliminated from the state.
     pub velocities: DMatrix<f64>,
     /// What the state's components are.
     pub basis: Basis,
@@ -198,7 +207,34 @@ where
     refuse_outputs_of_multipliers(model, t, state)?;
     let positions = kernel(&a.rows(0, nh).into_owned(), n, t)?;
     let velocities = kernel(&a, n, t)?;
-    let mass = velocities.transpose() * &lvv * &velocities;
+    let nt = velocities.transpose();
+    let mass = &nt * &lvv * &velocities;
+    // The allowed velocities split into those with inertia (`U₁`) and those without (`U₂`,
+    // fixed by the forces: `0 = K₂ δz + D₂₁ δw₁ + D₂₂ δw₂ + B₂ δu`), which are eliminated.
+    let (inertial, free) = split_by_inertia(&mass, lvv.amax());
+    let damping = &nt * (&dv - &lvq) * &velocities;
+    let stiffness = &nt * &k * &positions;
+    let forcing = &nt * &bu;
+    let (nz, nw, nf) = (positions.ncols(), inertial.ncols(), free.ncols());
+    // δw = P_z δz + P_w δw₁ + P_u δu: the allowed velocities from the state and the inputs.
+    let (mut p_z, mut p_w, mut p_u) =
+        (DMatrix::zeros(velocities.ncols(), nz), inertial.clone(), DMatrix::zeros(velocities.ncols(), nu));
+    if nf > 0 {
+        let d22 = free.transpose() * &damping * &free;
+        let Some(d22_inverse) = d22.try_inverse() else {
+            return Err(SimError::NotDetermined {
+                t,
+                cause: "a velocity without inertia is left free: no force or dissipation depends on it \
+                        (∂F/∂v), so the motion does not fix it"
+                    .into(),
+            });
+        };
+        let solve = -(&free * d22_inverse * free.transpose());
+        p_z = &solve * &stiffness;
+        p_w = &inertial + &solve * &damping * &inertial;
+        p_u = &solve * &forcing;
+    }
+    let mass = inertial.transpose() * &mass * &inertial;
     let Some(inverse) = mass.clone().try_inverse() else {
         return Err(SimError::NotDetermined {
             t,
@@ -207,17 +243,22 @@ where
                 .into(),
         });
     };
-    let (nz, nw) = (positions.ncols(), velocities.ncols());
+    let to_positions = positions.transpose() * &velocities;
     let mut state_matrix = DMatrix::zeros(nz + nw, nz + nw);
-    state_matrix.view_mut((0, nz), (nz, nw)).copy_from(&(positions.transpose() * &velocities));
-    let nt = velocities.transpose();
-    state_matrix.view_mut((nz, 0), (nw, nz)).copy_from(&(&inverse * &nt * &k * &positions));
-    state_matrix.view_mut((nz, nz), (nw, nw)).copy_from(&(&inverse * &nt * (&dv - &lvq) * &velocities));
+    state_matrix.view_mut((0, 0), (nz, nz)).copy_from(&(&to_positions * &p_z));
+    state_matrix.view_mut((0, nz), (nz, nw)).copy_from(&(&to_positions * &p_w));
+    let rows = &inverse * inertial.transpose();
+    state_matrix.view_mut((nz, 0), (nw, nz)).copy_from(&(&rows * (&stiffness + &damping * &p_z)));
+    state_matrix.view_mut((nz, nz), (nw, nw)).copy_from(&(&rows * &damping * &p_w));
     let mut input_matrix = DMatrix::zeros(nz + nw, nu);
-    input_matrix.view_mut((nz, 0), (nw, nu)).copy_from(&(&inverse * &nt * &bu));
+    input_matrix.view_mut((0, 0), (nz, nu)).copy_from(&(&to_positions * &p_u));
+    input_matrix.view_mut((nz, 0), (nw, nu)).copy_from(&(&rows * (&forcing + &damping * &p_u)));
+    let yv = &yv * &velocities;
     let mut output_matrix = DMatrix::zeros(ny, nz + nw);
-    output_matrix.view_mut((0, 0), (ny, nz)).copy_from(&(&yq * &positions));
-    output_matrix.view_mut((0, nz), (ny, nw)).copy_from(&(&yv * &velocities));
+    output_matrix.view_mut((0, 0), (ny, nz)).copy_from(&(&yq * &positions + &yv * &p_z));
+    output_matrix.view_mut((0, nz), (ny, nw)).copy_from(&(&yv * &p_w));
+    let yu = yu + &yv * &p_u;
+    let velocities = &velocities * &inertial;
     let basis = Basis::Orthonormal;
     Ok(Linearization {
         a: state_matrix,
@@ -228,6 +269,30 @@ where
         velocities,
         basis,
     })
+}
+
+/// The eigenvectors of the symmetric, positive semidefinite `mass` with positive eigenvalues
+/// (inertia) and those with zero eigenvalues (none), the latter relative to `scale`, the size
+/// of the mass matrix they came from.
+fn split_by_inertia(mass: &DMatrix<f64>, scale: f64) -> (DMatrix<f64>, DMatrix<f64>) {
+    let k = mass.nrows();
+    if k == 0 {
+        return (DMatrix::zeros(0, 0), DMatrix::zeros(0, 0));
+    }
+    let eigen = nalgebra::SymmetricEigen::new(mass.clone());
+    let zero = |x: f64| x.abs() <= 1e-10 * scale;
+    if !eigen.eigenvalues.iter().any(|&x| zero(x)) {
+        // Every allowed velocity has inertia: the basis stays as it was.
+        return (DMatrix::identity(k, k), DMatrix::zeros(k, 0));
+    }
+    let pick = |keep: &dyn Fn(f64) -> bool| {
+        let columns: Vec<_> = (0..k)
+            .filter(|&i| keep(eigen.eigenvalues[i]))
+            .map(|i| eigen.eigenvectors.column(i).into_owned())
+            .collect();
+        if columns.is_empty() { DMatrix::zeros(k, 0) } else { DMatrix::from_columns(&columns) }
+    };
+    (pick(&|x| !zero(x)), pick(&zero))
 }
 
 /// An orthonormal basis of `ker rows` in `R^n`: the identity when there are no rows.
