@@ -152,6 +152,46 @@ fn steps_with_velocities_fixed_by_forces_do_not_allocate() {
     assert_eq!(allocations_in_variational_steps(&motor, &s, general), 0, "Variational, general path");
 }
 
+/// Switching surfaces located and the integration restarted at each, as a plain solve does,
+/// under the three integrators: neither the search nor the restart allocates.
+#[test]
+fn restarting_at_switching_surfaces_does_not_allocate() {
+    let servo = SaturatedServo { m: 1.0, kp: 4.0, kd: 1.5, r: 1.0, fmax: 1.0 };
+    let start = State::<SaturatedServo>::zeros();
+    fn run<I: Integrator<SaturatedServo>>(
+        mut integrator: I,
+        start: &State<SaturatedServo>,
+    ) -> (usize, usize) {
+        let mut events = dirac::Events::new().switches();
+        integrator.start(0.0, start, 6.0).expect("starts");
+        events.begin(integrator.model(), 0.0, start).expect("begins");
+        let mut at = start.clone();
+        let before = allocations();
+        let mut switches = 0;
+        while !integrator.finished() {
+            integrator.step().expect("steps");
+            while let Some(event) = events.locate(&mut integrator).expect("locates") {
+                switches += 1;
+                at.clone_from(events.state());
+                integrator.restart_at(event.t, &at).expect("restarts");
+                events.resume(integrator.model(), event.t, &at).expect("resumes");
+            }
+        }
+        (allocations() - before, switches)
+    }
+    let radau = Radau::new(&servo, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let explicit = Explicit::new(&servo, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let variational = Variational::new(&servo, 1e-3, VariationalOptions::default()).expect("valid");
+    for (name, (allocated, switches)) in [
+        ("Radau", run(radau, &start)),
+        ("Explicit", run(explicit, &start)),
+        ("Variational", run(variational, &start)),
+    ] {
+        assert_eq!(allocated, 0, "{name}");
+        assert!(switches >= 3, "{name}: {switches} switches located");
+    }
+}
+
 /// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
 /// sparse LU, under both integrators.
 /// Steps the explicit integrator 200 times after 5 warm-up steps, reading the state within

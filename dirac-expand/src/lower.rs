@@ -59,6 +59,9 @@ pub struct Context<'a> {
     /// For example "the Lagrangian" or "constraint `rod`".
     pub what: &'a str,
     pub velocities: bool,
+    /// Whether a non-smooth function or a conditional may switch on a velocity (not in the
+    /// Lagrangian: the momenta `∂L/∂v` would jump).
+    pub switch_on_velocities: bool,
 }
 
 /// The methods and functions model expressions support, for error messages.
@@ -66,7 +69,9 @@ pub const SUPPORTED: &str = "model expressions support numbers, the model's para
 coordinates, velocities and time `t`, definitions, `f64` constants of your code (named in UPPER_CASE \
 or by a path), `+ - * /`, unary `-`, parentheses, `.powi(i32)`, `.powf(e)`, \
 `.sqrt()`, `.sin()`, `.cos()`, `.tan()`, `.exp()`, `.ln()`, `.sinh()`, `.cosh()`, `.tanh()`, \
-`.atan()`, `y.atan2(x)`, the same as functions (`sin(x)`, `atan2(y, x)`, `powi(x, 2)`), and `PI`";
+`.atan()`, `y.atan2(x)`, the non-smooth `.abs()`, `.signum()`, `a.min(b)`, `a.max(b)`, \
+`x.clamp(lo, hi)` and conditionals `if a > b { x } else { y }` (also `<`, `>=`, `<=`, `else if`), \
+the same as functions (`sin(x)`, `atan2(y, x)`, `powi(x, 2)`, `min(a, b)`), and `PI`";
 
 /// Lowers expressions of one model into one graph.
 pub struct Lowerer<'a> {
@@ -119,6 +124,11 @@ impl Lowerer<'_> {
                 self.function(&call.method, &call.receiver, &args, ctx)
             }
             Expr::Call(call) => self.free_function(call, ctx),
+            Expr::If(branch) => self.conditional(branch, ctx),
+            Expr::Block(block) if block.label.is_none() => match block.block.stmts.as_slice() {
+                [syn::Stmt::Expr(inner, None)] => self.lower(inner, ctx),
+                _ => self.unsupported(expr, "a block with statements"),
+            },
             Expr::Field(field) if !self.scope.subsystems.is_empty() => self.subsystem_ref(field),
             _ => self.unsupported(expr, "this expression"),
         }
@@ -293,6 +303,9 @@ impl Lowerer<'_> {
             let x = self.lower(receiver, ctx);
             return if arity(0, self.cx) { Some(self.graph.call(f, x?)) } else { None };
         }
+        if let Some(id) = self.non_smooth(method, receiver, args, ctx) {
+            return id;
+        }
         if name == "powf" || name == "atan2" {
             let x = self.lower(receiver, ctx);
             if !arity(1, self.cx) {
@@ -305,6 +318,149 @@ impl Lowerer<'_> {
         let _ = self.lower(receiver, ctx);
         self.cx.error_spanned_by(method, format!("unsupported function `{name}`; {SUPPORTED}"));
         None
+    }
+}
+
+impl Lowerer<'_> {
+    /// `abs`, `signum`, `min`, `max` and `clamp` as branches on their switching surfaces;
+    /// `None` for another function. The inner `Option` is the lowered value, `None` after an
+    /// error.
+    fn non_smooth(
+        &mut self,
+        method: &syn::Ident,
+        receiver: &Expr,
+        args: &[&Expr],
+        ctx: Context<'_>,
+    ) -> Option<Option<Id>> {
+        let name = method.to_string();
+        let arity = match name.as_str() {
+            "abs" | "signum" => 0,
+            "min" | "max" => 1,
+            "clamp" => 2,
+            _ => return None,
+        };
+        let x = self.lower(receiver, ctx);
+        let rest: Vec<Option<Id>> = args.iter().map(|a| self.lower(a, ctx)).collect();
+        if args.len() != arity {
+            self.cx
+                .error_spanned_by(method, format!("`{name}` takes {arity} argument(s) besides its receiver"));
+            return Some(None);
+        }
+        let (Some(x), Some(rest)) = (x, rest.into_iter().collect::<Option<Vec<Id>>>()) else {
+            return Some(None);
+        };
+        let g = &mut *self.graph;
+        let value = match name.as_str() {
+            "abs" => {
+                let minus = g.neg(x);
+                g.select(x, x, minus)
+            }
+            // Rust's sign: 1 for x ≥ 0 (at +0.0 too), −1 below; the surface is x = 0.
+            "signum" => {
+                let (one, minus_one) = (g.num(1.0), g.num(-1.0));
+                let below = g.neg(x);
+                g.select(below, minus_one, one)
+            }
+            "min" => {
+                let gap = g.sub(x, rest[0]);
+                g.select(gap, rest[0], x)
+            }
+            "max" => {
+                let gap = g.sub(x, rest[0]);
+                g.select(gap, x, rest[0])
+            }
+            _ => {
+                let (lo, hi) = (rest[0], rest[1]);
+                let over = g.sub(x, hi);
+                let upper = g.select(over, hi, x);
+                let under = g.sub(upper, lo);
+                g.select(under, upper, lo)
+            }
+        };
+        Some(self.check_switch(method, value, ctx))
+    }
+
+    /// `if a > b { x } else { y }` (and `<`, `>=`, `<=`, `else if`) as a branch on the
+    /// switching surface `a − b = 0`.
+    fn conditional(&mut self, branch: &syn::ExprIf, ctx: Context<'_>) -> Option<Id> {
+        let then = match branch.then_branch.stmts.as_slice() {
+            [syn::Stmt::Expr(inner, None)] => self.lower(inner, ctx),
+            _ => {
+                self.cx
+                    .error_spanned_by(&branch.then_branch, "each branch of a conditional is one expression");
+                None
+            }
+        };
+        let otherwise = match &branch.else_branch {
+            Some((_, e)) => self.lower(e, ctx),
+            None => {
+                self.cx.error_spanned_by(
+                    branch.if_token,
+                    "a conditional in a model expression needs an `else` branch: it is a value either way",
+                );
+                None
+            }
+        };
+        let condition = match &*branch.cond {
+            Expr::Binary(b) if matches!(b.op, BinOp::Gt(_) | BinOp::Lt(_) | BinOp::Ge(_) | BinOp::Le(_)) => {
+                let (l, r) = (self.lower(&b.left, ctx), self.lower(&b.right, ctx));
+                l.zip(r).map(|(l, r)| (b.op, l, r))
+            }
+            other => {
+                self.cx.error_spanned_by(
+                    other,
+                    "a condition in a model expression compares two values, as `a > b`, `a < b`, `a >= b` \
+                     or `a <= b`; combine conditions by nesting conditionals",
+                );
+                None
+            }
+        };
+        let ((op, l, r), then, otherwise) = (condition?, then?, otherwise?);
+        let g = &mut *self.graph;
+        let value = match op {
+            BinOp::Gt(_) => {
+                let gap = g.sub(l, r);
+                g.select(gap, then, otherwise)
+            }
+            BinOp::Lt(_) => {
+                let gap = g.sub(r, l);
+                g.select(gap, then, otherwise)
+            }
+            // a ≥ b is "not b > a".
+            BinOp::Ge(_) => {
+                let gap = g.sub(r, l);
+                g.select(gap, otherwise, then)
+            }
+            _ => {
+                let gap = g.sub(l, r);
+                g.select(gap, otherwise, then)
+            }
+        };
+        self.check_switch(&branch.cond, value, ctx)
+    }
+
+    /// `value`, unless it switches on a velocity where that is not allowed (an error at `at`).
+    fn check_switch(&mut self, at: &dyn quote::ToTokens, value: Id, ctx: Context<'_>) -> Option<Id> {
+        if ctx.switch_on_velocities {
+            return Some(value);
+        }
+        let surfaces = self.graph.switches(&[value]);
+        let on_velocity = surfaces
+            .iter()
+            .any(|&c| self.graph.deps(c).iter().any(|s| matches!(self.symbols.kind(s), Sym::Velocity(_))));
+        if on_velocity {
+            self.cx.error_spanned_by(
+                at.to_token_stream(),
+                format!(
+                    "{} switches on a velocity here: the momenta ∂L/∂v would jump where it switches; \
+                     write friction, diodes and other laws that switch on velocities as a `force` or in \
+                     the `dissipation`",
+                    ctx.what
+                ),
+            );
+            return None;
+        }
+        Some(value)
     }
 }
 

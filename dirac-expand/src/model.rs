@@ -117,8 +117,9 @@ impl SymModel {
         sm.ports = model.ports.iter().filter_map(|p| sm.coordinates.iter().position(|c| c == p)).collect();
         sm.force = vec![zero; sm.n()];
         let mut lw = Lowerer { cx, graph: &mut sm.graph, symbols: &mut sm.symbols, scope: &scope };
-        let all = Context { what: "the Lagrangian", velocities: true };
-        let lagrangian = model.lagrangian.as_ref().and_then(|(_, e)| lw.lower(e, all));
+        let all = Context { what: "the Lagrangian", velocities: true, switch_on_velocities: true };
+        let in_lagrangian = Context { switch_on_velocities: false, ..all };
+        let lagrangian = model.lagrangian.as_ref().and_then(|(_, e)| lw.lower(e, in_lagrangian));
         for f in &model.forces {
             let what = format!("the force on `{}`", f.coordinate);
             let lowered = lw.lower(&f.expr, Context { what: &what, ..all });
@@ -153,7 +154,48 @@ impl SymModel {
         }
         sm.lower_unilaterals(cx, model, &scope);
         sm.lagrangian = lagrangian?;
+        sm.add_switching_surfaces();
         (!cx.has_errors()).then_some(sm)
+    }
+
+    /// Adds an event for each switching surface `c = 0` of a non-smooth function or a
+    /// conditional in the Lagrangian, the forces (the dissipation's among them) and the
+    /// constraints, named `switch0`, `switch1`, … (skipping names in use), with the direction
+    /// code 2 (a switching surface: located in every solve, the integration restarted there).
+    /// `c` and `−c` are one surface.
+    fn add_switching_surfaces(&mut self) {
+        let mut roots = vec![self.lagrangian];
+        roots.extend(&self.force);
+        roots.extend(self.a.iter().flatten());
+        roots.extend(&self.b);
+        roots.extend(&self.phi);
+        let mut surfaces = Vec::new();
+        for c in self.graph.switches(&roots) {
+            let c = match self.graph.node(c) {
+                Node::Mul(k, _) if k.get() < 0.0 => self.graph.neg(c),
+                _ => c,
+            };
+            if !surfaces.contains(&c) {
+                surfaces.push(c);
+            }
+        }
+        let mut k = 0;
+        for c in surfaces {
+            let name = loop {
+                let name = format!("switch{k}");
+                k += 1;
+                let taken = |n: &str| {
+                    self.events.iter().any(|(e, ..)| e == n)
+                        || self.outputs.iter().any(|(o, _)| o == n)
+                        || self.constraints.iter().any(|r| r.name == n)
+                        || self.coordinates.iter().chain(&self.velocities).chain(&self.params).any(|i| i == n)
+                };
+                if !taken(&name) {
+                    break name;
+                }
+            };
+            self.events.push((name, 2, c));
+        }
     }
 
     /// Adds the forces `−∂R/∂v` of the Rayleigh function `R` to the model's and returns the
@@ -190,7 +232,7 @@ impl SymModel {
     fn lower_unilaterals(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) {
         for u in &model.unilaterals {
             let what = format!("unilateral constraint `{}`", u.name);
-            let ctx = Context { what: &what, velocities: false };
+            let ctx = Context { what: &what, velocities: false, switch_on_velocities: true };
             let Some(phi) = self.lowerer(cx, scope).lower(&u.expr, ctx) else { continue };
             let q = self.q.clone();
             if q.iter().all(|&x| {
@@ -204,8 +246,9 @@ impl SymModel {
                 None => self.graph.num(1.0),
                 Some(e) => {
                     let what = format!("the restitution of unilateral constraint `{}`", u.name);
-                    let Some(e_id) =
-                        self.lowerer(cx, scope).lower(e, Context { what: &what, velocities: false })
+                    let Some(e_id) = self
+                        .lowerer(cx, scope)
+                        .lower(e, Context { what: &what, velocities: false, switch_on_velocities: true })
                     else {
                         continue;
                     };
@@ -233,7 +276,7 @@ impl SymModel {
         for d in &model.defines {
             let name = d.name.to_string();
             let what = format!("the definition `{name}`");
-            let ctx = Context { what: &what, velocities: true };
+            let ctx = Context { what: &what, velocities: true, switch_on_velocities: true };
             // A definition with errors is still declared (as zero), so that its uses report
             // nothing more; the errors already stop the expansion.
             let value = self.lowerer(cx, scope).lower(&d.expr, ctx).unwrap_or_else(|| self.graph.num(0.0));
@@ -305,7 +348,7 @@ impl SymModel {
         what: &str,
         scope: &Scope,
     ) -> Option<(Vec<Id>, Id)> {
-        let ctx = Context { what, velocities: false };
+        let ctx = Context { what, velocities: false, switch_on_velocities: true };
         let phi = self.lowerer(cx, scope).lower(expr, ctx)?;
         let row: Vec<Id> = self.q.clone().iter().map(|q| self.graph.diff(phi, *q)).collect();
         if row.iter().all(|d| self.graph.is_zero(*d)) {
@@ -327,7 +370,7 @@ impl SymModel {
         (what, name): (&str, &str),
         scope: &Scope,
     ) -> Option<(Vec<Id>, Id)> {
-        let ctx = Context { what, velocities: true };
+        let ctx = Context { what, velocities: true, switch_on_velocities: true };
         let mut terms = Vec::new();
         additive_terms(expr, false, &mut terms);
         let mut lowered = Vec::new();

@@ -49,6 +49,14 @@ fn every_supported_function() {
     check_jacobian_by_differences(&AllFunctions { m: 1.5, k: 0.7 }, 9, 40);
 }
 
+/// Away from their switching surfaces (random states are that with probability 1 − 1e-5),
+/// the branches' derivatives are the function's.
+#[test]
+fn non_smooth_functions_and_conditionals() {
+    let model = NonSmooth { m: 1.2, k: 2.0, gap: 0.3, c: 0.4, fmax: 0.5, mu: 0.25 };
+    check_jacobian_by_differences(&model, 10, 60);
+}
+
 #[test]
 fn interconnected_models() {
     let chain = paper_chain();

@@ -839,3 +839,36 @@ pub struct AcMotor {
     pub u0: f64,
     pub om: f64,
 }
+
+/// Every non-smooth function and conditional: a spring with a dead zone and an `abs` spring
+/// (switching on positions, in the Lagrangian), saturated damping, a sign-dependent friction
+/// with `min` and `max` in its coefficient, and conditionals in the forces and dissipation.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v, y => w))]
+#[dirac(lagrangian = 0.5 * m * (v * v + w * w)
+    - (if x > gap { 0.5 * k * (x - gap).powi(2) } else if x < -gap { 0.5 * k * (x + gap).powi(2) } else { 0.0 })
+    - k * y.abs().powi(3))]
+#[dirac(force(x) = (-c * v).clamp(-fmax, fmax) - mu * v.signum() * (1.0 + x.max(y).min(2.0)))]
+#[dirac(force(y) = if w >= 0.0 { -c * w * w } else { c * w * w } + max(x - y, 0.0))]
+#[dirac(dissipation = 0.5 * c * (if w - v <= 0.0 { 2.0 * (w - v).powi(2) } else { (w - v).powi(2) }))]
+pub struct NonSmooth {
+    pub m: f64,
+    pub k: f64,
+    pub gap: f64,
+    pub c: f64,
+    pub fmax: f64,
+    pub mu: f64,
+}
+
+/// A mass driven to `r` by a PD controller whose force saturates at `±fmax`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v)]
+#[dirac(force(x) = (kp * (r - x) - kd * v).clamp(-fmax, fmax))]
+pub struct SaturatedServo {
+    pub m: f64,
+    pub kp: f64,
+    pub kd: f64,
+    pub r: f64,
+    pub fmax: f64,
+}

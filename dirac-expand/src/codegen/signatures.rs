@@ -25,7 +25,7 @@ pub fn solve_with_contacts() -> TokenStream {
         ) -> ::core::option::Option<
             ::core::result::Result<#p::Solution<Self, <I as #p::Integrator<Self>>::Stats>, #p::SimError>,
         > {
-            let mut events = #p::Events::new().contacts(#p::Integrator::model(integrator));
+            let mut events = #p::Events::new().contacts(#p::Integrator::model(integrator)).switches();
             ::core::option::Option::Some(#p::SolveWithEvents::solve_with_events(
                 integrator,
                 t0,

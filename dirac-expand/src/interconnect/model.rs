@@ -129,7 +129,7 @@ impl CompositeModel {
         for (i, c) in composite.constraints.iter().enumerate() {
             let name = c.name.as_ref().map(ToString::to_string).unwrap_or_else(|| format!("constraint{i}"));
             let what = format!("interconnection constraint `{name}`");
-            let ctx = Context { what: &what, velocities: true };
+            let ctx = Context { what: &what, velocities: true, switch_on_velocities: true };
             let mut syntactic = Vec::new();
             additive_terms(&c.expr, false, &mut syntactic);
             let mut terms = Vec::new();

@@ -42,6 +42,13 @@ impl Graph {
                 let outer = self.diff_call(f, x);
                 self.mul2(outer, dx)
             }
+            Node::Select(c, a, b) => {
+                // Within each side of the switching surface, the derivative of its branch; the
+                // surface itself is located as an event, never stepped across.
+                let da = self.diff_sym(a, s);
+                let db = self.diff_sym(b, s);
+                self.select(c, da, db)
+            }
             Node::Atan2(y, x) => {
                 // d atan2(y, x) = (x dy − y dx) / (x² + y²)
                 let dy = self.diff_sym(y, s);

@@ -113,7 +113,7 @@ fn node_ops(node: &Node) -> usize {
         Node::Add(c, ts) => ts.len() - 1 + usize::from(c.get() != 0.0),
         Node::Mul(c, fs) => fs.len() - 1 + usize::from(c.get().abs() != 1.0),
         Node::Powi(_, k) => k.unsigned_abs().ilog2() as usize + k.count_ones() as usize,
-        Node::Powf(..) | Node::Call(..) | Node::Atan2(..) => 1,
+        Node::Powf(..) | Node::Call(..) | Node::Atan2(..) | Node::Select(..) => 1,
     }
 }
 
@@ -159,6 +159,7 @@ fn children(graph: &Graph, id: Id) -> Vec<Id> {
         Node::Add(_, xs) | Node::Mul(_, xs) => xs.to_vec(),
         Node::Powi(x, _) | Node::Call(_, x) => vec![*x],
         Node::Powf(a, b) | Node::Atan2(a, b) => vec![*a, *b],
+        Node::Select(c, a, b) => vec![*c, *a, *b],
     }
 }
 
@@ -214,6 +215,10 @@ impl Emitter<'_> {
                 let y = self.at_least(*y, Prec::Atom);
                 let (x, _) = self.render(*x);
                 (quote! { #y.atan2(#x) }, Prec::Atom)
+            }
+            Node::Select(c, a, b) => {
+                let ((c, _), (a, _), (b, _)) = (self.render(*c), self.render(*a), self.render(*b));
+                (quote! { (if #c > 0.0 { #a } else { #b }) }, Prec::Atom)
             }
         }
     }

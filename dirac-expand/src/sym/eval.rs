@@ -38,6 +38,13 @@ impl Graph {
                 let y = self.eval_memo(*y, value, memo);
                 y.atan2(self.eval_memo(*x, value, memo))
             }
+            Node::Select(c, a, b) => {
+                if self.eval_memo(*c, value, memo) > 0.0 {
+                    self.eval_memo(*a, value, memo)
+                } else {
+                    self.eval_memo(*b, value, memo)
+                }
+            }
         };
         memo.insert(e, x);
         x
@@ -94,6 +101,12 @@ impl Graph {
                 let y = self.substitute_memo(y, map, memo);
                 let x = self.substitute_memo(x, map, memo);
                 self.atan2(y, x)
+            }
+            Node::Select(c, a, b) => {
+                let c = self.substitute_memo(c, map, memo);
+                let a = self.substitute_memo(a, map, memo);
+                let b = self.substitute_memo(b, map, memo);
+                self.select(c, a, b)
             }
         };
         memo.insert(e, r);

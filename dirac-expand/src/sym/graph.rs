@@ -131,6 +131,9 @@ pub enum Node {
     Call(Func, Id),
     /// `atan2(y, x)`.
     Atan2(Id, Id),
+    /// `if c > 0 { a } else { b }`: the branch of a non-smooth function (`abs`, `min`, a
+    /// conditional); `c = 0` is its switching surface.
+    Select(Id, Id, Id),
 }
 
 /// A set of symbols, one bit each.
@@ -283,6 +286,12 @@ impl Graph {
             Node::Powi(x, _) | Node::Call(_, x) => self.deps[x.index()].clone(),
             Node::Powf(a, b) | Node::Atan2(a, b) => {
                 let mut set = self.deps[a.index()].clone();
+                set.union_with(&self.deps[b.index()]);
+                set
+            }
+            Node::Select(c, a, b) => {
+                let mut set = self.deps[c.index()].clone();
+                set.union_with(&self.deps[a.index()]);
                 set.union_with(&self.deps[b.index()]);
                 set
             }
@@ -476,6 +485,44 @@ impl Graph {
             Some(c) => self.num(f.apply(c)),
             None => self.intern(Node::Call(f, x)),
         }
+    }
+
+    /// `if c > 0 { a } else { b }`; a constant `c` picks its branch, equal branches are one.
+    pub fn select(&mut self, c: Id, a: Id, b: Id) -> Id {
+        if a == b {
+            return a;
+        }
+        match self.as_num(c) {
+            Some(x) if x > 0.0 => a,
+            Some(_) => b,
+            None => self.intern(Node::Select(c, a, b)),
+        }
+    }
+
+    /// The switching surfaces `c` of every `Select` that `e` reaches, in id order, once each.
+    pub fn switches(&self, roots: &[Id]) -> Vec<Id> {
+        let mut seen = vec![false; self.len()];
+        let mut stack: Vec<Id> = roots.to_vec();
+        let mut out = Vec::new();
+        while let Some(id) = stack.pop() {
+            if std::mem::replace(&mut seen[id.index()], true) {
+                continue;
+            }
+            match self.node(id) {
+                Node::Num(_) => {}
+                Node::Sym(s) => stack.extend(self.binding(*s)),
+                Node::Add(_, xs) | Node::Mul(_, xs) => stack.extend(xs.iter().copied()),
+                Node::Powi(x, _) | Node::Call(_, x) => stack.push(*x),
+                Node::Powf(a, b) | Node::Atan2(a, b) => stack.extend([*a, *b]),
+                Node::Select(c, a, b) => {
+                    out.push(*c);
+                    stack.extend([*c, *a, *b]);
+                }
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 
     /// `atan2(y, x)`.

@@ -53,6 +53,15 @@ impl Printer<'_> {
                 };
                 (out, Prec::Atom)
             }
+            Node::Select(c, a, b) => {
+                let (c, a, b) = (self.print(*c).0, self.print(*a).0, self.print(*b).0);
+                let out = if latex {
+                    format!("\\begin{{cases}} {a} & {c} > 0 \\\\ {b} & \\text{{otherwise}} \\end{{cases}}")
+                } else {
+                    format!("(if {c} > 0 then {a} else {b})")
+                };
+                (out, Prec::Atom)
+            }
             Node::Atan2(y, x) => {
                 let (y, x) = (self.print(*y).0, self.print(*x).0);
                 let out = if latex {

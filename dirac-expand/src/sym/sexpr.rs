@@ -44,6 +44,7 @@ impl Graph {
             Node::Powf(b, x) => list(self, "pow", None, &[*b, *x], out),
             Node::Call(f, x) => list(self, f.name(), None, &[*x], out),
             Node::Atan2(y, x) => list(self, "atan2", None, &[*y, *x], out),
+            Node::Select(c, a, b) => list(self, "select", None, &[*c, *a, *b], out),
         }
     }
 
@@ -114,6 +115,10 @@ impl Graph {
             "atan2" => {
                 arity(2)?;
                 self.atan2(args[0], args[1])
+            }
+            "select" => {
+                arity(3)?;
+                self.select(args[0], args[1], args[2])
             }
             "d" => {
                 arity(2)?;

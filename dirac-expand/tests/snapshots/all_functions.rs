@@ -647,7 +647,8 @@ const _: () = {
             >,
         > {
             let mut events = ::dirac::__private::Events::new()
-                .contacts(::dirac::__private::Integrator::model(integrator));
+                .contacts(::dirac::__private::Integrator::model(integrator))
+                .switches();
             ::core::option::Option::Some(
                 ::dirac::__private::SolveWithEvents::solve_with_events(
                     integrator,

@@ -49,6 +49,12 @@ pub trait Named {
         Self::NAMES.unilateral_names()
     }
 
+    /// Whether the model or a subsystem has switching surfaces (non-smooth functions or
+    /// conditionals in its Lagrangian, forces or constraints), which every solve locates.
+    fn has_switches(&self) -> bool {
+        Self::NAMES.event_declarations().iter().any(|(_, d)| *d == crate::model::names::SWITCH)
+    }
+
     /// The full dotted name of every parameter, the model's `f64` fields (`left.k` in a
     /// composite: its subsystems' in field order, then its own), in the order of their indices:
     /// the parameters that [`parameter_value`](crate::model::Parameters::parameter_value), sensitivities

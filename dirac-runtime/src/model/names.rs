@@ -5,6 +5,11 @@
 //! tree is a `const`, an interconnection resolves `left.x2` to an index while the program is
 //! compiled, and a name that does not exist stops the build with a message.
 
+/// The direction code of a switching surface among a model's events ([`Names::events`]):
+/// the surface `c = 0` of an `abs`, `min`, `max`, `clamp`, `signum` or conditional, crossed
+/// either way.
+pub const SWITCH: i8 = 2;
+
 /// The names of one model.
 #[derive(Debug)]
 pub struct Names {
@@ -25,7 +30,9 @@ pub struct Names {
     /// The model's own unilateral constraints (`unilateral(name) = φ`, `φ ≥ 0`).
     pub unilaterals: &'static [&'static str],
     /// The model's own events (`event(name, direction) = g`), each with the direction of the
-    /// crossings that count: −1 falling, 1 rising, 0 either.
+    /// crossings that count: −1 falling, 1 rising, 0 either; [`SWITCH`] for the switching
+    /// surfaces of its non-smooth functions and conditionals (`switch0`, …), which every
+    /// solve locates.
     pub events: &'static [(&'static str, i8)],
     /// The model's own parameters, its `f64` fields (a composite's own, which its
     /// interconnection rows may read), in field order.

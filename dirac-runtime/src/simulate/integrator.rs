@@ -238,8 +238,9 @@ where
     where
         Self: Sized,
     {
-        // A model with unilateral constraints is solved with them watched.
-        if !self.model().unilateral_names().is_empty()
+        // A model with unilateral constraints is solved with them watched, one with switching
+        // surfaces with them located.
+        if (!self.model().unilateral_names().is_empty() || self.model().has_switches())
             && let Some(solution) = M::__solve_with_contacts(self, t0, state, t_end, sampling)
         {
             return solution;

@@ -93,3 +93,4 @@ mod dissipation;
 mod events;
 mod inputs;
 mod sensitivities;
+mod switching;

@@ -2,7 +2,7 @@ use dirac::prelude::*;
 
 #[derive(LagrangeDirac)]
 #[dirac(coordinates(x => v))]
-#[dirac(lagrangian = if x > 0.0 { 0.5 * m * v * v } else { 0.0 })]
+#[dirac(lagrangian = match x { _ => 0.5 * m * v * v })]
 struct Particle {
     m: f64,
 }

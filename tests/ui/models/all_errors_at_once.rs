@@ -3,7 +3,7 @@ use dirac::prelude::*;
 /// Three independent mistakes are all reported, and using the model afterwards adds no error.
 #[derive(LagrangeDirac)]
 #[dirac(coordinates(x => vx, y => vy), port(z))]
-#[dirac(lagrangian = 0.5 * mass * (vx * vx + vy * vy) - m * g * y.abs())]
+#[dirac(lagrangian = 0.5 * mass * (vx * vx + vy * vy) - m * g * y.floor())]
 #[dirac(constraint = vx * vy)]
 struct Particle {
     m: f64,

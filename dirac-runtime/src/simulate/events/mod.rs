@@ -13,6 +13,7 @@
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
+use crate::model::names::SWITCH;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
@@ -73,6 +74,9 @@ where
     /// Functions restarted at zero by an impact that reopened their contact: they count as
     /// positive there, so that a closing again within the same step is seen.
     reopened: Vec<bool>,
+    /// Whether each function is a switching surface of the model, where the integration
+    /// restarts.
+    pub(crate) switch_of: Vec<bool>,
 }
 
 impl<M: LagrangeDirac> Default for Events<'_, M>
@@ -110,6 +114,7 @@ where
             contact_of: Vec::new(),
             release_of: Vec::new(),
             reopened: Vec::new(),
+            switch_of: Vec::new(),
         }
     }
 
@@ -126,6 +131,7 @@ where
         self.functions.push(Box::new(g));
         self.contact_of.push(None);
         self.release_of.push(None);
+        self.switch_of.push(false);
         self
     }
 
@@ -187,7 +193,7 @@ where
         for (j, (name, direction)) in declared.into_iter().enumerate() {
             let crossing = match direction {
                 d if d < 0 => Crossing::Falling,
-                d if d > 0 => Crossing::Rising,
+                1 => Crossing::Rising,
                 _ => Crossing::Either,
             };
             let mut values = vec![0.0; k];
@@ -195,6 +201,30 @@ where
                 m.events(t, &s.q, &s.v, &s.lambda, &mut values);
                 values[j]
             });
+            *self.switch_of.last_mut().expect("just added") = direction == SWITCH;
+        }
+        self
+    }
+
+    /// Adds the switching surfaces of the model's non-smooth functions and conditionals
+    /// (`abs`, `min`, `max`, `clamp`, `signum`, `if a > b { … } else { … }` in its Lagrangian,
+    /// forces or constraints; `switch0`, … by name, dotted in an interconnection): at each
+    /// crossing, [`SolveWithEvents::solve_with_events`] restarts the integration, so that no
+    /// step reaches across the kink. A plain [`Integrator::solve`](crate::Integrator::solve)
+    /// adds them itself; [`Events::declared`] has them among the declared events.
+    pub fn switches(mut self) -> Self {
+        let declared = M::NAMES.event_declarations();
+        let k = declared.len();
+        for (j, (name, direction)) in declared.into_iter().enumerate() {
+            if direction != SWITCH {
+                continue;
+            }
+            let mut values = vec![0.0; k];
+            self = self.on(name, Crossing::Either, move |t, s: &State<M>, m: &M| {
+                m.events(t, &s.q, &s.v, &s.lambda, &mut values);
+                values[j]
+            });
+            *self.switch_of.last_mut().expect("just added") = true;
         }
         self
     }
@@ -245,6 +275,7 @@ where
             }));
             self.contact_of.push(Some(j));
             self.release_of.push(None);
+            self.switch_of.push(false);
         }
         // In a companion whose contacts rest, a closed contact opens where its force, the
         // multiplier of its row, falls through zero.

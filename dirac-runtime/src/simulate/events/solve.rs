@@ -204,6 +204,22 @@ where
                 if flow.is_break() {
                     return recorder.finish(self.stats());
                 }
+                if !(reset || before.is_some()) && events.switch_of[event.index] {
+                    // A switching surface: the step that reached across it is cut there, and the
+                    // integration goes on from the state at the crossing, on the other side.
+                    // The interpolated state is the step's, on the constraints as its steps are;
+                    // where the integrator's own check refuses it, from the consistent state
+                    // nearest to it.
+                    if self.restart_at(t, &after).is_err() {
+                        let consistent =
+                            consistent_state(self.model(), t, &after.q, &after.v, Consistency::default())?;
+                        self.restart_at(t, &consistent)?;
+                        after.clone_from(&consistent);
+                    }
+                    events.resume(self.model(), t, &after)?;
+                    restarted = true;
+                    break;
+                }
                 if reset || before.is_some() {
                     if let (false, Some(before)) = (reset, before) {
                         check_constraints_kept(self.model(), t, &after, before)?;
