@@ -17,7 +17,7 @@
 //! (an RC circuit's current, design notes §5.1): with `M_r`'s eigenvectors split into `U₁`
 //! (inertia) and `U₂` (none), the rows along `U₂` are algebraic,
 //! `0 = K₂ δz + D₂₁ δw₁ + D₂₂ δw₂ + B₂ δu` (`X₂ = U₂ᵀ Nᵀ X …`), and eliminate `δw₂`: the state
-//! is `x = (δz, δw₁)`, [`Linearization::velocities`] spans the velocities with inertia, and the
+//! is `x = (δz, δw₁)`, [`Linearization::velocities`](crate::analysis::linear::Linearization::velocities) spans the velocities with inertia, and the
 //! others are functions of the state and the inputs. `D₂₂` singular is a velocity nothing
 //! fixes, an error.
 //!
