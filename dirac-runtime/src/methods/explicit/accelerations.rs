@@ -156,9 +156,21 @@ where
         Ok(())
     }
 
+    /// Forgets the velocities found by [`Accelerations::prepare`].
+    pub fn unprepare(&mut self) {
+        self.free = None;
+    }
+
+    /// Whether the model has velocities that only the forces fix (found by
+    /// [`Accelerations::prepare`]).
+    pub fn has_free(&self) -> bool {
+        self.free.is_some()
+    }
+
     /// Puts the velocities that only the forces fix onto their momentum balance at `(t, q)`;
     /// false where that fails (a singular matrix, no convergence). Nothing to do for a model
     /// without such velocities.
+    #[inline]
     pub fn settle(&mut self, model: &M, t: f64, q: &VecQ<M>, v: &mut VecQ<M>) -> bool {
         match &mut self.free {
             Some(free) => free.settle(model, t, q, v),

@@ -31,12 +31,16 @@ where
         self.stats = ExplicitStats::default();
         self.accelerations.factorizations = 0;
         self.forget();
-        // The velocities only the forces fix, found once per start (a restart keeps them: which
-        // coordinates lack inertia is the model's structure).
-        let s = &self.state;
-        self.accelerations.prepare(self.model.get(), t0, (&s.q, &s.v))?;
-        self.probe.get_mut().0.prepare(self.model.get(), t0, (&s.q, &s.v))?;
+        // The velocities only the forces fix are looked for where the start's system is
+        // singular (evaluate_start), once per start; a restart keeps them: which coordinates
+        // lack inertia is the model's structure.
+        self.accelerations.unprepare();
+        self.probe.get_mut().0.unprepare();
         self.evaluate_start()?;
+        if self.accelerations.has_free() {
+            let s = &self.state;
+            self.probe.get_mut().0.prepare(self.model.get(), t0, (&s.q, &s.v))?;
+        }
         // The interpolation's own system, factored once here: a sparse factorisation finds
         // its pivots (and allocates) the first time only.
         let (probe, acceleration) = self.probe.get_mut();

@@ -198,7 +198,7 @@ where
         let model = self.model.get();
         let s = &mut self.state;
         self.stats.evaluations += 1;
-        let determined = self.accelerations.settle(model, self.t, &s.q, &mut s.v)
+        let mut determined = self.accelerations.settle(model, self.t, &s.q, &mut s.v)
             && self.accelerations.evaluate(
                 model,
                 self.t,
@@ -206,6 +206,19 @@ where
                 &mut self.start_acceleration,
                 &mut s.lambda,
             );
+        if !determined && !self.accelerations.has_free() {
+            // Singular: velocities that only the forces fix, if that is why (set-up: allocates).
+            self.accelerations.prepare(model, self.t, (&s.q, &s.v))?;
+            determined = self.accelerations.has_free()
+                && self.accelerations.settle(model, self.t, &s.q, &mut s.v)
+                && self.accelerations.evaluate(
+                    model,
+                    self.t,
+                    (&s.q, &s.v),
+                    &mut self.start_acceleration,
+                    &mut s.lambda,
+                );
+        }
         self.stats.factorizations = self.accelerations.factorizations;
         if !determined {
             return Err(SimError::NotDetermined {

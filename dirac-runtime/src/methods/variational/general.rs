@@ -6,10 +6,11 @@ use nalgebra::DefaultAllocator;
 
 use super::work::{StageBlocks, Step};
 use crate::algebra::{Algebra, Saddle, SaddleTerms};
+use crate::analysis::free::FreeVelocities;
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
+use crate::model::MatCQ;
 use crate::model::configuration;
-use crate::model::{MatCQ, MatQQ};
 use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
 use crate::shape::layout::Unknowns;
 
@@ -61,18 +62,8 @@ where
             r[i] = 0.5 * (x.lv0[i] + x.lv1[i]) - 0.5 * h * (x.lq[i] + x.f[i]) - x.target[i] - s.state.p[i];
         }
         if let Some(free) = &w.free {
-            // Along the velocities only the forces fix, the row is the momentum balance at the
-            // midpoint, `−(h/2) Nᵀ (∂L/∂q + F − L_vq v)` there (the discrete Lagrange-d'Alembert
-            // force fixes the step velocity, as the implicit midpoint rule does): `∂L/∂q` moves
-            // from the step's start to its midpoint. With `∂L/∂q` at the start the rows were
-            // the explicit Euler method's, first order.
-            model.dl_dq(tm, &x.qm, v, &mut x.target);
-            for (d, (lq, lm)) in x.f.iter_mut().zip(x.lq.iter().zip(x.target.iter())) {
-                *d = 0.5 * h * (lq - lm);
-            }
-            free.add_along(&mut r[..n], x.f.as_slice());
+            midpoint_rows(model, free, (tm, h), (&x.qm, v), (&x.lq, &mut x.target, &mut x.f), &mut r[..n]);
         }
-
         let b = &mut w.blocks;
         model.l_vv(t0, q, v, &mut b.lvv0);
         model.l_vv(t1, &x.q1, v, &mut b.lvv1);
@@ -99,6 +90,30 @@ where
         }
     }
     Err(s.diverged())
+}
+
+/// Along the velocities only the forces fix, the stage-1 row is the momentum balance at the
+/// midpoint, `−(h/2) Nᵀ (∂L/∂q + F − L_vq v)` there (the discrete Lagrange-d'Alembert force
+/// fixes the step velocity, as the implicit midpoint rule does): `∂L/∂q`, in the row at the
+/// step's start (`lq`), moves to its midpoint. With `∂L/∂q` at the start the rows were the
+/// explicit Euler method's, first order. `lm` and `d` are scratch.
+#[cold]
+#[inline(never)]
+fn midpoint_rows<M: LagrangeDirac>(
+    model: &M,
+    free: &FreeVelocities<M>,
+    (tm, h): (f64, f64),
+    (qm, v): (&VecQ<M>, &VecQ<M>),
+    (lq, lm, d): (&VecQ<M>, &mut VecQ<M>, &mut VecQ<M>),
+    r: &mut [f64],
+) where
+    DefaultAllocator: Storage<M>,
+{
+    model.dl_dq(tm, qm, v, lm);
+    for (d, (lq, lm)) in d.iter_mut().zip(lq.iter().zip(lm.iter())) {
+        *d = 0.5 * h * (lq - lm);
+    }
+    free.add_along(r, d.as_slice());
 }
 
 /// The stage-1 matrix: `∂/∂v` of the momentum residual (top) and of the constraints (bottom).
@@ -231,26 +246,27 @@ where
         // Along the velocities only the forces fix, the Legendre map does not depend on them:
         // `N Nᵀ` completes the matrix, their rows are dropped here, and they are solved from
         // the momentum balance at the step's end once the others have converged.
-        let (one, two);
-        let top: &[(f64, &MatQQ<M>)] = match &w.free {
+        match &w.free {
+            None => w.saddle.assemble(&SaddleTerms {
+                top: &[(1.0, &b.lvv1)],
+                top_transposed: &[],
+                identity: 0.0,
+                right: &[(-1.0, &b.a1)],
+                bottom: &[(1.0, 1.0, &b.a1)],
+                corner: (0.0, 0.0),
+            }),
             Some(free) => {
                 free.remove(r_v);
-                two = [(1.0, &b.lvv1), (1.0, &free.projector)];
-                &two
+                w.saddle.assemble(&SaddleTerms {
+                    top: &[(1.0, &b.lvv1), (1.0, &free.projector)],
+                    top_transposed: &[],
+                    identity: 0.0,
+                    right: &[(-1.0, &b.a1)],
+                    bottom: &[(1.0, 1.0, &b.a1)],
+                    corner: (0.0, 0.0),
+                });
             }
-            None => {
-                one = [(1.0, &b.lvv1)];
-                &one
-            }
-        };
-        w.saddle.assemble(&SaddleTerms {
-            top,
-            top_transposed: &[],
-            identity: 0.0,
-            right: &[(-1.0, &b.a1)],
-            bottom: &[(1.0, 1.0, &b.a1)],
-            corner: (0.0, 0.0),
-        });
+        }
         if newton_update(s, Stage::Two, iteration)? {
             let w = &mut s.work;
             if let Some(free) = &mut w.free

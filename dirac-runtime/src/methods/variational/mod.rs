@@ -424,10 +424,15 @@ where
         self.stats = VariationalStats::default();
         self.energy_scale = 0.0;
         // The velocities only the forces fix, found once per start (a restart keeps them:
-        // which coordinates lack inertia is the model's structure).
-        let free = |model: &M| FreeVelocities::find(model, t0, (&state.q, &state.v), "Variational");
-        self.work.free = free(self.model.get())?;
-        self.probe.get_mut().1.free = free(self.model.get())?;
+        // which coordinates lack inertia is the model's structure), where they may be: not in
+        // a separable model, nor where [L_vv Aᵀ; A 0] is regular.
+        self.work.free = None;
+        self.probe.get_mut().1.free = None;
+        if !M::SEPARABLE && !self.work.saddle_regular(self.model.get(), t0, state) {
+            let free = |model: &M| FreeVelocities::find(model, t0, (&state.q, &state.v), "Variational");
+            self.work.free = free(self.model.get())?;
+            self.probe.get_mut().1.free = free(self.model.get())?;
+        }
         self.begin(t0, t_end)
     }
 

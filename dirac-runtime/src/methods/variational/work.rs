@@ -3,8 +3,8 @@
 use crate::analysis::free::FreeVelocities;
 use nalgebra::DefaultAllocator;
 
-use crate::algebra::Algebra;
 use crate::algebra::lu::Lu;
+use crate::algebra::{Algebra, Saddle, SaddleTerms};
 use crate::analysis::diagnose::{pivot_name, singular_cause};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
@@ -107,6 +107,28 @@ where
     /// The velocities no inertia or constraint fixes, solved from the forces at every step's
     /// end; found at the start.
     pub free: Option<FreeVelocities<M>>,
+}
+
+impl<M: LagrangeDirac> Work<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Whether `[L_vv Aᵀ; A 0]` at `state` is regular: then every velocity has inertia or a
+    /// constraint that fixes it. Factors the stage system's storage (allocates nothing).
+    pub fn saddle_regular(&mut self, model: &M, t: f64, state: &State<M>) -> bool {
+        let b = &mut self.blocks;
+        model.l_vv(t, &state.q, &state.v, &mut b.lvv1);
+        model.constraint_matrix(t, &state.q, &mut b.a1);
+        self.saddle.assemble(&SaddleTerms {
+            top: &[(1.0, &b.lvv1)],
+            top_transposed: &[],
+            identity: 0.0,
+            right: &[(-1.0, &b.a1)],
+            bottom: &[(1.0, 1.0, &b.a1)],
+            corner: (0.0, 0.0),
+        });
+        self.saddle.factor().is_ok()
+    }
 }
 
 /// The blocks a stage system is assembled from. Each is written by one model method only
