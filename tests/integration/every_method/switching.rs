@@ -182,3 +182,24 @@ fn stick_slip_on_a_belt_against_its_closed_form() {
     }
     assert!(steps[1].0 < 10 * steps[0].0, "{steps:?}");
 }
+
+/// A friction coefficient of NaN is refused before anything is evaluated, by name, by the
+/// consistent initialisation and by every integrator's start.
+#[test]
+fn a_nan_friction_coefficient_is_a_typed_error() {
+    let belt = BeltOscillator { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: f64::NAN, stuck: 0.0 };
+    let zero = VecQ::<BeltOscillator>::zeros();
+    let named = |error: SimError| {
+        let text = error.to_string();
+        assert!(text.contains("mu_k"), "{text}");
+    };
+    named(consistent_state(&belt, 0.0, &zero, &zero, Consistency::default()).expect_err("NaN"));
+    let start = State::<BeltOscillator>::zeros();
+    each_integrator!(&belt, Fineness::new(1e-8, 1e-10, 1e-3), |method, integrator| {
+        let result = integrator.solve(0.0, &start, 1.0, &Sampling::Steps);
+        match result {
+            Err(error) => named(error),
+            Ok(_) => panic!("{method:?}: a NaN coefficient integrated"),
+        }
+    });
+}
