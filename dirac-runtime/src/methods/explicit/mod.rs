@@ -198,19 +198,9 @@ where
         let model = self.model.get();
         let s = &mut self.state;
         self.stats.evaluations += 1;
-        let mut determined = self.accelerations.settle(model, self.t, &s.q, &mut s.v)
-            && self.accelerations.evaluate(
-                model,
-                self.t,
-                (&s.q, &s.v),
-                &mut self.start_acceleration,
-                &mut s.lambda,
-            );
-        if !determined && !self.accelerations.has_free() {
-            // Singular: velocities that only the forces fix, if that is why (set-up: allocates).
-            self.accelerations.prepare(model, self.t, (&s.q, &s.v))?;
-            determined = self.accelerations.has_free()
-                && self.accelerations.settle(model, self.t, &s.q, &mut s.v)
+        let mut determined = false;
+        for attempt in 0..2 {
+            determined = self.accelerations.settle(model, self.t, &s.q, &mut s.v)
                 && self.accelerations.evaluate(
                     model,
                     self.t,
@@ -218,6 +208,14 @@ where
                     &mut self.start_acceleration,
                     &mut s.lambda,
                 );
+            if determined || attempt == 1 || self.accelerations.has_free() {
+                break;
+            }
+            // Singular: velocities that only the forces fix, if that is why (set-up: allocates).
+            self.accelerations.prepare(model, self.t, (&s.q, &s.v))?;
+            if !self.accelerations.has_free() {
+                break;
+            }
         }
         self.stats.factorizations = self.accelerations.factorizations;
         if !determined {

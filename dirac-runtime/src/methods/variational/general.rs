@@ -4,7 +4,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use super::work::{StageBlocks, Step};
+use super::work::{StageBlocks, Step, assemble_legendre};
 use crate::algebra::{Algebra, Saddle, SaddleTerms};
 use crate::analysis::free::FreeVelocities;
 use crate::error::SimError;
@@ -246,27 +246,10 @@ where
         // Along the velocities only the forces fix, the Legendre map does not depend on them:
         // `N Nᵀ` completes the matrix, their rows are dropped here, and they are solved from
         // the momentum balance at the step's end once the others have converged.
-        match &w.free {
-            None => w.saddle.assemble(&SaddleTerms {
-                top: &[(1.0, &b.lvv1)],
-                top_transposed: &[],
-                identity: 0.0,
-                right: &[(-1.0, &b.a1)],
-                bottom: &[(1.0, 1.0, &b.a1)],
-                corner: (0.0, 0.0),
-            }),
-            Some(free) => {
-                free.remove(r_v);
-                w.saddle.assemble(&SaddleTerms {
-                    top: &[(1.0, &b.lvv1), (1.0, &free.projector)],
-                    top_transposed: &[],
-                    identity: 0.0,
-                    right: &[(-1.0, &b.a1)],
-                    bottom: &[(1.0, 1.0, &b.a1)],
-                    corner: (0.0, 0.0),
-                });
-            }
+        if let Some(free) = &w.free {
+            free.remove(r_v);
         }
+        assemble_legendre::<M>(&mut w.saddle, (&b.lvv1, &b.a1), w.free.as_ref());
         if newton_update(s, Stage::Two, iteration)? {
             let w = &mut s.work;
             if let Some(free) = &mut w.free

@@ -119,15 +119,27 @@ where
         let b = &mut self.blocks;
         model.l_vv(t, &state.q, &state.v, &mut b.lvv1);
         model.constraint_matrix(t, &state.q, &mut b.a1);
-        self.saddle.assemble(&SaddleTerms {
-            top: &[(1.0, &b.lvv1)],
-            top_transposed: &[],
-            identity: 0.0,
-            right: &[(-1.0, &b.a1)],
-            bottom: &[(1.0, 1.0, &b.a1)],
-            corner: (0.0, 0.0),
-        });
+        assemble_legendre::<M>(&mut self.saddle, (&b.lvv1, &b.a1), None);
         self.saddle.factor().is_ok()
+    }
+}
+
+/// Assembles `[L_vv Aᵀ; A 0]` (`−Aᵀ` on the right) for the Legendre map at a step's end,
+/// `L_vv` completed by `N Nᵀ` along the velocities only the forces fix. Two fixed lists of
+/// terms, so that a model without such velocities sums one.
+pub(crate) fn assemble_legendre<M: LagrangeDirac>(
+    saddle: &mut <M::Algebra as Algebra<M>>::Saddle<f64>,
+    (lvv, a): (&MatQQ<M>, &MatCQ<M>),
+    free: Option<&FreeVelocities<M>>,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let (right, bottom) = (&[(-1.0, a)], &[(1.0, 1.0, a)]);
+    let rest =
+        |top| SaddleTerms { top, top_transposed: &[], identity: 0.0, right, bottom, corner: (0.0, 0.0) };
+    match free {
+        None => saddle.assemble(&rest(&[(1.0, lvv)])),
+        Some(free) => saddle.assemble(&rest(&[(1.0, lvv), (1.0, &free.projector)])),
     }
 }
 
