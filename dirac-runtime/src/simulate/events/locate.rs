@@ -4,7 +4,7 @@
 
 use nalgebra::DefaultAllocator;
 
-use super::{EventFunction, Events, MAX_ITERATIONS};
+use super::{EventFunction, Events, INTERIOR, MAX_ITERATIONS};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
 use crate::model::state::State;
@@ -111,10 +111,13 @@ where
             if !self.crossings[k].counts(g > 0.0) {
                 continue;
             }
-            let root = self.root(k, integrator)?;
+            let root = self.root(k, integrator, self.t_hi, g)?;
             if first.is_none_or(|(_, t_first)| root < t_first) {
                 first = Some((k, root));
             }
+        }
+        if self.switch_of.iter().any(|&s| s) {
+            self.crossed_back(integrator, t, &mut first)?;
         }
         // A contact that is closed (its function zero or crossed, and not reopened by an impact)
         // and goes deeper into its wall closes without an impact: resting contact begins,
@@ -188,11 +191,67 @@ where
         Event { index: k, t, crossing }
     }
 
-    /// The root of function `k` between the last point examined and the step's end, by the
-    /// Illinois variant of regula falsi on the dense output, safeguarded by bisection: the
-    /// first time (to round-off) at which the function is zero or has its new sign.
-    fn root<I: Integrator<M>>(&mut self, k: usize, integrator: &mut I) -> Result<f64, SimError> {
-        let (mut a, mut fa, mut b, mut fb) = (self.t_lo, self.lo[k], self.t_hi, self.hi[k]);
+    /// Switching surfaces crossed and crossed back within the rest of the step, which its ends
+    /// do not show: the dense output is sampled at `INTERIOR` evenly spaced times for the
+    /// switching functions that end the step on the side they began it, and the first sample
+    /// past a surface brackets its first crossing, which becomes `first` if it comes earlier.
+    /// An excursion longer than the samples' spacing is found; a shorter one may not be.
+    fn crossed_back<I: Integrator<M>>(
+        &mut self,
+        integrator: &mut I,
+        t: f64,
+        first: &mut Option<(usize, f64)>,
+    ) -> Result<(), SimError> {
+        let t_lo = self.t_lo;
+        for s in 1..=INTERIOR {
+            let ts = t_lo + (t - t_lo) * s as f64 / (INTERIOR + 1) as f64;
+            if first.is_some_and(|(_, t_first)| t_first <= ts) || !(ts > t_lo && ts < t) {
+                return Ok(());
+            }
+            let (mut probed, mut found) = (false, false);
+            for k in 0..self.functions.len() {
+                let (sign, end) = (self.signs[k], self.hi[k]);
+                if !self.switch_of[k] || sign == 0.0 || end == 0.0 || end.signum() != sign {
+                    continue;
+                }
+                if !probed {
+                    integrator.state_at(ts, &mut self.probe)?;
+                    integrator.set_inputs_at(ts, &self.probe);
+                    self.inputs_moved = true;
+                    probed = true;
+                }
+                self.evaluations += 1;
+                let g = value(&mut self.functions[k], &self.names[k], ts, &self.probe, integrator.model())?;
+                if (g != 0.0 && g.signum() == sign) || !self.crossings[k].counts(g >= 0.0) {
+                    continue;
+                }
+                let root = if g == 0.0 { ts } else { self.root(k, integrator, ts, g)? };
+                // The root finder moved the probe.
+                probed = false;
+                found = true;
+                if first.is_none_or(|(_, t_first)| root < t_first) {
+                    *first = Some((k, root));
+                }
+            }
+            if found {
+                return Ok(());
+            }
+        }
+        Ok(())
+    }
+
+    /// The root of function `k` between the last point examined and `b`, where it has the
+    /// value `fb` (of the other sign), by the Illinois variant of regula falsi on the dense
+    /// output, safeguarded by bisection: the first time (to round-off) at which the function
+    /// is zero or has its new sign.
+    fn root<I: Integrator<M>>(
+        &mut self,
+        k: usize,
+        integrator: &mut I,
+        b: f64,
+        fb: f64,
+    ) -> Result<f64, SimError> {
+        let (mut a, mut fa, mut b, mut fb) = (self.t_lo, self.lo[k], b, fb);
         if self.reopened[k] {
             // Zero at the impact, positive just after it: the search is for the next zero.
             fa = 0.0;

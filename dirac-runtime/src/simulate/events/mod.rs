@@ -28,6 +28,10 @@ pub use self::solve::{EventContext, SolveWithEvents};
 /// An event function: `g(t, state, model)`.
 type EventFunction<'e, M> = Box<dyn FnMut(f64, &State<M>, &M) -> f64 + 'e>;
 
+/// How many times within each step the switching functions are sampled, beyond its ends,
+/// for a surface crossed and crossed back within it.
+const INTERIOR: usize = 3;
+
 /// The most iterations of the root finder for one crossing; the bracket halves at least every
 /// fourth, so 4 × 64 covers the width of any `f64` interval.
 const MAX_ITERATIONS: usize = 256;
