@@ -294,3 +294,89 @@ fn the_variational_step_keeps_its_order_on_velocities_fixed_by_forces() {
     let ratio = coarse / fine;
     assert!((3.8..4.2).contains(&ratio), "errors {coarse:e} and {fine:e}: ratio {ratio}");
 }
+
+/// The motor's armature as a subsystem: the charge `q` (current `i`) with the source `u` and
+/// the resistor `r`, and the shaft angle `th` through the gyrator `k i th`; the shaft is its
+/// port.
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(q => i, th => w), port(th))]
+#[dirac(lagrangian = k * i * th)]
+#[dirac(dissipation = 0.5 * r * i * i)]
+#[dirac(force(q) = u)]
+pub struct Armature {
+    pub r: f64,
+    pub k: f64,
+    pub u: f64,
+}
+
+/// The load: an inertia against viscous friction, its angle the port.
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(phi => w), port(phi))]
+#[dirac(lagrangian = 0.5 * j * w * w)]
+#[dirac(dissipation = 0.5 * b * w * w)]
+pub struct Load {
+    pub j: f64,
+    pub b: f64,
+}
+
+/// [`Motor`] torn into its armature and its load, joined at the shaft.
+#[derive(Interconnection)]
+#[dirac(connect(armature.th, load.phi))]
+pub struct MotorAndLoad {
+    pub armature: Armature,
+    pub load: Load,
+}
+
+/// The power balance per subsystem on the motor torn at its shaft. Each subsystem records the
+/// power its own Rayleigh function takes (`armature.dissipated_power = r i²`,
+/// `load.dissipated_power = b w²`, checked against the recorded velocities), and each closes
+/// its own balance with the power through its port, `⟨f, w⟩` from the interconnection force:
+/// the armature stores nothing (`0 = u i − r i² + P_armature`, at every sample), the load
+/// `½ j w²` (`ΔE = ∫ (P_load − b w²) dt`, Simpson's rule over samples every 1 ms); the
+/// interconnection is lossless (`P_armature + P_load = 0`), and the whole closes as
+/// `dE/dt = P_sources − P_dissipated`.
+#[test]
+fn the_power_balance_closes_per_subsystem_on_the_motor() {
+    let motor =
+        MotorAndLoad { armature: Armature { r: 1.5, k: 0.8, u: 12.0 }, load: Load { j: 0.2, b: 0.1 } };
+    let (q, th) = (MotorAndLoad::armature(Armature::Q), MotorAndLoad::armature(Armature::TH));
+    let phi = MotorAndLoad::load(Load::PHI);
+    let zero = VecQ::<MotorAndLoad>::zeros();
+    let start = consistent_state(&motor, 0.0, &zero, &zero, Consistency::default()).expect("from rest");
+    let dt = 1e-3;
+    each_integrator!(&motor, fineness(), |method, integrator| {
+        let solution = integrator.solve(0.0, &start, 2.0, &Sampling::Every(dt)).expect("integrates");
+        let column = |name: &str| solution.column(name).unwrap_or_else(|| panic!("a column `{name}`"));
+        let (armature_loss, load_loss) =
+            (column("out(armature.dissipated_power)"), column("out(load.dissipated_power)"));
+        let (i, w) = (solution.v(q), solution.v(phi));
+        let (torque_a, torque_l) = (
+            solution.interconnection_force(th).expect("a port"),
+            solution.interconnection_force(phi).expect("a port"),
+        );
+        let (Armature { r, u, .. }, Load { j, b }) = (&motor.armature, &motor.load);
+        let bound = 10.0 * tolerance(method);
+        let mut load_net = Vec::with_capacity(solution.len());
+        for k in 0..solution.len() {
+            let (p_armature, p_load) = (torque_a[k] * solution.v(th)[k], torque_l[k] * w[k]);
+            let errors = [
+                armature_loss[k] - r * i[k] * i[k],
+                load_loss[k] - b * w[k] * w[k],
+                u * i[k] - armature_loss[k] + p_armature,
+                p_armature + p_load,
+                solution.dissipated_power()[k] - armature_loss[k] - load_loss[k],
+            ];
+            assert!(errors.iter().all(|e| e.abs() < bound * 100.0), "{method:?} at sample {k}: {errors:?}");
+            load_net.push(p_load - load_loss[k]);
+        }
+        let stored = 0.5 * j * (w[w.len() - 1].powi(2) - w[0].powi(2));
+        let gap = stored - simpson(dt, &load_net);
+        assert!(stored > 1.0, "{method:?}: the load spins up ({stored})");
+        assert!(gap.abs() < bound, "{method:?}: the load's balance is off by {gap:e}");
+        let e = solution.energy();
+        let net: Vec<f64> =
+            solution.power().iter().zip(solution.dissipated_power()).map(|(p, d)| p - d).collect();
+        let whole = e[e.len() - 1] - e[0] - simpson(dt, &net);
+        assert!(whole.abs() < bound, "{method:?}: the whole balance is off by {whole:e}");
+    });
+}
