@@ -102,6 +102,26 @@ pub enum SimError {
         /// Where the impacts accumulate, extrapolated from the last ones, for a Zeno sequence.
         t_limit: Option<f64>,
     },
+    /// The motion slides along a switching surface: both sides of a non-smooth function
+    /// (`signum`, `abs`, `min`, a conditional) push the state into the surface where it
+    /// switches, so that no step crosses it (Filippov's sliding mode, as in stick-slip). A
+    /// non-smooth function cannot hold such a motion: the law's modes are held in the model's
+    /// fields and switched by events, the sliding mode a constraint row (the guide's stick-slip
+    /// and rectifier examples).
+    #[error(
+        "the motion slides along the switching surface `{surface}` at t = {t}: both sides push into \
+         it, so no step crosses it ({cause}); a non-smooth function cannot hold a sliding motion: hold \
+         the law's modes in fields switched by events, with the sliding mode as a constraint row, as \
+         the guide's stick-slip example does"
+    )]
+    Sliding {
+        /// The switching surface's event, such as `switch0`.
+        surface: String,
+        /// Where the integration stands.
+        t: f64,
+        /// How the step failed.
+        cause: String,
+    },
     /// The step size fell below the minimum.
     #[error("step size {h:e} below the minimum at t = {t}: {reason}")]
     StepSizeTooSmall {

@@ -452,3 +452,49 @@ fn a_surface_crossed_twice_within_a_step_is_found() {
         });
     }
 }
+
+/// Coulomb friction written as a plain non-smooth force, with no modes: `μ N sign(vb − v)`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+#[dirac(force(x) = mu * n * (vb - v).signum())]
+pub struct PlainBelt {
+    pub m: f64,
+    pub k: f64,
+    pub vb: f64,
+    pub n: f64,
+    pub mu: f64,
+}
+
+/// A sliding mode entered at `t = 0`: the mass starts on the belt's speed with the spring's
+/// pull within the friction's bound, so that both sides of the sign push the motion back onto
+/// `v = vb`. Written with a plain `signum`, no integrator can hold that motion (its steps
+/// collapse, or its Newton iteration has no solution): each ends at once in
+/// [`SimError::Sliding`] naming the surface and the time, not in a hang or a step-size error
+/// that hides why. Started beyond the bound (`k x > μ N`), the mass leaves the surface and
+/// every integrator goes on: the same start, crossed rather than slid along.
+#[test]
+fn a_sliding_mode_entered_at_the_start_is_named() {
+    let belt = PlainBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu: 0.4 };
+    for (x0, slides) in [(0.0, true), (0.5, true), (1.5, false)] {
+        let mut start = State::<PlainBelt>::zeros();
+        start.q[0] = x0;
+        start.v[0] = belt.vb;
+        start.p[0] = belt.m * belt.vb;
+        each_integrator!(&belt, Fineness::new(1e-6, 1e-8, 1e-3).steps(100_000), |method, integrator| {
+            let result = integrator.solve(0.0, &start, 1.0, &Sampling::Steps);
+            match (slides, result) {
+                (true, Err(SimError::Sliding { surface, t, cause })) => {
+                    assert_eq!(surface, "switch0", "{method:?}");
+                    assert!(t < 1e-3, "{method:?}: named at t = {t} ({cause})");
+                }
+                (false, Ok(solution)) => {
+                    // Pulled back harder than friction holds: the mass leaves the belt's speed.
+                    let end = solution.last().expect("a sample");
+                    assert!(end.v(PlainBelt::X) < belt.vb - 0.1, "{method:?}: {}", end.v(PlainBelt::X));
+                }
+                (_, result) => panic!("{method:?} from x = {x0}: {:?}", result.map(|s| s.len())),
+            }
+        });
+    }
+}

@@ -31,7 +31,7 @@ where
                 ),
             });
         }
-        for v in [&mut self.lo, &mut self.hi, &mut self.signs] {
+        for v in [&mut self.lo, &mut self.hi, &mut self.signs, &mut self.peak] {
             v.clear();
             v.resize(n, 0.0);
         }
@@ -76,7 +76,30 @@ where
 
     fn evaluate(&mut self, k: usize, t: f64, state: &State<M>, model: &M) -> Result<f64, SimError> {
         self.evaluations += 1;
-        value(&mut self.functions[k], &self.names[k], t, state, model)
+        let g = value(&mut self.functions[k], &self.names[k], t, state, model)?;
+        self.peak[k] = self.peak[k].max(g.abs());
+        Ok(g)
+    }
+
+    /// The switching surface the state at `t` sits on, if any: a switching function that is
+    /// zero there, relative to the largest magnitude it has had (`1e-6` of it, or of 1). Where
+    /// a step fails on such a surface, both sides of it push the motion into it.
+    pub(crate) fn sliding_surface(
+        &mut self,
+        model: &M,
+        t: f64,
+        state: &State<M>,
+    ) -> Result<Option<usize>, SimError> {
+        for k in 0..self.functions.len() {
+            if !self.switch_of[k] {
+                continue;
+            }
+            let g = self.evaluate(k, t, state, model)?;
+            if g.abs() <= 1e-6 * self.peak[k].max(1.0) {
+                return Ok(Some(k));
+            }
+        }
+        Ok(None)
     }
 
     /// The next event within the step the integrator just took, in time order: `None` once

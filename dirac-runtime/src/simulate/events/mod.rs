@@ -81,6 +81,9 @@ where
     /// Whether each function is a switching surface of the model, where the integration
     /// restarts.
     pub(crate) switch_of: Vec<bool>,
+    /// The largest magnitude each function has had at the points examined: the scale against
+    /// which a switching function counts as zero where a step fails.
+    peak: Vec<f64>,
 }
 
 impl<M: LagrangeDirac> Default for Events<'_, M>
@@ -119,6 +122,7 @@ where
             release_of: Vec::new(),
             reopened: Vec::new(),
             switch_of: Vec::new(),
+            peak: Vec::new(),
         }
     }
 

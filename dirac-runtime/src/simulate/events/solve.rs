@@ -139,7 +139,7 @@ where
                     (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) => contacts.zeno(*t),
                     _ => None,
                 }) else {
-                    return Err(error);
+                    return Err(sliding(self, events, error));
                 };
                 rest_where_it_stands(self, events, &mut recorder, j)?;
                 continue;
@@ -239,6 +239,29 @@ where
 }
 
 impl<M: Hybrid, I: Integrator<M>> SolveWithEvents<M> for I where DefaultAllocator: Storage<M> {}
+
+/// A step that failed where the state sits on a switching surface failed because the motion
+/// slides along it: `error` named as that, with the surface; any other failure as it is.
+fn sliding<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    error: SimError,
+) -> SimError
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !matches!(
+        error,
+        SimError::StepSizeTooSmall { .. } | SimError::NewtonDiverged { .. } | SimError::SingularMatrix { .. }
+    ) {
+        return error;
+    }
+    let t = integrator.t();
+    match events.sliding_surface(integrator.model(), t, integrator.state()) {
+        Ok(Some(k)) => SimError::Sliding { surface: events.names()[k].clone(), t, cause: error.to_string() },
+        _ => error,
+    }
+}
 
 /// Closes (or opens) contact `j` of the integrator's model, if the model can rest it (a
 /// companion made by `with_contacts`) and the integrator holds it exclusively.
