@@ -665,3 +665,38 @@ fn redundant_constraints_give_a_typed_error_not_a_sensitivity() {
     let result = radau.and_then(|mut r| r.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps));
     assert!(matches!(result, Err(SimError::NotDetermined { .. })), "{result:?}");
 }
+
+/// A mass that meets a constant braking force `f` beyond `x = a`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * v * v)]
+#[dirac(force(x) = if x > a { -f } else { 0.0 })]
+pub struct Brake {
+    pub a: f64,
+    pub f: f64,
+}
+
+/// Sensitivities through a switching surface are refused by name. From `x = 0` at speed `v₀`,
+/// the brake engages at `t_s = a/v₀`, after which `x = a + v₀(t − t_s) − f(t − t_s)²/2`, so
+/// `∂x/∂a = f (t − t_s)/v₀`: all of it from the jump of the force at the crossing, which
+/// derivatives taken branch by branch (`∂(−f)/∂a = ∂0/∂a = 0`) would give as zero.
+#[test]
+fn sensitivities_through_a_switching_surface_are_refused() {
+    let brake = Brake { a: 1.0, f: 0.5 };
+    let wrt = Sensitivities::new(&brake).parameters(&["a"]).expect("a parameter");
+    let mut radau = Radau::new(&brake, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let mut start = State::<Brake>::zeros();
+    start.v[0] = 1.0;
+    start.p[0] = 1.0;
+    let error = radau.solve_with_sensitivities(0.0, &start, 3.0, &Sampling::Steps).expect_err("refused");
+    let text = error.to_string();
+    assert!(matches!(error, SimError::InvalidOption { what: "sensitivities", .. }), "{text}");
+    assert!(text.contains("`switch0`") && text.contains("jump"), "{text}");
+    // The same model without sensitivities integrates, through the located switch.
+    let solution = Radau::new(&brake, tight())
+        .expect("valid")
+        .solve(0.0, &start, 3.0, &Sampling::Steps)
+        .expect("solves");
+    let end = solution.last().expect("a sample").q(Brake::X);
+    assert!((end - (1.0 + 2.0 - 0.25 * 4.0)).abs() < 1e-8, "x(3) = {end}");
+}

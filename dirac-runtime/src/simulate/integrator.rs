@@ -378,6 +378,34 @@ where
     SimError::Unsupported { method: I::NAME, capability: Capability::Sensitivities }
 }
 
+/// Sensitivities of a model with switching surfaces are refused, naming them: where the motion
+/// crosses a surface at `t_s`, a sensitivity jumps by `(f⁺ − f⁻) ∂t_s/∂θ` (a force that jumps
+/// there, such as `signum`'s, moves the state by as much as the crossing moves in time), and
+/// the generated derivatives, taken branch by branch, do not carry that jump.
+fn refuse_switches<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !model.has_switches() {
+        return Ok(());
+    }
+    let surfaces: Vec<String> = M::NAMES
+        .event_declarations()
+        .into_iter()
+        .filter(|&(_, d)| d == crate::model::names::SWITCH)
+        .map(|(name, _)| format!("`{name}`"))
+        .collect();
+    Err(SimError::InvalidOption {
+        what: "sensitivities",
+        reason: format!(
+            "the model has switching surfaces ({}): a sensitivity jumps where the motion crosses one, by \
+             (f⁺ − f⁻) ∂t_s/∂θ, and that jump is not implemented; take differences of solutions, or \
+             carry sensitivities on a smooth model",
+            surfaces.join(", ")
+        ),
+    })
+}
+
 /// [`Integrator::solve_with_sensitivities`]: the samples of the state, and at each the
 /// sensitivities, recorded sample by sample (each sample's values side by side, contiguous
 /// writes) and turned into one column per value at the end.
@@ -401,6 +429,7 @@ where
             reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
         });
     }
+    refuse_switches(integrator.model())?;
     let sizes = integrator.model().sizes();
     let len = Layout::new(sizes).len;
     let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
