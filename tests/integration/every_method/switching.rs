@@ -474,7 +474,7 @@ pub struct PlainBelt {
 /// that hides why. Started beyond the bound (`k x > μ N`), the mass leaves the surface and
 /// every integrator goes on: the same start, crossed rather than slid along.
 #[test]
-fn a_sliding_mode_entered_at_the_start_is_named() {
+fn a_sliding_mode_is_named_where_it_begins() {
     let belt = PlainBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu: 0.4 };
     for (x0, slides) in [(0.0, true), (0.5, true), (1.5, false)] {
         let mut start = State::<PlainBelt>::zeros();
@@ -497,4 +497,19 @@ fn a_sliding_mode_entered_at_the_start_is_named() {
             }
         });
     }
+    // Entered later: from rest, the belt drags the mass (`x = x_e (1 − cos ωt)` about
+    // `x_e = μ N/k`) until it reaches the belt's speed, `x_e ω sin ωt = vb`, with the spring's
+    // pull far within the bound: it would stick there, and each integrator names the surface
+    // at that time.
+    let (omega, xe) = ((belt.k / belt.m).sqrt(), belt.mu * belt.n / belt.k);
+    let sticks = (belt.vb / (xe * omega)).asin() / omega;
+    each_integrator!(&belt, Fineness::new(1e-8, 1e-10, 1e-4).steps(100_000), |method, integrator| {
+        match integrator.solve(0.0, &State::<PlainBelt>::zeros(), 1.0, &Sampling::Steps) {
+            Err(SimError::Sliding { surface, t, .. }) => {
+                assert_eq!(surface, "switch0", "{method:?}");
+                assert!((t - sticks).abs() < 1e-3, "{method:?}: named at t = {t}, sticks at {sticks}");
+            }
+            result => panic!("{method:?}: {:?}", result.map(|s| s.len())),
+        }
+    });
 }
