@@ -6,7 +6,8 @@
 //! (t = 10, tol 1e-8) and on the 8-link pendulum (t = 10, tol 1e-8/1e-10); 2000 variational
 //! steps of h = 0.01 on the pendulum (separable path and, with `use_structure: false`, general
 //! path) and on the chain (general path); Explicit on the chain (t = 20, tol 1e-8/1e-10) and on
-//! the Cartesian pendulum (t = 10, tol 1e-8).
+//! the Cartesian pendulum (t = 10, tol 1e-8); Radau and Explicit on the saturated servo (t = 4,
+//! tol 1e-8/1e-10: its switching surfaces located in the solve).
 
 #![allow(missing_docs)]
 
@@ -65,6 +66,8 @@ fn main() {
     let pendulum_start =
         consistent_state(&pendulum, 0.0, &q0, &v0, Consistency::default()).expect("consistent");
     let general = VariationalOptions { use_structure: false, ..VariationalOptions::default() };
+    let servo = SaturatedServo { m: 1.0, kp: 4.0, kd: 1.5, r: 1.0, fmax: 1.0 };
+    let servo_start = State::<SaturatedServo>::zeros();
 
     let mut checksum = 0.0;
     for _ in 0..repeats {
@@ -77,11 +80,13 @@ fn main() {
             "variational-chain" => variational(&chain, &chain_start, general),
             "explicit-chain" => explicit(&chain, &chain_start, 20.0, 1e-8, 1e-10),
             "explicit-pendulum" => explicit(&pendulum, &pendulum_start, 10.0, 1e-8, 1e-8),
+            "radau-servo" => radau(&servo, &servo_start, 4.0, 1e-8, 1e-10),
+            "explicit-servo" => explicit(&servo, &servo_start, 4.0, 1e-8, 1e-10),
             _ => {
                 eprintln!(
                     "usage: small_models CASE [REPEATS], CASE one of radau-chain, radau-pendulum, \
                      radau-pendulum8, variational-pendulum, variational-pendulum-general, variational-chain, \
-                     explicit-chain, explicit-pendulum"
+                     explicit-chain, explicit-pendulum, radau-servo, explicit-servo"
                 );
                 std::process::exit(2);
             }

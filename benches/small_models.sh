@@ -36,7 +36,7 @@ new=$(build . target)
 printf '%-30s %14s %14s %8s\n' case "$base" "this tree" change
 for spec in radau-chain:20 radau-pendulum:20 radau-pendulum8:5 \
     variational-pendulum:20 variational-pendulum-general:20 variational-chain:20 explicit-chain:20 \
-    explicit-pendulum:20; do
+    explicit-pendulum:20 radau-servo:20 explicit-servo:20; do
     case=${spec%:*} repeats=${spec#*:}
     a=$(count "$old" "$case" "$repeats")
     b=$(count "$new" "$case" "$repeats")

@@ -155,6 +155,14 @@ where
     /// Writes the state at time `t` within the last step into `out`.
     fn interpolate(&self, t: f64, out: &mut State<M>);
 
+    /// Writes the positions and velocities at time `t` within the last step into `out`, its
+    /// momenta and multipliers written too or left as they are: what a function of the motion
+    /// alone reads, such as a switching surface sampled within a step. The dense output by
+    /// default; a method whose momenta and multipliers cost an evaluation of the model skips it.
+    fn interpolate_motion(&self, t: f64, out: &mut State<M>) {
+        self.interpolate(t, out);
+    }
+
     /// Writes the state at time `t` within the last step into `out` as the method itself would
     /// reach it, which is where events are located: the dense output by default (Radau's is
     /// its collocation polynomial); the variational integrator takes a step of its own to `t`

@@ -158,21 +158,7 @@ where
             out.clone_from(&self.state);
             return;
         }
-        let theta = ((t - self.t_previous) / self.h_last).clamp(0.0, 1.0);
-        let weights = weights_at(theta);
-        let h = self.h_last;
-        // The positions' tangent `Σ w_k k_k` is built in `out.q`, then the positions move
-        // along it from the step's start.
-        for i in 0..self.sizes.nq {
-            let (mut dq, mut dv) = (0.0, 0.0);
-            for (k, w) in weights.iter().enumerate() {
-                dq += w * self.kq[k][i];
-                dv += w * self.kv[k][i];
-            }
-            out.q[i] = dq;
-            out.v[i] = self.previous.v[i] + h * dv;
-        }
-        configuration::advance_onto::<M>(&self.previous.q, h, &mut out.q);
+        let theta = self.motion_at(t, out);
         let model = self.model.get();
         let mut probe = self.probe.borrow_mut();
         let (accelerations, acceleration) = &mut *probe;
@@ -191,8 +177,44 @@ where
         }
     }
 
+    /// The positions and velocities of the dense output, without the accelerations that the
+    /// momenta and multipliers take (unless velocities that only forces fix must be settled).
+    fn interpolate_motion(&self, t: f64, out: &mut State<M>) {
+        if self.h_last == 0.0 || self.probe.borrow().0.has_free() {
+            self.interpolate(t, out);
+        } else {
+            self.motion_at(t, out);
+        }
+    }
+
     fn stats(&self) -> ExplicitStats {
         self.stats
+    }
+}
+
+impl<M: LagrangeDirac> Explicit<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The dense output's positions and velocities at `t` within the last step, into `out`;
+    /// returns `t`'s fraction of the step.
+    fn motion_at(&self, t: f64, out: &mut State<M>) -> f64 {
+        let theta = ((t - self.t_previous) / self.h_last).clamp(0.0, 1.0);
+        let weights = weights_at(theta);
+        let h = self.h_last;
+        // The positions' tangent `Σ w_k k_k` is built in `out.q`, then the positions move
+        // along it from the step's start.
+        for i in 0..self.sizes.nq {
+            let (mut dq, mut dv) = (0.0, 0.0);
+            for (k, w) in weights.iter().enumerate() {
+                dq += w * self.kq[k][i];
+                dv += w * self.kv[k][i];
+            }
+            out.q[i] = dq;
+            out.v[i] = self.previous.v[i] + h * dv;
+        }
+        configuration::advance_onto::<M>(&self.previous.q, h, &mut out.q);
+        theta
     }
 }
 

@@ -145,6 +145,12 @@ where
         }
     }
 
+    /// The collocation polynomial, without the correction that [`Integrator::interpolate`]
+    /// makes to it: enough to see which side of a surface the motion is on.
+    fn interpolate_motion(&self, t: f64, out: &mut State<M>) {
+        self.dense.interpolate(&self.y, self.t, t, out);
+    }
+
     fn stats(&self) -> RadauStats {
         self.stats
     }

@@ -238,13 +238,29 @@ where
                     continue;
                 }
                 if !probed {
-                    integrator.state_at(ts, &mut self.probe)?;
+                    // A switching function reads the motion alone (no multipliers).
+                    integrator.interpolate_motion(ts, &mut self.probe);
                     integrator.set_inputs_at(ts, &self.probe);
                     self.inputs_moved = true;
+                    if let Some(all) = self.all_declared {
+                        self.evaluations += 1;
+                        all(integrator.model(), ts, &self.probe, &mut self.declared_values);
+                    }
                     probed = true;
                 }
-                self.evaluations += 1;
-                let g = value(&mut self.functions[k], &self.names[k], ts, &self.probe, integrator.model())?;
+                let g = match (self.all_declared, self.declared_of[k]) {
+                    (Some(_), Some(j)) => self.declared_values[j],
+                    _ => {
+                        self.evaluations += 1;
+                        (self.functions[k])(ts, &self.probe, integrator.model())
+                    }
+                };
+                if g.is_nan() {
+                    return Err(SimError::NonFinite {
+                        t: ts,
+                        component: format!("the event function `{}`", self.names[k]),
+                    });
+                }
                 if (g != 0.0 && g.signum() == sign) || !self.crossings[k].counts(g >= 0.0) {
                     continue;
                 }

@@ -84,7 +84,18 @@ where
     /// The largest magnitude each function has had at the points examined: the scale against
     /// which a switching function counts as zero where a step fails.
     peak: Vec<f64>,
+    /// The model's declared event functions, all at once (`Hybrid::events`), where
+    /// `declared` or `switches` watches them: a step is sampled for its switching surfaces with
+    /// one evaluation of them all.
+    all_declared: Option<AllDeclared<M>>,
+    /// Which declared function each watched function is, if it is one.
+    declared_of: Vec<Option<usize>>,
+    /// The declared functions' values at a sample.
+    declared_values: Vec<f64>,
 }
+
+/// `Hybrid::events` of a model, as a plain function of the state.
+type AllDeclared<M> = fn(&M, f64, &State<M>, &mut [f64]);
 
 impl<M: LagrangeDirac> Default for Events<'_, M>
 where
@@ -123,6 +134,9 @@ where
             reopened: Vec::new(),
             switch_of: Vec::new(),
             peak: Vec::new(),
+            all_declared: None,
+            declared_of: Vec::new(),
+            declared_values: Vec::new(),
         }
     }
 
@@ -140,6 +154,7 @@ where
         self.contact_of.push(None);
         self.release_of.push(None);
         self.switch_of.push(false);
+        self.declared_of.push(None);
         self
     }
 
@@ -210,8 +225,9 @@ where
                 values[j]
             });
             *self.switch_of.last_mut().expect("just added") = direction == SWITCH;
+            *self.declared_of.last_mut().expect("just added") = Some(j);
         }
-        self
+        self.watch_declared(k)
     }
 
     /// Adds the switching surfaces of the model's non-smooth functions and conditionals
@@ -233,7 +249,16 @@ where
                 values[j]
             });
             *self.switch_of.last_mut().expect("just added") = true;
+            *self.declared_of.last_mut().expect("just added") = Some(j);
         }
+        self.watch_declared(k)
+    }
+
+    /// Keeps `Hybrid::events` to evaluate the model's `count` declared functions at once.
+    fn watch_declared(mut self, count: usize) -> Self {
+        self.all_declared =
+            Some(|m: &M, t, s: &State<M>, out: &mut [f64]| m.events(t, &s.q, &s.v, &s.lambda, out));
+        self.declared_values.resize(count, 0.0);
         self
     }
 
@@ -284,6 +309,7 @@ where
             self.contact_of.push(Some(j));
             self.release_of.push(None);
             self.switch_of.push(false);
+            self.declared_of.push(None);
         }
         // In a companion whose contacts rest, a closed contact opens where its force, the
         // multiplier of its row, falls through zero.
