@@ -52,6 +52,19 @@ pub fn latex_accented(name: &str, extra: Option<&str>) -> String {
 }
 
 /// The name of symbol `sym` of a primitive model, for people.
+/// The condition of each switching surface (an event of direction 2), as text: `(name, c)`
+/// for `c = 0`.
+pub fn surfaces(model: &SymModel) -> Vec<(String, String)> {
+    model
+        .events
+        .iter()
+        .filter(|(_, direction, _)| *direction == 2)
+        .map(|(name, _, c)| {
+            (name.clone(), pretty(&model.graph, *c, Style::Text, &|s| display_name(model, s, Style::Text)))
+        })
+        .collect()
+}
+
 fn display_name(model: &SymModel, sym: u32, style: Style) -> String {
     let coordinate = |i: usize| model.coordinates[i].to_string();
     let kind = model.kind(sym);

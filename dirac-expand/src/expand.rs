@@ -11,7 +11,7 @@ use crate::check::check;
 use crate::codegen::signatures::{REQUIRED, fixed_storage, rt, solve_with_contacts};
 use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
-use crate::equations::equations;
+use crate::equations::{equations, surfaces};
 use crate::model::SymModel;
 use crate::structure::{check_structure, condensed_pattern, separable, unknown_messages};
 use dirac_structure::stack::{STACK_LIMIT, stack_bytes};
@@ -342,6 +342,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, model: &Model<'_>) -> TokenStream {
     let outputs = sym.outputs.iter().map(|(name, _)| name);
     let unilaterals = sym.unilaterals.iter().map(|u| &u.name);
     let events = sym.events.iter().map(|(name, direction, _)| quote! { (#name, #direction) });
+    let surfaces = surfaces(sym).into_iter().map(|(name, c)| quote! { (#name, #c) });
     let parameters = sym.params.iter().map(|p| syn::ext::IdentExt::unraw(p).to_string());
     let doc = &model.doc;
     let docs = model.param_docs.iter().map(|(name, doc)| {
@@ -365,6 +366,7 @@ fn named(sym: &SymModel, ident: &syn::Ident, model: &Model<'_>) -> TokenStream {
                 outputs: &[#(#outputs),*],
                 unilaterals: &[#(#unilaterals),*],
                 events: &[#(#events),*],
+                surfaces: &[#(#surfaces),*],
                 parameters: &[#(#parameters),*],
                 subsystems: &[],
                 doc: #doc,
@@ -415,6 +417,7 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
                 outputs: &[],
                 unilaterals: &[],
                 events: &[],
+                surfaces: &[],
                 parameters: &[],
                 subsystems: &[],
                 doc: "",

@@ -109,7 +109,7 @@ pub enum SimError {
     /// fields and switched by events, the sliding mode a constraint row (the guide's stick-slip
     /// and rectifier examples).
     #[error(
-        "the motion slides along the switching surface `{surface}` at t = {t}: both sides push into \
+        "the motion slides along the switching surface `{surface}` ({condition} = 0) at t = {t}: both sides push into \
          it, so no step crosses it ({cause}); a non-smooth function cannot hold a sliding motion: hold \
          the law's modes in fields switched by events, with the sliding mode as a constraint row, as \
          the guide's stick-slip example does"
@@ -117,6 +117,8 @@ pub enum SimError {
     Sliding {
         /// The switching surface's event, such as `switch0`.
         surface: String,
+        /// Its condition `c` of `c = 0`, as text, such as `vb - v`.
+        condition: String,
         /// Where the integration stands.
         t: f64,
         /// How the step failed.

@@ -691,7 +691,7 @@ fn sensitivities_through_a_switching_surface_are_refused() {
     let error = radau.solve_with_sensitivities(0.0, &start, 3.0, &Sampling::Steps).expect_err("refused");
     let text = error.to_string();
     assert!(matches!(error, SimError::InvalidOption { what: "sensitivities", .. }), "{text}");
-    assert!(text.contains("`switch0`") && text.contains("jump"), "{text}");
+    assert!(text.contains("`switch0`: x - a = 0") && text.contains("jump"), "{text}");
     // The same model without sensitivities integrates, through the located switch.
     let solution = Radau::new(&brake, tight())
         .expect("valid")

@@ -51,6 +51,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 outputs: &[],
                 unilaterals: &[],
                 events: &[],
+                surfaces: &[],
                 parameters: &[#(#parameters),*],
                 subsystems: &[#(#subsystems),*],
                 doc: #doc,

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            surfaces: &[],
             parameters: &["m", "k"],
             subsystems: &[],
             doc: "",

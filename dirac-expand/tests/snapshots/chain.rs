@@ -357,6 +357,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            surfaces: &[],
             parameters: &[],
             subsystems: &[
                 ::dirac::__private::Subsystem {

@@ -552,6 +552,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            surfaces: &[],
             parameters: &["c"],
             subsystems: &[
                 ::dirac::__private::Subsystem {

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            surfaces: &[],
             parameters: &["m1", "m2", "k1", "k2"],
             subsystems: &[],
             doc: "",

@@ -19,6 +19,7 @@ const _: () = {
             outputs: &[],
             unilaterals: &[],
             events: &[],
+            surfaces: &[],
             parameters: &["m", "r", "i_roll", "i_turn"],
             subsystems: &[],
             doc: "",

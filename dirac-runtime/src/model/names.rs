@@ -34,6 +34,9 @@ pub struct Names {
     /// surfaces of its non-smooth functions and conditionals (`switch0`, …), which every
     /// solve locates.
     pub events: &'static [(&'static str, i8)],
+    /// The condition `c` of each of the model's own switching surfaces `c = 0`, as text, by
+    /// the surface's event name: `("switch0", "vb - v")`.
+    pub surfaces: &'static [(&'static str, &'static str)],
     /// The model's own parameters, its `f64` fields (a composite's own, which its
     /// interconnection rows may read), in field order.
     pub parameters: &'static [&'static str],
@@ -446,6 +449,16 @@ impl Names {
         out
     }
 
+    /// The condition of the switching surface whose event is `name` (dotted in a composite:
+    /// `left.switch0`), as text: `vb - v` for the surface `vb - v = 0`.
+    pub fn surface(&self, name: &str) -> Option<&'static str> {
+        if let Some(&(_, c)) = self.surfaces.iter().find(|(n, _)| *n == name) {
+            return Some(c);
+        }
+        let (field, rest) = name.split_once('.')?;
+        self.subsystems.iter().find(|s| s.field == field)?.names.surface(rest)
+    }
+
     fn collect_events(&self, prefix: &str, out: &mut Vec<(String, i8)>) {
         for sub in self.subsystems {
             sub.names.collect_events(&format!("{prefix}{}.", sub.field), out);
@@ -530,6 +543,7 @@ mod tests {
         outputs: &["energy"],
         unilaterals: &[],
         events: &[],
+        surfaces: &[],
         parameters: &["k"],
         subsystems: &[],
         doc: "The left half.",
@@ -546,6 +560,7 @@ mod tests {
         outputs: &[],
         unilaterals: &[],
         events: &[],
+        surfaces: &[],
         parameters: &[],
         subsystems: &[],
         doc: "",
@@ -562,6 +577,7 @@ mod tests {
         outputs: &[],
         unilaterals: &[],
         events: &[],
+        surfaces: &[],
         parameters: &[],
         subsystems: &[
             Subsystem { field: "left", names: &LEFT, q_offset: 0, h_offset: 0, v_offset: 0, u_offset: 0 },

@@ -401,7 +401,7 @@ where
         .event_declarations()
         .into_iter()
         .filter(|&(_, d)| d == crate::model::names::SWITCH)
-        .map(|(name, _)| format!("`{name}`"))
+        .map(|(name, _)| format!("`{name}`: {} = 0", M::NAMES.surface(&name).unwrap_or("?")))
         .collect();
     Err(SimError::InvalidOption {
         what: "sensitivities",

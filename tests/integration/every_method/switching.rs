@@ -484,8 +484,8 @@ fn a_sliding_mode_is_named_where_it_begins() {
         each_integrator!(&belt, Fineness::new(1e-6, 1e-8, 1e-3).steps(100_000), |method, integrator| {
             let result = integrator.solve(0.0, &start, 1.0, &Sampling::Steps);
             match (slides, result) {
-                (true, Err(SimError::Sliding { surface, t, cause })) => {
-                    assert_eq!(surface, "switch0", "{method:?}");
+                (true, Err(SimError::Sliding { surface, condition, t, cause })) => {
+                    assert_eq!((surface.as_str(), condition.as_str()), ("switch0", "vb - v"), "{method:?}");
                     assert!(t < 1e-3, "{method:?}: named at t = {t} ({cause})");
                 }
                 (false, Ok(solution)) => {

@@ -280,6 +280,7 @@ pub fn implementation(
                     outputs: &[],
                     unilaterals: &[],
                     events: &[],
+                    surfaces: &[],
                     parameters: &[],
                     subsystems: &[],
                     doc: "",

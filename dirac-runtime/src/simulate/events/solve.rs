@@ -258,7 +258,11 @@ where
     }
     let t = integrator.t();
     match events.sliding_surface(integrator.model(), t, integrator.state()) {
-        Ok(Some(k)) => SimError::Sliding { surface: events.names()[k].clone(), t, cause: error.to_string() },
+        Ok(Some(k)) => {
+            let surface = events.names()[k].clone();
+            let condition = M::NAMES.surface(&surface).unwrap_or("?").to_string();
+            SimError::Sliding { surface, condition, t, cause: error.to_string() }
+        }
         _ => error,
     }
 }
