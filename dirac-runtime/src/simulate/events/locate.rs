@@ -249,18 +249,12 @@ where
                     probed = true;
                 }
                 let g = match (self.all_declared, self.declared_of[k]) {
-                    (Some(_), Some(j)) => self.declared_values[j],
+                    (Some(_), Some(j)) => checked(self.declared_values[j], &self.names[k], ts)?,
                     _ => {
                         self.evaluations += 1;
-                        (self.functions[k])(ts, &self.probe, integrator.model())
+                        value(&mut self.functions[k], &self.names[k], ts, &self.probe, integrator.model())?
                     }
                 };
-                if g.is_nan() {
-                    return Err(SimError::NonFinite {
-                        t: ts,
-                        component: format!("the event function `{}`", self.names[k]),
-                    });
-                }
                 if (g != 0.0 && g.signum() == sign) || !self.crossings[k].counts(g >= 0.0) {
                     continue;
                 }
@@ -355,7 +349,12 @@ fn value<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let g = g(t, state, model);
+    checked(g(t, state, model), name, t)
+}
+
+/// The value `g` of the event function called `name` at `t`, or an error naming it if it is
+/// NaN.
+fn checked(g: f64, name: &str, t: f64) -> Result<f64, SimError> {
     if g.is_nan() {
         return Err(SimError::NonFinite { t, component: format!("the event function `{name}`") });
     }
