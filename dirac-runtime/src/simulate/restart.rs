@@ -21,6 +21,10 @@ pub(crate) struct Restarts {
     /// change ([`Integrator::model_mut`](crate::Integrator::model_mut)), relative to the size
     /// of their terms; checked against the changed model at the restart.
     changed_from: Option<f64>,
+    /// Whether the model's rows may hold other velocities after a restart than at the start
+    /// (its laws switch, or it was handed out for a change), so that the velocities only the
+    /// forces fix are to be looked for again there.
+    pub rows_switch: bool,
 }
 
 impl Restarts {
@@ -44,6 +48,7 @@ impl Restarts {
         }
         check_state(model, t0, state, tolerance)?;
         self.changed_from = None;
+        self.rows_switch = crate::simulate::laws::has_laws::<M>();
         Ok(())
     }
 
@@ -60,6 +65,7 @@ impl Restarts {
     {
         if model.get_mut().is_some() {
             self.changed_from = Some(constraint_violation(model.get(), t, state));
+            self.rows_switch = true;
         }
         model.get_mut()
     }

@@ -31,16 +31,7 @@ where
         self.stats = ExplicitStats::default();
         self.accelerations.factorizations = 0;
         self.forget();
-        // The velocities only the forces fix are looked for where the start's system is
-        // singular (evaluate_start), once per start; a restart keeps them: which coordinates
-        // lack inertia is the model's structure.
-        self.accelerations.unprepare();
-        self.probe.get_mut().0.unprepare();
-        self.evaluate_start()?;
-        if self.accelerations.has_free() {
-            let s = &self.state;
-            self.probe.get_mut().0.prepare(self.model.get(), t0, (&s.q, &s.v))?;
-        }
+        self.find_free_velocities(t0)?;
         // The interpolation's own system, factored once here: a sparse factorisation finds
         // its pivots (and allocates) the first time only.
         let (probe, acceleration) = self.probe.get_mut();
@@ -91,7 +82,11 @@ where
         }
         (self.t, self.t_previous, self.h_last) = (t, t, 0.0);
         self.forget();
-        self.evaluate_start()?;
+        if self.restarts.rows_switch {
+            self.find_free_velocities(t)?;
+        } else {
+            self.evaluate_start()?;
+        }
         (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
         (self.stiff_steps, self.nonstiff_steps) = (0, 0);
         Ok(())

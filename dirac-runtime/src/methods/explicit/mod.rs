@@ -191,6 +191,21 @@ where
         16.0 * f64::EPSILON * t.abs().max(1.0)
     }
 
+    /// Evaluates the start (or restart) at `t` with the velocities that only the forces fix
+    /// looked for afresh where its system is singular ([`Self::evaluate_start`]): which
+    /// coordinates lack inertia and constraints can change at a restart (a law's row that
+    /// switched, a diode that blocks).
+    fn find_free_velocities(&mut self, t: f64) -> Result<(), SimError> {
+        self.accelerations.unprepare();
+        self.probe.get_mut().0.unprepare();
+        self.evaluate_start()?;
+        if self.accelerations.has_free() {
+            let s = &self.state;
+            self.probe.get_mut().0.prepare(self.model.get(), t, (&s.q, &s.v))?;
+        }
+        Ok(())
+    }
+
     /// Evaluates the accelerations, multipliers and momenta at the state reached (a start, a
     /// restart, an accepted step that was projected), with the cause named if the motion is
     /// not determined there.

@@ -163,6 +163,21 @@ impl<M: LagrangeDirac> Variational<'_, M>
 where
     DefaultAllocator: Storage<M>,
 {
+    /// Finds the velocities only the forces fix at `(t, state)`, where they may be: not in a
+    /// separable model, nor where `[L_vv Aᵀ; A 0]` is regular. At every start and restart:
+    /// which coordinates lack inertia and constraints can change at a restart (a law's row that
+    /// switched, a diode that blocks).
+    fn find_free_velocities(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        self.work.free = None;
+        self.probe.get_mut().1.free = None;
+        if !M::SEPARABLE && !self.work.saddle_regular(self.model.get(), t, state) {
+            let free = |model: &M| FreeVelocities::find(model, t, (&state.q, &state.v), "Variational");
+            self.work.free = free(self.model.get())?;
+            self.probe.get_mut().1.free = free(self.model.get())?;
+        }
+        Ok(())
+    }
+
     /// Steps from `self.state` at `t0` towards `t_end` on a new grid: the energy reference
     /// and the work of the forces start again, and a separable model's mass matrix is
     /// factored again (a change of the model may have changed it).
@@ -423,16 +438,7 @@ where
         self.work.gamma.fill(0.0);
         self.stats = VariationalStats::default();
         self.energy_scale = 0.0;
-        // The velocities only the forces fix, found once per start (a restart keeps them:
-        // which coordinates lack inertia is the model's structure), where they may be: not in
-        // a separable model, nor where [L_vv Aᵀ; A 0] is regular.
-        self.work.free = None;
-        self.probe.get_mut().1.free = None;
-        if !M::SEPARABLE && !self.work.saddle_regular(self.model.get(), t0, state) {
-            let free = |model: &M| FreeVelocities::find(model, t0, (&state.q, &state.v), "Variational");
-            self.work.free = free(self.model.get())?;
-            self.probe.get_mut().1.free = free(self.model.get())?;
-        }
+        self.find_free_velocities(t0, state)?;
         self.begin(t0, t_end)
     }
 
@@ -450,6 +456,9 @@ where
 
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
         self.restarts.jump(self.model.get(), t, (self.t_previous, self.t), state, 1e-8)?;
+        if self.restarts.rows_switch {
+            self.find_free_velocities(t, state)?;
+        }
         self.state.clone_from(state);
         self.work.big_lambda.fill(0.0);
         self.work.gamma.fill(0.0);
