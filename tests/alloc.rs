@@ -192,6 +192,48 @@ fn restarting_at_switching_surfaces_does_not_allocate() {
     }
 }
 
+/// A friction law watched as a plain solve watches it (`Events::switches`): the steps, the
+/// search for its events and the sampling of its engage function within each step allocate
+/// nothing, under the three integrators, up to the first switch (the slip from rest stops at
+/// `t₁ = asin(vb/(ω x_e))/ω`, `x_e = μk N/k`). (The switch itself projects the state onto the
+/// new mode on the heap, once per switch, as a reset does.)
+#[test]
+fn watching_friction_laws_does_not_allocate() {
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    let zero = VecQ::<FrictionBelt>::zeros();
+    let start = dirac::consistent_state(&belt, 0.0, &zero, &zero, Default::default()).expect("slipping");
+    let t1 = (0.5f64 / (2.0 * 0.25 * 9.81 / 4.0)).asin() / 2.0;
+    fn run<I: Integrator<FrictionBelt>>(
+        mut integrator: I,
+        start: &State<FrictionBelt>,
+    ) -> (usize, Option<f64>) {
+        let mut events = dirac::Events::new().switches();
+        integrator.start(0.0, start, 1.0).expect("starts");
+        events.begin(integrator.model(), 0.0, start).expect("begins");
+        let before = allocations();
+        while !integrator.finished() {
+            integrator.step().expect("steps");
+            if let Some(event) = events.locate(&mut integrator).expect("locates") {
+                assert_eq!(events.name(&event), "grip_stops");
+                return (allocations() - before, Some(event.t));
+            }
+        }
+        (allocations() - before, None)
+    }
+    let radau = Radau::new(&belt, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let explicit = Explicit::new(&belt, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let variational = Variational::new(&belt, 1e-3, VariationalOptions::default()).expect("valid");
+    for (name, (allocated, stops)) in [
+        ("Radau", run(radau, &start)),
+        ("Explicit", run(explicit, &start)),
+        ("Variational", run(variational, &start)),
+    ] {
+        assert_eq!(allocated, 0, "{name}");
+        let stops = stops.expect("the slip stops");
+        assert!((stops - t1).abs() < 1e-6, "{name}: stops at {stops}, closed form {t1}");
+    }
+}
+
 /// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
 /// sparse LU, under both integrators.
 /// Steps the explicit integrator 200 times after 5 warm-up steps, reading the state within

@@ -7,9 +7,10 @@ use syn::punctuated::Punctuated;
 use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
+use crate::laws::{self, LawDecl, LawKind};
 use crate::symbol::{
-    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIRAC, DISSIPATION, EVENT, FORCE, HOLONOMIC, INPUT,
-    LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, UNILATERAL, UNIT,
+    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FORCE, FRICTION, HOLONOMIC,
+    INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, SWITCH, UNILATERAL, UNIT,
 };
 
 /// A model as written by the user.
@@ -34,8 +35,11 @@ pub struct Model<'a> {
     pub outputs: Vec<DefineDecl>,
     /// `unilateral(name, restitution = e) = expr`, in the order written.
     pub unilaterals: Vec<UnilateralDecl>,
-    /// `event(name, direction) = expr`, in the order written.
+    /// `event(name, direction) = expr`, in the order written, then the events of the laws.
     pub events: Vec<EventDecl>,
+    /// `friction(...)` and `diode(...)`, in the order written; each is also written into the
+    /// coordinates, constraints, events and Lagrangian ([`laws::desugar`]).
+    pub laws: Vec<LawDecl>,
     /// `__contacts(a, ...)`, written by the derive on the companion it makes of a model with
     /// unilateral constraints: the field that closes each contact, in their order.
     pub switches: Vec<Ident>,
@@ -125,6 +129,7 @@ impl<'a> Model<'a> {
             outputs: Vec::new(),
             unilaterals: Vec::new(),
             events: Vec::new(),
+            laws: Vec::new(),
             switches: Vec::new(),
             lagrangian: None,
             constraints: Vec::new(),
@@ -159,6 +164,7 @@ impl<'a> Model<'a> {
                 model.incomplete = true;
             }
         }
+        laws::desugar(cx, &mut model);
         model
     }
 }
@@ -315,6 +321,9 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 model.units.extend(names.iter().map(|n| (n.unraw(), unit.clone())));
             }
             EVENT => model.events.push(parse_event(input)?),
+            FRICTION => model.laws.push(laws::parse(LawKind::Friction, input)?),
+            DIODE => model.laws.push(laws::parse(LawKind::Diode, input)?),
+            SWITCH => model.laws.push(laws::parse(LawKind::Switch, input)?),
             "__contacts" => {
                 let content;
                 syn::parenthesized!(content in input);

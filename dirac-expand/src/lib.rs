@@ -18,6 +18,7 @@ mod ctxt;
 mod equations;
 mod expand;
 mod interconnect;
+mod laws;
 mod lower;
 mod model;
 mod structure;

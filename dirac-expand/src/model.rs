@@ -6,6 +6,7 @@ use syn::ext::IdentExt;
 
 use crate::ast::{ConstraintKind, Model};
 use crate::ctxt::Ctxt;
+use crate::laws::LawKind;
 use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
 use crate::sym::{Graph, Id, Node};
 use crate::symbol::{DISSIPATED_POWER, TIME};
@@ -133,6 +134,7 @@ impl SymModel {
             lw.lower(e, Context { what, ..all }).map(|r| (e, r))
         });
         let dissipated_power = dissipation.and_then(|(e, r)| sm.dissipate(cx, e, r));
+        sm.slip_forces(cx, model, &scope);
         sm.lower_constraints(cx, model, &scope);
         // Outputs may also name a constraint, standing for its multiplier.
         let mut with_multipliers = scope.clone();
@@ -225,6 +227,43 @@ impl SymModel {
             terms.push(self.graph.mul2(d, self.v[i]));
         }
         Some(self.graph.add(&terms))
+    }
+
+    /// Adds the kinetic force of each friction law, `−f_k s ∂g/∂v` (`s` its mode: ±1 slipping
+    /// to the side of `g`'s sign, 0 stuck), and checks that every law's `g` depends on a
+    /// velocity, as its row, a velocity constraint, needs.
+    fn slip_forces(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) {
+        fn all(what: &str) -> Context<'_> {
+            Context { what, velocities: true, switch_on_velocities: true }
+        }
+        for law in &model.laws {
+            let what = format!("the law `{}`", law.name);
+            let Some(g) = self.lowerer(cx, scope).lower(&law.g, all(&what)) else { continue };
+            let gradient: Vec<Id> = self.v.clone().iter().map(|&v| self.graph.diff(g, v)).collect();
+            if gradient.iter().all(|&d| self.graph.is_zero(d)) {
+                let quantity = match law.kind {
+                    LawKind::Friction => "its relative velocity, as `v - vb`",
+                    LawKind::Diode => "its reverse voltage in node-flux coordinates, as `vo - va`",
+                    LawKind::Switch => "its voltage in node-flux coordinates, as `va - vb`",
+                };
+                cx.error_spanned_by(
+                    &law.g,
+                    format!("{what} depends on no velocity; its row holds `g = 0` on the velocities: write {quantity}"),
+                );
+                continue;
+            }
+            let (LawKind::Friction, Some(kinetic)) = (law.kind, &law.kinetic) else { continue };
+            let what = format!("the kinetic force of `{}`", law.name);
+            let Some(f) = self.lowerer(cx, scope).lower(kinetic, all(&what)) else { continue };
+            let mode = law.mode();
+            let Some(i) = self.coordinates.iter().position(|c| *c == mode) else { continue };
+            let s = self.q[i];
+            let push = self.graph.mul2(f, s);
+            for (j, d) in gradient.into_iter().enumerate() {
+                let term = self.graph.mul2(push, d);
+                self.force[j] = self.graph.sub(self.force[j], term);
+            }
+        }
     }
 
     /// Lowers each `unilateral(name, restitution = e) = φ`: `φ` of the coordinates and time,

@@ -41,6 +41,23 @@ pub const RESTITUTION: &str = "restitution";
 pub const EVENT: &str = "event";
 /// The directions of an `event`'s crossings.
 pub const CROSSINGS: &[&str] = &["falling", "rising", "either"];
+/// `friction(name, kinetic = f, stiction = f_s) = g`: Coulomb friction with stiction on the
+/// relative velocity `g`, with the mode (stuck, or slipping to either side) switched at events.
+pub const FRICTION: &str = "friction";
+/// The kinetic (sliding) force of a `friction` law.
+pub const KINETIC: &str = "kinetic";
+/// The largest force a `friction` law holds while stuck (its kinetic force unless given).
+pub const STICTION: &str = "stiction";
+/// `diode(name) = g`: an ideal diode, the complementarity `g ≥ 0`, `i ≥ 0`, `g i = 0` between
+/// its reverse voltage `g` and its forward current `i`, the multiplier of its row.
+pub const DIODE: &str = "diode";
+/// `switch(name, closed = c) = g`: an ideal switch, holding `g = 0` (its voltage) while closed
+/// (`c > 0`), carrying no current (the multiplier of its row) while open.
+pub const SWITCH: &str = "switch";
+/// The control of a `switch`.
+pub const CLOSED: &str = "closed";
+/// The suffix of the coordinate that holds a law's mode.
+pub const MODE: &str = "_mode";
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
@@ -58,6 +75,9 @@ pub const MODEL_KEYS: &[&str] = &[
     EVENT,
     FORCE,
     DISSIPATION,
+    FRICTION,
+    DIODE,
+    SWITCH,
     UNIT,
     LARGE,
 ];

@@ -96,6 +96,7 @@ pub use nalgebra;
 #[doc(hidden)]
 pub mod __private {
     pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
+    pub use crate::analysis::init::Consistency;
     pub use crate::error::SimError;
     pub use crate::model::Named;
     pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
@@ -116,6 +117,7 @@ pub mod __private {
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
     pub use crate::simulate::events::{Events, SolveWithEvents};
     pub use crate::simulate::integrator::Integrator;
+    pub use crate::simulate::laws::{consistent_with_laws, has_laws};
     pub use crate::simulate::solution::{Sampling, Solution};
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;

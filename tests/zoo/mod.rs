@@ -872,3 +872,18 @@ pub struct SaturatedServo {
     pub r: f64,
     pub fmax: f64,
 }
+
+/// A mass on a belt moving at `vb`, held by a spring to the wall, with Coulomb friction and
+/// stiction as the law `grip`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+#[dirac(friction(grip, kinetic = mu_k * n, stiction = mu_s * n) = v - vb)]
+pub struct FrictionBelt {
+    pub m: f64,
+    pub k: f64,
+    pub vb: f64,
+    pub n: f64,
+    pub mu_s: f64,
+    pub mu_k: f64,
+}

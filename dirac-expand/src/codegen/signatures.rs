@@ -36,6 +36,15 @@ pub fn solve_with_contacts() -> TokenStream {
                 |_, _| ::core::ops::ControlFlow::Continue(()),
             ))
         }
+        fn __consistent_with_laws(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            options: #p::Consistency,
+        ) -> ::core::option::Option<::core::result::Result<#p::State<Self>, #p::SimError>> {
+            #p::has_laws::<Self>().then(|| #p::consistent_with_laws(self, t, q, v, options))
+        }
     }
 }
 

@@ -50,7 +50,31 @@ impl Default for Consistency {
 }
 
 /// The consistent state nearest to positions `q` and velocities `v` at time `t`.
+///
+/// A model with friction laws or ideal diodes (`friction(...)`, `diode(...)`) has each law's
+/// mode in a coordinate of its own (`<law>_mode`); whatever `q` holds there, the mode is chosen
+/// from the state: stuck (0) where the relative velocity is zero and the friction force within
+/// its bound, slipping (±1, the sign of the relative velocity) otherwise; a diode conducting
+/// (0) where its reverse voltage is not positive and its current not negative, blocking (1)
+/// otherwise.
 pub fn consistent_state<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    options: Consistency,
+) -> Result<State<M>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match M::__consistent_with_laws(model, t, q, v, options) {
+        Some(state) => state,
+        None => project(model, t, q, v, options),
+    }
+}
+
+/// [`consistent_state`] with every law's mode as `q` holds it.
+pub(crate) fn project<M: LagrangeDirac>(
     model: &M,
     t: f64,
     q: &VecQ<M>,

@@ -252,6 +252,22 @@ where
         let _ = (integrator, t0, state, t_end, sampling);
         None
     }
+
+    /// [`consistent_state`](crate::consistent_state) of a model with friction laws or ideal
+    /// diodes, each law's mode chosen from the state (which needs the model's event functions,
+    /// of the [`Hybrid`](crate::model::Hybrid) capability). The derives implement it; `None`
+    /// from a model without such laws.
+    #[doc(hidden)]
+    fn __consistent_with_laws(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        options: crate::analysis::init::Consistency,
+    ) -> Option<Result<State<Self>, crate::error::SimError>> {
+        let _ = (t, q, v, options);
+        None
+    }
 }
 
 /// A model of fixed size with dense storage on the stack: every model `#[derive(LagrangeDirac)]`

@@ -9,6 +9,18 @@
 /// the surface `c = 0` of an `abs`, `min`, `max`, `clamp`, `signum` or conditional, crossed
 /// either way.
 pub const SWITCH: i8 = 2;
+/// The direction code of a friction law's engage event (`<law>_stops`: its slip stops).
+pub const STOPS: i8 = 3;
+/// The direction code of a friction law's release event (`<law>_slips`).
+pub const SLIPS: i8 = 4;
+/// The direction code of an ideal diode's engage event (`<law>_conducts`).
+pub const CONDUCTS: i8 = 5;
+/// The direction code of an ideal diode's release event (`<law>_blocks`).
+pub const BLOCKS: i8 = 6;
+/// The direction code of an ideal switch's engage event (`<law>_closes`).
+pub const CLOSES: i8 = 7;
+/// The direction code of an ideal switch's release event (`<law>_opens`).
+pub const OPENS: i8 = 8;
 
 /// The names of one model.
 #[derive(Debug)]
@@ -32,7 +44,8 @@ pub struct Names {
     /// The model's own events (`event(name, direction) = g`), each with the direction of the
     /// crossings that count: −1 falling, 1 rising, 0 either; [`SWITCH`] for the switching
     /// surfaces of its non-smooth functions and conditionals (`switch0`, …), which every
-    /// solve locates.
+    /// solve locates; [`STOPS`] to [`OPENS`] for the events that switch its laws (`friction`,
+    /// `diode`, `switch`), crossings of zero from above.
     pub events: &'static [(&'static str, i8)],
     /// The condition `c` of each of the model's own switching surfaces `c = 0`, as text, by
     /// the surface's event name: `("switch0", "vb - v")`.

@@ -12,6 +12,7 @@ use crate::model::state::State;
 use crate::model::{InputsOutputs, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::shape::layout::Layout;
+use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::sensitivity::Sensitivities;
 use crate::simulate::solution::{Sampling, Solution};
@@ -93,7 +94,7 @@ where
         Self: Sized,
     {
         check_period(t0, t_end, period)?;
-        refuse_unwatched_contacts(self.model())?;
+        refuse_unwatched(self.model())?;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         let mut held = state.clone();
         let sample = |k: usize| (t0 + k as f64 * period).min(t_end);
@@ -248,7 +249,9 @@ where
     {
         // A model with unilateral constraints is solved with them watched, one with switching
         // surfaces with them located.
-        if (!self.model().unilateral_names().is_empty() || self.model().has_switches())
+        if (!self.model().unilateral_names().is_empty()
+            || self.model().has_switches()
+            || laws::has_laws::<M>())
             && let Some(solution) = M::__solve_with_contacts(self, t0, state, t_end, sampling)
         {
             return solution;
@@ -270,7 +273,7 @@ where
     where
         Self: Sized,
     {
-        refuse_unwatched_contacts(self.model())?;
+        refuse_unwatched(self.model())?;
         let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
         self.start(t0, state, t_end)?;
         recorder.record_initial(self.model(), t0, self.state());
@@ -394,7 +397,7 @@ fn refuse_switches<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    if !model.has_switches() {
+    if !model.has_switches() && !laws::has_laws::<M>() {
         return Ok(());
     }
     let surfaces: Vec<String> = M::NAMES
@@ -402,6 +405,7 @@ where
         .into_iter()
         .filter(|&(_, d)| d == crate::model::names::SWITCH)
         .map(|(name, _)| format!("`{name}`: {} = 0", M::NAMES.surface(&name).unwrap_or("?")))
+        .chain(laws::law_names::<M>().into_iter().map(|name| format!("the law `{name}`")))
         .collect();
     Err(SimError::InvalidOption {
         what: "sensitivities",
@@ -493,8 +497,29 @@ where
     Ok(solution.with_sensitivities(names, columns))
 }
 
-/// A typed error if `model` declares unilateral constraints that the solve would not watch:
-/// the motion would pass through them.
+/// A typed error if `model` declares laws (`friction`, `diode`) or unilateral constraints
+/// that the solve would not watch: the laws would hold one mode throughout, the motion would
+/// pass through the constraints.
+fn refuse_unwatched<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if laws::has_laws::<M>() {
+        let laws: Vec<String> = laws::law_names::<M>().iter().map(|n| format!("`{n}`")).collect();
+        return Err(SimError::InvalidOption {
+            what: "laws",
+            reason: format!(
+                "the model's friction laws or diodes ({}) switch their modes at events, which this solve \
+                 would not watch: they would hold one mode throughout. Solve with `solve`, or with \
+                 `solve_with_events` and `Events::new().switches()`",
+                laws.join(", ")
+            ),
+        });
+    }
+    refuse_unwatched_contacts(model)
+}
+
+/// A solve that would not watch the model's unilateral constraints: an error naming them.
 pub(crate) fn refuse_unwatched_contacts<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,

@@ -13,6 +13,7 @@ pub mod events;
 pub mod held;
 /// The driver every integrator shares, with `solve` written once.
 pub mod integrator;
+pub(crate) mod laws;
 pub(crate) mod recorder;
 pub(crate) mod restart;
 pub mod sensitivity;

@@ -513,3 +513,295 @@ fn a_sliding_mode_is_named_where_it_begins() {
         }
     });
 }
+
+/// The belt oscillator of [`BeltOscillator`] with its friction written as the law it is:
+/// `friction(grip, kinetic = μk N, stiction = μs N) = v − vb`. The derive gives it the mode
+/// coordinate `grip_mode`, the row `grip` (its multiplier the friction force while stuck) and
+/// the events `grip_stops` and `grip_slips`, and a plain `solve` switches it.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+#[dirac(friction(grip, kinetic = mu_k * n, stiction = mu_s * n) = v - vb)]
+pub struct Belt {
+    pub m: f64,
+    pub k: f64,
+    pub vb: f64,
+    pub n: f64,
+    pub mu_s: f64,
+    pub mu_k: f64,
+}
+
+/// Stick-slip with the friction law, by a plain `solve` with each integrator, from rest (the
+/// belt moves, the mass does not: it starts slipping, and its mode is chosen so). Closed form:
+/// slipping from rest, `x = x_e (1 − cos ωt)` about `x_e = μk N/k`, until `v = vb` at
+/// `t₁ = asin(vb/(ω x_e))/ω`, where the spring's pull `k x` is within `μs N`, so it sticks,
+/// and rides the belt until `k x = μs N`; from there the periodic stick-slip of
+/// [`stick_slip_on_a_belt_against_its_closed_form`]. Checked as there: the event times, the
+/// friction force within its bound while stuck, the mass on the belt's speed, the mode
+/// coordinate, and the steps while stuck.
+#[test]
+fn the_friction_law_sticks_and_slips_by_itself() {
+    let belt = Belt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    let Belt { m, k, vb, n, mu_s, mu_k } = belt;
+    let omega = (k / m).sqrt();
+    let xe = mu_k * n / k;
+    let t1 = (vb / (omega * xe)).asin() / omega;
+    let x1 = xe * (1.0 - (omega * t1).cos());
+    let first_release = t1 + (mu_s * n / k - x1) / vb;
+    let d = (mu_s - mu_k) * n / k;
+    let phi = (vb / (omega * d)).atan();
+    let (slip, stick) = ((PI + 2.0 * phi) / omega, 2.0 * d / vb);
+    let slips: Vec<f64> = (0..2).map(|j| first_release + f64::from(j) * (slip + stick)).collect();
+    let stops = vec![t1, slips[0] + slip];
+    let t_end = slips[1] + 0.5 * slip;
+    let stuck =
+        |t: f64| (t > t1 + 1e-3 && t < slips[0] - 1e-3) || (t > stops[1] + 1e-3 && t < slips[1] - 1e-3);
+    let mut steps = Vec::new();
+    for (tolerance, h) in [(1e-6, 2e-3), (1e-10, 2e-4)] {
+        each_integrator!(&belt, Fineness::new(tolerance, 1e-2 * tolerance, h), |method, integrator| {
+            let solution = integrator
+                .solve(0.0, &State::<Belt>::zeros(), t_end, &Sampling::Steps)
+                .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+            let times = |name: &str| -> Vec<f64> {
+                solution.events().iter().filter(|e| solution.event_name(e) == name).map(|e| e.t).collect()
+            };
+            let (got_stops, got_slips) = (times("grip_stops"), times("grip_slips"));
+            assert_eq!((got_stops.len(), got_slips.len()), (2, 2), "{method:?}: {got_stops:?} {got_slips:?}");
+            // Measured at rtol 1e-10 (h = 2e-4): 1.6e-10 (Radau), 5e-12 (Explicit), 6.6e-9
+            // (Variational, against its bound 1.2e-7).
+            let bound = match method {
+                Method::Variational => 0.2 * h * h * omega * omega * slip,
+                _ => 30.0 * tolerance,
+            };
+            for (got, want) in got_stops.iter().zip(&stops).chain(got_slips.iter().zip(&slips)) {
+                assert!(
+                    (got - want).abs() < bound,
+                    "{method:?}: {got_stops:?} {got_slips:?} against {stops:?} {slips:?}"
+                );
+            }
+            let (lambda, v, mode) =
+                (solution.lambda(Belt::GRIP), solution.v(Belt::X), solution.q(Belt::GRIP_MODE));
+            let mut stuck_steps = 0;
+            for (i, &t) in solution.t().iter().enumerate() {
+                if stuck(t) {
+                    stuck_steps += 1;
+                    assert!(lambda[i].abs() <= mu_s * n * (1.0 + 1e-9), "{method:?} at {t}: {}", lambda[i]);
+                    // The mode is 0 stuck; engaged, the slack's velocity is free and the mode
+                    // drifts by the integration's error (1.1e-10 measured with Radau at 1e-10).
+                    assert!(
+                        (v[i] - vb).abs() < 1e-8 && mode[i].abs() < 1e-6,
+                        "{method:?} at {t}: v = {}, mode {}",
+                        v[i],
+                        mode[i]
+                    );
+                } else if t < t1 - 1e-3 {
+                    // Slower than the belt: slipping backwards relative to it.
+                    assert!((mode[i] + 1.0).abs() < 1e-6, "{method:?} at {t}: mode {}", mode[i]);
+                }
+            }
+            steps.push((method, solution.len(), stuck_steps));
+        });
+    }
+    for &(method, all, stuck) in &steps {
+        match method {
+            Method::Variational => assert!(all < (2.0 * t_end / 2e-4) as usize, "{steps:?}"),
+            _ => assert!(stuck < 40 && all < 3000, "{steps:?}"),
+        }
+    }
+}
+
+/// The rectifier of [`Rectifier`] with its diode written as the law it is, `diode(d) = vo − va`:
+/// no slack, no mode field, no events of its own.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(a => va, o => vo))]
+#[dirac(lagrangian = 0.5 * c * vo * vo)]
+#[dirac(dissipation = 0.5 * vo * vo / r)]
+#[dirac(constraint(source) = va - u * (w * t).sin())]
+#[dirac(diode(d) = vo - va)]
+pub struct HalfWave {
+    pub u: f64,
+    pub w: f64,
+    pub c: f64,
+    pub r: f64,
+}
+
+/// The ideal diode by a plain `solve` with each integrator, from rest: it starts conducting
+/// (its reverse voltage is zero and the current the source drives into the capacitor,
+/// `C U ω`, positive), and its conduction intervals, the complementarity along the run and the
+/// output at the end are checked against the closed form of [`rectifier_intervals`], within
+/// the bounds of [`a_half_wave_rectifier_against_its_closed_form`].
+#[test]
+fn the_diode_law_conducts_and_blocks_by_itself() {
+    let model = HalfWave { u: 1.0, w: 1.0, c: 2.0, r: 1.0 };
+    let intervals = rectifier_intervals(&Rectifier { u: 1.0, w: 1.0, c: 2.0, r: 1.0, on: 1.0 }, 3);
+    let t_end = intervals[2].1 + 1.0;
+    for (tolerance, h) in [(1e-6, 2e-3), (1e-10, 2e-4)] {
+        each_integrator!(&model, Fineness::new(tolerance, 1e-2 * tolerance, h), |method, integrator| {
+            let solution = integrator
+                .solve(0.0, &State::<HalfWave>::zeros(), t_end, &Sampling::Steps)
+                .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+            let times = |name: &str| -> Vec<f64> {
+                solution.events().iter().filter(|e| solution.event_name(e) == name).map(|e| e.t).collect()
+            };
+            let (on, off) = (times("d_conducts"), times("d_blocks"));
+            assert_eq!((on.len(), off.len()), (2, 3), "{method:?}: {on:?} {off:?} against {intervals:?}");
+            let (bound_on, bound_off) = match method {
+                Method::Variational => (0.1 * h * h, 0.1 * h * h),
+                Method::Radau => (100.0 * tolerance, 0.1 * tolerance.powf(0.6)),
+                Method::Explicit => (100.0 * tolerance, 100.0 * tolerance),
+            };
+            for (j, &(t_on, t_off)) in intervals.iter().enumerate() {
+                assert!((off[j] - t_off).abs() < bound_off, "{method:?}: {off:?} against {intervals:?}");
+                if j > 0 {
+                    assert!((on[j - 1] - t_on).abs() < bound_on, "{method:?}: {on:?} against {intervals:?}");
+                }
+            }
+            let (current, vo, mode) =
+                (solution.lambda(HalfWave::D), solution.v(HalfWave::O), solution.q(HalfWave::D_MODE));
+            for (i, &t) in solution.t().iter().enumerate() {
+                let conducting = intervals.iter().any(|&(a, b)| t > a + 1e-3 && t < b - 1e-3);
+                let blocking = intervals.windows(2).any(|p| t > p[0].1 + 1e-3 && t < p[1].0 - 1e-3);
+                let source = model.u * (model.w * t).sin();
+                if conducting {
+                    assert!(
+                        current[i] > -1e-8 && mode[i].abs() < 1e-6,
+                        "{method:?} at {t}: current {}",
+                        current[i]
+                    );
+                    assert!((vo[i] - source).abs() < 1e-8, "{method:?} at {t}: vo {} u {source}", vo[i]);
+                }
+                if blocking {
+                    assert!(
+                        vo[i] - source > -1e-8 && (mode[i] - 1.0).abs() < 1e-6,
+                        "{method:?} at {t}: reverse {}",
+                        vo[i] - source
+                    );
+                }
+            }
+            let (t_off, tau) = (intervals[2].1, model.r * model.c);
+            let expected = model.u * (model.w * t_off).sin() * (-(t_end - t_off) / tau).exp();
+            let end = solution.last().expect("a sample").v(HalfWave::O);
+            assert!((end - expected).abs() < bound_off, "{method:?}: vo = {end}, closed form {expected}");
+        });
+    }
+}
+
+/// A capacitor `C` charged from a source `U` through an ideal switch and a resistor `r`, in
+/// node-flux coordinates: the source holds node `a`, the switch joins `a` to `b` while
+/// `cos ωt > 0`, the resistor joins `b` to the output `o`. Node `b` has no inertia: its voltage
+/// is fixed by the resistor (equal to `vo` while the switch is open, no current flowing).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(a => va, b => vb, o => vo))]
+#[dirac(lagrangian = 0.5 * c * vo * vo)]
+#[dirac(dissipation = 0.5 * (vb - vo) * (vb - vo) / r)]
+#[dirac(constraint(source) = va - u)]
+#[dirac(switch(s, closed = (w * t).cos()) = va - vb)]
+pub struct SwitchedCharge {
+    pub u: f64,
+    pub w: f64,
+    pub c: f64,
+    pub r: f64,
+}
+
+/// The ideal switch by a plain `solve` with each integrator, from an empty capacitor. Closed
+/// form: closed on `[0, π/2ω)` and `(3π/2ω, 5π/2ω)`, the capacitor charges as
+/// `U − (U − vo) e^{−τ/rC}`; open, it holds its voltage and the switch carries no current.
+/// The switch's events at the control's zeros, the output at the end and the current while
+/// open against it.
+#[test]
+fn the_switch_law_follows_its_control() {
+    let model = SwitchedCharge { u: 1.0, w: 1.0, c: 1.0, r: 1.0 };
+    let tau = model.r * model.c;
+    let quarter = PI / 2.0 / model.w;
+    let t_end = 6.0 * quarter;
+    let expected = model.u * (1.0 - (-3.0 * quarter / tau).exp());
+    for (tolerance, h) in [(1e-6, 2e-3), (1e-10, 2e-4)] {
+        each_integrator!(&model, Fineness::new(tolerance, 1e-2 * tolerance, h), |method, integrator| {
+            let zero = VecQ::<SwitchedCharge>::zeros();
+            let start = consistent_state(integrator.model(), 0.0, &zero, &zero, Consistency::default())
+                .expect("the source's voltage on the closed switch's far side");
+            let solution = integrator
+                .solve(0.0, &start, t_end, &Sampling::Steps)
+                .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+            let times = |name: &str| -> Vec<f64> {
+                solution.events().iter().filter(|e| solution.event_name(e) == name).map(|e| e.t).collect()
+            };
+            let (opens, closes) = (times("s_opens"), times("s_closes"));
+            assert_eq!((opens.len(), closes.len()), (2, 1), "{method:?}: {opens:?} {closes:?}");
+            let bound = if method == Method::Variational { 0.1 * h * h } else { 100.0 * tolerance };
+            for (got, want) in opens.iter().chain(&closes).zip([quarter, 5.0 * quarter, 3.0 * quarter]) {
+                assert!((got - want).abs() < bound, "{method:?}: {opens:?} {closes:?}");
+            }
+            let current = solution.lambda(SwitchedCharge::S);
+            for (i, &t) in solution.t().iter().enumerate() {
+                if (t > quarter + 1e-3 && t < 3.0 * quarter - 1e-3) || t > 5.0 * quarter + 1e-3 {
+                    assert!(current[i].abs() < 1e-8, "{method:?} at {t}: {}", current[i]);
+                }
+            }
+            let end = solution.last().expect("a sample").v(SwitchedCharge::O);
+            let error = (end - expected).abs();
+            assert!(error < 1e3 * bound, "{method:?}: vo = {end}, closed form {expected} (off by {error:e})");
+        });
+    }
+}
+
+/// The block of [`Belt`] alone, its position a port.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), port(x))]
+#[dirac(lagrangian = 0.5 * m * v * v)]
+#[dirac(friction(grip, kinetic = mu_k * n, stiction = mu_s * n) = v - vb)]
+pub struct Block {
+    pub m: f64,
+    pub vb: f64,
+    pub n: f64,
+    pub mu_s: f64,
+    pub mu_k: f64,
+}
+
+/// A spring to the wall, massless, its end a port.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => w), port(y))]
+#[dirac(lagrangian = -0.5 * k * y * y)]
+pub struct WallSpring {
+    pub k: f64,
+}
+
+/// [`Belt`] as an interconnection of the block and the spring.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(block.x, spring.y))]
+pub struct BlockOnSpring {
+    pub block: Block,
+    pub spring: WallSpring,
+}
+
+/// A law inside an interconnection is the composite's, by its dotted name: the block's
+/// friction switches as [`Belt`]'s does (the same closed form for the first stick and the
+/// first slip), with each integrator.
+#[test]
+fn a_law_inside_an_interconnection_switches_by_its_dotted_name() {
+    let (m, k, vb, n, mu_s, mu_k): (f64, f64, f64, f64, f64, f64) = (1.0, 4.0, 0.5, 9.81, 0.4, 0.25);
+    let composite = BlockOnSpring { block: Block { m, vb, n, mu_s, mu_k }, spring: WallSpring { k } };
+    let omega = (k / m).sqrt();
+    let xe = mu_k * n / k;
+    let t1 = (vb / (omega * xe)).asin() / omega;
+    let x1 = xe * (1.0 - (omega * t1).cos());
+    let first_release = t1 + (mu_s * n / k - x1) / vb;
+    let (tolerance, h) = (1e-10, 2e-4);
+    each_integrator!(&composite, Fineness::new(tolerance, 1e-2 * tolerance, h), |method, integrator| {
+        let zero = VecQ::<BlockOnSpring>::zeros();
+        let start = consistent_state(integrator.model(), 0.0, &zero, &zero, Consistency::default())
+            .expect("slipping from rest");
+        let solution = integrator
+            .solve(0.0, &start, first_release + 0.5, &Sampling::Steps)
+            .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+        let named: Vec<(&str, f64)> =
+            solution.events().iter().map(|e| (solution.event_name(e), e.t)).collect();
+        assert_eq!(named.len(), 2, "{method:?}: {named:?}");
+        let bound = if method == Method::Variational { 1e-6 } else { 30.0 * tolerance };
+        assert!(named[0].0 == "block.grip_stops" && (named[0].1 - t1).abs() < bound, "{method:?}: {named:?}");
+        assert!(
+            named[1].0 == "block.grip_slips" && (named[1].1 - first_release).abs() < bound,
+            "{method:?}: {named:?} against {t1}, {first_release}"
+        );
+    });
+}

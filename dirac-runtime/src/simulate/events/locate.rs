@@ -139,7 +139,7 @@ where
                 first = Some((k, root));
             }
         }
-        if self.switch_of.iter().any(|&s| s) {
+        if self.sampled.iter().any(|&s| s) {
             self.crossed_back(integrator, t, &mut first)?;
         }
         // A contact that is closed (its function zero or crossed, and not reopened by an impact)
@@ -234,7 +234,7 @@ where
             let (mut probed, mut found) = (false, false);
             for k in 0..self.functions.len() {
                 let (sign, end) = (self.signs[k], self.hi[k]);
-                if !self.switch_of[k] || sign == 0.0 || end == 0.0 || end.signum() != sign {
+                if !self.sampled[k] || sign == 0.0 || end == 0.0 || end.signum() != sign {
                     continue;
                 }
                 if !probed {

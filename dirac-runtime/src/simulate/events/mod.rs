@@ -13,11 +13,12 @@
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
-use crate::model::names::SWITCH;
+use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS, SWITCH};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
 use crate::simulate::contacts::{Contacts, Impacts};
+use crate::simulate::laws::{self, Law, Switch};
 use crate::simulate::solution::{Crossing, Event};
 
 mod locate;
@@ -81,6 +82,9 @@ where
     /// Whether each function is a switching surface of the model, where the integration
     /// restarts.
     pub(crate) switch_of: Vec<bool>,
+    /// Whether each function is sampled within each step (switching surfaces, and the laws'
+    /// engage functions, which read the motion alone), for a crossing and crossing back.
+    pub(crate) sampled: Vec<bool>,
     /// The largest magnitude each function has had at the points examined: the scale against
     /// which a switching function counts as zero where a step fails.
     peak: Vec<f64>,
@@ -92,6 +96,12 @@ where
     declared_of: Vec<Option<usize>>,
     /// The declared functions' values at a sample.
     declared_values: Vec<f64>,
+    /// The model's friction laws and ideal diodes, where `declared` or `switches` watches them.
+    laws: Vec<Law>,
+    /// Which switch of which law each watched function is, if it is one.
+    law_of: Vec<Option<Switch>>,
+    /// The law switched at the event being handled, whose functions restart positive.
+    switched_law: Option<usize>,
 }
 
 /// `Hybrid::events` of a model, as a plain function of the state.
@@ -133,10 +143,14 @@ where
             release_of: Vec::new(),
             reopened: Vec::new(),
             switch_of: Vec::new(),
+            sampled: Vec::new(),
             peak: Vec::new(),
             all_declared: None,
             declared_of: Vec::new(),
             declared_values: Vec::new(),
+            laws: Vec::new(),
+            law_of: Vec::new(),
+            switched_law: None,
         }
     }
 
@@ -154,16 +168,27 @@ where
         self.contact_of.push(None);
         self.release_of.push(None);
         self.switch_of.push(false);
+        self.sampled.push(false);
         self.declared_of.push(None);
+        self.law_of.push(None);
         self
     }
 
     /// After a restart at an impact: the contacts `reopened` (their indices among the
     /// unilateral constraints) moved away from zero, so their functions count as positive
     /// from there, whatever their sign at the impact.
+    ///
+    /// Likewise after a law switched: both its functions start at or above zero in the new
+    /// mode (a released law's `g` at zero, an engaged one's margin to its bound), so they count
+    /// as positive from there, whatever the round-off left.
     fn reopen(&mut self, reopened: &[usize]) {
+        let law = self.switched_law.take();
         for k in 0..self.functions.len() {
-            if self.contact_of[k].is_some_and(|j| reopened.contains(&j)) {
+            let switched = matches!(
+                (self.law_of[k], law),
+                (Some(Switch::Engage(j) | Switch::Release(j)), Some(l)) if j == l
+            );
+            if switched || self.contact_of[k].is_some_and(|j| reopened.contains(&j)) {
                 self.reopened[k] = true;
                 self.signs[k] = 1.0;
                 self.lo[k] = self.lo[k].max(0.0);
@@ -217,6 +242,7 @@ where
             let crossing = match direction {
                 d if d < 0 => Crossing::Falling,
                 1 => Crossing::Rising,
+                STOPS | SLIPS | CONDUCTS | BLOCKS | CLOSES | OPENS => Crossing::Falling,
                 _ => Crossing::Either,
             };
             let mut values = vec![0.0; k];
@@ -225,9 +251,10 @@ where
                 values[j]
             });
             *self.switch_of.last_mut().expect("just added") = direction == SWITCH;
+            *self.sampled.last_mut().expect("just added") = direction == SWITCH;
             *self.declared_of.last_mut().expect("just added") = Some(j);
         }
-        self.watch_declared(k)
+        self.watch_laws().watch_declared(k)
     }
 
     /// Adds the switching surfaces of the model's non-smooth functions and conditionals
@@ -236,22 +263,65 @@ where
     /// crossing, [`SolveWithEvents::solve_with_events`] restarts the integration, so that no
     /// step reaches across the kink. A plain [`Integrator::solve`](crate::Integrator::solve)
     /// adds them itself; [`Events::declared`] has them among the declared events.
+    ///
+    /// Also adds the events of the model's laws (`friction`, `diode`, `switch`: `grip_stops`,
+    /// `grip_slips`, `d_conducts`, …), at each of which the solve switches the law's mode
+    /// before the action sees the event, and restarts from the consistent state in the new
+    /// mode.
     pub fn switches(mut self) -> Self {
         let declared = M::NAMES.event_declarations();
         let k = declared.len();
         for (j, (name, direction)) in declared.into_iter().enumerate() {
-            if direction != SWITCH {
-                continue;
-            }
+            let crossing = match direction {
+                SWITCH => Crossing::Either,
+                STOPS | SLIPS | CONDUCTS | BLOCKS | CLOSES | OPENS => Crossing::Falling,
+                _ => continue,
+            };
             let mut values = vec![0.0; k];
-            self = self.on(name, Crossing::Either, move |t, s: &State<M>, m: &M| {
+            self = self.on(name, crossing, move |t, s: &State<M>, m: &M| {
                 m.events(t, &s.q, &s.v, &s.lambda, &mut values);
                 values[j]
             });
-            *self.switch_of.last_mut().expect("just added") = true;
+            *self.switch_of.last_mut().expect("just added") = direction == SWITCH;
+            *self.sampled.last_mut().expect("just added") = direction == SWITCH;
             *self.declared_of.last_mut().expect("just added") = Some(j);
         }
-        self.watch_declared(k)
+        self.watch_laws().watch_declared(k)
+    }
+
+    /// Marks the watched functions that switch one of the model's laws (`friction`, `diode`),
+    /// which [`SolveWithEvents::solve_with_events`] then switches at their events.
+    fn watch_laws(mut self) -> Self {
+        self.laws = laws::laws::<M>();
+        for (k, declared) in self.declared_of.iter().enumerate() {
+            let Some(j) = *declared else { continue };
+            self.law_of[k] = self.laws.iter().enumerate().find_map(|(l, law)| {
+                (law.engage == j)
+                    .then_some(Switch::Engage(l))
+                    .or((law.release == j).then_some(Switch::Release(l)))
+            });
+            self.sampled[k] |= matches!(self.law_of[k], Some(Switch::Engage(_)));
+        }
+        self
+    }
+
+    /// Whether every law of the model is watched (each switch of each).
+    pub(crate) fn watches_laws(&self) -> bool {
+        let watched = self.law_of.iter().flatten().count();
+        watched == 2 * laws::laws::<M>().len()
+    }
+
+    /// Switches the law of event `k` at `t` in `state`, the state there, leaving it consistent
+    /// in the law's new mode; whether `k` is a law's event.
+    fn switch_law(&mut self, model: &M, k: usize, t: f64, state: &mut State<M>) -> Result<bool, SimError> {
+        let Some(switch) = self.law_of[k] else { return Ok(false) };
+        let (l, engage) = match switch {
+            Switch::Engage(l) => (l, true),
+            Switch::Release(l) => (l, false),
+        };
+        laws::switch(model, &self.laws[l], engage, t, state, &mut self.declared_values)?;
+        self.switched_law = Some(l);
+        Ok(true)
     }
 
     /// Keeps `Hybrid::events` to evaluate the model's `count` declared functions at once.
@@ -309,7 +379,9 @@ where
             self.contact_of.push(Some(j));
             self.release_of.push(None);
             self.switch_of.push(false);
+            self.sampled.push(false);
             self.declared_of.push(None);
+            self.law_of.push(None);
         }
         // In a companion whose contacts rest, a closed contact opens where its force, the
         // multiplier of its row, falls through zero.

@@ -8,12 +8,13 @@ use nalgebra::DefaultAllocator;
 
 use super::Events;
 use crate::analysis::diagnose::check_constraints_kept;
-use crate::analysis::init::{Consistency, consistent_state};
+use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::Storage;
 use crate::simulate::integrator::{Integrator, refuse_unwatched_contacts};
+use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::constraint_violation;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
@@ -60,7 +61,7 @@ where
 
     /// The state at the event, to reset: the integration restarts from the consistent state
     /// nearest to the positions and velocities left here (see
-    /// [`consistent_state`]: momenta and multipliers are computed,
+    /// [`consistent_state`](crate::consistent_state): momenta and multipliers are computed,
     /// not read).
     pub fn state_mut(&mut self) -> &mut State<M> {
         self.reset = true;
@@ -102,7 +103,7 @@ where
     ///
     /// - An action that changes nothing costs no restart: the search goes on within the step.
     /// - After a reset or a change, the integration restarts at the event from the consistent
-    ///   state nearest to the one the action left ([`consistent_state`]).
+    ///   state nearest to the one the action left ([`consistent_state`](crate::consistent_state)).
     /// - `ControlFlow::Break(())` ends the solution at the event (the integrator itself stays
     ///   at the end of the step that held it; [`Integrator::restart_at`] moves it back).
     ///
@@ -126,6 +127,23 @@ where
         if let Some(contacts) = &events.contacts {
             recorder.name_contacts(&contacts.names);
         }
+        // Each law starts in the mode the state puts it in (the start made consistent there, if
+        // the state held another).
+        let chosen;
+        let state = if laws::has_laws::<M>() {
+            if !events.watches_laws() {
+                return Err(unwatched_laws::<M>());
+            }
+            chosen =
+                laws::consistent_with_laws(self.model(), t0, &state.q, &state.v, Consistency::default())?;
+            if laws::laws::<M>().iter().all(|law| chosen.q[law.mode] == state.q[law.mode]) {
+                state
+            } else {
+                &chosen
+            }
+        } else {
+            state
+        };
         self.start(t0, state, t_end)?;
         events.begin(self.model(), t0, self.state())?;
         recorder.record_initial(self.model(), t0, self.state());
@@ -196,6 +214,8 @@ where
                 if let Some(j) = events.release_of[event.index] {
                     switched |= close(self, j, false);
                 }
+                // A law switches its mode: the state is made consistent in the new one.
+                switched |= events.switch_law(self.model(), event.index, t, &mut after)?;
                 let mut context = EventContext::new(t, &mut after, self);
                 context.impulse = impulse;
                 context.reset = !reopened.is_empty() || switched;
@@ -212,7 +232,7 @@ where
                     // nearest to it.
                     if self.restart_at(t, &after).is_err() {
                         let consistent =
-                            consistent_state(self.model(), t, &after.q, &after.v, Consistency::default())?;
+                            project(self.model(), t, &after.q, &after.v, Consistency::default())?;
                         self.restart_at(t, &consistent)?;
                         after.clone_from(&consistent);
                     }
@@ -267,6 +287,23 @@ where
     }
 }
 
+/// The error for a solve with events that would leave the model's laws unswitched.
+fn unwatched_laws<M: Hybrid>() -> SimError
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names: Vec<String> = laws::law_names::<M>().iter().map(|n| format!("`{n}`")).collect();
+    SimError::InvalidOption {
+        what: "events",
+        reason: format!(
+            "the model's friction laws or diodes ({}) switch their modes at events this solve would not \
+             watch, so they would hold one mode throughout: add them with `Events::new().switches()` (or \
+             `.declared()`), or solve with `solve`, which watches them",
+            names.join(", ")
+        ),
+    }
+}
+
 /// Closes (or opens) contact `j` of the integrator's model, if the model can rest it (a
 /// companion made by `with_contacts`) and the integrator holds it exclusively.
 fn close<M: Hybrid, I: Integrator<M>>(integrator: &mut I, j: usize, closed: bool) -> bool
@@ -311,7 +348,7 @@ fn restart_from<M: Hybrid, I: Integrator<M>>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let consistent = consistent_state(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
+    let consistent = project(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
     integrator.restart_at(t, &consistent)?;
     events.resume(integrator.model(), t, &consistent)?;
     recorder.record_reset(integrator.model(), t, &consistent);

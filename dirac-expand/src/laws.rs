@@ -1,0 +1,244 @@
+//! Set-valued laws: Coulomb friction with stiction (`friction`), the ideal diode (`diode`) and
+//! the ideal switch (`switch`).
+//!
+//! Each law is a row that the motion holds in one mode and not in the other, so the derive
+//! writes it in the terms every integrator already handles. Law `c` on the quantity `g(q, v, t)`
+//! (a relative velocity, a reverse voltage) gets a coordinate `c_mode` whose value is the mode,
+//! a slack of unit mass with the velocity `c_mode_rate`, and the row `c`:
+//!
+//! ```text
+//! (1 − s²) g + s² ṡ = 0,      s = c_mode
+//! ```
+//!
+//! Engaged (`s = 0`: stuck, conducting), the row holds `g = 0` and its multiplier is the law's
+//! force (the friction force along `∂g/∂v`, the diode's forward current); the slack moves
+//! freely and, at rest, stays at rest. Released (`s = ±1`: slipping to the side of `g`'s sign,
+//! blocking), the row holds the slack at rest, so `s` keeps its value; a friction law then
+//! pushes with its kinetic force, `−f_k s ∂g/∂v`. The mode changes at two events, each a
+//! crossing of zero by a function the derive writes:
+//!
+//! - engage (`c_stops`, `c_conducts`): `s g + (1 − s²)`, where `g` reaches zero while released;
+//! - release (`c_slips`, `c_blocks`): `(1 − s²) (f_s − |λ|) + s²` for friction (the force
+//!   reaches its bound), `(1 − s²) λ + s²` for a diode (the current falls to zero).
+//!
+//! A switch (`s` 0 closed, 1 open) follows its control `c` instead: it closes (`c_closes`,
+//! `−s c + (1 − s²)`) where `c` rises through zero and opens (`c_opens`, `(1 − s²) c + s²`)
+//! where it falls.
+//!
+//! The runtime reads the law from these events' direction codes and names, sets `c_mode` in
+//! the state at each and restarts from the consistent state; it also picks each law's mode at
+//! the start from the state given. Nothing in the model's fields changes, so a model shared
+//! between integrators keeps its laws.
+
+use proc_macro2::Span;
+use quote::{format_ident, quote_spanned};
+use syn::ext::IdentExt;
+use syn::parse::ParseStream;
+use syn::spanned::Spanned;
+use syn::{Expr, Ident, Token};
+
+use crate::ast::{ConstraintDecl, ConstraintKind, CoordinateDecl, EventDecl, Model};
+use crate::ctxt::Ctxt;
+use crate::symbol::{CLOSED, DIODE, FRICTION, KINETIC, MODE, STICTION, SWITCH};
+
+/// The direction code of a friction law's engage event (its slip stops: it sticks, or slips
+/// on to the other side where the force to hold it exceeds the bound).
+pub const STOPS: i8 = 3;
+/// The direction code of a friction law's release event (stuck, its force reaches the bound).
+pub const SLIPS: i8 = 4;
+/// The direction code of a diode's engage event (blocking, its reverse voltage reaches zero).
+pub const CONDUCTS: i8 = 5;
+/// The direction code of a diode's release event (conducting, its current falls to zero).
+pub const BLOCKS: i8 = 6;
+
+/// The direction code of an ideal switch's engage event (its control rises through zero).
+pub const CLOSES: i8 = 7;
+/// The direction code of an ideal switch's release event (its control falls through zero).
+pub const OPENS: i8 = 8;
+
+/// Which law.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum LawKind {
+    Friction,
+    Diode,
+    Switch,
+}
+
+/// `friction(name, kinetic = f, stiction = f_s) = g` or `diode(name) = g`.
+pub struct LawDecl {
+    pub kind: LawKind,
+    pub name: Ident,
+    /// The relative velocity (friction) or the reverse voltage (diode).
+    pub g: Expr,
+    /// The force while slipping.
+    pub kinetic: Option<Expr>,
+    /// The bound of the force while stuck.
+    pub stiction: Option<Expr>,
+    /// A switch's control: closed while it is positive.
+    pub closed: Option<Expr>,
+}
+
+impl LawDecl {
+    /// The coordinate that holds the law's mode.
+    pub fn mode(&self) -> Ident {
+        format_ident!("{}{}", self.name, MODE)
+    }
+}
+
+/// `(name, kinetic = f, stiction = f_s) = g` after `friction`, `(name) = g` after `diode`,
+/// `(name, closed = c) = g` after `switch`.
+pub fn parse(kind: LawKind, input: ParseStream) -> syn::Result<LawDecl> {
+    let content;
+    syn::parenthesized!(content in input);
+    let name = content.parse::<Ident>()?.unraw();
+    let (mut kinetic, mut stiction, mut closed) = (None, None, None);
+    while !content.is_empty() {
+        content.parse::<Token![,]>()?;
+        if content.is_empty() {
+            break;
+        }
+        let key = content.call(Ident::parse_any)?;
+        let slot = match (kind, key.to_string().as_str()) {
+            (LawKind::Friction, KINETIC) => &mut kinetic,
+            (LawKind::Friction, STICTION) => &mut stiction,
+            (LawKind::Friction, other) => {
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown option `{other}` of a friction law; expected `{KINETIC} = f` (the force while \
+                         slipping) and optionally `{STICTION} = f_s` (the most it holds while stuck)"
+                    ),
+                ));
+            }
+            (LawKind::Switch, CLOSED) => &mut closed,
+            (LawKind::Switch, other) => {
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown option `{other}` of an ideal switch; expected `{CLOSED} = c` (closed while c > 0)"
+                    ),
+                ));
+            }
+            (LawKind::Diode, other) => {
+                return Err(syn::Error::new(
+                    key.span(),
+                    format!(
+                        "unknown option `{other}` of an ideal diode, which takes none: `{DIODE}(name) = g`"
+                    ),
+                ));
+            }
+        };
+        content.parse::<Token![=]>()?;
+        if slot.is_some() {
+            return Err(syn::Error::new(key.span(), format!("`{key}` given twice")));
+        }
+        *slot = Some(content.parse::<Expr>()?);
+    }
+    input.parse::<Token![=]>()?;
+    let g: Expr = input.parse()?;
+    if kind == LawKind::Friction && kinetic.is_none() {
+        return Err(syn::Error::new(
+            name.span(),
+            format!(
+                "friction `{name}` needs its kinetic force: `{FRICTION}({name}, {KINETIC} = mu * n) = v - vb` \
+                 (and `{STICTION} = mu_s * n` if it holds more while stuck)"
+            ),
+        ));
+    }
+    if kind == LawKind::Switch && closed.is_none() {
+        return Err(syn::Error::new(
+            name.span(),
+            format!(
+                "switch `{name}` needs its control: `{SWITCH}({name}, {CLOSED} = on) = va - vb`, closed while \
+                 `on` is positive"
+            ),
+        ));
+    }
+    Ok(LawDecl { kind, name, g, kinetic, stiction, closed })
+}
+
+/// Writes each law of `model` into its items: the mode coordinate, the slack's kinetic energy
+/// in the Lagrangian, the row and the two events (the kinetic force is added where the model
+/// is lowered, as it needs `∂g/∂v`).
+pub fn desugar(cx: &Ctxt, model: &mut Model<'_>) {
+    if model.laws.is_empty() {
+        return;
+    }
+    let mut rates = Vec::new();
+    let mut items = Vec::new();
+    for law in &model.laws {
+        let span = law.g.span();
+        let (s, rate) = (law.mode(), format_ident!("{}{}_rate", law.name, MODE));
+        let (name, g) = (&law.name, &law.g);
+        let row = written(span, quote_spanned!(span=> (1.0 - #s * #s) * (#g) + #s * #s * #rate));
+        let engage = written(span, quote_spanned!(span=> #s * (#g) + (1.0 - #s * #s)));
+        let (engage_name, engage_code, release_name, release_code, release) = match law.kind {
+            LawKind::Friction => {
+                let bound = law.stiction.as_ref().or(law.kinetic.as_ref()).expect("parsed with its force");
+                let release = written(
+                    span,
+                    quote_spanned!(span=> (1.0 - #s * #s) * ((#bound) - #name.abs()) + #s * #s),
+                );
+                ("stops", STOPS, "slips", SLIPS, release)
+            }
+            LawKind::Diode => {
+                let release = written(span, quote_spanned!(span=> (1.0 - #s * #s) * #name + #s * #s));
+                ("conducts", CONDUCTS, "blocks", BLOCKS, release)
+            }
+            LawKind::Switch => {
+                let c = law.closed.as_ref().expect("parsed with its control");
+                let release = written(span, quote_spanned!(span=> (1.0 - #s * #s) * (#c) + #s * #s));
+                ("closes", CLOSES, "opens", OPENS, release)
+            }
+        };
+        // A switch engages where its control rises through zero, not where `g` does.
+        let engage = match (law.kind, &law.closed) {
+            (LawKind::Switch, Some(c)) => {
+                written(span, quote_spanned!(span=> #s * (0.0 - (#c)) + (1.0 - #s * #s)))
+            }
+            _ => engage,
+        };
+        items.push((
+            CoordinateDecl { name: s, velocity: rate.clone() },
+            ConstraintDecl {
+                kind: ConstraintKind::Velocity,
+                key: name.clone(),
+                name: Some(name.clone()),
+                expr: row,
+            },
+            [
+                EventDecl {
+                    name: format_ident!("{}_{}", name, engage_name),
+                    direction: engage_code,
+                    expr: engage,
+                },
+                EventDecl {
+                    name: format_ident!("{}_{}", name, release_name),
+                    direction: release_code,
+                    expr: release,
+                },
+            ],
+        ));
+        rates.push(rate);
+    }
+    for (coordinate, row, events) in items {
+        model.coordinates.push(coordinate);
+        model.constraints.push(row);
+        model.events.extend(events);
+    }
+    if let Some((_, lagrangian)) = &mut model.lagrangian {
+        let span = lagrangian.span();
+        let l = &*lagrangian;
+        *lagrangian = written(span, quote_spanned!(span=> (#l) #(+ 0.5 * #rates * #rates)*));
+    } else if !model.incomplete {
+        cx.error_spanned_by(
+            &model.laws[0].name,
+            "a model with a friction law or a diode needs a `lagrangian`",
+        );
+    }
+}
+
+/// The expression the derive wrote.
+fn written(span: Span, tokens: proc_macro2::TokenStream) -> Expr {
+    syn::parse2(tokens).unwrap_or_else(|e| Expr::Verbatim(syn::Error::new(span, e).to_compile_error()))
+}

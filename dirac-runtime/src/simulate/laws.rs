@@ -1,0 +1,224 @@
+//! The set-valued laws a model declares, Coulomb friction with stiction (`friction(c, kinetic =
+//! f, stiction = f_s) = g`) and the ideal diode (`diode(c) = g`), switched between their modes
+//! as Filippov's sliding modes are.
+//!
+//! The derive writes law `c` as a row `(1 − s²) g + s² ṡ = 0` on a coordinate `s = c_mode`
+//! that holds the mode: 0 engaged (stuck, conducting: the row holds `g = 0` and its multiplier
+//! `λ` is the law's force), ±1 released (slipping to the side of `g`'s sign, or blocking: the
+//! row holds the slack). It also writes two events, found here by their direction codes:
+//!
+//! - **engage** (`c_stops`, `c_conducts`), where `g` reaches zero while released. A diode
+//!   conducts. Friction sticks where the force that holds it, the multiplier of the engaged row
+//!   in the consistent state, stays strictly within `f_s`; otherwise the slip goes on to the
+//!   other side.
+//! - **release** (`c_slips`, `c_blocks`), where the force reaches its bound (`|λ| = f_s`) or the
+//!   current falls to zero: friction slips on the side the force pushed (`s = −sign λ`), so the
+//!   force is continuous; a diode blocks.
+//!
+//! Each switch sets `s` in the state and restarts from the consistent state, so every mode is
+//! smooth and every integrator steps it at its order: no chattering, whatever the tolerance.
+
+use nalgebra::DefaultAllocator;
+
+use crate::analysis::init::{Consistency, project};
+use crate::error::SimError;
+use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS};
+use crate::model::state::State;
+use crate::model::{Hybrid, LagrangeDirac};
+use crate::shape::dims::{Storage, VecQ};
+
+/// One law of a model, by the indices the runtime reads it with.
+#[derive(Clone, Debug)]
+pub(crate) struct Law {
+    /// Which law.
+    pub kind: Kind,
+    /// The coordinate that holds the mode.
+    pub mode: usize,
+    /// The row, whose multiplier is the law's force.
+    pub row: usize,
+    /// The engage and release events among the model's declared ones.
+    pub engage: usize,
+    pub release: usize,
+}
+
+/// The laws, by what decides their switches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Kind {
+    /// Coulomb friction with stiction: released to either side, engaged while its force is
+    /// within its bound.
+    Friction,
+    /// An ideal diode: engaged while its current is not negative.
+    Diode,
+    /// An ideal switch: engaged while its control is positive.
+    Switch,
+}
+
+/// Which switch of which law (its index among the model's laws) an event is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Switch {
+    Engage(usize),
+    Release(usize),
+}
+
+/// The force of an engaged friction law must stay this far inside its bound, relative to the
+/// force, for the law to stick where its slip stops: at the bound it slips on.
+const STRICTLY_WITHIN: f64 = 1e-9;
+
+/// A released law's `g` counts as zero at the start within this share of `1 + |v|`.
+const AT_ZERO: f64 = 1e-9;
+
+/// The laws of `M`, from its declared events (dotted names in a composite: the engage event
+/// `arm.grip_stops` belongs to the law `arm.grip`, whose mode is `arm.grip_mode`).
+pub(crate) fn laws<M: LagrangeDirac>() -> Vec<Law>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let declared = M::NAMES.event_declarations();
+    let (coordinates, rows) = (M::NAMES.coordinate_names(), M::NAMES.constraint_names());
+    let mut out = Vec::new();
+    for (engage, (name, code)) in declared.iter().enumerate() {
+        let (kind, engaged, released, release_code) = match *code {
+            STOPS => (Kind::Friction, "_stops", "_slips", SLIPS),
+            CONDUCTS => (Kind::Diode, "_conducts", "_blocks", BLOCKS),
+            CLOSES => (Kind::Switch, "_closes", "_opens", OPENS),
+            _ => continue,
+        };
+        let Some(law) = name.strip_suffix(engaged) else { continue };
+        let release =
+            declared.iter().position(|(n, c)| *c == release_code && *n == format!("{law}{released}"));
+        let mode = coordinates.iter().position(|c| *c == format!("{law}_mode"));
+        let row = rows.iter().position(|r| r == law);
+        if let (Some(release), Some(mode), Some(row)) = (release, mode, row) {
+            out.push(Law { kind, mode, row, engage, release });
+        }
+    }
+    out
+}
+
+/// The names of `M`'s laws.
+pub(crate) fn law_names<M: LagrangeDirac>() -> Vec<String>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let rows = M::NAMES.constraint_names();
+    laws::<M>().iter().map(|law| rows[law.row].clone()).collect()
+}
+
+/// Whether `M` declares a friction law or an ideal diode.
+pub fn has_laws<M: LagrangeDirac>() -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    M::NAMES.event_declarations().iter().any(|&(_, code)| matches!(code, STOPS | CONDUCTS | CLOSES))
+}
+
+/// Switches `law` at an event at `t`, in `state` (the state there): sets its mode and leaves
+/// `state` consistent in it. `values` holds the model's declared event functions.
+pub(crate) fn switch<M: Hybrid>(
+    model: &M,
+    law: &Law,
+    engage: bool,
+    t: f64,
+    state: &mut State<M>,
+    values: &mut [f64],
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let side = state.q[law.mode];
+    // The slack rests in either mode: its row holds it released, and engaged nothing moves it.
+    state.v[law.mode] = 0.0;
+    if !engage {
+        let force = state.lambda[law.row];
+        state.q[law.mode] = if law.kind == Kind::Friction && force > 0.0 { -1.0 } else { 1.0 };
+        return consistent(model, t, state);
+    }
+    let located = state.q[law.mode];
+    state.q[law.mode] = 0.0;
+    let stuck = project(model, t, &state.q, &state.v, Consistency::default())?;
+    if law.kind == Kind::Friction && !holds(model, law, t, &stuck, values) {
+        // Held, the force would exceed the bound: the slip goes on, to the other side.
+        state.q[law.mode] = if located == 0.0 { side } else { -located };
+        return consistent(model, t, state);
+    }
+    *state = stuck;
+    Ok(())
+}
+
+/// Whether engaged `law` holds in the consistent `state`: its force strictly within its bound
+/// (friction), its current not negative (diode); a closed switch holds.
+fn holds<M: Hybrid>(model: &M, law: &Law, t: f64, state: &State<M>, values: &mut [f64]) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    model.events(t, &state.q, &state.v, &state.lambda, values);
+    let margin = values[law.release];
+    match law.kind {
+        Kind::Friction => margin > STRICTLY_WITHIN * (state.lambda[law.row].abs() + margin.abs()),
+        Kind::Diode => margin >= 0.0,
+        Kind::Switch => true,
+    }
+}
+
+/// `state` made consistent in its modes, as they are.
+fn consistent<M: Hybrid>(model: &M, t: f64, state: &mut State<M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    *state = project(model, t, &state.q, &state.v, Consistency::default())?;
+    Ok(())
+}
+
+/// The consistent state nearest to positions `q` and velocities `v` at `t`, with each law's
+/// mode chosen from them (whatever `q` held for it): released where its `g` is away from zero
+/// (friction slipping to the side of its sign, a diode blocking where it is positive); engaged
+/// where `g` is zero (or a diode's negative) if the law holds there, and otherwise released
+/// (friction slipping the way its force pushed, a diode blocking).
+pub fn consistent_with_laws<M: Hybrid>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    options: Consistency,
+) -> Result<State<M>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let laws = laws::<M>();
+    let (mut q, mut v) = (q.clone(), v.clone());
+    for law in &laws {
+        v[law.mode] = 0.0;
+    }
+    let v = &v;
+    let mut values = vec![0.0; M::NAMES.event_declarations().len()];
+    // Each law's `g` is its engage function with the law released to the positive side.
+    for law in &laws {
+        q[law.mode] = 1.0;
+    }
+    model.events(t, &q, v, &model.sizes().zeros_c::<M>(), &mut values);
+    let at_zero = AT_ZERO * (1.0 + v.amax());
+    let mut tentative = Vec::new();
+    for law in &laws {
+        let g = values[law.engage];
+        q[law.mode] = match (law.kind, g) {
+            (Kind::Friction, g) if g.abs() > at_zero => g.signum(),
+            (Kind::Diode, g) if g > at_zero => 1.0,
+            // A switch's engage function released is minus its control: open unless positive.
+            (Kind::Switch, g) if g >= 0.0 => 1.0,
+            (Kind::Switch, _) => 0.0,
+            _ => {
+                tentative.push(law);
+                0.0
+            }
+        };
+    }
+    let state = project(model, t, &q, v, options)?;
+    let mut released = false;
+    for law in tentative {
+        if !holds(model, law, t, &state, &mut values) {
+            q[law.mode] = if law.kind == Kind::Friction && state.lambda[law.row] > 0.0 { -1.0 } else { 1.0 };
+            released = true;
+        }
+    }
+    if released { project(model, t, &q, v, options) } else { Ok(state) }
+}
