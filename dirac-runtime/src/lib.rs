@@ -117,7 +117,7 @@ pub mod __private {
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
     pub use crate::simulate::events::{Events, SolveWithEvents};
     pub use crate::simulate::integrator::Integrator;
-    pub use crate::simulate::laws::{consistent_with_laws, has_laws};
+    pub use crate::simulate::laws::{consistent_with_laws, has_laws, law_names};
     pub use crate::simulate::solution::{Sampling, Solution};
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;

@@ -243,6 +243,13 @@ where
     /// `fmi3ExitInitializationMode`.
     pub fn exit_initialization(&mut self) -> Result<(), Failure> {
         self.expect(&[Phase::Initialization], "ExitInitializationMode")?;
+        // Its steps locate no events, so a law's mode would never switch.
+        if crate::__private::has_laws::<M>() {
+            return Err(Failure::error(
+                "the model has friction laws, diodes or switches (`friction`, `diode`, `switch`), whose modes \
+                 switch at events that the FMU's steps do not locate: export a model without them",
+            ));
+        }
         // The integrator is built at the first step: refuse a tolerance it would refuse now.
         self.options().validate().map_err(|e| Failure::error(e.to_string()))?;
         self.initial_state()?;

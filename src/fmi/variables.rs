@@ -182,6 +182,12 @@ pub enum DescriptionError {
          it would pass through them; export the model without them"
     )]
     Unilateral(String),
+    /// The model has laws that switch their modes at events, which an FMU's steps would not.
+    #[error(
+        "the model has friction laws, diodes or switches ({0}), whose modes switch at events that an FMU's \
+         steps do not locate, so each would hold one mode throughout; export the model without them"
+    )]
+    Laws(String),
     /// The model has more variables than 32-bit value references can number.
     #[error("the model has {0} variables, more than FMI's 32-bit value references can number")]
     TooManyVariables(usize),
@@ -274,6 +280,9 @@ where
     let unilaterals = model.unilateral_names();
     if !unilaterals.is_empty() {
         return Err(DescriptionError::Unilateral(unilaterals.join(", ")));
+    }
+    if crate::__private::has_laws::<M>() {
+        return Err(DescriptionError::Laws(crate::__private::law_names::<M>().join(", ")));
     }
     let table = Table::of(model);
     if u32::try_from(table.len()).is_err() {

@@ -373,6 +373,27 @@ fn a_model_with_unilateral_constraints_is_refused() {
     assert!(dirac::fmi::write_fmu::<BouncingBall>(Path::new("unused.so"), &out, Version::Fmi3).is_err());
 }
 
+impl Export for crate::zoo::FrictionBelt {
+    const MODEL_IDENTIFIER: &'static str = "belt";
+    fn instantiate() -> Self {
+        crate::zoo::FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 }
+    }
+}
+
+/// An FMU's steps locate no events, so a friction law in one would never switch: its
+/// description is refused, naming the law, and so is an instance's initialisation.
+#[test]
+fn a_model_with_laws_is_refused() {
+    use crate::zoo::FrictionBelt;
+    let refused = dirac::fmi::model_description(&FrictionBelt::instantiate());
+    let message = refused.expect_err("a friction law an FMU would not switch").to_string();
+    assert!(message.contains("switches (grip)"), "{message}");
+    let mut fmu = dirac::fmi::Instance::<FrictionBelt>::new();
+    fmu.enter_initialization(Some(1e-8), 0.0, None).expect("initialisation");
+    let failure = fmu.exit_initialization().expect_err("refused");
+    assert!(failure.message.contains("`friction`"), "{}", failure.message);
+}
+
 /// The 60-cell LC ladder, an array of subsystems stored sparse, as an FMU: flux 1 at the
 /// first cell's node, the others at rest.
 impl Export for crate::zoo::Ladder {

@@ -96,7 +96,7 @@ where
 }
 
 /// The names of `M`'s laws.
-pub(crate) fn law_names<M: LagrangeDirac>() -> Vec<String>
+pub fn law_names<M: LagrangeDirac>() -> Vec<String>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -125,7 +125,6 @@ pub(crate) fn switch<M: Hybrid>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let side = state.q[law.mode];
     // The slack rests in either mode: its row holds it released, and engaged nothing moves it.
     state.v[law.mode] = 0.0;
     if !engage {
@@ -138,7 +137,7 @@ where
     let stuck = project(model, t, &state.q, &state.v, Consistency::default())?;
     if law.kind == Kind::Friction && !holds(model, law, t, &stuck, values) {
         // Held, the force would exceed the bound: the slip goes on, to the other side.
-        state.q[law.mode] = if located == 0.0 { side } else { -located };
+        state.q[law.mode] = -located;
         return consistent(model, t, state);
     }
     *state = stuck;
