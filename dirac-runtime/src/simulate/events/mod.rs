@@ -82,8 +82,8 @@ where
     /// Whether each function is a switching surface of the model, where the integration
     /// restarts.
     pub(crate) switch_of: Vec<bool>,
-    /// Whether each function is sampled within each step (switching surfaces, and the laws'
-    /// engage functions, which read the motion alone), for a crossing and crossing back.
+    /// Whether each function is sampled within each step (switching surfaces, and the ideal
+    /// switches' functions of their controls), for a crossing and crossing back.
     pub(crate) sampled: Vec<bool>,
     /// The largest magnitude each function has had at the points examined: the scale against
     /// which a switching function counts as zero where a step fails.
@@ -300,7 +300,13 @@ where
                     .then_some(Switch::Engage(l))
                     .or((law.release == j).then_some(Switch::Release(l)))
             });
-            self.sampled[k] |= matches!(self.law_of[k], Some(Switch::Engage(_)));
+            // A switch's control may come and go within a step that the motion does not limit
+            // (a capacitor long charged, an open circuit at rest), and its functions read the
+            // control alone. Friction's and a diode's follow the motion, which the steps resolve.
+            self.sampled[k] |= self.law_of[k].is_some_and(|switch| {
+                let (Switch::Engage(l) | Switch::Release(l)) = switch;
+                self.laws[l].kind == laws::Kind::Switch
+            });
         }
         self
     }

@@ -33,6 +33,8 @@ where
     before: Option<f64>,
     /// The impulse of the event's contact, when the event is an impact.
     impulse: Option<f64>,
+    /// Whether the action asked for the state or the model to change.
+    touched: bool,
 }
 
 impl<'a, M: LagrangeDirac, I: Integrator<M>> EventContext<'a, M, I>
@@ -40,7 +42,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     pub(crate) fn new(t: f64, state: &'a mut State<M>, integrator: &'a mut I) -> Self {
-        EventContext { t, state, integrator, reset: false, before: None, impulse: None }
+        EventContext { t, state, integrator, reset: false, before: None, impulse: None, touched: false }
     }
 
     /// The impulse `Λ ≥ 0` the impact law gave the event's contact, when the event is a
@@ -65,6 +67,7 @@ where
     /// not read).
     pub fn state_mut(&mut self) -> &mut State<M> {
         self.reset = true;
+        self.touched = true;
         self.state
     }
 
@@ -77,6 +80,7 @@ where
     /// event. A change that moves a constraint off the state is refused with
     /// [`SimError::ConstraintMoved`] unless the state is reset too.
     pub fn model_mut(&mut self) -> Result<&mut M, SimError> {
+        self.touched = true;
         if self.before.is_none() {
             self.before = Some(constraint_violation(self.integrator.model(), self.t, self.state));
         }
@@ -215,12 +219,16 @@ where
                     switched |= close(self, j, false);
                 }
                 // A law switches its mode: the state is made consistent in the new one.
-                switched |= events.switch_law(self.model(), event.index, t, &mut after)?;
+                let law = events.switch_law(self.model(), event.index, t, &mut after)?;
+                // Consistent already, unless an impact or a contact changed it too.
+                let consistent = law && !switched && reopened.is_empty();
+                switched |= law;
                 let mut context = EventContext::new(t, &mut after, self);
                 context.impulse = impulse;
                 context.reset = !reopened.is_empty() || switched;
                 let flow = action(&event, &mut context);
                 let (reset, before) = context.changes();
+                let context_touched = context.touched;
                 if flow.is_break() {
                     return recorder.finish(self.stats());
                 }
@@ -244,7 +252,11 @@ where
                     if let (false, Some(before)) = (reset, before) {
                         check_constraints_kept(self.model(), t, &after, before)?;
                     }
-                    restart_from(self, events, &mut recorder, t, &after)?;
+                    if consistent && !context_touched {
+                        restart_consistent(self, events, &mut recorder, t, &after)?;
+                    } else {
+                        restart_from(self, events, &mut recorder, t, &after)?;
+                    }
                     events.reopen(&reopened);
                     restarted = true;
                     break;
@@ -349,8 +361,23 @@ where
     DefaultAllocator: Storage<M>,
 {
     let consistent = project(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
-    integrator.restart_at(t, &consistent)?;
-    events.resume(integrator.model(), t, &consistent)?;
-    recorder.record_reset(integrator.model(), t, &consistent);
+    restart_consistent(integrator, events, recorder, t, &consistent)
+}
+
+/// Restarts the integration at `t` from `state`, consistent already, watching on from there
+/// and recording it.
+fn restart_consistent<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    t: f64,
+    state: &State<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    integrator.restart_at(t, state)?;
+    events.resume(integrator.model(), t, state)?;
+    recorder.record_reset(integrator.model(), t, state);
     Ok(())
 }
