@@ -148,13 +148,13 @@ fn main() {
         consistent_state(&hand, 0.0, &VecQ::<ByHand>::zeros(), &v0, Consistency::default()).expect("stuck");
 
     let tolerances = RadauOptions::tolerances(1e-8, 1e-10);
-    let mut radau_law = Radau::new(&with_law, tolerances.clone()).expect("valid");
+    let mut radau_law = Radau::new(&with_law, tolerances).expect("valid");
     let mut radau_hand = Radau::new(&mut hand, tolerances).expect("valid");
     compare("Radau", || run_law(&mut radau_law, &law_start), || run_by_hand(&mut radau_hand, &hand_start));
     drop(radau_hand);
 
     let tolerances = ExplicitOptions::tolerances(1e-8, 1e-10);
-    let mut explicit_law = Explicit::new(&with_law, tolerances.clone()).expect("valid");
+    let mut explicit_law = Explicit::new(&with_law, tolerances).expect("valid");
     let mut explicit_hand = Explicit::new(&mut hand, tolerances).expect("valid");
     compare(
         "Explicit",
