@@ -52,7 +52,7 @@ pub trait Named {
     /// Whether the model or a subsystem has switching surfaces (non-smooth functions or
     /// conditionals in its Lagrangian, forces or constraints), which every solve locates.
     fn has_switches(&self) -> bool {
-        Self::NAMES.event_declarations().iter().any(|(_, d)| *d == crate::model::names::SWITCH)
+        Self::NAMES.any_event(&|d| d == crate::model::names::SWITCH)
     }
 
     /// The full dotted name of every parameter, the model's `f64` fields (`left.k` in a

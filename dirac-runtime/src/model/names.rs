@@ -472,6 +472,12 @@ impl Names {
         self.subsystems.iter().find(|s| s.field == field)?.names.surface(rest)
     }
 
+    /// Whether the model or a subsystem declares an event whose direction code passes
+    /// `test`, without building names.
+    pub fn any_event(&self, test: &dyn Fn(i8) -> bool) -> bool {
+        self.events.iter().any(|&(_, d)| test(d)) || self.subsystems.iter().any(|s| s.names.any_event(test))
+    }
+
     fn collect_events(&self, prefix: &str, out: &mut Vec<(String, i8)>) {
         for sub in self.subsystems {
             sub.names.collect_events(&format!("{prefix}{}.", sub.field), out);

@@ -109,7 +109,7 @@ pub fn has_laws<M: LagrangeDirac>() -> bool
 where
     DefaultAllocator: Storage<M>,
 {
-    M::NAMES.event_declarations().iter().any(|&(_, code)| matches!(code, STOPS | CONDUCTS | CLOSES))
+    M::NAMES.any_event(&|code| matches!(code, STOPS | CONDUCTS | CLOSES))
 }
 
 /// Switches `law` at an event at `t`, in `state` (the state there): sets its mode and leaves

@@ -292,6 +292,9 @@ where
     /// Marks the watched functions that switch one of the model's laws (`friction`, `diode`),
     /// which [`SolveWithEvents::solve_with_events`] then switches at their events.
     fn watch_laws(mut self) -> Self {
+        if !laws::has_laws::<M>() {
+            return self;
+        }
         self.laws = laws::laws::<M>();
         for (k, declared) in self.declared_of.iter().enumerate() {
             let Some(j) = *declared else { continue };
