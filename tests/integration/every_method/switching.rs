@@ -805,3 +805,35 @@ fn a_law_inside_an_interconnection_switches_by_its_dotted_name() {
         );
     });
 }
+
+/// `consistent_state` chooses each law's mode from the state, whatever `grip_mode` holds: on
+/// the belt's speed with the spring's pull within `μs N` (x = 0.5: `k x` = 2 against 3.92) the
+/// mass sticks, and the row's multiplier is the force that holds it (`k x`, by the momentum
+/// balance `0 = −k x + λ`); beyond it (x = 1.5: 6 N) it slips, backwards relative to the belt,
+/// the way the spring pulls it; off the belt's speed it slips to the side of `v − vb`.
+#[test]
+fn the_start_chooses_each_laws_mode() {
+    let belt = Belt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    for (x, v, mode) in [(0.5, 0.5, 0.0), (1.5, 0.5, -1.0), (0.0, 0.7, 1.0), (0.0, 0.2, -1.0)] {
+        for held in [0.0, 1.0, -1.0] {
+            let mut q = VecQ::<Belt>::zeros();
+            q[0] = x;
+            q[1] = held;
+            let mut velocities = VecQ::<Belt>::zeros();
+            velocities[0] = v;
+            let state =
+                consistent_state(&belt, 0.0, &q, &velocities, Consistency::default()).expect("consistent");
+            assert_eq!(state.q(Belt::GRIP_MODE), mode, "x = {x}, v = {v}, held {held}");
+            assert_eq!(state.v(Belt::X), v, "the velocity is kept: x = {x}, v = {v}");
+            if mode == 0.0 {
+                assert!(
+                    (state.lambda(Belt::GRIP) - belt.k * x).abs() < 1e-12,
+                    "{}",
+                    state.lambda(Belt::GRIP)
+                );
+            } else {
+                assert_eq!(state.lambda(Belt::GRIP), 0.0, "slipping, the row holds the slack");
+            }
+        }
+    }
+}
