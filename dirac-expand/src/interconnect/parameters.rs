@@ -82,8 +82,10 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
                 &#p::gather_c::<#ty, Self>(lambda, &#slot),
                 &mut each,
             );
-            for j in 0..COUNT {
-                let (o, out) = (&each[j], &mut out[start + j]);
+            // Over the array, not `0..COUNT`: a subsystem without parameters would make that
+            // range empty, which lints flag in the user's crate.
+            for (j, o) in ::core::iter::Iterator::enumerate(each.iter()) {
+                let out = &mut out[start + j];
                 out.momentum_rate.fill(0.0);
                 out.dl_dv.fill(0.0);
                 out.constraint_velocity.fill(0.0);

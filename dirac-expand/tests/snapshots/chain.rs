@@ -2002,8 +2002,8 @@ const _: () = {
                     &::dirac::__private::gather_c::<Primitive1, Self>(lambda, &__SLOT0),
                     &mut each,
                 );
-                for j in 0..COUNT {
-                    let (o, out) = (&each[j], &mut out[start + j]);
+                for (j, o) in ::core::iter::Iterator::enumerate(each.iter()) {
+                    let out = &mut out[start + j];
                     out.momentum_rate.fill(0.0);
                     out.dl_dv.fill(0.0);
                     out.constraint_velocity.fill(0.0);
@@ -2037,8 +2037,8 @@ const _: () = {
                     &::dirac::__private::gather_c::<Primitive2, Self>(lambda, &__SLOT1),
                     &mut each,
                 );
-                for j in 0..COUNT {
-                    let (o, out) = (&each[j], &mut out[start + j]);
+                for (j, o) in ::core::iter::Iterator::enumerate(each.iter()) {
+                    let out = &mut out[start + j];
                     out.momentum_rate.fill(0.0);
                     out.dl_dv.fill(0.0);
                     out.constraint_velocity.fill(0.0);

@@ -92,5 +92,6 @@ mod contacts;
 mod dissipation;
 mod events;
 mod inputs;
+mod parts;
 mod sensitivities;
 mod switching;
