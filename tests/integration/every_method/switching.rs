@@ -837,3 +837,19 @@ fn the_start_chooses_each_laws_mode() {
         }
     }
 }
+
+/// A friction law with a NaN coefficient is refused by name before anything is evaluated, by
+/// `consistent_state` and by every integrator's plain `solve`.
+#[test]
+fn a_friction_law_with_a_nan_coefficient_is_refused() {
+    let belt = Belt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: f64::NAN, mu_k: 0.25 };
+    let zero = VecQ::<Belt>::zeros();
+    let error = consistent_state(&belt, 0.0, &zero, &zero, Consistency::default()).expect_err("NaN");
+    assert!(error.to_string().contains("mu_s"), "{error}");
+    each_integrator!(&belt, Fineness::new(1e-8, 1e-10, 1e-3), |method, integrator| {
+        match integrator.solve(0.0, &State::<Belt>::zeros(), 1.0, &Sampling::Steps) {
+            Err(error) => assert!(error.to_string().contains("mu_s"), "{method:?}: {error}"),
+            Ok(_) => panic!("{method:?}: a NaN coefficient integrated"),
+        }
+    });
+}
