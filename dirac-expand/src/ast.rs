@@ -10,7 +10,8 @@ use crate::ctxt::Ctxt;
 use crate::laws::{self, LawDecl, LawKind};
 use crate::symbol::{
     CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FORCE, FRICTION, HOLONOMIC,
-    INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, OUTPUT, PORT, PORTS, RESTITUTION, SWITCH, UNILATERAL, UNIT,
+    INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, OUTPUT, PORT, PORTS, POSITIVE, RESTITUTION, SWITCH,
+    UNILATERAL, UNIT,
 };
 
 /// A model as written by the user.
@@ -43,6 +44,9 @@ pub struct Model<'a> {
     /// `__contacts(a, ...)`, written by the derive on the companion it makes of a model with
     /// unilateral constraints: the field that closes each contact, in their order.
     pub switches: Vec<Ident>,
+    /// `positive(r, ...)` and `nonnegative(d, ...)`: each parameter named with its requirement,
+    /// in the order written.
+    pub requirements: Vec<(Ident, Requirement)>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
     /// The struct's doc comment.
@@ -54,6 +58,25 @@ pub struct Model<'a> {
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
     /// the rules that would only report consequences of the syntax error.
     pub incomplete: bool,
+}
+
+/// What a parameter's value must be, besides finite.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Requirement {
+    /// `positive(r)`: greater than zero.
+    Positive,
+    /// `nonnegative(d)`: zero or more.
+    Nonnegative,
+}
+
+impl Requirement {
+    /// The requirement as the error names it.
+    pub fn text(self) -> &'static str {
+        match self {
+            Requirement::Positive => "positive",
+            Requirement::Nonnegative => "non-negative",
+        }
+    }
 }
 
 /// `x => v`: a coordinate and the name of its velocity.
@@ -136,6 +159,7 @@ impl<'a> Model<'a> {
             forces: Vec::new(),
             dissipation: None,
             defines: Vec::new(),
+            requirements: Vec::new(),
             large: false,
             doc: doc_comment(&input.attrs),
             param_docs: Vec::new(),
@@ -293,6 +317,14 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 model.inputs.extend(names.iter().map(IdentExt::unraw));
             }
             LARGE => model.large = true,
+            POSITIVE | NONNEGATIVE => {
+                let requirement =
+                    if key == POSITIVE { Requirement::Positive } else { Requirement::Nonnegative };
+                let content;
+                syn::parenthesized!(content in input);
+                let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                model.requirements.extend(names.iter().map(|n| (n.unraw(), requirement)));
+            }
             DEFINE | OUTPUT => {
                 let content;
                 syn::parenthesized!(content in input);

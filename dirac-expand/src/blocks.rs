@@ -67,11 +67,16 @@ pub struct Blocks {
     pub dpdot_du: Matrix,
     /// `∂(∂L/∂v)/∂u`, `n × n_u`: nonzero when an input enters the momenta.
     pub l_vu: Matrix,
+    /// `∂(A v + b)/∂u`, `m × n_u`: nonzero when an input prescribes a motion (a voltage source's
+    /// voltage, a speed source's speed).
+    pub av_du: Matrix,
     /// The outputs `y` and `∂y/∂q`, `∂y/∂v`, `∂y/∂u`.
     pub outputs: Vec<Id>,
     pub output_dq: Matrix,
     pub output_dv: Matrix,
     pub output_du: Matrix,
+    /// `∂y/∂λ`: outputs that read multipliers.
+    pub output_dlambda: Matrix,
     /// The unilateral constraints `φ_u(q, t)`, their rows `∂φ_u/∂q` and restitutions.
     pub unilateral: Vec<Id>,
     pub unilateral_dq: Matrix,
@@ -173,9 +178,11 @@ impl Blocks {
         let inputs = m.inputs.clone();
         let dpdot_du = jacobian(g, &momentum_rate, &inputs);
         let l_vu = jacobian(g, &dl_dv, &inputs);
+        let av_du = jacobian(g, &a_v, &inputs);
         let outputs: Vec<Id> = m.outputs.iter().map(|(_, id)| *id).collect();
         let (output_dq, output_dv, output_du) =
             (jacobian(g, &outputs, &q), jacobian(g, &outputs, &v), jacobian(g, &outputs, &inputs));
+        let output_dlambda = jacobian(g, &outputs, &lambda);
         let dav_dt = a_v.iter().map(|&c| g.diff(c, time)).collect();
         let unilateral: Vec<Id> = m.unilaterals.iter().map(|u| u.phi).collect();
         let unilateral_dq = jacobian(g, &unilateral, &q);
@@ -223,10 +230,12 @@ impl Blocks {
             dl_dt,
             dpdot_du,
             l_vu,
+            av_du,
             outputs,
             output_dq,
             output_dv,
             output_du,
+            output_dlambda,
             unilateral,
             unilateral_dq,
             restitution,

@@ -18,6 +18,7 @@ pub fn check(cx: &Ctxt, model: &Model<'_>) {
     check_ports(cx, model);
     check_forces(cx, model);
     check_units(cx, model);
+    check_requirements(cx, model);
     check_inputs(cx, model);
 }
 
@@ -120,6 +121,27 @@ fn check_units(cx: &Ctxt, model: &Model<'_>) {
             );
         } else if !seen.insert(name.clone()) {
             cx.error_spanned_by(ident, format!("`{name}` is given a unit twice"));
+        }
+    }
+}
+
+/// `positive(...)` and `nonnegative(...)` name parameters, each once.
+fn check_requirements(cx: &Ctxt, model: &Model<'_>) {
+    let params: Vec<String> = model.params.iter().map(ToString::to_string).collect();
+    let mut seen = HashSet::new();
+    for (ident, requirement) in &model.requirements {
+        let name = ident.to_string();
+        if !params.contains(&name) {
+            let hint = did_you_mean(&name, params.iter().map(String::as_str));
+            cx.error_spanned_by(
+                ident,
+                format!(
+                    "`{name}` is required {} but is no parameter of this model (an `f64` field){hint}",
+                    requirement.text()
+                ),
+            );
+        } else if !seen.insert(name.clone()) {
+            cx.error_spanned_by(ident, format!("`{name}` is given a requirement twice"));
         }
     }
 }

@@ -49,10 +49,17 @@ pub fn companion(input: &DeriveInput, model: &Model<'_>) -> Option<syn::Result<(
          coordinate `c_slack` that the row holds at zero while the contact is open. Made by \
          `{ident}::with_contacts`."
     );
+    // Each field documented, so that a public model's companion passes `missing_docs`.
+    let param_docs = params.iter().map(|p| {
+        let found = model.param_docs.iter().find(|(name, _)| name == p).map(|(_, doc)| doc.clone());
+        found.unwrap_or_else(|| format!("The parameter `{p}` of `{ident}`."))
+    });
+    let closed_docs =
+        contacts.iter().map(|c| format!("1 while the contact `{c}` is closed, 0 while it is open."));
     let definition = quote! {
         #vis struct #name {
-            #(#vis #params: f64,)*
-            #(#vis #closed: f64,)*
+            #(#[doc = #param_docs] #vis #params: f64,)*
+            #(#[doc = #closed_docs] #vis #closed: f64,)*
         }
     };
     // The derive runs on the definition with its attributes; the definition is emitted

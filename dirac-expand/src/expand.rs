@@ -207,7 +207,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let constants = inherent_constants(model, names);
     let named = named(&sym, ident, model);
     let inputs = input_methods(&model.inputs);
-    let parameters = non_finite_parameter(&sym.params);
+    let parameters = invalid_parameter(&sym.params, &model.requirements);
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     let switches = crate::contacts::switch_methods(model, &sym);
     quote! {
@@ -286,19 +286,37 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     }
 }
 
-/// `fn non_finite_parameter`: the first `f64` field that is NaN or infinite.
-fn non_finite_parameter(params: &[syn::Ident]) -> TokenStream {
-    let checks = params.iter().map(|field| {
+/// `fn invalid_parameter`: the first `f64` field that is NaN or infinite, then the first that
+/// breaks its `positive` or `nonnegative` requirement.
+fn invalid_parameter(
+    params: &[syn::Ident],
+    requirements: &[(syn::Ident, crate::ast::Requirement)],
+) -> TokenStream {
+    let finite = params.iter().map(|field| {
         let name = syn::ext::IdentExt::unraw(field).to_string();
         quote! {
             if !self.#field.is_finite() {
-                return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
+                return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field, "finite"));
+            }
+        }
+    });
+    let required = requirements.iter().map(|(field, requirement)| {
+        let name = field.to_string();
+        let text = requirement.text();
+        let holds = match requirement {
+            crate::ast::Requirement::Positive => quote! { self.#field > 0.0 },
+            crate::ast::Requirement::Nonnegative => quote! { self.#field >= 0.0 },
+        };
+        quote! {
+            if !(#holds) {
+                return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field, #text));
             }
         }
     });
     quote! {
-        fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
-            #(#checks)*
+        fn invalid_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64, &'static ::core::primitive::str)> {
+            #(#finite)*
+            #(#required)*
             ::core::option::Option::None
         }
     }

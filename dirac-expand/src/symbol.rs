@@ -58,6 +58,10 @@ pub const SWITCH: &str = "switch";
 pub const CLOSED: &str = "closed";
 /// The suffix of the coordinate that holds a law's mode.
 pub const MODE: &str = "_mode";
+/// `positive(r, ...)`: parameters that must be greater than zero.
+pub const POSITIVE: &str = "positive";
+/// `nonnegative(d, ...)`: parameters that must not be negative.
+pub const NONNEGATIVE: &str = "nonnegative";
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
@@ -79,6 +83,8 @@ pub const MODEL_KEYS: &[&str] = &[
     DIODE,
     SWITCH,
     UNIT,
+    POSITIVE,
+    NONNEGATIVE,
     LARGE,
 ];
 

@@ -20,13 +20,16 @@ pub enum SimError {
         /// What is wrong with it.
         reason: String,
     },
-    /// A parameter of the model is NaN or infinite.
-    #[error("parameter `{name}` is {value}: a model's parameters must be finite")]
+    /// A parameter of the model is NaN or infinite, or breaks its model's requirement (a
+    /// resistance that must be positive).
+    #[error("parameter `{name}` is {value}: it must be {requirement}")]
     InvalidParameter {
         /// The parameter's dotted name, such as `left.m1`.
         name: String,
         /// Its value.
         value: f64,
+        /// What it must be: `"finite"`, `"positive"` or `"non-negative"`.
+        requirement: &'static str,
     },
     /// The sampling asked for is not usable.
     #[error("invalid sampling: {reason}")]

@@ -12,10 +12,10 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use self::signatures::{
-    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU, EVENTS,
-    FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU,
-    L_VV, LAGRANGIAN, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION,
-    Signature, UNILATERAL, UNILATERAL_DQ,
+    AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
+    EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT,
+    L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL,
+    RESIDUAL_BLOCKS, RESTITUTION, Signature, UNILATERAL, UNILATERAL_DQ,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -124,9 +124,11 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
     for (sig, block) in [
         (DPDOT_DU, &b.dpdot_du),
         (L_VU, &b.l_vu),
+        (AV_DU, &b.av_du),
         (OUTPUT_DQ, &b.output_dq),
         (OUTPUT_DV, &b.output_dv),
         (OUTPUT_DU, &b.output_du),
+        (OUTPUT_DLAMBDA, &b.output_dlambda),
     ] {
         if block.iter().any(|row| !row.is_empty()) {
             inputs_outputs.extend(e.sized(&sig, &column_major(block)));

@@ -145,9 +145,11 @@ pub const OUTPUTS: Signature = method("outputs", &[T, Q, V, Lambda], Out::Values
 /// models with inputs or outputs.
 pub const DPDOT_DU: Signature = method("dpdot_du", &[T, Q, V, Lambda], Out::Values);
 pub const L_VU: Signature = method("l_vu", &[T, Q, V], Out::Values);
-pub const OUTPUT_DQ: Signature = method("output_dq", &[T, Q, V], Out::Values);
-pub const OUTPUT_DV: Signature = method("output_dv", &[T, Q, V], Out::Values);
-pub const OUTPUT_DU: Signature = method("output_du", &[T, Q, V], Out::Values);
+pub const AV_DU: Signature = method("av_du", &[T, Q, V], Out::Values);
+pub const OUTPUT_DQ: Signature = method("output_dq", &[T, Q, V, Lambda], Out::Values);
+pub const OUTPUT_DV: Signature = method("output_dv", &[T, Q, V, Lambda], Out::Values);
+pub const OUTPUT_DU: Signature = method("output_du", &[T, Q, V, Lambda], Out::Values);
+pub const OUTPUT_DLAMBDA: Signature = method("output_dlambda", &[T, Q, V, Lambda], Out::Values);
 /// The unilateral constraints `φ_u(q, t) ≥ 0`, their rows `∂φ_u/∂q` (dense, column-major) and
 /// their restitutions; emitted for models that have unilateral constraints.
 pub const UNILATERAL: Signature = method("unilateral", &[T, Q], Out::Values);

@@ -97,9 +97,9 @@ pub fn linearisation_methods(composite: &Composite<'_>) -> TokenStream {
     let specs = [
         ("dpdot_du", true, false, true),
         ("l_vu", false, false, true),
-        ("output_dq", false, true, false),
-        ("output_dv", false, true, false),
-        ("output_du", false, true, true),
+        ("output_dq", true, true, false),
+        ("output_dv", true, true, false),
+        ("output_du", true, true, true),
     ];
     specs
         .iter()
@@ -163,6 +163,107 @@ pub fn linearisation_methods(composite: &Composite<'_>) -> TokenStream {
             }
         })
         .collect()
+}
+
+/// `av_du` of a composite: each subsystem's `∂(A v + b)/∂u` at the composite's rows of its
+/// constraints and its inputs' columns. The interconnection's own rows hold no inputs.
+pub fn av_du_method(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (field, ty) = (&s.ident, &s.ty);
+        let slot = format_ident!("__SLOT{}", i);
+        let col0 = input_offset(composite, i);
+        quote! {{
+            let (rows, cols) = (<#ty as #p::Fixed>::NC, <#ty as #p::Named>::NAMES.input_count());
+            if rows * cols > 0 {
+                let mut block = ::std::vec![0.0; rows * cols];
+                <#ty as #p::InputsOutputs>::av_du(
+                    &self.#field,
+                    t,
+                    &#p::gather_q::<#ty, Self>(q, &#slot),
+                    &#p::gather_q::<#ty, Self>(v, &#slot),
+                    &mut block,
+                );
+                let col0 = #col0;
+                for r in 0..rows {
+                    let row = #slot.row::<#ty>(r);
+                    for c in 0..cols {
+                        out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                    }
+                }
+            }
+        }}
+    });
+    quote! {
+        fn av_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as #p::Fixed>::NC;
+            ::core::assert_eq!(
+                out.len(),
+                total_rows * <Self as #p::Named>::NAMES.input_count(),
+                "av_du: wrong slice length"
+            );
+            out.fill(0.0);
+            #(#parts)*
+        }
+    }
+}
+
+/// `output_dlambda` of a composite: each subsystem's `∂y/∂λ` at its outputs' rows, its columns
+/// scattered to the composite's rows of its constraints (holonomic and velocity rows sit apart).
+/// The interconnection's own rows have no outputs.
+pub fn output_dlambda_method(composite: &Composite<'_>) -> TokenStream {
+    let p = rt();
+    let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (field, ty) = (&s.ident, &s.ty);
+        let slot = format_ident!("__SLOT{}", i);
+        let row0 = output_offset(composite, i);
+        quote! {{
+            let (rows, cols) = (<#ty as #p::Named>::NAMES.output_count(), <#ty as #p::Fixed>::NC);
+            if rows * cols > 0 {
+                let mut block = ::std::vec![0.0; rows * cols];
+                <#ty as #p::InputsOutputs>::output_dlambda(
+                    &self.#field,
+                    t,
+                    &#p::gather_q::<#ty, Self>(q, &#slot),
+                    &#p::gather_q::<#ty, Self>(v, &#slot),
+                    &#p::gather_c::<#ty, Self>(lambda, &#slot),
+                    &mut block,
+                );
+                let row0 = #row0;
+                for c in 0..cols {
+                    let column = #slot.row::<#ty>(c);
+                    for r in 0..rows {
+                        out[row0 + r + column * total_rows] = block[r + c * rows];
+                    }
+                }
+            }
+        }}
+    });
+    quote! {
+        fn output_dlambda(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            lambda: &#p::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as #p::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(),
+                total_rows * <Self as #p::Fixed>::NC,
+                "output_dlambda: wrong slice length"
+            );
+            out.fill(0.0);
+            #(#parts)*
+        }
+    }
 }
 
 /// `outputs` of a composite: each subsystem's outputs at its offset, from its own `q` and `v`.

@@ -33,10 +33,12 @@ pub struct Methods {
 pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> Methods {
     let mut core: TokenStream =
         REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| method(composite, own, sig)).collect();
-    core.extend(non_finite_parameter(composite));
+    core.extend(invalid_parameter(composite));
     core.extend(super::items::output_method(composite));
     let mut inputs_outputs = super::items::input_methods(composite);
     inputs_outputs.extend(super::items::linearisation_methods(composite));
+    inputs_outputs.extend(super::items::output_dlambda_method(composite));
+    inputs_outputs.extend(super::items::av_du_method(composite));
     Methods {
         core,
         inputs_outputs,
@@ -45,23 +47,23 @@ pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> Methods {
     }
 }
 
-/// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's, named
-/// by their dotted paths.
-fn non_finite_parameter(composite: &Composite<'_>) -> TokenStream {
+/// `fn invalid_parameter`: the composite's own `f64` fields, then each subsystem's, named by
+/// their dotted paths.
+fn invalid_parameter(composite: &Composite<'_>) -> TokenStream {
     let own = own_parameter_checks(composite);
     let subsystems = composite.subsystems.iter().map(|s| {
         let field = &s.ident;
         let prefix = format!("{}.", syn::ext::IdentExt::unraw(field));
         quote! {
-            if let ::core::option::Option::Some((name, value)) = self.#field.non_finite_parameter() {
+            if let ::core::option::Option::Some((name, value, requirement)) = self.#field.invalid_parameter() {
                 let mut path = ::std::string::ToString::to_string(#prefix);
                 path.push_str(&name);
-                return ::core::option::Option::Some((path, value));
+                return ::core::option::Option::Some((path, value, requirement));
             }
         }
     });
     quote! {
-        fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        fn invalid_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64, &'static ::core::primitive::str)> {
             #own
             #(#subsystems)*
             ::core::option::Option::None
@@ -79,7 +81,7 @@ pub(super) fn own_parameter_checks(composite: &Composite<'_>) -> TokenStream {
             let name = syn::ext::IdentExt::unraw(field).to_string();
             quote! {
                 if !self.#field.is_finite() {
-                    return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field));
+                    return ::core::option::Option::Some((::std::string::ToString::to_string(#name), self.#field, "finite"));
                 }
             }
         })

@@ -54,19 +54,27 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `slide` of `AllFunctions` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.m.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m"),
                     self.m,
+                    "finite",
                 ));
             }
             if !self.k.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("k"),
                     self.k,
+                    "finite",
                 ));
             }
             ::core::option::Option::None

@@ -1186,24 +1186,30 @@ const _: () = {
                 out[__R1.index] += -lambda[__OMEGA + 0];
             }
         }
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
-            if let ::core::option::Option::Some((name, value)) = self
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
+            if let ::core::option::Option::Some((name, value, requirement)) = self
                 .left
-                .non_finite_parameter()
+                .invalid_parameter()
             {
                 let mut path = ::std::string::ToString::to_string("left.");
                 path.push_str(&name);
-                return ::core::option::Option::Some((path, value));
+                return ::core::option::Option::Some((path, value, requirement));
             }
-            if let ::core::option::Option::Some((name, value)) = self
+            if let ::core::option::Option::Some((name, value, requirement)) = self
                 .right
-                .non_finite_parameter()
+                .invalid_parameter()
             {
                 let mut path = ::std::string::ToString::to_string("right.");
                 path.push_str(&name);
-                return ::core::option::Option::Some((path, value));
+                return ::core::option::Option::Some((path, value, requirement));
             }
             ::core::option::Option::None
         }
@@ -1589,6 +1595,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
@@ -1609,6 +1616,10 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1632,6 +1643,10 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1654,6 +1669,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
@@ -1674,6 +1690,10 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1697,6 +1717,10 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1719,6 +1743,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
@@ -1739,6 +1764,10 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1762,6 +1791,10 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1778,6 +1811,138 @@ const _: () = {
                         ),
                         out,
                     );
+                }
+            }
+        }
+        fn output_dlambda(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NC,
+                "output_dlambda: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive1 as ::dirac::__private::Fixed>::NC,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::output_dlambda(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut block,
+                    );
+                    let row0 = 0;
+                    for c in 0..cols {
+                        let column = __SLOT0.row::<Primitive1>(c);
+                        for r in 0..rows {
+                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                        }
+                    }
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Primitive2 as ::dirac::__private::Fixed>::NC,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::output_dlambda(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut block,
+                    );
+                    let row0 = 0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES
+                            .output_count();
+                    for c in 0..cols {
+                        let column = __SLOT1.row::<Primitive2>(c);
+                        for r in 0..rows {
+                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                        }
+                    }
+                }
+            }
+        }
+        fn av_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Fixed>::NC;
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "av_du: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Primitive1 as ::dirac::__private::Fixed>::NC,
+                    <Primitive1 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Primitive1 as ::dirac::__private::InputsOutputs>::av_du(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
+                    let col0 = 0;
+                    for r in 0..rows {
+                        let row = __SLOT0.row::<Primitive1>(r);
+                        for c in 0..cols {
+                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Primitive2 as ::dirac::__private::Fixed>::NC,
+                    <Primitive2 as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Primitive2 as ::dirac::__private::InputsOutputs>::av_du(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
+                    let col0 = 0
+                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
+                    for r in 0..rows {
+                        let row = __SLOT1.row::<Primitive2>(r);
+                        for c in 0..cols {
+                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }

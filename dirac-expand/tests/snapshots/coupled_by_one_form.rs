@@ -1470,30 +1470,37 @@ const _: () = {
                 out[__R3.index] += -self.c * r2.cos() * lambda[__OMEGA + 0];
             }
         }
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.c.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("c"),
                     self.c,
+                    "finite",
                 ));
             }
-            if let ::core::option::Option::Some((name, value)) = self
+            if let ::core::option::Option::Some((name, value, requirement)) = self
                 .wheel
-                .non_finite_parameter()
+                .invalid_parameter()
             {
                 let mut path = ::std::string::ToString::to_string("wheel.");
                 path.push_str(&name);
-                return ::core::option::Option::Some((path, value));
+                return ::core::option::Option::Some((path, value, requirement));
             }
-            if let ::core::option::Option::Some((name, value)) = self
+            if let ::core::option::Option::Some((name, value, requirement)) = self
                 .cart
-                .non_finite_parameter()
+                .invalid_parameter()
             {
                 let mut path = ::std::string::ToString::to_string("cart.");
                 path.push_str(&name);
-                return ::core::option::Option::Some((path, value));
+                return ::core::option::Option::Some((path, value, requirement));
             }
             ::core::option::Option::None
         }
@@ -1853,6 +1860,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
@@ -1873,6 +1881,7 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1896,6 +1905,7 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1918,6 +1928,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
@@ -1938,6 +1949,7 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1961,6 +1973,7 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -1983,6 +1996,7 @@ const _: () = {
             t: ::core::primitive::f64,
             q: &::dirac::__private::VecQ<Self>,
             v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
             out: &mut [::core::primitive::f64],
         ) {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
@@ -2003,6 +2017,7 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
                         &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -2026,6 +2041,7 @@ const _: () = {
                         t,
                         &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
                         &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
                     ::dirac::__private::place_block(
@@ -2040,6 +2056,131 @@ const _: () = {
                         ),
                         out,
                     );
+                }
+            }
+        }
+        fn output_dlambda(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NC,
+                "output_dlambda: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Wheel as ::dirac::__private::Fixed>::NC,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Wheel as ::dirac::__private::InputsOutputs>::output_dlambda(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut block,
+                    );
+                    let row0 = 0;
+                    for c in 0..cols {
+                        let column = __SLOT0.row::<Wheel>(c);
+                        for r in 0..rows {
+                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                        }
+                    }
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Named>::NAMES.output_count(),
+                    <Cart as ::dirac::__private::Fixed>::NC,
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Cart as ::dirac::__private::InputsOutputs>::output_dlambda(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut block,
+                    );
+                    let row0 = 0
+                        + <Wheel as ::dirac::__private::Named>::NAMES.output_count();
+                    for c in 0..cols {
+                        let column = __SLOT1.row::<Cart>(c);
+                        for r in 0..rows {
+                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                        }
+                    }
+                }
+            }
+        }
+        fn av_du(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let total_rows = <Self as ::dirac::__private::Fixed>::NC;
+            ::core::assert_eq!(
+                out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
+                .input_count(), "av_du: wrong slice length"
+            );
+            out.fill(0.0);
+            {
+                let (rows, cols) = (
+                    <Wheel as ::dirac::__private::Fixed>::NC,
+                    <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Wheel as ::dirac::__private::InputsOutputs>::av_du(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &mut block,
+                    );
+                    let col0 = 0;
+                    for r in 0..rows {
+                        let row = __SLOT0.row::<Wheel>(r);
+                        for c in 0..cols {
+                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
+                }
+            }
+            {
+                let (rows, cols) = (
+                    <Cart as ::dirac::__private::Fixed>::NC,
+                    <Cart as ::dirac::__private::Named>::NAMES.input_count(),
+                );
+                if rows * cols > 0 {
+                    let mut block = ::std::vec![0.0; rows * cols];
+                    <Cart as ::dirac::__private::InputsOutputs>::av_du(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &mut block,
+                    );
+                    let col0 = 0
+                        + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
+                    for r in 0..rows {
+                        let row = __SLOT1.row::<Cart>(r);
+                        for c in 0..cols {
+                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }

@@ -46,37 +46,48 @@ const _: () = {
                 "structurally singular model: the velocity `v` of `DrivenOscillator` is determined by no equation: coordinate `x` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
             ],
         };
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.m.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m"),
                     self.m,
+                    "finite",
                 ));
             }
             if !self.k.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("k"),
                     self.k,
+                    "finite",
                 ));
             }
             if !self.c.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("c"),
                     self.c,
+                    "finite",
                 ));
             }
             if !self.a.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("a"),
                     self.a,
+                    "finite",
                 ));
             }
             if !self.w.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("w"),
                     self.w,
+                    "finite",
                 ));
             }
             ::core::option::Option::None

@@ -48,37 +48,48 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWall` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.m.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m"),
                     self.m,
+                    "finite",
                 ));
             }
             if !self.g.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("g"),
                     self.g,
+                    "finite",
                 ));
             }
             if !self.l.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("l"),
                     self.l,
+                    "finite",
                 ));
             }
             if !self.e.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("e"),
                     self.e,
+                    "finite",
                 ));
             }
             if !self.w.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("w"),
                     self.w,
+                    "finite",
                 ));
             }
             ::core::option::Option::None
@@ -677,11 +688,17 @@ const _: () = {
 #[allow(dead_code)]
 #[derive(Clone, Debug)]
 pub struct PendulumAndWallWithContacts {
+    ///The parameter `m` of `PendulumAndWall`.
     pub m: f64,
+    ///The parameter `g` of `PendulumAndWall`.
     pub g: f64,
+    ///The parameter `l` of `PendulumAndWall`.
     pub l: f64,
+    ///The parameter `e` of `PendulumAndWall`.
     pub e: f64,
+    ///The parameter `w` of `PendulumAndWall`.
     pub w: f64,
+    ///1 while the contact `wall` is closed, 0 while it is open.
     pub wall_closed: f64,
 }
 #[allow(dead_code)]
@@ -723,7 +740,17 @@ const _: () = {
             parameters: &["m", "g", "l", "e", "w", "wall_closed"],
             subsystems: &[],
             doc: "",
-            docs: &[],
+            docs: &[
+                ("m", "The parameter `m` of `PendulumAndWall`."),
+                ("g", "The parameter `g` of `PendulumAndWall`."),
+                ("l", "The parameter `l` of `PendulumAndWall`."),
+                ("e", "The parameter `e` of `PendulumAndWall`."),
+                ("w", "The parameter `w` of `PendulumAndWall`."),
+                (
+                    "wall_closed",
+                    "1 while the contact `wall` is closed, 0 while it is open.",
+                ),
+            ],
             units: &[],
         };
     }
@@ -754,43 +781,55 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `wall_force` of `PendulumAndWallWithContacts` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.m.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m"),
                     self.m,
+                    "finite",
                 ));
             }
             if !self.g.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("g"),
                     self.g,
+                    "finite",
                 ));
             }
             if !self.l.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("l"),
                     self.l,
+                    "finite",
                 ));
             }
             if !self.e.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("e"),
                     self.e,
+                    "finite",
                 ));
             }
             if !self.w.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("w"),
                     self.w,
+                    "finite",
                 ));
             }
             if !self.wall_closed.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("wall_closed"),
                     self.wall_closed,
+                    "finite",
                 ));
             }
             ::core::option::Option::None

@@ -47,31 +47,41 @@ const _: () = {
                 "structurally singular model: the velocity `v2` of `Primitive1` is determined by no equation: coordinate `x2` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
             ],
         };
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.m1.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m1"),
                     self.m1,
+                    "finite",
                 ));
             }
             if !self.m2.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m2"),
                     self.m2,
+                    "finite",
                 ));
             }
             if !self.k1.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("k1"),
                     self.k1,
+                    "finite",
                 ));
             }
             if !self.k2.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("k2"),
                     self.k2,
+                    "finite",
                 ));
             }
             ::core::option::Option::None

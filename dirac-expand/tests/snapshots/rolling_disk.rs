@@ -56,31 +56,41 @@ const _: () = {
                 "structurally singular model: the multiplier of constraint `roll_y` of `RollingDisk` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
             ],
         };
-        fn non_finite_parameter(
+        fn invalid_parameter(
             &self,
-        ) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+        ) -> ::core::option::Option<
+            (
+                ::std::string::String,
+                ::core::primitive::f64,
+                &'static ::core::primitive::str,
+            ),
+        > {
             if !self.m.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("m"),
                     self.m,
+                    "finite",
                 ));
             }
             if !self.r.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("r"),
                     self.r,
+                    "finite",
                 ));
             }
             if !self.i_roll.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("i_roll"),
                     self.i_roll,
+                    "finite",
                 ));
             }
             if !self.i_turn.is_finite() {
                 return ::core::option::Option::Some((
                     ::std::string::ToString::to_string("i_turn"),
                     self.i_turn,
+                    "finite",
                 ));
             }
             ::core::option::Option::None

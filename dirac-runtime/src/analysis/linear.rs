@@ -189,7 +189,7 @@ where
         DMatrix::from_column_slice(rows, cols, &values)
     };
     let (q, v, lambda) = (&state.q, &state.v, &state.lambda);
-    let bu = column_major(n, nu, &|out| model.dpdot_du(t, q, v, lambda, out));
+    let mut bu = column_major(n, nu, &|out| model.dpdot_du(t, q, v, lambda, out));
     let lvu = column_major(n, nu, &|out| model.l_vu(t, q, v, out));
     if lvu.amax() > 0.0 {
         return Err(SimError::InvalidOption {
@@ -200,14 +200,30 @@ where
         });
     }
     let (yq, yv, yu) = (
-        column_major(ny, n, &|out| model.output_dq(t, q, v, out)),
-        column_major(ny, n, &|out| model.output_dv(t, q, v, out)),
-        column_major(ny, nu, &|out| model.output_du(t, q, v, out)),
+        column_major(ny, n, &|out| model.output_dq(t, q, v, lambda, out)),
+        column_major(ny, n, &|out| model.output_dv(t, q, v, lambda, out)),
+        column_major(ny, nu, &|out| model.output_du(t, q, v, lambda, out)),
     );
-    refuse_outputs_of_multipliers(model, t, state)?;
+    let y_lambda = column_major(ny, m, &|out| model.output_dlambda(t, q, v, lambda, out));
     let positions = kernel(&a.rows(0, nh).into_owned(), n, t)?;
     let velocities = kernel(&a, n, t)?;
     let nt = velocities.transpose();
+    // Inputs that prescribe a motion through a constraint (`A δv + E δu = 0`, a voltage
+    // source's voltage): `δv = N δw + V_u δu` with the particular `V_u = −Aᵀ(A Aᵀ)⁻¹ E`, whose
+    // forces `D V_u δu` join the inputs'.
+    let e = column_major(m, nu, &|out| model.av_du(t, q, v, out));
+    let v_u = if e.amax() > 0.0 { -(a.transpose() * gram_inverse(&a) * &e) } else { DMatrix::zeros(n, nu) };
+    if (&nt * &lvv * &v_u).amax() > 1e-12 * (1.0 + lvv.amax()) * (1.0 + v_u.amax()) {
+        return Err(SimError::InvalidOption {
+            what: "linearize",
+            reason:
+                "an input prescribes the velocity of a coordinate with inertia (an ideal source across a \
+                     capacitor, a speed source on a mass): it acts through its rate, which a state-space \
+                     model (A, B, C, D) cannot hold"
+                    .into(),
+        });
+    }
+    bu += (&dv - &lvq) * &v_u;
     let mass = &nt * &lvv * &velocities;
     // The allowed velocities split into those with inertia (`U₁`) and those without (`U₂`,
     // fixed by the forces: `0 = K₂ δz + D₂₁ δw₁ + D₂₂ δw₂ + B₂ δu`), which are eliminated.
@@ -251,13 +267,40 @@ where
     state_matrix.view_mut((nz, 0), (nw, nz)).copy_from(&(&rows * (&stiffness + &damping * &p_z)));
     state_matrix.view_mut((nz, nz), (nw, nw)).copy_from(&(&rows * &damping * &p_w));
     let mut input_matrix = DMatrix::zeros(nz + nw, nu);
-    input_matrix.view_mut((0, 0), (nz, nu)).copy_from(&(&to_positions * &p_u));
+    input_matrix.view_mut((0, 0), (nz, nu)).copy_from(&(&to_positions * &p_u + positions.transpose() * &v_u));
     input_matrix.view_mut((nz, 0), (nw, nu)).copy_from(&(&rows * (&forcing + &damping * &p_u)));
+    let yv_u = &yv * &v_u;
     let yv = &yv * &velocities;
     let mut output_matrix = DMatrix::zeros(ny, nz + nw);
     output_matrix.view_mut((0, 0), (ny, nz)).copy_from(&(&yq * &positions + &yv * &p_z));
     output_matrix.view_mut((0, nz), (ny, nw)).copy_from(&(&yv * &p_w));
-    let yu = yu + &yv * &p_u;
+    let mut yu = yu + &yv * &p_u + yv_u;
+    if y_lambda.amax() > 0.0 {
+        // Outputs that read multipliers: δλ as a function of the state and the inputs.
+        let reduced = Reduced {
+            velocities: &velocities,
+            positions: &positions,
+            p_state: &p_state(&p_z, &p_w),
+            p_u: &p_u,
+            v_u: &v_u,
+            state_matrix: &state_matrix,
+            input_matrix: &input_matrix,
+        };
+        let map = multipliers(&a, &lvv, &k, &(&dv - &lvq), &bu, &reduced);
+        let rate = &y_lambda * &map.rate;
+        if let Some(k) = (0..ny).find(|&k| rate.row(k).amax() > 1e-10 * (1.0 + y_lambda.row(k).amax())) {
+            return Err(SimError::InvalidOption {
+                what: "linearize",
+                reason: format!(
+                    "the output `{}` reads a multiplier that follows an input's rate (an ideal source across \
+                     a capacitor): a state-space model (A, B, C, D) cannot hold it",
+                    model.output_names()[k]
+                ),
+            });
+        }
+        output_matrix += &y_lambda * &map.state;
+        yu += &y_lambda * &map.input;
+    }
     let velocities = &velocities * &inertial;
     let basis = Basis::Orthonormal;
     Ok(Linearization {
@@ -347,36 +390,62 @@ where
     Ok(())
 }
 
-/// Refuses outputs that read a multiplier: in minimal coordinates the multipliers are
-/// functions of the state that this linearisation does not form. Found by moving every
-/// multiplier by a different amount.
-fn refuse_outputs_of_multipliers<M: LagrangeDirac>(
-    model: &M,
-    t: f64,
-    state: &State<M>,
-) -> Result<(), SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    let names = model.output_names();
-    if names.is_empty() || state.lambda.is_empty() {
-        return Ok(());
-    }
-    let (mut base, mut moved) = (vec![0.0; names.len()], vec![0.0; names.len()]);
-    model.outputs(t, &state.q, &state.v, &state.lambda, &mut base);
-    let mut lambda = state.lambda.clone();
-    for (j, x) in lambda.iter_mut().enumerate() {
-        *x += 1.0 + 0.37 * j as f64;
-    }
-    model.outputs(t, &state.q, &state.v, &lambda, &mut moved);
-    match base.iter().zip(&moved).position(|(a, b)| a != b) {
-        Some(k) => Err(SimError::InvalidOption {
-            what: "linearize",
-            reason: format!(
-                "the output `{}` reads a multiplier, which the linear model in minimal coordinates does not hold",
-                names[k]
-            ),
-        }),
-        None => Ok(()),
-    }
+/// What [`multipliers`] needs of the reduced linear model.
+struct Reduced<'a> {
+    /// `N`: the allowed velocities, `n × n_v`.
+    velocities: &'a DMatrix<f64>,
+    /// `N_h`: the allowed positions, `n × n_z`.
+    positions: &'a DMatrix<f64>,
+    /// `[P_z P_w]`: the allowed velocities' coordinates from the state, `n_v × (n_z + n_w)`.
+    p_state: &'a DMatrix<f64>,
+    /// `P_u`: from the inputs, `n_v × n_u`.
+    p_u: &'a DMatrix<f64>,
+    /// `V_u`: the velocities the inputs prescribe through constraints, `n × n_u`.
+    v_u: &'a DMatrix<f64>,
+    state_matrix: &'a DMatrix<f64>,
+    input_matrix: &'a DMatrix<f64>,
+}
+
+/// `δλ = Λ_x δx + Λ_u δu + Λ_u̇ δu̇`: the multipliers' linear map.
+struct MultiplierMap {
+    state: DMatrix<f64>,
+    input: DMatrix<f64>,
+    rate: DMatrix<f64>,
+}
+
+/// `(A Aᵀ)⁻¹`: invertible, since the rows were found independent with the kernels; its
+/// pseudo-inverse (an error only for a negative tolerance) is then its inverse.
+fn gram_inverse(a: &DMatrix<f64>) -> DMatrix<f64> {
+    (a * a.transpose()).pseudo_inverse(0.0).unwrap_or_else(|_| DMatrix::zeros(a.nrows(), a.nrows()))
+}
+
+fn p_state(p_z: &DMatrix<f64>, p_w: &DMatrix<f64>) -> DMatrix<f64> {
+    let mut out = DMatrix::zeros(p_z.nrows(), p_z.ncols() + p_w.ncols());
+    out.view_mut((0, 0), (p_z.nrows(), p_z.ncols())).copy_from(p_z);
+    out.view_mut((0, p_z.ncols()), (p_w.nrows(), p_w.ncols())).copy_from(p_w);
+    out
+}
+
+/// The multipliers from the full momentum balance, `Aᵀ δλ = L_vv δv̇ − K δq − D δv − ∂ṗ/∂u δu`,
+/// with `δq = N_h δz`, `δv = N (P_x δx + P_u δu) + V_u δu` and
+/// `δv̇ = N P_x (A δx + B δu) + (N P_u + V_u) δu̇` (`∂ṗ/∂u` here holds `D V_u`):
+/// `δλ = (A Aᵀ)⁻¹ A (…)`, the rows independent (checked with the kernels).
+fn multipliers(
+    a: &DMatrix<f64>,
+    lvv: &DMatrix<f64>,
+    k: &DMatrix<f64>,
+    damping: &DMatrix<f64>,
+    bu: &DMatrix<f64>,
+    r: &Reduced<'_>,
+) -> MultiplierMap {
+    let (nx, nz) = (r.state_matrix.ncols(), r.positions.ncols());
+    let v_state = r.velocities * r.p_state;
+    let v_input = r.velocities * r.p_u;
+    let mut q_state = DMatrix::zeros(a.ncols(), nx);
+    q_state.view_mut((0, 0), (a.ncols(), nz)).copy_from(r.positions);
+    let state = lvv * &v_state * r.state_matrix - k * &q_state - damping * &v_state;
+    let input = lvv * &v_state * r.input_matrix - damping * &v_input - bu;
+    let rate = lvv * (v_input + r.v_u);
+    let solve = gram_inverse(a) * a;
+    MultiplierMap { state: &solve * state, input: &solve * input, rate: &solve * rate }
 }

@@ -58,22 +58,43 @@ where
         assert!(out.is_empty(), "l_vu: the model has no inputs, so the slice must be empty");
     }
 
+    /// `∂(A v + b)/∂u`, `m × n_u`, dense and column-major: nonzero when an input prescribes a
+    /// motion through a constraint (a voltage source's voltage). Generated for models with
+    /// inputs and constraints.
+    fn av_du(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(
+            out.is_empty(),
+            "av_du: the model has no inputs or no constraints, so the slice must be empty"
+        );
+    }
+
     /// `∂y/∂q` of the outputs, `n_y × n`, dense and column-major. Generated for models with
     /// outputs.
-    fn output_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
-        let _ = (t, q, v);
+    fn output_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
         assert!(out.is_empty(), "output_dq: the model has no outputs, so the slice must be empty");
     }
 
     /// `∂y/∂v` of the outputs, `n_y × n`, dense and column-major.
-    fn output_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
-        let _ = (t, q, v);
+    fn output_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
         assert!(out.is_empty(), "output_dv: the model has no outputs, so the slice must be empty");
     }
 
+    /// `∂y/∂λ` of the outputs, `n_y × m`, dense and column-major: nonzero for outputs that read
+    /// a multiplier (a source's current, a support's force).
+    fn output_dlambda(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
+        assert!(
+            out.is_empty(),
+            "output_dlambda: the model has no outputs or no constraints, so the slice must be empty"
+        );
+    }
+
     /// `∂y/∂u` of the outputs, `n_y × n_u`, dense and column-major.
-    fn output_du(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
-        let _ = (t, q, v);
+    fn output_du(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut [f64]) {
+        let _ = (t, q, v, lambda);
         assert!(
             out.is_empty(),
             "output_du: the model has no outputs or no inputs, so the slice must be empty"

@@ -30,13 +30,16 @@ pub type MatCQ<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Cq;
 /// The condensed Newton solver of model `M`'s algebra: the one integrators use by default.
 pub type Condensed<M> = <<M as LagrangeDirac>::Algebra as Algebra<M>>::Condensed;
 
-/// A typed error if a parameter of `model` is NaN or infinite.
+/// A typed error if a parameter of `model` is NaN or infinite, or breaks a requirement of its
+/// model (`positive(r)`, `nonnegative(d)`).
 pub fn check_parameters<M: LagrangeDirac>(model: &M) -> Result<(), crate::error::SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    match model.non_finite_parameter() {
-        Some((name, value)) => Err(crate::error::SimError::InvalidParameter { name, value }),
+    match model.invalid_parameter() {
+        Some((name, value, requirement)) => {
+            Err(crate::error::SimError::InvalidParameter { name, value, requirement })
+        }
         None => Ok(()),
     }
 }
@@ -155,9 +158,11 @@ where
     );
 
     /// The first parameter (its dotted name, `left.m1` in a composite) whose value is NaN or
-    /// infinite, with that value. Integrators and [`consistent_state`](crate::consistent_state)
-    /// refuse such a model before they evaluate it. The derive implements it.
-    fn non_finite_parameter(&self) -> Option<(String, f64)> {
+    /// infinite, or breaks its model's requirement (`positive(r)`, `nonnegative(d)`), with that
+    /// value and what it must be (`"finite"`, `"positive"`, `"non-negative"`). Integrators and
+    /// [`consistent_state`](crate::consistent_state) refuse such a model before they evaluate
+    /// it. The derive implements it.
+    fn invalid_parameter(&self) -> Option<(String, f64, &'static str)> {
         None
     }
 

@@ -36,7 +36,7 @@ impl Large<'_> {
     pub(super) fn methods(&self) -> TokenStream {
         let mut out: TokenStream =
             REQUIRED.iter().chain([&INTERCONNECTION_FORCES]).map(|sig| self.method(sig)).collect();
-        out.extend(self.non_finite_parameter());
+        out.extend(self.invalid_parameter());
         out.extend(self.outputs_method());
         out
     }
@@ -256,9 +256,9 @@ impl Large<'_> {
         }
     }
 
-    /// `fn non_finite_parameter`: the composite's own `f64` fields, then each subsystem's,
+    /// `fn invalid_parameter`: the composite's own `f64` fields, then each subsystem's,
     /// named by their paths (`cells[3].c`).
-    fn non_finite_parameter(&self) -> TokenStream {
+    fn invalid_parameter(&self) -> TokenStream {
         let own = own_parameter_checks(self.composite);
         let fields = self.composite.subsystems.iter().map(|s| {
             let field = &s.ident;
@@ -275,14 +275,14 @@ impl Large<'_> {
             };
             quote! {
                 for __e in 0..#count {
-                    if let ::core::option::Option::Some((name, value)) = #sub.non_finite_parameter() {
-                        return ::core::option::Option::Some((#prefix + &name, value));
+                    if let ::core::option::Option::Some((name, value, requirement)) = #sub.invalid_parameter() {
+                        return ::core::option::Option::Some((#prefix + &name, value, requirement));
                     }
                 }
             }
         });
         quote! {
-            fn non_finite_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64)> {
+            fn invalid_parameter(&self) -> ::core::option::Option<(::std::string::String, ::core::primitive::f64, &'static ::core::primitive::str)> {
                 #own
                 #(#fields)*
                 ::core::option::Option::None
