@@ -6,7 +6,10 @@
 //! pendulum of the test zoo (angle coordinates, cos(θi − θj) terms) and N-link pendulums for
 //! N = 2, 4, 8, 16.
 //!
-//! Run: `cargo bench --bench expansion`.
+//! The parts of `dirac::components` too: each part's expansion (the median of 15, the slowest
+//! named) and all of them together.
+//!
+//! Run: `cargo bench --bench expansion` (the parts alone: `cargo bench --bench expansion -- parts`).
 
 use std::hint::black_box;
 
@@ -65,5 +68,60 @@ fn expansion(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, expansion);
+/// Every `#[derive(LagrangeDirac)]` struct of the component library, with its module's name.
+fn parts() -> Vec<(String, syn::DeriveInput)> {
+    let modules = [
+        ("electrical", include_str!("../src/components/electrical.rs")),
+        ("translational", include_str!("../src/components/translational.rs")),
+        ("rotational", include_str!("../src/components/rotational.rs")),
+        ("electromechanical", include_str!("../src/components/electromechanical.rs")),
+    ];
+    let mut out = Vec::new();
+    for (module, source) in modules {
+        let file = syn::parse_file(source).expect("the module parses");
+        for item in file.items {
+            if let syn::Item::Struct(s) = item {
+                out.push((format!("{module}::{}", s.ident), syn::DeriveInput::from(s)));
+            }
+        }
+    }
+    out
+}
+
+fn components(c: &mut Criterion) {
+    let parts = parts();
+    let mut times: Vec<(f64, &str)> = parts
+        .iter()
+        .map(|(name, input)| {
+            let mut runs: Vec<f64> = (0..15)
+                .map(|_| {
+                    let start = std::time::Instant::now();
+                    black_box(dirac_expand::lagrange_dirac(black_box(input)));
+                    start.elapsed().as_secs_f64()
+                })
+                .collect();
+            runs.sort_by(f64::total_cmp);
+            (runs[7], name.as_str())
+        })
+        .collect();
+    times.sort_by(|a, b| b.0.total_cmp(&a.0));
+    println!("{} parts; slowest expansions (median of 15):", parts.len());
+    for (time, name) in times.iter().take(5) {
+        println!("  {name}: {:.2} ms", time * 1e3);
+    }
+    let total: f64 = times.iter().map(|t| t.0).sum();
+    println!("  all parts: {:.1} ms", total * 1e3);
+    let mut group = c.benchmark_group("expansion");
+    group.sample_size(10);
+    group.bench_function("parts: all of dirac::components", |b| {
+        b.iter(|| {
+            for (_, input) in &parts {
+                black_box(dirac_expand::lagrange_dirac(black_box(input)));
+            }
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, expansion, components);
 criterion_main!(benches);

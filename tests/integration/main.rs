@@ -8,6 +8,7 @@ mod every_method;
 
 mod authoring;
 mod blocks;
+mod components;
 mod contacts;
 mod counters;
 mod dense_output;
