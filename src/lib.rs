@@ -84,6 +84,7 @@ pub use dirac_runtime::ensemble;
 /// Input sources read by time: tables of samples, held or interpolated.
 pub use dirac_runtime::sources;
 
+#[cfg(feature = "components")]
 pub mod components;
 pub mod fmi;
 

@@ -2,6 +2,10 @@
 //! electromechanical, each an ordinary `#[derive(LagrangeDirac)]` model with ports, units and
 //! outputs, joined by `#[derive(Interconnection)]` like any model of yours.
 //!
+//! The library is the cargo feature `components`, on by default; it adds about 17 s to the
+//! release build of `dirac` itself (BENCHMARKS.md, "Components"), which a crate that writes all
+//! of its models saves with `default-features = false`.
+//!
 //! # The connector convention
 //!
 //! A port's coordinate is the integral of the *across* quantity: a pin's node flux (V s) for

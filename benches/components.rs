@@ -1,0 +1,149 @@
+//! What assembling a system from `dirac::components` costs against the same system written as
+//! one hand-reduced model, in one process: a DC motor with a rigid gearbox and a load on a
+//! viscous bearing, driven by 12 V from rest for 2 s (about 40 time constants).
+//!
+//! - parts: ten parts (source, resistor, inductor, EMF, ground, rotor, gear, load, bearing,
+//!   housing) and ten connections: 17 coordinates, node fluxes and flange angles, and 22
+//!   constraint rows, most of them connections, whose multipliers are the currents and torques;
+//! - by hand: the armature charge and the motor angle, `L = ½ l i² + ½ (j_m + j_l/n²) ω² −
+//!   k q ω` with the forces `V − R i` and `−(b/n²) ω` (the `motor_load` example's way).
+//!
+//! Both at rtol = atol = 1e-8, with Radau and Explicit, alternated `ROUNDS` times each; the
+//! medians' ratio is printed with the steps of each and the final speeds, which agree.
+//!
+//! Run: `cargo bench --bench components`.
+
+#![allow(missing_docs)]
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use dirac::components::electrical::{Ground, Inductor, Resistor, VoltageSource};
+use dirac::components::electromechanical::Emf;
+use dirac::components::rotational::{Damper, Fixed, IdealGear, Inertia};
+use dirac::prelude::*;
+
+const ROUNDS: usize = 15;
+const VOLTS: f64 = 12.0;
+const R: f64 = 1.0;
+const L: f64 = 0.05;
+const K: f64 = 0.5;
+const JM: f64 = 0.01;
+const JL: f64 = 0.05;
+const B: f64 = 0.1;
+const N: f64 = 4.0;
+
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(
+    connect(source.p, r.p), connect(r.n, l.p), connect(l.n, emf.p), connect(emf.n, ground.p),
+    connect(source.n, ground.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+    connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+)]
+pub struct Parts {
+    pub source: VoltageSource,
+    pub r: Resistor,
+    pub l: Inductor,
+    pub emf: Emf,
+    pub ground: Ground,
+    pub rotor: Inertia,
+    pub gear: IdealGear,
+    pub load: Inertia,
+    pub bearing: Damper,
+    pub housing: Fixed,
+}
+
+/// The same motor reduced by hand to its charge and angle.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(q => i, theta => w))]
+#[dirac(lagrangian = 0.5 * l * i * i + 0.5 * (jm + jl / (n * n)) * w * w - k * q * w)]
+#[dirac(force(q) = volts - r * i, force(theta) = -b / (n * n) * w)]
+pub struct ByHand {
+    pub l: f64,
+    pub r: f64,
+    pub k: f64,
+    pub jm: f64,
+    pub jl: f64,
+    pub b: f64,
+    pub n: f64,
+    pub volts: f64,
+}
+
+fn median(mut times: Vec<f64>) -> f64 {
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
+
+/// Times the two runs alternately and prints their medians' ratio and what each computed.
+fn compare(method: &str, parts: &dyn Fn() -> (usize, f64), by_hand: &dyn Fn() -> (usize, f64)) {
+    let (mut ta, mut tb) = (Vec::new(), Vec::new());
+    let (mut a, mut b) = ((0, 0.0), (0, 0.0));
+    for _ in 0..ROUNDS {
+        let start = Instant::now();
+        a = black_box(parts());
+        ta.push(start.elapsed().as_secs_f64());
+        let start = Instant::now();
+        b = black_box(by_hand());
+        tb.push(start.elapsed().as_secs_f64());
+    }
+    let (ma, mb) = (median(ta), median(tb));
+    println!(
+        "{method:9} parts {:8.1} µs ({} steps, ω = {:.9}) | by hand {:8.1} µs ({} steps, ω = {:.9}) | ratio {:.2}",
+        ma * 1e6,
+        a.0,
+        a.1,
+        mb * 1e6,
+        b.0,
+        b.1,
+        ma / mb
+    );
+}
+
+fn main() {
+    let parts = Parts {
+        source: VoltageSource { u: VOLTS },
+        r: Resistor { r: R },
+        l: Inductor { l: L },
+        emf: Emf { k: K },
+        ground: Ground {},
+        rotor: Inertia { j: JM },
+        gear: IdealGear { ratio: N },
+        load: Inertia { j: JL },
+        bearing: Damper { d: B },
+        housing: Fixed { phi0: 0.0 },
+    };
+    let zero = VecQ::<Parts>::zeros();
+    let start = consistent_state(&parts, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+    let rotor = Parts::NAMES.coordinate_names().iter().position(|n| n == "rotor.phi").expect("the rotor");
+    let hand = ByHand { l: L, r: R, k: K, jm: JM, jl: JL, b: B, n: N, volts: VOLTS };
+    let zero_hand = VecQ::<ByHand>::zeros();
+    let start_hand =
+        consistent_state(&hand, 0.0, &zero_hand, &zero_hand, Consistency::default()).expect("at rest");
+    let (rtol, atol, end) = (1e-8, 1e-8, 2.0);
+    let last = Sampling::Times(vec![end]);
+    compare(
+        "Radau",
+        &|| {
+            let mut radau = Radau::new(&parts, RadauOptions::tolerances(rtol, atol)).expect("valid");
+            let s = radau.solve(0.0, &start, end, &last).expect("integrates");
+            (radau.stats().steps, s.last().expect("a sample").v[rotor])
+        },
+        &|| {
+            let mut radau = Radau::new(&hand, RadauOptions::tolerances(rtol, atol)).expect("valid");
+            let s = radau.solve(0.0, &start_hand, end, &last).expect("integrates");
+            (radau.stats().steps, s.last().expect("a sample").v[1])
+        },
+    );
+    compare(
+        "Explicit",
+        &|| {
+            let mut explicit = Explicit::new(&parts, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+            let s = explicit.solve(0.0, &start, end, &last).expect("integrates");
+            (explicit.stats().steps, s.last().expect("a sample").v[rotor])
+        },
+        &|| {
+            let mut explicit = Explicit::new(&hand, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+            let s = explicit.solve(0.0, &start_hand, end, &last).expect("integrates");
+            (explicit.stats().steps, s.last().expect("a sample").v[1])
+        },
+    );
+}
