@@ -611,3 +611,115 @@ fn requirements_name_the_parameter() {
         "{error}"
     );
 }
+
+/// Every parameter of every part, made NaN in turn, is refused by name before anything runs;
+/// and each requirement a part states (a resistance, a capacitance, a mass that must be
+/// positive, a damping that must not be negative) is refused with its name and requirement.
+#[test]
+fn every_parameter_of_every_part_is_checked() {
+    fn each_parameter<M: LagrangeDirac + Parameters + Clone>(model: M)
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        assert!(
+            crate::runtime::model::check_parameters(&model).is_ok(),
+            "{} as given",
+            std::any::type_name::<M>()
+        );
+        let names = M::NAMES.parameter_names();
+        for (k, name) in names.iter().enumerate() {
+            let mut broken = model.clone();
+            broken.set_parameter_value(k, f64::NAN);
+            match crate::runtime::model::check_parameters(&broken) {
+                Err(SimError::InvalidParameter { name: found, requirement: "finite", .. }) => {
+                    assert_eq!(&found, name)
+                }
+                other => panic!("{} with {name} NaN: {other:?}", std::any::type_name::<M>()),
+            }
+        }
+    }
+    fn refused<M: LagrangeDirac + Parameters + Clone>(model: M, name: &str, value: f64, requirement: &str)
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let k = index(M::NAMES.parameter_names(), name);
+        let mut broken = model;
+        broken.set_parameter_value(k, value);
+        match crate::runtime::model::check_parameters(&broken) {
+            Err(SimError::InvalidParameter { name: found, requirement: r, .. }) => {
+                assert_eq!((found.as_str(), r), (name, requirement), "{}", std::any::type_name::<M>())
+            }
+            other => panic!("{} with {name} = {value}: {other:?}", std::any::type_name::<M>()),
+        }
+    }
+    each_parameter(el::Resistor { r: 1.0 });
+    each_parameter(el::Conductor { g: 1.0 });
+    each_parameter(el::ChuaDiode { ga: -0.7, gb: -0.4, ve: 1.0 });
+    each_parameter(el::Capacitor { c: 1.0 });
+    each_parameter(el::Inductor { l: 1.0 });
+    each_parameter(el::CoupledInductors { l1: 1.0, l2: 2.0, m: 0.5 });
+    each_parameter(el::IdealTransformer { n: 2.0 });
+    each_parameter(el::Gyrator { g: 1.0 });
+    each_parameter(el::VoltageControlledCurrent { gm: 1.0 });
+    each_parameter(el::IdealSwitch { control: 1.0 });
+    each_parameter(el::VoltageSource { u: 1.0 });
+    each_parameter(el::StepVoltage { offset: 0.0, height: 1.0, start: 0.0 });
+    each_parameter(el::RampVoltage { offset: 0.0, height: 1.0, start: 0.0, duration: 1.0 });
+    each_parameter(el::SineVoltage { offset: 0.0, amplitude: 1.0, f: 1.0, phase: 0.0, start: 0.0 });
+    each_parameter(el::PulseVoltage { offset: 0.0, amplitude: 1.0, width: 0.5, period: 1.0, start: 0.0 });
+    each_parameter(el::CurrentSource { i: 1.0 });
+    each_parameter(el::StepCurrent { offset: 0.0, height: 1.0, start: 0.0 });
+    each_parameter(el::SineCurrent { offset: 0.0, amplitude: 1.0, f: 1.0, phase: 0.0, start: 0.0 });
+    each_parameter(tr::Mass { m: 1.0 });
+    each_parameter(tr::Spring { k: 1.0, length: 0.0 });
+    each_parameter(tr::Damper { d: 1.0 });
+    each_parameter(tr::SpringDamper { k: 1.0, d: 1.0, length: 0.0 });
+    each_parameter(tr::Fixed { s0: 0.0 });
+    each_parameter(tr::Force { f: 1.0 });
+    each_parameter(tr::StepForce { offset: 0.0, height: 1.0, start: 0.0 });
+    each_parameter(tr::Speed { v_ref: 1.0 });
+    each_parameter(tr::SinePosition { offset: 0.0, amplitude: 1.0, f: 1.0, phase: 0.0 });
+    each_parameter(tr::Friction { kinetic: 1.0, stiction: 1.0 });
+    each_parameter(tr::Stop { gap: 0.0, restitution: 0.5 });
+    each_parameter(rot::Inertia { j: 1.0 });
+    each_parameter(rot::Spring { k: 1.0, angle: 0.0 });
+    each_parameter(rot::Damper { d: 1.0 });
+    each_parameter(rot::SpringDamper { k: 1.0, d: 1.0, angle: 0.0 });
+    each_parameter(rot::IdealGear { ratio: 2.0 });
+    each_parameter(rot::Fixed { phi0: 0.0 });
+    each_parameter(rot::Torque { tau: 1.0 });
+    each_parameter(rot::StepTorque { offset: 0.0, height: 1.0, start: 0.0 });
+    each_parameter(rot::Speed { w_ref: 1.0 });
+    each_parameter(rot::Clutch { kinetic: 1.0, stiction: 1.0, engaged: 1.0 });
+    each_parameter(rot::Brake { kinetic: 1.0, stiction: 1.0, engaged: 1.0 });
+    each_parameter(rot::Wheel { radius: 0.3 });
+    each_parameter(em::Emf { k: 0.5 });
+    // A velocity without inertia where a zero would leave it undetermined; a negative loss.
+    refused(el::Resistor { r: 1.0 }, "r", 0.0, "positive");
+    refused(el::Capacitor { c: 1.0 }, "c", 0.0, "positive");
+    refused(el::Inductor { l: 1.0 }, "l", -1.0, "positive");
+    refused(el::CoupledInductors { l1: 1.0, l2: 2.0, m: 0.5 }, "l2", 0.0, "positive");
+    refused(el::Conductor { g: 1.0 }, "g", -1.0, "non-negative");
+    refused(el::ChuaDiode { ga: -0.7, gb: -0.4, ve: 1.0 }, "ve", 0.0, "positive");
+    refused(
+        el::RampVoltage { offset: 0.0, height: 1.0, start: 0.0, duration: 1.0 },
+        "duration",
+        0.0,
+        "positive",
+    );
+    refused(
+        el::PulseVoltage { offset: 0.0, amplitude: 1.0, width: 0.5, period: 1.0, start: 0.0 },
+        "period",
+        0.0,
+        "positive",
+    );
+    refused(tr::Mass { m: 1.0 }, "m", 0.0, "positive");
+    refused(tr::Damper { d: 1.0 }, "d", -0.1, "non-negative");
+    refused(tr::SpringDamper { k: 1.0, d: 1.0, length: 0.0 }, "d", -0.1, "non-negative");
+    refused(tr::Friction { kinetic: 1.0, stiction: 1.0 }, "kinetic", -1.0, "non-negative");
+    refused(tr::Stop { gap: 0.0, restitution: 0.5 }, "restitution", -0.5, "non-negative");
+    refused(rot::Inertia { j: 1.0 }, "j", 0.0, "positive");
+    refused(rot::Damper { d: 1.0 }, "d", -1.0, "non-negative");
+    refused(rot::Clutch { kinetic: 1.0, stiction: 1.0, engaged: 1.0 }, "stiction", -1.0, "non-negative");
+    refused(rot::Brake { kinetic: 1.0, stiction: 1.0, engaged: 1.0 }, "kinetic", -1.0, "non-negative");
+}
