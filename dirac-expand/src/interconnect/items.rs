@@ -92,174 +92,116 @@ fn offset(composite: &Composite<'_>, i: usize, count: &syn::Ident) -> TokenStrea
 /// from its own arguments, placed at its rows and columns (the blocks are block-diagonal:
 /// inputs and outputs belong to one subsystem each, and the interconnection has neither).
 pub fn linearisation_methods(composite: &Composite<'_>) -> TokenStream {
-    let p = rt();
-    // (method, whether it takes λ, rows: coordinates or outputs, columns: inputs or coordinates)
-    let specs = [
-        ("dpdot_du", true, false, true),
-        ("l_vu", false, false, true),
-        ("output_dq", true, true, false),
-        ("output_dv", true, true, false),
-        ("output_du", true, true, true),
-    ];
-    specs
-        .iter()
-        .map(|&(name, with_lambda, rows_are_outputs, columns_are_inputs)| {
-            let method = format_ident!("{}", name);
-            let count = |outputs: bool, ty: &TokenStream| {
-                if outputs {
-                    quote! { <#ty as #p::Named>::NAMES.output_count() }
-                } else {
-                    quote! { <#ty as #p::Fixed>::NQ }
-                }
-            };
-            let columns = |inputs: bool, ty: &TokenStream| {
-                if inputs {
-                    quote! { <#ty as #p::Named>::NAMES.input_count() }
-                } else {
-                    quote! { <#ty as #p::Fixed>::NQ }
-                }
-            };
-            let me = quote! { Self };
-            let (total_rows, total_columns) = (count(rows_are_outputs, &me), columns(columns_are_inputs, &me));
-            let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
-                let (field, ty) = (&s.ident, &s.ty);
-                let ty = quote! { #ty };
-                let slot = format_ident!("__SLOT{}", i);
-                let (rows, cols) = (count(rows_are_outputs, &ty), columns(columns_are_inputs, &ty));
-                let row0 = if rows_are_outputs { output_offset(composite, i) } else { quote! { #slot.q } };
-                let col0 = if columns_are_inputs { input_offset(composite, i) } else { quote! { #slot.q } };
-                let lambda = with_lambda.then(|| quote! { &#p::gather_c::<#ty, Self>(lambda, &#slot), });
-                quote! {{
-                    let (rows, cols) = (#rows, #cols);
-                    if rows * cols > 0 {
-                        let mut block = ::std::vec![0.0; rows * cols];
-                        <#ty as #p::InputsOutputs>::#method(
-                            &self.#field,
-                            t,
-                            &#p::gather_q::<#ty, Self>(q, &#slot),
-                            &#p::gather_q::<#ty, Self>(v, &#slot),
-                            #lambda
-                            &mut block,
-                        );
-                        #p::place_block(&block, rows, total_rows, (#row0, #col0), out);
-                    }
-                }}
-            });
-            let lambda_arg = with_lambda.then(|| quote! { lambda: &#p::VecC<Self>, });
-            quote! {
-                fn #method(
-                    &self,
-                    t: ::core::primitive::f64,
-                    q: &#p::VecQ<Self>,
-                    v: &#p::VecQ<Self>,
-                    #lambda_arg
-                    out: &mut [::core::primitive::f64],
-                ) {
-                    let total_rows = #total_rows;
-                    ::core::assert_eq!(out.len(), total_rows * #total_columns, "{}: wrong slice length", #name);
-                    out.fill(0.0);
-                    #(#parts)*
-                }
-            }
-        })
-        .collect()
+    [
+        scattered_block(composite, "dpdot_du", true, Axis::Coordinates, Axis::Inputs),
+        scattered_block(composite, "l_vu", false, Axis::Coordinates, Axis::Inputs),
+        scattered_block(composite, "output_dq", true, Axis::Outputs, Axis::Coordinates),
+        scattered_block(composite, "output_dv", true, Axis::Outputs, Axis::Coordinates),
+        scattered_block(composite, "output_du", true, Axis::Outputs, Axis::Inputs),
+        scattered_block(composite, "output_dlambda", true, Axis::Outputs, Axis::Constraints),
+        scattered_block(composite, "av_du", false, Axis::Constraints, Axis::Inputs),
+    ]
+    .into_iter()
+    .collect()
 }
 
-/// `av_du` of a composite: each subsystem's `∂(A v + b)/∂u` at the composite's rows of its
-/// constraints and its inputs' columns. The interconnection's own rows hold no inputs.
-pub fn av_du_method(composite: &Composite<'_>) -> TokenStream {
-    let p = rt();
-    let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
-        let (field, ty) = (&s.ident, &s.ty);
+/// An axis of a composite's dense block whose subsystem parts are placed by [`scattered_block`].
+#[derive(Clone, Copy)]
+enum Axis {
+    /// The outputs: a subsystem's are contiguous, at its offset.
+    Outputs,
+    /// The inputs: a subsystem's are contiguous, at its offset.
+    Inputs,
+    /// The constraint rows: a subsystem's holonomic and velocity rows sit apart (`slot.row`).
+    Constraints,
+    /// The coordinates: a subsystem's are contiguous, at its slot.
+    Coordinates,
+}
+
+impl Axis {
+    /// How many a type has along this axis.
+    fn count(self, ty: &TokenStream) -> TokenStream {
+        let p = rt();
+        match self {
+            Axis::Outputs => quote! { <#ty as #p::Named>::NAMES.output_count() },
+            Axis::Inputs => quote! { <#ty as #p::Named>::NAMES.input_count() },
+            Axis::Constraints => quote! { <#ty as #p::Fixed>::NC },
+            Axis::Coordinates => quote! { <#ty as #p::Fixed>::NQ },
+        }
+    }
+
+    /// The composite's index of subsystem `i`'s entry `k` along this axis.
+    fn place(self, composite: &Composite<'_>, i: usize, ty: &syn::Type, k: TokenStream) -> TokenStream {
         let slot = format_ident!("__SLOT{}", i);
-        let col0 = input_offset(composite, i);
-        quote! {{
-            let (rows, cols) = (<#ty as #p::Fixed>::NC, <#ty as #p::Named>::NAMES.input_count());
-            if rows * cols > 0 {
-                let mut block = ::std::vec![0.0; rows * cols];
-                <#ty as #p::InputsOutputs>::av_du(
-                    &self.#field,
-                    t,
-                    &#p::gather_q::<#ty, Self>(q, &#slot),
-                    &#p::gather_q::<#ty, Self>(v, &#slot),
-                    &mut block,
-                );
-                let col0 = #col0;
-                for r in 0..rows {
-                    let row = #slot.row::<#ty>(r);
-                    for c in 0..cols {
-                        out[row + (col0 + c) * total_rows] = block[r + c * rows];
-                    }
-                }
+        match self {
+            Axis::Outputs => {
+                let start = output_offset(composite, i);
+                quote! { (#start) + #k }
             }
-        }}
-    });
-    quote! {
-        fn av_du(
-            &self,
-            t: ::core::primitive::f64,
-            q: &#p::VecQ<Self>,
-            v: &#p::VecQ<Self>,
-            out: &mut [::core::primitive::f64],
-        ) {
-            let total_rows = <Self as #p::Fixed>::NC;
-            ::core::assert_eq!(
-                out.len(),
-                total_rows * <Self as #p::Named>::NAMES.input_count(),
-                "av_du: wrong slice length"
-            );
-            out.fill(0.0);
-            #(#parts)*
+            Axis::Inputs => {
+                let start = input_offset(composite, i);
+                quote! { (#start) + #k }
+            }
+            Axis::Constraints => quote! { #slot.row::<#ty>(#k) },
+            Axis::Coordinates => quote! { #slot.q + #k },
         }
     }
 }
 
-/// `output_dlambda` of a composite: each subsystem's `∂y/∂λ` at its outputs' rows, its columns
-/// scattered to the composite's rows of its constraints (holonomic and velocity rows sit apart).
-/// The interconnection's own rows have no outputs.
-pub fn output_dlambda_method(composite: &Composite<'_>) -> TokenStream {
+/// A composite's dense, column-major block `name` (rows along `rows`, columns along `columns`):
+/// each subsystem's block, from its own arguments, scattered to the composite's rows and
+/// columns. The interconnection's own rows hold no inputs and no outputs.
+fn scattered_block(
+    composite: &Composite<'_>,
+    name: &str,
+    with_lambda: bool,
+    rows: Axis,
+    columns: Axis,
+) -> TokenStream {
     let p = rt();
+    let method = format_ident!("{}", name);
     let parts = composite.subsystems.iter().enumerate().map(|(i, s)| {
         let (field, ty) = (&s.ident, &s.ty);
         let slot = format_ident!("__SLOT{}", i);
-        let row0 = output_offset(composite, i);
+        let ty_tokens = quote! { #ty };
+        let (row_count, column_count) = (rows.count(&ty_tokens), columns.count(&ty_tokens));
+        let (row, column) =
+            (rows.place(composite, i, ty, quote! { r }), columns.place(composite, i, ty, quote! { c }));
+        let lambda = with_lambda.then(|| quote! { &#p::gather_c::<#ty, Self>(lambda, &#slot), });
         quote! {{
-            let (rows, cols) = (<#ty as #p::Named>::NAMES.output_count(), <#ty as #p::Fixed>::NC);
+            let (rows, cols) = (#row_count, #column_count);
             if rows * cols > 0 {
                 let mut block = ::std::vec![0.0; rows * cols];
-                <#ty as #p::InputsOutputs>::output_dlambda(
+                <#ty as #p::InputsOutputs>::#method(
                     &self.#field,
                     t,
                     &#p::gather_q::<#ty, Self>(q, &#slot),
                     &#p::gather_q::<#ty, Self>(v, &#slot),
-                    &#p::gather_c::<#ty, Self>(lambda, &#slot),
+                    #lambda
                     &mut block,
                 );
-                let row0 = #row0;
                 for c in 0..cols {
-                    let column = #slot.row::<#ty>(c);
                     for r in 0..rows {
-                        out[row0 + r + column * total_rows] = block[r + c * rows];
+                        out[#row + (#column) * total_rows] = block[r + c * rows];
                     }
                 }
             }
         }}
     });
+    let me = quote! { Self };
+    let (total_rows, total_columns) = (rows.count(&me), columns.count(&me));
+    let lambda_arg = with_lambda.then(|| quote! { lambda: &#p::VecC<Self>, });
     quote! {
-        fn output_dlambda(
+        fn #method(
             &self,
             t: ::core::primitive::f64,
             q: &#p::VecQ<Self>,
             v: &#p::VecQ<Self>,
-            lambda: &#p::VecC<Self>,
+            #lambda_arg
             out: &mut [::core::primitive::f64],
         ) {
-            let total_rows = <Self as #p::Named>::NAMES.output_count();
-            ::core::assert_eq!(
-                out.len(),
-                total_rows * <Self as #p::Fixed>::NC,
-                "output_dlambda: wrong slice length"
-            );
+            let total_rows = #total_rows;
+            ::core::assert_eq!(out.len(), total_rows * #total_columns, "{}: wrong slice length", #name);
             out.fill(0.0);
             #(#parts)*
         }

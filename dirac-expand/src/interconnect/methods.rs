@@ -37,8 +37,6 @@ pub fn methods(composite: &Composite<'_>, own: &Own<'_>) -> Methods {
     core.extend(super::items::output_method(composite));
     let mut inputs_outputs = super::items::input_methods(composite);
     inputs_outputs.extend(super::items::linearisation_methods(composite));
-    inputs_outputs.extend(super::items::output_dlambda_method(composite));
-    inputs_outputs.extend(super::items::av_du_method(composite));
     Methods {
         core,
         inputs_outputs,

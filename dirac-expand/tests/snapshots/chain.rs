@@ -1483,13 +1483,12 @@ const _: () = {
                         >(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (__SLOT0.q, 0),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT0.q + r + ((0) + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1510,18 +1509,14 @@ const _: () = {
                         >(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            __SLOT1.q,
-                            0
-                                + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .input_count(),
-                        ),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT1.q + r
+                                + ((0
+                                    + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                        .input_count()) + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1552,13 +1547,12 @@ const _: () = {
                         &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (__SLOT0.q, 0),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT0.q + r + ((0) + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1575,18 +1569,14 @@ const _: () = {
                         &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            __SLOT1.q,
-                            0
-                                + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .input_count(),
-                        ),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT1.q + r
+                                + ((0
+                                    + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                        .input_count()) + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1622,13 +1612,12 @@ const _: () = {
                         >(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, __SLOT0.q),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0) + r + (__SLOT0.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1649,18 +1638,14 @@ const _: () = {
                         >(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0
                                 + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .output_count(),
-                            __SLOT1.q,
-                        ),
-                        out,
-                    );
+                                    .output_count()) + r + (__SLOT1.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1696,13 +1681,12 @@ const _: () = {
                         >(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, __SLOT0.q),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0) + r + (__SLOT0.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1723,18 +1707,14 @@ const _: () = {
                         >(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0
                                 + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .output_count(),
-                            __SLOT1.q,
-                        ),
-                        out,
-                    );
+                                    .output_count()) + r + (__SLOT1.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1770,13 +1750,11 @@ const _: () = {
                         >(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, 0),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0) + r + ((0) + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1797,20 +1775,16 @@ const _: () = {
                         >(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0
                                 + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .output_count(),
-                            0
-                                + <Primitive1 as ::dirac::__private::Named>::NAMES
-                                    .input_count(),
-                        ),
-                        out,
-                    );
+                                    .output_count()) + r
+                                + ((0
+                                    + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                        .input_count()) + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1825,7 +1799,7 @@ const _: () = {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
             ::core::assert_eq!(
                 out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NC,
-                "output_dlambda: wrong slice length"
+                "{}: wrong slice length", "output_dlambda"
             );
             out.fill(0.0);
             {
@@ -1846,11 +1820,10 @@ const _: () = {
                         >(lambda, &__SLOT0),
                         &mut block,
                     );
-                    let row0 = 0;
                     for c in 0..cols {
-                        let column = __SLOT0.row::<Primitive1>(c);
                         for r in 0..rows {
-                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                            out[(0) + r + (__SLOT0.row::<Primitive1>(c)) * total_rows] = block[r
+                                + c * rows];
                         }
                     }
                 }
@@ -1873,13 +1846,13 @@ const _: () = {
                         >(lambda, &__SLOT1),
                         &mut block,
                     );
-                    let row0 = 0
-                        + <Primitive1 as ::dirac::__private::Named>::NAMES
-                            .output_count();
                     for c in 0..cols {
-                        let column = __SLOT1.row::<Primitive2>(c);
                         for r in 0..rows {
-                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                            out[(0
+                                + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                    .output_count()) + r
+                                + (__SLOT1.row::<Primitive2>(c)) * total_rows] = block[r
+                                + c * rows];
                         }
                     }
                 }
@@ -1895,7 +1868,7 @@ const _: () = {
             let total_rows = <Self as ::dirac::__private::Fixed>::NC;
             ::core::assert_eq!(
                 out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
-                .input_count(), "av_du: wrong slice length"
+                .input_count(), "{}: wrong slice length", "av_du"
             );
             out.fill(0.0);
             {
@@ -1912,11 +1885,10 @@ const _: () = {
                         &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
                         &mut block,
                     );
-                    let col0 = 0;
-                    for r in 0..rows {
-                        let row = __SLOT0.row::<Primitive1>(r);
-                        for c in 0..cols {
-                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT0.row::<Primitive1>(r) + ((0) + c) * total_rows] = block[r
+                                + c * rows];
                         }
                     }
                 }
@@ -1935,12 +1907,12 @@ const _: () = {
                         &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
                         &mut block,
                     );
-                    let col0 = 0
-                        + <Primitive1 as ::dirac::__private::Named>::NAMES.input_count();
-                    for r in 0..rows {
-                        let row = __SLOT1.row::<Primitive2>(r);
-                        for c in 0..cols {
-                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT1.row::<Primitive2>(r)
+                                + ((0
+                                    + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                        .input_count()) + c) * total_rows] = block[r + c * rows];
                         }
                     }
                 }

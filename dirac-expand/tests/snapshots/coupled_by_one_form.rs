@@ -1755,13 +1755,12 @@ const _: () = {
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (__SLOT0.q, 0),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT0.q + r + ((0) + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1779,16 +1778,14 @@ const _: () = {
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            __SLOT1.q,
-                            0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
-                        ),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT1.q + r
+                                + ((0
+                                    + <Wheel as ::dirac::__private::Named>::NAMES.input_count())
+                                    + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1819,13 +1816,12 @@ const _: () = {
                         &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (__SLOT0.q, 0),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT0.q + r + ((0) + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1842,16 +1838,14 @@ const _: () = {
                         &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            __SLOT1.q,
-                            0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
-                        ),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT1.q + r
+                                + ((0
+                                    + <Wheel as ::dirac::__private::Named>::NAMES.input_count())
+                                    + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1884,13 +1878,12 @@ const _: () = {
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, __SLOT0.q),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0) + r + (__SLOT0.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1908,18 +1901,14 @@ const _: () = {
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0
                                 + <Wheel as ::dirac::__private::Named>::NAMES
-                                    .output_count(),
-                            __SLOT1.q,
-                        ),
-                        out,
-                    );
+                                    .output_count()) + r + (__SLOT1.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -1952,13 +1941,12 @@ const _: () = {
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, __SLOT0.q),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0) + r + (__SLOT0.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -1976,18 +1964,14 @@ const _: () = {
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0
                                 + <Wheel as ::dirac::__private::Named>::NAMES
-                                    .output_count(),
-                            __SLOT1.q,
-                        ),
-                        out,
-                    );
+                                    .output_count()) + r + (__SLOT1.q + c) * total_rows] = block[r
+                                + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -2020,13 +2004,11 @@ const _: () = {
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (0, 0),
-                        out,
-                    );
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0) + r + ((0) + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
             {
@@ -2044,18 +2026,16 @@ const _: () = {
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
-                    ::dirac::__private::place_block(
-                        &block,
-                        rows,
-                        total_rows,
-                        (
-                            0
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[(0
                                 + <Wheel as ::dirac::__private::Named>::NAMES
-                                    .output_count(),
-                            0 + <Wheel as ::dirac::__private::Named>::NAMES.input_count(),
-                        ),
-                        out,
-                    );
+                                    .output_count()) + r
+                                + ((0
+                                    + <Wheel as ::dirac::__private::Named>::NAMES.input_count())
+                                    + c) * total_rows] = block[r + c * rows];
+                        }
+                    }
                 }
             }
         }
@@ -2070,7 +2050,7 @@ const _: () = {
             let total_rows = <Self as ::dirac::__private::Named>::NAMES.output_count();
             ::core::assert_eq!(
                 out.len(), total_rows * < Self as ::dirac::__private::Fixed > ::NC,
-                "output_dlambda: wrong slice length"
+                "{}: wrong slice length", "output_dlambda"
             );
             out.fill(0.0);
             {
@@ -2088,11 +2068,10 @@ const _: () = {
                         &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
                         &mut block,
                     );
-                    let row0 = 0;
                     for c in 0..cols {
-                        let column = __SLOT0.row::<Wheel>(c);
                         for r in 0..rows {
-                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                            out[(0) + r + (__SLOT0.row::<Wheel>(c)) * total_rows] = block[r
+                                + c * rows];
                         }
                     }
                 }
@@ -2112,12 +2091,13 @@ const _: () = {
                         &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
                         &mut block,
                     );
-                    let row0 = 0
-                        + <Wheel as ::dirac::__private::Named>::NAMES.output_count();
                     for c in 0..cols {
-                        let column = __SLOT1.row::<Cart>(c);
                         for r in 0..rows {
-                            out[row0 + r + column * total_rows] = block[r + c * rows];
+                            out[(0
+                                + <Wheel as ::dirac::__private::Named>::NAMES
+                                    .output_count()) + r
+                                + (__SLOT1.row::<Cart>(c)) * total_rows] = block[r
+                                + c * rows];
                         }
                     }
                 }
@@ -2133,7 +2113,7 @@ const _: () = {
             let total_rows = <Self as ::dirac::__private::Fixed>::NC;
             ::core::assert_eq!(
                 out.len(), total_rows * < Self as ::dirac::__private::Named > ::NAMES
-                .input_count(), "av_du: wrong slice length"
+                .input_count(), "{}: wrong slice length", "av_du"
             );
             out.fill(0.0);
             {
@@ -2150,11 +2130,10 @@ const _: () = {
                         &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
                         &mut block,
                     );
-                    let col0 = 0;
-                    for r in 0..rows {
-                        let row = __SLOT0.row::<Wheel>(r);
-                        for c in 0..cols {
-                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT0.row::<Wheel>(r) + ((0) + c) * total_rows] = block[r
+                                + c * rows];
                         }
                     }
                 }
@@ -2173,12 +2152,12 @@ const _: () = {
                         &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
                         &mut block,
                     );
-                    let col0 = 0
-                        + <Wheel as ::dirac::__private::Named>::NAMES.input_count();
-                    for r in 0..rows {
-                        let row = __SLOT1.row::<Cart>(r);
-                        for c in 0..cols {
-                            out[row + (col0 + c) * total_rows] = block[r + c * rows];
+                    for c in 0..cols {
+                        for r in 0..rows {
+                            out[__SLOT1.row::<Cart>(r)
+                                + ((0
+                                    + <Wheel as ::dirac::__private::Named>::NAMES.input_count())
+                                    + c) * total_rows] = block[r + c * rows];
                         }
                     }
                 }
