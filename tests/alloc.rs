@@ -378,6 +378,75 @@ fn steps_with_driven_inputs_do_not_allocate() {
     }
 }
 
+/// A series RLC made of library parts, its source's voltage an input that prescribes a velocity.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(
+    connect(source.p, r.p),
+    connect(r.n, l.p),
+    connect(l.n, c.p),
+    connect(c.n, ground.p),
+    connect(source.n, ground.p)
+)]
+struct TableRlc {
+    source: dirac::components::electrical::VoltageSource,
+    r: dirac::components::electrical::Resistor,
+    l: dirac::components::electrical::Inductor,
+    c: dirac::components::electrical::Capacitor,
+    ground: dirac::components::electrical::Ground,
+}
+
+/// Inputs driven from tables, held and interpolated, with the steps ending at every sample
+/// (a stop every 0.05 s): each method, through many stops, where the velocity the source
+/// prescribes jumps (held) or moves (interpolated).
+#[test]
+fn steps_driven_from_tables_through_stops_do_not_allocate() {
+    use dirac::components::electrical::{Capacitor, Ground, Inductor, Resistor, VoltageSource};
+    use dirac::sources::{Hold, Table};
+    fn run<'m, I: Integrator<TableRlc> + Drive<'m, TableRlc>>(
+        mut integrator: I,
+        source: &'m mut dyn FnMut(f64, &State<TableRlc>, &mut TableRlc),
+        table: &Table,
+        start: &State<TableRlc>,
+    ) -> usize {
+        integrator.drive(source).expect("exclusive");
+        integrator.stop_at(table.times()).expect("finite");
+        integrator.start(0.0, start, 100.0).expect("starts");
+        for _ in 0..5 {
+            integrator.step().expect("steps");
+        }
+        let mut within = start.clone();
+        let before = allocations();
+        for _ in 0..400 {
+            let h = integrator.step().expect("steps");
+            integrator.interpolate(integrator.t() - 0.5 * h, &mut within);
+        }
+        assert!(integrator.t() > 1.0, "through stops: {}", integrator.t());
+        allocations() - before
+    }
+    for hold in [Hold::Zero, Hold::Linear] {
+        let times: Vec<f64> = (0..2000).map(|k| 0.05 * k as f64).collect();
+        let volts: Vec<f64> = times.iter().map(|t| (3.0 * t).sin()).collect();
+        let table = Table::new(times, volts, hold).expect("valid");
+        let mut rlc = TableRlc {
+            source: VoltageSource { u: 0.0 },
+            r: Resistor { r: 0.5 },
+            l: Inductor { l: 1.0 },
+            c: Capacitor { c: 1.0 },
+            ground: Ground {},
+        };
+        let zero = VecQ::<TableRlc>::zeros();
+        let start = consistent_state(&rlc, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+        let u = TableRlc::source_input(VoltageSource::U);
+        let mut source = |t: f64, _: &State<TableRlc>, m: &mut TableRlc| m.set_input(u, table.at(t));
+        let radau = Radau::new(&mut rlc, RadauOptions::tolerances(1e-8, 1e-10)).expect("valid");
+        assert_eq!(run(radau, &mut source, &table, &start), 0, "Radau, {hold:?}");
+        let explicit = Explicit::new(&mut rlc, ExplicitOptions::tolerances(1e-8, 1e-10)).expect("valid");
+        assert_eq!(run(explicit, &mut source, &table, &start), 0, "Explicit, {hold:?}");
+        let variational = Variational::new(&mut rlc, 1e-2, VariationalOptions::default()).expect("valid");
+        assert_eq!(run(variational, &mut source, &table, &start), 0, "Variational, {hold:?}");
+    }
+}
+
 /// Prescribed motion: constraints that depend on time (holonomic and affine velocity rows, in
 /// a primitive and in an interconnection, and an array of them) under both integrators, with
 /// Radau projecting after each step.

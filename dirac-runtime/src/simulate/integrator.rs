@@ -363,11 +363,12 @@ pub(crate) fn check_step_options(
 
 /// An integrator that sets the model's inputs from time and state before every evaluation of
 /// the model, within its steps: a source such as `u0 sin(ω t)`, a table read with linear
-/// interpolation, a continuous feedback. [`Radau`](crate::Radau) offers it
-/// ([`Radau::drive`](crate::Radau::drive), and with the feedback's Jacobian
-/// `Radau::drive_feedback`); a method that does not refuses with [`SimError::Unsupported`].
-/// Every method sets inputs between steps ([`Integrator::set_input`],
-/// [`Integrator::solve_sampled`]).
+/// interpolation or held, a continuous feedback; and that ends its steps at the times where
+/// those inputs jump or bend ([`Drive::stop_at`]), restarting there. Every method offers it
+/// (Radau also with the feedback's Jacobian: `Radau::drive_feedback`). Every method also sets
+/// inputs between steps ([`Integrator::set_input`], [`Integrator::solve_sampled`]). The
+/// facade's guide (`dirac::guide`, "Inputs and controllers") drives a model from a table in
+/// each method.
 pub trait Drive<'m, M: LagrangeDirac>: Integrator<M>
 where
     DefaultAllocator: Storage<M>,
@@ -377,6 +378,16 @@ where
     /// default the method refuses.
     fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
         let _ = drive;
+        Err(SimError::Unsupported { method: Self::NAME, capability: Capability::Drive })
+    }
+
+    /// Ends a step at each of `times` and restarts there, from now on: the instants where the
+    /// inputs jump or bend (a table's samples: [`Table::times`](crate::sources::Table::times)),
+    /// known in advance, so located exactly, and no step straddles one. A drive reads the
+    /// inputs at a stop's time from the left for the step that ends there and from the right
+    /// after it. Set it before `start`; by default the method refuses.
+    fn stop_at(&mut self, times: &[f64]) -> Result<(), SimError> {
+        let _ = times;
         Err(SimError::Unsupported { method: Self::NAME, capability: Capability::Drive })
     }
 }

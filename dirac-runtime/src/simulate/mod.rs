@@ -6,6 +6,7 @@
 //! It uses analysis, the model surface and the algebra; the methods implement its traits.
 
 pub(crate) mod contacts;
+pub(crate) mod drive;
 /// Many simulations of one model on all cores, and sweeps split into jobs.
 pub mod ensemble;
 pub mod events;

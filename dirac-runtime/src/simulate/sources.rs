@@ -5,9 +5,9 @@ use crate::error::SimError;
 /// How a [`Table`] is read between its samples.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Hold {
-    /// The last sample's value until the next sample (zero-order hold). Its jumps are best met
-    /// by restarting there ([`Integrator::solve_sampled`](crate::simulate::integrator::Integrator::solve_sampled)
-    /// at the table's period, or `restart_until` at each sample time).
+    /// The last sample's value until the next sample (zero-order hold). Its jumps are met by
+    /// ending the steps there: [`Drive::stop_at`](crate::Drive::stop_at) with
+    /// [`Table::times`].
     Zero,
     /// The straight line between the two samples around `t`.
     Linear,
@@ -74,7 +74,8 @@ impl Table {
         }
     }
 
-    /// The sample times, where a zero-order hold jumps.
+    /// The sample times, where a zero-order hold jumps and a linear interpolation bends: the
+    /// stops to give [`Drive::stop_at`](crate::Drive::stop_at).
     pub fn times(&self) -> &[f64] {
         &self.times
     }

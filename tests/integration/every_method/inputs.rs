@@ -102,11 +102,12 @@ fn a_shared_model_refuses_changes() {
     });
 }
 
-/// An input set within the steps from time, `u = a sin(Ω t)`: Radau offers it (against the
-/// closed form of the driven spring, `x = x0 cos ωt + a/(m(ω² − Ω²)) (sin Ωt − (Ω/ω) sin ωt)`);
-/// Explicit and the variational integrator refuse it by name.
+/// An input set within the steps from time, `u = a sin(Ω t)`, in each method, against the
+/// closed form of the driven spring, `x = x0 cos ωt + a/(m(ω² − Ω²)) (sin Ωt − (Ω/ω) sin ωt)`.
+/// Measured at t = 4: Radau 3.7e-12, Explicit 6e-13, the variational integrator (h = 1e-3,
+/// the force at each step's midpoint) 3.7e-7.
 #[test]
-fn inputs_within_the_steps_are_driven_where_the_method_offers_it() {
+fn inputs_within_the_steps_are_driven_in_every_method() {
     let (x0, a, big_omega, t_end) = (0.5, 0.8, 1.3, 4.0);
     let w = (K / M).sqrt();
     let exact = x0 * (w * t_end).cos()
@@ -116,38 +117,25 @@ fn inputs_within_the_steps_are_driven_where_the_method_offers_it() {
         |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = a * (big_omega * t).sin();
     let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
     each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
-        match (method, Drive::drive(&mut integrator, &mut source)) {
-            (Method::Radau, Ok(())) => {
-                let solution = integrator
-                    .solve(0.0, &released(x0), t_end, &Sampling::Times(vec![t_end]))
-                    .expect("integrates");
-                let x = solution.last().expect("a sample").q(ForcedSpring::X);
-                assert!((x - exact).abs() < 1e-8, "Radau: x = {x}, not {exact}");
-            }
-            (
-                Method::Explicit | Method::Variational,
-                Err(SimError::Unsupported { method: name, capability }),
-            ) => {
-                assert_eq!(name, method.name());
-                assert_eq!(capability, dirac::Capability::Drive);
-            }
-            (method, other) => panic!("{method:?}: {other:?}"),
-        }
+        Drive::drive(&mut integrator, &mut source).unwrap_or_else(|e| panic!("{method:?}: {e}"));
+        let solution = integrator
+            .solve(0.0, &released(x0), t_end, &Sampling::Times(vec![t_end]))
+            .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+        let x = solution.last().expect("a sample").q(ForcedSpring::X);
+        let bound = if method == Method::Variational { 1e-6 } else { 1e-8 };
+        assert!((x - exact).abs() < bound, "{method:?}: x = {x}, not {exact}");
     });
 }
 
-/// A drive asked of an integrator that holds its model shared: Radau refuses it as it refuses
-/// any change (the drive sets the model), the others as they refuse any drive; nothing runs.
+/// A drive asked of an integrator that holds its model shared: every method refuses it as it
+/// refuses any change (the drive sets the model); nothing runs.
 #[test]
 fn a_drive_on_a_shared_model_is_refused() {
     let mut source = |_: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = 1.0;
     let spring = ForcedSpring { m: M, k: K, f: 0.0 };
     each_integrator!(&spring, Fineness::new(1e-8, 1e-10, 1e-2), |method, integrator| {
         let error = Drive::drive(&mut integrator, &mut source).err();
-        match method {
-            Method::Radau => assert!(matches!(error, Some(SimError::SharedModel { .. })), "{error:?}"),
-            _ => assert!(matches!(error, Some(SimError::Unsupported { .. })), "{method:?}: {error:?}"),
-        }
+        assert!(matches!(error, Some(SimError::SharedModel { .. })), "{method:?}: {error:?}");
     });
     assert_eq!(spring.f, 0.0);
 }

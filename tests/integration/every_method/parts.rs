@@ -8,8 +8,9 @@
 use dirac::components::electrical::{Capacitor, Ground, Inductor, Resistor, StepVoltage, VoltageSource};
 use dirac::components::electromechanical::Emf;
 use dirac::components::rotational::{self as rot, Clutch, IdealGear, Inertia, Torque};
-use dirac::nalgebra::{Matrix2, Vector2};
+use dirac::nalgebra::{Matrix2, Matrix4, Vector2, Vector4};
 use dirac::prelude::*;
+use dirac::sources::{Hold, Table};
 
 use super::{Fineness, Method};
 
@@ -91,6 +92,106 @@ fn a_series_rlc_from_parts_against_its_closed_form() {
             }
         }
     });
+}
+
+/// The series RLC driven by a table of voltages, held or interpolated, with each integrator:
+/// the drive sets the source's input at every evaluation and the steps end at the table's
+/// samples ([`Drive::stop_at`]). Reference, computed here independently of the integrators:
+/// on each interval between samples the source's voltage is `u + s (t − t_k)`, and the state
+/// `(vc, i, u, s)` of `C vc' = i`, `L i' = u − R i − vc`, `u' = s`, `s' = 0` moves by the
+/// matrix exponential of that linear system over the interval; the capacitor's voltage and
+/// the current carry over each sample, the voltage and its slope start afresh from the table.
+/// Measured (rtol 1e-10, h = 1e-3; the largest error over the samples, some inside steps):
+/// held, Radau 9.7e-9, Explicit 1.9e-11, Variational 1.9e-7; interpolated, Radau 2.2e-9,
+/// Explicit 3.2e-11, Variational 1.6e-7. The source's voltage prescribes a velocity: where the
+/// held voltage jumps, the velocities jump with it; where the interpolated one moves, Explicit
+/// takes its rate from the drive.
+#[test]
+fn a_series_rlc_driven_by_a_table_against_its_exact_solution() {
+    let (r, l, c) = (0.5, 1.0, 1.0);
+    let times = vec![0.0, 0.7, 1.5, 2.2, 3.1, 4.0];
+    let volts = vec![1.0, -0.5, 2.0, 0.3, -1.0, 0.5];
+    let t_end = 5.0;
+    let samples = vec![0.35, 0.7, 2.0, 3.1, 3.6, 5.0];
+    for hold in [Hold::Zero, Hold::Linear] {
+        let table = Table::new(times.clone(), volts.clone(), hold).expect("a valid table");
+        // The exact solution at `t`, interval by interval.
+        let a = Matrix4::new(
+            0.0,
+            1.0 / c,
+            0.0,
+            0.0, //
+            -1.0 / l,
+            -r / l,
+            1.0 / l,
+            0.0, //
+            0.0,
+            0.0,
+            0.0,
+            1.0, //
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        );
+        let exact = |t: f64| {
+            let (mut x, mut from) = (Vector4::zeros(), 0.0);
+            for (k, &tk) in times.iter().enumerate() {
+                let next = times.get(k + 1).copied().unwrap_or(f64::INFINITY);
+                let slope = match (hold, times.get(k + 1)) {
+                    (Hold::Linear, Some(&tn)) => (volts[k + 1] - volts[k]) / (tn - tk),
+                    _ => 0.0,
+                };
+                x = (a * (tk - from)).exp() * x;
+                (x[2], x[3], from) = (volts[k], slope, tk);
+                if t <= next {
+                    break;
+                }
+            }
+            (a * (t - from)).exp() * x
+        };
+        let mut circuit = SeriesRlc {
+            source: VoltageSource { u: table.at(0.0) },
+            r: Resistor { r },
+            l: Inductor { l },
+            c: Capacitor { c },
+            ground: Ground {},
+        };
+        let zero = VecQ::<SeriesRlc>::zeros();
+        let start = consistent_state(&circuit, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+        let u = SeriesRlc::source_input(VoltageSource::U);
+        let mut source = |t: f64, _: &State<SeriesRlc>, m: &mut SeriesRlc| m.set_input(u, table.at(t));
+        each_integrator!(&mut circuit, Fineness::new(1e-10, 1e-12, 1e-3), |method, integrator| {
+            // The closure is borrowed by each integrator in turn.
+            integrator.drive(&mut source).expect("an exclusive model");
+            integrator.stop_at(table.times()).expect("finite times");
+            let solution = integrator
+                .solve(0.0, &start, t_end, &Sampling::Times(samples.clone()))
+                .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+            let vc = solution.output(SeriesRlc::c_output(Capacitor::V));
+            let current = solution.output(SeriesRlc::l_output(Inductor::I));
+            let bound = match method {
+                Method::Variational => 1e-6,
+                Method::Radau => 3e-8,
+                Method::Explicit => 1e-9,
+            };
+            for (k, &t) in samples.iter().enumerate() {
+                let x = exact(t);
+                let error = (vc[k] - x[0]).abs().max((current[k] - x[1]).abs());
+                assert!(
+                    error < bound,
+                    "{method:?}, {hold:?} at {t}: vc {} i {} against {x}",
+                    vc[k],
+                    current[k]
+                );
+            }
+            // Every stop inside the span is a step's end.
+            let steps = integrator.solve(0.0, &start, t_end, &Sampling::Steps).expect("integrates");
+            for stop in &times[1..] {
+                assert!(steps.t().contains(stop), "{method:?}: no step ends at {stop}");
+            }
+        });
+    }
 }
 
 /// A DC motor (armature resistance and inductance, EMF, rotor) driving a load through a

@@ -99,6 +99,9 @@ where
     zero_lambda: VecC<M>,
     lvt: VecQ<M>,
     rate: VecC<M>,
+    /// The rate at which driven inputs move the constraints' prescribed part, `∂b/∂u · u̇`,
+    /// added to the model's own `∂(A v + b)/∂t` (zero unless a drive sets such inputs).
+    pub input_rate: VecC<M>,
     phi: VecH<M>,
     /// The constraint rows and rates at a projected state.
     a_projected: MatCQ<M>,
@@ -141,6 +144,7 @@ where
             zero_lambda: sizes.zeros_c::<M>(),
             lvt: sizes.zeros_q::<M>(),
             rate: sizes.zeros_c::<M>(),
+            input_rate: sizes.zeros_c::<M>(),
             phi: sizes.zeros_h::<M>(),
             residual: sizes.zeros_c::<M>(),
             x: sizes.zeros_k::<M>(),
@@ -258,8 +262,8 @@ where
             model.constraint_matrix(t, q, &mut self.a);
             model.dav_dq(t, q, v, &mut self.dav);
             model.dav_dt(t, q, v, &mut self.rate);
-            for (x, r) in x[n..].iter_mut().zip(self.rate.iter()) {
-                *x = -r;
+            for ((x, r), u) in x[n..].iter_mut().zip(self.rate.iter()).zip(self.input_rate.iter()) {
+                *x = -r - u;
             }
             M::Algebra::cq_mul(&self.dav, -1.0, v.as_slice(), &mut x[n..]);
         }

@@ -24,10 +24,14 @@ where
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        // A drive sets the inputs at the start before the state is checked against them.
+        let stretch = self.driver.stops.stretch(t0, t_end);
+        self.driver.apply_state(&mut self.model, (t0, stretch), state);
         self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
         self.state.clone_from(state);
         self.previous.clone_from(state);
-        (self.t, self.t_previous, self.h_last, self.t_end) = (t0, t0, 0.0, t_end);
+        (self.t, self.t_previous, self.h_last) = (t0, t0, 0.0);
+        self.t_end = self.driver.stops.stretch(t0, t_end);
         self.stats = ExplicitStats::default();
         self.accelerations.factorizations = 0;
         self.forget();
@@ -54,12 +58,11 @@ where
             return Ok(());
         }
         self.restarts.resume(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
-        self.t_end = t_end;
-        self.forget();
-        self.evaluate_start()?;
-        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
-        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
-        Ok(())
+        self.resume(t_end)
+    }
+
+    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
+        self.driver.apply_state(&mut self.model, (t, self.t_end), state);
     }
 
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
@@ -93,10 +96,21 @@ where
     }
 
     fn end(&self) -> f64 {
-        self.t_end
+        self.driver.stops.goal()
     }
 
     fn step(&mut self) -> Result<f64, SimError> {
+        if self.driver.stops.due(self.t, self.t_end) {
+            // A stop: the inputs jump or bend here; the first stage is evaluated afresh. An
+            // input that prescribes a velocity (a voltage source's) makes it jump: the
+            // velocities are put back on the constraints by the least change the inertia
+            // allows, a constraint impulse, and the start evaluated there.
+            self.resume(self.driver.stops.goal())?;
+            let (t, s) = (self.t, &mut self.state);
+            if self.accelerations.project(self.model.get(), t, &mut s.q, &mut s.v).moved {
+                self.evaluate_start()?;
+            }
+        }
         let h = self.attempt()?;
         self.t_previous = self.t;
         self.h_last = h;
@@ -134,7 +148,7 @@ where
     }
 
     fn finished(&self) -> bool {
-        self.t >= self.t_end
+        self.t >= self.driver.stops.goal()
     }
 
     fn t(&self) -> f64 {
@@ -155,6 +169,14 @@ where
         }
         let theta = self.motion_at(t, out);
         let model = self.model.get();
+        if self.driver.driven() {
+            // The inputs at `t` are not set here (the model is only read): the multipliers are
+            // interpolated between the step's ends and the momenta follow from the velocities.
+            out.lambda.copy_from(&self.previous.lambda);
+            out.lambda.axpy(theta, &self.state.lambda, 1.0 - theta);
+            model.dl_dv(t, &out.q, &out.v, &mut out.p);
+            return;
+        }
         let mut probe = self.probe.borrow_mut();
         let (accelerations, acceleration) = &mut *probe;
         let mut determined = accelerations.settle(model, t, &out.q, &mut out.v)
@@ -191,6 +213,17 @@ impl<M: LagrangeDirac> Explicit<'_, M>
 where
     DefaultAllocator: Storage<M>,
 {
+    /// Starts again from the state reached towards `goal`, its accelerations evaluated afresh
+    /// and the step-size history dropped: after a change of the model, or at a stop.
+    fn resume(&mut self, goal: f64) -> Result<(), SimError> {
+        self.t_end = self.driver.stops.stretch(self.t, goal);
+        self.forget();
+        self.evaluate_start()?;
+        (self.error_old, self.rejected_last) = (ERROR_OLD_START, false);
+        (self.stiff_steps, self.nonstiff_steps) = (0, 0);
+        Ok(())
+    }
+
     /// The dense output's positions and velocities at `t` within the last step, into `out`;
     /// returns `t`'s fraction of the step.
     fn motion_at(&self, t: f64, out: &mut State<M>) -> f64 {
@@ -213,6 +246,17 @@ where
     }
 }
 
-/// Inputs are set between steps only ([`Integrator::set_input`]): asked for a drive, the
-/// method refuses with [`SimError::Unsupported`].
-impl<'m, M: LagrangeDirac> Drive<'m, M> for Explicit<'m, M> where DefaultAllocator: Storage<M> {}
+/// Inputs set before every stage's evaluation; between steps, the multipliers of the dense
+/// output are interpolated (the model is not evaluated there).
+impl<'m, M: LagrangeDirac> Drive<'m, M> for Explicit<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
+        self.driver.set(&mut self.model, drive, self.t)
+    }
+
+    fn stop_at(&mut self, times: &[f64]) -> Result<(), SimError> {
+        self.driver.stops.set(times)
+    }
+}

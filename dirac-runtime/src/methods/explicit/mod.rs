@@ -54,6 +54,7 @@ use crate::model::LagrangeDirac;
 use crate::model::configuration;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecC, VecQ};
+use crate::simulate::drive::Driver;
 use crate::simulate::held::Held;
 use crate::simulate::integrator::rough_power;
 use crate::simulate::restart::Restarts;
@@ -136,6 +137,8 @@ where
     stats: ExplicitStats,
     /// What a restart checks after the model was handed out for a change.
     restarts: Restarts,
+    /// The drive of the inputs within the steps, and the stops where they jump or bend.
+    driver: Driver<'m, M>,
 }
 
 impl<'m, M: LagrangeDirac> Explicit<'m, M>
@@ -177,6 +180,7 @@ where
             nonstiff_steps: 0,
             stats: ExplicitStats::default(),
             restarts: Restarts::default(),
+            driver: Driver::default(),
         })
     }
 
@@ -210,8 +214,11 @@ where
     /// restart, an accepted step that was projected), with the cause named if the motion is
     /// not determined there.
     fn evaluate_start(&mut self) -> Result<(), SimError> {
-        let model = self.model.get();
         let s = &mut self.state;
+        self.driver.apply(&mut self.model, (self.t, self.t_end), &s.q, &s.v);
+        let rate = &mut self.accelerations.input_rate;
+        self.driver.input_rate(&mut self.model, (self.t, self.t_end), (&s.q, &s.v), rate);
+        let model = self.model.get();
         self.stats.evaluations += 1;
         let mut determined = false;
         for attempt in 0..2 {
@@ -296,7 +303,6 @@ where
     /// `q_new`, `v_new`, and the scaled local error (`None` with the reason where a stage is
     /// not determined).
     fn stages(&mut self, h: f64) -> Result<f64, Rejection> {
-        let model = self.model.get();
         let n = self.sizes.nq;
         let s = &self.state;
         self.kq[0].copy_from(&s.v);
@@ -308,6 +314,10 @@ where
             configuration::advance_by::<M>((&s.q, &s.v), h, &A[i][..i], k, stage);
             self.stats.evaluations += 1;
             let t = self.t + C[i] * h;
+            self.driver.apply(&mut self.model, (t, self.t_end), &self.q_stage, &self.v_new);
+            let (stage, rate) = ((&self.q_stage, &self.v_new), &mut self.accelerations.input_rate);
+            self.driver.input_rate(&mut self.model, (t, self.t_end), stage, rate);
+            let model = self.model.get();
             if !self.accelerations.settle(model, t, &self.q_stage, &mut self.v_new) {
                 return Err(Rejection::Singular);
             }
@@ -387,7 +397,7 @@ where
                 return Err(SimError::TooManySteps {
                     max_steps: self.options.max_steps,
                     t: self.t,
-                    t_end: self.t_end,
+                    t_end: self.driver.stops.goal(),
                 });
             }
             let fixed = self.options.fixed_step;

@@ -221,4 +221,8 @@ where
     fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
         Radau::drive(self, drive)
     }
+
+    fn stop_at(&mut self, times: &[f64]) -> Result<(), SimError> {
+        self.residual.stops.set(times)
+    }
 }

@@ -50,6 +50,9 @@ where
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        // A drive sets the inputs at the start before the state is checked against them.
+        self.residual.stretch_end = self.residual.stops.stretch(t0, t_end);
+        self.residual.apply_state(&mut self.model, t0, state);
         self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
         state.write_y(&mut self.y);
         self.state.clone_from(state);
@@ -106,19 +109,25 @@ where
             self.h = 1e-3 * self.dense.h;
         }
         self.dense.h = 0.0;
-        self.begin(t, self.t_end, false)
+        self.begin(t, self.residual.stops.goal(), false)
     }
 
     fn end(&self) -> f64 {
-        self.t_end
+        self.residual.stops.goal()
     }
 
     fn step(&mut self) -> Result<f64, SimError> {
+        if self.residual.stops.due(self.t, self.t_end) {
+            // A stop: the inputs jump or bend here, so the stages extrapolated from the last
+            // step are dropped and the rates evaluated afresh with the inputs after it.
+            self.h = self.h.max(self.unclipped);
+            self.begin(self.t, self.residual.stops.goal(), false)?;
+        }
         self.attempt()
     }
 
     fn finished(&self) -> bool {
-        self.t >= self.t_end
+        self.t >= self.residual.stops.goal()
     }
 
     fn t(&self) -> f64 {

@@ -205,7 +205,7 @@ where
                 return Err(SimError::TooManySteps {
                     max_steps: self.options.max_steps,
                     t: self.t,
-                    t_end: self.t_end,
+                    t_end: self.residual.stops.goal(),
                 });
             }
             if self.t + self.h >= self.t_end - 1e-12 * self.h {
@@ -358,7 +358,9 @@ where
     /// replaces it) and refactors only if the step size changed.
     fn begin(&mut self, t0: f64, t_end: f64, fresh: bool) -> Result<(), SimError> {
         self.t = t0;
-        self.t_end = t_end;
+        self.t_end = self.residual.stops.stretch(t0, t_end);
+        self.residual.stretch_end = self.t_end;
+        let t_end = self.t_end;
         self.h = self.h.min(t_end - t0).min(self.options.max_step);
         self.unclipped = 0.0;
         self.controller.restart();

@@ -8,11 +8,9 @@ use crate::model::blocks::ResidualBlocks;
 use crate::model::flat::residual;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecY};
+pub(crate) use crate::simulate::drive::DriveFn;
+use crate::simulate::drive::Stops;
 use crate::simulate::held::Held;
-
-/// Sets a model's inputs from time and state before each evaluation. Borrowed, not boxed: an
-/// integrator holds nothing that needs dropping at the end of its borrows.
-pub(crate) type DriveFn<'m, M> = &'m mut dyn FnMut(f64, &State<M>, &mut M);
 
 /// Evaluates a model's flat residual `f(t, y)` without allocating: through the model's own
 /// [`LagrangeDirac::residual`](crate::model::LagrangeDirac::residual) when its sizes are fixed (its
@@ -25,6 +23,10 @@ where
     scratch: Option<(State<M>, ResidualBlocks<M>)>,
     /// The drive of the inputs and the state it reads, when there is one.
     drive: Option<(DriveFn<'m, M>, State<M>)>,
+    /// The times where the inputs jump or bend, and the end of the stretch between them that
+    /// the integration is in: inputs at its end are read from the left.
+    pub stops: Stops,
+    pub stretch_end: f64,
 }
 
 impl<'m, M: LagrangeDirac> Residual<'m, M>
@@ -36,7 +38,7 @@ where
         use nalgebra::Dim;
         let fixed = M::Nq::try_to_usize().is_some() && M::Nc::try_to_usize().is_some();
         let scratch = (!fixed).then(|| (State::with_sizes(*sizes), ResidualBlocks::with_sizes(sizes)));
-        Residual { scratch, drive: None }
+        Residual { scratch, drive: None, stops: Stops::default(), stretch_end: f64::INFINITY }
     }
 
     /// Sets the inputs before every evaluation from now on.
@@ -56,7 +58,7 @@ where
             && let Some(model) = model.get_mut()
         {
             state.read_y(y);
-            drive(t, state, model);
+            drive(self.stops.read_at(t, self.stretch_end), state, model);
         }
     }
 
@@ -65,7 +67,7 @@ where
         if let Some((drive, _)) = &mut self.drive
             && let Some(model) = model.get_mut()
         {
-            drive(t, state, model);
+            drive(self.stops.read_at(t, self.stretch_end), state, model);
         }
     }
 

@@ -57,6 +57,7 @@ use crate::model::configuration;
 use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage, VecC};
+use crate::simulate::drive::Driver;
 use crate::simulate::held::Held;
 use crate::simulate::integrator::{Drive, Integrator};
 use crate::simulate::restart::{Restarts, constraint_violation};
@@ -108,6 +109,8 @@ where
     stats: VariationalStats,
     /// What a restart checks after the model was handed out for a change.
     restarts: Restarts,
+    /// The drive of the inputs within the steps, and the stops where they jump or bend.
+    driver: Driver<'m, M>,
 }
 
 impl<'m, M: LagrangeDirac> Variational<'m, M>
@@ -155,6 +158,7 @@ where
             sizes,
             stats: VariationalStats::default(),
             restarts: Restarts::default(),
+            driver: Driver::default(),
         })
     }
 }
@@ -181,7 +185,8 @@ where
     /// Steps from `self.state` at `t0` towards `t_end` on a new grid: the energy reference
     /// and the work of the forces start again, and a separable model's mass matrix is
     /// factored again (a change of the model may have changed it).
-    fn begin(&mut self, t0: f64, t_end: f64) -> Result<(), SimError> {
+    fn begin(&mut self, t0: f64, goal: f64) -> Result<(), SimError> {
+        let t_end = self.driver.stops.stretch(t0, goal);
         self.total = self.steps_to(t0, t_end)?;
         self.taken = 0;
         self.t0 = t0;
@@ -294,6 +299,10 @@ where
     /// instructions).
     #[inline(always)]
     fn advance(&mut self, h: f64) -> Result<(), SimError> {
+        // The forces act at the step's midpoint: a drive sets the inputs for that time (from
+        // the state at the step's start), second order as the method is.
+        let s = &self.state;
+        self.driver.apply(&mut self.model, (self.t + 0.5 * h, self.t_end), &s.q, &s.v);
         self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
         self.work.v.copy_from(&self.state.v);
         self.work.big_lambda.copy_from(&self.work.gamma);
@@ -432,6 +441,9 @@ where
     }
 
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError> {
+        // A drive sets the inputs at the start before the state is checked against them.
+        let stretch = self.driver.stops.stretch(t0, t_end);
+        self.driver.apply_state(&mut self.model, (t0, stretch), state);
         self.restarts.start(self.model.get(), (t0, t_end), state, 1e-8)?;
         self.state.clone_from(state);
         self.work.big_lambda.fill(0.0);
@@ -479,7 +491,11 @@ where
     }
 
     fn end(&self) -> f64 {
-        self.t_end
+        self.driver.stops.goal()
+    }
+
+    fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
+        self.driver.apply_state(&mut self.model, (t, self.t_end), state);
     }
 
     /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
@@ -490,6 +506,10 @@ where
     /// as symplectic and of the same order, counted in [`VariationalStats::substeps`].
     #[inline]
     fn step(&mut self) -> Result<f64, SimError> {
+        if self.taken >= self.total && self.driver.stops.due(self.t, self.t_end) {
+            // A stop: a new grid from here to the next one (or the end).
+            self.begin(self.t, self.driver.stops.goal())?;
+        }
         let (h, intervals) = self.next_step();
         self.t_previous = self.t;
         self.previous.clone_from(&self.state);
@@ -517,7 +537,7 @@ where
 
     /// Whether the end time has been reached.
     fn finished(&self) -> bool {
-        self.taken >= self.total
+        self.taken >= self.total && self.t_end >= self.driver.stops.goal()
     }
 
     fn t(&self) -> f64 {
@@ -592,6 +612,17 @@ where
     }
 }
 
-/// Inputs are set between steps only ([`Integrator::set_input`]): asked for a drive, the
-/// method refuses with [`SimError::Unsupported`].
-impl<'m, M: LagrangeDirac> Drive<'m, M> for Variational<'m, M> where DefaultAllocator: Storage<M> {}
+/// Inputs set once a step, at its midpoint, where the discrete forces act; a step to a time
+/// within the last one ([`Integrator::state_at`]) reads the inputs as they were last set.
+impl<'m, M: LagrangeDirac> Drive<'m, M> for Variational<'m, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn drive(&mut self, drive: &'m mut dyn FnMut(f64, &State<M>, &mut M)) -> Result<(), SimError> {
+        self.driver.set(&mut self.model, drive, self.t)
+    }
+
+    fn stop_at(&mut self, times: &[f64]) -> Result<(), SimError> {
+        self.driver.stops.set(times)
+    }
+}
