@@ -16,6 +16,13 @@ pub trait Parameters: LagrangeDirac
 where
     DefaultAllocator: Storage<Self>,
 {
+    /// How many parameters the model has: those its names list
+    /// ([`parameter_names`](crate::model::Named::parameter_names)). Known from the type, except
+    /// for a composite with arrays, whose arrays' lengths count.
+    fn parameter_count(&self) -> usize {
+        Self::NAMES.parameter_count()
+    }
+
     /// The value of parameter `k` (an index into
     /// [`parameter_names`](crate::model::Named::parameter_names)). The derive implements it; it
     /// panics if the model has no parameter `k`.
@@ -64,7 +71,7 @@ where
         lambda: &VecC<Self>,
         out: &mut [ResidualBlocks<Self>],
     ) {
-        let count = Self::NAMES.parameter_count();
+        let count = self.parameter_count();
         for (k, out) in out[..count].iter_mut().enumerate() {
             self.residual_blocks_dtheta(k, t, q, v, lambda, out);
         }

@@ -290,3 +290,150 @@ impl Large<'_> {
         }
     }
 }
+
+impl Large<'_> {
+    /// The parameters of a composite with arrays: its subsystems', in field order and each
+    /// array element in turn, named by their paths (`cells[3].c`). `parameter_names` for the
+    /// `Named` impl, and the `Parameters` impl's methods: each finds the subsystem that holds
+    /// parameter `k` by the subsystems' parameter counts, and calls it there with its own
+    /// arguments gathered, writing its derivatives in place and zero elsewhere (a subsystem's
+    /// parameter enters no other subsystem's equations and no connection).
+    pub(super) fn parameters(&self) -> (TokenStream, TokenStream) {
+        let p = rt();
+        let per_member = |body: &dyn Fn(&syn::Type, TokenStream) -> TokenStream| -> TokenStream {
+            self.composite
+                .subsystems
+                .iter()
+                .enumerate()
+                .map(|(f, s)| {
+                    let (field, ty, fl) = (&s.ident, &s.ty, lit(f));
+                    let count = self.count(f);
+                    let sub = if s.array {
+                        quote! { self.#field[__e] }
+                    } else {
+                        quote! { self.#field }
+                    };
+                    let body = body(ty, sub);
+                    quote! {
+                        for __e in 0..#count {
+                            let __n = <#ty as #p::Named>::NAMES.parameter_count();
+                            if __k < __n {
+                                let __s = __pl.slot(#fl, __e);
+                                #body
+                            }
+                            __k -= __n;
+                        }
+                    }
+                })
+                .collect()
+        };
+        let names = self.composite.subsystems.iter().map(|s| {
+            let (field, ty) = (&s.ident, &s.ty);
+            let name = syn::ext::IdentExt::unraw(field).to_string();
+            let (count, prefix) = if s.array {
+                (quote! { self.#field.len() }, quote! { ::std::format!("{}[{}].", #name, __e) })
+            } else {
+                (quote! { 1 }, quote! { ::std::format!("{}.", #name) })
+            };
+            quote! {
+                for __e in 0..#count {
+                    let __prefix = #prefix;
+                    for n in <#ty as #p::Named>::NAMES.parameter_names() {
+                        out.push(__prefix.clone() + &n);
+                    }
+                }
+            }
+        });
+        let counts = self.composite.subsystems.iter().enumerate().map(|(f, s)| {
+            let (ty, count) = (&s.ty, self.count(f));
+            quote! { __total += #count * <#ty as #p::Named>::NAMES.parameter_count(); }
+        });
+        let value = per_member(&|_, sub| quote! { return #sub.parameter_value(__k); });
+        let set = per_member(&|_, sub| quote! { return #sub.set_parameter_value(__k, value); });
+        let blocks = per_member(&|ty, sub| {
+            quote! {
+                let mut o = #p::ResidualBlocks::<#ty>::zeros();
+                let (__q, __v) = (#p::gather_q::<#ty, Self>(q, &__s), #p::gather_q::<#ty, Self>(v, &__s));
+                let __lambda = #p::gather_c::<#ty, Self>(lambda, &__s);
+                #sub.residual_blocks_dtheta(__k, t, &__q, &__v, &__lambda, &mut o);
+                #p::scatter_q::<#ty, Self>(&o.momentum_rate, &__s, &mut out.momentum_rate);
+                #p::scatter_q::<#ty, Self>(&o.dl_dv, &__s, &mut out.dl_dv);
+                #p::scatter_c::<#ty, Self>(&o.constraint_velocity, &__s, &mut out.constraint_velocity);
+                return;
+            }
+        });
+        let holonomic = per_member(&|ty, sub| {
+            quote! {
+                let mut o = #p::VecH::<#ty>::zeros();
+                #sub.holonomic_dtheta(__k, t, &#p::gather_q::<#ty, Self>(q, &__s), &mut o);
+                #p::scatter_h::<#ty, Self>(&o, &__s, out);
+                return;
+            }
+        });
+        let missing = quote! {
+            ::core::panic!("the model has no parameter {}: it has {}", k, #p::Parameters::parameter_count(self))
+        };
+        let named = quote! {
+            #[allow(unused_variables)]
+            fn parameter_names(&self) -> ::std::vec::Vec<::std::string::String> {
+                let mut out = ::std::vec::Vec::new();
+                #(#names)*
+                out
+            }
+        };
+        let parameters = quote! {
+            fn parameter_count(&self) -> ::core::primitive::usize {
+                let mut __total = 0;
+                #(#counts)*
+                __total
+            }
+
+            #[allow(unused_variables, unused_mut, unreachable_code)]
+            fn parameter_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
+                let (__pl, mut __k) = (self.__placement(), k);
+                #value
+                #missing
+            }
+
+            #[allow(unused_variables, unused_mut, unreachable_code)]
+            fn set_parameter_value(&mut self, k: ::core::primitive::usize, value: ::core::primitive::f64) {
+                let (__pl, mut __k) = (self.__placement(), k);
+                #set
+                #missing
+            }
+
+            #[allow(unused_variables, unused_mut, unreachable_code)]
+            fn residual_blocks_dtheta(
+                &self,
+                k: ::core::primitive::usize,
+                t: ::core::primitive::f64,
+                q: &#p::VecQ<Self>,
+                v: &#p::VecQ<Self>,
+                lambda: &#p::VecC<Self>,
+                out: &mut #p::ResidualBlocks<Self>,
+            ) {
+                out.momentum_rate.fill(0.0);
+                out.dl_dv.fill(0.0);
+                out.constraint_velocity.fill(0.0);
+                let (__pl, mut __k) = (self.__placement(), k);
+                #blocks
+                #missing
+            }
+
+            #[allow(unused_variables, unused_mut, unreachable_code)]
+            fn holonomic_dtheta(
+                &self,
+                k: ::core::primitive::usize,
+                t: ::core::primitive::f64,
+                q: &#p::VecQ<Self>,
+                out: &mut #p::VecH<Self>,
+            ) {
+                out.fill(0.0);
+                let (__pl, mut __k) = (self.__placement(), k);
+                #holonomic
+                #missing
+            }
+        };
+        (named, parameters)
+    }
+}

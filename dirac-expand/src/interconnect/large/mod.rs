@@ -248,6 +248,7 @@ pub fn implementation(
     let shape = large.shape();
     let methods = large.methods();
     let (names, ports, equations) = large.names();
+    let (parameter_names, parameters) = large.parameters();
     let (io_names, inputs) = (large.io_names(), large.input_methods());
     let inherent = large.inherent_items();
     let (consts, counts) = large.consts();
@@ -289,6 +290,7 @@ pub fn implementation(
                 };
                 #names
                 #io_names
+                #parameter_names
             }
 
             #[automatically_derived]
@@ -313,7 +315,9 @@ pub fn implementation(
             }
 
             #[automatically_derived]
-            impl #p::Parameters for #ident #bounds {}
+            impl #p::Parameters for #ident #bounds {
+                #parameters
+            }
 
             #[automatically_derived]
             impl #p::Hybrid for #ident #bounds {}

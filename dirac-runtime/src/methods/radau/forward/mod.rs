@@ -173,7 +173,8 @@ where
         };
         let coupled = Coupled::new(&work.layout);
         let asked = wrt.iter().filter(|w| matches!(w, Wrt::Parameter(_))).count();
-        let count = M::NAMES.parameter_count();
+        // From the model: a composite with arrays has as many as its arrays' lengths make.
+        let count = model.parameter_names().len();
         let together = asked >= 2 && 2 * asked >= count;
         let all = if together {
             (0..count).map(|_| ResidualBlocks::with_sizes(&sizes)).collect()
