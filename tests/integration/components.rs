@@ -269,10 +269,29 @@ pub struct RcLadder {
     pub ground: Ground,
 }
 
+/// The RC ladder's node voltages at `t` after 1 V is switched on at rest, from its nodal
+/// equations `C v' = −G v + g₀ u` (`C` diagonal, `G` the conductances' tridiagonal matrix,
+/// written here from the resistances `r` and capacitances `c`): `v(t) = (I − e^{At}) v∞` with
+/// `A = −C⁻¹G` and `v∞ = −A⁻¹ b = 1` at every node.
+fn ladder_response(r: &[f64], c: &[f64], t: f64) -> DMatrix<f64> {
+    let cells = r.len();
+    // Node k sits between series[k] and series[k + 1]; the last node ends the ladder.
+    let mut g = DMatrix::<f64>::zeros(cells, cells);
+    for k in 0..cells {
+        g[(k, k)] += 1.0 / r[k];
+        if k + 1 < cells {
+            g[(k, k)] += 1.0 / r[k + 1];
+            g[(k, k + 1)] -= 1.0 / r[k + 1];
+            g[(k + 1, k)] -= 1.0 / r[k + 1];
+        }
+    }
+    let a = DMatrix::from_fn(cells, cells, |i, j| -g[(i, j)] / c[i]);
+    (DMatrix::identity(cells, cells) - (a * t).exp()) * DMatrix::from_element(cells, 1, 1.0)
+}
+
 /// Parameters of parts in an array are set per instance and checked by their dotted path. The
-/// ladder's node voltages against the matrix exponential of its nodal equations,
-/// `C v' = −G v + g₀ u` (`C` diagonal, `G` the conductances' tridiagonal matrix, written here
-/// from the resistances): Radau at 1e-11 within 1e-9.
+/// ladder's node voltages against the matrix exponential of its nodal equations
+/// ([`ladder_response`]): Radau at 1e-11 within 1e-9.
 #[test]
 fn parts_in_arrays_have_their_own_parameters() {
     let cells = 4;
@@ -291,20 +310,7 @@ fn parts_in_arrays_have_their_own_parameters() {
         .expect("valid")
         .solve(0.0, &start, t, &Sampling::Times(vec![t]))
         .expect("integrates");
-    // Node k sits between series[k] and series[k + 1]; the last node ends the ladder.
-    let mut g = DMatrix::<f64>::zeros(cells, cells);
-    for k in 0..cells {
-        g[(k, k)] += 1.0 / r[k];
-        if k + 1 < cells {
-            g[(k, k)] += 1.0 / r[k + 1];
-            g[(k, k + 1)] -= 1.0 / r[k + 1];
-            g[(k + 1, k)] -= 1.0 / r[k + 1];
-        }
-    }
-    let a = DMatrix::from_fn(cells, cells, |i, j| -g[(i, j)] / c[i]);
-    // With u = 1 from rest: v(t) = (I − e^{At}) v∞, v∞ = −A⁻¹ b = 1 at every node.
-    let v_inf = DMatrix::from_element(cells, 1, 1.0);
-    let expected = (DMatrix::identity(cells, cells) - (a * t).exp()) * v_inf;
+    let expected = ladder_response(&r, &c, t);
     for k in 0..cells {
         let v = solution.column(&format!("out(shunts[{k}].v)")).expect("an output")[0];
         assert!((v - expected[k]).abs() < 1e-9, "node {k}: {v} against {}", expected[k]);
@@ -322,27 +328,15 @@ fn parts_in_arrays_have_their_own_parameters() {
 /// Parameters of parts in arrays are sensitivities by their paths (`series[1].r`), two at a
 /// time (which takes the path that evaluates every parameter's derivatives at once) and one
 /// alone. Reference: central differences (relative step 1e-5) of the nodal equations' exact
-/// solution, `v(t) = (I − e^{At}) 1` (as in the test above), computed here without the
-/// integrator; asserted within 1e-7 at every node (Radau at 1e-11).
+/// solution ([`ladder_response`]), computed without the integrator; asserted within 1e-7 at
+/// every node (Radau at 1e-11).
 #[test]
 fn parameters_of_parts_in_arrays_are_sensitivities_by_their_paths() {
     let cells = 4;
     let r: Vec<f64> = (0..cells).map(|k| 1.0 + 0.5 * k as f64).collect();
     let c: Vec<f64> = (0..cells).map(|k| 0.2 + 0.1 * k as f64).collect();
     let t = 2.0;
-    let exact = |r: &[f64], c: &[f64]| {
-        let mut g = DMatrix::<f64>::zeros(cells, cells);
-        for k in 0..cells {
-            g[(k, k)] += 1.0 / r[k];
-            if k + 1 < cells {
-                g[(k, k)] += 1.0 / r[k + 1];
-                g[(k, k + 1)] -= 1.0 / r[k + 1];
-                g[(k + 1, k)] -= 1.0 / r[k + 1];
-            }
-        }
-        let a = DMatrix::from_fn(cells, cells, |i, j| -g[(i, j)] / c[i]);
-        (DMatrix::identity(cells, cells) - (a * t).exp()) * DMatrix::from_element(cells, 1, 1.0)
-    };
+    let exact = |r: &[f64], c: &[f64]| ladder_response(r, c, t);
     let model = RcLadder {
         source: VoltageSource { u: 1.0 },
         series: r.iter().map(|&r| Resistor { r }).collect(),

@@ -42,6 +42,11 @@ where
     lvt: VecQ<M>,
     lvq: MatQQ<M>,
     fv: MatQQ<M>,
+    /// `L_vq` and `∂F/∂v` where the matrix was last factored: the factorisation holds while
+    /// they stay the same (linear forces, such as resistors').
+    factored_lvq: MatQQ<M>,
+    factored_fv: MatQQ<M>,
+    factored: bool,
     g: Vec<f64>,
     residual: Vec<f64>,
     lu: Lu<f64, Dyn>,
@@ -96,6 +101,9 @@ where
             lvt: sizes.zeros_q::<M>(),
             lvq: M::Algebra::zeros_qq(&shape),
             fv: M::Algebra::zeros_qq(&shape),
+            factored_lvq: M::Algebra::zeros_qq(&shape),
+            factored_fv: M::Algebra::zeros_qq(&shape),
+            factored: false,
             g: vec![0.0; n],
             residual: vec![0.0; k],
             lu: Lu::new(k),
@@ -136,6 +144,12 @@ where
         model.l_vq(t, q, v, &mut self.lvq);
         model.force_dv(t, q, v, &mut self.fv);
         let (lvq, fv) = (M::Algebra::qq_values(&self.lvq), M::Algebra::qq_values(&self.fv));
+        if self.factored
+            && lvq == M::Algebra::qq_values(&self.factored_lvq)
+            && fv == M::Algebra::qq_values(&self.factored_fv)
+        {
+            return Ok(());
+        }
         let n = self.g.len();
         let k = self.basis.ncols();
         let basis = self.basis.as_slice();
@@ -157,7 +171,10 @@ where
                 matrix[(a, b)] = sum;
             }
         }
-        self.lu.factor().map_err(|_| ())
+        self.factored = self.lu.factor().is_ok();
+        M::Algebra::qq_values_mut(&mut self.factored_lvq).copy_from_slice(lvq);
+        M::Algebra::qq_values_mut(&mut self.factored_fv).copy_from_slice(fv);
+        if self.factored { Ok(()) } else { Err(()) }
     }
 
     /// Solves `Nᵀ (∂L/∂q + F − L_vq v − ∂²L/∂v∂t) = 0` for the velocities along `N` at

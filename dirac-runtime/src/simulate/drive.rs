@@ -56,12 +56,14 @@ impl Stops {
     }
 
     /// The end the integration is heading for.
+    #[inline]
     pub fn goal(&self) -> f64 {
         self.goal
     }
 
     /// Whether the stretch that ends at `end` ended at a stop short of the goal: the
     /// integrator, at `end`, restarts there towards the goal.
+    #[inline]
     pub fn due(&self, t: f64, end: f64) -> bool {
         t >= end && end < self.goal
     }
@@ -146,6 +148,7 @@ where
     }
 
     /// Whether a drive sets the model's inputs.
+    #[inline]
     pub fn driven(&self) -> bool {
         self.drive.is_some()
     }

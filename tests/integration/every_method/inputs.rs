@@ -1,6 +1,6 @@
 //! Inputs through every integrator: set between steps (by hand, by `solve_sampled`), refused
-//! on a model held shared, and set within the steps by a drive where the method offers one
-//! (Radau; the others refuse by name). References: the forced spring `m ẍ = −k x + u` solved
+//! on a model held shared, and set within the steps by a drive, with stops where they jump
+//! (every method). References: the forced spring `m ẍ = −k x + u` solved
 //! piecewise in closed form for an input held constant over each interval.
 
 use dirac::prelude::*;
@@ -138,4 +138,32 @@ fn a_drive_on_a_shared_model_is_refused() {
         assert!(matches!(error, Some(SimError::SharedModel { .. })), "{method:?}: {error:?}");
     });
     assert_eq!(spring.f, 0.0);
+}
+
+/// Stops given unsorted and repeated are sorted and kept once; a stop that is not finite is
+/// refused by name. A force held from a table jumps at the stops, which every method ends a
+/// step at; the spring against the closed form chained over the held intervals.
+#[test]
+fn stops_are_sorted_and_checked() {
+    let table =
+        dirac::sources::Table::new(vec![0.0, 0.3, 0.6], vec![1.0, -2.0, 0.5], dirac::sources::Hold::Zero)
+            .expect("a valid table");
+    let mut source = |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = table.at(t);
+    let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    let (x1, v1) = held(0.5, 0.0, 1.0, 0.3);
+    let (x2, v2) = held(x1, v1, -2.0, 0.3);
+    let (x_end, _) = held(x2, v2, 0.5, 0.4);
+    each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
+        let error = integrator.stop_at(&[0.2, f64::NAN]).expect_err("not finite");
+        assert!(matches!(&error, SimError::InvalidOption { what: "stop_at", .. }), "{method:?}: {error}");
+        integrator.drive(&mut source).expect("an exclusive model");
+        integrator.stop_at(&[0.6, 0.3, 0.3, 0.6]).expect("finite");
+        let solution = integrator.solve(0.0, &released(0.5), 1.0, &Sampling::Steps).expect("integrates");
+        let times = solution.t();
+        for stop in [0.3, 0.6] {
+            assert_eq!(times.iter().filter(|&&t| t == stop).count(), 1, "{method:?}: {stop} in {times:?}");
+        }
+        let x = solution.last().expect("a sample").q(ForcedSpring::X);
+        assert!((x - x_end).abs() < tolerance(method), "{method:?}: x = {x}, not {x_end}");
+    });
 }

@@ -80,13 +80,18 @@ where
     lvq: MatQQ<M>,
     a: MatCQ<M>,
     dav: MatCQ<M>,
-    /// The constraint rows of the factored system, for a separable model whose factorisation
-    /// is kept while they stay the same.
+    /// The constraint rows and `L_vv` of the factored system, whose factorisation is kept
+    /// while they stay the same (every evaluation of a model with a constant mass matrix and
+    /// constant constraint rows, such as a circuit of linear parts).
     factored_a: MatCQ<M>,
+    factored_lvv: MatQQ<M>,
+    /// Evaluations in a row that found the matrix changed since it was factored: past a few,
+    /// it changes with the state (a pendulum's constraint rows) and is no longer compared.
+    changed: u32,
     factored: bool,
     saddle: SaddleOf<M>,
     /// The inverse of a dense saddle-point matrix whose factorisation was kept for a second
-    /// evaluation (a separable model with constant constraint rows): its product is
+    /// evaluation (constant mass matrix and constraint rows): its product is
     /// independent multiply-adds where the triangular solves are a chain of dependent ones.
     inverse: Option<MatKK<M>>,
     inverse_ready: bool,
@@ -125,6 +130,8 @@ where
         Accelerations {
             sizes,
             lvv: M::Algebra::zeros_qq(&shape),
+            factored_lvv: M::Algebra::zeros_qq(&shape),
+            changed: 0,
             lvq: M::Algebra::zeros_qq(&shape),
             a_projected: a.clone(),
             factored_a: a.clone(),
@@ -195,6 +202,7 @@ where
     /// Forgets the factorisation and the mass matrix: the model may have changed.
     pub fn forget(&mut self) {
         self.factored = false;
+        self.changed = 0;
         self.inverse_ready = false;
         self.checked = false;
         self.schur = None;
@@ -267,19 +275,38 @@ where
             }
             M::Algebra::cq_mul(&self.dav, -1.0, v.as_slice(), &mut x[n..]);
         }
-        let keep = M::SEPARABLE
-            && self.factored
-            && (constant || M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a));
-        if !keep {
-            self.factored = self.factor(model, t, (q, v));
+        // The factorisation holds while the matrix's entries stay the same: `L_vv` (constant
+        // in a separable model, compared otherwise) and the constraint rows.
+        let compare = self.changed < 4;
+        let mut lvv_fresh = false;
+        let keep = self.factored
+            && compare
+            && (constant || M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a))
+            && (M::SEPARABLE || {
+                model.l_vv(t, q, v, &mut self.lvv);
+                lvv_fresh = true;
+                M::Algebra::qq_values(&self.lvv) == M::Algebra::qq_values(&self.factored_lvv)
+            });
+        if keep {
+            self.changed = 0;
+        } else {
+            if self.factored && compare {
+                self.changed += 1;
+            }
+            self.factored = self.factor(model, t, (q, v), lvv_fresh);
             if !self.factored {
                 return false;
             }
-            if M::SEPARABLE {
+            if self.changed < 4 {
                 M::Algebra::cq_values_mut(&mut self.factored_a)
                     .copy_from_slice(M::Algebra::cq_values(&self.a));
+                if self.schur.is_none() {
+                    M::Algebra::qq_values_mut(&mut self.factored_lvv)
+                        .copy_from_slice(M::Algebra::qq_values(&self.lvv));
+                }
             }
-        } else if !self.inverse_ready && self.schur.is_none() {
+        }
+        if keep && !self.inverse_ready && self.schur.is_none() {
             self.invert();
         }
         if self.schur.is_none()
@@ -316,8 +343,9 @@ where
         self.inverse_ready = true;
     }
 
-    /// Factors the system for the constraint rows in `a` (and `L_vv` at `(t, q, v)`).
-    fn factor(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) -> bool {
+    /// Factors the system for the constraint rows in `a` (and `L_vv` at `(t, q, v)`, evaluated
+    /// here unless `lvv_fresh` says it was just now).
+    fn factor(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>), lvv_fresh: bool) -> bool {
         self.factorizations += 1;
         self.inverse_ready = false;
         if let Some(schur) = &mut self.schur {
@@ -330,7 +358,9 @@ where
             schur.a.mul_to(&schur.b, schur.s.matrix_mut());
             return schur.s.factor().is_ok();
         }
-        model.l_vv(t, q, v, &mut self.lvv);
+        if !lvv_fresh {
+            model.l_vv(t, q, v, &mut self.lvv);
+        }
         // Along the velocities the forces fix, `L_vv` vanishes; `N Nᵀ` there makes the matrix
         // regular and sets their accelerations to `Nᵀ` of the balance, zero once settled.
         let (one, two);

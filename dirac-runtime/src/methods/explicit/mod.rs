@@ -215,9 +215,11 @@ where
     /// not determined there.
     fn evaluate_start(&mut self) -> Result<(), SimError> {
         let s = &mut self.state;
-        self.driver.apply(&mut self.model, (self.t, self.t_end), &s.q, &s.v);
-        let rate = &mut self.accelerations.input_rate;
-        self.driver.input_rate(&mut self.model, (self.t, self.t_end), (&s.q, &s.v), rate);
+        if self.driver.driven() {
+            self.driver.apply(&mut self.model, (self.t, self.t_end), &s.q, &s.v);
+            let rate = &mut self.accelerations.input_rate;
+            self.driver.input_rate(&mut self.model, (self.t, self.t_end), (&s.q, &s.v), rate);
+        }
         let model = self.model.get();
         self.stats.evaluations += 1;
         let mut determined = false;
@@ -301,8 +303,9 @@ where
 
     /// The stages of a step of size `h` from the state reached, the fifth-order solution in
     /// `q_new`, `v_new`, and the scaled local error (`None` with the reason where a stage is
-    /// not determined).
-    fn stages(&mut self, h: f64) -> Result<f64, Rejection> {
+    /// not determined). `DRIVEN`: whether a drive sets the inputs at each stage (a constant, so
+    /// that the undriven loop keeps what it loads from `self` in registers across stages).
+    fn stages<const DRIVEN: bool>(&mut self, h: f64) -> Result<f64, Rejection> {
         let n = self.sizes.nq;
         let s = &self.state;
         self.kq[0].copy_from(&s.v);
@@ -314,9 +317,11 @@ where
             configuration::advance_by::<M>((&s.q, &s.v), h, &A[i][..i], k, stage);
             self.stats.evaluations += 1;
             let t = self.t + C[i] * h;
-            self.driver.apply(&mut self.model, (t, self.t_end), &self.q_stage, &self.v_new);
-            let (stage, rate) = ((&self.q_stage, &self.v_new), &mut self.accelerations.input_rate);
-            self.driver.input_rate(&mut self.model, (t, self.t_end), stage, rate);
+            if DRIVEN {
+                self.driver.apply(&mut self.model, (t, self.t_end), &self.q_stage, &self.v_new);
+                let (stage, rate) = ((&self.q_stage, &self.v_new), &mut self.accelerations.input_rate);
+                self.driver.input_rate(&mut self.model, (t, self.t_end), stage, rate);
+            }
             let model = self.model.get();
             if !self.accelerations.settle(model, t, &self.q_stage, &mut self.v_new) {
                 return Err(Rejection::Singular);
@@ -409,7 +414,7 @@ where
             if h < Self::min_step(self.t) {
                 return Err(SimError::StepSizeTooSmall { t: self.t, h, reason: reason.reason().to_owned() });
             }
-            let outcome = self.stages(h);
+            let outcome = if self.driver.driven() { self.stages::<true>(h) } else { self.stages::<false>(h) };
             self.stats.factorizations = self.accelerations.factorizations;
             match (outcome, fixed) {
                 (Ok(error), None) => {

@@ -301,8 +301,10 @@ where
     fn advance(&mut self, h: f64) -> Result<(), SimError> {
         // The forces act at the step's midpoint: a drive sets the inputs for that time (from
         // the state at the step's start), second order as the method is.
-        let s = &self.state;
-        self.driver.apply(&mut self.model, (self.t + 0.5 * h, self.t_end), &s.q, &s.v);
+        if self.driver.driven() {
+            let s = &self.state;
+            self.driver.apply(&mut self.model, (self.t + 0.5 * h, self.t_end), &s.q, &s.v);
+        }
         self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
         self.work.v.copy_from(&self.state.v);
         self.work.big_lambda.copy_from(&self.work.gamma);
