@@ -167,3 +167,58 @@ fn stops_are_sorted_and_checked() {
         assert!((x - x_end).abs() < tolerance(method), "{method:?}: x = {x}, not {x_end}");
     });
 }
+
+/// Stops hold in the solves built on the steps: a sampled solve (its controller setting
+/// nothing, so the drive alone sets the force) and a solve with an event located where the
+/// spring crosses zero, after the last stop. Each against the closed form chained over the held
+/// intervals, and each with a step ending at every stop.
+#[test]
+fn stops_hold_in_sampled_and_event_solves() {
+    use dirac::{Crossing, Events};
+    use std::ops::ControlFlow;
+    let table =
+        dirac::sources::Table::new(vec![0.0, 0.3, 0.6], vec![1.0, -2.0, 0.5], dirac::sources::Hold::Zero)
+            .expect("a valid table");
+    let mut source = |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = table.at(t);
+    let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
+    let (x1, v1) = held(0.5, 0.0, 1.0, 0.3);
+    let (x2, v2) = held(x1, v1, -2.0, 0.3);
+    let (x_end, _) = held(x2, v2, 0.5, 0.4);
+    // The spring crosses zero once, in the last interval (x(0.6) > 0 > x(1)): bisected on the
+    // closed form there.
+    let after = |t: f64| held(x2, v2, 0.5, t - 0.6).0;
+    assert!(x2 > 0.0 && after(1.0) < 0.0);
+    let (mut lo, mut hi) = (0.6, 1.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if after(mid) > 0.0 { lo = mid } else { hi = mid }
+    }
+    let crossing = 0.5 * (lo + hi);
+    each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
+        integrator.drive(&mut source).expect("an exclusive model");
+        integrator.stop_at(table.times()).expect("finite");
+        let sampled = integrator
+            .solve_sampled(0.0, &released(0.5), 1.0, 0.25, &Sampling::Steps, |_, _, _| {})
+            .unwrap_or_else(|e| panic!("{method:?}, sampled: {e}"));
+        let mut events =
+            Events::new().on("zero", Crossing::Falling, |_, s: &State<ForcedSpring>, _| s.q(ForcedSpring::X));
+        let located = integrator
+            .solve_with_events(0.0, &released(0.5), 1.0, &Sampling::Steps, &mut events, |_, _| {
+                ControlFlow::Continue(())
+            })
+            .unwrap_or_else(|e| panic!("{method:?}, events: {e}"));
+        let crossings = located.event_times("zero").expect("the event");
+        assert_eq!(crossings.len(), 1, "{method:?}: {crossings:?}");
+        assert!(
+            (crossings[0] - crossing).abs() < tolerance(method),
+            "{method:?}: {crossings:?}, not {crossing}"
+        );
+        for (what, solution) in [("sampled", &sampled), ("events", &located)] {
+            for stop in [0.3, 0.6] {
+                assert!(solution.t().contains(&stop), "{method:?}, {what}: no step ends at {stop}");
+            }
+            let x = solution.last().expect("a sample").q(ForcedSpring::X);
+            assert!((x - x_end).abs() < tolerance(method), "{method:?}, {what}: x = {x}, not {x_end}");
+        }
+    });
+}
