@@ -140,19 +140,25 @@ fn a_drive_on_a_shared_model_is_refused() {
     assert_eq!(spring.f, 0.0);
 }
 
+/// The stop tests' held force, 1, −2 and 0.5 from t = 0, 0.3 and 0.6, with the spring released
+/// at x = 0.5: the table, the state at 0.6 and the position at 1, chained in closed form.
+fn held_table() -> (dirac::sources::Table, (f64, f64), f64) {
+    let table =
+        dirac::sources::Table::new(vec![0.0, 0.3, 0.6], vec![1.0, -2.0, 0.5], dirac::sources::Hold::Zero)
+            .expect("a valid table");
+    let (x1, v1) = held(0.5, 0.0, 1.0, 0.3);
+    let (x2, v2) = held(x1, v1, -2.0, 0.3);
+    (table, (x2, v2), held(x2, v2, 0.5, 0.4).0)
+}
+
 /// Stops given unsorted and repeated are sorted and kept once; a stop that is not finite is
 /// refused by name. A force held from a table jumps at the stops, which every method ends a
 /// step at; the spring against the closed form chained over the held intervals.
 #[test]
 fn stops_are_sorted_and_checked() {
-    let table =
-        dirac::sources::Table::new(vec![0.0, 0.3, 0.6], vec![1.0, -2.0, 0.5], dirac::sources::Hold::Zero)
-            .expect("a valid table");
+    let (table, _, x_end) = held_table();
     let mut source = |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = table.at(t);
     let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
-    let (x1, v1) = held(0.5, 0.0, 1.0, 0.3);
-    let (x2, v2) = held(x1, v1, -2.0, 0.3);
-    let (x_end, _) = held(x2, v2, 0.5, 0.4);
     each_integrator!(&mut spring, Fineness::new(1e-11, 1e-12, 1e-3), |method, integrator| {
         let error = integrator.stop_at(&[0.2, f64::NAN]).expect_err("not finite");
         assert!(matches!(&error, SimError::InvalidOption { what: "stop_at", .. }), "{method:?}: {error}");
@@ -176,14 +182,9 @@ fn stops_are_sorted_and_checked() {
 fn stops_hold_in_sampled_and_event_solves() {
     use dirac::{Crossing, Events};
     use std::ops::ControlFlow;
-    let table =
-        dirac::sources::Table::new(vec![0.0, 0.3, 0.6], vec![1.0, -2.0, 0.5], dirac::sources::Hold::Zero)
-            .expect("a valid table");
+    let (table, (x2, v2), x_end) = held_table();
     let mut source = |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = table.at(t);
     let mut spring = ForcedSpring { m: M, k: K, f: 0.0 };
-    let (x1, v1) = held(0.5, 0.0, 1.0, 0.3);
-    let (x2, v2) = held(x1, v1, -2.0, 0.3);
-    let (x_end, _) = held(x2, v2, 0.5, 0.4);
     // The spring crosses zero once, in the last interval (x(0.6) > 0 > x(1)): bisected on the
     // closed form there.
     let after = |t: f64| held(x2, v2, 0.5, t - 0.6).0;

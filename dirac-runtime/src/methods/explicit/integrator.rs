@@ -169,17 +169,13 @@ where
         }
         let theta = self.motion_at(t, out);
         let model = self.model.get();
-        if self.driver.driven() {
-            // The inputs at `t` are not set here (the model is only read): the multipliers are
-            // interpolated between the step's ends and the momenta follow from the velocities.
-            out.lambda.copy_from(&self.previous.lambda);
-            out.lambda.axpy(theta, &self.state.lambda, 1.0 - theta);
-            model.dl_dv(t, &out.q, &out.v, &mut out.p);
-            return;
-        }
         let mut probe = self.probe.borrow_mut();
         let (accelerations, acceleration) = &mut *probe;
-        let mut determined = accelerations.settle(model, t, &out.q, &mut out.v)
+        // With a drive, the inputs at `t` are not set here (the model is only read): the
+        // multipliers are interpolated between the step's ends, as where the motion is not
+        // determined, and the momenta follow from the velocities.
+        let mut determined = !self.driver.driven()
+            && accelerations.settle(model, t, &out.q, &mut out.v)
             && accelerations.evaluate(model, t, (&out.q, &out.v), acceleration, &mut out.lambda);
         if determined && self.sizes.nc > 0 {
             accelerations.project(model, t, &mut out.q, &mut out.v);
