@@ -53,6 +53,7 @@
 //! # }
 //! ```
 
+pub mod bodies;
 pub mod electrical;
 pub mod electromechanical;
 pub mod rotational;

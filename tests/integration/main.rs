@@ -8,6 +8,7 @@ mod every_method;
 
 mod authoring;
 mod blocks;
+mod bodies;
 mod components;
 mod contacts;
 mod counters;

@@ -35,12 +35,14 @@ pub struct Fineness {
     pub atol: f64,
     pub h: f64,
     pub max_steps: usize,
+    /// Whether Radau projects onto the position constraints after each step.
+    pub projection: bool,
 }
 
 impl Fineness {
     /// Tolerances `rtol` and `atol` for the adaptive methods, step `h` for the variational one.
     pub fn new(rtol: f64, atol: f64, h: f64) -> Fineness {
-        Fineness { rtol, atol, h, max_steps: 1_000_000 }
+        Fineness { rtol, atol, h, max_steps: 1_000_000, projection: false }
     }
 
     /// The same with at most `max_steps` steps.
@@ -48,8 +50,18 @@ impl Fineness {
         Fineness { max_steps, ..self }
     }
 
+    /// The same with Radau projecting onto the position constraints after each step, which
+    /// keeps them to round-off (the other methods keep them so by construction).
+    pub fn projected(self) -> Fineness {
+        Fineness { projection: true, ..self }
+    }
+
     pub fn radau(&self) -> RadauOptions {
-        RadauOptions { max_steps: self.max_steps, ..RadauOptions::tolerances(self.rtol, self.atol) }
+        RadauOptions {
+            max_steps: self.max_steps,
+            projection: self.projection,
+            ..RadauOptions::tolerances(self.rtol, self.atol)
+        }
     }
 
     pub fn explicit(&self) -> ExplicitOptions {

@@ -152,6 +152,10 @@ where
         {
             self.legendre.correct(model, t, out);
         }
+        if let Some(projector) = &self.projector {
+            projector.borrow_mut().project(model, t, &mut out.q, &mut out.v);
+            model.dl_dv(t, &out.q, &out.v, &mut out.p);
+        }
     }
 
     /// The collocation polynomial, without the correction that [`Integrator::interpolate`]

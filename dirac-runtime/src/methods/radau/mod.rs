@@ -22,6 +22,8 @@ mod sensitivities;
 mod stages;
 mod tableau;
 
+use std::cell::RefCell;
+
 use nalgebra::{Complex, DefaultAllocator};
 
 use self::controller::Controller;
@@ -94,7 +96,8 @@ where
     controller: Controller,
     jac: JacobianBlocks<M, M::Algebra>,
     /// Puts accepted steps back on the constraints, when the options ask for it.
-    projector: Option<Projector<M>>,
+    /// Behind a cell: samples between steps are projected too, through `&self`.
+    projector: Option<RefCell<Projector<M>>>,
     /// Whether `jac` was evaluated at the current state.
     jac_current: bool,
     need_jac: bool,
@@ -147,7 +150,8 @@ where
         shape: &<M::Algebra as Algebra<M>>::Shape,
     ) -> Result<Self, SimError> {
         let sizes = model.sizes();
-        let projector = (options.projection && sizes.nc > 0).then(|| Projector::new(model.get()));
+        let projector =
+            (options.projection && sizes.nc > 0).then(|| RefCell::new(Projector::new(model.get())));
         let legendre = Legendre::new(model.get());
         Ok(Radau {
             model,
@@ -425,7 +429,7 @@ where
         self.state.read_y(&self.y);
         if let Some(projector) = &mut self.projector {
             let s = &mut self.state;
-            projector.project(self.model.get(), self.t + h, &mut s.q, &mut s.v);
+            projector.get_mut().project(self.model.get(), self.t + h, &mut s.q, &mut s.v);
             self.model.dl_dv(self.t + h, &s.q, &s.v, &mut s.p);
             s.write_y(&mut self.y);
         }

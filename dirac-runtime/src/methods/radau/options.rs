@@ -27,8 +27,8 @@ pub struct RadauOptions {
     pub max_steps: usize,
     /// Newton iterations per step attempt (default 7).
     pub max_newton_iterations: usize,
-    /// Whether to project the state onto the constraints after every accepted step (default
-    /// `false`). Radau integrates the equations in their index-2 form, where holonomic
+    /// Whether to project the state onto the constraints after every accepted step, and every
+    /// sample between steps (default `false`). Radau integrates the equations in their index-2 form, where holonomic
     /// constraints enter through their velocities `A(q, t) v + b(q, t) = 0`: the positions then drift from
     /// `φ(q, t) = 0` by the accumulated local errors, slowly but without bound. With projection
     /// the positions are moved back onto `φ(q, t) = 0` and the velocities onto `A v + b = 0`, each
