@@ -92,4 +92,4 @@ pub const MODEL_KEYS: &[&str] = &[
 pub const CONNECT: &str = "connect";
 
 /// Every key a `#[dirac(...)]` attribute of an interconnection accepts, for error messages.
-pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, LARGE];
+pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, HOLONOMIC, LARGE];

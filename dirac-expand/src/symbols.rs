@@ -56,6 +56,9 @@ pub struct Member {
     pub tokens: TokenStream,
     /// A `connect` endpoint: a port, named by its coordinate, standing for its velocity.
     pub port: bool,
+    /// The rate of a coordinate named in a holonomic row: the velocity at the coordinate's
+    /// index, which the row's one-form `∂φ/∂q · v` multiplies.
+    pub rate: bool,
 }
 
 impl Member {
@@ -92,12 +95,27 @@ impl Symbols {
 
     /// The symbol of the subsystem member at `path` (a port if `port`), created on first use.
     pub fn member(&mut self, graph: &mut Graph, path: Vec<String>, tokens: TokenStream, port: bool) -> Id {
-        if let Some((_, id)) = self.members.iter().find(|(m, _)| m.port == port && m.path == path) {
+        if let Some((_, id)) = self.members.iter().find(|(m, _)| !m.rate && m.port == port && m.path == path)
+        {
             return *id;
         }
         let k = self.members.len();
         let id = self.declare(graph, Sym::Member(k));
-        self.members.push((Member { path, tokens, port }, id));
+        self.members.push((Member { path, tokens, port, rate: false }, id));
+        id
+    }
+
+    /// The symbol of the rate of coordinate member `k` (its velocity, at its index), created
+    /// on first use.
+    pub fn rate(&mut self, graph: &mut Graph, k: usize) -> Id {
+        let path = self.members[k].0.path.clone();
+        if let Some((_, id)) = self.members.iter().find(|(m, _)| m.rate && m.path == path) {
+            return *id;
+        }
+        let tokens = self.members[k].0.tokens.clone();
+        let j = self.members.len();
+        let id = self.declare(graph, Sym::Member(j));
+        self.members.push((Member { path, tokens, port: false, rate: true }, id));
         id
     }
 

@@ -20,7 +20,7 @@ fn dyn_of<R: dirac::nalgebra::Dim, C: dirac::nalgebra::Dim, S: dirac::nalgebra::
 }
 
 /// Checks every block against the flat forms at seeded random states.
-fn check_blocks<M: DenseModel>(model: &M, seed: u64)
+pub(crate) fn check_blocks<M: DenseModel>(model: &M, seed: u64)
 where
     DefaultAllocator: Storage<M>,
 {

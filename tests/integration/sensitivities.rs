@@ -16,7 +16,7 @@ use crate::zoo::*;
 /// in the parameter at random states, to 1e-7 relative to the larger of the entry and 1; and
 /// all parameters' blocks evaluated together (`residual_blocks_dtheta_all`, one schedule for
 /// all of them in a primitive model) equal each evaluated alone, to rounding.
-fn check_parameter_derivatives<M: Parameters + Clone>(model: &M, seed: u64, trials: usize)
+pub(crate) fn check_parameter_derivatives<M: Parameters + Clone>(model: &M, seed: u64, trials: usize)
 where
     DefaultAllocator: Storage<M>,
 {

@@ -7,7 +7,7 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 use crate::ast::is_f64;
 use crate::ctxt::Ctxt;
 use crate::lower::member_path;
-use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, INTERCONNECTION_KEYS, LARGE};
+use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, HOLONOMIC, INTERCONNECTION_KEYS, LARGE};
 
 /// A composite as written by the user.
 pub struct Composite<'a> {
@@ -19,6 +19,8 @@ pub struct Composite<'a> {
     pub subsystems: Vec<SubsystemField>,
     pub connections: Vec<Connection>,
     pub constraints: Vec<OneForm>,
+    /// `holonomic(name) = expr`: position constraints between subsystems, `φ(q, t) = 0`.
+    pub holonomic: Vec<OneForm>,
     /// `large`: the composite may take more stack than the limit.
     pub large: bool,
     /// Whether an attribute failed to parse (later stages then report nothing more).
@@ -99,6 +101,7 @@ impl<'a> Composite<'a> {
             subsystems: Vec::new(),
             connections: Vec::new(),
             constraints: Vec::new(),
+            holonomic: Vec::new(),
             large: false,
             incomplete: false,
             doc: crate::ast::doc_comment(&input.attrs),
@@ -208,13 +211,14 @@ fn parse_items(cx: &Ctxt, composite: &mut Composite<'_>, input: ParseStream) -> 
                 }
                 composite.connections.push(Connection { key, a, b });
             }
-            CONSTRAINT => {
+            CONSTRAINT | HOLONOMIC => {
+                let holonomic = key == HOLONOMIC;
                 let name = if input.peek(syn::token::Paren) {
                     let content;
                     syn::parenthesized!(content in input);
                     let name = content.parse::<Ident>()?.unraw();
                     if !content.is_empty() {
-                        return Err(content.error("expected one name: `constraint(name) = expr`"));
+                        return Err(content.error(format!("expected one name: `{key}(name) = expr`")));
                     }
                     Some(name)
                 } else {
@@ -222,7 +226,12 @@ fn parse_items(cx: &Ctxt, composite: &mut Composite<'_>, input: ParseStream) -> 
                 };
                 input.parse::<Token![=]>()?;
                 let expr: Expr = input.parse()?;
-                composite.constraints.push(OneForm { key, name, expr });
+                let form = OneForm { key, name, expr };
+                if holonomic {
+                    composite.holonomic.push(form);
+                } else {
+                    composite.constraints.push(form);
+                }
             }
             other => {
                 let _ = cx;

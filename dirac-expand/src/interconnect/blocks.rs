@@ -21,6 +21,8 @@ pub struct CompositeBlocks {
     pub dt: Vec<Id>,
     /// For each of the composite's own parameters θ: `∂Ω_j/∂θ` and `∂(μ_j ∂Ω_j/∂s_k)/∂θ`.
     pub dtheta: Vec<(Vec<Id>, Vec<Vec<Id>>)>,
+    /// For each of the composite's own parameters θ: `∂φ_j/∂θ` of the holonomic rows.
+    pub phi_dtheta: Vec<Vec<Id>>,
 }
 
 impl CompositeBlocks {
@@ -72,6 +74,12 @@ impl CompositeBlocks {
                 (omega, forces)
             })
             .collect();
-        CompositeBlocks { d, h, mu_d, mu_h, dt, dtheta }
+        let phi_dtheta = thetas
+            .iter()
+            .map(|&theta| {
+                m.rows.iter().filter_map(|row| row.holonomic).map(|phi| g.diff(phi, theta)).collect()
+            })
+            .collect();
+        CompositeBlocks { d, h, mu_d, mu_h, dt, dtheta, phi_dtheta }
     }
 }

@@ -66,16 +66,16 @@ impl CompositeModel {
                  equation: it constrains velocities that other constraints already fix",
                 self.rows[j].name
             ));
-            rows.extend(quote! { u[__NQ + __OMEGA + #jl] = #message; });
+            rows.extend(quote! { u[__NQ + __ROWS[#jl]] = #message; });
             for k in 0..self.members() {
                 if self.graph.is_zero(b.d[j][k]) {
                     continue;
                 }
                 let r = r_ident(k);
                 rows.extend(quote! {
-                    p[(__NQ + __OMEGA + #jl) * __K + #r.index] = true;
+                    p[(__NQ + __ROWS[#jl]) * __K + #r.index] = true;
                     if #r.velocity {
-                        p[#r.index * __K + __NQ + __OMEGA + #jl] = true;
+                        p[#r.index * __K + __NQ + __ROWS[#jl]] = true;
                     }
                 });
                 for l in 0..self.members() {
@@ -114,6 +114,7 @@ impl CompositeModel {
         let p = rt();
         let mut out = TokenStream::new();
         let mut oks = Vec::new();
+        let positional = self.positional_members();
         for (k, (r, _)) in self.symbols.members().enumerate() {
             let head = crate::lower::path_field(&r.path[0]);
             let field = composite.subsystems.iter().position(|s| s.ident == head).expect("checked field");
@@ -131,7 +132,19 @@ impl CompositeModel {
             } else {
                 format!("`{last}` is not a coordinate or velocity of `{sub}`")
             });
-            let checks = if r.port {
+            let checks = if r.rate {
+                // Reported once, at the coordinate the rate belongs to.
+                quote! { let _ = r; }
+            } else if positional.contains(&k) {
+                let velocity = message(&format!(
+                    "`{dotted}` is a velocity; a holonomic interconnection constraint `φ(q, t) = 0` names \
+                     coordinates (write a constraint on velocities with `constraint = …`)"
+                ));
+                let span = last_span(&r.tokens);
+                quote_spanned! {span=>
+                    if r.velocity { ::core::panic!(#velocity) }
+                }
+            } else if r.port {
                 let velocity = message(&format!(
                     "`{dotted}` is a velocity; `connect` joins ports, named by their coordinates"
                 ));
@@ -146,7 +159,7 @@ impl CompositeModel {
             } else {
                 quote! { let _ = r; }
             };
-            let velocity = if r.port {
+            let velocity = if r.port || r.rate {
                 quote! { true }
             } else {
                 quote! { r.velocity }
@@ -184,6 +197,8 @@ impl CompositeModel {
             });
             let ok = if r.port {
                 quote! { match #resolve { ::core::result::Result::Ok(r) => !r.velocity && r.port, _ => false } }
+            } else if r.rate || positional.contains(&k) {
+                quote! { match #resolve { ::core::result::Result::Ok(r) => !r.velocity, _ => false } }
             } else {
                 quote! { #resolve.is_ok() }
             };
@@ -279,7 +294,8 @@ impl CompositeModel {
                 &all_tokens,
                 &format!(
                     "interconnection constraint `{name}` has no velocity in it; interconnection constraints \
-                     are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities"
+                     are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities (a constraint on positions, \
+                     `φ(q, t) = 0`, is `holonomic({name}) = …`)"
                 ),
             );
             let span = all_tokens.span();
@@ -287,6 +303,28 @@ impl CompositeModel {
                 out.extend(quote_spanned! {span=>
                     const _: () = if __RESOLVED && !(false #(|| #has_velocity)*) { #none };
                 });
+            }
+        }
+        // A holonomic row's coefficients `∂φ/∂q` vary unless `φ` is linear in the coordinates,
+        // and it prescribes a motion where `φ` depends on time.
+        let time = self.symbols.declare(&mut self.graph, Sym::Time);
+        for j in 0..self.rows.len() {
+            let Some(phi) = self.rows[j].holonomic else { continue };
+            let rate = self.graph.diff(phi, time);
+            if !self.graph.is_zero(rate) {
+                prescribed.push(quote! { true });
+            }
+            let time_sym = self.graph.as_sym(time).expect("a symbol");
+            let omega = self.rows[j].omega;
+            let rates: Vec<usize> = (0..self.members()).filter(|&k| self.symbols.member_at(k).rate).collect();
+            let coefficients: Vec<Id> =
+                rates.iter().map(|&k| self.graph.diff(omega, self.symbols.member_id(k))).collect();
+            let moving = coefficients.iter().any(|&c| {
+                self.graph.depends_on(c, time_sym)
+                    || self.graph.deps(c).iter().any(|s| matches!(self.symbols.kind(s), Sym::Member(_)))
+            });
+            if moving {
+                varying.push(quote! { true });
             }
         }
         out.extend(quote! {

@@ -44,7 +44,7 @@ impl Own<'_> {
         };
         let multiplier = |j: usize| {
             let j = lit(j);
-            quote! { lambda[__OMEGA + #j] }
+            quote! { lambda[__ROWS[#j]] }
         };
         self.body_at(assigns, has_v, &index, &multiplier)
     }
@@ -111,7 +111,7 @@ impl Own<'_> {
         let zero = quote! {
             for __j in 0..#k_rows {
                 for __i in 0..__NQ {
-                    #target[(__OMEGA + __j, __i)] = 0.0;
+                    #target[(__ROWS[__j], __i)] = 0.0;
                 }
             }
         };
@@ -125,7 +125,7 @@ impl Own<'_> {
                     quote! { !#r.velocity }
                 };
                 let jl = lit(j);
-                assigns.push(Assign::add_if(guard, quote! { #target[(__OMEGA + #jl, #r.index)] }, d));
+                assigns.push(Assign::add_if(guard, quote! { #target[(__ROWS[#jl], #r.index)] }, d));
             }
         }
         Part { zero, assigns }
@@ -144,9 +144,25 @@ impl Own<'_> {
             .enumerate()
             .map(|(j, &value)| {
                 let j = lit(j);
-                Assign::set(quote! { #target[__OMEGA + #j] }, value)
+                Assign::set(quote! { #target[__ROWS[#j]] }, value)
             })
             .collect()
+    }
+
+    /// `target[j] = φ_j` for the holonomic rows (the first) of a vector over them.
+    pub fn phi_values(&self, target: &TokenStream) -> Vec<Assign> {
+        let phi: Vec<Id> = self.model.rows.iter().filter_map(|row| row.holonomic).collect();
+        Self::holonomic_values(target, &phi)
+    }
+
+    /// `target[j] = values[j]` for the holonomic rows (the first) of a vector over them.
+    pub fn holonomic_values(target: &TokenStream, values: &[Id]) -> Vec<Assign> {
+        let rows = values.iter().enumerate();
+        rows.map(|(j, &value)| {
+            let j = lit(j);
+            Assign::set(quote! { #target[#j] }, value)
+        })
+        .collect()
     }
 
     /// `target[j] = ∂Ω_j/∂t` for the interconnection rows of a vector over constraints.
@@ -154,7 +170,7 @@ impl Own<'_> {
         let rows = self.blocks.dt.iter().enumerate();
         rows.map(|(j, &dt)| {
             let j = lit(j);
-            Assign::set(quote! { #target[__OMEGA + #j] }, dt)
+            Assign::set(quote! { #target[__ROWS[#j]] }, dt)
         })
         .collect()
     }

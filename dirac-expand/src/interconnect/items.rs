@@ -17,6 +17,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
     let p = rt();
     let ident = composite.ident;
     let rows = model.rows.iter().map(|r| &r.name);
+    let holonomic = Literal::usize_unsuffixed(model.holonomic);
     let parameters = composite.params.iter().map(|f| f.unraw().to_string());
     let doc = &composite.doc;
     let docs = composite.param_docs.iter().map(|(name, doc)| {
@@ -45,7 +46,7 @@ pub fn names(composite: &Composite<'_>, model: &CompositeModel, bounds: &TokenSt
                 coordinates: &[],
                 velocities: &[],
                 constraints: &[#(#rows),*],
-                holonomic: 0,
+                holonomic: #holonomic,
                 ports: &[],
                 inputs: &[],
                 outputs: &[],
@@ -539,7 +540,7 @@ fn constants(composite: &Composite<'_>, targets: &Targets<'_>) -> TokenStream {
                 quote! { 0 }
             } else {
                 let j = Literal::usize_unsuffixed(j);
-                quote! { __OMEGA + #j }
+                quote! { __ROWS[#j] }
             };
             let doc = format!("The interconnection constraint `{row}`: names its row and multiplier μ.");
             out.extend(

@@ -9,8 +9,8 @@ use quote::{format_ident, quote};
 use super::ast::Composite;
 use super::emit::{Own, Part};
 use crate::codegen::signatures::{
-    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, JACOBIAN_BLOCKS, Out, REQUIRED,
-    RESIDUAL_BLOCKS, Signature, rt,
+    Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, HOLONOMIC, JACOBIAN_BLOCKS, Out,
+    REQUIRED, RESIDUAL_BLOCKS, Signature, rt,
 };
 
 /// `Ωᵀμ` scattered with the subsystems' port efforts: the one method composites add.
@@ -130,6 +130,7 @@ fn own_part(own: &Own<'_>, sig: &Signature) -> (TokenStream, TokenStream) {
         // `b`: the rows with every velocity at zero.
         _ if name == CONSTRAINT_RATE.name => (TokenStream::new(), own.body(&own.omega_values(&out), false)),
         _ if name == DAV_DT.name => (TokenStream::new(), own.body(&own.time_rates(&out), true)),
+        _ if name == HOLONOMIC.name => (TokenStream::new(), own.body(&own.phi_values(&out), false)),
         _ if name == RESIDUAL_BLOCKS.name => {
             let mut assigns = own.omega_values(&quote! { out.constraint_velocity });
             assigns.extend(own.forces_into(&quote! { out.momentum_rate }));

@@ -64,7 +64,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
 /// The offsets of each subsystem and the composite's sizes, as const items. Each offset is a
 /// prefix sum over arrays of the subsystems' sizes, not a chain of constants, so that the
 /// compiler's query depth does not grow with the number of subsystems.
-fn layout(composite: &Composite<'_>, rows: usize) -> TokenStream {
+fn layout(composite: &Composite<'_>, rows: usize, holonomic: usize) -> TokenStream {
     let p = rt();
     let u = quote! { ::core::primitive::usize };
     let count = Literal::usize_unsuffixed(composite.subsystems.len());
@@ -95,12 +95,11 @@ fn layout(composite: &Composite<'_>, rows: usize) -> TokenStream {
         let i = Literal::usize_unsuffixed(i);
         out.extend(quote! {
             const #qi: #u = #p::prefix_sum(&__NQS, #i);
-            const #hi: #u = #p::prefix_sum(&__NHS, #i);
+            const #hi: #u = __HOWN + #p::prefix_sum(&__NHS, #i);
             const #vi: #u = __NH + #p::prefix_sum(&__NCS, #i) - #p::prefix_sum(&__NHS, #i);
             const #slot: #p::Offsets = #p::Offsets { q: #qi, h: #hi, v: #vi };
         });
     }
-    let rows = Literal::usize_unsuffixed(rows);
     if !composite.large {
         let message = format!(
             "`{}` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more \
@@ -114,11 +113,27 @@ fn layout(composite: &Composite<'_>, rows: usize) -> TokenStream {
             const _: () = if #p::stack_bytes(__NQ, __NC) > #p::STACK_LIMIT { ::core::panic!(#message) };
         });
     }
+    // The composite's own rows: its holonomic ones first of all (before its subsystems'), its
+    // others last; `__ROWS[j]` is own row `j`'s index among the composite's.
+    let velocity_rows = Literal::usize_unsuffixed(rows - holonomic);
+    let own_rows = (0..rows).map(|j| {
+        if j < holonomic {
+            let j = Literal::usize_unsuffixed(j);
+            quote! { #j }
+        } else {
+            let j = Literal::usize_unsuffixed(j - holonomic);
+            quote! { __OMEGA + #j }
+        }
+    });
+    let (holonomic, rows) = (Literal::usize_unsuffixed(holonomic), Literal::usize_unsuffixed(rows));
     out.extend(quote! {
+        const __HOWN: #u = #holonomic;
         const __NQ: #u = #p::prefix_sum(&__NQS, #count);
-        const __NH: #u = #p::prefix_sum(&__NHS, #count);
-        const __OMEGA: #u = __NH + #p::prefix_sum(&__NCS, #count) - __NH;
-        const __NC: #u = __OMEGA + #rows;
+        const __NH: #u = __HOWN + #p::prefix_sum(&__NHS, #count);
+        const __OMEGA: #u = __HOWN + #p::prefix_sum(&__NCS, #count);
+        const __NC: #u = __OMEGA + #velocity_rows;
+        #[allow(clippy::identity_op)]
+        const __ROWS: [#u; #rows] = [#(#own_rows),*];
     });
     out
 }
@@ -137,7 +152,7 @@ fn implementation(
     let solve_with_contacts = solve_with_contacts();
     let ident = composite.ident;
     let own = Own { model, blocks };
-    let layout = layout(composite, model.rows.len());
+    let layout = layout(composite, model.rows.len(), model.holonomic);
     let resolutions = model.resolutions(composite);
     let structure = model.structure(composite, blocks);
     let asserts = subsystem_asserts(composite);

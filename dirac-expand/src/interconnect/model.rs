@@ -23,9 +23,11 @@ pub struct Row {
     /// The tokens that declared it, for error spans.
     pub key: Ident,
     pub omega: Id,
-    /// The additive terms of a one-form with their tokens (empty for `connect`), whose
-    /// linearity in the velocities is checked once names are resolved.
+    /// The additive terms of a one-form with their tokens (empty for `connect` and holonomic
+    /// rows), whose linearity in the velocities is checked once names are resolved.
     pub terms: Vec<(Id, TokenStream)>,
+    /// A holonomic row's `φ(q, t)`, whose one-form `Ω = ∂φ/∂q v + ∂φ/∂t` is `omega`.
+    pub holonomic: Option<Id>,
 }
 
 /// A composite's interconnection rows in one graph, over symbols for its parameters, its
@@ -36,6 +38,8 @@ pub struct CompositeModel {
     pub params: Vec<Ident>,
     pub rows: Vec<Row>,
     pub mu: Vec<Id>,
+    /// How many of the rows, the first ones, are holonomic.
+    pub holonomic: usize,
 }
 
 impl CompositeModel {
@@ -56,6 +60,7 @@ impl CompositeModel {
             params: composite.params.clone(),
             rows: Vec::new(),
             mu: Vec::new(),
+            holonomic: 0,
         };
         let fields: Vec<String> = composite.subsystems.iter().map(|s| s.ident.unraw().to_string()).collect();
         let mut scope = Scope::with_subsystems(fields.clone());
@@ -66,6 +71,7 @@ impl CompositeModel {
         let time = cm.symbols.declare(&mut cm.graph, Sym::Time);
         scope.declare(TIME.to_owned(), time, Role::Time);
 
+        cm.holonomic_rows(cx, composite, &scope);
         cm.connections(cx, composite, &fields);
         cm.one_forms(cx, composite, &scope);
         for j in 0..cm.rows.len() {
@@ -116,7 +122,8 @@ impl CompositeModel {
             let sa = self.port_ref(&c.a);
             let sb = self.port_ref(&c.b);
             let omega = self.graph.sub(sa, sb);
-            self.rows.push(Row { name: format!("connect{i}"), key: c.key.clone(), omega, terms: Vec::new() });
+            let (name, key) = (format!("connect{i}"), c.key.clone());
+            self.rows.push(Row { name, key, omega, terms: Vec::new(), holonomic: None });
         }
     }
 
@@ -153,8 +160,70 @@ impl CompositeModel {
             let ids: Vec<Id> = terms.iter().map(|(x, _)| *x).collect();
             let omega = self.graph.add(&ids);
             let key = c.name.clone().unwrap_or_else(|| c.key.clone());
-            self.rows.push(Row { name, key, omega, terms });
+            self.rows.push(Row { name, key, omega, terms, holonomic: None });
         }
+    }
+
+    /// `holonomic(name) = expr`: the position constraint `φ(q, t) = 0` between subsystems,
+    /// whose row is its rate `∂φ/∂q v + ∂φ/∂t`. Its members must be coordinates, which is
+    /// checked once they are resolved.
+    fn holonomic_rows(&mut self, cx: &Ctxt, composite: &Composite<'_>, scope: &Scope) {
+        for (i, c) in composite.holonomic.iter().enumerate() {
+            if composite.has_arrays() {
+                let message = "a composite with arrays of subsystems has no holonomic interconnection \
+                               constraints yet: hold the positions in a subsystem's own `holonomic` row, or \
+                               write the constraint on velocities with `constraint = …`";
+                cx.error_spanned_by(&c.key, message);
+                continue;
+            }
+            let name = c.name.as_ref().map(ToString::to_string).unwrap_or_else(|| format!("holonomic{i}"));
+            let what = format!("holonomic interconnection constraint `{name}`");
+            let ctx = Context { what: &what, velocities: false, switch_on_velocities: false };
+            let mut lowerer = Lowerer { cx, graph: &mut self.graph, symbols: &mut self.symbols, scope };
+            let Some(phi) = lowerer.lower(&c.expr, ctx) else { continue };
+            let members: Vec<usize> = (0..self.symbols.member_count())
+                .filter(|&k| {
+                    let m = self.symbols.member_at(k);
+                    !m.rate && !m.port && self.graph.depends_on(phi, self.sym_of(self.symbols.member_id(k)))
+                })
+                .collect();
+            if members.is_empty() {
+                let message = format!(
+                    "{what} names no coordinate of a subsystem; holonomic interconnection constraints are \
+                     `φ(q, t) = 0` over the subsystems' coordinates"
+                );
+                cx.error_spanned_by(&c.expr, message);
+                continue;
+            }
+            let mut terms = Vec::new();
+            for k in members {
+                let rate = self.symbols.rate(&mut self.graph, k);
+                let slope = self.graph.diff(phi, self.symbols.member_id(k));
+                terms.push(self.graph.mul2(slope, rate));
+            }
+            let time = self.symbols.declare(&mut self.graph, Sym::Time);
+            terms.push(self.graph.diff(phi, time));
+            let omega = self.graph.add(&terms);
+            let key = c.name.clone().unwrap_or_else(|| c.key.clone());
+            self.rows.push(Row { name, key, omega, terms: Vec::new(), holonomic: Some(phi) });
+            self.holonomic += 1;
+        }
+    }
+
+    /// The members a holonomic row's `φ` names: they must resolve to coordinates.
+    pub fn positional_members(&self) -> Vec<usize> {
+        (0..self.members())
+            .filter(|&k| {
+                let m = self.symbols.member_at(k);
+                !m.rate
+                    && !m.port
+                    && self
+                        .rows
+                        .iter()
+                        .filter_map(|r| r.holonomic)
+                        .any(|phi| self.graph.depends_on(phi, self.sym_of(self.symbols.member_id(k))))
+            })
+            .collect()
     }
 
     /// An array field is named by an element (`cells[i]`), any other field without one.

@@ -119,6 +119,11 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
         let j = Literal::usize_unsuffixed(j);
         quote! { #j => { #body } }
     });
+    let own_phi_arms = own.blocks.phi_dtheta.iter().enumerate().map(|(j, phi)| {
+        let body = own.body(&Own::holonomic_values(&quote! { out }, phi), false);
+        let j = Literal::usize_unsuffixed(j);
+        quote! { #j => { #body } }
+    });
     quote! {
         fn parameter_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
             #get
@@ -174,8 +179,9 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
         ) {
             out.fill(0.0);
             #holonomic
-            if k.wrapping_sub(#own_start) >= #own_count {
-                #panic
+            match k.wrapping_sub(#own_start) {
+                #(#own_phi_arms)*
+                _ => #panic,
             }
         }
     }

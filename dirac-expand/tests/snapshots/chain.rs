@@ -26,7 +26,8 @@ const _: () = {
         <Primitive2 as ::dirac::__private::Fixed>::NC,
     ];
     const __Q0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 0);
-    const __H0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 0);
+    const __H0: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NHS, 0);
     const __V0: ::core::primitive::usize = __NH
         + ::dirac::__private::prefix_sum(&__NCS, 0)
         - ::dirac::__private::prefix_sum(&__NHS, 0);
@@ -36,7 +37,8 @@ const _: () = {
         v: __V0,
     };
     const __Q1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 1);
-    const __H1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 1);
+    const __H1: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NHS, 1);
     const __V1: ::core::primitive::usize = __NH
         + ::dirac::__private::prefix_sum(&__NCS, 1)
         - ::dirac::__private::prefix_sum(&__NHS, 1);
@@ -52,11 +54,15 @@ const _: () = {
             "`Chain` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more than the 256 KiB of stack a model may take without asking (threads Rust spawns have 2 MiB, and overflowing a stack aborts the process); add `#[dirac(large)]` and run the simulation on a thread with a larger stack, such as `std::thread::Builder::new().stack_size(64 << 20)`"
         )
     };
+    const __HOWN: ::core::primitive::usize = 0;
     const __NQ: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 2);
-    const __NH: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 2);
-    const __OMEGA: ::core::primitive::usize = __NH
-        + ::dirac::__private::prefix_sum(&__NCS, 2) - __NH;
+    const __NH: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NHS, 2);
+    const __OMEGA: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NCS, 2);
     const __NC: ::core::primitive::usize = __OMEGA + 1;
+    #[allow(clippy::identity_op)]
+    const __ROWS: [::core::primitive::usize; 1] = [__OMEGA + 0];
     const __R0: ::dirac::__private::Resolved = match <Primitive1 as ::dirac::__private::Named>::NAMES
         .resolve(&["x2"])
     {
@@ -305,14 +311,14 @@ const _: () = {
                 a += 1;
             }
         }
-        u[__NQ + __OMEGA + 0] = "structurally singular interconnection: the multiplier of `connect0` of `Chain` is determined by no equation: it constrains velocities that other constraints already fix";
-        p[(__NQ + __OMEGA + 0) * __K + __R0.index] = true;
+        u[__NQ + __ROWS[0]] = "structurally singular interconnection: the multiplier of `connect0` of `Chain` is determined by no equation: it constrains velocities that other constraints already fix";
+        p[(__NQ + __ROWS[0]) * __K + __R0.index] = true;
         if __R0.velocity {
-            p[__R0.index * __K + __NQ + __OMEGA + 0] = true;
+            p[__R0.index * __K + __NQ + __ROWS[0]] = true;
         }
-        p[(__NQ + __OMEGA + 0) * __K + __R1.index] = true;
+        p[(__NQ + __ROWS[0]) * __K + __R1.index] = true;
         if __R1.velocity {
-            p[__R1.index * __K + __NQ + __OMEGA + 0] = true;
+            p[__R1.index * __K + __NQ + __ROWS[0]] = true;
         }
         (p, u)
     };
@@ -724,14 +730,14 @@ const _: () = {
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out[(__OMEGA + __j, __i)] = 0.0;
+                    out[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             if __R0.velocity {
-                out[(__OMEGA + 0, __R0.index)] += 1f64;
+                out[(__ROWS[0], __R0.index)] += 1f64;
             }
             if __R1.velocity {
-                out[(__OMEGA + 0, __R1.index)] += -1f64;
+                out[(__ROWS[0], __R1.index)] += -1f64;
             }
         }
         #[inline]
@@ -766,14 +772,14 @@ const _: () = {
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out[(__OMEGA + __j, __i)] = 0.0;
+                    out[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             if !__R0.velocity {
-                out[(__OMEGA + 0, __R0.index)] += 1f64;
+                out[(__ROWS[0], __R0.index)] += 1f64;
             }
             if !__R1.velocity {
-                out[(__OMEGA + 0, __R1.index)] += -1f64;
+                out[(__ROWS[0], __R1.index)] += -1f64;
             }
         }
         #[inline]
@@ -904,12 +910,12 @@ const _: () = {
             }
             let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
             let r1 = if __R1.velocity { v[__R1.index] } else { q[__R1.index] };
-            out.constraint_velocity[__OMEGA + 0] = r0 - r1;
+            out.constraint_velocity[__ROWS[0]] = r0 - r1;
             if __R0.velocity {
-                out.momentum_rate[__R0.index] += lambda[__OMEGA + 0];
+                out.momentum_rate[__R0.index] += lambda[__ROWS[0]];
             }
             if __R1.velocity {
-                out.momentum_rate[__R1.index] += -lambda[__OMEGA + 0];
+                out.momentum_rate[__R1.index] += -lambda[__ROWS[0]];
             }
         }
         #[inline]
@@ -1002,25 +1008,25 @@ const _: () = {
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out.a[(__OMEGA + __j, __i)] = 0.0;
+                    out.a[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out.dav_dq[(__OMEGA + __j, __i)] = 0.0;
+                    out.dav_dq[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             if __R0.velocity {
-                out.a[(__OMEGA + 0, __R0.index)] += 1f64;
+                out.a[(__ROWS[0], __R0.index)] += 1f64;
             }
             if __R1.velocity {
-                out.a[(__OMEGA + 0, __R1.index)] += -1f64;
+                out.a[(__ROWS[0], __R1.index)] += -1f64;
             }
             if !__R0.velocity {
-                out.dav_dq[(__OMEGA + 0, __R0.index)] += 1f64;
+                out.dav_dq[(__ROWS[0], __R0.index)] += 1f64;
             }
             if !__R1.velocity {
-                out.dav_dq[(__OMEGA + 0, __R1.index)] += -1f64;
+                out.dav_dq[(__ROWS[0], __R1.index)] += -1f64;
             }
         }
         #[inline]
@@ -1109,7 +1115,7 @@ const _: () = {
             }
             let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
             let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
-            out[__OMEGA + 0] = r0 - r1;
+            out[__ROWS[0]] = r0 - r1;
         }
         #[inline]
         fn dav_dt(
@@ -1141,7 +1147,7 @@ const _: () = {
                     );
                 ::dirac::__private::scatter_c::<Primitive2, Self>(&o, &__SLOT1, out);
             }
-            out[__OMEGA + 0] = 0f64;
+            out[__ROWS[0]] = 0f64;
         }
         #[inline]
         fn interconnection_forces(
@@ -1180,10 +1186,10 @@ const _: () = {
                 ::dirac::__private::scatter_q::<Primitive2, Self>(&o, &__SLOT1, out);
             }
             if __R0.velocity {
-                out[__R0.index] += lambda[__OMEGA + 0];
+                out[__R0.index] += lambda[__ROWS[0]];
             }
             if __R1.velocity {
-                out[__R1.index] += -lambda[__OMEGA + 0];
+                out[__R1.index] += -lambda[__ROWS[0]];
             }
         }
         fn invalid_parameter(
@@ -2240,19 +2246,21 @@ const _: () = {
                 ::dirac::__private::scatter_h::<Primitive2, Self>(&o, &__SLOT1, out);
                 return;
             }
-            if k
+            match k
                 .wrapping_sub(
                     0
                         + <Primitive1 as ::dirac::__private::Named>::NAMES
                             .parameter_count()
                         + <Primitive2 as ::dirac::__private::Named>::NAMES
                             .parameter_count(),
-                ) >= 0usize
-            {
-                ::core::panic!(
-                    "the model has no parameter {}: it has {}", k, < Self as
-                    ::dirac::__private::Named > ::NAMES.parameter_count()
                 )
+            {
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
             }
         }
     }
@@ -2539,7 +2547,7 @@ const _: () = {
         );
         ///The interconnection constraint `connect0`: names its row and multiplier μ.
         pub const CONNECT0: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
-            __OMEGA + 0,
+            __ROWS[0],
         );
     }
 };

@@ -26,7 +26,8 @@ const _: () = {
         <Cart as ::dirac::__private::Fixed>::NC,
     ];
     const __Q0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 0);
-    const __H0: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 0);
+    const __H0: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NHS, 0);
     const __V0: ::core::primitive::usize = __NH
         + ::dirac::__private::prefix_sum(&__NCS, 0)
         - ::dirac::__private::prefix_sum(&__NHS, 0);
@@ -36,7 +37,8 @@ const _: () = {
         v: __V0,
     };
     const __Q1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 1);
-    const __H1: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 1);
+    const __H1: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NHS, 1);
     const __V1: ::core::primitive::usize = __NH
         + ::dirac::__private::prefix_sum(&__NCS, 1)
         - ::dirac::__private::prefix_sum(&__NHS, 1);
@@ -52,11 +54,15 @@ const _: () = {
             "`CoupledByOneForm` is too large for dirac's stack-allocated integrators: a Radau integrator of it holds more than the 256 KiB of stack a model may take without asking (threads Rust spawns have 2 MiB, and overflowing a stack aborts the process); add `#[dirac(large)]` and run the simulation on a thread with a larger stack, such as `std::thread::Builder::new().stack_size(64 << 20)`"
         )
     };
+    const __HOWN: ::core::primitive::usize = 0;
     const __NQ: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NQS, 2);
-    const __NH: ::core::primitive::usize = ::dirac::__private::prefix_sum(&__NHS, 2);
-    const __OMEGA: ::core::primitive::usize = __NH
-        + ::dirac::__private::prefix_sum(&__NCS, 2) - __NH;
+    const __NH: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NHS, 2);
+    const __OMEGA: ::core::primitive::usize = __HOWN
+        + ::dirac::__private::prefix_sum(&__NCS, 2);
     const __NC: ::core::primitive::usize = __OMEGA + 1;
+    #[allow(clippy::identity_op)]
+    const __ROWS: [::core::primitive::usize; 1] = [__OMEGA + 0];
     const __R0: ::dirac::__private::Resolved = match <Wheel as ::dirac::__private::Named>::NAMES
         .resolve(&["theta"])
     {
@@ -474,10 +480,10 @@ const _: () = {
                 a += 1;
             }
         }
-        u[__NQ + __OMEGA + 0] = "structurally singular interconnection: the multiplier of `tie` of `CoupledByOneForm` is determined by no equation: it constrains velocities that other constraints already fix";
-        p[(__NQ + __OMEGA + 0) * __K + __R0.index] = true;
+        u[__NQ + __ROWS[0]] = "structurally singular interconnection: the multiplier of `tie` of `CoupledByOneForm` is determined by no equation: it constrains velocities that other constraints already fix";
+        p[(__NQ + __ROWS[0]) * __K + __R0.index] = true;
         if __R0.velocity {
-            p[__R0.index * __K + __NQ + __OMEGA + 0] = true;
+            p[__R0.index * __K + __NQ + __ROWS[0]] = true;
         }
         if __R0.velocity && !__R0.velocity {
             p[__R0.index * __K + __R0.index] = true;
@@ -485,16 +491,16 @@ const _: () = {
         if __R0.velocity && !__R1.velocity {
             p[__R0.index * __K + __R1.index] = true;
         }
-        p[(__NQ + __OMEGA + 0) * __K + __R1.index] = true;
+        p[(__NQ + __ROWS[0]) * __K + __R1.index] = true;
         if __R1.velocity {
-            p[__R1.index * __K + __NQ + __OMEGA + 0] = true;
+            p[__R1.index * __K + __NQ + __ROWS[0]] = true;
         }
         if __R1.velocity && !__R0.velocity {
             p[__R1.index * __K + __R0.index] = true;
         }
-        p[(__NQ + __OMEGA + 0) * __K + __R2.index] = true;
+        p[(__NQ + __ROWS[0]) * __K + __R2.index] = true;
         if __R2.velocity {
-            p[__R2.index * __K + __NQ + __OMEGA + 0] = true;
+            p[__R2.index * __K + __NQ + __ROWS[0]] = true;
         }
         if __R2.velocity && !__R2.velocity {
             p[__R2.index * __K + __R2.index] = true;
@@ -502,9 +508,9 @@ const _: () = {
         if __R2.velocity && !__R3.velocity {
             p[__R2.index * __K + __R3.index] = true;
         }
-        p[(__NQ + __OMEGA + 0) * __K + __R3.index] = true;
+        p[(__NQ + __ROWS[0]) * __K + __R3.index] = true;
         if __R3.velocity {
-            p[__R3.index * __K + __NQ + __OMEGA + 0] = true;
+            p[__R3.index * __K + __NQ + __ROWS[0]] = true;
         }
         if __R3.velocity && !__R2.velocity {
             p[__R3.index * __K + __R2.index] = true;
@@ -919,7 +925,7 @@ const _: () = {
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out[(__OMEGA + __j, __i)] = 0.0;
+                    out[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             let r0 = if __R0.velocity { 0.0 } else { q[__R0.index] };
@@ -927,16 +933,16 @@ const _: () = {
             let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
             let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
             if __R0.velocity {
-                out[(__OMEGA + 0, __R0.index)] += 0.1f64 * r1 * r0.cos();
+                out[(__ROWS[0], __R0.index)] += 0.1f64 * r1 * r0.cos();
             }
             if __R1.velocity {
-                out[(__OMEGA + 0, __R1.index)] += 0.1f64 * r0.sin() + 1f64;
+                out[(__ROWS[0], __R1.index)] += 0.1f64 * r0.sin() + 1f64;
             }
             if __R2.velocity {
-                out[(__OMEGA + 0, __R2.index)] += self.c * r3 * r2.sin();
+                out[(__ROWS[0], __R2.index)] += self.c * r3 * r2.sin();
             }
             if __R3.velocity {
-                out[(__OMEGA + 0, __R3.index)] += -self.c * r2.cos();
+                out[(__ROWS[0], __R3.index)] += -self.c * r2.cos();
             }
         }
         #[inline]
@@ -971,7 +977,7 @@ const _: () = {
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out[(__OMEGA + __j, __i)] = 0.0;
+                    out[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
@@ -979,16 +985,16 @@ const _: () = {
             let r2 = if __R2.velocity { v[__R2.index] } else { q[__R2.index] };
             let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
             if !__R0.velocity {
-                out[(__OMEGA + 0, __R0.index)] += 0.1f64 * r1 * r0.cos();
+                out[(__ROWS[0], __R0.index)] += 0.1f64 * r1 * r0.cos();
             }
             if !__R1.velocity {
-                out[(__OMEGA + 0, __R1.index)] += 0.1f64 * r0.sin() + 1f64;
+                out[(__ROWS[0], __R1.index)] += 0.1f64 * r0.sin() + 1f64;
             }
             if !__R2.velocity {
-                out[(__OMEGA + 0, __R2.index)] += self.c * r3 * r2.sin();
+                out[(__ROWS[0], __R2.index)] += self.c * r3 * r2.sin();
             }
             if !__R3.velocity {
-                out[(__OMEGA + 0, __R3.index)] += -self.c * r2.cos();
+                out[(__ROWS[0], __R3.index)] += -self.c * r2.cos();
             }
         }
         #[inline]
@@ -1025,11 +1031,11 @@ const _: () = {
             let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
             let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
             let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
-            let s0 = 0.1f64 * lambda[__OMEGA + 0] * r0.cos();
-            let s1 = self.c * lambda[__OMEGA + 0] * r2.sin();
+            let s0 = 0.1f64 * lambda[__ROWS[0]] * r0.cos();
+            let s1 = self.c * lambda[__ROWS[0]] * r2.sin();
             if __R0.velocity && !__R0.velocity {
                 out[(__R0.index, __R0.index)]
-                    += -0.1f64 * r0.sin() * r1 * lambda[__OMEGA + 0];
+                    += -0.1f64 * r0.sin() * r1 * lambda[__ROWS[0]];
             }
             if __R0.velocity && !__R1.velocity {
                 out[(__R0.index, __R1.index)] += s0;
@@ -1039,7 +1045,7 @@ const _: () = {
             }
             if __R2.velocity && !__R2.velocity {
                 out[(__R2.index, __R2.index)]
-                    += self.c * r2.cos() * r3 * lambda[__OMEGA + 0];
+                    += self.c * r2.cos() * r3 * lambda[__ROWS[0]];
             }
             if __R2.velocity && !__R3.velocity {
                 out[(__R2.index, __R3.index)] += s1;
@@ -1137,20 +1143,20 @@ const _: () = {
             let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
             let s0 = 0.1f64 * r0.sin() + 1f64;
             let s1 = r2.cos();
-            out.constraint_velocity[__OMEGA + 0] = s0 * r1 - self.c * s1 * r3;
+            out.constraint_velocity[__ROWS[0]] = s0 * r1 - self.c * s1 * r3;
             if __R0.velocity {
                 out.momentum_rate[__R0.index]
-                    += 0.1f64 * r1 * lambda[__OMEGA + 0] * r0.cos();
+                    += 0.1f64 * r1 * lambda[__ROWS[0]] * r0.cos();
             }
             if __R1.velocity {
-                out.momentum_rate[__R1.index] += s0 * lambda[__OMEGA + 0];
+                out.momentum_rate[__R1.index] += s0 * lambda[__ROWS[0]];
             }
             if __R2.velocity {
                 out.momentum_rate[__R2.index]
-                    += self.c * r3 * lambda[__OMEGA + 0] * r2.sin();
+                    += self.c * r3 * lambda[__ROWS[0]] * r2.sin();
             }
             if __R3.velocity {
-                out.momentum_rate[__R3.index] += -self.c * s1 * lambda[__OMEGA + 0];
+                out.momentum_rate[__R3.index] += -self.c * s1 * lambda[__ROWS[0]];
             }
         }
         #[inline]
@@ -1234,12 +1240,12 @@ const _: () = {
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out.a[(__OMEGA + __j, __i)] = 0.0;
+                    out.a[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             for __j in 0..1 {
                 for __i in 0..__NQ {
-                    out.dav_dq[(__OMEGA + __j, __i)] = 0.0;
+                    out.dav_dq[(__ROWS[__j], __i)] = 0.0;
                 }
             }
             let r0 = if __R0.velocity { v[__R0.index] } else { q[__R0.index] };
@@ -1254,35 +1260,35 @@ const _: () = {
             let s5 = -self.c * s2;
             let s6 = r2.sin();
             let s7 = self.c * r3 * s6;
-            let s8 = 0.1f64 * lambda[__OMEGA + 0] * s3;
-            let s9 = self.c * lambda[__OMEGA + 0] * s6;
+            let s8 = 0.1f64 * lambda[__ROWS[0]] * s3;
+            let s9 = self.c * lambda[__ROWS[0]] * s6;
             if __R0.velocity {
-                out.a[(__OMEGA + 0, __R0.index)] += s4;
+                out.a[(__ROWS[0], __R0.index)] += s4;
             }
             if __R1.velocity {
-                out.a[(__OMEGA + 0, __R1.index)] += s1;
+                out.a[(__ROWS[0], __R1.index)] += s1;
             }
             if __R2.velocity {
-                out.a[(__OMEGA + 0, __R2.index)] += s7;
+                out.a[(__ROWS[0], __R2.index)] += s7;
             }
             if __R3.velocity {
-                out.a[(__OMEGA + 0, __R3.index)] += s5;
+                out.a[(__ROWS[0], __R3.index)] += s5;
             }
             if !__R0.velocity {
-                out.dav_dq[(__OMEGA + 0, __R0.index)] += s4;
+                out.dav_dq[(__ROWS[0], __R0.index)] += s4;
             }
             if !__R1.velocity {
-                out.dav_dq[(__OMEGA + 0, __R1.index)] += s1;
+                out.dav_dq[(__ROWS[0], __R1.index)] += s1;
             }
             if !__R2.velocity {
-                out.dav_dq[(__OMEGA + 0, __R2.index)] += s7;
+                out.dav_dq[(__ROWS[0], __R2.index)] += s7;
             }
             if !__R3.velocity {
-                out.dav_dq[(__OMEGA + 0, __R3.index)] += s5;
+                out.dav_dq[(__ROWS[0], __R3.index)] += s5;
             }
             if __R0.velocity && !__R0.velocity {
                 out.dpdot_dq[(__R0.index, __R0.index)]
-                    += -0.1f64 * s0 * r1 * lambda[__OMEGA + 0];
+                    += -0.1f64 * s0 * r1 * lambda[__ROWS[0]];
             }
             if __R0.velocity && !__R1.velocity {
                 out.dpdot_dq[(__R0.index, __R1.index)] += s8;
@@ -1292,7 +1298,7 @@ const _: () = {
             }
             if __R2.velocity && !__R2.velocity {
                 out.dpdot_dq[(__R2.index, __R2.index)]
-                    += self.c * s2 * r3 * lambda[__OMEGA + 0];
+                    += self.c * s2 * r3 * lambda[__ROWS[0]];
             }
             if __R2.velocity && !__R3.velocity {
                 out.dpdot_dq[(__R2.index, __R3.index)] += s9;
@@ -1389,7 +1395,7 @@ const _: () = {
             let r1 = if __R1.velocity { 0.0 } else { q[__R1.index] };
             let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
             let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
-            out[__OMEGA + 0] = (0.1f64 * r0.sin() + 1f64) * r1 - self.c * r2.cos() * r3;
+            out[__ROWS[0]] = (0.1f64 * r0.sin() + 1f64) * r1 - self.c * r2.cos() * r3;
         }
         #[inline]
         fn dav_dt(
@@ -1421,7 +1427,7 @@ const _: () = {
                     );
                 ::dirac::__private::scatter_c::<Cart, Self>(&o, &__SLOT1, out);
             }
-            out[__OMEGA + 0] = 0f64;
+            out[__ROWS[0]] = 0f64;
         }
         #[inline]
         fn interconnection_forces(
@@ -1458,16 +1464,16 @@ const _: () = {
             let r2 = if __R2.velocity { 0.0 } else { q[__R2.index] };
             let r3 = if __R3.velocity { 0.0 } else { q[__R3.index] };
             if __R0.velocity {
-                out[__R0.index] += 0.1f64 * r1 * lambda[__OMEGA + 0] * r0.cos();
+                out[__R0.index] += 0.1f64 * r1 * lambda[__ROWS[0]] * r0.cos();
             }
             if __R1.velocity {
-                out[__R1.index] += (0.1f64 * r0.sin() + 1f64) * lambda[__OMEGA + 0];
+                out[__R1.index] += (0.1f64 * r0.sin() + 1f64) * lambda[__ROWS[0]];
             }
             if __R2.velocity {
-                out[__R2.index] += self.c * r3 * lambda[__OMEGA + 0] * r2.sin();
+                out[__R2.index] += self.c * r3 * lambda[__ROWS[0]] * r2.sin();
             }
             if __R3.velocity {
-                out[__R3.index] += -self.c * r2.cos() * lambda[__OMEGA + 0];
+                out[__R3.index] += -self.c * r2.cos() * lambda[__ROWS[0]];
             }
         }
         fn invalid_parameter(
@@ -2344,13 +2350,13 @@ const _: () = {
                     let r2 = if __R2.velocity { v[__R2.index] } else { q[__R2.index] };
                     let r3 = if __R3.velocity { v[__R3.index] } else { q[__R3.index] };
                     let s0 = r2.cos();
-                    out.constraint_velocity[__OMEGA + 0] = -s0 * r3;
+                    out.constraint_velocity[__ROWS[0]] = -s0 * r3;
                     if __R2.velocity {
                         out.momentum_rate[__R2.index]
-                            += r3 * lambda[__OMEGA + 0] * r2.sin();
+                            += r3 * lambda[__ROWS[0]] * r2.sin();
                     }
                     if __R3.velocity {
-                        out.momentum_rate[__R3.index] += -s0 * lambda[__OMEGA + 0];
+                        out.momentum_rate[__R3.index] += -s0 * lambda[__ROWS[0]];
                     }
                 }
                 _ => {
@@ -2499,16 +2505,19 @@ const _: () = {
                 ::dirac::__private::scatter_h::<Cart, Self>(&o, &__SLOT1, out);
                 return;
             }
-            if k
+            match k
                 .wrapping_sub(
                     0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
                         + <Cart as ::dirac::__private::Named>::NAMES.parameter_count(),
-                ) >= 1usize
-            {
-                ::core::panic!(
-                    "the model has no parameter {}: it has {}", k, < Self as
-                    ::dirac::__private::Named > ::NAMES.parameter_count()
                 )
+            {
+                0 => {}
+                _ => {
+                    ::core::panic!(
+                        "the model has no parameter {}: it has {}", k, < Self as
+                        ::dirac::__private::Named > ::NAMES.parameter_count()
+                    )
+                }
             }
         }
     }
@@ -2776,7 +2785,7 @@ const _: () = {
         }
         ///The interconnection constraint `tie`: names its row and multiplier μ.
         pub const TIE: ::dirac::__private::Constraint<Self> = ::dirac::__private::Constraint::new(
-            __OMEGA + 0,
+            __ROWS[0],
         );
     }
 };

@@ -1,0 +1,27 @@
+use dirac::prelude::*;
+
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(x1 => v1, x2 => v2), port(x2))]
+#[dirac(lagrangian = 0.5 * m * (v1 * v1 + v2 * v2) - 0.5 * k * (x2 - x1).powi(2))]
+pub struct Left {
+    pub m: f64,
+    pub k: f64,
+}
+
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(x2bar => v2bar, x3 => v3), port(x2bar))]
+#[dirac(lagrangian = 0.5 * m * v3 * v3 - 0.5 * k * (x3 - x2bar).powi(2))]
+pub struct Right {
+    pub m: f64,
+    pub k: f64,
+}
+
+#[derive(Interconnection)]
+/// A position constraint may name coordinates only.
+#[dirac(holonomic(rigid) = left.x1 - right.v3)]
+pub struct Chain {
+    pub left: Left,
+    pub right: Right,
+}
+
+fn main() {}
