@@ -11,14 +11,12 @@ use crate::every_method::{Fineness, Method};
 /// everything dirac computes; `elliptic_functions_satisfy_their_differential_equations`
 /// checks it.
 fn sn_cn_dn(u: f64, m: f64) -> (f64, f64, f64) {
-    let mut a = vec![1.0];
-    let mut c = vec![m.sqrt()];
-    let mut b = (1.0 - m).sqrt();
-    while c.last().unwrap().abs() > 1e-17 && a.len() < 40 {
-        let (an, bn) = (*a.last().unwrap(), b);
-        a.push(0.5 * (an + bn));
-        c.push(0.5 * (an - bn));
-        b = (an * bn).sqrt();
+    let (mut a, mut c) = (vec![1.0], vec![m.sqrt()]);
+    let (mut an, mut bn, mut cn) = (1.0f64, (1.0 - m).sqrt(), m.sqrt());
+    while cn.abs() > 1e-17 && a.len() < 40 {
+        (an, bn, cn) = (0.5 * (an + bn), (an * bn).sqrt(), 0.5 * (an - bn));
+        a.push(an);
+        c.push(cn);
     }
     let n = a.len() - 1;
     let mut phi = 2f64.powi(n as i32) * a[n] * u;
