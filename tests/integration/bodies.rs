@@ -5,6 +5,7 @@ use dirac::components::bodies::RigidBody;
 use dirac::prelude::*;
 
 use crate::every_method::{Fineness, Method};
+use crate::zoo::bodies::{PlanarDoublePendulum, SpatialDoublePendulum, double_pendulums, spatial_start};
 
 /// Jacobi's `sn, cn, dn` of `u` with parameter `m = k²`, by the arithmetic-geometric mean
 /// (descending Landen transformation; Abramowitz and Stegun 16.4). Written here, apart from
@@ -169,79 +170,6 @@ fn a_free_asymmetric_body_turns_as_jacobis_elliptic_functions_say() {
     assert!((3.8..4.2).contains(&ratio), "error ratio {ratio} on halving the step");
 }
 
-/// Two bodies hung by revolute joints about space's `y` axis: link 1 from a pivot at the
-/// origin at `a1` above its centre, link 2 from link 1 at `b1` below link 1's centre and `a2`
-/// above its own. Each joint holds a point of one body on a point of the other (three rows)
-/// and keeps their `y` axes parallel (two rows): the pivot's rows are linear in the embedded
-/// coordinates, the hinge's axis rows bilinear.
-#[derive(Interconnection, Clone)]
-#[dirac(holonomic(pivot_x) = link1.x + a1 * link1.r13, holonomic(pivot_y) = link1.y + a1 * link1.r23)]
-#[dirac(holonomic(pivot_z) = link1.z + a1 * link1.r33)]
-#[dirac(holonomic(pivot_axis_x) = link1.r12, holonomic(pivot_axis_z) = link1.r32)]
-#[dirac(holonomic(hinge_x) = link1.x - b1 * link1.r13 - link2.x - a2 * link2.r13)]
-#[dirac(holonomic(hinge_y) = link1.y - b1 * link1.r23 - link2.y - a2 * link2.r23)]
-#[dirac(holonomic(hinge_z) = link1.z - b1 * link1.r33 - link2.z - a2 * link2.r33)]
-// Link 1's y axis (its second column) across link 2's x and z axes.
-#[dirac(holonomic(hinge_axis_1) = link1.r12 * link2.r11 + link1.r22 * link2.r21 + link1.r32 * link2.r31)]
-#[dirac(holonomic(hinge_axis_3) = link1.r12 * link2.r13 + link1.r22 * link2.r23 + link1.r32 * link2.r33)]
-struct SpatialDoublePendulum {
-    link1: RigidBody,
-    link2: RigidBody,
-    a1: f64,
-    b1: f64,
-    a2: f64,
-}
-
-/// The same pendulum in its two joint angles (about `y`, zero hanging down), written by hand:
-/// the centres at `(−a1 sin θ1, −a1 cos θ1)` and `(−l1 sin θ1 − a2 sin θ2, …)` in `(x, z)`,
-/// `l1 = a1 + b1`, and each link's own inertia about `y`.
-#[derive(LagrangeDirac)]
-#[dirac(coordinates(th1 => w1, th2 => w2))]
-#[dirac(define(l1) = a1 + b1)]
-#[dirac(define(vx2) = -l1 * th1.cos() * w1 - a2 * th2.cos() * w2)]
-#[dirac(define(vz2) = l1 * th1.sin() * w1 + a2 * th2.sin() * w2)]
-#[dirac(lagrangian = 0.5 * (m1 * a1 * a1 + j1) * w1 * w1 + 0.5 * m2 * (vx2 * vx2 + vz2 * vz2) + 0.5 * j2 * w2 * w2
-    + m1 * g * a1 * th1.cos() + m2 * g * (l1 * th1.cos() + a2 * th2.cos()))]
-struct PlanarDoublePendulum {
-    m1: f64,
-    m2: f64,
-    j1: f64,
-    j2: f64,
-    a1: f64,
-    b1: f64,
-    a2: f64,
-    g: f64,
-}
-
-/// `R_y(θ)` as rows.
-fn about_y(theta: f64) -> [[f64; 3]; 3] {
-    let (s, c) = theta.sin_cos();
-    [[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]]
-}
-
-/// The spatial pendulum at joint angles `th` and rates `w`, with its constraints' multipliers
-/// found by `consistent_state`.
-fn spatial_start(model: &SpatialDoublePendulum, th: [f64; 2], w: [f64; 2]) -> State<SpatialDoublePendulum> {
-    let (a1, b1, a2) = (model.a1, model.b1, model.a2);
-    let l1 = a1 + b1;
-    let centre1 = [-a1 * th[0].sin(), 0.0, -a1 * th[0].cos()];
-    let velocity1 = [-a1 * th[0].cos() * w[0], 0.0, a1 * th[0].sin() * w[0]];
-    let centre2 = [-l1 * th[0].sin() - a2 * th[1].sin(), 0.0, -l1 * th[0].cos() - a2 * th[1].cos()];
-    let velocity2 = [
-        -l1 * th[0].cos() * w[0] - a2 * th[1].cos() * w[1],
-        0.0,
-        l1 * th[0].sin() * w[0] + a2 * th[1].sin() * w[1],
-    ];
-    let (q1, v1) = model.link1.state(centre1, about_y(th[0]), velocity1, [0.0, w[0], 0.0]);
-    let (q2, v2) = model.link2.state(centre2, about_y(th[1]), velocity2, [0.0, w[1], 0.0]);
-    let (mut q, mut v) = (VecQ::<SpatialDoublePendulum>::zeros(), VecQ::<SpatialDoublePendulum>::zeros());
-    q.rows_mut(0, 12).copy_from(&q1);
-    q.rows_mut(12, 12).copy_from(&q2);
-    v.rows_mut(0, 12).copy_from(&v1);
-    v.rows_mut(12, 12).copy_from(&v2);
-    consistent_state(model, 0.0, &q, &v, Consistency::default()).expect("a consistent start")
-}
-
 /// The joint angles of the spatial pendulum: `R e3 = (sin θ, 0, cos θ)`.
 fn joint_angles(solution: &Solution<SpatialDoublePendulum, impl Sized>, k: usize) -> [f64; 2] {
     let angle = |link: &str| {
@@ -249,25 +177,6 @@ fn joint_angles(solution: &Solution<SpatialDoublePendulum, impl Sized>, k: usize
         at("r13").atan2(at("r33"))
     };
     [angle("link1"), angle("link2")]
-}
-
-fn double_pendulums() -> (SpatialDoublePendulum, PlanarDoublePendulum) {
-    let (m1, m2, g) = (1.5, 0.8, 9.81);
-    // Boxes: link 1 of 0.1 × 0.2 × 1.0 m, link 2 of 0.3 × 0.1 × 0.6 m.
-    let box_moments = |m: f64, [x, y, z]: [f64; 3]| {
-        [m * (y * y + z * z) / 12.0, m * (x * x + z * z) / 12.0, m * (x * x + y * y) / 12.0]
-    };
-    let (j1, j2) = (box_moments(m1, [0.1, 0.2, 1.0]), box_moments(m2, [0.3, 0.1, 0.6]));
-    let (a1, b1, a2) = (0.5, 0.5, 0.3);
-    let spatial = SpatialDoublePendulum {
-        link1: RigidBody::new(m1, j1).with_gravity(g),
-        link2: RigidBody::new(m2, j2).with_gravity(g),
-        a1,
-        b1,
-        a2,
-    };
-    let planar = PlanarDoublePendulum { m1, m2, j1: j1[1], j2: j2[1], a1, b1, a2, g };
-    (spatial, planar)
 }
 
 #[test]

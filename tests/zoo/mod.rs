@@ -6,6 +6,8 @@
 
 use dirac::prelude::*;
 
+pub mod bodies;
+
 /// Primitive system 1 of the paper (Fig. 2): wall —k1— m1 —k2— m2, port at x2.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(coordinates(x1 => v1, x2 => v2), port(x2))]
