@@ -378,7 +378,7 @@ const _: () = {
             } != 1))
     {
         ::core::panic!(
-            "interconnection constraint `tie` has no velocity in it; interconnection constraints are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities"
+            "interconnection constraint `tie` has no velocity in it; interconnection constraints are `Ω(q, t) v + b(q, t) = 0` over the subsystems' velocities (a constraint on positions, `φ(q, t) = 0`, is `holonomic(tie) = …`)"
         )
     };
     const __PRESCRIBED_OWN: ::core::primitive::bool = false
