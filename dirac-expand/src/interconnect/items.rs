@@ -511,7 +511,11 @@ fn constants(composite: &Composite<'_>, targets: &Targets<'_>) -> TokenStream {
         }
         Targets::Stub => {
             let ports = composite.connections.iter().flat_map(|c| [&c.a, &c.b]);
+            let holonomic = composite.holonomic.iter().enumerate();
+            let holonomic = holonomic
+                .map(|(i, c)| c.name.as_ref().map_or_else(|| format!("holonomic{i}"), ToString::to_string));
             let rows = composite.connections.iter().enumerate().map(|(i, _)| format!("connect{i}"));
+            let rows = holonomic.chain(rows);
             let named = composite.constraints.iter().enumerate();
             let named = named
                 .map(|(i, c)| c.name.as_ref().map_or_else(|| format!("constraint{i}"), ToString::to_string));
