@@ -809,3 +809,31 @@ fn fmu_communication_steps_do_not_allocate() {
         abi::free_instance::<DrivenPendulum>(instance);
     }
 }
+
+/// Rigid bodies on joints (holonomic rows of an interconnection): every method's steps, and
+/// Radau's projection of the steps' ends and of the samples between them.
+#[test]
+fn steps_of_bodies_on_joints_do_not_allocate() {
+    let (pendulum, _) = zoo::bodies::double_pendulums();
+    let s = zoo::bodies::spatial_start(&pendulum, [0.9, -0.4], [0.3, 1.1]);
+    assert_eq!(allocations_in_steps(&pendulum, &s, 100.0), 0, "Radau, bodies on joints");
+    assert_eq!(allocations_in_explicit_steps(&pendulum, &s, 100.0), 0, "Explicit, bodies on joints");
+    assert_eq!(
+        allocations_in_variational_steps(&pendulum, &s, VariationalOptions::default()),
+        0,
+        "variational, bodies on joints"
+    );
+    let mut radau =
+        Radau::new(&pendulum, RadauOptions { projection: true, ..RadauOptions::tolerances(1e-10, 1e-10) })
+            .expect("valid options");
+    radau.start(0.0, &s, 100.0).expect("starts");
+    radau.step().expect("steps");
+    let mut sample = s.clone();
+    let before = allocations();
+    for _ in 0..100 {
+        let t0 = radau.t();
+        radau.step().expect("steps");
+        radau.interpolate(0.5 * (t0 + radau.t()), &mut sample);
+    }
+    assert_eq!(allocations() - before, 0, "Radau with projection, steps and samples, bodies on joints");
+}
