@@ -582,3 +582,47 @@ fn spatial_closed_loop() {
     // Radau and the explicit method, independent, agree; the variational method to its order.
     assert!((ends[0] - ends[1]).abs() < 1e-7 && (ends[0] - ends[2]).abs() < 1e-4, "{ends:?}");
 }
+
+#[test]
+fn bodies_refuse_what_no_body_can_be() {
+    // A body without mass, with a NaN moment, or under negative gravity is refused before it
+    // runs, by the parameter's name; a start off SO(3) is put on it by `consistent_state` or
+    // refused, never integrated as it is.
+    let eye = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    for (body, name) in [
+        (RigidBody::new(0.0, [1.0, 2.0, 3.0]), "m"),
+        (RigidBody::new(1.0, [1.0, f64::NAN, 3.0]), "jyy"),
+        (RigidBody::new(1.0, [1.0, 2.0, 3.0]).with_gravity(-9.81), "g"),
+    ] {
+        let (q, v) = body.state([0.0; 3], eye, [0.0; 3], [0.0, 0.0, 1.0]);
+        let mut start = State::<RigidBody>::zeros();
+        start.q = q;
+        start.v = v;
+        match Radau::new(&body, RadauOptions::default())
+            .map(|mut r| r.solve(0.0, &start, 1.0, &Sampling::Steps))
+        {
+            Err(SimError::InvalidParameter { name: n, .. })
+            | Ok(Err(SimError::InvalidParameter { name: n, .. })) => {
+                assert_eq!(n, name)
+            }
+            other => panic!("{name}: {:?}", other.map(|r| r.map(|s| s.len()))),
+        }
+    }
+    let body = RigidBody::new(1.0, [1.0, 2.0, 3.0]);
+    let skewed = [[1.0, 0.1, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let (q, v) = body.state([0.0; 3], skewed, [0.0; 3], [0.0, 0.0, 1.0]);
+    let mut raw = State::<RigidBody>::zeros();
+    raw.q = q;
+    raw.v = v;
+    let refused =
+        Radau::new(&body, RadauOptions::default()).expect("valid").solve(0.0, &raw, 1.0, &Sampling::Steps);
+    assert!(refused.is_err(), "a rotation off SO(3) is not integrated as it is");
+    match consistent_state(&body, 0.0, &q, &v, Consistency::default()) {
+        Ok(start) => {
+            let mut phi = VecH::<RigidBody>::zeros();
+            body.holonomic(0.0, &start.q, &mut phi);
+            assert!(phi.amax() < 1e-12, "consistent_state puts the rotation on SO(3): {phi}");
+        }
+        Err(error) => println!("consistent_state refuses the skewed rotation: {error}"),
+    }
+}

@@ -305,23 +305,27 @@ impl CompositeModel {
                 });
             }
         }
-        // A holonomic row's coefficients `∂φ/∂q` vary unless `φ` is linear in the coordinates,
-        // and it prescribes a motion where `φ` depends on time.
+        // A holonomic row's coefficients `∂φ/∂q` vary unless `φ` is linear in the coordinates
+        // (the rule of `varying_coefficient`: they depend on nothing but parameters and
+        // constants), and it prescribes a motion where `φ` depends on time.
         let time = self.symbols.declare(&mut self.graph, Sym::Time);
+        let rates: Vec<Id> = (0..self.members())
+            .filter(|&k| self.symbols.member_at(k).rate)
+            .map(|k| self.symbols.member_id(k))
+            .collect();
         for j in 0..self.rows.len() {
             let Some(phi) = self.rows[j].holonomic else { continue };
             let rate = self.graph.diff(phi, time);
             if !self.graph.is_zero(rate) {
                 prescribed.push(quote! { true });
             }
-            let time_sym = self.graph.as_sym(time).expect("a symbol");
             let omega = self.rows[j].omega;
-            let rates: Vec<usize> = (0..self.members()).filter(|&k| self.symbols.member_at(k).rate).collect();
-            let coefficients: Vec<Id> =
-                rates.iter().map(|&k| self.graph.diff(omega, self.symbols.member_id(k))).collect();
+            let coefficients: Vec<Id> = rates.iter().map(|&r| self.graph.diff(omega, r)).collect();
             let moving = coefficients.iter().any(|&c| {
-                self.graph.depends_on(c, time_sym)
-                    || self.graph.deps(c).iter().any(|s| matches!(self.symbols.kind(s), Sym::Member(_)))
+                self.graph
+                    .deps(c)
+                    .iter()
+                    .any(|s| !matches!(self.symbols.kind(s), Sym::Parameter(_) | Sym::Constant(_)))
             });
             if moving {
                 varying.push(quote! { true });
