@@ -10,8 +10,8 @@ use crate::ctxt::Ctxt;
 use crate::laws::{self, LawDecl, LawKind};
 use crate::symbol::{
     CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FORCE, FRICTION, HOLONOMIC,
-    INPUT, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, OUTPUT, PORT, PORTS, POSITIVE, RESTITUTION, SWITCH,
-    UNILATERAL, UNIT,
+    INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, OUTPUT, PORT, PORTS, POSITIVE,
+    RESTITUTION, SWITCH, UNILATERAL, UNIT, URDF,
 };
 
 /// A model as written by the user.
@@ -55,6 +55,13 @@ pub struct Model<'a> {
     pub param_docs: Vec<(Ident, String)>,
     /// `unit(name, ...) = "text"`: each name with its unit, in the order written.
     pub units: Vec<(Ident, syn::LitStr)>,
+    /// `urdf = "path"`: the robot file the model is read from.
+    pub urdf: Option<syn::LitStr>,
+    /// `joint_limits`: the URDF's joint limits as unilateral constraints (the key, for spans).
+    pub joint_limits: Option<Ident>,
+    /// Files the model was read from, which the expansion names so that Cargo rebuilds it when
+    /// they change.
+    pub tracked_files: Vec<String>,
     /// Whether an attribute failed to parse, so items may be missing: later stages then skip
     /// the rules that would only report consequences of the syntax error.
     pub incomplete: bool,
@@ -164,6 +171,9 @@ impl<'a> Model<'a> {
             doc: doc_comment(&input.attrs),
             param_docs: Vec::new(),
             units: Vec::new(),
+            urdf: None,
+            joint_limits: None,
+            tracked_files: Vec::new(),
             incomplete: false,
         };
         if !input.generics.params.is_empty() {
@@ -187,6 +197,11 @@ impl<'a> Model<'a> {
                 cx.syn_error(e);
                 model.incomplete = true;
             }
+        }
+        if let Some(path) = model.urdf.clone().filter(|_| !model.incomplete) {
+            crate::urdf::desugar(cx, &mut model, &path);
+        } else if let Some(key) = &model.joint_limits {
+            cx.error_spanned_by(key, "`joint_limits` are a URDF file's: add `urdf = \"robot.urdf\"`");
         }
         laws::desugar(cx, &mut model);
         model
@@ -317,6 +332,16 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 model.inputs.extend(names.iter().map(IdentExt::unraw));
             }
             LARGE => model.large = true,
+            JOINT_LIMITS => model.joint_limits = Some(key.clone()),
+            URDF => {
+                input.parse::<Token![=]>()?;
+                let path: syn::LitStr = input.parse()?;
+                if model.urdf.is_some() {
+                    cx.error_spanned_by(&key, "duplicate `urdf`: a model is read from one robot file");
+                } else {
+                    model.urdf = Some(path);
+                }
+            }
             POSITIVE | NONNEGATIVE => {
                 let requirement =
                     if key == POSITIVE { Requirement::Positive } else { Requirement::Nonnegative };

@@ -6,7 +6,11 @@
 use crate::blocks::Blocks;
 use crate::model::SymModel;
 use crate::sym::Id;
-use crate::sym::pretty::{Style, pretty};
+use crate::sym::pretty::{Style, pretty, printed_size};
+
+/// The most terms an equation is printed with: a robot's momentum balances, through its
+/// definitions, are sums of many thousands.
+const PRINTED_LIMIT: usize = 4000;
 use crate::symbols::Sym;
 
 const GREEK: &[&str] = &[
@@ -104,7 +108,13 @@ pub fn equations(model: &mut SymModel, b: &Blocks, model_name: &str) -> (String,
         rate.push(model.graph.add(&terms));
     }
     let model = &*model;
-    let show = |e: Id, style: Style| pretty(&model.graph, e, style, &|s| display_name(model, s, style));
+    let show = |e: Id, style: Style| {
+        if printed_size(&model.graph, e, PRINTED_LIMIT) >= PRINTED_LIMIT {
+            let note = format!("(more than {PRINTED_LIMIT} terms, not printed)");
+            return if style == Style::Latex { format!("\\text{{{note}}}") } else { note };
+        }
+        pretty(&model.graph, e, style, &|s| display_name(model, s, style))
+    };
     let names = Taken::of(model);
     let mut text = vec![format!("{model_name}: L = {}", show(b.lagrangian, Style::Text))];
     let mut latex = vec![format!("L &= {}", show(b.lagrangian, Style::Latex))];

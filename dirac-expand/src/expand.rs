@@ -210,7 +210,10 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let parameters = invalid_parameter(&sym.params, &model.requirements);
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     let switches = crate::contacts::switch_methods(model, &sym);
+    let tracked = &model.tracked_files;
     quote! {
+        // The files the model was read from: Cargo rebuilds it when one changes.
+        #(const _: &[u8] = include_bytes!(#tracked);)*
         const _: () = {
             #[automatically_derived]
             impl #p::Dimensions for #ident {

@@ -26,6 +26,7 @@ mod suggest;
 mod sym;
 mod symbol;
 mod symbols;
+mod urdf;
 
 #[cfg(test)]
 mod snapshots;

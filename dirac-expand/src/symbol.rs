@@ -34,6 +34,11 @@ pub const UNILATERAL: &str = "unilateral";
 /// `unit(name, ...) = "text"`: the unit of coordinates, velocities, parameters, inputs or
 /// outputs, for people and for exported descriptions (an FMU's `modelDescription.xml`).
 pub const UNIT: &str = "unit";
+/// `urdf = "path"`: the model is a robot read from a URDF file, relative to the crate.
+pub const URDF: &str = "urdf";
+/// `joint_limits`: with `urdf`, each limited joint's `<limit lower upper>` as two unilateral
+/// constraints with restitution 0 (hard stops).
+pub const JOINT_LIMITS: &str = "joint_limits";
 /// The restitution of a `unilateral` constraint.
 pub const RESTITUTION: &str = "restitution";
 /// `event(name) = expr` or `event(name, falling | rising | either) = expr`: a function whose
@@ -79,6 +84,8 @@ pub const MODEL_KEYS: &[&str] = &[
     EVENT,
     FORCE,
     DISSIPATION,
+    URDF,
+    JOINT_LIMITS,
     FRICTION,
     DIODE,
     SWITCH,

@@ -23,6 +23,47 @@ pub fn pretty(graph: &Graph, e: Id, style: Style, name: &dyn Fn(u32) -> String) 
     Printer { graph, style, name }.print(e).0
 }
 
+/// The number of nodes `e` prints as, counting shared subexpressions each time they appear
+/// and a definition as its name, or `limit` if it is more: printing is linear in this.
+pub fn printed_size(graph: &Graph, e: Id, limit: usize) -> usize {
+    fn size(graph: &Graph, e: Id, limit: usize, memo: &mut std::collections::HashMap<Id, usize>) -> usize {
+        if let Some(&s) = memo.get(&e) {
+            return s;
+        }
+        let children: &[Id] = match graph.node(e) {
+            Node::Num(_) | Node::Sym(_) => &[],
+            Node::Add(_, xs) | Node::Mul(_, xs) => xs,
+            Node::Powi(x, _) | Node::Call(_, x) => std::slice::from_ref(x),
+            Node::Powf(a, b) | Node::Atan2(a, b) => return pair(graph, *a, *b, limit, memo),
+            Node::Select(c, a, b) => {
+                let s =
+                    pair(graph, *c, *a, limit, memo).saturating_add(size(graph, *b, limit, memo)).min(limit);
+                memo.insert(e, s);
+                return s;
+            }
+        };
+        let mut total = 1usize;
+        for &c in children {
+            total = total.saturating_add(size(graph, c, limit, memo)).min(limit);
+        }
+        memo.insert(e, total);
+        total
+    }
+    fn pair(
+        graph: &Graph,
+        a: Id,
+        b: Id,
+        limit: usize,
+        memo: &mut std::collections::HashMap<Id, usize>,
+    ) -> usize {
+        1usize
+            .saturating_add(size(graph, a, limit, memo))
+            .saturating_add(size(graph, b, limit, memo))
+            .min(limit)
+    }
+    size(graph, e, limit, &mut std::collections::HashMap::new())
+}
+
 struct Printer<'a> {
     graph: &'a Graph,
     style: Style,

@@ -1,0 +1,489 @@
+//! `#[dirac(urdf = "robot.urdf")]`: a robot read from its URDF when the model compiles and
+//! written into the model as joint coordinates, definitions, a Lagrangian and outputs, which
+//! then go through the derive like any model written by hand.
+//!
+//! The Lagrangian is the links' kinetic energy less their potential in gravity `(0, 0, −9.81)`,
+//! in the joint coordinates. Each link's angular velocity `ω` and the velocity `v` of its
+//! frame's origin are carried in the link's own axes by the usual recursion from the root,
+//!
+//! ```text
+//! ω_k = Rᵀ ω_p + a q̇            (revolute; Rᵀ ω_p for a prismatic or fixed joint)
+//! v_k = Rᵀ (v_p + ω_p × d)       (+ a q̇ for a prismatic joint)
+//! ```
+//!
+//! with `R` the joint's rotation (its origin's, times the rotation about the axis `a`) and `d`
+//! the offset of the child's origin in the parent's frame. Then
+//! `T_k = ½ m |v + ω × c|² + ½ ωᵀ I_c ω` with `c` the centre of mass and `I_c` the inertia about
+//! it, and `V_k = m g z_c` with the height of the centre of mass from the third row of the
+//! link's rotation in the world. Every step is a definition, so the derive's graph shares them
+//! and differentiates each once.
+//!
+//! `<mimic>` becomes a holonomic row, `<dynamics damping>` a Rayleigh dissipation and
+//! `<dynamics friction>` a `friction` law (Coulomb friction with stiction); every joint
+//! coordinate is a port (a motor from the component library attaches to any joint), and each
+//! link's origin in the world is an output (`<link>_x`, `_y`, `_z`). With `joint_limits`, each
+//! limited joint's `<limit lower upper>` is two unilateral constraints, `<joint>_lower` and
+//! `<joint>_upper`, with restitution 0: hard stops the joint rests against.
+
+mod poly;
+mod read;
+
+use proc_macro2::Span;
+use syn::{Expr, Ident, LitStr};
+
+use crate::ast::{ConstraintDecl, ConstraintKind, CoordinateDecl, DefineDecl, Model, UnilateralDecl};
+use crate::ctxt::Ctxt;
+use crate::laws::{LawDecl, LawKind};
+use poly::{Atom, Poly};
+use read::{Kind, Mat3, Robot};
+
+/// The acceleration of gravity, along −z, as Pinocchio and MuJoCo assume it.
+pub const GRAVITY: f64 = 9.81;
+
+/// Reads the URDF named by `path` (relative to the crate being compiled) and writes the robot
+/// into `model`; every problem is an error at `path`.
+pub fn desugar(cx: &Ctxt, model: &mut Model<'_>, path: &LitStr) {
+    let dir = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".to_owned());
+    let full = std::path::Path::new(&dir).join(path.value());
+    let text = match std::fs::read_to_string(&full) {
+        Ok(text) => text,
+        Err(e) => {
+            let message = format!(
+                "cannot read the URDF `{}` (a path relative to the crate's root, where its Cargo.toml is): {e}",
+                path.value()
+            );
+            cx.error_spanned_by(path, message);
+            return;
+        }
+    };
+    let robot = match read::parse(&text) {
+        Ok(robot) => robot,
+        Err(e) => {
+            cx.error_spanned_by(path, format!("{}, {e}", path.value()));
+            return;
+        }
+    };
+    if model.lagrangian.is_some() {
+        cx.error_spanned_by(
+            path,
+            "a model read from a URDF has the robot's Lagrangian; remove `lagrangian = …`",
+        );
+        return;
+    }
+    model.tracked_files.push(full.display().to_string());
+    let mut writer = Writer { cx, model, span: path.span(), path };
+    writer.robot(&robot);
+}
+
+struct Writer<'c, 'm, 'a> {
+    cx: &'c Ctxt,
+    model: &'m mut Model<'a>,
+    span: Span,
+    path: &'c LitStr,
+}
+
+/// A link's motion: angular velocity and origin velocity in its own axes, rotation and origin
+/// in the world.
+struct Frame {
+    omega: [Atom; 3],
+    velocity: [Atom; 3],
+    rotation: [[Atom; 3]; 3],
+    origin: [Atom; 3],
+}
+
+const XYZ: [&str; 3] = ["x", "y", "z"];
+
+impl Writer<'_, '_, '_> {
+    fn robot(&mut self, robot: &Robot) {
+        let Some(names) = self.identifiers(robot) else { return };
+        let (links, joints) = names;
+        let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
+        let identity = read::rpy([0.0; 3]).map(|row| row.map(Atom::Num));
+        let mut frames = vec![Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() }];
+        let mut kinetic = Vec::new();
+        let mut potential = Vec::new();
+        for (k, joint) in robot.joints.iter().enumerate() {
+            let link = &links[k + 1];
+            let parent = &frames[joint.parent];
+            let (q, v) = (Atom::Name(joints[k].clone()), Atom::Name(format!("v_{}", joints[k])));
+            // The rotation about the axis, as (cos, sin) definitions, for a revolute joint.
+            let turn = (joint.kind == Kind::Revolute).then(|| {
+                let cos = self.define(format!("{link}_cos"), &format!("{}.cos()", joints[k]));
+                let sin = self.define(format!("{link}_sin"), &format!("{}.sin()", joints[k]));
+                (cos, sin)
+            });
+            // d: the child's origin in the parent's frame.
+            let mut d: [Poly; 3] = joint.xyz.map(Poly::num);
+            if joint.kind == Kind::Prismatic {
+                let along = matvec(&joint.rotation, &joint.axis.map(Atom::Num));
+                for (di, ai) in d.iter_mut().zip(&along) {
+                    di.add(&ai.mul(&Poly::atom(&q)), 1.0);
+                }
+            }
+            // ω_k and v_k in the child's axes.
+            let w_in_joint =
+                self.bind3(&format!("{link}_wj"), matvec(&read::transpose(&joint.rotation), &parent.omega));
+            let mut arm = cross(&parent.omega.clone().map(|a| Poly::atom(&a)), &d);
+            for (ai, vi) in arm.iter_mut().zip(&parent.velocity) {
+                ai.add(&Poly::atom(vi), 1.0);
+            }
+            let arm = self.bind3(&format!("{link}_uj"), arm.map(|p| p));
+            let arm_in_joint =
+                self.bind3(&format!("{link}_vj"), matvec(&read::transpose(&joint.rotation), &arm));
+            let (mut omega, mut velocity) = match &turn {
+                Some((cos, sin)) => (
+                    rotate_back(&joint.axis, cos, sin, &w_in_joint),
+                    rotate_back(&joint.axis, cos, sin, &arm_in_joint),
+                ),
+                None => {
+                    (w_in_joint.clone().map(|a| Poly::atom(&a)), arm_in_joint.clone().map(|a| Poly::atom(&a)))
+                }
+            };
+            let rate = Poly::atom(&v);
+            match joint.kind {
+                Kind::Revolute => omega.iter_mut().zip(joint.axis).for_each(|(w, a)| w.add(&rate, a)),
+                Kind::Prismatic => velocity.iter_mut().zip(joint.axis).for_each(|(u, a)| u.add(&rate, a)),
+                Kind::Fixed => {}
+            }
+            let omega = self.bind3(&format!("{link}_w"), omega);
+            let velocity = self.bind3(&format!("{link}_v"), velocity);
+            // The rotation and origin in the world: R_p E Rot(a, q), and o_p + R_p d.
+            let pe: [[Poly; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|j| {
+                    let mut s = Poly::default();
+                    for m in 0..3 {
+                        s.add(&Poly::atom(&parent.rotation[i][m]), joint.rotation[m][j]);
+                    }
+                    s
+                })
+            });
+            let mut rotation: [[Atom; 3]; 3] = std::array::from_fn(|_| zero());
+            for (i, row) in pe.into_iter().enumerate() {
+                let row = self.bind3(&format!("{link}_e{}", i + 1), row);
+                let row = match &turn {
+                    // Row i of R_p E Rot is Rotᵀ applied to row i of R_p E.
+                    Some((cos, sin)) => rotate_back(&joint.axis, cos, sin, &row),
+                    None => row.map(|a| Poly::atom(&a)),
+                };
+                rotation[i] = self.bind3(&format!("{link}_r{}", i + 1), row);
+            }
+            let mut origin: [Poly; 3] = parent.origin.clone().map(|a| Poly::atom(&a));
+            for (i, o) in origin.iter_mut().enumerate() {
+                for (m, dm) in d.iter().enumerate() {
+                    o.add(&Poly::atom(&parent.rotation[i][m]).mul(dm), 1.0);
+                }
+            }
+            let origin = self.bind3(&format!("{link}_o"), origin);
+            for (axis, value) in XYZ.iter().zip(&origin) {
+                self.output(format!("{link}_{axis}"), &Poly::atom(value).render());
+            }
+            // The link's energies.
+            let body = &robot.links[k + 1];
+            if body.mass > 0.0 || body.inertia.iter().flatten().any(|x| *x != 0.0) {
+                let w: [Poly; 3] = omega.clone().map(|a| Poly::atom(&a));
+                let mut vc = cross(&w, &body.com.map(Poly::num));
+                vc.iter_mut().zip(&velocity).for_each(|(c, u)| c.add(&Poly::atom(u), 1.0));
+                let vc = self.bind3(&format!("{link}_vc"), vc);
+                let mut t = Poly::default();
+                for c in &vc {
+                    let c = Poly::atom(c);
+                    t.add(&c.mul(&c), 0.5 * body.mass);
+                }
+                for i in 0..3 {
+                    for j in 0..3 {
+                        t.add(&w[i].mul(&w[j]), 0.5 * body.inertia[i][j]);
+                    }
+                }
+                kinetic.push(self.bind(format!("{link}_kinetic"), t));
+                let mut z = Poly::atom(&origin[2]);
+                for (r, c) in rotation[2].iter().zip(body.com) {
+                    z.add(&Poly::atom(r), c);
+                }
+                if body.mass > 0.0 {
+                    potential.push(self.bind(format!("{link}_potential"), z.scaled(body.mass * GRAVITY)));
+                }
+            }
+            frames.push(Frame { omega, velocity, rotation, origin });
+        }
+        let mut lagrangian = Poly::default();
+        kinetic.iter().for_each(|t| lagrangian.add(&Poly::atom(t), 1.0));
+        potential.iter().for_each(|u| lagrangian.add(&Poly::atom(u), -1.0));
+        self.joint_laws(robot, &joints);
+        // In the companion with contacts that can rest, each contact's slack has unit mass:
+        // what `contacts::companion` writes into a Lagrangian written by hand.
+        if !self.model.switches.is_empty() {
+            for u in &self.model.unilaterals {
+                let rate = Poly::atom(&Atom::Name(format!("{}_slack_rate", u.name)));
+                lagrangian.add(&rate.mul(&rate), 0.5);
+            }
+        }
+        let key = Ident::new("lagrangian", self.span);
+        self.model.lagrangian = Some((key, self.expr(&lagrangian.render())));
+    }
+
+    /// Mimic joints as holonomic rows, damping as a Rayleigh function.
+    fn joint_laws(&mut self, robot: &Robot, joints: &[String]) {
+        let mut rayleigh = Poly::default();
+        for (k, joint) in robot.joints.iter().enumerate() {
+            if joint.kind == Kind::Fixed {
+                continue;
+            }
+            let v = Poly::atom(&Atom::Name(format!("v_{}", joints[k])));
+            rayleigh.add(&v.mul(&v), 0.5 * joint.damping);
+            if joint.friction > 0.0 {
+                self.model.laws.push(LawDecl {
+                    kind: LawKind::Friction,
+                    name: Ident::new(&format!("{}_friction", joints[k]), self.span),
+                    g: self.expr(&v.render()),
+                    kinetic: Some(self.expr(&format!("{:?}", joint.friction))),
+                    stiction: None,
+                    closed: None,
+                });
+            }
+            if let (Some((lower, upper)), true, None) =
+                (joint.limits, self.model.joint_limits.is_some(), &joint.mimic)
+            {
+                // A mimic joint's stops are its leader's: both would be redundant rows.
+                let zero = self.expr("0.0");
+                for (side, phi) in [
+                    ("lower", format!("{} - {lower:?}", joints[k])),
+                    ("upper", format!("{upper:?} - {}", joints[k])),
+                ] {
+                    self.model.unilaterals.push(UnilateralDecl {
+                        name: Ident::new(&format!("{}_{side}", joints[k]), self.span),
+                        restitution: Some(zero.clone()),
+                        expr: self.expr(&phi),
+                    });
+                }
+            }
+            if let Some(mimic) = &joint.mimic {
+                let Some(leader) =
+                    robot.joints.iter().position(|j| j.name == mimic.joint && j.kind != Kind::Fixed)
+                else {
+                    let message = format!(
+                        "{}: joint `{}` mimics `{}`, which is no moving joint of the robot",
+                        self.path.value(),
+                        joint.name,
+                        mimic.joint
+                    );
+                    self.cx.error_spanned_by(self.path, message);
+                    continue;
+                };
+                let mut phi = Poly::atom(&Atom::Name(joints[k].clone()));
+                phi.add(&Poly::atom(&Atom::Name(joints[leader].clone())), -mimic.multiplier);
+                phi.add(&Poly::num(mimic.offset), -1.0);
+                let name = Ident::new(&format!("{}_mimic", joints[k]), self.span);
+                self.model.constraints.push(ConstraintDecl {
+                    kind: ConstraintKind::Holonomic,
+                    key: Ident::new("holonomic", self.span),
+                    name: Some(name),
+                    expr: self.expr(&phi.render()),
+                });
+            }
+        }
+        if !rayleigh.terms.is_empty() {
+            if self.model.dissipation.is_some() {
+                let message = "the URDF's joints have `damping`, which is the model's dissipation; \
+                               remove `dissipation = …` or the damping";
+                self.cx.error_spanned_by(self.path, message);
+                return;
+            }
+            self.model.dissipation =
+                Some((Ident::new("dissipation", self.span), self.expr(&rayleigh.render())));
+        }
+    }
+
+    /// The identifiers of the links and the moving joints, or `None` after an error.
+    fn identifiers(&mut self, robot: &Robot) -> Option<(Vec<String>, Vec<String>)> {
+        let mut ok = true;
+        let mut ident = |what: &str, name: &str| {
+            let id: String =
+                name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+            let id = if id.starts_with(|c: char| c.is_ascii_digit()) { format!("_{id}") } else { id };
+            if syn::parse_str::<Ident>(&id).is_err() {
+                let message = format!("{}: {what} `{name}` cannot be a Rust name", self.path.value());
+                self.cx.error_spanned_by(self.path, message);
+                ok = false;
+            }
+            id
+        };
+        let links: Vec<String> = robot.links.iter().map(|l| ident("link", &l.name)).collect();
+        let joints: Vec<String> = robot.joints.iter().map(|j| ident("joint", &j.name)).collect();
+        if !ok {
+            return None;
+        }
+        for (k, joint) in robot.joints.iter().enumerate() {
+            if joint.kind == Kind::Fixed {
+                continue;
+            }
+            let name = Ident::new(&joints[k], self.span);
+            let velocity = Ident::new(&format!("v_{}", joints[k]), self.span);
+            self.model.ports.push(name.clone());
+            self.model.coordinates.push(CoordinateDecl { name, velocity });
+        }
+        if self.model.coordinates.is_empty() {
+            let message = format!("{}: the robot has no moving joint", self.path.value());
+            self.cx.error_spanned_by(self.path, message);
+            return None;
+        }
+        Some((links, joints))
+    }
+
+    fn expr(&self, text: &str) -> Expr {
+        let expr: Expr = syn::parse_str(text).expect("a rendered expression parses");
+        respan(expr, self.span)
+    }
+
+    fn define(&mut self, name: String, text: &str) -> Atom {
+        let expr = self.expr(text);
+        self.model.defines.push(DefineDecl { name: Ident::new(&name, self.span), expr });
+        Atom::Name(name)
+    }
+
+    fn output(&mut self, name: String, text: &str) {
+        let expr = self.expr(text);
+        self.model.outputs.push(DefineDecl { name: Ident::new(&name, self.span), expr });
+    }
+
+    /// The quantity as a definition, unless it is a number or a name already.
+    fn bind(&mut self, name: String, p: Poly) -> Atom {
+        match p.as_atom() {
+            Some(atom) => atom,
+            None => self.define(name, &p.render()),
+        }
+    }
+
+    fn bind3(&mut self, name: &str, p: [Poly; 3]) -> [Atom; 3] {
+        let [a, b, c] = p;
+        [self.bind(format!("{name}x"), a), self.bind(format!("{name}y"), b), self.bind(format!("{name}z"), c)]
+    }
+}
+
+/// `m x` for a numeric matrix.
+fn matvec(m: &Mat3, x: &[Atom; 3]) -> [Poly; 3] {
+    std::array::from_fn(|i| {
+        let mut s = Poly::default();
+        for (j, xj) in x.iter().enumerate() {
+            s.add(&Poly::atom(xj), m[i][j]);
+        }
+        s
+    })
+}
+
+fn cross(a: &[Poly; 3], b: &[Poly; 3]) -> [Poly; 3] {
+    std::array::from_fn(|i| {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let mut s = a[j].mul(&b[k]);
+        s.add(&a[k].mul(&b[j]), -1.0);
+        s
+    })
+}
+
+/// `Rot(a, q)ᵀ y = cos q (y − a (a·y)) − sin q (a × y) + a (a·y)`.
+fn rotate_back(axis: &[f64; 3], cos: &Atom, sin: &Atom, y: &[Atom; 3]) -> [Poly; 3] {
+    let y: [Poly; 3] = y.clone().map(|a| Poly::atom(&a));
+    let mut along = Poly::default();
+    for (a, yi) in axis.iter().zip(&y) {
+        along.add(yi, *a);
+    }
+    let a: [Poly; 3] = axis.map(Poly::num);
+    let a_cross_y = cross(&a, &y);
+    let (cos, sin) = (Poly::atom(cos), Poly::atom(sin));
+    std::array::from_fn(|i| {
+        let mut perp = y[i].clone();
+        perp.add(&along, -axis[i]);
+        let mut out = cos.mul(&perp);
+        out.add(&sin.mul(&a_cross_y[i]), -1.0);
+        out.add(&along, axis[i]);
+        out
+    })
+}
+
+/// The expression with every token at `span`, so errors and lints point at the attribute.
+fn respan(expr: Expr, span: Span) -> Expr {
+    use quote::ToTokens;
+    let tokens: proc_macro2::TokenStream = expr
+        .into_token_stream()
+        .into_iter()
+        .map(|mut t| {
+            set_span(&mut t, span);
+            t
+        })
+        .collect();
+    syn::parse2(tokens).expect("respanned tokens parse")
+}
+
+fn set_span(token: &mut proc_macro2::TokenTree, span: Span) {
+    use proc_macro2::{Group, TokenTree};
+    match token {
+        TokenTree::Group(g) => {
+            let inner = g
+                .stream()
+                .into_iter()
+                .map(|mut t| {
+                    set_span(&mut t, span);
+                    t
+                })
+                .collect();
+            let mut group = Group::new(g.delimiter(), inner);
+            group.set_span(span);
+            *g = group;
+        }
+        other => other.set_span(span),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_malformed_file_is_an_error_at_the_attribute_with_its_line() {
+        let dir = std::env::temp_dir().join(format!("dirac-urdf-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        let file = dir.join("bad.urdf");
+        let text = "<robot name=\"r\">\n<link name=\"a\"/>\n<joint name=\"j\" type=\"floating\">\n</joint>\n</robot>";
+        std::fs::write(&file, text).expect("written");
+        let path = file.display().to_string();
+        let input: syn::DeriveInput = syn::parse_quote! {
+            #[dirac(urdf = #path)]
+            struct Bad;
+        };
+        let out = crate::lagrange_dirac(&input).to_string();
+        assert!(out.contains("line 3, column 1: joint `j` is `floating`, which is not supported"), "{out}");
+        let input: syn::DeriveInput = syn::parse_quote! {
+            #[dirac(urdf = "no/such.urdf")]
+            struct Missing;
+        };
+        let out = crate::lagrange_dirac(&input).to_string();
+        assert!(out.contains("cannot read the URDF `no/such.urdf`"), "{out}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// The humanoid (4 s unoptimised): only with `DIRAC_TALOS=1`, from
+    /// `benches/robot_build.sh`'s instructions.
+    #[test]
+    fn talos_expands() {
+        if std::env::var_os("DIRAC_TALOS").is_none() {
+            return;
+        }
+        let input: syn::DeriveInput = syn::parse_quote! {
+            #[dirac(urdf = "../tests/robots/talos/talos_reduced.urdf", large)]
+            struct Talos;
+        };
+        let start = std::time::Instant::now();
+        let out = crate::lagrange_dirac(&input).to_string();
+        eprintln!("expanded in {:?}, {} bytes", start.elapsed(), out.len());
+        assert!(!out.contains("compile_error"), "{}", &out[..out.len().min(3000)]);
+    }
+
+    #[test]
+    fn panda_expands() {
+        let input: syn::DeriveInput = syn::parse_quote! {
+            #[dirac(urdf = "../tests/robots/panda/panda.urdf")]
+            struct Panda;
+        };
+        let start = std::time::Instant::now();
+        let out = crate::lagrange_dirac(&input).to_string();
+        eprintln!("expanded in {:?}, {} bytes", start.elapsed(), out.len());
+        assert!(!out.contains("compile_error"), "{}", &out[..out.len().min(3000)]);
+    }
+}
