@@ -84,6 +84,10 @@ pub use dirac_runtime::ensemble;
 /// Input sources read by time: tables of samples, held or interpolated.
 pub use dirac_runtime::sources;
 
+/// Joint-space dynamics of mechanisms (robots read from URDF files among them): the mass
+/// matrix, gravity and bias torques, inverse dynamics.
+pub use dirac_runtime::joint_space;
+
 #[cfg(feature = "components")]
 pub mod components;
 pub mod fmi;

@@ -12,6 +12,8 @@ pub mod dirac_structure;
 pub(crate) mod free;
 pub mod init;
 pub(crate) mod init_saddle;
+/// Joint-space dynamics: mass matrix, gravity and bias torques, inverse dynamics.
+pub mod joint_space;
 /// Linearisation about an equilibrium, in minimal coordinates.
 pub mod linear;
 pub(crate) mod projection;
