@@ -32,6 +32,7 @@ mod paper;
 mod prescribed;
 mod probes;
 mod radau;
+mod robots;
 mod sensitivities;
 mod util;
 mod variational;

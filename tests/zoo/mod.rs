@@ -7,6 +7,7 @@
 use dirac::prelude::*;
 
 pub mod bodies;
+pub mod robots;
 
 /// Primitive system 1 of the paper (Fig. 2): wall —k1— m1 —k2— m2, port at x2.
 #[derive(LagrangeDirac, Clone, Debug)]

@@ -1,0 +1,164 @@
+//! Robots read from URDF files, against Pinocchio on the same file: the joint-space mass
+//! matrix, gravity and bias torques at random states, and a free swing integrated by SciPy's
+//! DOP853 on Pinocchio's dynamics. The references are computed by
+//! `tests/references/robots.py` (`bash tests/references/robots.sh`), independently of dirac.
+
+use dirac::joint_space;
+use std::ops::ControlFlow;
+
+use dirac::Events;
+use dirac::prelude::*;
+
+use crate::every_method::{Fineness, Method};
+use crate::util::check_jacobian_by_differences;
+use crate::zoo::robots::{Panda, PandaStops, PandaStopsWithContacts, SWING_START};
+
+fn table(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
+    let mut lines = text.lines();
+    let header = lines.next().expect("a header").split(',').map(str::to_owned).collect();
+    let rows = lines.map(|l| l.split(',').map(|x| x.parse().expect("a number")).collect()).collect();
+    (header, rows)
+}
+
+/// The largest entry of `a − b`, relative to the largest entry of `b` (or 1 if that is less).
+fn relative_error(a: impl IntoIterator<Item = f64>, b: &[f64]) -> f64 {
+    let scale = b.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+    a.into_iter().zip(b).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs())) / scale
+}
+
+#[test]
+fn the_panda_has_the_joints_and_links_of_its_urdf() {
+    let names: Vec<String> = Panda::NAMES.coordinate_names().to_vec();
+    let mut expected: Vec<String> = (1..=7).map(|k| format!("panda_joint{k}")).collect();
+    expected.extend(["panda_finger_joint1".to_owned(), "panda_finger_joint2".to_owned()]);
+    assert_eq!(names, expected);
+    assert_eq!(Panda.constraint_names(), ["panda_finger_joint2_mimic"]);
+    assert_eq!(Panda.ports().len(), 9, "every joint is a port");
+    let outputs = Panda::NAMES.output_names();
+    for link in ["panda_link1", "panda_link7", "panda_hand", "panda_hand_tcp", "panda_leftfinger"] {
+        for axis in ["x", "y", "z"] {
+            assert!(outputs.iter().any(|o| *o == format!("{link}_{axis}")), "{link}_{axis} in {outputs:?}");
+        }
+    }
+}
+
+#[test]
+fn the_panda_has_pinocchios_mass_matrix_gravity_and_bias_torques() {
+    let (header, rows) = table(include_str!("../references/panda_dynamics.csv"));
+    assert_eq!(header.len(), 9 + 9 + 81 + 9 + 9);
+    assert_eq!(rows.len(), 20);
+    let (mut worst_m, mut worst_g, mut worst_b) = (0.0_f64, 0.0_f64, 0.0_f64);
+    for row in &rows {
+        let q = VecQ::<Panda>::from_column_slice(&row[0..9]);
+        let v = VecQ::<Panda>::from_column_slice(&row[9..18]);
+        let mass = joint_space::mass_matrix(&Panda, 0.0, &q);
+        let gravity = joint_space::gravity_torques(&Panda, 0.0, &q);
+        let bias = joint_space::bias_torques(&Panda, 0.0, &q, &v);
+        // Row-major in the file; nalgebra iterates column-major, so compare the transpose.
+        worst_m = worst_m.max(relative_error(mass.transpose().iter().copied(), &row[18..99]));
+        worst_g = worst_g.max(relative_error(gravity.iter().copied(), &row[99..108]));
+        worst_b = worst_b.max(relative_error(bias.iter().copied(), &row[108..117]));
+    }
+    eprintln!(
+        "Panda against Pinocchio: mass matrix {worst_m:.1e}, gravity {worst_g:.1e}, bias {worst_b:.1e}"
+    );
+    assert!(worst_m < 1e-12 && worst_g < 1e-12 && worst_b < 1e-12, "{worst_m:e} {worst_g:e} {worst_b:e}");
+}
+
+#[test]
+fn the_panda_has_the_derivatives_its_differences_say() {
+    check_jacobian_by_differences(&Panda, 38, 5);
+    crate::blocks::check_blocks(&Panda, 39);
+}
+
+/// The swing's start, its fingers made consistent with the mimic row.
+fn swing_start() -> State<Panda> {
+    let q = VecQ::<Panda>::from_column_slice(&SWING_START);
+    consistent_state(&Panda, 0.0, &q, &VecQ::<Panda>::zeros(), Consistency::default())
+        .expect("a consistent start")
+}
+
+/// Radau and Explicit at rtol = atol = 1e-10 and the variational integrator at h = 2e-4,
+/// against the reference's samples every 0.1 s. Radau without its `projection`: the mimic row
+/// is linear, and its projection of velocities (the smallest correction in the Euclidean norm,
+/// not the mass-weighted one) would perturb the arm's momenta through the fingers' coupling.
+#[test]
+fn the_panda_swings_as_pinocchio_and_dop853_say_in_every_method() {
+    let (header, rows) = table(include_str!("../references/panda_swing.csv"));
+    assert_eq!(header.len(), 1 + 18);
+    let times: Vec<f64> = rows.iter().map(|r| r[0]).collect();
+    let start = swing_start();
+    each_integrator!(&Panda, Fineness::new(1e-10, 1e-10, 2e-4), |method, integrator| {
+        let solution =
+            integrator.solve(0.0, &start, 1.0, &Sampling::Times(times.clone())).expect("the swing");
+        let mut worst = 0.0_f64;
+        for (k, row) in rows.iter().enumerate() {
+            for j in 0..9 {
+                let c = Coordinate::<Panda>::unchecked(j);
+                worst = worst.max((solution.q(c)[k] - row[1 + j]).abs());
+            }
+        }
+        // Measured: Radau 1.7e-9, Explicit 1.7e-10, Variational (second order) 1.2e-3.
+        let bound = match method {
+            Method::Radau => 1e-8,
+            Method::Explicit => 1e-9,
+            Method::Variational => 2e-3,
+        };
+        eprintln!("{}: Panda swing, max |q - q_ref| over 1 s: {worst:.2e}", method.name());
+        assert!(worst < bound, "{}: {worst:e}", method.name());
+        let residual = solution.holonomic_residual().iter().fold(0.0_f64, |m, r| m.max(r.abs()));
+        assert!(residual < 1e-12, "{}: the mimic row drifts by {residual:e}", method.name());
+    });
+}
+
+/// The elbow thrown at its upper stop (−0.0698 rad, from the URDF) at 3 rad/s: with
+/// restitution 0 it strikes the stop and rests against it (the companion closes the contact;
+/// its force holds the elbow) or leaves it as the arm's motion pulls, and never passes it.
+#[test]
+fn the_panda_with_joint_limits_strikes_its_stops_and_never_passes_them() {
+    let names = PandaStops::NAMES.unilateral_names();
+    assert_eq!(names.len(), 2 * 8, "two stops on each of seven arm joints and the first finger: {names:?}");
+    let upper = -0.0698;
+    let mut model = PandaStops.with_contacts();
+    let joint = |name: &str| model.coordinate(name).expect("a joint").index();
+    let mut q = VecQ::<PandaStopsWithContacts>::zeros();
+    for (name, angle) in Panda::NAMES.coordinate_names().iter().zip(SWING_START) {
+        q[joint(name)] = angle;
+    }
+    let elbow = joint("panda_joint4");
+    q[elbow] = -0.3;
+    let mut v = VecQ::<PandaStopsWithContacts>::zeros();
+    v[elbow] = 3.0;
+    let start = consistent_state(&model, 0.0, &q, &v, Consistency::default()).expect("a start");
+    macro_rules! throw {
+        ($name:literal, $integrator:expr) => {{
+            let mut integrator = $integrator;
+            let mut events = Events::new().contacts(integrator.model());
+            let solution = integrator
+                .solve_with_events(0.0, &start, 0.5, &Sampling::Every(1e-3), &mut events, |_, _| {
+                    ControlFlow::Continue(())
+                })
+                .expect("the throw");
+            let elbow = solution.q(Coordinate::<PandaStopsWithContacts>::unchecked(elbow));
+            let highest = elbow.iter().fold(f64::MIN, |m, x| m.max(*x));
+            let strikes = solution.impacts_at("panda_joint4_upper").expect("a stop's name");
+            let force = solution.column("lambda(panda_joint4_upper_force)").expect("the stop's force");
+            let struck = strikes.first().map_or(f64::INFINITY, |s| s.t);
+            let (before, after): (Vec<_>, Vec<_>) =
+                solution.t().iter().zip(force).partition(|(t, _)| **t < struck);
+            assert!(before.iter().all(|(_, f)| f.abs() < 1e-9), "{}: a force on the open stop", $name);
+            let held = after.iter().filter(|(_, f)| f.abs() > 1e-6).count();
+            eprintln!(
+                "{}: elbow at most {highest:.9} rad, {} strike(s) at {struck:.4} s, held by the stop at {held} of the {} samples after",
+                $name,
+                strikes.len(),
+                after.len()
+            );
+            assert_eq!(strikes.len(), 1, "{}: one strike", $name);
+            assert!(strikes[0].t > 0.05 && strikes[0].t < 0.1, "{}: struck at {}", $name, strikes[0].t);
+            assert!(highest <= upper + 1e-9, "{}: the elbow passed its stop: {highest}", $name);
+        }};
+    }
+    throw!("Radau", Radau::new(&mut model, RadauOptions::tolerances(1e-9, 1e-9)).expect("options"));
+    throw!("Explicit", Explicit::new(&mut model, ExplicitOptions::tolerances(1e-9, 1e-9)).expect("options"));
+}

@@ -1,0 +1,76 @@
+"""References for tests/integration/robots.rs, computed with Pinocchio from the same URDF file
+that dirac reads (tests/robots/panda/panda.urdf), independently of dirac.
+
+    bash tests/references/robots.sh
+
+writes
+- panda_dynamics.csv: at 20 random states (joint positions uniform within the URDF's limits,
+  velocities uniform in [-2, 2], seed 38), the joint-space mass matrix (crba), the gravity
+  torques (computeGeneralizedGravity) and the bias torques C(q, v) v + g(q)
+  (nonLinearEffects), one state per row: q0..q8, v0..v8, M00..M88 (row-major), g0..g8, b0..b8;
+- panda_swing.csv: a 1 s free swing under gravity from rest, with the URDF's joint damping
+  (tau = -d v) and its mimic joint (panda_finger_joint2 = panda_finger_joint1) reduced by
+  hand: with G the 9 x 8 map from the eight independent velocities, G^T M G a = -G^T (nle + D G v).
+  Integrated by SciPy's DOP853 at rtol = atol = 1e-12; rows t, q0..q8, v0..v8 every 0.1 s.
+"""
+
+import sys
+
+import numpy as np
+import pinocchio as pin
+from scipy.integrate import solve_ivp
+
+# The start of the swing: the arm out to the side, fingers half open.
+SWING_START = [0.3, 0.5, -0.4, -1.2, 0.2, 1.4, 0.6, 0.02, 0.02]
+
+
+def main(urdf, out):
+    model = pin.buildModelFromUrdf(urdf)
+    data = model.createData()
+    assert model.nq == model.nv == 9, (model.nq, model.nv)
+    rng = np.random.default_rng(38)
+    rows = []
+    for _ in range(20):
+        q = rng.uniform(model.lowerPositionLimit, model.upperPositionLimit)
+        v = rng.uniform(-2.0, 2.0, model.nv)
+        mass = pin.crba(model, data, q)
+        mass = np.triu(mass) + np.triu(mass, 1).T
+        gravity = pin.computeGeneralizedGravity(model, data, q).copy()
+        bias = pin.nonLinearEffects(model, data, q, v).copy()
+        rows.append(np.concatenate([q, v, mass.ravel(), gravity, bias]))
+    header = (
+        [f"q{i}" for i in range(9)]
+        + [f"v{i}" for i in range(9)]
+        + [f"M{i}{j}" for i in range(9) for j in range(9)]
+        + [f"g{i}" for i in range(9)]
+        + [f"b{i}" for i in range(9)]
+    )
+    np.savetxt(f"{out}/panda_dynamics.csv", np.array(rows), delimiter=",", header=",".join(header),
+               comments="", fmt="%.17g")
+
+    damping = np.diag(model.damping)
+    reduce = np.zeros((9, 8))
+    reduce[:8, :8] = np.eye(8)
+    reduce[8, 7] = 1.0
+
+    def rhs(_t, y):
+        qr, vr = y[:8], y[8:]
+        q, v = reduce @ qr, reduce @ vr
+        mass = pin.crba(model, data, q)
+        mass = np.triu(mass) + np.triu(mass, 1).T
+        nle = pin.nonLinearEffects(model, data, q, v)
+        a = np.linalg.solve(reduce.T @ mass @ reduce, -reduce.T @ (nle + damping @ v))
+        return np.concatenate([vr, a])
+
+    times = np.linspace(0.0, 1.0, 11)
+    start = np.concatenate([SWING_START[:8], np.zeros(8)])
+    sol = solve_ivp(rhs, (0.0, 1.0), start, method="DOP853", rtol=1e-12, atol=1e-12, t_eval=times)
+    assert sol.success, sol.message
+    rows = [np.concatenate([[t], reduce @ y[:8], reduce @ y[8:]]) for t, y in zip(sol.t, sol.y.T)]
+    header = ["t"] + [f"q{i}" for i in range(9)] + [f"v{i}" for i in range(9)]
+    np.savetxt(f"{out}/panda_swing.csv", np.array(rows), delimiter=",", header=",".join(header),
+               comments="", fmt="%.17g")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
