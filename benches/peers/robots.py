@@ -1,0 +1,193 @@
+"""The peers' side of benches/peers/robots.sh.
+
+    robots.py setup URDF DIR    the reference swing (DIR/arm_swing.csv) and Pinocchio's model
+                                for the C++ driver (DIR/panda_arm.bin)
+    robots.py mujoco URDF DIR   MuJoCo's swing over a range of time steps (DIR/mujoco.csv)
+    robots.py compare URDF DIR  the ratios, from the files the other steps wrote
+
+The swing starts from rest at the configuration SWING_START of tests/zoo/robots.rs and lasts
+1 s under gravity (0, 0, -9.81) with the URDF's joint damping. The reference is Pinocchio's
+forward dynamics (ABA, tau = -damping * v) integrated by SciPy's DOP853 at rtol = atol = 1e-12,
+sampled every 0.1 s; an error is the largest joint-angle error over those samples.
+"""
+
+import csv
+import math
+import re
+import statistics
+import sys
+import time
+
+import numpy as np
+
+SWING_START = [0.3, 0.5, -0.4, -1.2, 0.2, 1.4, 0.6]
+SAMPLES = np.linspace(0.0, 1.0, 11)
+
+
+def setup(urdf, out):
+    import pinocchio as pin
+    from scipy.integrate import solve_ivp
+
+    model = pin.buildModelFromUrdf(urdf)
+    data = model.createData()
+    model.saveToBinary(f"{out}/panda_arm.bin")
+    damping = np.array(model.damping)
+
+    def rhs(_t, y):
+        q, v = y[: model.nq], y[model.nq:]
+        return np.concatenate([v, pin.aba(model, data, q, v, -damping * v)])
+
+    start = np.concatenate([SWING_START, np.zeros(model.nv)])
+    sol = solve_ivp(rhs, (0.0, 1.0), start, method="DOP853", rtol=1e-12, atol=1e-12, t_eval=SAMPLES)
+    assert sol.success, sol.message
+    lower, upper = model.lowerPositionLimit, model.upperPositionLimit
+    inside = np.all((sol.y[:7].T >= lower) & (sol.y[:7].T <= upper))
+    print(f"reference swing: {sol.nfev} evaluations; within the joint limits throughout: {inside}")
+    with open(f"{out}/arm_swing.csv", "w") as f:
+        f.write(",".join(["t"] + [f"q{i}" for i in range(7)] + [f"v{i}" for i in range(7)]) + "\n")
+        for t, y in zip(sol.t, sol.y.T):
+            f.write(",".join(repr(float(x)) for x in [t, *y]) + "\n")
+
+
+def reference(out):
+    rows = np.loadtxt(f"{out}/arm_swing.csv", delimiter=",", skiprows=1)
+    return rows[:, 1:8]
+
+
+def mujoco_model(urdf, out):
+    """The URDF without its visual and collision elements (MuJoCo would load their meshes),
+    static links fused as MuJoCo's URDF import does by default, joint limits disabled (the
+    swing stays within them; dirac's model has none)."""
+    import mujoco
+
+    text = open(urdf).read()
+    text = re.sub(r"<(visual|collision)>.*?</\1>", "", text, flags=re.S)
+    text = text.replace("<robot name=\"panda\"", "<robot name=\"panda\"", 1)
+    path = f"{out}/panda_arm_mujoco.urdf"
+    open(path, "w").write(text)
+    model = mujoco.MjModel.from_xml_path(path)
+    model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_LIMIT
+    model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_CONTACT
+    assert model.nq == 7, model.nq
+    return model
+
+
+def run_mujoco(out_dir, urdf):
+    import mujoco
+
+    model = mujoco_model(urdf, out_dir)
+    print(f"MuJoCo {mujoco.__version__}: nq = {model.nq}, damping {list(model.dof_damping)}, "
+          f"gravity {list(model.opt.gravity)}")
+    ref = reference(out_dir)
+    integrators = {
+        "mujoco_euler": mujoco.mjtIntegrator.mjINT_EULER,
+        "mujoco_rk4": mujoco.mjtIntegrator.mjINT_RK4,
+        "mujoco_implicitfast": mujoco.mjtIntegrator.mjINT_IMPLICITFAST,
+    }
+    rows = []
+    for name, integrator in integrators.items():
+        model.opt.integrator = integrator
+        for dt in [2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5]:
+            model.opt.timestep = dt
+            per_sample = round(0.1 / dt)
+            data = mujoco.MjData(model)
+            times, error = [], 0.0
+            for _ in range(5):
+                mujoco.mj_resetData(model, data)
+                data.qpos[:] = SWING_START
+                data.qvel[:] = 0.0
+                mujoco.mj_forward(model, data)
+                error, clock = 0.0, 0.0
+                for k in range(1, 11):
+                    start = time.perf_counter()
+                    mujoco.mj_step(model, data, nstep=per_sample)
+                    clock += time.perf_counter() - start
+                    q = np.array(data.qpos)
+                    error = max(error, float(np.max(np.abs(q - ref[k]))) if np.all(np.isfinite(q)) else math.inf)
+                times.append(clock)
+            rows.append((name, dt, error, statistics.median(times), 10 * per_sample))
+            print(f"{name:20} dt {dt:8.0e}: error {error:9.2e}, {statistics.median(times):9.3e} s")
+    with open(f"{out_dir}/mujoco.csv", "w") as f:
+        f.write("problem,tol,error,seconds,steps\n")
+        for name, dt, error, seconds, steps in rows:
+            f.write(f"{name},{dt},{error},{seconds},{steps}\n")
+
+
+def load(path):
+    out = {}
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            out.setdefault(r["problem"], []).append((float(r["error"]), float(r["seconds"]), float(r["tol"])))
+    return out
+
+
+def time_at(curve, error):
+    """The time at `error` on a work-precision curve, interpolated in log-log space; below the
+    curve's largest error only. Above it, the time of the point with the largest error, marked
+    as an upper bound (that point reaches a smaller error)."""
+    pts = sorted((e, s) for e, s, _ in curve if 0 < e < math.inf)
+    if not pts or error < pts[0][0]:
+        return None, ""
+    if error >= pts[-1][0]:
+        return min(s for e, s in pts), "<="
+    for (e1, s1), (e2, s2) in zip(pts, pts[1:]):
+        if e1 <= error <= e2:
+            w = (math.log(error) - math.log(e1)) / (math.log(e2) - math.log(e1))
+            # Work-precision curves are not always monotone: take the cheapest point at this
+            # error or better.
+            interpolated = math.exp(math.log(s1) + w * (math.log(s2) - math.log(s1)))
+            better = [s for e, s in pts if e <= error]
+            return min([interpolated] + better), ""
+    return None, ""
+
+
+def compare(out):
+    def medians(prefix):
+        values = {}
+        for round_ in (1, 2, 3):
+            with open(f"{out}/{prefix}_{round_}.csv") as f:
+                for line in f:
+                    name, value = line.strip().split(",")
+                    values.setdefault(name, []).append(float(value))
+        return {k: statistics.median(v) for k, v in values.items()}
+
+    pin_t, dirac_t = medians("pinocchio"), medians("dirac")
+    print("\nOne evaluation, seconds per call (medians of 3 alternated runs, each a median of 15 batches):")
+    for k, v in pin_t.items():
+        if k != "nv":
+            print(f"  Pinocchio {k:28} {v:9.3e}")
+    for k, v in dirac_t.items():
+        print(f"  dirac     {k:28} {v:9.3e}")
+    pin_step = pin_t["aba"] + pin_t["aba_derivatives"]
+    for k in ("residual_and_jacobian", "residual_and_jacobian_blocks"):
+        print(f"  ratio dirac {k} / Pinocchio (ABA + ABA derivatives): {dirac_t[k] / pin_step:.2f}")
+    print(f"  ratio dirac mass_matrix / Pinocchio CRBA: {dirac_t['mass_matrix'] / pin_t['crba']:.2f}")
+    print(f"  ratio dirac bias_torques / Pinocchio nonLinearEffects: "
+          f"{dirac_t['bias_torques'] / pin_t['nonlinear_effects']:.2f}")
+
+    dirac = load(f"{out}/dirac_swing.csv")
+    mujoco = load(f"{out}/mujoco.csv")
+    print("\nThe 1 s swing at equal achieved error (dirac's time at MuJoCo's error, interpolated):")
+    print(f"  {'MuJoCo':22} {'dt':>7} {'error':>9} {'MuJoCo s':>10} | "
+          f"{'Explicit s':>11} {'ratio':>6} | {'Radau s':>11} {'ratio':>6}")
+    for name, points in mujoco.items():
+        for error, seconds, dt in points:
+            cells = []
+            for method in ("explicit", "radau"):
+                t, mark = time_at(dirac[method], error)
+                cells.append(f"{mark:>2}{t:9.3e} {t / seconds:6.3f}" if t else f"{'n/a':>11} {'':6}")
+            print(f"  {name:22} {dt:7.0e} {error:9.2e} {seconds:10.3e} | {cells[0]} | {cells[1]}")
+    print("\ndirac's own curve:")
+    for method, points in dirac.items():
+        for error, seconds, tol in points:
+            print(f"  {method:9} tol {tol:7.0e}: error {error:9.2e} in {seconds:9.3e} s")
+
+
+if __name__ == "__main__":
+    command, urdf, out = sys.argv[1:4]
+    if command == "setup":
+        setup(urdf, out)
+    elif command == "mujoco":
+        run_mujoco(out, urdf)
+    elif command == "compare":
+        compare(out)
