@@ -5,7 +5,9 @@ use dirac::components::bodies::RigidBody;
 use dirac::prelude::*;
 
 use crate::every_method::{Fineness, Method};
-use crate::zoo::bodies::{PlanarDoublePendulum, SpatialDoublePendulum, double_pendulums, spatial_start};
+use crate::zoo::bodies::{
+    PlanarDoublePendulum, SpatialDoublePendulum, Stewart, double_pendulums, spatial_start,
+};
 
 /// Jacobi's `sn, cn, dn` of `u` with parameter `m = k²`, by the arithmetic-geometric mean
 /// (descending Landen transformation; Abramowitz and Stegun 16.4). Written here, apart from
@@ -581,6 +583,42 @@ fn spatial_closed_loop() {
     assert!(ends[0].abs() > 0.1, "{ends:?}");
     // Radau and the explicit method, independent, agree; the variational method to its order.
     assert!((ends[0] - ends[1]).abs() < 1e-7 && (ends[0] - ends[2]).abs() < 1e-4, "{ends:?}");
+}
+
+/// The 6-6 Stewart platform of the zoo, its six legs driven: six loops through the ground and
+/// the platform, and the platform's six degrees of freedom all prescribed. Its pose at every
+/// instant is the legs' alone (their lengths fix it), so the three methods, whatever their
+/// dynamics' errors, must put it in the same place; and the legs and `RᵀR = I` hold to
+/// round-off all along.
+#[test]
+fn a_stewart_platform_keeps_its_six_loops_to_round_off_in_every_method() {
+    let model = Stewart { top: RigidBody::new(5.0, [0.3, 0.3, 0.5]).with_gravity(9.81) };
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let (q, v) = model.top.state([0.0, 0.0, 1.0], identity, [0.0; 3], [0.0; 3]);
+    let start = consistent_state(&model, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let times: Vec<f64> = (1..=40).map(|k| 0.05 * k as f64).collect();
+    let mut poses = Vec::new();
+    each_integrator!(&model, Fineness::new(1e-10, 1e-10, 1e-3).projected(), |method, integrator| {
+        let solution = integrator.solve(0.0, &start, 2.0, &Sampling::Times(times.clone())).expect("it moves");
+        let drift = solution.holonomic_residual().iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let z = solution.column("top.z").expect("a column");
+        let force = solution.column("lambda(leg1)").expect("the first leg's force");
+        println!(
+            "{}: holonomic residual {drift:.1e}; platform height {:.6} .. {:.6}; leg 1 force {:.3} at t = 2",
+            method.name(),
+            z.iter().fold(f64::MAX, |m, x| m.min(*x)),
+            z.iter().fold(f64::MIN, |m, x| m.max(*x)),
+            force[force.len() - 1]
+        );
+        assert!(drift < 1e-13, "{}: {drift:e}", method.name());
+        poses.push(solution.last().expect("samples").q);
+    });
+    // The legs moved the platform: not a pose held at rest.
+    assert!((poses[0][2] - start.q[2]).abs() > 1e-3, "{} {}", poses[0][2], start.q[2]);
+    for pose in &poses[1..] {
+        let apart = (pose - &poses[0]).amax();
+        assert!(apart < 1e-12, "the methods put the platform {apart:e} apart");
+    }
 }
 
 #[test]

@@ -99,3 +99,34 @@ pub fn double_pendulums() -> (SpatialDoublePendulum, PlanarDoublePendulum) {
     let planar = PlanarDoublePendulum { m1, m2, j1: j1[1], j2: j2[1], a1, b1, a2, g };
     (spatial, planar)
 }
+
+/// A 6-6 Stewart platform: a platform body held by six legs between six points of the ground
+/// `b_i` and six points of the platform `p_i` (in its frame), all distinct. The legs are
+/// massless actuators (spherical joints at both ends, a prismatic joint between), each a
+/// holonomic row closing its loop through the ground and the platform: the squared length
+/// `|x + R p_i − b_i|²` prescribed as `c_i (1 + 0.1 sin(2 t + i))`, with `c_i` the squared
+/// length of the nominal pose (the platform level at height 1). The points:
+/// `b = (1, ±0.2, 0), (−0.3, ±0.95, 0), (−0.7, ±0.75, 0)`,
+/// `p = (0.45, ±0.35, 0), (0.1, ±0.55, 0), (−0.55, ±0.2, 0)`.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(holonomic(leg1) = (top.x + 0.45 * top.r11 + 0.35 * top.r12 - 1.0).powi(2)
+    + (top.y + 0.45 * top.r21 + 0.35 * top.r22 - 0.2).powi(2)
+    + (top.z + 0.45 * top.r31 + 0.35 * top.r32).powi(2) - 1.325 * (1.0 + 0.1 * (2.0 * t + 1.0).sin()))]
+#[dirac(holonomic(leg2) = (top.x + 0.1 * top.r11 + 0.55 * top.r12 + 0.3).powi(2)
+    + (top.y + 0.1 * top.r21 + 0.55 * top.r22 - 0.95).powi(2)
+    + (top.z + 0.1 * top.r31 + 0.55 * top.r32).powi(2) - 1.32 * (1.0 + 0.1 * (2.0 * t + 2.0).sin()))]
+#[dirac(holonomic(leg3) = (top.x - 0.55 * top.r11 + 0.2 * top.r12 + 0.7).powi(2)
+    + (top.y - 0.55 * top.r21 + 0.2 * top.r22 - 0.75).powi(2)
+    + (top.z - 0.55 * top.r31 + 0.2 * top.r32).powi(2) - 1.325 * (1.0 + 0.1 * (2.0 * t + 3.0).sin()))]
+#[dirac(holonomic(leg4) = (top.x - 0.55 * top.r11 - 0.2 * top.r12 + 0.7).powi(2)
+    + (top.y - 0.55 * top.r21 - 0.2 * top.r22 + 0.75).powi(2)
+    + (top.z - 0.55 * top.r31 - 0.2 * top.r32).powi(2) - 1.325 * (1.0 + 0.1 * (2.0 * t + 4.0).sin()))]
+#[dirac(holonomic(leg5) = (top.x + 0.1 * top.r11 - 0.55 * top.r12 + 0.3).powi(2)
+    + (top.y + 0.1 * top.r21 - 0.55 * top.r22 + 0.95).powi(2)
+    + (top.z + 0.1 * top.r31 - 0.55 * top.r32).powi(2) - 1.32 * (1.0 + 0.1 * (2.0 * t + 5.0).sin()))]
+#[dirac(holonomic(leg6) = (top.x + 0.45 * top.r11 - 0.35 * top.r12 - 1.0).powi(2)
+    + (top.y + 0.45 * top.r21 - 0.35 * top.r22 + 0.2).powi(2)
+    + (top.z + 0.45 * top.r31 - 0.35 * top.r32).powi(2) - 1.325 * (1.0 + 0.1 * (2.0 * t + 6.0).sin()))]
+pub struct Stewart {
+    pub top: RigidBody,
+}
