@@ -837,3 +837,18 @@ fn steps_of_bodies_on_joints_do_not_allocate() {
     }
     assert_eq!(allocations() - before, 0, "Radau with projection, steps and samples, bodies on joints");
 }
+
+#[test]
+fn steps_of_a_robot_from_its_urdf_do_not_allocate() {
+    use zoo::robots::{Panda, SWING_START};
+    let q = VecQ::<Panda>::from_column_slice(&SWING_START);
+    let s =
+        consistent_state(&Panda, 0.0, &q, &VecQ::<Panda>::zeros(), Consistency::default()).expect("a start");
+    assert_eq!(allocations_in_steps(&Panda, &s, 100.0), 0, "Radau, the Panda");
+    assert_eq!(allocations_in_explicit_steps(&Panda, &s, 100.0), 0, "Explicit, the Panda");
+    assert_eq!(
+        allocations_in_variational_steps(&Panda, &s, VariationalOptions::default()),
+        0,
+        "variational, the Panda"
+    );
+}
