@@ -616,7 +616,7 @@ fn a_stewart_platform_keeps_its_six_loops_to_round_off_in_every_method() {
     // The legs moved the platform: not a pose held at rest.
     assert!((poses[0][2] - start.q[2]).abs() > 1e-3, "{} {}", poses[0][2], start.q[2]);
     for pose in &poses[1..] {
-        let apart = (pose - &poses[0]).amax();
+        let apart = (pose - poses[0]).amax();
         assert!(apart < 1e-12, "the methods put the platform {apart:e} apart");
     }
 }

@@ -127,7 +127,7 @@ impl Writer<'_, '_, '_> {
             for (ai, vi) in arm.iter_mut().zip(&parent.velocity) {
                 ai.add(&Poly::atom(vi), 1.0);
             }
-            let arm = self.bind3(&format!("{link}_uj"), arm.map(|p| p));
+            let arm = self.bind3(&format!("{link}_uj"), arm);
             let arm_in_joint =
                 self.bind3(&format!("{link}_vj"), matvec(&read::transpose(&joint.rotation), &arm));
             let (mut omega, mut velocity) = match &turn {
