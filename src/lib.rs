@@ -86,6 +86,31 @@ pub use dirac_runtime::sources;
 
 /// Joint-space dynamics of mechanisms (robots read from URDF files among them): the mass
 /// matrix, gravity and bias torques, inverse dynamics.
+///
+/// ```
+/// use dirac::joint_space;
+/// use dirac::prelude::*;
+///
+/// /// A point mass on a massless rod, hanging from a pivot.
+/// #[derive(LagrangeDirac)]
+/// #[dirac(coordinates(th => w), lagrangian = 0.5 * m * l * l * w * w + m * g * l * th.cos())]
+/// struct Pendulum {
+///     m: f64,
+///     l: f64,
+///     g: f64,
+/// }
+///
+/// let model = Pendulum { m: 2.0, l: 0.5, g: 9.81 };
+/// let q = VecQ::<Pendulum>::from_column_slice(&[0.3]);
+/// let v = VecQ::<Pendulum>::from_column_slice(&[1.5]);
+/// let mass = joint_space::mass_matrix(&model, 0.0, &q);
+/// let gravity = joint_space::gravity_torques(&model, 0.0, &q);
+/// assert!((mass[(0, 0)] - 2.0 * 0.25).abs() < 1e-15);
+/// assert!((gravity[0] - 2.0 * 9.81 * 0.5 * 0.3_f64.sin()).abs() < 1e-15);
+/// // The bias of a pendulum in its angle is its gravity torque alone: M does not depend on θ.
+/// let bias = joint_space::bias_torques(&model, 0.0, &q, &v);
+/// assert!((bias[0] - gravity[0]).abs() < 1e-15);
+/// ```
 pub use dirac_runtime::joint_space;
 
 #[cfg(feature = "components")]

@@ -8,22 +8,7 @@
 //! gravity torques `g(q) = ∂V/∂q`. Constraints (closed loops, mimic joints) and the model's
 //! forces (damping, inputs) are not part of these: they are the torques `τ` on the right.
 //!
-//! ```
-//! use dirac::prelude::*;
-//! use dirac::joint_space;
-//!
-//! /// A point mass on a massless rod, hanging from a pivot.
-//! #[derive(LagrangeDirac)]
-//! #[dirac(coordinates(th => w), lagrangian = 0.5 * m * l * l * w * w + m * g * l * th.cos())]
-//! struct Pendulum { m: f64, l: f64, g: f64 }
-//!
-//! let model = Pendulum { m: 2.0, l: 0.5, g: 9.81 };
-//! let q = nalgebra::vector![0.3];
-//! let mass = joint_space::mass_matrix(&model, 0.0, &q);
-//! let gravity = joint_space::gravity_torques(&model, 0.0, &q);
-//! assert!((mass[(0, 0)] - 2.0 * 0.25).abs() < 1e-15);
-//! assert!((gravity[0] - 2.0 * 9.81 * 0.5 * 0.3_f64.sin()).abs() < 1e-15);
-//! ```
+//! `dirac::joint_space` shows them on a pendulum; the guide's "Robots from URDF files" on a robot.
 
 use nalgebra::DefaultAllocator;
 
