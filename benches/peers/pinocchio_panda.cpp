@@ -2,7 +2,7 @@
 // forward dynamics (ABA), ABA's analytic derivatives, the mass matrix (CRBA) and the bias
 // torques (RNEA at zero acceleration), each the median of repeated batches at one random state.
 // Usage: pinocchio_panda MODEL.bin, a model that Pinocchio read from a URDF file and saved
-// with `model.saveToBinary` (pinocchio_model.py); the C++ parser needs urdfdom headers that
+// with `model.saveToBinary` (robots.py setup); the C++ parser needs urdfdom headers that
 // the `pin` wheel lacks. Prints `name,seconds_per_call` lines.
 #include <pinocchio/algorithm/aba-derivatives.hpp>
 #include <pinocchio/algorithm/aba.hpp>

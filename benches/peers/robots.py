@@ -62,7 +62,6 @@ def mujoco_model(urdf, out):
 
     text = open(urdf).read()
     text = re.sub(r"<(visual|collision)>.*?</\1>", "", text, flags=re.S)
-    text = text.replace("<robot name=\"panda\"", "<robot name=\"panda\"", 1)
     path = f"{out}/panda_arm_mujoco.urdf"
     open(path, "w").write(text)
     model = mujoco.MjModel.from_xml_path(path)
