@@ -113,6 +113,48 @@ pub use dirac_runtime::sources;
 /// ```
 pub use dirac_runtime::joint_space;
 
+/// Networks assembled while the program runs: compiled parts (any model of fixed size, the
+/// component library's among them) added under names, their ports connected by name.
+///
+/// ```
+/// use dirac::components::electrical::{Capacitor, Ground, Resistor, VoltageSource};
+/// use dirac::network::Network;
+/// use dirac::prelude::*;
+///
+/// # fn main() -> Result<(), Box<dyn std::error::Error>> {
+/// // A 1 Ω resistor charging a 1 F capacitor from a 1 V source.
+/// let mut b = Network::builder();
+/// b.add("V1", VoltageSource { u: 1.0 })?.add("R1", Resistor { r: 1.0 })?;
+/// b.add("C1", Capacitor { c: 1.0 })?.add("gnd", Ground {})?;
+/// b.connect("V1.p", "R1.p")?.connect("R1.n", "C1.p")?;
+/// b.connect("C1.n", "gnd.p")?.connect("V1.n", "gnd.p")?;
+/// let rc = b.finish()?;
+///
+/// let zeros = rc.sizes().zeros_q::<Network>();
+/// let start = consistent_state(&rc, 0.0, &zeros, &zeros, Consistency::default())?;
+/// let mut radau = Radau::new(&rc, RadauOptions::tolerances(1e-9, 1e-9))?;
+/// let end = radau.solve(0.0, &start, 1.0, &Sampling::Times(vec![1.0]))?;
+/// let c1 = rc.coordinate_index("C1.p").expect("a pin");
+/// // The capacitor's voltage is its pin's node-flux rate: 1 − e^{−t/RC}.
+/// let v = end.last().expect("a sample").v[c1];
+/// assert!((v - (1.0 - (-1.0f64).exp())).abs() < 1e-7, "{v}");
+/// # Ok(())
+/// # }
+/// ```
+///
+/// A port that does not exist is an error naming the part's ports:
+///
+/// ```
+/// use dirac::components::electrical::Resistor;
+/// use dirac::network::{Network, NetworkError};
+///
+/// let mut b = Network::builder();
+/// b.add("R1", Resistor { r: 1.0 }).expect("a new name");
+/// let error = b.connect("R1.p", "R1.x").err().expect("no port x");
+/// assert_eq!(error.to_string(), "`R1.x`: part `R1` has no port `x`; its ports are `p`, `n`");
+/// ```
+pub use dirac_runtime::network;
+
 #[cfg(feature = "components")]
 pub mod components;
 pub mod fmi;

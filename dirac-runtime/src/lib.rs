@@ -42,6 +42,7 @@ pub mod analysis;
 pub mod error;
 pub mod methods;
 pub mod model;
+pub mod network;
 pub mod shape;
 pub mod simulate;
 
@@ -64,6 +65,7 @@ pub use model::{
     DenseModel, Derivation, EnergyBalance, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
     OperationCounts, Parameters,
 };
+pub use network::{Network, NetworkBuilder, NetworkError};
 pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use shape::layout::{Layout, Slot};
 pub use simulate::events::{EventContext, Events, SolveWithEvents};

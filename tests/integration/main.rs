@@ -28,6 +28,7 @@ mod ladder;
 mod linearization;
 mod linkage;
 mod named_access;
+mod network;
 mod paper;
 mod prescribed;
 mod probes;

@@ -625,6 +625,24 @@ pub fn unit_ladder(n: usize) -> Ladder {
     Ladder { ground: Ground {}, cells: vec![Cell { l: 1.0, c: 1.0 }; n] }
 }
 
+/// The same ladder assembled while the program runs: a ground `gnd` and cells `c0`, `c1`, …
+/// added and connected in the derived ladder's order, so that its coordinates and rows are
+/// the derived ladder's, one for one.
+pub fn network_ladder(n: usize) -> dirac::network::Network {
+    let mut b = dirac::network::Network::builder();
+    b.add("gnd", Ground {}).expect("a new name");
+    for j in 0..n {
+        b.add(&format!("c{j}"), Cell { l: 1.0, c: 1.0 }).expect("a new name");
+    }
+    if n > 0 {
+        b.connect("gnd.g", "c0.a").expect("existing ports");
+    }
+    for j in 1..n {
+        b.connect(&format!("c{}.b", j - 1), &format!("c{j}.a")).expect("existing ports");
+    }
+    b.finish().expect("a network")
+}
+
 /// The ladder's consistent state with node fluxes `x` (cell by cell) at rest.
 pub fn ladder_at_rest(ladder: &Ladder, x: &[f64]) -> State<Ladder> {
     let sizes = ladder.sizes();

@@ -173,16 +173,15 @@ where
     check_equilibrium(model, t, state)?;
     let mut jac = JacobianBlocks::<M, M::Algebra>::with_shape(&model.shape());
     model.jacobian_blocks(t, &state.q, &state.v, &state.lambda, &mut jac);
-    let qq = |a: &<M::Algebra as Algebra<M>>::Qq| -> Result<DMatrix<f64>, SimError> {
-        M::Algebra::dense_qq(a).map(|x| DMatrix::from_column_slice(n, n, x.as_slice())).ok_or(
-            SimError::InvalidOption {
-                what: "linearize",
-                reason: "needs a model with dense blocks (of fixed size)".into(),
-            },
-        )
+    // The blocks as dense matrices: the state-space model is dense whatever the storage.
+    let qq = |a: &<M::Algebra as Algebra<M>>::Qq| {
+        let mut x = DMatrix::zeros(n, n);
+        M::Algebra::qq_entries(a, |i, j, value| x[(i, j)] += value);
+        x
     };
-    let (k, dv, lvq, lvv) = (qq(&jac.dpdot_dq)?, qq(&jac.dpdot_dv)?, qq(&jac.l_vq)?, qq(&jac.l_vv)?);
-    let a = DMatrix::from_column_slice(m, n, M::Algebra::cq_values(&jac.a));
+    let (k, dv, lvq, lvv) = (qq(&jac.dpdot_dq), qq(&jac.dpdot_dv), qq(&jac.l_vq), qq(&jac.l_vv));
+    let mut a = DMatrix::zeros(m, n);
+    M::Algebra::cq_entries(&jac.a, |i, j, value| a[(i, j)] += value);
     let column_major = |rows: usize, cols: usize, f: &dyn Fn(&mut [f64])| {
         let mut values = vec![0.0; rows * cols];
         f(&mut values);

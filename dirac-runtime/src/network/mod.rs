@@ -1,0 +1,408 @@
+//! Networks assembled while the program runs: compiled parts joined by name.
+//!
+//! A [`Network`] is the sparse model of an array of subsystems (design notes §4.4, §5.4) with
+//! members of different types: each part is a model of fixed size (any
+//! `#[derive(LagrangeDirac)]` model, a library part, a composite of named subsystems) behind an
+//! object-safe view that reads its arguments from the network's vectors at its offsets and
+//! writes its blocks in place. Connections are the paper's interconnection rows
+//! `v_a − v_b = 0`, whose multipliers are the through quantities (the current into a pin, the
+//! force on a flange); a one-form is a row `Σ c_k v_k = 0` of constant coefficients. The
+//! sparsity pattern is made once, by [`NetworkBuilder::finish`]; a step evaluates each part's
+//! generated kernel in a loop.
+//!
+//! Every integrator, [`consistent_state`](crate::consistent_state) and
+//! [`linearize`](crate::linearize) take a network as they take a derived model.
+//!
+//! Parts are named when they are added (`"R1"`), and every coordinate, multiplier, input and
+//! output by its part's name and its own (`"R1.p"`, `"C1.vp"`, `"V1.source"`); a connection's
+//! row is named by its ends, `"R1.n~C1.p"`.
+//!
+//! The `dirac` facade's `network` module has a runnable example with the component library's
+//! parts.
+
+mod model;
+mod part;
+
+use std::collections::HashMap;
+
+use nalgebra::DefaultAllocator;
+use thiserror::Error;
+
+use crate::algebra::{Pattern, SparseShape};
+use crate::model::DenseModel;
+use crate::model::InputsOutputs;
+use crate::model::assemble::Offsets;
+use crate::shape::dims::{Sizes, Storage};
+
+use self::part::{Member, Part};
+
+/// Why a network could not be built: each names the parts, ports or rows at fault.
+#[derive(Clone, Debug, Error, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NetworkError {
+    /// A part's name is empty, holds a character other than letters, digits, `_`, `$`, `:`,
+    /// `[`, `]` and `-`, or is taken.
+    #[error("part name `{name}`: {reason}")]
+    PartName {
+        /// The name.
+        name: String,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A port path names no part.
+    #[error("`{path}`: the network has no part `{part}`{hint}")]
+    UnknownPart {
+        /// The path as given.
+        path: String,
+        /// The part it names.
+        part: String,
+        /// A suggestion, if a part's name is close.
+        hint: String,
+    },
+    /// A port path names no port of its part.
+    #[error("`{path}`: part `{part}` has no port `{port}`; its ports are {ports}")]
+    UnknownPort {
+        /// The path as given.
+        path: String,
+        /// The part.
+        part: String,
+        /// The port asked for.
+        port: String,
+        /// The part's ports, listed.
+        ports: String,
+    },
+    /// A port connected to itself.
+    #[error("`{port}` is connected to itself")]
+    SelfConnection {
+        /// The port.
+        port: String,
+    },
+    /// The same two ports connected twice: the second row would repeat the first, and no
+    /// solver could split the current between them.
+    #[error("`{a}` and `{b}` are connected twice")]
+    DuplicateConnection {
+        /// One end.
+        a: String,
+        /// The other end.
+        b: String,
+    },
+    /// A one-form row with no entries, a zero or non-finite coefficient, or a port twice.
+    #[error("one-form `{name}`: {reason}")]
+    OneForm {
+        /// The row's name.
+        name: String,
+        /// What is wrong with it.
+        reason: String,
+    },
+    /// A part that a network cannot hold yet: one with unilateral constraints, switching
+    /// surfaces or laws, whose events a network does not locate.
+    #[error("part `{part}` has {what}; a run-time network does not locate events yet")]
+    Unsupported {
+        /// The part.
+        part: String,
+        /// What it has.
+        what: String,
+    },
+    /// A network without parts.
+    #[error("the network has no parts")]
+    Empty,
+}
+
+/// A port: its part and the part's coordinate.
+type PortId = (usize, usize);
+
+/// A part being added: its model behind the object-safe view, and its names.
+struct Entry {
+    name: String,
+    part: Box<dyn Part>,
+    coordinates: Vec<String>,
+    ports: Vec<usize>,
+}
+
+/// Builds a [`Network`]: add parts, connect their ports by name, add one-forms, then
+/// [`finish`](NetworkBuilder::finish). Each call checks what it is given and returns a typed
+/// error naming the part or port at fault; the builder is unchanged by a call that fails.
+#[derive(Default)]
+pub struct NetworkBuilder {
+    entries: Vec<Entry>,
+    by_name: HashMap<String, usize>,
+    rows: Vec<OwnRow>,
+    connected: HashMap<(PortId, PortId), usize>,
+}
+
+/// One of the network's own rows, `Σ c_k v_k = 0`, over network coordinates.
+#[derive(Clone, Debug)]
+struct OwnRow {
+    name: String,
+    /// `(part, coordinate of the part, coefficient)`.
+    entries: Vec<(usize, usize, f64)>,
+}
+
+impl NetworkBuilder {
+    /// Adds a part under `name`: any model of fixed size.
+    pub fn add<M>(&mut self, name: &str, model: M) -> Result<&mut Self, NetworkError>
+    where
+        M: DenseModel + InputsOutputs + Clone + Send + Sync,
+        DefaultAllocator: Storage<M>,
+    {
+        let bad =
+            |reason: &str| Err(NetworkError::PartName { name: name.to_string(), reason: reason.to_string() });
+        if name.is_empty() {
+            return bad("a part needs a name");
+        }
+        if let Some(c) = name.chars().find(|&c| !(c.is_alphanumeric() || "_$:[]-".contains(c))) {
+            return bad(&format!(
+                "`{c}` is not allowed (letters, digits, `_`, `$`, `:`, `[`, `]` and `-` are)"
+            ));
+        }
+        if self.by_name.contains_key(name) {
+            return bad("a part of this name is already in the network");
+        }
+        let member = Member(model);
+        let part: Box<dyn Part> = Box::new(member);
+        if part.has_unilaterals() {
+            return Err(NetworkError::Unsupported {
+                part: name.to_string(),
+                what: "unilateral constraints".into(),
+            });
+        }
+        if part.has_switches() {
+            return Err(NetworkError::Unsupported {
+                part: name.to_string(),
+                what: "switching surfaces or laws (a conditional, `abs`, a diode, friction)".into(),
+            });
+        }
+        let (coordinates, ports) = (part.coordinate_names(), part.port_indices());
+        self.by_name.insert(name.to_string(), self.entries.len());
+        self.entries.push(Entry { name: name.to_string(), part, coordinates, ports });
+        Ok(self)
+    }
+
+    /// The part and coordinate of a port path, `"R1.p"`.
+    fn port(&self, path: &str) -> Result<(usize, usize), NetworkError> {
+        let (part, port) = path.split_once('.').unwrap_or((path, ""));
+        let Some(&e) = self.by_name.get(part) else {
+            let close = self.entries.iter().map(|e| e.name.as_str()).find(|n| n.eq_ignore_ascii_case(part));
+            let hint = close.map_or(String::new(), |n| format!("; did you mean `{n}`?"));
+            return Err(NetworkError::UnknownPart { path: path.to_string(), part: part.to_string(), hint });
+        };
+        let entry = &self.entries[e];
+        match entry.ports.iter().find(|&&i| entry.coordinates[i] == port) {
+            Some(&i) => Ok((e, i)),
+            None => {
+                let ports: Vec<String> =
+                    entry.ports.iter().map(|&i| format!("`{}`", entry.coordinates[i])).collect();
+                Err(NetworkError::UnknownPort {
+                    path: path.to_string(),
+                    part: part.to_string(),
+                    port: port.to_string(),
+                    ports: if ports.is_empty() { "none".into() } else { ports.join(", ") },
+                })
+            }
+        }
+    }
+
+    /// Connects two ports: the paper's `v_a = v_b`, `f_a + f_b = 0` (Kirchhoff's current law at
+    /// a node, Newton's third law at a joint). The row `"a~b"` carries the through quantity
+    /// from `b` into `a`'s part.
+    pub fn connect(&mut self, a: &str, b: &str) -> Result<&mut Self, NetworkError> {
+        let (pa, pb) = (self.port(a)?, self.port(b)?);
+        if pa == pb {
+            return Err(NetworkError::SelfConnection { port: a.to_string() });
+        }
+        let pair = (pa.min(pb), pa.max(pb));
+        if self.connected.contains_key(&pair) {
+            return Err(NetworkError::DuplicateConnection { a: a.to_string(), b: b.to_string() });
+        }
+        self.connected.insert(pair, self.rows.len());
+        self.rows
+            .push(OwnRow { name: format!("{a}~{b}"), entries: vec![(pa.0, pa.1, 1.0), (pb.0, pb.1, -1.0)] });
+        Ok(self)
+    }
+
+    /// Adds the row `Σ c_k v_k = 0` over ports (`[("T1.p1", 1.0), ("T1.p2", -2.0)]`), named
+    /// `name`: a constraint of constant coefficients between parts, whose multiplier is the
+    /// force it takes.
+    pub fn one_form(&mut self, name: &str, entries: &[(&str, f64)]) -> Result<&mut Self, NetworkError> {
+        let bad = |reason: String| Err(NetworkError::OneForm { name: name.to_string(), reason });
+        if entries.is_empty() {
+            return bad("it has no entries".into());
+        }
+        let mut row = Vec::with_capacity(entries.len());
+        for &(path, c) in entries {
+            let (e, i) = self.port(path)?;
+            if !c.is_finite() || c == 0.0 {
+                return bad(format!("the coefficient of `{path}` is {c}: it must be finite and nonzero"));
+            }
+            if row.iter().any(|&(f, j, _)| (f, j) == (e, i)) {
+                return bad(format!("`{path}` appears twice"));
+            }
+            row.push((e, i, c));
+        }
+        self.rows.push(OwnRow { name: name.to_string(), entries: row });
+        Ok(self)
+    }
+
+    /// The network: its layout and sparsity pattern made once.
+    pub fn finish(self) -> Result<Network, NetworkError> {
+        if self.entries.is_empty() {
+            return Err(NetworkError::Empty);
+        }
+        Ok(Network::new(self.entries, self.rows))
+    }
+}
+
+/// Where one part sits in the network.
+#[derive(Clone, Copy, Debug)]
+struct Slot {
+    at: Offsets,
+    sizes: Sizes,
+    qq: usize,
+    cq: usize,
+    inputs: usize,
+    outputs: usize,
+}
+
+/// A network of compiled parts assembled while the program runs: a sparse Lagrange-Dirac model
+/// that every integrator takes. Made by [`Network::builder`].
+pub struct Network {
+    parts: Vec<Box<dyn Part>>,
+    part_names: Vec<String>,
+    slots: Vec<Slot>,
+    /// Own rows: the network row of each, and its entries' coordinates and coefficients
+    /// (`row_starts[r]..row_starts[r + 1]` into them).
+    row0: usize,
+    row_starts: Vec<usize>,
+    entry_coordinates: Vec<usize>,
+    entry_coefficients: Vec<f64>,
+    row_names: Vec<String>,
+    /// Where the own rows' entries start in the `m × n` blocks' values.
+    own_cq: usize,
+    sizes: Sizes,
+    shape: SparseShape,
+    inputs: usize,
+    outputs: usize,
+}
+
+impl Clone for Network {
+    fn clone(&self) -> Self {
+        Network {
+            parts: self.parts.iter().map(|p| p.clone_box()).collect(),
+            part_names: self.part_names.clone(),
+            slots: self.slots.clone(),
+            row0: self.row0,
+            row_starts: self.row_starts.clone(),
+            entry_coordinates: self.entry_coordinates.clone(),
+            entry_coefficients: self.entry_coefficients.clone(),
+            row_names: self.row_names.clone(),
+            own_cq: self.own_cq,
+            sizes: self.sizes,
+            shape: self.shape.clone(),
+            inputs: self.inputs,
+            outputs: self.outputs,
+        }
+    }
+}
+
+impl std::fmt::Debug for Network {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Network")
+            .field("parts", &self.part_names)
+            .field("rows", &self.row_names)
+            .field("sizes", &self.sizes)
+            .finish()
+    }
+}
+
+impl Network {
+    /// An empty builder.
+    pub fn builder() -> NetworkBuilder {
+        NetworkBuilder::default()
+    }
+
+    fn new(entries: Vec<Entry>, rows: Vec<OwnRow>) -> Network {
+        let (mut nq, mut nh, mut other, mut qq, mut cq, mut inputs, mut outputs) = (0, 0, 0, 0, 0, 0, 0);
+        let mut slots = Vec::with_capacity(entries.len());
+        for e in &entries {
+            let s = e.part.sizes();
+            slots.push(Slot { at: Offsets { q: nq, h: nh, v: other }, sizes: s, qq, cq, inputs, outputs });
+            nq += s.nq;
+            nh += s.nh;
+            other += s.nc - s.nh;
+            qq += s.nq * s.nq;
+            cq += s.nc * s.nq;
+            inputs += e.part.input_names().len();
+            outputs += e.part.output_names().len();
+        }
+        for slot in &mut slots {
+            slot.at.v += nh;
+        }
+        let row0 = nh + other;
+        let sizes = Sizes { nq, nc: row0 + rows.len(), nh };
+        let (mut row_starts, mut entry_coordinates, mut entry_coefficients) =
+            (vec![0], Vec::new(), Vec::new());
+        for row in &rows {
+            for &(e, i, c) in &row.entries {
+                entry_coordinates.push(slots[e].at.q + i);
+                entry_coefficients.push(c);
+            }
+            row_starts.push(entry_coordinates.len());
+        }
+        let (mut pqq, mut pcq) = (Pattern::new(nq, nq), Pattern::new(sizes.nc, nq));
+        for slot in &slots {
+            let (at, s) = (slot.at, slot.sizes);
+            pqq.push_dense(at.q..at.q + s.nq, at.q, s.nq);
+            let rows = (0..s.nc).map(move |r| if r < s.nh { at.h + r } else { at.v + r - s.nh });
+            pcq.push_dense(rows, at.q, s.nq);
+        }
+        for r in 0..rows.len() {
+            for &c in &entry_coordinates[row_starts[r]..row_starts[r + 1]] {
+                pcq.push(row0 + r, c);
+            }
+        }
+        let shape = SparseShape::new(sizes, pqq, pcq);
+        let (part_names, parts) = entries.into_iter().map(|e| (e.name, e.part)).unzip();
+        Network {
+            parts,
+            part_names,
+            slots,
+            row0,
+            row_starts,
+            entry_coordinates,
+            entry_coefficients,
+            row_names: rows.into_iter().map(|r| r.name).collect(),
+            own_cq: cq,
+            sizes,
+            shape,
+            inputs,
+            outputs,
+        }
+    }
+
+    /// The parts' names, in the order they were added (the order of their coordinates).
+    pub fn part_names(&self) -> &[String] {
+        &self.part_names
+    }
+
+    /// The index of the coordinate `"R1.p"` (part, then the part's own dotted name).
+    pub fn coordinate_index(&self, name: &str) -> Option<usize> {
+        let (part, rest) = name.split_once('.')?;
+        let e = self.part_names.iter().position(|n| n == part)?;
+        let i = self.parts[e].coordinate_names().iter().position(|c| c == rest)?;
+        Some(self.slots[e].at.q + i)
+    }
+
+    /// The network's own rows: the connections (`"a~b"`) and one-forms, in the order added.
+    pub fn row_names(&self) -> &[String] {
+        &self.row_names
+    }
+
+    /// Calls `f` with each part's name, offsets and sizes.
+    fn names_with(&self, f: impl Fn(&dyn Part) -> Vec<String>) -> Vec<String> {
+        let mut out = Vec::new();
+        for (name, part) in self.part_names.iter().zip(&self.parts) {
+            out.extend(f(part.as_ref()).into_iter().map(|n| format!("{name}.{n}")));
+        }
+        out
+    }
+}

@@ -1,0 +1,438 @@
+//! The object-safe view of a compiled model that a run-time network holds: each method
+//! gathers the part's arguments from the network's vectors at the part's offsets, calls the
+//! model's generated method and writes its result in place, as the loops that
+//! `#[derive(Interconnection)]` emits for an array of subsystems do.
+
+use nalgebra::{DVector, DefaultAllocator};
+
+use crate::model::InputsOutputs;
+use crate::model::assemble::{Offsets, gather_c, gather_q, scatter_c, scatter_h, scatter_q};
+use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+use crate::model::{DenseModel, MatCQ, MatQQ};
+use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
+
+use super::Network;
+
+/// A `q`-vector method of a model: `(t, q, v) ↦ VecQ`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum VecKernel {
+    DlDq,
+    DlDv,
+    Force,
+    LVt,
+}
+
+/// An `n × n` block method of a model: `(t, q, v) ↦ MatQQ`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum QqKernel {
+    LQq,
+    LVq,
+    LVv,
+    ForceDq,
+    ForceDv,
+}
+
+/// A method of a model over its constraint rows: `(t, q, v) ↦ VecC`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum RowKernel {
+    Rate,
+    DavDt,
+}
+
+/// A block of the inputs-and-outputs capability, dense and column-major.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum IoBlock {
+    DpdotDu,
+    LVu,
+    AvDu,
+    OutputDq,
+    OutputDv,
+    OutputDlambda,
+    OutputDu,
+}
+
+/// The six Jacobian blocks' values of the whole network, and where this part's dense blocks
+/// start in them.
+pub(crate) struct JacobianValues<'a> {
+    pub(crate) blocks: &'a mut JacobianBlocks<Network, crate::algebra::Sparse>,
+    pub(crate) qq_at: usize,
+    pub(crate) cq_at: usize,
+}
+
+/// A compiled model as a member of a run-time network. Implemented for every model of fixed
+/// size (`#[derive(LagrangeDirac)]` and `#[derive(Interconnection)]` of named subsystems) by
+/// [`Network::add`](super::NetworkBuilder::add); not implemented by hand.
+pub(crate) trait Part: Send + Sync {
+    fn sizes(&self) -> Sizes;
+    fn coordinate_names(&self) -> Vec<String>;
+    fn velocity_names(&self) -> Vec<String>;
+    fn constraint_names(&self) -> Vec<String>;
+    fn input_names(&self) -> Vec<String>;
+    fn output_names(&self) -> Vec<String>;
+    fn has_switches(&self) -> bool;
+    fn has_unilaterals(&self) -> bool;
+    fn port_indices(&self) -> Vec<usize>;
+    fn clone_box(&self) -> Box<dyn Part>;
+
+    fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64;
+    fn dl_dt(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64;
+    fn vec_q(
+        &self,
+        kernel: VecKernel,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        at: &Offsets,
+        out: &mut DVector<f64>,
+    );
+    /// Writes the dense block column by column into `out` (its `n²` values).
+    fn mat_qq(
+        &self,
+        kernel: QqKernel,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        at: &Offsets,
+        out: &mut [f64],
+    );
+    fn datl_dq(&self, t: f64, q: &DVector<f64>, lambda: &DVector<f64>, at: &Offsets, out: &mut [f64]);
+    /// `A(q, t)` (`v` is `None`) or `∂(A v + b)/∂q`, dense, column by column into `out`.
+    fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, at: &Offsets, out: &mut [f64]);
+    fn holonomic(&self, t: f64, q: &DVector<f64>, at: &Offsets, out: &mut DVector<f64>);
+    fn rows(
+        &self,
+        kernel: RowKernel,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        at: &Offsets,
+        out: &mut DVector<f64>,
+    );
+    #[allow(clippy::too_many_arguments)]
+    fn residual_blocks(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: &mut ResidualBlocks<Network>,
+    );
+    #[allow(clippy::too_many_arguments)]
+    fn jacobian_blocks(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: JacobianValues<'_>,
+    );
+    fn interconnection_forces(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: &mut DVector<f64>,
+    );
+    /// The part's outputs into `out` (one value per output).
+    fn outputs(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: &mut [f64],
+    );
+    /// An inputs-and-outputs block of the part, dense and column-major, with its rows.
+    fn io_block(
+        &self,
+        block: IoBlock,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+    ) -> (Vec<f64>, usize);
+    fn input_value(&self, k: usize) -> f64;
+    fn set_input_value(&mut self, k: usize, value: f64);
+    fn invalid_parameter(&self) -> Option<(String, f64, &'static str)>;
+}
+
+/// A model of fixed size held by a network.
+#[derive(Clone)]
+pub(crate) struct Member<M>(pub(crate) M);
+
+impl<M> Member<M>
+where
+    M: DenseModel,
+    DefaultAllocator: Storage<M>,
+{
+    fn args(&self, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> (VecQ<M>, VecQ<M>) {
+        (gather_q::<M, Network>(q, at), gather_q::<M, Network>(v, at))
+    }
+}
+
+/// Copies a dense block of a model of fixed size into a slice, column by column.
+fn put<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
+    block: &nalgebra::Matrix<f64, R, C, S>,
+    out: &mut [f64],
+) {
+    for (o, x) in out.iter_mut().zip(block.iter()) {
+        *o = *x;
+    }
+}
+
+impl<M> Part for Member<M>
+where
+    M: DenseModel + InputsOutputs + Clone + Send + Sync,
+    DefaultAllocator: Storage<M>,
+{
+    fn sizes(&self) -> Sizes {
+        M::SIZES
+    }
+
+    fn coordinate_names(&self) -> Vec<String> {
+        self.0.coordinate_names()
+    }
+
+    fn velocity_names(&self) -> Vec<String> {
+        self.0.velocity_names()
+    }
+
+    fn constraint_names(&self) -> Vec<String> {
+        self.0.constraint_names()
+    }
+
+    fn input_names(&self) -> Vec<String> {
+        self.0.input_names()
+    }
+
+    fn output_names(&self) -> Vec<String> {
+        self.0.output_names()
+    }
+
+    fn has_switches(&self) -> bool {
+        self.0.has_switches() || crate::simulate::laws::has_laws::<M>()
+    }
+
+    fn has_unilaterals(&self) -> bool {
+        !self.0.unilateral_names().is_empty()
+    }
+
+    fn port_indices(&self) -> Vec<usize> {
+        self.0.ports().into_iter().map(|c| c.index()).collect()
+    }
+
+    fn clone_box(&self) -> Box<dyn Part> {
+        Box::new(self.clone())
+    }
+
+    fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64 {
+        let (q, v) = self.args(q, v, at);
+        self.0.lagrangian(t, &q, &v)
+    }
+
+    fn dl_dt(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64 {
+        let (q, v) = self.args(q, v, at);
+        self.0.dl_dt(t, &q, &v)
+    }
+
+    fn vec_q(
+        &self,
+        kernel: VecKernel,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        at: &Offsets,
+        out: &mut DVector<f64>,
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let mut o = VecQ::<M>::zeros();
+        match kernel {
+            VecKernel::DlDq => self.0.dl_dq(t, &q, &v, &mut o),
+            VecKernel::DlDv => self.0.dl_dv(t, &q, &v, &mut o),
+            VecKernel::Force => self.0.force(t, &q, &v, &mut o),
+            VecKernel::LVt => self.0.l_vt(t, &q, &v, &mut o),
+        }
+        scatter_q::<M, Network>(&o, at, out);
+    }
+
+    fn mat_qq(
+        &self,
+        kernel: QqKernel,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        at: &Offsets,
+        out: &mut [f64],
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let mut o = MatQQ::<M>::zeros();
+        match kernel {
+            QqKernel::LQq => self.0.l_qq(t, &q, &v, &mut o),
+            QqKernel::LVq => self.0.l_vq(t, &q, &v, &mut o),
+            QqKernel::LVv => self.0.l_vv(t, &q, &v, &mut o),
+            QqKernel::ForceDq => self.0.force_dq(t, &q, &v, &mut o),
+            QqKernel::ForceDv => self.0.force_dv(t, &q, &v, &mut o),
+        }
+        put(&o, out);
+    }
+
+    fn datl_dq(&self, t: f64, q: &DVector<f64>, lambda: &DVector<f64>, at: &Offsets, out: &mut [f64]) {
+        let (q, lambda) = (gather_q::<M, Network>(q, at), gather_c::<M, Network>(lambda, at));
+        let mut o = MatQQ::<M>::zeros();
+        self.0.datl_dq(t, &q, &lambda, &mut o);
+        put(&o, out);
+    }
+
+    fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, at: &Offsets, out: &mut [f64]) {
+        let q = gather_q::<M, Network>(q, at);
+        let mut o = MatCQ::<M>::zeros();
+        match v {
+            None => self.0.constraint_matrix(t, &q, &mut o),
+            Some(v) => self.0.dav_dq(t, &q, &gather_q::<M, Network>(v, at), &mut o),
+        }
+        put(&o, out);
+    }
+
+    fn holonomic(&self, t: f64, q: &DVector<f64>, at: &Offsets, out: &mut DVector<f64>) {
+        let mut o = VecH::<M>::zeros();
+        self.0.holonomic(t, &gather_q::<M, Network>(q, at), &mut o);
+        scatter_h::<M, Network>(&o, at, out);
+    }
+
+    fn rows(
+        &self,
+        kernel: RowKernel,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        at: &Offsets,
+        out: &mut DVector<f64>,
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let mut o = VecC::<M>::zeros();
+        match kernel {
+            RowKernel::Rate => self.0.constraint_rate(t, &q, &mut o),
+            RowKernel::DavDt => self.0.dav_dt(t, &q, &v, &mut o),
+        }
+        scatter_c::<M, Network>(&o, at, out);
+    }
+
+    fn residual_blocks(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: &mut ResidualBlocks<Network>,
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let lambda = gather_c::<M, Network>(lambda, at);
+        let mut o = ResidualBlocks::<M>::zeros();
+        self.0.residual_blocks(t, &q, &v, &lambda, &mut o);
+        scatter_q::<M, Network>(&o.momentum_rate, at, &mut out.momentum_rate);
+        scatter_q::<M, Network>(&o.dl_dv, at, &mut out.dl_dv);
+        scatter_c::<M, Network>(&o.constraint_velocity, at, &mut out.constraint_velocity);
+    }
+
+    fn jacobian_blocks(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: JacobianValues<'_>,
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let lambda = gather_c::<M, Network>(lambda, at);
+        let mut o = JacobianBlocks::<M>::with_shape(&M::SIZES);
+        self.0.jacobian_blocks(t, &q, &v, &lambda, &mut o);
+        let (nqq, ncq) = (M::NQ * M::NQ, M::NC * M::NQ);
+        let (qq, cq) = (out.qq_at..out.qq_at + nqq, out.cq_at..out.cq_at + ncq);
+        let b = out.blocks;
+        put(&o.dpdot_dq, &mut b.dpdot_dq.values[qq.clone()]);
+        put(&o.dpdot_dv, &mut b.dpdot_dv.values[qq.clone()]);
+        put(&o.l_vq, &mut b.l_vq.values[qq.clone()]);
+        put(&o.l_vv, &mut b.l_vv.values[qq]);
+        put(&o.a, &mut b.a.values[cq.clone()]);
+        put(&o.dav_dq, &mut b.dav_dq.values[cq]);
+    }
+
+    fn interconnection_forces(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: &mut DVector<f64>,
+    ) {
+        let (q, lambda) = (gather_q::<M, Network>(q, at), gather_c::<M, Network>(lambda, at));
+        let mut o = VecQ::<M>::zeros();
+        self.0.interconnection_forces(t, &q, &lambda, &mut o);
+        scatter_q::<M, Network>(&o, at, out);
+    }
+
+    fn outputs(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+        out: &mut [f64],
+    ) {
+        let (q, v) = self.args(q, v, at);
+        self.0.outputs(t, &q, &v, &gather_c::<M, Network>(lambda, at), out);
+    }
+
+    fn io_block(
+        &self,
+        block: IoBlock,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Offsets,
+    ) -> (Vec<f64>, usize) {
+        let (q, v) = self.args(q, v, at);
+        let lambda = gather_c::<M, Network>(lambda, at);
+        let (nu, ny) = (M::NAMES.input_count(), M::NAMES.output_count());
+        let (rows, cols) = match block {
+            IoBlock::DpdotDu | IoBlock::LVu => (M::NQ, nu),
+            IoBlock::AvDu => (M::NC, nu),
+            IoBlock::OutputDq | IoBlock::OutputDv => (ny, M::NQ),
+            IoBlock::OutputDlambda => (ny, M::NC),
+            IoBlock::OutputDu => (ny, nu),
+        };
+        let mut out = vec![0.0; rows * cols];
+        let m = &self.0;
+        match block {
+            IoBlock::DpdotDu => m.dpdot_du(t, &q, &v, &lambda, &mut out),
+            IoBlock::LVu => m.l_vu(t, &q, &v, &mut out),
+            IoBlock::AvDu => m.av_du(t, &q, &v, &mut out),
+            IoBlock::OutputDq => m.output_dq(t, &q, &v, &lambda, &mut out),
+            IoBlock::OutputDv => m.output_dv(t, &q, &v, &lambda, &mut out),
+            IoBlock::OutputDlambda => m.output_dlambda(t, &q, &v, &lambda, &mut out),
+            IoBlock::OutputDu => m.output_du(t, &q, &v, &lambda, &mut out),
+        }
+        (out, rows)
+    }
+
+    fn input_value(&self, k: usize) -> f64 {
+        self.0.input_value(k)
+    }
+
+    fn set_input_value(&mut self, k: usize, value: f64) {
+        self.0.set_input_value(k, value);
+    }
+
+    fn invalid_parameter(&self) -> Option<(String, f64, &'static str)> {
+        self.0.invalid_parameter()
+    }
+}

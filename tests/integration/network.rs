@@ -1,0 +1,301 @@
+//! Networks assembled while the program runs, against the same systems written as derived
+//! interconnections: the same equations, the same trajectories, the same linearisation.
+
+use dirac::components::electrical::{
+    Capacitor, Ground as Gnd, IdealDiode, Inductor, Resistor, VoltageSource,
+};
+use dirac::network::{Network, NetworkError};
+use dirac::prelude::*;
+
+use crate::zoo::{Cell, ladder_at_rest, modal_solution, network_ladder, pulse, unit_ladder};
+
+/// A state of the network with the derived model's values.
+fn state_of(network: &Network, y: &[f64]) -> State<Network> {
+    let sizes = network.sizes();
+    let mut s = State::<Network>::with_sizes(sizes);
+    let (n, m) = (sizes.nq, sizes.nc);
+    s.q.copy_from_slice(&y[..n]);
+    s.v.copy_from_slice(&y[n..2 * n]);
+    s.p.copy_from_slice(&y[2 * n..3 * n]);
+    s.lambda.copy_from_slice(&y[3 * n..3 * n + m]);
+    s
+}
+
+/// The network of ladder cells has the derived ladder's names, residual and Jacobian, entry
+/// for entry: the parts' kernels are the same generated code, called at the same offsets, and
+/// the connection rows are the same `v_a − v_b`.
+#[test]
+fn a_network_of_cells_has_the_derived_ladders_equations() {
+    let n = 30;
+    let (ladder, network) = (unit_ladder(n), network_ladder(n));
+    assert_eq!(network.sizes(), ladder.sizes());
+    let names = network.coordinate_names();
+    assert_eq!(names[0], "gnd.g");
+    assert_eq!(names[2 * 3 + 2], "c3.b");
+    assert_eq!(network.constraint_names()[..3], ["gnd.grounded", "gnd.g~c0.a", "c0.b~c1.a"]);
+    // A state away from the constraints, every entry different.
+    let ny = ladder.sizes().ny();
+    let y: Vec<f64> = (0..ny).map(|k| ((k * 7919) % 113) as f64 / 50.0 - 1.1).collect();
+    let (yl, yn) = (dirac::nalgebra::DVector::from_vec(y.clone()), dirac::nalgebra::DVector::from_vec(y));
+    assert_eq!(network.residual_vector(0.3, &yn), ladder.residual_vector(0.3, &yl));
+    assert_eq!(network.jacobian_matrix(0.3, &yn), ladder.jacobian_matrix(0.3, &yl));
+}
+
+/// Integrated by Radau, the network's trajectory is the derived ladder's to round-off, and both
+/// follow the ladder's exact modal solution (computed independently, `zoo::modal_solution`).
+#[test]
+fn a_network_ladder_follows_the_derived_ladder_and_its_modes() {
+    let n = 60;
+    let (ladder, network) = (unit_ladder(n), network_ladder(n));
+    let x0 = pulse(n);
+    let start = ladder_at_rest(&ladder, &x0);
+    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(1e-9, 1e-9) };
+    let t_end = 10.0;
+    let derived = Radau::new(&ladder, options)
+        .expect("options")
+        .solve(0.0, &start, t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates");
+    let mut y = start.q.as_slice().to_vec();
+    y.extend(start.v.iter().chain(start.p.iter()).chain(start.lambda.iter()));
+    let net_start = state_of(&network, &y);
+    let run = Radau::new(&network, options)
+        .expect("options")
+        .solve(0.0, &net_start, t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates");
+    let (a, b) = (derived.last().expect("a sample"), run.last().expect("a sample"));
+    let difference = (&a.q - &b.q).amax().max((&a.v - &b.v).amax());
+    assert!(difference < 1e-10, "network against derived ladder: {difference:e}");
+    let exact = modal_solution(&x0, 1.0, 1.0, t_end);
+    let error = (0..n)
+        .map(|j| (b.q[network.coordinate_index(&format!("c{j}.b")).expect("a pin")] - exact[j]).abs())
+        .fold(0.0, f64::max);
+    assert!(error < 1e-7, "against the modes: {error:e}");
+    assert_eq!(network.coordinate_index("c5.b"), Some(ladder.cells(5, Cell::B).index()));
+    // Explicit and the variational integrator run the network as they run the derived ladder.
+    let sampling = Sampling::Times(vec![t_end]);
+    let explicit = ExplicitOptions::tolerances(1e-9, 1e-9);
+    let a = Explicit::new(&ladder, explicit)
+        .expect("options")
+        .solve(0.0, &start, t_end, &sampling)
+        .expect("runs");
+    let b = Explicit::new(&network, explicit)
+        .expect("options")
+        .solve(0.0, &net_start, t_end, &sampling)
+        .expect("runs");
+    let (a, b) = (a.last().expect("a sample"), b.last().expect("a sample"));
+    assert!((&a.q - &b.q).amax() < 1e-10, "Explicit: {:e}", (&a.q - &b.q).amax());
+    let mut va = Variational::new(&ladder, 0.01, VariationalOptions::default()).expect("a valid step");
+    let mut vb = Variational::new(&network, 0.01, VariationalOptions::default()).expect("a valid step");
+    let a = va.solve(0.0, &start, t_end, &sampling).expect("runs");
+    let b = vb.solve(0.0, &net_start, t_end, &sampling).expect("runs");
+    let (a, b) = (a.last().expect("a sample"), b.last().expect("a sample"));
+    assert!((&a.q - &b.q).amax() < 1e-10, "Variational: {:e}", (&a.q - &b.q).amax());
+}
+
+/// An RLC circuit switched onto a source at t = 0, built from library parts at run time and as a
+/// derived interconnection (dense storage there, sparse in the network): the same equations
+/// entry for entry, and the same trajectories within the integrators' global errors.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(source.p, r.p), connect(r.n, l.p), connect(l.n, c.p))]
+#[dirac(connect(c.n, ground.p), connect(source.n, ground.p))]
+struct Rlc {
+    source: VoltageSource,
+    r: Resistor,
+    l: Inductor,
+    c: Capacitor,
+    ground: Gnd,
+}
+
+fn parts() -> (VoltageSource, Resistor, Inductor, Capacitor) {
+    (VoltageSource { u: 1.0 }, Resistor { r: 0.5 }, Inductor { l: 0.8 }, Capacitor { c: 0.3 })
+}
+
+fn rlc_network() -> Result<Network, NetworkError> {
+    let (v, r, l, c) = parts();
+    let mut b = Network::builder();
+    b.add("source", v)?.add("r", r)?.add("l", l)?.add("c", c)?.add("ground", Gnd {})?;
+    b.connect("source.p", "r.p")?.connect("r.n", "l.p")?.connect("l.n", "c.p")?;
+    b.connect("c.n", "ground.p")?.connect("source.n", "ground.p")?;
+    b.finish()
+}
+
+/// Asserts that the largest difference of positions and velocities between two runs sampled
+/// alike, relative to each value where it exceeds 1 (the node fluxes grow with time), is
+/// below `bound`.
+fn compare<S, T>(a: &Solution<Rlc, S>, b: &Solution<Network, T>, bound: f64, what: &str) {
+    assert_eq!(a.len(), b.len(), "{what}: as many samples");
+    let worst = (0..a.len())
+        .map(|i| (a.state(i).expect("a sample"), b.state(i).expect("a sample")))
+        .map(|(x, y)| {
+            let pairs = x.q.iter().zip(y.q.iter()).chain(x.v.iter().zip(y.v.iter()));
+            pairs.map(|(u, w)| (u - w).abs() / u.abs().max(1.0)).fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max);
+    assert!(worst < bound, "{what}: network against derived {worst:e}");
+}
+
+#[test]
+fn a_network_from_library_parts_follows_the_derived_circuit() {
+    let (v, r, l, c) = parts();
+    let derived = Rlc { source: v, r, l, c, ground: Gnd {} };
+    let network = rlc_network().expect("a network");
+    assert_eq!(network.coordinate_names(), derived.coordinate_names());
+    let q = derived.sizes().zeros_q::<Rlc>();
+    let start = consistent_state(&derived, 0.0, &q, &q, Consistency::default()).expect("consistent");
+    let zeros = network.sizes().zeros_q::<Network>();
+    let net_start =
+        consistent_state(&network, 0.0, &zeros, &zeros, Consistency::default()).expect("consistent");
+    assert!((net_start.q.as_slice().iter().zip(start.q.iter())).all(|(a, b)| (a - b).abs() < 1e-14));
+    let times: Vec<f64> = (1..=20).map(|k| 0.5 * k as f64).collect();
+    let sampling = Sampling::Times(times.clone());
+    // The same equations, entry for entry, at a state away from the constraints.
+    let ny = derived.sizes().ny();
+    let y: Vec<f64> = (0..ny).map(|k| ((k * 7919) % 113) as f64 / 50.0 - 1.1).collect();
+    let ys = dirac::nalgebra::DVector::from_vec(y.clone());
+    let yd = VecY::<Rlc>::from_column_slice(&y);
+    assert_eq!(network.residual_vector(0.4, &ys).as_slice(), derived.residual_vector(0.4, &yd).as_slice());
+    let (jn, jd) = (network.jacobian_matrix(0.4, &ys), derived.jacobian_matrix(0.4, &yd));
+    assert_eq!(jn.as_slice(), jd.as_slice());
+    // Explicit and the variational integrator take the derived circuit and refuse the
+    // network, saying why: velocities fixed by a resistor are theirs on the dense path only.
+    let mut va = Variational::new(&derived, 0.01, VariationalOptions::default()).expect("a valid step");
+    va.solve(0.0, &start, 10.0, &sampling).expect("runs");
+    let mut vb = Variational::new(&network, 0.01, VariationalOptions::default()).expect("a valid step");
+    let refused = vb.solve(0.0, &net_start, 10.0, &sampling).map(|_| ()).expect_err("refused");
+    assert!(refused.to_string().contains("integrate this one with Radau"), "{refused}");
+    // With step-size control the step sequences part at round-off, so the runs differ by their
+    // global errors: at tolerances of 1e-13 both are within 1e-10 of the motion (measured
+    // 2.3e-10 apart with Radau).
+    let tight = RadauOptions::tolerances(1e-13, 1e-13);
+    let a = Radau::new(&derived, tight).expect("options").solve(0.0, &start, 10.0, &sampling).expect("runs");
+    let b =
+        Radau::new(&network, tight).expect("options").solve(0.0, &net_start, 10.0, &sampling).expect("runs");
+    compare(&a, &b, 1e-9, "Radau");
+    let explicit = ExplicitOptions::tolerances(1e-10, 1e-10);
+    let a = Explicit::new(&derived, explicit)
+        .expect("options")
+        .solve(0.0, &start, 10.0, &sampling)
+        .expect("runs");
+    let refused = Explicit::new(&network, explicit).expect("options").solve(0.0, &net_start, 10.0, &sampling);
+    assert!(refused.map(|_| ()).expect_err("refused").to_string().contains("integrate this one with Radau"));
+    // The outputs, named by part.
+    assert_eq!(network.output_names(), derived.output_names());
+    let (sa, sb) = (a.last().expect("a sample"), b.last().expect("a sample"));
+    let (mut ya, mut yb) = (vec![0.0; derived.output_names().len()], vec![0.0; network.output_names().len()]);
+    derived.outputs(10.0, &sa.q, &sa.v, &sa.lambda, &mut ya);
+    network.outputs(10.0, &sb.q, &sb.v, &sb.lambda, &mut yb);
+    let worst = ya.iter().zip(&yb).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-9, "outputs: {worst:e}");
+}
+
+/// The exact linearisation of a network with an input (a voltage source set while it runs)
+/// is the derived circuit's, about the equilibrium at rest with the source at zero.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(source.p, r.p), connect(r.n, c.p), connect(c.n, ground.p), connect(source.n, ground.p))]
+struct Rc {
+    source: VoltageSource,
+    r: Resistor,
+    c: Capacitor,
+    ground: Gnd,
+}
+
+#[test]
+fn a_network_linearises_as_the_derived_circuit() {
+    let derived = Rc {
+        source: VoltageSource { u: 0.0 },
+        r: Resistor { r: 2.0 },
+        c: Capacitor { c: 0.5 },
+        ground: Gnd {},
+    };
+    let mut b = Network::builder();
+    b.add("source", VoltageSource { u: 0.0 }).expect("new");
+    b.add("r", Resistor { r: 2.0 }).expect("new").add("c", Capacitor { c: 0.5 }).expect("new");
+    b.add("ground", Gnd {}).expect("new");
+    b.connect("source.p", "r.p").expect("ports").connect("r.n", "c.p").expect("ports");
+    b.connect("c.n", "ground.p").expect("ports").connect("source.n", "ground.p").expect("ports");
+    let mut network = b.finish().expect("a network");
+    assert_eq!(network.input_names(), ["source.u"]);
+    network.set_input_value(0, 0.0);
+    assert_eq!(network.input_value(0), 0.0);
+    let q = derived.sizes().zeros_q::<Rc>();
+    let start = consistent_state(&derived, 0.0, &q, &q, Consistency::default()).expect("consistent");
+    let zeros = network.sizes().zeros_q::<Network>();
+    let net_start =
+        consistent_state(&network, 0.0, &zeros, &zeros, Consistency::default()).expect("consistent");
+    let la = linearize(&derived, 0.0, &start).expect("linearises");
+    let lb = linearize(&network, 0.0, &net_start).expect("linearises");
+    let close = |x: &dirac::nalgebra::DMatrix<f64>, y: &dirac::nalgebra::DMatrix<f64>, what: &str| {
+        assert_eq!(x.shape(), y.shape(), "{what}");
+        let worst = (x - y).amax();
+        assert!(worst < 1e-12, "{what}: {worst:e}");
+    };
+    close(&la.a, &lb.a, "A");
+    close(&la.b, &lb.b, "B");
+    close(&la.c, &lb.c, "C");
+    close(&la.d, &lb.d, "D");
+}
+
+/// Every mistake in building a network is a typed error naming the part or port.
+#[test]
+fn connection_errors_name_the_parts() {
+    let mut b = Network::builder();
+    b.add("R1", Resistor { r: 1.0 }).expect("new").add("C1", Capacitor { c: 1.0 }).expect("new");
+    let err =
+        |e: Result<&mut dirac::network::NetworkBuilder, NetworkError>| e.err().expect("an error").to_string();
+    assert_eq!(err(b.connect("r1.p", "C1.p")), "`r1.p`: the network has no part `r1`; did you mean `R1`?");
+    assert_eq!(err(b.connect("R1.q", "C1.p")), "`R1.q`: part `R1` has no port `q`; its ports are `p`, `n`");
+    assert_eq!(err(b.connect("R1.p", "R1.p")), "`R1.p` is connected to itself");
+    b.connect("R1.n", "C1.p").expect("ports");
+    assert_eq!(err(b.connect("C1.p", "R1.n")), "`C1.p` and `R1.n` are connected twice");
+    assert_eq!(
+        err(b.add("R1", Resistor { r: 2.0 })),
+        "part name `R1`: a part of this name is already in the network"
+    );
+    assert!(err(b.add("R.2", Resistor { r: 2.0 })).starts_with("part name `R.2`: `.` is not allowed"));
+    assert_eq!(
+        err(b.add("D1", IdealDiode {})),
+        "part `D1` has switching surfaces or laws (a conditional, `abs`, a diode, friction); a run-time network does not locate events yet"
+    );
+    assert_eq!(err(b.one_form("k", &[("R1.p", 1.0), ("R1.p", 2.0)])), "one-form `k`: `R1.p` appears twice");
+    assert_eq!(
+        err(b.one_form("k", &[("R1.p", 0.0)])),
+        "one-form `k`: the coefficient of `R1.p` is 0: it must be finite and nonzero"
+    );
+    assert!(matches!(Network::builder().finish(), Err(NetworkError::Empty)));
+    // The builder is unchanged by what failed: one connection, two parts.
+    let network = b.finish().expect("a network");
+    assert_eq!(network.row_names(), ["R1.n~C1.p"]);
+    assert_eq!(network.part_names(), ["R1", "C1"]);
+}
+
+/// A one-form joins two parts as an ideal transformer would: `v1 = 2 v2` between an inductor's
+/// pins and a capacitor's, its multiplier the force it takes.
+#[test]
+fn a_one_form_between_parts_holds() {
+    let mut b = Network::builder();
+    b.add("L", Inductor { l: 1.0 }).expect("new").add("C", Capacitor { c: 1.0 }).expect("new");
+    b.add("g1", Gnd {}).expect("new").add("g2", Gnd {}).expect("new");
+    b.connect("L.n", "g1.p").expect("ports").connect("C.n", "g2.p").expect("ports");
+    b.one_form("ratio", &[("L.p", 1.0), ("C.p", -2.0)]).expect("a row");
+    let network = b.finish().expect("a network");
+    let mut q = network.sizes().zeros_q::<Network>();
+    let (lp, cp) =
+        (network.coordinate_index("L.p").expect("pin"), network.coordinate_index("C.p").expect("pin"));
+    // An initial current of 1 A in the inductor: its flux p − n = l i₀.
+    q[lp] = 1.0;
+    q[cp] = 0.5;
+    let v = network.sizes().zeros_q::<Network>();
+    let start = consistent_state(&network, 0.0, &q, &v, Consistency::default()).expect("consistent");
+    let sol = Radau::new(&network, RadauOptions::tolerances(1e-10, 1e-10))
+        .expect("options")
+        .solve(0.0, &start, 3.0, &Sampling::Times(vec![1.0, 2.0, 3.0]))
+        .expect("runs");
+    // Seen from the inductor through the 2:1 ratio the capacitor is C/2² = 1/4 F (its energy
+    // ½ C v_C² = ½ (C/4) v_L²), so the flux from rest oscillates at ω = 1/√(L C/4) = 2:
+    // φ(t) = cos 2t.
+    for (i, &t) in sol.t().iter().enumerate() {
+        let s = sol.state(i).expect("a sample");
+        assert!((s.v[lp] - 2.0 * s.v[cp]).abs() < 1e-9, "the row holds");
+        assert!((s.q[lp] - (2.0 * t).cos()).abs() < 1e-7, "t = {t}: {} against {}", s.q[lp], (2.0 * t).cos());
+    }
+}
