@@ -158,6 +158,8 @@ pub use dirac_runtime::network;
 #[cfg(feature = "components")]
 pub mod components;
 pub mod fmi;
+#[cfg(feature = "components")]
+pub mod spice;
 
 /// Everything a model file needs: `use dirac::prelude::*;`.
 ///

@@ -35,5 +35,6 @@ mod probes;
 mod radau;
 mod robots;
 mod sensitivities;
+mod spice;
 mod util;
 mod variational;

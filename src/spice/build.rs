@@ -1,0 +1,423 @@
+//! A netlist's elements as parts of a run-time network, its nodes as connections, checked
+//! for what no solver could simulate: a subnetwork with no path to the reference, a loop of
+//! voltage sources, a cut-set of current sources.
+
+use std::collections::HashMap;
+use std::io::{self, Write};
+
+use crate::components::electrical::{
+    Capacitor, CoupledInductors, CurrentSource, Ground, Inductor, Resistor, VoltageControlledCurrent,
+    VoltageSource,
+};
+use crate::network::{Network, NetworkBuilder, NetworkError};
+use crate::{
+    Consistency, ErrorNorm, Integrator, LagrangeDirac, Named, Radau, RadauOptions, Sampling, consistent_state,
+};
+
+use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
+
+/// A netlist's circuit: its network, where each node's voltage is read, its initial state and
+/// its `.tran`.
+#[derive(Debug)]
+pub struct Circuit {
+    /// The network of parts: each element under its name (lower case), `0` the reference.
+    pub network: Network,
+    /// Each node (lower case, `0` first) and the coordinate whose rate is its voltage.
+    nodes: Vec<(String, usize)>,
+    /// Each voltage source's current `i(v1)` and the output that carries it.
+    currents: Vec<(String, usize)>,
+    q0: Vec<f64>,
+    v0: Vec<f64>,
+    tran: Option<Tran>,
+}
+
+/// Sampled node voltages `v(node)` and source currents `i(source)`.
+#[derive(Clone, Debug)]
+pub struct Waveforms {
+    times: Vec<f64>,
+    names: Vec<String>,
+    columns: Vec<Vec<f64>>,
+}
+
+impl Waveforms {
+    /// The sample times.
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
+
+    /// The columns' names: `v(node)` for every node but the reference, then `i(source)`.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The column of this name.
+    pub fn column(&self, name: &str) -> Option<&[f64]> {
+        let k = self.names.iter().position(|n| n == name)?;
+        Some(&self.columns[k])
+    }
+
+    /// Writes the waveforms as CSV: a header `time,v(a),…`, then a row per sample.
+    pub fn write_csv(&self, mut out: impl Write) -> io::Result<()> {
+        writeln!(out, "time,{}", self.names.join(","))?;
+        for (i, t) in self.times.iter().enumerate() {
+            write!(out, "{t:e}")?;
+            for c in &self.columns {
+                write!(out, ",{:e}", c[i])?;
+            }
+            writeln!(out)?;
+        }
+        Ok(())
+    }
+}
+
+fn is_ground(node: &str) -> bool {
+    node == "0" || node == "gnd"
+}
+
+/// Union-find over node indices.
+struct Sets(Vec<usize>);
+
+impl Sets {
+    fn find(&mut self, a: usize) -> usize {
+        let mut r = a;
+        while self.0[r] != r {
+            self.0[r] = self.0[self.0[r]];
+            r = self.0[r];
+        }
+        r
+    }
+
+    /// Joins the sets of `a` and `b`; false if they were one already.
+    fn join(&mut self, a: usize, b: usize) -> bool {
+        let (ra, rb) = (self.find(a), self.find(b));
+        self.0[ra] = rb;
+        ra != rb
+    }
+}
+
+/// The network error as a netlist error at `element`.
+fn at(element: &Element, error: NetworkError) -> SpiceError {
+    element.token.error(format!("`{}`: {error}", element.name))
+}
+
+impl Netlist {
+    /// The circuit of the netlist: its network, checked, and its initial state from `.ic` and
+    /// the elements' `ic=`.
+    pub fn circuit(&self) -> Result<Circuit, SpiceError> {
+        let first = |message: String| SpiceError { line: 1, column: 1, message };
+        if self.elements.is_empty() {
+            return Err(first("the netlist has no elements".into()));
+        }
+        // Nodes, the reference first.
+        let mut index: HashMap<String, usize> = HashMap::from([("0".to_string(), 0)]);
+        let mut names = vec!["0".to_string()];
+        let mut seen: HashMap<&str, &Element> = HashMap::new();
+        for e in &self.elements {
+            if let Some(previous) = seen.insert(e.name.as_str(), e) {
+                return Err(e.token.error(format!(
+                    "`{}` is defined twice (first on line {})",
+                    e.name, previous.token.line
+                )));
+            }
+            for node in &e.nodes {
+                let node = if is_ground(node) { "0" } else { node.as_str() };
+                if !index.contains_key(node) {
+                    index.insert(node.to_string(), names.len());
+                    names.push(node.to_string());
+                }
+            }
+        }
+        let node = |n: &str| index[if is_ground(n) { "0" } else { n }];
+        self.check_topology(&node, names.len(), &names)?;
+        // Couplings: each pairs two inductors into one part.
+        let mut coupled: HashMap<String, String> = HashMap::new();
+        for e in &self.elements {
+            if let Kind::Coupling { a, b, .. } = &e.kind {
+                for t in [a, b] {
+                    match seen.get(t.text.as_str()).map(|x| &x.kind) {
+                        Some(Kind::Inductor { .. }) => {}
+                        _ => {
+                            return Err(t.error(format!(
+                                "`{}`: `{}` is not an inductor of the netlist",
+                                e.name, t.text
+                            )));
+                        }
+                    }
+                    if coupled.insert(t.text.clone(), e.name.clone()).is_some() {
+                        return Err(t.error(format!(
+                            "`{}`: `{}` is coupled twice; an inductor may be in one coupling",
+                            e.name, t.text
+                        )));
+                    }
+                }
+            }
+        }
+        let mut b = Network::builder();
+        b.add("0", Ground {}).map_err(|err| first(err.to_string()))?;
+        // Each node's pins, in order; each element's `(pin path, node)`.
+        let mut pins: Vec<Vec<String>> = vec![vec!["0.p".to_string()]; 1];
+        pins.resize(names.len(), Vec::new());
+        let add_pins = |pins: &mut Vec<Vec<String>>, part: &str, list: &[(&str, &String)]| {
+            for (pin, n) in list {
+                pins[node(n)].push(format!("{part}.{pin}"));
+            }
+        };
+        let (mut currents, mut inductor_ic) = (Vec::new(), Vec::new());
+        for e in &self.elements {
+            let n = &e.nodes;
+            let added = match &e.kind {
+                Kind::Resistor(r) => add(&mut b, e, Resistor { r: *r }),
+                Kind::Capacitor { c, .. } => add(&mut b, e, Capacitor { c: *c }),
+                Kind::Inductor { l, ic } if !coupled.contains_key(&e.name) => {
+                    if let Some(i) = ic {
+                        inductor_ic.push((format!("{}.p", e.name), l * i));
+                    }
+                    add(&mut b, e, Inductor { l: *l })
+                }
+                Kind::Inductor { .. } => Ok(()),
+                Kind::Voltage(u) => {
+                    currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                    add(&mut b, e, VoltageSource { u: *u })
+                }
+                Kind::Current(i) => add(&mut b, e, CurrentSource { i: *i }),
+                Kind::Vccs(gm) => add(&mut b, e, VoltageControlledCurrent { gm: *gm }),
+                Kind::Coupling { a, b: bb, k } => {
+                    let (la, lb) = (seen[a.text.as_str()], seen[bb.text.as_str()]);
+                    let (Kind::Inductor { l: l1, ic: i1 }, Kind::Inductor { l: l2, ic: i2 }) =
+                        (&la.kind, &lb.kind)
+                    else {
+                        unreachable!("checked to be inductors");
+                    };
+                    let m = k * (l1 * l2).sqrt();
+                    // Winding fluxes ψ = L i for the initial currents.
+                    let (i1, i2) = (i1.unwrap_or(0.0), i2.unwrap_or(0.0));
+                    inductor_ic.push((format!("{}.p1", e.name), l1 * i1 + m * i2));
+                    inductor_ic.push((format!("{}.p2", e.name), m * i1 + l2 * i2));
+                    add_pins(
+                        &mut pins,
+                        &e.name,
+                        &[
+                            ("p1", &la.nodes[0]),
+                            ("n1", &la.nodes[1]),
+                            ("p2", &lb.nodes[0]),
+                            ("n2", &lb.nodes[1]),
+                        ],
+                    );
+                    add(&mut b, e, CoupledInductors { l1: *l1, l2: *l2, m })
+                }
+            };
+            added?;
+            match &e.kind {
+                Kind::Vccs(_) => {
+                    add_pins(
+                        &mut pins,
+                        &e.name,
+                        &[("p2", &n[0]), ("n2", &n[1]), ("p1", &n[2]), ("n1", &n[3])],
+                    );
+                }
+                Kind::Coupling { .. } => {}
+                Kind::Inductor { .. } if coupled.contains_key(&e.name) => {}
+                _ => add_pins(&mut pins, &e.name, &[("p", &n[0]), ("n", &n[1])]),
+            }
+        }
+        for list in &pins {
+            for other in list.iter().skip(1) {
+                b.connect(&list[0], other).map_err(|err| first(err.to_string()))?;
+            }
+        }
+        let network = b.finish().map_err(|err| first(err.to_string()))?;
+        let coordinate = |path: &str| network.coordinate_index(path).expect("a pin added to the network");
+        let nodes: Vec<(String, usize)> =
+            names.iter().zip(&pins).map(|(name, list)| (name.clone(), coordinate(&list[0]))).collect();
+        let outputs = network.output_names();
+        let currents = currents
+            .into_iter()
+            .map(|(name, output)| {
+                let k = outputs.iter().position(|o| *o == output).expect("a source's current output");
+                (name, k)
+            })
+            .collect();
+        // The initial state: fluxes of inductors with an initial current, and node voltages.
+        let sizes = network.sizes();
+        let (mut q0, mut v0) = (vec![0.0; sizes.nq], vec![0.0; sizes.nq]);
+        for (pin, flux) in inductor_ic {
+            q0[coordinate(&pin)] = flux;
+        }
+        let voltage = |n: usize, value: f64, v0: &mut Vec<f64>| {
+            for pin in &pins[n] {
+                v0[coordinate(pin)] = value;
+            }
+        };
+        for e in &self.elements {
+            if let Kind::Capacitor { ic: Some(ic), .. } = e.kind {
+                if node(&e.nodes[1]) != 0 {
+                    return Err(e.token.error(format!(
+                        "`{}`: `ic=` is supported on capacitors to the reference node; give `.ic v(node)=…` instead",
+                        e.name
+                    )));
+                }
+                voltage(node(&e.nodes[0]), ic, &mut v0);
+            }
+        }
+        for command in &self.commands {
+            if let Command::Ic(ics) = command {
+                for (name, value, token) in ics {
+                    match index.get(name.as_str()) {
+                        Some(&n) if n != 0 => voltage(n, *value, &mut v0),
+                        Some(_) => return Err(token.error("`.ic`: the reference node's voltage is zero")),
+                        None => return Err(token.error(format!("`.ic`: the netlist has no node `{name}`"))),
+                    }
+                }
+            }
+        }
+        Ok(Circuit { network, nodes, currents, q0, v0, tran: self.tran().cloned() })
+    }
+
+    /// Refuses what no solver could simulate, naming the elements: a subnetwork with no path to
+    /// the reference, a loop of voltage sources, a cut-set of current sources.
+    fn check_topology(
+        &self,
+        node: &dyn Fn(&str) -> usize,
+        count: usize,
+        names: &[String],
+    ) -> Result<(), SpiceError> {
+        // Each element's branches between its nodes: (from, to, is a voltage source, is a current source).
+        let branches = |e: &Element| -> Vec<(usize, usize, bool, bool)> {
+            let n = &e.nodes;
+            match e.kind {
+                Kind::Coupling { .. } => Vec::new(),
+                Kind::Voltage(_) => vec![(node(&n[0]), node(&n[1]), true, false)],
+                Kind::Current(_) => vec![(node(&n[0]), node(&n[1]), false, true)],
+                // The output branch is a source; the control pins draw no current and tie nothing.
+                Kind::Vccs(_) => vec![(node(&n[0]), node(&n[1]), false, true)],
+                _ => vec![(node(&n[0]), node(&n[1]), false, false)],
+            }
+        };
+        let (mut all, mut sources, mut passive) =
+            (Sets((0..count).collect()), Sets((0..count).collect()), Sets((0..count).collect()));
+        for e in &self.elements {
+            for (a, b, voltage, current) in branches(e) {
+                all.join(a, b);
+                if voltage && !sources.join(a, b) {
+                    return Err(e.token.error(format!(
+                        "`{}` closes a loop of voltage sources: their voltages fix one another and no current is determined",
+                        e.name
+                    )));
+                }
+                if !current {
+                    passive.join(a, b);
+                }
+            }
+        }
+        for (n, name) in names.iter().enumerate().skip(1) {
+            if all.find(n) != all.find(0) {
+                let e = self
+                    .elements
+                    .iter()
+                    .find(|e| e.nodes.iter().any(|x| node(x) == n))
+                    .expect("a node's element");
+                return Err(e.token.error(format!(
+                    "node `{name}` has no path to the reference node `0`: its voltage is not determined"
+                )));
+            }
+            if passive.find(n) != passive.find(0) {
+                // A current source with one end in the node's part of the circuit cut off.
+                let root = passive.find(n);
+                let e = self
+                    .elements
+                    .iter()
+                    .find(|e| {
+                        matches!(e.kind, Kind::Current(_) | Kind::Vccs(_))
+                            && e.nodes.iter().take(2).any(|x| passive.find(node(x)) == root)
+                    })
+                    .expect("only current sources join the parts the passive branches leave apart");
+                return Err(e.token.error(format!(
+                    "`{}` is in a cut-set of current sources: node `{}` reaches the reference only through them",
+                    e.name, name
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Adds an element's part under its name.
+fn add<M>(b: &mut NetworkBuilder, e: &Element, model: M) -> Result<(), SpiceError>
+where
+    M: crate::DenseModel + crate::InputsOutputs + Clone + Send + Sync,
+    crate::nalgebra::DefaultAllocator: crate::Storage<M>,
+{
+    b.add(&e.name, model).map(|_| ()).map_err(|err| at(e, err))
+}
+
+impl Circuit {
+    /// The node names (lower case), the reference `0` first.
+    pub fn nodes(&self) -> impl Iterator<Item = &str> {
+        self.nodes.iter().map(|(n, _)| n.as_str())
+    }
+
+    /// The netlist's `.tran`, if any.
+    pub fn tran(&self) -> Option<&Tran> {
+        self.tran.as_ref()
+    }
+
+    /// Simulates the `.tran` with Radau at the tolerance `tol` (relative and absolute, the
+    /// largest component's error), from the initial state the netlist gives (zero unless
+    /// `.ic` or `ic=` says otherwise), sampled every `.tran` step from its start.
+    pub fn simulate(&self, tol: f64) -> Result<Waveforms, SpiceError> {
+        let error = |what: &str, e: crate::SimError| SpiceError {
+            line: 1,
+            column: 1,
+            message: format!("{what}: {e}"),
+        };
+        let Some(tran) = &self.tran else {
+            return Err(SpiceError { line: 1, column: 1, message: "the netlist has no `.tran`".into() });
+        };
+        let (q, v) = (
+            crate::nalgebra::DVector::from_column_slice(&self.q0),
+            crate::nalgebra::DVector::from_column_slice(&self.v0),
+        );
+        let start = consistent_state(&self.network, 0.0, &q, &v, Consistency::default())
+            .map_err(|e| error("the initial state", e))?;
+        let mut options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };
+        if let Some(h) = tran.max_step {
+            options.max_step = h;
+        }
+        let count = ((tran.stop - tran.start) / tran.step + 1e-9).floor();
+        if count > 1e7 {
+            return Err(tran.token.error(format!("`.tran`: {count:e} samples; at most 10⁷ are recorded")));
+        }
+        let count = count as usize;
+        let mut times: Vec<f64> =
+            (0..=count).map(|k| tran.start + k as f64 * tran.step).filter(|&t| t > 0.0).collect();
+        if times.last().is_some_and(|&t| t < tran.stop) {
+            times.push(tran.stop);
+        }
+        let mut radau =
+            Radau::new(&self.network, options).map_err(|e| tran.token.error(format!("`.tran`: {e}")))?;
+        let solution = radau
+            .solve(0.0, &start, tran.stop, &Sampling::Times(times))
+            .map_err(|e| error("the simulation", e))?;
+        let mut names: Vec<String> = self.nodes.iter().skip(1).map(|(n, _)| format!("v({n})")).collect();
+        let mut columns: Vec<Vec<f64>> = vec![Vec::new(); names.len() + self.currents.len()];
+        names.extend(self.currents.iter().map(|(n, _)| n.clone()));
+        let mut outputs = vec![0.0; self.network.output_names().len()];
+        let mut sample_times = Vec::new();
+        for i in 0..solution.len() {
+            let s = solution.state(i).expect("a sample");
+            let t = solution.t()[i];
+            if t < tran.start {
+                continue;
+            }
+            sample_times.push(t);
+            for (k, (_, c)) in self.nodes.iter().skip(1).enumerate() {
+                columns[k].push(s.v[*c]);
+            }
+            self.network.outputs(t, &s.q, &s.v, &s.lambda, &mut outputs);
+            for (k, (_, o)) in self.currents.iter().enumerate() {
+                columns[self.nodes.len() - 1 + k].push(outputs[*o]);
+            }
+        }
+        Ok(Waveforms { times: sample_times, names, columns })
+    }
+}

@@ -1,0 +1,111 @@
+//! SPICE netlists as run-time networks of the component library's parts.
+//!
+//! [`parse`] reads a netlist (the first line is its title; `*` comments, `;` and `$` inline
+//! comments, `+` continuation lines, SI suffixes such as `10u`, `2.2k`, `1meg`, names case
+//! insensitive); [`Netlist::circuit`] turns it into a [`Network`](crate::network::Network) in node fluxes, the
+//! component library's connector convention: a node's voltage is the rate of its pins'
+//! fluxes, and a branch current is an interconnection force.
+//!
+//! Supported: `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), DC `V` and `I` sources,
+//! `G` (voltage-controlled current sources), `.tran`, `.ic v(node)=value` and `.end`. Anything else is refused with its line, its column and its name. Node `0`
+//! (or `gnd`) is the reference.
+//!
+//! ```
+//! use dirac::spice;
+//!
+//! let netlist = spice::parse("an RC step\nV1 in 0 1\nR1 in out 1k\nC1 out 0 1u\n.tran 10u 5m\n.end\n")?;
+//! let circuit = netlist.circuit()?;
+//! let run = circuit.simulate(1e-8)?;
+//! // The capacitor charges as 1 − e^{−t/RC}, RC = 1 ms.
+//! let v = run.column("v(out)").expect("a node");
+//! let t = run.times();
+//! let k = t.len() - 1;
+//! assert!((v[k] - (1.0 - (-t[k] / 1e-3).exp())).abs() < 1e-6);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod build;
+mod read;
+
+pub use self::build::{Circuit, Waveforms};
+
+use self::read::Token;
+
+/// Why a netlist could not be read or simulated: where (1-based line and column) and what.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("line {line}, column {column}: {message}")]
+pub struct SpiceError {
+    /// The line, from 1 (the title's).
+    pub line: usize,
+    /// The column, from 1.
+    pub column: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+/// A netlist as read: its title, elements and commands.
+#[derive(Clone, Debug)]
+pub struct Netlist {
+    /// The first line.
+    pub title: String,
+    elements: Vec<Element>,
+    commands: Vec<Command>,
+}
+
+/// One element line.
+#[derive(Clone, Debug)]
+struct Element {
+    name: String,
+    nodes: Vec<String>,
+    kind: Kind,
+    token: Token,
+}
+
+/// What an element is, with its values.
+#[derive(Clone, Debug)]
+enum Kind {
+    Resistor(f64),
+    Inductor { l: f64, ic: Option<f64> },
+    Capacitor { c: f64, ic: Option<f64> },
+    Coupling { a: Token, b: Token, k: f64 },
+    Voltage(f64),
+    Current(f64),
+    Vccs(f64),
+}
+
+/// A command line.
+#[derive(Clone, Debug)]
+enum Command {
+    Tran(Tran),
+    /// `(node, voltage, where)`.
+    Ic(Vec<(String, f64, Token)>),
+}
+
+/// The `.tran` command: sample every `step` from `start` to `stop`.
+#[derive(Clone, Debug)]
+pub struct Tran {
+    /// The sampling step.
+    pub step: f64,
+    /// The end time.
+    pub stop: f64,
+    /// The first time recorded.
+    pub start: f64,
+    /// The largest step allowed, if given.
+    pub max_step: Option<f64>,
+    token: Token,
+}
+
+/// Reads a netlist. Never panics: what it cannot read is an error with its line and column.
+pub fn parse(text: &str) -> Result<Netlist, SpiceError> {
+    read::parse(text)
+}
+
+impl Netlist {
+    /// The `.tran` command, if the netlist has one.
+    pub fn tran(&self) -> Option<&Tran> {
+        self.commands.iter().find_map(|c| match c {
+            Command::Tran(t) => Some(t),
+            Command::Ic(_) => None,
+        })
+    }
+}

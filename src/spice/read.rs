@@ -1,0 +1,325 @@
+//! Reading a SPICE netlist into elements and commands: logical lines (comments dropped,
+//! `+` continuation lines joined), tokens with their columns, numbers with SI suffixes.
+
+use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
+
+/// A token and where it starts (1-based line and column).
+#[derive(Clone, Debug)]
+pub(super) struct Token {
+    pub(super) text: String,
+    pub(super) line: usize,
+    pub(super) column: usize,
+}
+
+impl Token {
+    pub(super) fn error(&self, message: impl Into<String>) -> SpiceError {
+        SpiceError { line: self.line, column: self.column, message: message.into() }
+    }
+}
+
+/// The logical lines of a netlist after its title: each a list of tokens. Comments (`*` in
+/// the first column, `;` or `$` after a space to the end of the line) are dropped, a line that
+/// starts with `+` continues the previous one, `(`, `)`, `,` and `=` separate tokens (`=` is
+/// kept as a token of its own).
+fn logical_lines(text: &str) -> Vec<Vec<Token>> {
+    let mut lines: Vec<Vec<Token>> = Vec::new();
+    for (index, raw) in text.lines().enumerate().skip(1) {
+        let line = index + 1;
+        let trimmed = raw.trim_start();
+        if trimmed.is_empty() || trimmed.starts_with('*') {
+            continue;
+        }
+        let continues = trimmed.starts_with('+');
+        let lead = raw.chars().count() - trimmed.chars().count();
+        let mut tokens = Vec::new();
+        let mut current: Option<(String, usize)> = None;
+        let flush = |current: &mut Option<(String, usize)>, tokens: &mut Vec<Token>| {
+            if let Some((text, column)) = current.take() {
+                tokens.push(Token { text, line, column });
+            }
+        };
+        let mut previous = ' ';
+        for (k, c) in raw.chars().enumerate() {
+            let column = k + 1;
+            if (c == ';' || c == '$') && (previous.is_whitespace() || k == 0) {
+                break;
+            }
+            previous = c;
+            if continues && k == lead {
+                continue;
+            }
+            match c {
+                c if c.is_whitespace() || c == '(' || c == ')' || c == ',' => {
+                    flush(&mut current, &mut tokens)
+                }
+                '=' => {
+                    flush(&mut current, &mut tokens);
+                    tokens.push(Token { text: "=".into(), line, column });
+                }
+                c => match &mut current {
+                    Some((text, _)) => text.push(c.to_ascii_lowercase()),
+                    None => current = Some((c.to_ascii_lowercase().to_string(), column)),
+                },
+            }
+        }
+        flush(&mut current, &mut tokens);
+        match lines.last_mut() {
+            Some(last) if continues => last.extend(tokens),
+            _ if tokens.is_empty() => {}
+            _ => lines.push(tokens),
+        }
+    }
+    lines
+}
+
+/// A number with an optional SI suffix (`f p n u m k meg g t`, `mil`) and trailing letters
+/// ignored as a unit (`10uF`, `2.2kOhm`), as SPICE reads it.
+pub(super) fn number(token: &Token) -> Result<f64, SpiceError> {
+    let t = token.text.as_str();
+    let numeric = t.find(|c: char| !(c.is_ascii_digit() || "+-.e".contains(c))).unwrap_or(t.len());
+    // The longest prefix of number characters that parses; the rest is a suffix and a unit.
+    let (end, mantissa) = (1..=numeric)
+        .rev()
+        .find_map(|end| t[..end].parse::<f64>().ok().map(|m| (end, m)))
+        .ok_or_else(|| token.error(format!("`{t}` is not a number")))?;
+    let suffix = &t[end..];
+    let scale = if suffix.starts_with("meg") {
+        1e6
+    } else if suffix.starts_with("mil") {
+        25.4e-6
+    } else {
+        match suffix.chars().next() {
+            None => 1.0,
+            Some('f') => 1e-15,
+            Some('p') => 1e-12,
+            Some('n') => 1e-9,
+            Some('u') => 1e-6,
+            Some('m') => 1e-3,
+            Some('k') => 1e3,
+            Some('g') => 1e9,
+            Some('t') => 1e12,
+            Some(c) if c.is_alphabetic() => 1.0,
+            Some(_) => return Err(token.error(format!("`{t}` is not a number"))),
+        }
+    };
+    let value = mantissa * scale;
+    if value.is_finite() { Ok(value) } else { Err(token.error(format!("`{t}` is not a finite number"))) }
+}
+
+/// Reads a netlist: its title, elements and commands.
+pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
+    let title = text.lines().next().unwrap_or("").trim().to_string();
+    let mut netlist = Netlist { title, elements: Vec::new(), commands: Vec::new() };
+    for tokens in logical_lines(text) {
+        let head = &tokens[0];
+        if head.text.starts_with('.') {
+            if let Some(command) = parse_command(&tokens)? {
+                netlist.commands.push(command);
+            } else {
+                break;
+            }
+        } else {
+            netlist.elements.push(parse_element(&tokens)?);
+        }
+    }
+    Ok(netlist)
+}
+
+/// The token at `k`, or an error at the end of the line saying what is missing.
+fn at<'a>(tokens: &'a [Token], k: usize, what: &str) -> Result<&'a Token, SpiceError> {
+    tokens.get(k).ok_or_else(|| {
+        let last = tokens.last().expect("a line has a token");
+        SpiceError {
+            line: last.line,
+            column: last.column + last.text.chars().count(),
+            message: format!("`{}` needs {what}", tokens[0].text),
+        }
+    })
+}
+
+fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
+    let head = &tokens[0];
+    let name = head.text.clone();
+    let first = name.chars().next().expect("a token is not empty");
+    let nodes = |count: usize| -> Result<Vec<String>, SpiceError> {
+        (1..=count).map(|k| at(tokens, k, &format!("{count} nodes")).map(|t| t.text.clone())).collect()
+    };
+    let extra = |from: usize| -> Result<(), SpiceError> {
+        match tokens.get(from) {
+            Some(t) => Err(t.error(format!("`{}`: `{}` is not supported here", name, t.text))),
+            None => Ok(()),
+        }
+    };
+    // `name=value` pairs after position `from`, each name one of `allowed`.
+    let options = |from: usize, allowed: &[&str]| -> Result<Vec<(String, f64)>, SpiceError> {
+        let mut out = Vec::new();
+        let mut k = from;
+        while k < tokens.len() {
+            let key = &tokens[k];
+            if !allowed.contains(&key.text.as_str()) {
+                return Err(key.error(format!("`{name}`: `{}` is not supported here", key.text)));
+            }
+            let eq = at(tokens, k + 1, &format!("`=` after `{}`", key.text))?;
+            if eq.text != "=" {
+                return Err(eq.error(format!("`{name}`: expected `=` after `{}`", key.text)));
+            }
+            let value = number(at(tokens, k + 2, &format!("a value for `{}`", key.text))?)?;
+            out.push((key.text.clone(), value));
+            k += 3;
+        }
+        Ok(out)
+    };
+    let kind = match first {
+        'r' | 'l' | 'c' => {
+            let nodes = nodes(2)?;
+            let value = number(at(tokens, 3, "a value")?)?;
+            let ic = options(4, &["ic"])?.first().map(|&(_, v)| v);
+            if first == 'r' && ic.is_some() {
+                return Err(tokens[4].error(format!("`{name}`: a resistor takes no `ic`")));
+            }
+            if value <= 0.0 {
+                return Err(tokens[3].error(format!("`{name}`: the value {value} must be positive")));
+            }
+            let kind = match first {
+                'r' => Kind::Resistor(value),
+                'l' => Kind::Inductor { l: value, ic },
+                _ => Kind::Capacitor { c: value, ic },
+            };
+            return Ok(Element { name, nodes, kind, token: head.clone() });
+        }
+        'k' => {
+            let (a, b) = (at(tokens, 1, "two inductors")?, at(tokens, 2, "two inductors")?);
+            let k = number(at(tokens, 3, "a coupling coefficient")?)?;
+            extra(4)?;
+            if k.abs() >= 1.0 {
+                return Err(tokens[3].error(format!("`{name}`: the coupling {k} must lie in (−1, 1)")));
+            }
+            Kind::Coupling { a: a.clone(), b: b.clone(), k }
+        }
+        'v' | 'i' => {
+            let nodes = nodes(2)?;
+            let mut k = 3;
+            if tokens.get(k).is_some_and(|t| t.text == "dc") {
+                k += 1;
+            }
+            let value = match tokens.get(k) {
+                None => 0.0,
+                Some(t)
+                    if t.text
+                        .starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-' || c == '+') =>
+                {
+                    k += 1;
+                    number(t)?
+                }
+                Some(t) => {
+                    return Err(t.error(format!(
+                        "`{name}`: the source `{}` is not supported (DC values are)",
+                        t.text
+                    )));
+                }
+            };
+            extra(k)?;
+            let kind = if first == 'v' { Kind::Voltage(value) } else { Kind::Current(value) };
+            return Ok(Element { name, nodes, kind, token: head.clone() });
+        }
+        'g' => {
+            let nodes = nodes(4)?;
+            let gain = number(at(tokens, 5, "a transconductance")?)?;
+            extra(6)?;
+            return Ok(Element { name, nodes, kind: Kind::Vccs(gain), token: head.clone() });
+        }
+        _ => {
+            return Err(head.error(format!(
+                "the element `{name}` is not supported: its type `{}` is none of R, L, C, K, V, I, G",
+                first.to_ascii_uppercase()
+            )));
+        }
+    };
+    Ok(Element { name, nodes: Vec::new(), kind, token: head.clone() })
+}
+
+/// A command; `None` for `.end`.
+fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
+    let head = &tokens[0];
+    match head.text.as_str() {
+        ".end" => Ok(None),
+        ".tran" => {
+            let values: Vec<f64> =
+                tokens[1..].iter().filter(|t| t.text != "uic").map(number).collect::<Result<_, _>>()?;
+            if values.len() < 2 || values.len() > 4 {
+                return Err(
+                    head.error("`.tran` takes a step, a stop time and optionally a start and a largest step")
+                );
+            }
+            let (step, stop) = (values[0], values[1]);
+            if !(step > 0.0 && stop > 0.0) {
+                return Err(
+                    head.error(format!("`.tran`: the step {step} and the stop time {stop} must be positive"))
+                );
+            }
+            let start = values.get(2).copied().unwrap_or(0.0);
+            if !(0.0..stop).contains(&start) {
+                return Err(head.error(format!("`.tran`: the start {start} must lie in [0, {stop})")));
+            }
+            Ok(Some(Command::Tran(Tran {
+                step,
+                stop,
+                start,
+                max_step: values.get(3).copied(),
+                token: head.clone(),
+            })))
+        }
+        ".ic" => {
+            let mut ics = Vec::new();
+            let mut k = 1;
+            while k < tokens.len() {
+                let v = &tokens[k];
+                if v.text != "v" {
+                    return Err(v.error(format!("`.ic`: expected `v(node)=value`, found `{}`", v.text)));
+                }
+                let node = at(tokens, k + 1, "a node")?;
+                let eq = at(tokens, k + 2, "`=`")?;
+                if eq.text != "=" {
+                    return Err(eq.error("`.ic`: expected `=`"));
+                }
+                ics.push((node.text.clone(), number(at(tokens, k + 3, "a value")?)?, node.clone()));
+                k += 4;
+            }
+            Ok(Some(Command::Ic(ics)))
+        }
+        other => {
+            Err(head.error(format!("the command `{other}` is not supported (`.tran`, `.ic` and `.end` are)")))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn num(text: &str) -> Result<f64, SpiceError> {
+        number(&Token { text: text.to_lowercase(), line: 1, column: 1 })
+    }
+
+    #[test]
+    fn numbers_take_si_suffixes_and_ignore_units() {
+        assert_eq!(num("10uF").expect("a number"), 10e-6);
+        assert_eq!(num("2.2k").expect("a number"), 2200.0);
+        assert_eq!(num("1MEG").expect("a number"), 1e6);
+        assert_eq!(num("1m").expect("a number"), 1e-3);
+        assert_eq!(num("-1.5e-3").expect("a number"), -1.5e-3);
+        assert_eq!(num("3e2ohm").expect("a number"), 300.0);
+        assert_eq!(num("1mil").expect("a number"), 25.4e-6);
+        assert!(num("abc").is_err());
+        assert!(num("1e999").is_err());
+    }
+
+    #[test]
+    fn continuation_lines_join_and_comments_go() {
+        let lines = logical_lines("title\n* a comment\nR1 a b ; inline\n+ 10k\n\nC1 b 0 1u $ more\n");
+        assert_eq!(lines.len(), 2);
+        let texts: Vec<&str> = lines[0].iter().map(|t| t.text.as_str()).collect();
+        assert_eq!(texts, ["r1", "a", "b", "10k"]);
+        assert_eq!((lines[0][3].line, lines[0][3].column), (4, 3));
+    }
+}
