@@ -254,13 +254,31 @@ fn both_pendulum_forms_predict_their_simulated_responses() {
     assert!((&nonlinear - &linear).amax() < 1e-4 * linear.amax(), "{nonlinear} against {linear}");
 }
 
+/// A sparse model linearises as a dense one: the LC ladder at rest, whose frequencies are
+/// known in closed form (`zoo::modal_solution`'s eigenpairs: `ω_k² = 4 sin²(θ_k/2)` with
+/// `θ_k = (2k − 1)π/(2N + 1)` for unit cells).
 #[test]
-fn a_sparse_model_is_refused_by_name() {
-    let ladder = crate::zoo::unit_ladder(50);
-    let rest = crate::zoo::ladder_at_rest(&ladder, &[0.0; 50]);
-    let error = linearize(&ladder, 0.0, &rest).expect_err("a sparse model");
-    assert!(matches!(&error, SimError::InvalidOption { what: "linearize", .. }), "{error}");
-    assert!(error.to_string().contains("dense"), "{error}");
+fn a_sparse_model_linearises_to_its_modes() {
+    let n = 10;
+    let ladder = crate::zoo::unit_ladder(n);
+    let rest = crate::zoo::ladder_at_rest(&ladder, &[0.0; 10]);
+    let linear = linearize(&ladder, 0.0, &rest).expect("a sparse model linearises");
+    let eigenvalues = linear.a.complex_eigenvalues();
+    assert!(eigenvalues.iter().all(|z| z.re.abs() < 1e-9), "undamped: {eigenvalues}");
+    let mut squares: Vec<f64> = eigenvalues.iter().map(|z| z.im * z.im).filter(|&w| w > 1e-9).collect();
+    squares.sort_by(f64::total_cmp);
+    squares.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    let mut expected: Vec<f64> = (1..=n)
+        .map(|k| {
+            let theta = (2 * k - 1) as f64 * std::f64::consts::PI / (2 * n + 1) as f64;
+            4.0 * (theta / 2.0).sin().powi(2)
+        })
+        .collect();
+    expected.sort_by(f64::total_cmp);
+    assert_eq!(squares.len(), n, "{squares:?}");
+    for (w, e) in squares.iter().zip(&expected) {
+        assert!((w - e).abs() < 1e-9, "{w} against {e}");
+    }
 }
 
 /// The cart-pole in Cartesian coordinates: the cart at `x`, the bob at `(bx, by)` on a rod of
