@@ -303,13 +303,21 @@ mod tests {
 
     #[test]
     fn numbers_take_si_suffixes_and_ignore_units() {
-        assert_eq!(num("10uF").expect("a number"), 10e-6);
-        assert_eq!(num("2.2k").expect("a number"), 2200.0);
-        assert_eq!(num("1MEG").expect("a number"), 1e6);
-        assert_eq!(num("1m").expect("a number"), 1e-3);
-        assert_eq!(num("-1.5e-3").expect("a number"), -1.5e-3);
-        assert_eq!(num("3e2ohm").expect("a number"), 300.0);
-        assert_eq!(num("1mil").expect("a number"), 25.4e-6);
+        // The mantissa times the suffix's power of ten, to the last bit or so.
+        let close = |text: &str, value: f64| {
+            let read = num(text).expect("a number");
+            assert!(
+                (read - value).abs() <= 2.0 * f64::EPSILON * value.abs(),
+                "{text}: {read} against {value}"
+            );
+        };
+        close("10uF", 10e-6);
+        close("2.2k", 2200.0);
+        close("1MEG", 1e6);
+        close("1m", 1e-3);
+        close("-1.5e-3", -1.5e-3);
+        close("3e2ohm", 300.0);
+        close("1mil", 25.4e-6);
         assert!(num("abc").is_err());
         assert!(num("1e999").is_err());
     }
