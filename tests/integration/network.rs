@@ -235,6 +235,69 @@ fn a_network_linearises_as_the_derived_circuit() {
     close(&la.d, &lb.d, "D");
 }
 
+/// The RLC with its nodes joined and its reference grounded, as a netlist is built: three node
+/// fluxes and the source's row instead of nine coordinates and six rows, the same motion.
+#[test]
+fn joined_ports_share_a_coordinate_and_give_the_same_motion() {
+    let (v, r, l, c) = parts();
+    let derived = Rlc { source: v.clone(), r: r.clone(), l: l.clone(), c: c.clone(), ground: Gnd {} };
+    let mut b = Network::builder();
+    b.add("source", v).expect("a part").add("r", r).expect("a part");
+    b.add("l", l).expect("a part").add("c", c).expect("a part");
+    b.join("source.p", "r.p").expect("joins").join("r.n", "l.p").expect("joins");
+    b.join("l.n", "c.p").expect("joins");
+    b.ground("c.n").expect("grounds").ground("source.n").expect("grounds");
+    let network = b.finish().expect("a network");
+    assert_eq!((network.sizes().nq, network.sizes().nc), (3, 1));
+    assert_eq!(network.coordinate_names(), ["source.p", "r.n", "l.n"]);
+    assert_eq!(network.coordinate_index("r.p"), network.coordinate_index("source.p"));
+    assert_eq!(network.coordinate_index("c.p"), Some(2));
+    assert_eq!(network.coordinate_index("c.n"), None);
+    let q = derived.sizes().zeros_q::<Rlc>();
+    let start = consistent_state(&derived, 0.0, &q, &q, Consistency::default()).expect("consistent");
+    let zeros = network.sizes().zeros_q::<Network>();
+    let net_start =
+        consistent_state(&network, 0.0, &zeros, &zeros, Consistency::default()).expect("consistent");
+    let times: Vec<f64> = (1..=20).map(|k| 0.5 * k as f64).collect();
+    let sampling = Sampling::Times(times);
+    let tight = RadauOptions::tolerances(1e-13, 1e-13);
+    let a = Radau::new(&derived, tight).expect("options").solve(0.0, &start, 10.0, &sampling).expect("runs");
+    let b =
+        Radau::new(&network, tight).expect("options").solve(0.0, &net_start, 10.0, &sampling).expect("runs");
+    // Node voltages: each joined coordinate's rate against the derived circuit's pin.
+    let names = derived.coordinate_names();
+    let pin = |p: &str| names.iter().position(|n| n == p).expect("a pin");
+    let mut worst: f64 = 0.0;
+    for i in 0..a.len() {
+        let (x, y) = (a.state(i).expect("a sample"), b.state(i).expect("a sample"));
+        for (k, p) in ["source.p", "r.n", "l.n"].iter().enumerate() {
+            worst = worst.max((x.v[pin(p)] - y.v[k]).abs());
+        }
+    }
+    assert!(worst < 1e-9, "node voltages: {worst:e}");
+    // The outputs (the source's current among them), named by part.
+    assert_eq!(network.output_names(), derived.output_names());
+    let (sa, sb) = (a.last().expect("a sample"), b.last().expect("a sample"));
+    let (mut ya, mut yb) = (vec![0.0; derived.output_names().len()], vec![0.0; network.output_names().len()]);
+    derived.outputs(10.0, &sa.q, &sa.v, &sa.lambda, &mut ya);
+    network.outputs(10.0, &sb.q, &sb.v, &sb.lambda, &mut yb);
+    let worst = ya.iter().zip(&yb).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-9, "outputs: {worst:e}");
+
+    // What cannot be joined or grounded is refused.
+    let mut b = Network::builder();
+    b.add("r", Resistor { r: 1.0 }).expect("a part");
+    assert_eq!(b.join("r.p", "r.p").map(|_| ()), Err(NetworkError::SelfConnection { port: "r.p".into() }));
+    b.ground("r.p").expect("grounds").ground("r.n").expect("grounds");
+    assert_eq!(b.finish().map(|_| ()).expect_err("refused"), NetworkError::Grounded);
+    let mut b = Network::builder();
+    b.add("r", Resistor { r: 1.0 }).expect("a part").add("c", Capacitor { c: 1.0 }).expect("a part");
+    b.ground("r.p").expect("grounds").ground("c.p").expect("grounds");
+    b.one_form("both", &[("r.p", 1.0), ("c.p", -1.0)]).expect("a row");
+    let e = b.finish().map(|_| ()).expect_err("refused");
+    assert!(e.to_string().contains("every port of the row is grounded"), "{e}");
+}
+
 /// Every mistake in building a network is a typed error naming the part or port.
 #[test]
 fn connection_errors_name_the_parts() {

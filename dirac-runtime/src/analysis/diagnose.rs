@@ -14,6 +14,9 @@ use crate::shape::layout::{Layout, Slot, Unknown, Unknowns};
 
 /// The most unknowns `n + m` for which failures are analysed with dense matrices.
 pub(crate) const DENSE_ANALYSIS: usize = 2000;
+/// Above this many unknowns a sparse model whose saddle-point matrix factors (every velocity
+/// fixed by inertia or constraints) is started by the sparse path.
+pub(crate) const SPARSE_ANALYSIS: usize = 200;
 
 /// The singular value decomposition of `a` with a bounded number of iterations: `None` if it
 /// did not converge (it always does for finite input; the bound keeps NaN from looping).

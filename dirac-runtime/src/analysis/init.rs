@@ -22,7 +22,7 @@ use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use crate::algebra::{Algebra, dense_cq, dense_qq};
 use crate::analysis::diagnose::{
-    DENSE_ANALYSIS, cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd,
+    DENSE_ANALYSIS, SPARSE_ANALYSIS, cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd,
 };
 use crate::analysis::init_saddle;
 use crate::error::SimError;
@@ -104,8 +104,13 @@ where
         };
         return Err(SimError::NonFinite { t, component: names[i].clone() });
     }
-    // Large models keep the saddle path, which has no velocities fixed by forces (yet).
-    let free = if sizes.nq + sizes.nc > DENSE_ANALYSIS {
+    // Large models keep the saddle path, which has no velocities fixed by forces (yet); so do
+    // sparse models beyond a few hundred unknowns whose inertia and constraints fix every
+    // velocity, where the dense analysis would only cost an SVD.
+    let size = sizes.nq + sizes.nc;
+    let saddle_path = size > DENSE_ANALYSIS
+        || (size > SPARSE_ANALYSIS && init_saddle::velocities_determined(model, t, &s.q, &s.v));
+    let free = if saddle_path {
         init_saddle::project_positions(model, t, &mut s.q, (options.tolerance, options.max_iterations))?;
         init_saddle::project_velocities(model, t, &s.q, &mut s.v, options.tolerance)?;
         0
@@ -116,7 +121,7 @@ where
     };
     model.dl_dv(t, &s.q, &s.v, &mut s.p);
     non_finite_entry(model, t, "the momentum p = ∂L/∂v", s.p.as_slice(), true)?;
-    s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v, free)?.as_slice());
+    s.lambda.copy_from_slice(multipliers(model, t, &s.q, &s.v, free, saddle_path)?.as_slice());
     check_finite_state(model, t, &s)?;
     Ok(s)
 }
@@ -286,13 +291,15 @@ where
     Ok((top.as_slice().to_vec(), bottom))
 }
 
-/// λ from the differentiated constraints, with the accelerations as by-product.
+/// λ from the differentiated constraints, with the accelerations as by-product: by the
+/// sparse saddle-point system on the `saddle_path`, else densely.
 fn multipliers<M: LagrangeDirac>(
     model: &M,
     t: f64,
     q: &VecQ<M>,
     v: &VecQ<M>,
     free: usize,
+    saddle_path: bool,
 ) -> Result<DVector<f64>, SimError>
 where
     DefaultAllocator: Storage<M>,
@@ -305,7 +312,7 @@ where
     non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
     model.constraint_matrix(t, q, &mut a);
     non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
-    let lambda = if n + m > DENSE_ANALYSIS {
+    let lambda = if saddle_path {
         DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)
     } else {
         dense_multipliers(

@@ -81,6 +81,36 @@ pub(crate) fn assemble_velocities<M: LagrangeDirac>(
     });
 }
 
+/// Whether the model is sparse and its saddle-point matrix `[L_vv Aᵀ; A 0]` at `(t, q, v)`
+/// factors without regularisation: then inertia and constraints fix every velocity, there is
+/// no direction of `ker L_vv ∩ ker A` for the forces to fix, and the sparse path starts it.
+pub(crate) fn velocities_determined<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    let shape = model.shape();
+    let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
+    if M::Algebra::dense_qq(&lvv).is_some() {
+        return false;
+    }
+    model.l_vv(t, q, v, &mut lvv);
+    model.constraint_matrix(t, q, &mut a);
+    let finite = |x: &[f64]| x.iter().all(|x| x.is_finite());
+    if !finite(M::Algebra::qq_values(&lvv)) || !finite(M::Algebra::cq_values(&a)) {
+        return false;
+    }
+    let mut saddle: SaddleOf<M> = M::Algebra::saddle(&shape);
+    saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+        top: &[(1.0, &lvv)],
+        top_transposed: &[],
+        identity: 0.0,
+        right: &[(1.0, &a)],
+        bottom: &[(1.0, 1.0, &a)],
+        corner: (0.0, 0.0),
+    });
+    saddle.factor().is_ok()
+}
+
 /// Projects `q` onto `φ(q, t) = 0`.
 pub(crate) fn project_positions<M: LagrangeDirac>(
     model: &M,

@@ -6,7 +6,10 @@
 //! object-safe view that reads its arguments from the network's vectors at its offsets and
 //! writes its blocks in place. Connections are the paper's interconnection rows
 //! `v_a − v_b = 0`, whose multipliers are the through quantities (the current into a pin, the
-//! force on a flange); a one-form is a row `Σ c_k v_k = 0` of constant coefficients. The
+//! force on a flange); a one-form is a row `Σ c_k v_k = 0` of constant coefficients. Ports may
+//! instead be joined into one coordinate (no row: the balance at the shared coordinate is the
+//! current law) or grounded (fixed at zero and taken out of the unknowns), which is how a
+//! circuit's nodes are built with a third of the unknowns. The
 //! sparsity pattern is made once, by [`NetworkBuilder::finish`]; a step evaluates each part's
 //! generated kernel in a loop.
 //!
@@ -31,7 +34,6 @@ use thiserror::Error;
 use crate::algebra::{Pattern, SparseShape};
 use crate::model::DenseModel;
 use crate::model::InputsOutputs;
-use crate::model::assemble::Offsets;
 use crate::shape::dims::{Sizes, Storage};
 
 use self::part::{Member, Part};
@@ -106,6 +108,9 @@ pub enum NetworkError {
     /// A network without parts.
     #[error("the network has no parts")]
     Empty,
+    /// A network whose every coordinate is grounded: nothing moves.
+    #[error("every coordinate of the network is grounded")]
+    Grounded,
 }
 
 /// A port: its part and the part's coordinate.
@@ -128,6 +133,10 @@ pub struct NetworkBuilder {
     by_name: HashMap<String, usize>,
     rows: Vec<OwnRow>,
     connected: HashMap<(PortId, PortId), usize>,
+    /// Ports joined into one coordinate, in pairs.
+    joined: Vec<(PortId, PortId)>,
+    /// Ports fixed at zero.
+    grounded: Vec<PortId>,
 }
 
 /// One of the network's own rows, `Σ c_k v_k = 0`, over network coordinates.
@@ -220,6 +229,29 @@ impl NetworkBuilder {
         Ok(self)
     }
 
+    /// Joins two ports into one coordinate: the connection of [`connect`](Self::connect)
+    /// (`v_a = v_b`, `f_a + f_b = 0`) with the coordinates equal too, so it takes no row and no
+    /// multiplier, and its force is not read by name. Exact where the coordinates are equal
+    /// from the start: the fluxes of a circuit's node (SPICE netlists are built this way, with
+    /// about a third of the unknowns of connections), the positions of a joint.
+    pub fn join(&mut self, a: &str, b: &str) -> Result<&mut Self, NetworkError> {
+        let (pa, pb) = (self.port(a)?, self.port(b)?);
+        if pa == pb {
+            return Err(NetworkError::SelfConnection { port: a.to_string() });
+        }
+        self.joined.push((pa, pb));
+        Ok(self)
+    }
+
+    /// Fixes a port's coordinate at zero and takes it out of the unknowns, with its balance
+    /// (the reaction there is not computed): a circuit's reference node, a point of the fixed
+    /// frame. Ports joined to it are fixed with it.
+    pub fn ground(&mut self, port: &str) -> Result<&mut Self, NetworkError> {
+        let p = self.port(port)?;
+        self.grounded.push(p);
+        Ok(self)
+    }
+
     /// Adds the row `Σ c_k v_k = 0` over ports (`[("T1.p1", 1.0), ("T1.p2", -2.0)]`), named
     /// `name`: a constraint of constant coefficients between parts, whose multiplier is the
     /// force it takes.
@@ -248,14 +280,92 @@ impl NetworkBuilder {
         if self.entries.is_empty() {
             return Err(NetworkError::Empty);
         }
-        Ok(Network::new(self.entries, self.rows))
+        let map = self.coordinates();
+        if map.iter().flatten().all(|&c| c == GROUNDED) {
+            return Err(NetworkError::Grounded);
+        }
+        // A row whose every entry is grounded would read `0 = 0`.
+        for row in &self.rows {
+            if row.entries.iter().all(|&(e, i, _)| map[e][i] == GROUNDED) {
+                return Err(NetworkError::OneForm {
+                    name: row.name.clone(),
+                    reason: "every port of the row is grounded".into(),
+                });
+            }
+        }
+        Ok(Network::new(self.entries, self.rows, map))
+    }
+
+    /// Each part's coordinates in the network: ports joined share one, grounded ones are
+    /// [`GROUNDED`], numbered in the order of the parts and their coordinates.
+    fn coordinates(&self) -> Vec<Vec<usize>> {
+        let mut start = Vec::with_capacity(self.entries.len() + 1);
+        start.push(0);
+        for e in &self.entries {
+            start.push(start.last().expect("a start") + e.coordinates.len());
+        }
+        let flat = |(e, i): PortId| start[e] + i;
+        let mut parent: Vec<usize> = (0..start[self.entries.len()]).collect();
+        fn find(parent: &mut [usize], a: usize) -> usize {
+            let mut r = a;
+            while parent[r] != r {
+                parent[r] = parent[parent[r]];
+                r = parent[r];
+            }
+            r
+        }
+        for &(a, b) in &self.joined {
+            let (ra, rb) = (find(&mut parent, flat(a)), find(&mut parent, flat(b)));
+            parent[ra] = rb;
+        }
+        let mut index = vec![usize::MAX - 1; parent.len()];
+        for &p in &self.grounded {
+            let r = find(&mut parent, flat(p));
+            index[r] = GROUNDED;
+        }
+        let mut next = 0;
+        let mut map = Vec::with_capacity(self.entries.len());
+        for (e, entry) in self.entries.iter().enumerate() {
+            let mut part = Vec::with_capacity(entry.coordinates.len());
+            for i in 0..entry.coordinates.len() {
+                let r = find(&mut parent, start[e] + i);
+                if index[r] == usize::MAX - 1 {
+                    index[r] = next;
+                    next += 1;
+                }
+                part.push(index[r]);
+            }
+            map.push(part);
+        }
+        map
+    }
+}
+
+/// A coordinate fixed at zero by [`NetworkBuilder::ground`]: no unknown of the network.
+pub(crate) const GROUNDED: usize = usize::MAX;
+
+/// Where a part's coordinates and rows sit in the network.
+#[derive(Clone, Debug)]
+pub(crate) struct Place {
+    /// The network coordinate of each of the part's coordinates, or [`GROUNDED`].
+    pub(crate) q: Vec<usize>,
+    /// The first holonomic row.
+    pub(crate) h: usize,
+    /// The first other row.
+    pub(crate) v: usize,
+}
+
+impl Place {
+    /// The network row of the part's constraint row `r`, of which `nh` are holonomic.
+    pub(crate) fn row(&self, r: usize, nh: usize) -> usize {
+        if r < nh { self.h + r } else { self.v + (r - nh) }
     }
 }
 
 /// Where one part sits in the network.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 struct Slot {
-    at: Offsets,
+    at: Place,
     sizes: Sizes,
     qq: usize,
     cq: usize,
@@ -268,7 +378,16 @@ struct Slot {
 pub struct Network {
     parts: Vec<Box<dyn Part>>,
     part_names: Vec<String>,
+    /// Each part's index by name.
+    by_name: HashMap<String, usize>,
     slots: Vec<Slot>,
+    /// Each network coordinate's name (its first port's) and its velocity's.
+    coordinate_names: Vec<String>,
+    velocity_names: Vec<String>,
+    /// Where values at grounded coordinates sit in the `n × n` and `m × n` blocks: zeroed after
+    /// every evaluation.
+    qq_dead: Vec<usize>,
+    cq_dead: Vec<usize>,
     /// Own rows: the network row of each, and its entries' coordinates and coefficients
     /// (`row_starts[r]..row_starts[r + 1]` into them).
     row0: usize,
@@ -289,7 +408,12 @@ impl Clone for Network {
         Network {
             parts: self.parts.iter().map(|p| p.clone_box()).collect(),
             part_names: self.part_names.clone(),
+            by_name: self.by_name.clone(),
             slots: self.slots.clone(),
+            coordinate_names: self.coordinate_names.clone(),
+            velocity_names: self.velocity_names.clone(),
+            qq_dead: self.qq_dead.clone(),
+            cq_dead: self.cq_dead.clone(),
             row0: self.row0,
             row_starts: self.row_starts.clone(),
             entry_coordinates: self.entry_coordinates.clone(),
@@ -320,13 +444,13 @@ impl Network {
         NetworkBuilder::default()
     }
 
-    fn new(entries: Vec<Entry>, rows: Vec<OwnRow>) -> Network {
-        let (mut nq, mut nh, mut other, mut qq, mut cq, mut inputs, mut outputs) = (0, 0, 0, 0, 0, 0, 0);
+    fn new(entries: Vec<Entry>, rows: Vec<OwnRow>, map: Vec<Vec<usize>>) -> Network {
+        let nq = map.iter().flatten().filter(|&&c| c != GROUNDED).map(|&c| c + 1).max().unwrap_or(0);
+        let (mut nh, mut other, mut qq, mut cq, mut inputs, mut outputs) = (0, 0, 0, 0, 0, 0);
         let mut slots = Vec::with_capacity(entries.len());
-        for e in &entries {
+        for (e, q) in entries.iter().zip(map) {
             let s = e.part.sizes();
-            slots.push(Slot { at: Offsets { q: nq, h: nh, v: other }, sizes: s, qq, cq, inputs, outputs });
-            nq += s.nq;
+            slots.push(Slot { at: Place { q, h: nh, v: other }, sizes: s, qq, cq, inputs, outputs });
             nh += s.nh;
             other += s.nc - s.nh;
             qq += s.nq * s.nq;
@@ -343,17 +467,42 @@ impl Network {
             (vec![0], Vec::new(), Vec::new());
         for row in &rows {
             for &(e, i, c) in &row.entries {
-                entry_coordinates.push(slots[e].at.q + i);
-                entry_coefficients.push(c);
+                let at = slots[e].at.q[i];
+                if at != GROUNDED {
+                    entry_coordinates.push(at);
+                    entry_coefficients.push(c);
+                }
             }
             row_starts.push(entry_coordinates.len());
         }
+        // Each part's dense blocks at its coordinates. A value at a grounded coordinate has no
+        // place: it is stored at an entry the part has anyway (its first free coordinate's
+        // diagonal, or that column of the row) and zeroed after every evaluation.
         let (mut pqq, mut pcq) = (Pattern::new(nq, nq), Pattern::new(sizes.nc, nq));
+        let (mut qq_dead, mut cq_dead) = (Vec::new(), Vec::new());
         for slot in &slots {
-            let (at, s) = (slot.at, slot.sizes);
-            pqq.push_dense(at.q..at.q + s.nq, at.q, s.nq);
-            let rows = (0..s.nc).map(move |r| if r < s.nh { at.h + r } else { at.v + r - s.nh });
-            pcq.push_dense(rows, at.q, s.nq);
+            let (at, s) = (&slot.at, slot.sizes);
+            let anchor = at.q.iter().copied().find(|&c| c != GROUNDED).unwrap_or(0);
+            for &cj in &at.q {
+                for &ci in &at.q {
+                    if ci == GROUNDED || cj == GROUNDED {
+                        qq_dead.push(pqq.len());
+                        pqq.push(anchor, anchor);
+                    } else {
+                        pqq.push(ci, cj);
+                    }
+                }
+            }
+            for &cj in &at.q {
+                for r in 0..s.nc {
+                    if cj == GROUNDED {
+                        cq_dead.push(pcq.len());
+                        pcq.push(at.row(r, s.nh), anchor);
+                    } else {
+                        pcq.push(at.row(r, s.nh), cj);
+                    }
+                }
+            }
         }
         for r in 0..rows.len() {
             for &c in &entry_coordinates[row_starts[r]..row_starts[r + 1]] {
@@ -361,11 +510,27 @@ impl Network {
             }
         }
         let shape = SparseShape::new(sizes, pqq, pcq);
-        let (part_names, parts) = entries.into_iter().map(|e| (e.name, e.part)).unzip();
+        // A joined coordinate is named by its first port.
+        let (mut coordinate_names, mut velocity_names) = (vec![String::new(); nq], vec![String::new(); nq]);
+        for (e, slot) in entries.iter().zip(&slots) {
+            let velocities = e.part.velocity_names();
+            for (i, &c) in slot.at.q.iter().enumerate() {
+                if c != GROUNDED && coordinate_names[c].is_empty() {
+                    coordinate_names[c] = format!("{}.{}", e.name, e.coordinates[i]);
+                    velocity_names[c] = format!("{}.{}", e.name, velocities[i]);
+                }
+            }
+        }
+        let (part_names, parts): (Vec<String>, _) = entries.into_iter().map(|e| (e.name, e.part)).unzip();
         Network {
             parts,
+            by_name: part_names.iter().enumerate().map(|(e, n)| (n.clone(), e)).collect(),
             part_names,
             slots,
+            coordinate_names,
+            velocity_names,
+            qq_dead,
+            cq_dead,
             row0,
             row_starts,
             entry_coordinates,
@@ -384,12 +549,13 @@ impl Network {
         &self.part_names
     }
 
-    /// The index of the coordinate `"R1.p"` (part, then the part's own dotted name).
+    /// The index of the coordinate `"R1.p"` (part, then the part's own dotted name); `None` if
+    /// there is none or it is grounded. Joined ports have the same index.
     pub fn coordinate_index(&self, name: &str) -> Option<usize> {
         let (part, rest) = name.split_once('.')?;
-        let e = self.part_names.iter().position(|n| n == part)?;
+        let e = *self.by_name.get(part)?;
         let i = self.parts[e].coordinate_names().iter().position(|c| c == rest)?;
-        Some(self.slots[e].at.q + i)
+        Some(self.slots[e].at.q[i]).filter(|&c| c != GROUNDED)
     }
 
     /// The network's own rows: the connections (`"a~b"`) and one-forms, in the order added.

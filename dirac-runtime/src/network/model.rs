@@ -41,11 +41,11 @@ impl Named for Network {
     };
 
     fn coordinate_names(&self) -> Vec<String> {
-        self.names_with(|p| p.coordinate_names())
+        self.coordinate_names.clone()
     }
 
     fn velocity_names(&self) -> Vec<String> {
-        self.names_with(|p| p.velocity_names())
+        self.velocity_names.clone()
     }
 
     /// Every part's holonomic rows, then every part's other rows, then the network's own.
@@ -82,6 +82,7 @@ impl Network {
     }
 
     fn vec_q(&self, kernel: VecKernel, t: f64, q: &DVector<f64>, v: &DVector<f64>, out: &mut DVector<f64>) {
+        out.fill(0.0);
         for (part, slot) in self.each() {
             part.vec_q(kernel, t, q, v, &slot.at, out);
         }
@@ -92,6 +93,14 @@ impl Network {
             let n = slot.sizes.nq * slot.sizes.nq;
             part.mat_qq(kernel, t, q, v, &slot.at, &mut out.values[slot.qq..slot.qq + n]);
         }
+        self.clear_dead(&self.qq_dead, out);
+    }
+
+    /// Zeroes the values stored for grounded coordinates.
+    fn clear_dead(&self, dead: &[usize], out: &mut SparseBlock) {
+        for &k in dead {
+            out.values[k] = 0.0;
+        }
     }
 
     fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, out: &mut SparseBlock) {
@@ -99,6 +108,7 @@ impl Network {
             let n = slot.sizes.nc * slot.sizes.nq;
             part.mat_cq(t, q, v, &slot.at, &mut out.values[slot.cq..slot.cq + n]);
         }
+        self.clear_dead(&self.cq_dead, out);
         // The own rows' coefficients are constant: `A` holds them, `∂(A v)/∂q` is zero.
         let own = &mut out.values[self.own_cq..];
         match v {
@@ -205,6 +215,7 @@ impl LagrangeDirac for Network {
             let n = slot.sizes.nq * slot.sizes.nq;
             part.datl_dq(t, q, lambda, &slot.at, &mut out.values[slot.qq..slot.qq + n]);
         }
+        self.clear_dead(&self.qq_dead, out);
     }
 
     fn holonomic(&self, t: f64, q: &DVector<f64>, out: &mut DVector<f64>) {
@@ -229,6 +240,8 @@ impl LagrangeDirac for Network {
         lambda: &DVector<f64>,
         out: &mut ResidualBlocks<Self>,
     ) {
+        out.momentum_rate.fill(0.0);
+        out.dl_dv.fill(0.0);
         for (part, slot) in self.each() {
             part.residual_blocks(t, q, v, lambda, &slot.at, out);
         }
@@ -256,6 +269,12 @@ impl LagrangeDirac for Network {
         }
         out.a.values[self.own_cq..].copy_from_slice(&self.entry_coefficients);
         out.dav_dq.values[self.own_cq..].fill(0.0);
+        for block in [&mut out.dpdot_dq, &mut out.dpdot_dv, &mut out.l_vq, &mut out.l_vv] {
+            self.clear_dead(&self.qq_dead, block);
+        }
+        for block in [&mut out.a, &mut out.dav_dq] {
+            self.clear_dead(&self.cq_dead, block);
+        }
     }
 
     fn invalid_parameter(&self) -> Option<(String, f64, &'static str)> {
@@ -280,6 +299,7 @@ impl LagrangeDirac for Network {
         lambda: &DVector<f64>,
         out: &mut DVector<f64>,
     ) {
+        out.fill(0.0);
         for (part, slot) in self.each() {
             part.interconnection_forces(t, q, lambda, &slot.at, out);
         }
@@ -287,9 +307,15 @@ impl LagrangeDirac for Network {
     }
 
     fn ports(&self) -> Vec<Coordinate<Self>> {
+        let mut seen = vec![false; self.sizes.nq];
         let mut out = Vec::new();
         for (part, slot) in self.each() {
-            out.extend(part.port_indices().into_iter().map(|i| Coordinate::unchecked(slot.at.q + i)));
+            for i in part.port_indices() {
+                let c = slot.at.q[i];
+                if c != super::GROUNDED && !std::mem::replace(&mut seen[c], true) {
+                    out.push(Coordinate::unchecked(c));
+                }
+            }
         }
         out
     }
@@ -378,10 +404,13 @@ impl Network {
             if part_rows == 0 {
                 continue;
             }
+            // Joined coordinates add up; grounded ones have no place.
             for (j, column) in values.chunks_exact(part_rows).enumerate() {
-                let c = self.axis_index(cols, slot, j);
+                let Some(c) = self.axis_index(cols, slot, j) else { continue };
                 for (i, &x) in column.iter().enumerate() {
-                    out[c * total_rows + self.axis_index(rows, slot, i)] = x;
+                    if let Some(r) = self.axis_index(rows, slot, i) {
+                        out[c * total_rows + r] += x;
+                    }
                 }
             }
         }
@@ -396,14 +425,14 @@ impl Network {
         }
     }
 
-    /// The network index of a part's `i`-th coordinate, row, input or output.
-    fn axis_index(&self, axis: Axis, slot: &super::Slot, i: usize) -> usize {
+    /// The network index of a part's `i`-th coordinate (`None` if grounded), row, input or
+    /// output.
+    fn axis_index(&self, axis: Axis, slot: &super::Slot, i: usize) -> Option<usize> {
         match axis {
-            Axis::Coordinates => slot.at.q + i,
-            Axis::Rows if i < slot.sizes.nh => slot.at.h + i,
-            Axis::Rows => slot.at.v + i - slot.sizes.nh,
-            Axis::Inputs => slot.inputs + i,
-            Axis::Outputs => slot.outputs + i,
+            Axis::Coordinates => Some(slot.at.q[i]).filter(|&c| c != super::GROUNDED),
+            Axis::Rows => Some(slot.at.row(i, slot.sizes.nh)),
+            Axis::Inputs => Some(slot.inputs + i),
+            Axis::Outputs => Some(slot.outputs + i),
         }
     }
 }

@@ -6,12 +6,11 @@
 use nalgebra::{DVector, DefaultAllocator};
 
 use crate::model::InputsOutputs;
-use crate::model::assemble::{Offsets, gather_c, gather_q, scatter_c, scatter_h, scatter_q};
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::{DenseModel, MatCQ, MatQQ};
 use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
 
-use super::Network;
+use super::{GROUNDED, Network, Place};
 
 /// A `q`-vector method of a model: `(t, q, v) ↦ VecQ`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -74,15 +73,15 @@ pub(crate) trait Part: Send + Sync {
     fn port_indices(&self) -> Vec<usize>;
     fn clone_box(&self) -> Box<dyn Part>;
 
-    fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64;
-    fn dl_dt(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64;
+    fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Place) -> f64;
+    fn dl_dt(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Place) -> f64;
     fn vec_q(
         &self,
         kernel: VecKernel,
         t: f64,
         q: &DVector<f64>,
         v: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut DVector<f64>,
     );
     /// Writes the dense block column by column into `out` (its `n²` values).
@@ -92,20 +91,20 @@ pub(crate) trait Part: Send + Sync {
         t: f64,
         q: &DVector<f64>,
         v: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut [f64],
     );
-    fn datl_dq(&self, t: f64, q: &DVector<f64>, lambda: &DVector<f64>, at: &Offsets, out: &mut [f64]);
+    fn datl_dq(&self, t: f64, q: &DVector<f64>, lambda: &DVector<f64>, at: &Place, out: &mut [f64]);
     /// `A(q, t)` (`v` is `None`) or `∂(A v + b)/∂q`, dense, column by column into `out`.
-    fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, at: &Offsets, out: &mut [f64]);
-    fn holonomic(&self, t: f64, q: &DVector<f64>, at: &Offsets, out: &mut DVector<f64>);
+    fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, at: &Place, out: &mut [f64]);
+    fn holonomic(&self, t: f64, q: &DVector<f64>, at: &Place, out: &mut DVector<f64>);
     fn rows(
         &self,
         kernel: RowKernel,
         t: f64,
         q: &DVector<f64>,
         v: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut DVector<f64>,
     );
     #[allow(clippy::too_many_arguments)]
@@ -115,7 +114,7 @@ pub(crate) trait Part: Send + Sync {
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut ResidualBlocks<Network>,
     );
     #[allow(clippy::too_many_arguments)]
@@ -125,7 +124,7 @@ pub(crate) trait Part: Send + Sync {
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: JacobianValues<'_>,
     );
     fn interconnection_forces(
@@ -133,7 +132,7 @@ pub(crate) trait Part: Send + Sync {
         t: f64,
         q: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut DVector<f64>,
     );
     /// The part's outputs into `out` (one value per output).
@@ -143,7 +142,7 @@ pub(crate) trait Part: Send + Sync {
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut [f64],
     );
     /// An inputs-and-outputs block of the part, dense and column-major, with its rows.
@@ -154,7 +153,7 @@ pub(crate) trait Part: Send + Sync {
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
     ) -> (Vec<f64>, usize);
     fn input_value(&self, k: usize) -> f64;
     fn set_input_value(&mut self, k: usize, value: f64);
@@ -170,8 +169,67 @@ where
     M: DenseModel,
     DefaultAllocator: Storage<M>,
 {
-    fn args(&self, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> (VecQ<M>, VecQ<M>) {
-        (gather_q::<M, Network>(q, at), gather_q::<M, Network>(v, at))
+    fn args(&self, q: &DVector<f64>, v: &DVector<f64>, at: &Place) -> (VecQ<M>, VecQ<M>) {
+        (gather_q::<M>(q, at), gather_q::<M>(v, at))
+    }
+}
+
+/// The part's coordinates (or velocities) read from the network's: zero where grounded.
+fn gather_q<M: DenseModel>(x: &DVector<f64>, at: &Place) -> VecQ<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut out = M::SIZES.zeros_q::<M>();
+    for (o, &c) in out.iter_mut().zip(&at.q) {
+        if c != GROUNDED {
+            *o = x[c];
+        }
+    }
+    out
+}
+
+/// The part's multipliers read from the network's.
+fn gather_c<M: DenseModel>(x: &DVector<f64>, at: &Place) -> VecC<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut out = M::SIZES.zeros_c::<M>();
+    for r in 0..M::NC {
+        out[r] = x[at.row(r, M::NH)];
+    }
+    out
+}
+
+/// Adds the part's vector over coordinates to the network's: coordinates joined into one add
+/// up (Kirchhoff's current law at a node), a grounded one's is dropped.
+fn scatter_q<M: DenseModel>(x: &VecQ<M>, at: &Place, out: &mut DVector<f64>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    for (&value, &c) in x.iter().zip(&at.q) {
+        if c != GROUNDED {
+            out[c] += value;
+        }
+    }
+}
+
+/// Writes the part's vector over its constraint rows into the network's.
+fn scatter_c<M: DenseModel>(x: &VecC<M>, at: &Place, out: &mut DVector<f64>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    for r in 0..M::NC {
+        out[at.row(r, M::NH)] = x[r];
+    }
+}
+
+/// Writes the part's holonomic constraint values into the network's.
+fn scatter_h<M: DenseModel>(x: &VecH<M>, at: &Place, out: &mut DVector<f64>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    for r in 0..M::NH {
+        out[at.h + r] = x[r];
     }
 }
 
@@ -230,12 +288,12 @@ where
         Box::new(self.clone())
     }
 
-    fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64 {
+    fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Place) -> f64 {
         let (q, v) = self.args(q, v, at);
         self.0.lagrangian(t, &q, &v)
     }
 
-    fn dl_dt(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Offsets) -> f64 {
+    fn dl_dt(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, at: &Place) -> f64 {
         let (q, v) = self.args(q, v, at);
         self.0.dl_dt(t, &q, &v)
     }
@@ -246,7 +304,7 @@ where
         t: f64,
         q: &DVector<f64>,
         v: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut DVector<f64>,
     ) {
         let (q, v) = self.args(q, v, at);
@@ -257,7 +315,7 @@ where
             VecKernel::Force => self.0.force(t, &q, &v, &mut o),
             VecKernel::LVt => self.0.l_vt(t, &q, &v, &mut o),
         }
-        scatter_q::<M, Network>(&o, at, out);
+        scatter_q::<M>(&o, at, out);
     }
 
     fn mat_qq(
@@ -266,7 +324,7 @@ where
         t: f64,
         q: &DVector<f64>,
         v: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut [f64],
     ) {
         let (q, v) = self.args(q, v, at);
@@ -281,27 +339,27 @@ where
         put(&o, out);
     }
 
-    fn datl_dq(&self, t: f64, q: &DVector<f64>, lambda: &DVector<f64>, at: &Offsets, out: &mut [f64]) {
-        let (q, lambda) = (gather_q::<M, Network>(q, at), gather_c::<M, Network>(lambda, at));
+    fn datl_dq(&self, t: f64, q: &DVector<f64>, lambda: &DVector<f64>, at: &Place, out: &mut [f64]) {
+        let (q, lambda) = (gather_q::<M>(q, at), gather_c::<M>(lambda, at));
         let mut o = MatQQ::<M>::zeros();
         self.0.datl_dq(t, &q, &lambda, &mut o);
         put(&o, out);
     }
 
-    fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, at: &Offsets, out: &mut [f64]) {
-        let q = gather_q::<M, Network>(q, at);
+    fn mat_cq(&self, t: f64, q: &DVector<f64>, v: Option<&DVector<f64>>, at: &Place, out: &mut [f64]) {
+        let q = gather_q::<M>(q, at);
         let mut o = MatCQ::<M>::zeros();
         match v {
             None => self.0.constraint_matrix(t, &q, &mut o),
-            Some(v) => self.0.dav_dq(t, &q, &gather_q::<M, Network>(v, at), &mut o),
+            Some(v) => self.0.dav_dq(t, &q, &gather_q::<M>(v, at), &mut o),
         }
         put(&o, out);
     }
 
-    fn holonomic(&self, t: f64, q: &DVector<f64>, at: &Offsets, out: &mut DVector<f64>) {
+    fn holonomic(&self, t: f64, q: &DVector<f64>, at: &Place, out: &mut DVector<f64>) {
         let mut o = VecH::<M>::zeros();
-        self.0.holonomic(t, &gather_q::<M, Network>(q, at), &mut o);
-        scatter_h::<M, Network>(&o, at, out);
+        self.0.holonomic(t, &gather_q::<M>(q, at), &mut o);
+        scatter_h::<M>(&o, at, out);
     }
 
     fn rows(
@@ -310,7 +368,7 @@ where
         t: f64,
         q: &DVector<f64>,
         v: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut DVector<f64>,
     ) {
         let (q, v) = self.args(q, v, at);
@@ -319,7 +377,7 @@ where
             RowKernel::Rate => self.0.constraint_rate(t, &q, &mut o),
             RowKernel::DavDt => self.0.dav_dt(t, &q, &v, &mut o),
         }
-        scatter_c::<M, Network>(&o, at, out);
+        scatter_c::<M>(&o, at, out);
     }
 
     fn residual_blocks(
@@ -328,16 +386,16 @@ where
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut ResidualBlocks<Network>,
     ) {
         let (q, v) = self.args(q, v, at);
-        let lambda = gather_c::<M, Network>(lambda, at);
+        let lambda = gather_c::<M>(lambda, at);
         let mut o = ResidualBlocks::<M>::zeros();
         self.0.residual_blocks(t, &q, &v, &lambda, &mut o);
-        scatter_q::<M, Network>(&o.momentum_rate, at, &mut out.momentum_rate);
-        scatter_q::<M, Network>(&o.dl_dv, at, &mut out.dl_dv);
-        scatter_c::<M, Network>(&o.constraint_velocity, at, &mut out.constraint_velocity);
+        scatter_q::<M>(&o.momentum_rate, at, &mut out.momentum_rate);
+        scatter_q::<M>(&o.dl_dv, at, &mut out.dl_dv);
+        scatter_c::<M>(&o.constraint_velocity, at, &mut out.constraint_velocity);
     }
 
     fn jacobian_blocks(
@@ -346,11 +404,11 @@ where
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: JacobianValues<'_>,
     ) {
         let (q, v) = self.args(q, v, at);
-        let lambda = gather_c::<M, Network>(lambda, at);
+        let lambda = gather_c::<M>(lambda, at);
         let mut o = JacobianBlocks::<M>::with_shape(&M::SIZES);
         self.0.jacobian_blocks(t, &q, &v, &lambda, &mut o);
         let (nqq, ncq) = (M::NQ * M::NQ, M::NC * M::NQ);
@@ -369,13 +427,13 @@ where
         t: f64,
         q: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut DVector<f64>,
     ) {
-        let (q, lambda) = (gather_q::<M, Network>(q, at), gather_c::<M, Network>(lambda, at));
+        let (q, lambda) = (gather_q::<M>(q, at), gather_c::<M>(lambda, at));
         let mut o = VecQ::<M>::zeros();
         self.0.interconnection_forces(t, &q, &lambda, &mut o);
-        scatter_q::<M, Network>(&o, at, out);
+        scatter_q::<M>(&o, at, out);
     }
 
     fn outputs(
@@ -384,11 +442,11 @@ where
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
         out: &mut [f64],
     ) {
         let (q, v) = self.args(q, v, at);
-        self.0.outputs(t, &q, &v, &gather_c::<M, Network>(lambda, at), out);
+        self.0.outputs(t, &q, &v, &gather_c::<M>(lambda, at), out);
     }
 
     fn io_block(
@@ -398,10 +456,10 @@ where
         q: &DVector<f64>,
         v: &DVector<f64>,
         lambda: &DVector<f64>,
-        at: &Offsets,
+        at: &Place,
     ) -> (Vec<f64>, usize) {
         let (q, v) = self.args(q, v, at);
-        let lambda = gather_c::<M, Network>(lambda, at);
+        let lambda = gather_c::<M>(lambda, at);
         let (nu, ny) = (M::NAMES.input_count(), M::NAMES.output_count());
         let (rows, cols) = match block {
             IoBlock::DpdotDu | IoBlock::LVu => (M::NQ, nu),
