@@ -158,6 +158,7 @@ pub use dirac_runtime::network;
 #[cfg(feature = "components")]
 pub mod components;
 pub mod fmi;
+pub mod plot;
 #[cfg(feature = "components")]
 pub mod spice;
 

@@ -1,16 +1,20 @@
-//! Simulates a SPICE netlist's `.tran` and writes every node voltage and voltage-source
-//! current as CSV.
+//! Simulates a SPICE netlist's `.tran` and writes the node voltages and voltage-source
+//! currents (those `.save` or `.print tran` name, else all) as CSV and as an SVG chart, with a
+//! progress line on runs longer than a second.
 //!
-//! Usage: `dirac-spice FILE.cir [--tol TOL] [--out FILE.csv]` (by default the tolerance is
-//! 1e-6 and the CSV goes next to the netlist, with the extension `.csv`).
+//! Usage: `dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]` (by default
+//! the tolerance is 1e-6 and the files go next to the netlist, with the extensions `.csv` and
+//! `.svg`).
 
+use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
 fn run() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
-    let (mut file, mut tol, mut out) = (None, 1e-6, None);
+    let (mut file, mut tol, mut out, mut svg) = (None, 1e-6, None, None);
+    let usage = "usage: dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]";
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--tol" => {
@@ -18,37 +22,66 @@ fn run() -> Result<(), String> {
                 tol = value.parse().map_err(|_| format!("--tol {value}: not a number"))?;
             }
             "--out" => out = Some(PathBuf::from(args.next().ok_or("--out needs a file")?)),
+            "--svg" => svg = Some(PathBuf::from(args.next().ok_or("--svg needs a file")?)),
             "-h" | "--help" => {
-                println!("usage: dirac-spice FILE.cir [--tol TOL] [--out FILE.csv]");
+                println!("{usage}");
                 return Ok(());
             }
             _ if file.is_none() => file = Some(PathBuf::from(arg)),
             _ => return Err(format!("unexpected argument `{arg}`")),
         }
     }
-    let file = file.ok_or("usage: dirac-spice FILE.cir [--tol TOL] [--out FILE.csv]")?;
+    let file = file.ok_or(usage)?;
     let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
     let error =
         |e: dirac::spice::SpiceError| format!("{}:{}:{}: {}", file.display(), e.line, e.column, e.message);
+    let clock = Instant::now();
     let circuit = dirac::spice::parse(&text).and_then(|n| n.circuit()).map_err(error)?;
     let sizes = dirac::LagrangeDirac::sizes(&circuit.network);
     eprintln!(
-        "{}: {} parts, {} unknowns; simulating at tolerance {tol:e}",
+        "{}: {} parts, {} unknowns, read and built in {:.3} s; simulating at tolerance {tol:e}",
         file.display(),
         circuit.network.part_names().len(),
-        sizes.nq + sizes.nc
+        sizes.nq + sizes.nc,
+        clock.elapsed().as_secs_f64()
     );
     let clock = Instant::now();
-    let waves = circuit.simulate(tol).map_err(error)?;
+    let stop = circuit.tran().map_or(0.0, |t| t.stop);
+    // A progress line once a second: rewritten in place on a terminal, one per line otherwise.
+    let (terminal, mut shown) = (std::io::stderr().is_terminal(), 0.0);
+    let waves = circuit
+        .simulate_observed(tol, |t, steps| {
+            let seconds = clock.elapsed().as_secs_f64();
+            if seconds >= shown + 1.0 {
+                shown = seconds;
+                let end = if terminal { "\r" } else { "\n" };
+                eprint!(
+                    "  t = {t:.4e} s of {stop:e} s ({:.0}%), {steps} steps, {seconds:.0} s{end}",
+                    100.0 * t / stop
+                );
+            }
+        })
+        .map_err(error)?;
+    if terminal && shown > 0.0 {
+        eprintln!();
+    }
+    let seconds = clock.elapsed().as_secs_f64();
     let out = out.unwrap_or_else(|| file.with_extension("csv"));
     let handle = std::fs::File::create(&out).map_err(|e| format!("{}: {e}", out.display()))?;
-    waves.write_csv(std::io::BufWriter::new(handle)).map_err(|e| format!("{}: {e}", out.display()))?;
+    let mut writer = std::io::BufWriter::new(handle);
+    waves
+        .write_csv(&mut writer)
+        .and_then(|()| writer.flush())
+        .map_err(|e| format!("{}: {e}", out.display()))?;
+    let svg = svg.unwrap_or_else(|| file.with_extension("svg"));
+    let title = file.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    waves.write_svg(&title, &svg).map_err(|e| format!("{}: {e}", svg.display()))?;
     eprintln!(
-        "{} samples of {} columns in {:.3} s, written to {}",
+        "{} samples of {} columns in {seconds:.3} s, written to {} and {}",
         waves.times().len(),
         waves.names().len(),
-        clock.elapsed().as_secs_f64(),
-        out.display()
+        out.display(),
+        svg.display()
     );
     Ok(())
 }

@@ -6,14 +6,14 @@ use std::collections::HashMap;
 use std::io::{self, Write};
 
 use crate::components::electrical::{
-    Capacitor, CoupledInductors, CurrentSource, Ground, Inductor, Resistor, VoltageControlledCurrent,
-    VoltageSource,
+    Capacitor, CoupledInductors, CurrentSource, Inductor, Resistor, VoltageControlledCurrent, VoltageSource,
 };
 use crate::network::{Network, NetworkBuilder, NetworkError};
 use crate::{
     Consistency, ErrorNorm, Integrator, LagrangeDirac, Named, Radau, RadauOptions, Sampling, consistent_state,
 };
 
+use super::expand::is_ground;
 use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
 
 /// A netlist's circuit: its network, where each node's voltage is read, its initial state and
@@ -22,13 +22,25 @@ use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
 pub struct Circuit {
     /// The network of parts: each element under its name (lower case), `0` the reference.
     pub network: Network,
-    /// Each node (lower case, `0` first) and the coordinate whose rate is its voltage.
-    nodes: Vec<(String, usize)>,
-    /// Each voltage source's current `i(v1)` and the output that carries it.
-    currents: Vec<(String, usize)>,
+    /// Each node (lower case, `0` first) and the coordinate whose rate is its voltage (none for
+    /// the reference, grounded).
+    nodes: Vec<(String, Option<usize>)>,
+    /// The columns recorded: every node and source current, or what `.save` and `.print` ask.
+    columns: Vec<(String, Column)>,
     q0: Vec<f64>,
     v0: Vec<f64>,
     tran: Option<Tran>,
+}
+
+/// Where a recorded column is read.
+#[derive(Clone, Copy, Debug)]
+enum Column {
+    /// The rate of this coordinate: a node's voltage.
+    Rate(usize),
+    /// The reference node's voltage.
+    Zero,
+    /// This output: a source's current.
+    Output(usize),
 }
 
 /// Sampled node voltages `v(node)` and source currents `i(source)`.
@@ -56,6 +68,35 @@ impl Waveforms {
         Some(&self.columns[k])
     }
 
+    /// Writes the waveforms as an SVG chart against time: every column if there are at most
+    /// twelve, else the first twelve (the title says so).
+    pub fn write_svg(&self, title: &str, path: &std::path::Path) -> io::Result<()> {
+        const MOST: usize = 12;
+        let shown = self.names.len().min(MOST);
+        let title = if shown < self.names.len() {
+            format!("{title} (the first {shown} of {} columns)", self.names.len())
+        } else {
+            title.to_string()
+        };
+        let voltages = self.names[..shown].iter().any(|n| n.starts_with("v("));
+        let currents = self.names[..shown].iter().any(|n| n.starts_with("i("));
+        let y_label = match (voltages, currents) {
+            (true, true) => "v (V), i (A)",
+            (false, true) => "i (A)",
+            _ => "v (V)",
+        };
+        let chart = crate::plot::Chart {
+            title: &title,
+            x_label: "time (s)",
+            y_label,
+            series: (0..shown)
+                .map(|k| crate::plot::Series { name: &self.names[k], x: &self.times, y: &self.columns[k] })
+                .collect(),
+            log_y: false,
+        };
+        chart.write(path)
+    }
+
     /// Writes the waveforms as CSV: a header `time,v(a),…`, then a row per sample.
     pub fn write_csv(&self, mut out: impl Write) -> io::Result<()> {
         writeln!(out, "time,{}", self.names.join(","))?;
@@ -68,10 +109,6 @@ impl Waveforms {
         }
         Ok(())
     }
-}
-
-fn is_ground(node: &str) -> bool {
-    node == "0" || node == "gnd"
 }
 
 /// Union-find over node indices.
@@ -93,6 +130,54 @@ impl Sets {
         self.0[ra] = rb;
         ra != rb
     }
+}
+
+/// Node fluxes (the reference's zero) such that each inductor winding `(from, to, ψ)` has
+/// `φ_from − φ_to = ψ`: along a spanning forest of the windings from the reference, checked on
+/// the windings that close loops. A current circulating in a loop of inductors has no node
+/// fluxes, and is refused.
+fn node_fluxes(count: usize, windings: &[(usize, usize, f64, &Element)]) -> Result<Vec<f64>, SpiceError> {
+    let mut adjacent: Vec<Vec<usize>> = vec![Vec::new(); count];
+    for (k, &(a, b, _, _)) in windings.iter().enumerate() {
+        adjacent[a].push(k);
+        adjacent[b].push(k);
+    }
+    let mut flux: Vec<Option<f64>> = vec![None; count];
+    for root in 0..count {
+        if flux[root].is_some() {
+            continue;
+        }
+        flux[root] = Some(0.0);
+        let mut stack = vec![root];
+        while let Some(n) = stack.pop() {
+            for &k in &adjacent[n] {
+                let (a, b, psi, e) = windings[k];
+                let (fa, fb) = (flux[a], flux[b]);
+                match (fa, fb) {
+                    (Some(x), None) => {
+                        flux[b] = Some(x - psi);
+                        stack.push(b);
+                    }
+                    (None, Some(y)) => {
+                        flux[a] = Some(y + psi);
+                        stack.push(a);
+                    }
+                    (Some(x), Some(y)) => {
+                        let scale = x.abs().max(y.abs()).max(psi.abs());
+                        if (x - y - psi).abs() > 1e-12 * scale {
+                            return Err(e.token.error(format!(
+                                "`{}` closes a loop of inductors whose initial currents circulate; \
+                                 node fluxes cannot hold a current around a loop of inductors",
+                                e.name
+                            )));
+                        }
+                    }
+                    (None, None) => unreachable!("one end is the node being visited"),
+                }
+            }
+        }
+    }
+    Ok(flux.into_iter().map(|f| f.unwrap_or(0.0)).collect())
 }
 
 /// The network error as a netlist error at `element`.
@@ -153,25 +238,21 @@ impl Netlist {
             }
         }
         let mut b = Network::builder();
-        b.add("0", Ground {}).map_err(|err| first(err.to_string()))?;
-        // Each node's pins, in order; each element's `(pin path, node)`.
-        let mut pins: Vec<Vec<String>> = vec![vec!["0.p".to_string()]; 1];
-        pins.resize(names.len(), Vec::new());
+        // Each node's pins, in order; each inductor winding's `(from, to, flux ψ = L i)`.
+        let mut pins: Vec<Vec<String>> = vec![Vec::new(); names.len()];
         let add_pins = |pins: &mut Vec<Vec<String>>, part: &str, list: &[(&str, &String)]| {
             for (pin, n) in list {
                 pins[node(n)].push(format!("{part}.{pin}"));
             }
         };
-        let (mut currents, mut inductor_ic) = (Vec::new(), Vec::new());
+        let (mut currents, mut windings) = (Vec::new(), Vec::new());
         for e in &self.elements {
             let n = &e.nodes;
             let added = match &e.kind {
                 Kind::Resistor(r) => add(&mut b, e, Resistor { r: *r }),
                 Kind::Capacitor { c, .. } => add(&mut b, e, Capacitor { c: *c }),
                 Kind::Inductor { l, ic } if !coupled.contains_key(&e.name) => {
-                    if let Some(i) = ic {
-                        inductor_ic.push((format!("{}.p", e.name), l * i));
-                    }
+                    windings.push((node(&n[0]), node(&n[1]), l * ic.unwrap_or(0.0), e));
                     add(&mut b, e, Inductor { l: *l })
                 }
                 Kind::Inductor { .. } => Ok(()),
@@ -191,8 +272,8 @@ impl Netlist {
                     let m = k * (l1 * l2).sqrt();
                     // Winding fluxes ψ = L i for the initial currents.
                     let (i1, i2) = (i1.unwrap_or(0.0), i2.unwrap_or(0.0));
-                    inductor_ic.push((format!("{}.p1", e.name), l1 * i1 + m * i2));
-                    inductor_ic.push((format!("{}.p2", e.name), m * i1 + l2 * i2));
+                    windings.push((node(&la.nodes[0]), node(&la.nodes[1]), l1 * i1 + m * i2, la));
+                    windings.push((node(&lb.nodes[0]), node(&lb.nodes[1]), m * i1 + l2 * i2, lb));
                     add_pins(
                         &mut pins,
                         &e.name,
@@ -220,34 +301,39 @@ impl Netlist {
                 _ => add_pins(&mut pins, &e.name, &[("p", &n[0]), ("n", &n[1])]),
             }
         }
-        for list in &pins {
+        // A node's pins share one coordinate, its flux (Kirchhoff's current law is the balance
+        // there); the reference's are fixed at zero and leave the unknowns, as in nodal analysis.
+        for pin in &pins[0] {
+            b.ground(pin).map_err(|err| first(err.to_string()))?;
+        }
+        for list in pins.iter().skip(1) {
             for other in list.iter().skip(1) {
-                b.connect(&list[0], other).map_err(|err| first(err.to_string()))?;
+                b.join(&list[0], other).map_err(|err| first(err.to_string()))?;
             }
         }
         let network = b.finish().map_err(|err| first(err.to_string()))?;
-        let coordinate = |path: &str| network.coordinate_index(path).expect("a pin added to the network");
-        let nodes: Vec<(String, usize)> =
-            names.iter().zip(&pins).map(|(name, list)| (name.clone(), coordinate(&list[0]))).collect();
-        let outputs = network.output_names();
-        let currents = currents
+        let coordinate = |path: &str| network.coordinate_index(path).expect("a pin of a node");
+        let nodes: Vec<(String, Option<usize>)> = names
+            .iter()
+            .zip(&pins)
+            .enumerate()
+            .map(|(k, (name, list))| (name.clone(), (k > 0).then(|| coordinate(&list[0]))))
+            .collect();
+        let outputs = if currents.is_empty() { Vec::new() } else { network.output_names() };
+        let currents: Vec<(String, usize)> = currents
             .into_iter()
             .map(|(name, output)| {
                 let k = outputs.iter().position(|o| *o == output).expect("a source's current output");
                 (name, k)
             })
             .collect();
-        // The initial state: fluxes of inductors with an initial current, and node voltages.
+        // The initial state: node fluxes that give the inductors their initial currents, and
+        // node voltages.
         let sizes = network.sizes();
         let (mut q0, mut v0) = (vec![0.0; sizes.nq], vec![0.0; sizes.nq]);
-        for (pin, flux) in inductor_ic {
-            q0[coordinate(&pin)] = flux;
+        for (n, flux) in node_fluxes(names.len(), &windings)?.into_iter().enumerate().skip(1) {
+            q0[nodes[n].1.expect("a node other than the reference")] = flux;
         }
-        let voltage = |n: usize, value: f64, v0: &mut Vec<f64>| {
-            for pin in &pins[n] {
-                v0[coordinate(pin)] = value;
-            }
-        };
         for e in &self.elements {
             if let Kind::Capacitor { ic: Some(ic), .. } = e.kind {
                 if node(&e.nodes[1]) != 0 {
@@ -256,21 +342,72 @@ impl Netlist {
                         e.name
                     )));
                 }
-                voltage(node(&e.nodes[0]), ic, &mut v0);
+                if let Some(c) = nodes[node(&e.nodes[0])].1 {
+                    v0[c] = ic;
+                }
             }
         }
         for command in &self.commands {
             if let Command::Ic(ics) = command {
                 for (name, value, token) in ics {
                     match index.get(name.as_str()) {
-                        Some(&n) if n != 0 => voltage(n, *value, &mut v0),
+                        Some(&n) if n != 0 => v0[nodes[n].1.expect("not the reference")] = *value,
                         Some(_) => return Err(token.error("`.ic`: the reference node's voltage is zero")),
                         None => return Err(token.error(format!("`.ic`: the netlist has no node `{name}`"))),
                     }
                 }
             }
         }
-        Ok(Circuit { network, nodes, currents, q0, v0, tran: self.tran().cloned() })
+        let columns = self.columns(&nodes, &currents)?;
+        Ok(Circuit { network, nodes, columns, q0, v0, tran: self.tran().cloned() })
+    }
+
+    /// The columns to record: those `.save` and `.print` ask for, in their order, or if none
+    /// does, every node's voltage but the reference's and every source's current.
+    fn columns(
+        &self,
+        nodes: &[(String, Option<usize>)],
+        currents: &[(String, usize)],
+    ) -> Result<Vec<(String, Column)>, SpiceError> {
+        let mut columns: Vec<(String, Column)> = Vec::new();
+        for command in &self.commands {
+            let Command::Save(probes) = command else { continue };
+            for probe in probes {
+                let column = if probe.current {
+                    let found = currents.iter().find(|(n, _)| *n == probe.column);
+                    match found {
+                        Some(&(_, k)) => Column::Output(k),
+                        None => {
+                            return Err(probe.token.error(format!(
+                                "`{}`: currents are recorded through voltage sources, and `{}` is none",
+                                probe.column, probe.name
+                            )));
+                        }
+                    }
+                } else {
+                    let name = if is_ground(&probe.name) { "0" } else { probe.name.as_str() };
+                    match nodes.iter().find(|(n, _)| n == name) {
+                        Some(&(_, c)) => c.map_or(Column::Zero, Column::Rate),
+                        None => {
+                            return Err(probe.token.error(format!(
+                                "`{}`: the netlist has no node `{}`",
+                                probe.column, probe.name
+                            )));
+                        }
+                    }
+                };
+                if !columns.iter().any(|(n, _)| *n == probe.column) {
+                    columns.push((probe.column.clone(), column));
+                }
+            }
+        }
+        if columns.is_empty() {
+            columns.extend(
+                nodes.iter().skip(1).map(|(n, c)| (format!("v({n})"), c.map_or(Column::Zero, Column::Rate))),
+            );
+            columns.extend(currents.iter().map(|(n, k)| (n.clone(), Column::Output(*k))));
+        }
+        Ok(columns)
     }
 
     /// Refuses what no solver could simulate, naming the elements: a subnetwork with no path to
@@ -365,6 +502,30 @@ impl Circuit {
     /// largest component's error), from the initial state the netlist gives (zero unless
     /// `.ic` or `ic=` says otherwise), sampled every `.tran` step from its start.
     pub fn simulate(&self, tol: f64) -> Result<Waveforms, SpiceError> {
+        self.simulate_observed(tol, |_, _| {})
+    }
+
+    /// The consistent state at `t = 0` the netlist gives (zero unless `.ic` or `ic=` says
+    /// otherwise): to integrate the network with an integrator and options of one's own.
+    pub fn start(&self) -> Result<crate::State<Network>, SpiceError> {
+        let (q, v) = (
+            crate::nalgebra::DVector::from_column_slice(&self.q0),
+            crate::nalgebra::DVector::from_column_slice(&self.v0),
+        );
+        consistent_state(&self.network, 0.0, &q, &v, Consistency::default()).map_err(|e| SpiceError {
+            line: 1,
+            column: 1,
+            message: format!("the initial state: {e}"),
+        })
+    }
+
+    /// [`simulate`](Self::simulate), calling `progress` after every step with the time reached
+    /// and the number of steps taken: for a progress line on long runs.
+    pub fn simulate_observed(
+        &self,
+        tol: f64,
+        mut progress: impl FnMut(f64, usize),
+    ) -> Result<Waveforms, SpiceError> {
         let error = |what: &str, e: crate::SimError| SpiceError {
             line: 1,
             column: 1,
@@ -373,12 +534,7 @@ impl Circuit {
         let Some(tran) = &self.tran else {
             return Err(SpiceError { line: 1, column: 1, message: "the netlist has no `.tran`".into() });
         };
-        let (q, v) = (
-            crate::nalgebra::DVector::from_column_slice(&self.q0),
-            crate::nalgebra::DVector::from_column_slice(&self.v0),
-        );
-        let start = consistent_state(&self.network, 0.0, &q, &v, Consistency::default())
-            .map_err(|e| error("the initial state", e))?;
+        let start = self.start()?;
         let mut options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };
         if let Some(h) = tran.max_step {
             options.max_step = h;
@@ -395,12 +551,16 @@ impl Circuit {
         }
         let mut radau =
             Radau::new(&self.network, options).map_err(|e| tran.token.error(format!("`.tran`: {e}")))?;
+        let mut steps = 0;
         let solution = radau
-            .solve(0.0, &start, tran.stop, &Sampling::Times(times))
+            .solve_observed(0.0, &start, tran.stop, &Sampling::Times(times), |t, _| {
+                steps += 1;
+                progress(t, steps);
+                std::ops::ControlFlow::Continue(())
+            })
             .map_err(|e| error("the simulation", e))?;
-        let mut names: Vec<String> = self.nodes.iter().skip(1).map(|(n, _)| format!("v({n})")).collect();
-        let mut columns: Vec<Vec<f64>> = vec![Vec::new(); names.len() + self.currents.len()];
-        names.extend(self.currents.iter().map(|(n, _)| n.clone()));
+        let names: Vec<String> = self.columns.iter().map(|(n, _)| n.clone()).collect();
+        let mut columns: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
         let mut outputs = vec![0.0; self.network.output_names().len()];
         let mut sample_times = Vec::new();
         for i in 0..solution.len() {
@@ -410,12 +570,13 @@ impl Circuit {
                 continue;
             }
             sample_times.push(t);
-            for (k, (_, c)) in self.nodes.iter().skip(1).enumerate() {
-                columns[k].push(s.v[*c]);
-            }
             self.network.outputs(t, &s.q, &s.v, &s.lambda, &mut outputs);
-            for (k, (_, o)) in self.currents.iter().enumerate() {
-                columns[self.nodes.len() - 1 + k].push(outputs[*o]);
+            for (column, (_, at)) in columns.iter_mut().zip(&self.columns) {
+                column.push(match *at {
+                    Column::Rate(c) => s.v[c],
+                    Column::Zero => 0.0,
+                    Column::Output(k) => outputs[k],
+                });
             }
         }
         Ok(Waveforms { times: sample_times, names, columns })

@@ -2,13 +2,27 @@
 //!
 //! [`parse`] reads a netlist (the first line is its title; `*` comments, `;` and `$` inline
 //! comments, `+` continuation lines, SI suffixes such as `10u`, `2.2k`, `1meg`, names case
-//! insensitive); [`Netlist::circuit`] turns it into a [`Network`](crate::network::Network) in node fluxes, the
-//! component library's connector convention: a node's voltage is the rate of its pins'
-//! fluxes, and a branch current is an interconnection force.
+//! insensitive). [`Netlist::circuit`] turns it into a [`Network`](crate::network::Network) in
+//! node fluxes, the component library's connector convention: the pins at a node are
+//! [joined](crate::network::NetworkBuilder::join) into one coordinate, the node's flux, whose
+//! rate is the node's voltage and whose balance is Kirchhoff's current law; the reference's
+//! pins are [grounded](crate::network::NetworkBuilder::ground). That is nodal analysis: one
+//! unknown per node, plus a row per voltage source (whose multiplier is its current).
 //!
-//! Supported: `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), DC `V` and `I` sources,
-//! `G` (voltage-controlled current sources), `.tran`, `.ic v(node)=value` and `.end`. Anything else is refused with its line, its column and its name. Node `0`
-//! (or `gnd`) is the reference.
+//! Supported:
+//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), DC `V` and `I` sources, `G`
+//!   (voltage-controlled current sources);
+//! - `.param name=value …`, values as expressions in braces or quotes (`{2*r}`, `'sqrt(l*c)'`,
+//!   with `+ - * / ^`, parentheses, `pi` and the usual functions);
+//! - `.subckt name ports… [params:] p=default …` … `.ends`, instantiated by
+//!   `Xname nodes… name [params:] p=value …`, nested to 32 levels: an instance `X1`'s elements
+//!   are named `r:x1:r1` and its inner nodes `x1:node`, as ngspice names them with dots;
+//! - `.tran step stop [start [max_step]] [uic]`, `.ic v(node)=value`, `.save` and
+//!   `.print tran` (`v(node)`, `i(vsource)` or `all`: the columns recorded), `.end`.
+//!
+//! Anything else is refused with its line, its column and its name. Node `0` (or `gnd`) is the
+//! reference. A run starts from the state the netlist gives, zero unless `.ic` or `ic=` say
+//! otherwise, as ngspice's `uic` does: no operating point is computed first.
 //!
 //! ```
 //! use dirac::spice;
@@ -25,6 +39,7 @@
 //! ```
 
 mod build;
+mod expand;
 mod read;
 
 pub use self::build::{Circuit, Waveforms};
@@ -79,6 +94,20 @@ enum Command {
     Tran(Tran),
     /// `(node, voltage, where)`.
     Ic(Vec<(String, f64, Token)>),
+    /// `.save` or `.print tran`: the columns to record, `v(node)` or `i(source)`; empty for
+    /// `all`.
+    Save(Vec<Probe>),
+}
+
+/// A recorded quantity: `v(node)` (`node` lower case) or `i(source)`.
+#[derive(Clone, Debug)]
+struct Probe {
+    /// `v(node)` or `i(source)`, as written in the columns.
+    column: String,
+    /// The node or source name.
+    name: String,
+    current: bool,
+    token: Token,
 }
 
 /// The `.tran` command: sample every `step` from `start` to `stop`.
@@ -105,7 +134,7 @@ impl Netlist {
     pub fn tran(&self) -> Option<&Tran> {
         self.commands.iter().find_map(|c| match c {
             Command::Tran(t) => Some(t),
-            Command::Ic(_) => None,
+            Command::Ic(_) | Command::Save(_) => None,
         })
     }
 }

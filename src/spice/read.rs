@@ -1,7 +1,10 @@
 //! Reading a SPICE netlist into elements and commands: logical lines (comments dropped,
 //! `+` continuation lines joined), tokens with their columns, numbers with SI suffixes.
 
-use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
+use std::collections::HashMap;
+
+use super::expand::{self, Frame, Scope};
+use super::{Command, Element, Kind, Netlist, Probe, SpiceError, Tran};
 
 /// A token and where it starts (1-based line and column).
 #[derive(Clone, Debug)]
@@ -20,7 +23,7 @@ impl Token {
 /// The logical lines of a netlist after its title: each a list of tokens. Comments (`*` in
 /// the first column, `;` or `$` after a space to the end of the line) are dropped, a line that
 /// starts with `+` continues the previous one, `(`, `)`, `,` and `=` separate tokens (`=` is
-/// kept as a token of its own).
+/// kept as a token of its own), and an expression in `{…}` or `'…'` is one token.
 fn logical_lines(text: &str) -> Vec<Vec<Token>> {
     let mut lines: Vec<Vec<Token>> = Vec::new();
     for (index, raw) in text.lines().enumerate().skip(1) {
@@ -39,8 +42,24 @@ fn logical_lines(text: &str) -> Vec<Vec<Token>> {
             }
         };
         let mut previous = ' ';
+        // Inside `{…}` or `'…'`: the closing character and the depth of braces.
+        let mut expression: Option<(char, usize)> = None;
         for (k, c) in raw.chars().enumerate() {
             let column = k + 1;
+            if let Some((close, depth)) = &mut expression {
+                let text = &mut current.as_mut().expect("an expression's token").0;
+                text.push(c.to_ascii_lowercase());
+                if c == '{' && *close == '}' {
+                    *depth += 1;
+                } else if c == *close {
+                    *depth -= 1;
+                    if *depth == 0 {
+                        expression = None;
+                        flush(&mut current, &mut tokens);
+                    }
+                }
+                continue;
+            }
             if (c == ';' || c == '$') && (previous.is_whitespace() || k == 0) {
                 break;
             }
@@ -49,6 +68,10 @@ fn logical_lines(text: &str) -> Vec<Vec<Token>> {
                 continue;
             }
             match c {
+                '{' | '\'' if current.is_none() => {
+                    current = Some((c.to_string(), column));
+                    expression = Some((if c == '{' { '}' } else { '\'' }, 1));
+                }
                 c if c.is_whitespace() || c == '(' || c == ')' || c == ',' => {
                     flush(&mut current, &mut tokens)
                 }
@@ -106,20 +129,54 @@ pub(super) fn number(token: &Token) -> Result<f64, SpiceError> {
     if value.is_finite() { Ok(value) } else { Err(token.error(format!("`{t}` is not a finite number"))) }
 }
 
-/// Reads a netlist: its title, elements and commands.
+/// Reads a netlist: its title, its `.param`s and `.subckt`s, and its elements (instances of
+/// subcircuits expanded) and commands.
 pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
     let title = text.lines().next().unwrap_or("").trim().to_string();
     let mut netlist = Netlist { title, elements: Vec::new(), commands: Vec::new() };
-    for tokens in logical_lines(text) {
-        let head = &tokens[0];
-        if head.text.starts_with('.') {
-            if let Some(command) = parse_command(&tokens)? {
-                netlist.commands.push(command);
-            } else {
-                break;
+    let lines = logical_lines(text);
+    let (mut scope, mut subckts, mut top) = (Scope::new(), HashMap::new(), Vec::new());
+    let mut k = 0;
+    while k < lines.len() {
+        let head = &lines[k][0];
+        match head.text.as_str() {
+            ".subckt" => {
+                let (name, definition, next) = expand::subckt(&lines, k)?;
+                if subckts.insert(name.clone(), definition).is_some() {
+                    return Err(head.error(format!("`.subckt {name}` is defined twice")));
+                }
+                k = next;
+                continue;
             }
+            ".ends" => return Err(head.error("`.ends` without a `.subckt`")),
+            ".param" => expand::param(&lines[k], &mut scope)?,
+            ".end" => break,
+            _ => top.push(&lines[k]),
+        }
+        k += 1;
+    }
+    let frame = Frame { path: String::new(), ports: HashMap::new(), scope, depth: 0 };
+    let mut count = 0;
+    for tokens in top {
+        if tokens[0].text.starts_with('.') {
+            let tokens: Vec<Token> = tokens
+                .iter()
+                .map(|t| match t.text.starts_with(['{', '\'']) {
+                    true => expand::value_of(t, &frame.scope).map(|v| Token {
+                        text: format!("{v:e}"),
+                        line: t.line,
+                        column: t.column,
+                    }),
+                    false => Ok(t.clone()),
+                })
+                .collect::<Result<_, _>>()?;
+            netlist.commands.extend(parse_command(&tokens)?);
         } else {
-            netlist.elements.push(parse_element(&tokens)?);
+            let elements = &mut netlist.elements;
+            expand::flatten(tokens, &frame, &subckts, &mut count, &mut |line| {
+                elements.push(parse_element(&line)?);
+                Ok(())
+            })?;
         }
     }
     Ok(netlist)
@@ -287,9 +344,44 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
             }
             Ok(Some(Command::Ic(ics)))
         }
-        other => {
-            Err(head.error(format!("the command `{other}` is not supported (`.tran`, `.ic` and `.end` are)")))
+        ".save" | ".print" => {
+            let mut k = 1;
+            if head.text == ".print" {
+                match tokens.get(1) {
+                    Some(t) if t.text == "tran" => k = 2,
+                    Some(t) => {
+                        return Err(t.error(format!("`.print {}`: only `.print tran` is supported", t.text)));
+                    }
+                    None => return Err(head.error("`.print` needs `tran` and the columns to print")),
+                }
+            }
+            let mut probes = Vec::new();
+            while k < tokens.len() {
+                let kind = &tokens[k];
+                if kind.text == "all" {
+                    k += 1;
+                    continue;
+                }
+                if kind.text != "v" && kind.text != "i" {
+                    return Err(kind.error(format!(
+                        "`{}`: expected `v(node)`, `i(source)` or `all`, found `{}`",
+                        head.text, kind.text
+                    )));
+                }
+                let name = at(tokens, k + 1, &format!("a name in `{}(…)`", kind.text))?;
+                probes.push(Probe {
+                    column: format!("{}({})", kind.text, name.text),
+                    name: name.text.clone(),
+                    current: kind.text == "i",
+                    token: name.clone(),
+                });
+                k += 2;
+            }
+            Ok(Some(Command::Save(probes)))
         }
+        other => Err(head.error(format!(
+            "the command `{other}` is not supported (`.tran`, `.ic`, `.save`, `.print tran` and `.end` are)"
+        ))),
     }
 }
 

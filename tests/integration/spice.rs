@@ -1,6 +1,11 @@
 //! SPICE netlists read into run-time networks: a netlist with every supported element against
 //! a reference written and integrated independently here, the refusals, and a fuzzer.
 
+use dirac::components::electrical::{
+    Capacitor, CoupledInductors, CurrentSource, Ground as Gnd, Resistor, VoltageControlledCurrent,
+    VoltageSource,
+};
+use dirac::prelude::*;
 use dirac::spice::{self, SpiceError};
 
 /// Every supported element: a DC source, resistors, coupled inductors (K), a current source,
@@ -95,6 +100,138 @@ fn a_netlist_with_every_element_follows_its_equations() {
     assert_eq!(csv.lines().count(), 51);
 }
 
+/// The same circuit with its transformer and its RC stage in subcircuits (the stage inside
+/// another, its resistor split in two around an inner node), its values from `.param`s,
+/// defaults and instance parameters, some as expressions.
+const IN_SUBCIRCUITS: &str = "every supported element, in subcircuits
+.param rs=1 half={rs/2}
+.subckt transformer p s params: lp=1 ls=1 k=0.5
+L1 p 0 {lp} ic=0
+L2 s 0 {ls}
+K1 L1 L2 {k}
+.ends transformer
+.subckt stage in out params: r=1 c=1
+R3 in mid {r/2}
+R3b mid out '0.5*r'
+C2 out 0 {c}
+.ends
+.subckt wrap a b r=1k
+Xs a b stage params: r={r} c=1m
+.ends wrap
+V1 in 0 DC 1
+R1 in a {rs}
+X1 a b transformer params: ls={2*rs}
+R2 b c 2
+C1 c 0 {half}
+I1 0 c
++ 0.3
+X2 c e wrap
+G1 0 f e 0 0.5
+R4 f gnd 2
+.tran 0.1 5
+.end
+";
+
+/// The circuit of `IN_SUBCIRCUITS` written as a derived interconnection of the same library
+/// parts, node by node (the inner node `mid` between `r3a` and `r3b`).
+#[derive(Interconnection, Clone)]
+#[dirac(connect(v1.p, r1.p))]
+#[dirac(connect(r1.n, t.p1))]
+#[dirac(connect(t.p2, r2.p))]
+#[dirac(connect(r2.n, c1.p), connect(r2.n, i1.n), connect(r2.n, r3a.p))]
+#[dirac(connect(r3a.n, r3b.p))]
+#[dirac(connect(r3b.n, c2.p), connect(r3b.n, g1.p1))]
+#[dirac(connect(g1.n2, r4.p))]
+#[dirac(connect(v1.n, ground.p), connect(t.n1, ground.p), connect(t.n2, ground.p))]
+#[dirac(connect(c1.n, ground.p), connect(i1.p, ground.p), connect(c2.n, ground.p))]
+#[dirac(connect(g1.p2, ground.p), connect(g1.n1, ground.p), connect(r4.n, ground.p))]
+struct Twin {
+    v1: VoltageSource,
+    r1: Resistor,
+    t: CoupledInductors,
+    r2: Resistor,
+    c1: Capacitor,
+    i1: CurrentSource,
+    r3a: Resistor,
+    r3b: Resistor,
+    c2: Capacitor,
+    g1: VoltageControlledCurrent,
+    r4: Resistor,
+    ground: Gnd,
+}
+
+#[test]
+fn subcircuits_expand_to_the_circuit_and_to_its_derived_twin() {
+    let circuit = spice::parse(IN_SUBCIRCUITS).expect("reads").circuit().expect("a circuit");
+    let nodes: Vec<&str> = circuit.nodes().collect();
+    assert_eq!(nodes, ["0", "in", "a", "b", "c", "x2:xs:mid", "e", "f"]);
+    let names = circuit.network.part_names();
+    for name in ["k:x1:k1", "r:x2:xs:r3", "r:x2:xs:r3b", "c:x2:xs:c2", "g1"] {
+        assert!(names.iter().any(|n| n == name), "a part `{name}` in {names:?}");
+    }
+    // The reference of the flat netlist: the hand-written equations, integrated by RK4.
+    let run = circuit.simulate(1e-10).expect("simulates");
+    let expected = reference(5.0, run.times());
+    let columns = ["v(a)", "v(b)", "v(c)", "v(e)", "v(f)", "i(v1)"];
+    let mut worst: f64 = 0.0;
+    for (k, name) in columns.iter().enumerate() {
+        for (i, x) in run.column(name).expect("a column").iter().enumerate() {
+            worst = worst.max((x - expected[i][k]).abs());
+        }
+    }
+    assert!(worst < 1e-8, "largest difference to the reference {worst:e}");
+    // The inner node sits halfway between c and e.
+    let (vc, ve, mid) = (
+        run.column("v(c)").expect("c"),
+        run.column("v(e)").expect("e"),
+        run.column("v(x2:xs:mid)").expect("mid"),
+    );
+    for i in 0..mid.len() {
+        assert!((mid[i] - 0.5 * (vc[i] + ve[i])).abs() < 1e-9);
+    }
+
+    // The derived twin, integrated alike: the same trajectory. The netlist's nodes are joined
+    // coordinates and the twin's are connection rows, so the step sequences differ and each
+    // run carries its own global error; at 1e-13 both are within 1e-10 of each other (at
+    // 1e-12 they differ by 1.6e-10).
+    let tol = 1e-13;
+    let run = circuit.simulate(tol).expect("simulates");
+    let m = 0.5 * 2f64.sqrt();
+    let twin = Twin {
+        v1: VoltageSource { u: 1.0 },
+        r1: Resistor { r: 1.0 },
+        t: CoupledInductors { l1: 1.0, l2: 2.0, m },
+        r2: Resistor { r: 2.0 },
+        c1: Capacitor { c: 0.5 },
+        i1: CurrentSource { i: 0.3 },
+        r3a: Resistor { r: 500.0 },
+        r3b: Resistor { r: 500.0 },
+        c2: Capacitor { c: 1e-3 },
+        g1: VoltageControlledCurrent { gm: 0.5 },
+        r4: Resistor { r: 2.0 },
+        ground: Gnd {},
+    };
+    let q = twin.sizes().zeros_q::<Twin>();
+    let start = consistent_state(&twin, 0.0, &q, &q, Consistency::default()).expect("consistent");
+    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };
+    let solution = Radau::new(&twin, options)
+        .expect("options")
+        .solve(0.0, &start, 5.0, &Sampling::Times(run.times().to_vec()))
+        .expect("runs");
+    let names = twin.coordinate_names();
+    let at = |pin: &str| names.iter().position(|n| n == pin).expect("a pin");
+    let pins = [("v(a)", "r1.n"), ("v(b)", "r2.p"), ("v(c)", "c1.p"), ("v(e)", "c2.p"), ("v(f)", "r4.p")];
+    let mut worst: f64 = 0.0;
+    for (column, pin) in pins {
+        let (k, values) = (at(pin), run.column(column).expect("a column"));
+        for (i, x) in values.iter().enumerate() {
+            let s = solution.state(i).expect("a sample");
+            worst = worst.max((x - s.v[k]).abs() / s.v[k].abs().max(1.0));
+        }
+    }
+    assert!(worst < 1e-10, "netlist against derived interconnection: {worst:e}");
+}
+
 /// `.ic` node voltages and inductors' `ic=`: an LC tank rings as cos and sin.
 #[test]
 fn initial_conditions_start_the_circuit() {
@@ -122,9 +259,23 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     let e = refused("t\nR1 a 0 1\nD1 a 0 dmod\n.end\n");
     assert_eq!((e.line, e.column), (3, 1));
     assert!(e.message.contains("`d1` is not supported"), "{e}");
-    let e = refused("t\nR1 a 0 1\n  .subckt amp a b\n");
+    let e = refused("t\nR1 a 0 1\n  .subckt amp a b\nR2 a b 1\n");
     assert_eq!((e.line, e.column), (3, 3));
-    assert!(e.message.contains("`.subckt` is not supported"), "{e}");
+    assert!(e.message.contains("`.subckt amp` has no `.ends`"), "{e}");
+    let e = refused("t\n.subckt amp a b\nR2 a b 1\n.ends\nX1 a 0 amq\n");
+    assert_eq!((e.line, e.column), (5, 8));
+    assert!(e.message.contains("no subcircuit is named `amq`"), "{e}");
+    let e = refused("t\n.subckt amp a b\nR2 a b 1\n.ends\nX1 a amp\n");
+    assert!(e.message.contains("`amp` has 2 ports and the instance gives 1 nodes"), "{e}");
+    let e = refused("t\n.subckt amp a b\nX9 a b amp\n.ends\nX1 a 0 amp\n");
+    assert_eq!((e.line, e.column), (3, 1));
+    assert!(e.message.contains("does `amp` contain itself?"), "{e}");
+    let e = refused("t\n.subckt amp a b r=1\nR2 a b {r}\n.ends\nX1 a 0 amp q=2\n");
+    assert_eq!((e.line, e.column), (5, 12));
+    assert!(e.message.contains("`amp` has no parameter `q`"), "{e}");
+    let e = refused("t\n.param r=2\nR1 a 0 {r*s}\n");
+    assert_eq!((e.line, e.column), (3, 11));
+    assert!(e.message.contains("no parameter is named `s`"), "{e}");
     let e = refused("t\nV1 a 0 PULSE(0 1 0 1n 1n 1 2)\nR1 a 0 1\n");
     assert_eq!((e.line, e.column), (2, 8));
     assert!(e.message.contains("`pulse` is not supported"), "{e}");
@@ -168,10 +319,11 @@ fn mutated_netlists_never_panic_and_every_refusal_has_a_line() {
         seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
         ((seed >> 33) as usize) % n.max(1)
     };
-    let alphabet: Vec<char> = "0123456789abcdefgkmnpuvxyz .+-=(),;$*\n\tEeRLCKVIGD".chars().collect();
+    let alphabet: Vec<char> = "0123456789abcdefgkmnpuvxyz .+-=(),;$*/^{}':\n\tEeRLCKVIGDX".chars().collect();
     let (mut read, mut refusals) = (0, 0);
     for _ in 0..count {
-        let mut text: Vec<char> = EVERY_ELEMENT.chars().collect();
+        let base = if next(2) == 0 { EVERY_ELEMENT } else { IN_SUBCIRCUITS };
+        let mut text: Vec<char> = base.chars().collect();
         for _ in 0..1 + next(4) {
             let k = next(text.len());
             match next(5) {

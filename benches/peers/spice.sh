@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# dirac-spice against ngspice on the same netlists: LC ladders of 10³, 10⁴ and 10⁵ nodes from a
+# pulse (or the sizes in DIRAC_SPICE_SIZES, comma-separated), against their modal solution
+# computed in benches/peers/spice_ladder.py. Each simulator runs over a range of tolerances;
+# the table gives, for every ngspice run, dirac's error at ngspice's wall time and dirac's time
+# at ngspice's error. ngspice comes from Debian's package, unpacked into target/peers without
+# installing; numpy into a virtual environment there. Not part of CI.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+peers=target/peers
+mkdir -p "$peers/debs" "$peers/spice"
+if [ ! -x "$peers/ngspice/usr/bin/ngspice" ]; then
+    (cd "$peers/debs" && apt-get download ngspice)
+    dpkg -x "$peers"/debs/ngspice_*.deb "$peers/ngspice"
+fi
+venv=$peers/spice-venv
+[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
+"$venv/bin/pip" install --quiet numpy
+cargo build --release --bin dirac-spice
+"$venv/bin/python" benches/peers/spice_ladder.py compare "${DIRAC_SPICE_SIZES:-1000,10000,100000}" \
+    "$peers/ngspice/usr/bin/ngspice" target/release/dirac-spice "$peers/spice"

@@ -1,0 +1,169 @@
+"""LC ladder netlists and their exact solution, for benches/peers/spice.sh.
+
+`netlist N FILE`: an N-node ladder (L = C = 1; L1 from ground to node 1, Lk from node k-1 to k,
+Ck from node k to ground), node voltages starting from a Gaussian pulse five nodes wide centred
+at N/3, inductor currents from zero, simulated to t = 10. `.save` keeps the 401 nodes around the
+pulse (the waves travel one node per unit time, so nothing else moves).
+
+`reference N FILE`: those nodes' voltages at t = 10 from the ladder's modes, computed here in
+closed form: the node-voltage matrix T (2 on the diagonal but 1 in the last row, -1 beside it)
+has eigenvectors sin(j theta_k), theta_k = (2k-1) pi / (2N+1), eigenvalues 4 sin^2(theta_k/2),
+so v_j(t) = sum_k c_k cos(omega_k t) sin(j theta_k) with omega_k = 2 sin(theta_k/2).
+"""
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+
+def pulse(n):
+    j = np.arange(1, n + 1, dtype=float)
+    return np.exp(-(((j - n / 3.0) / 5.0) ** 2))
+
+
+def window(n):
+    centre = int(round(n / 3.0))
+    return list(range(max(1, centre - 200), min(n, centre + 200) + 1))
+
+
+def netlist(n, path):
+    v0 = pulse(n)
+    with open(path, "w") as f:
+        f.write(f"LC ladder of {n} nodes from a pulse\n")
+        for k in range(1, n + 1):
+            a = "0" if k == 1 else f"n{k - 1}"
+            f.write(f"L{k} {a} n{k} 1\nC{k} n{k} 0 1\n")
+        # Voltages below 1e-300 are written as zero: the pulse's tails underflow anyway.
+        f.write(".ic " + " ".join(f"v(n{k})={v0[k - 1]:.17e}" for k in range(1, n + 1) if v0[k - 1] > 1e-300) + "\n")
+        f.write(".save " + " ".join(f"v(n{k})" for k in window(n)) + "\n")
+        f.write(".tran 1 10 uic\n.end\n")
+
+
+def reference(n, path, t=10.0):
+    v0 = pulse(n)
+    support = np.nonzero(v0 > 1e-300)[0] + 1  # node numbers where the pulse is not zero
+    nodes = np.array(window(n), dtype=float)
+    k = np.arange(1, n + 1, dtype=float)
+    theta = (2 * k - 1) * np.pi / (2 * n + 1)
+    # sum_{j=1}^{n} sin^2(j theta) = n/2 - sin(n theta) cos((n+1) theta) / (2 sin theta)
+    norm = n / 2 - np.sin(n * theta) * np.cos((n + 1) * theta) / (2 * np.sin(theta))
+    out = np.zeros(len(nodes))
+    for lo in range(0, n, 2000):
+        th = theta[lo:lo + 2000]
+        c = np.sin(np.outer(th, support)) @ v0[support - 1] / norm[lo:lo + 2000]
+        out += np.sin(np.outer(nodes, th)) @ (c * np.cos(2 * np.sin(th / 2) * t))
+    with open(path, "w") as f:
+        for j, v in zip(window(n), out):
+            f.write(f"n{j} {v:.17e}\n")
+
+
+def last_row(path):
+    """The last sample of a dirac CSV or an ngspice ASCII raw file, as {node: voltage}."""
+    text = open(path).read()
+    if "Values:" in text:
+        head, values = text.split("Values:\n")
+        names = [line.split("\t")[2] for line in head.split("Variables:\n")[1].strip("\n").split("\n")]
+        numbers = values.split()
+        last = numbers[len(numbers) - len(names):]
+        assert float(last[0]) == 10.0, last[0]
+    else:
+        lines = text.strip().split("\n")
+        names, last = lines[0].split(","), lines[-1].split(",")
+        assert abs(float(last[0]) - 10.0) < 1e-12, last[0]
+    return {name[2:-1]: float(v) for name, v in zip(names[1:], last[1:])}
+
+
+def error(result, ref):
+    """The largest nodal error at t = 10, relative to the largest reference voltage."""
+    exact = {line.split()[0]: float(line.split()[1]) for line in open(ref)}
+    got = last_row(result)
+    assert set(got) == set(exact), "the columns differ from the reference's nodes"
+    return max(abs(got[k] - exact[k]) for k in exact) / max(abs(v) for v in exact.values())
+
+
+def check_norm():
+    for n in (7, 100, 1001):
+        k = np.arange(1, n + 1)
+        theta = (2 * k - 1) * np.pi / (2 * n + 1)
+        direct = (np.sin(np.outer(theta, np.arange(1, n + 1))) ** 2).sum(axis=1)
+        closed = n / 2 - np.sin(n * theta) * np.cos((n + 1) * theta) / (2 * np.sin(theta))
+        assert np.allclose(direct, closed, rtol=1e-12, atol=1e-9), n
+
+
+def timed(command, env=None):
+    """The median wall time of three runs of `command` (a whole process: reading, building,
+    simulating, writing), which must succeed."""
+    times = []
+    for _ in range(3):
+        start = time.perf_counter()
+        subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+        times.append(time.perf_counter() - start)
+    return sorted(times)[1]
+
+
+def compare(sizes, ngspice, dirac, out):
+    """Runs both simulators on each ladder over a range of tolerances; prints a table of
+    (time, error) and, for every ngspice run, dirac's error at ngspice's time and dirac's time
+    at ngspice's error, interpolated log-log between dirac's runs."""
+    env = dict(os.environ, SPICE_ASCIIRAWFILE="1")
+    rows = []
+    for n in sizes:
+        cir, ref = f"{out}/lc{n}.cir", f"{out}/lc{n}.ref"
+        netlist(n, cir)
+        reference(n, ref)
+        body = open(cir).read().replace(".end\n", "")
+        ours = []
+        for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
+            csv = f"{out}/lc{n}_dirac.csv"
+            seconds = timed([dirac, cir, "--tol", f"{tol:g}", "--out", csv])
+            ours.append((seconds, error(csv, ref)))
+            rows.append(("dirac Radau", n, f"tol {tol:g}", seconds, ours[-1][1]))
+        for method in ("trap", "gear"):
+            for reltol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8):
+                deck, raw = f"{out}/lc{n}_{method}.cir", f"{out}/lc{n}_{method}.raw"
+                with open(deck, "w") as f:
+                    f.write(body + f".options reltol={reltol:g} method={method}\n.end\n")
+                seconds = timed([ngspice, "-b", "-r", raw, deck], env)
+                e = error(raw, ref)
+                rows.append((f"ngspice {method}", n, f"reltol {reltol:g}", seconds, e, *against(ours, seconds, e)))
+    print("| simulator | nodes | setting | wall time (s) | error | dirac's error at this time | ratio | dirac's time at this error | ratio |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|")
+    for r in rows:
+        line = f"| {r[0]} | {r[1]} | {r[2]} | {r[3]:.3f} | {r[4]:.2e} |"
+        if len(r) > 5:
+            e_at, t_at = r[5], r[6]
+            line += f" {e_at:.2e} | {r[4] / e_at:.0f}× smaller | {t_at:.3f} | {t_at / r[3]:.2f}× |"
+        else:
+            line += " | | | |"
+        print(line)
+
+
+def against(ours, seconds, e):
+    """dirac's error at `seconds` and its time at error `e`, interpolated log-log between its
+    runs (sorted by time), or taken from the nearest end when outside them."""
+    def interpolate(xs, ys, x):
+        xs, ys = np.log(xs), np.log(ys)
+        order = np.argsort(xs)
+        return float(np.exp(np.interp(np.log(x), xs[order], ys[order])))
+    # Keep the runs that are not beaten on both counts by another (the work-precision front).
+    front = [p for p in ours if not any(q[0] <= p[0] and q[1] < p[1] for q in ours if q is not p)]
+    times, errors = [p[0] for p in front], [p[1] for p in front]
+    return interpolate(times, errors, seconds), interpolate(errors, times, e)
+
+
+if __name__ == "__main__":
+    if sys.argv[1] == "compare":
+        compare([int(n) for n in sys.argv[2].split(",")], sys.argv[3], sys.argv[4], sys.argv[5])
+        sys.exit()
+    what = sys.argv[1]
+    if what == "error":
+        print(f"{error(sys.argv[2], sys.argv[3]):.3e}")
+        sys.exit()
+    n, path = int(sys.argv[2]), sys.argv[3]
+    if what == "netlist":
+        netlist(n, path)
+    else:
+        check_norm()
+        reference(n, path)
