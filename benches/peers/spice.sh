@@ -15,7 +15,7 @@ if [ ! -x "$peers/ngspice/usr/bin/ngspice" ]; then
 fi
 venv=$peers/spice-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-"$venv/bin/pip" install --quiet numpy
+"$venv/bin/pip" install --quiet numpy scipy
 cargo build --release --bin dirac-spice
 "$venv/bin/python" benches/peers/spice_ladder.py compare "${DIRAC_SPICE_SIZES:-1000,10000,100000}" \
     "$peers/ngspice/usr/bin/ngspice" target/release/dirac-spice "$peers/spice"

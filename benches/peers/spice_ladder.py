@@ -59,26 +59,27 @@ def reference(n, path, t=10.0):
             f.write(f"n{j} {v:.17e}\n")
 
 
-def last_row(path):
-    """The last sample of a dirac CSV or an ngspice ASCII raw file, as {node: voltage}."""
+def last_row(path, stop=10.0):
+    """The last sample (at `stop`) of a dirac CSV or an ngspice ASCII raw file, as
+    {node: voltage}."""
     text = open(path).read()
     if "Values:" in text:
         head, values = text.split("Values:\n")
         names = [line.split("\t")[2] for line in head.split("Variables:\n")[1].strip("\n").split("\n")]
         numbers = values.split()
         last = numbers[len(numbers) - len(names):]
-        assert float(last[0]) == 10.0, last[0]
+        assert abs(float(last[0]) - stop) <= 1e-12 * stop, last[0]
     else:
         lines = text.strip().split("\n")
         names, last = lines[0].split(","), lines[-1].split(",")
-        assert abs(float(last[0]) - 10.0) < 1e-12, last[0]
+        assert abs(float(last[0]) - stop) <= 1e-12 * stop, last[0]
     return {name[2:-1]: float(v) for name, v in zip(names[1:], last[1:])}
 
 
-def error(result, ref):
-    """The largest nodal error at t = 10, relative to the largest reference voltage."""
+def error(result, ref, stop=10.0):
+    """The largest nodal error at `stop`, relative to the largest reference voltage."""
     exact = {line.split()[0]: float(line.split()[1]) for line in open(ref)}
-    got = last_row(result)
+    got = last_row(result, stop)
     assert set(got) == set(exact), "the columns differ from the reference's nodes"
     return max(abs(got[k] - exact[k]) for k in exact) / max(abs(v) for v in exact.values())
 
@@ -90,6 +91,67 @@ def check_norm():
         direct = (np.sin(np.outer(theta, np.arange(1, n + 1))) ** 2).sum(axis=1)
         closed = n / 2 - np.sin(n * theta) * np.cos((n + 1) * theta) / (2 * np.sin(theta))
         assert np.allclose(direct, closed, rtol=1e-12, atol=1e-9), n
+
+
+def rlc_netlist(n, path):
+    """The LC ladder with a 10 Ω resistor from every node to the reference: a lossy line."""
+    netlist(n, path)
+    text = open(path).read().replace(".ic", "".join(f"R{k} n{k} 0 10\n" for k in range(1, n + 1)) + ".ic", 1)
+    open(path, "w").write(text.replace("LC ladder", "RLC ladder", 1))
+
+
+def rlc_reference(n, path, t=10.0):
+    """The lossy ladder's node voltages at t from the matrix exponential of its linear system
+    (scipy's expm_multiply): C v' = i_k - i_(k+1) - v/R, L i_k' = v_(k-1) - v_k."""
+    import scipy.sparse as sp
+    from scipy.sparse.linalg import expm_multiply
+    k = np.arange(n)
+    # x = (v_1..v_n, i_1..i_n)
+    rows, cols, vals = [], [], []
+    def put(r, c, v):
+        rows.append(r); cols.append(c); vals.append(v)
+    for j in range(n):
+        put(j, n + j, 1.0)              # + i_j
+        if j + 1 < n:
+            put(j, n + j + 1, -1.0)     # - i_(j+1)
+        put(j, j, -1.0 / 10.0)          # - v_j / R
+        put(n + j, j, -1.0)             # - v_j
+        if j > 0:
+            put(n + j, j - 1, 1.0)      # + v_(j-1)
+    a = sp.csr_matrix((vals, (rows, cols)), shape=(2 * n, 2 * n))
+    x0 = np.concatenate([pulse(n), np.zeros(n)])
+    x = expm_multiply(a * t, x0)
+    with open(path, "w") as f:
+        for j in window(n):
+            f.write(f"n{j} {x[j - 1]:.17e}\n")
+
+
+CLIPPER = """diode clipper
+V1 in 0 SIN(0 2 50)
+R1 in out 1k
+C1 out 0 1u
+D1 out 0 dmod
+D2 0 out dmod
+.model dmod D(IS=1e-14 N=1)
+.save v(out)
+.tran 1m 40m
+.end
+"""
+
+
+def clipper_reference(path):
+    """The clipper's output at 40 ms: C v' = (u - v)/R - is (e^(v/vt) - 1) + is (e^(-v/vt) - 1),
+    by scipy's DOP853 and Radau at tight tolerances, which must agree."""
+    from scipy.integrate import solve_ivp
+    vt = 1.380649e-23 * 300.15 / 1.602176634e-19
+    def f(t, v):
+        u = 2.0 * np.sin(2 * np.pi * 50.0 * t)
+        return [((u - v[0]) / 1e3 - 1e-14 * np.expm1(v[0] / vt) + 1e-14 * np.expm1(-v[0] / vt)) / 1e-6]
+    a = solve_ivp(f, (0, 0.04), [0.0], method="DOP853", rtol=1e-13, atol=1e-16).y[0, -1]
+    b = solve_ivp(f, (0, 0.04), [0.0], method="Radau", rtol=1e-12, atol=1e-15).y[0, -1]
+    assert abs(a - b) < 1e-9, (a, b)
+    with open(path, "w") as out:
+        out.write(f"out {a:.17e}\n")
 
 
 def timed(command, env=None):
@@ -104,37 +166,47 @@ def timed(command, env=None):
 
 
 def compare(sizes, ngspice, dirac, out):
-    """Runs both simulators on each ladder over a range of tolerances; prints a table of
+    """Runs both simulators on each circuit over a range of tolerances; prints a table of
     (time, error) and, for every ngspice run, dirac's error at ngspice's time and dirac's time
     at ngspice's error, interpolated log-log between dirac's runs."""
     env = dict(os.environ, SPICE_ASCIIRAWFILE="1")
+    cases = [("LC ladder", n) for n in sizes] + [("RLC ladder", 1000), ("diode clipper", 1)]
     rows = []
-    for n in sizes:
-        cir, ref = f"{out}/lc{n}.cir", f"{out}/lc{n}.ref"
-        netlist(n, cir)
-        reference(n, ref)
+    for name, n in cases:
+        stem = {"LC ladder": f"lc{n}", "RLC ladder": f"rlc{n}", "diode clipper": "clipper"}[name]
+        cir, ref = f"{out}/{stem}.cir", f"{out}/{stem}.ref"
+        stop = 0.04 if name == "diode clipper" else 10.0
+        if name == "LC ladder":
+            netlist(n, cir)
+            reference(n, ref)
+        elif name == "RLC ladder":
+            rlc_netlist(n, cir)
+            rlc_reference(n, ref)
+        else:
+            open(cir, "w").write(CLIPPER)
+            clipper_reference(ref)
         body = open(cir).read().replace(".end\n", "")
         ours = []
         for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
-            csv = f"{out}/lc{n}_dirac.csv"
-            seconds = timed([dirac, cir, "--tol", f"{tol:g}", "--out", csv])
-            ours.append((seconds, error(csv, ref)))
-            rows.append(("dirac Radau", n, f"tol {tol:g}", seconds, ours[-1][1]))
+            csv = f"{out}/{stem}_dirac.csv"
+            seconds = timed([dirac, cir, "--tol", f"{tol:g}", "--out", csv, "--svg", f"{out}/{stem}_dirac.svg"])
+            ours.append((seconds, error(csv, ref, stop)))
+            rows.append(("dirac Radau", name, n, f"tol {tol:g}", seconds, ours[-1][1]))
         for method in ("trap", "gear"):
             for reltol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8):
-                deck, raw = f"{out}/lc{n}_{method}.cir", f"{out}/lc{n}_{method}.raw"
+                deck, raw = f"{out}/{stem}_{method}.cir", f"{out}/{stem}_{method}.raw"
                 with open(deck, "w") as f:
                     f.write(body + f".options reltol={reltol:g} method={method}\n.end\n")
                 seconds = timed([ngspice, "-b", "-r", raw, deck], env)
-                e = error(raw, ref)
-                rows.append((f"ngspice {method}", n, f"reltol {reltol:g}", seconds, e, *against(ours, seconds, e)))
-    print("| simulator | nodes | setting | wall time (s) | error | dirac's error at this time | ratio | dirac's time at this error | ratio |")
-    print("|---|---:|---|---:|---:|---:|---:|---:|---:|")
+                e = error(raw, ref, stop)
+                rows.append((f"ngspice {method}", name, n, f"reltol {reltol:g}", seconds, e, *against(ours, seconds, e)))
+    print("| simulator | circuit | nodes | setting | wall time (s) | error | dirac's error at this time | ratio | dirac's time at this error | ratio |")
+    print("|---|---|---:|---|---:|---:|---:|---:|---:|---:|")
     for r in rows:
-        line = f"| {r[0]} | {r[1]} | {r[2]} | {r[3]:.3f} | {r[4]:.2e} |"
-        if len(r) > 5:
-            e_at, t_at = r[5], r[6]
-            line += f" {e_at:.2e} | {r[4] / e_at:.0f}× smaller | {t_at:.3f} | {t_at / r[3]:.2f}× |"
+        line = f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]:.3f} | {r[5]:.2e} |"
+        if len(r) > 6:
+            e_at, t_at = r[6], r[7]
+            line += f" {e_at:.2e} | {r[5] / e_at:.0f}× smaller | {t_at:.3f} | {t_at / r[4]:.2f}× |"
         else:
             line += " | | | |"
         print(line)

@@ -32,6 +32,24 @@ pub struct Conductor {
     pub g: f64,
 }
 
+/// A Shockley diode from anode `p` to cathode `n`: the forward current
+/// `i = is (exp(v / n_vt) − 1)` at the voltage `v = vp − vn`, smooth (no switching surface),
+/// with the saturation current `is` and the emission coefficient times the thermal voltage,
+/// `n_vt` (25.85 mV for an ideal junction at 27 °C, SPICE's default temperature).
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(p => vp, n => vn), port(p, n), positive(is, n_vt))]
+#[dirac(lagrangian = 0.0)]
+#[dirac(define(i) = is * (((vp - vn) / n_vt).exp() - 1.0))]
+#[dirac(force(p) = -i, force(n) = i)]
+#[dirac(output(v) = vp - vn, output(current) = i, output(power) = (vp - vn) * i)]
+#[dirac(unit(p, n) = "Wb", unit(vp, vn, v, n_vt) = "V", unit(is, current) = "A", unit(power) = "W")]
+pub struct ShockleyDiode {
+    /// The saturation current.
+    pub is: f64,
+    /// The emission coefficient times the thermal voltage `k T / q`.
+    pub n_vt: f64,
+}
+
 /// Chua's diode: the piecewise-linear resistor `i = ga v` for `|v| ≤ ve` and
 /// `i = gb v ± (ga − gb) ve` beyond, continuous at `±ve` (Kennedy 1993). With negative slopes it
 /// supplies power (its output `power`, the power it takes in, is then negative). Its corners
@@ -248,6 +266,29 @@ pub struct SineVoltage {
     pub phase: f64,
     /// When the sine starts.
     pub start: f64,
+}
+
+/// A damped sine voltage from `t = 0`: `offset + amplitude e^(−damping t) sin(2π f t + phase)`,
+/// smooth (no switching surface): SPICE's `SIN` source without a delay.
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(p => vp, n => vn), port(p, n), nonnegative(damping))]
+#[dirac(lagrangian = 0.0)]
+#[dirac(define(u) = offset + amplitude * (-damping * t).exp() * (TAU * f * t + phase).sin())]
+#[dirac(constraint(source) = vp - vn - u)]
+#[dirac(output(v) = u, output(i) = -source, output(supplied) = u * source)]
+#[dirac(unit(p, n) = "Wb", unit(vp, vn, offset, amplitude, v) = "V", unit(f, damping) = "Hz")]
+#[dirac(unit(phase) = "rad", unit(i) = "A", unit(supplied) = "W")]
+pub struct DampedSineVoltage {
+    /// The sine's mean.
+    pub offset: f64,
+    /// The amplitude at `t = 0`.
+    pub amplitude: f64,
+    /// The frequency.
+    pub f: f64,
+    /// The decay rate of the amplitude.
+    pub damping: f64,
+    /// The phase at `t = 0`.
+    pub phase: f64,
 }
 
 /// A train of rectangular pulses (pulse-width modulation): `offset` until `start`, then in each

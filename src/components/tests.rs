@@ -12,7 +12,7 @@
 //! `Σ f_i v_i = dE/dt + dissipated − supplied` with the part's outputs `energy`, `power` and
 //! `supplied` (where it has them; `dE/dt` from the generated `∂E/∂q`, `∂E/∂v`).
 
-use crate::nalgebra::DefaultAllocator;
+use crate::nalgebra::{DefaultAllocator, Matrix2, Vector2};
 use crate::prelude::*;
 
 use super::{electrical as el, electromechanical as em, rotational as rot, translational as tr};
@@ -203,6 +203,37 @@ fn chuas_diode_is_piecewise_linear() {
 }
 
 #[test]
+fn shockley_diode_follows_its_exponential() {
+    let (is, n_vt) = (1e-14, 0.025);
+    // Shockley's law, written out, and its slope by a central difference.
+    let law = |v: f64| is * ((v / n_vt).exp() - 1.0);
+    for v in [-1.0, -0.1, 0.0, 0.3, 0.6, 0.7] {
+        let at =
+            At::new(el::ShockleyDiode { is, n_vt }).set("p", 0.0, v + 0.25, 0.0).set("n", 0.0, 0.25, 0.0);
+        assert_close!(at.effort("p"), law(v));
+        assert_close!(at.effort("n"), -law(v));
+        assert_close!(at.output("current"), law(v));
+        assert_balance(&at, v * law(v));
+        let diode = el::ShockleyDiode { is, n_vt };
+        let (q, vel) = (Vector2::new(0.0, 0.0), Vector2::new(v + 0.25, 0.25));
+        let mut jac = Matrix2::zeros();
+        diode.force_dv(0.0, &q, &vel, &mut jac);
+        let h = 1e-7;
+        let mut f = |dv: f64| {
+            let mut out = Vector2::zeros();
+            diode.force(0.0, &q, &Vector2::new(v + 0.25 + dv, 0.25), &mut out);
+            out[0]
+        };
+        let numeric = (f(h) - f(-h)) / (2.0 * h);
+        assert!(
+            (jac[(0, 0)] - numeric).abs() <= 1e-6 * numeric.abs().max(1e-12),
+            "{v}: {} against {numeric}",
+            jac[(0, 0)]
+        );
+    }
+}
+
+#[test]
 fn capacitor_stores_its_charge() {
     let (c, ap, an) = (4e-3, 250.0, -50.0);
     let at = At::new(el::Capacitor { c }).set("p", 1.0, 2.0, ap).set("n", 0.5, -1.0, an);
@@ -332,6 +363,7 @@ fn voltage_sources_hold_their_waveforms() {
     // The waveforms, each at times around its corners, against the definition.
     let step = |t: f64| if t < 1.0 { 0.5 } else { 2.5 };
     let ramp = |t: f64| 0.5 + 2.0 * ((t - 1.0) / 2.0).clamp(0.0, 1.0);
+    let damped = |t: f64| 0.5 + 2.0 * (-0.7 * t).exp() * (std::f64::consts::TAU * 3.0 * t + 0.2).sin();
     let sine = |t: f64| {
         if t < 1.0 { 0.5 } else { 0.5 + 2.0 * (std::f64::consts::TAU * 3.0 * (t - 1.0) + 0.2).sin() }
     };
@@ -345,6 +377,9 @@ fn voltage_sources_hold_their_waveforms() {
         assert_close!(output_at(sined, t), sine(t));
         let pulsed = el::PulseVoltage { offset: 0.5, amplitude: 2.0, width: 0.3, period: 0.4, start: 1.0 };
         assert_close!(output_at(pulsed, t), pulse(t));
+        let decaying =
+            el::DampedSineVoltage { offset: 0.5, amplitude: 2.0, f: 3.0, damping: 0.7, phase: 0.2 };
+        assert_close!(output_at(decaying, t), damped(t));
     }
 }
 
@@ -655,6 +690,8 @@ fn every_parameter_of_every_part_is_checked() {
     each_parameter(el::Resistor { r: 1.0 });
     each_parameter(el::Conductor { g: 1.0 });
     each_parameter(el::ChuaDiode { ga: -0.7, gb: -0.4, ve: 1.0 });
+    each_parameter(el::ShockleyDiode { is: 1e-14, n_vt: 0.025 });
+    each_parameter(el::DampedSineVoltage { offset: 0.0, amplitude: 1.0, f: 1.0, damping: 0.0, phase: 0.0 });
     each_parameter(el::Capacitor { c: 1.0 });
     each_parameter(el::Inductor { l: 1.0 });
     each_parameter(el::CoupledInductors { l1: 1.0, l2: 2.0, m: 0.5 });

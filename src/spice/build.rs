@@ -6,7 +6,8 @@ use std::collections::HashMap;
 use std::io::{self, Write};
 
 use crate::components::electrical::{
-    Capacitor, CoupledInductors, CurrentSource, Inductor, Resistor, VoltageControlledCurrent, VoltageSource,
+    Capacitor, CoupledInductors, CurrentSource, DampedSineVoltage, Inductor, Resistor, ShockleyDiode,
+    VoltageControlledCurrent, VoltageSource,
 };
 use crate::network::{Network, NetworkBuilder, NetworkError};
 use crate::{
@@ -31,6 +32,10 @@ pub struct Circuit {
     v0: Vec<f64>,
     tran: Option<Tran>,
 }
+
+/// The thermal voltage `k T / q` at SPICE's default temperature, 27 °C (CODATA 2018's exact
+/// Boltzmann constant and elementary charge).
+const THERMAL_VOLTAGE: f64 = 1.380_649e-23 * 300.15 / 1.602_176_634e-19;
 
 /// Where a recorded column is read.
 #[derive(Clone, Copy, Debug)]
@@ -262,6 +267,19 @@ impl Netlist {
                 }
                 Kind::Current(i) => add(&mut b, e, CurrentSource { i: *i }),
                 Kind::Vccs(gm) => add(&mut b, e, VoltageControlledCurrent { gm: *gm }),
+                Kind::Sine([offset, amplitude, f, damping, phase]) => {
+                    currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                    let (offset, amplitude, f, damping, phase) = (*offset, *amplitude, *f, *damping, *phase);
+                    add(&mut b, e, DampedSineVoltage { offset, amplitude, f, damping, phase })
+                }
+                Kind::Diode(model) => {
+                    let Some(&(is, n)) = self.models.get(&model.text) else {
+                        return Err(
+                            model.error(format!("`{}`: no `.model` is named `{}`", e.name, model.text))
+                        );
+                    };
+                    add(&mut b, e, ShockleyDiode { is, n_vt: n * THERMAL_VOLTAGE })
+                }
                 Kind::Coupling { a, b: bb, k } => {
                     let (la, lb) = (seen[a.text.as_str()], seen[bb.text.as_str()]);
                     let (Kind::Inductor { l: l1, ic: i1 }, Kind::Inductor { l: l2, ic: i2 }) =
@@ -423,7 +441,7 @@ impl Netlist {
             let n = &e.nodes;
             match e.kind {
                 Kind::Coupling { .. } => Vec::new(),
-                Kind::Voltage(_) => vec![(node(&n[0]), node(&n[1]), true, false)],
+                Kind::Voltage(_) | Kind::Sine(_) => vec![(node(&n[0]), node(&n[1]), true, false)],
                 Kind::Current(_) => vec![(node(&n[0]), node(&n[1]), false, true)],
                 // The output branch is a source; the control pins draw no current and tie nothing.
                 Kind::Vccs(_) => vec![(node(&n[0]), node(&n[1]), false, true)],

@@ -10,8 +10,9 @@
 //! unknown per node, plus a row per voltage source (whose multiplier is its current).
 //!
 //! Supported:
-//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), DC `V` and `I` sources, `G`
-//!   (voltage-controlled current sources);
+//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), DC `V` and `I` sources, `SIN`
+//!   voltage sources without a delay, `G` (voltage-controlled current sources), `D` (Shockley
+//!   diodes, `.model name D(IS=… N=…)`, at 27 °C);
 //! - `.param name=value …`, values as expressions in braces or quotes (`{2*r}`, `'sqrt(l*c)'`,
 //!   with `+ - * / ^`, parentheses, `pi` and the usual functions);
 //! - `.subckt name ports… [params:] p=default …` … `.ends`, instantiated by
@@ -63,6 +64,8 @@ pub struct SpiceError {
 pub struct Netlist {
     /// The first line.
     pub title: String,
+    /// The diode models by name: `(is, n)`.
+    models: std::collections::HashMap<String, (f64, f64)>,
     elements: Vec<Element>,
     commands: Vec<Command>,
 }
@@ -80,10 +83,25 @@ struct Element {
 #[derive(Clone, Debug)]
 enum Kind {
     Resistor(f64),
-    Inductor { l: f64, ic: Option<f64> },
-    Capacitor { c: f64, ic: Option<f64> },
-    Coupling { a: Token, b: Token, k: f64 },
+    Inductor {
+        l: f64,
+        ic: Option<f64>,
+    },
+    Capacitor {
+        c: f64,
+        ic: Option<f64>,
+    },
+    Coupling {
+        a: Token,
+        b: Token,
+        k: f64,
+    },
     Voltage(f64),
+    /// `SIN(offset amplitude f 0 damping phase°)` without a delay, as `(offset, amplitude, f,
+    /// damping, phase in radians)`.
+    Sine([f64; 5]),
+    /// A diode and its `.model`'s name.
+    Diode(Token),
     Current(f64),
     Vccs(f64),
 }

@@ -133,7 +133,7 @@ pub(super) fn number(token: &Token) -> Result<f64, SpiceError> {
 /// subcircuits expanded) and commands.
 pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
     let title = text.lines().next().unwrap_or("").trim().to_string();
-    let mut netlist = Netlist { title, elements: Vec::new(), commands: Vec::new() };
+    let mut netlist = Netlist { title, models: HashMap::new(), elements: Vec::new(), commands: Vec::new() };
     let lines = logical_lines(text);
     let (mut scope, mut subckts, mut top) = (Scope::new(), HashMap::new(), Vec::new());
     let mut k = 0;
@@ -150,6 +150,10 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
             }
             ".ends" => return Err(head.error("`.ends` without a `.subckt`")),
             ".param" => expand::param(&lines[k], &mut scope)?,
+            ".model" => {
+                let (name, model) = diode_model(&lines[k], &scope)?;
+                netlist.models.insert(name, model);
+            }
             ".end" => break,
             _ => top.push(&lines[k]),
         }
@@ -180,6 +184,45 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
         }
     }
     Ok(netlist)
+}
+
+/// A `.model name D(IS=… N=…)` line: the model's name, its saturation current and emission
+/// coefficient (SPICE's defaults 1e-14 A and 1).
+fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, (f64, f64)), SpiceError> {
+    let name = at(tokens, 1, "a name and a type")?;
+    let kind = at(tokens, 2, "a type")?;
+    if kind.text != "d" {
+        return Err(
+            kind.error(format!("`.model {}`: the type `{}` is not supported (`D` is)", name.text, kind.text))
+        );
+    }
+    let (mut is, mut n) = (1e-14, 1.0);
+    let mut k = 3;
+    while k < tokens.len() {
+        let key = &tokens[k];
+        let eq = at(tokens, k + 1, &format!("`=` after `{}`", key.text))?;
+        if eq.text != "=" {
+            return Err(eq.error(format!("`.model {}`: expected `=` after `{}`", name.text, key.text)));
+        }
+        let value = expand::value_of(at(tokens, k + 2, &format!("a value for `{}`", key.text))?, scope)?;
+        match key.text.as_str() {
+            "is" => is = value,
+            "n" => n = value,
+            other => {
+                return Err(key.error(format!(
+                    "`.model {}`: the parameter `{other}` is not supported (IS and N are)",
+                    name.text
+                )));
+            }
+        }
+        if value <= 0.0 {
+            return Err(
+                tokens[k + 2].error(format!("`.model {}`: `{}` must be positive", name.text, key.text))
+            );
+        }
+        k += 3;
+    }
+    Ok((name.text.clone(), (is, n)))
 }
 
 /// The token at `k`, or an error at the end of the line saying what is missing.
@@ -268,16 +311,45 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
                     k += 1;
                     number(t)?
                 }
+                Some(t) if t.text == "sin" && first == 'v' => {
+                    // SIN(VO VA FREQ TD THETA PHASE), the phase in degrees.
+                    let values: Vec<f64> = tokens[k + 1..].iter().map(number).collect::<Result<_, _>>()?;
+                    if !(3..=6).contains(&values.len()) {
+                        return Err(t.error(format!(
+                            "`{name}`: `SIN` takes 3 to 6 values: VO VA FREQ [TD THETA PHASE]"
+                        )));
+                    }
+                    let get = |j: usize| values.get(j).copied().unwrap_or(0.0);
+                    if get(3) != 0.0 {
+                        return Err(tokens[k + 4].error(format!(
+                            "`{name}`: a `SIN` delay is not supported yet (a network does not locate its start)"
+                        )));
+                    }
+                    if get(4) < 0.0 {
+                        return Err(
+                            tokens[k + 5].error(format!("`{name}`: the damping must not be negative"))
+                        );
+                    }
+                    let kind = Kind::Sine([get(0), get(1), get(2), get(4), get(5).to_radians()]);
+                    return Ok(Element { name, nodes, kind, token: head.clone() });
+                }
                 Some(t) => {
                     return Err(t.error(format!(
-                        "`{name}`: the source `{}` is not supported (DC values are)",
-                        t.text
+                        "`{name}`: the source `{}` is not supported (DC values{} are)",
+                        t.text,
+                        if first == 'v' { " and `SIN` without a delay" } else { "" }
                     )));
                 }
             };
             extra(k)?;
             let kind = if first == 'v' { Kind::Voltage(value) } else { Kind::Current(value) };
             return Ok(Element { name, nodes, kind, token: head.clone() });
+        }
+        'd' => {
+            let nodes = nodes(2)?;
+            let model = at(tokens, 3, "a model")?.clone();
+            extra(4)?;
+            return Ok(Element { name, nodes, kind: Kind::Diode(model), token: head.clone() });
         }
         'g' => {
             let nodes = nodes(4)?;
@@ -287,7 +359,7 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
         }
         _ => {
             return Err(head.error(format!(
-                "the element `{name}` is not supported: its type `{}` is none of R, L, C, K, V, I, G",
+                "the element `{name}` is not supported: its type `{}` is none of R, L, C, K, V, I, G, D, X",
                 first.to_ascii_uppercase()
             )));
         }
@@ -317,6 +389,10 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
             let start = values.get(2).copied().unwrap_or(0.0);
             if !(0.0..stop).contains(&start) {
                 return Err(head.error(format!("`.tran`: the start {start} must lie in [0, {stop})")));
+            }
+            if let Some(&h) = values.get(3).filter(|&&h| h <= 0.0) {
+                let token = tokens[1..].iter().filter(|t| t.text != "uic").nth(3).expect("the fourth value");
+                return Err(token.error(format!("`.tran`: the largest step {h} must be positive")));
             }
             Ok(Some(Command::Tran(Tran {
                 step,

@@ -284,6 +284,16 @@ fn joined_ports_share_a_coordinate_and_give_the_same_motion() {
     let worst = ya.iter().zip(&yb).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
     assert!(worst < 1e-9, "outputs: {worst:e}");
 
+    // A part's parameter that is not a number is named with its part when the run starts.
+    let mut b = Network::builder();
+    b.add("r", Resistor { r: f64::NAN }).expect("a part").add("c", Capacitor { c: 1.0 }).expect("a part");
+    b.join("r.p", "c.p").expect("joins").ground("r.n").expect("grounds").ground("c.n").expect("grounds");
+    let broken = b.finish().expect("a network");
+    let zeros = broken.sizes().zeros_q::<Network>();
+    let e = consistent_state(&broken, 0.0, &zeros, &zeros, Consistency::default());
+    let e = e.map(|_| ()).expect_err("refused").to_string();
+    assert!(e.contains("r.r"), "{e}");
+
     // What cannot be joined or grounded is refused.
     let mut b = Network::builder();
     b.add("r", Resistor { r: 1.0 }).expect("a part");

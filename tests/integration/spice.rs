@@ -232,6 +232,55 @@ fn subcircuits_expand_to_the_circuit_and_to_its_derived_twin() {
     assert!(worst < 1e-10, "netlist against derived interconnection: {worst:e}");
 }
 
+/// A diode clipper: a 50 Hz sine of 2 V behind 1 kΩ, clipped at about ±0.6 V by two Shockley
+/// diodes (a `.model`) back to back across 1 µF.
+const CLIPPER: &str = "diode clipper
+V1 in 0 SIN(0 2 50)
+R1 in out 1k
+C1 out 0 1u
+D1 out 0 dmod
+D2 0 out dmod
+.model dmod D(IS=1e-14 N=1)
+.tran 0.5m 40m
+.end
+";
+
+#[test]
+fn a_diode_clipper_follows_its_equation() {
+    let run =
+        spice::parse(CLIPPER).expect("reads").circuit().expect("a circuit").simulate(1e-10).expect("runs");
+    // The reference: C v' = (u − v)/R − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1), written here and
+    // integrated by RK4 with 4·10⁵ steps of 0.1 µs (the diodes' time constant is about 5 µs).
+    let (r, c, is) = (1e3, 1e-6, 1e-14);
+    let vt = 1.380_649e-23 * 300.15 / 1.602_176_634e-19;
+    let f = |t: f64, v: f64| {
+        let u = 2.0 * (std::f64::consts::TAU * 50.0 * t).sin();
+        ((u - v) / r - is * ((v / vt).exp() - 1.0) + is * ((-v / vt).exp() - 1.0)) / c
+    };
+    let (h, steps) = (1e-7, 400_000);
+    let (mut v, mut reference) = (0.0, vec![0.0]);
+    for k in 0..steps {
+        let t = k as f64 * h;
+        let k1 = f(t, v);
+        let k2 = f(t + 0.5 * h, v + 0.5 * h * k1);
+        let k3 = f(t + 0.5 * h, v + 0.5 * h * k2);
+        let k4 = f(t + h, v + h * k3);
+        v += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        if (k + 1) % 5000 == 0 {
+            reference.push(v);
+        }
+    }
+    let out = run.column("v(out)").expect("out");
+    assert_eq!(out.len(), reference.len() - 1);
+    let worst = out.iter().zip(&reference[1..]).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-7, "largest difference to the reference {worst:e}");
+    // Clipped: the output stays within the diodes' forward voltage while the source swings 2 V.
+    let peak = out.iter().map(|v| v.abs()).fold(0.0, f64::max);
+    assert!((0.5..0.75).contains(&peak), "peak {peak}");
+    let source = run.column("v(in)").expect("in");
+    assert!((source[1] - 2.0 * (std::f64::consts::TAU * 50.0 * 1e-3).sin()).abs() < 1e-12);
+}
+
 /// `.ic` node voltages and inductors' `ic=`: an LC tank rings as cos and sin.
 #[test]
 fn initial_conditions_start_the_circuit() {
@@ -257,8 +306,14 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     assert_eq!((e.line, e.column), (3, 1));
     assert!(e.message.contains("`e1` is not supported"), "{e}");
     let e = refused("t\nR1 a 0 1\nD1 a 0 dmod\n.end\n");
-    assert_eq!((e.line, e.column), (3, 1));
-    assert!(e.message.contains("`d1` is not supported"), "{e}");
+    assert_eq!((e.line, e.column), (3, 8));
+    assert!(e.message.contains("no `.model` is named `dmod`"), "{e}");
+    let e = refused("t\n.model dmod D(IS=1e-14 CJO=2p)\nR1 a 0 1\nD1 a 0 dmod\n");
+    assert_eq!((e.line, e.column), (2, 24));
+    assert!(e.message.contains("`cjo` is not supported"), "{e}");
+    let e = refused("t\nV1 a 0 SIN(0 1 1k 1m)\nR1 a 0 1\n");
+    assert_eq!((e.line, e.column), (2, 19));
+    assert!(e.message.contains("delay is not supported"), "{e}");
     let e = refused("t\nR1 a 0 1\n  .subckt amp a b\nR2 a b 1\n");
     assert_eq!((e.line, e.column), (3, 3));
     assert!(e.message.contains("`.subckt amp` has no `.ends`"), "{e}");
@@ -285,6 +340,9 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     let e = refused("t\nR1 a 0 x2\n");
     assert_eq!((e.line, e.column), (2, 8));
     assert!(e.message.contains("`x2` is not a number"), "{e}");
+    let e = refused("t\nR1 a 0 1\n.tran 0.1 1 0 0\n");
+    assert_eq!((e.line, e.column), (3, 15));
+    assert!(e.message.contains("the largest step 0 must be positive"), "{e}");
     let e = refused("t\nR1 a 0 -1\n");
     assert!(e.message.contains("must be positive"), "{e}");
 }
