@@ -219,7 +219,7 @@ fn shockley_diode_follows_its_exponential() {
         let mut jac = Matrix2::zeros();
         diode.force_dv(0.0, &q, &vel, &mut jac);
         let h = 1e-7;
-        let mut f = |dv: f64| {
+        let f = |dv: f64| {
             let mut out = Vector2::zeros();
             diode.force(0.0, &q, &Vector2::new(v + 0.25 + dv, 0.25), &mut out);
             out[0]

@@ -134,6 +134,18 @@ fn compare<S, T>(a: &Solution<Rlc, S>, b: &Solution<Network, T>, bound: f64, wha
     assert!(worst < bound, "{what}: network against derived {worst:e}");
 }
 
+/// Asserts that the network has the derived circuit's outputs, by name, and their values at
+/// the last samples of two runs within 1e-9.
+fn same_outputs<S, T>(derived: &Rlc, network: &Network, a: &Solution<Rlc, S>, b: &Solution<Network, T>) {
+    assert_eq!(network.output_names(), derived.output_names());
+    let (sa, sb) = (a.last().expect("a sample"), b.last().expect("a sample"));
+    let (mut ya, mut yb) = (vec![0.0; derived.output_names().len()], vec![0.0; network.output_names().len()]);
+    derived.outputs(10.0, &sa.q, &sa.v, &sa.lambda, &mut ya);
+    network.outputs(10.0, &sb.q, &sb.v, &sb.lambda, &mut yb);
+    let worst = ya.iter().zip(&yb).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-9, "outputs: {worst:e}");
+}
+
 #[test]
 fn a_network_from_library_parts_follows_the_derived_circuit() {
     let (v, r, l, c) = parts();
@@ -179,13 +191,7 @@ fn a_network_from_library_parts_follows_the_derived_circuit() {
     let refused = Explicit::new(&network, explicit).expect("options").solve(0.0, &net_start, 10.0, &sampling);
     assert!(refused.map(|_| ()).expect_err("refused").to_string().contains("integrate this one with Radau"));
     // The outputs, named by part.
-    assert_eq!(network.output_names(), derived.output_names());
-    let (sa, sb) = (a.last().expect("a sample"), b.last().expect("a sample"));
-    let (mut ya, mut yb) = (vec![0.0; derived.output_names().len()], vec![0.0; network.output_names().len()]);
-    derived.outputs(10.0, &sa.q, &sa.v, &sa.lambda, &mut ya);
-    network.outputs(10.0, &sb.q, &sb.v, &sb.lambda, &mut yb);
-    let worst = ya.iter().zip(&yb).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
-    assert!(worst < 1e-9, "outputs: {worst:e}");
+    same_outputs(&derived, &network, &a, &b);
 }
 
 /// The exact linearisation of a network with an input (a voltage source set while it runs)
@@ -276,13 +282,7 @@ fn joined_ports_share_a_coordinate_and_give_the_same_motion() {
     }
     assert!(worst < 1e-9, "node voltages: {worst:e}");
     // The outputs (the source's current among them), named by part.
-    assert_eq!(network.output_names(), derived.output_names());
-    let (sa, sb) = (a.last().expect("a sample"), b.last().expect("a sample"));
-    let (mut ya, mut yb) = (vec![0.0; derived.output_names().len()], vec![0.0; network.output_names().len()]);
-    derived.outputs(10.0, &sa.q, &sa.v, &sa.lambda, &mut ya);
-    network.outputs(10.0, &sb.q, &sb.v, &sb.lambda, &mut yb);
-    let worst = ya.iter().zip(&yb).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
-    assert!(worst < 1e-9, "outputs: {worst:e}");
+    same_outputs(&derived, &network, &a, &b);
 
     // A part's parameter that is not a number is named with its part when the run starts.
     let mut b = Network::builder();

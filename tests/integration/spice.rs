@@ -2,8 +2,8 @@
 //! a reference written and integrated independently here, the refusals, and a fuzzer.
 
 use dirac::components::electrical::{
-    Capacitor, CoupledInductors, CurrentSource, Ground as Gnd, Resistor, VoltageControlledCurrent,
-    VoltageSource,
+    Capacitor, CoupledInductors, CurrentSource, DampedSineVoltage, Ground as Gnd, Resistor, ShockleyDiode,
+    VoltageControlledCurrent, VoltageSource,
 };
 use dirac::prelude::*;
 use dirac::spice::{self, SpiceError};
@@ -233,20 +233,36 @@ fn subcircuits_expand_to_the_circuit_and_to_its_derived_twin() {
 }
 
 /// A diode clipper: a 50 Hz sine of 2 V behind 1 kΩ, clipped at about ±0.6 V by two Shockley
-/// diodes (a `.model`) back to back across 1 µF.
+/// diodes (a `.model`) back to back across 1 µF, the diodes in a subcircuit.
 const CLIPPER: &str = "diode clipper
 V1 in 0 SIN(0 2 50)
 R1 in out 1k
 C1 out 0 1u
-D1 out 0 dmod
-D2 0 out dmod
+X1 out clamp
+.subckt clamp a
+D1 a 0 dmod
+D2 0 a dmod
+.ends
 .model dmod D(IS=1e-14 N=1)
 .tran 0.5m 40m
 .end
 ";
 
+/// The clipper as a derived interconnection of the same parts.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(v1.p, r1.p), connect(r1.n, c1.p), connect(r1.n, d1.p), connect(r1.n, d2.n))]
+#[dirac(connect(v1.n, ground.p), connect(c1.n, ground.p), connect(d1.n, ground.p), connect(d2.p, ground.p))]
+struct ClipperTwin {
+    v1: DampedSineVoltage,
+    r1: Resistor,
+    c1: Capacitor,
+    d1: ShockleyDiode,
+    d2: ShockleyDiode,
+    ground: Gnd,
+}
+
 #[test]
-fn a_diode_clipper_follows_its_equation() {
+fn a_diode_clipper_in_a_subcircuit_follows_its_equation_and_its_derived_twin() {
     let run =
         spice::parse(CLIPPER).expect("reads").circuit().expect("a circuit").simulate(1e-10).expect("runs");
     // The reference: C v' = (u − v)/R − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1), written here and
@@ -279,6 +295,32 @@ fn a_diode_clipper_follows_its_equation() {
     assert!((0.5..0.75).contains(&peak), "peak {peak}");
     let source = run.column("v(in)").expect("in");
     assert!((source[1] - 2.0 * (std::f64::consts::TAU * 50.0 * 1e-3).sin()).abs() < 1e-12);
+
+    // The derived twin, both at 1e-13: the same trajectory.
+    let circuit = spice::parse(CLIPPER).expect("reads").circuit().expect("a circuit");
+    let run = circuit.simulate(1e-13).expect("runs");
+    let diode = ShockleyDiode { is, n_vt: vt };
+    let twin = ClipperTwin {
+        v1: DampedSineVoltage { offset: 0.0, amplitude: 2.0, f: 50.0, damping: 0.0, phase: 0.0 },
+        r1: Resistor { r },
+        c1: Capacitor { c },
+        d1: diode.clone(),
+        d2: diode,
+        ground: Gnd {},
+    };
+    let q = twin.sizes().zeros_q::<ClipperTwin>();
+    let start = consistent_state(&twin, 0.0, &q, &q, Consistency::default()).expect("consistent");
+    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(1e-13, 1e-13) };
+    let solution = Radau::new(&twin, options)
+        .expect("options")
+        .solve(0.0, &start, 0.04, &Sampling::Times(run.times().to_vec()))
+        .expect("runs");
+    let k = twin.coordinate_names().iter().position(|n| n == "c1.p").expect("a pin");
+    let out = run.column("v(out)").expect("out");
+    let worst = (0..out.len())
+        .map(|i| (out[i] - solution.state(i).expect("a sample").v[k]).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-10, "netlist against derived interconnection: {worst:e}");
 }
 
 /// `.ic` node voltages and inductors' `ic=`: an LC tank rings as cos and sin.
