@@ -30,6 +30,14 @@ pub(super) struct Subckt {
     body: Vec<Vec<Token>>,
 }
 
+/// Where a line's `name=value` parameters start: at `params:`, else at the name before the
+/// first `=`, else at the end.
+fn parameters_start(tokens: &[Token]) -> usize {
+    tokens.iter().position(|t| t.text == "params:").unwrap_or_else(|| {
+        tokens.iter().position(|t| t.text == "=").map_or(tokens.len(), |eq| eq.saturating_sub(1))
+    })
+}
+
 /// Reads `name=value` pairs (a `params:` keyword first is skipped) from `tokens`.
 fn assignments(tokens: &[Token], what: &str) -> Result<Vec<(Token, Token)>, SpiceError> {
     let mut out = Vec::new();
@@ -71,9 +79,7 @@ pub(super) fn subckt(lines: &[Vec<Token>], k: usize) -> Result<(String, Subckt, 
     let head = &lines[k];
     let name = head.get(1).ok_or_else(|| head[0].error("`.subckt` needs a name and its nodes"))?;
     let rest = &head[2..];
-    let split = rest.iter().position(|t| t.text == "params:").unwrap_or_else(|| {
-        rest.iter().position(|t| t.text == "=").map_or(rest.len(), |eq| eq.saturating_sub(1))
-    });
+    let split = parameters_start(rest);
     let ports = rest[..split].to_vec();
     let defaults = assignments(&rest[split..], &format!("`.subckt {}`", name.text))?;
     for (i, p) in ports.iter().enumerate() {
@@ -183,9 +189,7 @@ fn instance(
     out: &mut dyn FnMut(Vec<Token>) -> Result<(), SpiceError>,
 ) -> Result<(), SpiceError> {
     let head = &tokens[0];
-    let split = tokens.iter().position(|t| t.text == "params:").unwrap_or_else(|| {
-        tokens.iter().position(|t| t.text == "=").map_or(tokens.len(), |eq| eq.saturating_sub(1))
-    });
+    let split = parameters_start(tokens);
     if split < 2 {
         return Err(head.error(format!("`{}` needs its nodes and a subcircuit's name", head.text)));
     }
