@@ -912,3 +912,36 @@ fn steps_of_a_netlist_with_joined_nodes_do_not_allocate() {
     let start = circuit.start().expect("consistent");
     assert_eq!(allocations_in_steps(&circuit.network, &start, 1e3), 0, "Radau, a netlist of 10⁴ parts");
 }
+
+/// Sources that follow waveforms set their inputs at every evaluation, and steps end at the
+/// waveforms' corners: neither allocates.
+#[test]
+fn steps_of_a_netlist_driven_by_waveforms_do_not_allocate() {
+    let mut text = String::from("an RC ladder driven by a pulse train and a piecewise-linear current\n");
+    text += "V1 n0 0 PULSE(0 1 0.1 0.05 0.05 0.2 0.5)\nI1 0 n3 PWL(0 0 0.3 1m 0.7 -1m 2 0)\n";
+    text += "V2 m 0 SIN(0 1 2 0.25)\nR0 m n5 1\n";
+    for k in 1..=200 {
+        text += &format!("R{k} n{} n{k} 1\nC{k} n{k} 0 1m\n", k - 1);
+    }
+    text += ".tran 0.01 2\n.end\n";
+    let circuit = dirac::spice::parse(&text).expect("reads").circuit().expect("a circuit");
+    assert!(circuit.is_driven() && circuit.corners().len() > 10);
+    let start = circuit.start().expect("consistent");
+    let mut network = circuit.network.clone();
+    let mut drive = circuit.drive();
+    let mut radau = Radau::new(&mut network, RadauOptions::tolerances(1e-8, 1e-8)).expect("valid options");
+    radau.drive(&mut drive).expect("held exclusively");
+    radau.stop_at(circuit.corners()).expect("finite corners");
+    radau.start(0.0, &start, 2.0).expect("starts");
+    for _ in 0..5 {
+        radau.step().expect("steps");
+    }
+    let before = allocations();
+    let mut steps = 0;
+    while !radau.finished() {
+        radau.step().expect("steps");
+        steps += 1;
+    }
+    assert_eq!(allocations() - before, 0, "Radau, a netlist driven by waveforms, {steps} steps");
+    assert!(steps > circuit.corners().len(), "{steps} steps past {} corners", circuit.corners().len());
+}

@@ -10,11 +10,14 @@ use crate::components::electrical::{
     VoltageControlledCurrent, VoltageSource,
 };
 use crate::network::{Network, NetworkBuilder, NetworkError};
+use crate::runtime::Held;
 use crate::{
-    Consistency, ErrorNorm, Integrator, LagrangeDirac, Named, Radau, RadauOptions, Sampling, consistent_state,
+    Consistency, Drive, ErrorNorm, InputsOutputs, Integrator, LagrangeDirac, Named, Radau, RadauOptions,
+    Sampling, State, consistent_state,
 };
 
 use super::expand::is_ground;
+use super::wave::Wave;
 use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
 
 /// A netlist's circuit: its network, where each node's voltage is read, its initial state and
@@ -31,6 +34,10 @@ pub struct Circuit {
     q0: Vec<f64>,
     v0: Vec<f64>,
     tran: Option<Tran>,
+    /// The sources that follow a waveform: the network input each sets, and the waveform.
+    drives: Vec<(usize, Wave)>,
+    /// Where the waveforms bend within the `.tran`, sorted: each step ends at one it reaches.
+    corners: Vec<f64>,
 }
 
 /// The thermal voltage `k T / q` at SPICE's default temperature, 27 °C (CODATA 2018's exact
@@ -250,7 +257,9 @@ impl Netlist {
                 pins[node(n)].push(format!("{part}.{pin}"));
             }
         };
-        let (mut currents, mut windings) = (Vec::new(), Vec::new());
+        let (mut currents, mut windings, mut driven) = (Vec::new(), Vec::new(), Vec::new());
+        let tran = self.tran().map(|t| (t.step, t.stop));
+        let mut corners = Vec::new();
         for e in &self.elements {
             let n = &e.nodes;
             let added = match &e.kind {
@@ -267,10 +276,27 @@ impl Netlist {
                 }
                 Kind::Current(i) => add(&mut b, e, CurrentSource { i: *i }),
                 Kind::Vccs(gm) => add(&mut b, e, VoltageControlledCurrent { gm: *gm }),
-                Kind::Sine([offset, amplitude, f, damping, phase]) => {
-                    currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
-                    let (offset, amplitude, f, damping, phase) = (*offset, *amplitude, *f, *damping, *phase);
-                    add(&mut b, e, DampedSineVoltage { offset, amplitude, f, damping, phase })
+                Kind::Source { current, wave } => {
+                    let wave = wave.resolved(tran, &e.token, &e.name)?;
+                    if let Some((_, stop)) = tran {
+                        wave.corners(stop, &e.token, &e.name, &mut corners)?;
+                    }
+                    let u = wave.at(0.0);
+                    match (current, wave.smooth_sine()) {
+                        (false, Some([offset, amplitude, f, damping, phase])) => {
+                            currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                            add(&mut b, e, DampedSineVoltage { offset, amplitude, f, damping, phase })
+                        }
+                        (false, None) => {
+                            currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                            driven.push((format!("{}.u", e.name), wave));
+                            add(&mut b, e, VoltageSource { u })
+                        }
+                        (true, _) => {
+                            driven.push((format!("{}.i", e.name), wave));
+                            add(&mut b, e, CurrentSource { i: u })
+                        }
+                    }
                 }
                 Kind::Diode(model) => {
                     let Some(&(is, n)) = self.models.get(&model.text) else {
@@ -377,7 +403,14 @@ impl Netlist {
             }
         }
         let columns = self.columns(&nodes, &currents)?;
-        Ok(Circuit { network, nodes, columns, q0, v0, tran: self.tran().cloned() })
+        let inputs = if driven.is_empty() { Vec::new() } else { network.input_names() };
+        let drives = driven
+            .into_iter()
+            .map(|(input, wave)| (inputs.iter().position(|n| *n == input).expect("a source's input"), wave))
+            .collect();
+        corners.sort_by(f64::total_cmp);
+        corners.dedup();
+        Ok(Circuit { network, nodes, columns, q0, v0, tran: self.tran().cloned(), drives, corners })
     }
 
     /// The columns to record: those `.save` and `.print` ask for, in their order, or if none
@@ -441,8 +474,12 @@ impl Netlist {
             let n = &e.nodes;
             match e.kind {
                 Kind::Coupling { .. } => Vec::new(),
-                Kind::Voltage(_) | Kind::Sine(_) => vec![(node(&n[0]), node(&n[1]), true, false)],
-                Kind::Current(_) => vec![(node(&n[0]), node(&n[1]), false, true)],
+                Kind::Voltage(_) | Kind::Source { current: false, .. } => {
+                    vec![(node(&n[0]), node(&n[1]), true, false)]
+                }
+                Kind::Current(_) | Kind::Source { current: true, .. } => {
+                    vec![(node(&n[0]), node(&n[1]), false, true)]
+                }
                 // The output branch is a source; the control pins draw no current and tie nothing.
                 Kind::Vccs(_) => vec![(node(&n[0]), node(&n[1]), false, true)],
                 _ => vec![(node(&n[0]), node(&n[1]), false, false)],
@@ -482,8 +519,10 @@ impl Netlist {
                     .elements
                     .iter()
                     .find(|e| {
-                        matches!(e.kind, Kind::Current(_) | Kind::Vccs(_))
-                            && e.nodes.iter().take(2).any(|x| passive.find(node(x)) == root)
+                        matches!(
+                            e.kind,
+                            Kind::Current(_) | Kind::Vccs(_) | Kind::Source { current: true, .. }
+                        ) && e.nodes.iter().take(2).any(|x| passive.find(node(x)) == root)
                     })
                     .expect("only current sources join the parts the passive branches leave apart");
                 return Err(e.token.error(format!(
@@ -537,6 +576,46 @@ impl Circuit {
         })
     }
 
+    /// Whether a source follows a waveform (`PULSE`, `PWL`, or a `SIN` with a delay or on a
+    /// current source): its input is then set by [`drive`](Self::drive) while the circuit runs.
+    pub fn is_driven(&self) -> bool {
+        !self.drives.is_empty()
+    }
+
+    /// Sets the inputs of the sources that follow a waveform to their values at `t`: give it to
+    /// an integrator's [`Drive::drive`], with [`corners`](Self::corners) to
+    /// [`Drive::stop_at`], to integrate the network with an integrator of one's own (on
+    /// `&mut` a clone of [`network`](Self::network)). It does not allocate.
+    ///
+    /// ```
+    /// use dirac::prelude::*;
+    ///
+    /// let text = "an RC pulse\nV1 in 0 PULSE(0 1 1m 0.1m 0.1m 2m 5m)\nR1 in out 1k\nC1 out 0 1u\n.tran 0.1m 10m\n";
+    /// let circuit = dirac::spice::parse(text)?.circuit()?;
+    /// let start = circuit.start()?;
+    /// let mut network = circuit.network.clone();
+    /// let mut drive = circuit.drive();
+    /// let mut radau = Radau::new(&mut network, RadauOptions::tolerances(1e-8, 1e-8))?;
+    /// radau.drive(&mut drive)?;
+    /// radau.stop_at(circuit.corners())?;
+    /// let run = radau.solve(0.0, &start, 10e-3, &Sampling::Every(1e-3))?;
+    /// assert_eq!(run.len(), 11);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn drive(&self) -> impl FnMut(f64, &State<Network>, &mut Network) + '_ {
+        move |t, _, network| {
+            for (k, wave) in &self.drives {
+                network.set_input_value(*k, wave.at(t));
+            }
+        }
+    }
+
+    /// The instants within the `.tran` where a source's waveform bends (a pulse's edges, a
+    /// `PWL`'s points, a `SIN`'s delay), sorted: a run ends a step at each.
+    pub fn corners(&self) -> &[f64] {
+        &self.corners
+    }
+
     /// [`simulate`](Self::simulate), calling `progress` after every step with the time reached
     /// and the number of steps taken: for a progress line on long runs.
     pub fn simulate_observed(
@@ -567,8 +646,20 @@ impl Circuit {
         if times.last().is_some_and(|&t| t < tran.stop) {
             times.push(tran.stop);
         }
-        let mut radau =
-            Radau::new(&self.network, options).map_err(|e| tran.token.error(format!("`.tran`: {e}")))?;
+        // Sources that follow a waveform set their inputs before every evaluation, and every
+        // step ends at the waveforms' corners; they need a network of their own to set.
+        let mut owned = (!self.drives.is_empty()).then(|| self.network.clone());
+        let model: Held<'_, Network> = match &mut owned {
+            Some(network) => network.into(),
+            None => (&self.network).into(),
+        };
+        let mut drive = self.drive();
+        let rejected = |e: crate::SimError| tran.token.error(format!("`.tran`: {e}"));
+        let mut radau = Radau::new(model, options).map_err(rejected)?;
+        if !self.drives.is_empty() {
+            radau.drive(&mut drive).map_err(rejected)?;
+            radau.stop_at(self.corners()).map_err(rejected)?;
+        }
         let mut steps = 0;
         let solution = radau
             .solve_observed(0.0, &start, tran.stop, &Sampling::Times(times), |t, _| {
@@ -577,6 +668,7 @@ impl Circuit {
                 std::ops::ControlFlow::Continue(())
             })
             .map_err(|e| error("the simulation", e))?;
+        drop(radau);
         let names: Vec<String> = self.columns.iter().map(|(n, _)| n.clone()).collect();
         let mut columns: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
         let mut outputs = vec![0.0; self.network.output_names().len()];
@@ -588,7 +680,14 @@ impl Circuit {
                 continue;
             }
             sample_times.push(t);
-            self.network.outputs(t, &s.q, &s.v, &s.lambda, &mut outputs);
+            let network = match &mut owned {
+                Some(network) => {
+                    drive(t, &s, network);
+                    &*network
+                }
+                None => &self.network,
+            };
+            network.outputs(t, &s.q, &s.v, &s.lambda, &mut outputs);
             for (column, (_, at)) in columns.iter_mut().zip(&self.columns) {
                 column.push(match *at {
                     Column::Rate(c) => s.v[c],

@@ -10,9 +10,14 @@
 //! unknown per node, plus a row per voltage source (whose multiplier is its current).
 //!
 //! Supported:
-//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), DC `V` and `I` sources, `SIN`
-//!   voltage sources without a delay, `G` (voltage-controlled current sources), `D` (Shockley
-//!   diodes, `.model name D(IS=… N=…)`, at 27 °C);
+//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), `G` (voltage-controlled current
+//!   sources), `D` (Shockley diodes, `.model name D(IS=… N=…)`, at 27 °C);
+//! - `V` and `I` sources: `[DC] value`, then optionally `PULSE(V1 V2 TD TR TF PW PER NP)`,
+//!   `PWL(T1 V1 T2 V2 … [TD=delay])` or `SIN(VO VA FREQ TD THETA PHASE)`, as ngspice defines
+//!   them (a zero rise or fall time is the `.tran` step, a zero width or period its stop time).
+//!   A run ends a step at each corner of a waveform (a pulse's edges, a `PWL`'s points, a
+//!   `SIN`'s delay), so no step straddles one: [`Circuit::drive`] and [`Circuit::corners`]
+//!   give both to an integrator of one's own;
 //! - `.param name=value …`, values as expressions in braces or quotes (`{2*r}`, `'sqrt(l*c)'`,
 //!   with `+ - * / ^`, parentheses, `pi` and the usual functions);
 //! - `.subckt name ports… [params:] p=default …` … `.ends`, instantiated by
@@ -42,6 +47,7 @@
 mod build;
 mod expand;
 mod read;
+mod wave;
 
 pub use self::build::{Circuit, Waveforms};
 
@@ -97,9 +103,11 @@ enum Kind {
         k: f64,
     },
     Voltage(f64),
-    /// `SIN(offset amplitude f 0 damping phase°)` without a delay, as `(offset, amplitude, f,
-    /// damping, phase in radians)`.
-    Sine([f64; 5]),
+    /// A voltage source (or with `current`, a current source) following a waveform.
+    Source {
+        current: bool,
+        wave: wave::Wave,
+    },
     /// A diode and its `.model`'s name.
     Diode(Token),
     Current(f64),

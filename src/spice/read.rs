@@ -4,6 +4,7 @@
 use std::collections::HashMap;
 
 use super::expand::{self, Frame, Scope};
+use super::wave::Wave;
 use super::{Command, Element, Kind, Netlist, Probe, SpiceError, Tran};
 
 /// A token and where it starts (1-based line and column).
@@ -297,52 +298,36 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             Kind::Coupling { a: a.clone(), b: b.clone(), k }
         }
         'v' | 'i' => {
+            // `[DC] value`, then optionally a time function (`PULSE`, `PWL`, `SIN`), which the
+            // transient follows from t = 0 (the DC value is the operating point's).
             let nodes = nodes(2)?;
-            let mut k = 3;
+            let (mut k, mut value) = (3, 0.0);
             if tokens.get(k).is_some_and(|t| t.text == "dc") {
+                value = number(at(tokens, k + 1, "a DC value")?)?;
+                k += 2;
+            } else if let Some(t) = tokens.get(k)
+                && t.text.starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-' || c == '+')
+            {
+                value = number(t)?;
                 k += 1;
             }
-            let value = match tokens.get(k) {
-                None => 0.0,
-                Some(t)
-                    if t.text
-                        .starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-' || c == '+') =>
-                {
-                    k += 1;
-                    number(t)?
-                }
-                Some(t) if t.text == "sin" && first == 'v' => {
-                    // SIN(VO VA FREQ TD THETA PHASE), the phase in degrees.
-                    let values: Vec<f64> = tokens[k + 1..].iter().map(number).collect::<Result<_, _>>()?;
-                    if !(3..=6).contains(&values.len()) {
-                        return Err(t.error(format!(
-                            "`{name}`: `SIN` takes 3 to 6 values: VO VA FREQ [TD THETA PHASE]"
-                        )));
-                    }
-                    let get = |j: usize| values.get(j).copied().unwrap_or(0.0);
-                    if get(3) != 0.0 {
-                        return Err(tokens[k + 4].error(format!(
-                            "`{name}`: a `SIN` delay is not supported yet (a network does not locate its start)"
-                        )));
-                    }
-                    if get(4) < 0.0 {
-                        return Err(
-                            tokens[k + 5].error(format!("`{name}`: the damping must not be negative"))
-                        );
-                    }
-                    let kind = Kind::Sine([get(0), get(1), get(2), get(4), get(5).to_radians()]);
-                    return Ok(Element { name, nodes, kind, token: head.clone() });
+            let wave = match tokens.get(k) {
+                None => None,
+                Some(t) if matches!(t.text.as_str(), "pulse" | "pwl" | "sin") => {
+                    Some(Wave::read(&name, t, &tokens[k + 1..])?)
                 }
                 Some(t) => {
                     return Err(t.error(format!(
-                        "`{name}`: the source `{}` is not supported (DC values{} are)",
-                        t.text,
-                        if first == 'v' { " and `SIN` without a delay" } else { "" }
+                        "`{name}`: `{}` is not supported here (a DC value and `PULSE`, `PWL` or `SIN` are)",
+                        t.text
                     )));
                 }
             };
-            extra(k)?;
-            let kind = if first == 'v' { Kind::Voltage(value) } else { Kind::Current(value) };
+            let kind = match (first, wave) {
+                (_, Some(wave)) => Kind::Source { current: first == 'i', wave },
+                ('v', None) => Kind::Voltage(value),
+                _ => Kind::Current(value),
+            };
             return Ok(Element { name, nodes, kind, token: head.clone() });
         }
         'd' => {

@@ -30,47 +30,132 @@ R4 f gnd 2
 .end
 ";
 
-/// The reference: the circuit's equations written by hand in its natural state (inductor
-/// currents i1, i2, capacitor voltages vc, ve) and integrated by the classical Runge-Kutta
-/// method with 10⁵ steps (error of order h⁴ ≈ 1e-17 per unit time, far below the comparison).
+/// The waveforms of the bending sources of `IN_SUBCIRCUITS`, written here from ngspice's
+/// manual (§4.1.1–4.1.4): `PULSE(0 1 0.5 0.25 0.5 1 2.5 2)`, `PWL(0 0 1 0.5 2 -0.25 3.5 0.1)`
+/// and `SIN(0.2 1 0.5 1.5 0.3 45)`.
+fn pulse(t: f64) -> f64 {
+    let x = t - 0.5;
+    let (n, x) = ((x / 2.5).floor(), x.rem_euclid(2.5));
+    if x < 0.0 || t < 0.5 || n >= 2.0 || x >= 1.75 {
+        0.0
+    } else if x < 0.25 {
+        x / 0.25
+    } else if x <= 1.25 {
+        1.0
+    } else {
+        1.0 - (x - 1.25) / 0.5
+    }
+}
+
+fn pwl(t: f64) -> f64 {
+    let points = [(0.0, 0.0), (1.0, 0.5), (2.0, -0.25), (3.5, 0.1)];
+    match points.windows(2).find(|w| t <= w[1].0) {
+        Some(w) => w[0].1 + (w[1].1 - w[0].1) * (t - w[0].0) / (w[1].0 - w[0].0),
+        None => 0.1,
+    }
+}
+
+fn delayed_sine(t: f64) -> f64 {
+    let phase = std::f64::consts::FRAC_PI_4;
+    if t <= 1.5 {
+        0.2 + phase.sin()
+    } else {
+        0.2 + (-0.3 * (t - 1.5)).exp() * (std::f64::consts::PI * (t - 1.5) + phase).sin()
+    }
+}
+
+/// The instants where those waveforms bend.
+const CORNERS: [f64; 12] = [0.5, 0.75, 1.0, 1.5, 1.75, 2.0, 2.25, 3.0, 3.25, 3.5, 4.25, 4.75];
+
+/// The thermal voltage at 27 °C, from CODATA's exact Boltzmann constant and elementary charge.
+const VT: f64 = 1.380_649e-23 * 300.15 / 1.602_176_634e-19;
+
+/// The reference: the circuits' equations written by hand in their natural state (inductor
+/// currents i1, i2, capacitor voltages) and integrated by the classical Runge-Kutta method
+/// with 10⁵ steps, every corner of the waveforms on a step's end (error of order h⁴ ≈ 1e-17
+/// per unit time, far below the comparison).
 ///
 /// With M = 0.5 √(L1 L2): v(a) = 1 − R1 i1 and node b's current balance v(b) = v(c) − R2 i2
 /// give `[L1 M; M L2] (i1', i2') = (1 − i1, v(c) − 2 i2)`; node c:
 /// `C1 vc' = −i2 + 0.3 − (vc − ve) / R3`; node e: `C2 ve' = (vc − ve) / R3`; node f:
-/// `v(f) = 0.5 ve · R4`.
-fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 6]> {
+/// `v(f) = 0.5 ve · R4`. `IN_SUBCIRCUITS` adds circuits of their own: the clipper
+/// `C6 v' = (2 sin πt − v)/R8 − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1)` at node out, and
+/// `C3 v(q)' = pulse − v(q)`, `C4 v(r)' = pwl − v(r)/2`, `C5 v(w)' = sine − v(w)` at nodes q,
+/// r, w. Each sample: the columns `REFERENCE_COLUMNS` name.
+fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 12]> {
     let (l1, l2, r3, c2): (f64, f64, f64, f64) = (1.0, 2.0, 1e3, 1e-3);
     let m = 0.5 * (l1 * l2).sqrt();
     let det = l1 * l2 - m * m;
-    let f = |x: [f64; 4]| -> [f64; 4] {
-        let [i1, i2, vc, ve] = x;
+    let diode = |v: f64| 1e-14 * ((v / VT).exp() - 1.0);
+    let f = |t: f64, x: [f64; 8]| -> [f64; 8] {
+        let [i1, i2, vc, ve, out, q, r, w] = x;
         let (r1, r2) = (1.0 - i1, vc - 2.0 * i2);
         let ie = (vc - ve) / r3;
-        [(l2 * r1 - m * r2) / det, (l1 * r2 - m * r1) / det, (-i2 + 0.3 - ie) / 0.5, ie / c2]
+        let clipped =
+            ((2.0 * (std::f64::consts::PI * t).sin() - out) / 1e3 - diode(out) + diode(-out)) / 1e-3;
+        [
+            (l2 * r1 - m * r2) / det,
+            (l1 * r2 - m * r1) / det,
+            (-i2 + 0.3 - ie) / 0.5,
+            ie / c2,
+            clipped,
+            pulse(t) - q,
+            (pwl(t) - r / 2.0) / 0.5,
+            (delayed_sine(t) - w) / 0.25,
+        ]
     };
     let steps = 100_000;
     let h = t_end / steps as f64;
-    let (mut x, mut out, mut next) = ([0.0; 4], Vec::new(), 0);
+    let (mut x, mut out, mut next) = ([0.0; 8], Vec::new(), 0);
     for k in 0..=steps {
         let t = k as f64 * h;
         while next < samples.len() && (samples[next] - t).abs() < 0.5 * h {
-            let [i1, i2, vc, ve] = x;
-            // v(a), v(b), v(c), v(e), v(f), and the source's current into its + pin.
-            out.push([1.0 - i1, vc - 2.0 * i2, vc, ve, 0.5 * ve * 2.0, -i1]);
+            let [i1, i2, vc, ve, o, q, r, w] = x;
+            out.push([
+                1.0 - i1,
+                vc - 2.0 * i2,
+                vc,
+                ve,
+                0.5 * ve * 2.0,
+                -i1,
+                o,
+                q,
+                r,
+                w,
+                q - pulse(t),
+                w - delayed_sine(t),
+            ]);
             next += 1;
         }
-        let add = |a: [f64; 4], b: [f64; 4], s: f64| {
-            [a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2], a[3] + s * b[3]]
-        };
-        let k1 = f(x);
-        let k2 = f(add(x, k1, 0.5 * h));
-        let k3 = f(add(x, k2, 0.5 * h));
-        let k4 = f(add(x, k3, h));
-        for j in 0..4 {
+        let add = |a: [f64; 8], b: [f64; 8], s: f64| std::array::from_fn(|j| a[j] + s * b[j]);
+        let k1 = f(t, x);
+        let k2 = f(t + 0.5 * h, add(x, k1, 0.5 * h));
+        let k3 = f(t + 0.5 * h, add(x, k2, 0.5 * h));
+        let k4 = f(t + h, add(x, k3, h));
+        for j in 0..8 {
             x[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
         }
     }
     out
+}
+
+/// The columns of `reference`'s samples, by name.
+const REFERENCE_COLUMNS: [&str; 12] =
+    ["v(a)", "v(b)", "v(c)", "v(e)", "v(f)", "i(v1)", "v(out)", "v(q)", "v(r)", "v(w)", "i(v2)", "i(v3)"];
+
+/// The largest difference between a run's `columns` and the reference's.
+fn worst_against_reference(run: &spice::Waveforms, columns: &[&str], t_end: f64) -> f64 {
+    let expected = reference(t_end, run.times());
+    let mut worst: f64 = 0.0;
+    for name in columns {
+        let k = REFERENCE_COLUMNS.iter().position(|c| c == name).expect("a reference column");
+        let column = run.column(name).unwrap_or_else(|| panic!("a column {name}"));
+        assert_eq!(column.len(), expected.len());
+        for (i, x) in column.iter().enumerate() {
+            worst = worst.max((x - expected[i][k]).abs());
+        }
+    }
+    worst
 }
 
 #[test]
@@ -82,15 +167,7 @@ fn a_netlist_with_every_element_follows_its_equations() {
     assert_eq!(nodes, ["0", "in", "a", "b", "c", "e", "f"]);
     let run = circuit.simulate(1e-10).expect("simulates");
     assert_eq!(run.times().len(), 50);
-    let expected = reference(5.0, run.times());
-    let columns = ["v(a)", "v(b)", "v(c)", "v(e)", "v(f)", "i(v1)"];
-    let mut worst: f64 = 0.0;
-    for (k, name) in columns.iter().enumerate() {
-        let column = run.column(name).unwrap_or_else(|| panic!("a column {name}"));
-        for (i, x) in column.iter().enumerate() {
-            worst = worst.max((x - expected[i][k]).abs());
-        }
-    }
+    let worst = worst_against_reference(&run, &REFERENCE_COLUMNS[..6], 5.0);
     assert!(worst < 1e-8, "largest difference to the reference {worst:e}");
     assert!((run.column("v(in)").expect("the source's node")[10] - 1.0).abs() < 1e-12);
     let mut csv = Vec::new();
@@ -100,9 +177,12 @@ fn a_netlist_with_every_element_follows_its_equations() {
     assert_eq!(csv.lines().count(), 51);
 }
 
-/// The same circuit with its transformer and its RC stage in subcircuits (the stage inside
-/// another, its resistor split in two around an inner node), its values from `.param`s,
-/// defaults and instance parameters, some as expressions.
+/// One netlist with every supported element and subcircuits: the circuit of `EVERY_ELEMENT`
+/// with its transformer and its RC stage in subcircuits (the stage inside another, its
+/// resistor split in two around an inner node), its values from `.param`s, defaults and
+/// instance parameters, some as expressions; beside it, a sine clipped by two Shockley diodes
+/// in a subcircuit, and RC circuits driven by a pulse train, a piecewise-linear current and a
+/// delayed damped sine.
 const IN_SUBCIRCUITS: &str = "every supported element, in subcircuits
 .param rs=1 half={rs/2}
 .subckt transformer p s params: lp=1 ls=1 k=0.5
@@ -118,6 +198,11 @@ C2 out 0 {c}
 .subckt wrap a b r=1k
 Xs a b stage params: r={r} c=1m
 .ends wrap
+.subckt clamp a
+D1 a 0 dmod
+D2 0 a dmod
+.ends
+.model dmod D(IS=1e-14 N=1)
 V1 in 0 DC 1
 R1 in a {rs}
 X1 a b transformer params: ls={2*rs}
@@ -128,13 +213,31 @@ I1 0 c
 X2 c e wrap
 G1 0 f e 0 0.5
 R4 f gnd 2
+* a sine clipped by two diodes
+V4 in2 0 SIN(0 2 0.5)
+R8 in2 out 1k
+C6 out 0 1m
+X3 out clamp
+* sources that bend: a pulse train, a piecewise-linear current, a delayed damped sine
+V2 p 0 PULSE(0 1 0.5 0.25 0.5 1 2.5 2)
+R5 p q 1
+C3 q 0 1
+I2 0 r PWL(0 0 1 0.5 2 -0.25 3.5 0.1)
+R6 r 0 2
+C4 r 0 0.5
+V3 s 0 DC 0 SIN(0.2 1 0.5 1.5 0.3 45)
+R7 s w 1
+C5 w 0 0.25
 .tran 0.1 5
 .end
 ";
 
 /// The circuit of `IN_SUBCIRCUITS` written as a derived interconnection of the same library
-/// parts, node by node (the inner node `mid` between `r3a` and `r3b`).
+/// parts, node by node (the inner node `mid` between `r3a` and `r3b`). Its 52 pins and 38
+/// connections take more stack than dirac allows without asking: `large`, run on a thread with
+/// a larger stack.
 #[derive(Interconnection, Clone)]
+#[dirac(large)]
 #[dirac(connect(v1.p, r1.p))]
 #[dirac(connect(r1.n, t.p1))]
 #[dirac(connect(t.p2, r2.p))]
@@ -145,6 +248,12 @@ R4 f gnd 2
 #[dirac(connect(v1.n, ground.p), connect(t.n1, ground.p), connect(t.n2, ground.p))]
 #[dirac(connect(c1.n, ground.p), connect(i1.p, ground.p), connect(c2.n, ground.p))]
 #[dirac(connect(g1.p2, ground.p), connect(g1.n1, ground.p), connect(r4.n, ground.p))]
+#[dirac(connect(v4.p, r8.p), connect(r8.n, c6.p), connect(r8.n, d1.p), connect(r8.n, d2.n))]
+#[dirac(connect(v4.n, ground.p), connect(c6.n, ground.p), connect(d1.n, ground.p), connect(d2.p, ground.p))]
+#[dirac(connect(v2.p, r5.p), connect(r5.n, c3.p), connect(v2.n, ground.p), connect(c3.n, ground.p))]
+#[dirac(connect(i2.n, r6.p), connect(i2.n, c4.p))]
+#[dirac(connect(i2.p, ground.p), connect(r6.n, ground.p), connect(c4.n, ground.p))]
+#[dirac(connect(v3.p, r7.p), connect(r7.n, c5.p), connect(v3.n, ground.p), connect(c5.n, ground.p))]
 struct Twin {
     v1: VoltageSource,
     r1: Resistor,
@@ -157,28 +266,40 @@ struct Twin {
     c2: Capacitor,
     g1: VoltageControlledCurrent,
     r4: Resistor,
+    v4: DampedSineVoltage,
+    r8: Resistor,
+    c6: Capacitor,
+    d1: ShockleyDiode,
+    d2: ShockleyDiode,
+    v2: VoltageSource,
+    r5: Resistor,
+    c3: Capacitor,
+    i2: CurrentSource,
+    r6: Resistor,
+    c4: Capacitor,
+    v3: VoltageSource,
+    r7: Resistor,
+    c5: Capacitor,
     ground: Gnd,
 }
 
 #[test]
-fn subcircuits_expand_to_the_circuit_and_to_its_derived_twin() {
+fn one_netlist_with_every_element_and_subcircuits_follows_its_equations_and_its_derived_twin() {
+    let run = std::thread::Builder::new().stack_size(64 << 20).spawn(every_element_in_subcircuits);
+    run.expect("a thread").join().expect("the netlist and its twin run");
+}
+
+fn every_element_in_subcircuits() {
     let circuit = spice::parse(IN_SUBCIRCUITS).expect("reads").circuit().expect("a circuit");
     let nodes: Vec<&str> = circuit.nodes().collect();
-    assert_eq!(nodes, ["0", "in", "a", "b", "c", "x2:xs:mid", "e", "f"]);
+    assert_eq!(nodes[..8], ["0", "in", "a", "b", "c", "x2:xs:mid", "e", "f"]);
     let names = circuit.network.part_names();
-    for name in ["k:x1:k1", "r:x2:xs:r3", "r:x2:xs:r3b", "c:x2:xs:c2", "g1"] {
+    for name in ["k:x1:k1", "r:x2:xs:r3", "r:x2:xs:r3b", "c:x2:xs:c2", "g1", "d:x3:d2", "v2", "i2"] {
         assert!(names.iter().any(|n| n == name), "a part `{name}` in {names:?}");
     }
-    // The reference of the flat netlist: the hand-written equations, integrated by RK4.
+    // The reference: the hand-written equations, integrated by RK4.
     let run = circuit.simulate(1e-10).expect("simulates");
-    let expected = reference(5.0, run.times());
-    let columns = ["v(a)", "v(b)", "v(c)", "v(e)", "v(f)", "i(v1)"];
-    let mut worst: f64 = 0.0;
-    for (k, name) in columns.iter().enumerate() {
-        for (i, x) in run.column(name).expect("a column").iter().enumerate() {
-            worst = worst.max((x - expected[i][k]).abs());
-        }
-    }
+    let worst = worst_against_reference(&run, &REFERENCE_COLUMNS, 5.0);
     assert!(worst < 1e-8, "largest difference to the reference {worst:e}");
     // The inner node sits halfway between c and e.
     let (vc, ve, mid) = (
@@ -189,15 +310,23 @@ fn subcircuits_expand_to_the_circuit_and_to_its_derived_twin() {
     for i in 0..mid.len() {
         assert!((mid[i] - 0.5 * (vc[i] + ve[i])).abs() < 1e-9);
     }
+    // The sources' nodes carry their waveforms, to the tolerance: a sample between a step's
+    // ends is read from its collocation polynomial.
+    let (p, s) = (run.column("v(p)").expect("p"), run.column("v(s)").expect("s"));
+    for (i, &t) in run.times().iter().enumerate() {
+        let (dp, ds) = ((p[i] - pulse(t)).abs(), (s[i] - delayed_sine(t)).abs());
+        assert!(dp < 1e-8 && ds < 1e-8, "t = {t}: {dp:e}, {ds:e}");
+    }
 
-    // The derived twin, integrated alike: the same trajectory. The netlist's nodes are joined
+    // The derived twin, integrated alike, its bending sources driven by the waveforms above
+    // with a stop at each corner: the same trajectory. The netlist's nodes are joined
     // coordinates and the twin's are connection rows, so the step sequences differ and each
-    // run carries its own global error; at 1e-13 both are within 1e-10 of each other (at
-    // 1e-12 they differ by 1.6e-10).
+    // run carries its own global error; at 1e-13 both are within 1e-10 of each other.
     let tol = 1e-13;
     let run = circuit.simulate(tol).expect("simulates");
     let m = 0.5 * 2f64.sqrt();
-    let twin = Twin {
+    let diode = ShockleyDiode { is: 1e-14, n_vt: VT };
+    let mut twin = Twin {
         v1: VoltageSource { u: 1.0 },
         r1: Resistor { r: 1.0 },
         t: CoupledInductors { l1: 1.0, l2: 2.0, m },
@@ -209,18 +338,50 @@ fn subcircuits_expand_to_the_circuit_and_to_its_derived_twin() {
         c2: Capacitor { c: 1e-3 },
         g1: VoltageControlledCurrent { gm: 0.5 },
         r4: Resistor { r: 2.0 },
+        v4: DampedSineVoltage { offset: 0.0, amplitude: 2.0, f: 0.5, damping: 0.0, phase: 0.0 },
+        r8: Resistor { r: 1e3 },
+        c6: Capacitor { c: 1e-3 },
+        d1: diode.clone(),
+        d2: diode,
+        v2: VoltageSource { u: pulse(0.0) },
+        r5: Resistor { r: 1.0 },
+        c3: Capacitor { c: 1.0 },
+        i2: CurrentSource { i: pwl(0.0) },
+        r6: Resistor { r: 2.0 },
+        c4: Capacitor { c: 0.5 },
+        v3: VoltageSource { u: delayed_sine(0.0) },
+        r7: Resistor { r: 1.0 },
+        c5: Capacitor { c: 0.25 },
         ground: Gnd {},
     };
+    let inputs = twin.input_names();
+    let input = |name: &str| inputs.iter().position(|n| n == name).expect("an input");
+    let (u2, i2, u3) = (input("v2.u"), input("i2.i"), input("v3.u"));
     let q = twin.sizes().zeros_q::<Twin>();
     let start = consistent_state(&twin, 0.0, &q, &q, Consistency::default()).expect("consistent");
-    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };
-    let solution = Radau::new(&twin, options)
-        .expect("options")
-        .solve(0.0, &start, 5.0, &Sampling::Times(run.times().to_vec()))
-        .expect("runs");
     let names = twin.coordinate_names();
+    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };
+    let mut drive = |t: f64, _: &State<Twin>, twin: &mut Twin| {
+        twin.set_input_value(u2, pulse(t));
+        twin.set_input_value(i2, pwl(t));
+        twin.set_input_value(u3, delayed_sine(t));
+    };
+    let mut radau = Radau::new(&mut twin, options).expect("options");
+    radau.drive(&mut drive).expect("a drive");
+    radau.stop_at(&CORNERS).expect("stops");
+    let solution = radau.solve(0.0, &start, 5.0, &Sampling::Times(run.times().to_vec())).expect("runs");
     let at = |pin: &str| names.iter().position(|n| n == pin).expect("a pin");
-    let pins = [("v(a)", "r1.n"), ("v(b)", "r2.p"), ("v(c)", "c1.p"), ("v(e)", "c2.p"), ("v(f)", "r4.p")];
+    let pins = [
+        ("v(a)", "r1.n"),
+        ("v(b)", "r2.p"),
+        ("v(c)", "c1.p"),
+        ("v(e)", "c2.p"),
+        ("v(f)", "r4.p"),
+        ("v(out)", "c6.p"),
+        ("v(q)", "c3.p"),
+        ("v(r)", "c4.p"),
+        ("v(w)", "c5.p"),
+    ];
     let mut worst: f64 = 0.0;
     for (column, pin) in pins {
         let (k, values) = (at(pin), run.column(column).expect("a column"));
@@ -353,9 +514,12 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     let e = refused("t\n.model dmod D(IS=1e-14 CJO=2p)\nR1 a 0 1\nD1 a 0 dmod\n");
     assert_eq!((e.line, e.column), (2, 24));
     assert!(e.message.contains("`cjo` is not supported"), "{e}");
-    let e = refused("t\nV1 a 0 SIN(0 1 1k 1m)\nR1 a 0 1\n");
-    assert_eq!((e.line, e.column), (2, 19));
-    assert!(e.message.contains("delay is not supported"), "{e}");
+    let e = refused("t\nV1 a 0 PWL(0 0 1m 1 r=0)\nR1 a 0 1\n");
+    assert_eq!((e.line, e.column), (2, 21));
+    assert!(e.message.contains("a repeated `PWL` (`r=`) is not supported"), "{e}");
+    let e = refused("t\nV1 a 0 AC 1\nR1 a 0 1\n");
+    assert_eq!((e.line, e.column), (2, 8));
+    assert!(e.message.contains("`ac` is not supported here"), "{e}");
     let e = refused("t\nR1 a 0 1\n  .subckt amp a b\nR2 a b 1\n");
     assert_eq!((e.line, e.column), (3, 3));
     assert!(e.message.contains("`.subckt amp` has no `.ends`"), "{e}");
@@ -373,9 +537,12 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     let e = refused("t\n.param r=2\nR1 a 0 {r*s}\n");
     assert_eq!((e.line, e.column), (3, 11));
     assert!(e.message.contains("no parameter is named `s`"), "{e}");
-    let e = refused("t\nV1 a 0 PULSE(0 1 0 1n 1n 1 2)\nR1 a 0 1\n");
-    assert_eq!((e.line, e.column), (2, 8));
-    assert!(e.message.contains("`pulse` is not supported"), "{e}");
+    let e = refused("t\nV1 a 0 PULSE(0 1 0 1 1 1 2)\nR1 a 0 1\n.tran 1 10\n");
+    assert_eq!((e.line, e.column), (2, 1));
+    assert!(e.message.contains("outlast its period"), "{e}");
+    let e = refused("t\nV1 a 0 PWL(0 0 1m 1 1m 2)\nR1 a 0 1\n");
+    assert_eq!((e.line, e.column), (2, 21));
+    assert!(e.message.contains("a `PWL`'s times must increase"), "{e}");
     let e = refused("t\nR1 a 0\n");
     assert_eq!((e.line, e.column), (2, 7));
     assert!(e.message.contains("needs a value"), "{e}");
