@@ -83,6 +83,8 @@ fn run() -> Result<(), String> {
         out.display(),
         svg.display()
     );
+    // The process ends here and its memory with it: no need to free a large network part by part.
+    std::mem::forget((circuit, waves));
     Ok(())
 }
 

@@ -12,8 +12,8 @@ use crate::components::electrical::{
 use crate::network::{Network, NetworkBuilder, NetworkError};
 use crate::runtime::Held;
 use crate::{
-    Consistency, Drive, ErrorNorm, InputsOutputs, Integrator, LagrangeDirac, Named, Radau, RadauOptions,
-    Sampling, State, consistent_state,
+    Consistency, Drive, ErrorNorm, InputsOutputs, Integrator, LagrangeDirac, Radau, RadauOptions, State,
+    consistent_state,
 };
 
 use super::expand::is_ground;
@@ -51,8 +51,8 @@ enum Column {
     Rate(usize),
     /// The reference node's voltage.
     Zero,
-    /// This output: a source's current.
-    Output(usize),
+    /// A voltage source's current into its `+` pin: minus the multiplier of its row.
+    Current(usize),
 }
 
 /// Sampled node voltages `v(node)` and source currents `i(source)`.
@@ -271,7 +271,7 @@ impl Netlist {
                 }
                 Kind::Inductor { .. } => Ok(()),
                 Kind::Voltage(u) => {
-                    currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                    currents.push((format!("i({})", e.name), format!("{}.source", e.name)));
                     add(&mut b, e, VoltageSource { u: *u })
                 }
                 Kind::Current(i) => add(&mut b, e, CurrentSource { i: *i }),
@@ -284,11 +284,11 @@ impl Netlist {
                     let u = wave.at(0.0);
                     match (current, wave.smooth_sine()) {
                         (false, Some([offset, amplitude, f, damping, phase])) => {
-                            currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                            currents.push((format!("i({})", e.name), format!("{}.source", e.name)));
                             add(&mut b, e, DampedSineVoltage { offset, amplitude, f, damping, phase })
                         }
                         (false, None) => {
-                            currents.push((format!("i({})", e.name), format!("{}.i", e.name)));
+                            currents.push((format!("i({})", e.name), format!("{}.source", e.name)));
                             driven.push((format!("{}.u", e.name), wave));
                             add(&mut b, e, VoltageSource { u })
                         }
@@ -363,13 +363,9 @@ impl Netlist {
             .enumerate()
             .map(|(k, (name, list))| (name.clone(), (k > 0).then(|| coordinate(&list[0]))))
             .collect();
-        let outputs = if currents.is_empty() { Vec::new() } else { network.output_names() };
         let currents: Vec<(String, usize)> = currents
             .into_iter()
-            .map(|(name, output)| {
-                let k = outputs.iter().position(|o| *o == output).expect("a source's current output");
-                (name, k)
-            })
+            .map(|(name, row)| (name, network.constraint_index(&row).expect("a voltage source's row")))
             .collect();
         // The initial state: node fluxes that give the inductors their initial currents, and
         // node voltages.
@@ -403,10 +399,9 @@ impl Netlist {
             }
         }
         let columns = self.columns(&nodes, &currents)?;
-        let inputs = if driven.is_empty() { Vec::new() } else { network.input_names() };
         let drives = driven
             .into_iter()
-            .map(|(input, wave)| (inputs.iter().position(|n| *n == input).expect("a source's input"), wave))
+            .map(|(input, wave)| (network.input_index(&input).expect("a source's input"), wave))
             .collect();
         corners.sort_by(f64::total_cmp);
         corners.dedup();
@@ -427,7 +422,7 @@ impl Netlist {
                 let column = if probe.current {
                     let found = currents.iter().find(|(n, _)| *n == probe.column);
                     match found {
-                        Some(&(_, k)) => Column::Output(k),
+                        Some(&(_, k)) => Column::Current(k),
                         None => {
                             return Err(probe.token.error(format!(
                                 "`{}`: currents are recorded through voltage sources, and `{}` is none",
@@ -456,7 +451,7 @@ impl Netlist {
             columns.extend(
                 nodes.iter().skip(1).map(|(n, c)| (format!("v({n})"), c.map_or(Column::Zero, Column::Rate))),
             );
-            columns.extend(currents.iter().map(|(n, k)| (n.clone(), Column::Output(*k))));
+            columns.extend(currents.iter().map(|(n, k)| (n.clone(), Column::Current(*k))));
         }
         Ok(columns)
     }
@@ -660,41 +655,33 @@ impl Circuit {
             radau.drive(&mut drive).map_err(rejected)?;
             radau.stop_at(self.corners()).map_err(rejected)?;
         }
-        let mut steps = 0;
-        let solution = radau
-            .solve_observed(0.0, &start, tran.stop, &Sampling::Times(times), |t, _| {
-                steps += 1;
-                progress(t, steps);
-                std::ops::ControlFlow::Continue(())
-            })
-            .map_err(|e| error("the simulation", e))?;
-        drop(radau);
+        // Each step, the samples it passed, read from its collocation polynomial: only the
+        // recorded columns are kept.
         let names: Vec<String> = self.columns.iter().map(|(n, _)| n.clone()).collect();
-        let mut columns: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
-        let mut outputs = vec![0.0; self.network.output_names().len()];
-        let mut sample_times = Vec::new();
-        for i in 0..solution.len() {
-            let s = solution.state(i).expect("a sample");
-            let t = solution.t()[i];
-            if t < tran.start {
-                continue;
-            }
-            sample_times.push(t);
-            let network = match &mut owned {
-                Some(network) => {
-                    drive(t, &s, network);
-                    &*network
-                }
-                None => &self.network,
-            };
-            network.outputs(t, &s.q, &s.v, &s.lambda, &mut outputs);
+        let mut columns: Vec<Vec<f64>> = vec![Vec::with_capacity(times.len()); names.len()];
+        let sample_times: Vec<f64> = times.iter().copied().filter(|&t| t >= tran.start).collect();
+        let mut record = |s: &State<Network>| {
             for (column, (_, at)) in columns.iter_mut().zip(&self.columns) {
                 column.push(match *at {
                     Column::Rate(c) => s.v[c],
                     Column::Zero => 0.0,
-                    Column::Output(k) => outputs[k],
+                    Column::Current(r) => -s.lambda[r],
                 });
             }
+        };
+        let simulation = |e: crate::SimError| error("the simulation", e);
+        radau.start(0.0, &start, tran.stop).map_err(simulation)?;
+        let (mut buffer, mut next, mut steps) = (start.clone(), times.len() - sample_times.len(), 0);
+        while !radau.finished() {
+            radau.step().map_err(simulation)?;
+            steps += 1;
+            let now = radau.t();
+            while next < times.len() && times[next] <= now {
+                radau.interpolate(times[next], &mut buffer);
+                record(&buffer);
+                next += 1;
+            }
+            progress(now, steps);
         }
         Ok(Waveforms { times: sample_times, names, columns })
     }

@@ -221,6 +221,17 @@ fn a_network_linearises_as_the_derived_circuit() {
     b.connect("c.n", "ground.p").expect("ports").connect("source.n", "ground.p").expect("ports");
     let mut network = b.finish().expect("a network");
     assert_eq!(network.input_names(), ["source.u"]);
+    // Each name's index, found without building every name, is its place among all of them.
+    let (rows, outputs) = (network.constraint_names(), network.output_names());
+    for (k, name) in rows.iter().enumerate().filter(|(_, n)| !n.contains('~')) {
+        assert_eq!(network.constraint_index(name), Some(k), "{name}");
+    }
+    assert!(rows.iter().any(|n| n == "source.source"));
+    for (k, name) in outputs.iter().enumerate() {
+        assert_eq!(network.output_index(name), Some(k), "{name}");
+    }
+    assert_eq!(network.input_index("source.u"), Some(0));
+    assert_eq!((network.input_index("r.u"), network.constraint_index("source.x")), (None, None));
     network.set_input_value(0, 0.0);
     assert_eq!(network.input_value(0), 0.0);
     let q = derived.sizes().zeros_q::<Rc>();

@@ -552,10 +552,38 @@ impl Network {
     /// The index of the coordinate `"R1.p"` (part, then the part's own dotted name); `None` if
     /// there is none or it is grounded. Joined ports have the same index.
     pub fn coordinate_index(&self, name: &str) -> Option<usize> {
-        let (part, rest) = name.split_once('.')?;
-        let e = *self.by_name.get(part)?;
+        let (e, rest) = self.part_of(name)?;
         let i = self.parts[e].coordinate_names().iter().position(|c| c == rest)?;
         Some(self.slots[e].at.q[i]).filter(|&c| c != GROUNDED)
+    }
+
+    /// The index of a part's constraint row (`"V1.source"`) among the network's rows, which is
+    /// the index of its multiplier; `None` if there is none. Found without building every name,
+    /// as [`constraint_names`](crate::Named::constraint_names) does.
+    pub fn constraint_index(&self, name: &str) -> Option<usize> {
+        let (e, rest) = self.part_of(name)?;
+        let r = self.parts[e].constraint_names().iter().position(|c| c == rest)?;
+        Some(self.slots[e].at.row(r, self.slots[e].sizes.nh))
+    }
+
+    /// The index of a part's input (`"V1.u"`) among the network's inputs, for
+    /// [`set_input_value`](crate::InputsOutputs::set_input_value); `None` if there is none.
+    pub fn input_index(&self, name: &str) -> Option<usize> {
+        let (e, rest) = self.part_of(name)?;
+        Some(self.slots[e].inputs + self.parts[e].input_names().iter().position(|c| c == rest)?)
+    }
+
+    /// The index of a part's output (`"V1.i"`) among the network's outputs; `None` if there is
+    /// none.
+    pub fn output_index(&self, name: &str) -> Option<usize> {
+        let (e, rest) = self.part_of(name)?;
+        Some(self.slots[e].outputs + self.parts[e].output_names().iter().position(|c| c == rest)?)
+    }
+
+    /// The part a dotted name starts with, and the rest of the name.
+    fn part_of<'a>(&self, name: &'a str) -> Option<(usize, &'a str)> {
+        let (part, rest) = name.split_once('.')?;
+        Some((*self.by_name.get(part)?, rest))
     }
 
     /// The network's own rows: the connections (`"a~b"`) and one-forms, in the order added.

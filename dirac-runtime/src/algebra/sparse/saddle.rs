@@ -29,18 +29,36 @@ pub struct SparseSaddle<T: Scalar> {
     corner_at: Vec<usize>,
 }
 
-/// The compressed columns of the entries `(row, col)`: column starts and sorted, distinct rows.
-fn compress(k: usize, mut entries: Vec<(usize, usize)>) -> (Vec<usize>, Vec<usize>) {
-    entries.sort_unstable();
-    entries.dedup();
-    let mut col_ptr = vec![0; k + 1];
+/// The compressed columns of the entries `(col, row)`: column starts and sorted, distinct rows.
+/// Bucketed by column first (a counting sort), then each short column sorted: linear in the
+/// entries but for the columns' own lengths, where sorting every pair cost `O(e log e)`.
+fn compress(k: usize, entries: Vec<(usize, usize)>) -> (Vec<usize>, Vec<usize>) {
+    let mut start = vec![0; k + 1];
     for &(c, _) in &entries {
-        col_ptr[c + 1] += 1;
+        start[c + 1] += 1;
     }
     for c in 0..k {
-        col_ptr[c + 1] += col_ptr[c];
+        start[c + 1] += start[c];
     }
-    (col_ptr, entries.into_iter().map(|(_, r)| r).collect())
+    let (mut rows, mut fill) = (vec![0; entries.len()], start.clone());
+    for (c, r) in entries {
+        rows[fill[c]] = r;
+        fill[c] += 1;
+    }
+    let mut col_ptr = vec![0; k + 1];
+    let mut row_idx = Vec::with_capacity(rows.len());
+    for c in 0..k {
+        let column = &mut rows[start[c]..start[c + 1]];
+        column.sort_unstable();
+        let first = row_idx.len();
+        for &r in column.iter() {
+            if row_idx.len() == first || row_idx.last() != Some(&r) {
+                row_idx.push(r);
+            }
+        }
+        col_ptr[c + 1] = row_idx.len();
+    }
+    (col_ptr, row_idx)
 }
 
 impl<T: Scalar> SparseSaddle<T> {
