@@ -175,6 +175,18 @@ fn a_netlist_with_every_element_follows_its_equations() {
     let csv = String::from_utf8(csv).expect("text");
     assert!(csv.starts_with("time,v(in),v(a),v(b),v(c),v(e),v(f),i(v1)\n"));
     assert_eq!(csv.lines().count(), 51);
+    // The chart: a line per column, labelled, against time.
+    let svg = svg_of(&run, "every");
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"), "a whole SVG document");
+    assert!(
+        svg.contains(">every</text>")
+            && svg.contains(">time (s)</text>")
+            && svg.contains(">v (V), i (A)</text>")
+    );
+    assert_eq!(svg.matches("<polyline").count(), 7);
+    for name in run.names() {
+        assert!(svg.contains(&format!(">{name}</text>")), "a legend entry for {name}");
+    }
 }
 
 /// One netlist with every supported element and subcircuits: the circuit of `EVERY_ELEMENT`
@@ -310,6 +322,11 @@ fn every_element_in_subcircuits() {
     for i in 0..mid.len() {
         assert!((mid[i] - 0.5 * (vc[i] + ve[i])).abs() < 1e-9);
     }
+    // More than twelve columns: the chart shows the first twelve and says so.
+    assert_eq!(run.names().len(), 18);
+    let svg = svg_of(&run, "all");
+    assert_eq!(svg.matches("<polyline").count(), 12);
+    assert!(svg.contains(">all (the first 12 of 18 columns)</text>"));
     // The sources' nodes carry their waveforms, to the tolerance: a sample between a step's
     // ends is read from its collocation polynomial.
     let (p, s) = (run.column("v(p)").expect("p"), run.column("v(s)").expect("s"));
@@ -391,6 +408,15 @@ fn every_element_in_subcircuits() {
         }
     }
     assert!(worst < 1e-10, "netlist against derived interconnection: {worst:e}");
+}
+
+/// The SVG chart of `run`, titled `title`, as written to a file.
+fn svg_of(run: &spice::Waveforms, title: &str) -> String {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("spice");
+    std::fs::create_dir_all(&dir).expect("a directory");
+    let path = dir.join(format!("{title}.svg"));
+    run.write_svg(title, &path).expect("writes");
+    std::fs::read_to_string(&path).expect("reads back")
 }
 
 /// A diode clipper: a 50 Hz sine of 2 V behind 1 kΩ, clipped at about ±0.6 V by two Shockley
