@@ -4,18 +4,19 @@
 
 use super::SpiceError;
 use super::read::Token;
+use crate::sources::{Hold, Table};
 
 /// A source's waveform, read from a netlist, with the defaults that depend on the `.tran`
 /// still open.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub(super) enum Wave {
     /// `PULSE(V1 V2 TD TR TF PW PER NP)`: zero for `TR`, `TF`, `PW` or `PER` means the default
     /// (the `.tran` step for the rise and fall, its stop time for the width and period); `NP`,
     /// the number of pulses, unlimited if absent or zero.
     Pulse { values: [f64; 7], pulses: Option<f64> },
-    /// `PWL(T1 V1 T2 V2 …)`: the points, their times strictly increasing (a `TD=` delay
-    /// already added). Held at the first value before the first time and at the last after.
-    Pwl(Vec<(f64, f64)>),
+    /// `PWL(T1 V1 T2 V2 …)`: a table of its points read with linear interpolation (a `TD=`
+    /// delay already added), held at the first value before the first time and at the last after.
+    Pwl(Table),
     /// `SIN(VO VA FREQ TD THETA PHASE)`: `VO + VA sin(PHASE)` until `TD`, then
     /// `VO + VA e^(−THETA (t − TD)) sin(2π FREQ (t − TD) + PHASE)`; the phase in radians, and a
     /// zero frequency meaning the default `1/TSTOP`.
@@ -101,7 +102,10 @@ impl Wave {
                     }
                     points.push((t, v));
                 }
-                Ok(Wave::Pwl(points.into_iter().map(|(t, v)| (t + delay, v)).collect()))
+                let (times, values) = points.into_iter().map(|(t, v)| (t + delay, v)).unzip();
+                let table = Table::new(times, values, Hold::Linear)
+                    .map_err(|e| function.error(format!("`{name}`: {e}")))?;
+                Ok(Wave::Pwl(table))
             }
             "sin" => {
                 let values = numbers(tokens)?;
@@ -213,14 +217,7 @@ impl Wave {
                     v2 + (v1 - v2) * (x - tr - pw) / tf
                 }
             }
-            Wave::Pwl(points) => {
-                let k = points.partition_point(|&(s, _)| s <= t);
-                match (k.checked_sub(1).map(|j| points[j]), points.get(k)) {
-                    (None, _) => points[0].1,
-                    (Some((_, v)), None) => v,
-                    (Some((t0, v0)), Some(&(t1, v1))) => v0 + (v1 - v0) * (t - t0) / (t1 - t0),
-                }
-            }
+            Wave::Pwl(table) => table.at(t),
             Wave::Sin { offset, amplitude, f, delay, damping, phase } => {
                 let x = t - delay;
                 if x <= 0.0 {
@@ -260,7 +257,7 @@ impl Wave {
                     );
                 }
             }
-            Wave::Pwl(points) => out.extend(points.iter().map(|&(t, _)| t).filter(|&t| inside(t))),
+            Wave::Pwl(table) => out.extend(table.times().iter().copied().filter(|&t| inside(t))),
             Wave::Sin { delay, .. } => out.extend(Some(*delay).filter(|&t| inside(t))),
         }
         Ok(())
@@ -291,7 +288,9 @@ mod tests {
         ] {
             assert!((pulse.at(t) - v).abs() < 1e-6, "pulse at {t}: {} against {v}", pulse.at(t));
         }
-        let pwl = Wave::Pwl(vec![(0.5e-3, 1.0), (1e-3, 2.0), (3e-3, -1.0)]);
+        let pwl = Wave::Pwl(
+            Table::new(vec![0.5e-3, 1e-3, 3e-3], vec![1.0, 2.0, -1.0], Hold::Linear).expect("a table"),
+        );
         for (t, v) in [(0.1e-3, 1.0), (0.65e-3, 1.3), (2.15e-3, 0.275), (4e-3, -1.0)] {
             assert!((pwl.at(t) - v).abs() < 1e-9, "pwl at {t}: {} against {v}", pwl.at(t));
         }
@@ -335,7 +334,8 @@ mod tests {
         assert!(read("pwl 0 1 1").is_err());
         assert!(read("pwl 0 1 1 2 r = 0").is_err());
         let delayed = read("pwl 0 1 1 2 td = 1").expect("a delay");
-        assert_eq!(delayed, Wave::Pwl(vec![(1.0, 1.0), (2.0, 2.0)]));
+        let Wave::Pwl(table) = delayed else { panic!("a PWL") };
+        assert_eq!((table.times(), table.at(1.5)), (&[1.0, 2.0][..], 1.5));
         assert!(read("pulse 0 1 0 0 0 0 0 1.5").is_err());
         assert!(read("sin 0 1 -1").is_err());
     }
