@@ -170,6 +170,72 @@ pub struct VoltageControlledCurrent {
     pub gm: f64,
 }
 
+/// A voltage-controlled voltage source of gain `gain`: `vp2 − vn2 = gain (vp1 − vn1)`, and the
+/// control pins draw no current. Its output current `i` (into `p2`, through the part, out of
+/// `n2`) is the rate of its coordinate `s`, whose balance is the voltage law: the branch of
+/// modified nodal analysis, so that the control's side carries no reaction.
+///
+/// `i` is an unknown without inertia, fixed by what the output drives: a loop of this output
+/// with capacitors and voltage sources alone would leave it undetermined by the velocities,
+/// which no integrator here resolves (the SPICE reader refuses such a loop).
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(p1 => vp1, n1 => vn1, p2 => vp2, n2 => vn2, s => i), port(p1, n1, p2, n2))]
+#[dirac(lagrangian = 0.0)]
+#[dirac(force(s) = vp2 - vn2 - gain * (vp1 - vn1), force(p2) = -i, force(n2) = i)]
+#[dirac(output(v) = vp2 - vn2, output(supplied) = -(vp2 - vn2) * i)]
+#[dirac(unit(p1, n1, p2, n2) = "Wb", unit(vp1, vn1, vp2, vn2, v) = "V", unit(gain) = "1")]
+#[dirac(unit(s) = "C", unit(i) = "A", unit(supplied) = "W")]
+pub struct VoltageControlledVoltage {
+    /// The voltage gain.
+    pub gain: f64,
+}
+
+/// A voltage source `vp − vn = u` whose current `i` (into `p`, through the source, out of `n`)
+/// is the rate of its coordinate `s`, a port: the branch of modified nodal analysis, which a
+/// current-controlled source joins to read the current (SPICE's `F` and `H` name such a source).
+/// [`VoltageSource`] carries its current as a multiplier instead, which no other part can read.
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(p => vp, n => vn, s => i), port(p, n, s), input(u))]
+#[dirac(lagrangian = 0.0)]
+#[dirac(force(s) = vp - vn - u, force(p) = -i, force(n) = i)]
+#[dirac(output(supplied) = -u * i)]
+#[dirac(unit(p, n) = "Wb", unit(vp, vn, u) = "V", unit(s) = "C", unit(i) = "A", unit(supplied) = "W")]
+pub struct SensedVoltageSource {
+    /// The source's voltage `vp − vn`.
+    pub u: f64,
+}
+
+/// A current-controlled current source of gain `gain`: the current `gain · ic` flows into `p`,
+/// through the part, out of `n`, where `ic` is the rate of the control coordinate `c`, joined to
+/// a [`SensedVoltageSource`]'s `s` (or any coordinate whose rate is a current).
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(c => ic, p => vp, n => vn), port(c, p, n))]
+#[dirac(lagrangian = 0.0)]
+#[dirac(force(p) = -gain * ic, force(n) = gain * ic)]
+#[dirac(output(i) = gain * ic, output(supplied) = -(vp - vn) * gain * ic)]
+#[dirac(unit(c) = "C", unit(ic, i) = "A", unit(p, n) = "Wb", unit(vp, vn) = "V", unit(gain) = "1")]
+#[dirac(unit(supplied) = "W")]
+pub struct CurrentControlledCurrent {
+    /// The current gain.
+    pub gain: f64,
+}
+
+/// A current-controlled voltage source of transresistance `r`: `vp − vn = r · ic`, where `ic`
+/// is the rate of the control coordinate `c` (joined as for [`CurrentControlledCurrent`]). Its
+/// own current `i`, into `p`, is the rate of its coordinate `s`, as for
+/// [`VoltageControlledVoltage`].
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(c => ic, p => vp, n => vn, s => i), port(c, p, n))]
+#[dirac(lagrangian = 0.0)]
+#[dirac(force(s) = vp - vn - r * ic, force(p) = -i, force(n) = i)]
+#[dirac(output(v) = vp - vn, output(supplied) = -(vp - vn) * i)]
+#[dirac(unit(c, s) = "C", unit(ic, i) = "A", unit(p, n) = "Wb", unit(vp, vn, v) = "V", unit(r) = "Ohm")]
+#[dirac(unit(supplied) = "W")]
+pub struct CurrentControlledVoltage {
+    /// The transresistance.
+    pub r: f64,
+}
+
 /// An ideal diode from anode `p` to cathode `n`: the complementarity `vn − vp ≥ 0`, `i ≥ 0`,
 /// `(vn − vp) i = 0` (the law `diode`, whose multiplier is the forward current `i`). It
 /// conducts or blocks by itself; see the guide's "Dissipation, friction and switches".

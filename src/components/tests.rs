@@ -331,6 +331,62 @@ fn voltage_controlled_current_source() {
 }
 
 #[test]
+fn voltage_controlled_voltage_source() {
+    // The coordinate `s`'s effort is minus the voltage law's residual; its rate `i` is the
+    // current into `p2`.
+    let (gain, i) = (4.0, 0.5);
+    let at = At::new(el::VoltageControlledVoltage { gain })
+        .set("p1", 0.0, 5.0, 0.0)
+        .set("n1", 0.0, 2.0, 0.0)
+        .set("p2", 0.0, 7.0, 0.0)
+        .set("n2", 0.0, -1.0, 0.0)
+        .set("s", 0.0, i, 0.0);
+    assert_close!(at.effort("s"), -(8.0 - gain * 3.0));
+    assert_close!(at.effort("p2"), i);
+    assert_close!(at.effort("n2"), -i);
+    assert_close!(at.effort("p1"), 0.0);
+    assert_close!(at.effort("n1"), 0.0);
+    assert_close!(at.output("v"), 8.0);
+    assert_close!(at.output("supplied"), -8.0 * i);
+}
+
+#[test]
+fn current_sensing_and_current_controlled_sources() {
+    let (u, i) = (3.0, -0.25);
+    let at = At::new(el::SensedVoltageSource { u })
+        .set("p", 0.0, 4.0, 0.0)
+        .set("n", 0.0, 1.0, 0.0)
+        .set("s", 0.0, i, 0.0);
+    assert_close!(at.effort("s"), 0.0);
+    assert_close!(at.effort("p"), i);
+    assert_close!(at.effort("n"), -i);
+    assert_close!(at.output("supplied"), -u * i);
+    // F: `gain · ic` into `p`, through the part; the control coordinate takes no force.
+    let (gain, ic) = (2.5, 0.4);
+    let at = At::new(el::CurrentControlledCurrent { gain })
+        .set("c", 0.0, ic, 0.0)
+        .set("p", 0.0, 1.0, 0.0)
+        .set("n", 0.0, -1.0, 0.0);
+    assert_close!(at.effort("p"), gain * ic);
+    assert_close!(at.effort("n"), -gain * ic);
+    assert_close!(at.effort("c"), 0.0);
+    assert_close!(at.output("i"), gain * ic);
+    assert_close!(at.output("supplied"), -2.0 * gain * ic);
+    // H: `vp − vn = r · ic`, its own current the rate of `s`.
+    let (r, i) = (5.0, 0.75);
+    let at = At::new(el::CurrentControlledVoltage { r })
+        .set("c", 0.0, ic, 0.0)
+        .set("p", 0.0, 3.0, 0.0)
+        .set("n", 0.0, 1.0, 0.0)
+        .set("s", 0.0, i, 0.0);
+    assert_close!(at.effort("s"), -(2.0 - r * ic));
+    assert_close!(at.effort("p"), i);
+    assert_close!(at.effort("n"), -i);
+    assert_close!(at.effort("c"), 0.0);
+    assert_close!(at.output("supplied"), -2.0 * i);
+}
+
+#[test]
 fn ideal_diode_and_switch_while_engaged() {
     // Conducting: vp = vn, the forward current the law's multiplier, into the anode.
     let at =
@@ -698,6 +754,10 @@ fn every_parameter_of_every_part_is_checked() {
     each_parameter(el::IdealTransformer { n: 2.0 });
     each_parameter(el::Gyrator { g: 1.0 });
     each_parameter(el::VoltageControlledCurrent { gm: 1.0 });
+    each_parameter(el::VoltageControlledVoltage { gain: 1.0 });
+    each_parameter(el::SensedVoltageSource { u: 1.0 });
+    each_parameter(el::CurrentControlledCurrent { gain: 1.0 });
+    each_parameter(el::CurrentControlledVoltage { r: 1.0 });
     each_parameter(el::IdealSwitch { control: 1.0 });
     each_parameter(el::VoltageSource { u: 1.0 });
     each_parameter(el::StepVoltage { offset: 0.0, height: 1.0, start: 0.0 });

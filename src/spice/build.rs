@@ -2,12 +2,13 @@
 //! for what no solver could simulate: a subnetwork with no path to the reference, a loop of
 //! voltage sources, a cut-set of current sources.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::io::{self, Write};
 
 use crate::components::electrical::{
-    Capacitor, CoupledInductors, CurrentSource, DampedSineVoltage, Inductor, Resistor, ShockleyDiode,
-    VoltageControlledCurrent, VoltageSource,
+    Capacitor, CoupledInductors, CurrentControlledCurrent, CurrentControlledVoltage, CurrentSource,
+    DampedSineVoltage, Inductor, Resistor, SensedVoltageSource, ShockleyDiode, VoltageControlledCurrent,
+    VoltageControlledVoltage, VoltageSource,
 };
 use crate::network::{Network, NetworkBuilder, NetworkError};
 use crate::runtime::Held;
@@ -225,7 +226,25 @@ impl Netlist {
             }
         }
         let node = |n: &str| index[if is_ground(n) { "0" } else { n }];
-        self.check_topology(&node, names.len(), &names)?;
+        // The voltage sources whose current an `F` or an `H` reads: their current becomes an
+        // unknown of its own, the rate of their coordinate `s`.
+        let mut sensed: HashSet<String> = HashSet::new();
+        for e in &self.elements {
+            if let Kind::CurrentControlled { source, .. } = &e.kind {
+                match seen.get(source.text.as_str()).map(|x| &x.kind) {
+                    Some(Kind::Voltage(_) | Kind::Source { current: false, .. }) => {
+                        sensed.insert(source.text.clone());
+                    }
+                    _ => {
+                        return Err(source.error(format!(
+                            "`{}`: `{}` is not a voltage source of the netlist; `F` and `H` read the current through one",
+                            e.name, source.text
+                        )));
+                    }
+                }
+            }
+        }
+        self.check_topology(&node, names.len(), &names, &sensed)?;
         // Couplings: each pairs two inductors into one part.
         let mut coupled: HashMap<String, String> = HashMap::new();
         for e in &self.elements {
@@ -257,7 +276,12 @@ impl Netlist {
                 pins[node(n)].push(format!("{part}.{pin}"));
             }
         };
+        // Each recorded current: a voltage source's row (its multiplier), or the coordinate whose
+        // rate it is (`E`, `H` and sensed sources).
         let (mut currents, mut windings, mut driven) = (Vec::new(), Vec::new(), Vec::new());
+        let mut controls = Vec::new();
+        let row = |e: &Element| (format!("i({})", e.name), CurrentAt::Row(format!("{}.source", e.name)));
+        let rate = |e: &Element| (format!("i({})", e.name), CurrentAt::Rate(format!("{}.s", e.name)));
         let tran = self.tran().map(|t| (t.step, t.stop));
         let mut corners = Vec::new();
         for e in &self.elements {
@@ -270,12 +294,29 @@ impl Netlist {
                     add(&mut b, e, Inductor { l: *l })
                 }
                 Kind::Inductor { .. } => Ok(()),
+                Kind::Voltage(u) if sensed.contains(&e.name) => {
+                    currents.push(rate(e));
+                    add(&mut b, e, SensedVoltageSource { u: *u })
+                }
                 Kind::Voltage(u) => {
-                    currents.push((format!("i({})", e.name), format!("{}.source", e.name)));
+                    currents.push(row(e));
                     add(&mut b, e, VoltageSource { u: *u })
                 }
                 Kind::Current(i) => add(&mut b, e, CurrentSource { i: *i }),
                 Kind::Vccs(gm) => add(&mut b, e, VoltageControlledCurrent { gm: *gm }),
+                Kind::Vcvs(gain) => {
+                    currents.push(rate(e));
+                    add(&mut b, e, VoltageControlledVoltage { gain: *gain })
+                }
+                Kind::CurrentControlled { source, value, transresistance } => {
+                    controls.push((format!("{}.c", e.name), format!("{}.s", source.text), e));
+                    if *transresistance {
+                        currents.push(rate(e));
+                        add(&mut b, e, CurrentControlledVoltage { r: *value })
+                    } else {
+                        add(&mut b, e, CurrentControlledCurrent { gain: *value })
+                    }
+                }
                 Kind::Source { current, wave } => {
                     let wave = wave.resolved(tran, &e.token, &e.name)?;
                     if let Some((_, stop)) = tran {
@@ -283,12 +324,17 @@ impl Netlist {
                     }
                     let u = wave.at(0.0);
                     match (current, wave.smooth_sine()) {
+                        (false, _) if sensed.contains(&e.name) => {
+                            currents.push(rate(e));
+                            driven.push((format!("{}.u", e.name), wave));
+                            add(&mut b, e, SensedVoltageSource { u })
+                        }
                         (false, Some([offset, amplitude, f, damping, phase])) => {
-                            currents.push((format!("i({})", e.name), format!("{}.source", e.name)));
+                            currents.push(row(e));
                             add(&mut b, e, DampedSineVoltage { offset, amplitude, f, damping, phase })
                         }
                         (false, None) => {
-                            currents.push((format!("i({})", e.name), format!("{}.source", e.name)));
+                            currents.push(row(e));
                             driven.push((format!("{}.u", e.name), wave));
                             add(&mut b, e, VoltageSource { u })
                         }
@@ -333,7 +379,7 @@ impl Netlist {
             };
             added?;
             match &e.kind {
-                Kind::Vccs(_) => {
+                Kind::Vccs(_) | Kind::Vcvs(_) => {
                     add_pins(
                         &mut pins,
                         &e.name,
@@ -355,6 +401,11 @@ impl Netlist {
                 b.join(&list[0], other).map_err(|err| first(err.to_string()))?;
             }
         }
+        // A current-controlled source's control shares the coordinate whose rate is the current
+        // through its voltage source.
+        for (control, source, e) in &controls {
+            b.join(control, source).map_err(|err| at(e, err))?;
+        }
         let network = b.finish().map_err(|err| first(err.to_string()))?;
         let coordinate = |path: &str| network.coordinate_index(path).expect("a pin of a node");
         let nodes: Vec<(String, Option<usize>)> = names
@@ -363,9 +414,17 @@ impl Netlist {
             .enumerate()
             .map(|(k, (name, list))| (name.clone(), (k > 0).then(|| coordinate(&list[0]))))
             .collect();
-        let currents: Vec<(String, usize)> = currents
+        let currents: Vec<(String, Column)> = currents
             .into_iter()
-            .map(|(name, row)| (name, network.constraint_index(&row).expect("a voltage source's row")))
+            .map(|(name, at)| {
+                let column = match at {
+                    CurrentAt::Row(row) => {
+                        Column::Current(network.constraint_index(&row).expect("a voltage source's row"))
+                    }
+                    CurrentAt::Rate(path) => Column::Rate(coordinate(&path)),
+                };
+                (name, column)
+            })
             .collect();
         // The initial state: node fluxes that give the inductors their initial currents, and
         // node voltages.
@@ -413,7 +472,7 @@ impl Netlist {
     fn columns(
         &self,
         nodes: &[(String, Option<usize>)],
-        currents: &[(String, usize)],
+        currents: &[(String, Column)],
     ) -> Result<Vec<(String, Column)>, SpiceError> {
         let mut columns: Vec<(String, Column)> = Vec::new();
         for command in &self.commands {
@@ -422,10 +481,10 @@ impl Netlist {
                 let column = if probe.current {
                     let found = currents.iter().find(|(n, _)| *n == probe.column);
                     match found {
-                        Some(&(_, k)) => Column::Current(k),
+                        Some(&(_, k)) => k,
                         None => {
                             return Err(probe.token.error(format!(
-                                "`{}`: currents are recorded through voltage sources, and `{}` is none",
+                                "`{}`: currents are recorded through voltage sources (V, E, H), and `{}` is none",
                                 probe.column, probe.name
                             )));
                         }
@@ -451,18 +510,21 @@ impl Netlist {
             columns.extend(
                 nodes.iter().skip(1).map(|(n, c)| (format!("v({n})"), c.map_or(Column::Zero, Column::Rate))),
             );
-            columns.extend(currents.iter().map(|(n, k)| (n.clone(), Column::Current(*k))));
+            columns.extend(currents.iter().cloned());
         }
         Ok(columns)
     }
 
     /// Refuses what no solver could simulate, naming the elements: a subnetwork with no path to
-    /// the reference, a loop of voltage sources, a cut-set of current sources.
+    /// the reference, a loop of voltage sources, a cut-set of current sources, a branch whose
+    /// current is an unknown of its own (`E`, `H`, a `sensed` voltage source) in a loop of
+    /// capacitors and voltage sources.
     fn check_topology(
         &self,
         node: &dyn Fn(&str) -> usize,
         count: usize,
         names: &[String],
+        sensed: &HashSet<String>,
     ) -> Result<(), SpiceError> {
         // Each element's branches between its nodes: (from, to, is a voltage source, is a current source).
         let branches = |e: &Element| -> Vec<(usize, usize, bool, bool)> {
@@ -476,7 +538,12 @@ impl Netlist {
                     vec![(node(&n[0]), node(&n[1]), false, true)]
                 }
                 // The output branch is a source; the control pins draw no current and tie nothing.
-                Kind::Vccs(_) => vec![(node(&n[0]), node(&n[1]), false, true)],
+                Kind::Vccs(_) | Kind::CurrentControlled { transresistance: false, .. } => {
+                    vec![(node(&n[0]), node(&n[1]), false, true)]
+                }
+                Kind::Vcvs(_) | Kind::CurrentControlled { transresistance: true, .. } => {
+                    vec![(node(&n[0]), node(&n[1]), true, false)]
+                }
                 _ => vec![(node(&n[0]), node(&n[1]), false, false)],
             }
         };
@@ -516,7 +583,10 @@ impl Netlist {
                     .find(|e| {
                         matches!(
                             e.kind,
-                            Kind::Current(_) | Kind::Vccs(_) | Kind::Source { current: true, .. }
+                            Kind::Current(_)
+                                | Kind::Vccs(_)
+                                | Kind::Source { current: true, .. }
+                                | Kind::CurrentControlled { transresistance: false, .. }
                         ) && e.nodes.iter().take(2).any(|x| passive.find(node(x)) == root)
                     })
                     .expect("only current sources join the parts the passive branches leave apart");
@@ -526,8 +596,40 @@ impl Netlist {
                 )));
             }
         }
+        // Capacitors and the voltage sources that carry their current as a multiplier first; a
+        // branch whose current is a rate of its own may not close a loop with them, where
+        // Kirchhoff's voltage law would fix a capacitor's voltage and leave that current to
+        // follow from its derivative.
+        let own_current = |e: &Element| match e.kind {
+            Kind::Vcvs(_) | Kind::CurrentControlled { transresistance: true, .. } => true,
+            Kind::Voltage(_) | Kind::Source { current: false, .. } => sensed.contains(&e.name),
+            _ => false,
+        };
+        let mut stiff = Sets((0..count).collect());
+        for e in &self.elements {
+            let multiplier = matches!(e.kind, Kind::Voltage(_) | Kind::Source { current: false, .. });
+            if matches!(e.kind, Kind::Capacitor { .. }) || (multiplier && !own_current(e)) {
+                stiff.join(node(&e.nodes[0]), node(&e.nodes[1]));
+            }
+        }
+        for e in self.elements.iter().filter(|e| own_current(e)) {
+            if !stiff.join(node(&e.nodes[0]), node(&e.nodes[1])) {
+                return Err(e.token.error(format!(
+                    "`{}` closes a loop of capacitors and voltage sources: its current, an unknown of \
+                     modified nodal analysis here, would follow only from their voltages' derivatives; \
+                     a resistance in the loop resolves it",
+                    e.name
+                )));
+            }
+        }
         Ok(())
     }
+}
+
+/// Where a source's current is read: the multiplier of a row, or the rate of a coordinate.
+enum CurrentAt {
+    Row(String),
+    Rate(String),
 }
 
 /// Adds an element's part under its name.

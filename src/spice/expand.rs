@@ -160,13 +160,20 @@ pub(super) fn flatten(
         return Err(head.error(format!("more than {ELEMENTS} elements after expanding the subcircuits")));
     }
     let nodes = match first {
-        'g' | 'e' | 'f' | 'h' => 4,
+        'g' | 'e' => 4,
         'k' => 0,
         _ => 2,
     };
+    // The elements a line names besides itself: a coupling's inductors, a current-controlled
+    // source's voltage source.
+    let names = |k: usize| match first {
+        'k' => k == 1 || k == 2,
+        'f' | 'h' => k == 3,
+        _ => false,
+    };
     let mut line = Vec::with_capacity(tokens.len());
     for (k, t) in tokens.iter().enumerate() {
-        let text = if k == 0 || (first == 'k' && (k == 1 || k == 2)) {
+        let text = if k == 0 || names(k) {
             frame.element(&t.text)
         } else if k <= nodes {
             frame.node(&t.text)

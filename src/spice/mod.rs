@@ -10,8 +10,15 @@
 //! unknown per node, plus a row per voltage source (whose multiplier is its current).
 //!
 //! Supported:
-//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), `G` (voltage-controlled current
-//!   sources), `D` (Shockley diodes, `.model name D(IS=… N=…)`, at 27 °C);
+//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), `D` (Shockley diodes,
+//!   `.model name D(IS=… N=…)`, at 27 °C);
+//! - linear controlled sources: `G` and `E` (voltage-controlled current and voltage,
+//!   `Gname n+ n- nc+ nc- value`), `F` and `H` (current-controlled current and voltage,
+//!   `Fname n+ n- vname value`, controlled by the current through the voltage source `vname`).
+//!   `E`, `H` and a voltage source that controls an `F` or an `H` carry their current as an
+//!   unknown of modified nodal analysis, the rate of a coordinate of their own; such a branch
+//!   may not close a loop of capacitors and voltage sources (its current would be fixed only
+//!   through their derivatives), and is refused there;
 //! - `V` and `I` sources: `[DC] value`, then optionally `PULSE(V1 V2 TD TR TF PW PER NP)`,
 //!   `PWL(T1 V1 T2 V2 … [TD=delay])` or `SIN(VO VA FREQ TD THETA PHASE)`, as ngspice defines
 //!   them (a zero rise or fall time is the `.tran` step, a zero width or period its stop time).
@@ -112,6 +119,15 @@ enum Kind {
     Diode(Token),
     Current(f64),
     Vccs(f64),
+    /// A voltage-controlled voltage source and its gain.
+    Vcvs(f64),
+    /// A current-controlled current source (`transresistance: false`, the value a gain) or
+    /// voltage source (`true`, the value a transresistance), and its controlling voltage source.
+    CurrentControlled {
+        source: Token,
+        value: f64,
+        transresistance: bool,
+    },
 }
 
 /// A command line.

@@ -336,15 +336,32 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             extra(4)?;
             return Ok(Element { name, nodes, kind: Kind::Diode(model), token: head.clone() });
         }
-        'g' => {
+        'g' | 'e' => {
             let nodes = nodes(4)?;
-            let gain = number(at(tokens, 5, "a transconductance")?)?;
+            let what = if first == 'g' { "a transconductance" } else { "a voltage gain" };
+            let token = at(tokens, 5, what)?;
+            if matches!(token.text.as_str(), "poly" | "value" | "vol" | "cur" | "table" | "laplace") {
+                return Err(
+                    token.error(format!("`{name}`: `{}` is not supported here ({what} is)", token.text))
+                );
+            }
+            let value = number(token)?;
             extra(6)?;
-            return Ok(Element { name, nodes, kind: Kind::Vccs(gain), token: head.clone() });
+            let kind = if first == 'g' { Kind::Vccs(value) } else { Kind::Vcvs(value) };
+            return Ok(Element { name, nodes, kind, token: head.clone() });
+        }
+        'f' | 'h' => {
+            let nodes = nodes(2)?;
+            let source = at(tokens, 3, "a controlling voltage source")?.clone();
+            let what = if first == 'f' { "a current gain" } else { "a transresistance" };
+            let value = number(at(tokens, 4, what)?)?;
+            extra(5)?;
+            let kind = Kind::CurrentControlled { source, value, transresistance: first == 'h' };
+            return Ok(Element { name, nodes, kind, token: head.clone() });
         }
         _ => {
             return Err(head.error(format!(
-                "the element `{name}` is not supported: its type `{}` is none of R, L, C, K, V, I, G, D, X",
+                "the element `{name}` is not supported: its type `{}` is none of R, L, C, K, V, I, E, F, G, H, D, X",
                 first.to_ascii_uppercase()
             )));
         }

@@ -2,8 +2,9 @@
 //! a reference written and integrated independently here, the refusals, and a fuzzer.
 
 use dirac::components::electrical::{
-    Capacitor, CoupledInductors, CurrentSource, DampedSineVoltage, Ground as Gnd, Resistor, ShockleyDiode,
-    VoltageControlledCurrent, VoltageSource,
+    Capacitor, CoupledInductors, CurrentControlledCurrent, CurrentControlledVoltage, CurrentSource,
+    DampedSineVoltage, Ground as Gnd, Resistor, SensedVoltageSource, ShockleyDiode, VoltageControlledCurrent,
+    VoltageControlledVoltage, VoltageSource,
 };
 use dirac::prelude::*;
 use dirac::spice::{self, SpiceError};
@@ -81,14 +82,18 @@ const VT: f64 = 1.380_649e-23 * 300.15 / 1.602_176_634e-19;
 /// `v(f) = 0.5 ve · R4`. `IN_SUBCIRCUITS` adds circuits of their own: the clipper
 /// `C6 v' = (2 sin πt − v)/R8 − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1)` at node out, and
 /// `C3 v(q)' = pulse − v(q)`, `C4 v(r)' = pwl − v(r)/2`, `C5 v(w)' = sine − v(w)` at nodes q,
-/// r, w. Each sample: the columns `REFERENCE_COLUMNS` name.
-fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 12]> {
+/// r, w, and the controlled sources' circuit: `C7 v(k)' = sin πt − v(k)`, `v(m) = 3 v(k)` (E),
+/// `C8 v(n)' = v(m) − v(n)`, the current into V5's `+` pin `i5 = v(k) − sin πt`,
+/// `v(y) = 2 i5 R11` (F), `v(z) = 0.5 i5` (H), and the currents into E's and H's `+` pins
+/// `−(v(m) − v(n))/R10` and `−v(z)/R12`. Each sample: the columns `REFERENCE_COLUMNS` name.
+fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 20]> {
     let (l1, l2, r3, c2): (f64, f64, f64, f64) = (1.0, 2.0, 1e3, 1e-3);
     let m = 0.5 * (l1 * l2).sqrt();
     let det = l1 * l2 - m * m;
     let diode = |v: f64| 1e-14 * ((v / VT).exp() - 1.0);
-    let f = |t: f64, x: [f64; 8]| -> [f64; 8] {
-        let [i1, i2, vc, ve, out, q, r, w] = x;
+    let sine = |t: f64| (std::f64::consts::PI * t).sin();
+    let f = |t: f64, x: [f64; 10]| -> [f64; 10] {
+        let [i1, i2, vc, ve, out, q, r, w, k, n] = x;
         let (r1, r2) = (1.0 - i1, vc - 2.0 * i2);
         let ie = (vc - ve) / r3;
         let clipped =
@@ -102,15 +107,18 @@ fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 12]> {
             pulse(t) - q,
             (pwl(t) - r / 2.0) / 0.5,
             (delayed_sine(t) - w) / 0.25,
+            sine(t) - k,
+            3.0 * k - n,
         ]
     };
     let steps = 100_000;
     let h = t_end / steps as f64;
-    let (mut x, mut out, mut next) = ([0.0; 8], Vec::new(), 0);
+    let (mut x, mut out, mut next) = ([0.0; 10], Vec::new(), 0);
     for k in 0..=steps {
         let t = k as f64 * h;
         while next < samples.len() && (samples[next] - t).abs() < 0.5 * h {
-            let [i1, i2, vc, ve, o, q, r, w] = x;
+            let [i1, i2, vc, ve, o, q, r, w, k, n] = x;
+            let i5 = k - sine(t);
             out.push([
                 1.0 - i1,
                 vc - 2.0 * i2,
@@ -124,15 +132,23 @@ fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 12]> {
                 w,
                 q - pulse(t),
                 w - delayed_sine(t),
+                k,
+                3.0 * k,
+                n,
+                2.0 * i5,
+                0.5 * i5,
+                i5,
+                -(3.0 * k - n),
+                -0.5 * i5,
             ]);
             next += 1;
         }
-        let add = |a: [f64; 8], b: [f64; 8], s: f64| std::array::from_fn(|j| a[j] + s * b[j]);
+        let add = |a: [f64; 10], b: [f64; 10], s: f64| std::array::from_fn(|j| a[j] + s * b[j]);
         let k1 = f(t, x);
         let k2 = f(t + 0.5 * h, add(x, k1, 0.5 * h));
         let k3 = f(t + 0.5 * h, add(x, k2, 0.5 * h));
         let k4 = f(t + h, add(x, k3, h));
-        for j in 0..8 {
+        for j in 0..10 {
             x[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
         }
     }
@@ -140,8 +156,28 @@ fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 12]> {
 }
 
 /// The columns of `reference`'s samples, by name.
-const REFERENCE_COLUMNS: [&str; 12] =
-    ["v(a)", "v(b)", "v(c)", "v(e)", "v(f)", "i(v1)", "v(out)", "v(q)", "v(r)", "v(w)", "i(v2)", "i(v3)"];
+const REFERENCE_COLUMNS: [&str; 20] = [
+    "v(a)",
+    "v(b)",
+    "v(c)",
+    "v(e)",
+    "v(f)",
+    "i(v1)",
+    "v(out)",
+    "v(q)",
+    "v(r)",
+    "v(w)",
+    "i(v2)",
+    "i(v3)",
+    "v(k)",
+    "v(m)",
+    "v(n)",
+    "v(y)",
+    "v(z)",
+    "i(v5)",
+    "i(e:x4:e1)",
+    "i(h1)",
+];
 
 /// The largest difference between a run's `columns` and the reference's.
 fn worst_against_reference(run: &spice::Waveforms, columns: &[&str], t_end: f64) -> f64 {
@@ -193,8 +229,10 @@ fn a_netlist_with_every_element_follows_its_equations() {
 /// with its transformer and its RC stage in subcircuits (the stage inside another, its
 /// resistor split in two around an inner node), its values from `.param`s, defaults and
 /// instance parameters, some as expressions; beside it, a sine clipped by two Shockley diodes
-/// in a subcircuit, and RC circuits driven by a pulse train, a piecewise-linear current and a
-/// delayed damped sine.
+/// in a subcircuit, RC circuits driven by a pulse train, a piecewise-linear current and a
+/// delayed damped sine, and controlled sources: an RC stage amplified by an `E` in a
+/// subcircuit into another, and an `F` and an `H` reading the current through the stage's sine
+/// source.
 const IN_SUBCIRCUITS: &str = "every supported element, in subcircuits
 .param rs=1 half={rs/2}
 .subckt transformer p s params: lp=1 ls=1 k=0.5
@@ -213,6 +251,9 @@ Xs a b stage params: r={r} c=1m
 .subckt clamp a
 D1 a 0 dmod
 D2 0 a dmod
+.ends
+.subckt amp in out params: gain=2
+E1 out 0 in 0 {gain}
 .ends
 .model dmod D(IS=1e-14 N=1)
 V1 in 0 DC 1
@@ -240,6 +281,17 @@ C4 r 0 0.5
 V3 s 0 DC 0 SIN(0.2 1 0.5 1.5 0.3 45)
 R7 s w 1
 C5 w 0 0.25
+* controlled sources
+V5 u 0 SIN(0 1 0.5)
+R9 u k 1
+C7 k 0 1
+X4 k m amp params: gain=3
+R10 m n 1
+C8 n 0 1
+F1 0 y V5 2
+R11 y 0 1
+H1 z 0 v5 0.5
+R12 z 0 1
 .tran 0.1 5
 .end
 ";
@@ -266,6 +318,11 @@ C5 w 0 0.25
 #[dirac(connect(i2.n, r6.p), connect(i2.n, c4.p))]
 #[dirac(connect(i2.p, ground.p), connect(r6.n, ground.p), connect(c4.n, ground.p))]
 #[dirac(connect(v3.p, r7.p), connect(r7.n, c5.p), connect(v3.n, ground.p), connect(c5.n, ground.p))]
+#[dirac(connect(v5.p, r9.p), connect(r9.n, c7.p), connect(r9.n, e1.p1), connect(e1.p2, r10.p))]
+#[dirac(connect(r10.n, c8.p), connect(v5.n, ground.p), connect(c7.n, ground.p), connect(e1.n1, ground.p))]
+#[dirac(connect(e1.n2, ground.p), connect(c8.n, ground.p))]
+#[dirac(connect(f1.c, v5.s), connect(f1.p, ground.p), connect(f1.n, r11.p), connect(r11.n, ground.p))]
+#[dirac(connect(h1.c, v5.s), connect(h1.p, r12.p), connect(h1.n, ground.p), connect(r12.n, ground.p))]
 struct Twin {
     v1: VoltageSource,
     r1: Resistor,
@@ -292,6 +349,16 @@ struct Twin {
     v3: VoltageSource,
     r7: Resistor,
     c5: Capacitor,
+    v5: SensedVoltageSource,
+    r9: Resistor,
+    c7: Capacitor,
+    e1: VoltageControlledVoltage,
+    r10: Resistor,
+    c8: Capacitor,
+    f1: CurrentControlledCurrent,
+    r11: Resistor,
+    h1: CurrentControlledVoltage,
+    r12: Resistor,
     ground: Gnd,
 }
 
@@ -306,12 +373,26 @@ fn every_element_in_subcircuits() {
     let nodes: Vec<&str> = circuit.nodes().collect();
     assert_eq!(nodes[..8], ["0", "in", "a", "b", "c", "x2:xs:mid", "e", "f"]);
     let names = circuit.network.part_names();
-    for name in ["k:x1:k1", "r:x2:xs:r3", "r:x2:xs:r3b", "c:x2:xs:c2", "g1", "d:x3:d2", "v2", "i2"] {
+    let parts = [
+        "k:x1:k1",
+        "r:x2:xs:r3",
+        "r:x2:xs:r3b",
+        "c:x2:xs:c2",
+        "g1",
+        "d:x3:d2",
+        "v2",
+        "i2",
+        "e:x4:e1",
+        "f1",
+        "h1",
+    ];
+    for name in parts {
         assert!(names.iter().any(|n| n == name), "a part `{name}` in {names:?}");
     }
     // The reference: the hand-written equations, integrated by RK4.
     let run = circuit.simulate(1e-10).expect("simulates");
     let worst = worst_against_reference(&run, &REFERENCE_COLUMNS, 5.0);
+    eprintln!("every element in subcircuits, largest difference to the reference: {worst:e}");
     assert!(worst < 1e-8, "largest difference to the reference {worst:e}");
     // The inner node sits halfway between c and e.
     let (vc, ve, mid) = (
@@ -323,10 +404,10 @@ fn every_element_in_subcircuits() {
         assert!((mid[i] - 0.5 * (vc[i] + ve[i])).abs() < 1e-9);
     }
     // More than twelve columns: the chart shows the first twelve and says so.
-    assert_eq!(run.names().len(), 18);
+    assert_eq!(run.names().len(), 27);
     let svg = svg_of(&run, "all");
     assert_eq!(svg.matches("<polyline").count(), 12);
-    assert!(svg.contains(">all (the first 12 of 18 columns)</text>"));
+    assert!(svg.contains(">all (the first 12 of 27 columns)</text>"));
     // The sources' nodes carry their waveforms, to the tolerance: a sample between a step's
     // ends is read from its collocation polynomial.
     let (p, s) = (run.column("v(p)").expect("p"), run.column("v(s)").expect("s"));
@@ -369,11 +450,21 @@ fn every_element_in_subcircuits() {
         v3: VoltageSource { u: delayed_sine(0.0) },
         r7: Resistor { r: 1.0 },
         c5: Capacitor { c: 0.25 },
+        v5: SensedVoltageSource { u: 0.0 },
+        r9: Resistor { r: 1.0 },
+        c7: Capacitor { c: 1.0 },
+        e1: VoltageControlledVoltage { gain: 3.0 },
+        r10: Resistor { r: 1.0 },
+        c8: Capacitor { c: 1.0 },
+        f1: CurrentControlledCurrent { gain: 2.0 },
+        r11: Resistor { r: 1.0 },
+        h1: CurrentControlledVoltage { r: 0.5 },
+        r12: Resistor { r: 1.0 },
         ground: Gnd {},
     };
     let inputs = twin.input_names();
     let input = |name: &str| inputs.iter().position(|n| n == name).expect("an input");
-    let (u2, i2, u3) = (input("v2.u"), input("i2.i"), input("v3.u"));
+    let (u2, i2, u3, u5) = (input("v2.u"), input("i2.i"), input("v3.u"), input("v5.u"));
     let q = twin.sizes().zeros_q::<Twin>();
     let start = consistent_state(&twin, 0.0, &q, &q, Consistency::default()).expect("consistent");
     let names = twin.coordinate_names();
@@ -382,6 +473,7 @@ fn every_element_in_subcircuits() {
         twin.set_input_value(u2, pulse(t));
         twin.set_input_value(i2, pwl(t));
         twin.set_input_value(u3, delayed_sine(t));
+        twin.set_input_value(u5, (std::f64::consts::PI * t).sin());
     };
     let mut radau = Radau::new(&mut twin, options).expect("options");
     radau.drive(&mut drive).expect("a drive");
@@ -398,6 +490,12 @@ fn every_element_in_subcircuits() {
         ("v(q)", "c3.p"),
         ("v(r)", "c4.p"),
         ("v(w)", "c5.p"),
+        ("v(k)", "c7.p"),
+        ("v(m)", "r10.p"),
+        ("v(n)", "c8.p"),
+        ("v(y)", "r11.p"),
+        ("v(z)", "r12.p"),
+        ("i(v5)", "v5.s"),
     ];
     let mut worst: f64 = 0.0;
     for (column, pin) in pins {
@@ -407,6 +505,7 @@ fn every_element_in_subcircuits() {
             worst = worst.max((x - s.v[k]).abs() / s.v[k].abs().max(1.0));
         }
     }
+    eprintln!("every element in subcircuits, netlist against derived interconnection: {worst:e}");
     assert!(worst < 1e-10, "netlist against derived interconnection: {worst:e}");
 }
 
@@ -531,9 +630,12 @@ fn refused(text: &str) -> SpiceError {
 
 #[test]
 fn what_is_not_supported_is_refused_with_its_line_and_column() {
-    let e = refused("t\nR1 a 0 1\nE1 b 0 a 0 2\n");
+    let e = refused("t\nR1 a 0 1\nQ1 b a 0 qmod\n");
     assert_eq!((e.line, e.column), (3, 1));
-    assert!(e.message.contains("`e1` is not supported"), "{e}");
+    assert!(e.message.contains("`q1` is not supported"), "{e}");
+    let e = refused("t\nR1 a 0 1\nE1 b 0 a 0 poly(1)\n");
+    assert_eq!((e.line, e.column), (3, 12));
+    assert!(e.message.contains("`e1`: `poly` is not supported here (a voltage gain is)"), "{e}");
     let e = refused("t\nR1 a 0 1\nD1 a 0 dmod\n.end\n");
     assert_eq!((e.line, e.column), (3, 8));
     assert!(e.message.contains("no `.model` is named `dmod`"), "{e}");
@@ -599,6 +701,19 @@ fn circuits_no_solver_could_simulate_are_refused_naming_the_elements() {
     assert!(e.message.contains("`r1` is not an inductor"), "{e}");
     let e = refused("t\nR1 a 0 1\n.ic v(b)=1\n");
     assert!(e.message.contains("no node `b`"), "{e}");
+    // Controlled sources: an F reading a resistor, an E across a source, an F left alone at a
+    // node, an E whose current would follow a capacitor's derivative.
+    let e = refused("t\nV1 a 0 1\nR1 a 0 1\nF1 b 0 R1 2\nR2 b 0 1\n");
+    assert_eq!((e.line, e.column), (4, 8));
+    assert!(e.message.contains("`r1` is not a voltage source of the netlist"), "{e}");
+    let e = refused("t\nV1 a 0 1\nE1 a 0 a 0 2\n");
+    assert_eq!(e.line, 3);
+    assert!(e.message.contains("`e1` closes a loop of voltage sources"), "{e}");
+    let e = refused("t\nV1 a 0 1\nR1 a 0 1\nF1 b 0 V1 2\n");
+    assert!(e.message.contains("`f1` is in a cut-set of current sources"), "{e}");
+    let e = refused("t\nV1 a 0 1\nR1 a b 1\nC1 b 0 1\nE1 c 0 b 0 2\nC2 c 0 1\n");
+    assert_eq!(e.line, 5);
+    assert!(e.message.contains("`e1` closes a loop of capacitors and voltage sources"), "{e}");
 }
 
 /// 10⁴ netlists made from the test netlist by deleting, repeating, swapping and changing
