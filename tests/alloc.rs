@@ -740,6 +740,20 @@ fn steps_with_sensitivities_do_not_allocate() {
         let (n, _) = allocations_with_sensitivities(&ladder, &start, &wrt, error_control);
         assert_eq!(n, 0, "ladder (sparse), error control {error_control}");
     }
+    // The same ladder as a network assembled at run time, with respect to two of its parts'
+    // parameters: each part writes its derivatives in place.
+    let network = network_ladder(20);
+    let mut at = State::<dirac::network::Network>::with_sizes(network.sizes());
+    at.q.copy_from_slice(start.q.as_slice());
+    at.v.copy_from_slice(start.v.as_slice());
+    at.p.copy_from_slice(start.p.as_slice());
+    at.lambda.copy_from_slice(start.lambda.as_slice());
+    let names = network.parameter_names();
+    let wrt = Sensitivities::new(&network).parameters(&[&names[0], &names[7]]).expect("parameters");
+    for error_control in [false, true] {
+        let (n, _) = allocations_with_sensitivities(&network, &at, &wrt, error_control);
+        assert_eq!(n, 0, "network ladder, error control {error_control}");
+    }
 }
 
 #[path = "../examples/fmu/driven_pendulum.rs"]

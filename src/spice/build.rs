@@ -635,7 +635,7 @@ enum CurrentAt {
 /// Adds an element's part under its name.
 fn add<M>(b: &mut NetworkBuilder, e: &Element, model: M) -> Result<(), SpiceError>
 where
-    M: crate::DenseModel + crate::InputsOutputs + Clone + Send + Sync,
+    M: crate::DenseModel + crate::InputsOutputs + crate::Parameters + Clone + Send + Sync,
     crate::nalgebra::DefaultAllocator: crate::Storage<M>,
 {
     b.add(&e.name, model).map(|_| ()).map_err(|err| at(e, err))

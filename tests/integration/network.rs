@@ -383,3 +383,55 @@ fn a_one_form_between_parts_holds() {
         assert!((s.q[lp] - (2.0 * t).cos()).abs() < 1e-7, "t = {t}: {} against {}", s.q[lp], (2.0 * t).cos());
     }
 }
+
+/// A network's parameters are its parts' (`"R1.r"`), read and set by index, and forward
+/// sensitivities with respect to them follow the closed form: a resistor `R` charging a
+/// capacitor `C` from 1 V has `v = 1 − e^{−t/RC}`, so `∂v/∂R = −(t/(R²C)) e^{−t/RC}` and
+/// `∂v/∂C = −(t/(RC²)) e^{−t/RC}`.
+#[test]
+fn sensitivities_to_a_networks_parameters_follow_the_closed_form() {
+    let (r, c) = (2.0, 0.75);
+    let mut b = Network::builder();
+    b.add("V1", VoltageSource { u: 1.0 }).expect("new").add("R1", Resistor { r: 5.0 }).expect("new");
+    b.add("C1", Capacitor { c }).expect("new").add("gnd", Gnd {}).expect("new");
+    b.connect("V1.p", "R1.p").expect("ports").join("R1.n", "C1.p").expect("ports");
+    b.connect("C1.n", "gnd.p").expect("ports").connect("V1.n", "gnd.p").expect("ports");
+    let mut network = b.finish().expect("a network");
+    assert_eq!(network.parameter_names(), ["V1.u", "R1.r", "C1.c"]);
+    let k = network.parameter_index("R1.r").expect("a parameter");
+    assert_eq!(network.parameter_value(k), 5.0);
+    network.set_parameter_value(k, r);
+    assert_eq!(network.parameter_value(k), r);
+    assert_eq!(network.parameter_value(network.parameter_index("C1.c").expect("a parameter")), c);
+    assert_eq!(network.parameter_index("R1.x"), None);
+
+    let zeros = network.sizes().zeros_q::<Network>();
+    let start = consistent_state(&network, 0.0, &zeros, &zeros, Consistency::default()).expect("consistent");
+    let wrt = Sensitivities::new(&network).parameters(&["R1.r", "C1.c"]).expect("parameters");
+    let options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(1e-11, 1e-11) };
+    let times: Vec<f64> = (1..=6).map(|i| 0.5 * i as f64).collect();
+    let solution = Radau::new(&network, options)
+        .expect("options")
+        .with_sensitivities(&wrt)
+        .expect("sensitivities")
+        .solve_with_sensitivities(0.0, &start, 3.0, &Sampling::Times(times.clone()))
+        .expect("runs");
+    // A joined port names its node's coordinate; rows are named by part or by their ends.
+    let node = network.coordinate("C1.p").expect("a pin");
+    assert_eq!(network.coordinate("R1.n"), Some(node));
+    assert_eq!(network.coordinate("C1.x"), None);
+    let row = network.constraint("V1.source").expect("the source's row");
+    assert_eq!(network.constraint_names()[row.index()], "V1.source");
+    let own = network.constraint("V1.p~R1.p").expect("a connection");
+    assert_eq!(network.constraint_names()[own.index()], "V1.p~R1.p");
+    let (by_r, by_c) =
+        (solution.dv(node, "R1.r").expect("recorded"), solution.dv(node, "C1.c").expect("recorded"));
+    let mut worst: f64 = 0.0;
+    for (i, &t) in times.iter().enumerate() {
+        let decay = (-t / (r * c)).exp();
+        worst = worst.max((by_r[i] + t / (r * r * c) * decay).abs());
+        worst = worst.max((by_c[i] + t / (r * c * c) * decay).abs());
+    }
+    eprintln!("network sensitivities, largest difference from the closed form: {worst:e}");
+    assert!(worst < 1e-8, "largest difference from the closed form {worst:e}");
+}

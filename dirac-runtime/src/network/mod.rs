@@ -14,7 +14,10 @@
 //! generated kernel in a loop.
 //!
 //! Every integrator, [`consistent_state`](crate::consistent_state) and
-//! [`linearize`](crate::linearize) take a network as they take a derived model.
+//! [`linearize`](crate::linearize) take a network as they take a derived model, and forward
+//! sensitivities are taken with respect to its parts' parameters (`"R1.r"`,
+//! [`Network::parameter_index`]), each part's generated parameter derivatives written at its
+//! coordinates.
 //!
 //! Parts are named when they are added (`"R1"`), and every coordinate, multiplier, input and
 //! output by its part's name and its own (`"R1.p"`, `"C1.vp"`, `"V1.source"`); a connection's
@@ -33,7 +36,7 @@ use thiserror::Error;
 
 use crate::algebra::{Pattern, SparseShape};
 use crate::model::DenseModel;
-use crate::model::InputsOutputs;
+use crate::model::{InputsOutputs, Parameters};
 use crate::shape::dims::{Sizes, Storage};
 
 use self::part::{Member, Part};
@@ -151,7 +154,7 @@ impl NetworkBuilder {
     /// Adds a part under `name`: any model of fixed size.
     pub fn add<M>(&mut self, name: &str, model: M) -> Result<&mut Self, NetworkError>
     where
-        M: DenseModel + InputsOutputs + Clone + Send + Sync,
+        M: DenseModel + InputsOutputs + Parameters + Clone + Send + Sync,
         DefaultAllocator: Storage<M>,
     {
         let bad =
@@ -371,6 +374,8 @@ struct Slot {
     cq: usize,
     inputs: usize,
     outputs: usize,
+    /// Where the part's parameters start among the network's.
+    parameters: usize,
 }
 
 /// A network of compiled parts assembled while the program runs: a sparse Lagrange-Dirac model
@@ -401,6 +406,7 @@ pub struct Network {
     shape: SparseShape,
     inputs: usize,
     outputs: usize,
+    parameters: usize,
 }
 
 impl Clone for Network {
@@ -424,6 +430,7 @@ impl Clone for Network {
             shape: self.shape.clone(),
             inputs: self.inputs,
             outputs: self.outputs,
+            parameters: self.parameters,
         }
     }
 }
@@ -447,10 +454,20 @@ impl Network {
     fn new(entries: Vec<Entry>, rows: Vec<OwnRow>, map: Vec<Vec<usize>>) -> Network {
         let nq = map.iter().flatten().filter(|&&c| c != GROUNDED).map(|&c| c + 1).max().unwrap_or(0);
         let (mut nh, mut other, mut qq, mut cq, mut inputs, mut outputs) = (0, 0, 0, 0, 0, 0);
+        let mut parameters = 0;
         let mut slots = Vec::with_capacity(entries.len());
         for (e, q) in entries.iter().zip(map) {
             let s = e.part.sizes();
-            slots.push(Slot { at: Place { q, h: nh, v: other }, sizes: s, qq, cq, inputs, outputs });
+            slots.push(Slot {
+                at: Place { q, h: nh, v: other },
+                sizes: s,
+                qq,
+                cq,
+                inputs,
+                outputs,
+                parameters,
+            });
+            parameters += e.part.parameter_count();
             nh += s.nh;
             other += s.nc - s.nh;
             qq += s.nq * s.nq;
@@ -541,6 +558,7 @@ impl Network {
             shape,
             inputs,
             outputs,
+            parameters,
         }
     }
 
@@ -578,6 +596,21 @@ impl Network {
     pub fn output_index(&self, name: &str) -> Option<usize> {
         let (e, rest) = self.part_of(name)?;
         Some(self.slots[e].outputs + self.parts[e].output_names().iter().position(|c| c == rest)?)
+    }
+
+    /// The index of a part's parameter (`"R1.r"`) among the network's parameters, for
+    /// [`set_parameter_value`](crate::Parameters::set_parameter_value) and sensitivities;
+    /// `None` if there is none.
+    pub fn parameter_index(&self, name: &str) -> Option<usize> {
+        let (e, rest) = self.part_of(name)?;
+        Some(self.slots[e].parameters + self.parts[e].parameter_names().iter().position(|c| c == rest)?)
+    }
+
+    /// The part that holds network parameter `k`, and its index there.
+    fn parameter_owner(&self, k: usize) -> (usize, usize) {
+        assert!(k < self.parameters, "the network has no parameter {k}: it has {}", self.parameters);
+        let e = self.slots.partition_point(|s| s.parameters <= k) - 1;
+        (e, k - self.slots[e].parameters)
     }
 
     /// The part a dotted name starts with, and the rest of the name.

@@ -7,7 +7,7 @@ use super::Network;
 use super::part::{IoBlock, JacobianValues, QqKernel, RowKernel, VecKernel};
 use crate::algebra::{Sparse, SparseBlock, SparseShape};
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
-use crate::model::keys::Coordinate;
+use crate::model::keys::{Constraint, Coordinate};
 use crate::model::names::Names;
 use crate::model::structure::Structure;
 use crate::model::{InputsOutputs, LagrangeDirac, Named, Parameters};
@@ -70,8 +70,9 @@ impl Named for Network {
         self.names_with(|p| p.output_names())
     }
 
+    /// Every part's parameters, `"R1.r"`, in the order the parts were added.
     fn parameter_names(&self) -> Vec<String> {
-        Vec::new()
+        self.names_with(|p| p.parameter_names())
     }
 }
 
@@ -164,6 +165,18 @@ impl LagrangeDirac for Network {
 
     fn shape(&self) -> SparseShape {
         self.shape.clone()
+    }
+
+    /// The coordinate of any of its ports (`"C1.p"`, joined or not), found as
+    /// [`Network::coordinate_index`] finds it.
+    fn coordinate(&self, name: &str) -> Option<Coordinate<Self>> {
+        self.coordinate_index(name).map(Coordinate::unchecked)
+    }
+
+    /// A part's row (`"V1.source"`) or the network's own (`"R1.n~C1.p"`, a one-form's name).
+    fn constraint(&self, name: &str) -> Option<Constraint<Self>> {
+        let own = || self.row_names.iter().position(|r| r == name).map(|r| self.row0 + r);
+        self.constraint_index(name).or_else(own).map(Constraint::unchecked)
     }
 
     fn lagrangian(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>) -> f64 {
@@ -446,6 +459,44 @@ enum Axis {
     Outputs,
 }
 
-impl Parameters for Network {}
+/// The parts' parameters, each part's derivatives written at its coordinates and rows. The
+/// network's own rows (connections, one-forms) have constant coefficients and no parameter.
+impl Parameters for Network {
+    fn parameter_count(&self) -> usize {
+        self.parameters
+    }
+
+    fn parameter_value(&self, k: usize) -> f64 {
+        let (e, i) = self.parameter_owner(k);
+        self.parts[e].parameter_value(i)
+    }
+
+    fn set_parameter_value(&mut self, k: usize, value: f64) {
+        let (e, i) = self.parameter_owner(k);
+        self.parts[e].set_parameter_value(i, value);
+    }
+
+    fn residual_blocks_dtheta(
+        &self,
+        k: usize,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        out: &mut ResidualBlocks<Self>,
+    ) {
+        let (e, i) = self.parameter_owner(k);
+        out.momentum_rate.fill(0.0);
+        out.dl_dv.fill(0.0);
+        out.constraint_velocity.fill(0.0);
+        self.parts[e].residual_blocks_dtheta(i, t, q, v, lambda, &self.slots[e].at, out);
+    }
+
+    fn holonomic_dtheta(&self, k: usize, t: f64, q: &DVector<f64>, out: &mut DVector<f64>) {
+        let (e, i) = self.parameter_owner(k);
+        out.fill(0.0);
+        self.parts[e].holonomic_dtheta(i, t, q, &self.slots[e].at, out);
+    }
+}
 
 impl crate::model::Hybrid for Network {}

@@ -5,9 +5,9 @@
 
 use nalgebra::{DVector, DefaultAllocator};
 
-use crate::model::InputsOutputs;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::{DenseModel, MatCQ, MatQQ};
+use crate::model::{InputsOutputs, Parameters};
 use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
 
 use super::{GROUNDED, Network, Place};
@@ -158,6 +158,25 @@ pub(crate) trait Part: Send + Sync {
     fn input_value(&self, k: usize) -> f64;
     fn set_input_value(&mut self, k: usize, value: f64);
     fn invalid_parameter(&self) -> Option<(String, f64, &'static str)>;
+    fn parameter_names(&self) -> Vec<String>;
+    fn parameter_count(&self) -> usize;
+    fn parameter_value(&self, k: usize) -> f64;
+    fn set_parameter_value(&mut self, k: usize, value: f64);
+    /// Adds the derivatives of the part's residual blocks with respect to its parameter `k`
+    /// into the network's (zero where the part has no entry).
+    #[allow(clippy::too_many_arguments)]
+    fn residual_blocks_dtheta(
+        &self,
+        k: usize,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        out: &mut ResidualBlocks<Network>,
+    );
+    /// Writes `∂φ/∂θ_k` of the part's holonomic rows into the network's.
+    fn holonomic_dtheta(&self, k: usize, t: f64, q: &DVector<f64>, at: &Place, out: &mut DVector<f64>);
 }
 
 /// A model of fixed size held by a network.
@@ -245,7 +264,7 @@ fn put<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
 
 impl<M> Part for Member<M>
 where
-    M: DenseModel + InputsOutputs + Clone + Send + Sync,
+    M: DenseModel + InputsOutputs + Parameters + Clone + Send + Sync,
     DefaultAllocator: Storage<M>,
 {
     fn sizes(&self) -> Sizes {
@@ -492,5 +511,46 @@ where
 
     fn invalid_parameter(&self) -> Option<(String, f64, &'static str)> {
         self.0.invalid_parameter()
+    }
+
+    fn parameter_names(&self) -> Vec<String> {
+        self.0.parameter_names()
+    }
+
+    fn parameter_count(&self) -> usize {
+        self.0.parameter_count()
+    }
+
+    fn parameter_value(&self, k: usize) -> f64 {
+        self.0.parameter_value(k)
+    }
+
+    fn set_parameter_value(&mut self, k: usize, value: f64) {
+        self.0.set_parameter_value(k, value);
+    }
+
+    fn residual_blocks_dtheta(
+        &self,
+        k: usize,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        out: &mut ResidualBlocks<Network>,
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let lambda = gather_c::<M>(lambda, at);
+        let mut o = ResidualBlocks::<M>::zeros();
+        self.0.residual_blocks_dtheta(k, t, &q, &v, &lambda, &mut o);
+        scatter_q::<M>(&o.momentum_rate, at, &mut out.momentum_rate);
+        scatter_q::<M>(&o.dl_dv, at, &mut out.dl_dv);
+        scatter_c::<M>(&o.constraint_velocity, at, &mut out.constraint_velocity);
+    }
+
+    fn holonomic_dtheta(&self, k: usize, t: f64, q: &DVector<f64>, at: &Place, out: &mut DVector<f64>) {
+        let mut o = VecH::<M>::zeros();
+        self.0.holonomic_dtheta(k, t, &gather_q::<M>(q, at), &mut o);
+        scatter_h::<M>(&o, at, out);
     }
 }
