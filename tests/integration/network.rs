@@ -1,8 +1,10 @@
 //! Networks assembled while the program runs, against the same systems written as derived
 //! interconnections: the same equations, the same trajectories, the same linearisation.
 
+use std::ops::ControlFlow;
+
 use dirac::components::electrical::{
-    Capacitor, Ground as Gnd, IdealDiode, Inductor, Resistor, VoltageSource,
+    Capacitor, CurrentSource, Ground as Gnd, IdealDiode, Inductor, Resistor, VoltageSource,
 };
 use dirac::network::{Network, NetworkError};
 use dirac::prelude::*;
@@ -434,4 +436,45 @@ fn sensitivities_to_a_networks_parameters_follow_the_closed_form() {
     }
     eprintln!("network sensitivities, largest difference from the closed form: {worst:e}");
     assert!(worst < 1e-8, "largest difference from the closed form {worst:e}");
+}
+
+/// Events on a network: a relaxation oscillator whose comparator switches a current source
+/// (1 A into a 1 Ω resistor and a 1 F capacitor) off when the capacitor reaches 2/3 V and on
+/// when it falls to 1/3 V. From rest `v = 1 − e^{−t}` reaches 2/3 at `ln 3`; then each half
+/// period, `v = (2/3) e^{−s}` down to 1/3 or `v = 1 − (2/3) e^{−s}` up to 2/3, lasts `ln 2`.
+#[test]
+fn events_on_a_network_switch_its_inputs_at_the_exact_times() {
+    let mut b = Network::builder();
+    b.add("I1", CurrentSource { i: 1.0 }).expect("new").add("R1", Resistor { r: 1.0 }).expect("new");
+    b.add("C1", Capacitor { c: 1.0 }).expect("new");
+    b.join("I1.n", "R1.p").expect("ports").join("I1.n", "C1.p").expect("ports");
+    for pin in ["I1.p", "R1.n", "C1.n"] {
+        b.ground(pin).expect("a port");
+    }
+    let mut network = b.finish().expect("a network");
+    let node = network.coordinate_index("C1.p").expect("a pin");
+    let source = network.input_index("I1.i").expect("an input");
+    let zeros = network.sizes().zeros_q::<Network>();
+    let start = consistent_state(&network, 0.0, &zeros, &zeros, Consistency::default()).expect("consistent");
+    let mut events = Events::new()
+        .on("high", Crossing::Rising, move |_, s: &State<Network>, _| s.v[node] - 2.0 / 3.0)
+        .on("low", Crossing::Falling, move |_, s: &State<Network>, _| s.v[node] - 1.0 / 3.0);
+    let high = events.index("high").expect("an event");
+    let mut radau = Radau::new(&mut network, RadauOptions::tolerances(1e-12, 1e-12)).expect("options");
+    let solution = radau
+        .solve_with_events(0.0, &start, 6.0, &Sampling::Times(vec![]), &mut events, |event, at| {
+            let on = if event.index == high { 0.0 } else { 1.0 };
+            at.model_mut().expect("the integrator owns the network").set_input_value(source, on);
+            ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let (ups, downs) =
+        (solution.event_times("high").expect("recorded"), solution.event_times("low").expect("recorded"));
+    let (ln2, ln3) = (2f64.ln(), 3f64.ln());
+    assert_eq!((ups.len(), downs.len()), (4, 4), "{ups:?} {downs:?}");
+    for (k, (&up, &down)) in ups.iter().zip(&downs).enumerate() {
+        let up_at = ln3 + 2.0 * k as f64 * ln2;
+        assert!((up - up_at).abs() < 1e-9, "rise {k}: {up} against {up_at}");
+        assert!((down - (up_at + ln2)).abs() < 1e-9, "fall {k}: {down} against {}", up_at + ln2);
+    }
 }
