@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # dirac-spice against ngspice on the same netlists: LC ladders of 10³, 10⁴ and 10⁵ nodes from a
-# pulse (or the sizes in DIRAC_SPICE_SIZES, comma-separated), against their modal solution
-# computed in benches/peers/spice_ladder.py. Each simulator runs over a range of tolerances;
+# pulse (or the sizes in DIRAC_SPICE_SIZES, comma-separated, empty for none), against their
+# modal solution computed in benches/peers/spice_ladder.py; an RLC ladder, a diode clipper and a
+# circuit of E, F and H controlled sources, against references computed there. Each simulator runs over a range of tolerances;
 # the table gives, for every ngspice run, dirac's error at ngspice's wall time and dirac's time
 # at ngspice's error. ngspice comes from Debian's package, unpacked into target/peers without
 # installing; numpy into a virtual environment there. Not part of CI.
@@ -17,5 +18,5 @@ venv=$peers/spice-venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet numpy scipy
 cargo build --release --bin dirac-spice
-"$venv/bin/python" benches/peers/spice_ladder.py compare "${DIRAC_SPICE_SIZES:-1000,10000,100000}" \
+"$venv/bin/python" benches/peers/spice_ladder.py compare "${DIRAC_SPICE_SIZES-1000,10000,100000}" \
     "$peers/ngspice/usr/bin/ngspice" target/release/dirac-spice "$peers/spice"

@@ -154,6 +154,42 @@ def clipper_reference(path):
         out.write(f"out {a:.17e}\n")
 
 
+CONTROLLED = """controlled sources
+.subckt amp in out params: gain=2
+E1 out 0 in 0 {gain}
+.ends
+V5 u 0 SIN(0 1 0.5)
+R9 u k 1
+C7 k 0 1
+X4 k m amp params: gain=3
+R10 m n 1
+C8 n 0 1
+F1 0 y V5 2
+R11 y 0 1
+H1 z 0 v5 0.5
+R12 z 0 1
+.save v(k) v(m) v(n) v(y) v(z)
+.tran 0.1 5
+.end
+"""
+
+
+def controlled_reference(path):
+    """The controlled sources' nodes at 5 s: C7 v(k)' = sin(pi t) - v(k), v(m) = 3 v(k) (E),
+    C8 v(n)' = v(m) - v(n); the current into V5's + pin i5 = v(k) - sin(pi t), v(y) = 2 i5 (F into
+    R11), v(z) = 0.5 i5 (H); by scipy's DOP853 and Radau at tight tolerances, which must agree."""
+    from scipy.integrate import solve_ivp
+    def f(t, x):
+        return [np.sin(np.pi * t) - x[0], 3.0 * x[0] - x[1]]
+    a = solve_ivp(f, (0, 5), [0.0, 0.0], method="DOP853", rtol=1e-13, atol=1e-16).y[:, -1]
+    b = solve_ivp(f, (0, 5), [0.0, 0.0], method="Radau", rtol=1e-12, atol=1e-15).y[:, -1]
+    assert np.abs(a - b).max() < 1e-9, (a, b)
+    i5 = a[0] - np.sin(5 * np.pi)
+    with open(path, "w") as out:
+        for node, v in (("k", a[0]), ("m", 3 * a[0]), ("n", a[1]), ("y", 2 * i5), ("z", 0.5 * i5)):
+            out.write(f"{node} {v:.17e}\n")
+
+
 def timed(command, env=None):
     """The median wall time of three runs of `command` (a whole process: reading, building,
     simulating, writing), which must succeed."""
@@ -170,21 +206,25 @@ def compare(sizes, ngspice, dirac, out):
     (time, error) and, for every ngspice run, dirac's error at ngspice's time and dirac's time
     at ngspice's error, interpolated log-log between dirac's runs."""
     env = dict(os.environ, SPICE_ASCIIRAWFILE="1")
-    cases = [("LC ladder", n) for n in sizes] + [("RLC ladder", 1000), ("diode clipper", 1)]
+    cases = [("LC ladder", n) for n in sizes] + [("RLC ladder", 1000), ("diode clipper", 1), ("controlled sources", 1)]
     rows = []
     for name, n in cases:
-        stem = {"LC ladder": f"lc{n}", "RLC ladder": f"rlc{n}", "diode clipper": "clipper"}[name]
+        stem = {"LC ladder": f"lc{n}", "RLC ladder": f"rlc{n}", "diode clipper": "clipper",
+                "controlled sources": "controlled"}[name]
         cir, ref = f"{out}/{stem}.cir", f"{out}/{stem}.ref"
-        stop = 0.04 if name == "diode clipper" else 10.0
+        stop = {"diode clipper": 0.04, "controlled sources": 5.0}.get(name, 10.0)
         if name == "LC ladder":
             netlist(n, cir)
             reference(n, ref)
         elif name == "RLC ladder":
             rlc_netlist(n, cir)
             rlc_reference(n, ref)
-        else:
+        elif name == "diode clipper":
             open(cir, "w").write(CLIPPER)
             clipper_reference(ref)
+        else:
+            open(cir, "w").write(CONTROLLED)
+            controlled_reference(ref)
         body = open(cir).read().replace(".end\n", "")
         ours = []
         for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
@@ -227,7 +267,7 @@ def against(ours, seconds, e):
 
 if __name__ == "__main__":
     if sys.argv[1] == "compare":
-        compare([int(n) for n in sys.argv[2].split(",")], sys.argv[3], sys.argv[4], sys.argv[5])
+        compare([int(n) for n in sys.argv[2].split(",") if n], sys.argv[3], sys.argv[4], sys.argv[5])
         sys.exit()
     what = sys.argv[1]
     if what == "error":
