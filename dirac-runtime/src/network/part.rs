@@ -191,6 +191,26 @@ where
     fn args(&self, q: &DVector<f64>, v: &DVector<f64>, at: &Place) -> (VecQ<M>, VecQ<M>) {
         (gather_q::<M>(q, at), gather_q::<M>(v, at))
     }
+
+    /// Evaluates `method`, a residual-blocks method of the model, at the part's arguments and
+    /// adds its blocks into the network's.
+    fn blocks_into(
+        &self,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        out: &mut ResidualBlocks<Network>,
+        method: impl FnOnce(&M, &VecQ<M>, &VecQ<M>, &VecC<M>, &mut ResidualBlocks<M>),
+    ) {
+        let (q, v) = self.args(q, v, at);
+        let lambda = gather_c::<M>(lambda, at);
+        let mut o = ResidualBlocks::<M>::zeros();
+        method(&self.0, &q, &v, &lambda, &mut o);
+        scatter_q::<M>(&o.momentum_rate, at, &mut out.momentum_rate);
+        scatter_q::<M>(&o.dl_dv, at, &mut out.dl_dv);
+        scatter_c::<M>(&o.constraint_velocity, at, &mut out.constraint_velocity);
+    }
 }
 
 /// The part's coordinates (or velocities) read from the network's: zero where grounded.
@@ -408,13 +428,7 @@ where
         at: &Place,
         out: &mut ResidualBlocks<Network>,
     ) {
-        let (q, v) = self.args(q, v, at);
-        let lambda = gather_c::<M>(lambda, at);
-        let mut o = ResidualBlocks::<M>::zeros();
-        self.0.residual_blocks(t, &q, &v, &lambda, &mut o);
-        scatter_q::<M>(&o.momentum_rate, at, &mut out.momentum_rate);
-        scatter_q::<M>(&o.dl_dv, at, &mut out.dl_dv);
-        scatter_c::<M>(&o.constraint_velocity, at, &mut out.constraint_velocity);
+        self.blocks_into(q, v, lambda, at, out, |m, q, v, lambda, o| m.residual_blocks(t, q, v, lambda, o));
     }
 
     fn jacobian_blocks(
@@ -539,13 +553,9 @@ where
         at: &Place,
         out: &mut ResidualBlocks<Network>,
     ) {
-        let (q, v) = self.args(q, v, at);
-        let lambda = gather_c::<M>(lambda, at);
-        let mut o = ResidualBlocks::<M>::zeros();
-        self.0.residual_blocks_dtheta(k, t, &q, &v, &lambda, &mut o);
-        scatter_q::<M>(&o.momentum_rate, at, &mut out.momentum_rate);
-        scatter_q::<M>(&o.dl_dv, at, &mut out.dl_dv);
-        scatter_c::<M>(&o.constraint_velocity, at, &mut out.constraint_velocity);
+        self.blocks_into(q, v, lambda, at, out, |m, q, v, lambda, o| {
+            m.residual_blocks_dtheta(k, t, q, v, lambda, o)
+        });
     }
 
     fn holonomic_dtheta(&self, k: usize, t: f64, q: &DVector<f64>, at: &Place, out: &mut DVector<f64>) {
