@@ -959,3 +959,51 @@ fn steps_of_a_netlist_driven_by_waveforms_do_not_allocate() {
     assert_eq!(allocations() - before, 0, "Radau, a netlist driven by waveforms, {steps} steps");
     assert!(steps > circuit.corners().len(), "{steps} steps past {} corners", circuit.corners().len());
 }
+
+/// A netlist with an ideal diode (a half-wave rectifier feeding an RC ladder: 10⁴ parts),
+/// watched as a plain solve watches its laws (`Events::switches_in`, the events read from the
+/// network's parts): the steps, the search for the diode's events and the evaluation of the
+/// parts' event functions allocate nothing, up to the first switch (the diode blocks once the
+/// sine turns down). The switch itself projects the state onto the new mode on the heap, as
+/// for a derived model.
+#[cfg(feature = "components")]
+#[test]
+fn watching_an_ideal_diode_in_a_netlist_does_not_allocate() {
+    let n = 5_000;
+    let mut text = String::from("a rectifier into an RC ladder\n.model di D(ideal)\nV1 in 0 SIN(0 1 0.5)\n");
+    text += "D1 in n0 di\nC0 n0 0 1\n";
+    for k in 1..n {
+        text += &format!("R{k} n{} n{k} 1\nC{k} n{k} 0 1\n", k - 1);
+    }
+    text += ".tran 0.01 2\n.end\n";
+    let circuit = dirac::spice::parse(&text).expect("reads").circuit().expect("a circuit");
+    assert!(circuit.network.part_names().len() >= 10_000);
+    let start = circuit.start().expect("consistent");
+    let mut events = dirac::Events::new().switches_in(&circuit.network);
+    let mut radau =
+        Radau::new(&circuit.network, RadauOptions::tolerances(1e-8, 1e-8)).expect("valid options");
+    // Twice from the start: the first run analyses the sparse matrices' structure (the step's
+    // and the dense output's), once; the second is counted.
+    let mut run = |counted: bool| {
+        radau.start(0.0, &start, 2.0).expect("starts");
+        events.begin(radau.model(), 0.0, &start).expect("begins");
+        let before = allocations();
+        let mut steps = 0;
+        let blocked = loop {
+            assert!(!radau.finished(), "the diode blocks before the end");
+            radau.step().expect("steps");
+            steps += 1;
+            if let Some(event) = events.locate(&mut radau).expect("locates") {
+                assert_eq!(events.name(&event), "d1.diode_blocks");
+                break event.t;
+            }
+        };
+        if counted {
+            assert_eq!(allocations() - before, 0, "Radau with an ideal diode's events, {steps} steps");
+        }
+        blocked
+    };
+    let (first, blocked) = (run(false), run(true));
+    assert!((first - blocked).abs() < 1e-9, "{first} and {blocked}");
+    assert!(blocked > 0.25 && blocked < 1.0, "blocks at {blocked}");
+}

@@ -244,7 +244,7 @@ where
     pub fn exit_initialization(&mut self) -> Result<(), Failure> {
         self.expect(&[Phase::Initialization], "ExitInitializationMode")?;
         // Its steps locate no events, so a law's mode would never switch.
-        if crate::__private::has_laws::<M>() {
+        if crate::__private::has_laws(self.model()) {
             return Err(Failure::error(
                 "the model has friction laws, diodes or switches (`friction`, `diode`, `switch`), whose modes \
                  switch at events that the FMU's steps do not locate: export a model without them",

@@ -281,8 +281,8 @@ where
     if !unilaterals.is_empty() {
         return Err(DescriptionError::Unilateral(unilaterals.join(", ")));
     }
-    if crate::__private::has_laws::<M>() {
-        return Err(DescriptionError::Laws(crate::__private::law_names::<M>().join(", ")));
+    if crate::__private::has_laws(model) {
+        return Err(DescriptionError::Laws(crate::__private::law_names(model).join(", ")));
     }
     let table = Table::of(model);
     if u32::try_from(table.len()).is_err() {

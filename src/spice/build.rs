@@ -4,22 +4,23 @@
 
 use std::collections::{HashMap, HashSet};
 use std::io::{self, Write};
+use std::ops::ControlFlow;
 
 use crate::components::electrical::{
     Capacitor, CoupledInductors, CurrentControlledCurrent, CurrentControlledVoltage, CurrentSource,
-    DampedSineVoltage, Inductor, Resistor, SensedVoltageSource, ShockleyDiode, VoltageControlledCurrent,
-    VoltageControlledVoltage, VoltageSource,
+    DampedSineVoltage, IdealDiode, Inductor, Resistor, SensedVoltageSource, ShockleyDiode,
+    VoltageControlledCurrent, VoltageControlledVoltage, VoltageSource,
 };
 use crate::network::{Network, NetworkBuilder, NetworkError};
 use crate::runtime::Held;
 use crate::{
-    Consistency, Drive, ErrorNorm, InputsOutputs, Integrator, LagrangeDirac, Radau, RadauOptions, State,
-    consistent_state,
+    Consistency, Drive, ErrorNorm, Events, InputsOutputs, Integrator, LagrangeDirac, Radau, RadauOptions,
+    Sampling, SolveWithEvents, State, consistent_state,
 };
 
 use super::expand::is_ground;
 use super::wave::Wave;
-use super::{Command, Element, Kind, Netlist, SpiceError, Tran};
+use super::{Command, DiodeModel, Element, Kind, Netlist, SpiceError, Tran};
 
 /// A netlist's circuit: its network, where each node's voltage is read, its initial state and
 /// its `.tran`.
@@ -344,14 +345,13 @@ impl Netlist {
                         }
                     }
                 }
-                Kind::Diode(model) => {
-                    let Some(&(is, n)) = self.models.get(&model.text) else {
-                        return Err(
-                            model.error(format!("`{}`: no `.model` is named `{}`", e.name, model.text))
-                        );
-                    };
-                    add(&mut b, e, ShockleyDiode { is, n_vt: n * THERMAL_VOLTAGE })
-                }
+                Kind::Diode(model) => match self.models.get(&model.text) {
+                    Some(&DiodeModel::Shockley { is, n }) => {
+                        add(&mut b, e, ShockleyDiode { is, n_vt: n * THERMAL_VOLTAGE })
+                    }
+                    Some(DiodeModel::Ideal) => add(&mut b, e, IdealDiode {}),
+                    None => Err(model.error(format!("`{}`: no `.model` is named `{}`", e.name, model.text))),
+                },
                 Kind::Coupling { a, b: bb, k } => {
                     let (la, lb) = (seen[a.text.as_str()], seen[bb.text.as_str()]);
                     let (Kind::Inductor { l: l1, ic: i1 }, Kind::Inductor { l: l2, ic: i2 }) =
@@ -516,9 +516,9 @@ impl Netlist {
     }
 
     /// Refuses what no solver could simulate, naming the elements: a subnetwork with no path to
-    /// the reference, a loop of voltage sources, a cut-set of current sources, a branch whose
-    /// current is an unknown of its own (`E`, `H`, a `sensed` voltage source) in a loop of
-    /// capacitors and voltage sources.
+    /// the reference, a loop of voltage sources (ideal diodes among them), a cut-set of current
+    /// sources, a branch whose current is an unknown of its own (`E`, `H`, a `sensed` voltage
+    /// source) in a loop of capacitors and voltage sources.
     fn check_topology(
         &self,
         node: &dyn Fn(&str) -> usize,
@@ -526,9 +526,15 @@ impl Netlist {
         names: &[String],
         sensed: &HashSet<String>,
     ) -> Result<(), SpiceError> {
+        // An ideal diode conducting is a voltage source of zero volts.
+        let ideal = |e: &Element| matches!(&e.kind, Kind::Diode(m) if self.models.get(&m.text) == Some(&DiodeModel::Ideal));
+        let any_ideal = self.elements.iter().any(ideal);
         // Each element's branches between its nodes: (from, to, is a voltage source, is a current source).
         let branches = |e: &Element| -> Vec<(usize, usize, bool, bool)> {
             let n = &e.nodes;
+            if ideal(e) {
+                return vec![(node(&n[0]), node(&n[1]), true, false)];
+            }
             match e.kind {
                 Kind::Coupling { .. } => Vec::new(),
                 Kind::Voltage(_) | Kind::Source { current: false, .. } => {
@@ -553,8 +559,10 @@ impl Netlist {
             for (a, b, voltage, current) in branches(e) {
                 all.join(a, b);
                 if voltage && !sources.join(a, b) {
+                    let diodes = if any_ideal { " (an ideal diode is one while it conducts)" } else { "" };
                     return Err(e.token.error(format!(
-                        "`{}` closes a loop of voltage sources: their voltages fix one another and no current is determined",
+                        "`{}` closes a loop of voltage sources{diodes}: their voltages fix one another and no \
+                         current is determined",
                         e.name
                     )));
                 }
@@ -607,7 +615,8 @@ impl Netlist {
         };
         let mut stiff = Sets((0..count).collect());
         for e in &self.elements {
-            let multiplier = matches!(e.kind, Kind::Voltage(_) | Kind::Source { current: false, .. });
+            let multiplier =
+                matches!(e.kind, Kind::Voltage(_) | Kind::Source { current: false, .. }) || ideal(e);
             if matches!(e.kind, Kind::Capacitor { .. }) || (multiplier && !own_current(e)) {
                 stiff.join(node(&e.nodes[0]), node(&e.nodes[1]));
             }
@@ -635,7 +644,7 @@ enum CurrentAt {
 /// Adds an element's part under its name.
 fn add<M>(b: &mut NetworkBuilder, e: &Element, model: M) -> Result<(), SpiceError>
 where
-    M: crate::DenseModel + crate::InputsOutputs + crate::Parameters + Clone + Send + Sync,
+    M: crate::DenseModel + crate::Hybrid + crate::InputsOutputs + crate::Parameters + Clone + Send + Sync,
     crate::nalgebra::DefaultAllocator: crate::Storage<M>,
 {
     b.add(&e.name, model).map(|_| ()).map_err(|err| at(e, err))
@@ -772,6 +781,23 @@ impl Circuit {
             }
         };
         let simulation = |e: crate::SimError| error("the simulation", e);
+        if crate::__private::has_laws(radau.model()) {
+            // Ideal diodes conduct and block at events located between steps, where the
+            // integration restarts in their new modes.
+            let mut events = Events::new().switches_in(radau.model());
+            let sampling = Sampling::Times(sample_times.clone());
+            let solution = radau
+                .solve_with_events(0.0, &start, tran.stop, &sampling, &mut events, |event, at| {
+                    progress(event.t, at.stats().steps);
+                    ControlFlow::Continue(())
+                })
+                .map_err(simulation)?;
+            for i in 0..solution.len() {
+                record(&solution.state(i).expect("a recorded sample"));
+            }
+            progress(tran.stop, radau.stats().steps);
+            return Ok(Waveforms { times: sample_times, names, columns });
+        }
         radau.start(0.0, &start, tran.stop).map_err(simulation)?;
         let (mut buffer, mut next, mut steps) = (start.clone(), times.len() - sample_times.len(), 0);
         while !radau.finished() {

@@ -10,8 +10,11 @@
 //! unknown per node, plus a row per voltage source (whose multiplier is its current).
 //!
 //! Supported:
-//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), `D` (Shockley diodes,
-//!   `.model name D(IS=… N=…)`, at 27 °C);
+//! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), `D`: Shockley diodes
+//!   (`.model name D(IS=… N=…)`, at 27 °C) and ideal ones (`.model name D(ideal)`, a flag of
+//!   dirac's own: no forward drop, no reverse current, the law `diode` of
+//!   [`IdealDiode`](crate::components::electrical::IdealDiode), which conducts and blocks at
+//!   located events);
 //! - linear controlled sources: `G` and `E` (voltage-controlled current and voltage,
 //!   `Gname n+ n- nc+ nc- value`), `F` and `H` (current-controlled current and voltage,
 //!   `Fname n+ n- vname value`, controlled by the current through the voltage source `vname`).
@@ -77,10 +80,19 @@ pub struct SpiceError {
 pub struct Netlist {
     /// The first line.
     pub title: String,
-    /// The diode models by name: `(is, n)`.
-    models: std::collections::HashMap<String, (f64, f64)>,
+    /// The diode models by name.
+    models: std::collections::HashMap<String, DiodeModel>,
     elements: Vec<Element>,
     commands: Vec<Command>,
+}
+
+/// A diode `.model`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum DiodeModel {
+    /// Shockley's equation with the saturation current `is` and the emission coefficient `n`.
+    Shockley { is: f64, n: f64 },
+    /// The ideal diode: `.model name D(ideal)`.
+    Ideal,
 }
 
 /// One element line.

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use super::expand::{self, Frame, Scope};
 use super::wave::Wave;
-use super::{Command, Element, Kind, Netlist, Probe, SpiceError, Tran};
+use super::{Command, DiodeModel, Element, Kind, Netlist, Probe, SpiceError, Tran};
 
 /// A token and where it starts (1-based line and column).
 #[derive(Clone, Debug)]
@@ -187,9 +187,9 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
     Ok(netlist)
 }
 
-/// A `.model name D(IS=… N=…)` line: the model's name, its saturation current and emission
-/// coefficient (SPICE's defaults 1e-14 A and 1).
-fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, (f64, f64)), SpiceError> {
+/// A `.model name D(IS=… N=…)` line (SPICE's defaults 1e-14 A and 1), or `.model name
+/// D(ideal)`: the model's name and what it is.
+fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, DiodeModel), SpiceError> {
     let name = at(tokens, 1, "a name and a type")?;
     let kind = at(tokens, 2, "a type")?;
     if kind.text != "d" {
@@ -198,9 +198,15 @@ fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, (f64, f64)), 
         );
     }
     let (mut is, mut n) = (1e-14, 1.0);
+    let (mut ideal, mut shockley) = (None, None);
     let mut k = 3;
     while k < tokens.len() {
         let key = &tokens[k];
+        if key.text == "ideal" && tokens.get(k + 1).is_none_or(|t| t.text != "=") {
+            ideal = Some(key);
+            k += 1;
+            continue;
+        }
         let eq = at(tokens, k + 1, &format!("`=` after `{}`", key.text))?;
         if eq.text != "=" {
             return Err(eq.error(format!("`.model {}`: expected `=` after `{}`", name.text, key.text)));
@@ -211,11 +217,12 @@ fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, (f64, f64)), 
             "n" => n = value,
             other => {
                 return Err(key.error(format!(
-                    "`.model {}`: the parameter `{other}` is not supported (IS and N are)",
+                    "`.model {}`: the parameter `{other}` is not supported (IS and N are, or the flag `ideal`)",
                     name.text
                 )));
             }
         }
+        shockley.get_or_insert(key);
         if value <= 0.0 {
             return Err(
                 tokens[k + 2].error(format!("`.model {}`: `{}` must be positive", name.text, key.text))
@@ -223,7 +230,14 @@ fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, (f64, f64)), 
         }
         k += 3;
     }
-    Ok((name.text.clone(), (is, n)))
+    match (ideal, shockley) {
+        (Some(_), Some(key)) => Err(key.error(format!(
+            "`.model {}`: an ideal diode has no `{}` (it has no forward drop and no reverse current)",
+            name.text, key.text
+        ))),
+        (Some(_), None) => Ok((name.text.clone(), DiodeModel::Ideal)),
+        (None, _) => Ok((name.text.clone(), DiodeModel::Shockley { is, n })),
+    }
 }
 
 /// The token at `k`, or an error at the end of the line saying what is missing.

@@ -4,8 +4,9 @@
 use std::ops::ControlFlow;
 
 use dirac::components::electrical::{
-    Capacitor, CurrentSource, Ground as Gnd, IdealDiode, Inductor, Resistor, VoltageSource,
+    Capacitor, CurrentSource, DampedSineVoltage, Ground as Gnd, IdealDiode, Inductor, Resistor, VoltageSource,
 };
+use dirac::components::translational::Stop;
 use dirac::network::{Network, NetworkError};
 use dirac::prelude::*;
 
@@ -339,8 +340,8 @@ fn connection_errors_name_the_parts() {
     );
     assert!(err(b.add("R.2", Resistor { r: 2.0 })).starts_with("part name `R.2`: `.` is not allowed"));
     assert_eq!(
-        err(b.add("D1", IdealDiode {})),
-        "part `D1` has switching surfaces or laws (a conditional, `abs`, a diode, friction); a run-time network does not locate events yet"
+        err(b.add("S1", Stop { gap: 0.1, restitution: 0.5 })),
+        "part `S1` has unilateral constraints; a run-time network does not resolve impacts yet"
     );
     assert_eq!(err(b.one_form("k", &[("R1.p", 1.0), ("R1.p", 2.0)])), "one-form `k`: `R1.p` appears twice");
     assert_eq!(
@@ -476,5 +477,122 @@ fn events_on_a_network_switch_its_inputs_at_the_exact_times() {
         let up_at = ln3 + 2.0 * k as f64 * ln2;
         assert!((up - up_at).abs() < 1e-9, "rise {k}: {up} against {up_at}");
         assert!((down - (up_at + ln2)).abs() < 1e-9, "fall {k}: {down} against {}", up_at + ln2);
+    }
+}
+
+/// The closed form of a half-wave rectifier: a sine `sin πt` through an ideal diode into
+/// `C = 1` in parallel with `R = 1`, from rest. Conducting, the capacitor follows the sine while
+/// the diode's current `C v' + v/R = π cos πt + sin πt` is positive: until `tan πt = −π`, at
+/// `t_b = 1 − atan(π)/π` in each period of 2. Blocking, it decays as `v(t_b) e^{−(t − t_b)}`
+/// until it meets the sine again, at `t_c` in (2, 2.5) found by bisection; the cycle repeats
+/// every 2 from there. Returns `t_b`, `t_c` and `v(t)`.
+pub(crate) fn rectifier() -> (f64, f64, impl Fn(f64) -> f64) {
+    let pi = std::f64::consts::PI;
+    let t_b = 1.0 - pi.atan() / pi;
+    let decay = move |t: f64, from: f64| (pi * t_b).sin() * (-(t - from)).exp();
+    let gap = |t: f64| (pi * t).sin() - decay(t, t_b);
+    let (mut lo, mut hi) = (2.0, 2.5);
+    assert!(gap(lo) < 0.0 && gap(hi) > 0.0, "a bracket");
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if gap(mid) < 0.0 { lo = mid } else { hi = mid }
+    }
+    let t_c = 0.5 * (lo + hi);
+    let v = move |t: f64| {
+        let k = (t / 2.0).floor();
+        let s = t - 2.0 * k;
+        let conducting = s <= t_b && (k == 0.0 || s >= t_c - 2.0);
+        if conducting {
+            (pi * t).sin()
+        } else {
+            let from = if s > t_b { 2.0 * k + t_b } else { 2.0 * (k - 1.0) + t_b };
+            decay(t, from)
+        }
+    };
+    (t_b, t_c, v)
+}
+
+/// An ideal diode in a run-time network: a half-wave rectifier switches where its closed form
+/// says, through a plain `solve` (which watches the parts' laws) and through
+/// `solve_with_events` with `Events::switches_in`.
+#[test]
+fn an_ideal_diode_in_a_network_rectifies_as_its_closed_form() {
+    let mut b = Network::builder();
+    let sine = DampedSineVoltage { offset: 0.0, amplitude: 1.0, f: 0.5, damping: 0.0, phase: 0.0 };
+    b.add("V1", sine).expect("new").add("D1", IdealDiode {}).expect("new");
+    b.add("C1", Capacitor { c: 1.0 }).expect("new").add("R1", Resistor { r: 1.0 }).expect("new");
+    b.join("V1.p", "D1.p")
+        .expect("ports")
+        .join("D1.n", "C1.p")
+        .expect("ports")
+        .join("D1.n", "R1.p")
+        .expect("ports");
+    for pin in ["V1.n", "C1.n", "R1.n"] {
+        b.ground(pin).expect("a port");
+    }
+    let network = b.finish().expect("a network");
+    assert!(network.constraint_names().iter().any(|n| n == "D1.diode"), "the law's row");
+    let declared: Vec<String> = network.event_declarations().into_iter().map(|(n, _)| n).collect();
+    assert_eq!(declared, ["D1.diode_conducts", "D1.diode_blocks"]);
+    let node = network.coordinate("C1.p").expect("a pin");
+    let zeros = network.sizes().zeros_q::<Network>();
+    let start = consistent_state(&network, 0.0, &zeros, &zeros, Consistency::default()).expect("consistent");
+    let (t_b, t_c, v) = rectifier();
+    let times: Vec<f64> = (1..=100).map(|i| 0.05 * i as f64).collect();
+    let tolerance = 1e-10;
+    let options =
+        RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tolerance, tolerance) };
+    let plain = Radau::new(&network, options).expect("options").solve(
+        0.0,
+        &start,
+        5.0,
+        &Sampling::Times(times.clone()),
+    );
+    let mut events = Events::new().switches_in(&network);
+    let watched = Radau::new(&network, options).expect("options").solve_with_events(
+        0.0,
+        &start,
+        5.0,
+        &Sampling::Times(times.clone()),
+        &mut events,
+        |_, _| ControlFlow::Continue(()),
+    );
+    // `switches()` reads a derived model's names, which a network has only when it runs: the
+    // solve says how to watch them instead.
+    let unwatched = Radau::new(&network, options).expect("options").solve_with_events(
+        0.0,
+        &start,
+        5.0,
+        &Sampling::Times(times.clone()),
+        &mut Events::new().switches(),
+        |_, _| ControlFlow::Continue(()),
+    );
+    let message = unwatched.expect_err("refused").to_string();
+    assert!(message.contains("`D1.diode`") && message.contains("switches_in(&model)"), "{message}");
+    for (how, solution) in [("solve", plain), ("solve_with_events", watched)] {
+        let solution = solution.expect("integrates");
+        let blocks = solution.event_times("D1.diode_blocks").expect("recorded");
+        let conducts = solution.event_times("D1.diode_conducts").expect("recorded");
+        let (blocks_at, conducts_at) = ([t_b, t_b + 2.0, t_b + 4.0], [t_c, t_c + 2.0]);
+        assert_eq!((blocks.len(), conducts.len()), (3, 2), "{how}: {blocks:?} {conducts:?}");
+        // The bounds of `every_method::switching`'s derived rectifier: the diode conducts at a
+        // zero of its reverse voltage, located to the tolerance; it blocks at a zero of its
+        // current, a multiplier of index two, whose dense output has the stage order.
+        let conducts_off = conducts.iter().zip(conducts_at).map(|(t, at)| (t - at).abs()).fold(0.0, f64::max);
+        let blocks_off = blocks.iter().zip(blocks_at).map(|(t, at)| (t - at).abs()).fold(0.0, f64::max);
+        let mut worst_v: f64 = 0.0;
+        let at_times: Vec<usize> =
+            (0..solution.len()).filter(|&i| times.contains(&solution.t()[i])).collect();
+        assert_eq!(at_times.len(), times.len(), "{how}: every sample recorded");
+        for i in at_times {
+            worst_v = worst_v.max((solution.v(node)[i] - v(solution.t()[i])).abs());
+        }
+        eprintln!(
+            "ideal diode in a network, {how}: conducts within {conducts_off:e}, blocks within {blocks_off:e}, \
+             voltage within {worst_v:e}"
+        );
+        assert!(conducts_off < 100.0 * tolerance, "{how}: conducts off by {conducts_off:e}");
+        assert!(blocks_off < 0.1 * tolerance.powf(0.6), "{how}: blocks off by {blocks_off:e}");
+        assert!(worst_v < 1e-8, "{how}: voltage off by {worst_v:e}");
     }
 }

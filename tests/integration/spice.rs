@@ -3,11 +3,13 @@
 
 use dirac::components::electrical::{
     Capacitor, CoupledInductors, CurrentControlledCurrent, CurrentControlledVoltage, CurrentSource,
-    DampedSineVoltage, Ground as Gnd, Resistor, SensedVoltageSource, ShockleyDiode, VoltageControlledCurrent,
-    VoltageControlledVoltage, VoltageSource,
+    DampedSineVoltage, Ground as Gnd, IdealDiode, Resistor, SensedVoltageSource, ShockleyDiode,
+    VoltageControlledCurrent, VoltageControlledVoltage, VoltageSource,
 };
 use dirac::prelude::*;
 use dirac::spice::{self, SpiceError};
+
+use crate::network::rectifier;
 
 /// Every supported element: a DC source, resistors, coupled inductors (K), a current source,
 /// a voltage-controlled current source (G), capacitors, continuation lines, comments and
@@ -230,9 +232,9 @@ fn a_netlist_with_every_element_follows_its_equations() {
 /// resistor split in two around an inner node), its values from `.param`s, defaults and
 /// instance parameters, some as expressions; beside it, a sine clipped by two Shockley diodes
 /// in a subcircuit, RC circuits driven by a pulse train, a piecewise-linear current and a
-/// delayed damped sine, and controlled sources: an RC stage amplified by an `E` in a
-/// subcircuit into another, and an `F` and an `H` reading the current through the stage's sine
-/// source.
+/// delayed damped sine, controlled sources: an RC stage amplified by an `E` in a subcircuit
+/// into another, and an `F` and an `H` reading the current through the stage's sine source;
+/// and a half-wave rectifier, its ideal diode in a subcircuit.
 const IN_SUBCIRCUITS: &str = "every supported element, in subcircuits
 .param rs=1 half={rs/2}
 .subckt transformer p s params: lp=1 ls=1 k=0.5
@@ -292,6 +294,15 @@ F1 0 y V5 2
 R11 y 0 1
 H1 z 0 v5 0.5
 R12 z 0 1
+* an ideal diode rectifies a sine into an RC load
+.model dideal D(ideal)
+.subckt halfwave in out
+D1 in out dideal
+.ends
+V6 h 0 SIN(0 1 0.5)
+X5 h j halfwave
+C9 j 0 1
+R13 j 0 1
 .tran 0.1 5
 .end
 ";
@@ -323,6 +334,8 @@ R12 z 0 1
 #[dirac(connect(e1.n2, ground.p), connect(c8.n, ground.p))]
 #[dirac(connect(f1.c, v5.s), connect(f1.p, ground.p), connect(f1.n, r11.p), connect(r11.n, ground.p))]
 #[dirac(connect(h1.c, v5.s), connect(h1.p, r12.p), connect(h1.n, ground.p), connect(r12.n, ground.p))]
+#[dirac(connect(v6.p, d3.p), connect(d3.n, c9.p), connect(d3.n, r13.p), connect(v6.n, ground.p))]
+#[dirac(connect(c9.n, ground.p), connect(r13.n, ground.p))]
 struct Twin {
     v1: VoltageSource,
     r1: Resistor,
@@ -359,6 +372,10 @@ struct Twin {
     r11: Resistor,
     h1: CurrentControlledVoltage,
     r12: Resistor,
+    v6: DampedSineVoltage,
+    d3: IdealDiode,
+    c9: Capacitor,
+    r13: Resistor,
     ground: Gnd,
 }
 
@@ -385,6 +402,7 @@ fn every_element_in_subcircuits() {
         "e:x4:e1",
         "f1",
         "h1",
+        "d:x5:d1",
     ];
     for name in parts {
         assert!(names.iter().any(|n| n == name), "a part `{name}` in {names:?}");
@@ -394,6 +412,12 @@ fn every_element_in_subcircuits() {
     let worst = worst_against_reference(&run, &REFERENCE_COLUMNS, 5.0);
     eprintln!("every element in subcircuits, largest difference to the reference: {worst:e}");
     assert!(worst < 1e-8, "largest difference to the reference {worst:e}");
+    // The rectifier against its closed form, within the bound of the network's rectifier.
+    let (_, _, rectified) = rectifier();
+    let j = run.column("v(j)").expect("the rectifier's output");
+    let worst = run.times().iter().zip(j).map(|(&t, v)| (v - rectified(t)).abs()).fold(0.0, f64::max);
+    eprintln!("every element in subcircuits, the rectifier against its closed form: {worst:e}");
+    assert!(worst < 1e-8, "the rectifier against its closed form: {worst:e}");
     // The inner node sits halfway between c and e.
     let (vc, ve, mid) = (
         run.column("v(c)").expect("c"),
@@ -403,11 +427,12 @@ fn every_element_in_subcircuits() {
     for i in 0..mid.len() {
         assert!((mid[i] - 0.5 * (vc[i] + ve[i])).abs() < 1e-9);
     }
-    // More than twelve columns: the chart shows the first twelve and says so.
-    assert_eq!(run.names().len(), 27);
+    // More than twelve columns (27 nodes and currents, with the rectifier's v(h), v(j) and
+    // i(v6) 30): the chart shows the first twelve and says so.
+    assert_eq!(run.names().len(), 30);
     let svg = svg_of(&run, "all");
     assert_eq!(svg.matches("<polyline").count(), 12);
-    assert!(svg.contains(">all (the first 12 of 27 columns)</text>"));
+    assert!(svg.contains(">all (the first 12 of 30 columns)</text>"));
     // The sources' nodes carry their waveforms, to the tolerance: a sample between a step's
     // ends is read from its collocation polynomial.
     let (p, s) = (run.column("v(p)").expect("p"), run.column("v(s)").expect("s"));
@@ -460,6 +485,10 @@ fn every_element_in_subcircuits() {
         r11: Resistor { r: 1.0 },
         h1: CurrentControlledVoltage { r: 0.5 },
         r12: Resistor { r: 1.0 },
+        v6: DampedSineVoltage { offset: 0.0, amplitude: 1.0, f: 0.5, damping: 0.0, phase: 0.0 },
+        d3: IdealDiode {},
+        c9: Capacitor { c: 1.0 },
+        r13: Resistor { r: 1.0 },
         ground: Gnd {},
     };
     let inputs = twin.input_names();
@@ -496,6 +525,7 @@ fn every_element_in_subcircuits() {
         ("v(y)", "r11.p"),
         ("v(z)", "r12.p"),
         ("i(v5)", "v5.s"),
+        ("v(j)", "c9.p"),
     ];
     let mut worst: f64 = 0.0;
     for (column, pin) in pins {
@@ -739,6 +769,16 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     assert!(e.message.contains("the largest step 0 must be positive"), "{e}");
     let e = refused("t\nR1 a 0 -1\n");
     assert!(e.message.contains("must be positive"), "{e}");
+    // An ideal diode is a flag alone: no Shockley parameters beside it.
+    let e = refused("t\n.model di D(ideal IS=1e-14)\nR1 a 0 1\nD1 a 0 di\n");
+    assert_eq!((e.line, e.column), (2, 19));
+    assert!(e.message.contains("`.model di`: an ideal diode has no `is`"), "{e}");
+    let e = refused("t\n.model di D(ideal=1)\nR1 a 0 1\nD1 a 0 di\n");
+    assert_eq!((e.line, e.column), (2, 13));
+    assert!(
+        e.message.contains("the parameter `ideal` is not supported (IS and N are, or the flag `ideal`)"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -771,6 +811,16 @@ fn circuits_no_solver_could_simulate_are_refused_naming_the_elements() {
     let e = refused("t\nV1 a 0 1\nR1 a b 1\nC1 b 0 1\nE1 c 0 b 0 2\nC2 c 0 1\n");
     assert_eq!(e.line, 5);
     assert!(e.message.contains("`e1` closes a loop of capacitors and voltage sources"), "{e}");
+    // Ideal diodes conduct as voltage sources of zero volts: two in parallel, or one across a
+    // source, would leave their currents undetermined.
+    let e = refused("t\n.model di D(ideal)\nV1 a 0 1\nD1 a b di\nD2 a b di\nR1 b 0 1\n");
+    assert_eq!(e.line, 5);
+    assert!(
+        e.message.contains("`d2` closes a loop of voltage sources (an ideal diode is one while it conducts)"),
+        "{e}"
+    );
+    let e = refused("t\n.model di D(ideal)\nV1 a 0 1\nD1 0 a di\n");
+    assert!(e.message.contains("`d1` closes a loop of voltage sources"), "{e}");
 }
 
 /// 10⁴ netlists made from the test netlist by deleting, repeating, swapping and changing

@@ -43,7 +43,7 @@ pub fn solve_with_contacts() -> TokenStream {
             v: &#p::VecQ<Self>,
             options: #p::Consistency,
         ) -> ::core::option::Option<::core::result::Result<#p::State<Self>, #p::SimError>> {
-            #p::has_laws::<Self>().then(|| #p::consistent_with_laws(self, t, q, v, options))
+            #p::has_laws(self).then(|| #p::consistent_with_laws(self, t, q, v, options))
         }
     }
 }

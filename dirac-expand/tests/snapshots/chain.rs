@@ -1312,7 +1312,7 @@ const _: () = {
                 ::dirac::__private::SimError,
             >,
         > {
-            ::dirac::__private::has_laws::<Self>()
+            ::dirac::__private::has_laws(self)
                 .then(|| ::dirac::__private::consistent_with_laws(
                     self,
                     t,

@@ -52,7 +52,26 @@ pub trait Named {
     /// Whether the model or a subsystem has switching surfaces (non-smooth functions or
     /// conditionals in its Lagrangian, forces or constraints), which every solve locates.
     fn has_switches(&self) -> bool {
-        Self::NAMES.any_event(&|d| d == crate::model::names::SWITCH)
+        self.any_event(&|d| d == crate::model::names::SWITCH)
+    }
+
+    /// Every declared event's full dotted name and direction code (−1 falling, 1 rising, 0
+    /// either; the laws' and switching surfaces' codes otherwise), in the order of the model's
+    /// [`events`](crate::model::Hybrid::events) values.
+    fn event_declarations(&self) -> Vec<(String, i8)> {
+        Self::NAMES.event_declarations()
+    }
+
+    /// Whether the model or a part of it declares an event whose direction code passes `test`,
+    /// without building names.
+    fn any_event(&self, test: &dyn Fn(i8) -> bool) -> bool {
+        Self::NAMES.any_event(test)
+    }
+
+    /// The condition of the switching surface whose event is `name`, as text (`vb - v` for the
+    /// surface `vb - v = 0`).
+    fn surface(&self, name: &str) -> Option<&'static str> {
+        Self::NAMES.surface(name)
     }
 
     /// The full dotted name of every parameter, the model's `f64` fields (`left.k` in a

@@ -19,6 +19,15 @@
 //! [`Network::parameter_index`]), each part's generated parameter derivatives written at its
 //! coordinates.
 //!
+//! Parts may declare events, switching surfaces and laws (an ideal diode, friction, an ideal
+//! switch): the network's are its parts', named with the part's name (`"D1.diode_blocks"`). A
+//! plain `solve` watches the laws and surfaces and switches them at their events, as for a
+//! derived model; with [`solve_with_events`](crate::SolveWithEvents::solve_with_events), a
+//! network's are watched by [`Events::switches_in`](crate::Events::switches_in) or
+//! [`Events::declared_in`](crate::Events::declared_in), which read them from the network
+//! (`switches()` and `declared()` read a derived model's, known when it compiles). Parts with
+//! unilateral constraints (contacts, stops) are refused: a network does not resolve impacts.
+//!
 //! Parts are named when they are added (`"R1"`), and every coordinate, multiplier, input and
 //! output by its part's name and its own (`"R1.p"`, `"C1.vp"`, `"V1.source"`); a connection's
 //! row is named by its ends, `"R1.n~C1.p"`.
@@ -36,7 +45,7 @@ use thiserror::Error;
 
 use crate::algebra::{Pattern, SparseShape};
 use crate::model::DenseModel;
-use crate::model::{InputsOutputs, Parameters};
+use crate::model::{Hybrid, InputsOutputs, Parameters};
 use crate::shape::dims::{Sizes, Storage};
 
 use self::part::{Member, Part};
@@ -99,9 +108,9 @@ pub enum NetworkError {
         /// What is wrong with it.
         reason: String,
     },
-    /// A part that a network cannot hold yet: one with unilateral constraints, switching
-    /// surfaces or laws, whose events a network does not locate.
-    #[error("part `{part}` has {what}; a run-time network does not locate events yet")]
+    /// A part that a network cannot hold yet: one with unilateral constraints, whose impacts a
+    /// network does not resolve.
+    #[error("part `{part}` has {what}; a run-time network does not resolve impacts yet")]
     Unsupported {
         /// The part.
         part: String,
@@ -154,7 +163,7 @@ impl NetworkBuilder {
     /// Adds a part under `name`: any model of fixed size.
     pub fn add<M>(&mut self, name: &str, model: M) -> Result<&mut Self, NetworkError>
     where
-        M: DenseModel + InputsOutputs + Parameters + Clone + Send + Sync,
+        M: DenseModel + Hybrid + InputsOutputs + Parameters + Clone + Send + Sync,
         DefaultAllocator: Storage<M>,
     {
         let bad =
@@ -176,12 +185,6 @@ impl NetworkBuilder {
             return Err(NetworkError::Unsupported {
                 part: name.to_string(),
                 what: "unilateral constraints".into(),
-            });
-        }
-        if part.has_switches() {
-            return Err(NetworkError::Unsupported {
-                part: name.to_string(),
-                what: "switching surfaces or laws (a conditional, `abs`, a diode, friction)".into(),
             });
         }
         let (coordinates, ports) = (part.coordinate_names(), part.port_indices());
@@ -376,6 +379,9 @@ struct Slot {
     outputs: usize,
     /// Where the part's parameters start among the network's.
     parameters: usize,
+    /// Where the part's declared event functions start among the network's, and how many.
+    events: usize,
+    event_count: usize,
 }
 
 /// A network of compiled parts assembled while the program runs: a sparse Lagrange-Dirac model
@@ -407,6 +413,8 @@ pub struct Network {
     inputs: usize,
     outputs: usize,
     parameters: usize,
+    /// The number of declared event functions, all parts'.
+    events: usize,
 }
 
 impl Clone for Network {
@@ -431,6 +439,7 @@ impl Clone for Network {
             inputs: self.inputs,
             outputs: self.outputs,
             parameters: self.parameters,
+            events: self.events,
         }
     }
 }
@@ -454,7 +463,7 @@ impl Network {
     fn new(entries: Vec<Entry>, rows: Vec<OwnRow>, map: Vec<Vec<usize>>) -> Network {
         let nq = map.iter().flatten().filter(|&&c| c != GROUNDED).map(|&c| c + 1).max().unwrap_or(0);
         let (mut nh, mut other, mut qq, mut cq, mut inputs, mut outputs) = (0, 0, 0, 0, 0, 0);
-        let mut parameters = 0;
+        let (mut parameters, mut events) = (0, 0);
         let mut slots = Vec::with_capacity(entries.len());
         for (e, q) in entries.iter().zip(map) {
             let s = e.part.sizes();
@@ -466,8 +475,11 @@ impl Network {
                 inputs,
                 outputs,
                 parameters,
+                events,
+                event_count: e.part.event_count(),
             });
             parameters += e.part.parameter_count();
+            events += e.part.event_count();
             nh += s.nh;
             other += s.nc - s.nh;
             qq += s.nq * s.nq;
@@ -559,6 +571,7 @@ impl Network {
             inputs,
             outputs,
             parameters,
+            events,
         }
     }
 

@@ -74,6 +74,24 @@ impl Named for Network {
     fn parameter_names(&self) -> Vec<String> {
         self.names_with(|p| p.parameter_names())
     }
+
+    /// Every part's declared events (`"D1.d_conducts"`), in the order the parts were added.
+    fn event_declarations(&self) -> Vec<(String, i8)> {
+        let mut out = Vec::with_capacity(self.events);
+        for (name, part) in self.part_names.iter().zip(&self.parts) {
+            out.extend(part.event_declarations().into_iter().map(|(n, code)| (format!("{name}.{n}"), code)));
+        }
+        out
+    }
+
+    fn any_event(&self, test: &dyn Fn(i8) -> bool) -> bool {
+        self.parts.iter().any(|p| p.any_event(test))
+    }
+
+    fn surface(&self, name: &str) -> Option<&'static str> {
+        let (part, rest) = name.split_once('.')?;
+        self.parts[*self.by_name.get(part)?].surface(rest)
+    }
 }
 
 impl Network {
@@ -161,6 +179,32 @@ impl LagrangeDirac for Network {
 
     fn sizes(&self) -> Sizes {
         self.sizes
+    }
+
+    /// The parts' laws and switching surfaces watched, their events read from the parts.
+    fn __solve_with_contacts<I: crate::simulate::integrator::Integrator<Self>>(
+        integrator: &mut I,
+        t0: f64,
+        state: &crate::model::state::State<Self>,
+        t_end: f64,
+        sampling: &crate::simulate::solution::Sampling,
+    ) -> Option<Result<crate::simulate::solution::Solution<Self, I::Stats>, crate::error::SimError>> {
+        use crate::simulate::events::SolveWithEvents;
+        let mut events = crate::simulate::events::Events::new().switches_in(integrator.model());
+        Some(integrator.solve_with_events(t0, state, t_end, sampling, &mut events, |_, _| {
+            std::ops::ControlFlow::Continue(())
+        }))
+    }
+
+    fn __consistent_with_laws(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        options: crate::analysis::init::Consistency,
+    ) -> Option<Result<crate::model::state::State<Self>, crate::error::SimError>> {
+        crate::simulate::laws::has_laws(self)
+            .then(|| crate::simulate::laws::consistent_with_laws(self, t, q, v, options))
     }
 
     fn shape(&self) -> SparseShape {
@@ -499,4 +543,16 @@ impl Parameters for Network {
     }
 }
 
-impl crate::model::Hybrid for Network {}
+/// The parts' declared events, laws and switching surfaces; a network takes no part with
+/// unilateral constraints, so the contact methods keep their defaults.
+impl crate::model::Hybrid for Network {
+    fn events(&self, t: f64, q: &DVector<f64>, v: &DVector<f64>, lambda: &DVector<f64>, out: &mut [f64]) {
+        assert_eq!(out.len(), self.events, "events: one value per declared event function");
+        for (part, slot) in self.each() {
+            let span = slot.events..slot.events + slot.event_count;
+            if !span.is_empty() {
+                part.events(t, q, v, lambda, &slot.at, &mut out[span]);
+            }
+        }
+    }
+}

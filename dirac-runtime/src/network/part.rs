@@ -7,7 +7,7 @@ use nalgebra::{DVector, DefaultAllocator};
 
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::{DenseModel, MatCQ, MatQQ};
-use crate::model::{InputsOutputs, Parameters};
+use crate::model::{Hybrid, InputsOutputs, Parameters};
 use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
 
 use super::{GROUNDED, Network, Place};
@@ -68,8 +68,21 @@ pub(crate) trait Part: Send + Sync {
     fn constraint_names(&self) -> Vec<String>;
     fn input_names(&self) -> Vec<String>;
     fn output_names(&self) -> Vec<String>;
-    fn has_switches(&self) -> bool;
     fn has_unilaterals(&self) -> bool;
+    fn event_declarations(&self) -> Vec<(String, i8)>;
+    fn event_count(&self) -> usize;
+    fn any_event(&self, test: &dyn Fn(i8) -> bool) -> bool;
+    fn surface(&self, name: &str) -> Option<&'static str>;
+    /// The part's declared event functions into `out` (one value per declared event).
+    fn events(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        out: &mut [f64],
+    );
     fn port_indices(&self) -> Vec<usize>;
     fn clone_box(&self) -> Box<dyn Part>;
 
@@ -284,7 +297,7 @@ fn put<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
 
 impl<M> Part for Member<M>
 where
-    M: DenseModel + InputsOutputs + Parameters + Clone + Send + Sync,
+    M: DenseModel + Hybrid + InputsOutputs + Parameters + Clone + Send + Sync,
     DefaultAllocator: Storage<M>,
 {
     fn sizes(&self) -> Sizes {
@@ -311,8 +324,33 @@ where
         self.0.output_names()
     }
 
-    fn has_switches(&self) -> bool {
-        self.0.has_switches() || crate::simulate::laws::has_laws::<M>()
+    fn event_declarations(&self) -> Vec<(String, i8)> {
+        self.0.event_declarations()
+    }
+
+    fn event_count(&self) -> usize {
+        M::NAMES.event_declarations().len()
+    }
+
+    fn any_event(&self, test: &dyn Fn(i8) -> bool) -> bool {
+        self.0.any_event(test)
+    }
+
+    fn surface(&self, name: &str) -> Option<&'static str> {
+        self.0.surface(name)
+    }
+
+    fn events(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        out: &mut [f64],
+    ) {
+        let (q, v) = self.args(q, v, at);
+        self.0.events(t, &q, &v, &gather_c::<M>(lambda, at), out);
     }
 
     fn has_unilaterals(&self) -> bool {

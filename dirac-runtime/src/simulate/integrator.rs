@@ -251,7 +251,7 @@ where
         // surfaces with them located.
         if (!self.model().unilateral_names().is_empty()
             || self.model().has_switches()
-            || laws::has_laws::<M>())
+            || laws::has_laws(self.model()))
             && let Some(solution) = M::__solve_with_contacts(self, t0, state, t_end, sampling)
         {
             return solution;
@@ -408,15 +408,15 @@ fn refuse_switches<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    if !model.has_switches() && !laws::has_laws::<M>() {
+    if !model.has_switches() && !laws::has_laws(model) {
         return Ok(());
     }
-    let surfaces: Vec<String> = M::NAMES
+    let surfaces: Vec<String> = model
         .event_declarations()
         .into_iter()
         .filter(|&(_, d)| d == crate::model::names::SWITCH)
-        .map(|(name, _)| format!("`{name}`: {} = 0", M::NAMES.surface(&name).unwrap_or("?")))
-        .chain(laws::law_names::<M>().into_iter().map(|name| format!("the law `{name}`")))
+        .map(|(name, _)| format!("`{name}`: {} = 0", model.surface(&name).unwrap_or("?")))
+        .chain(laws::law_names(model).into_iter().map(|name| format!("the law `{name}`")))
         .collect();
     Err(SimError::InvalidOption {
         what: "sensitivities",
@@ -515,8 +515,8 @@ fn refuse_unwatched<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    if laws::has_laws::<M>() {
-        let laws: Vec<String> = laws::law_names::<M>().iter().map(|n| format!("`{n}`")).collect();
+    if laws::has_laws(model) {
+        let laws: Vec<String> = laws::law_names(model).iter().map(|n| format!("`{n}`")).collect();
         return Err(SimError::InvalidOption {
             what: "laws",
             reason: format!(

@@ -67,14 +67,21 @@ const STRICTLY_WITHIN: f64 = 1e-9;
 /// A released law's `g` counts as zero at the start within this share of `1 + |v|`.
 const AT_ZERO: f64 = 1e-9;
 
-/// The laws of `M`, from its declared events (dotted names in a composite: the engage event
-/// `arm.grip_stops` belongs to the law `arm.grip`, whose mode is `arm.grip_mode`).
-pub(crate) fn laws<M: LagrangeDirac>() -> Vec<Law>
+/// The laws of `model`, from its declared events (dotted names in a composite: the engage
+/// event `arm.grip_stops` belongs to the law `arm.grip`, whose mode is `arm.grip_mode`).
+pub(crate) fn laws<M: LagrangeDirac>(model: &M) -> Vec<Law>
 where
     DefaultAllocator: Storage<M>,
 {
-    let declared = M::NAMES.event_declarations();
-    let (coordinates, rows) = (M::NAMES.coordinate_names(), M::NAMES.constraint_names());
+    if !has_laws(model) {
+        return Vec::new();
+    }
+    laws_among(&model.event_declarations(), &model.coordinate_names(), &model.constraint_names())
+}
+
+/// The laws among the declared events `declared`, with the model's coordinate and constraint
+/// names.
+pub(crate) fn laws_among(declared: &[(String, i8)], coordinates: &[String], rows: &[String]) -> Vec<Law> {
     let mut out = Vec::new();
     for (engage, (name, code)) in declared.iter().enumerate() {
         let (kind, engaged, released, release_code) = match *code {
@@ -95,21 +102,21 @@ where
     out
 }
 
-/// The names of `M`'s laws.
-pub fn law_names<M: LagrangeDirac>() -> Vec<String>
+/// The names of `model`'s laws.
+pub fn law_names<M: LagrangeDirac>(model: &M) -> Vec<String>
 where
     DefaultAllocator: Storage<M>,
 {
-    let rows = M::NAMES.constraint_names();
-    laws::<M>().iter().map(|law| rows[law.row].clone()).collect()
+    let rows = model.constraint_names();
+    laws(model).iter().map(|law| rows[law.row].clone()).collect()
 }
 
-/// Whether `M` declares a friction law or an ideal diode.
-pub fn has_laws<M: LagrangeDirac>() -> bool
+/// Whether `model` declares a friction law, an ideal diode or an ideal switch.
+pub fn has_laws<M: LagrangeDirac>(model: &M) -> bool
 where
     DefaultAllocator: Storage<M>,
 {
-    M::NAMES.any_event(&|code| matches!(code, STOPS | CONDUCTS | CLOSES))
+    model.any_event(&|code| matches!(code, STOPS | CONDUCTS | CLOSES))
 }
 
 /// Switches `law` at an event at `t`, in `state` (the state there): sets its mode and leaves
@@ -183,13 +190,13 @@ pub fn consistent_with_laws<M: Hybrid>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let laws = laws::<M>();
+    let laws = laws(model);
     let (mut q, mut v) = (q.clone(), v.clone());
     for law in &laws {
         v[law.mode] = 0.0;
     }
     let v = &v;
-    let mut values = vec![0.0; M::NAMES.event_declarations().len()];
+    let mut values = vec![0.0; model.event_declarations().len()];
     // Each law's `g` is its engage function with the law released to the positive side.
     for law in &laws {
         q[law.mode] = 1.0;

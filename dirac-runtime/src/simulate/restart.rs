@@ -48,7 +48,7 @@ impl Restarts {
         }
         check_state(model, t0, state, tolerance)?;
         self.changed_from = None;
-        self.rows_switch = crate::simulate::laws::has_laws::<M>();
+        self.rows_switch = crate::simulate::laws::has_laws(model);
         Ok(())
     }
 

@@ -104,6 +104,15 @@ where
     switched_law: Option<usize>,
 }
 
+/// Which of a model's declared events to watch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Which {
+    /// Every one.
+    All,
+    /// The switching surfaces and the laws' events.
+    Switches,
+}
+
 /// `Hybrid::events` of a model, as a plain function of the state.
 type AllDeclared<M> = fn(&M, f64, &State<M>, &mut [f64]);
 
@@ -234,27 +243,19 @@ where
 {
     /// Adds the events the model declares (`#[dirac(event(name, direction) = g)]`, a function
     /// of time, positions, velocities, multipliers and inputs), each with its name (dotted in
-    /// an interconnection: `arm.slack`) and direction.
-    pub fn declared(mut self) -> Self {
-        let declared = M::NAMES.event_declarations();
-        let k = declared.len();
-        for (j, (name, direction)) in declared.into_iter().enumerate() {
-            let crossing = match direction {
-                d if d < 0 => Crossing::Falling,
-                1 => Crossing::Rising,
-                STOPS | SLIPS | CONDUCTS | BLOCKS | CLOSES | OPENS => Crossing::Falling,
-                _ => Crossing::Either,
-            };
-            let mut values = vec![0.0; k];
-            self = self.on(name, crossing, move |t, s: &State<M>, m: &M| {
-                m.events(t, &s.q, &s.v, &s.lambda, &mut values);
-                values[j]
-            });
-            *self.switch_of.last_mut().expect("just added") = direction == SWITCH;
-            *self.sampled.last_mut().expect("just added") = direction == SWITCH;
-            *self.declared_of.last_mut().expect("just added") = Some(j);
-        }
-        self.watch_laws().watch_declared(k)
+    /// an interconnection: `arm.slack`) and direction. A model assembled while the program runs
+    /// (a [`Network`](crate::network::Network)) names its events only then:
+    /// [`declared_in`](Self::declared_in) adds them.
+    pub fn declared(self) -> Self {
+        self.add_declared(M::NAMES.event_declarations(), Which::All, |declared| {
+            laws::laws_among(declared, &M::NAMES.coordinate_names(), &M::NAMES.constraint_names())
+        })
+    }
+
+    /// [`declared`](Self::declared), the events read from `model`: those of the parts of a
+    /// [`Network`](crate::network::Network) (`D1.d_conducts`), as well as a derived model's.
+    pub fn declared_in(self, model: &M) -> Self {
+        self.add_declared(model.event_declarations(), Which::All, |_| laws::laws(model))
     }
 
     /// Adds the switching surfaces of the model's non-smooth functions and conditionals
@@ -267,15 +268,38 @@ where
     /// Also adds the events of the model's laws (`friction`, `diode`, `switch`: `grip_stops`,
     /// `grip_slips`, `d_conducts`, …), at each of which the solve switches the law's mode
     /// before the action sees the event, and restarts from the consistent state in the new
-    /// mode.
-    pub fn switches(mut self) -> Self {
-        let declared = M::NAMES.event_declarations();
+    /// mode. A [`Network`](crate::network::Network)'s come from [`switches_in`](Self::switches_in).
+    pub fn switches(self) -> Self {
+        self.add_declared(M::NAMES.event_declarations(), Which::Switches, |declared| {
+            laws::laws_among(declared, &M::NAMES.coordinate_names(), &M::NAMES.constraint_names())
+        })
+    }
+
+    /// [`switches`](Self::switches), the surfaces and laws read from `model`: those of the parts
+    /// of a [`Network`](crate::network::Network), as well as a derived model's.
+    pub fn switches_in(self, model: &M) -> Self {
+        self.add_declared(model.event_declarations(), Which::Switches, |_| laws::laws(model))
+    }
+
+    /// Watches the declared events `declared` (all, or the switching surfaces and laws only),
+    /// the laws among them found by `laws_of`.
+    fn add_declared(
+        mut self,
+        declared: Vec<(String, i8)>,
+        which: Which,
+        laws_of: impl FnOnce(&[(String, i8)]) -> Vec<Law>,
+    ) -> Self {
         let k = declared.len();
+        let has_laws = declared.iter().any(|&(_, code)| matches!(code, STOPS | CONDUCTS | CLOSES));
+        let laws = if has_laws { laws_of(&declared) } else { Vec::new() };
         for (j, (name, direction)) in declared.into_iter().enumerate() {
-            let crossing = match direction {
-                SWITCH => Crossing::Either,
-                STOPS | SLIPS | CONDUCTS | BLOCKS | CLOSES | OPENS => Crossing::Falling,
-                _ => continue,
+            let crossing = match (direction, which) {
+                (STOPS | SLIPS | CONDUCTS | BLOCKS | CLOSES | OPENS, _) => Crossing::Falling,
+                (SWITCH, _) => Crossing::Either,
+                (_, Which::Switches) => continue,
+                (d, Which::All) if d < 0 => Crossing::Falling,
+                (1, Which::All) => Crossing::Rising,
+                (_, Which::All) => Crossing::Either,
             };
             let mut values = vec![0.0; k];
             self = self.on(name, crossing, move |t, s: &State<M>, m: &M| {
@@ -286,16 +310,16 @@ where
             *self.sampled.last_mut().expect("just added") = direction == SWITCH;
             *self.declared_of.last_mut().expect("just added") = Some(j);
         }
-        self.watch_laws().watch_declared(k)
+        self.watch_laws(laws).watch_declared(k)
     }
 
     /// Marks the watched functions that switch one of the model's laws (`friction`, `diode`),
     /// which [`SolveWithEvents::solve_with_events`] then switches at their events.
-    fn watch_laws(mut self) -> Self {
-        if !laws::has_laws::<M>() {
+    fn watch_laws(mut self, laws: Vec<Law>) -> Self {
+        if laws.is_empty() {
             return self;
         }
-        self.laws = laws::laws::<M>();
+        self.laws = laws;
         for (k, declared) in self.declared_of.iter().enumerate() {
             let Some(j) = *declared else { continue };
             self.law_of[k] = self.laws.iter().enumerate().find_map(|(l, law)| {
@@ -314,10 +338,13 @@ where
         self
     }
 
-    /// Whether every law of the model is watched (each switch of each).
-    pub(crate) fn watches_laws(&self) -> bool {
+    /// Whether every law of `model` is watched (each switch of each), and every function it
+    /// declares is read where declared: a [`Network`](crate::network::Network)'s declared
+    /// events are not those of [`declared`](Self::declared), which reads a derived model's.
+    pub(crate) fn watches_laws(&self, model: &M) -> bool {
         let watched = self.law_of.iter().flatten().count();
-        watched == 2 * laws::laws::<M>().len()
+        watched == 2 * laws::laws(model).len()
+            && self.declared_values.len() == model.event_declarations().len()
     }
 
     /// Switches the law of event `k` at `t` in `state`, the state there, leaving it consistent

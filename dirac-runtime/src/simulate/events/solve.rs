@@ -76,6 +76,11 @@ where
         self.integrator.model()
     }
 
+    /// The integrator's statistics so far: steps taken, rejected, evaluations.
+    pub fn stats(&self) -> I::Stats {
+        self.integrator.stats()
+    }
+
     /// The model, to change (its inputs, its parameters): the integration restarts at the
     /// event. A change that moves a constraint off the state is refused with
     /// [`SimError::ConstraintMoved`] unless the state is reset too.
@@ -134,13 +139,13 @@ where
         // Each law starts in the mode the state puts it in (the start made consistent there, if
         // the state held another).
         let chosen;
-        let state = if laws::has_laws::<M>() {
-            if !events.watches_laws() {
-                return Err(unwatched_laws::<M>());
+        let state = if laws::has_laws(self.model()) {
+            if !events.watches_laws(self.model()) {
+                return Err(unwatched_laws(self.model()));
             }
             chosen =
                 laws::consistent_with_laws(self.model(), t0, &state.q, &state.v, Consistency::default())?;
-            if laws::laws::<M>().iter().all(|law| chosen.q[law.mode] == state.q[law.mode]) {
+            if laws::laws(self.model()).iter().all(|law| chosen.q[law.mode] == state.q[law.mode]) {
                 state
             } else {
                 &chosen
@@ -292,7 +297,7 @@ where
     match events.sliding_surface(integrator.model(), t, integrator.state()) {
         Ok(Some(k)) => {
             let surface = events.names()[k].clone();
-            let condition = M::NAMES.surface(&surface).unwrap_or("?").to_string();
+            let condition = integrator.model().surface(&surface).unwrap_or("?").to_string();
             SimError::Sliding { surface, condition, t, cause: error.to_string() }
         }
         _ => error,
@@ -300,17 +305,18 @@ where
 }
 
 /// The error for a solve with events that would leave the model's laws unswitched.
-fn unwatched_laws<M: Hybrid>() -> SimError
+fn unwatched_laws<M: Hybrid>(model: &M) -> SimError
 where
     DefaultAllocator: Storage<M>,
 {
-    let names: Vec<String> = laws::law_names::<M>().iter().map(|n| format!("`{n}`")).collect();
+    let names: Vec<String> = laws::law_names(model).iter().map(|n| format!("`{n}`")).collect();
     SimError::InvalidOption {
         what: "events",
         reason: format!(
             "the model's friction laws or diodes ({}) switch their modes at events this solve would not \
              watch, so they would hold one mode throughout: add them with `Events::new().switches()` (or \
-             `.declared()`), or solve with `solve`, which watches them",
+             `.declared()`; `switches_in(&model)` or `declared_in(&model)` for a network, whose parts \
+             declare them), or solve with `solve`, which watches them",
             names.join(", ")
         ),
     }
