@@ -36,7 +36,8 @@ fn run() -> Result<(), String> {
     let error =
         |e: dirac::spice::SpiceError| format!("{}:{}:{}: {}", file.display(), e.line, e.column, e.message);
     let clock = Instant::now();
-    let circuit = dirac::spice::parse(&text).and_then(|n| n.circuit()).map_err(error)?;
+    let netlist = dirac::spice::parse(&text).map_err(error)?;
+    let circuit = netlist.circuit().map_err(error)?;
     let sizes = dirac::LagrangeDirac::sizes(&circuit.network);
     eprintln!(
         "{}: {} parts, {} unknowns, read and built in {:.3} s; simulating at tolerance {tol:e}",
@@ -84,7 +85,7 @@ fn run() -> Result<(), String> {
         svg.display()
     );
     // The process ends here and its memory with it: no need to free a large network part by part.
-    std::mem::forget((circuit, waves));
+    std::mem::forget((circuit, waves, netlist, text));
     Ok(())
 }
 

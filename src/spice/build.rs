@@ -11,7 +11,7 @@ use crate::components::electrical::{
     DampedSineVoltage, IdealDiode, Inductor, Resistor, SensedVoltageSource, ShockleyDiode,
     VoltageControlledCurrent, VoltageControlledVoltage, VoltageSource,
 };
-use crate::network::{Network, NetworkBuilder, NetworkError};
+use crate::network::{Network, NetworkBuilder, NetworkError, Port};
 use crate::runtime::Held;
 use crate::{
     Consistency, Drive, ErrorNorm, Events, InputsOutputs, Integrator, LagrangeDirac, Radau, RadauOptions,
@@ -271,10 +271,10 @@ impl Netlist {
         }
         let mut b = Network::builder();
         // Each node's pins, in order; each inductor winding's `(from, to, flux ψ = L i)`.
-        let mut pins: Vec<Vec<String>> = vec![Vec::new(); names.len()];
-        let add_pins = |pins: &mut Vec<Vec<String>>, part: &str, list: &[(&str, &String)]| {
+        let mut pins: Vec<Vec<Port>> = vec![Vec::new(); names.len()];
+        let add_pins = |b: &NetworkBuilder, pins: &mut Vec<Vec<Port>>, list: &[(&str, &String)]| {
             for (pin, n) in list {
-                pins[node(n)].push(format!("{part}.{pin}"));
+                pins[node(n)].push(b.port_of_last(pin).expect("a pin of the part just added"));
             }
         };
         // Each recorded current: a voltage source's row (its multiplier), or the coordinate whose
@@ -364,9 +364,10 @@ impl Netlist {
                     let (i1, i2) = (i1.unwrap_or(0.0), i2.unwrap_or(0.0));
                     windings.push((node(&la.nodes[0]), node(&la.nodes[1]), l1 * i1 + m * i2, la));
                     windings.push((node(&lb.nodes[0]), node(&lb.nodes[1]), m * i1 + l2 * i2, lb));
+                    add(&mut b, e, CoupledInductors { l1: *l1, l2: *l2, m })?;
                     add_pins(
+                        &b,
                         &mut pins,
-                        &e.name,
                         &[
                             ("p1", &la.nodes[0]),
                             ("n1", &la.nodes[1]),
@@ -374,31 +375,27 @@ impl Netlist {
                             ("n2", &lb.nodes[1]),
                         ],
                     );
-                    add(&mut b, e, CoupledInductors { l1: *l1, l2: *l2, m })
+                    Ok(())
                 }
             };
             added?;
             match &e.kind {
                 Kind::Vccs(_) | Kind::Vcvs(_) => {
-                    add_pins(
-                        &mut pins,
-                        &e.name,
-                        &[("p2", &n[0]), ("n2", &n[1]), ("p1", &n[2]), ("n1", &n[3])],
-                    );
+                    add_pins(&b, &mut pins, &[("p2", &n[0]), ("n2", &n[1]), ("p1", &n[2]), ("n1", &n[3])]);
                 }
                 Kind::Coupling { .. } => {}
                 Kind::Inductor { .. } if coupled.contains_key(&e.name) => {}
-                _ => add_pins(&mut pins, &e.name, &[("p", &n[0]), ("n", &n[1])]),
+                _ => add_pins(&b, &mut pins, &[("p", &n[0]), ("n", &n[1])]),
             }
         }
         // A node's pins share one coordinate, its flux (Kirchhoff's current law is the balance
         // there); the reference's are fixed at zero and leave the unknowns, as in nodal analysis.
-        for pin in &pins[0] {
-            b.ground(pin).map_err(|err| first(err.to_string()))?;
+        for &pin in &pins[0] {
+            b.ground_port(pin);
         }
         for list in pins.iter().skip(1) {
-            for other in list.iter().skip(1) {
-                b.join(&list[0], other).map_err(|err| first(err.to_string()))?;
+            for &other in list.iter().skip(1) {
+                b.join_ports(list[0], other).map_err(|err| first(err.to_string()))?;
             }
         }
         // A current-controlled source's control shares the coordinate whose rate is the current
@@ -412,7 +409,12 @@ impl Netlist {
             .iter()
             .zip(&pins)
             .enumerate()
-            .map(|(k, (name, list))| (name.clone(), (k > 0).then(|| coordinate(&list[0]))))
+            .map(|(k, (name, list))| {
+                (
+                    name.clone(),
+                    (k > 0).then(|| network.port_coordinate(list[0]).expect("a node's coordinate")),
+                )
+            })
             .collect();
         let currents: Vec<(String, Column)> = currents
             .into_iter()

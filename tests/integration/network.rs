@@ -596,3 +596,48 @@ fn an_ideal_diode_in_a_network_rectifies_as_its_closed_form() {
         assert!(worst_v < 1e-8, "{how}: voltage off by {worst_v:e}");
     }
 }
+
+/// Ports found once by handle (`port_of_last`) and joined or grounded by it give the network that
+/// the same wiring by name gives; a handle's mistakes are typed errors as a name's are.
+#[test]
+fn ports_wired_by_handle_give_the_network_wired_by_name() {
+    let by_name = {
+        let mut b = Network::builder();
+        b.add("I1", CurrentSource { i: 1.0 }).expect("new").add("R1", Resistor { r: 2.0 }).expect("new");
+        b.add("C1", Capacitor { c: 0.5 }).expect("new");
+        b.join("I1.n", "R1.p").expect("ports").join("R1.p", "C1.p").expect("ports");
+        for pin in ["I1.p", "R1.n", "C1.n"] {
+            b.ground(pin).expect("a port");
+        }
+        b.finish().expect("a network")
+    };
+    let mut b = Network::builder();
+    assert!(matches!(b.port_of_last("p"), Err(NetworkError::Empty)));
+    b.add("I1", CurrentSource { i: 1.0 }).expect("new");
+    let (i1p, i1n) = (b.port_of_last("p").expect("a pin"), b.port_of_last("n").expect("a pin"));
+    let err = b.port_of_last("x").expect_err("no such pin").to_string();
+    assert!(err.contains("`I1.x`") && err.contains("`p`, `n`"), "{err}");
+    b.add("R1", Resistor { r: 2.0 }).expect("new");
+    let (r1p, r1n) = (b.port_of_last("p").expect("a pin"), b.port_of_last("n").expect("a pin"));
+    let Err(err) = b.join_ports(r1p, r1p).map(|_| ()) else { panic!("the same port joined to itself") };
+    let err = err.to_string();
+    assert!(err.contains("`R1.p`"), "{err}");
+    b.add("C1", Capacitor { c: 0.5 }).expect("new");
+    let (c1p, c1n) = (b.port_of_last("p").expect("a pin"), b.port_of_last("n").expect("a pin"));
+    b.join_ports(i1n, r1p).expect("ports").join_ports(r1p, c1p).expect("ports");
+    b.ground_port(i1p).ground_port(r1n).ground_port(c1n);
+    let by_port = b.finish().expect("a network");
+    assert_eq!(by_port.coordinate_names(), by_name.coordinate_names());
+    assert_eq!(by_port.sizes(), by_name.sizes());
+    let node = by_name.coordinate_index("C1.p").expect("a node");
+    assert_eq!(by_port.port_coordinate(c1p), Some(node));
+    assert_eq!(by_port.port_coordinate(i1n), Some(node));
+    assert_eq!(by_port.port_coordinate(c1n), None, "grounded");
+    // The same residual at a state that is not at rest.
+    let mut y = by_name.sizes().zeros_y::<Network>();
+    for (k, x) in y.iter_mut().enumerate() {
+        *x = 0.3 + 0.1 * k as f64;
+    }
+    let (a, b) = (by_name.residual_vector(0.2, &y), by_port.residual_vector(0.2, &y));
+    assert_eq!(a, b);
+}

@@ -38,7 +38,9 @@
 mod model;
 mod part;
 
+use std::any::TypeId;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use nalgebra::DefaultAllocator;
 use thiserror::Error;
@@ -128,12 +130,27 @@ pub enum NetworkError {
 /// A port: its part and the part's coordinate.
 type PortId = (usize, usize);
 
+/// A port of a part in a [`NetworkBuilder`], found once by
+/// [`NetworkBuilder::port_of_last`] and then joined or grounded without its name being
+/// formatted and read again: how a builder from data (a netlist's nodes) wires many parts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Port {
+    part: usize,
+    coordinate: usize,
+}
+
+/// The names of a type of part, made once per type and shared by its parts.
+pub(crate) struct PartNames {
+    coordinates: Vec<String>,
+    velocities: Vec<String>,
+    ports: Vec<usize>,
+}
+
 /// A part being added: its model behind the object-safe view, and its names.
 struct Entry {
     name: String,
     part: Box<dyn Part>,
-    coordinates: Vec<String>,
-    ports: Vec<usize>,
+    names: Arc<PartNames>,
 }
 
 /// Builds a [`Network`]: add parts, connect their ports by name, add one-forms, then
@@ -149,6 +166,8 @@ pub struct NetworkBuilder {
     joined: Vec<(PortId, PortId)>,
     /// Ports fixed at zero.
     grounded: Vec<PortId>,
+    /// The names of each type of part added.
+    names: HashMap<TypeId, Arc<PartNames>>,
 }
 
 /// One of the network's own rows, `Σ c_k v_k = 0`, over network coordinates.
@@ -187,10 +206,71 @@ impl NetworkBuilder {
                 what: "unilateral constraints".into(),
             });
         }
-        let (coordinates, ports) = (part.coordinate_names(), part.port_indices());
+        let names = self
+            .names
+            .entry(TypeId::of::<M>())
+            .or_insert_with(|| {
+                Arc::new(PartNames {
+                    coordinates: part.coordinate_names(),
+                    velocities: part.velocity_names(),
+                    ports: part.port_indices(),
+                })
+            })
+            .clone();
         self.by_name.insert(name.to_string(), self.entries.len());
-        self.entries.push(Entry { name: name.to_string(), part, coordinates, ports });
+        self.entries.push(Entry { name: name.to_string(), part, names });
         Ok(self)
+    }
+
+    /// The port `pin` of the part added last (`"p"` of the resistor just added), to
+    /// [`join_ports`](Self::join_ports) or [`ground_port`](Self::ground_port) it.
+    pub fn port_of_last(&self, pin: &str) -> Result<Port, NetworkError> {
+        let Some(e) = self.entries.len().checked_sub(1) else {
+            return Err(NetworkError::Empty);
+        };
+        let entry = &self.entries[e];
+        let (part, i) = self.port_in(e, &format_args!("{}.{pin}", entry.name), pin)?;
+        Ok(Port { part, coordinate: i })
+    }
+
+    /// [`join`](Self::join) of two ports found by [`port_of_last`](Self::port_of_last).
+    pub fn join_ports(&mut self, a: Port, b: Port) -> Result<&mut Self, NetworkError> {
+        let (pa, pb) = ((a.part, a.coordinate), (b.part, b.coordinate));
+        if pa == pb {
+            return Err(NetworkError::SelfConnection { port: self.path(pa) });
+        }
+        self.joined.push((pa, pb));
+        Ok(self)
+    }
+
+    /// [`ground`](Self::ground) of a port found by [`port_of_last`](Self::port_of_last).
+    pub fn ground_port(&mut self, port: Port) -> &mut Self {
+        self.grounded.push((port.part, port.coordinate));
+        self
+    }
+
+    /// The name of a port, `"R1.p"`.
+    fn path(&self, (e, i): PortId) -> String {
+        format!("{}.{}", self.entries[e].name, self.entries[e].names.coordinates[i])
+    }
+
+    /// The coordinate of part `e`'s port `port` (`path` names it in an error).
+    fn port_in(&self, e: usize, path: &dyn std::fmt::Display, port: &str) -> Result<PortId, NetworkError> {
+        let entry = &self.entries[e];
+        let names = &entry.names;
+        match names.ports.iter().find(|&&i| names.coordinates[i] == port) {
+            Some(&i) => Ok((e, i)),
+            None => {
+                let ports: Vec<String> =
+                    names.ports.iter().map(|&i| format!("`{}`", names.coordinates[i])).collect();
+                Err(NetworkError::UnknownPort {
+                    path: path.to_string(),
+                    part: entry.name.clone(),
+                    port: port.to_string(),
+                    ports: if ports.is_empty() { "none".into() } else { ports.join(", ") },
+                })
+            }
+        }
     }
 
     /// The part and coordinate of a port path, `"R1.p"`.
@@ -201,20 +281,7 @@ impl NetworkBuilder {
             let hint = close.map_or(String::new(), |n| format!("; did you mean `{n}`?"));
             return Err(NetworkError::UnknownPart { path: path.to_string(), part: part.to_string(), hint });
         };
-        let entry = &self.entries[e];
-        match entry.ports.iter().find(|&&i| entry.coordinates[i] == port) {
-            Some(&i) => Ok((e, i)),
-            None => {
-                let ports: Vec<String> =
-                    entry.ports.iter().map(|&i| format!("`{}`", entry.coordinates[i])).collect();
-                Err(NetworkError::UnknownPort {
-                    path: path.to_string(),
-                    part: part.to_string(),
-                    port: port.to_string(),
-                    ports: if ports.is_empty() { "none".into() } else { ports.join(", ") },
-                })
-            }
-        }
+        self.port_in(e, &path, port)
     }
 
     /// Connects two ports: the paper's `v_a = v_b`, `f_a + f_b = 0` (Kirchhoff's current law at
@@ -308,7 +375,7 @@ impl NetworkBuilder {
         let mut start = Vec::with_capacity(self.entries.len() + 1);
         start.push(0);
         for e in &self.entries {
-            start.push(start.last().expect("a start") + e.coordinates.len());
+            start.push(start.last().expect("a start") + e.names.coordinates.len());
         }
         let flat = |(e, i): PortId| start[e] + i;
         let mut parent: Vec<usize> = (0..start[self.entries.len()]).collect();
@@ -332,8 +399,9 @@ impl NetworkBuilder {
         let mut next = 0;
         let mut map = Vec::with_capacity(self.entries.len());
         for (e, entry) in self.entries.iter().enumerate() {
-            let mut part = Vec::with_capacity(entry.coordinates.len());
-            for i in 0..entry.coordinates.len() {
+            let n = entry.names.coordinates.len();
+            let mut part = Vec::with_capacity(n);
+            for i in 0..n {
                 let r = find(&mut parent, start[e] + i);
                 if index[r] == usize::MAX - 1 {
                     index[r] = next;
@@ -388,6 +456,8 @@ struct Slot {
 /// that every integrator takes. Made by [`Network::builder`].
 pub struct Network {
     parts: Vec<Box<dyn Part>>,
+    /// Each part's names, shared among parts of one type.
+    names: Vec<Arc<PartNames>>,
     part_names: Vec<String>,
     /// Each part's index by name.
     by_name: HashMap<String, usize>,
@@ -421,6 +491,7 @@ impl Clone for Network {
     fn clone(&self) -> Self {
         Network {
             parts: self.parts.iter().map(|p| p.clone_box()).collect(),
+            names: self.names.clone(),
             part_names: self.part_names.clone(),
             by_name: self.by_name.clone(),
             slots: self.slots.clone(),
@@ -542,17 +613,24 @@ impl Network {
         // A joined coordinate is named by its first port.
         let (mut coordinate_names, mut velocity_names) = (vec![String::new(); nq], vec![String::new(); nq]);
         for (e, slot) in entries.iter().zip(&slots) {
-            let velocities = e.part.velocity_names();
             for (i, &c) in slot.at.q.iter().enumerate() {
                 if c != GROUNDED && coordinate_names[c].is_empty() {
-                    coordinate_names[c] = format!("{}.{}", e.name, e.coordinates[i]);
-                    velocity_names[c] = format!("{}.{}", e.name, velocities[i]);
+                    coordinate_names[c] = format!("{}.{}", e.name, e.names.coordinates[i]);
+                    velocity_names[c] = format!("{}.{}", e.name, e.names.velocities[i]);
                 }
             }
         }
-        let (part_names, parts): (Vec<String>, _) = entries.into_iter().map(|e| (e.name, e.part)).unzip();
+        let mut names = Vec::with_capacity(entries.len());
+        let (part_names, parts): (Vec<String>, _) = entries
+            .into_iter()
+            .map(|e| {
+                names.push(e.names);
+                (e.name, e.part)
+            })
+            .unzip();
         Network {
             parts,
+            names,
             by_name: part_names.iter().enumerate().map(|(e, n)| (n.clone(), e)).collect(),
             part_names,
             slots,
@@ -575,6 +653,12 @@ impl Network {
         }
     }
 
+    /// The coordinate a port of the builder became: `None` if it is grounded.
+    pub fn port_coordinate(&self, port: Port) -> Option<usize> {
+        let c = *self.slots.get(port.part)?.at.q.get(port.coordinate)?;
+        (c != GROUNDED).then_some(c)
+    }
+
     /// The parts' names, in the order they were added (the order of their coordinates).
     pub fn part_names(&self) -> &[String] {
         &self.part_names
@@ -584,7 +668,7 @@ impl Network {
     /// there is none or it is grounded. Joined ports have the same index.
     pub fn coordinate_index(&self, name: &str) -> Option<usize> {
         let (e, rest) = self.part_of(name)?;
-        let i = self.parts[e].coordinate_names().iter().position(|c| c == rest)?;
+        let i = self.names[e].coordinates.iter().position(|c| c == rest)?;
         Some(self.slots[e].at.q[i]).filter(|&c| c != GROUNDED)
     }
 
