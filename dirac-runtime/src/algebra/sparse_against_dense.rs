@@ -111,6 +111,67 @@ fn sparse_saddle_solves_what_the_dense_one_does() {
     }
 }
 
+/// `[L_vv Aᵀ; A 0] x = rhs` of the blocks `d` on `shape`, whose `m × n` pattern lists the
+/// entries of `A` in `order` (`(row, column)` pairs).
+fn solve_on(shape: &SparseShape, d: &JacobianBlocks<Six, Dense>, order: &[(usize, usize)]) -> Vec<f64> {
+    let mut l_vv = SparseBlock::zeros(&shape.qq);
+    l_vv.values.copy_from_slice(d.l_vv.as_slice());
+    let mut a = SparseBlock::zeros(&shape.cq);
+    for (value, &(r, c)) in a.values.iter_mut().zip(order) {
+        *value = d.a[(r, c)];
+    }
+    let mut saddle = <Sparse as Algebra<Six>>::saddle::<f64>(shape);
+    Saddle::<Six, Sparse, f64>::assemble(
+        &mut saddle,
+        &SaddleTerms::<Six, Sparse, f64> {
+            top: &[(1.0, &l_vv)],
+            top_transposed: &[],
+            identity: 0.0,
+            right: &[(1.0, &a)],
+            bottom: &[(1.0, 1.0, &a)],
+            corner: (0.0, 0.0),
+        },
+    );
+    Saddle::<Six, Sparse, f64>::factor(&mut saddle).expect("nonsingular");
+    let mut x: Vec<f64> = (0..8).map(|i| (i as f64 * 0.7).sin()).collect();
+    Saddle::<Six, Sparse, f64>::solve(&mut saddle, &mut x);
+    x
+}
+
+#[test]
+fn saddles_of_a_shape_and_its_clones_share_one_structure_unless_a_pattern_is_replaced() {
+    let shape = full_shape();
+    let real = SparseSaddle::<f64>::new(&shape);
+    let complex = SparseSaddle::<Complex<f64>>::new(&shape.clone());
+    assert!(real.shares_structure_with(&complex), "a clone's saddle reuses the ordering");
+    // A clone whose public `m × n` pattern is replaced by the same entries in another order
+    // (row by row, where `full_shape` lists them column by column): reusing the first
+    // structure would put every value of `A` at another's place.
+    let rows: Vec<(usize, usize)> = (0..2).flat_map(|r| (0..6).map(move |c| (r, c))).collect();
+    let mut replaced = shape.clone();
+    let mut cq = Pattern::new(2, 6);
+    for &(r, c) in &rows {
+        cq.push(r, c);
+    }
+    replaced.cq = std::sync::Arc::new(cq);
+    let own = SparseSaddle::<f64>::new(&replaced);
+    assert!(!own.shares_structure_with(&real), "a replaced pattern gets a structure of its own");
+    // The reference: the dense saddle of the same blocks, factored by nalgebra's LU.
+    let d = random_blocks(7);
+    let columns: Vec<(usize, usize)> = (0..6).flat_map(|c| (0..2).map(move |r| (r, c))).collect();
+    let mut k = d.l_vv.resize(8, 8, 0.0);
+    for r in 0..2 {
+        for c in 0..6 {
+            k[(6 + r, c)] = d.a[(r, c)];
+            k[(c, 6 + r)] = d.a[(r, c)];
+        }
+    }
+    let rhs = nalgebra::DVector::from_fn(8, |i, _| (i as f64 * 0.7).sin());
+    let exact = k.lu().solve(&rhs).expect("nonsingular");
+    assert_close(exact.as_slice(), &solve_on(&shape, &d, &columns));
+    assert_close(exact.as_slice(), &solve_on(&replaced, &d, &rows));
+}
+
 /// A 2 × 2 system `[[a, 1], [1, 0]]` in the layout of one velocity and one multiplier.
 fn two_by_two(a: f64) -> (SparseShape, SparseBlock, SparseBlock) {
     let sizes = Sizes { nq: 1, nc: 1, nh: 0 };

@@ -5,6 +5,8 @@
 //! allocates nothing; when a reused pivot has become too small against its column, the
 //! pivots are found anew.
 
+use std::sync::Arc;
+
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::perm::PermRef;
 use faer::sparse::linalg::colamd;
@@ -21,52 +23,22 @@ use crate::algebra::traits::Scalar;
 const PIVOT_TOLERANCE: f64 = 1e-3;
 
 /// The factors `P A Q = L U` of a square sparse matrix with a fixed pattern.
-pub(crate) struct SparseLu<T: Scalar> {
+/// A square matrix's pattern (compressed columns) and its fill-reducing column ordering:
+/// computed once, and shared by every factorisation of a matrix with this pattern.
+pub(crate) struct Ordering {
     n: usize,
-    /// The matrix, in compressed sparse columns; its values are written by the caller.
     col_ptr: Vec<usize>,
     row_idx: Vec<usize>,
-    pub values: Vec<T>,
-    /// Column order: step `j` eliminates column `col_perm[j]`.
     col_perm: Vec<usize>,
     col_perm_inv: Vec<usize>,
-    /// Row order: step `k` pivots on row `row_perm[k]`; `row_step[i]` is the step of row `i`.
-    row_perm: Vec<usize>,
-    row_step: Vec<usize>,
-    /// `L` below its unit diagonal and `U` above its diagonal, by column, in step indices
-    /// (`U`'s rows increasing), and `U`'s diagonal.
-    l_ptr: Vec<usize>,
-    l_row: Vec<usize>,
-    l_val: Vec<T>,
-    u_ptr: Vec<usize>,
-    u_row: Vec<usize>,
-    u_val: Vec<T>,
-    u_diag: Vec<T>,
-    /// Work space: a dense column indexed by step.
-    work: Vec<T>,
-    /// Whether the pivots above are usable for a refactorisation.
-    pivoted: bool,
-    /// faer's factors and work space, for finding pivots.
-    faer_lu: SimplicialLu<usize, T>,
-    faer_rows: (Vec<usize>, Vec<usize>),
-    memory: MemBuffer,
-    /// How many times pivots were found, the first time included.
-    pub pivotings: usize,
 }
 
-impl<T: Scalar> SparseLu<T> {
-    /// The factorisation of `n × n` matrices with the pattern `(col_ptr, row_idx)` (rows
-    /// increasing within each column, no duplicates), with its column order.
+impl Ordering {
+    /// The ordering of the `n × n` pattern with these column starts and sorted rows.
     pub fn new(n: usize, col_ptr: Vec<usize>, row_idx: Vec<usize>) -> Self {
-        let nnz = row_idx.len();
         let symbolic = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
         let (mut col_perm, mut col_perm_inv) = (vec![0usize; n], vec![0usize; n]);
-        let order = colamd::order_scratch::<usize>(n, n, nnz);
-        let mut memory = MemBuffer::new(StackReq::any_of(&[
-            order,
-            factorize_simplicial_numeric_lu_scratch::<usize, T>(n, n),
-            StackReq::new::<T>(n),
-        ]));
+        let mut memory = MemBuffer::new(colamd::order_scratch::<usize>(n, n, row_idx.len()));
         colamd::order(
             &mut col_perm,
             &mut col_perm_inv,
@@ -75,13 +47,43 @@ impl<T: Scalar> SparseLu<T> {
             MemStack::new(&mut memory),
         )
         .expect("the ordering's work space was sized for it");
+        Ordering { n, col_ptr, row_idx, col_perm, col_perm_inv }
+    }
+}
+
+pub(crate) struct SparseLu<T: Scalar> {
+    n: usize,
+    order: Arc<Ordering>,
+    pub values: Vec<T>,
+    row_perm: Vec<usize>,
+    row_step: Vec<usize>,
+    l_ptr: Vec<usize>,
+    l_row: Vec<usize>,
+    l_val: Vec<T>,
+    u_ptr: Vec<usize>,
+    u_row: Vec<usize>,
+    u_val: Vec<T>,
+    u_diag: Vec<T>,
+    work: Vec<T>,
+    pivoted: bool,
+    faer_lu: SimplicialLu<usize, T>,
+    faer_rows: (Vec<usize>, Vec<usize>),
+    memory: MemBuffer,
+    pub pivotings: usize,
+}
+
+impl<T: Scalar> SparseLu<T> {
+    /// A factorisation of matrices with this pattern and ordering.
+    pub fn new(order: Arc<Ordering>) -> Self {
+        let n = order.n;
+        let memory = MemBuffer::new(StackReq::any_of(&[
+            factorize_simplicial_numeric_lu_scratch::<usize, T>(n, n),
+            StackReq::new::<T>(n),
+        ]));
         SparseLu {
             n,
-            col_ptr,
-            row_idx,
-            values: vec![T::zero(); nnz],
-            col_perm,
-            col_perm_inv,
+            values: vec![T::zero(); order.row_idx.len()],
+            order,
             row_perm: vec![0; n],
             row_step: vec![0; n],
             l_ptr: vec![0; n + 1],
@@ -100,9 +102,8 @@ impl<T: Scalar> SparseLu<T> {
         }
     }
 
-    /// The pattern's rows.
     pub fn row_idx(&self) -> &[usize] {
-        &self.row_idx
+        &self.order.row_idx
     }
 
     /// Factors the matrix held in `values`: with the last pivots when they still serve, else
@@ -120,7 +121,7 @@ impl<T: Scalar> SparseLu<T> {
     /// The unknown (original column) whose pivot is zero or not a number, if any.
     fn check_pivots(&self, tiny: f64) -> Result<(), Singular> {
         match self.u_diag.iter().position(|d| d.modulus().is_nan() || d.modulus() <= tiny) {
-            Some(j) => Err(Singular { column: self.col_perm[j] }),
+            Some(j) => Err(Singular { column: self.order.col_perm[j] }),
             None => Ok(()),
         }
     }
@@ -130,9 +131,10 @@ impl<T: Scalar> SparseLu<T> {
         self.pivotings += 1;
         self.pivoted = false;
         let n = self.n;
-        let symbolic = SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
+        let order = &*self.order;
+        let symbolic = SymbolicSparseColMatRef::new_checked(n, n, &order.col_ptr, None, &order.row_idx);
         let a = SparseColMatRef::new(symbolic, &self.values);
-        let col_perm = PermRef::new_checked(&self.col_perm, &self.col_perm_inv, n);
+        let col_perm = PermRef::new_checked(&order.col_perm, &order.col_perm_inv, n);
         let (fwd, inv) = &mut self.faer_rows;
         let result = factorize_simplicial_numeric_lu(
             fwd,
@@ -144,7 +146,7 @@ impl<T: Scalar> SparseLu<T> {
         );
         if let Err(e) = result {
             let column = match e {
-                faer::sparse::linalg::LuError::SymbolicSingular { index } => self.col_perm[index],
+                faer::sparse::linalg::LuError::SymbolicSingular { index } => order.col_perm[index],
                 faer::sparse::linalg::LuError::Generic(_) => 0,
             };
             return Err(Singular { column });
@@ -191,11 +193,11 @@ impl<T: Scalar> SparseLu<T> {
     /// Recomputes the factors' values with the last pivots and patterns (left-looking, by
     /// column); false if a pivot has become too small, leaving the factors unusable.
     fn refactor(&mut self) -> bool {
-        let x = &mut self.work;
+        let (x, order) = (&mut self.work, &*self.order);
         for j in 0..self.n {
-            let c = self.col_perm[j];
-            for p in self.col_ptr[c]..self.col_ptr[c + 1] {
-                x[self.row_step[self.row_idx[p]]] = self.values[p];
+            let c = order.col_perm[j];
+            for p in order.col_ptr[c]..order.col_ptr[c + 1] {
+                x[self.row_step[order.row_idx[p]]] = self.values[p];
             }
             for p in self.u_ptr[j]..self.u_ptr[j + 1] {
                 let k = self.u_row[p];
@@ -246,7 +248,7 @@ impl<T: Scalar> SparseLu<T> {
             }
         }
         for k in 0..n {
-            b[self.col_perm[k]] = y[k];
+            b[self.order.col_perm[k]] = y[k];
             y[k] = T::zero();
         }
     }

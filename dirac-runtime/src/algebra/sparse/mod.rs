@@ -7,10 +7,11 @@
 mod lu;
 mod saddle;
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use nalgebra::{DefaultAllocator, OMatrix};
 
+use self::saddle::SaddleStructure;
 pub use self::saddle::SparseSaddle;
 use super::condensed::SaddleCondensed;
 use super::traits::{Algebra, Scalar};
@@ -66,6 +67,11 @@ impl Pattern {
 
 /// The sizes and block patterns of a sparse model: what its algebra is built from. Made once
 /// by [`LagrangeDirac::shape`](crate::LagrangeDirac::shape) and shared by every block.
+///
+/// A shape and its clones also share the pattern and ordering of their saddle-point systems,
+/// found at the first system made from any of them: a model that keeps its shape and hands
+/// out clones of it (as a [`Network`](crate::network::Network) does) has that symbolic
+/// analysis done once for its consistent start, its integrators and its analyses together.
 #[derive(Clone, Debug)]
 pub struct SparseShape {
     /// The model's sizes.
@@ -74,6 +80,25 @@ pub struct SparseShape {
     pub qq: Arc<Pattern>,
     /// The pattern of every `m × n` block.
     pub cq: Arc<Pattern>,
+    saddle: SaddleCache,
+}
+
+/// The saddle systems' structure of a shape and its clones, once made.
+#[derive(Clone, Default)]
+struct SaddleCache(Arc<OnceLock<Arc<SaddleStructure>>>);
+
+impl std::ops::Deref for SaddleCache {
+    type Target = OnceLock<Arc<SaddleStructure>>;
+
+    fn deref(&self) -> &Self::Target {
+        &self.0
+    }
+}
+
+impl std::fmt::Debug for SaddleCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.get().is_some() { "SaddleCache(analysed)" } else { "SaddleCache(empty)" })
+    }
 }
 
 impl SparseShape {
@@ -81,7 +106,7 @@ impl SparseShape {
     pub fn new(sizes: Sizes, qq: Pattern, cq: Pattern) -> SparseShape {
         assert_eq!((qq.nrows, qq.ncols), (sizes.nq, sizes.nq), "an n × n pattern");
         assert_eq!((cq.nrows, cq.ncols), (sizes.nc, sizes.nq), "an m × n pattern");
-        SparseShape { sizes, qq: Arc::new(qq), cq: Arc::new(cq) }
+        SparseShape { sizes, qq: Arc::new(qq), cq: Arc::new(cq), saddle: SaddleCache::default() }
     }
 }
 

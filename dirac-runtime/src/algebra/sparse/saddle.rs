@@ -5,7 +5,7 @@
 
 use std::sync::Arc;
 
-use super::lu::SparseLu;
+use super::lu::{Ordering, SparseLu};
 use super::{Pattern, Sparse, SparseShape};
 use crate::algebra::lu::Singular;
 use crate::algebra::traits::{Saddle, SaddleTerms, Scalar};
@@ -16,13 +16,25 @@ use nalgebra::DefaultAllocator;
 pub struct SparseSaddle<T: Scalar> {
     sizes: Sizes,
     lu: SparseLu<T>,
+    structure: Arc<SaddleStructure>,
+    /// The `m × n` pattern.
+    cq: Arc<Pattern>,
+}
+
+/// What every saddle system of one shape has in common, computed once per shape (see
+/// [`SparseShape`]) and shared by the systems of its integrators and analyses, real and
+/// complex: the pattern and its ordering, and where each block value goes in it.
+pub(crate) struct SaddleStructure {
+    /// What it was made from: a shape whose public fields were changed after its structure
+    /// was made gets one of its own.
+    made_from: (Sizes, Arc<Pattern>, Arc<Pattern>),
+    order: Arc<Ordering>,
     /// Where each `n × n` value goes, and where its transpose goes.
     qq_at: Vec<usize>,
     qq_transposed_at: Vec<usize>,
     /// Where each diagonal entry of the top-left block is.
     diagonal_at: Vec<usize>,
-    /// The `m × n` pattern, and where each of its values goes below and to the right.
-    cq: Arc<Pattern>,
+    /// Where each `m × n` value goes below and to the right.
     bottom_at: Vec<usize>,
     right_at: Vec<usize>,
     /// Where each diagonal entry of the corner is.
@@ -61,9 +73,9 @@ fn compress(k: usize, entries: Vec<(usize, usize)>) -> (Vec<usize>, Vec<usize>) 
     (col_ptr, row_idx)
 }
 
-impl<T: Scalar> SparseSaddle<T> {
-    /// The system of a model of this shape, with its column ordering.
-    pub fn new(shape: &SparseShape) -> Self {
+impl SaddleStructure {
+    /// The structure of the saddle systems of a model of this shape.
+    fn new(shape: &SparseShape) -> Self {
         let sizes = shape.sizes;
         let (n, m, k) = (sizes.nq, sizes.nc, sizes.nk());
         let (qq, cq) = (&*shape.qq, &*shape.cq);
@@ -89,17 +101,42 @@ impl<T: Scalar> SparseSaddle<T> {
         let bottom_at = cq.rows.iter().zip(&cq.cols).map(|(&r, &c)| at(n + r, c)).collect();
         let right_at = cq.rows.iter().zip(&cq.cols).map(|(&r, &c)| at(c, n + r)).collect();
         let corner_at = (0..m).map(|r| at(n + r, n + r)).collect();
-        SparseSaddle {
-            sizes,
-            lu: SparseLu::new(k, col_ptr, row_idx),
+        SaddleStructure {
+            made_from: (sizes, Arc::clone(&shape.qq), Arc::clone(&shape.cq)),
+            order: Arc::new(Ordering::new(k, col_ptr, row_idx)),
             qq_at,
             qq_transposed_at,
             diagonal_at,
-            cq: Arc::clone(&shape.cq),
             bottom_at,
             right_at,
             corner_at,
         }
+    }
+}
+
+impl<T: Scalar> SparseSaddle<T> {
+    /// The system of a model of this shape, with its column ordering: the shape's structure,
+    /// made at the first system of the shape (or of a clone of it) and shared by the others.
+    pub fn new(shape: &SparseShape) -> Self {
+        let shared = shape.saddle.get_or_init(|| Arc::new(SaddleStructure::new(shape)));
+        let (sizes, qq, cq) = &shared.made_from;
+        let structure = if *sizes == shape.sizes && Arc::ptr_eq(qq, &shape.qq) && Arc::ptr_eq(cq, &shape.cq) {
+            Arc::clone(shared)
+        } else {
+            Arc::new(SaddleStructure::new(shape))
+        };
+        SparseSaddle {
+            sizes: shape.sizes,
+            lu: SparseLu::new(Arc::clone(&structure.order)),
+            structure,
+            cq: Arc::clone(&shape.cq),
+        }
+    }
+
+    /// Whether `other` was built on the same structure (pattern and ordering) as this one.
+    #[cfg(test)]
+    pub(crate) fn shares_structure_with<U: Scalar>(&self, other: &SparseSaddle<U>) -> bool {
+        Arc::ptr_eq(&self.structure, &other.structure)
     }
 
     /// How many times the factorisation had to find pivots (once at the first factorisation;
@@ -122,30 +159,30 @@ where
         let v = &mut self.lu.values;
         v.fill(T::zero());
         for &(c, x) in terms.top {
-            for (&at, &value) in self.qq_at.iter().zip(&x.values) {
+            for (&at, &value) in self.structure.qq_at.iter().zip(&x.values) {
                 v[at] += c.scale(value);
             }
         }
         for &(c, x) in terms.top_transposed {
-            for (&at, &value) in self.qq_transposed_at.iter().zip(&x.values) {
+            for (&at, &value) in self.structure.qq_transposed_at.iter().zip(&x.values) {
                 v[at] += c.scale(value);
             }
         }
-        for &at in &self.diagonal_at {
+        for &at in &self.structure.diagonal_at {
             v[at] += terms.identity;
         }
         for &(c, b) in terms.right {
-            for (&at, &value) in self.right_at.iter().zip(&b.values) {
+            for (&at, &value) in self.structure.right_at.iter().zip(&b.values) {
                 v[at] += c.scale(value);
             }
         }
         let nh = self.sizes.nh;
         for &(ch, co, b) in terms.bottom {
-            for ((&at, &value), &row) in self.bottom_at.iter().zip(&b.values).zip(&self.cq.rows) {
+            for ((&at, &value), &row) in self.structure.bottom_at.iter().zip(&b.values).zip(&self.cq.rows) {
                 v[at] += (if row < nh { ch } else { co }).scale(value);
             }
         }
-        for (r, &at) in self.corner_at.iter().enumerate() {
+        for (r, &at) in self.structure.corner_at.iter().enumerate() {
             v[at] = if r < nh { terms.corner.0 } else { terms.corner.1 };
         }
     }
