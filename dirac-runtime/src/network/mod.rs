@@ -38,8 +38,8 @@
 mod model;
 mod part;
 
+use foldhash::HashMap;
 use std::any::TypeId;
-use std::collections::HashMap;
 use std::sync::Arc;
 
 use nalgebra::DefaultAllocator;
@@ -144,6 +144,10 @@ pub(crate) struct PartNames {
     coordinates: Vec<String>,
     velocities: Vec<String>,
     ports: Vec<usize>,
+    inputs: Vec<String>,
+    outputs: Vec<String>,
+    /// How many event functions the part declares.
+    events: usize,
 }
 
 /// A part being added: its model behind the object-safe view, and its names.
@@ -179,6 +183,14 @@ struct OwnRow {
 }
 
 impl NetworkBuilder {
+    /// Makes room for `parts` more parts: a builder from data that knows their number (a
+    /// netlist's elements) adds them without growing its tables on the way.
+    pub fn reserve(&mut self, parts: usize) -> &mut Self {
+        self.entries.reserve(parts);
+        self.by_name.reserve(parts);
+        self
+    }
+
     /// Adds a part under `name`: any model of fixed size.
     pub fn add<M>(&mut self, name: &str, model: M) -> Result<&mut Self, NetworkError>
     where
@@ -214,6 +226,9 @@ impl NetworkBuilder {
                     coordinates: part.coordinate_names(),
                     velocities: part.velocity_names(),
                     ports: part.port_indices(),
+                    inputs: part.input_names(),
+                    outputs: part.output_names(),
+                    events: part.event_count(),
                 })
             })
             .clone();
@@ -366,7 +381,7 @@ impl NetworkBuilder {
                 });
             }
         }
-        Ok(Network::new(self.entries, self.rows, map))
+        Ok(Network::new(self.entries, self.rows, map, self.by_name))
     }
 
     /// Each part's coordinates in the network: ports joined share one, grounded ones are
@@ -531,7 +546,12 @@ impl Network {
         NetworkBuilder::default()
     }
 
-    fn new(entries: Vec<Entry>, rows: Vec<OwnRow>, map: Vec<Vec<usize>>) -> Network {
+    fn new(
+        entries: Vec<Entry>,
+        rows: Vec<OwnRow>,
+        map: Vec<Vec<usize>>,
+        by_name: HashMap<String, usize>,
+    ) -> Network {
         let nq = map.iter().flatten().filter(|&&c| c != GROUNDED).map(|&c| c + 1).max().unwrap_or(0);
         let (mut nh, mut other, mut qq, mut cq, mut inputs, mut outputs) = (0, 0, 0, 0, 0, 0);
         let (mut parameters, mut events) = (0, 0);
@@ -547,16 +567,16 @@ impl Network {
                 outputs,
                 parameters,
                 events,
-                event_count: e.part.event_count(),
+                event_count: e.names.events,
             });
             parameters += e.part.parameter_count();
-            events += e.part.event_count();
+            events += e.names.events;
             nh += s.nh;
             other += s.nc - s.nh;
             qq += s.nq * s.nq;
             cq += s.nc * s.nq;
-            inputs += e.part.input_names().len();
-            outputs += e.part.output_names().len();
+            inputs += e.names.inputs.len();
+            outputs += e.names.outputs.len();
         }
         for slot in &mut slots {
             slot.at.v += nh;
@@ -631,7 +651,7 @@ impl Network {
         Network {
             parts,
             names,
-            by_name: part_names.iter().enumerate().map(|(e, n)| (n.clone(), e)).collect(),
+            by_name,
             part_names,
             slots,
             coordinate_names,
@@ -685,14 +705,14 @@ impl Network {
     /// [`set_input_value`](crate::InputsOutputs::set_input_value); `None` if there is none.
     pub fn input_index(&self, name: &str) -> Option<usize> {
         let (e, rest) = self.part_of(name)?;
-        Some(self.slots[e].inputs + self.parts[e].input_names().iter().position(|c| c == rest)?)
+        Some(self.slots[e].inputs + self.names[e].inputs.iter().position(|c| c == rest)?)
     }
 
     /// The index of a part's output (`"V1.i"`) among the network's outputs; `None` if there is
     /// none.
     pub fn output_index(&self, name: &str) -> Option<usize> {
         let (e, rest) = self.part_of(name)?;
-        Some(self.slots[e].outputs + self.parts[e].output_names().iter().position(|c| c == rest)?)
+        Some(self.slots[e].outputs + self.names[e].outputs.iter().position(|c| c == rest)?)
     }
 
     /// The index of a part's parameter (`"R1.r"`) among the network's parameters, for
