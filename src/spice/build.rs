@@ -2,7 +2,7 @@
 //! for what no solver could simulate: a subnetwork with no path to the reference, a loop of
 //! voltage sources, a cut-set of current sources.
 
-use std::collections::{HashMap, HashSet};
+use foldhash::{HashMap, HashMapExt, HashSet, HashSetExt};
 use std::io::{self, Write};
 use std::ops::ControlFlow;
 
@@ -208,25 +208,35 @@ impl Netlist {
             return Err(first("the netlist has no elements".into()));
         }
         // Nodes, the reference first.
-        let mut index: HashMap<String, usize> = HashMap::from([("0".to_string(), 0)]);
+        let mut index: HashMap<String, usize> = HashMap::with_capacity(self.elements.len() + 1);
+        index.insert("0".to_string(), 0);
         let mut names = vec!["0".to_string()];
-        let mut seen: HashMap<&str, &Element> = HashMap::new();
-        for e in &self.elements {
+        let mut seen: HashMap<&str, &Element> = HashMap::with_capacity(self.elements.len());
+        // Each element's nodes by number, looked up once: `ids[e][k]` is element `e`'s `k`th.
+        let mut ids: Vec<[usize; 4]> = Vec::with_capacity(self.elements.len());
+        let mut by_name: HashMap<&str, usize> = HashMap::with_capacity(self.elements.len());
+        for (k, e) in self.elements.iter().enumerate() {
             if let Some(previous) = seen.insert(e.name.as_str(), e) {
                 return Err(e.token.error(format!(
                     "`{}` is defined twice (first on line {})",
                     e.name, previous.token.line
                 )));
             }
-            for node in &e.nodes {
+            by_name.insert(e.name.as_str(), k);
+            let mut at = [0; 4];
+            for (slot, node) in at.iter_mut().zip(&e.nodes) {
                 let node = if is_ground(node) { "0" } else { node.as_str() };
-                if !index.contains_key(node) {
-                    index.insert(node.to_string(), names.len());
-                    names.push(node.to_string());
-                }
+                *slot = match index.get(node) {
+                    Some(&n) => n,
+                    None => {
+                        index.insert(node.to_string(), names.len());
+                        names.push(node.to_string());
+                        names.len() - 1
+                    }
+                };
             }
+            ids.push(at);
         }
-        let node = |n: &str| index[if is_ground(n) { "0" } else { n }];
         // The voltage sources whose current an `F` or an `H` reads: their current becomes an
         // unknown of its own, the rate of their coordinate `s`.
         let mut sensed: HashSet<String> = HashSet::new();
@@ -245,7 +255,7 @@ impl Netlist {
                 }
             }
         }
-        self.check_topology(&node, names.len(), &names, &sensed)?;
+        self.check_topology(&ids, names.len(), &names, &sensed)?;
         // Couplings: each pairs two inductors into one part.
         let mut coupled: HashMap<String, String> = HashMap::new();
         for e in &self.elements {
@@ -270,11 +280,12 @@ impl Netlist {
             }
         }
         let mut b = Network::builder();
+        b.reserve(self.elements.len());
         // Each node's pins, in order; each inductor winding's `(from, to, flux ψ = L i)`.
         let mut pins: Vec<Vec<Port>> = vec![Vec::new(); names.len()];
-        let add_pins = |b: &NetworkBuilder, pins: &mut Vec<Vec<Port>>, list: &[(&str, &String)]| {
-            for (pin, n) in list {
-                pins[node(n)].push(b.port_of_last(pin).expect("a pin of the part just added"));
+        let add_pins = |b: &NetworkBuilder, pins: &mut Vec<Vec<Port>>, list: &[(&str, usize)]| {
+            for &(pin, n) in list {
+                pins[n].push(b.port_of_last(pin).expect("a pin of the part just added"));
             }
         };
         // Each recorded current: a voltage source's row (its multiplier), or the coordinate whose
@@ -285,13 +296,12 @@ impl Netlist {
         let rate = |e: &Element| (format!("i({})", e.name), CurrentAt::Rate(format!("{}.s", e.name)));
         let tran = self.tran().map(|t| (t.step, t.stop));
         let mut corners = Vec::new();
-        for e in &self.elements {
-            let n = &e.nodes;
+        for (e, n) in self.elements.iter().zip(&ids) {
             let added = match &e.kind {
                 Kind::Resistor(r) => add(&mut b, e, Resistor { r: *r }),
                 Kind::Capacitor { c, .. } => add(&mut b, e, Capacitor { c: *c }),
                 Kind::Inductor { l, ic } if !coupled.contains_key(&e.name) => {
-                    windings.push((node(&n[0]), node(&n[1]), l * ic.unwrap_or(0.0), e));
+                    windings.push((n[0], n[1], l * ic.unwrap_or(0.0), e));
                     add(&mut b, e, Inductor { l: *l })
                 }
                 Kind::Inductor { .. } => Ok(()),
@@ -353,7 +363,9 @@ impl Netlist {
                     None => Err(model.error(format!("`{}`: no `.model` is named `{}`", e.name, model.text))),
                 },
                 Kind::Coupling { a, b: bb, k } => {
-                    let (la, lb) = (seen[a.text.as_str()], seen[bb.text.as_str()]);
+                    let (ka, kb) = (by_name[a.text.as_str()], by_name[bb.text.as_str()]);
+                    let (la, lb) = (&self.elements[ka], &self.elements[kb]);
+                    let (na, nb) = (ids[ka], ids[kb]);
                     let (Kind::Inductor { l: l1, ic: i1 }, Kind::Inductor { l: l2, ic: i2 }) =
                         (&la.kind, &lb.kind)
                     else {
@@ -362,30 +374,21 @@ impl Netlist {
                     let m = k * (l1 * l2).sqrt();
                     // Winding fluxes ψ = L i for the initial currents.
                     let (i1, i2) = (i1.unwrap_or(0.0), i2.unwrap_or(0.0));
-                    windings.push((node(&la.nodes[0]), node(&la.nodes[1]), l1 * i1 + m * i2, la));
-                    windings.push((node(&lb.nodes[0]), node(&lb.nodes[1]), m * i1 + l2 * i2, lb));
+                    windings.push((na[0], na[1], l1 * i1 + m * i2, la));
+                    windings.push((nb[0], nb[1], m * i1 + l2 * i2, lb));
                     add(&mut b, e, CoupledInductors { l1: *l1, l2: *l2, m })?;
-                    add_pins(
-                        &b,
-                        &mut pins,
-                        &[
-                            ("p1", &la.nodes[0]),
-                            ("n1", &la.nodes[1]),
-                            ("p2", &lb.nodes[0]),
-                            ("n2", &lb.nodes[1]),
-                        ],
-                    );
+                    add_pins(&b, &mut pins, &[("p1", na[0]), ("n1", na[1]), ("p2", nb[0]), ("n2", nb[1])]);
                     Ok(())
                 }
             };
             added?;
             match &e.kind {
                 Kind::Vccs(_) | Kind::Vcvs(_) => {
-                    add_pins(&b, &mut pins, &[("p2", &n[0]), ("n2", &n[1]), ("p1", &n[2]), ("n1", &n[3])]);
+                    add_pins(&b, &mut pins, &[("p2", n[0]), ("n2", n[1]), ("p1", n[2]), ("n1", n[3])]);
                 }
                 Kind::Coupling { .. } => {}
                 Kind::Inductor { .. } if coupled.contains_key(&e.name) => {}
-                _ => add_pins(&b, &mut pins, &[("p", &n[0]), ("n", &n[1])]),
+                _ => add_pins(&b, &mut pins, &[("p", n[0]), ("n", n[1])]),
             }
         }
         // A node's pins share one coordinate, its flux (Kirchhoff's current law is the balance
@@ -435,15 +438,15 @@ impl Netlist {
         for (n, flux) in node_fluxes(names.len(), &windings)?.into_iter().enumerate().skip(1) {
             q0[nodes[n].1.expect("a node other than the reference")] = flux;
         }
-        for e in &self.elements {
+        for (e, n) in self.elements.iter().zip(&ids) {
             if let Kind::Capacitor { ic: Some(ic), .. } = e.kind {
-                if node(&e.nodes[1]) != 0 {
+                if n[1] != 0 {
                     return Err(e.token.error(format!(
                         "`{}`: `ic=` is supported on capacitors to the reference node; give `.ic v(node)=…` instead",
                         e.name
                     )));
                 }
-                if let Some(c) = nodes[node(&e.nodes[0])].1 {
+                if let Some(c) = nodes[n[0]].1 {
                     v0[c] = ic;
                 }
             }
@@ -459,7 +462,7 @@ impl Netlist {
                 }
             }
         }
-        let columns = self.columns(&nodes, &currents)?;
+        let columns = self.columns(&nodes, &index, &currents)?;
         let drives = driven
             .into_iter()
             .map(|(input, wave)| (network.input_index(&input).expect("a source's input"), wave))
@@ -474,16 +477,18 @@ impl Netlist {
     fn columns(
         &self,
         nodes: &[(String, Option<usize>)],
+        index: &HashMap<String, usize>,
         currents: &[(String, Column)],
     ) -> Result<Vec<(String, Column)>, SpiceError> {
         let mut columns: Vec<(String, Column)> = Vec::new();
+        let by_name: HashMap<&str, Column> = currents.iter().map(|(n, c)| (n.as_str(), *c)).collect();
+        let mut recorded: HashSet<&str> = HashSet::new();
         for command in &self.commands {
             let Command::Save(probes) = command else { continue };
             for probe in probes {
                 let column = if probe.current {
-                    let found = currents.iter().find(|(n, _)| *n == probe.column);
-                    match found {
-                        Some(&(_, k)) => k,
+                    match by_name.get(probe.column.as_str()) {
+                        Some(&k) => k,
                         None => {
                             return Err(probe.token.error(format!(
                                 "`{}`: currents are recorded through voltage sources (V, E, H), and `{}` is none",
@@ -493,8 +498,8 @@ impl Netlist {
                     }
                 } else {
                     let name = if is_ground(&probe.name) { "0" } else { probe.name.as_str() };
-                    match nodes.iter().find(|(n, _)| n == name) {
-                        Some(&(_, c)) => c.map_or(Column::Zero, Column::Rate),
+                    match index.get(name) {
+                        Some(&n) => nodes[n].1.map_or(Column::Zero, Column::Rate),
                         None => {
                             return Err(probe.token.error(format!(
                                 "`{}`: the netlist has no node `{}`",
@@ -503,7 +508,7 @@ impl Netlist {
                         }
                     }
                 };
-                if !columns.iter().any(|(n, _)| *n == probe.column) {
+                if recorded.insert(probe.column.as_str()) {
                     columns.push((probe.column.clone(), column));
                 }
             }
@@ -523,7 +528,7 @@ impl Netlist {
     /// source) in a loop of capacitors and voltage sources.
     fn check_topology(
         &self,
-        node: &dyn Fn(&str) -> usize,
+        ids: &[[usize; 4]],
         count: usize,
         names: &[String],
         sensed: &HashSet<String>,
@@ -531,34 +536,30 @@ impl Netlist {
         // An ideal diode conducting is a voltage source of zero volts.
         let ideal = |e: &Element| matches!(&e.kind, Kind::Diode(m) if self.models.get(&m.text) == Some(&DiodeModel::Ideal));
         let any_ideal = self.elements.iter().any(ideal);
-        // Each element's branches between its nodes: (from, to, is a voltage source, is a current source).
-        let branches = |e: &Element| -> Vec<(usize, usize, bool, bool)> {
-            let n = &e.nodes;
+        // Each element's branch between its nodes, if it has one: (from, to, is a voltage source,
+        // is a current source).
+        let branches = |e: &Element, n: &[usize; 4]| -> Option<(usize, usize, bool, bool)> {
             if ideal(e) {
-                return vec![(node(&n[0]), node(&n[1]), true, false)];
+                return Some((n[0], n[1], true, false));
             }
             match e.kind {
-                Kind::Coupling { .. } => Vec::new(),
-                Kind::Voltage(_) | Kind::Source { current: false, .. } => {
-                    vec![(node(&n[0]), node(&n[1]), true, false)]
-                }
-                Kind::Current(_) | Kind::Source { current: true, .. } => {
-                    vec![(node(&n[0]), node(&n[1]), false, true)]
-                }
+                Kind::Coupling { .. } => None,
+                Kind::Voltage(_) | Kind::Source { current: false, .. } => Some((n[0], n[1], true, false)),
+                Kind::Current(_) | Kind::Source { current: true, .. } => Some((n[0], n[1], false, true)),
                 // The output branch is a source; the control pins draw no current and tie nothing.
                 Kind::Vccs(_) | Kind::CurrentControlled { transresistance: false, .. } => {
-                    vec![(node(&n[0]), node(&n[1]), false, true)]
+                    Some((n[0], n[1], false, true))
                 }
                 Kind::Vcvs(_) | Kind::CurrentControlled { transresistance: true, .. } => {
-                    vec![(node(&n[0]), node(&n[1]), true, false)]
+                    Some((n[0], n[1], true, false))
                 }
-                _ => vec![(node(&n[0]), node(&n[1]), false, false)],
+                _ => Some((n[0], n[1], false, false)),
             }
         };
         let (mut all, mut sources, mut passive) =
             (Sets((0..count).collect()), Sets((0..count).collect()), Sets((0..count).collect()));
-        for e in &self.elements {
-            for (a, b, voltage, current) in branches(e) {
+        for (e, n) in self.elements.iter().zip(ids) {
+            if let Some((a, b, voltage, current)) = branches(e, n) {
                 all.join(a, b);
                 if voltage && !sources.join(a, b) {
                     let diodes = if any_ideal { " (an ideal diode is one while it conducts)" } else { "" };
@@ -578,7 +579,9 @@ impl Netlist {
                 let e = self
                     .elements
                     .iter()
-                    .find(|e| e.nodes.iter().any(|x| node(x) == n))
+                    .zip(ids)
+                    .find(|(e, at)| at[..e.nodes.len()].contains(&n))
+                    .map(|(e, _)| e)
                     .expect("a node's element");
                 return Err(e.token.error(format!(
                     "node `{name}` has no path to the reference node `0`: its voltage is not determined"
@@ -590,15 +593,17 @@ impl Netlist {
                 let e = self
                     .elements
                     .iter()
-                    .find(|e| {
+                    .zip(ids)
+                    .find(|(e, at)| {
                         matches!(
                             e.kind,
                             Kind::Current(_)
                                 | Kind::Vccs(_)
                                 | Kind::Source { current: true, .. }
                                 | Kind::CurrentControlled { transresistance: false, .. }
-                        ) && e.nodes.iter().take(2).any(|x| passive.find(node(x)) == root)
+                        ) && at[..2].iter().any(|&x| passive.find(x) == root)
                     })
+                    .map(|(e, _)| e)
                     .expect("only current sources join the parts the passive branches leave apart");
                 return Err(e.token.error(format!(
                     "`{}` is in a cut-set of current sources: node `{}` reaches the reference only through them",
@@ -616,15 +621,15 @@ impl Netlist {
             _ => false,
         };
         let mut stiff = Sets((0..count).collect());
-        for e in &self.elements {
+        for (e, n) in self.elements.iter().zip(ids) {
             let multiplier =
                 matches!(e.kind, Kind::Voltage(_) | Kind::Source { current: false, .. }) || ideal(e);
             if matches!(e.kind, Kind::Capacitor { .. }) || (multiplier && !own_current(e)) {
-                stiff.join(node(&e.nodes[0]), node(&e.nodes[1]));
+                stiff.join(n[0], n[1]);
             }
         }
-        for e in self.elements.iter().filter(|e| own_current(e)) {
-            if !stiff.join(node(&e.nodes[0]), node(&e.nodes[1])) {
+        for (e, n) in self.elements.iter().zip(ids).filter(|(e, _)| own_current(e)) {
+            if !stiff.join(n[0], n[1]) {
                 return Err(e.token.error(format!(
                     "`{}` closes a loop of capacitors and voltage sources: its current, an unknown of \
                      modified nodal analysis here, would follow only from their voltages' derivatives; \

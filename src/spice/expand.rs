@@ -6,7 +6,7 @@
 //! `x1:node`; the subcircuit's port nodes become the instance's nodes, and `0` (or `gnd`)
 //! stays the reference.
 
-use std::collections::HashMap;
+use foldhash::HashMap;
 
 use super::SpiceError;
 use super::read::{Token, number};
@@ -185,6 +185,28 @@ pub(super) fn flatten(
         line.push(Token { text, line: t.line, column: t.column });
     }
     out(line)
+}
+
+/// [`flatten`] for a line of the netlist's top level, given by value: a line that names no
+/// subcircuit and has no `{expression}` reads as written, and is passed on without a copy.
+pub(super) fn flatten_top(
+    tokens: Vec<Token>,
+    frame: &Frame,
+    subckts: &HashMap<String, Subckt>,
+    count: &mut usize,
+    out: &mut dyn FnMut(Vec<Token>) -> Result<(), SpiceError>,
+) -> Result<(), SpiceError> {
+    let plain = frame.path.is_empty()
+        && !tokens[0].text.starts_with('x')
+        && !tokens.iter().any(|t| t.text.starts_with(['{', '\'']));
+    if !plain {
+        return flatten(&tokens, frame, subckts, count, out);
+    }
+    *count += 1;
+    if *count > ELEMENTS {
+        return Err(tokens[0].error(format!("more than {ELEMENTS} elements after expanding the subcircuits")));
+    }
+    out(tokens)
 }
 
 /// Expands an instance `X1 a b sub k=v …` of a subcircuit.

@@ -81,7 +81,7 @@ pub struct Netlist {
     /// The first line.
     pub title: String,
     /// The diode models by name.
-    models: std::collections::HashMap<String, DiodeModel>,
+    models: foldhash::HashMap<String, DiodeModel>,
     elements: Vec<Element>,
     commands: Vec<Command>,
 }

@@ -1,7 +1,7 @@
 //! Reading a SPICE netlist into elements and commands: logical lines (comments dropped,
 //! `+` continuation lines joined), tokens with their columns, numbers with SI suffixes.
 
-use std::collections::HashMap;
+use foldhash::{HashMap, HashMapExt};
 
 use super::expand::{self, Frame, Scope};
 use super::wave::Wave;
@@ -36,32 +36,33 @@ fn logical_lines(text: &str) -> Vec<Vec<Token>> {
         let continues = trimmed.starts_with('+');
         let lead = raw.chars().count() - trimmed.chars().count();
         let mut tokens = Vec::new();
-        let mut current: Option<(String, usize)> = None;
-        let flush = |current: &mut Option<(String, usize)>, tokens: &mut Vec<Token>| {
-            if let Some((text, column)) = current.take() {
-                tokens.push(Token { text, line, column });
+        // The token being read: its first byte in `raw` and its column. A token is a run of
+        // the line's characters, lower-cased when it ends.
+        let mut current: Option<(usize, usize)> = None;
+        let flush = |current: &mut Option<(usize, usize)>, tokens: &mut Vec<Token>, end: usize| {
+            if let Some((start, column)) = current.take() {
+                tokens.push(Token { text: raw[start..end].to_ascii_lowercase(), line, column });
             }
         };
         let mut previous = ' ';
         // Inside `{…}` or `'…'`: the closing character and the depth of braces.
         let mut expression: Option<(char, usize)> = None;
-        for (k, c) in raw.chars().enumerate() {
+        for (k, (byte, c)) in raw.char_indices().enumerate() {
             let column = k + 1;
             if let Some((close, depth)) = &mut expression {
-                let text = &mut current.as_mut().expect("an expression's token").0;
-                text.push(c.to_ascii_lowercase());
                 if c == '{' && *close == '}' {
                     *depth += 1;
                 } else if c == *close {
                     *depth -= 1;
                     if *depth == 0 {
                         expression = None;
-                        flush(&mut current, &mut tokens);
+                        flush(&mut current, &mut tokens, byte + c.len_utf8());
                     }
                 }
                 continue;
             }
             if (c == ';' || c == '$') && (previous.is_whitespace() || k == 0) {
+                flush(&mut current, &mut tokens, byte);
                 break;
             }
             previous = c;
@@ -70,23 +71,24 @@ fn logical_lines(text: &str) -> Vec<Vec<Token>> {
             }
             match c {
                 '{' | '\'' if current.is_none() => {
-                    current = Some((c.to_string(), column));
+                    current = Some((byte, column));
                     expression = Some((if c == '{' { '}' } else { '\'' }, 1));
                 }
                 c if c.is_whitespace() || c == '(' || c == ')' || c == ',' => {
-                    flush(&mut current, &mut tokens)
+                    flush(&mut current, &mut tokens, byte)
                 }
                 '=' => {
-                    flush(&mut current, &mut tokens);
+                    flush(&mut current, &mut tokens, byte);
                     tokens.push(Token { text: "=".into(), line, column });
                 }
-                c => match &mut current {
-                    Some((text, _)) => text.push(c.to_ascii_lowercase()),
-                    None => current = Some((c.to_ascii_lowercase().to_string(), column)),
-                },
+                _ => {
+                    if current.is_none() {
+                        current = Some((byte, column));
+                    }
+                }
             }
         }
-        flush(&mut current, &mut tokens);
+        flush(&mut current, &mut tokens, raw.len());
         match lines.last_mut() {
             Some(last) if continues => last.extend(tokens),
             _ if tokens.is_empty() => {}
@@ -135,7 +137,7 @@ pub(super) fn number(token: &Token) -> Result<f64, SpiceError> {
 pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
     let title = text.lines().next().unwrap_or("").trim().to_string();
     let mut netlist = Netlist { title, models: HashMap::new(), elements: Vec::new(), commands: Vec::new() };
-    let lines = logical_lines(text);
+    let mut lines = logical_lines(text);
     let (mut scope, mut subckts, mut top) = (Scope::new(), HashMap::new(), Vec::new());
     let mut k = 0;
     while k < lines.len() {
@@ -156,13 +158,15 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
                 netlist.models.insert(name, model);
             }
             ".end" => break,
-            _ => top.push(&lines[k]),
+            _ => top.push(k),
         }
         k += 1;
     }
     let frame = Frame { path: String::new(), ports: HashMap::new(), scope, depth: 0 };
     let mut count = 0;
-    for tokens in top {
+    for k in top {
+        // The top level's lines are read once: taken, not copied.
+        let tokens = std::mem::take(&mut lines[k]);
         if tokens[0].text.starts_with('.') {
             let tokens: Vec<Token> = tokens
                 .iter()
@@ -178,8 +182,8 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
             netlist.commands.extend(parse_command(&tokens)?);
         } else {
             let elements = &mut netlist.elements;
-            expand::flatten(tokens, &frame, &subckts, &mut count, &mut |line| {
-                elements.push(parse_element(&line)?);
+            expand::flatten_top(tokens, &frame, &subckts, &mut count, &mut |line| {
+                elements.push(parse_element(line)?);
                 Ok(())
             })?;
         }
@@ -207,11 +211,11 @@ fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, DiodeModel), 
             k += 1;
             continue;
         }
-        let eq = at(tokens, k + 1, &format!("`=` after `{}`", key.text))?;
+        let eq = at(tokens, k + 1, format_args!("`=` after `{}`", key.text))?;
         if eq.text != "=" {
             return Err(eq.error(format!("`.model {}`: expected `=` after `{}`", name.text, key.text)));
         }
-        let value = expand::value_of(at(tokens, k + 2, &format!("a value for `{}`", key.text))?, scope)?;
+        let value = expand::value_of(at(tokens, k + 2, format_args!("a value for `{}`", key.text))?, scope)?;
         match key.text.as_str() {
             "is" => is = value,
             "n" => n = value,
@@ -241,7 +245,7 @@ fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, DiodeModel), 
 }
 
 /// The token at `k`, or an error at the end of the line saying what is missing.
-fn at<'a>(tokens: &'a [Token], k: usize, what: &str) -> Result<&'a Token, SpiceError> {
+fn at(tokens: &[Token], k: usize, what: impl std::fmt::Display) -> Result<&Token, SpiceError> {
     tokens.get(k).ok_or_else(|| {
         let last = tokens.last().expect("a line has a token");
         SpiceError {
@@ -252,12 +256,25 @@ fn at<'a>(tokens: &'a [Token], k: usize, what: &str) -> Result<&'a Token, SpiceE
     })
 }
 
-fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
+/// An element line: its kind, with its name, nodes and place moved out of the line.
+fn parse_element(mut tokens: Vec<Token>) -> Result<Element, SpiceError> {
+    let (kind, count) = read_element(&tokens)?;
+    let mut line = tokens.drain(..=count);
+    let token = line.next().expect("a line has a token");
+    let nodes = line.map(|t| t.text).collect();
+    Ok(Element { name: token.text.clone(), nodes, kind, token })
+}
+
+/// An element line's kind and how many nodes follow its name.
+fn read_element(tokens: &[Token]) -> Result<(Kind, usize), SpiceError> {
     let head = &tokens[0];
-    let name = head.text.clone();
+    let name = head.text.as_str();
     let first = name.chars().next().expect("a token is not empty");
-    let nodes = |count: usize| -> Result<Vec<String>, SpiceError> {
-        (1..=count).map(|k| at(tokens, k, &format!("{count} nodes")).map(|t| t.text.clone())).collect()
+    let nodes = |count: usize| -> Result<usize, SpiceError> {
+        for k in 1..=count {
+            at(tokens, k, format_args!("{count} nodes"))?;
+        }
+        Ok(count)
     };
     let extra = |from: usize| -> Result<(), SpiceError> {
         match tokens.get(from) {
@@ -274,11 +291,11 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             if !allowed.contains(&key.text.as_str()) {
                 return Err(key.error(format!("`{name}`: `{}` is not supported here", key.text)));
             }
-            let eq = at(tokens, k + 1, &format!("`=` after `{}`", key.text))?;
+            let eq = at(tokens, k + 1, format_args!("`=` after `{}`", key.text))?;
             if eq.text != "=" {
                 return Err(eq.error(format!("`{name}`: expected `=` after `{}`", key.text)));
             }
-            let value = number(at(tokens, k + 2, &format!("a value for `{}`", key.text))?)?;
+            let value = number(at(tokens, k + 2, format_args!("a value for `{}`", key.text))?)?;
             out.push((key.text.clone(), value));
             k += 3;
         }
@@ -300,7 +317,7 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
                 'l' => Kind::Inductor { l: value, ic },
                 _ => Kind::Capacitor { c: value, ic },
             };
-            return Ok(Element { name, nodes, kind, token: head.clone() });
+            return Ok((kind, nodes));
         }
         'k' => {
             let (a, b) = (at(tokens, 1, "two inductors")?, at(tokens, 2, "two inductors")?);
@@ -328,7 +345,7 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             let wave = match tokens.get(k) {
                 None => None,
                 Some(t) if matches!(t.text.as_str(), "pulse" | "pwl" | "sin") => {
-                    Some(Wave::read(&name, t, &tokens[k + 1..])?)
+                    Some(Wave::read(name, t, &tokens[k + 1..])?)
                 }
                 Some(t) => {
                     return Err(t.error(format!(
@@ -342,13 +359,13 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
                 ('v', None) => Kind::Voltage(value),
                 _ => Kind::Current(value),
             };
-            return Ok(Element { name, nodes, kind, token: head.clone() });
+            return Ok((kind, nodes));
         }
         'd' => {
             let nodes = nodes(2)?;
             let model = at(tokens, 3, "a model")?.clone();
             extra(4)?;
-            return Ok(Element { name, nodes, kind: Kind::Diode(model), token: head.clone() });
+            return Ok((Kind::Diode(model), nodes));
         }
         'g' | 'e' => {
             let nodes = nodes(4)?;
@@ -362,7 +379,7 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             let value = number(token)?;
             extra(6)?;
             let kind = if first == 'g' { Kind::Vccs(value) } else { Kind::Vcvs(value) };
-            return Ok(Element { name, nodes, kind, token: head.clone() });
+            return Ok((kind, nodes));
         }
         'f' | 'h' => {
             let nodes = nodes(2)?;
@@ -371,7 +388,7 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             let value = number(at(tokens, 4, what)?)?;
             extra(5)?;
             let kind = Kind::CurrentControlled { source, value, transresistance: first == 'h' };
-            return Ok(Element { name, nodes, kind, token: head.clone() });
+            return Ok((kind, nodes));
         }
         _ => {
             return Err(head.error(format!(
@@ -380,7 +397,7 @@ fn parse_element(tokens: &[Token]) -> Result<Element, SpiceError> {
             )));
         }
     };
-    Ok(Element { name, nodes: Vec::new(), kind, token: head.clone() })
+    Ok((kind, 0))
 }
 
 /// A command; `None` for `.end`.
@@ -460,7 +477,7 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
                         head.text, kind.text
                     )));
                 }
-                let name = at(tokens, k + 1, &format!("a name in `{}(…)`", kind.text))?;
+                let name = at(tokens, k + 1, format_args!("a name in `{}(…)`", kind.text))?;
                 probes.push(Probe {
                     column: format!("{}({})", kind.text, name.text),
                     name: name.text.clone(),
