@@ -227,7 +227,7 @@ def compare(sizes, ngspice, dirac, out):
             controlled_reference(ref)
         body = open(cir).read().replace(".end\n", "")
         ours = []
-        for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
+        for tol in (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
             csv = f"{out}/{stem}_dirac.csv"
             seconds = timed([dirac, cir, "--tol", f"{tol:g}", "--out", csv, "--svg", f"{out}/{stem}_dirac.svg"])
             ours.append((seconds, error(csv, ref, stop)))
