@@ -7,9 +7,9 @@ use nalgebra::{DMatrix, DefaultAllocator, SVD};
 
 use crate::algebra::{Algebra, amax, dense_cq, dense_qq};
 use crate::error::SimError;
-use crate::model::LagrangeDirac;
 use crate::model::state::State;
-use crate::shape::dims::{Sizes, Storage, VecQ};
+use crate::model::{LagrangeDirac, MatCQ};
+use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecQ};
 use crate::shape::layout::{Layout, Slot, Unknown, Unknowns};
 
 /// The most unknowns `n + m` for which failures are analysed with dense matrices.
@@ -134,20 +134,57 @@ fn constraint_residuals<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let sizes = model.sizes();
-    let mut phi = sizes.zeros_h::<M>();
-    model.holonomic(t, &state.q, &mut phi);
-    let mut a = M::Algebra::zeros_cq(&model.shape());
-    model.constraint_matrix(t, &state.q, &mut a);
-    let size_a = amax(M::Algebra::cq_values(&a)).max(f64::MIN_POSITIVE);
+    constraint_residuals_in(model, t, state, &mut CheckRoom::new(model))
+}
+
+/// [`constraint_residuals`] in room made beforehand: allocates nothing.
+fn constraint_residuals_in<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    room: &mut CheckRoom<M>,
+) -> (Option<Worst>, Option<Worst>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let CheckRoom { phi, a, av, .. } = room;
+    model.holonomic(t, &state.q, phi);
+    model.constraint_matrix(t, &state.q, a);
+    let size_a = amax(M::Algebra::cq_values(a)).max(f64::MIN_POSITIVE);
     let (q_scale, v_scale) = (size_a * (1.0 + state.q.amax()), size_a * (1.0 + state.v.amax()));
-    let mut av = sizes.zeros_c::<M>();
-    model.constraint_rate(t, &state.q, &mut av);
-    M::Algebra::cq_mul(&a, 1.0, state.v.as_slice(), av.as_mut_slice());
+    model.constraint_rate(t, &state.q, av);
+    M::Algebra::cq_mul(a, 1.0, state.v.as_slice(), av.as_mut_slice());
     (
         worst(phi.iter().copied()).map(|(j, r)| (j, r, r / q_scale)),
         worst(av.iter().copied()).map(|(j, r)| (j, r, r / v_scale)),
     )
+}
+
+/// The vectors and the constraint matrix the checks of a restart evaluate into, made once with
+/// an integrator, so that a restart of a model stored on the heap allocates nothing.
+pub(crate) struct CheckRoom<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    phi: VecH<M>,
+    a: MatCQ<M>,
+    av: VecC<M>,
+    dl_dv: VecQ<M>,
+}
+
+impl<M: LagrangeDirac> CheckRoom<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub(crate) fn new(model: &M) -> CheckRoom<M> {
+        let sizes = model.sizes();
+        CheckRoom {
+            phi: sizes.zeros_h::<M>(),
+            a: M::Algebra::zeros_cq(&model.shape()),
+            av: sizes.zeros_c::<M>(),
+            dl_dv: sizes.zeros_q::<M>(),
+        }
+    }
 }
 
 /// A constraint's row, its residual, and the residual relative to its terms' size.
@@ -155,14 +192,19 @@ type Worst = (usize, f64, f64);
 
 /// The constraint that `state` violates the most relative to the size of its terms (as in
 /// [`violated_equation`]); `None` for a model without constraints.
-pub(crate) fn worst_constraint<M: LagrangeDirac>(model: &M, t: f64, state: &State<M>) -> Option<Worst>
+pub(crate) fn worst_constraint<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    room: &mut CheckRoom<M>,
+) -> Option<Worst>
 where
     DefaultAllocator: Storage<M>,
 {
     if model.sizes().nc == 0 {
         return None;
     }
-    match constraint_residuals(model, t, state) {
+    match constraint_residuals_in(model, t, state, room) {
         (Some(h), Some(v)) => Some(if h.2.is_nan() || h.2 >= v.2 { h } else { v }),
         (h, v) => h.or(v),
     }
@@ -176,11 +218,12 @@ pub(crate) fn check_constraints_kept<M: LagrangeDirac>(
     t: f64,
     state: &State<M>,
     before: f64,
+    room: &mut CheckRoom<M>,
 ) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    match worst_constraint(model, t, state) {
+    match worst_constraint(model, t, state, room) {
         Some((j, residual, relative)) if relative.is_nan() || relative > 1e-8 + 2.0 * before => {
             let kind = if j < model.sizes().nh { "holonomic" } else { "velocity" };
             let equation = format!("{kind} constraint `{}`", model.constraint_names()[j]);
@@ -201,8 +244,22 @@ pub fn violated_legendre_map<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let mut dl_dv = model.sizes().zeros_q::<M>();
-    model.dl_dv(t, &state.q, &state.v, &mut dl_dv);
+    violated_legendre_map_in(model, t, state, tolerance, &mut CheckRoom::new(model))
+}
+
+/// [`violated_legendre_map`] in room made beforehand: allocates nothing unless it finds one.
+pub(crate) fn violated_legendre_map_in<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    tolerance: f64,
+    room: &mut CheckRoom<M>,
+) -> Option<(String, f64)>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let dl_dv = &mut room.dl_dv;
+    model.dl_dv(t, &state.q, &state.v, dl_dv);
     let p_scale = 1.0 + state.p.amax().max(dl_dv.amax());
     let gap = state.p.iter().zip(dl_dv.iter()).map(|(p, l)| p - l);
     if let Some((i, r)) = worst(gap).filter(|(_, r)| *r > tolerance * p_scale) {

@@ -86,4 +86,16 @@ pub trait Named {
     fn parameter_index(&self, name: &str) -> Option<usize> {
         self.parameter_names().iter().position(|p| p == name)
     }
+
+    /// The declared unit (`unit(x) = "m"`) of the coordinate, velocity, parameter, input or
+    /// output with this full dotted name, if it has one.
+    fn unit_of(&self, name: &str) -> Option<&'static str> {
+        Self::NAMES.unit_of(name)
+    }
+
+    /// The doc comment of the field (parameter or input) with this full dotted name, if it has
+    /// one.
+    fn doc_of(&self, name: &str) -> Option<&'static str> {
+        Self::NAMES.doc_of(name)
+    }
 }

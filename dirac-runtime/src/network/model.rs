@@ -89,12 +89,32 @@ impl Named for Network {
     }
 
     fn surface(&self, name: &str) -> Option<&'static str> {
-        let (part, rest) = name.split_once('.')?;
-        self.parts[*self.by_name.get(part)?].surface(rest)
+        let (part, rest) = self.owner(name)?;
+        part.surface(rest)
+    }
+
+    /// The unit its part declares (`"C1.v"` is `V`).
+    fn unit_of(&self, name: &str) -> Option<&'static str> {
+        let (part, rest) = self.owner(name)?;
+        part.unit_of(rest)
+    }
+
+    fn doc_of(&self, name: &str) -> Option<&'static str> {
+        let (part, rest) = self.owner(name)?;
+        part.doc_of(rest)
     }
 }
 
 impl Network {
+    /// The part a dotted name (`"X1.R2.p"`) belongs to, and the name within it: the longest
+    /// prefix that names a part, as part names may hold dots themselves.
+    fn owner<'n>(&self, name: &'n str) -> Option<(&dyn super::part::Part, &'n str)> {
+        name.rmatch_indices('.').find_map(|(at, _)| {
+            let k = *self.by_name.get(&name[..at])?;
+            Some((self.parts[k].as_ref(), &name[at + 1..]))
+        })
+    }
+
     /// Each part with its slot.
     fn each(&self) -> impl Iterator<Item = (&dyn super::part::Part, &super::Slot)> {
         self.parts.iter().map(|p| p.as_ref()).zip(&self.slots)

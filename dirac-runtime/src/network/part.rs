@@ -73,6 +73,8 @@ pub(crate) trait Part: Send + Sync {
     fn event_count(&self) -> usize;
     fn any_event(&self, test: &dyn Fn(i8) -> bool) -> bool;
     fn surface(&self, name: &str) -> Option<&'static str>;
+    fn unit_of(&self, name: &str) -> Option<&'static str>;
+    fn doc_of(&self, name: &str) -> Option<&'static str>;
     /// The part's declared event functions into `out` (one value per declared event).
     fn events(
         &self,
@@ -338,6 +340,14 @@ where
 
     fn surface(&self, name: &str) -> Option<&'static str> {
         self.0.surface(name)
+    }
+
+    fn unit_of(&self, name: &str) -> Option<&'static str> {
+        self.0.unit_of(name)
+    }
+
+    fn doc_of(&self, name: &str) -> Option<&'static str> {
+        self.0.doc_of(name)
     }
 
     fn events(

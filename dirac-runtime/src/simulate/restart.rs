@@ -6,7 +6,8 @@
 use nalgebra::DefaultAllocator;
 
 use crate::analysis::diagnose::{
-    check_constraints_kept, check_finite_state, violated_equation, violated_legendre_map, worst_constraint,
+    CheckRoom, check_constraints_kept, check_finite_state, violated_equation, violated_legendre_map_in,
+    worst_constraint,
 };
 use crate::error::SimError;
 use crate::model::state::State;
@@ -15,8 +16,10 @@ use crate::shape::dims::Storage;
 use crate::simulate::held::Held;
 
 /// The restart bookkeeping an integrator keeps beside its model.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Restarts {
+pub(crate) struct Restarts<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
     /// How far the state was from the constraints when the model was last handed out for a
     /// change ([`Integrator::model_mut`](crate::Integrator::model_mut)), relative to the size
     /// of their terms; checked against the changed model at the restart.
@@ -25,22 +28,29 @@ pub(crate) struct Restarts {
     /// (its laws switch, or it was handed out for a change), so that the velocities only the
     /// forces fix are to be looked for again there.
     pub rows_switch: bool,
+    /// Where the checks of a change and a restart evaluate: a restart allocates nothing.
+    room: CheckRoom<M>,
 }
 
-impl Restarts {
+impl<M: LagrangeDirac> Restarts<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The bookkeeping of an integrator of `model`, with room for its checks.
+    pub fn new(model: &M) -> Restarts<M> {
+        Restarts { changed_from: None, rows_switch: false, room: CheckRoom::new(model) }
+    }
+
     /// The checks of a start from `state` at `t0` towards `t_end`: a finite span, finite
     /// parameters, a finite state that satisfies the algebraic equations to `tolerance`; then
     /// forgets any change noted before.
-    pub fn start<M: LagrangeDirac>(
+    pub fn start(
         &mut self,
         model: &M,
         (t0, t_end): (f64, f64),
         state: &State<M>,
         tolerance: f64,
-    ) -> Result<(), SimError>
-    where
-        DefaultAllocator: Storage<M>,
-    {
+    ) -> Result<(), SimError> {
         if !t0.is_finite() || !t_end.is_finite() || t_end <= t0 {
             return Err(SimError::InvalidTimeSpan {
                 reason: format!("from {t0} to {t_end}: need finite t0 < t_end"),
@@ -54,17 +64,15 @@ impl Restarts {
 
     /// The model to change, if it is held exclusively, with the state's distance from the
     /// constraints noted for the restart's check.
-    pub fn model_mut<'a, M: LagrangeDirac>(
+    pub fn model_mut<'a>(
         &mut self,
         model: &'a mut Held<'_, M>,
         t: f64,
         state: &State<M>,
-    ) -> Option<&'a mut M>
-    where
-        DefaultAllocator: Storage<M>,
-    {
+    ) -> Option<&'a mut M> {
         if model.get_mut().is_some() {
-            self.changed_from = Some(constraint_violation(model.get(), t, state));
+            let worst = worst_constraint(model.get(), t, state, &mut self.room);
+            self.changed_from = Some(worst.map_or(0.0, |(_, _, relative)| relative));
             self.rows_switch = true;
         }
         model.get_mut()
@@ -73,21 +81,12 @@ impl Restarts {
     /// The checks of a restart at the state reached after the model may have changed: the
     /// change moved no constraint off the state, the parameters are finite and the momenta
     /// still match the velocities (`p = ∂L/∂v`), since a restart carries both over.
-    pub fn resume<M: LagrangeDirac>(
-        &mut self,
-        model: &M,
-        t: f64,
-        state: &State<M>,
-        tolerance: f64,
-    ) -> Result<(), SimError>
-    where
-        DefaultAllocator: Storage<M>,
-    {
+    pub fn resume(&mut self, model: &M, t: f64, state: &State<M>, tolerance: f64) -> Result<(), SimError> {
         if let Some(before) = self.changed_from.take() {
-            check_constraints_kept(model, t, state, before)?;
+            check_constraints_kept(model, t, state, before, &mut self.room)?;
         }
         check_parameters(model)?;
-        match violated_legendre_map(model, t, state, tolerance) {
+        match violated_legendre_map_in(model, t, state, tolerance, &mut self.room) {
             Some((equation, residual)) => Err(SimError::MomentumChanged { t, equation, residual }),
             None => Ok(()),
         }
@@ -97,17 +96,14 @@ impl Restarts {
     /// `last_step.1`, to a new `state` (an event's reset): the time lies in the step and the
     /// state is finite and consistent to `tolerance`. Forgets any change noted before: the
     /// new state is checked against the model as it is.
-    pub fn jump<M: LagrangeDirac>(
+    pub fn jump(
         &mut self,
         model: &M,
         t: f64,
         last_step: (f64, f64),
         state: &State<M>,
         tolerance: f64,
-    ) -> Result<(), SimError>
-    where
-        DefaultAllocator: Storage<M>,
-    {
+    ) -> Result<(), SimError> {
         let (start, end) = last_step;
         if !(t >= start && t <= end) {
             return Err(SimError::InvalidTimeSpan {
@@ -140,5 +136,5 @@ pub(crate) fn constraint_violation<M: LagrangeDirac>(model: &M, t: f64, state: &
 where
     DefaultAllocator: Storage<M>,
 {
-    worst_constraint(model, t, state).map_or(0.0, |(_, _, relative)| relative)
+    worst_constraint(model, t, state, &mut CheckRoom::new(model)).map_or(0.0, |(_, _, relative)| relative)
 }

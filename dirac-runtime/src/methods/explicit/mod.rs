@@ -136,7 +136,7 @@ where
     probe: RefCell<(Accelerations<M>, VecQ<M>)>,
     stats: ExplicitStats,
     /// What a restart checks after the model was handed out for a change.
-    restarts: Restarts,
+    restarts: Restarts<M>,
     /// The drive of the inputs within the steps, and the stops where they jump or bend.
     driver: Driver<'m, M>,
 }
@@ -154,6 +154,7 @@ where
         let model = model.into();
         let sizes = model.sizes();
         let zeros = || sizes.zeros_q::<M>();
+        let restarts = Restarts::new(model.get());
         Ok(Explicit {
             accelerations: Accelerations::new(model.get()),
             probe: RefCell::new((Accelerations::new(model.get()), zeros())),
@@ -179,7 +180,7 @@ where
             stiff_steps: 0,
             nonstiff_steps: 0,
             stats: ExplicitStats::default(),
-            restarts: Restarts::default(),
+            restarts,
             driver: Driver::default(),
         })
     }

@@ -108,7 +108,7 @@ where
     unclipped: f64,
     stats: RadauStats,
     /// What a restart checks after the model was handed out for a change.
-    restarts: Restarts,
+    restarts: Restarts<M>,
 }
 
 impl<'m, M: LagrangeDirac> Radau<'m, M>
@@ -153,6 +153,7 @@ where
         let projector =
             (options.projection && sizes.nc > 0).then(|| RefCell::new(Projector::new(model.get())));
         let legendre = Legendre::new(model.get());
+        let restarts = Restarts::new(model.get());
         Ok(Radau {
             model,
             solver,
@@ -184,7 +185,7 @@ where
             factored_h: 0.0,
             unclipped: 0.0,
             stats: RadauStats::default(),
-            restarts: Restarts::default(),
+            restarts,
         })
     }
 

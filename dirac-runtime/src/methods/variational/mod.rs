@@ -108,7 +108,7 @@ where
     sizes: Sizes,
     stats: VariationalStats,
     /// What a restart checks after the model was handed out for a change.
-    restarts: Restarts,
+    restarts: Restarts<M>,
     /// The drive of the inputs within the steps, and the stops where they jump or bend.
     driver: Driver<'m, M>,
 }
@@ -134,6 +134,7 @@ where
         let (work, projector) = (Work::new(model.get()), RefCell::new(Projector::new(model.get())));
         let probe =
             RefCell::new((State::with_sizes(sizes), Work::new(model.get()), VariationalStats::default()));
+        let restarts = Restarts::new(model.get());
         Ok(Variational {
             model,
             h,
@@ -157,7 +158,7 @@ where
             probe,
             sizes,
             stats: VariationalStats::default(),
-            restarts: Restarts::default(),
+            restarts,
             driver: Driver::default(),
         })
     }

@@ -7,7 +7,7 @@ use std::ops::ControlFlow;
 use nalgebra::DefaultAllocator;
 
 use super::Events;
-use crate::analysis::diagnose::check_constraints_kept;
+use crate::analysis::diagnose::{CheckRoom, check_constraints_kept};
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::state::State;
@@ -255,7 +255,13 @@ where
                 }
                 if reset || before.is_some() {
                     if let (false, Some(before)) = (reset, before) {
-                        check_constraints_kept(self.model(), t, &after, before)?;
+                        check_constraints_kept(
+                            self.model(),
+                            t,
+                            &after,
+                            before,
+                            &mut CheckRoom::new(self.model()),
+                        )?;
                     }
                     if consistent && !context_touched {
                         restart_consistent(self, events, &mut recorder, t, &after)?;
