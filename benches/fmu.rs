@@ -17,7 +17,7 @@ mod driven_pendulum;
 mod paper_chain;
 
 use std::ffi::CString;
-use std::ptr::null_mut;
+use std::ptr::{null, null_mut};
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use dirac::fmi::{Export, Version, abi};
@@ -49,8 +49,14 @@ where
     let ok = |status: i32| assert_eq!(status, 0);
     // SAFETY: one instance, used and freed here through FMI's calls with valid pointers.
     unsafe {
-        let instance =
-            abi::instantiate_co_simulation::<M>(name.as_ptr(), token.as_ptr(), false, null_mut(), None);
+        let instance = abi::instantiate_co_simulation::<M>(
+            name.as_ptr(),
+            token.as_ptr(),
+            null(),
+            false,
+            null_mut(),
+            None,
+        );
         ok(abi::enter_initialization_mode::<M>(instance, true, TOLERANCE, 0.0, false, 0.0));
         ok(abi::exit_initialization_mode::<M>(instance));
         for k in 0..steps {

@@ -763,64 +763,111 @@ mod driven_pendulum;
 /// `export_fmu!` exports): set the input, step, read outputs, positions and the multiplier.
 /// After the first step, which builds the integrator, 100 such rounds allocate nothing.
 #[test]
-#[allow(unsafe_code)]
 fn fmu_communication_steps_do_not_allocate() {
     use driven_pendulum::DrivenPendulum;
+    let read = ["time", "energy", "height", "x", "y", "vx", "vy", "lambda(rod)"];
+    assert_eq!(
+        allocations_in_fmu_steps::<DrivenPendulum>("f", &read),
+        0,
+        "allocations in 100 communication steps"
+    );
+}
+
+/// A netlist's RC ladder of 100 cells as a run-time network, exported as an FMU whose input is
+/// its source's current (an input in a force: a voltage source's, in a constraint, makes the
+/// state jump at each change, which is set-up work).
+struct NetlistLadder;
+
+impl dirac::fmi::Fmu for NetlistLadder {
+    type Model = dirac::network::Network;
+    const IDENTIFIER: &'static str = "ladder";
+
+    fn model(
+        _resources: Option<&std::path::Path>,
+    ) -> Result<dirac::fmi::Start<dirac::network::Network>, dirac::fmi::BoxError> {
+        use std::fmt::Write as _;
+        let mut text = String::from("an RC ladder\nI1 0 n0 DC 1\nR0 n0 0 1\n");
+        for k in 1..=100 {
+            let _ = writeln!(text, "R{k} n{} n{k} 1\nC{k} n{k} 0 1", k - 1);
+        }
+        let circuit = dirac::spice::parse(&text)?.circuit()?;
+        let (q, v) = circuit.start_values();
+        Ok(dirac::fmi::Start { model: circuit.network, q, v })
+    }
+}
+
+/// The same through a run-time network of 202 parts (a netlist's, made by the FMU's
+/// [`Fmu::model`](dirac::fmi::Fmu::model)): its steps, on the sparse path, allocate nothing.
+#[test]
+fn communication_steps_of_a_network_fmu_do_not_allocate() {
+    let read = ["time", "c100.v", "c100.charge", "i1.v", "r100.n"];
+    assert_eq!(
+        allocations_in_fmu_steps::<NetlistLadder>("i1.i", &read),
+        0,
+        "allocations in 100 communication steps"
+    );
+}
+
+/// Allocations in 100 communication steps of FMU `F` through its C functions, after a first,
+/// each setting `input`, stepping by 0.01 and reading the variables `read`.
+#[allow(unsafe_code)]
+fn allocations_in_fmu_steps<F: dirac::fmi::Fmu>(input: &str, read: &[&str]) -> usize
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<F::Model>,
+{
     use std::ffi::CString;
     use std::ptr::null_mut;
 
-    use dirac::fmi::{Export, Version};
-    let token = dirac::fmi::instantiation_token::<DrivenPendulum>(Version::Fmi3).expect("described");
-    let model = DrivenPendulum::instantiate();
+    let start = F::model(None).expect("the model is made");
+    let xml = dirac::fmi::describe::<F>(None, dirac::fmi::Version::Fmi3).expect("described");
+    let token = xml.split("instantiationToken=\"").nth(1).and_then(|t| t.split('"').next()).expect("a token");
     let (name, token) = (CString::new("alloc").expect("no NUL"), CString::new(token).expect("no NUL"));
     let abi = |status: i32| assert_eq!(status, 0, "an FMI call failed");
+    let vr = |name: &str| {
+        dirac::fmi::value_reference(&start.model, name).unwrap_or_else(|| {
+            let part = name.split('.').next().unwrap_or(name);
+            let names: Vec<&str> = xml
+                .split("<Float64 name=\"")
+                .skip(1)
+                .filter_map(|r| r.split('"').next())
+                .filter(|n| n.contains(part))
+                .collect();
+            panic!("{name} is no variable of the FMU; those that name {part} are {names:?}")
+        })
+    };
+    let (u, read): (u32, Vec<u32>) = (vr(input), read.iter().map(|n| vr(n)).collect());
+    let mut values = vec![0.0; read.len()];
     // SAFETY: the calls follow FMI: one instance, used and freed here, with valid pointers and
     // lengths.
     unsafe {
         use dirac::fmi::abi;
-        let instance = abi::instantiate_co_simulation::<DrivenPendulum>(
+        let instance = abi::instantiate_co_simulation::<F>(
             name.as_ptr(),
             token.as_ptr(),
+            std::ptr::null(),
             false,
             null_mut(),
             None,
         );
         assert!(!instance.is_null());
-        abi(abi::enter_initialization_mode::<DrivenPendulum>(instance, true, 1e-8, 0.0, false, 0.0));
-        abi(abi::exit_initialization_mode::<DrivenPendulum>(instance));
-        let vr = |name: &str| dirac::fmi::value_reference(&model, name).expect("a variable of the FMU");
-        let f = vr("f");
-        let read = ["time", "energy", "height", "x", "y", "vx", "vy", "lambda(rod)"].map(vr);
-        let mut values = [0.0; 8];
+        abi(abi::enter_initialization_mode::<F>(instance, true, 1e-8, 0.0, false, 0.0));
+        abi(abi::exit_initialization_mode::<F>(instance));
         let mut round = |k: usize| {
             let t = 0.01 * k as f64;
-            let u = [2.0 * (3.0 * t).sin()];
-            abi(abi::set_float64::<DrivenPendulum>(instance, &f, 1, u.as_ptr(), 1));
-            abi(abi::do_step::<DrivenPendulum>(
-                instance,
-                t,
-                0.01,
-                null_mut(),
-                null_mut(),
-                null_mut(),
-                null_mut(),
-            ));
-            abi(abi::get_float64::<DrivenPendulum>(
-                instance,
-                read.as_ptr(),
-                read.len(),
-                values.as_mut_ptr(),
-                8,
-            ));
+            let value = [2.0 * (3.0 * t).sin()];
+            abi(abi::set_float64::<F>(instance, &u, 1, value.as_ptr(), 1));
+            abi(abi::do_step::<F>(instance, t, 0.01, null_mut(), null_mut(), null_mut(), null_mut()));
+            abi(abi::get_float64::<F>(instance, read.as_ptr(), read.len(), values.as_mut_ptr(), read.len()));
         };
         round(0);
         let before = allocations();
         for k in 1..=100 {
             round(k);
         }
-        assert_eq!(allocations() - before, 0, "allocations in 100 communication steps");
+        let n = allocations() - before;
         assert!((values[0] - 1.01).abs() < 1e-12, "t = {}", values[0]);
-        abi::free_instance::<DrivenPendulum>(instance);
+        abi::free_instance::<F>(instance);
+        n
     }
 }
 

@@ -13,12 +13,14 @@
 use core::ffi::{c_char, c_void};
 use std::ffi::{CStr, CString};
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::PathBuf;
 
 use crate::Storage;
 use crate::nalgebra::DefaultAllocator;
 
 use super::instance::{Failure, Instance, Phase, Snapshot, Status};
-use super::{Export, Version};
+use super::variables::description;
+use super::{Fmu, Version};
 
 /// FMI's `fmi3LogMessageCallback`.
 pub type LogMessage = Option<
@@ -53,11 +55,11 @@ pub struct Callbacks2 {
 }
 
 /// What an instance pointer points to: the instance and how to reach the importer's log.
-pub struct Handle<M: Export>
+pub struct Handle<F: Fmu>
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    instance: Instance<M>,
+    instance: Instance<F>,
     logger: Logger,
     /// FMI 2.0's `fmi2SetupExperiment`: tolerance, start and stop, for the initialisation.
     experiment: (Option<f64>, f64, Option<f64>),
@@ -128,18 +130,18 @@ fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
 
 /// Runs `call` on the instance behind `instance`, turning its failure or panic into a status
 /// and a log message.
-unsafe fn with<M: Export>(
+unsafe fn with<F: Fmu>(
     instance: *mut c_void,
-    call: impl FnOnce(&mut Instance<M>) -> Result<(), Failure>,
+    call: impl FnOnce(&mut Instance<F>) -> Result<(), Failure>,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     if instance.is_null() {
         return ERROR;
     }
     // SAFETY: a non-null instance pointer is one `instantiate_co_simulation` returned.
-    let handle = unsafe { &mut *instance.cast::<Handle<M>>() };
+    let handle = unsafe { &mut *instance.cast::<Handle<F>>() };
     let result = catch_unwind(AssertUnwindSafe(|| call(&mut handle.instance)));
     match result {
         Ok(Ok(())) => OK,
@@ -202,35 +204,76 @@ pub fn version() -> *const c_char {
 /// `fmi3InstantiateCoSimulation`: a new instance, or null (with a logged message) if the
 /// token is not this library's or the model cannot be described.
 #[allow(clippy::too_many_arguments)]
-pub unsafe fn instantiate_co_simulation<M: Export>(
+pub unsafe fn instantiate_co_simulation<F: Fmu>(
     name: *const c_char,
     token: *const c_char,
+    resource_path: *const c_char,
     logging_on: bool,
     env: *mut c_void,
     callback: LogMessage,
 ) -> *mut c_void
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     let logger = Logger::new(name, env, Callback::Fmi3(callback), logging_on);
-    instantiate::<M>(logger, text(token), Version::Fmi3)
+    let resources = (!resource_path.is_null()).then(|| PathBuf::from(text(resource_path)));
+    instantiate::<F>(logger, text(token), resources, Version::Fmi3)
+}
+
+/// The folder an FMI 2.0 resource location names: a `file:` URI (`file:///tmp/fmu/resources`,
+/// `file:/tmp/fmu/resources`, `file://localhost/tmp/...`), its `%XX` escapes decoded; `None` for
+/// another scheme.
+pub fn resource_folder(uri: &str) -> Option<PathBuf> {
+    let rest = uri.strip_prefix("file:")?;
+    let path = match rest.strip_prefix("//") {
+        Some(authority) => &authority[authority.find('/')?..],
+        None => rest,
+    };
+    // A drive letter after the slash (`/C:/...`) is where the path starts on Windows.
+    let path = match path.as_bytes() {
+        [b'/', drive, b':', ..] if cfg!(windows) && drive.is_ascii_alphabetic() => &path[1..],
+        _ => path,
+    };
+    let bytes = path.as_bytes();
+    let mut decoded = Vec::with_capacity(bytes.len());
+    let mut k = 0;
+    while k < bytes.len() {
+        let hex = |b: u8| (b as char).to_digit(16);
+        match (bytes[k], bytes.get(k + 1).copied().and_then(hex), bytes.get(k + 2).copied().and_then(hex)) {
+            (b'%', Some(high), Some(low)) => {
+                decoded.push((high * 16 + low) as u8);
+                k += 3;
+            }
+            (byte, _, _) => {
+                decoded.push(byte);
+                k += 1;
+            }
+        }
+    }
+    Some(PathBuf::from(String::from_utf8_lossy(&decoded).into_owned()))
 }
 
 /// A new instance for a library of either version, or null with a logged message.
-fn instantiate<M: Export>(logger: Logger, given: String, version: Version) -> *mut c_void
+fn instantiate<F: Fmu>(
+    logger: Logger,
+    given: String,
+    resources: Option<PathBuf>,
+    version: Version,
+) -> *mut c_void
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     let made = catch_unwind(|| {
-        let instance = Instance::<M>::new();
-        let expected = super::instantiation_token::<M>(version);
-        (instance, expected)
+        let start =
+            F::model(resources.as_deref()).map_err(|e| format!("the model could not be made: {e}"))?;
+        let expected = description::<F>(&start, version).map_err(|e| e.to_string())?.1;
+        Ok::<_, String>((Instance::<F>::from_start(start, resources), expected))
     });
     match made {
-        Ok((instance, Ok(expected))) if expected == given => {
+        Ok(Ok((instance, expected))) if expected == given => {
             Box::into_raw(Box::new(Handle { instance, logger, experiment: (None, 0.0, None) })).cast()
         }
-        Ok((_, Ok(expected))) => {
+        Ok(Ok((_, expected))) => {
             logger.log(
                 Status::Error,
                 &format!(
@@ -240,8 +283,8 @@ where
             );
             std::ptr::null_mut()
         }
-        Ok((_, Err(e))) => {
-            logger.log(Status::Error, &e.to_string());
+        Ok(Err(why)) => {
+            logger.log(Status::Error, &why);
             std::ptr::null_mut()
         }
         Err(payload) => {
@@ -269,32 +312,32 @@ pub unsafe fn instantiate_other(
 }
 
 /// `fmi3FreeInstance`.
-pub unsafe fn free_instance<M: Export>(instance: *mut c_void)
+pub unsafe fn free_instance<F: Fmu>(instance: *mut c_void)
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     if !instance.is_null() {
         // SAFETY: the pointer came from `Box::into_raw` in `instantiate_co_simulation` and is
         // freed once, as FMI specifies.
-        drop(unsafe { Box::from_raw(instance.cast::<Handle<M>>()) });
+        drop(unsafe { Box::from_raw(instance.cast::<Handle<F>>()) });
     }
 }
 
 /// `fmi3SetDebugLogging`.
-pub unsafe fn set_debug_logging<M: Export>(instance: *mut c_void, on: bool) -> i32
+pub unsafe fn set_debug_logging<F: Fmu>(instance: *mut c_void, on: bool) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     if instance.is_null() {
         return ERROR;
     }
     // SAFETY: as in `with`.
-    unsafe { &mut *instance.cast::<Handle<M>>() }.logger.debug = on;
+    unsafe { &mut *instance.cast::<Handle<F>>() }.logger.debug = on;
     OK
 }
 
 /// `fmi3EnterInitializationMode`.
-pub unsafe fn enter_initialization_mode<M: Export>(
+pub unsafe fn enter_initialization_mode<F: Fmu>(
     instance: *mut c_void,
     tolerance_defined: bool,
     tolerance: f64,
@@ -303,44 +346,39 @@ pub unsafe fn enter_initialization_mode<M: Export>(
     stop: f64,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     let tolerance = tolerance_defined.then_some(tolerance);
     let stop = stop_defined.then_some(stop);
-    unsafe { with::<M>(instance, |i| i.enter_initialization(tolerance, start, stop)) }
+    unsafe { with::<F>(instance, |i| i.enter_initialization(tolerance, start, stop)) }
 }
 
 /// `fmi3ExitInitializationMode`.
-pub unsafe fn exit_initialization_mode<M: Export>(instance: *mut c_void) -> i32
+pub unsafe fn exit_initialization_mode<F: Fmu>(instance: *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    unsafe { with::<M>(instance, |i| i.exit_initialization()) }
+    unsafe { with::<F>(instance, |i| i.exit_initialization()) }
 }
 
 /// `fmi3Terminate`.
-pub unsafe fn terminate<M: Export>(instance: *mut c_void) -> i32
+pub unsafe fn terminate<F: Fmu>(instance: *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    unsafe { with::<M>(instance, |i| i.terminate()) }
+    unsafe { with::<F>(instance, |i| i.terminate()) }
 }
 
 /// `fmi3Reset`.
-pub unsafe fn reset<M: Export>(instance: *mut c_void) -> i32
+pub unsafe fn reset<F: Fmu>(instance: *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    unsafe {
-        with::<M>(instance, |i| {
-            i.reset();
-            Ok(())
-        })
-    }
+    unsafe { with::<F>(instance, |i| i.reset()) }
 }
 
 /// `fmi3GetFloat64`.
-pub unsafe fn get_float64<M: Export>(
+pub unsafe fn get_float64<F: Fmu>(
     instance: *mut c_void,
     vrs: *const u32,
     n_vrs: usize,
@@ -348,10 +386,10 @@ pub unsafe fn get_float64<M: Export>(
     n_values: usize,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |i| {
+        with::<F>(instance, |i| {
             let vrs = slice(vrs, n_vrs, "valueReferences")?;
             let values = slice_mut(values, n_values, "values")?;
             i.get(vrs, values)
@@ -360,7 +398,7 @@ where
 }
 
 /// `fmi3SetFloat64`.
-pub unsafe fn set_float64<M: Export>(
+pub unsafe fn set_float64<F: Fmu>(
     instance: *mut c_void,
     vrs: *const u32,
     n_vrs: usize,
@@ -368,10 +406,10 @@ pub unsafe fn set_float64<M: Export>(
     n_values: usize,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |i| {
+        with::<F>(instance, |i| {
             let vrs = slice(vrs, n_vrs, "valueReferences")?;
             let values = slice(values, n_values, "values")?;
             i.set(vrs, values)
@@ -381,12 +419,12 @@ where
 
 /// Getters and setters of types the model has no variables of: fine for no value references,
 /// an error naming the first reference otherwise.
-pub unsafe fn no_variables<M: Export>(instance: *mut c_void, vrs: *const u32, n_vrs: usize, kind: &str) -> i32
+pub unsafe fn no_variables<F: Fmu>(instance: *mut c_void, vrs: *const u32, n_vrs: usize, kind: &str) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |_| match slice(vrs, n_vrs, "valueReferences")?.first() {
+        with::<F>(instance, |_| match slice(vrs, n_vrs, "valueReferences")?.first() {
             None => Ok(()),
             Some(vr) => Err(Failure::error(format!(
                 "no {kind} variable has value reference {vr}: the model's variables are all Float64"
@@ -396,18 +434,18 @@ where
 }
 
 /// Functions of FMI that this FMU does not provide (its model description says so).
-pub unsafe fn unsupported<M: Export>(instance: *mut c_void, function: &str) -> i32
+pub unsafe fn unsupported<F: Fmu>(instance: *mut c_void, function: &str) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |_| Err(Failure::error(format!("{function} is not supported by this FMU"))))
+        with::<F>(instance, |_| Err(Failure::error(format!("{function} is not supported by this FMU"))))
     }
 }
 
 /// `fmi3DoStep`.
 #[allow(clippy::too_many_arguments)]
-pub unsafe fn do_step<M: Export>(
+pub unsafe fn do_step<F: Fmu>(
     instance: *mut c_void,
     t: f64,
     h: f64,
@@ -417,9 +455,9 @@ pub unsafe fn do_step<M: Export>(
     last_successful_time: *mut f64,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    let status = unsafe { with::<M>(instance, |i| i.do_step(t, h)) };
+    let status = unsafe { with::<F>(instance, |i| i.do_step(t, h)) };
     unsafe {
         put(event_handling_needed, false);
         put(terminate_simulation, false);
@@ -427,19 +465,19 @@ where
     }
     if !instance.is_null() {
         // SAFETY: as in `with`.
-        let reached = unsafe { &*instance.cast::<Handle<M>>() }.instance.time();
+        let reached = unsafe { &*instance.cast::<Handle<F>>() }.instance.time();
         unsafe { put(last_successful_time, reached) };
     }
     status
 }
 
 /// `fmi3GetFMUState`: a new snapshot, or the one at `*state` overwritten.
-pub unsafe fn get_fmu_state<M: Export>(instance: *mut c_void, state: *mut *mut c_void) -> i32
+pub unsafe fn get_fmu_state<F: Fmu>(instance: *mut c_void, state: *mut *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |i| {
+        with::<F>(instance, |i| {
             if state.is_null() {
                 return Err(Failure::error("FMUState is a null pointer"));
             }
@@ -457,12 +495,12 @@ where
 }
 
 /// `fmi3SetFMUState`.
-pub unsafe fn set_fmu_state<M: Export>(instance: *mut c_void, state: *mut c_void) -> i32
+pub unsafe fn set_fmu_state<F: Fmu>(instance: *mut c_void, state: *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |i| {
+        with::<F>(instance, |i| {
             if state.is_null() {
                 return Err(Failure::error("FMUState is a null pointer"));
             }
@@ -473,12 +511,12 @@ where
 }
 
 /// `fmi3FreeFMUState`.
-pub unsafe fn free_fmu_state<M: Export>(instance: *mut c_void, state: *mut *mut c_void) -> i32
+pub unsafe fn free_fmu_state<F: Fmu>(instance: *mut c_void, state: *mut *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |_| {
+        with::<F>(instance, |_| {
             if !state.is_null() && !(*state).is_null() {
                 // SAFETY: the FMU state came from `Box::into_raw` in `get_fmu_state`.
                 drop(Box::from_raw((*state).cast::<Snapshot>()));
@@ -490,12 +528,12 @@ where
 }
 
 /// `fmi3SerializedFMUStateSize`.
-pub unsafe fn serialized_size<M: Export>(instance: *mut c_void, state: *mut c_void, size: *mut usize) -> i32
+pub unsafe fn serialized_size<F: Fmu>(instance: *mut c_void, state: *mut c_void, size: *mut usize) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |_| {
+        with::<F>(instance, |_| {
             if state.is_null() || size.is_null() {
                 return Err(Failure::error("FMUState or size is a null pointer"));
             }
@@ -506,17 +544,12 @@ where
 }
 
 /// `fmi3SerializeFMUState`.
-pub unsafe fn serialize<M: Export>(
-    instance: *mut c_void,
-    state: *mut c_void,
-    bytes: *mut u8,
-    size: usize,
-) -> i32
+pub unsafe fn serialize<F: Fmu>(instance: *mut c_void, state: *mut c_void, bytes: *mut u8, size: usize) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |_| {
+        with::<F>(instance, |_| {
             if state.is_null() {
                 return Err(Failure::error("FMUState is a null pointer"));
             }
@@ -531,17 +564,17 @@ where
 }
 
 /// `fmi3DeserializeFMUState`.
-pub unsafe fn deserialize<M: Export>(
+pub unsafe fn deserialize<F: Fmu>(
     instance: *mut c_void,
     bytes: *const u8,
     size: usize,
     state: *mut *mut c_void,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |_| {
+        with::<F>(instance, |_| {
             if state.is_null() {
                 return Err(Failure::error("FMUState is a null pointer"));
             }
@@ -569,15 +602,16 @@ pub fn types_platform2() -> *const c_char {
 }
 
 /// `fmi2Instantiate`: a co-simulation instance, or null with a logged message.
-pub unsafe fn instantiate2<M: Export>(
+pub unsafe fn instantiate2<F: Fmu>(
     name: *const c_char,
     fmu_type: i32,
     guid: *const c_char,
+    resource_location: *const c_char,
     callbacks: *const Callbacks2,
     logging_on: i32,
 ) -> *mut c_void
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     // SAFETY: FMI passes a pointer to the callbacks, valid for the instance's life; a null
     // pointer leaves the instance without a log.
@@ -591,11 +625,24 @@ where
         logger.log(Status::Error, "this FMU supports co-simulation only, not model exchange");
         return std::ptr::null_mut();
     }
-    instantiate::<M>(logger, text(guid), Version::Fmi2)
+    let resources = match text(resource_location) {
+        location if location.is_empty() => None,
+        location => match resource_folder(&location) {
+            Some(folder) => Some(folder),
+            None => {
+                logger.log(
+                    Status::Error,
+                    &format!("the resource location {location} is not a `file:` URI: FMI 2.0 gives one"),
+                );
+                return std::ptr::null_mut();
+            }
+        },
+    };
+    instantiate::<F>(logger, text(guid), resources, Version::Fmi2)
 }
 
 /// `fmi2SetupExperiment`: kept for `fmi2EnterInitializationMode`.
-pub unsafe fn setup_experiment2<M: Export>(
+pub unsafe fn setup_experiment2<F: Fmu>(
     instance: *mut c_void,
     tolerance_defined: i32,
     tolerance: f64,
@@ -604,19 +651,19 @@ pub unsafe fn setup_experiment2<M: Export>(
     stop: f64,
 ) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     if instance.is_null() {
         return ERROR;
     }
     // SAFETY: as in `with`.
-    let handle = unsafe { &mut *instance.cast::<Handle<M>>() };
+    let handle = unsafe { &mut *instance.cast::<Handle<F>>() };
     if handle.instance.phase == Phase::Instantiated {
         handle.experiment =
             ((tolerance_defined != 0).then_some(tolerance), start, (stop_defined != 0).then_some(stop));
     }
     unsafe {
-        with::<M>(instance, |i| match i.phase {
+        with::<F>(instance, |i| match i.phase {
             Phase::Instantiated => Ok(()),
             _ => {
                 Err(Failure::error("fmi2SetupExperiment is allowed only before fmi2EnterInitializationMode"))
@@ -626,25 +673,25 @@ where
 }
 
 /// `fmi2EnterInitializationMode`, with the experiment `fmi2SetupExperiment` gave.
-pub unsafe fn enter_initialization_mode2<M: Export>(instance: *mut c_void) -> i32
+pub unsafe fn enter_initialization_mode2<F: Fmu>(instance: *mut c_void) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     if instance.is_null() {
         return ERROR;
     }
     // SAFETY: as in `with`.
-    let (tolerance, start, stop) = unsafe { &*instance.cast::<Handle<M>>() }.experiment;
-    unsafe { with::<M>(instance, |i| i.enter_initialization(tolerance, start, stop)) }
+    let (tolerance, start, stop) = unsafe { &*instance.cast::<Handle<F>>() }.experiment;
+    unsafe { with::<F>(instance, |i| i.enter_initialization(tolerance, start, stop)) }
 }
 
 /// `fmi2GetRealStatus`: the last successful time (`fmi2LastSuccessfulTime`, kind 2).
-pub unsafe fn get_real_status2<M: Export>(instance: *mut c_void, kind: i32, value: *mut f64) -> i32
+pub unsafe fn get_real_status2<F: Fmu>(instance: *mut c_void, kind: i32, value: *mut f64) -> i32
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     unsafe {
-        with::<M>(instance, |i| {
+        with::<F>(instance, |i| {
             const LAST_SUCCESSFUL_TIME: i32 = 2;
             if kind != LAST_SUCCESSFUL_TIME {
                 return Err(Failure::error(format!("fmi2GetRealStatus of kind {kind} is not provided")));
@@ -655,5 +702,27 @@ where
             value.write(i.time());
             Ok(())
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[cfg(unix)]
+    #[test]
+    fn a_resource_uri_names_its_folder() {
+        // The forms FMI 2.0 importers pass (RFC 8089): an empty authority, none, or localhost.
+        for uri in [
+            "file:///tmp/fmu%20one/resources/",
+            "file:/tmp/fmu%20one/resources/",
+            "file://localhost/tmp/fmu%20one/resources/",
+        ] {
+            assert_eq!(resource_folder(uri), Some(PathBuf::from("/tmp/fmu one/resources/")), "{uri}");
+        }
+        // A stray `%` is kept; other schemes are not folders.
+        assert_eq!(resource_folder("file:///a%2/b%"), Some(PathBuf::from("/a%2/b%")));
+        assert_eq!(resource_folder("http://example.org/resources"), None);
+        assert_eq!(resource_folder("/tmp/resources"), None);
     }
 }

@@ -4,7 +4,9 @@
 /// Exports a model as the FMI 3.0 and FMI 2.0 co-simulation functions of the library it is
 /// invoked in.
 ///
-/// The model implements [`fmi::Export`](crate::fmi::Export); the invoking crate is built as a
+/// The type is an [`fmi::Fmu`](crate::fmi::Fmu): a model that implements
+/// [`fmi::Export`](crate::fmi::Export), or a type of one's own that makes a model (a run-time
+/// network) for each instance, from the FMU's resources if it likes. The invoking crate is built as a
 /// `cdylib` (`crate-type = ["cdylib", "rlib"]`, the `rlib` so that a packaging program can
 /// write the description from the same model), and
 /// [`fmi::write_fmu`](crate::fmi::write_fmu) packs the library and its
@@ -48,7 +50,7 @@ macro_rules! export_fmu {
             pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
                 name: *const c_char,
                 token: *const c_char,
-                _resource_path: *const c_char,
+                resource_path: *const c_char,
                 _visible: bool,
                 logging_on: bool,
                 _event_mode_used: bool,
@@ -59,7 +61,16 @@ macro_rules! export_fmu {
                 log_message: abi::LogMessage,
                 _intermediate_update: *const c_void,
             ) -> *mut c_void {
-                unsafe { abi::instantiate_co_simulation::<Model>(name, token, logging_on, env, log_message) }
+                unsafe {
+                    abi::instantiate_co_simulation::<Model>(
+                        name,
+                        token,
+                        resource_path,
+                        logging_on,
+                        env,
+                        log_message,
+                    )
+                }
             }
 
             #[unsafe(no_mangle)]
@@ -261,12 +272,14 @@ macro_rules! export_fmu {
                 name: *const c_char,
                 fmu_type: i32,
                 guid: *const c_char,
-                _resource_location: *const c_char,
+                resource_location: *const c_char,
                 callbacks: *const abi::Callbacks2,
                 _visible: i32,
                 logging_on: i32,
             ) -> *mut c_void {
-                unsafe { abi::instantiate2::<Model>(name, fmu_type, guid, callbacks, logging_on) }
+                unsafe {
+                    abi::instantiate2::<Model>(name, fmu_type, guid, resource_location, callbacks, logging_on)
+                }
             }
 
             #[unsafe(no_mangle)]

@@ -2,10 +2,15 @@
 //! with no raw pointers (those stay in [`abi`](super::abi)).
 
 use crate::nalgebra::DefaultAllocator;
-use crate::{Consistency, Held, Integrator, Radau, RadauOptions, State, Storage, VecQ};
+use crate::{
+    Consistency, Held, InputsOutputs, Integrator, LagrangeDirac, Parameters, Radau, RadauOptions, State,
+    Storage, VecQ,
+};
 
-use super::Export;
+use std::path::{Path, PathBuf};
+
 use super::variables::{Table, Variable};
+use super::{Export, Fmu, Start};
 
 /// FMI's status codes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -84,26 +89,29 @@ impl Phase {
 }
 
 /// A model being simulated for an importer.
-pub struct Instance<M: Export>
+pub struct Instance<F: Fmu>
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
     pub(crate) phase: Phase,
     /// The model until the first step moves it into the integrator.
-    model: Option<M>,
+    model: Option<F::Model>,
     /// The integrator, from the first step on: kept across steps, so that each communication
     /// point restarts it with its step size (as [`Integrator::solve_sampled`] does) and a step
     /// allocates nothing.
-    radau: Option<Radau<'static, M>>,
+    radau: Option<Radau<'static, F::Model>>,
     table: Table,
-    start_q: VecQ<M>,
-    start_v: VecQ<M>,
+    start_q: VecQ<F::Model>,
+    start_v: VecQ<F::Model>,
     t: f64,
     tolerance: f64,
     /// The consistent state at `t`; `None` until initialisation asks for it, and again after
     /// a start value or parameter changes during initialisation.
-    state: Option<State<M>>,
+    state: Option<State<F::Model>>,
     outputs: Vec<f64>,
+    /// Where the importer unpacked the FMU's resources: the model is made again from them on
+    /// reset and when the instance goes back to a saved state.
+    resources: Option<PathBuf>,
 }
 
 /// The values an importer saved with `fmi3GetFMUState`, to go back to.
@@ -121,34 +129,38 @@ const SNAPSHOT_MAGIC: f64 = 17.03;
 /// limit, for each communication step rather than for the integrator's whole life.
 pub const STEPS_PER_COMMUNICATION_STEP: usize = 1_000_000;
 
-impl<M: Export> Instance<M>
+impl<F: Fmu> Instance<F>
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    /// A new instance: the model as [`Export::instantiate`] makes it, its start values, time
-    /// zero.
-    pub fn new() -> Instance<M> {
-        let model = M::instantiate();
+    /// A new instance of FMU `F`: its model made from the FMU's resources folder
+    /// ([`Fmu::model`]), its start values, time zero.
+    pub fn instantiate(resources: Option<&Path>) -> Result<Instance<F>, Failure> {
+        let start =
+            F::model(resources).map_err(|e| Failure::error(format!("the model could not be made: {e}")))?;
+        Ok(Instance::from_start(start, resources.map(Path::to_path_buf)))
+    }
+
+    pub(crate) fn from_start(start: Start<F::Model>, resources: Option<PathBuf>) -> Instance<F> {
+        let Start { model, q, v } = start;
         let table = Table::of(&model);
-        let sizes = model.sizes();
-        let (mut start_q, mut start_v) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
-        model.start(&mut start_q, &mut start_v);
         Instance {
             phase: Phase::Instantiated,
             outputs: vec![0.0; table.outputs],
             model: Some(model),
             radau: None,
             table,
-            start_q,
-            start_v,
+            start_q: q,
+            start_v: v,
             t: 0.0,
-            tolerance: M::default_experiment().tolerance,
+            tolerance: F::experiment().tolerance,
             state: None,
+            resources,
         }
     }
 
     /// The model, wherever it is.
-    fn model(&self) -> &M {
+    fn model(&self) -> &F::Model {
         match (&self.radau, &self.model) {
             (Some(radau), _) => radau.model(),
             (None, Some(model)) => model,
@@ -157,7 +169,7 @@ where
     }
 
     /// The model to change; the integrator restarts at the next step.
-    fn model_mut(&mut self) -> &mut M {
+    fn model_mut(&mut self) -> &mut F::Model {
         match (&mut self.radau, &mut self.model) {
             (Some(radau), _) => radau.model_mut().expect("the integrator owns the model"),
             (None, Some(model)) => model,
@@ -168,15 +180,17 @@ where
     /// A new model with these parameter and input values (in the order of the FMU's
     /// variables), to build a new integrator on: after a failed step (the current values), or
     /// to go back to a snapshot (its values).
-    fn model_with(&self, parameters: &[f64], inputs: &[f64]) -> M {
-        let mut model = M::instantiate();
+    fn model_with(&self, parameters: &[f64], inputs: &[f64]) -> Result<F::Model, Failure> {
+        let mut model = F::model(self.resources.as_deref())
+            .map_err(|e| Failure::error(format!("the model could not be made again: {e}")))?
+            .model;
         for (&k, &x) in self.table.parameters.iter().zip(parameters) {
             model.set_parameter_value(k, x);
         }
         for (k, &x) in inputs.iter().enumerate() {
             model.set_input_value(k, x);
         }
-        model
+        Ok(model)
     }
 
     /// The current parameter and input values, in the order of the FMU's variables.
@@ -225,7 +239,7 @@ where
     }
 
     /// The consistent state at the start, computed from the start values when first asked for.
-    fn initial_state(&mut self) -> Result<&State<M>, Failure> {
+    fn initial_state(&mut self) -> Result<&State<F::Model>, Failure> {
         if self.state.is_none() {
             let state = crate::consistent_state(
                 self.model(),
@@ -264,9 +278,11 @@ where
         Ok(())
     }
 
-    /// `fmi3Reset`: back to the instance as instantiated.
-    pub fn reset(&mut self) {
-        *self = Instance::new();
+    /// `fmi3Reset`: back to the instance as instantiated. Nothing changes if the model cannot
+    /// be made again.
+    pub fn reset(&mut self) -> Result<(), Failure> {
+        *self = Instance::instantiate(self.resources.as_deref())?;
+        Ok(())
     }
 
     /// `fmi3GetFloat64`.
@@ -322,7 +338,7 @@ where
         Ok(())
     }
 
-    fn current(&self) -> Result<&State<M>, Failure> {
+    fn current(&self) -> Result<&State<F::Model>, Failure> {
         self.state.as_ref().ok_or_else(not_computed)
     }
 
@@ -413,7 +429,16 @@ where
                 let mut radau =
                     Radau::new(Held::Owned(model), options).map_err(|e| Failure::error(e.to_string()))?;
                 let state = self.state.as_ref().ok_or_else(not_computed)?;
-                let result = radau.start(at, state, end).and_then(|()| Self::advance(&mut radau, end, true));
+                let started = match radau.start(at, state, end) {
+                    // An input in a constraint was set after the initialisation: the state
+                    // jumps with it, as at a later communication point ([`Self::advance`]).
+                    Err(crate::SimError::StateNotConsistent { .. }) => {
+                        crate::consistent_state(radau.model(), at, &state.q, &state.v, Consistency::default())
+                            .and_then(|jumped| radau.start(at, &jumped, end))
+                    }
+                    other => other,
+                };
+                let result = started.and_then(|()| Self::advance(&mut radau, end, true));
                 self.radau = Some(radau);
                 result
             }
@@ -432,8 +457,18 @@ where
                 let (parameters, inputs) = self.values();
                 let model = self.model_with(&parameters, &inputs);
                 self.radau = None;
-                self.model = Some(model);
-                Err(Failure::discard(format!("the step from t = {at} to {end} failed: {e}")))
+                let failed = format!("the step from t = {at} to {end} failed: {e}");
+                match model {
+                    Ok(model) => {
+                        self.model = Some(model);
+                        Err(Failure::discard(failed))
+                    }
+                    Err(again) => {
+                        // No model to go on with: the instance cannot continue.
+                        self.phase = Phase::Failed;
+                        Err(Failure::error(format!("{failed}; {}", again.message)))
+                    }
+                }
             }
         }
     }
@@ -447,11 +482,29 @@ where
 
     /// Steps to `end`, restarting there first unless the integrator was just started, with at
     /// most [`STEPS_PER_COMMUNICATION_STEP`] steps and rejections.
-    fn advance(radau: &mut Radau<'static, M>, end: f64, started: bool) -> Result<(), crate::SimError> {
+    fn advance(radau: &mut Radau<'static, F::Model>, end: f64, started: bool) -> Result<(), crate::SimError> {
         if !started {
-            radau.restart_until(end)?;
+            match radau.restart_until(end) {
+                // An input in a constraint (a voltage source's voltage, a prescribed position)
+                // jumped at the communication point: the state jumps with it, as an impulse
+                // through the constraints would take it, to the consistent state nearest in
+                // the kinetic-energy norm (a capacitor's charge kept unless the source is across
+                // it), and the integration starts again there.
+                Err(crate::SimError::ConstraintMoved { .. }) => {
+                    let (t, state) = (radau.t(), radau.state());
+                    let jumped = crate::consistent_state(
+                        radau.model(),
+                        t,
+                        &state.q,
+                        &state.v,
+                        Consistency::default(),
+                    )?;
+                    radau.start(t, &jumped, end)?;
+                }
+                other => other?,
+            }
         }
-        let count = |radau: &Radau<'static, M>| {
+        let count = |radau: &Radau<'static, F::Model>| {
             let stats = radau.stats();
             stats.steps + stats.rejected
         };
@@ -509,7 +562,7 @@ where
         let state = match next()? {
             0.0 => None,
             1.0 => {
-                let mut state = State::<M>::with_sizes(self.model().sizes());
+                let mut state = State::<F::Model>::with_sizes(self.model().sizes());
                 for x in state.components_mut() {
                     *x = next()?;
                 }
@@ -520,7 +573,7 @@ where
         if next().is_ok() {
             return Err(refuse());
         }
-        let model = self.model_with(&parameters, &inputs);
+        let model = self.model_with(&parameters, &inputs)?;
         // A new integrator starts at the snapshot's time and state at the next step.
         self.radau = None;
         self.model = Some(model);
@@ -555,6 +608,17 @@ impl Snapshot {
             .collect::<Result<Vec<f64>, _>>()
             .ok()?;
         Some(Snapshot { values })
+    }
+}
+
+impl<M: Export> Instance<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// A new instance of an [`Export`] model: the model as [`Export::instantiate`] makes it,
+    /// its start values, time zero.
+    pub fn new() -> Instance<M> {
+        Instance::from_start(super::start_of(M::instantiate()), None)
     }
 }
 

@@ -6,11 +6,15 @@
 //! model:
 //!
 //! 1. [`Export`], on the model: its identifier, the instance an importer starts from, and
-//!    optionally start positions and velocities and a default experiment;
+//!    optionally start positions and velocities and a default experiment. A model made while
+//!    the program runs (a [`Network`](crate::network::Network), a netlist's circuit) is
+//!    exported through [`Fmu`] instead, on a type of one's own that makes the model for each
+//!    instance, from the FMU's `resources/` if it likes (the example `fmu_netlist` is one
+//!    library for every SPICE netlist);
 //! 2. [`export_fmu!`](crate::export_fmu), in a crate built as a `cdylib`: the C functions;
 //! 3. [`write_fmu`] (or [`build`], which also runs `cargo build`): the `.fmu` file, for
 //!    [`Version::Fmi3`] or [`Version::Fmi2`] (one library implements both; the description
-//!    says which the importer reads).
+//!    says which the importer reads); [`write_fmu_with_resources`] packs files beside it.
 //!
 //! The variables, in the order of their value references:
 //!
@@ -25,7 +29,12 @@
 //!
 //! `fmi3DoStep` integrates with [`Radau`](crate::Radau) at the tolerance the importer gives
 //! (relative and absolute alike; the default experiment's otherwise), restarting at each
-//! communication point, where inputs may jump. A step that fails returns `fmi3Discard` and
+//! communication point, where inputs may jump. An input in a constraint (a voltage source's
+//! voltage, a prescribed position) moves the state when it jumps, as an impulse through the
+//! constraint would: to the consistent state nearest in the kinetic-energy norm
+//! ([`consistent_state`](crate::consistent_state)), which keeps the momenta (a capacitor's
+//! charge) that the constraint does not act on. That projection is set-up work and allocates;
+//! an input in a force or a potential restarts without allocating. A step that fails returns `fmi3Discard` and
 //! leaves the instance at the step's start; wrong calls return `fmi3Error`; both log why
 //! through the importer's callback. `fmi3GetFMUState`, `fmi3SetFMUState` and their
 //! serialisation are provided.
@@ -39,8 +48,10 @@ mod package;
 mod variables;
 
 pub use instance::{Failure, Instance, STEPS_PER_COMMUNICATION_STEP, Snapshot, Status};
-pub use package::{FmuError, build, write_fmu};
+pub use package::{FmuError, build, build_with_resources, write_fmu, write_fmu_with_resources};
 pub use variables::DescriptionError;
+
+use std::path::Path;
 
 use crate::nalgebra::DefaultAllocator;
 use crate::{InputsOutputs, LagrangeDirac, Parameters, Storage, VecQ};
@@ -131,6 +142,127 @@ where
     }
 }
 
+/// What an FMU's library simulates, and how each instance makes it: the most general way to
+/// export, which [`export_fmu!`](crate::export_fmu), [`write_fmu`] and [`Instance`] take.
+///
+/// Every [`Export`] model is one. A model made while the program runs, a
+/// [`Network`](crate::network::Network) built by code or read from a netlist, is exported
+/// through a type of one's own that implements this: its [`model`](Fmu::model) builds the
+/// network, from files in the FMU's `resources/` folder if it likes
+/// ([`write_fmu_with_resources`] packs them; the importer says where it unpacked them).
+///
+/// ```
+/// use std::path::Path;
+///
+/// use dirac::fmi::{Fmu, Start};
+/// use dirac::network::Network;
+/// use dirac::prelude::*;
+///
+/// /// The FMU of the netlist in its `resources/circuit.cir`.
+/// struct Netlist;
+///
+/// impl Fmu for Netlist {
+///     type Model = Network;
+///     const IDENTIFIER: &'static str = "netlist";
+///
+///     fn model(resources: Option<&Path>) -> Result<Start<Network>, dirac::fmi::BoxError> {
+///         let path = resources.ok_or("the FMU has no resources")?.join("circuit.cir");
+///         let circuit = dirac::spice::parse(&std::fs::read_to_string(path)?)?.circuit()?;
+///         let (q, v) = circuit.start_values();
+///         Ok(Start { model: circuit.network, q, v })
+///     }
+/// }
+///
+/// // In a `cdylib` crate: `dirac::export_fmu!(Netlist);`
+/// let resources = std::env::temp_dir().join("dirac-doc-netlist");
+/// std::fs::create_dir_all(&resources)?;
+/// std::fs::write(resources.join("circuit.cir"), "RC\nV1 in 0 DC 1\nR1 in out 1k\nC1 out 0 1u\n")?;
+/// let xml = dirac::fmi::describe::<Netlist>(Some(&resources), dirac::fmi::Version::Fmi3)?;
+/// let input = xml.lines().find(|l| l.contains(r#"name="v1.u""#)).expect("V1's voltage is a variable");
+/// assert!(input.contains(r#"causality="input""#) && input.contains(r#"unit="V""#));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub trait Fmu
+where
+    DefaultAllocator: Storage<Self::Model>,
+{
+    /// The model each instance simulates.
+    type Model: LagrangeDirac + InputsOutputs + Parameters;
+
+    /// The FMU's model identifier: its name, and its library's name inside the FMU. A C
+    /// identifier by FMI's rules.
+    const IDENTIFIER: &'static str;
+
+    /// What the model is, for the description's `description` attribute.
+    const ABOUT: &'static str = "";
+
+    /// The model an instance starts from, with its start positions and velocities: made for
+    /// each instance, and again when an instance is reset or goes back to a saved state.
+    /// `resources` is the folder where the importer unpacked the FMU's `resources/` (`None`
+    /// if it gives none); when an FMU is written, the folder its resources are packed from.
+    fn model(resources: Option<&Path>) -> Result<Start<Self::Model>, BoxError>;
+
+    /// The default experiment.
+    fn experiment() -> Experiment {
+        Experiment::default()
+    }
+}
+
+/// Why a model could not be made ([`Fmu::model`]): any error.
+pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
+
+/// A model and its start positions and velocities, which initialisation makes consistent with
+/// the constraints ([`consistent_state`](crate::consistent_state)).
+pub struct Start<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The model: its parameters and inputs are the variables' start values.
+    pub model: M,
+    /// Start positions.
+    pub q: VecQ<M>,
+    /// Start velocities.
+    pub v: VecQ<M>,
+}
+
+impl<M: Export> Fmu for M
+where
+    DefaultAllocator: Storage<M>,
+{
+    type Model = M;
+    const IDENTIFIER: &'static str = M::MODEL_IDENTIFIER;
+    const ABOUT: &'static str = M::DESCRIPTION;
+
+    fn model(_resources: Option<&Path>) -> Result<Start<M>, BoxError> {
+        Ok(start_of(M::instantiate()))
+    }
+
+    fn experiment() -> Experiment {
+        M::default_experiment()
+    }
+}
+
+/// An [`Export`] model with its [`start`](Export::start) values.
+fn start_of<M: Export>(model: M) -> Start<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let (mut q, mut v) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+    model.start(&mut q, &mut v);
+    Start { model, q, v }
+}
+
+/// The text of the `modelDescription.xml` of FMU `F` for an FMI version, its model made from
+/// `resources` ([`Fmu::model`]).
+pub fn describe<F: Fmu>(resources: Option<&Path>, version: Version) -> Result<String, FmuError>
+where
+    DefaultAllocator: Storage<F::Model>,
+{
+    let start = F::model(resources).map_err(|e| FmuError::Model(e.to_string()))?;
+    Ok(variables::description::<F>(&start, version).map(|(text, _)| text)?)
+}
+
 /// The text of the model's FMI 3.0 `modelDescription.xml`.
 pub fn model_description<M: Export>(model: &M) -> Result<String, DescriptionError>
 where
@@ -144,7 +276,7 @@ pub fn model_description_for<M: Export>(model: &M, version: Version) -> Result<S
 where
     DefaultAllocator: Storage<M>,
 {
-    variables::description(model, version).map(|(text, _)| text)
+    variables::description_of_model(model, version).map(|(text, _)| text)
 }
 
 /// The instantiation token (in FMI 2.0, the GUID) of model `M`'s FMU: what an importer passes
@@ -153,12 +285,12 @@ pub fn instantiation_token<M: Export>(version: Version) -> Result<String, Descri
 where
     DefaultAllocator: Storage<M>,
 {
-    variables::description(&M::instantiate(), version).map(|(_, token)| token)
+    variables::description::<M>(&start_of(M::instantiate()), version).map(|(_, token)| token)
 }
 
 /// The value reference of the variable named `name` in `model`'s FMU (`"time"`, `"left.k1"`,
 /// `"lambda(rod)"`), if it has one: for code that drives the FMU's C functions itself.
-pub fn value_reference<M: Export>(model: &M, name: &str) -> Option<u32>
+pub fn value_reference<M: LagrangeDirac>(model: &M, name: &str) -> Option<u32>
 where
     DefaultAllocator: Storage<M>,
 {

@@ -10,7 +10,7 @@ use crate::Storage;
 use crate::nalgebra::DefaultAllocator;
 
 use super::variables::{self, DescriptionError};
-use super::{Export, Version};
+use super::{Fmu, Version};
 
 /// Why an FMU could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -45,6 +45,9 @@ pub enum FmuError {
     /// FMI names no binary directory for this platform.
     #[error("FMI names no binary directory for {0}")]
     Platform(String),
+    /// The FMU's model could not be made ([`Fmu::model`]).
+    #[error("the FMU's model could not be made: {0}")]
+    Model(String),
 }
 
 /// The FMI version's name for this platform's binary directory, and its shared libraries'
@@ -84,14 +87,47 @@ fn platform(version: Version) -> Result<(String, &'static str), FmuError> {
     Ok((name, std::env::consts::DLL_EXTENSION))
 }
 
-/// Writes the FMU of model `M` to `out`: its `modelDescription.xml` for `version` and
-/// `library`, the shared library of a crate that invokes [`export_fmu!`](crate::export_fmu)
-/// for `M`, built for this platform (it implements both versions).
-pub fn write_fmu<M: Export>(library: &Path, out: &Path, version: Version) -> Result<(), FmuError>
+/// Writes FMU `F` to `out`: its `modelDescription.xml` for `version` and `library`, the shared
+/// library of a crate that invokes [`export_fmu!`](crate::export_fmu) for `F`, built for this
+/// platform (it implements both versions). Every [`Export`](super::Export) model is an FMU.
+pub fn write_fmu<F: Fmu>(library: &Path, out: &Path, version: Version) -> Result<(), FmuError>
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
-    let (description, _) = variables::description(&M::instantiate(), version)?;
+    write::<F>(library, None, out, version)
+}
+
+/// [`write_fmu`], with every file of the folder `resources` (and of its subfolders) packed in
+/// the FMU's `resources/`, where [`Fmu::model`] reads them: it is given this folder to describe
+/// the model here, and the importer's copy of it in each instance.
+pub fn write_fmu_with_resources<F: Fmu>(
+    library: &Path,
+    resources: &Path,
+    out: &Path,
+    version: Version,
+) -> Result<(), FmuError>
+where
+    DefaultAllocator: Storage<F::Model>,
+{
+    write::<F>(library, Some(resources), out, version)
+}
+
+fn write<F: Fmu>(
+    library: &Path,
+    resources: Option<&Path>,
+    out: &Path,
+    version: Version,
+) -> Result<(), FmuError>
+where
+    DefaultAllocator: Storage<F::Model>,
+{
+    let start = F::model(resources).map_err(|e| FmuError::Model(e.to_string()))?;
+    let (description, _) = variables::description::<F>(&start, version)?;
+    drop(start);
+    let files = match resources {
+        Some(dir) => resource_files(dir)?,
+        None => Vec::new(),
+    };
     let (platform, extension) = platform(version)?;
     let binary = std::fs::read(library).map_err(|source| FmuError::Io { path: library.into(), source })?;
     if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -104,22 +140,72 @@ where
     let options = SimpleFileOptions::default().compression_method(zip::CompressionMethod::Stored);
     zip.start_file("modelDescription.xml", options).map_err(zipped)?;
     zip.write_all(description.as_bytes()).map_err(io)?;
-    let name = format!("binaries/{platform}/{}.{extension}", M::MODEL_IDENTIFIER);
+    let name = format!("binaries/{platform}/{}.{extension}", F::IDENTIFIER);
     zip.start_file(name, options.unix_permissions(0o755)).map_err(zipped)?;
     zip.write_all(&binary).map_err(io)?;
+    for (name, path) in files {
+        let bytes = std::fs::read(&path).map_err(|source| FmuError::Io { path, source })?;
+        zip.start_file(format!("resources/{name}"), options).map_err(zipped)?;
+        zip.write_all(&bytes).map_err(io)?;
+    }
     zip.finish().map_err(zipped)?;
     Ok(())
 }
 
+/// Every file under `dir`, with its path relative to `dir` in `/`-separated form, sorted.
+fn resource_files(dir: &Path) -> Result<Vec<(String, PathBuf)>, FmuError> {
+    let mut files = Vec::new();
+    let mut folders = vec![(String::new(), dir.to_path_buf())];
+    while let Some((prefix, folder)) = folders.pop() {
+        let entries =
+            std::fs::read_dir(&folder).map_err(|source| FmuError::Io { path: folder.clone(), source })?;
+        for entry in entries {
+            let entry = entry.map_err(|source| FmuError::Io { path: folder.clone(), source })?;
+            let path = entry.path();
+            let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
+            let kind = entry.file_type().map_err(|source| FmuError::Io { path: path.clone(), source })?;
+            if kind.is_dir() {
+                folders.push((format!("{name}/"), path));
+            } else {
+                files.push((name, path));
+            }
+        }
+    }
+    files.sort();
+    Ok(files)
+}
+
 /// Runs `cargo build` with `args` (for example `["--release", "--lib"]` or
-/// `["--example", "fmu_paper_chain"]`), takes the shared library it builds, and writes the FMU
-/// of model `M` for `version` to `out` ([`write_fmu`]). Returns the library's path.
+/// `["--example", "fmu_paper_chain"]`), takes the shared library it builds, and writes FMU `F`
+/// for `version` to `out` ([`write_fmu`]). Returns the library's path.
 ///
 /// Called from a program that `cargo run` started, it runs the same cargo.
-pub fn build<M: Export>(args: &[&str], out: &Path, version: Version) -> Result<PathBuf, FmuError>
+pub fn build<F: Fmu>(args: &[&str], out: &Path, version: Version) -> Result<PathBuf, FmuError>
 where
-    DefaultAllocator: Storage<M>,
+    DefaultAllocator: Storage<F::Model>,
 {
+    let library = cargo_build(args)?;
+    write::<F>(&library, None, out, version)?;
+    Ok(library)
+}
+
+/// [`build`], with the files of `resources` packed as [`write_fmu_with_resources`] packs them.
+pub fn build_with_resources<F: Fmu>(
+    args: &[&str],
+    resources: &Path,
+    out: &Path,
+    version: Version,
+) -> Result<PathBuf, FmuError>
+where
+    DefaultAllocator: Storage<F::Model>,
+{
+    let library = cargo_build(args)?;
+    write::<F>(&library, Some(resources), out, version)?;
+    Ok(library)
+}
+
+/// Runs `cargo build` with `args`; the shared library it built.
+fn cargo_build(args: &[&str]) -> Result<PathBuf, FmuError> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let joined = args.join(" ");
     let failed = |reason: String| FmuError::Build { args: joined.clone(), reason };
@@ -134,9 +220,7 @@ where
         return Err(failed(format!("it exited with {}", output.status)));
     }
     let stdout = String::from_utf8_lossy(&output.stdout);
-    let library = shared_library(&stdout).ok_or_else(|| failed("it built no cdylib".to_string()))?;
-    write_fmu::<M>(&library, out, version)?;
-    Ok(library)
+    shared_library(&stdout).ok_or_else(|| failed("it built no cdylib".to_string()))
 }
 
 /// The last `cdylib` among cargo's JSON messages.

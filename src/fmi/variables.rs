@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use crate::nalgebra::DefaultAllocator;
 use crate::{LagrangeDirac, Storage, VecQ};
 
-use super::{Export, Version};
+use super::{Experiment, Export, Fmu, Start, Version};
 
 /// What a value reference refers to. The references are numbered in this order: time, then
 /// the parameters, inputs, outputs, positions, velocities and multipliers, each in the
@@ -196,14 +196,54 @@ pub enum DescriptionError {
 /// The text of `modelDescription.xml` without its instantiation token, and the token: a hash
 /// of the rest, so that a library and a description written from different versions of a model
 /// refuse each other.
-pub(crate) fn description<M: Export>(
+pub(crate) fn description<F: Fmu>(
+    start: &Start<F::Model>,
+    version: Version,
+) -> Result<(String, String), DescriptionError>
+where
+    DefaultAllocator: Storage<F::Model>,
+{
+    let header = Header { identifier: F::IDENTIFIER, about: F::ABOUT, experiment: F::experiment() };
+    described(&start.model, &start.q, &start.v, &header, version)
+}
+
+/// [`description`] of an [`Export`] model as it is, from its start values.
+pub(crate) fn description_of_model<M: Export>(
     model: &M,
     version: Version,
 ) -> Result<(String, String), DescriptionError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let body = body(model, version)?;
+    let sizes = model.sizes();
+    let (mut q, mut v): (VecQ<M>, VecQ<M>) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+    model.start(&mut q, &mut v);
+    let header = Header {
+        identifier: M::MODEL_IDENTIFIER,
+        about: M::DESCRIPTION,
+        experiment: M::default_experiment(),
+    };
+    described(model, &q, &v, &header, version)
+}
+
+/// What the description says of the FMU rather than of its model.
+struct Header {
+    identifier: &'static str,
+    about: &'static str,
+    experiment: Experiment,
+}
+
+fn described<M: LagrangeDirac + crate::InputsOutputs + crate::Parameters>(
+    model: &M,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    header: &Header,
+    version: Version,
+) -> Result<(String, String), DescriptionError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let body = body(model, q, v, header, version)?;
     let token = token(&body);
     let text = body.replacen("@TOKEN@", &token, 1);
     Ok((text, token))
@@ -273,7 +313,13 @@ impl Float64<'_> {
     }
 }
 
-fn body<M: Export>(model: &M, version: Version) -> Result<String, DescriptionError>
+fn body<M: LagrangeDirac + crate::InputsOutputs + crate::Parameters>(
+    model: &M,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    header: &Header,
+    version: Version,
+) -> Result<String, DescriptionError>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -288,9 +334,6 @@ where
     if u32::try_from(table.len()).is_err() {
         return Err(DescriptionError::TooManyVariables(table.len()));
     }
-    let sizes = model.sizes();
-    let (mut q, mut v): (VecQ<M>, VecQ<M>) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
-    model.start(&mut q, &mut v);
     let parameters = model.parameter_names();
     let inputs = model.input_names();
     let outputs = model.output_names();
@@ -298,10 +341,9 @@ where
     let velocities = model.velocity_names();
     let constraints = model.constraint_names();
 
-    let names = M::NAMES;
     let mut units: Vec<&str> = Vec::new();
     let mut unit = |name: &str| {
-        let unit = names.unit_of(name);
+        let unit = model.unit_of(name);
         if let Some(u) = unit
             && !units.contains(&u)
         {
@@ -337,7 +379,7 @@ where
             initial: None,
             start: Some(model.parameter_value(k)),
             unit: unit(&parameters[k]),
-            description: names.doc_of(&parameters[k]).unwrap_or("Parameter"),
+            description: model.doc_of(&parameters[k]).unwrap_or("Parameter"),
         })?;
     }
     for (k, name) in inputs.iter().enumerate() {
@@ -349,7 +391,7 @@ where
             initial: None,
             start: Some(model.input_value(k)),
             unit: unit(name),
-            description: names.doc_of(name).unwrap_or("Input, held over each communication step"),
+            description: model.doc_of(name).unwrap_or("Input, held over each communication step"),
         })?;
     }
     for (k, name) in outputs.iter().enumerate() {
@@ -401,9 +443,9 @@ where
         })?;
     }
 
-    let experiment = M::default_experiment();
-    let description = if M::DESCRIPTION.is_empty() { names.doc } else { M::DESCRIPTION };
-    let (identifier, tool) = (escape(M::MODEL_IDENTIFIER), env!("CARGO_PKG_VERSION"));
+    let experiment = header.experiment;
+    let description = if header.about.is_empty() { M::NAMES.doc } else { header.about };
+    let (identifier, tool) = (escape(header.identifier), env!("CARGO_PKG_VERSION"));
     let mut out = String::new();
     out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     match version {

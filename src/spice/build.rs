@@ -675,13 +675,20 @@ impl Circuit {
         self.simulate_observed(tol, |_, _| {})
     }
 
+    /// The positions (node fluxes) and velocities (node voltages) the netlist gives at `t = 0`
+    /// (zero unless `.ic` or `ic=` says otherwise), before they are made consistent with the
+    /// circuit's constraints ([`start`](Self::start) makes them so).
+    pub fn start_values(&self) -> (crate::nalgebra::DVector<f64>, crate::nalgebra::DVector<f64>) {
+        (
+            crate::nalgebra::DVector::from_column_slice(&self.q0),
+            crate::nalgebra::DVector::from_column_slice(&self.v0),
+        )
+    }
+
     /// The consistent state at `t = 0` the netlist gives (zero unless `.ic` or `ic=` says
     /// otherwise): to integrate the network with an integrator and options of one's own.
     pub fn start(&self) -> Result<crate::State<Network>, SpiceError> {
-        let (q, v) = (
-            crate::nalgebra::DVector::from_column_slice(&self.q0),
-            crate::nalgebra::DVector::from_column_slice(&self.v0),
-        );
+        let (q, v) = self.start_values();
         consistent_state(&self.network, 0.0, &q, &v, Consistency::default()).map_err(|e| SpiceError {
             line: 1,
             column: 1,

@@ -4,8 +4,8 @@
 //! tolerance. Bad use through FMI's C functions (`tests/fmi/misuse.py`, through FMPy's
 //! bindings) must return `fmi3Error` or `fmi3Discard` with a logged message.
 //!
-//! The FMUs' libraries are the `cdylib` examples `fmu_paper_chain` and `fmu_driven_pendulum`,
-//! which `cargo test` builds with the other examples (`cargo build --examples` builds them
+//! The FMUs' libraries are the `cdylib` examples `fmu_paper_chain`, `fmu_driven_pendulum` and
+//! `fmu_netlist` (a run-time network read from the FMU's resources), which `cargo test` builds with the other examples (`cargo build --examples` builds them
 //! for a run of this test alone).
 
 use std::path::{Path, PathBuf};
@@ -17,6 +17,8 @@ use dirac::prelude::*;
 
 #[path = "../../examples/fmu/driven_pendulum.rs"]
 mod driven_pendulum;
+#[path = "../../examples/fmu/netlist.rs"]
+mod netlist;
 #[path = "../../examples/fmu/paper_chain.rs"]
 mod paper_chain;
 
@@ -159,6 +161,7 @@ where
 /// reference: the FMU must be as accurate as dirac itself, within a factor of 10. Returns the
 /// largest difference between FMPy's results and dirac's own.
 fn assert_as_accurate_as_dirac<M: LagrangeDirac, S>(
+    model: &M,
     csv: &Path,
     ours: &Solution<M, S>,
     reference: &Solution<M, S>,
@@ -168,7 +171,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     let (header, rows) = read_csv(csv);
-    for name in M::NAMES.coordinate_names().iter().chain(&M::NAMES.velocity_names()) {
+    for name in model.coordinate_names().iter().chain(&model.velocity_names()) {
         assert!(header.contains(name), "FMPy recorded no {name}: {header:?}");
     }
     let fmu = largest_difference(&header, &|j| rows.iter().map(|r| r[j]).collect(), reference);
@@ -229,7 +232,7 @@ fn paper_chain_through_fmpy(version: Version) {
             .expect("integrates")
     };
     let (ours, reference) = (solve(tol), solve(1e-3 * tol));
-    assert_as_accurate_as_dirac(&csv, &ours, &reference, tol);
+    assert_as_accurate_as_dirac(&chain, &csv, &ours, &reference, tol);
     // The start values took: x1 starts at 0.2, and k3 = 9 changes the motion (against the
     // default k3 = 6, run by dirac here).
     let (header, rows) = read_csv(&csv);
@@ -282,10 +285,171 @@ fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
             .expect("integrates")
     };
     let (ours, reference) = (solve(tol), solve(1e-3 * tol));
-    let difference = assert_as_accurate_as_dirac(&csv, &ours, &reference, tol);
+    let difference =
+        assert_as_accurate_as_dirac(&DrivenPendulum::instantiate(), &csv, &ours, &reference, tol);
     // The FMU restarts its integrator at each communication point as `solve_sampled` does,
     // so the two runs take the same steps.
     assert!(difference < 1e-12, "FMPy's result differs from dirac's by {difference:e}");
+}
+
+/// The folder packed as the netlist FMU's resources: `circuit.cir`, an RLC filter in
+/// subcircuits with coupled inductors, diodes and controlled sources, whose source `V1` is the
+/// FMU's input.
+fn netlist_resources() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("fmi").join("netlist")
+}
+
+#[test]
+fn a_netlist_fmu_reads_its_circuit_from_its_resources_and_fmpy_simulates_it_as_dirac_does() {
+    netlist_through_fmpy(Version::Fmi3);
+}
+
+#[test]
+fn a_netlist_fmu_as_fmi2_finds_its_resources_from_their_uri() {
+    netlist_through_fmpy(Version::Fmi2);
+}
+
+/// One library for every netlist: the FMU carries the netlist in `resources/`, FMPy unpacks it
+/// and instantiates the FMU (FMI 3.0 passes the folder's path, FMI 2.0 its `file:` URI), and
+/// the library builds the circuit's network from it. FMPy drives the current source's input
+/// with a sine held at the communication points; dirac runs the same network with the same
+/// held input (`solve_sampled`), so the two take the same steps.
+fn netlist_through_fmpy(version: Version) {
+    use dirac::fmi::Fmu;
+    use netlist::Netlist;
+
+    let resources = netlist_resources();
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join(format!("netlist-{version:?}.fmu"));
+    dirac::fmi::write_fmu_with_resources::<Netlist>(
+        &example_library("fmu_netlist"),
+        &resources,
+        &out,
+        version,
+    )
+    .expect("the FMU is written");
+    let csv = out.with_extension("csv");
+    let (stop, step, tol, amplitude, frequency) = (10.0, 0.01, 1e-10, 2.0, 3.0);
+    let report = script(
+        "simulate.py",
+        &[&*out.to_string_lossy(), &*csv.to_string_lossy(), "10", "0.01", "1e-10", "input=i1.i,2,3"],
+    );
+    assert!(report.contains("1001 samples"), "{report}");
+
+    let start = Netlist::model(Some(&resources)).expect("the netlist reads");
+    let mut network = start.model;
+    let input = network.input_names().iter().position(|n| n == "i1.i").expect("I1's input");
+    // FMPy sets the input to its value at t = 0 before the initialisation, which makes the
+    // state consistent with it (the voltages of nodes without capacitors follow the source).
+    network.set_input_value(input, 0.0);
+    let state =
+        consistent_state(&network, 0.0, &start.q, &start.v, Consistency::default()).expect("consistent");
+    let names = (network.coordinate_names(), network.velocity_names());
+    let mut solve = |tol: f64| {
+        Radau::new(&mut network, RadauOptions::tolerances(tol, tol))
+            .expect("valid")
+            .solve_sampled(0.0, &state, stop, step, &Sampling::Every(step), |t, _, model| {
+                model.set_input_value(input, amplitude * (frequency * t).sin());
+            })
+            .expect("integrates")
+    };
+    let (ours, reference) = (solve(tol), solve(1e-3 * tol));
+    let difference = assert_as_accurate_as_dirac(&network, &csv, &ours, &reference, tol);
+    assert!(difference < 1e-12, "FMPy's result differs from dirac's by {difference:e}");
+    // The run is the netlist's: every node's flux and voltage is recorded, and the input
+    // moves the circuit (the current source's voltage swings by more than a volt).
+    let (header, rows) = read_csv(&csv);
+    for name in names.0.iter().chain(&names.1) {
+        assert!(header.contains(name), "FMPy recorded no {name}");
+    }
+    let v = header.iter().position(|n| n == "i1.v").expect("I1's voltage is recorded");
+    let (low, high) =
+        rows.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), r| (l.min(r[v]), h.max(r[v])));
+    assert!(high - low > 1.0, "I1's voltage stays within [{low}, {high}]");
+}
+
+/// The description of a run-time network carries its parts' units and documentation, and a
+/// netlist FMU without its resources, or whose netlist drives a source with a waveform the
+/// importer could not see, is refused with the reason.
+#[test]
+fn a_netlist_fmu_is_described_with_units_and_refused_without_its_netlist() {
+    use dirac::fmi::{Fmu, Instance};
+    use netlist::Netlist;
+
+    let xml = dirac::fmi::describe::<Netlist>(Some(&netlist_resources()), Version::Fmi3).expect("described");
+    for element in [
+        r#"<fmiModelDescription fmiVersion="3.0" modelName="netlist""#,
+        // The source's unit and doc comment, from its part's type.
+        r#"causality="input" variability="continuous" description="The source&apos;s voltage `vp − vn`." start="1.0" unit="V"/>"#,
+        r#"<Float64 name="i1.i" valueReference="20" causality="input""#,
+    ] {
+        assert!(xml.contains(element), "{element} is missing from\n{xml}");
+    }
+    assert!(xml.contains(r#"<Float64 name="v1.u" valueReference="19""#), "{xml}");
+
+    let failure = Instance::<Netlist>::instantiate(None).err().expect("no netlist to read");
+    assert!(failure.message.contains("no resources folder"), "{}", failure.message);
+    let driven = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join("driven-netlist");
+    std::fs::create_dir_all(&driven).expect("a folder");
+    std::fs::write(driven.join(netlist::FILE), "pulse\nV1 in 0 PULSE(0 1 1m 0.1m 0.1m 2m 5m)\nR1 in 0 1k\n")
+        .expect("written");
+    let message =
+        Netlist::model(Some(&driven)).err().expect("a waveform the FMU would not follow").to_string();
+    assert!(message.contains("follows a waveform"), "{message}");
+    let out = driven.with_extension("fmu");
+    let refused =
+        dirac::fmi::write_fmu_with_resources::<Netlist>(Path::new("unused.so"), &driven, &out, Version::Fmi3);
+    assert!(refused.expect_err("not written").to_string().contains("follows a waveform"));
+}
+
+/// A source's voltage is an input in a constraint: when the importer changes it, the state
+/// jumps as the impulse through the source takes it. Here a capacitive divider, `V1` across
+/// `C1` (1 F) in series with `C2` (3 F) and `R1` (2 Ω) in parallel: a step `Δu` of the source
+/// moves node `b` by `C1 Δu / (C1 + C2)` (the charge on `b` is kept), which then decays with
+/// the time constant `R1 (C1 + C2)` = 8 s. The reference is that solution, by hand.
+#[test]
+fn a_source_voltage_that_jumps_at_a_communication_point_moves_the_state_by_its_impulse() {
+    use dirac::fmi::{Fmu, Instance};
+    use netlist::Netlist;
+
+    let folder = Path::new(env!("CARGO_TARGET_TMPDIR")).join("fmi").join("divider");
+    std::fs::create_dir_all(&folder).expect("a folder");
+    std::fs::write(
+        folder.join(netlist::FILE),
+        "a capacitive divider\nV1 a 0 DC 0\nC1 a b 1\nC2 b 0 3\nR1 b 0 2\n",
+    )
+    .expect("written");
+    let mut fmu = Instance::<Netlist>::instantiate(Some(&folder)).expect("instantiated");
+    let model = Netlist::model(Some(&folder)).expect("the netlist reads").model;
+    let vr = |name: &str| dirac::fmi::value_reference(&model, name).expect("a variable");
+    let (u, vb, vc1) = (vr("v1.u"), vr("c2.v"), vr("c1.v"));
+    fmu.enter_initialization(Some(1e-10), 0.0, None).expect("initialisation");
+    fmu.exit_initialization().expect("initialised");
+    let (c1, c2, r) = (1.0, 3.0, 2.0);
+    let tau = r * (c1 + c2);
+    let (mut expected, mut level) = (0.0, 0.0);
+    let mut worst = 0.0f64;
+    for k in 0..200 {
+        let t = 0.01 * k as f64;
+        // Steps of the source: 1 V at t = 0, 3 V at t = 1.
+        let step = match k {
+            0 => Some(1.0),
+            100 => Some(3.0),
+            _ => None,
+        };
+        if let Some(new) = step {
+            fmu.set(&[u], &[new]).expect("set");
+            expected += c1 / (c1 + c2) * (new - level);
+            level = new;
+        }
+        fmu.do_step(t, 0.01).unwrap_or_else(|f| panic!("step at t = {t}: {}", f.message));
+        expected *= (-0.01 / tau).exp();
+        let mut read = [0.0; 2];
+        fmu.get(&[vb, vc1], &mut read).expect("read");
+        // Node b, and C1's voltage: the source's level less node b's.
+        worst = worst.max((read[0] - expected).abs()).max((read[1] - (level - expected)).abs());
+    }
+    eprintln!("v(b) and C1's voltage are off the divider's solution by {worst:.2e}");
+    assert!(worst < 1e-8, "v(b) is off the divider's solution by {worst:e}");
 }
 
 #[test]
@@ -473,6 +637,7 @@ fn a_panic_does_not_cross_into_the_importer() {
         dirac::fmi::abi::instantiate_co_simulation::<ForcedSpring>(
             name.as_ptr(),
             token.as_ptr(),
+            std::ptr::null(),
             false,
             std::ptr::null_mut(),
             Some(record),
