@@ -102,7 +102,7 @@ impl Graph {
     }
 
     /// `f'(x)` for an elementary function.
-    fn diff_call(&mut self, f: Func, x: Id) -> Id {
+    pub(super) fn diff_call(&mut self, f: Func, x: Id) -> Id {
         match f {
             Func::Sqrt => {
                 let r = self.call(Func::Sqrt, x);

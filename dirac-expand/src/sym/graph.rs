@@ -168,6 +168,11 @@ impl SymSet {
         }
     }
 
+    /// Whether the two sets share a symbol.
+    pub fn intersects(&self, other: &SymSet) -> bool {
+        self.0.iter().zip(&other.0).any(|(a, b)| a & b != 0)
+    }
+
     /// The symbols in increasing order.
     pub fn iter(&self) -> impl Iterator<Item = u32> + '_ {
         (0..self.0.len() as u32 * 64).filter(|s| self.contains(*s))

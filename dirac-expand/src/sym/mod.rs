@@ -8,6 +8,7 @@ pub mod graph;
 pub mod pretty;
 #[cfg(test)]
 mod proptests;
+mod reverse;
 #[cfg(test)]
 mod sexpr;
 

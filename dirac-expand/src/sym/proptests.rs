@@ -192,3 +192,47 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The vector-Jacobian product of two expressions by reverse accumulation,
+    /// `u ∂f/∂s + w ∂g/∂s` for `s` in `x, y` at once, equals the same sum of the hyper-dual
+    /// oracle's first derivatives, the weights `u` and `w` symbols of their own.
+    #[test]
+    fn reverse_accumulation_matches_hyper_dual_numbers(
+        f in tree(),
+        g in tree(),
+        point in prop::array::uniform3(-1.0..1.0f64),
+        weights in prop::array::uniform2(-2.0..2.0f64),
+    ) {
+        let x = HyperDual64::from_re(point[0]).derivative1();
+        let y = HyperDual64::from_re(point[1]).derivative2();
+        let z = HyperDual64::from_re(point[2]);
+        let on_cut = Cell::new(false);
+        let (of, og) = (eval(&f, &[x, y, z], &on_cut), eval(&g, &[x, y, z], &on_cut));
+        let oracle = [
+            weights[0] * of.eps1 + weights[1] * og.eps1,
+            weights[0] * of.eps2 + weights[1] * og.eps2,
+        ];
+        let parts = [of.re, of.eps1, of.eps2, og.re, og.eps1, og.eps2];
+        prop_assume!(!on_cut.get() && parts.iter().all(|v| v.is_finite() && v.abs() < 1e8));
+
+        let mut graph = Graph::new();
+        let (ef, eg) = (build(&mut graph, &f), build(&mut graph, &g));
+        let (u, w) = (graph.symbol("u"), graph.symbol("w"));
+        let (sx, sy) = (graph.symbol("x"), graph.symbol("y"));
+        let products = graph.vjp(&[(ef, u), (eg, w)], &[sx, sy]);
+        let value = |s: u32| match graph.sym_name(s) {
+            "x" => point[0],
+            "y" => point[1],
+            "u" => weights[0],
+            "w" => weights[1],
+            _ => point[2],
+        };
+        for (what, (&p, b)) in ["x", "y"].iter().zip(products.iter().zip(oracle)) {
+            let a = graph.eval(p, &value);
+            prop_assert!(close(a, b), "d/d{what}: reverse {a} vs oracle {b} for {} and {}", graph.sexpr(ef), graph.sexpr(eg));
+        }
+    }
+}
