@@ -8,7 +8,7 @@
 
 use crate::model::SymModel;
 use crate::sym::{Graph, Id};
-use crate::symbols::Sym;
+use crate::symbols::{Sym, Weighted};
 
 /// A matrix of expressions, row by row.
 pub type Matrix = Vec<Vec<Id>>;
@@ -85,6 +85,12 @@ pub struct Blocks {
     pub events: Vec<Id>,
     /// The derivatives with respect to each parameter (`f64` field), in field order.
     pub dtheta: Vec<ParameterBlocks>,
+    /// `w_ṗᵀ ∂ṗ/∂θ_k + w_pᵀ ∂(∂L/∂v)/∂θ_k + w_cᵀ ∂(A v + b)/∂θ_k` for every parameter `k`, the
+    /// weights being [`Sym::Weight`] symbols: the transposed parameter blocks, by reverse
+    /// accumulation (one sweep for all parameters, no `∂/∂θ_k` formed).
+    pub vjp_dtheta: Vec<Id>,
+    /// `w_φᵀ ∂φ/∂θ_k` for every parameter `k`.
+    pub holonomic_vjp_dtheta: Vec<Id>,
 }
 
 /// The derivatives of the residual blocks and holonomic constraints with respect to one
@@ -203,6 +209,27 @@ impl Blocks {
                 }
             })
             .collect();
+        let (vjp_dtheta, holonomic_vjp_dtheta) = if thetas.is_empty() {
+            (Vec::new(), Vec::new())
+        } else {
+            let mut weighted = Vec::new();
+            for (kind, block) in [
+                (Weighted::MomentumRate, &momentum_rate),
+                (Weighted::DlDv, &dl_dv),
+                (Weighted::ConstraintVelocity, &a_v),
+            ] {
+                for (i, &e) in block.iter().enumerate() {
+                    weighted.push((e, m.symbols.declare(&mut m.graph, Sym::Weight(kind, i))));
+                }
+            }
+            let residual = m.graph.vjp(&weighted, &thetas);
+            let weighted: Vec<(Id, Id)> = phi
+                .iter()
+                .enumerate()
+                .map(|(i, &e)| (e, m.symbols.declare(&mut m.graph, Sym::Weight(Weighted::Holonomic, i))))
+                .collect();
+            (residual, m.graph.vjp(&weighted, &thetas))
+        };
         Blocks {
             lagrangian,
             dl_dq,
@@ -241,6 +268,8 @@ impl Blocks {
             restitution,
             events,
             dtheta,
+            vjp_dtheta,
+            holonomic_vjp_dtheta,
         }
     }
 }

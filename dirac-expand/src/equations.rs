@@ -83,6 +83,7 @@ fn display_name(model: &SymModel, sym: u32, style: Style) -> String {
         Sym::Constant(k) => model.symbols.constant_at(k).0.to_owned(),
         Sym::Define(k) => model.defines[k].0.clone(),
         Sym::Member(_) => unreachable!("a primitive model has no subsystem members"),
+        Sym::Weight(..) => unreachable!("weights appear only in the transposed parameter blocks"),
     };
     match (style, kind) {
         (Style::Text, _) => text,

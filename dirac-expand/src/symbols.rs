@@ -32,6 +32,21 @@ pub enum Sym {
     /// An `f64` constant of the surrounding Rust code ([`Symbols::constant`] `k`), read where
     /// the generated code runs.
     Constant(usize),
+    /// Entry `i` of the weight that a vector-Jacobian product applies to a block.
+    Weight(Weighted, usize),
+}
+
+/// The block a [`Sym::Weight`] weighs.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Weighted {
+    /// The momentum rate `ṗ`.
+    MomentumRate,
+    /// `∂L/∂v`.
+    DlDv,
+    /// `A v + b`.
+    ConstraintVelocity,
+    /// The holonomic constraints `φ`.
+    Holonomic,
 }
 
 impl Sym {

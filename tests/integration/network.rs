@@ -122,6 +122,16 @@ fn rlc_network() -> Result<Network, NetworkError> {
     b.finish()
 }
 
+/// The circuit's transposed parameter blocks, derived and as a network, equal its forward
+/// blocks transposed (each node joins two parts' ports).
+#[test]
+fn transposed_parameter_blocks_of_the_circuit_match_the_forward_blocks() -> Result<(), NetworkError> {
+    let (source, r, l, c) = parts();
+    crate::sensitivities::check_transposed_blocks(&Rlc { source, r, l, c, ground: Gnd {} }, 32);
+    crate::sensitivities::check_transposed_blocks(&rlc_network()?, 32);
+    Ok(())
+}
+
 /// Asserts that the largest difference of positions and velocities between two runs sampled
 /// alike, relative to each value where it exceeds 1 (the node fluxes grow with time), is
 /// below `bound`.

@@ -15,11 +15,13 @@ use crate::zoo::*;
 /// Every parameter's generated `∂(residual blocks)/∂θ` and `∂φ/∂θ` equal central differences
 /// in the parameter at random states, to 1e-7 relative to the larger of the entry and 1; and
 /// all parameters' blocks evaluated together (`residual_blocks_dtheta_all`, one schedule for
-/// all of them in a primitive model) equal each evaluated alone, to rounding.
+/// all of them in a primitive model) equal each evaluated alone, to rounding; and the
+/// transposed blocks equal them transposed ([`check_transposed_blocks`]).
 pub(crate) fn check_parameter_derivatives<M: Parameters + Clone>(model: &M, seed: u64, trials: usize)
 where
     DefaultAllocator: Storage<M>,
 {
+    check_transposed_blocks(model, 4 * trials as u32);
     let mut rng = Rng::new(seed);
     let sizes = model.sizes();
     let names = model.parameter_names();
@@ -88,6 +90,69 @@ where
     }
 }
 
+/// The transposed parameter blocks equal the forward blocks transposed. At states, times and
+/// weights that proptest draws (and shrinks on failure), `residual_blocks_vjp_dtheta(w)[k]`
+/// equals `wᵀ residual_blocks_dtheta(k)` and `holonomic_vjp_dtheta(w_φ)[k]` equals
+/// `w_φᵀ holonomic_dtheta(k)` for every parameter `k`, to 1e-13 of the sum of the magnitudes
+/// of the products summed (the two orders of summation round differently). The forward
+/// blocks are checked against central differences and dual numbers above.
+pub(crate) fn check_transposed_blocks<M: Parameters>(model: &M, cases: u32)
+where
+    DefaultAllocator: Storage<M>,
+{
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, TestRunner};
+    let sizes = model.sizes();
+    let (ny, nw, nh, count) = (sizes.ny(), 2 * sizes.nq + sizes.nc, sizes.nh, model.parameter_count());
+    let values = |len: usize| proptest::collection::vec(-2.0..2.0f64, len);
+    let strategy = (0.0..2.0f64, values(ny), values(nw), values(nh));
+    let mut runner = TestRunner::new(Config { cases, failure_persistence: None, ..Config::default() });
+    runner
+        .run(&strategy, |(t, y, w, w_phi)| {
+            let mut flat = sizes.zeros_y::<M>();
+            flat.iter_mut().zip(&y).for_each(|(x, &v)| *x = v);
+            let s = State::<M>::from_y(sizes, &flat);
+            let mut weights = ResidualBlocks::<M>::with_sizes(&sizes);
+            let n = sizes.nq;
+            weights.momentum_rate.iter_mut().zip(&w[..n]).for_each(|(x, &v)| *x = v);
+            weights.dl_dv.iter_mut().zip(&w[n..2 * n]).for_each(|(x, &v)| *x = v);
+            weights.constraint_velocity.iter_mut().zip(&w[2 * n..]).for_each(|(x, &v)| *x = v);
+            let mut phi_weights = sizes.zeros_h::<M>();
+            phi_weights.iter_mut().zip(&w_phi).for_each(|(x, &v)| *x = v);
+            let mut transposed = vec![0.0; count];
+            model.residual_blocks_vjp_dtheta(t, &s.q, &s.v, &s.lambda, &weights, &mut transposed);
+            let mut holonomic = vec![0.0; count];
+            model.holonomic_vjp_dtheta(t, &s.q, &phi_weights, &mut holonomic);
+            let mut each = ResidualBlocks::<M>::with_sizes(&sizes);
+            let mut each_phi = sizes.zeros_h::<M>();
+            let names = model.parameter_names();
+            for k in 0..count {
+                model.residual_blocks_dtheta(k, t, &s.q, &s.v, &s.lambda, &mut each);
+                let want = weights.dot(&each);
+                let scale = weights.momentum_rate.abs().dot(&each.momentum_rate.abs())
+                    + weights.dl_dv.abs().dot(&each.dl_dv.abs())
+                    + weights.constraint_velocity.abs().dot(&each.constraint_velocity.abs());
+                prop_assert!(
+                    (transposed[k] - want).abs() <= 1e-13 * scale.max(1e-300),
+                    "wᵀ ∂(blocks)/∂{}: transposed {}, forward {want}",
+                    names[k],
+                    transposed[k]
+                );
+                model.holonomic_dtheta(k, t, &s.q, &mut each_phi);
+                let want = phi_weights.dot(&each_phi);
+                let scale = phi_weights.abs().dot(&each_phi.abs());
+                prop_assert!(
+                    (holonomic[k] - want).abs() <= 1e-13 * scale.max(1e-300),
+                    "w_φᵀ ∂φ/∂{}: transposed {}, forward {want}",
+                    names[k],
+                    holonomic[k]
+                );
+            }
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
 #[test]
 fn parameter_derivatives_match_central_differences() {
     check_parameter_derivatives(&Pendulum { m: 1.3, g: 9.81, l: 0.7 }, 1, 10);
@@ -112,6 +177,30 @@ fn interconnected_parameter_derivatives_match_central_differences() {
     let coupled =
         CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
     check_parameter_derivatives(&coupled, 13, 10);
+}
+
+/// Arrays of subsystems and run-time networks sum their parts' transposed blocks: checked
+/// against the forward blocks on a derived ladder with cells of different values, the same
+/// ladder as a network (joined ports, whose weights each part reads), and a network holding a
+/// pendulum, whose length enters its holonomic row.
+#[test]
+fn transposed_blocks_of_arrays_and_networks_match_the_forward_blocks() {
+    let mut ladder = unit_ladder(5);
+    for (j, cell) in ladder.cells.iter_mut().enumerate() {
+        (cell.l, cell.c) = (1.0 + 0.1 * j as f64, 0.5 + 0.2 * j as f64);
+    }
+    check_transposed_blocks(&ladder, 32);
+    let mut network = network_ladder(5);
+    for k in 0..network.parameter_count() {
+        network.set_parameter_value(k, 0.7 + 0.1 * k as f64);
+    }
+    check_transposed_blocks(&network, 32);
+    let mut b = dirac::network::Network::builder();
+    b.add("ground", Ground {}).expect("a new name");
+    b.add("pendulum", Pendulum { m: 1.3, g: 9.81, l: 0.7 }).expect("a new name");
+    b.add("cell", Cell { l: 0.4, c: 2.0 }).expect("a new name");
+    b.connect("ground.g", "cell.a").expect("existing ports");
+    check_transposed_blocks(&b.finish().expect("a network"), 32);
 }
 
 /// The pendulum's and the rolling disk's residual blocks written by hand in dual numbers, one

@@ -21,7 +21,7 @@ use crate::blocks::Blocks;
 use crate::model::SymModel;
 use crate::sym::emit::{Assign, emit, op_count};
 use crate::sym::{Graph, Id};
-use crate::symbols::Sym;
+use crate::symbols::{Sym, Weighted};
 
 /// How many arithmetic operations the emitted kernels perform per call.
 pub struct OpCounts {
@@ -210,6 +210,15 @@ impl Emitter<'_> {
                 let j = index(j);
                 quote! { lambda[#j] }
             }
+            Sym::Weight(block, i) => {
+                let i = index(i);
+                match block {
+                    Weighted::MomentumRate => quote! { w.momentum_rate[#i] },
+                    Weighted::DlDv => quote! { w.dl_dv[#i] },
+                    Weighted::ConstraintVelocity => quote! { w.constraint_velocity[#i] },
+                    Weighted::Holonomic => quote! { w[#i] },
+                }
+            }
             kind => unreachable!("{kind:?} is read only from the flat state or not at all"),
         }
     }
@@ -226,6 +235,8 @@ impl Emitter<'_> {
                 (Arg::Q, Sym::Coordinate(_))
                 | (Arg::V, Sym::Velocity(_))
                 | (Arg::Lambda, Sym::Multiplier(_)) => true,
+                (Arg::WeightBlocks, Sym::Weight(block, _)) => block != Weighted::Holonomic,
+                (Arg::WeightHolonomic, Sym::Weight(block, _)) => block == Weighted::Holonomic,
                 (Arg::Y, k) => {
                     matches!(k, Sym::Coordinate(_) | Sym::Velocity(_) | Sym::Momentum(_) | Sym::Multiplier(_))
                 }

@@ -2,13 +2,15 @@
 //! and the derivatives of the residual blocks and holonomic constraints with respect to it,
 //! one straight-line schedule per parameter (its subexpressions shared) behind a `match` on
 //! the parameter's index; and the residual blocks' derivatives with respect to all of them in
-//! one schedule, the subexpressions common to all parameters evaluated once.
+//! one schedule, the subexpressions common to all parameters evaluated once; and the transposed
+//! blocks, a weighted sum of those derivatives for every parameter, by reverse accumulation.
 
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 use super::signatures::{
-    Arg, HOLONOMIC_DTHETA, RESIDUAL_BLOCKS_DTHETA, RESIDUAL_BLOCKS_DTHETA_ALL, Signature,
+    Arg, HOLONOMIC_DTHETA, HOLONOMIC_VJP_DTHETA, RESIDUAL_BLOCKS_DTHETA, RESIDUAL_BLOCKS_DTHETA_ALL,
+    RESIDUAL_BLOCKS_VJP_DTHETA, Signature,
 };
 use super::{Emitter, vector};
 use crate::blocks::{Blocks, ParameterBlocks};
@@ -31,6 +33,13 @@ impl Emitter<'_> {
         });
         let holonomic = self.by_parameter(&HOLONOMIC_DTHETA, b, &|d| vector(&quote! { out }, &d.phi));
         let all = self.all_parameters(b);
+        // The transposed blocks, every parameter in one reverse sweep (the trait's loops over
+        // the blocks above serve a model without parameters).
+        let transposed = (!b.dtheta.is_empty()).then(|| {
+            let residual = self.sized(&RESIDUAL_BLOCKS_VJP_DTHETA, &b.vjp_dtheta);
+            let holonomic = self.sized(&HOLONOMIC_VJP_DTHETA, &b.holonomic_vjp_dtheta);
+            quote! { #residual #holonomic }
+        });
         quote! {
             fn parameter_value(&self, k: ::core::primitive::usize) -> ::core::primitive::f64 {
                 match k {
@@ -47,6 +56,7 @@ impl Emitter<'_> {
             #residual
             #holonomic
             #all
+            #transposed
         }
     }
 

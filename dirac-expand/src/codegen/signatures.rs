@@ -78,6 +78,11 @@ pub enum Arg {
     Y,
     /// The index `k` of a parameter.
     K,
+    /// The weights of the residual blocks in a vector-Jacobian product,
+    /// `&ResidualBlocks<Self>`.
+    WeightBlocks,
+    /// The weights of the holonomic constraints in a vector-Jacobian product, `&VecH<Self>`.
+    WeightHolonomic,
 }
 
 /// What a method returns (a scalar) or writes into its `out` argument.
@@ -111,7 +116,7 @@ const fn method(name: &'static str, args: &'static [Arg], out: Out) -> Signature
     Signature { name, args, out }
 }
 
-use Arg::{K, Lambda, Q, T, V, Y};
+use Arg::{K, Lambda, Q, T, V, WeightBlocks, WeightHolonomic, Y};
 
 pub const LAGRANGIAN: Signature = method("lagrangian", &[T, Q, V], Out::Scalar);
 pub const DL_DQ: Signature = method("dl_dq", &[T, Q, V], Out::VecQ);
@@ -167,6 +172,13 @@ pub const HOLONOMIC_DTHETA: Signature = method("holonomic_dtheta", &[K, T, Q], O
 pub const RESIDUAL_BLOCKS_DTHETA_ALL: Signature =
     method("residual_blocks_dtheta_all", &[T, Q, V, Lambda], Out::ResidualBlocksEach);
 
+/// The transposed parameter blocks, every parameter at once; emitted for primitive models with
+/// parameters (the trait provides them from the blocks above for the others).
+pub const RESIDUAL_BLOCKS_VJP_DTHETA: Signature =
+    method("residual_blocks_vjp_dtheta", &[T, Q, V, Lambda, WeightBlocks], Out::Values);
+pub const HOLONOMIC_VJP_DTHETA: Signature =
+    method("holonomic_vjp_dtheta", &[T, Q, WeightHolonomic], Out::Values);
+
 /// The methods every model must implement, in the order they are emitted.
 pub const REQUIRED: [Signature; 19] = [
     LAGRANGIAN,
@@ -201,6 +213,8 @@ impl Arg {
             Arg::Lambda => ("lambda", quote! { &#p::VecC<Self> }),
             Arg::Y => ("y", quote! { &#p::VecY<Self> }),
             Arg::K => ("k", quote! { ::core::primitive::usize }),
+            Arg::WeightBlocks => ("w", quote! { &#p::ResidualBlocks<Self> }),
+            Arg::WeightHolonomic => ("w", quote! { &#p::VecH<Self> }),
         }
     }
 }

@@ -171,6 +171,9 @@ fn subsystem_part(sig: &Signature, field: &syn::Ident, ty: &syn::Type, i: usize)
             Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &#slot) },
             Arg::Y => unreachable!("composites assemble their flat methods from the blocks"),
             Arg::K => quote! { k },
+            Arg::WeightBlocks | Arg::WeightHolonomic => {
+                unreachable!("composites write their transposed parameter blocks by hand")
+            }
         })
         .collect();
     if sig.out == Out::Scalar {

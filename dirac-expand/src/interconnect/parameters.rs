@@ -103,6 +103,67 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
             }
         }
     });
+    // The transposed blocks: each subsystem's on its part of the arguments and weights, into
+    // its range of `out`; the composite's own parameters one at a time.
+    let transposed = |holonomic: bool| -> Vec<TokenStream> {
+        composite
+            .subsystems
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let (start, ty, field) = (parameter_offset(composite, i), &s.ty, &s.ident);
+                let slot = format_ident!("__SLOT{}", i);
+                let call = if holonomic {
+                    quote! {
+                        <#ty as #p::Parameters>::holonomic_vjp_dtheta(
+                            &self.#field,
+                            t,
+                            &#p::gather_q::<#ty, Self>(q, &#slot),
+                            &#p::gather_h::<#ty, Self>(w, &#slot),
+                            &mut out[start..start + COUNT],
+                        );
+                    }
+                } else {
+                    quote! {
+                        <#ty as #p::Parameters>::residual_blocks_vjp_dtheta(
+                            &self.#field,
+                            t,
+                            &#p::gather_q::<#ty, Self>(q, &#slot),
+                            &#p::gather_q::<#ty, Self>(v, &#slot),
+                            &#p::gather_c::<#ty, Self>(lambda, &#slot),
+                            &#p::gather_blocks::<#ty, Self>(w, &#slot),
+                            &mut out[start..start + COUNT],
+                        );
+                    }
+                };
+                quote! {{
+                    const COUNT: ::core::primitive::usize = <#ty as #p::Named>::NAMES.parameter_count();
+                    let start = #start;
+                    #call
+                }}
+            })
+            .collect()
+    };
+    let residual_vjp = transposed(false);
+    let holonomic_vjp = transposed(true);
+    let own_vjp = (own_count > 0).then(|| {
+        quote! {
+            let mut each = #p::ResidualBlocks::<Self>::zeros();
+            for j in 0..#own_count {
+                <Self as #p::Parameters>::residual_blocks_dtheta(self, #own_start + j, t, q, v, lambda, &mut each);
+                out[#own_start + j] = w.dot(&each);
+            }
+        }
+    });
+    let own_holonomic_vjp = (own_count > 0).then(|| {
+        quote! {
+            let mut each = #p::VecH::<Self>::zeros();
+            for j in 0..#own_count {
+                <Self as #p::Parameters>::holonomic_dtheta(self, #own_start + j, t, q, &mut each);
+                out[#own_start + j] = w.dot(&each);
+            }
+        }
+    });
     let holonomic = dispatch(&|field, ty, i| {
         let slot = format_ident!("__SLOT{}", i);
         quote! {
@@ -168,6 +229,32 @@ pub fn parameter_methods(composite: &Composite<'_>, own: &Own<'_>) -> TokenStrea
         ) {
             #(#together)*
             #own_each
+        }
+        #[allow(unused_variables)]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            lambda: &#p::VecC<Self>,
+            w: &#p::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(out.len(), #total, "residual_blocks_vjp_dtheta: the slice must hold one value per parameter");
+            #(#residual_vjp)*
+            #own_vjp
+        }
+        #[allow(unused_variables)]
+        fn holonomic_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            w: &#p::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(out.len(), #total, "holonomic_vjp_dtheta: the slice must hold one value per parameter");
+            #(#holonomic_vjp)*
+            #own_holonomic_vjp
         }
         #[allow(unused_variables)]
         fn holonomic_dtheta(

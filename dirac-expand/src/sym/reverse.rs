@@ -8,8 +8,7 @@
 //! [`Graph::diff`] read backwards. The adjoints are ordinary expressions, so the emitted code
 //! shares their subexpressions like any other.
 //!
-//! Code generation does not call it yet: the transposed parameter blocks it is for come next.
-#![cfg_attr(not(test), expect(dead_code, reason = "the transposed parameter blocks will call it"))]
+//! The transposed parameter blocks ([`crate::blocks::Blocks::vjp_dtheta`]) are made this way.
 
 use std::collections::HashMap;
 

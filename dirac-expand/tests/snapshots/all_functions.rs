@@ -851,6 +851,59 @@ const _: () = {
             out[1].constraint_velocity[0usize] = 0f64;
             out[1].constraint_velocity[1usize] = 0f64;
         }
+        #[inline]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values",
+                "residual_blocks_vjp_dtheta", 2usize
+            );
+            let s0 = q[0].sin();
+            let s1 = q[2].powi(2) + 1f64;
+            let s2 = s1.powi(-1);
+            let s3 = q[1].powi(2);
+            let s4 = q[0].powi(2);
+            let s5 = s3 + 2f64;
+            let s6 = 0.5f64 * q[2];
+            let s7 = (s4 + s5.powi(2)).powi(-1);
+            let s8 = (q[0] * q[1]).cosh();
+            out[0usize] = v[1] * s2 * w.dl_dv[1]
+                + v[0] * (0.25f64 * s0.powi(2) + 1f64) * w.dl_dv[0]
+                - q[2] * v[1].powi(2) * w.momentum_rate[2] / s1.powi(2)
+                + 0.25f64 * s0 * v[0].powi(2) * q[0].cos() * w.momentum_rate[0];
+            out[1usize] = -12.566370614359172f64 * q[2] * w.momentum_rate[2] / s1.powi(3)
+                + 0.5f64 * s6.sinh() * w.momentum_rate[2] + s2 * w.momentum_rate[2]
+                + 0.5f64 * (s6.tan().powi(2) + 1f64) * w.momentum_rate[2]
+                - v[2].powi(3) * w.momentum_rate[2]
+                + 0.1f64 * q[0] * s8 * w.momentum_rate[1]
+                - 2f64 * q[0] * q[1] * s7 * w.momentum_rate[1]
+                - (0.1f64 * q[1].exp() + q[1] / (s3 + 1f64).sqrt()) * w.momentum_rate[1]
+                + 0.1f64 * q[1] * s8 * w.momentum_rate[0] + s5 * s7 * w.momentum_rate[0]
+                - (-s0 + 2f64 * q[0] / (s4 + 1f64)) * w.momentum_rate[0]
+                - v[0] * (0.5f64 * t).cos() * w.momentum_rate[0];
+        }
+        #[inline]
+        fn holonomic_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 2usize, "{}: the slice must hold {} values",
+                "holonomic_vjp_dtheta", 2usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

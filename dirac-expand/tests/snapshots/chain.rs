@@ -2201,6 +2201,90 @@ const _: () = {
             }
         }
         #[allow(unused_variables)]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .parameter_count(),
+                "residual_blocks_vjp_dtheta: the slice must hold one value per parameter"
+            );
+            {
+                const COUNT: ::core::primitive::usize = <Primitive1 as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0;
+                <Primitive1 as ::dirac::__private::Parameters>::residual_blocks_vjp_dtheta(
+                    &self.left,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                    &::dirac::__private::gather_c::<Primitive1, Self>(lambda, &__SLOT0),
+                    &::dirac::__private::gather_blocks::<Primitive1, Self>(w, &__SLOT0),
+                    &mut out[start..start + COUNT],
+                );
+            }
+            {
+                const COUNT: ::core::primitive::usize = <Primitive2 as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0
+                    + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+                <Primitive2 as ::dirac::__private::Parameters>::residual_blocks_vjp_dtheta(
+                    &self.right,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                    &::dirac::__private::gather_c::<Primitive2, Self>(lambda, &__SLOT1),
+                    &::dirac::__private::gather_blocks::<Primitive2, Self>(w, &__SLOT1),
+                    &mut out[start..start + COUNT],
+                );
+            }
+        }
+        #[allow(unused_variables)]
+        fn holonomic_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .parameter_count(),
+                "holonomic_vjp_dtheta: the slice must hold one value per parameter"
+            );
+            {
+                const COUNT: ::core::primitive::usize = <Primitive1 as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0;
+                <Primitive1 as ::dirac::__private::Parameters>::holonomic_vjp_dtheta(
+                    &self.left,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_h::<Primitive1, Self>(w, &__SLOT0),
+                    &mut out[start..start + COUNT],
+                );
+            }
+            {
+                const COUNT: ::core::primitive::usize = <Primitive2 as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0
+                    + <Primitive1 as ::dirac::__private::Named>::NAMES.parameter_count();
+                <Primitive2 as ::dirac::__private::Parameters>::holonomic_vjp_dtheta(
+                    &self.right,
+                    t,
+                    &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_h::<Primitive2, Self>(w, &__SLOT1),
+                    &mut out[start..start + COUNT],
+                );
+            }
+        }
+        #[allow(unused_variables)]
         fn holonomic_dtheta(
             &self,
             k: ::core::primitive::usize,

@@ -2462,6 +2462,122 @@ const _: () = {
             }
         }
         #[allow(unused_variables)]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .parameter_count(),
+                "residual_blocks_vjp_dtheta: the slice must hold one value per parameter"
+            );
+            {
+                const COUNT: ::core::primitive::usize = <Wheel as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0;
+                <Wheel as ::dirac::__private::Parameters>::residual_blocks_vjp_dtheta(
+                    &self.wheel,
+                    t,
+                    &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                    &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                    &::dirac::__private::gather_blocks::<Wheel, Self>(w, &__SLOT0),
+                    &mut out[start..start + COUNT],
+                );
+            }
+            {
+                const COUNT: ::core::primitive::usize = <Cart as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0
+                    + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+                <Cart as ::dirac::__private::Parameters>::residual_blocks_vjp_dtheta(
+                    &self.cart,
+                    t,
+                    &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                    &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                    &::dirac::__private::gather_blocks::<Cart, Self>(w, &__SLOT1),
+                    &mut out[start..start + COUNT],
+                );
+            }
+            let mut each = ::dirac::__private::ResidualBlocks::<Self>::zeros();
+            for j in 0..1usize {
+                <Self as ::dirac::__private::Parameters>::residual_blocks_dtheta(
+                    self,
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + j,
+                    t,
+                    q,
+                    v,
+                    lambda,
+                    &mut each,
+                );
+                out[0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                    + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+                    + j] = w.dot(&each);
+            }
+        }
+        #[allow(unused_variables)]
+        fn holonomic_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), < Self as ::dirac::__private::Named > ::NAMES
+                .parameter_count(),
+                "holonomic_vjp_dtheta: the slice must hold one value per parameter"
+            );
+            {
+                const COUNT: ::core::primitive::usize = <Wheel as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0;
+                <Wheel as ::dirac::__private::Parameters>::holonomic_vjp_dtheta(
+                    &self.wheel,
+                    t,
+                    &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                    &::dirac::__private::gather_h::<Wheel, Self>(w, &__SLOT0),
+                    &mut out[start..start + COUNT],
+                );
+            }
+            {
+                const COUNT: ::core::primitive::usize = <Cart as ::dirac::__private::Named>::NAMES
+                    .parameter_count();
+                let start = 0
+                    + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count();
+                <Cart as ::dirac::__private::Parameters>::holonomic_vjp_dtheta(
+                    &self.cart,
+                    t,
+                    &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                    &::dirac::__private::gather_h::<Cart, Self>(w, &__SLOT1),
+                    &mut out[start..start + COUNT],
+                );
+            }
+            let mut each = ::dirac::__private::VecH::<Self>::zeros();
+            for j in 0..1usize {
+                <Self as ::dirac::__private::Parameters>::holonomic_dtheta(
+                    self,
+                    0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+                        + j,
+                    t,
+                    q,
+                    &mut each,
+                );
+                out[0 + <Wheel as ::dirac::__private::Named>::NAMES.parameter_count()
+                    + <Cart as ::dirac::__private::Named>::NAMES.parameter_count()
+                    + j] = w.dot(&each);
+            }
+        }
+        #[allow(unused_variables)]
         fn holonomic_dtheta(
             &self,
             k: ::core::primitive::usize,

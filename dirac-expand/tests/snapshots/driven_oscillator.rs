@@ -482,6 +482,45 @@ const _: () = {
             out[4].momentum_rate[0usize] = self.a * t * s0.cos();
             out[4].dl_dv[0usize] = 0f64;
         }
+        #[inline]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 5usize, "{}: the slice must hold {} values",
+                "residual_blocks_vjp_dtheta", 5usize
+            );
+            let s0 = self.w * t;
+            out[0usize] = v[0] * w.dl_dv[0];
+            out[1usize] = -q[0] * w.momentum_rate[0];
+            out[2usize] = -v[0] * w.momentum_rate[0];
+            out[3usize] = s0.sin() * w.momentum_rate[0];
+            out[4usize] = self.a * t * s0.cos() * w.momentum_rate[0];
+        }
+        #[inline]
+        fn holonomic_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 5usize, "{}: the slice must hold {} values",
+                "holonomic_vjp_dtheta", 5usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+            out[4usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -518,6 +518,41 @@ const _: () = {
             out[2].dl_dv[1usize] = 0f64;
             out[2].constraint_velocity[0usize] = 0f64;
         }
+        #[inline]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 3usize, "{}: the slice must hold {} values",
+                "residual_blocks_vjp_dtheta", 3usize
+            );
+            out[0usize] = v[1] * w.dl_dv[1] + v[0] * w.dl_dv[0]
+                - self.g * w.momentum_rate[1];
+            out[1usize] = -self.m * w.momentum_rate[1];
+            out[2usize] = 0f64;
+        }
+        #[inline]
+        fn holonomic_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 3usize, "{}: the slice must hold {} values",
+                "holonomic_vjp_dtheta", 3usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = -2f64 * self.l * w[0];
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -566,6 +566,45 @@ const _: () = {
             out[4].dl_dv[1usize] = 0f64;
             out[4].constraint_velocity[0usize] = 0f64;
         }
+        #[inline]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 5usize, "{}: the slice must hold {} values",
+                "residual_blocks_vjp_dtheta", 5usize
+            );
+            out[0usize] = v[1] * w.dl_dv[1] + v[0] * w.dl_dv[0]
+                - self.g * w.momentum_rate[1];
+            out[1usize] = -self.m * w.momentum_rate[1];
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+            out[4usize] = 0f64;
+        }
+        #[inline]
+        fn holonomic_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 5usize, "{}: the slice must hold {} values",
+                "holonomic_vjp_dtheta", 5usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = -2f64 * self.l * w[0];
+            out[3usize] = 0f64;
+            out[4usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
@@ -1446,6 +1485,64 @@ const _: () = {
             out[5].dl_dv[2usize] = 0f64;
             out[5].constraint_velocity[0usize] = 0f64;
             out[5].constraint_velocity[1usize] = v[0] - v[2] + self.w * v[1] * s0 * s3;
+        }
+        #[inline]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 6usize, "{}: the slice must hold {} values",
+                "residual_blocks_vjp_dtheta", 6usize
+            );
+            let s0 = self.l.powi(-1);
+            let s1 = q[1] * s0;
+            let s2 = s1.sin();
+            out[0usize] = v[1] * w.dl_dv[1] + v[0] * w.dl_dv[0]
+                - self.g * w.momentum_rate[1];
+            out[1usize] = -self.m * w.momentum_rate[1];
+            out[2usize] = -(self.w * self.wall_closed * v[1] * s2
+                * w.constraint_velocity[1]
+                + self.w * self.wall_closed * s2 * lambda[1] * w.momentum_rate[1]
+                + q[1] * s1.cos()
+                    * (self.w * self.wall_closed * v[1] * s0 * w.constraint_velocity[1]
+                        + self.w * self.wall_closed * s0 * lambda[1]
+                            * w.momentum_rate[1])) / self.l.powi(2);
+            out[3usize] = 0f64;
+            out[4usize] = self.wall_closed * v[1] * s0 * s2 * w.constraint_velocity[1]
+                + self.wall_closed * s0 * s2 * lambda[1] * w.momentum_rate[1];
+            out[5usize] = self.w * v[1] * s0 * s2 * w.constraint_velocity[1]
+                + v[0] * w.constraint_velocity[1]
+                - (v[2] * w.constraint_velocity[1] + lambda[1] * w.momentum_rate[2])
+                + self.w * s0 * s2 * lambda[1] * w.momentum_rate[1]
+                + lambda[1] * w.momentum_rate[0];
+        }
+        #[inline]
+        fn holonomic_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 6usize, "{}: the slice must hold {} values",
+                "holonomic_vjp_dtheta", 6usize
+            );
+            let s0 = q[1] / self.l;
+            let s1 = s0.cos();
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = -self.w * self.wall_closed * q[1] * s0.sin() * w[1]
+                / self.l.powi(2) - 2f64 * self.l * w[0];
+            out[3usize] = 0f64;
+            out[4usize] = -self.wall_closed * s1 * w[1];
+            out[5usize] = -q[2] * w[1] + (q[0] - self.w * s1) * w[1];
         }
     }
     #[automatically_derived]

@@ -629,6 +629,47 @@ const _: () = {
             out[3].constraint_velocity[0usize] = 0f64;
             out[3].constraint_velocity[1usize] = 0f64;
         }
+        #[inline]
+        fn residual_blocks_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            w: &::dirac::__private::ResidualBlocks<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 4usize, "{}: the slice must hold {} values",
+                "residual_blocks_vjp_dtheta", 4usize
+            );
+            let s0 = q[3].cos();
+            let s1 = q[3].sin();
+            out[0usize] = v[1] * w.dl_dv[1] + v[0] * w.dl_dv[0];
+            out[1usize] = -v[2] * s1 * w.constraint_velocity[1]
+                - v[2] * s0 * w.constraint_velocity[0]
+                - s1 * lambda[1] * w.momentum_rate[2]
+                - s0 * lambda[0] * w.momentum_rate[2];
+            out[2usize] = v[2] * w.dl_dv[2];
+            out[3usize] = v[3] * w.dl_dv[3];
+        }
+        #[inline]
+        fn holonomic_vjp_dtheta(
+            &self,
+            _t: ::core::primitive::f64,
+            _q: &::dirac::__private::VecQ<Self>,
+            _w: &::dirac::__private::VecH<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 4usize, "{}: the slice must hold {} values",
+                "holonomic_vjp_dtheta", 4usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+        }
     }
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -9,6 +9,7 @@ use nalgebra::DefaultAllocator;
 
 use nalgebra::OMatrix;
 
+use crate::model::blocks::ResidualBlocks;
 use crate::shape::dims::{Dimensions, Fixed, Storage, VecC, VecH, VecQ};
 
 /// A dense `n × n` block of a model of fixed size.
@@ -56,6 +57,30 @@ where
         out[r] = x[slot.row::<S>(r)];
     }
     out
+}
+
+/// The subsystem's part of a composite vector of holonomic constraint values.
+pub fn gather_h<S: Fixed, C: Dimensions>(x: &VecH<C>, slot: &Offsets) -> VecH<S>
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    let mut out = S::SIZES.zeros_h::<S>();
+    for r in 0..S::NH {
+        out[r] = x[slot.h + r];
+    }
+    out
+}
+
+/// The subsystem's part of composite residual blocks (weights of a vector-Jacobian product).
+pub fn gather_blocks<S: Fixed, C: Dimensions>(x: &ResidualBlocks<C>, slot: &Offsets) -> ResidualBlocks<S>
+where
+    DefaultAllocator: Storage<S> + Storage<C>,
+{
+    ResidualBlocks {
+        momentum_rate: gather_q::<S, C>(&x.momentum_rate, slot),
+        dl_dv: gather_q::<S, C>(&x.dl_dv, slot),
+        constraint_velocity: gather_c::<S, C>(&x.constraint_velocity, slot),
+    }
 }
 
 /// Writes a subsystem vector of coordinates into the composite's.

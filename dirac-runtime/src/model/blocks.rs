@@ -36,6 +36,19 @@ where
     }
 }
 
+impl<M: Dimensions> ResidualBlocks<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The sum of the three blocks' dot products with `other`'s: `wᵀ b` for blocks `b` and
+    /// weights `w` of the same shape.
+    pub fn dot(&self, other: &Self) -> f64 {
+        self.momentum_rate.dot(&other.momentum_rate)
+            + self.dl_dv.dot(&other.dl_dv)
+            + self.constraint_velocity.dot(&other.constraint_velocity)
+    }
+}
+
 impl<M: Fixed> ResidualBlocks<M>
 where
     DefaultAllocator: Storage<M>,

@@ -83,6 +83,48 @@ where
         let _ = (t, q, out);
         panic!("the model has no parameter {k}: it has {}", Self::NAMES.parameter_count())
     }
+
+    /// The transposed parameter blocks: for every parameter `k`, into `out[k]`,
+    ///
+    /// `w.momentum_rateᵀ ∂ṗ/∂θ_k + w.dl_dvᵀ ∂(∂L/∂v)/∂θ_k + w.constraint_velocityᵀ ∂(A v + b)/∂θ_k`
+    ///
+    /// at fixed `(t, q, v, λ)`: what an adjoint sweep needs, the gradient of a weighted sum of
+    /// the residual blocks with respect to all parameters. A primitive model's derive emits it
+    /// by reverse accumulation on the expression graph, so it costs a small multiple of one
+    /// evaluation of the blocks whatever the number of parameters, and never forms
+    /// `∂/∂θ_k`; composites, arrays and networks sum their parts'. The default computes each
+    /// parameter's blocks and weighs them. `out` must hold one value per parameter.
+    fn residual_blocks_vjp_dtheta(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        w: &ResidualBlocks<Self>,
+        out: &mut [f64],
+    ) {
+        let count = self.parameter_count();
+        assert_eq!(out.len(), count, "residual_blocks_vjp_dtheta: the slice must hold {count} values");
+        let mut each = ResidualBlocks::<Self>::with_sizes(&self.sizes());
+        for (k, out) in out.iter_mut().enumerate() {
+            self.residual_blocks_dtheta(k, t, q, v, lambda, &mut each);
+            *out = w.dot(&each);
+        }
+    }
+
+    /// `w_φᵀ ∂φ/∂θ_k` for every parameter `k`, into `out[k]`: the transposed derivative of the
+    /// holonomic constraint values at fixed `(t, q)`, generated like
+    /// [`residual_blocks_vjp_dtheta`](Parameters::residual_blocks_vjp_dtheta). `out` must hold
+    /// one value per parameter.
+    fn holonomic_vjp_dtheta(&self, t: f64, q: &VecQ<Self>, w: &VecH<Self>, out: &mut [f64]) {
+        let count = self.parameter_count();
+        assert_eq!(out.len(), count, "holonomic_vjp_dtheta: the slice must hold {count} values");
+        let mut each = self.sizes().zeros_h::<Self>();
+        for (k, out) in out.iter_mut().enumerate() {
+            self.holonomic_dtheta(k, t, q, &mut each);
+            *out = w.dot(&each);
+        }
+    }
 }
 
 /// [`Parameters::residual_blocks_dtheta`] of models of type `M`.

@@ -561,6 +561,42 @@ impl Parameters for Network {
         out.fill(0.0);
         self.parts[e].holonomic_dtheta(i, t, q, &self.slots[e].at, out);
     }
+
+    fn residual_blocks_vjp_dtheta(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        w: &ResidualBlocks<Self>,
+        out: &mut [f64],
+    ) {
+        assert_eq!(
+            out.len(),
+            self.parameters,
+            "residual_blocks_vjp_dtheta: the slice must hold one value per parameter"
+        );
+        for (part, slot) in self.each() {
+            let span = slot.parameters..slot.parameters + part.parameter_count();
+            if !span.is_empty() {
+                part.residual_blocks_vjp_dtheta(t, q, v, lambda, &slot.at, w, &mut out[span]);
+            }
+        }
+    }
+
+    fn holonomic_vjp_dtheta(&self, t: f64, q: &DVector<f64>, w: &DVector<f64>, out: &mut [f64]) {
+        assert_eq!(
+            out.len(),
+            self.parameters,
+            "holonomic_vjp_dtheta: the slice must hold one value per parameter"
+        );
+        for (part, slot) in self.each() {
+            let span = slot.parameters..slot.parameters + part.parameter_count();
+            if !span.is_empty() {
+                part.holonomic_vjp_dtheta(t, q, &slot.at, w, &mut out[span]);
+            }
+        }
+    }
 }
 
 /// The parts' declared events, laws and switching surfaces; a network takes no part with

@@ -192,6 +192,21 @@ pub(crate) trait Part: Send + Sync {
     );
     /// Writes `∂φ/∂θ_k` of the part's holonomic rows into the network's.
     fn holonomic_dtheta(&self, k: usize, t: f64, q: &DVector<f64>, at: &Place, out: &mut DVector<f64>);
+    /// The part's transposed parameter blocks on its part of the network's weights, one value
+    /// per parameter of the part.
+    #[allow(clippy::too_many_arguments)]
+    fn residual_blocks_vjp_dtheta(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        w: &ResidualBlocks<Network>,
+        out: &mut [f64],
+    );
+    /// `w_φᵀ ∂φ/∂θ_k` of the part's holonomic rows, one value per parameter of the part.
+    fn holonomic_vjp_dtheta(&self, t: f64, q: &DVector<f64>, at: &Place, w: &DVector<f64>, out: &mut [f64]);
 }
 
 /// A model of fixed size held by a network.
@@ -610,5 +625,34 @@ where
         let mut o = VecH::<M>::zeros();
         self.0.holonomic_dtheta(k, t, &gather_q::<M>(q, at), &mut o);
         scatter_h::<M>(&o, at, out);
+    }
+
+    fn residual_blocks_vjp_dtheta(
+        &self,
+        t: f64,
+        q: &DVector<f64>,
+        v: &DVector<f64>,
+        lambda: &DVector<f64>,
+        at: &Place,
+        w: &ResidualBlocks<Network>,
+        out: &mut [f64],
+    ) {
+        // The transpose of `blocks_into`: a joined coordinate's weight reaches every part that
+        // adds into it, a grounded one's is zero.
+        let (q, v) = self.args(q, v, at);
+        let weights = ResidualBlocks::<M> {
+            momentum_rate: gather_q::<M>(&w.momentum_rate, at),
+            dl_dv: gather_q::<M>(&w.dl_dv, at),
+            constraint_velocity: gather_c::<M>(&w.constraint_velocity, at),
+        };
+        self.0.residual_blocks_vjp_dtheta(t, &q, &v, &gather_c::<M>(lambda, at), &weights, out);
+    }
+
+    fn holonomic_vjp_dtheta(&self, t: f64, q: &DVector<f64>, at: &Place, w: &DVector<f64>, out: &mut [f64]) {
+        let mut weights = VecH::<M>::zeros();
+        for r in 0..M::NH {
+            weights[r] = w[at.h + r];
+        }
+        self.0.holonomic_vjp_dtheta(t, &gather_q::<M>(q, at), &weights, out);
     }
 }

@@ -88,7 +88,9 @@ impl Large<'_> {
                 Arg::Q => quote! { &#p::gather_q::<#ty, Self>(q, &__s) },
                 Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &__s) },
                 Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &__s) },
-                Arg::Y | Arg::K => unreachable!("arrays assemble no flat or parameter methods"),
+                Arg::Y | Arg::K | Arg::WeightBlocks | Arg::WeightHolonomic => {
+                    unreachable!("arrays assemble no flat or parameter methods this way")
+                }
             })
             .collect();
         let qq_at = quote! { __pl.qq_at(#fl, __e) };
@@ -370,6 +372,57 @@ impl Large<'_> {
                 return;
             }
         });
+        // The transposed blocks: every member on its part of the arguments and weights, into
+        // its range of `out`, in parameter order; one pass over the members.
+        let each_member = |call: &dyn Fn(&syn::Type, TokenStream) -> TokenStream| -> Vec<TokenStream> {
+            self.composite
+                .subsystems
+                .iter()
+                .enumerate()
+                .map(|(f, s)| {
+                    let (field, ty, fl) = (&s.ident, &s.ty, lit(f));
+                    let count = self.count(f);
+                    let sub = if s.array {
+                        quote! { self.#field[__e] }
+                    } else {
+                        quote! { self.#field }
+                    };
+                    let call = call(ty, sub);
+                    quote! {
+                        let __n = <#ty as #p::Named>::NAMES.parameter_count();
+                        if __n > 0 {
+                            for __e in 0..#count {
+                                let __s = __pl.slot(#fl, __e);
+                                #call
+                                __at += __n;
+                            }
+                        }
+                    }
+                })
+                .collect()
+        };
+        let residual_vjp = each_member(&|ty, sub| {
+            quote! {
+                #sub.residual_blocks_vjp_dtheta(
+                    t,
+                    &#p::gather_q::<#ty, Self>(q, &__s),
+                    &#p::gather_q::<#ty, Self>(v, &__s),
+                    &#p::gather_c::<#ty, Self>(lambda, &__s),
+                    &#p::gather_blocks::<#ty, Self>(w, &__s),
+                    &mut out[__at..__at + __n],
+                );
+            }
+        });
+        let holonomic_vjp = each_member(&|ty, sub| {
+            quote! {
+                #sub.holonomic_vjp_dtheta(
+                    t,
+                    &#p::gather_q::<#ty, Self>(q, &__s),
+                    &#p::gather_h::<#ty, Self>(w, &__s),
+                    &mut out[__at..__at + __n],
+                );
+            }
+        });
         let missing = quote! {
             ::core::panic!("the model has no parameter {}: it has {}", k, #p::Parameters::parameter_count(self))
         };
@@ -418,6 +471,42 @@ impl Large<'_> {
                 let (__pl, mut __k) = (self.__placement(), k);
                 #blocks
                 #missing
+            }
+
+            #[allow(unused_variables, unused_mut)]
+            fn residual_blocks_vjp_dtheta(
+                &self,
+                t: ::core::primitive::f64,
+                q: &#p::VecQ<Self>,
+                v: &#p::VecQ<Self>,
+                lambda: &#p::VecC<Self>,
+                w: &#p::ResidualBlocks<Self>,
+                out: &mut [::core::primitive::f64],
+            ) {
+                ::core::assert_eq!(
+                    out.len(),
+                    #p::Parameters::parameter_count(self),
+                    "residual_blocks_vjp_dtheta: the slice must hold one value per parameter",
+                );
+                let (__pl, mut __at) = (self.__placement(), 0usize);
+                #(#residual_vjp)*
+            }
+
+            #[allow(unused_variables, unused_mut)]
+            fn holonomic_vjp_dtheta(
+                &self,
+                t: ::core::primitive::f64,
+                q: &#p::VecQ<Self>,
+                w: &#p::VecH<Self>,
+                out: &mut [::core::primitive::f64],
+            ) {
+                ::core::assert_eq!(
+                    out.len(),
+                    #p::Parameters::parameter_count(self),
+                    "holonomic_vjp_dtheta: the slice must hold one value per parameter",
+                );
+                let (__pl, mut __at) = (self.__placement(), 0usize);
+                #(#holonomic_vjp)*
             }
 
             #[allow(unused_variables, unused_mut, unreachable_code)]

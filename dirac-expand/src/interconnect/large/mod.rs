@@ -357,8 +357,9 @@ mod tests {
         assert!(!short.contains("compile_error"), "{short}");
         assert_eq!(short, long);
         assert_eq!(short, run_time);
-        // 62 kB since misspelt members carry a suggestion (a const message per member).
-        assert!(short.len() < 70_000, "{} bytes", short.len());
+        // 62 kB since misspelt members carry a suggestion (a const message per member), 72 kB
+        // with the transposed parameter blocks.
+        assert!(short.len() < 76_000, "{} bytes", short.len());
     }
 
     #[test]
