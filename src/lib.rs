@@ -69,6 +69,10 @@ pub use dirac_runtime::{
     VecQ, VecY, Wrt, consistent_state, linearize,
 };
 
+/// Gradients of one objective with respect to every parameter and initial value at once, by
+/// the discrete adjoint of a Radau integration.
+pub use dirac_runtime::adjoint;
+
 /// The linear-algebra crate dirac is built on, re-exported so that generic code over models
 /// and code that uses its matrices need no second, possibly different, version of it.
 pub use dirac_runtime::nalgebra;

@@ -756,6 +756,51 @@ fn steps_with_sensitivities_do_not_allocate() {
     }
 }
 
+/// The allocations of an adjoint sweep over a run of `model` from `start` to `t_end`: its
+/// set-up only, if its backward steps allocate nothing. Returns them with the number of steps.
+fn allocations_in_adjoint_sweep<M: Parameters>(model: &M, start: &State<M>, t_end: f64) -> (usize, usize)
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let options = RadauOptions::tolerances(1e-8, 1e-8);
+    let mut radau = Radau::new(model, options).expect("valid");
+    let recording = radau.record(0.0, start, t_end).expect("integrates");
+    let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
+        out.clone_from(y);
+        0.5 * (y.q.norm_squared() + y.v.norm_squared() + y.p.norm_squared() + y.lambda.norm_squared())
+    };
+    let running = |_: f64, y: &State<M>, out: &mut State<M>| {
+        out.clone_from(y);
+        out.lambda.fill(0.0);
+        0.5 * (y.q.norm_squared() + y.v.norm_squared() + y.p.norm_squared())
+    };
+    let objective = dirac::adjoint::Objective::terminal(&terminal).with_running(&running);
+    let before = allocations();
+    let gradient = recording.gradient(model, &objective).expect("a gradient");
+    let allocated = allocations() - before;
+    assert!(gradient.parameters.iter().all(|g| g.is_finite()));
+    (allocated, recording.steps())
+}
+
+/// The backward steps of an adjoint sweep allocate nothing: a sweep over many more steps
+/// allocates exactly as much as one over a few (its set-up), on a model stored dense and on
+/// one made of an array of cells, stored sparse.
+#[test]
+fn backward_steps_of_an_adjoint_sweep_do_not_allocate() {
+    let p = unit_pendulum();
+    let start = horizontal_start(&p);
+    let (short, few) = allocations_in_adjoint_sweep(&p, &start, 0.2);
+    let (long, many) = allocations_in_adjoint_sweep(&p, &start, 20.0);
+    assert!(many > 10 * few, "{few} and {many} steps");
+    assert_eq!(short, long, "pendulum: {few} steps allocate {short} times, {many} steps {long} times");
+    let ladder = unit_ladder(10);
+    let start = ladder_at_rest(&ladder, &pulse(10));
+    let (short, few) = allocations_in_adjoint_sweep(&ladder, &start, 0.5);
+    let (long, many) = allocations_in_adjoint_sweep(&ladder, &start, 20.0);
+    assert!(many > 5 * few, "{few} and {many} steps");
+    assert_eq!(short, long, "ladder: {few} steps allocate {short} times, {many} steps {long} times");
+}
+
 #[path = "../examples/fmu/driven_pendulum.rs"]
 mod driven_pendulum;
 

@@ -74,6 +74,13 @@ pub use simulate::integrator::{Drive, Integrator};
 pub use simulate::sensitivity::{Sensitivities, Wrt};
 pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
 
+/// Gradients of one objective with respect to every parameter and initial value at once: the
+/// discrete adjoint of a Radau integration, recorded with [`Radau::record`] and swept back
+/// with [`Recording::gradient`](adjoint::Recording::gradient).
+pub mod adjoint {
+    pub use crate::methods::radau::{Gradient, Objective, Recording, StateFunction};
+}
+
 // The modules under the paths they had before the layers, for code that names them.
 pub use algebra::lu;
 pub use analysis::{diagnose, dirac_structure, init, joint_space, linear};

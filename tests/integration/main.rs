@@ -6,6 +6,7 @@ mod zoo;
 #[macro_use]
 mod every_method;
 
+mod adjoint;
 mod authoring;
 mod blocks;
 mod bodies;

@@ -132,6 +132,9 @@ type BlocksDtheta<M> = fn(&M, usize, f64, &VecQ<M>, &VecQ<M>, &VecC<M>, &mut Res
 /// [`Parameters::residual_blocks_dtheta_all`] of models of type `M`.
 type BlocksDthetaAll<M> = fn(&M, f64, &VecQ<M>, &VecQ<M>, &VecC<M>, &mut [ResidualBlocks<M>]);
 
+/// [`Parameters::residual_blocks_vjp_dtheta`] of models of type `M`.
+type BlocksVjp<M> = fn(&M, f64, &VecQ<M>, &VecQ<M>, &VecC<M>, &ResidualBlocks<M>, &mut [f64]);
+
 /// A model's parameter derivatives as function pointers: what code that holds a model of any
 /// kind keeps when it was built under a [`Parameters`] bound (an integrator asked for
 /// sensitivities), so that its steps differentiate with respect to parameters without
@@ -146,6 +149,10 @@ where
     pub all: BlocksDthetaAll<M>,
     /// [`Parameters::holonomic_dtheta`].
     pub holonomic: fn(&M, usize, f64, &VecQ<M>, &mut VecH<M>),
+    /// [`Parameters::residual_blocks_vjp_dtheta`].
+    pub transposed: BlocksVjp<M>,
+    /// [`Parameters::holonomic_vjp_dtheta`].
+    pub holonomic_transposed: fn(&M, f64, &VecQ<M>, &VecH<M>, &mut [f64]),
 }
 
 impl<M: Parameters> ParameterDerivatives<M>
@@ -158,6 +165,8 @@ where
             blocks: M::residual_blocks_dtheta,
             all: M::residual_blocks_dtheta_all,
             holonomic: M::holonomic_dtheta,
+            transposed: M::residual_blocks_vjp_dtheta,
+            holonomic_transposed: M::holonomic_vjp_dtheta,
         }
     }
 }

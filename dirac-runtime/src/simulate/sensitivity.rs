@@ -293,4 +293,66 @@ where
         M::Algebra::qq_mul(&self.l_vq, 1.0, out.q.as_slice(), out.p.as_mut_slice());
         M::Algebra::qq_mul(&self.l_vv, 1.0, out.v.as_slice(), out.p.as_mut_slice());
     }
+    /// The transpose of [`solve`](Initial::solve)'s map, for an adjoint sweep: `bar` is the
+    /// gradient of an objective with respect to the consistent initial state (its multipliers'
+    /// part is not read: their sensitivities are zero). Adds the objective's gradient with
+    /// respect to every parameter into `theta` (one per parameter) and writes those with
+    /// respect to the initial positions and velocities, seeded as `solve` seeds them, into
+    /// `positions` and `velocities`. Both saddle-point systems are symmetric, so their
+    /// factors serve the transposed solves.
+    pub fn transpose(
+        &mut self,
+        bar: &State<M>,
+        theta: &mut [f64],
+        positions: &mut crate::shape::dims::VecQ<M>,
+        velocities: &mut crate::shape::dims::VecQ<M>,
+    ) {
+        let (model, t0, state) = (self.model, self.t0, self.state);
+        let sizes = model.sizes();
+        let (n, m, nh) = (sizes.nq, sizes.nc, sizes.nh);
+        // The momenta: p = ∂(∂L/∂v)/∂θ + L_vq s_q + L_vv s_v.
+        positions.copy_from(&bar.q);
+        velocities.copy_from(&bar.v);
+        M::Algebra::qq_tr_mul(&self.l_vq, 1.0, bar.p.as_slice(), positions.as_mut_slice());
+        M::Algebra::qq_tr_mul(&self.l_vv, 1.0, bar.p.as_slice(), velocities.as_mut_slice());
+        let mut x = vec![0.0; n + m];
+        // The velocities' correction, v' = v − P S⁻¹ (0, c): c̄ = −(S⁻¹ (v̄', 0))_c.
+        let mut c_bar = vec![0.0; m];
+        if let Some(saddle) = &mut self.velocities {
+            x[..n].copy_from_slice(velocities.as_slice());
+            x[n..].fill(0.0);
+            saddle.solve(&mut x);
+            for (c, xi) in c_bar.iter_mut().zip(&x[n..]) {
+                *c = -xi;
+            }
+            M::Algebra::cq_tr_mul(&self.a, 1.0, &c_bar, velocities.as_mut_slice());
+            M::Algebra::cq_tr_mul(&self.g, 1.0, &c_bar, positions.as_mut_slice());
+        }
+        // The positions' correction, q' = q − P S⁻¹ (0, A_h q + ∂φ/∂θ, 0).
+        let mut r_bar = vec![0.0; m];
+        if let Some(saddle) = &mut self.positions {
+            x[..n].copy_from_slice(positions.as_slice());
+            x[n..].fill(0.0);
+            saddle.solve(&mut x);
+            for (r, xi) in r_bar[..nh].iter_mut().zip(&x[n..n + nh]) {
+                *r = -xi;
+            }
+            M::Algebra::cq_tr_mul(&self.a, 1.0, &r_bar, positions.as_mut_slice());
+        }
+        if theta.is_empty() {
+            return;
+        }
+        let mut weights = crate::model::blocks::ResidualBlocks::<M>::with_sizes(&sizes);
+        weights.dl_dv.copy_from(&bar.p);
+        weights.constraint_velocity.as_mut_slice().copy_from_slice(&c_bar);
+        let mut each = vec![0.0; theta.len()];
+        (self.derivatives.transposed)(model, t0, &state.q, &state.v, &state.lambda, &weights, &mut each);
+        let mut phi_weights = sizes.zeros_h::<M>();
+        phi_weights.as_mut_slice().copy_from_slice(&r_bar[..nh]);
+        let mut holonomic = vec![0.0; theta.len()];
+        (self.derivatives.holonomic_transposed)(model, t0, &state.q, &phi_weights, &mut holonomic);
+        for ((t, a), b) in theta.iter_mut().zip(&each).zip(&holonomic) {
+            *t += a + b;
+        }
+    }
 }

@@ -9,6 +9,7 @@
 //! the achieved error follows the requested one. A step allocates nothing: every vector and
 //! matrix lives in the integrator, on the stack sizes the model fixes.
 
+mod adjoint;
 mod controller;
 mod coupled;
 mod dense;
@@ -26,6 +27,7 @@ use std::cell::RefCell;
 
 use nalgebra::{Complex, DefaultAllocator};
 
+pub use self::adjoint::{Gradient, Objective, Recording, StateFunction};
 use self::controller::Controller;
 use self::dense::{Dense, Legendre, Start};
 use self::drive::Feedback;

@@ -1,0 +1,373 @@
+//! The discrete adjoint of a Radau IIA integration: the gradient of one objective with respect
+//! to every parameter and every initial value at once, by a backward sweep over the recorded
+//! steps, exact to round-off for the discrete solution (so it agrees with the forward
+//! sensitivities of the same run, not only with the tolerance).
+//!
+//! A step from `y_n` solves, for its stage values `Y_k = y_n + Z_k` (`y_{n+1} = Y_3`),
+//!
+//! ```text
+//! R_k(Y, y_n, θ) = M (Y_k − y_n) − h Σ_j a_kj f(t_n + c_j h, Y_j, θ) = 0,   k = 1, 2, 3.
+//! ```
+//!
+//! With `Ȳ` the objective's gradient with respect to the stage values (the next step's
+//! `ȳ_{n+1}` at `Y_3`, and the running cost's quadrature weights at each stage), the step's
+//! adjoint is the transposed stage system `(∂R/∂Y)ᵀ μ = Ȳ`, whose blocks are
+//! `δ_jk M − h a_kj J_jᵀ` with `J_j = ∂f/∂y` at stage `j`; then
+//!
+//! ```text
+//! ȳ_n = M Σ_k μ_k,    θ̄ += Σ_j ω_jᵀ ∂f/∂θ(Y_j),    ω_j = h Σ_k a_kj μ_k,
+//! ```
+//!
+//! the last one by the model's transposed parameter blocks
+//! ([`Parameters::residual_blocks_vjp_dtheta`]), every parameter in one call. The sweep ends
+//! with the transpose of the consistent initial sensitivities' map, which carries `ȳ_0` to
+//! the initial positions and velocities and adds the parameters' part of the initial state.
+//!
+//! The transposed stage system is assembled dense, `3 (3n + m)` unknowns, and factored once a
+//! step: the reference the condensed and sparse solves are checked against. Nothing allocates
+//! in a backward step.
+
+use nalgebra::{DVector, DefaultAllocator, Dyn};
+
+use super::Radau;
+use super::tableau::{A, C1, C2, C3};
+use crate::algebra::lu::Lu;
+use crate::algebra::newton::NewtonSolver;
+use crate::error::SimError;
+use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+use crate::model::state::State;
+use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
+use crate::shape::dims::{MatYY, Storage, VecQ, VecY};
+use crate::shape::layout::Layout;
+use crate::simulate::integrator::Integrator;
+use crate::simulate::sensitivity::Initial;
+
+/// The most unknowns of the transposed stage system solved dense: 1200 (a model of 400 state
+/// slots) keeps its matrix at 11.5 MB and its factorisation under a second a step.
+pub const DENSE_LIMIT: usize = 1200;
+
+/// An objective's gradient with respect to a state, written into `out` (every part of it: the
+/// positions, velocities, momenta and multipliers), and its value returned.
+pub type StateFunction<'f, M> = &'f dyn Fn(f64, &State<M>, &mut State<M>) -> f64;
+
+/// The objective `G = g(t_N, y_N) + ∫ r(t, y) dt` of an adjoint sweep, over the discrete
+/// solution: `g` at the last step's end and the running cost `r` integrated by the method's
+/// own quadrature over each step's stages (`h Σ_j b_j r(t_j, Y_j)`, of order 5), so that its
+/// gradient is exact for what is computed.
+pub struct Objective<'f, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    terminal: Option<StateFunction<'f, M>>,
+    running: Option<StateFunction<'f, M>>,
+}
+
+impl<'f, M: LagrangeDirac> Objective<'f, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// A terminal cost `g(t_N, y_N)`: the closure returns its value and writes `∂g/∂y`.
+    pub fn terminal(g: StateFunction<'f, M>) -> Self {
+        Objective { terminal: Some(g), running: None }
+    }
+
+    /// A running cost `∫ r(t, y) dt` alone: the closure returns `r` and writes `∂r/∂y`.
+    pub fn running(r: StateFunction<'f, M>) -> Self {
+        Objective { terminal: None, running: Some(r) }
+    }
+
+    /// This objective with a running cost added.
+    pub fn with_running(mut self, r: StateFunction<'f, M>) -> Self {
+        self.running = Some(r);
+        self
+    }
+}
+
+/// One accepted step: where it started, its size and its stage increments.
+struct Step<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    t: f64,
+    h: f64,
+    y: VecY<M>,
+    z: [VecY<M>; 3],
+}
+
+/// A Radau integration recorded for adjoint sweeps ([`Radau::record`]): the consistent start
+/// and every accepted step's start, size and stages, `4 (3n + m)` numbers a step.
+pub struct Recording<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    t0: f64,
+    start: State<M>,
+    steps: Vec<Step<M>>,
+}
+
+/// The gradient of an objective with respect to everything the run depends on.
+#[derive(Clone)]
+pub struct Gradient<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The objective's value on the recorded run.
+    pub value: f64,
+    /// `∂G/∂θ_k` for every parameter, in the order of
+    /// [`parameter_names`](crate::model::Named::parameter_names).
+    pub parameters: Vec<f64>,
+    /// `∂G/∂q₀(i)`: with respect to each initial position, through the consistent start, as
+    /// [`Sensitivities::initial_position`](crate::Sensitivities::initial_position) seeds it.
+    pub positions: VecQ<M>,
+    /// `∂G/∂v₀(i)`, as [`Sensitivities::initial_velocity`](crate::Sensitivities::initial_velocity)
+    /// seeds it.
+    pub velocities: VecQ<M>,
+}
+
+impl<M: LagrangeDirac> std::fmt::Debug for Gradient<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Gradient")
+            .field("value", &self.value)
+            .field("parameters", &self.parameters)
+            .field("positions", &self.positions.as_slice())
+            .field("velocities", &self.velocities.as_slice())
+            .finish()
+    }
+}
+
+impl<M: LagrangeDirac> std::fmt::Debug for Recording<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Recording").field("t0", &self.t0).field("steps", &self.steps.len()).finish()
+    }
+}
+
+impl<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'m, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Integrates from the consistent `state` at `t0` to `t_end`, as
+    /// [`Integrator::solve`] does, and keeps every accepted step for
+    /// [`Recording::gradient`].
+    ///
+    /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
+    /// projection's derivative is not carried) or a drive (its inputs' derivative is not known).
+    pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError> {
+        let invalid = |reason: &str| Err(SimError::InvalidOption { what: "adjoint", reason: reason.into() });
+        if self.options.projection {
+            return invalid("the projection onto the constraints has no derivative carried: turn it off");
+        }
+        if self.residual.driven() || self.feedback.is_some() {
+            return invalid("a drive's inputs have no derivative to transpose: hold the inputs instead");
+        }
+        self.start(t0, state, t_end)?;
+        let sizes = self.model.sizes();
+        let mut steps = Vec::new();
+        while !self.finished() {
+            let (t, y) = (self.t, self.y.clone());
+            let h = self.step()?;
+            let z = [self.stages.z[0].clone(), self.stages.z[1].clone(), self.stages.z[2].clone()];
+            debug_assert_eq!(z[0].len(), sizes.ny());
+            steps.push(Step { t, h, y, z });
+        }
+        Ok(Recording { t0, start: state.clone(), steps })
+    }
+}
+
+impl<M: LagrangeDirac> Recording<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The number of recorded steps.
+    pub fn steps(&self) -> usize {
+        self.steps.len()
+    }
+
+    /// The state at the end of the run.
+    pub fn end(&self, model: &M) -> State<M> {
+        match self.steps.last() {
+            Some(last) => State::from_y(model.sizes(), &(&last.y + &last.z[2])),
+            None => self.start.clone(),
+        }
+    }
+
+    /// The objective's gradient with respect to every parameter of `model` (the model the run
+    /// was recorded with) and every initial position and velocity, by one backward sweep.
+    pub fn gradient(&self, model: &M, objective: &Objective<'_, M>) -> Result<Gradient<M>, SimError>
+    where
+        M: Parameters,
+    {
+        let sizes = model.sizes();
+        if 3 * sizes.ny() > DENSE_LIMIT {
+            return Err(SimError::InvalidOption {
+                what: "adjoint",
+                reason: format!(
+                    "the transposed stage system has {} unknowns and is solved dense, up to {DENSE_LIMIT}: \
+                     the sparse adjoint for models this large is not implemented",
+                    3 * sizes.ny()
+                ),
+            });
+        }
+        let derivatives = ParameterDerivatives::<M>::of();
+        let mut sweep = Sweep::new(model, derivatives);
+        let mut value = 0.0;
+        let mut bar = sizes.zeros_y::<M>();
+        if let Some(g) = objective.terminal {
+            let end = self.end(model);
+            let t_end = self.steps.last().map_or(self.t0, |s| s.t + s.h);
+            value += g(t_end, &end, &mut sweep.dg);
+            sweep.dg.write_y(&mut bar);
+        }
+        for step in self.steps.iter().rev() {
+            value += sweep.step(model, step, objective.running, &mut bar)?;
+        }
+        let mut positions = sizes.zeros_q::<M>();
+        let mut velocities = sizes.zeros_q::<M>();
+        let mut initial = Initial::new(model, derivatives, self.t0, &self.start)?;
+        sweep.stage.read_y(&bar);
+        initial.transpose(&sweep.stage, &mut sweep.theta, &mut positions, &mut velocities);
+        Ok(Gradient { value, parameters: sweep.theta, positions, velocities })
+    }
+}
+
+/// The backward sweep's work space, made once.
+struct Sweep<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    layout: Layout,
+    derivatives: ParameterDerivatives<M>,
+    blocks: JacobianBlocks<M, M::Algebra>,
+    /// The flat Jacobian `∂f/∂y` at a stage.
+    jac: MatYY<M>,
+    /// The transposed stage system, `3 (3n + m)` square.
+    lu: Lu<f64, Dyn>,
+    /// Its right-hand side `Ȳ`, then its solution `μ`.
+    mu: DVector<f64>,
+    stage: State<M>,
+    yj: VecY<M>,
+    dg: State<M>,
+    weights: ResidualBlocks<M>,
+    each: Vec<f64>,
+    /// `∂G/∂θ`, summed over the steps.
+    theta: Vec<f64>,
+}
+
+impl<M: LagrangeDirac> Sweep<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn new(model: &M, derivatives: ParameterDerivatives<M>) -> Self {
+        let sizes = model.sizes();
+        let ny = sizes.ny();
+        let count = model.parameter_names().len();
+        Sweep {
+            layout: Layout::new(sizes),
+            derivatives,
+            blocks: JacobianBlocks::with_shape(&model.shape()),
+            jac: sizes.zeros_yy::<M>(),
+            lu: Lu::new(3 * ny),
+            mu: DVector::zeros(3 * ny),
+            stage: State::with_sizes(sizes),
+            yj: sizes.zeros_y::<M>(),
+            dg: State::with_sizes(sizes),
+            weights: ResidualBlocks::with_sizes(&sizes),
+            each: vec![0.0; count],
+            theta: vec![0.0; count],
+        }
+    }
+
+    /// Carries `bar` from a step's end (`ȳ_{n+1}`) to its start (`ȳ_n`), adding the
+    /// parameters' part into `theta`; returns the running cost's quadrature over the step.
+    fn step(
+        &mut self,
+        model: &M,
+        step: &Step<M>,
+        running: Option<StateFunction<'_, M>>,
+        bar: &mut VecY<M>,
+    ) -> Result<f64, SimError> {
+        let l = self.layout;
+        let ny = l.len;
+        let size = 3 * ny;
+        let mass = |i: usize| if (l.q..l.v).contains(&i) || (l.p..l.lambda).contains(&i) { 1.0 } else { 0.0 };
+        let nodes = [C1, C2, C3];
+        let mut value = 0.0;
+        self.mu.fill(0.0);
+        self.mu.as_mut_slice()[2 * ny..].copy_from_slice(bar.as_slice());
+        let mat = self.lu.matrix_mut();
+        mat.fill(0.0);
+        for j in 0..3 {
+            let t = step.t + nodes[j] * step.h;
+            self.yj.copy_from(&step.y);
+            self.yj += &step.z[j];
+            self.stage.read_y(&self.yj);
+            let s = &self.stage;
+            model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.blocks);
+            crate::model::flat::jacobian::<M, M::Algebra>(&model.sizes(), &self.blocks, &mut self.jac);
+            if let Some(r) = running {
+                // The quadrature h Σ_j b_j r(t_j, Y_j), b_j = a_3j.
+                let b = step.h * A[2][j];
+                value += b * r(t, s, &mut self.dg);
+                self.dg.write_y(&mut self.yj);
+                for (m, g) in self.mu.as_mut_slice()[j * ny..(j + 1) * ny].iter_mut().zip(self.yj.iter()) {
+                    *m += b * g;
+                }
+            }
+            // Block row j, column k of (∂R/∂Y)ᵀ: δ_jk M − h a_kj J_jᵀ.
+            for k in 0..3 {
+                let c = step.h * A[k][j];
+                for col in 0..ny {
+                    for row in 0..ny {
+                        mat[(j * ny + row, k * ny + col)] = -c * self.jac[(col, row)];
+                    }
+                }
+            }
+            for i in 0..ny {
+                mat[(j * ny + i, j * ny + i)] += mass(i);
+            }
+        }
+        self.lu.factor().map_err(|_| SimError::SingularMatrix {
+            t: step.t,
+            h: step.h,
+            detail: "the transposed stage system of the adjoint sweep".into(),
+        })?;
+        self.lu.solve_slice(self.mu.as_mut_slice());
+        let mu = self.mu.as_slice();
+        debug_assert_eq!(mu.len(), size);
+        // ȳ_n = M Σ_k μ_k.
+        for (i, b) in bar.iter_mut().enumerate() {
+            *b = mass(i) * (mu[i] + mu[ny + i] + mu[2 * ny + i]);
+        }
+        if self.theta.is_empty() {
+            return Ok(value);
+        }
+        // θ̄ += Σ_j ω_jᵀ ∂f/∂θ(Y_j), the flat ∂f/∂θ being (0, −∂(∂L/∂v)/∂θ, ∂ṗ/∂θ, ∂(A v + b)/∂θ).
+        for j in 0..3 {
+            let t = step.t + nodes[j] * step.h;
+            let omega = |i: usize| step.h * (0..3).map(|k| A[k][j] * mu[k * ny + i]).sum::<f64>();
+            for (x, i) in self.weights.dl_dv.iter_mut().zip(l.v..l.p) {
+                *x = -omega(i);
+            }
+            for (x, i) in self.weights.momentum_rate.iter_mut().zip(l.p..l.lambda) {
+                *x = omega(i);
+            }
+            for (x, i) in self.weights.constraint_velocity.iter_mut().zip(l.lambda..l.len) {
+                *x = omega(i);
+            }
+            self.yj.copy_from(&step.y);
+            self.yj += &step.z[j];
+            self.stage.read_y(&self.yj);
+            let s = &self.stage;
+            (self.derivatives.transposed)(model, t, &s.q, &s.v, &s.lambda, &self.weights, &mut self.each);
+            for (theta, d) in self.theta.iter_mut().zip(&self.each) {
+                *theta += d;
+            }
+        }
+        Ok(value)
+    }
+}

@@ -1,0 +1,227 @@
+//! Adjoint gradients of Radau integrations.
+//!
+//! References: the forward sensitivities of the same run, solved exactly each step by the
+//! three stages' coupled system (the derivative of the discrete solution, so the two must
+//! agree to round-off, not to the tolerance); and central differences of whole simulations at
+//! perturbed parameters and initial values (to the tolerance).
+
+use dirac::adjoint::Objective;
+use dirac::nalgebra::DefaultAllocator;
+use dirac::prelude::*;
+use dirac::{Storage, Wrt};
+
+use crate::util::Rng;
+use crate::zoo::*;
+
+fn tight() -> RadauOptions {
+    RadauOptions { rtol: 1e-9, atol: 1e-11, ..RadauOptions::default() }
+}
+
+/// A random linear functional of the state: `cᵀ y` over every part of it.
+fn random_weights<M: LagrangeDirac>(model: &M, seed: u64) -> State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut rng = Rng::new(seed);
+    let sizes = model.sizes();
+    let mut y = sizes.zeros_y::<M>();
+    y.iter_mut().for_each(|x| *x = rng.uniform(-1.0, 1.0));
+    State::from_y(sizes, &y)
+}
+
+fn dot<M: LagrangeDirac>(a: &State<M>, b: &State<M>) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    a.q.dot(&b.q) + a.v.dot(&b.v) + a.p.dot(&b.p) + a.lambda.dot(&b.lambda)
+}
+
+/// The adjoint gradient of `cᵀ y(T)` with respect to every parameter, initial position and
+/// initial velocity equals `cᵀ s(T)` of the forward sensitivities of the same run, to
+/// `1e-10` relative to the largest of them (and of 1e-3: a zero sensitivity is zero to
+/// round-off of the others). The forward sensitivities are asked for all at once, so that
+/// each step solves them exactly (checked from the statistics).
+pub(crate) fn check_against_forward<M: Parameters>(model: &M, start: &State<M>, t_end: f64, seed: u64)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.coordinate_names();
+    let mut wrt = Sensitivities::all_parameters(model);
+    for name in &names {
+        let c = model.coordinate(name).expect("a coordinate");
+        wrt = wrt.initial_position(c).initial_velocity(c);
+    }
+    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let recording = radau.record(0.0, start, t_end).expect("integrates");
+    let stats = radau.stats();
+    // Exactly: by the coupled system, or (a linear model's) by one direct solve per column
+    // with the step's factored matrix, which is then the stage system's own.
+    let direct = stats.sensitivity_iterations == stats.steps * wrt.len();
+    assert!(
+        stats.coupled_sensitivity_steps == stats.steps || direct,
+        "every step's sensitivities solved exactly: {stats:?}"
+    );
+    assert_eq!(recording.steps(), stats.steps);
+    let c = random_weights(model, seed);
+    let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
+        out.clone_from(&c);
+        dot(&c, y)
+    };
+    let gradient = recording.gradient(model, &Objective::terminal(&terminal)).expect("a gradient");
+    let mut s = State::with_sizes(model.sizes());
+    let mut forward = Vec::new();
+    for (j, wrt) in wrt.wrt().iter().enumerate() {
+        assert!(radau.sensitivity(j, &mut s));
+        let adjoint = match *wrt {
+            Wrt::Parameter(k) => gradient.parameters[k],
+            Wrt::InitialPosition(i) => gradient.positions[i],
+            Wrt::InitialVelocity(i) => gradient.velocities[i],
+        };
+        forward.push((*wrt, dot(&c, &s), adjoint));
+    }
+    let scale = forward.iter().fold(1e-3f64, |m, (_, f, _)| m.max(f.abs()));
+    for (j, (_, f, a)) in forward.iter().enumerate() {
+        assert!(
+            (f - a).abs() <= 1e-10 * scale,
+            "∂G/∂{}: forward {f}, adjoint {a} (scale {scale})",
+            radau.sensitivity_names()[j]
+        );
+    }
+    let end = recording.end(model);
+    assert!((gradient.value - dot(&c, &end)).abs() <= 1e-14 * gradient.value.abs().max(1.0));
+}
+
+#[test]
+fn adjoint_gradients_equal_forward_sensitivities_of_the_same_run() {
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    let q = VecQ::<Pendulum>::new(0.7 * 0.8f64.sin(), -0.7 * 0.8f64.cos());
+    let start =
+        consistent_state(&pendulum, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
+            .expect("a consistent start");
+    check_against_forward(&pendulum, &start, 2.0, 1);
+
+    let disk = RollingDisk { m: 2.0, r: 0.3, i_roll: 0.09, i_turn: 0.045 };
+    let mut v = VecQ::<RollingDisk>::zeros();
+    (v[0], v[2], v[3]) = (0.6, 2.0, 0.7);
+    let start = consistent_state(&disk, 0.0, &VecQ::<RollingDisk>::zeros(), &v, Consistency::default())
+        .expect("consistent");
+    check_against_forward(&disk, &start, 2.0, 2);
+
+    let circuit = LcCircuit { ind: 1.5, cap: 0.4 };
+    let start = consistent_state(
+        &circuit,
+        0.0,
+        &VecQ::<LcCircuit>::new(0.0, 0.5),
+        &VecQ::<LcCircuit>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    check_against_forward(&circuit, &start, 3.0, 3);
+
+    let chain = paper_chain();
+    check_against_forward(&chain, &paper_chain_start(&chain), 2.0, 4);
+
+    let coupled =
+        CoupledByOneForm { wheel: Wheel { j: 0.2, k_theta: 3.0 }, cart: Cart { m: 1.5, k: 2.0 }, c: 0.7 };
+    let mut q = VecQ::<CoupledByOneForm>::zeros();
+    q[0] = 0.3;
+    let start =
+        consistent_state(&coupled, 0.0, &q, &VecQ::<CoupledByOneForm>::zeros(), Consistency::default())
+            .expect("consistent");
+    check_against_forward(&coupled, &start, 2.0, 5);
+}
+
+/// A running cost: the gradient of `∫ ½ |q|² dt + x(T)` of the pendulum against central
+/// differences of whole runs (each recomputing the objective by the same quadrature) in every
+/// parameter and initial velocity, to the tolerance.
+#[test]
+fn adjoint_gradients_of_a_running_cost_match_central_differences() {
+    let options = RadauOptions { rtol: 1e-11, atol: 1e-13, ..RadauOptions::default() };
+    let start_of = |p: &Pendulum, v0: VecQ<Pendulum>| {
+        let q = VecQ::<Pendulum>::new(p.l * 0.8f64.sin(), -p.l * 0.8f64.cos());
+        consistent_state(p, 0.0, &q, &v0, Consistency::default()).expect("a consistent start")
+    };
+    let running = |_: f64, y: &State<Pendulum>, out: &mut State<Pendulum>| {
+        out.q.copy_from(&y.q);
+        out.v.fill(0.0);
+        out.p.fill(0.0);
+        out.lambda.fill(0.0);
+        0.5 * y.q.norm_squared()
+    };
+    let terminal = |_: f64, y: &State<Pendulum>, out: &mut State<Pendulum>| {
+        out.q.fill(0.0);
+        out.v.fill(0.0);
+        out.p.fill(0.0);
+        out.lambda.fill(0.0);
+        out.q[0] = 1.0;
+        y.q[0]
+    };
+    let objective = Objective::terminal(&terminal).with_running(&running);
+    let run = |p: &Pendulum, v0: VecQ<Pendulum>| {
+        let mut radau = Radau::new(p, options).expect("valid");
+        let recording = radau.record(0.0, &start_of(p, v0), 1.5).expect("integrates");
+        recording.gradient(p, &objective).expect("a gradient")
+    };
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    let v0 = VecQ::<Pendulum>::new(0.2, 0.1);
+    let gradient = run(&pendulum, v0);
+    for k in 0..pendulum.parameter_count() {
+        let theta = pendulum.parameter_value(k);
+        let step = 1e-4 * theta;
+        let at = |value: f64| {
+            let mut moved = pendulum.clone();
+            moved.set_parameter_value(k, value);
+            run(&moved, v0).value
+        };
+        let fd = (at(theta + step) - at(theta - step)) / (2.0 * step);
+        let name = &pendulum.parameter_names()[k];
+        assert!(
+            (gradient.parameters[k] - fd).abs() <= 1e-6 * fd.abs().max(1.0),
+            "∂G/∂{name}: adjoint {}, central difference {fd}",
+            gradient.parameters[k]
+        );
+    }
+    for i in 0..2 {
+        let step = 1e-5;
+        let at = |delta: f64| {
+            let mut v = v0;
+            v[i] += delta;
+            run(&pendulum, v).value
+        };
+        let fd = (at(step) - at(-step)) / (2.0 * step);
+        assert!(
+            (gradient.velocities[i] - fd).abs() <= 1e-6 * fd.abs().max(1.0),
+            "∂G/∂v0[{i}]: adjoint {}, central difference {fd}",
+            gradient.velocities[i]
+        );
+    }
+}
+
+/// What the sweep cannot differentiate is refused by name before any work: a model too large
+/// for the dense transposed stage system, and a run with projection on.
+#[test]
+fn adjoints_out_of_reach_are_refused_with_the_reason() {
+    let ladder = unit_ladder(200);
+    let start = ladder_at_rest(&ladder, &pulse(200));
+    let mut radau = Radau::new(&ladder, RadauOptions::tolerances(1e-6, 1e-6)).expect("valid");
+    let recording = radau.record(0.0, &start, 0.01).expect("integrates");
+    let terminal = |_: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
+        out.clone_from(y);
+        0.0
+    };
+    let error = recording.gradient(&ladder, &Objective::terminal(&terminal)).expect_err("too large");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("dense")),
+        "{error}"
+    );
+    let pendulum = unit_pendulum();
+    let options = RadauOptions { projection: true, ..RadauOptions::default() };
+    let error = Radau::new(&pendulum, options)
+        .expect("valid")
+        .record(0.0, &horizontal_start(&pendulum), 1.0)
+        .expect_err("projection has no derivative");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("projection")),
+        "{error}"
+    );
+}
