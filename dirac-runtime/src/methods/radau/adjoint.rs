@@ -23,27 +23,31 @@
 //! with the transpose of the consistent initial sensitivities' map, which carries `ȳ_0` to
 //! the initial positions and velocities and adds the parameters' part of the initial state.
 //!
-//! The transposed stage system is assembled dense, `3 (3n + m)` unknowns, and factored once a
-//! step: the reference the condensed and sparse solves are checked against. Nothing allocates
-//! in a backward step.
+//! The transposed stage system is condensed by the Lagrange-Dirac structure as the forward
+//! one is ([`Sweep::step`]), to the momenta's and multipliers' adjoints of the three stages:
+//! `3 (n + m)` unknowns, whose matrix is the transpose of the forward coupled one, factored
+//! dense once a step. Nothing allocates in a backward step.
 
 use nalgebra::{DVector, DefaultAllocator, Dyn};
 
 use super::Radau;
+use super::coupled::assemble;
+use super::stages::three;
 use super::tableau::{A, C1, C2, C3};
+use crate::algebra::Algebra;
 use crate::algebra::lu::Lu;
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
-use crate::shape::dims::{MatYY, Storage, VecQ, VecY};
+use crate::shape::dims::{Storage, VecQ, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::integrator::Integrator;
 use crate::simulate::sensitivity::Initial;
 
-/// The most unknowns of the transposed stage system solved dense: 1200 (a model of 400 state
-/// slots) keeps its matrix at 11.5 MB and its factorisation under a second a step.
+/// The most unknowns of the condensed transposed stage system, `3 (n + m)`, solved dense:
+/// 1200 keeps its matrix at 11.5 MB and its factorisation under a second a step.
 pub const DENSE_LIMIT: usize = 1200;
 
 /// An objective's gradient with respect to a state, written into `out` (every part of it: the
@@ -203,13 +207,13 @@ where
         M: Parameters,
     {
         let sizes = model.sizes();
-        if 3 * sizes.ny() > DENSE_LIMIT {
+        let unknowns = 3 * (sizes.nq + sizes.nc);
+        if unknowns > DENSE_LIMIT {
             return Err(SimError::InvalidOption {
                 what: "adjoint",
                 reason: format!(
-                    "the transposed stage system has {} unknowns and is solved dense, up to {DENSE_LIMIT}: \
-                     the sparse adjoint for models this large is not implemented",
-                    3 * sizes.ny()
+                    "the transposed stage system has {unknowns} unknowns and is solved dense, up to \
+                     {DENSE_LIMIT}: the sparse adjoint for models this large is not implemented"
                 ),
             });
         }
@@ -242,13 +246,16 @@ where
 {
     layout: Layout,
     derivatives: ParameterDerivatives<M>,
-    blocks: JacobianBlocks<M, M::Algebra>,
-    /// The flat Jacobian `∂f/∂y` at a stage.
-    jac: MatYY<M>,
-    /// The transposed stage system, `3 (3n + m)` square.
+    /// The Jacobian blocks at the three stages.
+    jac: [JacobianBlocks<M, M::Algebra>; 3],
+    /// The condensed transposed stage system, `3 (n + m)` square.
     lu: Lu<f64, Dyn>,
-    /// Its right-hand side `Ȳ`, then its solution `μ`.
-    mu: DVector<f64>,
+    /// Its right-hand side, then its solution `(μ_p, −ν_λ)` stage by stage.
+    x: DVector<f64>,
+    /// `Ȳ_j`, the objective's gradient with respect to each stage value.
+    ybar: [VecY<M>; 3],
+    /// `ν_j = h Σ_k a_kj μ_k` at each stage.
+    nu: [VecY<M>; 3],
     stage: State<M>,
     yj: VecY<M>,
     dg: State<M>,
@@ -264,15 +271,17 @@ where
 {
     fn new(model: &M, derivatives: ParameterDerivatives<M>) -> Self {
         let sizes = model.sizes();
-        let ny = sizes.ny();
+        let layout = Layout::new(sizes);
         let count = model.parameter_names().len();
+        let shape = model.shape();
         Sweep {
-            layout: Layout::new(sizes),
+            layout,
             derivatives,
-            blocks: JacobianBlocks::with_shape(&model.shape()),
-            jac: sizes.zeros_yy::<M>(),
-            lu: Lu::new(3 * ny),
-            mu: DVector::zeros(3 * ny),
+            jac: core::array::from_fn(|_| JacobianBlocks::with_shape(&shape)),
+            lu: Lu::new(3 * (sizes.nq + sizes.nc)),
+            x: DVector::zeros(3 * (sizes.nq + sizes.nc)),
+            ybar: three(sizes),
+            nu: three(sizes),
             stage: State::with_sizes(sizes),
             yj: sizes.zeros_y::<M>(),
             dg: State::with_sizes(sizes),
@@ -284,6 +293,21 @@ where
 
     /// Carries `bar` from a step's end (`ȳ_{n+1}`) to its start (`ȳ_n`), adding the
     /// parameters' part into `theta`; returns the running cost's quadrature over the step.
+    ///
+    /// The transposed stage system `M μ_j − J_jᵀ ν_j = Ȳ_j`, `ν = h (Aᵀ ⊗ I) μ`, condensed by
+    /// the elimination that condenses the forward one, transposed: its unknowns are the
+    /// momenta's `μ_p` and the multipliers' `−ν_λ` of the three stages, its matrix the
+    /// transpose of the forward coupled matrix ([`assemble`]), its right-hand side
+    /// `Ȳ_v,j + W_jᵀ Ȳ_p,j + h Σ_k a_kj (Ȳ_q,k + G_kᵀ Ȳ_p,k)` and `Ȳ_λ,j`. The rest follows by
+    /// substitution:
+    ///
+    /// ```text
+    /// ν_p,j = h Σ_k a_kj μ_p,k,    ν_v,j = μ_p,j − Ȳ_p,j,
+    /// μ_q,j = Ȳ_q,j − G_jᵀ ν_v,j + D_jᵀ ν_p,j + C_jᵀ ν_λ,j,
+    /// ```
+    ///
+    /// with `G = L_vq`, `W = L_vv`, `D = ∂ṗ/∂q`, `E = ∂ṗ/∂v`, `C = ∂(A v)/∂q` at each stage;
+    /// `ȳ_n = M Σ_k μ_k` and the parameters' weights are `ν`.
     fn step(
         &mut self,
         model: &M,
@@ -292,73 +316,101 @@ where
         bar: &mut VecY<M>,
     ) -> Result<f64, SimError> {
         let l = self.layout;
-        let ny = l.len;
-        let size = 3 * ny;
-        let mass = |i: usize| if (l.q..l.v).contains(&i) || (l.p..l.lambda).contains(&i) { 1.0 } else { 0.0 };
+        let (n, m) = (l.v - l.q, l.len - l.lambda);
+        let h = step.h;
         let nodes = [C1, C2, C3];
         let mut value = 0.0;
-        self.mu.fill(0.0);
-        self.mu.as_mut_slice()[2 * ny..].copy_from_slice(bar.as_slice());
-        let mat = self.lu.matrix_mut();
-        mat.fill(0.0);
         for j in 0..3 {
-            let t = step.t + nodes[j] * step.h;
+            let t = step.t + nodes[j] * h;
             self.yj.copy_from(&step.y);
             self.yj += &step.z[j];
             self.stage.read_y(&self.yj);
             let s = &self.stage;
-            model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.blocks);
-            crate::model::flat::jacobian::<M, M::Algebra>(&model.sizes(), &self.blocks, &mut self.jac);
+            model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac[j]);
+            if j == 2 {
+                self.ybar[j].copy_from(bar);
+            } else {
+                self.ybar[j].fill(0.0);
+            }
             if let Some(r) = running {
                 // The quadrature h Σ_j b_j r(t_j, Y_j), b_j = a_3j.
-                let b = step.h * A[2][j];
+                let b = h * A[2][j];
                 value += b * r(t, s, &mut self.dg);
                 self.dg.write_y(&mut self.yj);
-                for (m, g) in self.mu.as_mut_slice()[j * ny..(j + 1) * ny].iter_mut().zip(self.yj.iter()) {
-                    *m += b * g;
-                }
-            }
-            // Block row j, column k of (∂R/∂Y)ᵀ: δ_jk M − h a_kj J_jᵀ.
-            for k in 0..3 {
-                let c = step.h * A[k][j];
-                for col in 0..ny {
-                    for row in 0..ny {
-                        mat[(j * ny + row, k * ny + col)] = -c * self.jac[(col, row)];
-                    }
-                }
-            }
-            for i in 0..ny {
-                mat[(j * ny + i, j * ny + i)] += mass(i);
+                self.ybar[j].axpy(b, &self.yj, 1.0);
             }
         }
+        let p_at = |j: usize| j * (n + m);
+        let lambda_at = |j: usize| j * (n + m) + n;
+        let mat = self.lu.matrix_mut();
+        assemble(&self.jac, h, n, m, mat.as_mut_slice());
+        mat.transpose_mut();
         self.lu.factor().map_err(|_| SimError::SingularMatrix {
             t: step.t,
-            h: step.h,
+            h,
             detail: "the transposed stage system of the adjoint sweep".into(),
         })?;
-        self.lu.solve_slice(self.mu.as_mut_slice());
-        let mu = self.mu.as_slice();
-        debug_assert_eq!(mu.len(), size);
-        // ȳ_n = M Σ_k μ_k.
-        for (i, b) in bar.iter_mut().enumerate() {
-            *b = mass(i) * (mu[i] + mu[ny + i] + mu[2 * ny + i]);
+        let x = self.x.as_mut_slice();
+        for j in 0..3 {
+            let rows = &mut x[p_at(j)..p_at(j) + n];
+            let ybar = self.ybar[j].as_slice();
+            rows.copy_from_slice(&ybar[l.v..l.p]);
+            M::Algebra::qq_tr_mul(&self.jac[j].l_vv, 1.0, &ybar[l.p..l.lambda], rows);
+            for (k, jk) in self.jac.iter().enumerate() {
+                let c = h * A[k][j];
+                let yk = self.ybar[k].as_slice();
+                M::Algebra::qq_tr_mul(&jk.l_vq, c, &yk[l.p..l.lambda], rows);
+                for (r, y) in rows.iter_mut().zip(&yk[l.q..l.v]) {
+                    *r += c * y;
+                }
+            }
+            x[lambda_at(j)..lambda_at(j) + m].copy_from_slice(&ybar[l.lambda..l.len]);
+        }
+        self.lu.solve_slice(self.x.as_mut_slice());
+        // ν at every stage (and μ_p, μ_q), by the substitutions; ȳ_n = M Σ_k μ_k.
+        let x = self.x.as_slice();
+        bar.fill(0.0);
+        for j in 0..3 {
+            let nu = self.nu[j].as_mut_slice();
+            let ybar = self.ybar[j].as_slice();
+            for (c, v) in nu[l.p..l.lambda].iter_mut().enumerate() {
+                *v = h * (0..3).map(|k| A[k][j] * x[p_at(k) + c]).sum::<f64>();
+            }
+            for (v, xi) in nu[l.lambda..l.len].iter_mut().zip(&x[lambda_at(j)..lambda_at(j) + m]) {
+                *v = -xi;
+            }
+            let mu_p = &x[p_at(j)..p_at(j) + n];
+            for ((v, mu), y) in nu[l.v..l.p].iter_mut().zip(mu_p).zip(&ybar[l.p..l.lambda]) {
+                *v = mu - y;
+            }
+            let b = bar.as_mut_slice();
+            for (bi, mu) in b[l.p..l.lambda].iter_mut().zip(mu_p) {
+                *bi += mu;
+            }
+            // μ_q,j into ȳ_n's positions.
+            let (nu_v, rest) = nu[l.v..].split_at(l.p - l.v);
+            let (nu_p, nu_lambda) = rest.split_at(l.lambda - l.p);
+            let bq = &mut b[l.q..l.v];
+            for (bi, y) in bq.iter_mut().zip(&ybar[l.q..l.v]) {
+                *bi += y;
+            }
+            let jj = &self.jac[j];
+            M::Algebra::qq_tr_mul(&jj.l_vq, -1.0, nu_v, bq);
+            M::Algebra::qq_tr_mul(&jj.dpdot_dq, 1.0, nu_p, bq);
+            M::Algebra::cq_tr_mul(&jj.dav_dq, 1.0, nu_lambda, bq);
         }
         if self.theta.is_empty() {
             return Ok(value);
         }
-        // θ̄ += Σ_j ω_jᵀ ∂f/∂θ(Y_j), the flat ∂f/∂θ being (0, −∂(∂L/∂v)/∂θ, ∂ṗ/∂θ, ∂(A v + b)/∂θ).
-        for j in 0..3 {
-            let t = step.t + nodes[j] * step.h;
-            let omega = |i: usize| step.h * (0..3).map(|k| A[k][j] * mu[k * ny + i]).sum::<f64>();
-            for (x, i) in self.weights.dl_dv.iter_mut().zip(l.v..l.p) {
-                *x = -omega(i);
+        // θ̄ += Σ_j ν_jᵀ ∂f/∂θ(Y_j), the flat ∂f/∂θ being (0, −∂(∂L/∂v)/∂θ, ∂ṗ/∂θ, ∂(A v + b)/∂θ).
+        for (j, node) in nodes.iter().enumerate() {
+            let t = step.t + node * h;
+            let nu = self.nu[j].as_slice();
+            for (w, v) in self.weights.dl_dv.iter_mut().zip(&nu[l.v..l.p]) {
+                *w = -v;
             }
-            for (x, i) in self.weights.momentum_rate.iter_mut().zip(l.p..l.lambda) {
-                *x = omega(i);
-            }
-            for (x, i) in self.weights.constraint_velocity.iter_mut().zip(l.lambda..l.len) {
-                *x = omega(i);
-            }
+            self.weights.momentum_rate.as_mut_slice().copy_from_slice(&nu[l.p..l.lambda]);
+            self.weights.constraint_velocity.as_mut_slice().copy_from_slice(&nu[l.lambda..l.len]);
             self.yj.copy_from(&step.y);
             self.yj += &step.z[j];
             self.stage.read_y(&self.yj);

@@ -175,44 +175,7 @@ impl Coupled {
     where
         DefaultAllocator: Storage<M>,
     {
-        let starts = [self.starts(0), self.starts(1), self.starts(2)];
-        let (vs, ls) = (starts.map(|s| s.0), starts.map(|s| s.1));
-        let size = 3 * (self.n + self.m);
-        // Column-major storage: entry (row, column) at `column * size + row`.
-        let mat = self.lu.matrix();
-        mat.fill(0.0);
-        // Momentum balance of stage r, in V_c: δ_rc W_r + h a_rc (G_r − E_c)
-        //   − h² Σ_k a_rk a_kc D_k.
-        for (r, jr) in jac.iter().enumerate() {
-            for (c, jc) in jac.iter().enumerate() {
-                let mut block = Block { mat: &mut *mat, size, row: vs[r], column: vs[c] };
-                let a = h * A[r][c];
-                if r == c {
-                    block.add::<M, Alg>(&jr.l_vv, 1.0);
-                }
-                block.add::<M, Alg>(&jr.l_vq, a);
-                block.add::<M, Alg>(&jc.dpdot_dv, -a);
-                for (k, jk) in jac.iter().enumerate() {
-                    block.add::<M, Alg>(&jk.dpdot_dq, -h * h * A[r][k] * A[k][c]);
-                }
-            }
-        }
-        for (k, jk) in jac.iter().enumerate() {
-            // The multipliers of stage k in every stage's momentum balance: −h a_lk A_kᵀ.
-            Alg::cq_entries(&jk.a, |r, c, x| {
-                let column = (ls[k] + r) * size + c;
-                for l in 0..3 {
-                    mat[column + vs[l]] -= h * A[l][k] * x;
-                }
-                // Constraints of stage k: A_k V_k + h Σ_l a_kl C_k V_l.
-                mat[(vs[k] + c) * size + ls[k] + r] += x;
-            });
-            Alg::cq_entries(&jk.dav_dq, |r, c, x| {
-                for l in 0..3 {
-                    mat[(vs[l] + c) * size + ls[k] + r] += h * A[k][l] * x;
-                }
-            });
-        }
+        assemble(jac, h, self.n, self.m, self.lu.matrix());
         self.lu.factor()
     }
 
@@ -305,6 +268,58 @@ impl Coupled {
             Alg::qq_mul(&jk.l_vq, 1.0, qk, zp);
             Alg::qq_mul(&jk.l_vv, 1.0, &x[v..v + n], zp);
         }
+    }
+}
+
+/// Writes the coupled matrix of a step of size `h` with the stage Jacobians `jac` into `mat`,
+/// column-major, `3 (n + m)` square: the unknowns `(V_k, Λ_k)` and the rows (momentum balance,
+/// constraints) of stage `k` from `k (n + m)`. The adjoint sweep factors its transpose.
+pub(crate) fn assemble<M: Dimensions, Alg: Algebra<M>>(
+    jac: &[JacobianBlocks<M, Alg>; 3],
+    h: f64,
+    n: usize,
+    m: usize,
+    mat: &mut [f64],
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let stage = |k: usize| (k * (n + m), k * (n + m) + n);
+    let starts = [stage(0), stage(1), stage(2)];
+    let (vs, ls) = (starts.map(|s| s.0), starts.map(|s| s.1));
+    let size = 3 * (n + m);
+    // Column-major storage: entry (row, column) at `column * size + row`.
+    mat.fill(0.0);
+    // Momentum balance of stage r, in V_c: δ_rc W_r + h a_rc (G_r − E_c)
+    //   − h² Σ_k a_rk a_kc D_k.
+    for (r, jr) in jac.iter().enumerate() {
+        for (c, jc) in jac.iter().enumerate() {
+            let mut block = Block { mat: &mut *mat, size, row: vs[r], column: vs[c] };
+            let a = h * A[r][c];
+            if r == c {
+                block.add::<M, Alg>(&jr.l_vv, 1.0);
+            }
+            block.add::<M, Alg>(&jr.l_vq, a);
+            block.add::<M, Alg>(&jc.dpdot_dv, -a);
+            for (k, jk) in jac.iter().enumerate() {
+                block.add::<M, Alg>(&jk.dpdot_dq, -h * h * A[r][k] * A[k][c]);
+            }
+        }
+    }
+    for (k, jk) in jac.iter().enumerate() {
+        // The multipliers of stage k in every stage's momentum balance: −h a_lk A_kᵀ.
+        Alg::cq_entries(&jk.a, |r, c, x| {
+            let column = (ls[k] + r) * size + c;
+            for l in 0..3 {
+                mat[column + vs[l]] -= h * A[l][k] * x;
+            }
+            // Constraints of stage k: A_k V_k + h Σ_l a_kl C_k V_l.
+            mat[(vs[k] + c) * size + ls[k] + r] += x;
+        });
+        Alg::cq_entries(&jk.dav_dq, |r, c, x| {
+            for l in 0..3 {
+                mat[(vs[l] + c) * size + ls[k] + r] += h * A[k][l] * x;
+            }
+        });
     }
 }
 
