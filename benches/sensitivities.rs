@@ -22,12 +22,15 @@
 #[path = "../tests/zoo/mod.rs"]
 mod zoo;
 
+#[path = "support/paired.rs"]
+mod paired;
+
 use std::hint::black_box;
-use std::time::Instant;
 
 use dirac::Storage;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
+use paired::paired;
 use zoo::*;
 
 fn options() -> RadauOptions {
@@ -70,7 +73,7 @@ where
     };
     assert_eq!(plain(), with(), "the sensitivities leave the steps alone");
     let steps = plain();
-    let (plain, with, ratio) = paired(plain, with);
+    let (plain, with, ratio) = paired(31, plain, with);
     println!(
         "| {name} | {count} | {steps} | {:.3} ms | {:.3} ms | {ratio:.2} | {} | {} | {:.2} |",
         plain * 1e3,
@@ -79,40 +82,6 @@ where
         1 + 2 * count,
         ratio / (1 + count) as f64,
     );
-}
-
-/// The median times of `a` and `b` and the median of their ratios `b / a`, over 31 pairs run
-/// alternately (`a b`, then `b a`), each timing enough calls to take at least 5 ms: a change in
-/// the machine's speed during the run then falls on both sides of most pairs.
-fn paired(mut a: impl FnMut() -> usize, mut b: impl FnMut() -> usize) -> (f64, f64, f64) {
-    let start = Instant::now();
-    a();
-    let calls = (5e-3 / start.elapsed().as_secs_f64()).ceil().max(1.0) as usize;
-    let time = |f: &mut dyn FnMut() -> usize| {
-        let start = Instant::now();
-        for _ in 0..calls {
-            f();
-        }
-        start.elapsed().as_secs_f64() / calls as f64
-    };
-    let (mut ta, mut tb, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
-    for pair in 0..31 {
-        let (x, y) = if pair % 2 == 0 {
-            let x = time(&mut a);
-            (x, time(&mut b))
-        } else {
-            let y = time(&mut b);
-            (time(&mut a), y)
-        };
-        ta.push(x);
-        tb.push(y);
-        ratios.push(y / x);
-    }
-    let median = |mut v: Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
-    };
-    (median(ta), median(tb), median(ratios))
 }
 
 /// The paper chain's `x1(20)` and its sensitivities to its six parameters, to set beside the

@@ -1,0 +1,92 @@
+//! What an adjoint gradient costs, in one process: the gradient of one objective with respect
+//! to every parameter of an LC ladder (each cell's inductance and capacitance, `N_θ = 2N`)
+//! against one plain solve of the same run, and against the forward sensitivities to all of
+//! them, so that the ratios are free of the machine's speed.
+//!
+//! The ladder's cells differ (`l_j = 1 + 0.3 sin j`), it starts from a flux pulse at rest, and
+//! runs over 5 s at `rtol = atol = 1e-8`; the objective is `½ |q(T)|²`. The adjoint side records
+//! the run ([`Radau::record`]) and sweeps back ([`Recording::gradient`]); the forward side solves
+//! with the sensitivities to all `N_θ` parameters and samples them at the end. Each pair is timed
+//! in 11 alternating pairs and the ratio is the median of the pairs' ratios. Run:
+//! `cargo bench --bench adjoint`.
+//!
+//! [`Radau::record`]: dirac::Radau::record
+//! [`Recording::gradient`]: dirac::adjoint::Recording::gradient
+
+#![allow(missing_docs)]
+
+#[path = "../tests/zoo/mod.rs"]
+mod zoo;
+
+#[path = "support/paired.rs"]
+mod paired;
+
+use std::hint::black_box;
+
+use dirac::adjoint::Objective;
+use dirac::prelude::*;
+use paired::paired;
+use zoo::*;
+
+fn options() -> RadauOptions {
+    RadauOptions::tolerances(1e-8, 1e-8)
+}
+
+fn main() {
+    println!(
+        "| cells | N_θ | steps | plain solve | adjoint gradient | ratio | forward sensitivities | ratio |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    let t_end = 5.0;
+    for n in [5, 20, 50, 120] {
+        let mut ladder = unit_ladder(n);
+        for (j, cell) in ladder.cells.iter_mut().enumerate() {
+            cell.l = 1.0 + 0.3 * (j as f64).sin();
+        }
+        let start = ladder_at_rest(&ladder, &pulse(n));
+        let count = ladder.parameter_count();
+        let terminal = |_: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
+            out.clone_from(y);
+            out.v.fill(0.0);
+            out.p.fill(0.0);
+            out.lambda.fill(0.0);
+            0.5 * y.q.norm_squared()
+        };
+        let objective = Objective::terminal(&terminal);
+        let sampling = Sampling::Times(vec![t_end]);
+        let plain = || {
+            let solution =
+                Radau::new(&ladder, options()).expect("valid").solve(0.0, &start, t_end, &sampling);
+            black_box(solution.expect("solves")).stats.steps
+        };
+        let adjoint = || {
+            let mut radau = Radau::new(&ladder, options()).expect("valid");
+            let recording = radau.record(0.0, &start, t_end).expect("integrates");
+            black_box(recording.gradient(&ladder, &objective).expect("a gradient"));
+            recording.steps()
+        };
+        assert_eq!(plain(), adjoint(), "the recording takes the plain solve's steps");
+        let steps = plain();
+        let (t_plain, t_adjoint, ratio) = paired(11, plain, adjoint);
+        // The forward sensitivities to every parameter, up to 100 of them (beyond, their cost
+        // only grows linearly: the crossover is far below).
+        let forward = if count <= 100 {
+            let wrt = Sensitivities::all_parameters(&ladder);
+            let forward = || {
+                let mut radau =
+                    Radau::new(&ladder, options()).expect("valid").with_sensitivities(&wrt).expect("valid");
+                let solution = radau.solve_with_sensitivities(0.0, &start, t_end, &sampling);
+                black_box(solution.expect("solves")).stats.steps
+            };
+            let (_, t_forward, ratio) = paired(11, plain, forward);
+            format!("{:.3} ms | {ratio:.2}", t_forward * 1e3)
+        } else {
+            "– | –".to_owned()
+        };
+        println!(
+            "| {n} | {count} | {steps} | {:.3} ms | {:.3} ms | {ratio:.2} | {forward} |",
+            t_plain * 1e3,
+            t_adjoint * 1e3,
+        );
+    }
+}
