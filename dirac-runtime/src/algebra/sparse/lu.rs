@@ -106,6 +106,11 @@ impl<T: Scalar> SparseLu<T> {
         &self.order.row_idx
     }
 
+    /// The pattern's rows (column by column) and the values to factor, written in their order.
+    pub fn pattern_and_values(&mut self) -> (&[usize], &mut [T]) {
+        (&self.order.row_idx, &mut self.values)
+    }
+
     /// Factors the matrix held in `values`: with the last pivots when they still serve, else
     /// with new ones. A pivot below `ε · 10⁻³` times the largest entry is a zero one.
     pub fn factor(&mut self) -> Result<(), Singular> {

@@ -4,7 +4,7 @@
 //! ordering is computed once. Memory and work grow with the number of nonzeros, linearly in
 //! the number of cells of a chain or ladder.
 
-mod lu;
+pub(crate) mod lu;
 mod saddle;
 
 use std::sync::{Arc, OnceLock};

@@ -26,17 +26,20 @@
 //! The transposed stage system is condensed by the Lagrange-Dirac structure as the forward
 //! one is ([`Sweep::step`]), to the momenta's and multipliers' adjoints of the three stages:
 //! `3 (n + m)` unknowns, whose matrix is the transpose of the forward coupled one, factored
-//! dense once a step. Nothing allocates in a backward step.
+//! once a step: dense for a model stored dense, in compressed columns by the sparse LU for one
+//! stored sparse (its pattern fixed by the blocks', ordered once). Nothing allocates in a
+//! backward step.
 
 use nalgebra::{DVector, DefaultAllocator, Dyn};
 
 use super::Radau;
-use super::coupled::assemble;
+use super::coupled::{Columns, Entries, assemble};
 use super::stages::three;
 use super::tableau::{A, C1, C2, C3};
 use crate::algebra::Algebra;
-use crate::algebra::lu::Lu;
+use crate::algebra::lu::{Lu, Singular};
 use crate::algebra::newton::NewtonSolver;
+use crate::algebra::sparse::lu::{Ordering, SparseLu};
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
@@ -46,8 +49,9 @@ use crate::shape::layout::Layout;
 use crate::simulate::integrator::Integrator;
 use crate::simulate::sensitivity::Initial;
 
-/// The most unknowns of the condensed transposed stage system, `3 (n + m)`, solved dense:
-/// 1200 keeps its matrix at 11.5 MB and its factorisation under a second a step.
+/// The most unknowns of the condensed transposed stage system, `3 (n + m)`, of a model stored
+/// dense: 1200 keeps its matrix at 11.5 MB and its factorisation under a second a step. A model
+/// stored sparse has its transposed system assembled and factored sparse, whatever its size.
 pub const DENSE_LIMIT: usize = 1200;
 
 /// An objective's gradient with respect to a state, written into `out` (every part of it: the
@@ -207,18 +211,8 @@ where
         M: Parameters,
     {
         let sizes = model.sizes();
-        let unknowns = 3 * (sizes.nq + sizes.nc);
-        if unknowns > DENSE_LIMIT {
-            return Err(SimError::InvalidOption {
-                what: "adjoint",
-                reason: format!(
-                    "the transposed stage system has {unknowns} unknowns and is solved dense, up to \
-                     {DENSE_LIMIT}: the sparse adjoint for models this large is not implemented"
-                ),
-            });
-        }
         let derivatives = ParameterDerivatives::<M>::of();
-        let mut sweep = Sweep::new(model, derivatives);
+        let mut sweep = Sweep::new(model, derivatives)?;
         let mut value = 0.0;
         let mut bar = sizes.zeros_y::<M>();
         if let Some(g) = objective.terminal {
@@ -248,8 +242,8 @@ where
     derivatives: ParameterDerivatives<M>,
     /// The Jacobian blocks at the three stages.
     jac: [JacobianBlocks<M, M::Algebra>; 3],
-    /// The condensed transposed stage system, `3 (n + m)` square.
-    lu: Lu<f64, Dyn>,
+    /// The condensed transposed stage system's factors, `3 (n + m)` square.
+    factors: Factors,
     /// Its right-hand side, then its solution `(μ_p, −ν_λ)` stage by stage.
     x: DVector<f64>,
     /// `Ȳ_j`, the objective's gradient with respect to each stage value.
@@ -269,16 +263,34 @@ impl<M: LagrangeDirac> Sweep<M>
 where
     DefaultAllocator: Storage<M>,
 {
-    fn new(model: &M, derivatives: ParameterDerivatives<M>) -> Self {
+    fn new(model: &M, derivatives: ParameterDerivatives<M>) -> Result<Self, SimError> {
         let sizes = model.sizes();
         let layout = Layout::new(sizes);
         let count = model.parameter_names().len();
         let shape = model.shape();
-        Sweep {
+        let jac: [JacobianBlocks<M, M::Algebra>; 3] =
+            core::array::from_fn(|_| JacobianBlocks::with_shape(&shape));
+        let (n, m) = (sizes.nq, sizes.nc);
+        let unknowns = 3 * (n + m);
+        let factors = if M::Algebra::dense_qq(&jac[0].l_vv).is_some() {
+            if unknowns > DENSE_LIMIT {
+                return Err(SimError::InvalidOption {
+                    what: "adjoint",
+                    reason: format!(
+                        "the transposed stage system of this model stored dense has {unknowns} unknowns, \
+                         above {DENSE_LIMIT}: store it sparse (a model made of arrays of subsystems is)"
+                    ),
+                });
+            }
+            Factors::Dense(Lu::new(unknowns))
+        } else {
+            Factors::Sparse(SparseTransposed::new(&jac, n, m))
+        };
+        Ok(Sweep {
             layout,
             derivatives,
-            jac: core::array::from_fn(|_| JacobianBlocks::with_shape(&shape)),
-            lu: Lu::new(3 * (sizes.nq + sizes.nc)),
+            jac,
+            factors,
             x: DVector::zeros(3 * (sizes.nq + sizes.nc)),
             ybar: three(sizes),
             nu: three(sizes),
@@ -288,7 +300,7 @@ where
             weights: ResidualBlocks::with_sizes(&sizes),
             each: vec![0.0; count],
             theta: vec![0.0; count],
-        }
+        })
     }
 
     /// Carries `bar` from a step's end (`ȳ_{n+1}`) to its start (`ȳ_n`), adding the
@@ -342,10 +354,18 @@ where
         }
         let p_at = |j: usize| j * (n + m);
         let lambda_at = |j: usize| j * (n + m) + n;
-        let mat = self.lu.matrix_mut();
-        assemble(&self.jac, h, n, m, mat.as_mut_slice());
-        mat.transpose_mut();
-        self.lu.factor().map_err(|_| SimError::SingularMatrix {
+        let factored = match &mut self.factors {
+            Factors::Dense(lu) => {
+                let mat = lu.matrix_mut();
+                mat.fill(0.0);
+                let size = 3 * (n + m);
+                assemble(&self.jac, h, n, m, &mut Columns { mat: mat.as_mut_slice(), size });
+                mat.transpose_mut();
+                lu.factor()
+            }
+            Factors::Sparse(sparse) => sparse.factor(&self.jac, h, n, m),
+        };
+        factored.map_err(|_| SimError::SingularMatrix {
             t: step.t,
             h,
             detail: "the transposed stage system of the adjoint sweep".into(),
@@ -366,7 +386,10 @@ where
             }
             x[lambda_at(j)..lambda_at(j) + m].copy_from_slice(&ybar[l.lambda..l.len]);
         }
-        self.lu.solve_slice(self.x.as_mut_slice());
+        match &mut self.factors {
+            Factors::Dense(lu) => lu.solve_slice(self.x.as_mut_slice()),
+            Factors::Sparse(sparse) => sparse.lu.solve(self.x.as_mut_slice()),
+        }
         // ν at every stage (and μ_p, μ_q), by the substitutions; ȳ_n = M Σ_k μ_k.
         let x = self.x.as_slice();
         bar.fill(0.0);
@@ -421,5 +444,87 @@ where
             }
         }
         Ok(value)
+    }
+}
+
+/// The factors of the condensed transposed stage system.
+// One per sweep: the variants' sizes differ, but no array of them is made.
+#[allow(clippy::large_enum_variant)]
+enum Factors {
+    /// Of a model stored dense: the matrix assembled dense, transposed and factored.
+    Dense(Lu<f64, Dyn>),
+    /// Of a model stored sparse: assembled into the transpose's compressed columns.
+    Sparse(SparseTransposed),
+}
+
+/// The transpose of the forward coupled matrix in compressed columns, whose pattern the
+/// blocks' patterns fix (every coefficient of the method is nonzero), ordered once and
+/// refactored each step by the sparse LU the saddle-point systems use.
+struct SparseTransposed {
+    col_ptr: Vec<usize>,
+    lu: SparseLu<f64>,
+}
+
+impl SparseTransposed {
+    /// The pattern from the stage Jacobians' patterns, and its ordering.
+    fn new<M: LagrangeDirac>(jac: &[JacobianBlocks<M, M::Algebra>; 3], n: usize, m: usize) -> Self
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        /// Every entry the coupled matrix stores, as `(column, row)` of its transpose.
+        struct Pattern(Vec<(usize, usize)>);
+        impl Entries for Pattern {
+            fn add(&mut self, row: usize, column: usize, _: f64) {
+                self.0.push((row, column));
+            }
+        }
+        let size = 3 * (n + m);
+        let mut pattern = Pattern(Vec::new());
+        // Unit coefficients: the pattern, whatever the step size.
+        assemble(jac, 1.0, n, m, &mut pattern);
+        let mut entries = pattern.0;
+        entries.sort_unstable();
+        entries.dedup();
+        let mut col_ptr = vec![0usize; size + 1];
+        for &(column, _) in &entries {
+            col_ptr[column + 1] += 1;
+        }
+        for c in 0..size {
+            col_ptr[c + 1] += col_ptr[c];
+        }
+        let row_idx = entries.into_iter().map(|(_, row)| row).collect();
+        let order = Ordering::new(size, col_ptr.clone(), row_idx);
+        SparseTransposed { col_ptr, lu: SparseLu::new(std::sync::Arc::new(order)) }
+    }
+
+    /// Assembles the transpose of the coupled matrix of a step of size `h` and factors it.
+    fn factor<M: LagrangeDirac>(
+        &mut self,
+        jac: &[JacobianBlocks<M, M::Algebra>; 3],
+        h: f64,
+        n: usize,
+        m: usize,
+    ) -> Result<(), Singular>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        /// The coupled matrix's entry `(row, column)` added at `(column, row)` of the transpose.
+        struct Transposed<'a> {
+            col_ptr: &'a [usize],
+            rows: &'a [usize],
+            values: &'a mut [f64],
+        }
+        impl Entries for Transposed<'_> {
+            fn add(&mut self, row: usize, column: usize, value: f64) {
+                let span = self.col_ptr[row]..self.col_ptr[row + 1];
+                let at = self.rows[span.clone()].binary_search(&column).expect("an entry of the pattern");
+                self.values[span.start + at] += value;
+            }
+        }
+        let (col_ptr, lu) = (&self.col_ptr, &mut self.lu);
+        let (rows, values) = lu.pattern_and_values();
+        values.fill(0.0);
+        assemble(jac, h, n, m, &mut Transposed { col_ptr, rows, values });
+        lu.factor()
     }
 }

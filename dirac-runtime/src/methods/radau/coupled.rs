@@ -99,25 +99,52 @@ impl Factors {
     }
 }
 
-/// An `n × n` block of the coupled matrix (column-major, `size` rows), at `row`, `column`.
-struct Block<'a> {
-    mat: &'a mut [f64],
-    size: usize,
-    row: usize,
-    column: usize,
+/// Where the entries of the coupled matrix go: a dense column-major matrix, or a sparse one.
+pub(crate) trait Entries {
+    /// Adds `value` at `(row, column)`.
+    fn add(&mut self, row: usize, column: usize, value: f64);
+
+    /// Adds `coefficient` times the `n × n` block `x` with its first entry at `(row, column)`.
+    fn add_qq<M: Dimensions, Alg: Algebra<M>>(
+        &mut self,
+        x: &Alg::Qq,
+        coefficient: f64,
+        row: usize,
+        column: usize,
+    ) where
+        DefaultAllocator: Storage<M>,
+    {
+        if coefficient != 0.0 {
+            Alg::qq_entries(x, |i, c, y| self.add(row + i, column + c, coefficient * y));
+        }
+    }
 }
 
-impl Block<'_> {
-    /// Adds `coefficient` times `x` to the block: column by column where `x` is stored
-    /// densely, entry by entry otherwise.
-    fn add<M: Dimensions, Alg: Algebra<M>>(&mut self, x: &Alg::Qq, coefficient: f64)
-    where
+/// A dense square matrix stored column by column, `size` rows.
+pub(crate) struct Columns<'a> {
+    pub mat: &'a mut [f64],
+    pub size: usize,
+}
+
+impl Entries for Columns<'_> {
+    fn add(&mut self, row: usize, column: usize, value: f64) {
+        self.mat[column * self.size + row] += value;
+    }
+
+    /// Column by column where `x` is stored densely, entry by entry otherwise.
+    fn add_qq<M: Dimensions, Alg: Algebra<M>>(
+        &mut self,
+        x: &Alg::Qq,
+        coefficient: f64,
+        row: usize,
+        column: usize,
+    ) where
         DefaultAllocator: Storage<M>,
     {
         if coefficient == 0.0 {
             return;
         }
-        let (size, row, column) = (self.size, self.row, self.column);
+        let size = self.size;
         match Alg::dense_qq(x) {
             Some(d) if d.nrows() > 0 => {
                 let n = d.nrows();
@@ -175,7 +202,10 @@ impl Coupled {
     where
         DefaultAllocator: Storage<M>,
     {
-        assemble(jac, h, self.n, self.m, self.lu.matrix());
+        let (n, m) = (self.n, self.m);
+        let mat = self.lu.matrix();
+        mat.fill(0.0);
+        assemble(jac, h, n, m, &mut Columns { mat, size: 3 * (n + m) });
         self.lu.factor()
     }
 
@@ -271,53 +301,49 @@ impl Coupled {
     }
 }
 
-/// Writes the coupled matrix of a step of size `h` with the stage Jacobians `jac` into `mat`,
-/// column-major, `3 (n + m)` square: the unknowns `(V_k, Λ_k)` and the rows (momentum balance,
+/// Adds the coupled matrix of a step of size `h` with the stage Jacobians `jac` into `out`,
+/// `3 (n + m)` square: the unknowns `(V_k, Λ_k)` and the rows (momentum balance,
 /// constraints) of stage `k` from `k (n + m)`. The adjoint sweep factors its transpose.
-pub(crate) fn assemble<M: Dimensions, Alg: Algebra<M>>(
+pub(crate) fn assemble<M: Dimensions, Alg: Algebra<M>, E: Entries>(
     jac: &[JacobianBlocks<M, Alg>; 3],
     h: f64,
     n: usize,
     m: usize,
-    mat: &mut [f64],
+    out: &mut E,
 ) where
     DefaultAllocator: Storage<M>,
 {
     let stage = |k: usize| (k * (n + m), k * (n + m) + n);
     let starts = [stage(0), stage(1), stage(2)];
     let (vs, ls) = (starts.map(|s| s.0), starts.map(|s| s.1));
-    let size = 3 * (n + m);
-    // Column-major storage: entry (row, column) at `column * size + row`.
-    mat.fill(0.0);
     // Momentum balance of stage r, in V_c: δ_rc W_r + h a_rc (G_r − E_c)
     //   − h² Σ_k a_rk a_kc D_k.
     for (r, jr) in jac.iter().enumerate() {
         for (c, jc) in jac.iter().enumerate() {
-            let mut block = Block { mat: &mut *mat, size, row: vs[r], column: vs[c] };
+            let (row, column) = (vs[r], vs[c]);
             let a = h * A[r][c];
             if r == c {
-                block.add::<M, Alg>(&jr.l_vv, 1.0);
+                out.add_qq::<M, Alg>(&jr.l_vv, 1.0, row, column);
             }
-            block.add::<M, Alg>(&jr.l_vq, a);
-            block.add::<M, Alg>(&jc.dpdot_dv, -a);
+            out.add_qq::<M, Alg>(&jr.l_vq, a, row, column);
+            out.add_qq::<M, Alg>(&jc.dpdot_dv, -a, row, column);
             for (k, jk) in jac.iter().enumerate() {
-                block.add::<M, Alg>(&jk.dpdot_dq, -h * h * A[r][k] * A[k][c]);
+                out.add_qq::<M, Alg>(&jk.dpdot_dq, -h * h * A[r][k] * A[k][c], row, column);
             }
         }
     }
     for (k, jk) in jac.iter().enumerate() {
         // The multipliers of stage k in every stage's momentum balance: −h a_lk A_kᵀ.
         Alg::cq_entries(&jk.a, |r, c, x| {
-            let column = (ls[k] + r) * size + c;
             for l in 0..3 {
-                mat[column + vs[l]] -= h * A[l][k] * x;
+                out.add(vs[l] + c, ls[k] + r, -h * A[l][k] * x);
             }
             // Constraints of stage k: A_k V_k + h Σ_l a_kl C_k V_l.
-            mat[(vs[k] + c) * size + ls[k] + r] += x;
+            out.add(ls[k] + r, vs[k] + c, x);
         });
         Alg::cq_entries(&jk.dav_dq, |r, c, x| {
             for l in 0..3 {
-                mat[(vs[l] + c) * size + ls[k] + r] += h * A[k][l] * x;
+                out.add(ls[k] + r, vs[l] + c, h * A[k][l] * x);
             }
         });
     }
