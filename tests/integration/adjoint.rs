@@ -215,7 +215,9 @@ fn adjoint_gradients_of_a_running_cost_match_central_differences() {
 }
 
 /// What the sweep cannot differentiate is refused by name before any work: a run with the
-/// projection onto the constraints on.
+/// projection onto the constraints on, and a model with a contact (whose impacts `solve` would
+/// apply and the sweep would not differentiate: integrating through the floor instead would
+/// be a wrong answer).
 #[test]
 fn adjoints_out_of_reach_are_refused_with_the_reason() {
     let pendulum = unit_pendulum();
@@ -226,6 +228,17 @@ fn adjoints_out_of_reach_are_refused_with_the_reason() {
         .expect_err("projection has no derivative");
     assert!(
         matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("projection")),
+        "{error}"
+    );
+    let ball = BouncingBall { m: 1.0, g: 9.81, e: 0.8 };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let error = Radau::new(&ball, RadauOptions::default())
+        .expect("valid")
+        .record(0.0, &start, 2.0)
+        .expect_err("impacts are not differentiated");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("contacts")),
         "{error}"
     );
 }

@@ -47,6 +47,7 @@ use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Storage, VecQ, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::integrator::Integrator;
+use crate::simulate::laws::has_laws;
 use crate::simulate::sensitivity::Initial;
 
 /// The most unknowns of the condensed transposed stage system, `3 (n + m)`, of a model stored
@@ -164,7 +165,9 @@ where
     /// [`Recording::gradient`].
     ///
     /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
-    /// projection's derivative is not carried) or a drive (its inputs' derivative is not known).
+    /// projection's derivative is not carried), a drive (its inputs' derivative is not known),
+    /// or a model whose contacts, switching surfaces or laws `solve` would watch (the sweep
+    /// does not differentiate through their events and impacts yet).
     pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError> {
         let invalid = |reason: &str| Err(SimError::InvalidOption { what: "adjoint", reason: reason.into() });
         if self.options.projection {
@@ -172,6 +175,13 @@ where
         }
         if self.residual.driven() || self.feedback.is_some() {
             return invalid("a drive's inputs have no derivative to transpose: hold the inputs instead");
+        }
+        let model = self.model.get();
+        if !model.unilateral_names().is_empty() || model.has_switches() || has_laws(model) {
+            return invalid(
+                "the model's contacts, switching surfaces or laws have events and impacts, which the \
+                 sweep does not differentiate through yet",
+            );
         }
         self.start(t0, state, t_end)?;
         let sizes = self.model.sizes();
