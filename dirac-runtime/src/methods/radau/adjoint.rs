@@ -55,8 +55,8 @@ use crate::simulate::sensitivity::Initial;
 /// stored sparse has its transposed system assembled and factored sparse, whatever its size.
 pub const DENSE_LIMIT: usize = 1200;
 
-/// An objective's gradient with respect to a state, written into `out` (every part of it: the
-/// positions, velocities, momenta and multipliers), and its value returned.
+/// An objective's gradient with respect to a state, written into `out` (zeroed before each
+/// call, so that a closure writes only the parts it depends on), and its value returned.
 pub type StateFunction<'f, M> = &'f dyn Fn(f64, &State<M>, &mut State<M>) -> f64;
 
 /// The objective `G = g(t_N, y_N) + ∫ r(t, y) dt` of an adjoint sweep, over the discrete
@@ -228,6 +228,7 @@ where
         if let Some(g) = objective.terminal {
             let end = self.end(model);
             let t_end = self.steps.last().map_or(self.t0, |s| s.t + s.h);
+            zero(&mut sweep.dg);
             value += g(t_end, &end, &mut sweep.dg);
             sweep.dg.write_y(&mut bar);
         }
@@ -357,6 +358,7 @@ where
             if let Some(r) = running {
                 // The quadrature h Σ_j b_j r(t_j, Y_j), b_j = a_3j.
                 let b = h * A[2][j];
+                zero(&mut self.dg);
                 value += b * r(t, s, &mut self.dg);
                 self.dg.write_y(&mut self.yj);
                 self.ybar[j].axpy(b, &self.yj, 1.0);
@@ -537,4 +539,15 @@ impl SparseTransposed {
         assemble(jac, h, n, m, &mut Transposed { col_ptr, rows, values });
         lu.factor()
     }
+}
+
+/// Zeroes every part of a state, in place.
+fn zero<M: LagrangeDirac>(s: &mut State<M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    s.q.fill(0.0);
+    s.v.fill(0.0);
+    s.p.fill(0.0);
+    s.lambda.fill(0.0);
 }
