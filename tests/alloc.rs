@@ -15,6 +15,28 @@ struct Counting;
 
 thread_local! {
     static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+    /// The bytes this thread holds, and the most it held since [`peak_from_here`] last reset it.
+    static LIVE: Cell<isize> = const { Cell::new(0) };
+    static PEAK: Cell<isize> = const { Cell::new(0) };
+}
+
+fn grow(bytes: isize) {
+    let live = LIVE.with(|c| {
+        c.set(c.get() + bytes);
+        c.get()
+    });
+    PEAK.with(|c| c.set(c.get().max(live)));
+}
+
+/// Starts watching the most bytes held from now on, and returns the bytes held now.
+fn peak_from_here() -> isize {
+    let live = LIVE.with(Cell::get);
+    PEAK.with(|c| c.set(live));
+    live
+}
+
+fn peak() -> isize {
+    PEAK.with(Cell::get)
 }
 
 // SAFETY: every call is forwarded unchanged to the system allocator; counting touches only a
@@ -23,17 +45,20 @@ thread_local! {
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         ALLOCATIONS.with(|c| c.set(c.get() + 1));
+        grow(layout.size() as isize);
         // SAFETY: forwarded with the caller's layout.
         unsafe { System.alloc(layout) }
     }
 
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        grow(-(layout.size() as isize));
         // SAFETY: `ptr` was allocated by `System` with this layout.
         unsafe { System.dealloc(ptr, layout) }
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
         ALLOCATIONS.with(|c| c.set(c.get() + 1));
+        grow(new_size as isize - layout.size() as isize);
         // SAFETY: forwarded unchanged.
         unsafe { System.realloc(ptr, layout, new_size) }
     }
@@ -758,13 +783,22 @@ fn steps_with_sensitivities_do_not_allocate() {
 
 /// The allocations of an adjoint sweep over a run of `model` from `start` to `t_end`: its
 /// set-up only, if its backward steps allocate nothing. Returns them with the number of steps.
-fn allocations_in_adjoint_sweep<M: Parameters>(model: &M, start: &State<M>, t_end: f64) -> (usize, usize)
+fn allocations_in_adjoint_sweep<M: Parameters>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    budget: Option<usize>,
+) -> (usize, usize)
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let options = RadauOptions::tolerances(1e-8, 1e-8);
     let mut radau = Radau::new(model, options).expect("valid");
-    let recording = radau.record(0.0, start, t_end).expect("integrates");
+    let recording = match budget {
+        None => radau.record(0.0, start, t_end),
+        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
+    }
+    .expect("integrates");
     let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
         out.clone_from(y);
         0.5 * (y.q.norm_squared() + y.v.norm_squared() + y.p.norm_squared() + y.lambda.norm_squared())
@@ -784,21 +818,79 @@ where
 
 /// The backward steps of an adjoint sweep allocate nothing: a sweep over many more steps
 /// allocates exactly as much as one over a few (its set-up), on a model stored dense and on
-/// one made of an array of cells, stored sparse.
+/// one made of an array of cells, stored sparse; and with the run recorded within a budget,
+/// where the sweep also solves the steps between checkpoints again (replayed steps included).
 #[test]
 fn backward_steps_of_an_adjoint_sweep_do_not_allocate() {
     let p = unit_pendulum();
     let start = horizontal_start(&p);
-    let (short, few) = allocations_in_adjoint_sweep(&p, &start, 0.2);
-    let (long, many) = allocations_in_adjoint_sweep(&p, &start, 20.0);
-    assert!(many > 10 * few, "{few} and {many} steps");
-    assert_eq!(short, long, "pendulum: {few} steps allocate {short} times, {many} steps {long} times");
+    for budget in [None, Some(100_000)] {
+        let (short, few) = allocations_in_adjoint_sweep(&p, &start, 0.2, budget);
+        let (long, many) = allocations_in_adjoint_sweep(&p, &start, 20.0, budget);
+        assert!(many > 10 * few, "{few} and {many} steps");
+        assert_eq!(short, long, "pendulum: {few} steps allocate {short} times, {many} steps {long} times");
+    }
     let ladder = unit_ladder(10);
     let start = ladder_at_rest(&ladder, &pulse(10));
-    let (short, few) = allocations_in_adjoint_sweep(&ladder, &start, 0.5);
-    let (long, many) = allocations_in_adjoint_sweep(&ladder, &start, 20.0);
+    for budget in [None, Some(100_000)] {
+        let (short, few) = allocations_in_adjoint_sweep(&ladder, &start, 0.5, budget);
+        let (long, many) = allocations_in_adjoint_sweep(&ladder, &start, 20.0, budget);
+        assert!(many > 5 * few, "{few} and {many} steps");
+        assert_eq!(short, long, "ladder: {few} steps allocate {short} times, {many} steps {long} times");
+    }
+}
+
+/// The most bytes held above the start while a run of the ladder `model` to `t_end` is
+/// recorded (within `budget`, if given) and the gradient of `½ |y(T)|²` taken; and the steps.
+fn peak_bytes_of_a_gradient<M: Parameters>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    budget: Option<usize>,
+) -> (isize, usize)
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let base = peak_from_here();
+    let mut radau = Radau::new(model, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let recording = match budget {
+        None => radau.record(0.0, start, t_end),
+        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
+    }
+    .expect("integrates");
+    let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
+        out.clone_from(y);
+        0.5 * (y.q.norm_squared() + y.v.norm_squared() + y.p.norm_squared() + y.lambda.norm_squared())
+    };
+    let gradient =
+        recording.gradient(model, &dirac::adjoint::Objective::terminal(&terminal)).expect("a gradient");
+    assert!(gradient.parameters.iter().all(|g| g.is_finite()));
+    (peak() - base, recording.steps())
+}
+
+/// The memory of an adjoint gradient recorded within a budget, measured by the allocator: a
+/// twenty times longer run of a 50-cell ladder holds at most the budget and its steps' sizes
+/// more than a short one (the set-up, the same for both, is what the short one holds), while
+/// a recording that keeps every step grows by its stages, `4 (3n + m)` numbers a step.
+#[test]
+fn checkpoints_hold_the_memory_of_an_adjoint_gradient_within_the_budget() {
+    let ladder = unit_ladder(50);
+    let start = ladder_at_rest(&ladder, &pulse(50));
+    let budget = 100_000;
+    let (short, few) = peak_bytes_of_a_gradient(&ladder, &start, 5.0, Some(budget));
+    let (long, many) = peak_bytes_of_a_gradient(&ladder, &start, 100.0, Some(budget));
+    let (whole, steps) = peak_bytes_of_a_gradient(&ladder, &start, 100.0, None);
+    assert_eq!(steps, many);
+    let step_sizes = 16 * many as isize;
+    eprintln!(
+        "checkpointed: {few} steps {short} bytes, {many} steps {long} bytes (budget {budget}); \
+         every step kept: {whole} bytes"
+    );
     assert!(many > 5 * few, "{few} and {many} steps");
-    assert_eq!(short, long, "ladder: {few} steps allocate {short} times, {many} steps {long} times");
+    assert!(long - short <= budget as isize + step_sizes, "{short} bytes for {few} steps, {long} for {many}");
+    let sizes = ladder.sizes();
+    let stages = 4 * 8 * (3 * sizes.nq + sizes.nc) as isize;
+    assert!(whole - short >= (many as isize) * stages / 2, "every step kept: {whole} bytes");
 }
 
 #[path = "../examples/fmu/driven_pendulum.rs"]

@@ -46,14 +46,36 @@ pub(crate) fn check_against_forward<M: Parameters>(model: &M, start: &State<M>, 
 where
     DefaultAllocator: Storage<M>,
 {
+    compare_with_forward(model, start, t_end, seed, None);
+}
+
+/// As [`check_against_forward`], the run recorded within `budget` bytes
+/// ([`Radau::record_within`]) and so solved again step by step in the sweep; the forward run
+/// solves its stages to round-off as the recorded one does. Returns the recording's steps and
+/// bytes.
+fn compare_with_forward<M: Parameters>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    seed: u64,
+    budget: Option<usize>,
+) -> (usize, usize)
+where
+    DefaultAllocator: Storage<M>,
+{
     let names = model.coordinate_names();
     let mut wrt = Sensitivities::all_parameters(model);
     for name in &names {
         let c = model.coordinate(name).expect("a coordinate");
         wrt = wrt.initial_position(c).initial_velocity(c);
     }
-    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
-    let recording = radau.record(0.0, start, t_end).expect("integrates");
+    let options = RadauOptions { exact_stages: budget.is_some(), ..tight() };
+    let mut radau = Radau::new(model, options).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let recording = match budget {
+        None => radau.record(0.0, start, t_end),
+        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
+    }
+    .expect("integrates");
     let stats = radau.stats();
     // Exactly: by the coupled system, or (a linear model's) by one direct solve per column
     // with the step's factored matrix, which is then the stage system's own.
@@ -90,6 +112,7 @@ where
     }
     let end = recording.end(model);
     assert!((gradient.value - dot(&c, &end)).abs() <= 1e-14 * gradient.value.abs().max(1.0));
+    (recording.steps(), recording.bytes())
 }
 
 #[test]
@@ -146,6 +169,44 @@ fn adjoint_gradients_equal_forward_sensitivities_of_the_same_run() {
     at.p.copy_from_slice(start.p.as_slice());
     at.lambda.copy_from_slice(start.lambda.as_slice());
     check_against_forward(&network, &at, 3.0, 7);
+}
+
+/// Recorded within a memory budget, so small that the sweep solves the steps between
+/// checkpoints again at two or more levels, the gradient still equals the forward
+/// sensitivities of the same run to 1e-10 (the replayed stages are the recorded ones to
+/// round-off); the recording's bytes stay within the budget, however many steps.
+#[test]
+fn checkpointed_adjoint_gradients_equal_forward_sensitivities() {
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    let q = VecQ::<Pendulum>::new(0.7 * 0.8f64.sin(), -0.7 * 0.8f64.cos());
+    let start =
+        consistent_state(&pendulum, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
+            .expect("a consistent start");
+    // A pendulum's state and its step's index and time. Forty of them: twenty checkpoints of
+    // the run (every 32nd step's start), ten for a segment's and two whole steps, so that a
+    // segment is cut into pieces of four steps and these into two; a thousand: every second
+    // step's start, and segments solved again whole.
+    let state = 8 * 7 + 16;
+    for budget in [40 * state, 64 * state, 1000 * state] {
+        let (steps, bytes) = compare_with_forward(&pendulum, &start, 6.0, 11, Some(budget));
+        assert!(steps > 100, "{steps} steps");
+        assert!(
+            bytes <= budget / 2 + 8 * steps.next_power_of_two(),
+            "{bytes} bytes for a budget of {budget}"
+        );
+    }
+    let mut ladder = unit_ladder(8);
+    for (j, cell) in ladder.cells.iter_mut().enumerate() {
+        cell.l = 1.0 + 0.3 * (j as f64).sin();
+    }
+    let start = ladder_at_rest(&ladder, &pulse(8));
+    let ny = 3 * ladder.sizes().nq + ladder.sizes().nc;
+    let (steps, bytes) = compare_with_forward(&ladder, &start, 6.0, 12, Some(40 * (8 * ny + 40)));
+    assert!(steps > 20, "{steps} steps");
+    assert!(bytes <= 20 * (8 * ny + 40) + 8 * steps.next_power_of_two());
+    let budget = Radau::new(&ladder, tight()).expect("valid").record_within(0.0, &start, 1.0, 100);
+    let error = budget.expect_err("a budget below sixteen states");
+    assert!(error.to_string().contains("at least"), "{error}");
 }
 
 /// A running cost: the gradient of `∫ ½ |q|² dt + x(T)` of the pendulum against central

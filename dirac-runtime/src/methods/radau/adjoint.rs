@@ -32,6 +32,9 @@
 
 use nalgebra::{DVector, DefaultAllocator, Dyn};
 
+mod checkpoints;
+
+use self::checkpoints::Checkpoints;
 use super::Radau;
 use super::coupled::{Columns, Entries, assemble};
 use super::stages::three;
@@ -40,11 +43,12 @@ use crate::algebra::Algebra;
 use crate::algebra::lu::{Lu, Singular};
 use crate::algebra::newton::NewtonSolver;
 use crate::algebra::sparse::lu::{Ordering, SparseLu};
+use crate::analysis::diagnose::describe_slot;
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
-use crate::shape::dims::{Storage, VecQ, VecY};
+use crate::shape::dims::{Sizes, Storage, VecQ, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::integrator::Integrator;
 use crate::simulate::laws::has_laws;
@@ -93,25 +97,49 @@ where
 }
 
 /// One accepted step: where it started, its size and its stage increments.
-struct Step<M: LagrangeDirac>
+pub(super) struct Step<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    t: f64,
-    h: f64,
-    y: VecY<M>,
-    z: [VecY<M>; 3],
+    pub t: f64,
+    pub h: f64,
+    pub y: VecY<M>,
+    pub z: [VecY<M>; 3],
 }
 
-/// A Radau integration recorded for adjoint sweeps ([`Radau::record`]): the consistent start
-/// and every accepted step's start, size and stages, `4 (3n + m)` numbers a step.
+impl<M: LagrangeDirac> Step<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub fn zeros(sizes: Sizes) -> Self {
+        Step { t: 0.0, h: 0.0, y: sizes.zeros_y::<M>(), z: three(sizes) }
+    }
+}
+
+/// A Radau integration recorded for adjoint sweeps: the consistent start, the end, and
+/// either every accepted step's start, size and stages, `4 (3n + m)` numbers a step
+/// ([`Radau::record`]), or checkpoints within a memory budget and every step's size
+/// ([`Radau::record_within`]).
 pub struct Recording<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
     t0: f64,
     start: State<M>,
-    steps: Vec<Step<M>>,
+    t_end: f64,
+    end: VecY<M>,
+    kept: Kept<M>,
+}
+
+/// What a recording keeps of its steps.
+enum Kept<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Every step, whole.
+    Whole(Vec<Step<M>>),
+    /// Checkpoints, the steps between them solved again in the sweep.
+    Checkpointed(Checkpoints<M>),
 }
 
 /// The gradient of an objective with respect to everything the run depends on.
@@ -152,7 +180,12 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Recording").field("t0", &self.t0).field("steps", &self.steps.len()).finish()
+        f.debug_struct("Recording")
+            .field("t0", &self.t0)
+            .field("t_end", &self.t_end)
+            .field("steps", &self.steps())
+            .field("bytes", &self.bytes())
+            .finish()
     }
 }
 
@@ -169,6 +202,60 @@ where
     /// or a model whose contacts, switching surfaces or laws `solve` would watch (the sweep
     /// does not differentiate through their events and impacts yet).
     pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError> {
+        self.check_recordable()?;
+        self.start(t0, state, t_end)?;
+        let sizes = self.model.sizes();
+        let mut steps = Vec::new();
+        while !self.finished() {
+            let (t, y) = (self.t, self.y.clone());
+            let h = self.step()?;
+            let z = [self.stages.z[0].clone(), self.stages.z[1].clone(), self.stages.z[2].clone()];
+            debug_assert_eq!(z[0].len(), sizes.ny());
+            steps.push(Step { t, h, y, z });
+        }
+        let end = self.y.clone();
+        Ok(Recording { t0, start: state.clone(), t_end: self.t, end, kept: Kept::Whole(steps) })
+    }
+
+    /// Integrates as [`record`](Self::record) does, but keeps, of the steps, only their sizes
+    /// and as many of their starts as half of `budget` bytes holds, thinned to every second
+    /// one whenever it is full. The sweep solves the steps between two starts again and keeps
+    /// them within the other half, recursively when they do not fit: the memory is bounded by
+    /// `budget` plus eight bytes a step (the sizes), at the cost of solving the run again once
+    /// for every level of checkpoints (one when `N` steps satisfy `N ≤ budget² / (32 s²)` for
+    /// states of `s` bytes).
+    ///
+    /// Turns on [`RadauOptions::exact_stages`]: each step's stages are solved to round-off, so
+    /// that the sweep solves it again with the same result and the gradient is exact for the
+    /// discrete solution. Forward sensitivities of the same run need that option too.
+    /// Refused as `record` refuses, and for a budget below sixteen states.
+    pub fn record_within(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        budget: usize,
+    ) -> Result<Recording<M>, SimError> {
+        self.check_recordable()?;
+        let sizes = self.model.sizes();
+        let mut checkpoints = Checkpoints::new(sizes, self.options, budget)?;
+        let exact = self.options.exact_stages;
+        self.options.exact_stages = true;
+        let run = self.start(t0, state, t_end).and_then(|()| {
+            while !self.finished() {
+                checkpoints.mark(self.t, &self.y);
+                checkpoints.push(self.step()?);
+            }
+            Ok(())
+        });
+        self.options.exact_stages = exact;
+        run?;
+        let end = self.y.clone();
+        Ok(Recording { t0, start: state.clone(), t_end: self.t, end, kept: Kept::Checkpointed(checkpoints) })
+    }
+
+    /// What `record` refuses, by name.
+    fn check_recordable(&self) -> Result<(), SimError> {
         let invalid = |reason: &str| Err(SimError::InvalidOption { what: "adjoint", reason: reason.into() });
         if self.options.projection {
             return invalid("the projection onto the constraints has no derivative carried: turn it off");
@@ -183,17 +270,7 @@ where
                  sweep does not differentiate through yet",
             );
         }
-        self.start(t0, state, t_end)?;
-        let sizes = self.model.sizes();
-        let mut steps = Vec::new();
-        while !self.finished() {
-            let (t, y) = (self.t, self.y.clone());
-            let h = self.step()?;
-            let z = [self.stages.z[0].clone(), self.stages.z[1].clone(), self.stages.z[2].clone()];
-            debug_assert_eq!(z[0].len(), sizes.ny());
-            steps.push(Step { t, h, y, z });
-        }
-        Ok(Recording { t0, start: state.clone(), steps })
+        Ok(())
     }
 }
 
@@ -203,15 +280,27 @@ where
 {
     /// The number of recorded steps.
     pub fn steps(&self) -> usize {
-        self.steps.len()
+        match &self.kept {
+            Kept::Whole(steps) => steps.len(),
+            Kept::Checkpointed(checkpoints) => checkpoints.steps(),
+        }
+    }
+
+    /// The bytes the recording holds for its steps: what
+    /// [`record_within`](Radau::record_within)'s budget bounds, with the steps' sizes.
+    pub fn bytes(&self) -> usize {
+        match &self.kept {
+            Kept::Whole(steps) => {
+                let state = std::mem::size_of::<f64>() * self.end.len();
+                steps.len() * (4 * state + std::mem::size_of::<Step<M>>())
+            }
+            Kept::Checkpointed(checkpoints) => checkpoints.bytes(),
+        }
     }
 
     /// The state at the end of the run.
     pub fn end(&self, model: &M) -> State<M> {
-        match self.steps.last() {
-            Some(last) => State::from_y(model.sizes(), &(&last.y + &last.z[2])),
-            None => self.start.clone(),
-        }
+        State::from_y(model.sizes(), &self.end)
     }
 
     /// The objective's gradient with respect to every parameter of `model` (the model the run
@@ -227,25 +316,43 @@ where
         let mut bar = sizes.zeros_y::<M>();
         if let Some(g) = objective.terminal {
             let end = self.end(model);
-            let t_end = self.steps.last().map_or(self.t0, |s| s.t + s.h);
             zero(&mut sweep.dg);
-            value += g(t_end, &end, &mut sweep.dg);
+            value += g(self.t_end, &end, &mut sweep.dg);
             sweep.dg.write_y(&mut bar);
+            finite(model, self.t_end, value, &bar, "the terminal cost")?;
         }
-        for step in self.steps.iter().rev() {
-            value += sweep.step(model, step, objective.running, &mut bar)?;
+        match &self.kept {
+            Kept::Whole(steps) => {
+                for step in steps.iter().rev() {
+                    value += sweep.step(model, step, objective.running, &mut bar)?;
+                }
+            }
+            Kept::Checkpointed(checkpoints) => {
+                value += checkpoints.sweep(model, &mut sweep, objective.running, &mut bar)?;
+            }
         }
         let mut positions = sizes.zeros_q::<M>();
         let mut velocities = sizes.zeros_q::<M>();
         let mut initial = Initial::new(model, derivatives, self.t0, &self.start)?;
         sweep.stage.read_y(&bar);
         initial.transpose(&sweep.stage, &mut sweep.theta, &mut positions, &mut velocities);
+        let names = model.parameter_names();
+        if let Some(k) = sweep.theta.iter().position(|g| !g.is_finite()) {
+            let component = format!("the gradient with respect to parameter {}", names[k]);
+            return Err(SimError::NonFinite { t: self.t0, component });
+        }
+        if let Some(i) = positions.iter().chain(velocities.iter()).position(|g| !g.is_finite()) {
+            let what = if i < positions.len() { "position" } else { "velocity" };
+            let name = &model.coordinate_names()[i % positions.len()];
+            let component = format!("the gradient with respect to the initial {what} of {name}");
+            return Err(SimError::NonFinite { t: self.t0, component });
+        }
         Ok(Gradient { value, parameters: sweep.theta, positions, velocities })
     }
 }
 
 /// The backward sweep's work space, made once.
-struct Sweep<M: LagrangeDirac>
+pub(super) struct Sweep<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -261,6 +368,8 @@ where
     ybar: [VecY<M>; 3],
     /// `ν_j = h Σ_k a_kj μ_k` at each stage.
     nu: [VecY<M>; 3],
+    /// The stage states `Y_j = y_n + z_j`.
+    at: [State<M>; 3],
     stage: State<M>,
     yj: VecY<M>,
     dg: State<M>,
@@ -305,6 +414,7 @@ where
             x: DVector::zeros(3 * (sizes.nq + sizes.nc)),
             ybar: three(sizes),
             nu: three(sizes),
+            at: core::array::from_fn(|_| State::with_sizes(sizes)),
             stage: State::with_sizes(sizes),
             yj: sizes.zeros_y::<M>(),
             dg: State::with_sizes(sizes),
@@ -331,7 +441,7 @@ where
     ///
     /// with `G = L_vq`, `W = L_vv`, `D = ∂ṗ/∂q`, `E = ∂ṗ/∂v`, `C = ∂(A v)/∂q` at each stage;
     /// `ȳ_n = M Σ_k μ_k` and the parameters' weights are `ν`.
-    fn step(
+    pub(super) fn step(
         &mut self,
         model: &M,
         step: &Step<M>,
@@ -347,8 +457,8 @@ where
             let t = step.t + nodes[j] * h;
             self.yj.copy_from(&step.y);
             self.yj += &step.z[j];
-            self.stage.read_y(&self.yj);
-            let s = &self.stage;
+            self.at[j].read_y(&self.yj);
+            let s = &self.at[j];
             model.jacobian_blocks(t, &s.q, &s.v, &s.lambda, &mut self.jac[j]);
             if j == 2 {
                 self.ybar[j].copy_from(bar);
@@ -359,8 +469,10 @@ where
                 // The quadrature h Σ_j b_j r(t_j, Y_j), b_j = a_3j.
                 let b = h * A[2][j];
                 zero(&mut self.dg);
-                value += b * r(t, s, &mut self.dg);
+                let cost = r(t, s, &mut self.dg);
+                value += b * cost;
                 self.dg.write_y(&mut self.yj);
+                finite(model, t, cost, &self.yj, "the running cost")?;
                 self.ybar[j].axpy(b, &self.yj, 1.0);
             }
         }
@@ -434,6 +546,10 @@ where
             M::Algebra::qq_tr_mul(&jj.dpdot_dq, 1.0, nu_p, bq);
             M::Algebra::cq_tr_mul(&jj.dav_dq, 1.0, nu_lambda, bq);
         }
+        if let Some(i) = bar.iter().position(|g| !g.is_finite()) {
+            let component = format!("the adjoint of {}", describe_slot(model, i));
+            return Err(SimError::NonFinite { t: step.t, component });
+        }
         if self.theta.is_empty() {
             return Ok(value);
         }
@@ -446,10 +562,7 @@ where
             }
             self.weights.momentum_rate.as_mut_slice().copy_from_slice(&nu[l.p..l.lambda]);
             self.weights.constraint_velocity.as_mut_slice().copy_from_slice(&nu[l.lambda..l.len]);
-            self.yj.copy_from(&step.y);
-            self.yj += &step.z[j];
-            self.stage.read_y(&self.yj);
-            let s = &self.stage;
+            let s = &self.at[j];
             (self.derivatives.transposed)(model, t, &s.q, &s.v, &s.lambda, &self.weights, &mut self.each);
             for (theta, d) in self.theta.iter_mut().zip(&self.each) {
                 *theta += d;
@@ -538,6 +651,24 @@ impl SparseTransposed {
         values.fill(0.0);
         assemble(jac, h, n, m, &mut Transposed { col_ptr, rows, values });
         lu.factor()
+    }
+}
+
+/// A [`SimError::NonFinite`] at `t` if an objective's `value` or its gradient `dy` is not
+/// finite, naming the first component that is not.
+fn finite<M: LagrangeDirac>(model: &M, t: f64, value: f64, dy: &VecY<M>, what: &str) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !value.is_finite() {
+        return Err(SimError::NonFinite { t, component: format!("the value of {what}") });
+    }
+    match dy.iter().position(|g| !g.is_finite()) {
+        None => Ok(()),
+        Some(i) => {
+            let component = format!("the derivative of {what} with respect to {}", describe_slot(model, i));
+            Err(SimError::NonFinite { t, component })
+        }
     }
 }
 

@@ -55,6 +55,10 @@ use crate::simulate::restart::Restarts;
 
 /// Below this contraction rate of the last Newton iteration the Jacobian is kept.
 const THET: f64 = 0.001;
+/// The most Newton iterations past convergence with [`RadauOptions::exact_stages`].
+const POLISH_ITERATIONS: usize = 20;
+/// The most Newton iterations to convergence of a replayed step, from a fresh Jacobian.
+const REPLAY_ITERATIONS: usize = 20;
 /// One over the order of the error estimate the step size controls (`h⁴`), for the first
 /// step's choice.
 const FIRST_STEP_EXPONENT: f64 = 0.25;
@@ -406,7 +410,53 @@ where
         } = self;
         let step =
             Step { model, residual, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
-        stages.iterate(step, eig, tolerances.fnewt, options.max_newton_iterations)
+        let outcome = stages.iterate(step, eig, tolerances.fnewt, options.max_newton_iterations);
+        if !(options.exact_stages && matches!(outcome, Outcome::Converged(_))) {
+            return outcome;
+        }
+        let step =
+            Step { model, residual, solver, t: *t, h: *h, y, weights, error_norm: options.error_norm, stats };
+        match stages.polish(step, eig, tolerances.round_off(), POLISH_ITERATIONS) {
+            Ok(()) => outcome,
+            Err(why) => Outcome::Shrink(0.5, why),
+        }
+    }
+
+    /// Solves one step of size `h` from `y` at `t` again, its stages to round-off, into
+    /// `self.stages.z`: with a Jacobian at `y`, from the last replayed step's polynomial when
+    /// this one `continues` it, else from zero. Allocates nothing.
+    pub(crate) fn replay(&mut self, t: f64, y: &VecY<M>, h: f64, continues: bool) -> Result<(), SimError> {
+        self.t = t;
+        self.h = h;
+        self.y.copy_from(y);
+        self.state.read_y(y);
+        self.tolerances.weights(&self.y, h, &mut self.weights);
+        self.evaluate_jacobian()?;
+        if let Err(Singular { column }) = self.factor() {
+            let detail = format!("replaying a recorded step: {}", pivot_name(self.model.get(), column));
+            return Err(SimError::SingularMatrix { t, h, detail });
+        }
+        if !continues {
+            self.stages.restart();
+        }
+        self.stages.initial_guess(continues.then_some(&self.dense), h);
+        let Radau { model, residual, solver, y, weights, stats, stages, eig, tolerances, options, .. } = self;
+        let step = Step { model, residual, solver, t, h, y, weights, error_norm: options.error_norm, stats };
+        let iterations = REPLAY_ITERATIONS;
+        let failed = |why: &str| {
+            if why.starts_with("non-finite") {
+                SimError::NonFinite { t, component: "a stage of a replayed step".into() }
+            } else {
+                SimError::NewtonDiverged { t, h, iterations }
+            }
+        };
+        if let Outcome::Shrink(_, why) = stages.iterate(step, eig, tolerances.fnewt, iterations) {
+            return Err(failed(why));
+        }
+        let step = Step { model, residual, solver, t, h, y, weights, error_norm: options.error_norm, stats };
+        stages.polish(step, eig, tolerances.round_off(), POLISH_ITERATIONS).map_err(failed)?;
+        self.dense.update(&self.stages.z, h);
+        Ok(())
     }
 
     fn estimate(&mut self) -> f64 {

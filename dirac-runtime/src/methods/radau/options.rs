@@ -38,6 +38,12 @@ pub struct RadauOptions {
     pub error_norm: ErrorNorm,
     /// What values between steps are taken from (default [`DenseOutput::Corrected`]).
     pub dense_output: DenseOutput,
+    /// Whether Newton's iteration goes on past the tolerance to round-off each step (default
+    /// `false`). The run is then a function of each step's start and size alone, so that a
+    /// step can be solved again with the same result: what an adjoint sweep over checkpoints
+    /// ([`Radau::record_within`](crate::methods::radau::Radau::record_within)) needs, and turns
+    /// on. Costs a few Newton iterations a step.
+    pub exact_stages: bool,
 }
 
 /// How Radau samples its solution between steps (`Sampling::Every`, `Sampling::Times`,
@@ -81,6 +87,7 @@ impl Default for RadauOptions {
             projection: false,
             error_norm: ErrorNorm::Rms,
             dense_output: DenseOutput::Corrected,
+            exact_stages: false,
         }
     }
 }
@@ -156,6 +163,12 @@ where
         let mut atol_y = sizes.zeros_y::<M>();
         atol_y.fill(atol);
         Tolerances { rtol, atol: atol_y, sizes, fnewt }
+    }
+
+    /// A Newton increment of round-off size in the weighted norm: `ε |y|` over
+    /// `rtol |y|`.
+    pub fn round_off(&self) -> f64 {
+        f64::EPSILON / self.rtol
     }
 
     /// Replaces the absolute tolerances by one per component of the state.

@@ -165,6 +165,38 @@ where
         Outcome::Shrink(0.5, "Newton iteration did not converge")
     }
 
+    /// Goes on iterating after [`iterate`](Self::iterate) converged, until an increment's
+    /// weighted norm is below `floor` (round-off) or stops contracting: the stages are then the
+    /// root of the stage system to round-off, whatever the starting values and the Jacobian
+    /// the iteration used. At most `max_iterations`; `Err` if the iterates become non-finite.
+    pub fn polish<S: NewtonSolver<M, M::Algebra>>(
+        &mut self,
+        mut step: Step<'_, '_, M, S>,
+        eig: &Eigen,
+        floor: f64,
+        max_iterations: usize,
+    ) -> Result<(), &'static str> {
+        let shifts = eig.over(step.h);
+        let mut previous = f64::INFINITY;
+        for _ in 0..max_iterations {
+            self.residuals(&mut step);
+            self.transformed_residuals(&shifts);
+            let [r1, r2, r3] = &mut self.r;
+            step.solver.solve(r1);
+            step.solver.solve_complex(r2, r3);
+            let dyno = self.advance(step.weights, step.error_norm);
+            step.stats.newton_iterations += 1;
+            if !dyno.is_finite() {
+                return Err("non-finite residual");
+            }
+            if dyno <= floor || dyno > 0.5 * previous {
+                break;
+            }
+            previous = dyno;
+        }
+        Ok(())
+    }
+
     /// `w += r` and `z = T w`, in one pass over the components, and the size of the Newton
     /// increments `r`: the root mean square of the three stages' norms. The root-mean-square
     /// norm multiplies by the reciprocal weights, formed once an attempt: three divisions a
