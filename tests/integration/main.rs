@@ -33,6 +33,7 @@ mod network;
 mod paper;
 mod prescribed;
 mod probes;
+mod profile;
 mod radau;
 mod robots;
 mod sensitivities;
