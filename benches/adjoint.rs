@@ -11,6 +11,13 @@
 //! only up to 100 parameters. Ladders of 5, 50, 500 and 5000 cells: 10 to 10⁴ parameters. Run:
 //! `cargo bench --bench adjoint`.
 //!
+//! `cargo bench --bench adjoint -- peers DIR` is the dirac side of the comparison with SUNDIALS
+//! IDAS's adjoint (`benches/peers/adjoint.sh`): for each ladder it writes into `DIR/<cells>/`
+//! the consistent start `y0.txt`, its derivative `yp0.txt` (`(v, 0, ṗ, 0)`), the cells' `l.txt`
+//! and `c.txt`, and `dirac.txt` (the objective `∫ ½ |q|² dt`, a running cost, and its gradient,
+//! `l_j c_j` a line), and prints a CSV line `cells,n_theta,seconds,steps` with the median time of
+//! 11 gradients (recording and sweep).
+//!
 //! [`Radau::record`]: dirac::Radau::record
 //! [`Recording::gradient`]: dirac::adjoint::Recording::gradient
 
@@ -33,7 +40,72 @@ fn options() -> RadauOptions {
     RadauOptions::tolerances(1e-8, 1e-8)
 }
 
+/// Writes `values` into `path`, one a line, at full precision.
+fn write(path: std::path::PathBuf, values: impl Iterator<Item = f64>) {
+    use std::io::Write;
+    let mut f = std::io::BufWriter::new(std::fs::File::create(&path).expect("a writable file"));
+    for v in values {
+        writeln!(f, "{v:.17e}").expect("written");
+    }
+}
+
+/// The dirac side of `benches/peers/adjoint.sh`.
+fn peers(dir: &std::path::Path) {
+    println!("cells,n_theta,seconds,steps");
+    for n in [5, 50, 500, 5000] {
+        let mut ladder = unit_ladder(n);
+        for (j, cell) in ladder.cells.iter_mut().enumerate() {
+            cell.l = 1.0 + 0.3 * (j as f64).sin();
+        }
+        let start = ladder_at_rest(&ladder, &pulse(n));
+        let here = dir.join(n.to_string());
+        std::fs::create_dir_all(&here).expect("a writable folder");
+        let sizes = ladder.sizes();
+        let mut y = sizes.zeros_y::<Ladder>();
+        start.write_y(&mut y);
+        let mut f = sizes.zeros_y::<Ladder>();
+        ladder.residual(0.0, &y, &mut f);
+        let layout = dirac::Layout::new(sizes);
+        for i in (layout.v..layout.p).chain(layout.lambda..layout.len) {
+            f[i] = 0.0;
+        }
+        write(here.join("y0.txt"), y.iter().copied());
+        write(here.join("yp0.txt"), f.iter().copied());
+        write(here.join("l.txt"), ladder.cells.iter().map(|c| c.l));
+        write(here.join("c.txt"), ladder.cells.iter().map(|c| c.c));
+        let running = |_: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
+            out.q.copy_from(&y.q);
+            0.5 * y.q.norm_squared()
+        };
+        let objective = Objective::running(&running);
+        let gradient = || {
+            let mut radau = Radau::new(&ladder, options()).expect("valid");
+            let recording = radau.record(0.0, &start, 5.0).expect("integrates");
+            (recording.gradient(&ladder, &objective).expect("a gradient"), recording.steps())
+        };
+        let (g, steps) = gradient();
+        let names = ladder.parameter_names();
+        let at = |name: String| names.iter().position(|n| *n == name).expect("a parameter");
+        let values = (0..n).flat_map(|j| [at(format!("cells[{j}].l")), at(format!("cells[{j}].c"))]);
+        write(here.join("dirac.txt"), std::iter::once(g.value).chain(values.map(|k| g.parameters[k])));
+        let mut times: Vec<f64> = (0..11)
+            .map(|_| {
+                let start = std::time::Instant::now();
+                black_box(gradient());
+                start.elapsed().as_secs_f64()
+            })
+            .collect();
+        times.sort_by(f64::total_cmp);
+        println!("{n},{},{:.6e},{steps}", 2 * n, times[5]);
+    }
+}
+
 fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    if let Some(k) = args.iter().position(|a| a == "peers") {
+        peers(std::path::Path::new(&args[k + 1]));
+        return;
+    }
     println!(
         "| cells | N_θ | steps | plain solve | adjoint gradient | ratio | forward sensitivities | ratio |"
     );

@@ -163,13 +163,16 @@ pub fn chi2(profile: &[f64], setup: &Setup, data: &[Vec<f64>]) -> Result<f64, Si
     Ok(sum / setup.sigma.powi(2))
 }
 
+/// A point, the misfit there and its gradient.
+type Evaluated = (Vec<f64>, f64, Vec<f64>);
+
 /// The misfit and its gradient with respect to `u = ln l`, by one recorded run and one
 /// adjoint sweep, remembered for the point last asked (a line search asks for the cost and
 /// then the gradient at the same point).
 pub struct Misfit<'d> {
     setup: &'d Setup,
     data: &'d [Vec<f64>],
-    last: RefCell<Option<(Vec<f64>, f64, Vec<f64>)>>,
+    last: RefCell<Option<Evaluated>>,
     /// The misfit at the first point asked: L-BFGS sees the misfit over it, so that its first
     /// step, along the gradient, is of a size that the line search starts near.
     first: &'d Counter<Option<f64>>,

@@ -586,7 +586,10 @@ enum Factors {
 /// blocks' patterns fix (every coefficient of the method is nonzero), ordered once and
 /// refactored each step by the sparse LU the saddle-point systems use.
 struct SparseTransposed {
-    col_ptr: Vec<usize>,
+    /// The slot among the values of each entry [`assemble`] adds, in the order it adds them
+    /// (the same every step: it follows the blocks' patterns), so that a step's assembly
+    /// scatters without searching.
+    slots: Vec<usize>,
     lu: SparseLu<f64>,
 }
 
@@ -617,9 +620,26 @@ impl SparseTransposed {
         for c in 0..size {
             col_ptr[c + 1] += col_ptr[c];
         }
-        let row_idx = entries.into_iter().map(|(_, row)| row).collect();
-        let order = Ordering::new(size, col_ptr.clone(), row_idx);
-        SparseTransposed { col_ptr, lu: SparseLu::new(std::sync::Arc::new(order)) }
+        let rows: Vec<usize> = entries.into_iter().map(|(_, row)| row).collect();
+        /// The slot of each entry added, in order: the coupled matrix's `(row, column)` is the
+        /// transpose's `(column, row)`.
+        struct Slots<'a> {
+            col_ptr: &'a [usize],
+            rows: &'a [usize],
+            slots: Vec<usize>,
+        }
+        impl Entries for Slots<'_> {
+            fn add(&mut self, row: usize, column: usize, _: f64) {
+                let span = self.col_ptr[row]..self.col_ptr[row + 1];
+                let at = self.rows[span.clone()].binary_search(&column).expect("an entry of the pattern");
+                self.slots.push(span.start + at);
+            }
+        }
+        let mut slots = Slots { col_ptr: &col_ptr, rows: &rows, slots: Vec::new() };
+        assemble(jac, 1.0, n, m, &mut slots);
+        let slots = slots.slots;
+        let order = Ordering::new(size, col_ptr, rows);
+        SparseTransposed { slots, lu: SparseLu::new(std::sync::Arc::new(order)) }
     }
 
     /// Assembles the transpose of the coupled matrix of a step of size `h` and factors it.
@@ -633,24 +653,24 @@ impl SparseTransposed {
     where
         DefaultAllocator: Storage<M>,
     {
-        /// The coupled matrix's entry `(row, column)` added at `(column, row)` of the transpose.
-        struct Transposed<'a> {
-            col_ptr: &'a [usize],
-            rows: &'a [usize],
+        /// Each entry added into its slot, in the order of [`SparseTransposed::slots`].
+        struct Scatter<'a> {
+            slots: std::slice::Iter<'a, usize>,
             values: &'a mut [f64],
         }
-        impl Entries for Transposed<'_> {
-            fn add(&mut self, row: usize, column: usize, value: f64) {
-                let span = self.col_ptr[row]..self.col_ptr[row + 1];
-                let at = self.rows[span.clone()].binary_search(&column).expect("an entry of the pattern");
-                self.values[span.start + at] += value;
+        impl Entries for Scatter<'_> {
+            fn add(&mut self, _: usize, _: usize, value: f64) {
+                if let Some(&slot) = self.slots.next() {
+                    self.values[slot] += value;
+                }
             }
         }
-        let (col_ptr, lu) = (&self.col_ptr, &mut self.lu);
-        let (rows, values) = lu.pattern_and_values();
+        let (_, values) = self.lu.pattern_and_values();
         values.fill(0.0);
-        assemble(jac, h, n, m, &mut Transposed { col_ptr, rows, values });
-        lu.factor()
+        let mut scatter = Scatter { slots: self.slots.iter(), values };
+        assemble(jac, h, n, m, &mut scatter);
+        debug_assert!(scatter.slots.next().is_none(), "as many entries as the pattern's pass");
+        self.lu.factor()
     }
 }
 
