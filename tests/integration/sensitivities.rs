@@ -789,3 +789,23 @@ fn sensitivities_through_a_switching_surface_are_refused() {
     let end = solution.last().expect("a sample").q(Brake::X);
     assert!((end - (1.0 + 2.0 - 0.25 * 4.0)).abs() < 1e-8, "x(3) = {end}");
 }
+
+/// Sensitivities through impacts are refused by name: the bouncing ball's plain steps would
+/// pass through its floor (they did, to `y(2) = −18.6` from a drop of 1 m, returned as
+/// success), and the sensitivities' jumps at the impacts are not carried.
+#[test]
+fn sensitivities_through_impacts_are_refused() {
+    let ball = BouncingBall { m: 1.0, g: 9.81, e: 0.8 };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let wrt = Sensitivities::all_parameters(&ball);
+    let error = Radau::new(&ball, tight())
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &start, 2.0, &Sampling::Times(vec![2.0]))
+        .expect_err("refused");
+    let text = error.to_string();
+    assert!(matches!(error, SimError::InvalidOption { what: "sensitivities", .. }), "{text}");
+    assert!(text.contains("unilateral") && text.contains("impact"), "{text}");
+}

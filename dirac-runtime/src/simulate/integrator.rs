@@ -400,7 +400,9 @@ where
     SimError::Unsupported { method: I::NAME, capability: Capability::Sensitivities }
 }
 
-/// Sensitivities of a model with switching surfaces are refused, naming them: where the motion
+/// Sensitivities of a model with unilateral constraints are refused, naming them (the impacts'
+/// jumps are not carried, and the plain steps would pass through the constraints); so are
+/// those of a model with switching surfaces, naming them: where the motion
 /// crosses a surface at `t_s`, a sensitivity jumps by `(f⁺ − f⁻) ∂t_s/∂θ` (a force that jumps
 /// there, such as `signum`'s, moves the state by as much as the crossing moves in time), and
 /// the generated derivatives, taken branch by branch, do not carry that jump.
@@ -408,6 +410,19 @@ fn refuse_switches<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
+    let contacts = model.unilateral_names();
+    if !contacts.is_empty() {
+        let list = contacts.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ");
+        return Err(SimError::InvalidOption {
+            what: "sensitivities",
+            reason: format!(
+                "the model declares the unilateral constraint(s) {list}: a sensitivity jumps at each \
+                 impact, by the impact's own derivative and the impact time's, and that jump is not \
+                 implemented (without the impacts the motion would pass through the constraints); take \
+                 differences of solutions, or carry sensitivities on a model without contacts"
+            ),
+        });
+    }
     if !model.has_switches() && !laws::has_laws(model) {
         return Ok(());
     }
