@@ -78,7 +78,7 @@ pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
 /// discrete adjoint of a Radau integration, recorded with [`Radau::record`] and swept back
 /// with [`Recording::gradient`](adjoint::Recording::gradient).
 pub mod adjoint {
-    pub use crate::methods::radau::{Gradient, Objective, Recording, StateFunction};
+    pub use crate::methods::radau::{Gradient, Objective, Recording, SampleFunction, StateFunction};
 }
 
 // The modules under the paths they had before the layers, for code that names them.

@@ -2,10 +2,9 @@
 //! every cell of an LC ladder recovered from the flux waveforms at a few of its nodes, by
 //! L-BFGS (the `argmin` crate) on the gradient of the misfit from one adjoint sweep.
 //!
-//! The misfit of a profile is `χ²/2` of the waveforms, `½ Σ_s ∫ (x_s(t) − d_s(t))² dt / (σ² Δt)`
-//! over the sensors `s`, with `d_s` the measurements interpolated linearly between their
-//! samples `Δt` apart: the running cost of one [`Objective`], whose gradient with respect to
-//! every parameter one recorded run and one backward sweep give. The unknowns are the
+//! The misfit of a profile is `χ²/2` of the waveforms, `½ Σ_s Σ_k (x_s(t_k) − d_s,k)² / σ²` over
+//! the sensors `s` and the sample times `t_k`: the sampled costs of one [`Objective`], whose
+//! gradient with respect to every parameter one recorded run and one backward sweep give. The unknowns are the
 //! logarithms of the inductances (which keeps them positive), with a small penalty on the
 //! differences of neighbours where the data are noisy.
 
@@ -172,6 +171,7 @@ type Evaluated = (Vec<f64>, f64, Vec<f64>);
 pub struct Misfit<'d> {
     setup: &'d Setup,
     data: &'d [Vec<f64>],
+    times: Vec<f64>,
     last: RefCell<Option<Evaluated>>,
     /// The misfit at the first point asked: L-BFGS sees the misfit over it, so that its first
     /// step, along the gradient, is of a size that the line search starts near.
@@ -189,7 +189,7 @@ impl<'d> Misfit<'d> {
         first: &'d Counter<Option<f64>>,
         simulations: &'d Counter<usize>,
     ) -> Self {
-        Misfit { setup, data, last: RefCell::new(None), first, simulations }
+        Misfit { setup, data, times: setup.times(), last: RefCell::new(None), first, simulations }
     }
 
     /// The misfit at `u` and its gradient.
@@ -203,22 +203,18 @@ impl<'d> Misfit<'d> {
         let profile: Vec<f64> = u.iter().map(|x| x.exp()).collect();
         let model = ladder(&profile);
         let nodes: Vec<usize> = setup.sensors.iter().map(|&j| node(&model, j)).collect();
-        let weight = 1.0 / (setup.sigma.powi(2) * setup.dt);
-        let last = self.data[0].len() - 1;
-        let running = |t: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
-            let at = (t / setup.dt).clamp(0.0, last as f64);
-            let k = (at.floor() as usize).min(last - 1);
-            let s = at - k as f64;
+        let weight = 1.0 / setup.sigma.powi(2);
+        let cost = |k: usize, _: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
             let mut cost = 0.0;
             for (&i, d) in nodes.iter().zip(self.data) {
-                let misfit = y.q[i] - ((1.0 - s) * d[k] + s * d[k + 1]);
+                let misfit = y.q[i] - d[k];
                 cost += 0.5 * weight * misfit * misfit;
                 out.q[i] = weight * misfit;
             }
             cost
         };
         let recording = Radau::new(&model, options())?.record(0.0, &start(&model)?, setup.t_end)?;
-        let gradient = recording.gradient(&model, &Objective::running(&running))?;
+        let gradient = recording.gradient(&model, &Objective::samples(&self.times, &cost))?;
         self.simulations.set(self.simulations.get() + 1);
         let names = model.parameter_names();
         let mut value = gradient.value;

@@ -209,6 +209,110 @@ fn checkpointed_adjoint_gradients_equal_forward_sensitivities() {
     assert!(error.to_string().contains("at least"), "{error}");
 }
 
+/// Costs at sample times, `G = Σ_k c_kᵀ (q, v)(t_k)` with random `c_k` over 41 samples from the
+/// start to the end, equal the forward sensitivities of the same run sampled at the same times
+/// on the collocation polynomial (what `interpolate_sensitivity` samples; the state's samples
+/// taken from it too, `DenseOutput::Collocation`), to 1e-10 of the largest; with every step
+/// kept and with the run recorded within a budget. Returns the worst relative difference.
+fn check_samples_against_forward<M: Parameters>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    budget: Option<usize>,
+) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.coordinate_names();
+    let mut wrt = Sensitivities::all_parameters(model);
+    for name in &names {
+        let c = model.coordinate(name).expect("a coordinate");
+        wrt = wrt.initial_position(c).initial_velocity(c);
+    }
+    let options = RadauOptions {
+        exact_stages: budget.is_some(),
+        dense_output: dirac::DenseOutput::Collocation,
+        ..tight()
+    };
+    let times: Vec<f64> = (0..=40).map(|k| t_end * k as f64 / 40.0).collect();
+    let mut radau = Radau::new(model, options).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution =
+        radau.solve_with_sensitivities(0.0, start, t_end, &Sampling::Times(times.clone())).expect("solves");
+    let mut radau = Radau::new(model, options).expect("valid");
+    let recording = match budget {
+        None => radau.record(0.0, start, t_end),
+        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
+    }
+    .expect("integrates");
+    assert_eq!(recording.steps(), solution.stats.steps, "the same run");
+    let n = names.len();
+    let mut rng = Rng::new(17);
+    let c: Vec<f64> = (0..times.len() * 2 * n).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    let cost = |k: usize, _: f64, y: &State<M>, out: &mut State<M>| {
+        let ck = &c[k * 2 * n..(k + 1) * 2 * n];
+        out.q.copy_from_slice(&ck[..n]);
+        out.v.copy_from_slice(&ck[n..]);
+        (0..n).map(|i| ck[i] * y.q[i] + ck[n + i] * y.v[i]).sum()
+    };
+    let gradient = recording.gradient(model, &Objective::samples(&times, &cost)).expect("a gradient");
+    let coordinates: Vec<_> =
+        names.iter().map(|name| model.coordinate(name).expect("a coordinate")).collect();
+    let mut worst = 0.0f64;
+    let mut pairs = Vec::new();
+    for (j, w) in wrt.wrt().iter().enumerate() {
+        let name = &solution.sensitivity_names()[j];
+        let mut forward = 0.0;
+        for (i, &coordinate) in coordinates.iter().enumerate() {
+            let dq = solution.dq(coordinate, name).expect("a sensitivity");
+            let dv = solution.dv(coordinate, name).expect("a sensitivity");
+            for k in 0..times.len() {
+                forward += c[k * 2 * n + i] * dq[k] + c[k * 2 * n + n + i] * dv[k];
+            }
+        }
+        let adjoint = match *w {
+            Wrt::Parameter(k) => gradient.parameters[k],
+            Wrt::InitialPosition(i) => gradient.positions[i],
+            Wrt::InitialVelocity(i) => gradient.velocities[i],
+        };
+        pairs.push((name.clone(), forward, adjoint));
+    }
+    let scale = pairs.iter().fold(1e-3f64, |m, (_, f, _)| m.max(f.abs()));
+    for (name, f, a) in &pairs {
+        worst = worst.max((f - a).abs() / scale);
+        assert!((f - a).abs() <= 1e-10 * scale, "∂G/∂{name}: forward {f}, adjoint {a} (scale {scale})");
+    }
+    let value: f64 = (0..times.len())
+        .map(|k| {
+            let at = |i: usize| (solution.q(coordinates[i])[k], solution.v(coordinates[i])[k]);
+            (0..n).map(|i| c[k * 2 * n + i] * at(i).0 + c[k * 2 * n + n + i] * at(i).1).sum::<f64>()
+        })
+        .sum();
+    assert!(
+        (gradient.value - value).abs() <= 1e-10 * value.abs().max(1.0),
+        "G {} against {value}",
+        gradient.value
+    );
+    worst
+}
+
+#[test]
+fn sampled_costs_equal_forward_sensitivities_at_the_samples() {
+    let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
+    let q = VecQ::<Pendulum>::new(0.7 * 0.8f64.sin(), -0.7 * 0.8f64.cos());
+    let start =
+        consistent_state(&pendulum, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
+            .expect("a consistent start");
+    let whole = check_samples_against_forward(&pendulum, &start, 2.0, None);
+    let within = check_samples_against_forward(&pendulum, &start, 2.0, Some(40 * 72));
+    let mut ladder = unit_ladder(8);
+    for (j, cell) in ladder.cells.iter_mut().enumerate() {
+        cell.l = 1.0 + 0.3 * (j as f64).sin();
+    }
+    let start = ladder_at_rest(&ladder, &pulse(8));
+    let sparse = check_samples_against_forward(&ladder, &start, 3.0, None);
+    eprintln!("sampled costs: pendulum {whole:.1e}, within a budget {within:.1e}, ladder {sparse:.1e}");
+}
+
 /// A running cost: the gradient of `∫ ½ |q|² dt + x(T)` of the pendulum against central
 /// differences of whole runs (each recomputing the objective by the same quadrature) in every
 /// parameter and initial velocity, to the tolerance.

@@ -63,15 +63,23 @@ pub const DENSE_LIMIT: usize = 1200;
 /// call, so that a closure writes only the parts it depends on), and its value returned.
 pub type StateFunction<'f, M> = &'f dyn Fn(f64, &State<M>, &mut State<M>) -> f64;
 
-/// The objective `G = g(t_N, y_N) + ∫ r(t, y) dt` of an adjoint sweep, over the discrete
-/// solution: `g` at the last step's end and the running cost `r` integrated by the method's
-/// own quadrature over each step's stages (`h Σ_j b_j r(t_j, Y_j)`, of order 5), so that its
-/// gradient is exact for what is computed.
+/// A cost at one of an objective's sample times: the closure gets the sample's index `k`, its
+/// time and the state there, writes the cost's gradient with respect to that state into `out`
+/// (zeroed before each call) and returns the cost.
+pub type SampleFunction<'f, M> = &'f dyn Fn(usize, f64, &State<M>, &mut State<M>) -> f64;
+
+/// The objective `G = g(t_N, y_N) + Σ_k g_k(y(t_k)) + ∫ r(t, y) dt` of an adjoint sweep, over
+/// the discrete solution: `g` at the last step's end, each `g_k` at a sample time `t_k` on the
+/// collocation polynomial of the step that holds it (the values
+/// [`DenseOutput::Collocation`](crate::methods::radau::DenseOutput::Collocation) samples), and
+/// the running cost `r` integrated by the method's own quadrature over each step's stages
+/// (`h Σ_j b_j r(t_j, Y_j)`, of order 5), so that its gradient is exact for what is computed.
 pub struct Objective<'f, M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
     terminal: Option<StateFunction<'f, M>>,
+    samples: Option<(&'f [f64], SampleFunction<'f, M>)>,
     running: Option<StateFunction<'f, M>>,
 }
 
@@ -81,12 +89,24 @@ where
 {
     /// A terminal cost `g(t_N, y_N)`: the closure returns its value and writes `∂g/∂y`.
     pub fn terminal(g: StateFunction<'f, M>) -> Self {
-        Objective { terminal: Some(g), running: None }
+        Objective { terminal: Some(g), samples: None, running: None }
     }
 
     /// A running cost `∫ r(t, y) dt` alone: the closure returns `r` and writes `∂r/∂y`.
     pub fn running(r: StateFunction<'f, M>) -> Self {
-        Objective { terminal: None, running: Some(r) }
+        Objective { terminal: None, samples: None, running: Some(r) }
+    }
+
+    /// Costs `Σ_k g_k(y(t_k))` at the sample `times` alone (ascending, within the run): what a
+    /// fit to measurements sums. The closure gets `k`, `t_k` and the state there.
+    pub fn samples(times: &'f [f64], g: SampleFunction<'f, M>) -> Self {
+        Objective { terminal: None, samples: Some((times, g)), running: None }
+    }
+
+    /// This objective with costs at sample times added.
+    pub fn with_samples(mut self, times: &'f [f64], g: SampleFunction<'f, M>) -> Self {
+        self.samples = Some((times, g));
+        self
     }
 
     /// This objective with a running cost added.
@@ -310,8 +330,22 @@ where
         M: Parameters,
     {
         let sizes = model.sizes();
+        if let Some((times, _)) = objective.samples {
+            let slack = 1e-12 * self.t_end.abs().max(1.0);
+            let inside = |t: f64| t >= self.t0 && t <= self.t_end + slack;
+            if !times.is_sorted() || !times.iter().all(|&t| inside(t)) {
+                return Err(SimError::InvalidOption {
+                    what: "samples",
+                    reason: format!(
+                        "an objective's sample times must ascend within the run, [{}, {}]",
+                        self.t0, self.t_end
+                    ),
+                });
+            }
+        }
         let derivatives = ParameterDerivatives::<M>::of();
         let mut sweep = Sweep::new(model, derivatives)?;
+        sweep.remaining = objective.samples.map_or(0, |(times, _)| times.len());
         let mut value = 0.0;
         let mut bar = sizes.zeros_y::<M>();
         if let Some(g) = objective.terminal {
@@ -324,11 +358,22 @@ where
         match &self.kept {
             Kept::Whole(steps) => {
                 for step in steps.iter().rev() {
-                    value += sweep.step(model, step, objective.running, &mut bar)?;
+                    value += sweep.step(model, step, objective, &mut bar)?;
                 }
             }
             Kept::Checkpointed(checkpoints) => {
-                value += checkpoints.sweep(model, &mut sweep, objective.running, &mut bar)?;
+                value += checkpoints.sweep(model, &mut sweep, objective, &mut bar)?;
+            }
+        }
+        // Samples at the start itself.
+        if let Some((times, g)) = objective.samples {
+            for (k, &t) in times.iter().enumerate().take(sweep.remaining) {
+                zero(&mut sweep.dg);
+                let cost = g(k, t, &self.start, &mut sweep.dg);
+                value += cost;
+                sweep.dg.write_y(&mut sweep.yj);
+                finite(model, t, cost, &sweep.yj, "a sampled cost")?;
+                bar += &sweep.yj;
             }
         }
         let mut positions = sizes.zeros_q::<M>();
@@ -370,6 +415,10 @@ where
     nu: [VecY<M>; 3],
     /// The stage states `Y_j = y_n + z_j`.
     at: [State<M>; 3],
+    /// The objective's samples not yet reached, going back: the first `remaining`.
+    remaining: usize,
+    /// The samples' gradient with respect to a step's start directly (not through its stages).
+    direct: VecY<M>,
     stage: State<M>,
     yj: VecY<M>,
     dg: State<M>,
@@ -415,6 +464,8 @@ where
             ybar: three(sizes),
             nu: three(sizes),
             at: core::array::from_fn(|_| State::with_sizes(sizes)),
+            remaining: 0,
+            direct: sizes.zeros_y::<M>(),
             stage: State::with_sizes(sizes),
             yj: sizes.zeros_y::<M>(),
             dg: State::with_sizes(sizes),
@@ -445,7 +496,7 @@ where
         &mut self,
         model: &M,
         step: &Step<M>,
-        running: Option<StateFunction<'_, M>>,
+        objective: &Objective<'_, M>,
         bar: &mut VecY<M>,
     ) -> Result<f64, SimError> {
         let l = self.layout;
@@ -465,7 +516,7 @@ where
             } else {
                 self.ybar[j].fill(0.0);
             }
-            if let Some(r) = running {
+            if let Some(r) = objective.running {
                 // The quadrature h Σ_j b_j r(t_j, Y_j), b_j = a_3j.
                 let b = h * A[2][j];
                 zero(&mut self.dg);
@@ -475,6 +526,35 @@ where
                 finite(model, t, cost, &self.yj, "the running cost")?;
                 self.ybar[j].axpy(b, &self.yj, 1.0);
             }
+        }
+        // The samples within the step, `t_n < t_k ≤ t_n + h` (the last step takes every one
+        // left), on the collocation polynomial `u(s) = y_n + Σ_j ℓ_j(s) z_j`: their gradient
+        // reaches the stages by `ℓ_j(s)` and the start by `1 − Σ_j ℓ_j(s)`.
+        let mut direct = false;
+        if let Some((times, g)) = objective.samples {
+            let first = times[..self.remaining].partition_point(|&t| t <= step.t);
+            for (k, &t) in times.iter().enumerate().take(self.remaining).skip(first) {
+                let ell = lagrange(((t - step.t) / h).min(1.0));
+                self.yj.copy_from(&step.y);
+                for (l, z) in ell.iter().zip(&step.z) {
+                    self.yj.axpy(*l, z, 1.0);
+                }
+                self.stage.read_y(&self.yj);
+                zero(&mut self.dg);
+                let cost = g(k, t, &self.stage, &mut self.dg);
+                value += cost;
+                self.dg.write_y(&mut self.yj);
+                finite(model, t, cost, &self.yj, "a sampled cost")?;
+                for (l, ybar) in ell.iter().zip(self.ybar.iter_mut()) {
+                    ybar.axpy(*l, &self.yj, 1.0);
+                }
+                if !direct {
+                    self.direct.fill(0.0);
+                    direct = true;
+                }
+                self.direct.axpy(1.0 - ell.iter().sum::<f64>(), &self.yj, 1.0);
+            }
+            self.remaining = first;
         }
         let p_at = |j: usize| j * (n + m);
         let lambda_at = |j: usize| j * (n + m) + n;
@@ -545,6 +625,9 @@ where
             M::Algebra::qq_tr_mul(&jj.l_vq, -1.0, nu_v, bq);
             M::Algebra::qq_tr_mul(&jj.dpdot_dq, 1.0, nu_p, bq);
             M::Algebra::cq_tr_mul(&jj.dav_dq, 1.0, nu_lambda, bq);
+        }
+        if direct {
+            *bar += &self.direct;
         }
         if let Some(i) = bar.iter().position(|g| !g.is_finite()) {
             let component = format!("the adjoint of {}", describe_slot(model, i));
@@ -672,6 +755,17 @@ impl SparseTransposed {
         debug_assert!(scatter.slots.next().is_none(), "as many entries as the pattern's pass");
         self.lu.factor()
     }
+}
+
+/// The collocation polynomial's weights `ℓ_j(s)` of the stage increments at `s` step sizes
+/// into a step: `ℓ_j(s) = (s / c_j) Π_{k ≠ j} (s − c_k) / (c_j − c_k)`, zero at `s = 0` and one
+/// at `s = c_j`.
+fn lagrange(s: f64) -> [f64; 3] {
+    let c = [C1, C2, C3];
+    core::array::from_fn(|j| {
+        let (a, b) = (c[(j + 1) % 3], c[(j + 2) % 3]);
+        s / c[j] * (s - a) / (c[j] - a) * (s - b) / (c[j] - b)
+    })
 }
 
 /// A [`SimError::NonFinite`] at `t` if an objective's `value` or its gradient `dy` is not

@@ -27,7 +27,7 @@ use std::cell::RefCell;
 
 use nalgebra::{Complex, DefaultAllocator};
 
-pub use self::adjoint::{Gradient, Objective, Recording, StateFunction};
+pub use self::adjoint::{Gradient, Objective, Recording, SampleFunction, StateFunction};
 use self::controller::Controller;
 use self::dense::{Dense, Legendre, Start};
 use self::drive::Feedback;

@@ -15,7 +15,7 @@ use nalgebra::{DefaultAllocator, Dim};
 
 use super::{Step, Sweep};
 use crate::error::SimError;
-use crate::methods::radau::{Radau, RadauOptions, StateFunction};
+use crate::methods::radau::{Objective, Radau, RadauOptions};
 use crate::model::{LagrangeDirac, Parameters};
 use crate::shape::dims::{Sizes, Storage, VecY};
 
@@ -145,7 +145,7 @@ where
         &self,
         model: &M,
         sweep: &mut Sweep<M>,
-        running: Option<StateFunction<'_, M>>,
+        objective: &Objective<'_, M>,
         bar: &mut VecY<M>,
     ) -> Result<f64, SimError>
     where
@@ -159,7 +159,7 @@ where
             steps: &self.steps,
             whole: (0..whole).map(|_| Step::zeros(self.sizes)).collect(),
             cursor: self.sizes.zeros_y::<M>(),
-            running,
+            objective,
         };
         let mut value = 0.0;
         let marks = &self.marks[..self.used];
@@ -181,7 +181,7 @@ where
     /// Room for this many whole steps.
     whole: Vec<Step<M>>,
     cursor: VecY<M>,
-    running: Option<StateFunction<'r, M>>,
+    objective: &'r Objective<'r, M>,
 }
 
 impl<M: LagrangeDirac + Parameters> Replay<'_, '_, M>
@@ -217,7 +217,7 @@ where
             }
             let mut value = 0.0;
             for step in self.whole[..len].iter().rev() {
-                value += sweep.step(model, step, self.running, bar)?;
+                value += sweep.step(model, step, self.objective, bar)?;
             }
             return Ok(value);
         }
