@@ -245,7 +245,7 @@ where
     /// for every level of checkpoints (one when `N` steps satisfy `N ≤ budget² / (32 s²)` for
     /// states of `s` bytes).
     ///
-    /// Turns on [`RadauOptions::exact_stages`]: each step's stages are solved to round-off, so
+    /// Turns on [`RadauOptions::exact_stages`](super::RadauOptions::exact_stages): each step's stages are solved to round-off, so
     /// that the sweep solves it again with the same result and the gradient is exact for the
     /// discrete solution. Forward sensitivities of the same run need that option too.
     /// Refused as `record` refuses, and for a budget below sixteen states.
