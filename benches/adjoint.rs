@@ -28,25 +28,19 @@ mod zoo;
 
 #[path = "support/paired.rs"]
 mod paired;
+#[path = "support/start.rs"]
+mod start;
 
 use std::hint::black_box;
 
 use dirac::adjoint::Objective;
 use dirac::prelude::*;
 use paired::paired;
+use start::{write_start, write_values};
 use zoo::*;
 
 fn options() -> RadauOptions {
     RadauOptions::tolerances(1e-8, 1e-8)
-}
-
-/// Writes `values` into `path`, one a line, at full precision.
-fn write(path: std::path::PathBuf, values: impl Iterator<Item = f64>) {
-    use std::io::Write;
-    let mut f = std::io::BufWriter::new(std::fs::File::create(&path).expect("a writable file"));
-    for v in values {
-        writeln!(f, "{v:.17e}").expect("written");
-    }
 }
 
 /// The dirac side of `benches/peers/adjoint.sh`.
@@ -60,19 +54,9 @@ fn peers(dir: &std::path::Path) {
         let start = ladder_at_rest(&ladder, &pulse(n));
         let here = dir.join(n.to_string());
         std::fs::create_dir_all(&here).expect("a writable folder");
-        let sizes = ladder.sizes();
-        let mut y = sizes.zeros_y::<Ladder>();
-        start.write_y(&mut y);
-        let mut f = sizes.zeros_y::<Ladder>();
-        ladder.residual(0.0, &y, &mut f);
-        let layout = dirac::Layout::new(sizes);
-        for i in (layout.v..layout.p).chain(layout.lambda..layout.len) {
-            f[i] = 0.0;
-        }
-        write(here.join("y0.txt"), y.iter().copied());
-        write(here.join("yp0.txt"), f.iter().copied());
-        write(here.join("l.txt"), ladder.cells.iter().map(|c| c.l));
-        write(here.join("c.txt"), ladder.cells.iter().map(|c| c.c));
+        write_start(&ladder, 0.0, &start, &here);
+        write_values(&here.join("l.txt"), ladder.cells.iter().map(|c| c.l));
+        write_values(&here.join("c.txt"), ladder.cells.iter().map(|c| c.c));
         let running = |_: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
             out.q.copy_from(&y.q);
             0.5 * y.q.norm_squared()
@@ -87,7 +71,10 @@ fn peers(dir: &std::path::Path) {
         let names = ladder.parameter_names();
         let at = |name: String| names.iter().position(|n| *n == name).expect("a parameter");
         let values = (0..n).flat_map(|j| [at(format!("cells[{j}].l")), at(format!("cells[{j}].c"))]);
-        write(here.join("dirac.txt"), std::iter::once(g.value).chain(values.map(|k| g.parameters[k])));
+        write_values(
+            &here.join("dirac.txt"),
+            std::iter::once(g.value).chain(values.map(|k| g.parameters[k])),
+        );
         let mut times: Vec<f64> = (0..11)
             .map(|_| {
                 let start = std::time::Instant::now();

@@ -22,6 +22,10 @@ use dirac::prelude::*;
 #[path = "../tests/zoo/mod.rs"]
 mod zoo;
 
+#[path = "support/start.rs"]
+mod start;
+
+use start::write_start;
 use zoo::{Cell, Ladder, ladder_at_rest, modal_solution, pulse, unit_ladder};
 
 const T_END: f64 = 10.0;
@@ -46,16 +50,7 @@ fn main() {
     if let Some(k) = args.iter().position(|a| a == "setup") {
         let dir = std::path::PathBuf::from(&args[k + 1]);
         let sizes = ladder.sizes();
-        let mut y = sizes.zeros_y::<Ladder>();
-        start.write_y(&mut y);
-        let mut f = sizes.zeros_y::<Ladder>();
-        ladder.residual(0.0, &y, &mut f);
-        let layout = dirac::Layout::new(sizes);
-        for i in (layout.v..layout.p).chain(layout.lambda..layout.len) {
-            f[i] = 0.0;
-        }
-        write(dir.join("y0.txt"), y.iter().map(|v| format!("{v:.17e}")));
-        write(dir.join("yp0.txt"), f.iter().map(|v| format!("{v:.17e}")));
+        write_start(&ladder, 0.0, &start, &dir);
         write(dir.join("nodes.txt"), nodes(&ladder, n).into_iter().map(|i| i.to_string()));
         write(
             dir.join("ref.txt"),

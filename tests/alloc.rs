@@ -781,6 +781,25 @@ fn steps_with_sensitivities_do_not_allocate() {
     }
 }
 
+/// A run of `model` recorded whole, or within `budget` bytes.
+fn record<M: Parameters>(
+    model: &M,
+    options: RadauOptions,
+    start: &State<M>,
+    t_end: f64,
+    budget: Option<usize>,
+) -> dirac::adjoint::Recording<M>
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let mut radau = Radau::new(model, options).expect("valid");
+    match budget {
+        None => radau.record(0.0, start, t_end),
+        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
+    }
+    .expect("integrates")
+}
+
 /// The allocations of an adjoint sweep over a run of `model` from `start` to `t_end`: its
 /// set-up only, if its backward steps allocate nothing. Returns them with the number of steps.
 fn allocations_in_adjoint_sweep<M: Parameters>(
@@ -792,13 +811,7 @@ fn allocations_in_adjoint_sweep<M: Parameters>(
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
-    let options = RadauOptions::tolerances(1e-8, 1e-8);
-    let mut radau = Radau::new(model, options).expect("valid");
-    let recording = match budget {
-        None => radau.record(0.0, start, t_end),
-        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
-    }
-    .expect("integrates");
+    let recording = record(model, RadauOptions::tolerances(1e-8, 1e-8), start, t_end, budget);
     let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
         out.clone_from(y);
         0.5 * (y.q.norm_squared() + y.v.norm_squared() + y.p.norm_squared() + y.lambda.norm_squared())
@@ -852,12 +865,7 @@ where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
     let base = peak_from_here();
-    let mut radau = Radau::new(model, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
-    let recording = match budget {
-        None => radau.record(0.0, start, t_end),
-        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
-    }
-    .expect("integrates");
+    let recording = record(model, RadauOptions::tolerances(1e-10, 1e-10), start, t_end, budget);
     let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
         out.clone_from(y);
         0.5 * (y.q.norm_squared() + y.v.norm_squared() + y.p.norm_squared() + y.lambda.norm_squared())

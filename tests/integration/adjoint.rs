@@ -5,7 +5,7 @@
 //! agree to round-off, not to the tolerance); and central differences of whole simulations at
 //! perturbed parameters and initial values (to the tolerance).
 
-use dirac::adjoint::Objective;
+use dirac::adjoint::{Objective, Recording};
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
 use dirac::{Storage, Wrt};
@@ -36,6 +36,36 @@ where
     a.q.dot(&b.q) + a.v.dot(&b.v) + a.p.dot(&b.p) + a.lambda.dot(&b.lambda)
 }
 
+/// Sensitivities with respect to every parameter and every initial position and velocity.
+fn everything<M: Parameters>(model: &M) -> Sensitivities<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut wrt = Sensitivities::all_parameters(model);
+    for name in &model.coordinate_names() {
+        let c = model.coordinate(name).expect("a coordinate");
+        wrt = wrt.initial_position(c).initial_velocity(c);
+    }
+    wrt
+}
+
+/// The run recorded whole, or within `budget` bytes.
+fn record<M: Parameters>(
+    radau: &mut Radau<'_, M>,
+    start: &State<M>,
+    t_end: f64,
+    budget: Option<usize>,
+) -> Recording<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match budget {
+        None => radau.record(0.0, start, t_end),
+        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
+    }
+    .expect("integrates")
+}
+
 /// The adjoint gradient of `cᵀ y(T)` with respect to every parameter, initial position and
 /// initial velocity equals `cᵀ s(T)` of the forward sensitivities of the same run, to
 /// `1e-10` relative to the largest of them (and of 1e-3: a zero sensitivity is zero to
@@ -63,19 +93,10 @@ fn compare_with_forward<M: Parameters>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let names = model.coordinate_names();
-    let mut wrt = Sensitivities::all_parameters(model);
-    for name in &names {
-        let c = model.coordinate(name).expect("a coordinate");
-        wrt = wrt.initial_position(c).initial_velocity(c);
-    }
+    let wrt = everything(model);
     let options = RadauOptions { exact_stages: budget.is_some(), ..tight() };
     let mut radau = Radau::new(model, options).expect("valid").with_sensitivities(&wrt).expect("valid");
-    let recording = match budget {
-        None => radau.record(0.0, start, t_end),
-        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
-    }
-    .expect("integrates");
+    let recording = record(&mut radau, start, t_end, budget);
     let stats = radau.stats();
     // Exactly: by the coupled system, or (a linear model's) by one direct solve per column
     // with the step's factored matrix, which is then the stage system's own.
@@ -224,11 +245,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     let names = model.coordinate_names();
-    let mut wrt = Sensitivities::all_parameters(model);
-    for name in &names {
-        let c = model.coordinate(name).expect("a coordinate");
-        wrt = wrt.initial_position(c).initial_velocity(c);
-    }
+    let wrt = everything(model);
     let options = RadauOptions {
         exact_stages: budget.is_some(),
         dense_output: dirac::DenseOutput::Collocation,
@@ -238,12 +255,7 @@ where
     let mut radau = Radau::new(model, options).expect("valid").with_sensitivities(&wrt).expect("valid");
     let solution =
         radau.solve_with_sensitivities(0.0, start, t_end, &Sampling::Times(times.clone())).expect("solves");
-    let mut radau = Radau::new(model, options).expect("valid");
-    let recording = match budget {
-        None => radau.record(0.0, start, t_end),
-        Some(bytes) => radau.record_within(0.0, start, t_end, bytes),
-    }
-    .expect("integrates");
+    let recording = record(&mut Radau::new(model, options).expect("valid"), start, t_end, budget);
     assert_eq!(recording.steps(), solution.stats.steps, "the same run");
     let n = names.len();
     let mut rng = Rng::new(17);
