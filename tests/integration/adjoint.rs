@@ -196,23 +196,28 @@ fn adjoint_gradients_equal_forward_sensitivities_of_the_same_run() {
 /// checkpoints again at two or more levels, the gradient still equals the forward
 /// sensitivities of the same run to 1e-10 (the replayed stages are the recorded ones to
 /// round-off); the recording's bytes stay within the budget, however many steps.
+/// The pendulum of length 0.7 at 0.8 rad from the bottom, moving.
+fn start_of_pendulum(pendulum: &Pendulum) -> State<Pendulum> {
+    let q = VecQ::<Pendulum>::new(0.7 * 0.8f64.sin(), -0.7 * 0.8f64.cos());
+    consistent_state(pendulum, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
+        .expect("a consistent start")
+}
+
 #[test]
 fn checkpointed_adjoint_gradients_equal_forward_sensitivities() {
     let pendulum = Pendulum { m: 1.3, g: 9.81, l: 0.7 };
-    let q = VecQ::<Pendulum>::new(0.7 * 0.8f64.sin(), -0.7 * 0.8f64.cos());
-    let start =
-        consistent_state(&pendulum, 0.0, &q, &VecQ::<Pendulum>::new(0.2, 0.1), Consistency::default())
-            .expect("a consistent start");
+    let start = start_of_pendulum(&pendulum);
     // A pendulum's state and its step's index and time. Forty of them: twenty checkpoints of
     // the run (every 32nd step's start), ten for a segment's and two whole steps, so that a
     // segment is cut into pieces of four steps and these into two; a thousand: every second
     // step's start, and segments solved again whole.
     let state = 8 * 7 + 16;
-    for budget in [40 * state, 64 * state, 1000 * state] {
+    // And a budget far above what the run needs, which allocates only what it needs.
+    for budget in [40 * state, 64 * state, 1000 * state, usize::MAX] {
         let (steps, bytes) = compare_with_forward(&pendulum, &start, 6.0, 11, Some(budget));
         assert!(steps > 100, "{steps} steps");
         assert!(
-            bytes <= budget / 2 + 8 * steps.next_power_of_two(),
+            bytes <= (budget / 2).saturating_add(8 * steps.next_power_of_two()),
             "{bytes} bytes for a budget of {budget}"
         );
     }
@@ -228,6 +233,21 @@ fn checkpointed_adjoint_gradients_equal_forward_sensitivities() {
     let budget = Radau::new(&ladder, tight()).expect("valid").record_within(0.0, &start, 1.0, 100);
     let error = budget.expect_err("a budget below sixteen states");
     assert!(error.to_string().contains("at least"), "{error}");
+    // Sixteen states: eight checkpoints of a run of hundreds of steps, and room in the sweep
+    // for one whole step and four starts, which halve a stretch at most four times.
+    let recording = Radau::new(&pendulum, tight())
+        .expect("valid")
+        .record_within(0.0, &start_of_pendulum(&pendulum), 6.0, 16 * state)
+        .expect("recorded within sixteen states");
+    let terminal = |_: f64, y: &State<Pendulum>, out: &mut State<Pendulum>| {
+        out.clone_from(y);
+        0.5 * y.q.norm_squared()
+    };
+    let error = recording.gradient(&pendulum, &Objective::terminal(&terminal)).expect_err("too little room");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "budget", reason } if reason.contains("too small")),
+        "{error}"
+    );
 }
 
 /// Costs at sample times, `G = Σ_k c_kᵀ (q, v)(t_k)` with random `c_k` over 41 samples from the
@@ -401,6 +421,28 @@ fn adjoints_out_of_reach_are_refused_with_the_reason() {
         matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("projection")),
         "{error}"
     );
+    // Sample times that are not a rising sequence within the run, or a cost that is not finite.
+    let recording = Radau::new(&pendulum, RadauOptions::default())
+        .expect("valid")
+        .record(0.0, &horizontal_start(&pendulum), 1.0)
+        .expect("integrates");
+    let cost = |_: usize, _: f64, y: &State<Pendulum>, out: &mut State<Pendulum>| {
+        out.clone_from(y);
+        0.5 * y.q.norm_squared()
+    };
+    for times in [vec![0.2, f64::NAN], vec![0.5, 0.2], vec![0.5, 1.5]] {
+        let error = recording.gradient(&pendulum, &Objective::samples(&times, &cost)).expect_err("refused");
+        assert!(
+            matches!(&error, SimError::InvalidOption { what: "samples", .. }),
+            "samples at {times:?}: {error}"
+        );
+    }
+    let blows_up = |_: f64, _: &State<Pendulum>, out: &mut State<Pendulum>| {
+        out.components_mut().for_each(|x| *x = f64::NAN);
+        0.0
+    };
+    let error = recording.gradient(&pendulum, &Objective::terminal(&blows_up)).expect_err("not finite");
+    assert!(matches!(&error, SimError::NonFinite { .. }), "{error}");
     let ball = BouncingBall { m: 1.0, g: 9.81, e: 0.8 };
     let mut start = State::<BouncingBall>::zeros();
     start.set_q(BouncingBall::Y, 1.0);

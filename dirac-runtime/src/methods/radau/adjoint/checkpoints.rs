@@ -151,9 +151,12 @@ where
     where
         M: Parameters,
     {
+        // No more room than the run needs: a budget far above it allocates only that.
         let state = Mark::<M>::bytes(self.sizes);
-        let whole = (self.budget / 4 / (4 * state)).max(1);
-        let mut pool: Vec<Mark<M>> = (0..self.budget / 4 / state).map(|_| Mark::zeros(self.sizes)).collect();
+        let steps = self.steps.len().max(1);
+        let whole = (self.budget / 4 / (4 * state)).clamp(1, steps);
+        let starts = (self.budget / 4 / state).min(steps);
+        let mut pool: Vec<Mark<M>> = (0..starts).map(|_| Mark::zeros(self.sizes)).collect();
         let mut replay = Replay {
             radau: Radau::new(model, self.options)?,
             steps: &self.steps,
