@@ -81,6 +81,13 @@ pub struct Blocks {
     pub unilateral: Vec<Id>,
     pub unilateral_dq: Matrix,
     pub restitution: Vec<Id>,
+    /// What an impact's derivative needs of the unilateral constraints (empty without them), for
+    /// `k` constraints, `n` coordinates and the parameters `θ` in field order: each constraint's
+    /// Hessian `∂²φ_j/∂q²` (`n × n`, column-major, constraint after constraint), `∂e/∂q`
+    /// (`k × n`, column-major), then for `x = t, θ_0, θ_1, …` in turn `∂φ/∂x` (`k`), `∂a/∂x`
+    /// (`k × n`, column-major, `a = ∂φ/∂q`) and `∂e/∂x` (`k`); then `∂²φ/∂t∂x` (`k`) for the
+    /// same `x` in turn.
+    pub unilateral_derivatives: Vec<Id>,
     /// The event functions `g(t, q, v, λ)`.
     pub events: Vec<Id>,
     /// The derivatives with respect to each parameter (`f64` field), in field order.
@@ -192,11 +199,33 @@ impl Blocks {
         let dav_dt = a_v.iter().map(|&c| g.diff(c, time)).collect();
         let unilateral: Vec<Id> = m.unilaterals.iter().map(|u| u.phi).collect();
         let unilateral_dq = jacobian(g, &unilateral, &q);
-        let restitution = m.unilaterals.iter().map(|u| u.restitution).collect();
+        let restitution: Vec<Id> = m.unilaterals.iter().map(|u| u.restitution).collect();
         let events = m.events.iter().map(|e| e.2).collect();
         let thetas: Vec<Id> =
             (0..m.params.len()).map(|i| m.symbols.declare(&mut m.graph, Sym::Parameter(i))).collect();
         let g = &mut m.graph;
+        let mut unilateral_derivatives = Vec::new();
+        if !unilateral.is_empty() {
+            for row in &unilateral_dq {
+                for &qc in &q {
+                    unilateral_derivatives.extend(row.iter().map(|&a| g.diff(a, qc)));
+                }
+            }
+            for &qc in &q {
+                unilateral_derivatives.extend(restitution.iter().map(|&e: &Id| g.diff(e, qc)));
+            }
+            for &x in std::iter::once(&time).chain(&thetas) {
+                unilateral_derivatives.extend(unilateral.iter().map(|&phi| g.diff(phi, x)));
+                for c in 0..n {
+                    unilateral_derivatives.extend(unilateral_dq.iter().map(|row| g.diff(row[c], x)));
+                }
+                unilateral_derivatives.extend(restitution.iter().map(|&e: &Id| g.diff(e, x)));
+            }
+            let moving: Vec<Id> = unilateral.iter().map(|&phi| g.diff(phi, time)).collect();
+            for &x in std::iter::once(&time).chain(&thetas) {
+                unilateral_derivatives.extend(moving.iter().map(|&phi_t| g.diff(phi_t, x)));
+            }
+        }
         let dtheta = thetas
             .iter()
             .map(|&theta| {
@@ -266,6 +295,7 @@ impl Blocks {
             unilateral,
             unilateral_dq,
             restitution,
+            unilateral_derivatives,
             events,
             dtheta,
             vjp_dtheta,

@@ -89,6 +89,52 @@ fn a_ball_bounces_on_its_declared_floor_by_the_derived_impact_law() {
     assert!(solution.impacts_at("ceiling").is_none());
 }
 
+/// A ball dropped from rest at height `h0` onto a platform rising at speed `s`
+/// (`unilateral(platform) = y − s t`). Newton's law acts on the speed relative to the
+/// platform, `v⁺ − s = −e (v⁻ − s)`; the exact touchdown solves `h0 − g t²/2 = s t`, and the
+/// impulse is `m (1 + e)(s − v⁻)`, which a law reading only `v` (taking the platform for still)
+/// gets wrong by `m (1 + e) s`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(y => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+#[dirac(unilateral(platform, restitution = e) = y - s * t)]
+struct RisingPlatform {
+    m: f64,
+    g: f64,
+    e: f64,
+    s: f64,
+}
+
+#[test]
+fn a_moving_contact_reverses_the_speed_relative_to_it() {
+    let (h0, m, e, s) = (1.0, 0.7, 0.6, 0.5);
+    let platform = RisingPlatform { m, g: G, e, s };
+    let mut start = State::<RisingPlatform>::zeros();
+    start.set_q(RisingPlatform::Y, h0);
+    let touchdown = (-s + (s * s + 2.0 * G * h0).sqrt()) / G;
+    let before = -G * touchdown;
+    let after = s - e * (before - s);
+    let mut radau = Radau::new(&platform, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let solution = radau
+        .solve_with_events(
+            0.0,
+            &start,
+            touchdown + 0.05,
+            &Sampling::Every(0.01),
+            &mut Events::new().contacts(&platform),
+            go_on,
+        )
+        .expect("integrates");
+    let impacts = solution.impacts_at("platform").expect("a contact of that name");
+    assert_eq!(impacts.len(), 1, "{impacts:?}");
+    assert!(relative(impacts[0].t, touchdown) < 1e-10, "touchdown at {} against {touchdown}", impacts[0].t);
+    let impulse = m * (after - before);
+    assert!(relative(impacts[0].impulse, impulse) < 1e-9, "impulse {} against {impulse}", impacts[0].impulse);
+    let end = solution.last().expect("samples");
+    let exact = after - G * 0.05;
+    assert!(relative(end.v[0], exact) < 1e-9, "velocity {} against {exact}", end.v[0]);
+}
+
 /// Run past the Zeno time `t∞ = t1 (1 + 2e/(1 − e))`, the bounces accumulate: resting contact
 /// is not simulated, so the integration ends in `ContactCloses`, naming the contact and
 /// the accumulation time (extrapolated from the last impacts) instead of a bare step-size

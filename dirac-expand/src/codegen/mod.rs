@@ -15,7 +15,7 @@ use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
     EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT,
     L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL,
-    RESIDUAL_BLOCKS, RESTITUTION, Signature, UNILATERAL, UNILATERAL_DQ,
+    RESIDUAL_BLOCKS, RESTITUTION, Signature, UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -116,6 +116,13 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         hybrid.extend(e.sized(&UNILATERAL, &b.unilateral));
         hybrid.extend(e.sized(&UNILATERAL_DQ, &column_major(&b.unilateral_dq)));
         hybrid.extend(e.sized(&RESTITUTION, &b.restitution));
+        hybrid.extend(e.sized(&UNILATERAL_DERIVATIVES, &b.unilateral_derivatives));
+        let len = b.unilateral_derivatives.len();
+        hybrid.extend(quote! {
+            fn unilateral_derivatives_len(&self) -> ::core::primitive::usize {
+                #len
+            }
+        });
     }
     if !b.events.is_empty() {
         hybrid.extend(e.sized(&EVENTS, &b.events));

@@ -160,6 +160,8 @@ pub const OUTPUT_DLAMBDA: Signature = method("output_dlambda", &[T, Q, V, Lambda
 pub const UNILATERAL: Signature = method("unilateral", &[T, Q], Out::Values);
 pub const UNILATERAL_DQ: Signature = method("unilateral_dq", &[T, Q], Out::Values);
 pub const RESTITUTION: Signature = method("restitution", &[T, Q], Out::Values);
+/// The derivatives an impact's derivative needs (see `Blocks::unilateral_derivatives`).
+pub const UNILATERAL_DERIVATIVES: Signature = method("unilateral_derivatives", &[T, Q], Out::Values);
 /// The model's event functions, in the order declared; emitted for models that have events.
 pub const EVENTS: Signature = method("events", &[T, Q, V, Lambda], Out::Values);
 

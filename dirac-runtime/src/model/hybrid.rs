@@ -54,6 +54,30 @@ where
         );
     }
 
+    /// How many values [`Hybrid::unilateral_derivatives`] writes: zero where the derive does
+    /// not emit it (an interconnection does not yet; a primitive model with unilateral
+    /// constraints does).
+    fn unilateral_derivatives_len(&self) -> usize {
+        0
+    }
+
+    /// What the derivative of an impact needs of the unilateral constraints, into `out`, for
+    /// `k` constraints, `n` coordinates and the model's `P` parameters in order:
+    ///
+    /// 1. each constraint's Hessian `∂²φ_j/∂q²`, `n × n` column-major, `k` of them (`k n²`);
+    /// 2. `∂e/∂q` of the restitutions, `k × n` column-major (`k n`);
+    /// 3. for `x = t, θ_0, …, θ_{P−1}` in turn: `∂φ/∂x` (`k`), `∂a/∂x` (`k × n` column-major,
+    ///    `a = ∂φ/∂q` the one-forms) and `∂e/∂x` (`k`);
+    /// 4. for the same `x` in turn, `∂²φ/∂t∂x` (`k`): how a moving contact's own speed changes.
+    ///
+    /// `k n² + k n + (P + 1)(3k + k n)` values in all
+    /// ([`Hybrid::unilateral_derivatives_len`]). Generated symbolically where that is not zero;
+    /// otherwise it panics.
+    fn unilateral_derivatives(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, out);
+        panic!("unilateral_derivatives: not generated for this model (see unilateral_derivatives_len)")
+    }
+
     /// Whether unilateral constraint `j` is closed, held as a holonomic constraint: in the
     /// companion the derive makes of a model with unilateral constraints
     /// (`model.with_contacts()`, of type `<Model>WithContacts`); never in other models.

@@ -1,10 +1,11 @@
 //! Impacts at unilateral constraints `φ_u(q, t) ≥ 0` (`#[dirac(unilateral(name) = φ)]`), by
 //! Newton's law of restitution along the constraints' own one-forms.
 //!
-//! When contacts `J` close at once with normal velocities `c_j = a_j v⁻ < 0` (`a_j = ∂φ_j/∂q`),
-//! the momentum jumps along their one-forms, `p⁺ = p⁻ + Σ_j a_jᵀ Λ_j`, while the model's own
-//! constraints keep holding, `A v⁺ + b = 0`, and each contact's normal velocity is reversed
-//! and scaled by its restitution, `a_j v⁺ = −e_j a_j v⁻`. For a Lagrangian quadratic in the
+//! When contacts `J` close at once with normal velocities `c_j = a_j v⁻ + ∂φ_j/∂t < 0`
+//! (`a_j = ∂φ_j/∂q`; `∂φ_j/∂t` the speed of a moving contact), the momentum jumps along their
+//! one-forms, `p⁺ = p⁻ + Σ_j a_jᵀ Λ_j`, while the model's own constraints keep holding,
+//! `A v⁺ + b = 0`, and each contact's normal velocity is reversed and scaled by its
+//! restitution, `a_j v⁺ + ∂φ_j/∂t = −e_j c_j`. For a Lagrangian quadratic in the
 //! velocities (`Δp = L_vv Δv`, every mechanical one) this is linear:
 //!
 //! ```text
@@ -26,6 +27,44 @@ use crate::error::SimError;
 use crate::model::Hybrid;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage};
+
+/// `∂φ_u/∂t` of each unilateral constraint at `(t, q)`: the generated derivative where the
+/// derive emits it; elsewhere (an interconnection) zero, after checking that no constraint
+/// moves (its value unchanged at `t ± 1e-3`), or an error naming the one that does.
+pub(crate) fn moving_speeds<M: Hybrid>(
+    model: &M,
+    t: f64,
+    q: &crate::shape::dims::VecQ<M>,
+    names: &[String],
+) -> Result<Vec<f64>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let k = names.len();
+    let len = model.unilateral_derivatives_len();
+    if len > 0 {
+        let n = model.sizes().nq;
+        let mut all = vec![0.0; len];
+        model.unilateral_derivatives(t, q, &mut all);
+        let at = k * n * n + k * n;
+        return Ok(all[at..at + k].to_vec());
+    }
+    let (mut before, mut after) = (vec![0.0; k], vec![0.0; k]);
+    model.unilateral(t - 1e-3, q, &mut before);
+    model.unilateral(t + 1e-3, q, &mut after);
+    match (0..k).find(|&j| before[j] != after[j]) {
+        None => Ok(vec![0.0; k]),
+        Some(j) => Err(SimError::InvalidOption {
+            what: "contacts",
+            reason: format!(
+                "the unilateral constraint `{}` moves with time, and the speed of a moving contact is \
+                 generated only for a model that declares it itself, not for an interconnection: declare \
+                 it on a model of its own",
+                names[j]
+            ),
+        }),
+    }
+}
 
 /// What an impact did: each closing contact's impulse, and the first contact it left at rest.
 pub(crate) struct Impacts {
@@ -99,10 +138,13 @@ impl Contacts {
                 });
             }
         }
+        let moving = moving_speeds(model, t, &state.q, &self.names)?;
         let rows = &self.rows;
-        // Row j of ∂φ_u/∂q times x.
+        // Row j of ∂φ_u/∂q times x; and the normal speed of contact j at velocities x, with the
+        // speed of a moving contact, ∂φ_u/∂t.
         let dot = |j: usize, x: &[f64]| (0..n).map(|i| rows[j + i * k] * x[i]).sum::<f64>();
-        let approach: Vec<f64> = closing.iter().map(|&j| dot(j, state.v.as_slice())).collect();
+        let speed = |j: usize, x: &[f64]| dot(j, x) + moving[j];
+        let approach: Vec<f64> = closing.iter().map(|&j| speed(j, state.v.as_slice())).collect();
         if let Some(i) = approach.iter().position(|c| !c.is_finite()) {
             let component =
                 format!("the one-form ∂φ/∂q of the unilateral constraint `{}`", self.names[closing[i]]);
@@ -176,7 +218,7 @@ impl Contacts {
         }
 
         // A contact left without normal velocity stays closed.
-        let reopening: Vec<f64> = closing.iter().map(|&j| dot(j, state.v.as_slice())).collect();
+        let reopening: Vec<f64> = closing.iter().map(|&j| speed(j, state.v.as_slice())).collect();
         let mut resting = None;
         for (i, &j) in closing.iter().enumerate().filter(|&(i, _)| approach[i] < 0.0) {
             let recent = &mut self.recent[j];
