@@ -88,6 +88,10 @@ pub use dirac_runtime::ensemble;
 /// Input sources read by time: tables of samples, held or interpolated.
 pub use dirac_runtime::sources;
 
+/// An impact at unilateral constraints as a map of the state before it, with its derivative
+/// with respect to positions, velocities, time and parameters.
+pub use dirac_runtime::impact;
+
 /// Joint-space dynamics of mechanisms (robots read from URDF files among them): the mass
 /// matrix, gravity and bias torques, inverse dynamics.
 ///

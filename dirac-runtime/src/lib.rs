@@ -87,7 +87,7 @@ pub use analysis::{diagnose, dirac_structure, init, joint_space, linear};
 pub use methods::{explicit, radau, variational};
 pub use model::{blocks, flat, keys, names, sparse, state, structure};
 pub use shape::{dims, layout, stack};
-pub use simulate::{ensemble, events, held, integrator, sensitivity, solution, sources};
+pub use simulate::{ensemble, events, held, impact, integrator, sensitivity, solution, sources};
 
 /// The linear systems of implicit steps: the seam every method solves through, the condensed
 /// solver a model's algebra provides, and a full reference solver.

@@ -21,6 +21,7 @@ mod fmi;
 mod fuzz;
 mod hand_derivations;
 mod hygiene;
+mod impact;
 mod initial;
 mod inputs;
 mod interconnection;

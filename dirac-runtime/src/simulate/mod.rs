@@ -12,6 +12,8 @@ pub mod ensemble;
 pub mod events;
 /// How an integrator holds its model: shared, or exclusive to change it while it runs.
 pub mod held;
+/// An impact as a map of the state before it, with its derivative.
+pub mod impact;
 /// The driver every integrator shares, with `solve` written once.
 pub mod integrator;
 pub(crate) mod laws;

@@ -1,0 +1,408 @@
+//! An impact at unilateral constraints as a map of the state just before it, with its
+//! derivative: what carries a sensitivity or an adjoint across the impact, and what a
+//! saltation matrix (the linearised jump of a hybrid orbit) is made of.
+//!
+//! The impact law (see the contacts' module) is linear in the unknowns `u = (Δv, μ, Λ)`, the
+//! velocity change, the model's constraint impulses and the contacts' impulses, for the
+//! contacts `J` that the impact pushes (`Λ_j > 0`):
+//!
+//! ```text
+//! [H  −Aᵀ  −Cᵀ] [Δv]   [      0      ]      H = ∂²L/∂v², A the model's constraint rows,
+//! [A   0    0 ] [μ ] = [      0      ]      C the rows a_j = ∂φ_j/∂q of the contacts in J,
+//! [C   0    0 ] [Λ ]   [−(1 + E) C v⁻]      E their restitutions;
+//! ```
+//!
+//! `v⁺ = v⁻ + Δv`. Differentiating it along a change `dx` of `q`, `v⁻`, `t` or a parameter,
+//! `K du = −(dK) u + dr`, which takes `∂(H Δv)/∂x`, `∂(Aᵀμ)/∂x`, `∂(A Δv)/∂x` (from the
+//! model's own blocks, `H Δv` being `∂L/∂v(v⁺) − ∂L/∂v(v⁻)` for a Lagrangian quadratic in the
+//! velocities, which the impact law assumes) and the contacts' second derivatives, which the
+//! derive emits ([`Hybrid::unilateral_derivatives`]).
+
+use nalgebra::{DMatrix, DVector, DefaultAllocator};
+
+use crate::algebra::Algebra;
+use crate::error::SimError;
+use crate::model::blocks::ResidualBlocks;
+use crate::model::state::State;
+use crate::model::{Hybrid, Parameters};
+use crate::shape::dims::{Storage, VecQ};
+use crate::simulate::contacts::Contacts;
+
+/// An impact and its derivative ([`impact_map`]): the velocities after it and how they move
+/// with the positions, the velocities before it, the time and the parameters.
+#[derive(Clone, Debug)]
+pub struct ImpactMap {
+    /// The velocities after the impact, `v⁺`.
+    pub velocity: DVector<f64>,
+    /// Each closing contact (its index among the unilateral constraints) with its impulse
+    /// `Λ ≥ 0`: zero for one that was not approaching or that the others opened.
+    pub impulses: Vec<(usize, f64)>,
+    /// `∂v⁺/∂q`, `n × n`.
+    pub dq: DMatrix<f64>,
+    /// `∂v⁺/∂v⁻`, `n × n`.
+    pub dv: DMatrix<f64>,
+    /// `∂v⁺/∂t` (a moving contact or constraint).
+    pub dt: DVector<f64>,
+    /// `∂v⁺/∂θ`, `n × P`, a column per parameter in the model's order.
+    pub dtheta: DMatrix<f64>,
+}
+
+/// The impact of `model`'s unilateral constraints `closing` (their indices) at time `t`, at
+/// positions `q`, on velocities `v` (before it), by the same law as a simulation's impacts,
+/// with its derivative with respect to `q`, `v`, `t` and every parameter.
+///
+/// Refused with [`SimError::InvalidOption`] for a model whose derive does not emit its
+/// contacts' second derivatives (an interconnection); the impact's own errors (a restitution
+/// outside `[0, 1]`, an impact that moves nothing) as a simulation reports them; and
+/// [`SimError::NotDetermined`] where the law's linear system is singular there, so that its
+/// derivative does not exist (redundant constraint rows).
+///
+/// ```
+/// use dirac::prelude::*;
+/// use dirac::impact::impact_map;
+///
+/// #[derive(LagrangeDirac)]
+/// #[dirac(coordinates(y => v))]
+/// #[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
+/// #[dirac(unilateral(floor, restitution = e) = y)]
+/// struct Ball { m: f64, g: f64, e: f64 }
+///
+/// let ball = Ball { m: 1.0, g: 9.81, e: 0.8 };
+/// let q = VecQ::<Ball>::new(0.0);
+/// let map = impact_map(&ball, 0.0, &q, &VecQ::<Ball>::new(-2.0), &[0]).expect("an impact");
+/// assert!((map.velocity[0] - 1.6).abs() < 1e-12);
+/// assert!((map.dv[(0, 0)] + 0.8).abs() < 1e-12); // v⁺ = −e v⁻
+/// assert!((map.dtheta[(0, 2)] - 2.0).abs() < 1e-12); // ∂v⁺/∂e = −v⁻
+/// ```
+pub fn impact_map<M: Hybrid + Parameters>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    closing: &[usize],
+) -> Result<ImpactMap, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if model.unilateral_derivatives_len() == 0 {
+        return Err(SimError::InvalidOption {
+            what: "impact",
+            reason: "the model's contacts have no generated second derivatives (an interconnection's \
+                     do not yet): declare the unilateral constraints on a model of its own"
+                .into(),
+        });
+    }
+    let sizes = model.sizes();
+    let (n, m, k) = (sizes.nq, sizes.nc, model.unilateral_names().len());
+    let params = model.parameter_count();
+    let mut state = State::<M>::with_sizes(sizes);
+    state.q.copy_from(q);
+    state.v.copy_from(v);
+    let impacts = Contacts::new(model).impact(model, t, &mut state, closing)?;
+    let active: Vec<(usize, f64)> = impacts.impulses.iter().copied().filter(|&(_, l)| l > 0.0).collect();
+    let mut map = ImpactMap {
+        velocity: DVector::from_column_slice(state.v.as_slice()),
+        impulses: impacts.impulses,
+        dq: DMatrix::zeros(n, n),
+        dv: DMatrix::identity(n, n),
+        dt: DVector::zeros(n),
+        dtheta: DMatrix::zeros(n, params),
+    };
+    if active.is_empty() {
+        return Ok(map);
+    }
+    let law = Law::new(model, t, q, v, &state.v, &active, k)?;
+    let r = active.len();
+    let size = n + m + r;
+
+    // Along q_c.
+    let shape = model.shape();
+    let dense_qq = |fill: &dyn Fn(&mut crate::model::MatQQ<M>)| {
+        let mut block = <M::Algebra as Algebra<M>>::zeros_qq(&shape);
+        fill(&mut block);
+        let mut out = DMatrix::zeros(n, n);
+        <M::Algebra as Algebra<M>>::qq_entries(&block, |i, j, x| out[(i, j)] += x);
+        out
+    };
+    let dense_cq = |fill: &dyn Fn(&mut crate::model::MatCQ<M>)| {
+        let mut block = <M::Algebra as Algebra<M>>::zeros_cq(&shape);
+        fill(&mut block);
+        let mut out = DMatrix::zeros(m, n);
+        <M::Algebra as Algebra<M>>::cq_entries(&block, |i, j, x| out[(i, j)] += x);
+        out
+    };
+    let (v_minus, v_plus) = (v, &state.v);
+    let mu = law.mu::<M>(sizes);
+    let momenta: DMatrix<f64> =
+        &dense_qq(&|b| model.l_vq(t, q, v_plus, b)) - &dense_qq(&|b| model.l_vq(t, q, v_minus, b));
+    let forces: DMatrix<f64> = dense_qq(&|b| model.datl_dq(t, q, &mu, b));
+    let rows: DMatrix<f64> =
+        &dense_cq(&|b| model.dav_dq(t, q, v_plus, b)) - &dense_cq(&|b| model.dav_dq(t, q, v_minus, b));
+    let mut rhs = DVector::zeros(size);
+    for c in 0..n {
+        rhs.fill(0.0);
+        for i in 0..n {
+            let contacts: f64 = law.hessian_column(c).map(|(lambda, h)| lambda * h[i]).sum();
+            rhs[i] = -(momenta[(i, c)] - forces[(i, c)] - contacts);
+        }
+        for i in 0..m {
+            rhs[n + i] = -rows[(i, c)];
+        }
+        for (s, row) in law.contacts.iter().enumerate() {
+            let hessian = |x: &[f64]| (0..n).map(|i| row.hessian[i + c * n] * x[i]).sum::<f64>();
+            rhs[n + m + s] = -row.de_dq[c] * row.approach
+                - (1.0 + row.e) * (hessian(v_minus.as_slice()) + row.moving_dq[c])
+                - hessian(law.dv.as_slice());
+        }
+        law.solve(&mut rhs)?;
+        map.dq.column_mut(c).copy_from(&rhs.rows(0, n));
+    }
+
+    // Along v⁻_c: only the contacts' law moves.
+    for c in 0..n {
+        rhs.fill(0.0);
+        for (s, row) in law.contacts.iter().enumerate() {
+            rhs[n + m + s] = -(1.0 + row.e) * row.a[c];
+        }
+        law.solve(&mut rhs)?;
+        for i in 0..n {
+            map.dv[(i, c)] += rhs[i];
+        }
+    }
+
+    // Along t: ∂A/∂t column by column from ∂(A v + b)/∂t at the unit velocities.
+    let rate = |w: &VecQ<M>| {
+        let mut out = sizes.zeros_c::<M>();
+        model.dav_dt(t, q, w, &mut out);
+        out
+    };
+    let mut unit = sizes.zeros_q::<M>();
+    let still = rate(&unit);
+    let mut moving_forces = DVector::<f64>::zeros(n);
+    for i in 0..n {
+        unit[i] = 1.0;
+        moving_forces[i] = (rate(&unit) - &still).dot(&mu);
+        unit[i] = 0.0;
+    }
+    let momenta_t = {
+        let (mut plus, mut minus) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+        model.l_vt(t, q, v_plus, &mut plus);
+        model.l_vt(t, q, v_minus, &mut minus);
+        plus - minus
+    };
+    let rows_t = rate(v_plus) - rate(v_minus);
+    let blocks = law.derivatives(0);
+    rhs.fill(0.0);
+    for i in 0..n {
+        let contacts: f64 = blocks.iter().map(|(lambda, d)| lambda * d.a[i]).sum();
+        rhs[i] = -(momenta_t[i] - moving_forces[i] - contacts);
+    }
+    for i in 0..m {
+        rhs[n + i] = -rows_t[i];
+    }
+    law.contact_rows(&blocks, v_minus.as_slice(), &mut rhs, n + m);
+    law.solve(&mut rhs)?;
+    map.dt.copy_from(&rhs.rows(0, n));
+
+    // Along each parameter: the model's blocks at (v⁺, 0), (v⁻, 0) and (v⁻, μ).
+    if params > 0 {
+        let zero = sizes.zeros_c::<M>();
+        let each = |w: &VecQ<M>, lambda: &crate::shape::dims::VecC<M>| {
+            let mut out: Vec<ResidualBlocks<M>> =
+                (0..params).map(|_| ResidualBlocks::with_sizes(&sizes)).collect();
+            model.residual_blocks_dtheta_all(t, q, w, lambda, &mut out);
+            out
+        };
+        let (plus, minus, pushed) = (each(v_plus, &zero), each(v_minus, &zero), each(v_minus, &mu));
+        for p in 0..params {
+            let blocks = law.derivatives(p + 1);
+            rhs.fill(0.0);
+            for i in 0..n {
+                let contacts: f64 = blocks.iter().map(|(lambda, d)| lambda * d.a[i]).sum();
+                let forces = pushed[p].momentum_rate[i] - minus[p].momentum_rate[i];
+                rhs[i] = -(plus[p].dl_dv[i] - minus[p].dl_dv[i] - forces - contacts);
+            }
+            for i in 0..m {
+                rhs[n + i] = -(plus[p].constraint_velocity[i] - minus[p].constraint_velocity[i]);
+            }
+            law.contact_rows(&blocks, v_minus.as_slice(), &mut rhs, n + m);
+            law.solve(&mut rhs)?;
+            map.dtheta.column_mut(p).copy_from(&rhs.rows(0, n));
+        }
+    }
+    Ok(map)
+}
+
+/// One pushed contact's part of the law: its row, restitution and approach speed, and what
+/// its derivative needs.
+struct ContactRow {
+    a: Vec<f64>,
+    e: f64,
+    /// The normal speed before the impact, `a v⁻ + ∂φ/∂t < 0`.
+    approach: f64,
+    /// `∂²φ/∂t∂q`: how a moving contact's speed changes with the positions.
+    moving_dq: Vec<f64>,
+    lambda: f64,
+    /// `∂²φ/∂q²`, column-major.
+    hessian: Vec<f64>,
+    de_dq: Vec<f64>,
+}
+
+/// The derivatives of one contact's `a`, `e` and `∂φ/∂t` along `t` or a parameter.
+struct Along {
+    a: Vec<f64>,
+    e: f64,
+    moving: f64,
+}
+
+/// The impact law's linear system at the impact, factored, with its solution.
+struct Law {
+    t: f64,
+    n: usize,
+    k: usize,
+    params: usize,
+    contacts: Vec<ContactRow>,
+    /// Which unilateral constraint each of `contacts` is.
+    index: Vec<usize>,
+    /// The contacts' derivatives as the model emits them.
+    derivatives: Vec<f64>,
+    lu: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+    dv: DVector<f64>,
+    mu: DVector<f64>,
+}
+
+impl Law {
+    fn new<M: Hybrid + Parameters>(
+        model: &M,
+        t: f64,
+        q: &VecQ<M>,
+        v_minus: &VecQ<M>,
+        v_plus: &VecQ<M>,
+        active: &[(usize, f64)],
+        k: usize,
+    ) -> Result<Law, SimError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let sizes = model.sizes();
+        let (n, m, params) = (sizes.nq, sizes.nc, model.parameter_count());
+        let mut rows = vec![0.0; k * n];
+        let mut restitution = vec![0.0; k];
+        model.unilateral_dq(t, q, &mut rows);
+        model.restitution(t, q, &mut restitution);
+        let mut derivatives = vec![0.0; model.unilateral_derivatives_len()];
+        model.unilateral_derivatives(t, q, &mut derivatives);
+        // Along t: ∂φ/∂t, then ∂a/∂t = ∂²φ/∂t∂q.
+        let along_t = k * n * n + k * n;
+        let contacts: Vec<ContactRow> = active
+            .iter()
+            .map(|&(j, lambda)| {
+                let a: Vec<f64> = (0..n).map(|c| rows[j + c * k]).collect();
+                let approach =
+                    a.iter().zip(v_minus.iter()).map(|(x, y)| x * y).sum::<f64>() + derivatives[along_t + j];
+                ContactRow {
+                    approach,
+                    moving_dq: (0..n).map(|c| derivatives[along_t + k + j + c * k]).collect(),
+                    e: restitution[j],
+                    lambda,
+                    hessian: derivatives[j * n * n..(j + 1) * n * n].to_vec(),
+                    de_dq: (0..n).map(|c| derivatives[k * n * n + j + c * k]).collect(),
+                    a,
+                }
+            })
+            .collect();
+        let r = contacts.len();
+        let shape = model.shape();
+        let mut h = <M::Algebra as Algebra<M>>::zeros_qq(&shape);
+        model.l_vv(t, q, v_minus, &mut h);
+        let mut cm = <M::Algebra as Algebra<M>>::zeros_cq(&shape);
+        model.constraint_matrix(t, q, &mut cm);
+        let size = n + m + r;
+        let mut matrix = DMatrix::<f64>::zeros(size, size);
+        <M::Algebra as Algebra<M>>::qq_entries(&h, |i, j, x| matrix[(i, j)] += x);
+        <M::Algebra as Algebra<M>>::cq_entries(&cm, |i, j, x| {
+            matrix[(j, n + i)] -= x;
+            matrix[(n + i, j)] += x;
+        });
+        for (s, row) in contacts.iter().enumerate() {
+            for (c, &x) in row.a.iter().enumerate() {
+                matrix[(c, n + m + s)] -= x;
+                matrix[(n + m + s, c)] += x;
+            }
+        }
+        let lu = matrix.lu();
+        let mut u = DVector::zeros(size);
+        for (s, row) in contacts.iter().enumerate() {
+            u[n + m + s] = -(1.0 + row.e) * row.approach;
+        }
+        if !lu.solve_mut(&mut u) || u.iter().any(|x| !x.is_finite()) {
+            return Err(singular(t));
+        }
+        // The law's velocity change is the impact's, to round-off; the impact's own is used.
+        let dv = DVector::from_iterator(n, v_plus.iter().zip(v_minus.iter()).map(|(p, m)| p - m));
+        let mu = u.rows(n, m).into_owned();
+        let index = active.iter().map(|&(j, _)| j).collect();
+        Ok(Law { t, n, k, params, contacts, index, derivatives, lu, dv, mu })
+    }
+
+    fn mu<M: Hybrid>(&self, sizes: crate::shape::dims::Sizes) -> crate::shape::dims::VecC<M>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let mut mu = sizes.zeros_c::<M>();
+        mu.iter_mut().zip(self.mu.iter()).for_each(|(x, &y)| *x = y);
+        mu
+    }
+
+    /// Each pushed contact's impulse with column `c` of its Hessian.
+    fn hessian_column(&self, c: usize) -> impl Iterator<Item = (f64, &[f64])> {
+        let n = self.n;
+        self.contacts.iter().map(move |row| (row.lambda, &row.hessian[c * n..(c + 1) * n]))
+    }
+
+    /// Each pushed contact's impulse with its derivatives along `x` (0 for `t`, `1 + p` for
+    /// parameter `p`).
+    fn derivatives(&self, x: usize) -> Vec<(f64, Along)> {
+        let (n, k) = (self.n, self.k);
+        let block = 2 * k + k * n;
+        let base = k * n * n + k * n + x * block;
+        let second = k * n * n + k * n + (self.params + 1) * block + x * k;
+        self.contacts
+            .iter()
+            .zip(&self.index)
+            .map(|(row, &j)| {
+                let a = (0..n).map(|c| self.derivatives[base + k + j + c * k]).collect();
+                let e = self.derivatives[base + k + k * n + j];
+                (row.lambda, Along { a, e, moving: self.derivatives[second + j] })
+            })
+            .collect()
+    }
+
+    /// The contacts' rows of the right-hand side along `x`, from `offset`:
+    /// `−∂e/∂x c − (1 + e) (∂a/∂x v⁻ + ∂²φ/∂t∂x) − ∂a/∂x Δv`, `c` the normal speed before.
+    fn contact_rows(&self, along: &[(f64, Along)], v_minus: &[f64], rhs: &mut DVector<f64>, offset: usize) {
+        for (s, (row, (_, d))) in self.contacts.iter().zip(along).enumerate() {
+            let dot = |x: &[f64]| d.a.iter().zip(x).map(|(a, b)| a * b).sum::<f64>();
+            rhs[offset + s] =
+                -d.e * row.approach - (1.0 + row.e) * (dot(v_minus) + d.moving) - dot(self.dv.as_slice());
+        }
+    }
+
+    fn solve(&self, rhs: &mut DVector<f64>) -> Result<(), SimError> {
+        if self.lu.solve_mut(rhs) && rhs.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(singular(self.t))
+        }
+    }
+}
+
+fn singular(t: f64) -> SimError {
+    SimError::NotDetermined {
+        t,
+        cause: "the impact law's linear system (the mass matrix bordered by the constraint and contact \
+                rows) is singular: redundant rows leave the impulses undetermined, so the impact has no \
+                derivative"
+            .into(),
+    }
+}

@@ -1,0 +1,161 @@
+//! An impact as a map of the state before it (`dirac::impact::impact_map`), and its derivative.
+//!
+//! Reference: central differences of the impact itself, the same law solved at positions,
+//! velocities, time and parameters moved by `±h` (`h = 1e-6` of the value's scale, error
+//! `O(h²)` plus round-off `O(ε/h)`, about 1e-9), on models whose every term of the derivative
+//! is exercised: a mass matrix that varies with the positions, a moving constraint whose rows
+//! do, a curved and moving contact, restitutions that are products of parameters, and two
+//! contacts closing at once.
+
+use dirac::impact::{ImpactMap, impact_map};
+use dirac::nalgebra::{DVector, DefaultAllocator};
+use dirac::prelude::*;
+use dirac::{Hybrid, Storage};
+
+use crate::zoo::*;
+
+/// A mass `m` on a spring of rest length `l` swinging in polar coordinates `(th, r)`, its
+/// mass matrix varying with `r`; a bead `z` of mass `mz` held by a link that stretches
+/// (`z = r cos th (1 + c t)`: its row varies with the positions and time); a wall that
+/// accelerates (`r sin th ≤ d + s t²`) with restitution `e0 e1`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(th => w, r => vr, z => vz))]
+#[dirac(lagrangian = 0.5 * m * (vr * vr + r * r * w * w) + 0.5 * mz * vz * vz + m * g * r * th.cos()
+    - 0.5 * k * (r - l) * (r - l))]
+#[dirac(holonomic(link) = z - r * th.cos() * (1.0 + c * t))]
+#[dirac(unilateral(wall, restitution = e0 * e1) = d + s * t * t - r * th.sin())]
+pub struct Swinger {
+    pub m: f64,
+    pub mz: f64,
+    pub g: f64,
+    pub k: f64,
+    pub l: f64,
+    pub c: f64,
+    pub e0: f64,
+    pub e1: f64,
+    pub d: f64,
+    pub s: f64,
+}
+
+/// The worst difference, relative to the largest entry of each block, between `map`'s
+/// derivative and central differences of the impact.
+fn worst_against_differences<M: Hybrid + Parameters + Clone>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    closing: &[usize],
+    map: &ImpactMap,
+) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    let n = model.sizes().nq;
+    let after = |model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>| {
+        impact_map(model, t, q, v, closing).expect("an impact").velocity
+    };
+    let mut worst = 0.0f64;
+    let mut compare = |exact: Vec<f64>, plus: DVector<f64>, minus: DVector<f64>, h: f64| {
+        let differences = (plus - minus) / (2.0 * h);
+        let scale = exact.iter().fold(1.0f64, |s, x| s.max(x.abs()));
+        for (a, b) in exact.iter().zip(differences.iter()) {
+            worst = worst.max((a - b).abs() / scale);
+        }
+    };
+    for c in 0..n {
+        let h = 1e-6 * q[c].abs().max(1.0);
+        let (mut up, mut down) = (q.clone(), q.clone());
+        up[c] += h;
+        down[c] -= h;
+        compare(
+            map.dq.column(c).iter().copied().collect(),
+            after(model, t, &up, v),
+            after(model, t, &down, v),
+            h,
+        );
+        let h = 1e-6 * v[c].abs().max(1.0);
+        let (mut up, mut down) = (v.clone(), v.clone());
+        up[c] += h;
+        down[c] -= h;
+        compare(
+            map.dv.column(c).iter().copied().collect(),
+            after(model, t, q, &up),
+            after(model, t, q, &down),
+            h,
+        );
+    }
+    let h = 1e-6;
+    compare(map.dt.iter().copied().collect(), after(model, t + h, q, v), after(model, t - h, q, v), h);
+    for p in 0..model.parameter_count() {
+        let value = model.parameter_value(p);
+        let h = 1e-6 * value.abs().max(1.0);
+        let (mut up, mut down) = (model.clone(), model.clone());
+        up.set_parameter_value(p, value + h);
+        down.set_parameter_value(p, value - h);
+        compare(
+            map.dtheta.column(p).iter().copied().collect(),
+            after(&up, t, q, v),
+            after(&down, t, q, v),
+            h,
+        );
+    }
+    worst
+}
+
+#[test]
+fn the_derivative_of_an_impact_equals_central_differences_of_it() {
+    let swinger =
+        Swinger { m: 1.3, mz: 0.4, g: 9.81, k: 20.0, l: 1.0, c: 0.3, e0: 0.9, e1: 0.7, d: 0.5, s: 0.2 };
+    let (th, r, t) = (0.4f64, 1.1f64, 0.25);
+    let (w, vr, c) = (1.5, 0.3, 0.3);
+    let q = VecQ::<Swinger>::new(th, r, r * th.cos() * (1.0 + c * t));
+    let vz = (1.0 + c * t) * (vr * th.cos() - r * th.sin() * w) + c * r * th.cos();
+    let v = VecQ::<Swinger>::new(w, vr, vz);
+    let map = impact_map(&swinger, t, &q, &v, &[0]).expect("an impact");
+    assert!(map.impulses[0].1 > 0.0, "the wall pushes: {:?}", map.impulses);
+    // The law holds: the wall's normal speed reversed and scaled, the link's rate kept.
+    let a = [-r * th.cos(), -th.sin(), 0.0];
+    let normal = |v: &[f64]| a.iter().zip(v).map(|(a, v)| a * v).sum::<f64>() + 2.0 * 0.2 * t;
+    let (before, after) = (normal(v.as_slice()), normal(map.velocity.as_slice()));
+    assert!((after + 0.63 * before).abs() < 1e-12, "normal speed {before} before, {after} after");
+    let worst = worst_against_differences(&swinger, t, &q, &v, &[0], &map);
+    eprintln!("swinger: worst relative difference {worst:e}");
+    assert!(worst < 1e-7, "worst relative difference {worst:e}");
+    // Every block is exercised: none of them vanishes.
+    for (name, block) in [("q", &map.dq), ("v", &map.dv), ("θ", &map.dtheta)] {
+        assert!(block.norm() > 1e-3, "∂v⁺/∂{name} = {block}");
+    }
+    assert!(map.dt.norm() > 1e-3, "∂v⁺/∂t = {}", map.dt);
+
+    // The pendulum against its wall: a rod and a contact.
+    let pendulum = PendulumAndWall { m: 1.2, g: 9.81, l: 0.8, e: 0.6, w: 0.3 };
+    let angle = 0.5f64;
+    let q = VecQ::<PendulumAndWall>::new(0.8 * angle.sin(), -0.8 * angle.cos());
+    let v = VecQ::<PendulumAndWall>::new(-2.0 * angle.cos(), -2.0 * angle.sin());
+    let map = impact_map(&pendulum, 0.0, &q, &v, &[0]).expect("an impact");
+    let worst = worst_against_differences(&pendulum, 0.0, &q, &v, &[0], &map);
+    eprintln!("pendulum: worst relative difference {worst:e}");
+    assert!(worst < 1e-7, "pendulum: worst relative difference {worst:e}");
+
+    // A bar falling flat and turning, so that both ends strike at once, with different speeds.
+    let bar = Bar { m: 1.0, j: 0.2, g: 9.81, l: 1.0, e: 0.5 };
+    let q = VecQ::<Bar>::new(0.0, 0.0, 0.0);
+    let v = VecQ::<Bar>::new(0.3, -1.0, 0.4);
+    let map = impact_map(&bar, 0.0, &q, &v, &[0, 1]).expect("an impact");
+    assert!(map.impulses.iter().all(|&(_, l)| l > 0.0), "both ends pushed: {:?}", map.impulses);
+    let worst = worst_against_differences(&bar, 0.0, &q, &v, &[0, 1], &map);
+    eprintln!("bar: worst relative difference {worst:e}");
+    assert!(worst < 1e-7, "bar: worst relative difference {worst:e}");
+}
+
+/// An interconnection's contacts have no generated second derivatives: refused by name.
+#[test]
+fn the_derivative_of_an_interconnections_impact_is_refused() {
+    let loaded = LoadedBall { ball: PortedBall { m: 1.0, g: 9.81, e: 0.8 }, load: Load { m: 0.5 } };
+    let sizes = loaded.sizes();
+    let mut v = sizes.zeros_q::<LoadedBall>();
+    v.fill(-1.0);
+    let error = impact_map(&loaded, 0.0, &sizes.zeros_q::<LoadedBall>(), &v, &[0])
+        .expect_err("no second derivatives");
+    assert!(matches!(&error, SimError::InvalidOption { what: "impact", .. }), "{error}");
+}
