@@ -7,8 +7,9 @@
 //! do, a curved and moving contact, restitutions that are products of parameters, and two
 //! contacts closing at once.
 
-use dirac::impact::{ImpactMap, impact_map};
-use dirac::nalgebra::{DVector, DefaultAllocator};
+use dirac::Events;
+use dirac::impact::{ImpactMap, impact_map, saltation};
+use dirac::nalgebra::{DMatrix, DVector, DefaultAllocator};
 use dirac::prelude::*;
 use dirac::{Hybrid, Storage};
 
@@ -158,4 +159,83 @@ fn the_derivative_of_an_interconnections_impact_is_refused() {
     let error = impact_map(&loaded, 0.0, &sizes.zeros_q::<LoadedBall>(), &v, &[0])
         .expect_err("no second derivatives");
     assert!(matches!(&error, SimError::InvalidOption { what: "impact", .. }), "{error}");
+}
+
+/// The bar in free flight (`x`, `y` ballistic, `th` turning steadily) at time `t` from
+/// `(q0, v0)`: its flow is known in closed form, and so is the flow's derivative over `τ`,
+/// `[[I, τ I], [0, I]]`.
+fn bar_in_flight(q0: &[f64; 3], v0: &[f64; 3], t: f64) -> ([f64; 3], [f64; 3]) {
+    let q = [q0[0] + v0[0] * t, q0[1] + v0[1] * t - 0.5 * 9.81 * t * t, q0[2] + v0[2] * t];
+    (q, [v0[0], v0[1] - 9.81 * t, v0[2]])
+}
+
+fn free_flight(tau: f64) -> DMatrix<f64> {
+    let mut flow = DMatrix::identity(6, 6);
+    for i in 0..3 {
+        flow[(i, 3 + i)] = tau;
+    }
+    flow
+}
+
+/// The bar's state at `t_end` from `(q0, v0)` at 0, simulated through its impacts, and the
+/// impacts (contact, time).
+fn bar_at(bar: &Bar, q0: &[f64], v0: &[f64], t_end: f64) -> (DVector<f64>, Vec<(usize, f64)>) {
+    let q = VecQ::<Bar>::from_column_slice(q0);
+    let v = VecQ::<Bar>::from_column_slice(v0);
+    let start = consistent_state(bar, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let mut radau = Radau::new(bar, RadauOptions::tolerances(1e-13, 1e-13)).expect("valid");
+    let solution = radau
+        .solve_with_events(0.0, &start, t_end, &Sampling::Steps, &mut Events::new().contacts(bar), |_, _| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    let end = solution.last().expect("samples");
+    let impacts = solution.impacts().iter().map(|impact| (impact.contact, impact.t)).collect();
+    (DVector::from_iterator(6, end.q.iter().chain(end.v.iter()).copied()), impacts)
+}
+
+/// The saltation matrix of a bar's end striking the floor, carried by the bar's free flight
+/// before and after (closed form), equals the derivative of whole simulations through the
+/// impact by central differences (their events located on the dense output, the impact's
+/// time moving with the start), with respect to the starting state and to the parameters
+/// the flight does not depend on (mass, inertia, length, restitution).
+#[test]
+fn the_saltation_matrix_carries_changes_of_a_simulation_across_its_impact() {
+    let bar = Bar { m: 1.0, j: 0.2, g: 9.81, l: 1.0, e: 0.5 };
+    let (q0, v0) = ([0.0, 0.6, 0.3], [0.2, -1.0, 0.5]);
+    // The left end strikes first, once, before `t_end`.
+    let t_end = 0.27;
+    let (_, impacts) = bar_at(&bar, &q0, &v0, t_end);
+    assert!(matches!(impacts[..], [(0, _)]), "the left end strikes once: {impacts:?}");
+    let strike = impacts[0].1;
+    let (q, v) = bar_in_flight(&q0, &v0, strike);
+    let (q, v) = (VecQ::<Bar>::from_column_slice(&q), VecQ::<Bar>::from_column_slice(&v));
+    let jump = saltation(&bar, strike, &q, &v, 0, &[0]).expect("an impact");
+    let through = free_flight(t_end - strike) * &jump.matrix * free_flight(strike);
+    let mut worst = 0.0f64;
+    let scale = through.amax();
+    for c in 0..6 {
+        let h = 1e-5;
+        let (mut up, mut down) = ([q0, v0].concat(), [q0, v0].concat());
+        up[c] += h;
+        down[c] -= h;
+        let (plus, _) = bar_at(&bar, &up[..3], &up[3..], t_end);
+        let (minus, _) = bar_at(&bar, &down[..3], &down[3..], t_end);
+        let differences = (plus - minus) / (2.0 * h);
+        worst = worst.max((differences - through.column(c)).amax() / scale);
+    }
+    eprintln!("bar through its impact, state: worst relative difference {worst:e}");
+    assert!(worst < 1e-8, "worst relative difference {worst:e}");
+    let carried = free_flight(t_end - strike) * &jump.parameters;
+    for p in [0, 1, 3, 4] {
+        let value = bar.parameter_value(p);
+        let h = 1e-5 * value;
+        let (mut up, mut down) = (bar.clone(), bar.clone());
+        up.set_parameter_value(p, value + h);
+        down.set_parameter_value(p, value - h);
+        let differences = (bar_at(&up, &q0, &v0, t_end).0 - bar_at(&down, &q0, &v0, t_end).0) / (2.0 * h);
+        let error = (&differences - carried.column(p)).amax() / differences.amax().max(1.0);
+        eprintln!("bar through its impact, parameter {p}: relative difference {error:e}");
+        assert!(error < 1e-8, "parameter {p}: {differences} against {}", carried.column(p));
+    }
 }

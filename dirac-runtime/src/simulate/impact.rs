@@ -16,7 +16,7 @@
 //! `K du = −(dK) u + dr`, which takes `∂(H Δv)/∂x`, `∂(Aᵀμ)/∂x`, `∂(A Δv)/∂x` (from the
 //! model's own blocks, `H Δv` being `∂L/∂v(v⁺) − ∂L/∂v(v⁻)` for a Lagrangian quadratic in the
 //! velocities, which the impact law assumes) and the contacts' second derivatives, which the
-//! derive emits ([`Hybrid::unilateral_derivatives`]).
+//! derive emits ([`Hybrid::unilateral_derivatives`](crate::model::Hybrid::unilateral_derivatives)).
 
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
@@ -57,23 +57,7 @@ pub struct ImpactMap {
 /// [`SimError::NotDetermined`] where the law's linear system is singular there, so that its
 /// derivative does not exist (redundant constraint rows).
 ///
-/// ```
-/// use dirac::prelude::*;
-/// use dirac::impact::impact_map;
-///
-/// #[derive(LagrangeDirac)]
-/// #[dirac(coordinates(y => v))]
-/// #[dirac(lagrangian = 0.5 * m * v * v - m * g * y)]
-/// #[dirac(unilateral(floor, restitution = e) = y)]
-/// struct Ball { m: f64, g: f64, e: f64 }
-///
-/// let ball = Ball { m: 1.0, g: 9.81, e: 0.8 };
-/// let q = VecQ::<Ball>::new(0.0);
-/// let map = impact_map(&ball, 0.0, &q, &VecQ::<Ball>::new(-2.0), &[0]).expect("an impact");
-/// assert!((map.velocity[0] - 1.6).abs() < 1e-12);
-/// assert!((map.dv[(0, 0)] + 0.8).abs() < 1e-12); // v⁺ = −e v⁻
-/// assert!((map.dtheta[(0, 2)] - 2.0).abs() < 1e-12); // ∂v⁺/∂e = −v⁻
-/// ```
+/// The guide's section on contacts has a worked example (`dirac::guide`).
 pub fn impact_map<M: Hybrid + Parameters>(
     model: &M,
     t: f64,
@@ -116,21 +100,8 @@ where
     let size = n + m + r;
 
     // Along q_c.
-    let shape = model.shape();
-    let dense_qq = |fill: &dyn Fn(&mut crate::model::MatQQ<M>)| {
-        let mut block = <M::Algebra as Algebra<M>>::zeros_qq(&shape);
-        fill(&mut block);
-        let mut out = DMatrix::zeros(n, n);
-        <M::Algebra as Algebra<M>>::qq_entries(&block, |i, j, x| out[(i, j)] += x);
-        out
-    };
-    let dense_cq = |fill: &dyn Fn(&mut crate::model::MatCQ<M>)| {
-        let mut block = <M::Algebra as Algebra<M>>::zeros_cq(&shape);
-        fill(&mut block);
-        let mut out = DMatrix::zeros(m, n);
-        <M::Algebra as Algebra<M>>::cq_entries(&block, |i, j, x| out[(i, j)] += x);
-        out
-    };
+    let dense_qq = |fill: &dyn Fn(&mut crate::model::MatQQ<M>)| dense_qq(model, fill);
+    let dense_cq = |fill: &dyn Fn(&mut crate::model::MatCQ<M>)| dense_cq(model, fill);
     let (v_minus, v_plus) = (v, &state.v);
     let mu = law.mu::<M>(sizes);
     let momenta: DMatrix<f64> =
@@ -231,6 +202,32 @@ where
         }
     }
     Ok(map)
+}
+
+/// An `n × n` block of `model`, written by `fill`, as a dense matrix.
+fn dense_qq<M: Hybrid>(model: &M, fill: &dyn Fn(&mut crate::model::MatQQ<M>)) -> DMatrix<f64>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let n = model.sizes().nq;
+    let mut block = <M::Algebra as Algebra<M>>::zeros_qq(&model.shape());
+    fill(&mut block);
+    let mut out = DMatrix::zeros(n, n);
+    <M::Algebra as Algebra<M>>::qq_entries(&block, |i, j, x| out[(i, j)] += x);
+    out
+}
+
+/// An `m × n` block of `model`, written by `fill`, as a dense matrix.
+fn dense_cq<M: Hybrid>(model: &M, fill: &dyn Fn(&mut crate::model::MatCQ<M>)) -> DMatrix<f64>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let mut block = <M::Algebra as Algebra<M>>::zeros_cq(&model.shape());
+    fill(&mut block);
+    let mut out = DMatrix::zeros(sizes.nc, sizes.nq);
+    <M::Algebra as Algebra<M>>::cq_entries(&block, |i, j, x| out[(i, j)] += x);
+    out
 }
 
 /// One pushed contact's part of the law: its row, restitution and approach speed, and what
@@ -405,4 +402,157 @@ fn singular(t: f64) -> SimError {
                 derivative"
             .into(),
     }
+}
+
+/// The saltation matrix of an impact ([`saltation`]): how a small change of the state just
+/// before it, and of the parameters, carries to the state just after it, the impact's time
+/// moving with them.
+#[derive(Clone, Debug)]
+pub struct Saltation {
+    /// `δ(q, v)⁺ = S δ(q, v)⁻`, `2n × 2n`, positions first: a change of the state before the
+    /// impact, at the impact's time, to the change of the state after it at that time.
+    pub matrix: DMatrix<f64>,
+    /// The change of the state after the impact per unit change of each parameter, the state
+    /// before it held: `2n × P`.
+    pub parameters: DMatrix<f64>,
+    /// `∂t*/∂(q, v)⁻`: how the impact's time moves with the state before it (`2n`).
+    pub time: DVector<f64>,
+    /// `∂t*/∂θ`: how it moves with each parameter (`P`).
+    pub time_parameters: DVector<f64>,
+    /// The impact itself and its derivative at fixed time.
+    pub impact: ImpactMap,
+}
+
+/// The saltation matrix of the impact at which unilateral constraint `contact` closes, at time
+/// `t`, positions `q` and velocities `v` just before it, with the contacts `closing` (which
+/// holds `contact`) taking part: the linearised jump of the motion across the impact,
+///
+/// ```text
+/// S = DΦ + (DΦ f⁻ + ∂Φ/∂t − f⁺) ∂t*/∂x,    ∂t*/∂x = −(a, 0) / (a v⁻ + ∂φ/∂t),
+/// ```
+///
+/// `Φ` the impact ([`impact_map`]), `f = (v, v̇)` the motion just before and just after it
+/// (the accelerations from the equations of motion with the constraints at acceleration
+/// level), `a = ∂φ/∂q` the contact's one-form. The parameters' columns are
+/// `∂Φ/∂θ + (DΦ f⁻ + ∂Φ/∂t − f⁺) ∂t*/∂θ`, with `∂t*/∂θ = −∂φ/∂θ / (a v⁻ + ∂φ/∂t)`. What
+/// carries a sensitivity across an impact, and the factor an impact contributes to the
+/// monodromy matrix of a periodic hybrid orbit (a hopping or walking gait's stability).
+///
+/// Refused as [`impact_map`] is, and with [`SimError::InvalidOption`] where `contact` is not
+/// among `closing` or is not approaching (the motion does not cross it there).
+///
+/// The guide's section on contacts works the bouncing ball's out (`dirac::guide`).
+pub fn saltation<M: Hybrid + Parameters>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    contact: usize,
+    closing: &[usize],
+) -> Result<Saltation, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.unilateral_names();
+    if !closing.contains(&contact) {
+        return Err(SimError::InvalidOption {
+            what: "saltation",
+            reason: format!(
+                "the contact whose closing times the impact ({contact}) is not among the closing ones {closing:?}"
+            ),
+        });
+    }
+    let impact = impact_map(model, t, q, v, closing)?;
+    let sizes = model.sizes();
+    let (n, k, params) = (sizes.nq, names.len(), model.parameter_count());
+    let mut rows = vec![0.0; k * n];
+    model.unilateral_dq(t, q, &mut rows);
+    let mut derivatives = vec![0.0; model.unilateral_derivatives_len()];
+    model.unilateral_derivatives(t, q, &mut derivatives);
+    let block = 2 * k + k * n;
+    let along = |x: usize| derivatives[k * n * n + k * n + x * block + contact];
+    let a: Vec<f64> = (0..n).map(|c| rows[contact + c * k]).collect();
+    let speed = a.iter().zip(v.iter()).map(|(a, v)| a * v).sum::<f64>() + along(0);
+    if speed >= 0.0 || speed.is_nan() {
+        return Err(SimError::InvalidOption {
+            what: "saltation",
+            reason: format!(
+                "the contact `{}` is not approaching (its normal speed is {speed:e}): the motion does not \
+                 cross it there, so no impact is timed by it",
+                names[contact]
+            ),
+        });
+    }
+    let mut after = sizes.zeros_q::<M>();
+    after.iter_mut().zip(impact.velocity.iter()).for_each(|(x, &y)| *x = y);
+    let (before_rate, after_rate) = (accelerations(model, t, q, v)?, accelerations(model, t, q, &after)?);
+
+    // DΦ on (q, v): positions kept, velocities by the impact.
+    let mut d_phi = DMatrix::<f64>::identity(2 * n, 2 * n);
+    d_phi.view_mut((n, 0), (n, n)).copy_from(&impact.dq);
+    d_phi.view_mut((n, n), (n, n)).copy_from(&impact.dv);
+    let mut f_before = DVector::<f64>::zeros(2 * n);
+    f_before.rows_mut(0, n).copy_from_slice(v.as_slice());
+    f_before.rows_mut(n, n).copy_from(&before_rate);
+    let mut f_after = DVector::<f64>::zeros(2 * n);
+    f_after.rows_mut(0, n).copy_from(&impact.velocity);
+    f_after.rows_mut(n, n).copy_from(&after_rate);
+    // The jump's change per unit delay of the impact.
+    let mut delay = &d_phi * &f_before - f_after;
+    for i in 0..n {
+        delay[n + i] += impact.dt[i];
+    }
+    let mut time = DVector::<f64>::zeros(2 * n);
+    for (c, &x) in a.iter().enumerate() {
+        time[c] = -x / speed;
+    }
+    let time_parameters = DVector::from_iterator(params, (0..params).map(|p| -along(p + 1) / speed));
+    let matrix = d_phi + &delay * time.transpose();
+    let mut parameters = DMatrix::<f64>::zeros(2 * n, params);
+    parameters.view_mut((n, 0), (n, params)).copy_from(&impact.dtheta);
+    parameters += &delay * time_parameters.transpose();
+    Ok(Saltation { matrix, parameters, time, time_parameters, impact })
+}
+
+/// `v̇` at `(t, q, v)`: the equations of motion with the constraints at acceleration level,
+/// `[L_vv −Aᵀ; A 0] (v̇, λ) = (∂L/∂q + F − L_vt − L_vq v, −∂(A v + b)/∂q v − ∂(A v + b)/∂t)`.
+fn accelerations<M: Hybrid>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> Result<DVector<f64>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let (n, m) = (sizes.nq, sizes.nc);
+    let h = dense_qq(model, &|b| model.l_vv(t, q, v, b));
+    let lvq = dense_qq(model, &|b| model.l_vq(t, q, v, b));
+    let a = dense_cq(model, &|b| model.constraint_matrix(t, q, b));
+    let dav = dense_cq(model, &|b| model.dav_dq(t, q, v, b));
+    let (mut dl, mut force, mut lvt) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+    model.dl_dq(t, q, v, &mut dl);
+    model.force(t, q, v, &mut force);
+    model.l_vt(t, q, v, &mut lvt);
+    let mut rate = sizes.zeros_c::<M>();
+    model.dav_dt(t, q, v, &mut rate);
+    let velocities = DVector::from_column_slice(v.as_slice());
+    let mut matrix = DMatrix::<f64>::zeros(n + m, n + m);
+    matrix.view_mut((0, 0), (n, n)).copy_from(&h);
+    matrix.view_mut((0, n), (n, m)).copy_from(&(-a.transpose()));
+    matrix.view_mut((n, 0), (m, n)).copy_from(&a);
+    let mut rhs = DVector::<f64>::zeros(n + m);
+    let top = &lvq * &velocities;
+    for i in 0..n {
+        rhs[i] = dl[i] + force[i] - lvt[i] - top[i];
+    }
+    let bottom = &dav * &velocities;
+    for i in 0..m {
+        rhs[n + i] = -bottom[i] - rate[i];
+    }
+    if !matrix.lu().solve_mut(&mut rhs) || rhs.iter().any(|x| !x.is_finite()) {
+        return Err(SimError::NotDetermined {
+            t,
+            cause: "the accelerations at the impact: the mass matrix bordered by the constraint rows is \
+                    singular there"
+                .into(),
+        });
+    }
+    Ok(rhs.rows(0, n).into_owned())
 }
