@@ -238,4 +238,35 @@ fn the_saltation_matrix_carries_changes_of_a_simulation_across_its_impact() {
         eprintln!("bar through its impact, parameter {p}: relative difference {error:e}");
         assert!(error < 1e-8, "parameter {p}: {differences} against {}", carried.column(p));
     }
+
+    // Forward sensitivities carried through the same impact by the solve.
+    let mut wrt = Sensitivities::all_parameters(&bar);
+    for c in [Bar::X, Bar::Y, Bar::TH] {
+        wrt = wrt.initial_position(c).initial_velocity(c);
+    }
+    let q = VecQ::<Bar>::from_column_slice(&q0);
+    let v = VecQ::<Bar>::from_column_slice(&v0);
+    let start = consistent_state(&bar, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let solution = Radau::new(&bar, RadauOptions::tolerances(1e-12, 1e-12))
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &start, t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates through the impact");
+    let state = ["x", "y", "th", "vx", "vy", "w"];
+    let mut worst = 0.0f64;
+    for (c, initial) in state.iter().enumerate() {
+        for (i, quantity) in state.iter().enumerate() {
+            let got = solution.sensitivity(quantity, &format!("{initial}(t0)")).expect("a sensitivity")[0];
+            worst = worst.max((got - through[(i, c)]).abs() / scale);
+        }
+    }
+    for (p, name) in [(0, "m"), (1, "j"), (3, "l"), (4, "e")] {
+        for (i, quantity) in state.iter().enumerate() {
+            let got = solution.sensitivity(quantity, name).expect("a sensitivity")[0];
+            worst = worst.max((got - carried[(i, p)]).abs() / carried.column(p).amax().max(1.0));
+        }
+    }
+    eprintln!("bar through its impact, forward sensitivities: worst relative difference {worst:e}");
+    assert!(worst < 1e-8, "forward sensitivities: worst relative difference {worst:e}");
 }

@@ -36,6 +36,19 @@ pub fn solve_with_contacts() -> TokenStream {
                 |_, _| ::core::ops::ControlFlow::Continue(()),
             ))
         }
+        fn __solve_with_sensitivities_through_impacts<I: #p::Integrator<Self>>(
+            integrator: &mut I,
+            t0: ::core::primitive::f64,
+            state: &#p::State<Self>,
+            t_end: ::core::primitive::f64,
+            sampling: &#p::Sampling,
+        ) -> ::core::option::Option<
+            ::core::result::Result<#p::Solution<Self, <I as #p::Integrator<Self>>::Stats>, #p::SimError>,
+        > {
+            ::core::option::Option::Some(#p::solve_with_sensitivities_through_impacts(
+                integrator, t0, state, t_end, sampling,
+            ))
+        }
         fn __consistent_with_laws(
             &self,
             t: ::core::primitive::f64,

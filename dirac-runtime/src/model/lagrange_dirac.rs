@@ -258,6 +258,22 @@ where
         None
     }
 
+    /// [`Integrator::solve_with_sensitivities`](crate::Integrator::solve_with_sensitivities)
+    /// of a model that declares unilateral constraints: the sensitivities carried across each
+    /// impact by its saltation matrix. The derives implement it; `None` from a model that
+    /// cannot, which the solve then refuses.
+    #[doc(hidden)]
+    fn __solve_with_sensitivities_through_impacts<I: crate::simulate::integrator::Integrator<Self>>(
+        integrator: &mut I,
+        t0: f64,
+        state: &State<Self>,
+        t_end: f64,
+        sampling: &crate::simulate::solution::Sampling,
+    ) -> Option<Result<crate::simulate::solution::Solution<Self, I::Stats>, crate::error::SimError>> {
+        let _ = (integrator, t0, state, t_end, sampling);
+        None
+    }
+
     /// [`consistent_state`](crate::consistent_state) of a model with friction laws or ideal
     /// diodes, each law's mode chosen from the state (which needs the model's event functions,
     /// of the [`Hybrid`](crate::model::Hybrid) capability). The derives implement it; `None`

@@ -208,6 +208,26 @@ where
         false
     }
 
+    /// The parameter sensitivity `j` is taken with respect to (its index), or `None` for an
+    /// initial value's (or no sensitivity `j`).
+    fn sensitivity_parameter(&self, j: usize) -> Option<usize> {
+        let _ = j;
+        None
+    }
+
+    /// Restarts the integration at `t` from `state` (consistent) with the sensitivities
+    /// `sensitivities` (one per sensitivity carried), after a jump whose derivative the caller
+    /// carried them across (an impact). A method that does not carry sensitivities refuses.
+    fn restart_with_sensitivities(
+        &mut self,
+        t: f64,
+        state: &State<M>,
+        sensitivities: &[State<M>],
+    ) -> Result<(), SimError> {
+        let _ = (t, state, sensitivities);
+        Err(no_sensitivities::<M, Self>())
+    }
+
     /// Completes sensitivity `j` at the start of the integration, in `out`, with what the first
     /// step taught: the multipliers' sensitivities, which a method may not carry at the start
     /// (Radau extrapolates them from its first step's stages). Does nothing by default.
@@ -218,8 +238,11 @@ where
     /// Integrates from `state` at `t0` to `t_end` with the sensitivities asked for
     /// ([`Integrator::carry_sensitivities`]), recording the state as [`Integrator::solve`] does
     /// and every sensitivity at the same samples: read them from the solution by quantity and
-    /// name ([`Solution::sensitivity`]). A method that does not carry sensitivities refuses
-    /// with [`SimError::Unsupported`].
+    /// name ([`Solution::sensitivity`]). A model with unilateral constraints has its contacts
+    /// watched, as [`Integrator::solve`] does, and each sensitivity carried across each impact
+    /// by the impact's saltation matrix ([`saltation`](crate::impact::saltation)); one with
+    /// switching surfaces or laws is refused by name. A method that does not carry
+    /// sensitivities refuses with [`SimError::Unsupported`].
     fn solve_with_sensitivities(
         &mut self,
         t0: f64,
@@ -400,29 +423,16 @@ where
     SimError::Unsupported { method: I::NAME, capability: Capability::Sensitivities }
 }
 
-/// Sensitivities of a model with unilateral constraints are refused, naming them (the impacts'
-/// jumps are not carried, and the plain steps would pass through the constraints); so are
-/// those of a model with switching surfaces, naming them: where the motion
+/// Sensitivities of a model with switching surfaces are refused, naming them: where the motion
 /// crosses a surface at `t_s`, a sensitivity jumps by `(f⁺ − f⁻) ∂t_s/∂θ` (a force that jumps
 /// there, such as `signum`'s, moves the state by as much as the crossing moves in time), and
-/// the generated derivatives, taken branch by branch, do not carry that jump.
+/// the generated derivatives, taken branch by branch, do not carry that jump. (Those of a
+/// model with unilateral constraints are carried across its impacts by
+/// `solve_with_sensitivities_through_impacts`.)
 fn refuse_switches<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let contacts = model.unilateral_names();
-    if !contacts.is_empty() {
-        let list = contacts.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ");
-        return Err(SimError::InvalidOption {
-            what: "sensitivities",
-            reason: format!(
-                "the model declares the unilateral constraint(s) {list}: a sensitivity jumps at each \
-                 impact, by the impact's own derivative and the impact time's, and that jump is not \
-                 implemented (without the impacts the motion would pass through the constraints); take \
-                 differences of solutions, or carry sensitivities on a model without contacts"
-            ),
-        });
-    }
     if !model.has_switches() && !laws::has_laws(model) {
         return Ok(());
     }
@@ -468,6 +478,17 @@ where
         });
     }
     refuse_switches(integrator.model())?;
+    if !integrator.model().unilateral_names().is_empty() {
+        return M::__solve_with_sensitivities_through_impacts(integrator, t0, state, t_end, sampling)
+            .unwrap_or_else(|| {
+                Err(SimError::InvalidOption {
+                    what: "sensitivities",
+                    reason: "the model declares unilateral constraints but does not carry sensitivities \
+                             across their impacts: derive it"
+                        .into(),
+                })
+            });
+    }
     let sizes = integrator.model().sizes();
     let len = Layout::new(sizes).len;
     let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;

@@ -41,6 +41,34 @@ where
         self.sensitivity_within(j, t, out)
     }
 
+    fn sensitivity_parameter(&self, j: usize) -> Option<usize> {
+        match self.forward.as_deref().filter(|forward| j < forward.len()).map(|forward| forward.wrt(j)) {
+            Some(crate::simulate::sensitivity::Wrt::Parameter(k)) => Some(k),
+            _ => None,
+        }
+    }
+
+    fn restart_with_sensitivities(
+        &mut self,
+        t: f64,
+        state: &State<M>,
+        sensitivities: &[State<M>],
+    ) -> Result<(), SimError> {
+        let Some(forward) = self.forward.as_deref_mut() else {
+            return self.restart_at(t, state);
+        };
+        if sensitivities.len() != forward.len() {
+            return Err(SimError::InvalidOption {
+                what: "sensitivities",
+                reason: format!("{} given at the restart, {} carried", sensitivities.len(), forward.len()),
+            });
+        }
+        for (j, s) in sensitivities.iter().enumerate() {
+            forward.set_value(j, s);
+        }
+        self.restart_state(t, state)
+    }
+
     fn complete_initial_sensitivity(&self, j: usize, out: &mut State<M>) {
         self.initial_multipliers(j, out);
     }
@@ -88,28 +116,13 @@ where
             return Err(SimError::InvalidOption {
                 what: "sensitivities",
                 reason: format!(
-                    "a restart at t = {t} (an event's reset or impact) would need the sensitivities' jump \
-                     conditions, which are not implemented: integrate with sensitivities between events"
+                    "a restart at t = {t} (an event's reset, a change of the model or a contact coming to \
+                     rest) would need the sensitivities' jump conditions, which are carried only across \
+                     impacts (by `solve_with_sensitivities`): integrate with sensitivities between such events"
                 ),
             });
         }
-        self.restarts.jump(
-            self.model.get(),
-            t,
-            (self.t - self.dense.h, self.t),
-            state,
-            self.options.rtol.max(1e-8),
-        )?;
-        state.write_y(&mut self.y);
-        self.state.clone_from(state);
-        // The state may have jumped (an impact): start again with a short step, which grows by
-        // up to 8× a step, so that the steps after the event see an event function leave zero
-        // (a ball leaving the floor) before one of them could span its return.
-        if self.dense.h > 0.0 {
-            self.h = 1e-3 * self.dense.h;
-        }
-        self.dense.h = 0.0;
-        self.begin(t, self.residual.stops.goal(), false)
+        self.restart_state(t, state)
     }
 
     fn end(&self) -> f64 {
@@ -166,5 +179,31 @@ where
 
     fn stats(&self) -> RadauStats {
         self.stats
+    }
+}
+
+impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'_, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Restarts at `t` from `state`, the sensitivities (if carried) set by the caller.
+    fn restart_state(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
+        self.restarts.jump(
+            self.model.get(),
+            t,
+            (self.t - self.dense.h, self.t),
+            state,
+            self.options.rtol.max(1e-8),
+        )?;
+        state.write_y(&mut self.y);
+        self.state.clone_from(state);
+        // The state may have jumped (an impact): start again with a short step, which grows by
+        // up to 8× a step, so that the steps after the event see an event function leave zero
+        // (a ball leaving the floor) before one of them could span its return.
+        if self.dense.h > 0.0 {
+            self.h = 1e-3 * self.dense.h;
+        }
+        self.dense.h = 0.0;
+        self.begin(t, self.residual.stops.goal(), false)
     }
 }

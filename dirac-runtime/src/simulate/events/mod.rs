@@ -22,6 +22,7 @@ use crate::simulate::laws::{self, Law, Switch};
 use crate::simulate::solution::{Crossing, Event};
 
 mod locate;
+pub mod sensitivities;
 mod solve;
 
 pub use self::solve::{EventContext, SolveWithEvents};

@@ -1,0 +1,235 @@
+//! Forward sensitivities through impacts: the solve of a model with unilateral constraints
+//! that carries each sensitivity across each impact by the impact's saltation matrix
+//! ([`saltation`]), the impact's time moving with the parameters and the initial values.
+
+use nalgebra::{DVector, DefaultAllocator};
+
+use super::Events;
+use crate::analysis::init::{Consistency, project};
+use crate::error::SimError;
+use crate::model::blocks::ResidualBlocks;
+use crate::model::state::State;
+use crate::model::{Hybrid, Parameters};
+use crate::shape::dims::Storage;
+use crate::shape::layout::Layout;
+use crate::simulate::impact::saltation;
+use crate::simulate::integrator::Integrator;
+use crate::simulate::recorder::Recorder;
+use crate::simulate::solution::{Impact, Sampling, Solution};
+
+/// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints (and no
+/// switching surface or law, which the caller refuses): the integration watches the contacts
+/// as [`Events::contacts`] does, and at each impact every sensitivity `s = ∂(q, v)/∂θ` just
+/// before it becomes `S s + c_θ` just after it (`S` the saltation matrix, `c_θ` its column for
+/// the parameter `θ`, zero for an initial value), the momenta's part following the Legendre
+/// map, `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`. The multipliers' part restarts at zero and is
+/// completed, at the impact's sample after it, from the next step, as at the start.
+///
+/// A contact that comes to rest ends the integration in [`SimError::ContactCloses`], as
+/// without sensitivities (resting contacts would switch the model's constraints, whose
+/// sensitivities' jump is not carried).
+pub fn solve_with_sensitivities_through_impacts<M: Hybrid + Parameters, I: Integrator<M>>(
+    integrator: &mut I,
+    t0: f64,
+    state: &State<M>,
+    t_end: f64,
+    sampling: &Sampling,
+) -> Result<Solution<M, I::Stats>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let count = integrator.sensitivity_names().len();
+    let model = integrator.model();
+    let names = model.unilateral_names();
+    if let Some(j) = (0..names.len()).find(|&j| model.contact_row(j).is_some()) {
+        return Err(SimError::InvalidOption {
+            what: "sensitivities",
+            reason: format!(
+                "the contact `{}` can rest (a companion made by `with_contacts`): resting switches the \
+                 model's constraints, and that switch's sensitivities are not carried; carry them on the \
+                 model itself, whose impacts are",
+                names[j]
+            ),
+        });
+    }
+    let sizes = integrator.model().sizes();
+    let (n, len) = (sizes.nq, Layout::new(sizes).len);
+    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
+    let mut events = Events::new().contacts(integrator.model());
+    if let Some(contacts) = &events.contacts {
+        recorder.name_contacts(&contacts.names);
+    }
+    recorder.name_events(events.names());
+    let series = count * len;
+    let mut rows = recorder.extra_series(series)?;
+    let mut buffer = State::<M>::with_sizes(sizes);
+    integrator.start(t0, state, t_end)?;
+    events.begin(integrator.model(), t0, integrator.state())?;
+    recorder.record_initial(integrator.model(), t0, integrator.state());
+    // The samples whose multipliers' sensitivities the next step completes: the start's and
+    // each impact's after it.
+    let mut incomplete: Vec<usize> = Vec::new();
+    let mut restarted = vec![State::<M>::with_sizes(sizes); count];
+    let push_now = |integrator: &I, rows: &mut Vec<f64>, buffer: &mut State<M>| {
+        for j in 0..count {
+            integrator.sensitivity(j, buffer);
+            rows.extend(buffer.components());
+        }
+    };
+    if recorder.len() > 0 {
+        push_now(integrator, &mut rows, &mut buffer);
+        incomplete.push(0);
+    }
+    let mut after = state.clone();
+    while !integrator.finished() {
+        integrator.step()?;
+        complete(integrator, &mut rows, &mut incomplete, series, len, &mut buffer);
+        let mut jumped = false;
+        while let Some(event) = events.locate(integrator)? {
+            let t = event.t;
+            let before = recorder.len();
+            recorder.record_step(integrator.model(), t, events.state(), |ts, out| {
+                integrator.interpolate(ts, out)
+            });
+            recorder.record_event(integrator.model(), event, events.state());
+            push_within(integrator, &recorder, before, &mut rows, &mut buffer);
+            let contact = events.contact_of[event.index].expect("only contacts are watched");
+            let pre = events.state().clone();
+            after.clone_from(&pre);
+            let impacts = events.impact(integrator.model(), event.index, t, &mut after)?;
+            for &(j, impulse) in &impacts.impulses {
+                recorder.record_impact(Impact { contact: j, t, impulse });
+            }
+            if let Some(j) = impacts.resting {
+                let contacts = events.contacts.as_ref().expect("contacts are watched");
+                return Err(contacts.closes(j, t));
+            }
+            let reopened: Vec<usize> =
+                impacts.impulses.iter().filter(|&&(_, impulse)| impulse > 0.0).map(|&(j, _)| j).collect();
+            if reopened.is_empty() {
+                continue;
+            }
+            let closing: Vec<usize> = impacts.impulses.iter().map(|&(j, _)| j).collect();
+            let model = integrator.model();
+            let jump = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
+            let consistent = project(model, t, &after.q, &after.v, Consistency::default())?;
+            carry(integrator, &jump, t, &consistent, &mut restarted, &mut buffer, n);
+            integrator.restart_with_sensitivities(t, &consistent, &restarted)?;
+            events.resume(integrator.model(), t, &consistent)?;
+            let before = recorder.len();
+            recorder.record_reset(integrator.model(), t, &consistent);
+            for k in before..recorder.len() {
+                for s in &restarted {
+                    rows.extend(s.components());
+                }
+                incomplete.push(k);
+            }
+            events.reopen(&reopened);
+            jumped = true;
+            break;
+        }
+        if !jumped {
+            let before = recorder.len();
+            recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
+                integrator.interpolate(t, out)
+            });
+            push_within(integrator, &recorder, before, &mut rows, &mut buffer);
+        }
+    }
+    let samples = recorder.len();
+    let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
+    let names = integrator.sensitivity_names().to_vec();
+    let solution = recorder.finish(integrator.stats())?;
+    Ok(solution.with_sensitivities(names, columns))
+}
+
+/// The sensitivities at the samples from `before` on, each within the last step.
+fn push_within<M: Hybrid, I: Integrator<M>>(
+    integrator: &I,
+    recorder: &Recorder<M>,
+    before: usize,
+    rows: &mut Vec<f64>,
+    buffer: &mut State<M>,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    for k in before..recorder.len() {
+        let ts = recorder.time(k);
+        for j in 0..integrator.sensitivity_names().len() {
+            if ts >= integrator.t() {
+                integrator.sensitivity(j, buffer);
+            } else {
+                integrator.interpolate_sensitivity(j, ts, buffer);
+            }
+            rows.extend(buffer.components());
+        }
+    }
+}
+
+/// Completes the multipliers' sensitivities of the samples `incomplete` (each at the start
+/// of the step just taken) from that step.
+fn complete<M: Hybrid, I: Integrator<M>>(
+    integrator: &I,
+    rows: &mut [f64],
+    incomplete: &mut Vec<usize>,
+    series: usize,
+    len: usize,
+    buffer: &mut State<M>,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    for k in incomplete.drain(..) {
+        for j in 0..integrator.sensitivity_names().len() {
+            let row = &mut rows[k * series + j * len..k * series + (j + 1) * len];
+            for (x, &v) in buffer.components_mut().zip(row.iter()) {
+                *x = v;
+            }
+            integrator.complete_initial_sensitivity(j, buffer);
+            for (x, &v) in row.iter_mut().zip(buffer.components()) {
+                *x = v;
+            }
+        }
+    }
+}
+
+/// Each sensitivity just before the impact at `t`, carried across it by `jump`, into `out`:
+/// positions and velocities by the saltation matrix (and a parameter's column), momenta by
+/// the Legendre map at the state `after`, multipliers zero.
+fn carry<M: Hybrid + Parameters, I: Integrator<M>>(
+    integrator: &I,
+    jump: &crate::simulate::impact::Saltation,
+    t: f64,
+    after: &State<M>,
+    out: &mut [State<M>],
+    buffer: &mut State<M>,
+    n: usize,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let model = integrator.model();
+    let sizes = model.sizes();
+    let shape = model.shape();
+    let mut l_vq = <M::Algebra as crate::algebra::Algebra<M>>::zeros_qq(&shape);
+    let mut l_vv = <M::Algebra as crate::algebra::Algebra<M>>::zeros_qq(&shape);
+    model.l_vq(t, &after.q, &after.v, &mut l_vq);
+    model.l_vv(t, &after.q, &after.v, &mut l_vv);
+    let mut blocks = ResidualBlocks::<M>::with_sizes(&sizes);
+    let mut x = DVector::<f64>::zeros(2 * n);
+    for (j, s) in out.iter_mut().enumerate() {
+        integrator.interpolate_sensitivity(j, t, buffer);
+        x.rows_mut(0, n).copy_from_slice(buffer.q.as_slice());
+        x.rows_mut(n, n).copy_from_slice(buffer.v.as_slice());
+        let mut y = &jump.matrix * &x;
+        s.p.fill(0.0);
+        s.lambda.fill(0.0);
+        if let Some(k) = integrator.sensitivity_parameter(j) {
+            y += jump.parameters.column(k);
+            model.residual_blocks_dtheta(k, t, &after.q, &after.v, &after.lambda, &mut blocks);
+            s.p.copy_from(&blocks.dl_dv);
+        }
+        s.q.copy_from_slice(y.rows(0, n).as_slice());
+        s.v.copy_from_slice(y.rows(n, n).as_slice());
+        <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vq, 1.0, s.q.as_slice(), s.p.as_mut_slice());
+        <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vv, 1.0, s.v.as_slice(), s.p.as_mut_slice());
+    }
+}
