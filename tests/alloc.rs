@@ -672,6 +672,39 @@ fn watching_contacts_does_not_allocate() {
     assert!((located[0] - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
 }
 
+/// A solve with forward sensitivities through impacts allocates per impact (the saltation
+/// matrix's small dense systems) and per sample, never per step: at two tolerances, which
+/// take different numbers of steps through the same impacts to the same samples, it allocates
+/// as often.
+#[test]
+fn sensitivity_steps_through_impacts_do_not_allocate() {
+    // Pulled by a sine, so that its flight is not a parabola, which Radau would solve exactly
+    // at any tolerance.
+    let ball = LiftedBall { m: 1.0, g: 9.81, e: 0.8, f0: 3.0, om: 5.0 };
+    let mut start = State::<LiftedBall>::zeros();
+    start.set_q(LiftedBall::Y, 1.0);
+    let wrt = Sensitivities::all_parameters(&ball).initial_position(LiftedBall::Y);
+    let run = |tolerance: f64| {
+        let before = allocations();
+        let solution = Radau::new(&ball, RadauOptions::tolerances(tolerance, tolerance))
+            .expect("valid options")
+            .with_sensitivities(&wrt)
+            .expect("valid")
+            .solve_with_sensitivities(0.0, &start, 2.0, &Sampling::Times(vec![0.5, 1.0, 1.5, 2.0]))
+            .expect("integrates");
+        let allocated = allocations() - before;
+        (allocated, solution.stats.steps, solution.impacts().len())
+    };
+    // A first run makes what the process keeps from then on.
+    run(1e-11);
+    let (loose, few, impacts) = run(1e-6);
+    let (tight, many, same) = run(1e-11);
+    assert_eq!(impacts, same);
+    assert!(impacts >= 2, "{impacts} impacts");
+    assert!(many > few + 20, "{few} and {many} steps");
+    assert_eq!(loose, tight, "{few} steps allocate {loose} times, {many} steps {tight} times");
+}
+
 /// A companion whose contacts can rest watches its closed contacts' forces for their release:
 /// evaluating them allocates nothing either. The ball rests on its floor from the start.
 #[test]
