@@ -705,6 +705,36 @@ fn sensitivity_steps_through_impacts_do_not_allocate() {
     assert_eq!(loose, tight, "{few} steps allocate {loose} times, {many} steps {tight} times");
 }
 
+/// An adjoint sweep back through impacts allocates per impact (the transposed jump's small
+/// dense products), never per backward step: sweeps over runs at two tolerances, with
+/// different numbers of steps through the same impacts, allocate as often.
+#[test]
+fn backward_steps_through_impacts_do_not_allocate() {
+    let ball = LiftedBall { m: 1.0, g: 9.81, e: 0.8, f0: 3.0, om: 5.0 };
+    let mut start = State::<LiftedBall>::zeros();
+    start.set_q(LiftedBall::Y, 1.0);
+    let terminal = |_: f64, y: &State<LiftedBall>, out: &mut State<LiftedBall>| {
+        out.clone_from(y);
+        0.5 * (y.q.norm_squared() + y.v.norm_squared())
+    };
+    let objective = dirac::adjoint::Objective::terminal(&terminal);
+    let sweep = |tolerance: f64| {
+        let recording = Radau::new(&ball, RadauOptions::tolerances(tolerance, tolerance))
+            .expect("valid options")
+            .record(0.0, &start, 2.0)
+            .expect("records");
+        let before = allocations();
+        let gradient = recording.gradient(&ball, &objective).expect("a gradient");
+        assert!(gradient.parameters.iter().all(|g| g.is_finite()));
+        (allocations() - before, recording.steps())
+    };
+    sweep(1e-11);
+    let (loose, few) = sweep(1e-6);
+    let (tight, many) = sweep(1e-11);
+    assert!(many > few + 20, "{few} and {many} steps");
+    assert_eq!(loose, tight, "{few} steps allocate {loose} times, {many} steps {tight} times");
+}
+
 /// A companion whose contacts can rest watches its closed contacts' forces for their release:
 /// evaluating them allocates nothing either. The ball rests on its floor from the start.
 #[test]
@@ -815,7 +845,7 @@ fn steps_with_sensitivities_do_not_allocate() {
 }
 
 /// A run of `model` recorded whole, or within `budget` bytes.
-fn record<M: Parameters>(
+fn record<M: Parameters + dirac::Hybrid>(
     model: &M,
     options: RadauOptions,
     start: &State<M>,
@@ -835,7 +865,7 @@ where
 
 /// The allocations of an adjoint sweep over a run of `model` from `start` to `t_end`: its
 /// set-up only, if its backward steps allocate nothing. Returns them with the number of steps.
-fn allocations_in_adjoint_sweep<M: Parameters>(
+fn allocations_in_adjoint_sweep<M: Parameters + dirac::Hybrid>(
     model: &M,
     start: &State<M>,
     t_end: f64,
@@ -891,7 +921,7 @@ fn backward_steps_of_an_adjoint_sweep_do_not_allocate() {
 
 /// The most bytes held above the start while a run of the ladder `model` to `t_end` is
 /// recorded (within `budget`, if given) and the gradient of `½ |y(T)|²` taken; and the steps.
-fn peak_bytes_of_a_gradient<M: Parameters>(
+fn peak_bytes_of_a_gradient<M: Parameters + dirac::Hybrid>(
     model: &M,
     start: &State<M>,
     t_end: f64,

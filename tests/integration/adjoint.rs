@@ -50,7 +50,7 @@ where
 }
 
 /// The run recorded whole, or within `budget` bytes.
-fn record<M: Parameters>(
+fn record<M: Parameters + dirac::Hybrid>(
     radau: &mut Radau<'_, M>,
     start: &State<M>,
     t_end: f64,
@@ -72,8 +72,12 @@ where
 /// round-off of the others); measured from 3e-15 (the LC circuit) to 1e-13 (two subsystems
 /// coupled by a one-form). The forward sensitivities are asked for all at once, so that each
 /// step solves them exactly (checked from the statistics).
-pub(crate) fn check_against_forward<M: Parameters>(model: &M, start: &State<M>, t_end: f64, seed: u64)
-where
+pub(crate) fn check_against_forward<M: Parameters + dirac::Hybrid>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    seed: u64,
+) where
     DefaultAllocator: Storage<M>,
 {
     compare_with_forward(model, start, t_end, seed, None);
@@ -83,7 +87,7 @@ where
 /// ([`Radau::record_within`]) and so solved again step by step in the sweep; the forward run
 /// solves its stages to round-off as the recorded one does. Returns the recording's steps and
 /// bytes.
-fn compare_with_forward<M: Parameters>(
+fn compare_with_forward<M: Parameters + dirac::Hybrid>(
     model: &M,
     start: &State<M>,
     t_end: f64,
@@ -255,7 +259,7 @@ fn checkpointed_adjoint_gradients_equal_forward_sensitivities() {
 /// on the collocation polynomial (what `interpolate_sensitivity` samples; the state's samples
 /// taken from it too, `DenseOutput::Collocation`), to 1e-10 of the largest; with every step
 /// kept and with the run recorded within a budget. Returns the worst relative difference.
-fn check_samples_against_forward<M: Parameters>(
+fn check_samples_against_forward<M: Parameters + dirac::Hybrid>(
     model: &M,
     start: &State<M>,
     t_end: f64,
@@ -409,6 +413,80 @@ fn adjoint_gradients_of_a_running_cost_match_central_differences() {
 /// projection onto the constraints on, and a model with a contact (whose impacts `solve` would
 /// apply and the sweep would not differentiate: integrating through the floor instead would
 /// be a wrong answer).
+/// The adjoint gradient of `cᵀ y(T)` over a run through impacts equals `cᵀ s(T)` of the
+/// forward sensitivities carried through the same impacts by a second run with the same steps
+/// (the forward by the saltation matrix, the sweep by its transpose), to `1e-10` of the
+/// largest. Returns the worst relative difference and the number of impacts.
+fn check_through_impacts<M: Parameters + dirac::Hybrid>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    seed: u64,
+) -> (f64, usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let wrt = everything(model);
+    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution =
+        radau.solve_with_sensitivities(0.0, start, t_end, &Sampling::Times(vec![t_end])).expect("integrates");
+    let recording = Radau::new(model, tight()).expect("valid").record(0.0, start, t_end).expect("records");
+    assert_eq!(recording.steps(), solution.stats.steps, "the same steps");
+    let c = random_weights(model, seed);
+    let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
+        out.clone_from(&c);
+        dot(&c, y)
+    };
+    let gradient = recording.gradient(model, &Objective::terminal(&terminal)).expect("a gradient");
+    let mut s = State::with_sizes(model.sizes());
+    let mut pairs = Vec::new();
+    for (j, wrt) in wrt.wrt().iter().enumerate() {
+        assert!(radau.sensitivity(j, &mut s));
+        let adjoint = match *wrt {
+            Wrt::Parameter(k) => gradient.parameters[k],
+            Wrt::InitialPosition(i) => gradient.positions[i],
+            Wrt::InitialVelocity(i) => gradient.velocities[i],
+        };
+        pairs.push((radau.sensitivity_names()[j].clone(), dot(&c, &s), adjoint));
+    }
+    let scale = pairs.iter().fold(1e-3f64, |m, (_, f, _)| m.max(f.abs()));
+    let mut worst = 0.0f64;
+    for (name, f, a) in &pairs {
+        assert!((f - a).abs() <= 1e-10 * scale, "∂G/∂{name}: forward {f}, adjoint {a} (scale {scale})");
+        worst = worst.max((f - a).abs() / scale);
+    }
+    (worst, solution.impacts().len())
+}
+
+/// Through impacts: a ball pulled by a sine (its flight not a parabola) bouncing on its floor,
+/// a bar striking the floor with both ends, a pendulum on a rod against its wall.
+#[test]
+fn adjoint_gradients_through_impacts_equal_forward_sensitivities() {
+    let ball = LiftedBall { m: 1.0, g: 9.81, e: 0.8, f0: 3.0, om: 5.0 };
+    let mut start = State::<LiftedBall>::zeros();
+    start.set_q(LiftedBall::Y, 1.0);
+    let (worst, impacts) = check_through_impacts(&ball, &start, 2.0, 21);
+    eprintln!("lifted ball: {impacts} impacts, worst relative difference {worst:e}");
+    assert!(impacts >= 2);
+
+    let bar = Bar { m: 1.0, j: 0.2, g: 9.81, l: 1.0, e: 0.5 };
+    let q = VecQ::<Bar>::new(0.0, 0.6, 0.3);
+    let v = VecQ::<Bar>::new(0.2, -1.0, 0.5);
+    let start = consistent_state(&bar, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let (worst, impacts) = check_through_impacts(&bar, &start, 0.6, 22);
+    eprintln!("bar: {impacts} impacts, worst relative difference {worst:e}");
+    assert!(impacts >= 2);
+
+    let (l, theta0, theta_w) = (1.3, 1.2f64, 0.4f64);
+    let pendulum = PendulumAndWall { m: 0.7, g: 9.81, l, e: 0.6, w: l * theta_w.sin() };
+    let q = VecQ::<PendulumAndWall>::new(l * theta0.sin(), -l * theta0.cos());
+    let v = VecQ::<PendulumAndWall>::new(-0.3, 0.0);
+    let start = consistent_state(&pendulum, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let (worst, impacts) = check_through_impacts(&pendulum, &start, 2.0, 23);
+    eprintln!("pendulum against its wall: {impacts} impacts, worst relative difference {worst:e}");
+    assert!(impacts >= 2);
+}
+
 #[test]
 fn adjoints_out_of_reach_are_refused_with_the_reason() {
     let pendulum = unit_pendulum();
@@ -443,15 +521,25 @@ fn adjoints_out_of_reach_are_refused_with_the_reason() {
     };
     let error = recording.gradient(&pendulum, &Objective::terminal(&blows_up)).expect_err("not finite");
     assert!(matches!(&error, SimError::NonFinite { .. }), "{error}");
+    // Within a budget, impacts are not crossed yet; nor is a running cost over a run with
+    // impacts, whose cut steps would count past them.
     let ball = BouncingBall { m: 1.0, g: 9.81, e: 0.8 };
     let mut start = State::<BouncingBall>::zeros();
     start.set_q(BouncingBall::Y, 1.0);
     let error = Radau::new(&ball, RadauOptions::default())
         .expect("valid")
-        .record(0.0, &start, 2.0)
-        .expect_err("impacts are not differentiated");
+        .record_within(0.0, &start, 2.0, 100_000)
+        .expect_err("impacts are not crossed within a budget");
     assert!(
-        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("contacts")),
+        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("floor")),
         "{error}"
     );
+    let recording =
+        Radau::new(&ball, RadauOptions::default()).expect("valid").record(0.0, &start, 2.0).expect("records");
+    let running = |_: f64, y: &State<BouncingBall>, out: &mut State<BouncingBall>| {
+        out.clone_from(y);
+        0.5 * y.q.norm_squared()
+    };
+    let error = recording.gradient(&ball, &Objective::running(&running)).expect_err("a running cost");
+    assert!(matches!(&error, SimError::InvalidOption { what: "adjoint", .. }), "{error}");
 }

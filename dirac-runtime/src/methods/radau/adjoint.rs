@@ -47,9 +47,11 @@ use crate::analysis::diagnose::describe_slot;
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
-use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
+use crate::model::{Hybrid, LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Sizes, Storage, VecQ, VecY};
 use crate::shape::layout::Layout;
+use crate::simulate::events::Events;
+use crate::simulate::events::sensitivities::Jump;
 use crate::simulate::integrator::Integrator;
 use crate::simulate::laws::has_laws;
 use crate::simulate::sensitivity::Initial;
@@ -149,6 +151,19 @@ where
     t_end: f64,
     end: VecY<M>,
     kept: Kept<M>,
+    /// The impacts, in order, each after the step it cut short.
+    impacts: Vec<Cut<M>>,
+}
+
+/// An impact in a recording: step `step` reached past it and was cut at `t`, where the run
+/// jumped and restarted.
+struct Cut<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    step: usize,
+    t: f64,
+    jump: Jump<M>,
 }
 
 /// What a recording keeps of its steps.
@@ -221,20 +236,44 @@ where
     /// projection's derivative is not carried), a drive (its inputs' derivative is not known),
     /// or a model whose contacts, switching surfaces or laws `solve` would watch (the sweep
     /// does not differentiate through their events and impacts yet).
-    pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError> {
+    ///
+    /// A model with unilateral constraints has its contacts watched, as `solve` does: the
+    /// recording keeps each impact's jump and the sweep carries the adjoint back across it by
+    /// the transposed saltation matrix. A contact that comes to rest ends the recording in
+    /// [`SimError::ContactCloses`].
+    pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError>
+    where
+        M: Hybrid + Parameters,
+    {
         self.check_recordable()?;
         self.start(t0, state, t_end)?;
         let sizes = self.model.sizes();
+        let watched = !self.model.get().unilateral_names().is_empty();
+        let mut events = watched.then(|| Events::new().contacts(self.model.get()));
+        if let Some(events) = &mut events {
+            events.begin(self.model.get(), t0, &self.state)?;
+        }
         let mut steps = Vec::new();
+        let mut impacts = Vec::new();
         while !self.finished() {
             let (t, y) = (self.t, self.y.clone());
             let h = self.step()?;
             let z = [self.stages.z[0].clone(), self.stages.z[1].clone(), self.stages.z[2].clone()];
             debug_assert_eq!(z[0].len(), sizes.ny());
             steps.push(Step { t, h, y, z });
+            let Some(events) = &mut events else { continue };
+            while let Some(event) = events.locate(self)? {
+                let crossed = events.cross(self.model.get(), &event)?;
+                let Some(jump) = crossed.jump else { continue };
+                self.restart_at(event.t, &jump.after)?;
+                events.resume(self.model.get(), event.t, &jump.after)?;
+                events.reopen(&jump.reopened);
+                impacts.push(Cut { step: steps.len() - 1, t: event.t, jump });
+                break;
+            }
         }
         let end = self.y.clone();
-        Ok(Recording { t0, start: state.clone(), t_end: self.t, end, kept: Kept::Whole(steps) })
+        Ok(Recording { t0, start: state.clone(), t_end: self.t, end, kept: Kept::Whole(steps), impacts })
     }
 
     /// Integrates as [`record`](Self::record) does, but keeps, of the steps, only their sizes
@@ -257,6 +296,15 @@ where
         budget: usize,
     ) -> Result<Recording<M>, SimError> {
         self.check_recordable()?;
+        if let Some(contact) = self.model.get().unilateral_names().first() {
+            return Err(SimError::InvalidOption {
+                what: "adjoint",
+                reason: format!(
+                    "the contact `{contact}`: a recording within a budget does not cross impacts yet; \
+                     record every step with `record`"
+                ),
+            });
+        }
         let sizes = self.model.sizes();
         let mut checkpoints = Checkpoints::new(sizes, self.options, budget)?;
         let exact = self.options.exact_stages;
@@ -271,7 +319,14 @@ where
         self.options.exact_stages = exact;
         run?;
         let end = self.y.clone();
-        Ok(Recording { t0, start: state.clone(), t_end: self.t, end, kept: Kept::Checkpointed(checkpoints) })
+        Ok(Recording {
+            t0,
+            start: state.clone(),
+            t_end: self.t,
+            end,
+            kept: Kept::Checkpointed(checkpoints),
+            impacts: Vec::new(),
+        })
     }
 
     /// What `record` refuses, by name.
@@ -284,10 +339,10 @@ where
             return invalid("a drive's inputs have no derivative to transpose: hold the inputs instead");
         }
         let model = self.model.get();
-        if !model.unilateral_names().is_empty() || model.has_switches() || has_laws(model) {
+        if model.has_switches() || has_laws(model) {
             return invalid(
-                "the model's contacts, switching surfaces or laws have events and impacts, which the \
-                 sweep does not differentiate through yet",
+                "the model's switching surfaces or laws have events, which the sweep does not \
+                 differentiate through yet",
             );
         }
         Ok(())
@@ -343,6 +398,14 @@ where
                 });
             }
         }
+        if !self.impacts.is_empty() && objective.running.is_some() {
+            return Err(SimError::InvalidOption {
+                what: "adjoint",
+                reason: "a running cost over a run with impacts: the steps cut short by an impact would \
+                         count past it; sample the cost instead (`Objective::samples`)"
+                    .into(),
+            });
+        }
         let derivatives = ParameterDerivatives::<M>::of();
         let mut sweep = Sweep::new(model, derivatives)?;
         sweep.remaining = objective.samples.map_or(0, |(times, _)| times.len());
@@ -357,7 +420,11 @@ where
         }
         match &self.kept {
             Kept::Whole(steps) => {
-                for step in steps.iter().rev() {
+                let mut impacts = self.impacts.iter().rev().peekable();
+                for (k, step) in steps.iter().enumerate().rev() {
+                    if let Some(cut) = impacts.next_if(|cut| cut.step == k) {
+                        sweep.cross_back(model, cut, &mut bar);
+                    }
                     value += sweep.step(model, step, objective, &mut bar)?;
                 }
             }
@@ -426,6 +493,10 @@ where
     each: Vec<f64>,
     /// `∂G/∂θ`, summed over the steps.
     theta: Vec<f64>,
+    /// The gradient with respect to the state at an impact within the next step back, and its
+    /// time ([`Sweep::cross_back`]).
+    injected: Option<f64>,
+    inject: VecY<M>,
 }
 
 impl<M: LagrangeDirac> Sweep<M>
@@ -472,7 +543,59 @@ where
             weights: ResidualBlocks::with_sizes(&sizes),
             each: vec![0.0; count],
             theta: vec![0.0; count],
+            injected: None,
+            inject: sizes.zeros_y::<M>(),
         })
+    }
+
+    /// Carries `bar`, the gradient with respect to the state just after impact `cut` (where the
+    /// run restarted), back across it: the transpose of the forward jump
+    /// `s⁺ = S s⁻ + c_θ`, `s_p⁺ = L_vq s_q⁺ + L_vv s_v⁺ + ∂(∂L/∂v)/∂θ`. The parameters' part goes
+    /// into `theta`; the part with respect to the state just before the impact waits for the
+    /// step it cut short ([`Sweep::step`] reads it on that step's collocation polynomial), and
+    /// `bar`, the gradient with respect to that step's end, which the run left, is zero.
+    fn cross_back(&mut self, model: &M, cut: &Cut<M>, bar: &mut VecY<M>)
+    where
+        M: Parameters,
+    {
+        let l = self.layout;
+        let n = l.v - l.q;
+        let (t, after) = (cut.t, &cut.jump.after);
+        let salt = &cut.jump.saltation;
+        let shape = model.shape();
+        let (mut l_vq, mut l_vv) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_qq(&shape));
+        model.l_vq(t, &after.q, &after.v, &mut l_vq);
+        model.l_vv(t, &after.q, &after.v, &mut l_vv);
+        let b = bar.as_slice();
+        let mut x = DVector::<f64>::zeros(2 * n);
+        x.as_mut_slice()[..n].copy_from_slice(&b[l.q..l.v]);
+        x.as_mut_slice()[n..].copy_from_slice(&b[l.v..l.p]);
+        let bp = &b[l.p..l.lambda];
+        M::Algebra::qq_tr_mul(&l_vq, 1.0, bp, &mut x.as_mut_slice()[..n]);
+        M::Algebra::qq_tr_mul(&l_vv, 1.0, bp, &mut x.as_mut_slice()[n..]);
+        if !self.theta.is_empty() {
+            self.weights.dl_dv.as_mut_slice().copy_from_slice(bp);
+            self.weights.momentum_rate.fill(0.0);
+            self.weights.constraint_velocity.fill(0.0);
+            (self.derivatives.transposed)(
+                model,
+                t,
+                &after.q,
+                &after.v,
+                &after.lambda,
+                &self.weights,
+                &mut self.each,
+            );
+            for (k, theta) in self.theta.iter_mut().enumerate() {
+                *theta += self.each[k] + salt.parameters.column(k).dot(&x);
+            }
+        }
+        let before = salt.matrix.tr_mul(&x);
+        self.inject.fill(0.0);
+        self.inject.as_mut_slice()[l.q..l.v].copy_from_slice(&before.as_slice()[..n]);
+        self.inject.as_mut_slice()[l.v..l.p].copy_from_slice(&before.as_slice()[n..]);
+        self.injected = Some(t);
+        bar.fill(0.0);
     }
 
     /// Carries `bar` from a step's end (`ȳ_{n+1}`) to its start (`ȳ_n`), adding the
@@ -555,6 +678,19 @@ where
                 self.direct.axpy(1.0 - ell.iter().sum::<f64>(), &self.yj, 1.0);
             }
             self.remaining = first;
+        }
+        // An impact cut this step short: the gradient with respect to the state there, on the
+        // collocation polynomial as a sample's.
+        if let Some(t) = self.injected.take() {
+            let ell = lagrange(((t - step.t) / h).min(1.0));
+            for (l, ybar) in ell.iter().zip(self.ybar.iter_mut()) {
+                ybar.axpy(*l, &self.inject, 1.0);
+            }
+            if !direct {
+                self.direct.fill(0.0);
+                direct = true;
+            }
+            self.direct.axpy(1.0 - ell.iter().sum::<f64>(), &self.inject, 1.0);
         }
         let p_at = |j: usize| j * (n + m);
         let lambda_at = |j: usize| j * (n + m) + n;

@@ -191,7 +191,7 @@ where
     /// Likewise after a law switched: both its functions start at or above zero in the new
     /// mode (a released law's `g` at zero, an engaged one's margin to its bound), so they count
     /// as positive from there, whatever the round-off left.
-    fn reopen(&mut self, reopened: &[usize]) {
+    pub(crate) fn reopen(&mut self, reopened: &[usize]) {
         let law = self.switched_law.take();
         for k in 0..self.functions.len() {
             let switched = matches!(

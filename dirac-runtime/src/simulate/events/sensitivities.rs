@@ -9,13 +9,13 @@ use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
-use crate::model::{Hybrid, Parameters};
+use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::shape::layout::Layout;
-use crate::simulate::impact::saltation;
+use crate::simulate::impact::{Saltation, saltation};
 use crate::simulate::integrator::Integrator;
 use crate::simulate::recorder::Recorder;
-use crate::simulate::solution::{Impact, Sampling, Solution};
+use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 
 /// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints (and no
 /// switching surface or law, which the caller refuses): the integration watches the contacts
@@ -80,7 +80,6 @@ where
         push_now(integrator, &mut rows, &mut buffer);
         incomplete.push(0);
     }
-    let mut after = state.clone();
     while !integrator.finished() {
         integrator.step()?;
         complete(integrator, &mut rows, &mut incomplete, series, len, &mut buffer);
@@ -93,38 +92,24 @@ where
             });
             recorder.record_event(integrator.model(), event, events.state());
             push_within(integrator, &recorder, before, &mut rows, &mut buffer);
-            let contact = events.contact_of[event.index].expect("only contacts are watched");
-            let pre = events.state().clone();
-            after.clone_from(&pre);
-            let impacts = events.impact(integrator.model(), event.index, t, &mut after)?;
-            for &(j, impulse) in &impacts.impulses {
+            let crossed = events.cross(integrator.model(), &event)?;
+            for &(j, impulse) in &crossed.impulses {
                 recorder.record_impact(Impact { contact: j, t, impulse });
             }
-            if let Some(j) = impacts.resting {
-                let contacts = events.contacts.as_ref().expect("contacts are watched");
-                return Err(contacts.closes(j, t));
-            }
-            let reopened: Vec<usize> =
-                impacts.impulses.iter().filter(|&&(_, impulse)| impulse > 0.0).map(|&(j, _)| j).collect();
-            if reopened.is_empty() {
-                continue;
-            }
-            let closing: Vec<usize> = impacts.impulses.iter().map(|&(j, _)| j).collect();
-            let model = integrator.model();
-            let jump = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
-            let consistent = project(model, t, &after.q, &after.v, Consistency::default())?;
-            carry(integrator, &jump, t, &consistent, &mut restarted, &mut buffer, n);
-            integrator.restart_with_sensitivities(t, &consistent, &restarted)?;
-            events.resume(integrator.model(), t, &consistent)?;
+            let Some(jump) = crossed.jump else { continue };
+            let consistent = &jump.after;
+            carry(integrator, &jump.saltation, t, consistent, &mut restarted, &mut buffer, n);
+            integrator.restart_with_sensitivities(t, consistent, &restarted)?;
+            events.resume(integrator.model(), t, consistent)?;
+            events.reopen(&jump.reopened);
             let before = recorder.len();
-            recorder.record_reset(integrator.model(), t, &consistent);
+            recorder.record_reset(integrator.model(), t, consistent);
             for k in before..recorder.len() {
                 for s in &restarted {
                     rows.extend(s.components());
                 }
                 incomplete.push(k);
             }
-            events.reopen(&reopened);
             jumped = true;
             break;
         }
@@ -141,6 +126,63 @@ where
     let names = integrator.sensitivity_names().to_vec();
     let solution = recorder.finish(integrator.stats())?;
     Ok(solution.with_sensitivities(names, columns))
+}
+
+/// An impact crossed ([`Events::cross`]): each closing contact's impulse and, if any pushed,
+/// the jump.
+pub(crate) struct Crossed<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub impulses: Vec<(usize, f64)>,
+    pub jump: Option<Jump<M>>,
+}
+
+/// The jump of an impact: its saltation matrix at the state just before it, the consistent
+/// state just after it (where the integration restarts) and the contacts it reopened.
+pub(crate) struct Jump<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    pub saltation: Saltation,
+    pub after: State<M>,
+    pub reopened: Vec<usize>,
+}
+
+impl<M: Hybrid + Parameters> Events<'_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The impact at contact event `event`, just located (at [`Events::state`]): its impulses,
+    /// and its jump, differentiated, if it pushed. A contact that comes to rest is an error
+    /// ([`SimError::ContactCloses`]): resting switches the constraints, whose jump is not
+    /// differentiated.
+    pub(crate) fn cross(&mut self, model: &M, event: &Event) -> Result<Crossed<M>, SimError> {
+        let t = event.t;
+        let contact = self.contact_of[event.index].ok_or_else(|| SimError::InvalidOption {
+            what: "sensitivities",
+            reason: format!(
+                "the event `{}` is not an impact: only impacts are differentiated",
+                self.name(event)
+            ),
+        })?;
+        let pre = self.state().clone();
+        let mut after = pre.clone();
+        let impacts = self.impact(model, event.index, t, &mut after)?;
+        if let Some(j) = impacts.resting {
+            let contacts = self.contacts.as_ref().expect("contacts are watched");
+            return Err(contacts.closes(j, t));
+        }
+        let reopened: Vec<usize> =
+            impacts.impulses.iter().filter(|&&(_, impulse)| impulse > 0.0).map(|&(j, _)| j).collect();
+        if reopened.is_empty() {
+            return Ok(Crossed { impulses: impacts.impulses, jump: None });
+        }
+        let closing: Vec<usize> = impacts.impulses.iter().map(|&(j, _)| j).collect();
+        let saltation = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
+        let after = project(model, t, &after.q, &after.v, Consistency::default())?;
+        Ok(Crossed { impulses: impacts.impulses, jump: Some(Jump { saltation, after, reopened }) })
+    }
 }
 
 /// The sensitivities at the samples from `before` on, each within the last step.
@@ -197,7 +239,7 @@ fn complete<M: Hybrid, I: Integrator<M>>(
 /// the Legendre map at the state `after`, multipliers zero.
 fn carry<M: Hybrid + Parameters, I: Integrator<M>>(
     integrator: &I,
-    jump: &crate::simulate::impact::Saltation,
+    jump: &Saltation,
     t: f64,
     after: &State<M>,
     out: &mut [State<M>],
