@@ -832,6 +832,32 @@ fn sensitivities_are_carried_through_impacts() {
         assert!((got_y - dy).abs() < 1e-8 * dy.abs().max(1.0), "∂y/∂{name}: {got_y} against {dy}");
         assert!((got_v - dv).abs() < 1e-8 * dv.abs().max(1.0), "∂v/∂{name}: {got_v} against {dv}");
     }
+    // Sampled at every step (the impact's state before and after it among the samples) and
+    // on a grid: one finite value per sample in every column, the same at the end.
+    for sampling in [Sampling::Steps, Sampling::Every(0.01)] {
+        let dense = Radau::new(&ball, tight())
+            .expect("valid")
+            .with_sensitivities(&wrt)
+            .expect("valid")
+            .solve_with_sensitivities(0.0, &start, t, &sampling)
+            .expect("integrates through the impact");
+        let samples = dense.t().len();
+        for (name, _, _) in expected {
+            for column in [dense.dq(BouncingBall::Y, name), dense.dv(BouncingBall::Y, name)] {
+                let column = column.expect("a sensitivity");
+                assert_eq!(column.len(), samples, "{sampling:?}");
+                assert!(column.iter().all(|x| x.is_finite()), "{sampling:?}: {name}");
+            }
+            let end = dense.dv(BouncingBall::Y, name).expect("a sensitivity")[samples - 1];
+            let reference = solution.dv(BouncingBall::Y, name).expect("a sensitivity")[1];
+            assert!((end - reference).abs() < 1e-12 * reference.abs().max(1.0), "{sampling:?}: ∂v/∂{name}");
+        }
+        // The impact's samples: the velocity's sensitivity to e jumps there from 0 to g t1.
+        let de = dense.dv(BouncingBall::Y, "e").expect("a sensitivity");
+        let at = dense.t().iter().position(|&ts| ts >= t1).expect("the impact is sampled");
+        assert!(de[..at].iter().all(|x| x.abs() < 1e-12), "{sampling:?}");
+        assert!((de[samples - 1] - g * t1).abs() < 1e-8, "{sampling:?}");
+    }
 }
 
 /// Sensitivities through several impacts of a pendulum on a rod against a wall (the rod takes
