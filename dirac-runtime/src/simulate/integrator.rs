@@ -489,59 +489,119 @@ where
                 })
             });
     }
-    let sizes = integrator.model().sizes();
-    let len = Layout::new(sizes).len;
     let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
-    let series = count * len;
-    let mut rows = recorder.extra_series(series)?;
-    let mut buffer = State::<M>::with_sizes(sizes);
+    let mut rows = SensitivityRows::new(integrator, &mut recorder)?;
     integrator.start(t0, state, t_end)?;
     recorder.record_initial(integrator.model(), t0, integrator.state());
-    let push = |rows: &mut Vec<f64>, s: &State<M>| rows.extend(s.components());
-    if recorder.len() > 0 {
-        for j in 0..count {
-            integrator.sensitivity(j, &mut buffer);
-            push(&mut rows, &buffer);
-        }
-    }
-    let mut first = true;
+    rows.push_initial(integrator, &recorder);
     while !integrator.finished() {
         let before = recorder.len();
         integrator.step()?;
+        rows.complete(integrator);
         recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
             integrator.interpolate(t, out)
         });
-        if first && before > 0 {
-            // The sample at t0, completed by what the first step taught.
-            for j in 0..count {
-                let row = &mut rows[j * len..(j + 1) * len];
-                for (x, &v) in buffer.components_mut().zip(row.iter()) {
-                    *x = v;
-                }
-                integrator.complete_initial_sensitivity(j, &mut buffer);
-                for (x, &v) in row.iter_mut().zip(buffer.components()) {
-                    *x = v;
-                }
+        rows.push_within(integrator, &recorder, before);
+    }
+    rows.finish(integrator, recorder)
+}
+
+/// The sensitivities recorded sample by sample beside a [`Recorder`]'s samples (each sample's
+/// values side by side, contiguous writes), turned into one column per value at the end.
+pub(crate) struct SensitivityRows<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    rows: Vec<f64>,
+    /// Values a sample: every sensitivity's state.
+    series: usize,
+    len: usize,
+    buffer: State<M>,
+    /// The samples whose multipliers' sensitivities the next step completes: the start's, and
+    /// those just after a restart.
+    incomplete: Vec<usize>,
+}
+
+impl<M: LagrangeDirac> SensitivityRows<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Room for `integrator`'s sensitivities at `recorder`'s samples.
+    pub fn new<I: Integrator<M>>(integrator: &I, recorder: &mut Recorder<M>) -> Result<Self, SimError> {
+        let sizes = integrator.model().sizes();
+        let len = Layout::new(sizes).len;
+        let series = integrator.sensitivity_names().len() * len;
+        let rows = recorder.extra_series(series)?;
+        Ok(SensitivityRows { rows, series, len, buffer: State::with_sizes(sizes), incomplete: Vec::new() })
+    }
+
+    /// The sensitivities at the start, if it is sampled, to be completed by the first step.
+    pub fn push_initial<I: Integrator<M>>(&mut self, integrator: &I, recorder: &Recorder<M>) {
+        if recorder.len() > 0 {
+            for j in 0..integrator.sensitivity_names().len() {
+                integrator.sensitivity(j, &mut self.buffer);
+                self.rows.extend(self.buffer.components());
             }
+            self.incomplete.push(0);
         }
-        first = false;
+    }
+
+    /// The sensitivities at the samples from `before` on, each within the last step.
+    pub fn push_within<I: Integrator<M>>(&mut self, integrator: &I, recorder: &Recorder<M>, before: usize) {
         for k in before..recorder.len() {
             let ts = recorder.time(k);
-            for j in 0..count {
+            for j in 0..integrator.sensitivity_names().len() {
                 if ts >= integrator.t() {
-                    integrator.sensitivity(j, &mut buffer);
+                    integrator.sensitivity(j, &mut self.buffer);
                 } else {
-                    integrator.interpolate_sensitivity(j, ts, &mut buffer);
+                    integrator.interpolate_sensitivity(j, ts, &mut self.buffer);
                 }
-                push(&mut rows, &buffer);
+                self.rows.extend(self.buffer.components());
             }
         }
     }
-    let samples = recorder.len();
-    let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
-    let names = integrator.sensitivity_names().to_vec();
-    let solution = recorder.finish(integrator.stats())?;
-    Ok(solution.with_sensitivities(names, columns))
+
+    /// `sensitivities` at the samples from `before` on, taken where the integration restarts
+    /// with them: their multipliers' parts are completed by the next step.
+    pub fn push_restart(&mut self, sensitivities: &[State<M>], recorder: &Recorder<M>, before: usize) {
+        for k in before..recorder.len() {
+            for s in sensitivities {
+                self.rows.extend(s.components());
+            }
+            self.incomplete.push(k);
+        }
+    }
+
+    /// Completes the multipliers' sensitivities of the samples at the start of the step just
+    /// taken from that step (see [`Integrator::complete_initial_sensitivity`]).
+    pub fn complete<I: Integrator<M>>(&mut self, integrator: &I) {
+        let (series, len) = (self.series, self.len);
+        for k in self.incomplete.drain(..) {
+            for j in 0..integrator.sensitivity_names().len() {
+                let row = &mut self.rows[k * series + j * len..k * series + (j + 1) * len];
+                for (x, &v) in self.buffer.components_mut().zip(row.iter()) {
+                    *x = v;
+                }
+                integrator.complete_initial_sensitivity(j, &mut self.buffer);
+                for (x, &v) in row.iter_mut().zip(self.buffer.components()) {
+                    *x = v;
+                }
+            }
+        }
+    }
+
+    /// The solution, with a column per sensitivity value.
+    pub fn finish<I: Integrator<M>>(
+        self,
+        integrator: &I,
+        recorder: Recorder<M>,
+    ) -> Result<Solution<M, I::Stats>, SimError> {
+        let (rows, series, samples) = (self.rows, self.series, recorder.len());
+        let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
+        let names = integrator.sensitivity_names().to_vec();
+        let solution = recorder.finish(integrator.stats())?;
+        Ok(solution.with_sensitivities(names, columns))
+    }
 }
 
 /// A typed error if `model` declares laws (`friction`, `diode`) or unilateral constraints

@@ -11,9 +11,8 @@ use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
-use crate::shape::layout::Layout;
 use crate::simulate::impact::{Saltation, saltation};
-use crate::simulate::integrator::Integrator;
+use crate::simulate::integrator::{Integrator, SensitivityRows};
 use crate::simulate::recorder::Recorder;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 
@@ -53,36 +52,23 @@ where
         });
     }
     let sizes = integrator.model().sizes();
-    let (n, len) = (sizes.nq, Layout::new(sizes).len);
+    let n = sizes.nq;
     let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
     let mut events = Events::new().contacts(integrator.model());
     if let Some(contacts) = &events.contacts {
         recorder.name_contacts(&contacts.names);
     }
     recorder.name_events(events.names());
-    let series = count * len;
-    let mut rows = recorder.extra_series(series)?;
+    let mut rows = SensitivityRows::new(integrator, &mut recorder)?;
     let mut buffer = State::<M>::with_sizes(sizes);
     integrator.start(t0, state, t_end)?;
     events.begin(integrator.model(), t0, integrator.state())?;
     recorder.record_initial(integrator.model(), t0, integrator.state());
-    // The samples whose multipliers' sensitivities the next step completes: the start's and
-    // each impact's after it.
-    let mut incomplete: Vec<usize> = Vec::new();
+    rows.push_initial(integrator, &recorder);
     let mut restarted = vec![State::<M>::with_sizes(sizes); count];
-    let push_now = |integrator: &I, rows: &mut Vec<f64>, buffer: &mut State<M>| {
-        for j in 0..count {
-            integrator.sensitivity(j, buffer);
-            rows.extend(buffer.components());
-        }
-    };
-    if recorder.len() > 0 {
-        push_now(integrator, &mut rows, &mut buffer);
-        incomplete.push(0);
-    }
     while !integrator.finished() {
         integrator.step()?;
-        complete(integrator, &mut rows, &mut incomplete, series, len, &mut buffer);
+        rows.complete(integrator);
         let mut jumped = false;
         while let Some(event) = events.locate(integrator)? {
             let t = event.t;
@@ -91,7 +77,7 @@ where
                 integrator.interpolate(ts, out)
             });
             recorder.record_event(integrator.model(), event, events.state());
-            push_within(integrator, &recorder, before, &mut rows, &mut buffer);
+            rows.push_within(integrator, &recorder, before);
             let crossed = events.cross(integrator.model(), &event)?;
             for &(j, impulse) in &crossed.impulses {
                 recorder.record_impact(Impact { contact: j, t, impulse });
@@ -104,12 +90,7 @@ where
             events.reopen(&jump.reopened);
             let before = recorder.len();
             recorder.record_reset(integrator.model(), t, consistent);
-            for k in before..recorder.len() {
-                for s in &restarted {
-                    rows.extend(s.components());
-                }
-                incomplete.push(k);
-            }
+            rows.push_restart(&restarted, &recorder, before);
             jumped = true;
             break;
         }
@@ -118,14 +99,10 @@ where
             recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
                 integrator.interpolate(t, out)
             });
-            push_within(integrator, &recorder, before, &mut rows, &mut buffer);
+            rows.push_within(integrator, &recorder, before);
         }
     }
-    let samples = recorder.len();
-    let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
-    let names = integrator.sensitivity_names().to_vec();
-    let solution = recorder.finish(integrator.stats())?;
-    Ok(solution.with_sensitivities(names, columns))
+    rows.finish(integrator, recorder)
 }
 
 /// An impact crossed ([`Events::cross`]): each closing contact's impulse and, if any pushed,
@@ -182,55 +159,6 @@ where
         let saltation = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
         let after = project(model, t, &after.q, &after.v, Consistency::default())?;
         Ok(Crossed { impulses: impacts.impulses, jump: Some(Jump { saltation, after, reopened }) })
-    }
-}
-
-/// The sensitivities at the samples from `before` on, each within the last step.
-fn push_within<M: Hybrid, I: Integrator<M>>(
-    integrator: &I,
-    recorder: &Recorder<M>,
-    before: usize,
-    rows: &mut Vec<f64>,
-    buffer: &mut State<M>,
-) where
-    DefaultAllocator: Storage<M>,
-{
-    for k in before..recorder.len() {
-        let ts = recorder.time(k);
-        for j in 0..integrator.sensitivity_names().len() {
-            if ts >= integrator.t() {
-                integrator.sensitivity(j, buffer);
-            } else {
-                integrator.interpolate_sensitivity(j, ts, buffer);
-            }
-            rows.extend(buffer.components());
-        }
-    }
-}
-
-/// Completes the multipliers' sensitivities of the samples `incomplete` (each at the start
-/// of the step just taken) from that step.
-fn complete<M: Hybrid, I: Integrator<M>>(
-    integrator: &I,
-    rows: &mut [f64],
-    incomplete: &mut Vec<usize>,
-    series: usize,
-    len: usize,
-    buffer: &mut State<M>,
-) where
-    DefaultAllocator: Storage<M>,
-{
-    for k in incomplete.drain(..) {
-        for j in 0..integrator.sensitivity_names().len() {
-            let row = &mut rows[k * series + j * len..k * series + (j + 1) * len];
-            for (x, &v) in buffer.components_mut().zip(row.iter()) {
-                *x = v;
-            }
-            integrator.complete_initial_sensitivity(j, buffer);
-            for (x, &v) in row.iter_mut().zip(buffer.components()) {
-                *x = v;
-            }
-        }
     }
 }
 
