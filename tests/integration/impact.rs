@@ -161,6 +161,25 @@ fn the_derivative_of_an_interconnections_impact_is_refused() {
     assert!(matches!(&error, SimError::InvalidOption { what: "impact", .. }), "{error}");
 }
 
+/// Bad input ends in a typed error naming the cause: a contact the model does not have, one
+/// not among the closing ones, one that is not approaching, velocities that are not finite.
+#[test]
+fn impacts_of_bad_input_are_refused_by_name() {
+    let ball = BouncingBall { m: 1.0, g: 9.81, e: 0.8 };
+    let (q, down, up) =
+        (VecQ::<BouncingBall>::new(0.0), VecQ::<BouncingBall>::new(-2.0), VecQ::<BouncingBall>::new(2.0));
+    let error = impact_map(&ball, 0.0, &q, &down, &[3]).expect_err("no contact 3");
+    assert!(matches!(&error, SimError::InvalidOption { what: "impact", .. }), "{error}");
+    let error = saltation(&ball, 0.0, &q, &down, 3, &[3]).expect_err("no contact 3");
+    assert!(matches!(&error, SimError::InvalidOption { what: "impact", .. }), "{error}");
+    let error = saltation(&ball, 0.0, &q, &down, 0, &[]).expect_err("not closing");
+    assert!(matches!(&error, SimError::InvalidOption { what: "saltation", .. }), "{error}");
+    let error = saltation(&ball, 0.0, &q, &up, 0, &[0]).expect_err("leaving the floor");
+    assert!(matches!(&error, SimError::InvalidOption { what: "saltation", .. }), "{error}");
+    let error = impact_map(&ball, 0.0, &q, &VecQ::<BouncingBall>::new(f64::NAN), &[0]).expect_err("NaN");
+    assert!(matches!(&error, SimError::NonFinite { .. }), "{error}");
+}
+
 /// The bar in free flight (`x`, `y` ballistic, `th` turning steadily) at time `t` from
 /// `(q0, v0)`: its flow is known in closed form, and so is the flow's derivative over `τ`,
 /// `[[I, τ I], [0, I]]`.

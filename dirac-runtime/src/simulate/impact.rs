@@ -78,6 +78,12 @@ where
     }
     let sizes = model.sizes();
     let (n, m, k) = (sizes.nq, sizes.nc, model.unilateral_names().len());
+    if let Some(j) = closing.iter().find(|&&j| j >= k) {
+        return Err(SimError::InvalidOption {
+            what: "impact",
+            reason: format!("there is no unilateral constraint {j}: the model has {k}"),
+        });
+    }
     let params = model.parameter_count();
     let mut state = State::<M>::with_sizes(sizes);
     state.q.copy_from(q);
