@@ -90,6 +90,10 @@ pub struct Blocks {
     pub unilateral_derivatives: Vec<Id>,
     /// The event functions `g(t, q, v, λ)`.
     pub events: Vec<Id>,
+    /// Each event function's gradient (empty without events, or where the rows would be too
+    /// many to emit, [`EVENT_DERIVATIVES_MAX`]): for each event in turn, `∂g/∂q` (`n`),
+    /// `∂g/∂v` (`n`), `∂g/∂λ` (`m`), `∂g/∂t` and `∂g/∂θ` (`P`, in field order).
+    pub event_derivatives: Vec<Id>,
     /// The derivatives with respect to each parameter (`f64` field), in field order.
     pub dtheta: Vec<ParameterBlocks>,
     /// `w_ṗᵀ ∂ṗ/∂θ_k + w_pᵀ ∂(∂L/∂v)/∂θ_k + w_cᵀ ∂(A v + b)/∂θ_k` for every parameter `k`, the
@@ -99,6 +103,11 @@ pub struct Blocks {
     /// `w_φᵀ ∂φ/∂θ_k` for every parameter `k`.
     pub holonomic_vjp_dtheta: Vec<Id>,
 }
+
+/// The most values `Blocks::event_derivatives` emits: beyond it (thousands of events of a
+/// large model, each with a dense row) the model does without them, and a sensitivity across
+/// its switching surfaces is refused by name.
+pub const EVENT_DERIVATIVES_MAX: usize = 1 << 14;
 
 /// The derivatives of the residual blocks and holonomic constraints with respect to one
 /// parameter, at fixed `(t, q, v, λ)`.
@@ -200,7 +209,7 @@ impl Blocks {
         let unilateral: Vec<Id> = m.unilaterals.iter().map(|u| u.phi).collect();
         let unilateral_dq = jacobian(g, &unilateral, &q);
         let restitution: Vec<Id> = m.unilaterals.iter().map(|u| u.restitution).collect();
-        let events = m.events.iter().map(|e| e.2).collect();
+        let events: Vec<Id> = m.events.iter().map(|e| e.2).collect();
         let thetas: Vec<Id> =
             (0..m.params.len()).map(|i| m.symbols.declare(&mut m.graph, Sym::Parameter(i))).collect();
         let g = &mut m.graph;
@@ -224,6 +233,15 @@ impl Blocks {
             let moving: Vec<Id> = unilateral.iter().map(|&phi| g.diff(phi, time)).collect();
             for &x in std::iter::once(&time).chain(&thetas) {
                 unilateral_derivatives.extend(moving.iter().map(|&phi_t| g.diff(phi_t, x)));
+            }
+        }
+        let width = 2 * n + rows + 1 + thetas.len();
+        let mut event_derivatives = Vec::new();
+        if events.len() * width <= EVENT_DERIVATIVES_MAX {
+            for &e in &events {
+                for &x in q.iter().chain(&v).chain(&lambda).chain(std::iter::once(&time)).chain(&thetas) {
+                    event_derivatives.push(g.diff(e, x));
+                }
             }
         }
         let dtheta = thetas
@@ -297,6 +315,7 @@ impl Blocks {
             restitution,
             unilateral_derivatives,
             events,
+            event_derivatives,
             dtheta,
             vjp_dtheta,
             holonomic_vjp_dtheta,

@@ -125,7 +125,7 @@ pub mod __private {
     };
     pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
-    pub use crate::simulate::events::sensitivities::solve_with_sensitivities_through_impacts;
+    pub use crate::simulate::events::sensitivities::solve_with_sensitivities_through_events;
     pub use crate::simulate::events::{Events, SolveWithEvents};
     pub use crate::simulate::integrator::Integrator;
     pub use crate::simulate::laws::{consistent_with_laws, has_laws, law_names};

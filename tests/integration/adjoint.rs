@@ -453,6 +453,27 @@ where
     (worst, solution.impacts().len())
 }
 
+/// As [`check_through_impacts`], across the model's switching surfaces: the worst relative
+/// difference and the number of crossings.
+fn check_through_crossings<M: Parameters + dirac::Hybrid>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    seed: u64,
+) -> (f64, usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let wrt = everything(model);
+    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let solution =
+        radau.solve_with_sensitivities(0.0, start, t_end, &Sampling::Times(vec![t_end])).expect("integrates");
+    let recording = Radau::new(model, tight()).expect("valid").record(0.0, start, t_end).expect("records");
+    assert_eq!(recording.steps(), solution.stats.steps, "the same steps");
+    let (_, worst) = terminal_against_forward(model, &radau, &wrt, &recording, &random_weights(model, seed));
+    (worst, solution.events().len())
+}
+
 /// Through impacts: a ball pulled by a sine (its flight not a parabola) bouncing on its floor,
 /// a bar striking the floor with both ends, a pendulum on a rod against its wall.
 #[test]
@@ -480,6 +501,125 @@ fn adjoint_gradients_through_impacts_equal_forward_sensitivities() {
     let (worst, impacts) = check_through_impacts(&pendulum, &start, 2.0, 23);
     eprintln!("pendulum against its wall: {impacts} impacts, worst relative difference {worst:e}");
     assert!(impacts >= 2);
+}
+
+/// Across switching surfaces: the adjoint gradient of `cᵀ y(T)` equals `cᵀ s(T)` of the
+/// forward sensitivities carried across the same crossings (the forward by the jump
+/// `I + (f⁻ − f⁺) ∂t*/∂x`, the sweep by its transpose), to `1e-10` of the largest. A spring
+/// with Coulomb friction (a surface on the velocity, crossed where the motion turns) and a
+/// brake past a point (one on the position); a pendulum on a rod whose damper engages past a
+/// point; the zoo's model with every non-smooth function.
+#[test]
+fn adjoint_gradients_across_switching_surfaces_equal_forward_sensitivities() {
+    let spring = CoulombSpring { m: 1.0, k: 4.0, mu: 0.05, a: 0.1, f: 0.2 };
+    let mut start = State::<CoulombSpring>::zeros();
+    start.v[0] = 1.0;
+    start.p[0] = 1.0;
+    let (worst, crossings) = check_through_crossings(&spring, &start, 2.5, 31);
+    eprintln!("Coulomb spring: {crossings} crossings, worst relative difference {worst:e}");
+    assert!(crossings >= 3, "{crossings}");
+
+    let (l, theta0) = (1.0, 1.0f64);
+    let pendulum = DampedPastW { m: 0.7, g: 9.81, l, w: 0.3, c: 0.8 };
+    let q = VecQ::<DampedPastW>::new(-l * theta0.sin(), -l * theta0.cos());
+    let start = consistent_state(&pendulum, 0.0, &q, &VecQ::<DampedPastW>::zeros(), Consistency::default())
+        .expect("a start");
+    let (worst, crossings) = check_through_crossings(&pendulum, &start, 3.0, 32);
+    eprintln!("pendulum with a damper past w: {crossings} crossings, worst relative difference {worst:e}");
+    assert!(crossings >= 2, "{crossings}");
+
+    let model = NonSmooth { m: 1.2, k: 2.0, gap: 0.3, c: 0.4, fmax: 0.5, mu: 0.05 };
+    let q = VecQ::<NonSmooth>::new(0.9, -0.4);
+    let v = VecQ::<NonSmooth>::new(0.2, 0.7);
+    let start = consistent_state(&model, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let (worst, crossings) = check_through_crossings(&model, &start, 3.0, 33);
+    eprintln!("every non-smooth function: {crossings} crossings, worst relative difference {worst:e}");
+    assert!(crossings >= 4, "{crossings}");
+}
+
+/// The Coulomb spring's exact motion at `t`: harmonic between crossings, under the constant
+/// force `−μ sgn v − f [x > a]` of each phase, from `x = 0` at speed `v0`; each crossing of
+/// `x = a` or `v = 0` found by bisection on the closed form to round-off.
+fn coulomb_spring_exact(s: &CoulombSpring, v0: f64, t_end: f64) -> (f64, f64) {
+    let w = (s.k / s.m).sqrt();
+    let flow = |x: f64, v: f64, force: f64, t: f64| {
+        let c = force / s.k;
+        (
+            c + (x - c) * (w * t).cos() + v / w * (w * t).sin(),
+            -(x - c) * w * (w * t).sin() + v * (w * t).cos(),
+        )
+    };
+    let (mut t, mut x, mut v) = (0.0, 0.0, v0);
+    let (mut moving, mut past) = (v.signum(), if x > s.a { 1.0 } else { -1.0 });
+    loop {
+        let force = -s.mu * moving - if past > 0.0 { s.f } else { 0.0 };
+        // Signed so that both are positive until their surface is crossed.
+        let gaps = |tau: f64| {
+            let (xs, vs) = flow(x, v, force, tau);
+            ((xs - s.a) * past, vs * moving)
+        };
+        let grid = 4000;
+        let dt = (t_end - t) / f64::from(grid);
+        let crossing = (1..=grid).find_map(|i| {
+            let (g, h) = gaps(f64::from(i) * dt);
+            (g < 0.0 || h < 0.0).then(|| (f64::from(i - 1) * dt, f64::from(i) * dt, g < 0.0))
+        });
+        let Some((mut lo, mut hi, position)) = crossing else { return flow(x, v, force, t_end - t) };
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            let (g, h) = gaps(mid);
+            if (if position { g } else { h }) > 0.0 { lo = mid } else { hi = mid }
+        }
+        let tau = 0.5 * (lo + hi);
+        (x, v) = flow(x, v, force, tau);
+        t += tau;
+        if position { past = -past } else { moving = -moving }
+    }
+}
+
+/// The forward sensitivities across switching surfaces against central differences (step
+/// 1e-6) of the exact motion (`coulomb_spring_exact`): the Coulomb spring at `t = 2.5`,
+/// through four crossings of its friction's surface and its brake's. (Differences of whole
+/// simulations are no reference here: the solves' own errors, about the tolerance, are not
+/// smooth in the parameters where a crossing moves.)
+#[test]
+fn sensitivities_across_switching_surfaces_match_the_exact_motion() {
+    let spring = CoulombSpring { m: 1.0, k: 4.0, mu: 0.05, a: 0.1, f: 0.2 };
+    let v0 = 1.0;
+    let mut start = State::<CoulombSpring>::zeros();
+    (start.v[0], start.p[0]) = (v0, spring.m * v0);
+    let t_end = 2.5;
+    let wrt = Sensitivities::all_parameters(&spring).initial_velocity(CoulombSpring::X);
+    let solution = Radau::new(&spring, RadauOptions::tolerances(1e-11, 1e-13))
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &start, t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates");
+    assert_eq!(solution.events().len(), 4, "four crossings");
+    let mut failures = 0;
+    for name in ["m", "k", "mu", "a", "f", "v(t0)"] {
+        let h = 1e-6;
+        let (mut plus, mut minus) = (spring.clone(), spring.clone());
+        let (mut up, mut down) = (v0, v0);
+        match name {
+            "m" => (plus.m, minus.m) = (spring.m + h, spring.m - h),
+            "k" => (plus.k, minus.k) = (spring.k + h, spring.k - h),
+            "mu" => (plus.mu, minus.mu) = (spring.mu + h, spring.mu - h),
+            "a" => (plus.a, minus.a) = (spring.a + h, spring.a - h),
+            "f" => (plus.f, minus.f) = (spring.f + h, spring.f - h),
+            _ => (up, down) = (v0 + h, v0 - h),
+        }
+        let (xp, vp) = coulomb_spring_exact(&plus, up, t_end);
+        let (xm, vm) = coulomb_spring_exact(&minus, down, t_end);
+        let (dx, dv) = ((xp - xm) / (2.0 * h), (vp - vm) / (2.0 * h));
+        let got_x = solution.dq(CoulombSpring::X, name).expect("a sensitivity")[0];
+        let got_v = solution.dv(CoulombSpring::X, name).expect("a sensitivity")[0];
+        eprintln!("∂x/∂{name}: {got_x} against {dx}; ∂v/∂{name}: {got_v} against {dv}");
+        failures += usize::from((got_x - dx).abs() > 1e-7 * dx.abs().max(1.0));
+        failures += usize::from((got_v - dv).abs() > 1e-7 * dv.abs().max(1.0));
+    }
+    assert_eq!(failures, 0, "sensitivities off the exact motion's");
 }
 
 #[test]
@@ -527,6 +667,17 @@ fn adjoints_out_of_reach_are_refused_with_the_reason() {
         .expect_err("impacts are not crossed within a budget");
     assert!(
         matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("floor")),
+        "{error}"
+    );
+    let spring = CoulombSpring { m: 1.0, k: 4.0, mu: 0.05, a: 0.1, f: 0.2 };
+    let mut moving = State::<CoulombSpring>::zeros();
+    (moving.v[0], moving.p[0]) = (0.5, 0.5);
+    let error = Radau::new(&spring, RadauOptions::default())
+        .expect("valid")
+        .record_within(0.0, &moving, 2.0, 100_000)
+        .expect_err("switching surfaces are not crossed within a budget");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("switching")),
         "{error}"
     );
     let recording =

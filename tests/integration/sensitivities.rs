@@ -765,29 +765,60 @@ pub struct Brake {
     pub f: f64,
 }
 
-/// Sensitivities through a switching surface are refused by name. From `x = 0` at speed `v₀`,
-/// the brake engages at `t_s = a/v₀`, after which `x = a + v₀(t − t_s) − f(t − t_s)²/2`, so
-/// `∂x/∂a = f (t − t_s)/v₀`: all of it from the jump of the force at the crossing, which
-/// derivatives taken branch by branch (`∂(−f)/∂a = ∂0/∂a = 0`) would give as zero.
+/// Sensitivities through a switching surface, against the closed form. From `x0` at speed
+/// `v0`, the brake engages at `t_s = (a − x0)/v0`, after which `x = a + v0 τ − f τ²/2`,
+/// `v = v0 − f τ`, `τ = t − t_s`; differentiated by hand (`∂t_s/∂a = 1/v0`,
+/// `∂t_s/∂x0 = −1/v0`, `∂t_s/∂v0 = −(a − x0)/v0²`). Most of `∂x/∂a` comes from the jump of
+/// the force at the crossing, which derivatives taken branch by branch
+/// (`∂(−f)/∂a = ∂0/∂a = 0`) would give as zero.
 #[test]
-fn sensitivities_through_a_switching_surface_are_refused() {
-    let brake = Brake { a: 1.0, f: 0.5 };
-    let wrt = Sensitivities::new(&brake).parameters(&["a"]).expect("a parameter");
+fn sensitivities_are_carried_across_a_switching_surface() {
+    let (a, f, x0, v0) = (1.0, 0.5, 0.2, 1.0);
+    let brake = Brake { a, f };
+    let wrt = Sensitivities::all_parameters(&brake).initial_position(Brake::X).initial_velocity(Brake::X);
     let mut radau = Radau::new(&brake, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
     let mut start = State::<Brake>::zeros();
-    start.v[0] = 1.0;
-    start.p[0] = 1.0;
-    let error = radau.solve_with_sensitivities(0.0, &start, 3.0, &Sampling::Steps).expect_err("refused");
+    start.q[0] = x0;
+    start.v[0] = v0;
+    start.p[0] = v0;
+    let t = 2.5;
+    let solution = radau
+        .solve_with_sensitivities(0.0, &start, t, &Sampling::Times(vec![0.5, t]))
+        .expect("integrates through the switch");
+    assert_eq!(solution.events().len(), 1, "one crossing");
+    let tau = t - (a - x0) / v0;
+    let speed = v0 - f * tau;
+    let expected = [
+        ("a", f * tau / v0, f / v0),
+        ("f", -0.5 * tau * tau, -tau),
+        ("x(t0)", speed / v0, -f / v0),
+        ("v(t0)", tau + speed * (a - x0) / (v0 * v0), 1.0 - f * (a - x0) / (v0 * v0)),
+    ];
+    for (name, dx, dv) in expected {
+        let got_x = solution.dq(Brake::X, name).expect("a sensitivity");
+        let got_v = solution.dv(Brake::X, name).expect("a sensitivity");
+        assert!((got_x[1] - dx).abs() < 1e-7, "∂x/∂{name}: {} against {dx}", got_x[1]);
+        assert!((got_v[1] - dv).abs() < 1e-7, "∂v/∂{name}: {} against {dv}", got_v[1]);
+        eprintln!("∂x/∂{name}: {:e} off, ∂v/∂{name}: {:e} off", got_x[1] - dx, got_v[1] - dv);
+    }
+    // Before the crossing the brake's parameters do not matter yet.
+    let before = solution.dq(Brake::X, "a").expect("a sensitivity")[0];
+    assert!(before.abs() < 1e-12, "∂x/∂a before the crossing: {before}");
+}
+
+/// Sensitivities of a model with a law (friction that sticks, diodes) are refused by name:
+/// its constraints change at the law's events, and that jump is not carried.
+#[test]
+fn sensitivities_across_a_law_are_refused() {
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 1.0, mu_s: 0.4, mu_k: 0.3 };
+    let wrt = Sensitivities::all_parameters(&belt);
+    let mut radau = Radau::new(&belt, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
+    let mut start = State::<FrictionBelt>::zeros();
+    start.q[0] = 1.0;
+    let error = radau.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps).expect_err("refused");
     let text = error.to_string();
     assert!(matches!(error, SimError::InvalidOption { what: "sensitivities", .. }), "{text}");
-    assert!(text.contains("`switch0`: x - a = 0") && text.contains("jump"), "{text}");
-    // The same model without sensitivities integrates, through the located switch.
-    let solution = Radau::new(&brake, tight())
-        .expect("valid")
-        .solve(0.0, &start, 3.0, &Sampling::Steps)
-        .expect("solves");
-    let end = solution.last().expect("a sample").q(Brake::X);
-    assert!((end - (1.0 + 2.0 - 0.25 * 4.0)).abs() < 1e-8, "x(3) = {end}");
+    assert!(text.contains("`grip`") && text.contains("laws"), "{text}");
 }
 
 /// Sensitivities through an impact: a ball dropped from rest at `h0` bounces at

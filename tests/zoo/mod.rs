@@ -894,6 +894,36 @@ pub struct SaturatedServo {
     pub fmax: f64,
 }
 
+/// A mass on a spring with Coulomb friction `mu` (a force that jumps where the velocity
+/// changes sign, a switching surface on a velocity) and a brake `f` past `x = a` (one on a
+/// position).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+#[dirac(force(x) = -mu * v.signum() + if x > a { -f } else { 0.0 })]
+pub struct CoulombSpring {
+    pub m: f64,
+    pub k: f64,
+    pub mu: f64,
+    pub a: f64,
+    pub f: f64,
+}
+
+/// A pendulum on a rod of length `l` whose damper `c` engages past `x = w`: its force jumps
+/// from zero to `−c vx` there.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) - m * g * y)]
+#[dirac(holonomic(rod) = x * x + y * y - l * l)]
+#[dirac(force(x) = if x > w { -c * vx } else { 0.0 })]
+pub struct DampedPastW {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+    pub w: f64,
+    pub c: f64,
+}
+
 /// A mass on a belt moving at `vb`, held by a spring to the wall, with Coulomb friction and
 /// stiction as the law `grip`.
 #[derive(LagrangeDirac, Clone, Debug)]

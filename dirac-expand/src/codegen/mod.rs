@@ -13,9 +13,9 @@ use quote::quote;
 
 use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
-    EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC, L_QQ, L_VQ, L_VT,
-    L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out, RESIDUAL,
-    RESIDUAL_BLOCKS, RESTITUTION, Signature, UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ,
+    EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
+    L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
+    RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, Signature, UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -126,6 +126,15 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
     }
     if !b.events.is_empty() {
         hybrid.extend(e.sized(&EVENTS, &b.events));
+        if !b.event_derivatives.is_empty() {
+            hybrid.extend(e.sized(&EVENT_DERIVATIVES, &b.event_derivatives));
+            let len = b.event_derivatives.len();
+            hybrid.extend(quote! {
+                fn event_derivatives_len(&self) -> ::core::primitive::usize {
+                    #len
+                }
+            });
+        }
     }
     let mut inputs_outputs = TokenStream::new();
     for (sig, block) in [

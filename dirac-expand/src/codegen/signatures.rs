@@ -36,7 +36,7 @@ pub fn solve_with_contacts() -> TokenStream {
                 |_, _| ::core::ops::ControlFlow::Continue(()),
             ))
         }
-        fn __solve_with_sensitivities_through_impacts<I: #p::Integrator<Self>>(
+        fn __solve_with_sensitivities_through_events<I: #p::Integrator<Self>>(
             integrator: &mut I,
             t0: ::core::primitive::f64,
             state: &#p::State<Self>,
@@ -45,7 +45,7 @@ pub fn solve_with_contacts() -> TokenStream {
         ) -> ::core::option::Option<
             ::core::result::Result<#p::Solution<Self, <I as #p::Integrator<Self>>::Stats>, #p::SimError>,
         > {
-            ::core::option::Option::Some(#p::solve_with_sensitivities_through_impacts(
+            ::core::option::Option::Some(#p::solve_with_sensitivities_through_events(
                 integrator, t0, state, t_end, sampling,
             ))
         }
@@ -177,6 +177,8 @@ pub const RESTITUTION: Signature = method("restitution", &[T, Q], Out::Values);
 pub const UNILATERAL_DERIVATIVES: Signature = method("unilateral_derivatives", &[T, Q], Out::Values);
 /// The model's event functions, in the order declared; emitted for models that have events.
 pub const EVENTS: Signature = method("events", &[T, Q, V, Lambda], Out::Values);
+/// The event functions' gradients (see `Blocks::event_derivatives`).
+pub const EVENT_DERIVATIVES: Signature = method("event_derivatives", &[T, Q, V, Lambda], Out::Values);
 
 /// The derivatives with respect to parameter `k`; emitted for every model with parameters.
 pub const RESIDUAL_BLOCKS_DTHETA: Signature =

@@ -1300,7 +1300,7 @@ const _: () = {
                 ),
             )
         }
-        fn __solve_with_sensitivities_through_impacts<
+        fn __solve_with_sensitivities_through_events<
             I: ::dirac::__private::Integrator<Self>,
         >(
             integrator: &mut I,
@@ -1318,7 +1318,7 @@ const _: () = {
             >,
         > {
             ::core::option::Option::Some(
-                ::dirac::__private::solve_with_sensitivities_through_impacts(
+                ::dirac::__private::solve_with_sensitivities_through_events(
                     integrator,
                     t0,
                     state,

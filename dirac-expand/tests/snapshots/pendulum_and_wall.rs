@@ -373,7 +373,7 @@ const _: () = {
                 ),
             )
         }
-        fn __solve_with_sensitivities_through_impacts<
+        fn __solve_with_sensitivities_through_events<
             I: ::dirac::__private::Integrator<Self>,
         >(
             integrator: &mut I,
@@ -391,7 +391,7 @@ const _: () = {
             >,
         > {
             ::core::option::Option::Some(
-                ::dirac::__private::solve_with_sensitivities_through_impacts(
+                ::dirac::__private::solve_with_sensitivities_through_events(
                     integrator,
                     t0,
                     state,
@@ -747,6 +747,45 @@ const _: () = {
             );
             out[0usize] = lambda[0];
             out[1usize] = q[1] * v[0];
+        }
+        #[inline]
+        fn event_derivatives(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 22usize, "{}: the slice must hold {} values",
+                "event_derivatives", 22usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+            out[4usize] = 1f64;
+            out[5usize] = 0f64;
+            out[6usize] = 0f64;
+            out[7usize] = 0f64;
+            out[8usize] = 0f64;
+            out[9usize] = 0f64;
+            out[10usize] = 0f64;
+            out[11usize] = 0f64;
+            out[12usize] = v[0];
+            out[13usize] = q[1];
+            out[14usize] = 0f64;
+            out[15usize] = 0f64;
+            out[16usize] = 0f64;
+            out[17usize] = 0f64;
+            out[18usize] = 0f64;
+            out[19usize] = 0f64;
+            out[20usize] = 0f64;
+            out[21usize] = 0f64;
+        }
+        fn event_derivatives_len(&self) -> ::core::primitive::usize {
+            22usize
         }
     }
     #[automatically_derived]
@@ -1295,7 +1334,7 @@ const _: () = {
                 ),
             )
         }
-        fn __solve_with_sensitivities_through_impacts<
+        fn __solve_with_sensitivities_through_events<
             I: ::dirac::__private::Integrator<Self>,
         >(
             integrator: &mut I,
@@ -1313,7 +1352,7 @@ const _: () = {
             >,
         > {
             ::core::option::Option::Some(
-                ::dirac::__private::solve_with_sensitivities_through_impacts(
+                ::dirac::__private::solve_with_sensitivities_through_events(
                     integrator,
                     t0,
                     state,
@@ -1820,6 +1859,53 @@ const _: () = {
             );
             out[0usize] = lambda[0];
             out[1usize] = q[1] * v[0];
+        }
+        #[inline]
+        fn event_derivatives(
+            &self,
+            _t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            _lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            ::core::assert_eq!(
+                out.len(), 30usize, "{}: the slice must hold {} values",
+                "event_derivatives", 30usize
+            );
+            out[0usize] = 0f64;
+            out[1usize] = 0f64;
+            out[2usize] = 0f64;
+            out[3usize] = 0f64;
+            out[4usize] = 0f64;
+            out[5usize] = 0f64;
+            out[6usize] = 1f64;
+            out[7usize] = 0f64;
+            out[8usize] = 0f64;
+            out[9usize] = 0f64;
+            out[10usize] = 0f64;
+            out[11usize] = 0f64;
+            out[12usize] = 0f64;
+            out[13usize] = 0f64;
+            out[14usize] = 0f64;
+            out[15usize] = 0f64;
+            out[16usize] = v[0];
+            out[17usize] = 0f64;
+            out[18usize] = q[1];
+            out[19usize] = 0f64;
+            out[20usize] = 0f64;
+            out[21usize] = 0f64;
+            out[22usize] = 0f64;
+            out[23usize] = 0f64;
+            out[24usize] = 0f64;
+            out[25usize] = 0f64;
+            out[26usize] = 0f64;
+            out[27usize] = 0f64;
+            out[28usize] = 0f64;
+            out[29usize] = 0f64;
+        }
+        fn event_derivatives_len(&self) -> ::core::primitive::usize {
+            30usize
         }
     }
     #[automatically_derived]

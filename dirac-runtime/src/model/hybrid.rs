@@ -24,6 +24,30 @@ where
         assert!(out.is_empty(), "events: the model declares none, so the slice must be empty");
     }
 
+    /// How many values [`Hybrid::event_derivatives`] writes: zero where the derive does not
+    /// emit it (an interconnection does not yet, nor a model whose events are too many for
+    /// dense rows; a primitive model with events does).
+    fn event_derivatives_len(&self) -> usize {
+        0
+    }
+
+    /// The gradient of each event function (`Hybrid::events`), into `out`, event after event:
+    /// `∂g/∂q` (`n`), `∂g/∂v` (`n`), `∂g/∂λ` (`m`), `∂g/∂t` and `∂g/∂θ` (the model's `P`
+    /// parameters in order), `2n + m + 1 + P` values an event
+    /// ([`Hybrid::event_derivatives_len`] in all). Generated symbolically where that is not
+    /// zero; otherwise it panics. What carries a sensitivity across a switching surface.
+    fn event_derivatives(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut [f64],
+    ) {
+        let _ = (t, q, v, lambda, out);
+        panic!("event_derivatives: not generated for this model (see event_derivatives_len)")
+    }
+
     /// The values `φ_u(q, t)` of the unilateral constraints, into `out` (one per constraint):
     /// positive while open, zero at contact.
     fn unilateral(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {

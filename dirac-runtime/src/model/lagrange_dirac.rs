@@ -259,11 +259,11 @@ where
     }
 
     /// [`Integrator::solve_with_sensitivities`](crate::Integrator::solve_with_sensitivities)
-    /// of a model that declares unilateral constraints: the sensitivities carried across each
-    /// impact by its saltation matrix. The derives implement it; `None` from a model that
-    /// cannot, which the solve then refuses.
+    /// of a model that declares unilateral constraints or has switching surfaces: the
+    /// sensitivities carried across each impact and each crossing by its jump. The derives
+    /// implement it; `None` from a model that cannot, which the solve then refuses.
     #[doc(hidden)]
-    fn __solve_with_sensitivities_through_impacts<I: crate::simulate::integrator::Integrator<Self>>(
+    fn __solve_with_sensitivities_through_events<I: crate::simulate::integrator::Integrator<Self>>(
         integrator: &mut I,
         t0: f64,
         state: &State<Self>,

@@ -522,7 +522,12 @@ where
 
 /// `v̇` at `(t, q, v)`: the equations of motion with the constraints at acceleration level,
 /// `[L_vv −Aᵀ; A 0] (v̇, λ) = (∂L/∂q + F − L_vt − L_vq v, −∂(A v + b)/∂q v − ∂(A v + b)/∂t)`.
-fn accelerations<M: Hybrid>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> Result<DVector<f64>, SimError>
+pub(crate) fn accelerations<M: Hybrid>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+) -> Result<DVector<f64>, SimError>
 where
     DefaultAllocator: Storage<M>,
 {

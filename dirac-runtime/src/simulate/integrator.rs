@@ -241,7 +241,9 @@ where
     /// name ([`Solution::sensitivity`]). A model with unilateral constraints has its contacts
     /// watched, as [`Integrator::solve`] does, and each sensitivity carried across each impact
     /// by the impact's saltation matrix ([`saltation`](crate::impact::saltation)); one with
-    /// switching surfaces or laws is refused by name. A method that does not carry
+    /// switching surfaces (`abs`, `signum`, conditionals) has them located, and each
+    /// sensitivity carried across each crossing by `(f⁻ − f⁺) ∂t*/∂θ`, the jump of the rate
+    /// times the crossing's shift; one with laws (friction, diodes) is refused by name. A method that does not carry
     /// sensitivities refuses with [`SimError::Unsupported`].
     fn solve_with_sensitivities(
         &mut self,
@@ -423,35 +425,40 @@ where
     SimError::Unsupported { method: I::NAME, capability: Capability::Sensitivities }
 }
 
-/// Sensitivities of a model with switching surfaces are refused, naming them: where the motion
-/// crosses a surface at `t_s`, a sensitivity jumps by `(f⁺ − f⁻) ∂t_s/∂θ` (a force that jumps
-/// there, such as `signum`'s, moves the state by as much as the crossing moves in time), and
-/// the generated derivatives, taken branch by branch, do not carry that jump. (Those of a
-/// model with unilateral constraints are carried across its impacts by
-/// `solve_with_sensitivities_through_impacts`.)
-fn refuse_switches<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
+/// Sensitivities of a model with laws (friction, diodes, ideal switches) are refused, naming
+/// them: at their events the model's constraints change, and the sensitivities' jump there is
+/// not carried. (Those of a model with unilateral constraints or switching surfaces are
+/// carried across its impacts and crossings by `solve_with_sensitivities_through_events`.)
+fn refuse_laws<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    if !model.has_switches() && !laws::has_laws(model) {
+    if !laws::has_laws(model) {
         return Ok(());
     }
-    let surfaces: Vec<String> = model
+    let names: Vec<String> = laws::law_names(model).into_iter().map(|name| format!("`{name}`")).collect();
+    Err(SimError::InvalidOption {
+        what: "sensitivities",
+        reason: format!(
+            "the model has laws ({}): at their events its constraints change, and the sensitivities' \
+             jump there is not implemented; take differences of solutions, or carry sensitivities \
+             between the switches",
+            names.join(", ")
+        ),
+    })
+}
+
+/// The model's switching surfaces, each as `` `name`: g = 0 ``.
+fn surfaces<M: LagrangeDirac>(model: &M) -> Vec<String>
+where
+    DefaultAllocator: Storage<M>,
+{
+    model
         .event_declarations()
         .into_iter()
         .filter(|&(_, d)| d == crate::model::names::SWITCH)
         .map(|(name, _)| format!("`{name}`: {} = 0", model.surface(&name).unwrap_or("?")))
-        .chain(laws::law_names(model).into_iter().map(|name| format!("the law `{name}`")))
-        .collect();
-    Err(SimError::InvalidOption {
-        what: "sensitivities",
-        reason: format!(
-            "the model has switching surfaces ({}): a sensitivity jumps where the motion crosses one, by \
-             (f⁺ − f⁻) ∂t_s/∂θ, and that jump is not implemented; take differences of solutions, or \
-             carry sensitivities on a smooth model",
-            surfaces.join(", ")
-        ),
-    })
+        .collect()
 }
 
 /// [`Integrator::solve_with_sensitivities`]: the samples of the state, and at each the
@@ -477,15 +484,22 @@ where
             reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
         });
     }
-    refuse_switches(integrator.model())?;
-    if !integrator.model().unilateral_names().is_empty() {
-        return M::__solve_with_sensitivities_through_impacts(integrator, t0, state, t_end, sampling)
+    refuse_laws(integrator.model())?;
+    let model = integrator.model();
+    if !model.unilateral_names().is_empty() || model.has_switches() {
+        return M::__solve_with_sensitivities_through_events(integrator, t0, state, t_end, sampling)
             .unwrap_or_else(|| {
+                let model = integrator.model();
+                let what = match model.unilateral_names().first() {
+                    Some(contact) => format!("the contact `{contact}`'s impacts"),
+                    None => format!("its switching surfaces ({})", surfaces(model).join(", ")),
+                };
                 Err(SimError::InvalidOption {
                     what: "sensitivities",
-                    reason: "the model declares unilateral constraints but does not carry sensitivities \
-                             across their impacts: derive it"
-                        .into(),
+                    reason: format!(
+                        "this model (a network, assembled while the program runs) does not carry \
+                         sensitivities across {what}: take differences of solutions"
+                    ),
                 })
             });
     }

@@ -24,3 +24,4 @@ pub mod sensitivity;
 pub mod solution;
 /// Input sources read by time: tables held or interpolated.
 pub mod sources;
+pub(crate) mod surface;

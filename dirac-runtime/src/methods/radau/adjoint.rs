@@ -44,6 +44,7 @@ use crate::algebra::lu::{Lu, Singular};
 use crate::algebra::newton::NewtonSolver;
 use crate::algebra::sparse::lu::{Ordering, SparseLu};
 use crate::analysis::diagnose::describe_slot;
+use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
@@ -234,13 +235,14 @@ where
     ///
     /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
     /// projection's derivative is not carried), a drive (its inputs' derivative is not known),
-    /// or a model whose contacts, switching surfaces or laws `solve` would watch (the sweep
-    /// does not differentiate through their events and impacts yet).
+    /// or a model with laws (friction, diodes, ideal switches: their events change the
+    /// constraints, which the sweep does not differentiate through yet).
     ///
-    /// A model with unilateral constraints has its contacts watched, as `solve` does: the
-    /// recording keeps each impact's jump and the sweep carries the adjoint back across it by
-    /// the transposed saltation matrix. A contact that comes to rest ends the recording in
-    /// [`SimError::ContactCloses`].
+    /// A model with unilateral constraints has its contacts watched, and one with switching
+    /// surfaces (`abs`, `signum`, conditionals) has them located, as `solve` does: the
+    /// recording keeps each impact's or crossing's jump and the sweep carries the adjoint back
+    /// across it by the transposed saltation matrix. A contact that comes to rest ends the
+    /// recording in [`SimError::ContactCloses`].
     pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError>
     where
         M: Hybrid + Parameters,
@@ -248,8 +250,12 @@ where
         self.check_recordable()?;
         self.start(t0, state, t_end)?;
         let sizes = self.model.sizes();
-        let watched = !self.model.get().unilateral_names().is_empty();
-        let mut events = watched.then(|| Events::new().contacts(self.model.get()));
+        let model = self.model.get();
+        let (contacts, switches) = (!model.unilateral_names().is_empty(), model.has_switches());
+        let mut events = (contacts || switches).then(|| {
+            let events = if contacts { Events::new().contacts(model) } else { Events::new() };
+            if switches { events.switches_in(model) } else { events }
+        });
         if let Some(events) = &mut events {
             events.begin(self.model.get(), t0, &self.state)?;
         }
@@ -264,8 +270,15 @@ where
             let Some(events) = &mut events else { continue };
             while let Some(event) = events.locate(self)? {
                 let crossed = events.cross(self.model.get(), &event)?;
-                let Some(jump) = crossed.jump else { continue };
-                self.restart_at(event.t, &jump.after)?;
+                let Some(mut jump) = crossed.jump else { continue };
+                if self.restart_at(event.t, &jump.after).is_err() {
+                    // A switching surface's crossing, interpolated off the constraints by more
+                    // than a restart allows: from the consistent state nearest to it, as `solve`.
+                    let after = &jump.after;
+                    jump.after =
+                        project(self.model.get(), event.t, &after.q, &after.v, Consistency::default())?;
+                    self.restart_at(event.t, &jump.after)?;
+                }
                 events.resume(self.model.get(), event.t, &jump.after)?;
                 events.reopen(&jump.reopened);
                 impacts.push(Cut { step: steps.len() - 1, t: event.t, jump });
@@ -305,6 +318,14 @@ where
                 ),
             });
         }
+        if self.model.get().has_switches() {
+            return Err(SimError::InvalidOption {
+                what: "adjoint",
+                reason: "the model has switching surfaces: a recording within a budget does not cross them \
+                         yet; record every step with `record`"
+                    .into(),
+            });
+        }
         let sizes = self.model.sizes();
         let mut checkpoints = Checkpoints::new(sizes, self.options, budget)?;
         let exact = self.options.exact_stages;
@@ -339,10 +360,10 @@ where
             return invalid("a drive's inputs have no derivative to transpose: hold the inputs instead");
         }
         let model = self.model.get();
-        if model.has_switches() || has_laws(model) {
+        if has_laws(model) {
             return invalid(
-                "the model's switching surfaces or laws have events, which the sweep does not \
-                 differentiate through yet",
+                "the model's laws (friction, diodes, switches) change its constraints at their events, \
+                 which the sweep does not differentiate through yet",
             );
         }
         Ok(())
@@ -401,8 +422,9 @@ where
         if !self.impacts.is_empty() && objective.running.is_some() {
             return Err(SimError::InvalidOption {
                 what: "adjoint",
-                reason: "a running cost over a run with impacts: the steps cut short by an impact would \
-                         count past it; sample the cost instead (`Objective::samples`)"
+                reason: "a running cost over a run with impacts or switching surfaces crossed: the steps \
+                         cut short there would count past the crossing; sample the cost instead \
+                         (`Objective::samples`)"
                     .into(),
             });
         }
@@ -561,7 +583,7 @@ where
         let l = self.layout;
         let n = l.v - l.q;
         let (t, after) = (cut.t, &cut.jump.after);
-        let salt = &cut.jump.saltation;
+        let salt = &cut.jump;
         let shape = model.shape();
         let (mut l_vq, mut l_vv) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_qq(&shape));
         model.l_vq(t, &after.q, &after.v, &mut l_vq);

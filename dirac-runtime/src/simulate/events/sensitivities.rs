@@ -2,7 +2,7 @@
 //! that carries each sensitivity across each impact by the impact's saltation matrix
 //! ([`saltation`]), the impact's time moving with the parameters and the initial values.
 
-use nalgebra::{DVector, DefaultAllocator};
+use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use super::Events;
 use crate::analysis::init::{Consistency, project};
@@ -15,10 +15,14 @@ use crate::simulate::impact::{Saltation, saltation};
 use crate::simulate::integrator::{Integrator, SensitivityRows};
 use crate::simulate::recorder::Recorder;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
+use crate::simulate::surface::surface_jump;
 
-/// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints (and no
-/// switching surface or law, which the caller refuses): the integration watches the contacts
-/// as [`Events::contacts`] does, and at each impact every sensitivity `s = ∂(q, v)/∂θ` just
+/// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints or
+/// switching surfaces (and no law, which the caller refuses): the integration watches the
+/// contacts and locates the surfaces as [`Integrator::solve`] does. At each crossing of a
+/// surface every sensitivity's velocities jump by `(v̇⁻ − v̇⁺) ∂t*/∂x s` plus, for a parameter,
+/// `(v̇⁻ − v̇⁺) ∂t*/∂θ` (the jump of the rate times the crossing's shift; see the
+/// `surface` module), and at each impact every sensitivity `s = ∂(q, v)/∂θ` just
 /// before it becomes `S s + c_θ` just after it (`S` the saltation matrix, `c_θ` its column for
 /// the parameter `θ`, zero for an initial value), the momenta's part following the Legendre
 /// map, `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`. The multipliers' part restarts at zero and is
@@ -27,7 +31,7 @@ use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 /// A contact that comes to rest ends the integration in [`SimError::ContactCloses`], as
 /// without sensitivities (resting contacts would switch the model's constraints, whose
 /// sensitivities' jump is not carried).
-pub fn solve_with_sensitivities_through_impacts<M: Hybrid + Parameters, I: Integrator<M>>(
+pub fn solve_with_sensitivities_through_events<M: Hybrid + Parameters, I: Integrator<M>>(
     integrator: &mut I,
     t0: f64,
     state: &State<M>,
@@ -54,7 +58,9 @@ where
     let sizes = integrator.model().sizes();
     let n = sizes.nq;
     let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
-    let mut events = Events::new().contacts(integrator.model());
+    let model = integrator.model();
+    let events = if names.is_empty() { Events::new() } else { Events::new().contacts(model) };
+    let mut events = if model.has_switches() { events.switches_in(model) } else { events };
     if let Some(contacts) = &events.contacts {
         recorder.name_contacts(&contacts.names);
     }
@@ -82,15 +88,26 @@ where
             for &(j, impulse) in &crossed.impulses {
                 recorder.record_impact(Impact { contact: j, t, impulse });
             }
-            let Some(jump) = crossed.jump else { continue };
+            let Some(mut jump) = crossed.jump else { continue };
+            carry(integrator, &jump, t, &mut restarted, &mut buffer, n);
+            if integrator.restart_with_sensitivities(t, &jump.after, &restarted).is_err() {
+                // The crossing of a switching surface, interpolated off the constraints by more
+                // than a restart allows: from the consistent state nearest to it, as a solve does.
+                jump.after =
+                    project(integrator.model(), t, &jump.after.q, &jump.after.v, Consistency::default())?;
+                momenta(integrator, t, &jump.after, &mut restarted);
+                integrator.restart_with_sensitivities(t, &jump.after, &restarted)?;
+            }
             let consistent = &jump.after;
-            carry(integrator, &jump.saltation, t, consistent, &mut restarted, &mut buffer, n);
-            integrator.restart_with_sensitivities(t, consistent, &restarted)?;
             events.resume(integrator.model(), t, consistent)?;
             events.reopen(&jump.reopened);
-            let before = recorder.len();
-            recorder.record_reset(integrator.model(), t, consistent);
-            rows.push_restart(&restarted, &recorder, before);
+            if !crossed.impulses.is_empty() {
+                // An impact's state after it is a sample of its own; a switching surface's is the
+                // crossing's, just recorded.
+                let before = recorder.len();
+                recorder.record_reset(integrator.model(), t, consistent);
+                rows.push_restart(&restarted, &recorder, before);
+            }
             jumped = true;
             break;
         }
@@ -115,13 +132,16 @@ where
     pub jump: Option<Jump<M>>,
 }
 
-/// The jump of an impact: its saltation matrix at the state just before it, the consistent
-/// state just after it (where the integration restarts) and the contacts it reopened.
+/// The jump of an impact or a switching surface: its saltation matrix at the state just
+/// before it (`2n × 2n` on the positions and velocities) and its parameters' columns (`2n × P`),
+/// the state just after it (where the integration restarts: consistent after an impact, the
+/// state at the crossing after a switching surface) and the contacts it reopened.
 pub(crate) struct Jump<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    pub saltation: Saltation,
+    pub matrix: DMatrix<f64>,
+    pub parameters: DMatrix<f64>,
     pub after: State<M>,
     pub reopened: Vec<usize>,
 }
@@ -136,10 +156,18 @@ where
     /// differentiated.
     pub(crate) fn cross(&mut self, model: &M, event: &Event) -> Result<Crossed<M>, SimError> {
         let t = event.t;
+        if let (true, Some(surface)) = (self.switch_of[event.index], self.declared_of[event.index]) {
+            let after = self.state().clone();
+            let jump = surface_jump(model, t, &after, surface, self.name(event))?;
+            let (matrix, parameters) = (jump.matrix, jump.parameters);
+            let jump = Jump { matrix, parameters, after, reopened: Vec::new() };
+            return Ok(Crossed { impulses: Vec::new(), jump: Some(jump) });
+        }
         let contact = self.contact_of[event.index].ok_or_else(|| SimError::InvalidOption {
             what: "sensitivities",
             reason: format!(
-                "the event `{}` is not an impact: only impacts are differentiated",
+                "the event `{}` is neither an impact nor a switching surface: its jump is not \
+                 differentiated",
                 self.name(event)
             ),
         })?;
@@ -156,23 +184,49 @@ where
             return Ok(Crossed { impulses: impacts.impulses, jump: None });
         }
         let closing: Vec<usize> = impacts.impulses.iter().map(|&(j, _)| j).collect();
-        let saltation = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
+        let Saltation { matrix, parameters, .. } = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
         let after = project(model, t, &after.q, &after.v, Consistency::default())?;
-        Ok(Crossed { impulses: impacts.impulses, jump: Some(Jump { saltation, after, reopened }) })
+        let jump = Jump { matrix, parameters, after, reopened };
+        Ok(Crossed { impulses: impacts.impulses, jump: Some(jump) })
     }
 }
 
-/// Each sensitivity just before the impact at `t`, carried across it by `jump`, into `out`:
-/// positions and velocities by the saltation matrix (and a parameter's column), momenta by
-/// the Legendre map at the state `after`, multipliers zero.
+/// Each sensitivity just before the jump at `t`, carried across it, into `out`: positions and
+/// velocities by its saltation matrix (and a parameter's column), momenta by the Legendre map
+/// at the state after it ([`momenta`]), multipliers zero.
 fn carry<M: Hybrid + Parameters, I: Integrator<M>>(
     integrator: &I,
-    jump: &Saltation,
+    jump: &Jump<M>,
     t: f64,
-    after: &State<M>,
     out: &mut [State<M>],
     buffer: &mut State<M>,
     n: usize,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let mut x = DVector::<f64>::zeros(2 * n);
+    for (j, s) in out.iter_mut().enumerate() {
+        integrator.interpolate_sensitivity(j, t, buffer);
+        x.rows_mut(0, n).copy_from_slice(buffer.q.as_slice());
+        x.rows_mut(n, n).copy_from_slice(buffer.v.as_slice());
+        let mut y = &jump.matrix * &x;
+        if let Some(k) = integrator.sensitivity_parameter(j) {
+            y += jump.parameters.column(k);
+        }
+        s.q.copy_from_slice(y.rows(0, n).as_slice());
+        s.v.copy_from_slice(y.rows(n, n).as_slice());
+        s.lambda.fill(0.0);
+    }
+    momenta(integrator, t, &jump.after, out);
+}
+
+/// The momenta's part of each sensitivity in `out`, from its positions' and velocities' by the
+/// Legendre map at the state `after`: `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`.
+fn momenta<M: Hybrid + Parameters, I: Integrator<M>>(
+    integrator: &I,
+    t: f64,
+    after: &State<M>,
+    out: &mut [State<M>],
 ) where
     DefaultAllocator: Storage<M>,
 {
@@ -184,21 +238,12 @@ fn carry<M: Hybrid + Parameters, I: Integrator<M>>(
     model.l_vq(t, &after.q, &after.v, &mut l_vq);
     model.l_vv(t, &after.q, &after.v, &mut l_vv);
     let mut blocks = ResidualBlocks::<M>::with_sizes(&sizes);
-    let mut x = DVector::<f64>::zeros(2 * n);
     for (j, s) in out.iter_mut().enumerate() {
-        integrator.interpolate_sensitivity(j, t, buffer);
-        x.rows_mut(0, n).copy_from_slice(buffer.q.as_slice());
-        x.rows_mut(n, n).copy_from_slice(buffer.v.as_slice());
-        let mut y = &jump.matrix * &x;
         s.p.fill(0.0);
-        s.lambda.fill(0.0);
         if let Some(k) = integrator.sensitivity_parameter(j) {
-            y += jump.parameters.column(k);
             model.residual_blocks_dtheta(k, t, &after.q, &after.v, &after.lambda, &mut blocks);
             s.p.copy_from(&blocks.dl_dv);
         }
-        s.q.copy_from_slice(y.rows(0, n).as_slice());
-        s.v.copy_from_slice(y.rows(n, n).as_slice());
         <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vq, 1.0, s.q.as_slice(), s.p.as_mut_slice());
         <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vv, 1.0, s.v.as_slice(), s.p.as_mut_slice());
     }

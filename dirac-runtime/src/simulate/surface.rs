@@ -1,0 +1,141 @@
+//! The linearised jump of a motion across a switching surface: where a non-smooth function or
+//! a conditional of the model (`abs`, `signum`, `if a > b { … } else { … }`) switches, at
+//! `g(t, q, v) = 0`, the state goes on continuously but its rate jumps from `f⁻` to `f⁺`, and
+//! a change of the state or of a parameter that moves the crossing's time `t*` moves the state
+//! after it by `(f⁻ − f⁺) δt*`:
+//!
+//! ```text
+//! S = I + (f⁻ − f⁺) ∂t*/∂x,    ∂t*/∂x = −∂g/∂x / ġ⁻,    ġ⁻ = ∂g/∂t + ∂g/∂q v + ∂g/∂v v̇⁻,
+//! ```
+//!
+//! `x = (q, v)`, `f = (v, v̇)`: only the velocities' rows of `S − I` are not zero. The
+//! parameters' columns are `(f⁻ − f⁺) ∂t*/∂θ`, `∂t*/∂θ = −∂g/∂θ / ġ⁻`.
+//!
+//! `v̇` on each side is the acceleration of that side's branch at the crossing: the limit of
+//! the accelerations from that side, extrapolated from two points just off the surface
+//! (Richardson's, error `O(δ²)` for an offset `δ` of a millionth of the state's size), since at
+//! the crossing itself the model evaluates whichever branch the round-off picks.
+
+use nalgebra::{DMatrix, DVector, DefaultAllocator};
+
+use crate::error::SimError;
+use crate::model::state::State;
+use crate::model::{Hybrid, Parameters};
+use crate::shape::dims::Storage;
+use crate::simulate::impact::accelerations;
+
+/// The relative offset from the surface at which each side's accelerations are read.
+const OFFSET: f64 = 1e-6;
+
+/// The jump of the sensitivities `s = ∂(q, v)/∂(·)` across a switching surface.
+pub(crate) struct SurfaceJump {
+    /// `S`, `2n × 2n`, positions first.
+    pub matrix: DMatrix<f64>,
+    /// The parameters' columns, `2n × P`.
+    pub parameters: DMatrix<f64>,
+}
+
+/// The jump across the declared event function `surface` (its index among
+/// [`Hybrid::events`], named `name`), a switching surface the motion crosses at `t` in the
+/// state `at`.
+///
+/// Refused with [`SimError::InvalidOption`] for a model whose derive does not emit its event
+/// functions' gradients (an interconnection, a network), a surface that reads multipliers, and
+/// a motion that does not cross the surface there (both sides push into it, or both away: it
+/// slides along it, or leaves it either way).
+pub(crate) fn surface_jump<M: Hybrid + Parameters>(
+    model: &M,
+    t: f64,
+    at: &State<M>,
+    surface: usize,
+    name: &str,
+) -> Result<SurfaceJump, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let (n, m, params) = (sizes.nq, sizes.nc, model.parameter_count());
+    let count = model.event_declarations().len();
+    let width = 2 * n + m + 1 + params;
+    if model.event_derivatives_len() != count * width {
+        return refuse(format!(
+            "the switching surface `{name}`: its gradient is not generated for this model (an \
+             interconnection or a network, or a model with too many events for dense rows), so a \
+             sensitivity cannot be carried across it"
+        ));
+    }
+    let mut derivatives = vec![0.0; count * width];
+    model.event_derivatives(t, &at.q, &at.v, &at.lambda, &mut derivatives);
+    let row = &derivatives[surface * width..(surface + 1) * width];
+    let (g_q, g_v, g_lambda) = (&row[..n], &row[n..2 * n], &row[2 * n..2 * n + m]);
+    let (g_t, g_theta) = (row[2 * n + m], &row[2 * n + m + 1..]);
+    if g_lambda.iter().any(|&d| d != 0.0) {
+        return refuse(format!(
+            "the switching surface `{name}` reads multipliers: its crossing's time depends on the \
+             multipliers' sensitivities, which the jump does not carry"
+        ));
+    }
+    // Each side's accelerations, from the points offset along the surface's normal in (t, q, v).
+    let norm = (g_t * g_t + g_q.iter().chain(g_v).map(|d| d * d).sum::<f64>()).sqrt();
+    let scale = at.q.iter().chain(at.v.iter()).fold(t.abs(), |s, x| s.max(x.abs())).max(1.0);
+    if norm == 0.0 || !norm.is_finite() {
+        return refuse(format!(
+            "the switching surface `{name}` has no gradient at t = {t} ({norm:e}): the crossing's time \
+             does not follow from the state there"
+        ));
+    }
+    let step = OFFSET * scale / norm;
+    let mut values = vec![0.0; count];
+    let mut side = |sign: f64| -> Result<DVector<f64>, SimError> {
+        let mut rates = [DVector::<f64>::zeros(n), DVector::<f64>::zeros(n)];
+        for (k, rate) in rates.iter_mut().enumerate() {
+            let d = sign * step * (k + 1) as f64;
+            let ts = t + d * g_t;
+            let mut q = at.q.clone();
+            let mut v = at.v.clone();
+            q.iter_mut().zip(g_q).for_each(|(x, &g)| *x += d * g);
+            v.iter_mut().zip(g_v).for_each(|(x, &g)| *x += d * g);
+            model.events(ts, &q, &v, &at.lambda, &mut values);
+            if values[surface] * sign <= 0.0 {
+                return refuse(format!(
+                    "the switching surface `{name}` at t = {t}: a point a millionth of the state off it \
+                     is still on the other side ({:e}), so its branches cannot be told apart there",
+                    values[surface]
+                ));
+            }
+            *rate = accelerations(model, ts, &q, &v)?;
+        }
+        Ok(&rates[0] * 2.0 - &rates[1])
+    };
+    let (positive, negative) = (side(1.0)?, side(-1.0)?);
+    let speed = |a: &DVector<f64>| {
+        g_t + g_q.iter().zip(at.v.iter()).map(|(g, v)| g * v).sum::<f64>()
+            + g_v.iter().zip(a.iter()).map(|(g, a)| g * a).sum::<f64>()
+    };
+    let (rising, falling) = (speed(&negative), speed(&positive));
+    let (before, after, speed) = if rising > 0.0 && falling > 0.0 {
+        (negative, positive, rising)
+    } else if rising < 0.0 && falling < 0.0 {
+        (positive, negative, falling)
+    } else {
+        return refuse(format!(
+            "the motion does not cross the switching surface `{name}` at t = {t}: its rate is {rising:e} \
+             on the negative side and {falling:e} on the positive one, so it slides along it or leaves it \
+             either way, and no crossing time follows from the state"
+        ));
+    };
+    let mut delay = DVector::<f64>::zeros(2 * n);
+    delay.rows_mut(n, n).copy_from(&(before - after));
+    let mut time = DVector::<f64>::zeros(2 * n);
+    time.rows_mut(0, n).iter_mut().zip(g_q).for_each(|(x, &g)| *x = -g / speed);
+    time.rows_mut(n, n).iter_mut().zip(g_v).for_each(|(x, &g)| *x = -g / speed);
+    let time_parameters = DVector::from_iterator(params, g_theta.iter().map(|&g| -g / speed));
+    let matrix = DMatrix::<f64>::identity(2 * n, 2 * n) + &delay * time.transpose();
+    let parameters = &delay * time_parameters.transpose();
+    Ok(SurfaceJump { matrix, parameters })
+}
+
+/// A sensitivity refused across a switching surface, for `reason`.
+fn refuse<T>(reason: String) -> Result<T, SimError> {
+    Err(SimError::InvalidOption { what: "sensitivities", reason })
+}
