@@ -672,59 +672,94 @@ fn watching_contacts_does_not_allocate() {
     assert!((located[0] - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
 }
 
-/// A solve with forward sensitivities through impacts allocates per impact (the saltation
-/// matrix's small dense systems) and per sample, never per step: at two tolerances, which
-/// take different numbers of steps through the same impacts to the same samples, it allocates
-/// as often.
+/// A solve with forward sensitivities through impacts or switching surfaces allocates per
+/// crossing (the saltation matrix's small dense systems) and per sample, never per step: at
+/// two tolerances, which take different numbers of steps through the same crossings to the
+/// same samples, it allocates as often.
 #[test]
-fn sensitivity_steps_through_impacts_do_not_allocate() {
+fn sensitivity_steps_through_impacts_and_switches_do_not_allocate() {
     // Pulled by a sine, so that its flight is not a parabola, which Radau would solve exactly
     // at any tolerance.
     let ball = LiftedBall { m: 1.0, g: 9.81, e: 0.8, f0: 3.0, om: 5.0 };
     let mut start = State::<LiftedBall>::zeros();
     start.set_q(LiftedBall::Y, 1.0);
     let wrt = Sensitivities::all_parameters(&ball).initial_position(LiftedBall::Y);
+    let crossings = allocations_through_crossings(&ball, &start, &wrt);
+    assert!(crossings >= 2, "{crossings} impacts");
+    // Coulomb friction and a brake past a point: switching surfaces on a velocity and a position.
+    let spring = CoulombSpring { m: 1.0, k: 4.0, mu: 0.05, a: 0.1, f: 0.2 };
+    let mut start = State::<CoulombSpring>::zeros();
+    (start.v[0], start.p[0]) = (1.0, 1.0);
+    let wrt = Sensitivities::all_parameters(&spring).initial_velocity(CoulombSpring::X);
+    let crossings = allocations_through_crossings(&spring, &start, &wrt);
+    assert!(crossings >= 3, "{crossings} crossings");
+}
+
+/// Runs `model` from `start` to `t = 2` with the sensitivities `wrt` at a loose and a tight
+/// tolerance and asserts that both allocate as often; the number of crossings (impacts and
+/// events).
+fn allocations_through_crossings<M: Parameters + dirac::Hybrid>(
+    model: &M,
+    start: &State<M>,
+    wrt: &Sensitivities<M>,
+) -> usize
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
     let run = |tolerance: f64| {
         let before = allocations();
-        let solution = Radau::new(&ball, RadauOptions::tolerances(tolerance, tolerance))
+        let solution = Radau::new(model, RadauOptions::tolerances(tolerance, tolerance))
             .expect("valid options")
-            .with_sensitivities(&wrt)
+            .with_sensitivities(wrt)
             .expect("valid")
-            .solve_with_sensitivities(0.0, &start, 2.0, &Sampling::Times(vec![0.5, 1.0, 1.5, 2.0]))
+            .solve_with_sensitivities(0.0, start, 2.0, &Sampling::Times(vec![0.5, 1.0, 1.5, 2.0]))
             .expect("integrates");
         let allocated = allocations() - before;
-        (allocated, solution.stats.steps, solution.impacts().len())
+        (allocated, solution.stats.steps, solution.impacts().len() + solution.events().len())
     };
     // A first run makes what the process keeps from then on.
     run(1e-11);
-    let (loose, few, impacts) = run(1e-6);
+    let (loose, few, crossings) = run(1e-6);
     let (tight, many, same) = run(1e-11);
-    assert_eq!(impacts, same);
-    assert!(impacts >= 2, "{impacts} impacts");
+    assert_eq!(crossings, same);
     assert!(many > few + 20, "{few} and {many} steps");
     assert_eq!(loose, tight, "{few} steps allocate {loose} times, {many} steps {tight} times");
+    crossings
 }
 
-/// An adjoint sweep back through impacts allocates per impact (the transposed jump's small
-/// dense products), never per backward step: sweeps over runs at two tolerances, with
-/// different numbers of steps through the same impacts, allocate as often.
+/// An adjoint sweep back through impacts or switching surfaces allocates per crossing (the
+/// transposed jump's small dense products), never per backward step: sweeps over runs at two
+/// tolerances, with different numbers of steps through the same crossings, allocate as often.
 #[test]
-fn backward_steps_through_impacts_do_not_allocate() {
+fn backward_steps_through_impacts_and_switches_do_not_allocate() {
     let ball = LiftedBall { m: 1.0, g: 9.81, e: 0.8, f0: 3.0, om: 5.0 };
     let mut start = State::<LiftedBall>::zeros();
     start.set_q(LiftedBall::Y, 1.0);
-    let terminal = |_: f64, y: &State<LiftedBall>, out: &mut State<LiftedBall>| {
+    sweeps_through_crossings(&ball, &start);
+    let spring = CoulombSpring { m: 1.0, k: 4.0, mu: 0.05, a: 0.1, f: 0.2 };
+    let mut start = State::<CoulombSpring>::zeros();
+    (start.v[0], start.p[0]) = (1.0, 1.0);
+    sweeps_through_crossings(&spring, &start);
+}
+
+/// Sweeps back over runs of `model` from `start` to `t = 2` at a loose and a tight tolerance,
+/// and asserts that both allocate as often.
+fn sweeps_through_crossings<M: Parameters + dirac::Hybrid>(model: &M, start: &State<M>)
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
         out.clone_from(y);
         0.5 * (y.q.norm_squared() + y.v.norm_squared())
     };
     let objective = dirac::adjoint::Objective::terminal(&terminal);
     let sweep = |tolerance: f64| {
-        let recording = Radau::new(&ball, RadauOptions::tolerances(tolerance, tolerance))
+        let recording = Radau::new(model, RadauOptions::tolerances(tolerance, tolerance))
             .expect("valid options")
-            .record(0.0, &start, 2.0)
+            .record(0.0, start, 2.0)
             .expect("records");
         let before = allocations();
-        let gradient = recording.gradient(&ball, &objective).expect("a gradient");
+        let gradient = recording.gradient(model, &objective).expect("a gradient");
         assert!(gradient.parameters.iter().all(|g| g.is_finite()));
         (allocations() - before, recording.steps())
     };
