@@ -806,6 +806,32 @@ fn sensitivities_are_carried_across_a_switching_surface() {
     assert!(before.abs() < 1e-12, "∂x/∂a before the crossing: {before}");
 }
 
+/// A switching surface in a constraint (a prescribed speed that steps) makes the state jump at
+/// the crossing, onto the other side's constraints: that reset's sensitivity is not carried,
+/// and the solve says so, naming the surface and the constraint, rather than returning
+/// sensitivities that miss the jump. The same model without sensitivities steps its speed.
+#[test]
+fn sensitivities_across_a_switching_constraint_are_refused() {
+    let drive = SteppedDrive { m: 1.0, k: 4.0, u: 0.5, t1: 0.3 };
+    let wrt = Sensitivities::all_parameters(&drive);
+    let start = State::<SteppedDrive>::zeros();
+    let error = Radau::new(&drive, tight())
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps)
+        .expect_err("refused");
+    let text = error.to_string();
+    assert!(matches!(error, SimError::InvalidOption { what: "sensitivities", .. }), "{text}");
+    assert!(text.contains("`switch0`") && text.contains("`drive`") && text.contains("jumps"), "{text}");
+    let solution = Radau::new(&drive, tight())
+        .expect("valid")
+        .solve(0.0, &start, 1.0, &Sampling::Steps)
+        .expect("solves");
+    let w = solution.last().expect("a sample").v(SteppedDrive::Y);
+    assert!((w - 0.5).abs() < 1e-9, "the driven end's speed {w}");
+}
+
 /// Sensitivities of a model with a law (friction that sticks, diodes) are refused by name:
 /// its constraints change at the law's events, and that jump is not carried.
 #[test]

@@ -924,6 +924,19 @@ pub struct DampedPastW {
     pub c: f64,
 }
 
+/// A mass on a spring whose other end is driven at a speed that steps from zero to `u` at
+/// `t = t1`: a switching surface in a constraint, across which the velocities jump.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v, y => w))]
+#[dirac(lagrangian = 0.5 * m * v * v + 0.5 * w * w - 0.5 * k * (x - y) * (x - y))]
+#[dirac(constraint(drive) = w - if t > t1 { u } else { 0.0 })]
+pub struct SteppedDrive {
+    pub m: f64,
+    pub k: f64,
+    pub u: f64,
+    pub t1: f64,
+}
+
 /// A mass on a belt moving at `vb`, held by a spring to the wall, with Coulomb friction and
 /// stiction as the law `grip`.
 #[derive(LagrangeDirac, Clone, Debug)]

@@ -19,6 +19,7 @@
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use crate::error::SimError;
+use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, Parameters};
 use crate::shape::dims::Storage;
@@ -86,9 +87,12 @@ where
     }
     let step = OFFSET * scale / norm;
     let mut values = vec![0.0; count];
-    let mut side = |sign: f64| -> Result<DVector<f64>, SimError> {
-        let mut rates = [DVector::<f64>::zeros(n), DVector::<f64>::zeros(n)];
-        for (k, rate) in rates.iter_mut().enumerate() {
+    let (mut blocks, mut holonomic) = (ResidualBlocks::<M>::with_sizes(&sizes), sizes.zeros_h::<M>());
+    // Each side's accelerations and constraints (`A v + b`, then `φ`), at the surface.
+    let mut side = |sign: f64| -> Result<(DVector<f64>, DVector<f64>), SimError> {
+        let zeros = || (DVector::<f64>::zeros(n), DVector::<f64>::zeros(m + sizes.nh));
+        let mut points = [zeros(), zeros()];
+        for (k, (rate, constraints)) in points.iter_mut().enumerate() {
             let d = sign * step * (k + 1) as f64;
             let ts = t + d * g_t;
             let mut q = at.q.clone();
@@ -104,10 +108,32 @@ where
                 ));
             }
             *rate = accelerations(model, ts, &q, &v)?;
+            model.residual_blocks(ts, &q, &v, &at.lambda, &mut blocks);
+            model.holonomic(ts, &q, &mut holonomic);
+            constraints.rows_mut(0, m).copy_from_slice(blocks.constraint_velocity.as_slice());
+            constraints.rows_mut(m, sizes.nh).copy_from_slice(holonomic.as_slice());
         }
-        Ok(&rates[0] * 2.0 - &rates[1])
+        let [(near, near_constraints), (far, far_constraints)] = points;
+        Ok((near * 2.0 - far, near_constraints * 2.0 - far_constraints))
     };
-    let (positive, negative) = (side(1.0)?, side(-1.0)?);
+    let ((positive, on_positive), (negative, on_negative)) = (side(1.0)?, side(-1.0)?);
+    // A constraint that switches there (a prescribed motion that steps) makes the state jump at
+    // the crossing, onto the other side's constraints: a reset this jump does not carry.
+    let jump = &on_positive - &on_negative;
+    let size = on_positive.amax().max(on_negative.amax()).max(at.v.amax()).max(1.0);
+    if let Some(row) = jump.iter().position(|d| d.abs() > 1e-7 * size) {
+        let names = model.constraint_names();
+        let what = if row < m {
+            format!("the constraint `{}` (its velocity form)", names.get(row).map_or("?", |s| s.as_str()))
+        } else {
+            format!("the constraint `{}`", names.get(row - m).map_or("?", |s| s.as_str()))
+        };
+        return refuse(format!(
+            "the switching surface `{name}` switches {what} at t = {t} (by {:e}): the state jumps there onto \
+             the other side's constraints, and the sensitivity of that reset is not carried",
+            jump[row]
+        ));
+    }
     let speed = |a: &DVector<f64>| {
         g_t + g_q.iter().zip(at.v.iter()).map(|(g, v)| g * v).sum::<f64>()
             + g_v.iter().zip(a.iter()).map(|(g, a)| g * a).sum::<f64>()
