@@ -110,8 +110,8 @@ pub mod __private {
     pub use crate::model::Named;
     pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
     pub use crate::model::assemble::{
-        Offsets, gather_blocks, gather_c, gather_h, gather_q, place_block, scatter_c, scatter_cq, scatter_h,
-        scatter_q, scatter_qq,
+        EventRows, Offsets, gather_blocks, gather_c, gather_h, gather_q, place_block,
+        place_event_derivatives, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};

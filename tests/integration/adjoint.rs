@@ -528,6 +528,15 @@ fn adjoint_gradients_across_switching_surfaces_equal_forward_sensitivities() {
     eprintln!("pendulum with a damper past w: {crossings} crossings, worst relative difference {worst:e}");
     assert!(crossings >= 2, "{crossings}");
 
+    let right = CoulombSpring { m: 2.0, k: 3.0, mu: 0.1, a: -0.2, f: 0.4 };
+    let pair = CoulombPair { left: spring.clone(), right, c: 0.3 };
+    let mut start = State::<CoulombPair>::zeros();
+    let v = VecQ::<CoulombPair>::new(0.7, 1.0);
+    start = consistent_state(&pair, 0.0, &start.q, &v, Consistency::default()).expect("a start");
+    let (worst, crossings) = check_through_crossings(&pair, &start, 2.5, 34);
+    eprintln!("two Coulomb springs linked: {crossings} crossings, worst relative difference {worst:e}");
+    assert!(crossings >= 3, "{crossings}");
+
     let model = NonSmooth { m: 1.2, k: 2.0, gap: 0.3, c: 0.4, fmax: 0.5, mu: 0.05 };
     let q = VecQ::<NonSmooth>::new(0.9, -0.4);
     let v = VecQ::<NonSmooth>::new(0.2, 0.7);

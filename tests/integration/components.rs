@@ -386,7 +386,8 @@ fn parameters_of_parts_in_arrays_are_sensitivities_by_their_paths() {
 /// runs (relative step 1e-6; Radau at 1e-12).
 #[test]
 fn a_parts_parameter_is_a_sensitivity_by_its_dotted_name() {
-    // A constant source (a step's switching surface would refuse sensitivities), on from t = 0.
+    // A constant source, on from t = 0: a voltage step switches the source's constraint, and
+    // sensitivities across that reset of the state are refused.
     let model = |c3: f64| CauerDriven {
         v: VoltageSource { u: 1.0 },
         filter: CauerFilter { c3: Capacitor { c: c3 }, ..CauerFilter::modelica() },

@@ -1,7 +1,11 @@
 //! For every model in the zoo: the generated flat Jacobian equals central differences of the
 //! generated residual (the reference), at seeded random states.
 
-use crate::util::{check_csc_against_dense, check_jacobian_by_differences};
+use dirac::Storage;
+use dirac::nalgebra::DefaultAllocator;
+use dirac::prelude::*;
+
+use crate::util::{Rng, check_csc_against_dense, check_jacobian_by_differences, random_y};
 use crate::zoo::*;
 
 #[test]
@@ -83,4 +87,82 @@ fn sparse_jacobians_match_the_dense_ones() {
     check_csc_against_dense(&LcCircuit { ind: 1.0, cap: 1.0 }, 16, 5);
     check_csc_against_dense(&Pendulum8 { m: 0.5, l: 0.25, g: 9.81 }, 17, 3);
     check_csc_against_dense(&AllFunctions { m: 1.5, k: 0.7 }, 18, 5);
+}
+
+/// The event functions' gradients (`Hybrid::event_derivatives`: with respect to positions,
+/// velocities, multipliers, time and every parameter) against central differences of the
+/// generated event functions, at seeded random states: a model switching on a velocity and a
+/// position, one with a constraint, the zoo's model with every non-smooth function, and an
+/// interconnection of two models with switching surfaces (each part's rows placed at its
+/// coordinates and its parameters' offset).
+#[test]
+fn event_gradients_match_central_differences() {
+    let spring = CoulombSpring { m: 1.0, k: 4.0, mu: 0.05, a: 0.1, f: 0.2 };
+    check_event_gradients(&spring, 90);
+    check_event_gradients(&DampedPastW { m: 0.7, g: 9.81, l: 1.0, w: 0.3, c: 0.8 }, 91);
+    check_event_gradients(&NonSmooth { m: 1.2, k: 2.0, gap: 0.3, c: 0.4, fmax: 0.5, mu: 0.25 }, 92);
+    let right = CoulombSpring { m: 2.0, k: 3.0, mu: 0.1, a: -0.2, f: 0.4 };
+    check_event_gradients(&CoulombPair { left: spring, right, c: 0.3 }, 93);
+}
+
+fn check_event_gradients<M: dirac::Hybrid + Parameters + Clone>(model: &M, seed: u64)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let (n, m, params) = (sizes.nq, sizes.nc, model.parameter_count());
+    let count = model.event_declarations().len();
+    let width = 2 * n + m + 1 + params;
+    assert!(count > 0);
+    assert_eq!(model.event_derivatives_len(), count * width, "generated for every event");
+    let mut rng = Rng::new(seed);
+    let mut values = vec![0.0; count];
+    let (mut plus, mut minus) = (vec![0.0; count], vec![0.0; count]);
+    let mut gradient = vec![0.0; count * width];
+    for _ in 0..10 {
+        let state = State::<M>::from_y(sizes, &random_y(model, &mut rng));
+        let t = rng.uniform(0.0, 2.0);
+        model.event_derivatives(t, &state.q, &state.v, &state.lambda, &mut gradient);
+        model.events(t, &state.q, &state.v, &state.lambda, &mut values);
+        let h = 1e-6;
+        // Column `x` by central differences of the events along `nudge(x, ±h)`.
+        let mut column = |x: usize, nudge: &mut dyn FnMut(f64, &mut [f64])| {
+            nudge(h, &mut plus);
+            nudge(-h, &mut minus);
+            for e in 0..count {
+                let (fd, got) = ((plus[e] - minus[e]) / (2.0 * h), gradient[e * width + x]);
+                assert!(
+                    (fd - got).abs() <= 1e-6 * fd.abs().max(1.0),
+                    "event {e}, column {x}: {got} against {fd}"
+                );
+            }
+        };
+        for i in 0..n {
+            column(i, &mut |d, out| {
+                let mut q = state.q.clone();
+                q[i] += d;
+                model.events(t, &q, &state.v, &state.lambda, out);
+            });
+            column(n + i, &mut |d, out| {
+                let mut v = state.v.clone();
+                v[i] += d;
+                model.events(t, &state.q, &v, &state.lambda, out);
+            });
+        }
+        for r in 0..m {
+            column(2 * n + r, &mut |d, out| {
+                let mut lambda = state.lambda.clone();
+                lambda[r] += d;
+                model.events(t, &state.q, &state.v, &lambda, out);
+            });
+        }
+        column(2 * n + m, &mut |d, out| model.events(t + d, &state.q, &state.v, &state.lambda, out));
+        for k in 0..params {
+            column(2 * n + m + 1 + k, &mut |d, out| {
+                let mut changed = model.clone();
+                changed.set_parameter_value(k, model.parameter_value(k) + d);
+                changed.events(t, &state.q, &state.v, &state.lambda, out);
+            });
+        }
+    }
 }

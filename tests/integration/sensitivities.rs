@@ -806,6 +806,47 @@ fn sensitivities_are_carried_across_a_switching_surface() {
     assert!(before.abs() < 1e-12, "∂x/∂a before the crossing: {before}");
 }
 
+/// A mass pushed by the component library's force step: a switching surface in time, inside
+/// an interconnection.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(mass.s, push.s))]
+pub struct PushedMass {
+    pub mass: dirac::components::translational::Mass,
+    pub push: dirac::components::translational::StepForce,
+}
+
+/// Across a switching surface of a part (the force step's instant), against the closed form:
+/// at rest until `t_s`, then `x = h (t − t_s)² / (2 m)`, `v = h (t − t_s) / m`, so
+/// `∂x/∂t_s = −h (t − t_s) / m` and `∂v/∂t_s = −h / m`, all of it from the crossing, and
+/// `∂x/∂h = (t − t_s)² / (2 m)`, `∂x/∂m = −x / m`.
+#[test]
+fn sensitivities_cross_a_parts_switching_surface_in_an_interconnection() {
+    use dirac::components::translational::{Mass, StepForce};
+    let (m, h, ts, t) = (2.0, 3.0, 0.4, 1.5);
+    let model = PushedMass { mass: Mass { m }, push: StepForce { offset: 0.0, height: h, start: ts } };
+    let wrt = Sensitivities::all_parameters(&model);
+    let solution = Radau::new(&model, tight())
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &State::zeros(), t, &Sampling::Times(vec![t]))
+        .expect("integrates across the step");
+    assert_eq!(solution.events().len(), 1, "one crossing");
+    let tau = t - ts;
+    let x = h * tau * tau / (2.0 * m);
+    let expected = [
+        ("push.start", -h * tau / m, -h / m),
+        ("push.height", tau * tau / (2.0 * m), tau / m),
+        ("mass.m", -x / m, -h * tau / (m * m)),
+    ];
+    for (name, dx, dv) in expected {
+        let got_x = solution.sensitivity("mass.s", name).expect("a sensitivity")[0];
+        let got_v = solution.sensitivity("mass.v", name).expect("a sensitivity")[0];
+        assert!((got_x - dx).abs() < 1e-8 * dx.abs().max(1.0), "∂x/∂{name}: {got_x} against {dx}");
+        assert!((got_v - dv).abs() < 1e-8 * dv.abs().max(1.0), "∂v/∂{name}: {got_v} against {dv}");
+    }
+}
+
 /// A switching surface in a constraint (a prescribed speed that steps) makes the state jump at
 /// the crossing, onto the other side's constraints: that reset's sensitivity is not carried,
 /// and the solve says so, naming the surface and the constraint, rather than returning

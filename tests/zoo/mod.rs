@@ -924,6 +924,16 @@ pub struct DampedPastW {
     pub c: f64,
 }
 
+/// Two Coulomb springs whose speeds differ by `c`: their friction and brake surfaces, in an
+/// interconnection, each part's parameters at its offset among the composite's.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(constraint(link) = right.v - left.v - c)]
+pub struct CoulombPair {
+    pub left: CoulombSpring,
+    pub right: CoulombSpring,
+    pub c: f64,
+}
+
 /// A mass on a spring whose other end is driven at a speed that steps from zero to `u` at
 /// `t = t1`: a switching surface in a constraint, across which the velocities jump.
 #[derive(LagrangeDirac, Clone, Debug)]

@@ -304,8 +304,62 @@ pub fn contact_and_event_methods(composite: &Composite<'_>) -> TokenStream {
             }
         }}
     });
+    let emitted = composite.subsystems.iter().map(|s| {
+        let (field, ty) = (&s.ident, &s.ty);
+        quote! {
+            && (<#ty as #p::Named>::NAMES.event_count() == 0
+                || <#ty as #p::Hybrid>::event_derivatives_len(&self.#field) > 0)
+        }
+    });
+    let gradients = composite.subsystems.iter().enumerate().map(|(i, s)| {
+        let (field, ty) = (&s.ident, &s.ty);
+        let slot = format_ident!("__SLOT{}", i);
+        let first_event = offset(composite, i, &format_ident!("event_count"));
+        let first_parameter = parameter_offset(composite, i);
+        quote! {{
+            if <#ty as #p::Named>::NAMES.event_count() > 0 {
+                let mut block = ::std::vec![0.0; <#ty as #p::Hybrid>::event_derivatives_len(&self.#field)];
+                <#ty as #p::Hybrid>::event_derivatives(
+                    &self.#field,
+                    t,
+                    &#p::gather_q::<#ty, Self>(q, &#slot),
+                    &#p::gather_q::<#ty, Self>(v, &#slot),
+                    &#p::gather_c::<#ty, Self>(lambda, &#slot),
+                    &mut block,
+                );
+                let at = #p::EventRows { first_event: #first_event, first_parameter: #first_parameter, ..rows };
+                #p::place_event_derivatives::<#ty>(&block, &#slot, at, out);
+            }
+        }}
+    });
     quote! {
         #(#values)*
+        fn event_derivatives_len(&self) -> ::core::primitive::usize {
+            let names = <Self as #p::Named>::NAMES;
+            let width = 2 * <Self as #p::Fixed>::NQ + <Self as #p::Fixed>::NC + 1 + names.parameter_count();
+            if names.event_count() > 0 #(#emitted)* { names.event_count() * width } else { 0 }
+        }
+        fn event_derivatives(
+            &self,
+            t: ::core::primitive::f64,
+            q: &#p::VecQ<Self>,
+            v: &#p::VecQ<Self>,
+            lambda: &#p::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let len = <Self as #p::Hybrid>::event_derivatives_len(self);
+            ::core::assert!(len > 0, "event_derivatives: a subsystem's event gradients are not generated");
+            ::core::assert_eq!(out.len(), len, "event_derivatives: wrong slice length");
+            out.fill(0.0);
+            let rows = #p::EventRows {
+                nq: <Self as #p::Fixed>::NQ,
+                nc: <Self as #p::Fixed>::NC,
+                parameters: <Self as #p::Named>::NAMES.parameter_count(),
+                first_parameter: 0,
+                first_event: 0,
+            };
+            #(#gradients)*
+        }
         fn unilateral_dq(&self, t: ::core::primitive::f64, q: &#p::VecQ<Self>, out: &mut [::core::primitive::f64]) {
             let total_rows = <Self as #p::Named>::NAMES.unilateral_count();
             ::core::assert_eq!(out.len(), total_rows * <Self as #p::Fixed>::NQ, "unilateral_dq: wrong slice length");

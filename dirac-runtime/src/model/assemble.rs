@@ -9,6 +9,7 @@ use nalgebra::DefaultAllocator;
 
 use nalgebra::OMatrix;
 
+use crate::model::Named;
 use crate::model::blocks::ResidualBlocks;
 use crate::shape::dims::{Dimensions, Fixed, Storage, VecC, VecH, VecQ};
 
@@ -134,6 +135,52 @@ where
         for r in 0..S::NC {
             out[(slot.row::<S>(r), slot.q + j)] = x[(r, j)];
         }
+    }
+}
+
+/// Where a subsystem's event functions' gradients go among a composite's: the composite's
+/// sizes, where the subsystem's parameters start among the composite's, and where its events
+/// start.
+#[derive(Clone, Copy, Debug)]
+pub struct EventRows {
+    /// The composite's coordinates, constraint rows and parameters.
+    pub nq: usize,
+    pub nc: usize,
+    pub parameters: usize,
+    /// The subsystem's first parameter and first event among the composite's.
+    pub first_parameter: usize,
+    pub first_event: usize,
+}
+
+/// Writes a subsystem's event functions' gradients (`Hybrid::event_derivatives` over its own
+/// arguments, `block`) into a composite's (`out`, zeroed before): each row's coordinates',
+/// velocities' and multipliers' entries at the subsystem's `slot`, its time entry, and its
+/// parameters' entries from `at.first_parameter`.
+pub fn place_event_derivatives<S: Fixed + Named>(
+    block: &[f64],
+    slot: &Offsets,
+    at: EventRows,
+    out: &mut [f64],
+) {
+    let (n, m) = (S::NQ, S::NC);
+    let count = S::NAMES.event_count();
+    if count == 0 {
+        return;
+    }
+    let width = block.len() / count;
+    let total = 2 * at.nq + at.nc + 1 + at.parameters;
+    for (e, row) in block.chunks_exact(width).enumerate() {
+        let to = &mut out[(at.first_event + e) * total..(at.first_event + e + 1) * total];
+        for c in 0..n {
+            to[slot.q + c] = row[c];
+            to[at.nq + slot.q + c] = row[n + c];
+        }
+        for r in 0..m {
+            to[2 * at.nq + slot.row::<S>(r)] = row[2 * n + r];
+        }
+        to[2 * at.nq + at.nc] = row[2 * n + m];
+        let first = 2 * at.nq + at.nc + 1 + at.first_parameter;
+        to[first..first + width - (2 * n + m + 1)].copy_from_slice(&row[2 * n + m + 1..]);
     }
 }
 
