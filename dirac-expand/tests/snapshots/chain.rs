@@ -2516,6 +2516,106 @@ const _: () = {
                 }
             }
         }
+        fn event_derivatives_len(&self) -> ::core::primitive::usize {
+            let names = <Self as ::dirac::__private::Named>::NAMES;
+            let width = 2 * <Self as ::dirac::__private::Fixed>::NQ
+                + <Self as ::dirac::__private::Fixed>::NC + 1 + names.parameter_count();
+            if names.event_count() > 0
+                && (<Primitive1 as ::dirac::__private::Named>::NAMES.event_count() == 0
+                    || <Primitive1 as ::dirac::__private::Hybrid>::event_derivatives_len(
+                        &self.left,
+                    ) > 0)
+                && (<Primitive2 as ::dirac::__private::Named>::NAMES.event_count() == 0
+                    || <Primitive2 as ::dirac::__private::Hybrid>::event_derivatives_len(
+                        &self.right,
+                    ) > 0)
+            {
+                names.event_count() * width
+            } else {
+                0
+            }
+        }
+        fn event_derivatives(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let len = <Self as ::dirac::__private::Hybrid>::event_derivatives_len(self);
+            ::core::assert!(
+                len > 0,
+                "event_derivatives: a subsystem's event gradients are not generated"
+            );
+            ::core::assert_eq!(out.len(), len, "event_derivatives: wrong slice length");
+            out.fill(0.0);
+            let rows = ::dirac::__private::EventRows {
+                nq: <Self as ::dirac::__private::Fixed>::NQ,
+                nc: <Self as ::dirac::__private::Fixed>::NC,
+                parameters: <Self as ::dirac::__private::Named>::NAMES.parameter_count(),
+                first_parameter: 0,
+                first_event: 0,
+            };
+            {
+                if <Primitive1 as ::dirac::__private::Named>::NAMES.event_count() > 0 {
+                    let mut block = ::std::vec![
+                        0.0; < Primitive1 as ::dirac::__private::Hybrid >
+                        ::event_derivatives_len(& self.left)
+                    ];
+                    <Primitive1 as ::dirac::__private::Hybrid>::event_derivatives(
+                        &self.left,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive1, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Primitive1, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<
+                            Primitive1,
+                            Self,
+                        >(lambda, &__SLOT0),
+                        &mut block,
+                    );
+                    let at = ::dirac::__private::EventRows {
+                        first_event: 0,
+                        first_parameter: 0,
+                        ..rows
+                    };
+                    ::dirac::__private::place_event_derivatives::<
+                        Primitive1,
+                    >(&block, &__SLOT0, at, out);
+                }
+            }
+            {
+                if <Primitive2 as ::dirac::__private::Named>::NAMES.event_count() > 0 {
+                    let mut block = ::std::vec![
+                        0.0; < Primitive2 as ::dirac::__private::Hybrid >
+                        ::event_derivatives_len(& self.right)
+                    ];
+                    <Primitive2 as ::dirac::__private::Hybrid>::event_derivatives(
+                        &self.right,
+                        t,
+                        &::dirac::__private::gather_q::<Primitive2, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Primitive2, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<
+                            Primitive2,
+                            Self,
+                        >(lambda, &__SLOT1),
+                        &mut block,
+                    );
+                    let at = ::dirac::__private::EventRows {
+                        first_event: 0
+                            + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                .event_count(),
+                        first_parameter: 0
+                            + <Primitive1 as ::dirac::__private::Named>::NAMES
+                                .parameter_count(),
+                        ..rows
+                    };
+                    ::dirac::__private::place_event_derivatives::<
+                        Primitive2,
+                    >(&block, &__SLOT1, at, out);
+                }
+            }
+        }
         fn unilateral_dq(
             &self,
             t: ::core::primitive::f64,

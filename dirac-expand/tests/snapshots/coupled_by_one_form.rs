@@ -2795,6 +2795,99 @@ const _: () = {
                 }
             }
         }
+        fn event_derivatives_len(&self) -> ::core::primitive::usize {
+            let names = <Self as ::dirac::__private::Named>::NAMES;
+            let width = 2 * <Self as ::dirac::__private::Fixed>::NQ
+                + <Self as ::dirac::__private::Fixed>::NC + 1 + names.parameter_count();
+            if names.event_count() > 0
+                && (<Wheel as ::dirac::__private::Named>::NAMES.event_count() == 0
+                    || <Wheel as ::dirac::__private::Hybrid>::event_derivatives_len(
+                        &self.wheel,
+                    ) > 0)
+                && (<Cart as ::dirac::__private::Named>::NAMES.event_count() == 0
+                    || <Cart as ::dirac::__private::Hybrid>::event_derivatives_len(
+                        &self.cart,
+                    ) > 0)
+            {
+                names.event_count() * width
+            } else {
+                0
+            }
+        }
+        fn event_derivatives(
+            &self,
+            t: ::core::primitive::f64,
+            q: &::dirac::__private::VecQ<Self>,
+            v: &::dirac::__private::VecQ<Self>,
+            lambda: &::dirac::__private::VecC<Self>,
+            out: &mut [::core::primitive::f64],
+        ) {
+            let len = <Self as ::dirac::__private::Hybrid>::event_derivatives_len(self);
+            ::core::assert!(
+                len > 0,
+                "event_derivatives: a subsystem's event gradients are not generated"
+            );
+            ::core::assert_eq!(out.len(), len, "event_derivatives: wrong slice length");
+            out.fill(0.0);
+            let rows = ::dirac::__private::EventRows {
+                nq: <Self as ::dirac::__private::Fixed>::NQ,
+                nc: <Self as ::dirac::__private::Fixed>::NC,
+                parameters: <Self as ::dirac::__private::Named>::NAMES.parameter_count(),
+                first_parameter: 0,
+                first_event: 0,
+            };
+            {
+                if <Wheel as ::dirac::__private::Named>::NAMES.event_count() > 0 {
+                    let mut block = ::std::vec![
+                        0.0; < Wheel as ::dirac::__private::Hybrid >
+                        ::event_derivatives_len(& self.wheel)
+                    ];
+                    <Wheel as ::dirac::__private::Hybrid>::event_derivatives(
+                        &self.wheel,
+                        t,
+                        &::dirac::__private::gather_q::<Wheel, Self>(q, &__SLOT0),
+                        &::dirac::__private::gather_q::<Wheel, Self>(v, &__SLOT0),
+                        &::dirac::__private::gather_c::<Wheel, Self>(lambda, &__SLOT0),
+                        &mut block,
+                    );
+                    let at = ::dirac::__private::EventRows {
+                        first_event: 0,
+                        first_parameter: 0,
+                        ..rows
+                    };
+                    ::dirac::__private::place_event_derivatives::<
+                        Wheel,
+                    >(&block, &__SLOT0, at, out);
+                }
+            }
+            {
+                if <Cart as ::dirac::__private::Named>::NAMES.event_count() > 0 {
+                    let mut block = ::std::vec![
+                        0.0; < Cart as ::dirac::__private::Hybrid >
+                        ::event_derivatives_len(& self.cart)
+                    ];
+                    <Cart as ::dirac::__private::Hybrid>::event_derivatives(
+                        &self.cart,
+                        t,
+                        &::dirac::__private::gather_q::<Cart, Self>(q, &__SLOT1),
+                        &::dirac::__private::gather_q::<Cart, Self>(v, &__SLOT1),
+                        &::dirac::__private::gather_c::<Cart, Self>(lambda, &__SLOT1),
+                        &mut block,
+                    );
+                    let at = ::dirac::__private::EventRows {
+                        first_event: 0
+                            + <Wheel as ::dirac::__private::Named>::NAMES.event_count(),
+                        first_parameter: 0
+                            + <Wheel as ::dirac::__private::Named>::NAMES
+                                .parameter_count(),
+                        ..rows
+                    };
+                    ::dirac::__private::place_event_derivatives::<
+                        Cart,
+                    >(&block, &__SLOT1, at, out);
+                }
+            }
+        }
         fn unilateral_dq(
             &self,
             t: ::core::primitive::f64,
