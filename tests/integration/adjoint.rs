@@ -443,24 +443,18 @@ fn check_through_impacts<M: Parameters + dirac::Hybrid>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let wrt = everything(model);
-    let mut radau = Radau::new(model, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
-    let solution =
-        radau.solve_with_sensitivities(0.0, start, t_end, &Sampling::Times(vec![t_end])).expect("integrates");
-    let recording = Radau::new(model, tight()).expect("valid").record(0.0, start, t_end).expect("records");
-    assert_eq!(recording.steps(), solution.stats.steps, "the same steps");
-    let (_, worst) = terminal_against_forward(model, &radau, &wrt, &recording, &random_weights(model, seed));
+    let (worst, solution) = adjoint_against_forward(model, start, t_end, seed);
     (worst, solution.impacts().len())
 }
 
-/// As [`check_through_impacts`], across the model's switching surfaces: the worst relative
-/// difference and the number of crossings.
-fn check_through_crossings<M: Parameters + dirac::Hybrid>(
+/// The worst relative difference between the adjoint gradient of a random `cᵀ y(T)` and the
+/// forward sensitivities' of a second run with the same steps, and that run's solution.
+fn adjoint_against_forward<M: Parameters + dirac::Hybrid>(
     model: &M,
     start: &State<M>,
     t_end: f64,
     seed: u64,
-) -> (f64, usize)
+) -> (f64, Solution<M, dirac::RadauStats>)
 where
     DefaultAllocator: Storage<M>,
 {
@@ -471,6 +465,21 @@ where
     let recording = Radau::new(model, tight()).expect("valid").record(0.0, start, t_end).expect("records");
     assert_eq!(recording.steps(), solution.stats.steps, "the same steps");
     let (_, worst) = terminal_against_forward(model, &radau, &wrt, &recording, &random_weights(model, seed));
+    (worst, solution)
+}
+
+/// As [`check_through_impacts`], across the model's switching surfaces: the worst relative
+/// difference and the number of crossings (the solution's events).
+fn check_through_crossings<M: Parameters + dirac::Hybrid>(
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    seed: u64,
+) -> (f64, usize)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (worst, solution) = adjoint_against_forward(model, start, t_end, seed);
     (worst, solution.events().len())
 }
 
