@@ -24,9 +24,9 @@ where
         assert!(out.is_empty(), "events: the model declares none, so the slice must be empty");
     }
 
-    /// How many values [`Hybrid::event_derivatives`] writes: zero where the derive does not
-    /// emit it (an interconnection does not yet, nor a model whose events are too many for
-    /// dense rows; a primitive model with events does).
+    /// How many values [`Hybrid::event_derivatives`] writes: zero where it is not generated (a
+    /// network, a model whose events are too many for dense rows, an interconnection with such
+    /// a part); a derived model with events has it.
     fn event_derivatives_len(&self) -> usize {
         0
     }

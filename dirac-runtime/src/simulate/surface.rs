@@ -40,10 +40,12 @@ pub(crate) struct SurfaceJump {
 /// [`Hybrid::events`], named `name`), a switching surface the motion crosses at `t` in the
 /// state `at`.
 ///
-/// Refused with [`SimError::InvalidOption`] for a model whose derive does not emit its event
-/// functions' gradients (an interconnection, a network), a surface that reads multipliers, and
-/// a motion that does not cross the surface there (both sides push into it, or both away: it
-/// slides along it, or leaves it either way).
+/// Refused with [`SimError::InvalidOption`] for a model that does not emit its event
+/// functions' gradients (a network, or a model with too many events for dense rows), a surface
+/// that reads multipliers, a surface that switches a constraint (the state jumps there onto
+/// the other side's constraints, a reset this jump does not carry), and a motion that does not
+/// cross the surface there (both sides push into it, or both away: it slides along it, or
+/// leaves it either way).
 pub(crate) fn surface_jump<M: Hybrid + Parameters>(
     model: &M,
     t: f64,
@@ -60,9 +62,9 @@ where
     let width = 2 * n + m + 1 + params;
     if model.event_derivatives_len() != count * width {
         return refuse(format!(
-            "the switching surface `{name}`: its gradient is not generated for this model (an \
-             interconnection or a network, or a model with too many events for dense rows), so a \
-             sensitivity cannot be carried across it"
+            "the switching surface `{name}`: its gradient is not generated for this model (a network, \
+             or a model with too many events for dense rows), so a sensitivity cannot be carried \
+             across it"
         ));
     }
     let mut derivatives = vec![0.0; count * width];
@@ -78,7 +80,8 @@ where
     }
     // Each side's accelerations, from the points offset along the surface's normal in (t, q, v).
     let norm = (g_t * g_t + g_q.iter().chain(g_v).map(|d| d * d).sum::<f64>()).sqrt();
-    let scale = at.q.iter().chain(at.v.iter()).fold(t.abs(), |s, x| s.max(x.abs())).max(1.0);
+    // The state's size, not the time's: the offset moves the positions and velocities too.
+    let scale = at.q.iter().chain(at.v.iter()).fold(1.0f64, |s, x| s.max(x.abs()));
     if norm == 0.0 || !norm.is_finite() {
         return refuse(format!(
             "the switching surface `{name}` has no gradient at t = {t} ({norm:e}): the crossing's time \
