@@ -672,10 +672,10 @@ fn watching_contacts_does_not_allocate() {
     assert!((located[0] - (2.0 / 9.81f64).sqrt()).abs() < 1e-10);
 }
 
-/// A solve with forward sensitivities through impacts or switching surfaces allocates per
-/// crossing (the saltation matrix's small dense systems) and per sample, never per step: at
-/// two tolerances, which take different numbers of steps through the same crossings to the
-/// same samples, it allocates as often.
+/// A solve with forward sensitivities through impacts, switching surfaces or laws' switches
+/// allocates per crossing (the saltation matrix's small dense systems) and per sample, never
+/// per step: at two tolerances, which take different numbers of steps through the same
+/// crossings to the same samples, it allocates as often.
 #[test]
 fn sensitivity_steps_through_impacts_and_switches_do_not_allocate() {
     // Pulled by a sine, so that its flight is not a parabola, which Radau would solve exactly
@@ -693,6 +693,12 @@ fn sensitivity_steps_through_impacts_and_switches_do_not_allocate() {
     let wrt = Sensitivities::all_parameters(&spring).initial_velocity(CoulombSpring::X);
     let crossings = allocations_through_crossings(&spring, &start, &wrt);
     assert!(crossings >= 3, "{crossings} crossings");
+    // A friction law that sticks (at t = 0.46) and slips again (at t = 1.21, where its force,
+    // a multiplier, reaches its bound).
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.2, n: 2.0, mu_s: 0.4, mu_k: 0.25 };
+    let wrt = Sensitivities::all_parameters(&belt).initial_position(FrictionBelt::X);
+    let switches = allocations_through_crossings(&belt, &State::<FrictionBelt>::zeros(), &wrt);
+    assert!(switches >= 2, "{switches} switches");
 }
 
 /// Runs `model` from `start` to `t = 2` with the sensitivities `wrt` at a loose and a tight
@@ -727,9 +733,10 @@ where
     crossings
 }
 
-/// An adjoint sweep back through impacts or switching surfaces allocates per crossing (the
-/// transposed jump's small dense products), never per backward step: sweeps over runs at two
-/// tolerances, with different numbers of steps through the same crossings, allocate as often.
+/// An adjoint sweep back through impacts, switching surfaces or laws' switches allocates per
+/// crossing (the transposed jump's small dense products), never per backward step: sweeps over
+/// runs at two tolerances, with different numbers of steps through the same crossings,
+/// allocate as often.
 #[test]
 fn backward_steps_through_impacts_and_switches_do_not_allocate() {
     let ball = LiftedBall { m: 1.0, g: 9.81, e: 0.8, f0: 3.0, om: 5.0 };
@@ -740,6 +747,8 @@ fn backward_steps_through_impacts_and_switches_do_not_allocate() {
     let mut start = State::<CoulombSpring>::zeros();
     (start.v[0], start.p[0]) = (1.0, 1.0);
     sweeps_through_crossings(&spring, &start);
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.2, n: 2.0, mu_s: 0.4, mu_k: 0.25 };
+    sweeps_through_crossings(&belt, &State::<FrictionBelt>::zeros());
 }
 
 /// Sweeps back over runs of `model` from `start` to `t = 2` at a loose and a tight tolerance,

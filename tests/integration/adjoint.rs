@@ -555,6 +555,44 @@ fn adjoint_gradients_across_switching_surfaces_equal_forward_sensitivities() {
     assert!(crossings >= 4, "{crossings}");
 }
 
+/// Across laws' switches: the adjoint gradient of `cᵀ y(T)` equals `cᵀ s(T)` of the forward
+/// sensitivities carried across the same switches (the jump of the rate from the old mode to
+/// the new, `I + (f⁻ − f⁺) ∂t*/∂x`, the sweep by its transpose), to `1e-10` of the largest. The
+/// friction belt, which sticks and slips twice (a release's time follows from the law's force,
+/// a multiplier); a half-wave rectifier's ideal diode, which conducts and blocks (its current,
+/// a multiplier); a capacitor charged through an ideal switch; the belt's block with its
+/// friction as a part of an interconnection.
+#[test]
+fn adjoint_gradients_across_laws_equal_forward_sensitivities() {
+    use crate::every_method::switching::{Block, BlockOnSpring, HalfWave, SwitchedCharge, WallSpring};
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    let (worst, switches) = check_through_crossings(&belt, &State::<FrictionBelt>::zeros(), 6.5, 41);
+    eprintln!("friction belt: {switches} switches, worst relative difference {worst:e}");
+    assert!(switches >= 4, "{switches}");
+
+    let rectifier = HalfWave { u: 1.0, w: 1.0, c: 2.0, r: 1.0 };
+    let (worst, switches) = check_through_crossings(&rectifier, &State::<HalfWave>::zeros(), 9.0, 42);
+    eprintln!("half-wave rectifier: {switches} switches, worst relative difference {worst:e}");
+    assert!(switches >= 3, "{switches}");
+
+    let charge = SwitchedCharge { u: 1.0, w: 1.0, c: 1.0, r: 1.0 };
+    let zero = VecQ::<SwitchedCharge>::zeros();
+    let start = consistent_state(&charge, 0.0, &zero, &zero, Consistency::default()).expect("a start");
+    let (worst, switches) = check_through_crossings(&charge, &start, 9.0, 43);
+    eprintln!("switched charge: {switches} switches, worst relative difference {worst:e}");
+    assert!(switches >= 3, "{switches}");
+
+    let (m, k, vb, n, mu_s, mu_k) = (1.0, 4.0, 0.5, 9.81, 0.4, 0.25);
+    let composite = BlockOnSpring { block: Block { m, vb, n, mu_s, mu_k }, spring: WallSpring { k } };
+    let zero = VecQ::<BlockOnSpring>::zeros();
+    let start = consistent_state(&composite, 0.0, &zero, &zero, Consistency::default()).expect("a start");
+    let (worst, switches) = check_through_crossings(&composite, &start, 6.5, 44);
+    eprintln!(
+        "block on a spring (interconnection): {switches} switches, worst relative difference {worst:e}"
+    );
+    assert!(switches >= 4, "{switches}");
+}
+
 /// The Coulomb spring's exact motion at `t`: harmonic between crossings, under the constant
 /// force `−μ sgn v − f [x > a]` of each phase, from `x = 0` at speed `v0`; each crossing of
 /// `x = a` or `v = 0` found by bisection on the closed form to round-off.
@@ -696,6 +734,15 @@ fn adjoints_out_of_reach_are_refused_with_the_reason() {
         .expect_err("switching surfaces are not crossed within a budget");
     assert!(
         matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("switching")),
+        "{error}"
+    );
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    let error = Radau::new(&belt, RadauOptions::default())
+        .expect("valid")
+        .record_within(0.0, &State::<FrictionBelt>::zeros(), 2.0, 100_000)
+        .expect_err("laws are not crossed within a budget");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "adjoint", reason } if reason.contains("laws")),
         "{error}"
     );
     let recording =

@@ -873,19 +873,139 @@ fn sensitivities_across_a_switching_constraint_are_refused() {
     assert!((w - 0.5).abs() < 1e-9, "the driven end's speed {w}");
 }
 
-/// Sensitivities of a model with a law (friction that sticks, diodes) are refused by name:
-/// its constraints change at the law's events, and that jump is not carried.
+/// The friction belt's exact motion (a mass on a spring, on a belt at speed `vb`, with
+/// stiction `μs N` and kinetic friction `μk N`) from rest at `x = 0`, at a time `t` in its first
+/// slip after it first sticks. Slipping from rest, `x = x_e (1 − cos ωt)` about
+/// `x_e = μk N/k`, `ω = √(k/m)`, until `v = vb` at `t₁ = asin(vb/(ω x_e))/ω`; stuck, riding the
+/// belt until the spring's pull reaches the bound, `k x = μs N`, at `t₂`; slipping again,
+/// `x = x_e + d cos ωτ + (vb/ω) sin ωτ`, `d = (μs − μk) N/k`, `τ = t − t₂`. Returns `x(t)` and
+/// `(t₁, t₂)`.
+fn friction_belt_exact(b: &FrictionBelt, t: f64) -> (f64, (f64, f64)) {
+    let omega = (b.k / b.m).sqrt();
+    let xe = b.mu_k * b.n / b.k;
+    let t1 = (b.vb / (omega * xe)).asin() / omega;
+    let x1 = xe * (1.0 - (omega * t1).cos());
+    let t2 = t1 + (b.mu_s * b.n / b.k - x1) / b.vb;
+    let d = (b.mu_s - b.mu_k) * b.n / b.k;
+    let tau = t - t2;
+    (xe + d * (omega * tau).cos() + b.vb / omega * (omega * tau).sin(), (t1, t2))
+}
+
+/// Sensitivities across a friction law's switches: the belt slips from rest, sticks where its
+/// speed reaches the belt's (an engage, where the rate jumps to the belt's) and slips again
+/// where the force that holds it reaches its bound (a release, whose time follows from the
+/// law's force, a multiplier). `∂x(T)/∂θ` for every parameter, `T` halfway through that slip,
+/// against central differences (step 1e-6) of the exact motion ([`friction_belt_exact`]).
 #[test]
-fn sensitivities_across_a_law_are_refused() {
-    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 1.0, mu_s: 0.4, mu_k: 0.3 };
+fn sensitivities_across_a_friction_laws_switches_match_its_closed_form() {
+    let belt = FrictionBelt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    let (_, (t1, t2)) = friction_belt_exact(&belt, 0.0);
+    let t_end = t2 + 0.8;
     let wrt = Sensitivities::all_parameters(&belt);
-    let mut radau = Radau::new(&belt, tight()).expect("valid").with_sensitivities(&wrt).expect("valid");
-    let mut start = State::<FrictionBelt>::zeros();
-    start.q[0] = 1.0;
-    let error = radau.solve_with_sensitivities(0.0, &start, 1.0, &Sampling::Steps).expect_err("refused");
-    let text = error.to_string();
-    assert!(matches!(error, SimError::InvalidOption { what: "sensitivities", .. }), "{text}");
-    assert!(text.contains("`grip`") && text.contains("laws"), "{text}");
+    let solution = Radau::new(&belt, tight())
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &State::<FrictionBelt>::zeros(), t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates across the switches");
+    let switches: Vec<(String, f64)> =
+        solution.events().iter().map(|e| (solution.event_name(e).to_string(), e.t)).collect();
+    assert_eq!(switches.len(), 2, "{switches:?}");
+    assert!((switches[0].1 - t1).abs() < 1e-8 && (switches[1].1 - t2).abs() < 1e-8, "{switches:?}");
+    let x = solution.last().expect("a sample").q(FrictionBelt::X);
+    assert!((x - friction_belt_exact(&belt, t_end).0).abs() < 1e-9, "x(T) = {x}");
+    let mut failures = 0;
+    for (k, name) in belt.parameter_names().iter().enumerate() {
+        let h = 1e-6;
+        let (mut plus, mut minus) = (belt.clone(), belt.clone());
+        plus.set_parameter_value(k, belt.parameter_value(k) + h);
+        minus.set_parameter_value(k, belt.parameter_value(k) - h);
+        let exact = (friction_belt_exact(&plus, t_end).0 - friction_belt_exact(&minus, t_end).0) / (2.0 * h);
+        let got = solution.dq(FrictionBelt::X, name).expect("a sensitivity")[0];
+        eprintln!("∂x/∂{name}: {got} against {exact}");
+        failures += usize::from((got - exact).abs() > 1e-7 * exact.abs().max(1.0));
+    }
+    assert_eq!(failures, 0, "sensitivities off the exact motion's");
+}
+
+/// Sensitivities across an ideal switch's switches, in a circuit with a node without inertia:
+/// a capacitor `C` charged from `U` through the switch (closed while `cos ωt > 0`) and a
+/// resistor `r` ([`SwitchedCharge`]). Closed form at `T = 3π/ω`, after it closed for
+/// `[0, π/2ω)` and `(3π/2ω, 5π/2ω)`: `vo = U (1 − e^{−3π/(2ω r C)})`. The switches' times move
+/// with `ω`, so `∂vo/∂ω` is carried by the jumps' parameter columns. Every parameter's
+/// `∂vo(T)/∂θ` against central differences (step 1e-6) of the closed form.
+#[test]
+fn sensitivities_across_an_ideal_switch_match_its_closed_form() {
+    use crate::every_method::switching::SwitchedCharge;
+    let charge = SwitchedCharge { u: 1.0, w: 1.0, c: 1.0, r: 1.0 };
+    let exact = |s: &SwitchedCharge, t: f64| {
+        assert!((t - 3.0 * std::f64::consts::PI / s.w).abs() < 1e-3, "T within the last open interval");
+        s.u * (1.0 - (-3.0 * std::f64::consts::PI / (2.0 * s.w * s.r * s.c)).exp())
+    };
+    let t_end = 3.0 * std::f64::consts::PI / charge.w;
+    let zero = VecQ::<SwitchedCharge>::zeros();
+    let start = consistent_state(&charge, 0.0, &zero, &zero, Consistency::default()).expect("a start");
+    let wrt = Sensitivities::all_parameters(&charge);
+    let solution = Radau::new(&charge, tight())
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &start, t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates across the switches");
+    assert_eq!(solution.events().len(), 3, "opens, closes, opens");
+    let vo = solution.last().expect("a sample").v(SwitchedCharge::O);
+    assert!((vo - exact(&charge, t_end)).abs() < 1e-9, "vo(T) = {vo}");
+    let mut failures = 0;
+    for (k, name) in charge.parameter_names().iter().enumerate() {
+        let h = 1e-6;
+        let (mut plus, mut minus) = (charge.clone(), charge.clone());
+        plus.set_parameter_value(k, charge.parameter_value(k) + h);
+        minus.set_parameter_value(k, charge.parameter_value(k) - h);
+        let want = (exact(&plus, t_end) - exact(&minus, t_end)) / (2.0 * h);
+        let got = solution.dv(SwitchedCharge::O, name).expect("a sensitivity")[0];
+        eprintln!("∂vo/∂{name}: {got} against {want}");
+        failures += usize::from((got - want).abs() > 1e-7 * want.abs().max(1.0));
+    }
+    assert_eq!(failures, 0, "sensitivities off the closed form's");
+}
+
+/// Sensitivities across an ideal diode's release, whose time follows from its current (a
+/// multiplier): the half-wave rectifier ([`HalfWave`]) conducts from rest, `vo = U sin ωt`,
+/// until its current `C U ω cos ωt + U sin ωt / r` falls to zero at
+/// `ωt_off = π − atan(ωrC)`, and blocks from there, `vo = U sin(ωt_off) e^{−(t − t_off)/rC}`.
+/// Every parameter's `∂vo(T)/∂θ` at `T = t_off + 1` against central differences (step 1e-6)
+/// of that closed form.
+#[test]
+fn sensitivities_across_a_diodes_release_match_its_closed_form() {
+    use crate::every_method::switching::HalfWave;
+    let rectifier = HalfWave { u: 1.0, w: 1.0, c: 2.0, r: 1.0 };
+    let t_off = |s: &HalfWave| (std::f64::consts::PI - (s.w * s.r * s.c).atan()) / s.w;
+    let exact = |s: &HalfWave, t: f64| s.u * (s.w * t_off(s)).sin() * (-(t - t_off(s)) / (s.r * s.c)).exp();
+    let t_end = t_off(&rectifier) + 1.0;
+    let wrt = Sensitivities::all_parameters(&rectifier);
+    let solution = Radau::new(&rectifier, tight())
+        .expect("valid")
+        .with_sensitivities(&wrt)
+        .expect("valid")
+        .solve_with_sensitivities(0.0, &State::<HalfWave>::zeros(), t_end, &Sampling::Times(vec![t_end]))
+        .expect("integrates across the release");
+    let named: Vec<(&str, f64)> = solution.events().iter().map(|e| (solution.event_name(e), e.t)).collect();
+    assert!(named.len() == 1 && named[0].0 == "d_blocks", "{named:?}");
+    assert!((named[0].1 - t_off(&rectifier)).abs() < 1e-8, "{named:?}");
+    let vo = solution.last().expect("a sample").v(HalfWave::O);
+    assert!((vo - exact(&rectifier, t_end)).abs() < 1e-9, "vo(T) = {vo}");
+    let mut failures = 0;
+    for (k, name) in rectifier.parameter_names().iter().enumerate() {
+        let h = 1e-6;
+        let (mut plus, mut minus) = (rectifier.clone(), rectifier.clone());
+        plus.set_parameter_value(k, rectifier.parameter_value(k) + h);
+        minus.set_parameter_value(k, rectifier.parameter_value(k) - h);
+        let want = (exact(&plus, t_end) - exact(&minus, t_end)) / (2.0 * h);
+        let got = solution.dv(HalfWave::O, name).expect("a sensitivity")[0];
+        eprintln!("∂vo/∂{name}: {got} against {want}");
+        failures += usize::from((got - want).abs() > 1e-7 * want.abs().max(1.0));
+    }
+    assert_eq!(failures, 0, "sensitivities off the closed form's");
 }
 
 /// Sensitivities through an impact: a ball dropped from rest at `h0` bounces at

@@ -531,6 +531,26 @@ pub(crate) fn accelerations<M: Hybrid>(
 where
     DefaultAllocator: Storage<M>,
 {
+    Ok(motion_at(model, t, q, v)?.accelerations)
+}
+
+/// The motion at `(t, q, v)` from the equations of motion with the constraints at acceleration
+/// level (see [`accelerations`]): the accelerations, the multipliers, and the factorised matrix
+/// `[L_vv −Aᵀ; A 0]` of the system that gave them.
+pub(crate) struct Motion {
+    pub accelerations: DVector<f64>,
+    pub multipliers: DVector<f64>,
+    pub system: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+    /// The rows of the system that are the force balance of a coordinate without mass,
+    /// differentiated along the motion (see [`massless_rows`]).
+    pub massless: Vec<usize>,
+}
+
+/// [`Motion`] at `(t, q, v)`.
+pub(crate) fn motion_at<M: Hybrid>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> Result<Motion, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
     let sizes = model.sizes();
     let (n, m) = (sizes.nq, sizes.nc);
     let h = dense_qq(model, &|b| model.l_vv(t, q, v, b));
@@ -557,13 +577,75 @@ where
     for i in 0..m {
         rhs[n + i] = -bottom[i] - rate[i];
     }
-    if !matrix.lu().solve_mut(&mut rhs) || rhs.iter().any(|x| !x.is_finite()) {
+    let massless = massless_rows(&h, &lvq, &a);
+    if !massless.is_empty() {
+        free_massless_rows(model, (t, q, v), &massless, &mut matrix, &mut rhs);
+    }
+    let system = matrix.lu();
+    if !system.solve_mut(&mut rhs) || rhs.iter().any(|x| !x.is_finite()) {
         return Err(SimError::NotDetermined {
             t,
-            cause: "the accelerations at the impact: the mass matrix bordered by the constraint rows is \
+            cause: "the accelerations: the mass matrix bordered by the constraint rows is \
                     singular there"
                 .into(),
         });
     }
-    Ok(rhs.rows(0, n).into_owned())
+    Ok(Motion {
+        accelerations: rhs.rows(0, n).into_owned(),
+        multipliers: rhs.rows(n, m).into_owned(),
+        system,
+        massless,
+    })
+}
+
+/// The coordinates without mass or momentum (their rows of `L_vv` and `L_vq` zero) that no
+/// constraint row reaches (their columns of `A` zero): their velocities are fixed by a force
+/// balance, `r_i(t, q, v) = ∂L/∂q_i + F_i = 0`, which says nothing of their accelerations.
+fn massless_rows(h: &DMatrix<f64>, lvq: &DMatrix<f64>, a: &DMatrix<f64>) -> Vec<usize> {
+    (0..h.nrows())
+        .filter(|&i| {
+            h.row(i).iter().all(|&x| x == 0.0)
+                && lvq.row(i).iter().all(|&x| x == 0.0)
+                && a.column(i).iter().all(|&x| x == 0.0)
+        })
+        .collect()
+}
+
+/// Replaces each row `i` of `massless` in the acceleration-level system by the force balance
+/// differentiated along the motion, `∂r_i/∂v v̇ = −(∂r_i/∂t + ∂r_i/∂q v)`, with
+/// `r = ∂L/∂q + F`: `∂r_i/∂v` from the generated `L_qv` and `∂F/∂v`, the rest a central
+/// difference along `(1, v)` in `(t, q)`, Richardson-extrapolated.
+fn free_massless_rows<M: Hybrid>(
+    model: &M,
+    (t, q, v): (f64, &VecQ<M>, &VecQ<M>),
+    massless: &[usize],
+    matrix: &mut DMatrix<f64>,
+    rhs: &mut DVector<f64>,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let n = sizes.nq;
+    let lvq = dense_qq(model, &|b| model.l_vq(t, q, v, b));
+    let fv = dense_qq(model, &|b| model.force_dv(t, q, v, b));
+    let (mut dl, mut force, mut moved) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), q.clone());
+    let size = q.iter().chain(v.iter()).fold(1.0f64, |s, x| s.max(x.abs()));
+    let step = 1e-4 * size / (1.0 + v.amax());
+    let mut balance = |d: f64| -> DVector<f64> {
+        moved.iter_mut().zip(q.iter().zip(v.iter())).for_each(|(x, (q, v))| *x = q + d * v);
+        model.dl_dq(t + d, &moved, v, &mut dl);
+        model.force(t + d, &moved, v, &mut force);
+        DVector::from_iterator(n, dl.iter().zip(force.iter()).map(|(a, b)| a + b))
+    };
+    let near = (balance(step) - balance(-step)) / (2.0 * step);
+    let far = (balance(2.0 * step) - balance(-2.0 * step)) / (4.0 * step);
+    let along = (near * 4.0 - far) / 3.0;
+    for &i in massless {
+        matrix.row_mut(i).fill(0.0);
+        for j in 0..n {
+            // `∂(∂L/∂q_i)/∂v_j` is `L_vq[j][i]`.
+            matrix[(i, j)] = lvq[(j, i)] + fv[(i, j)];
+        }
+        rhs[i] = -along[i];
+    }
 }

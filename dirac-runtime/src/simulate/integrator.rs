@@ -243,8 +243,10 @@ where
     /// by the impact's saltation matrix ([`saltation`](crate::impact::saltation)); one with
     /// switching surfaces (`abs`, `signum`, conditionals) has them located, and each
     /// sensitivity carried across each crossing by `(f⁻ − f⁺) ∂t*/∂θ`, the jump of the rate
-    /// times the crossing's shift; one with laws (friction, diodes) is refused by name. A method that does not carry
-    /// sensitivities refuses with [`SimError::Unsupported`].
+    /// times the crossing's shift; one with laws (friction, diodes, ideal switches) has them
+    /// switched, and each sensitivity carried across each switch the same way, with the rates
+    /// of the old mode and the new. A method that does not carry sensitivities refuses with
+    /// [`SimError::Unsupported`].
     fn solve_with_sensitivities(
         &mut self,
         t0: f64,
@@ -425,29 +427,6 @@ where
     SimError::Unsupported { method: I::NAME, capability: Capability::Sensitivities }
 }
 
-/// Sensitivities of a model with laws (friction, diodes, ideal switches) are refused, naming
-/// them: at their events the model's constraints change, and the sensitivities' jump there is
-/// not carried. (Those of a model with unilateral constraints or switching surfaces are
-/// carried across its impacts and crossings by `solve_with_sensitivities_through_events`.)
-fn refuse_laws<M: LagrangeDirac>(model: &M) -> Result<(), SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    if !laws::has_laws(model) {
-        return Ok(());
-    }
-    let names: Vec<String> = laws::law_names(model).into_iter().map(|name| format!("`{name}`")).collect();
-    Err(SimError::InvalidOption {
-        what: "sensitivities",
-        reason: format!(
-            "the model has laws ({}): at their events its constraints change, and the sensitivities' \
-             jump there is not implemented; take differences of solutions, or carry sensitivities \
-             between the switches",
-            names.join(", ")
-        ),
-    })
-}
-
 /// The model's switching surfaces, each as `` `name`: g = 0 ``.
 fn surfaces<M: LagrangeDirac>(model: &M) -> Vec<String>
 where
@@ -484,15 +463,17 @@ where
             reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
         });
     }
-    refuse_laws(integrator.model())?;
     let model = integrator.model();
-    if !model.unilateral_names().is_empty() || model.has_switches() {
+    if !model.unilateral_names().is_empty() || model.has_switches() || laws::has_laws(model) {
         return M::__solve_with_sensitivities_through_events(integrator, t0, state, t_end, sampling)
             .unwrap_or_else(|| {
                 let model = integrator.model();
                 let what = match model.unilateral_names().first() {
                     Some(contact) => format!("the contact `{contact}`'s impacts"),
-                    None => format!("its switching surfaces ({})", surfaces(model).join(", ")),
+                    None if model.has_switches() => {
+                        format!("its switching surfaces ({})", surfaces(model).join(", "))
+                    }
+                    None => format!("its laws' switches ({})", laws::law_names(model).join(", ")),
                 };
                 Err(SimError::InvalidOption {
                     what: "sensitivities",

@@ -175,6 +175,25 @@ where
     Ok(())
 }
 
+/// Where a solve of `model` with its laws watched starts from `state` at `t0`: `None` where
+/// `state` already holds the mode [`consistent_with_laws`] chooses for each law (or the model
+/// has none), and otherwise the consistent state in the modes chosen.
+pub(crate) fn start_in_modes<M: Hybrid>(
+    model: &M,
+    t0: f64,
+    state: &State<M>,
+) -> Result<Option<State<M>>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !has_laws(model) {
+        return Ok(None);
+    }
+    let chosen = consistent_with_laws(model, t0, &state.q, &state.v, Consistency::default())?;
+    let same = laws(model).iter().all(|law| chosen.q[law.mode] == state.q[law.mode]);
+    Ok((!same).then_some(chosen))
+}
+
 /// The consistent state nearest to positions `q` and velocities `v` at `t`, with each law's
 /// mode chosen from them (whatever `q` held for it): released where its `g` is away from zero
 /// (friction slipping to the side of its sign, a diode blocking where it is positive); engaged

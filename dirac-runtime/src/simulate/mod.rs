@@ -16,6 +16,7 @@ pub mod held;
 pub mod impact;
 /// The driver every integrator shares, with `solve` written once.
 pub mod integrator;
+pub(crate) mod law_jump;
 pub(crate) mod laws;
 pub(crate) mod recorder;
 pub(crate) mod restart;

@@ -38,7 +38,7 @@ pub(crate) struct SurfaceJump {
 
 /// The jump across the declared event function `surface` (its index among
 /// [`Hybrid::events`], named `name`), a switching surface the motion crosses at `t` in the
-/// state `at`.
+/// state `at`; `what` names the computation that needs it, for its refusals.
 ///
 /// Refused with [`SimError::InvalidOption`] for a model that does not emit its event
 /// functions' gradients (a network, or a model with too many events for dense rows), a surface
@@ -51,7 +51,7 @@ pub(crate) fn surface_jump<M: Hybrid + Parameters>(
     t: f64,
     at: &State<M>,
     surface: usize,
-    name: &str,
+    (name, what): (&str, &'static str),
 ) -> Result<SurfaceJump, SimError>
 where
     DefaultAllocator: Storage<M>,
@@ -61,11 +61,14 @@ where
     let count = model.event_declarations().len();
     let width = 2 * n + m + 1 + params;
     if model.event_derivatives_len() != count * width {
-        return refuse(format!(
-            "the switching surface `{name}`: its gradient is not generated for this model (a network, \
+        return refuse(
+            what,
+            format!(
+                "the switching surface `{name}`: its gradient is not generated for this model (a network, \
              or a model with too many events for dense rows), so a sensitivity cannot be carried \
              across it"
-        ));
+            ),
+        );
     }
     let mut derivatives = vec![0.0; count * width];
     model.event_derivatives(t, &at.q, &at.v, &at.lambda, &mut derivatives);
@@ -73,20 +76,26 @@ where
     let (g_q, g_v, g_lambda) = (&row[..n], &row[n..2 * n], &row[2 * n..2 * n + m]);
     let (g_t, g_theta) = (row[2 * n + m], &row[2 * n + m + 1..]);
     if g_lambda.iter().any(|&d| d != 0.0) {
-        return refuse(format!(
-            "the switching surface `{name}` reads multipliers: its crossing's time depends on the \
+        return refuse(
+            what,
+            format!(
+                "the switching surface `{name}` reads multipliers: its crossing's time depends on the \
              multipliers' sensitivities, which the jump does not carry"
-        ));
+            ),
+        );
     }
     // Each side's accelerations, from the points offset along the surface's normal in (t, q, v).
     let norm = (g_t * g_t + g_q.iter().chain(g_v).map(|d| d * d).sum::<f64>()).sqrt();
     // The state's size, not the time's: the offset moves the positions and velocities too.
     let scale = at.q.iter().chain(at.v.iter()).fold(1.0f64, |s, x| s.max(x.abs()));
     if norm == 0.0 || !norm.is_finite() {
-        return refuse(format!(
-            "the switching surface `{name}` has no gradient at t = {t} ({norm:e}): the crossing's time \
+        return refuse(
+            what,
+            format!(
+                "the switching surface `{name}` has no gradient at t = {t} ({norm:e}): the crossing's time \
              does not follow from the state there"
-        ));
+            ),
+        );
     }
     let step = OFFSET * scale / norm;
     let mut values = vec![0.0; count];
@@ -104,11 +113,14 @@ where
             v.iter_mut().zip(g_v).for_each(|(x, &g)| *x += d * g);
             model.events(ts, &q, &v, &at.lambda, &mut values);
             if values[surface] * sign <= 0.0 {
-                return refuse(format!(
-                    "the switching surface `{name}` at t = {t}: a point a millionth of the state off it \
+                return refuse(
+                    what,
+                    format!(
+                        "the switching surface `{name}` at t = {t}: a point a millionth of the state off it \
                      is still on the other side ({:e}), so its branches cannot be told apart there",
-                    values[surface]
-                ));
+                        values[surface]
+                    ),
+                );
             }
             *rate = accelerations(model, ts, &q, &v)?;
             model.residual_blocks(ts, &q, &v, &at.lambda, &mut blocks);
@@ -126,16 +138,19 @@ where
     let size = on_positive.amax().max(on_negative.amax()).max(at.v.amax()).max(1.0);
     if let Some(row) = jump.iter().position(|d| d.abs() > 1e-7 * size) {
         let names = model.constraint_names();
-        let what = if row < m {
+        let which = if row < m {
             format!("the constraint `{}` (its velocity form)", names.get(row).map_or("?", |s| s.as_str()))
         } else {
             format!("the constraint `{}`", names.get(row - m).map_or("?", |s| s.as_str()))
         };
-        return refuse(format!(
-            "the switching surface `{name}` switches {what} at t = {t} (by {:e}): the state jumps there onto \
+        return refuse(
+            what,
+            format!(
+                "the switching surface `{name}` switches {which} at t = {t} (by {:e}): the state jumps there onto \
              the other side's constraints, and the sensitivity of that reset is not carried",
-            jump[row]
-        ));
+                jump[row]
+            ),
+        );
     }
     let speed = |a: &DVector<f64>| {
         g_t + g_q.iter().zip(at.v.iter()).map(|(g, v)| g * v).sum::<f64>()
@@ -147,24 +162,42 @@ where
     } else if rising < 0.0 && falling < 0.0 {
         (positive, negative, falling)
     } else {
-        return refuse(format!(
-            "the motion does not cross the switching surface `{name}` at t = {t}: its rate is {rising:e} \
+        return refuse(
+            what,
+            format!(
+                "the motion does not cross the switching surface `{name}` at t = {t}: its rate is {rising:e} \
              on the negative side and {falling:e} on the positive one, so it slides along it or leaves it \
              either way, and no crossing time follows from the state"
-        ));
+            ),
+        );
     };
-    let mut delay = DVector::<f64>::zeros(2 * n);
-    delay.rows_mut(n, n).copy_from(&(before - after));
     let mut time = DVector::<f64>::zeros(2 * n);
     time.rows_mut(0, n).iter_mut().zip(g_q).for_each(|(x, &g)| *x = -g / speed);
     time.rows_mut(n, n).iter_mut().zip(g_v).for_each(|(x, &g)| *x = -g / speed);
     let time_parameters = DVector::from_iterator(params, g_theta.iter().map(|&g| -g / speed));
-    let matrix = DMatrix::<f64>::identity(2 * n, 2 * n) + &delay * time.transpose();
-    let parameters = &delay * time_parameters.transpose();
-    Ok(SurfaceJump { matrix, parameters })
+    Ok(rate_jump(&before, &after, &time, &time_parameters))
 }
 
-/// A sensitivity refused across a switching surface, for `reason`.
-fn refuse<T>(reason: String) -> Result<T, SimError> {
-    Err(SimError::InvalidOption { what: "sensitivities", reason })
+/// The jump of a motion whose accelerations change from `before` to `after` at a crossing whose
+/// time moves by `time` per unit of the state `(q, v)` and by `time_parameters` per unit of
+/// each parameter: `S = I + (f⁻ − f⁺) ∂t*/∂x`, and the parameters' columns
+/// `(f⁻ − f⁺) ∂t*/∂θ`.
+pub(crate) fn rate_jump(
+    before: &DVector<f64>,
+    after: &DVector<f64>,
+    time: &DVector<f64>,
+    time_parameters: &DVector<f64>,
+) -> SurfaceJump {
+    let n = before.len();
+    let mut delay = DVector::<f64>::zeros(2 * n);
+    delay.rows_mut(n, n).copy_from(&(before - after));
+    let matrix = DMatrix::<f64>::identity(2 * n, 2 * n) + &delay * time.transpose();
+    let parameters = &delay * time_parameters.transpose();
+    SurfaceJump { matrix, parameters }
+}
+
+/// A sensitivity (`what`: forward, or the adjoint) refused across a switching surface, for
+/// `reason`.
+fn refuse<T>(what: &'static str, reason: String) -> Result<T, SimError> {
+    Err(SimError::InvalidOption { what, reason })
 }

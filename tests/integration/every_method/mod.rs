@@ -106,4 +106,4 @@ mod events;
 mod inputs;
 mod parts;
 mod sensitivities;
-mod switching;
+pub(crate) mod switching;

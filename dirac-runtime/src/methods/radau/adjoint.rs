@@ -234,24 +234,27 @@ where
     /// [`Recording::gradient`].
     ///
     /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
-    /// projection's derivative is not carried), a drive (its inputs' derivative is not known),
-    /// or a model with laws (friction, diodes, ideal switches: their events change the
-    /// constraints, which the sweep does not differentiate through yet).
+    /// projection's derivative is not carried) or a drive (its inputs' derivative is not known).
     ///
     /// A model with unilateral constraints has its contacts watched, and one with switching
     /// surfaces (`abs`, `signum`, conditionals) has them located, as `solve` does: the
     /// recording keeps each impact's or crossing's jump and the sweep carries the adjoint back
-    /// across it by the transposed saltation matrix. A contact that comes to rest ends the
+    /// across it by the transposed saltation matrix. A model with laws (friction, diodes, ideal
+    /// switches) has them switched as `solve` does, and each switch kept as a crossing is. A contact that comes to rest ends the
     /// recording in [`SimError::ContactCloses`].
     pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError>
     where
         M: Hybrid + Parameters,
     {
         self.check_recordable()?;
+        // Each law starts in the mode the state puts it in, as in a solve.
+        let chosen = crate::simulate::laws::start_in_modes(self.model.get(), t0, state)?;
+        let state = chosen.as_ref().unwrap_or(state);
         self.start(t0, state, t_end)?;
         let sizes = self.model.sizes();
         let model = self.model.get();
-        let (contacts, switches) = (!model.unilateral_names().is_empty(), model.has_switches());
+        let (contacts, switches) =
+            (!model.unilateral_names().is_empty(), model.has_switches() || has_laws(model));
         let mut events = (contacts || switches).then(|| {
             let events = if contacts { Events::new().contacts(model) } else { Events::new() };
             if switches { events.switches_in(model) } else { events }
@@ -269,7 +272,7 @@ where
             steps.push(Step { t, h, y, z });
             let Some(events) = &mut events else { continue };
             while let Some(event) = events.locate(self)? {
-                let crossed = events.cross(self.model.get(), &event)?;
+                let crossed = events.cross(self.model.get(), &event, "adjoint")?;
                 let Some(mut jump) = crossed.jump else { continue };
                 if self.restart_at(event.t, &jump.after).is_err() {
                     // A switching surface's crossing, interpolated off the constraints by more
@@ -318,11 +321,11 @@ where
                 ),
             });
         }
-        if self.model.get().has_switches() {
+        if self.model.get().has_switches() || has_laws(self.model.get()) {
             return Err(SimError::InvalidOption {
                 what: "adjoint",
-                reason: "the model has switching surfaces: a recording within a budget does not cross them \
-                         yet; record every step with `record`"
+                reason: "the model has switching surfaces or laws (friction, diodes, switches): a recording \
+                         within a budget does not cross them yet; record every step with `record`"
                     .into(),
             });
         }
@@ -358,13 +361,6 @@ where
         }
         if self.residual.driven() || self.feedback.is_some() {
             return invalid("a drive's inputs have no derivative to transpose: hold the inputs instead");
-        }
-        let model = self.model.get();
-        if has_laws(model) {
-            return invalid(
-                "the model's laws (friction, diodes, switches) change its constraints at their events, \
-                 which the sweep does not differentiate through yet",
-            );
         }
         Ok(())
     }

@@ -13,13 +13,16 @@ use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::simulate::impact::{Saltation, saltation};
 use crate::simulate::integrator::{Integrator, SensitivityRows};
+use crate::simulate::law_jump::law_jump;
+use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 use crate::simulate::surface::surface_jump;
 
-/// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints or
-/// switching surfaces (and no law, which the caller refuses): the integration watches the
-/// contacts and locates the surfaces as [`Integrator::solve`] does. At each crossing of a
+/// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints, switching
+/// surfaces or laws: the integration watches the contacts, locates the surfaces and switches
+/// the laws as [`Integrator::solve`] does. At each law's switch every sensitivity jumps as at a
+/// surface, with the rates of the old mode and the new (see the `law_jump` module). At each crossing of a
 /// surface every sensitivity's velocities jump by `(v̇⁻ − v̇⁺) ∂t*/∂x s` plus, for a parameter,
 /// `(v̇⁻ − v̇⁺) ∂t*/∂θ` (the jump of the rate times the crossing's shift; see the
 /// `surface` module), and at each impact every sensitivity `s = ∂(q, v)/∂θ` just
@@ -60,7 +63,11 @@ where
     let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
     let model = integrator.model();
     let events = if names.is_empty() { Events::new() } else { Events::new().contacts(model) };
-    let mut events = if model.has_switches() { events.switches_in(model) } else { events };
+    let switches = model.has_switches() || laws::has_laws(model);
+    let mut events = if switches { events.switches_in(model) } else { events };
+    // Each law starts in the mode the state puts it in, as in a solve.
+    let chosen = laws::start_in_modes(model, t0, state)?;
+    let state = chosen.as_ref().unwrap_or(state);
     if let Some(contacts) = &events.contacts {
         recorder.name_contacts(&contacts.names);
     }
@@ -84,7 +91,7 @@ where
             });
             recorder.record_event(integrator.model(), event, events.state());
             rows.push_within(integrator, &recorder, before);
-            let crossed = events.cross(integrator.model(), &event)?;
+            let crossed = events.cross(integrator.model(), &event, "sensitivities")?;
             for &(j, impulse) in &crossed.impulses {
                 recorder.record_impact(Impact { contact: j, t, impulse });
             }
@@ -101,9 +108,9 @@ where
             let consistent = &jump.after;
             events.resume(integrator.model(), t, consistent)?;
             events.reopen(&jump.reopened);
-            if !crossed.impulses.is_empty() {
-                // An impact's state after it is a sample of its own; a switching surface's is the
-                // crossing's, just recorded.
+            if !crossed.impulses.is_empty() || crossed.switched {
+                // An impact's state after it is a sample of its own, as a law's switch's is; a
+                // switching surface's is the crossing's, just recorded.
                 let before = recorder.len();
                 recorder.record_reset(integrator.model(), t, consistent);
                 rows.push_restart(&restarted, &recorder, before);
@@ -122,14 +129,16 @@ where
     rows.finish(integrator, recorder)
 }
 
-/// An impact crossed ([`Events::cross`]): each closing contact's impulse and, if any pushed,
-/// the jump.
+/// An event crossed ([`Events::cross`]): each closing contact's impulse and, if any pushed (or
+/// the event is a switching surface's or a law's), the jump.
 pub(crate) struct Crossed<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
     pub impulses: Vec<(usize, f64)>,
     pub jump: Option<Jump<M>>,
+    /// Whether a law switched its mode there.
+    pub switched: bool,
 }
 
 /// The jump of an impact or a switching surface: its saltation matrix at the state just
@@ -154,17 +163,36 @@ where
     /// and its jump, differentiated, if it pushed. A contact that comes to rest is an error
     /// ([`SimError::ContactCloses`]): resting switches the constraints, whose jump is not
     /// differentiated.
-    pub(crate) fn cross(&mut self, model: &M, event: &Event) -> Result<Crossed<M>, SimError> {
+    ///
+    /// A law's event switches the law's mode, as a solve does, and its jump is the rate's
+    /// ([`law_jump`]); a switching surface's likewise ([`surface_jump`]). `what` names the
+    /// computation that crosses (`"sensitivities"`, `"adjoint"`), for its refusals.
+    pub(crate) fn cross(
+        &mut self,
+        model: &M,
+        event: &Event,
+        what: &'static str,
+    ) -> Result<Crossed<M>, SimError> {
         let t = event.t;
-        if let (true, Some(surface)) = (self.switch_of[event.index], self.declared_of[event.index]) {
-            let after = self.state().clone();
-            let jump = surface_jump(model, t, &after, surface, self.name(event))?;
+        if let (Some(_), Some(declared)) = (self.law_of[event.index], self.declared_of[event.index]) {
+            let before = self.state().clone();
+            let mut after = before.clone();
+            self.switch_law(model, event.index, t, &mut after)?;
+            let modes: Vec<usize> = self.laws.iter().map(|law| law.mode).collect();
+            let jump = law_jump(model, t, &before, &after, declared, &modes, (self.name(event), what))?;
             let (matrix, parameters) = (jump.matrix, jump.parameters);
             let jump = Jump { matrix, parameters, after, reopened: Vec::new() };
-            return Ok(Crossed { impulses: Vec::new(), jump: Some(jump) });
+            return Ok(Crossed { impulses: Vec::new(), jump: Some(jump), switched: true });
+        }
+        if let (true, Some(surface)) = (self.switch_of[event.index], self.declared_of[event.index]) {
+            let after = self.state().clone();
+            let jump = surface_jump(model, t, &after, surface, (self.name(event), what))?;
+            let (matrix, parameters) = (jump.matrix, jump.parameters);
+            let jump = Jump { matrix, parameters, after, reopened: Vec::new() };
+            return Ok(Crossed { impulses: Vec::new(), jump: Some(jump), switched: false });
         }
         let contact = self.contact_of[event.index].ok_or_else(|| SimError::InvalidOption {
-            what: "sensitivities",
+            what,
             reason: format!(
                 "the event `{}` is neither an impact nor a switching surface: its jump is not \
                  differentiated",
@@ -181,13 +209,13 @@ where
         let reopened: Vec<usize> =
             impacts.impulses.iter().filter(|&&(_, impulse)| impulse > 0.0).map(|&(j, _)| j).collect();
         if reopened.is_empty() {
-            return Ok(Crossed { impulses: impacts.impulses, jump: None });
+            return Ok(Crossed { impulses: impacts.impulses, jump: None, switched: false });
         }
         let closing: Vec<usize> = impacts.impulses.iter().map(|&(j, _)| j).collect();
         let Saltation { matrix, parameters, .. } = saltation(model, t, &pre.q, &pre.v, contact, &closing)?;
         let after = project(model, t, &after.q, &after.v, Consistency::default())?;
         let jump = Jump { matrix, parameters, after, reopened };
-        Ok(Crossed { impulses: impacts.impulses, jump: Some(jump) })
+        Ok(Crossed { impulses: impacts.impulses, jump: Some(jump), switched: false })
     }
 }
 

@@ -138,21 +138,11 @@ where
         }
         // Each law starts in the mode the state puts it in (the start made consistent there, if
         // the state held another).
-        let chosen;
-        let state = if laws::has_laws(self.model()) {
-            if !events.watches_laws(self.model()) {
-                return Err(unwatched_laws(self.model()));
-            }
-            chosen =
-                laws::consistent_with_laws(self.model(), t0, &state.q, &state.v, Consistency::default())?;
-            if laws::laws(self.model()).iter().all(|law| chosen.q[law.mode] == state.q[law.mode]) {
-                state
-            } else {
-                &chosen
-            }
-        } else {
-            state
-        };
+        if laws::has_laws(self.model()) && !events.watches_laws(self.model()) {
+            return Err(unwatched_laws(self.model()));
+        }
+        let chosen = laws::start_in_modes(self.model(), t0, state)?;
+        let state = chosen.as_ref().unwrap_or(state);
         self.start(t0, state, t_end)?;
         events.begin(self.model(), t0, self.state())?;
         recorder.record_initial(self.model(), t0, self.state());
