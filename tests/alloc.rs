@@ -751,6 +751,36 @@ fn backward_steps_through_impacts_and_switches_do_not_allocate() {
     sweeps_through_crossings(&belt, &State::<FrictionBelt>::zeros());
 }
 
+/// An adjoint sweep over a run that held its inputs between samples (`record_held`) allocates
+/// per sweep (a copy of the model for each sample), never per backward step: sweeps over runs
+/// at two tolerances allocate as often.
+#[test]
+fn backward_steps_with_held_inputs_do_not_allocate() {
+    let spring = ForcedSpring { m: 1.3, k: 4.0, f: 0.0 };
+    let (times, samples) = ([0.0, 0.5, 1.0, 1.5], [0.3, -1.0, 0.7, 2.0]);
+    let terminal = |_: f64, y: &State<ForcedSpring>, out: &mut State<ForcedSpring>| {
+        out.clone_from(y);
+        0.5 * (y.q.norm_squared() + y.v.norm_squared())
+    };
+    let objective = dirac::adjoint::Objective::terminal(&terminal);
+    let sweep = |tolerance: f64| {
+        let mut model = spring.clone();
+        let recording = Radau::new(&mut model, RadauOptions::tolerances(tolerance, tolerance))
+            .expect("valid options")
+            .record_held(0.0, &State::<ForcedSpring>::zeros(), 2.0, &times, &[(ForcedSpring::F, &samples)])
+            .expect("records");
+        let before = allocations();
+        let gradient = recording.gradient_held(&spring, &objective).expect("a gradient");
+        assert!(gradient.inputs[0].iter().all(|g| g.is_finite()));
+        (allocations() - before, recording.steps())
+    };
+    sweep(1e-11);
+    let (loose, few) = sweep(1e-6);
+    let (tight, many) = sweep(1e-11);
+    assert!(many > few + 20, "{few} and {many} steps");
+    assert_eq!(loose, tight, "{few} steps allocate {loose} times, {many} steps {tight} times");
+}
+
 /// Sweeps back over runs of `model` from `start` to `t = 2` at a loose and a tight tolerance,
 /// and asserts that both allocate as often.
 fn sweeps_through_crossings<M: Parameters + dirac::Hybrid>(model: &M, start: &State<M>)

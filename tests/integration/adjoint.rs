@@ -593,6 +593,94 @@ fn adjoint_gradients_across_laws_equal_forward_sensitivities() {
     assert!(switches >= 4, "{switches}");
 }
 
+/// A spring's force held at `u_k` over `[t_k, t_{k+1})` (`record_held`): the gradient with
+/// respect to every sample, and to the parameters, of `G = x(T)`, against the closed form. From
+/// rest, `x(T) = Σ_k (u_k/k) (cos ω(T − t_{k+1}) − cos ω(T − t_k))`, `ω = √(k/m)`, `t_K = T`:
+/// `∂G/∂u_k` is its coefficient, and `∂G/∂k`, `∂G/∂m` and `∂G/∂f` (the input's field, whose
+/// derivative is a shift of every sample) are central differences (step 1e-6) of it.
+#[test]
+fn adjoint_gradients_with_respect_to_held_inputs_match_the_closed_form() {
+    let spring = ForcedSpring { m: 1.3, k: 4.0, f: 0.0 };
+    let times = [0.0, 0.5, 1.0, 1.5];
+    let samples = [0.3, -1.0, 0.7, 2.0];
+    let t_end = 2.0;
+    let exact = |s: &ForcedSpring, u: &[f64]| {
+        let w = (s.k / s.m).sqrt();
+        let after = |k: usize| times.get(k + 1).copied().unwrap_or(t_end);
+        (0..times.len())
+            .map(|k| u[k] / s.k * ((w * (t_end - after(k))).cos() - (w * (t_end - times[k])).cos()))
+            .sum::<f64>()
+    };
+    let mut model = spring.clone();
+    let recording = Radau::new(&mut model, RadauOptions::tolerances(1e-11, 1e-13))
+        .expect("valid")
+        .record_held(0.0, &State::<ForcedSpring>::zeros(), t_end, &times, &[(ForcedSpring::F, &samples)])
+        .expect("records");
+    let terminal = |_: f64, y: &State<ForcedSpring>, out: &mut State<ForcedSpring>| {
+        out.q[0] = 1.0;
+        y.q[0]
+    };
+    let objective = Objective::terminal(&terminal);
+    let gradient = recording.gradient_held(&spring, &objective).expect("a gradient");
+    assert!((gradient.value - exact(&spring, &samples)).abs() < 1e-9, "x(T) = {}", gradient.value);
+    for k in 0..times.len() {
+        let mut unit = [0.0; 4];
+        unit[k] = 1.0;
+        let want = exact(&spring, &unit);
+        let got = gradient.inputs[0][k];
+        eprintln!("∂x(T)/∂u_{k}: {got} against {want}");
+        assert!((got - want).abs() < 1e-8, "∂x(T)/∂u_{k}: {got} against {want}");
+    }
+    for (k, name) in spring.parameter_names().iter().enumerate() {
+        let h = 1e-6;
+        let (mut plus, mut minus) = (spring.clone(), spring.clone());
+        plus.set_parameter_value(k, spring.parameter_value(k) + h);
+        minus.set_parameter_value(k, spring.parameter_value(k) - h);
+        // The input's own field is a parameter too: its derivative is a shift of every sample's.
+        let shifted = |d: f64| samples.map(|u| u + d);
+        let want = if name == "f" {
+            (exact(&spring, &shifted(h)) - exact(&spring, &shifted(-h))) / (2.0 * h)
+        } else {
+            (exact(&plus, &samples) - exact(&minus, &samples)) / (2.0 * h)
+        };
+        let got = gradient.parameters[k];
+        eprintln!("∂x(T)/∂{name}: {got} against {want}");
+        assert!((got - want).abs() < 1e-7 * want.abs().max(1.0), "∂x(T)/∂{name}: {got} against {want}");
+    }
+    // The plain gradient refuses the run, which it would sweep with the last samples' inputs.
+    let error = recording.gradient(&spring, &objective).expect_err("held inputs");
+    assert!(matches!(&error, SimError::InvalidOption { what: "adjoint", .. }), "{error}");
+    // Samples that do not start at t0, and an integrator that cannot set inputs.
+    let error = Radau::new(&mut model, RadauOptions::default())
+        .expect("valid")
+        .record_held(
+            0.0,
+            &State::<ForcedSpring>::zeros(),
+            t_end,
+            &[0.1, 1.0],
+            &[(ForcedSpring::F, &[1.0, 2.0])],
+        )
+        .expect_err("the samples start late");
+    assert!(matches!(&error, SimError::InvalidOption { what: "held inputs", .. }), "{error}");
+    let error = Radau::new(&spring, RadauOptions::default())
+        .expect("valid")
+        .record_held(0.0, &State::<ForcedSpring>::zeros(), t_end, &times, &[(ForcedSpring::F, &samples)])
+        .expect_err("a shared model");
+    assert!(matches!(&error, SimError::SharedModel { .. }), "{error}");
+    // An input in the mass matrix would make the momentum jump at each change.
+    let mut adjustable = AdjustableMass { m: 1.0, dm: 0.0, k: 4.0 };
+    let mut start = State::<AdjustableMass>::zeros();
+    start.q[0] = 0.5;
+    let error = Radau::new(&mut adjustable, RadauOptions::default())
+        .expect("valid")
+        .record_held(0.0, &start, 1.0, &[0.0, 0.5], &[(AdjustableMass::DM, &[0.1, 0.2])])
+        .expect_err("an input in the momenta");
+    assert!(
+        matches!(&error, SimError::InvalidOption { what: "held inputs", reason } if reason.contains("`dm`")),
+        "{error}"
+    );
+}
+
 /// The Coulomb spring's exact motion at `t`: harmonic between crossings, under the constant
 /// force `−μ sgn v − f [x > a]` of each phase, from `x = 0` at speed `v0`; each crossing of
 /// `x = a` or `v = 0` found by bisection on the closed form to round-off.

@@ -33,6 +33,7 @@
 use nalgebra::{DVector, DefaultAllocator, Dyn};
 
 mod checkpoints;
+mod held;
 
 use self::checkpoints::Checkpoints;
 use super::Radau;
@@ -154,6 +155,8 @@ where
     kept: Kept<M>,
     /// The impacts, in order, each after the step it cut short.
     impacts: Vec<Cut<M>>,
+    /// The inputs held between samples ([`Radau::record_held`]), if any.
+    held: Option<held::Segments>,
 }
 
 /// An impact in a recording: step `step` reached past it and was cut at `t`, where the run
@@ -195,6 +198,9 @@ where
     /// `∂G/∂v₀(i)`, as [`Sensitivities::initial_velocity`](crate::Sensitivities::initial_velocity)
     /// seeds it.
     pub velocities: VecQ<M>,
+    /// `∂G/∂u_k` for each input held between samples ([`Radau::record_held`]), in the order
+    /// given there, at each of its samples `k`; empty for a run that held none.
+    pub inputs: Vec<Vec<f64>>,
 }
 
 impl<M: LagrangeDirac> std::fmt::Debug for Gradient<M>
@@ -207,6 +213,7 @@ where
             .field("parameters", &self.parameters)
             .field("positions", &self.positions.as_slice())
             .field("velocities", &self.velocities.as_slice())
+            .field("inputs", &self.inputs)
             .finish()
     }
 }
@@ -289,7 +296,15 @@ where
             }
         }
         let end = self.y.clone();
-        Ok(Recording { t0, start: state.clone(), t_end: self.t, end, kept: Kept::Whole(steps), impacts })
+        Ok(Recording {
+            t0,
+            start: state.clone(),
+            t_end: self.t,
+            end,
+            kept: Kept::Whole(steps),
+            impacts,
+            held: None,
+        })
     }
 
     /// Integrates as [`record`](Self::record) does, but keeps, of the steps, only their sizes
@@ -350,6 +365,7 @@ where
             end,
             kept: Kept::Checkpointed(checkpoints),
             impacts: Vec::new(),
+            held: None,
         })
     }
 
@@ -401,6 +417,29 @@ where
     where
         M: Parameters,
     {
+        if self.held.is_some() {
+            return Err(SimError::InvalidOption {
+                what: "adjoint",
+                reason: "the run held inputs between samples (`record_held`): take its gradient with \
+                         `gradient_held`, which sets them step by step"
+                    .into(),
+            });
+        }
+        self.sweep_back(&|_| model, objective, None)
+    }
+
+    /// The backward sweep of [`gradient`](Self::gradient), with the model of each recorded step
+    /// (by its index) from `model_at`, and the held inputs' gradients accumulated by `inputs`.
+    fn sweep_back<'a>(
+        &self,
+        model_at: &dyn Fn(usize) -> &'a M,
+        objective: &Objective<'_, M>,
+        mut inputs: Option<held::Accumulator<'_, M>>,
+    ) -> Result<Gradient<M>, SimError>
+    where
+        M: Parameters + 'a,
+    {
+        let model = model_at(0);
         let sizes = model.sizes();
         if let Some((times, _)) = objective.samples {
             let slack = 1e-12 * self.t_end.abs().max(1.0);
@@ -426,6 +465,11 @@ where
         }
         let derivatives = ParameterDerivatives::<M>::of();
         let mut sweep = Sweep::new(model, derivatives)?;
+        if let Some(inputs) = &inputs {
+            sweep.inputs = Some(inputs.rates);
+            sweep.input_rates = vec![0.0; sizes.nq * inputs.count];
+            sweep.input_bar = vec![0.0; inputs.count];
+        }
         sweep.remaining = objective.samples.map_or(0, |(times, _)| times.len());
         let mut value = 0.0;
         let mut bar = sizes.zeros_y::<M>();
@@ -441,9 +485,12 @@ where
                 let mut impacts = self.impacts.iter().rev().peekable();
                 for (k, step) in steps.iter().enumerate().rev() {
                     if let Some(cut) = impacts.next_if(|cut| cut.step == k) {
-                        sweep.cross_back(model, cut, &mut bar);
+                        sweep.cross_back(model_at(k + 1), cut, &mut bar);
                     }
-                    value += sweep.step(model, step, objective, &mut bar)?;
+                    value += sweep.step(model_at(k), step, objective, &mut bar)?;
+                    if let Some(inputs) = &mut inputs {
+                        inputs.add(k, &mut sweep.input_bar);
+                    }
                 }
             }
             Kept::Checkpointed(checkpoints) => {
@@ -477,7 +524,8 @@ where
             let component = format!("the gradient with respect to the initial {what} of {name}");
             return Err(SimError::NonFinite { t: self.t0, component });
         }
-        Ok(Gradient { value, parameters: sweep.theta, positions, velocities })
+        let inputs = inputs.map_or_else(Vec::new, held::Accumulator::finish);
+        Ok(Gradient { value, parameters: sweep.theta, positions, velocities, inputs })
     }
 }
 
@@ -515,6 +563,12 @@ where
     /// time ([`Sweep::cross_back`]).
     injected: Option<f64>,
     inject: VecY<M>,
+    /// `∂ṗ/∂u` of the model's inputs, where inputs are held ([`Radau::record_held`]), and
+    /// its values at a stage (`n × n_u`, column-major).
+    inputs: Option<held::InputRates<M>>,
+    input_rates: Vec<f64>,
+    /// `∂G/∂u` over the last step swept, for every input of the model.
+    input_bar: Vec<f64>,
 }
 
 impl<M: LagrangeDirac> Sweep<M>
@@ -563,6 +617,9 @@ where
             theta: vec![0.0; count],
             injected: None,
             inject: sizes.zeros_y::<M>(),
+            inputs: None,
+            input_rates: Vec::new(),
+            input_bar: Vec::new(),
         })
     }
 
@@ -786,6 +843,18 @@ where
         if let Some(i) = bar.iter().position(|g| !g.is_finite()) {
             let component = format!("the adjoint of {}", describe_slot(model, i));
             return Err(SimError::NonFinite { t: step.t, component });
+        }
+        if let Some(rates) = self.inputs {
+            // ū += Σ_j ν_p,jᵀ ∂ṗ/∂u(Y_j): a held input enters the forces only.
+            let count = self.input_bar.len();
+            for (j, node) in nodes.iter().enumerate() {
+                rates(model, step.t + node * h, &self.at[j], &mut self.input_rates);
+                let nu_p = &self.nu[j].as_slice()[l.p..l.lambda];
+                for (i, ubar) in self.input_bar.iter_mut().enumerate().take(count) {
+                    let column = &self.input_rates[i * n..(i + 1) * n];
+                    *ubar += column.iter().zip(nu_p).map(|(d, w)| d * w).sum::<f64>();
+                }
+            }
         }
         if self.theta.is_empty() {
             return Ok(value);
