@@ -9,6 +9,7 @@ use crate::analysis::diagnose::{
     CheckRoom, check_constraints_kept, check_finite_state, violated_equation, violated_legendre_map_in,
     worst_constraint,
 };
+use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, check_parameters};
@@ -137,4 +138,36 @@ where
     DefaultAllocator: Storage<M>,
 {
     worst_constraint(model, t, state, &mut CheckRoom::new(model)).map_or(0.0, |(_, _, relative)| relative)
+}
+
+/// Restarts `integrator` at `t` from `state`, the state interpolated at a crossing within the
+/// last step: where the integrator's own check refuses it (off the constraints by more than a
+/// restart allows), from the consistent state nearest to it, which `state` becomes.
+pub(crate) fn restart_at_nearest<M: LagrangeDirac, I: crate::Integrator<M>>(
+    integrator: &mut I,
+    t: f64,
+    state: &mut State<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    restart_nearest_with(integrator, t, state, |integrator, t, state, _| integrator.restart_at(t, state))
+}
+
+/// [`restart_at_nearest`] by `restart(integrator, t, state, projected)`, told whether `state`
+/// was projected (what a restart that carries more than the state, sensitivities, adapts).
+pub(crate) fn restart_nearest_with<M: LagrangeDirac, I: crate::Integrator<M>>(
+    integrator: &mut I,
+    t: f64,
+    state: &mut State<M>,
+    mut restart: impl FnMut(&mut I, f64, &State<M>, bool) -> Result<(), SimError>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if restart(integrator, t, state, false).is_ok() {
+        return Ok(());
+    }
+    *state = project(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
+    restart(integrator, t, state, true)
 }

@@ -45,7 +45,6 @@ use crate::algebra::lu::{Lu, Singular};
 use crate::algebra::newton::NewtonSolver;
 use crate::algebra::sparse::lu::{Ordering, SparseLu};
 use crate::analysis::diagnose::describe_slot;
-use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
@@ -56,6 +55,7 @@ use crate::simulate::events::Events;
 use crate::simulate::events::sensitivities::Jump;
 use crate::simulate::integrator::Integrator;
 use crate::simulate::laws::has_laws;
+use crate::simulate::restart::restart_at_nearest;
 use crate::simulate::sensitivity::Initial;
 
 /// The most unknowns of the condensed transposed stage system, `3 (n + m)`, of a model stored
@@ -281,14 +281,7 @@ where
             while let Some(event) = events.locate(self)? {
                 let crossed = events.cross(self.model.get(), &event, "adjoint")?;
                 let Some(mut jump) = crossed.jump else { continue };
-                if self.restart_at(event.t, &jump.after).is_err() {
-                    // A switching surface's crossing, interpolated off the constraints by more
-                    // than a restart allows: from the consistent state nearest to it, as `solve`.
-                    let after = &jump.after;
-                    jump.after =
-                        project(self.model.get(), event.t, &after.q, &after.v, Consistency::default())?;
-                    self.restart_at(event.t, &jump.after)?;
-                }
+                restart_at_nearest(self, event.t, &mut jump.after)?;
                 events.resume(self.model.get(), event.t, &jump.after)?;
                 events.reopen(&jump.reopened);
                 impacts.push(Cut { step: steps.len() - 1, t: event.t, jump });

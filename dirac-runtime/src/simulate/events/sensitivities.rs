@@ -16,6 +16,7 @@ use crate::simulate::integrator::{Integrator, SensitivityRows};
 use crate::simulate::law_jump::law_jump;
 use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
+use crate::simulate::restart::restart_nearest_with;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 use crate::simulate::surface::surface_jump;
 
@@ -97,14 +98,14 @@ where
             }
             let Some(mut jump) = crossed.jump else { continue };
             carry(integrator, &jump, t, &mut restarted, &mut buffer, n);
-            if integrator.restart_with_sensitivities(t, &jump.after, &restarted).is_err() {
-                // The crossing of a switching surface, interpolated off the constraints by more
-                // than a restart allows: from the consistent state nearest to it, as a solve does.
-                jump.after =
-                    project(integrator.model(), t, &jump.after.q, &jump.after.v, Consistency::default())?;
-                momenta(integrator, t, &jump.after, &mut restarted);
-                integrator.restart_with_sensitivities(t, &jump.after, &restarted)?;
-            }
+            // From the consistent state nearest to the crossing where the restart refuses it,
+            // as a solve does, the sensitivities' momenta following it.
+            restart_nearest_with(integrator, t, &mut jump.after, |integrator, t, after, projected| {
+                if projected {
+                    momenta(integrator, t, after, &mut restarted);
+                }
+                integrator.restart_with_sensitivities(t, after, &restarted)
+            })?;
             let consistent = &jump.after;
             events.resume(integrator.model(), t, consistent)?;
             events.reopen(&jump.reopened);

@@ -17,6 +17,7 @@ use crate::simulate::integrator::{Integrator, refuse_unwatched_contacts};
 use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::constraint_violation;
+use crate::simulate::restart::restart_at_nearest;
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 
 /// What an event's action may do: read the event's time and state, reset the state, change
@@ -233,12 +234,7 @@ where
                     // The interpolated state is the step's, on the constraints as its steps are;
                     // where the integrator's own check refuses it, from the consistent state
                     // nearest to it.
-                    if self.restart_at(t, &after).is_err() {
-                        let consistent =
-                            project(self.model(), t, &after.q, &after.v, Consistency::default())?;
-                        self.restart_at(t, &consistent)?;
-                        after.clone_from(&consistent);
-                    }
+                    restart_at_nearest(self, t, &mut after)?;
                     events.resume(self.model(), t, &after)?;
                     restarted = true;
                     break;
