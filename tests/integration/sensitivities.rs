@@ -873,6 +873,31 @@ fn sensitivities_across_a_switching_constraint_are_refused() {
     assert!((w - 0.5).abs() < 1e-9, "the driven end's speed {w}");
 }
 
+/// Each parameter's sensitivity `got(name)` of a run of `model` against central differences
+/// (step 1e-6) of the closed form `exact` at the parameter moved either way, within 1e-7 of
+/// the larger of the reference and 1: the number of misses, each printed.
+fn misses_against_closed_form<M: Parameters + Clone>(
+    model: &M,
+    got: impl Fn(&str) -> f64,
+    exact: impl Fn(&M) -> f64,
+) -> usize
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut misses = 0;
+    for (k, name) in model.parameter_names().iter().enumerate() {
+        let h = 1e-6;
+        let (mut plus, mut minus) = (model.clone(), model.clone());
+        plus.set_parameter_value(k, model.parameter_value(k) + h);
+        minus.set_parameter_value(k, model.parameter_value(k) - h);
+        let want = (exact(&plus) - exact(&minus)) / (2.0 * h);
+        let got = got(name);
+        eprintln!("∂/∂{name}: {got} against {want}");
+        misses += usize::from((got - want).abs() > 1e-7 * want.abs().max(1.0));
+    }
+    misses
+}
+
 /// The friction belt's exact motion (a mass on a spring, on a belt at speed `vb`, with
 /// stiction `μs N` and kinetic friction `μk N`) from rest at `x = 0`, at a time `t` in its first
 /// slip after it first sticks. Slipping from rest, `x = x_e (1 − cos ωt)` about
@@ -914,18 +939,9 @@ fn sensitivities_across_a_friction_laws_switches_match_its_closed_form() {
     assert!((switches[0].1 - t1).abs() < 1e-8 && (switches[1].1 - t2).abs() < 1e-8, "{switches:?}");
     let x = solution.last().expect("a sample").q(FrictionBelt::X);
     assert!((x - friction_belt_exact(&belt, t_end).0).abs() < 1e-9, "x(T) = {x}");
-    let mut failures = 0;
-    for (k, name) in belt.parameter_names().iter().enumerate() {
-        let h = 1e-6;
-        let (mut plus, mut minus) = (belt.clone(), belt.clone());
-        plus.set_parameter_value(k, belt.parameter_value(k) + h);
-        minus.set_parameter_value(k, belt.parameter_value(k) - h);
-        let exact = (friction_belt_exact(&plus, t_end).0 - friction_belt_exact(&minus, t_end).0) / (2.0 * h);
-        let got = solution.dq(FrictionBelt::X, name).expect("a sensitivity")[0];
-        eprintln!("∂x/∂{name}: {got} against {exact}");
-        failures += usize::from((got - exact).abs() > 1e-7 * exact.abs().max(1.0));
-    }
-    assert_eq!(failures, 0, "sensitivities off the exact motion's");
+    let got = |name: &str| solution.dq(FrictionBelt::X, name).expect("a sensitivity")[0];
+    let misses = misses_against_closed_form(&belt, got, |b| friction_belt_exact(b, t_end).0);
+    assert_eq!(misses, 0, "∂x(T)/∂θ off the exact motion's");
 }
 
 /// Sensitivities across an ideal switch's switches, in a circuit with a node without inertia:
@@ -955,18 +971,9 @@ fn sensitivities_across_an_ideal_switch_match_its_closed_form() {
     assert_eq!(solution.events().len(), 3, "opens, closes, opens");
     let vo = solution.last().expect("a sample").v(SwitchedCharge::O);
     assert!((vo - exact(&charge, t_end)).abs() < 1e-9, "vo(T) = {vo}");
-    let mut failures = 0;
-    for (k, name) in charge.parameter_names().iter().enumerate() {
-        let h = 1e-6;
-        let (mut plus, mut minus) = (charge.clone(), charge.clone());
-        plus.set_parameter_value(k, charge.parameter_value(k) + h);
-        minus.set_parameter_value(k, charge.parameter_value(k) - h);
-        let want = (exact(&plus, t_end) - exact(&minus, t_end)) / (2.0 * h);
-        let got = solution.dv(SwitchedCharge::O, name).expect("a sensitivity")[0];
-        eprintln!("∂vo/∂{name}: {got} against {want}");
-        failures += usize::from((got - want).abs() > 1e-7 * want.abs().max(1.0));
-    }
-    assert_eq!(failures, 0, "sensitivities off the closed form's");
+    let got = |name: &str| solution.dv(SwitchedCharge::O, name).expect("a sensitivity")[0];
+    let misses = misses_against_closed_form(&charge, got, |s| exact(s, t_end));
+    assert_eq!(misses, 0, "∂vo(T)/∂θ off the closed form's");
 }
 
 /// Sensitivities across an ideal diode's release, whose time follows from its current (a
@@ -994,18 +1001,9 @@ fn sensitivities_across_a_diodes_release_match_its_closed_form() {
     assert!((named[0].1 - t_off(&rectifier)).abs() < 1e-8, "{named:?}");
     let vo = solution.last().expect("a sample").v(HalfWave::O);
     assert!((vo - exact(&rectifier, t_end)).abs() < 1e-9, "vo(T) = {vo}");
-    let mut failures = 0;
-    for (k, name) in rectifier.parameter_names().iter().enumerate() {
-        let h = 1e-6;
-        let (mut plus, mut minus) = (rectifier.clone(), rectifier.clone());
-        plus.set_parameter_value(k, rectifier.parameter_value(k) + h);
-        minus.set_parameter_value(k, rectifier.parameter_value(k) - h);
-        let want = (exact(&plus, t_end) - exact(&minus, t_end)) / (2.0 * h);
-        let got = solution.dv(HalfWave::O, name).expect("a sensitivity")[0];
-        eprintln!("∂vo/∂{name}: {got} against {want}");
-        failures += usize::from((got - want).abs() > 1e-7 * want.abs().max(1.0));
-    }
-    assert_eq!(failures, 0, "sensitivities off the closed form's");
+    let got = |name: &str| solution.dv(HalfWave::O, name).expect("a sensitivity")[0];
+    let misses = misses_against_closed_form(&rectifier, got, |s| exact(s, t_end));
+    assert_eq!(misses, 0, "∂vo(T)/∂θ off the closed form's");
 }
 
 /// Sensitivities through an impact: a ball dropped from rest at `h0` bounces at

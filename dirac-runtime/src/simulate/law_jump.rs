@@ -44,7 +44,7 @@ use crate::model::state::State;
 use crate::model::{Hybrid, Parameters};
 use crate::shape::dims::{Storage, VecQ};
 use crate::simulate::impact::{Motion, accelerations, motion_at};
-use crate::simulate::surface::{SurfaceJump, rate_jump};
+use crate::simulate::surface::{SurfaceJump, event_gradient, rate_jump};
 
 /// The relative step of the differences of the multipliers.
 const STEP: f64 = 1e-4;
@@ -70,23 +70,18 @@ where
     DefaultAllocator: Storage<M>,
 {
     let sizes = model.sizes();
-    let (n, m, params) = (sizes.nq, sizes.nc, model.parameter_count());
-    let count = model.event_declarations().len();
-    let width = 2 * n + m + 1 + params;
+    let (n, m) = (sizes.nq, sizes.nc);
     let refuse = |reason: String| Err(SimError::InvalidOption { what, reason });
-    if model.event_derivatives_len() != count * width {
-        return refuse(format!(
-            "the law's event `{name}`: its gradient is not generated for this model (a network, or a \
-             model with too many events for dense rows), so the switch's jump is not known"
-        ));
-    }
     let old = motion_at(model, t, &before.q, &before.v)?;
     let new = accelerations(model, t, &after.q, &after.v)?;
     let mut lambda = sizes.zeros_c::<M>();
     lambda.copy_from_slice(old.multipliers.as_slice());
-    let mut derivatives = vec![0.0; count * width];
-    model.event_derivatives(t, &before.q, &before.v, &lambda, &mut derivatives);
-    let row = &derivatives[event * width..(event + 1) * width];
+    let Some(row) = event_gradient(model, t, (&before.q, &before.v, &lambda), event) else {
+        return refuse(format!(
+            "the law's event `{name}`: its gradient is not generated for this model (a network, or a \
+             model with too many events for dense rows), so the switch's jump is not known"
+        ));
+    };
     let g_lambda = DVector::from_column_slice(&row[2 * n..2 * n + m]);
     // The gradient in (q, v, t), then the parameters'.
     let mut g_x = DVector::from_iterator(2 * n + 1, row[..2 * n].iter().chain([&row[2 * n + m]]).copied());

@@ -22,7 +22,7 @@ use crate::error::SimError;
 use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, Parameters};
-use crate::shape::dims::Storage;
+use crate::shape::dims::{Storage, VecC, VecQ};
 use crate::simulate::impact::accelerations;
 
 /// The relative offset from the surface at which each side's accelerations are read.
@@ -59,20 +59,16 @@ where
     let sizes = model.sizes();
     let (n, m, params) = (sizes.nq, sizes.nc, model.parameter_count());
     let count = model.event_declarations().len();
-    let width = 2 * n + m + 1 + params;
-    if model.event_derivatives_len() != count * width {
+    let Some(row) = event_gradient(model, t, (&at.q, &at.v, &at.lambda), surface) else {
         return refuse(
             what,
             format!(
                 "the switching surface `{name}`: its gradient is not generated for this model (a network, \
-             or a model with too many events for dense rows), so a sensitivity cannot be carried \
-             across it"
+                 or a model with too many events for dense rows), so a sensitivity cannot be carried \
+                 across it"
             ),
         );
-    }
-    let mut derivatives = vec![0.0; count * width];
-    model.event_derivatives(t, &at.q, &at.v, &at.lambda, &mut derivatives);
-    let row = &derivatives[surface * width..(surface + 1) * width];
+    };
     let (g_q, g_v, g_lambda) = (&row[..n], &row[n..2 * n], &row[2 * n..2 * n + m]);
     let (g_t, g_theta) = (row[2 * n + m], &row[2 * n + m + 1..]);
     if g_lambda.iter().any(|&d| d != 0.0) {
@@ -176,6 +172,31 @@ where
     time.rows_mut(n, n).iter_mut().zip(g_v).for_each(|(x, &g)| *x = -g / speed);
     let time_parameters = DVector::from_iterator(params, g_theta.iter().map(|&g| -g / speed));
     Ok(rate_jump(&before, &after, &time, &time_parameters))
+}
+
+/// The gradient of the declared event function `event` at `(t, q, v, λ)`: `∂g/∂q`, `∂g/∂v`,
+/// `∂g/∂λ`, `∂g/∂t` and `∂g/∂θ` in turn. `None` for a model that does not generate its event
+/// functions' gradients (a network, or a model with too many events for dense rows).
+pub(crate) fn event_gradient<M: Hybrid + Parameters>(
+    model: &M,
+    t: f64,
+    (q, v, lambda): (&VecQ<M>, &VecQ<M>, &VecC<M>),
+    event: usize,
+) -> Option<Vec<f64>>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let sizes = model.sizes();
+    let count = model.event_declarations().len();
+    let width = 2 * sizes.nq + sizes.nc + 1 + model.parameter_count();
+    if model.event_derivatives_len() != count * width {
+        return None;
+    }
+    let mut derivatives = vec![0.0; count * width];
+    model.event_derivatives(t, q, v, lambda, &mut derivatives);
+    derivatives.truncate((event + 1) * width);
+    derivatives.drain(..event * width);
+    Some(derivatives)
 }
 
 /// The jump of a motion whose accelerations change from `before` to `after` at a crossing whose
