@@ -981,7 +981,9 @@ fn sensitivities_across_an_ideal_switch_match_its_closed_form() {
 /// until its current `C U ω cos ωt + U sin ωt / r` falls to zero at
 /// `ωt_off = π − atan(ωrC)`, and blocks from there, `vo = U sin(ωt_off) e^{−(t − t_off)/rC}`.
 /// Every parameter's `∂vo(T)/∂θ` at `T = t_off + 1` against central differences (step 1e-6)
-/// of that closed form.
+/// of that closed form; and 47 periods (94 switches) later, where every period repeats the
+/// first's blocking from `t_off + 2πk/ω` (the modes' sensitivities restart at zero at each
+/// switch: round-off in them used to grow over the switches until a step failed, at t = 165).
 #[test]
 fn sensitivities_across_a_diodes_release_match_its_closed_form() {
     use crate::every_method::switching::HalfWave;
@@ -989,21 +991,34 @@ fn sensitivities_across_a_diodes_release_match_its_closed_form() {
     let t_off = |s: &HalfWave| (std::f64::consts::PI - (s.w * s.r * s.c).atan()) / s.w;
     let exact = |s: &HalfWave, t: f64| s.u * (s.w * t_off(s)).sin() * (-(t - t_off(s)) / (s.r * s.c)).exp();
     let t_end = t_off(&rectifier) + 1.0;
+    let periods = 47.0 * 2.0 * std::f64::consts::PI;
+    let later = t_end + periods / rectifier.w;
     let wrt = Sensitivities::all_parameters(&rectifier);
     let solution = Radau::new(&rectifier, tight())
         .expect("valid")
         .with_sensitivities(&wrt)
         .expect("valid")
-        .solve_with_sensitivities(0.0, &State::<HalfWave>::zeros(), t_end, &Sampling::Times(vec![t_end]))
-        .expect("integrates across the release");
+        .solve_with_sensitivities(
+            0.0,
+            &State::<HalfWave>::zeros(),
+            later,
+            &Sampling::Times(vec![t_end, later]),
+        )
+        .expect("integrates across the switches");
     let named: Vec<(&str, f64)> = solution.events().iter().map(|e| (solution.event_name(e), e.t)).collect();
-    assert!(named.len() == 1 && named[0].0 == "d_blocks", "{named:?}");
+    assert!(named.len() == 95 && named[0].0 == "d_blocks", "{named:?}");
     assert!((named[0].1 - t_off(&rectifier)).abs() < 1e-8, "{named:?}");
-    let vo = solution.last().expect("a sample").v(HalfWave::O);
-    assert!((vo - exact(&rectifier, t_end)).abs() < 1e-9, "vo(T) = {vo}");
+    let vo = solution.v(HalfWave::O);
+    assert!((vo[0] - exact(&rectifier, t_end)).abs() < 1e-9, "vo(T) = {}", vo[0]);
     let got = |name: &str| solution.dv(HalfWave::O, name).expect("a sensitivity")[0];
     let misses = misses_against_closed_form(&rectifier, got, |s| exact(s, t_end));
     assert_eq!(misses, 0, "∂vo(T)/∂θ off the closed form's");
+    // 47 periods later: the same blocking, shifted by 2π·47/ω.
+    let exact_later = |s: &HalfWave| exact(s, later - periods / s.w);
+    assert!((vo[1] - exact_later(&rectifier)).abs() < 1e-8, "vo = {}", vo[1]);
+    let got = |name: &str| solution.dv(HalfWave::O, name).expect("a sensitivity")[1];
+    let misses = misses_against_closed_form(&rectifier, got, exact_later);
+    assert_eq!(misses, 0, "∂vo/∂θ 47 periods later off the closed form's");
 }
 
 /// Sensitivities through an impact: a ball dropped from rest at `h0` bounces at

@@ -33,8 +33,8 @@
 //! along the motion in place of its row (see `impact::motion_at`); its row here is
 //! `−D(∂ṗ_i/∂θ)`.
 //!
-//! The mode coordinates are discrete: their sensitivities are zero, and their columns of
-//! `∂t*/∂x` are left out.
+//! The mode coordinates are discrete: their columns of `∂t*/∂x` are left out, and their rows
+//! of `S` are zero (the switch sets them, and their rates, by logic).
 
 use nalgebra::{DVector, DefaultAllocator};
 
@@ -110,7 +110,16 @@ where
     }
     let time = DVector::from_iterator(2 * n, g_x.rows(0, 2 * n).iter().map(|&g| -g / speed));
     let time_parameters = g_theta.map(|g| -g / speed);
-    Ok(rate_jump(&old.accelerations, &new, &time, &time_parameters))
+    let mut jump = rate_jump(&old.accelerations, &new, &time, &time_parameters);
+    // The switch sets every mode coordinate and its rate by logic: their sensitivities restart
+    // at zero, so that round-off in them does not grow over the switches that follow.
+    for &k in modes {
+        jump.matrix.row_mut(k).fill(0.0);
+        jump.matrix.row_mut(n + k).fill(0.0);
+        jump.parameters.row_mut(k).fill(0.0);
+        jump.parameters.row_mut(n + k).fill(0.0);
+    }
+    Ok(jump)
 }
 
 /// `∂λ/∂x_i` at the state `at` (`x = (q, v, t)`, `i = 2n` the time), by central differences of
