@@ -4,20 +4,17 @@
 //! The cart (mass `mc`, position `x`) is pushed by the input force `u`; the pole is a point
 //! mass `mp` at length `l`, its angle `th` measured from upright. `linearize` gives the
 //! continuous-time `(A, B)` about `x = th = 0` from the generated derivatives. The controller
-//! holds its output for `dt` = 10 ms, so the gain is designed for the sampled system: `(A, B)`
-//! become `(A_d, B_d)` through the matrix exponential of `[[A, B], [0, 0]] dt` (exact under the
-//! hold), and the discrete Riccati equation is solved by iterating its recursion from `P = Q`
-//! until `P` stops changing:
-//!
-//! ```text
-//! P ← Q + A_dᵀ P A_d − A_dᵀ P B_d (R + B_dᵀ P B_d)⁻¹ B_dᵀ P A_d,   K = (R + B_dᵀ P B_d)⁻¹ B_dᵀ P A_d
-//! ```
+//! holds its output for `dt` = 10 ms, so the gain is designed for the sampled system:
+//! `control::zero_order_hold` gives `(A_d, B_d)`, exact under the hold, and `control::dlqr` the
+//! gain from the discrete Riccati equation (checked against python-control in
+//! `tests/integration/control.rs`).
 //!
 //! The nonlinear cart-pole then runs under `u_k = −K x(t_k)`, restarted at every sample by
 //! `solve_sampled`. Writes `target/dirac-examples/cart_pole.svg` (angle and input against time).
 
 use std::error::Error;
 
+use dirac::control;
 use dirac::nalgebra::{DMatrix, DVector};
 use dirac::prelude::*;
 
@@ -45,41 +42,6 @@ pub struct CartPole {
     pub u: f64,
 }
 
-/// The zero-order-hold discretisation of `(a, b)` over `dt`.
-fn discretise(a: &DMatrix<f64>, b: &DMatrix<f64>, dt: f64) -> (DMatrix<f64>, DMatrix<f64>) {
-    let (n, m) = (a.nrows(), b.ncols());
-    let mut augmented = DMatrix::zeros(n + m, n + m);
-    augmented.view_mut((0, 0), (n, n)).copy_from(a);
-    augmented.view_mut((0, n), (n, m)).copy_from(b);
-    let e = (augmented * dt).exp();
-    (e.view((0, 0), (n, n)).into_owned(), e.view((0, n), (n, m)).into_owned())
-}
-
-/// The discrete LQR gain by iterating the Riccati recursion; also the iterations it took.
-fn lqr(
-    ad: &DMatrix<f64>,
-    bd: &DMatrix<f64>,
-    q: &DMatrix<f64>,
-    r: &DMatrix<f64>,
-) -> Result<(DMatrix<f64>, usize), Box<dyn Error>> {
-    let mut p = q.clone();
-    for iteration in 1..=100_000 {
-        let gain_term = (r + bd.transpose() * &p * bd).try_inverse().ok_or("R + B'PB is singular")?;
-        let next =
-            q + ad.transpose() * &p * ad - ad.transpose() * &p * bd * &gain_term * bd.transpose() * &p * ad;
-        let change = (&next - &p).amax();
-        p = next;
-        if change <= 1e-12 * p.amax() {
-            let k = (r + bd.transpose() * &p * bd).try_inverse().ok_or("R + B'PB is singular")?
-                * bd.transpose()
-                * &p
-                * ad;
-            return Ok((k, iteration));
-        }
-    }
-    Err("the Riccati recursion did not settle".into())
-}
-
 fn main() -> Result<(), Box<dyn Error>> {
     let mut model = CartPole { mc: 1.0, mp: 0.3, l: 0.5, g: 9.81, u: 0.0 };
     let upright = consistent_state(
@@ -95,14 +57,16 @@ fn main() -> Result<(), Box<dyn Error>> {
     eigenvalues.sort_by(f64::total_cmp);
     println!("open-loop eigenvalues (real parts): {eigenvalues:.3?}: the upright pole falls");
 
+    // The LQR design for the 100 Hz controller: sample the linear model under a held force,
+    // then solve the discrete Riccati equation.
     let dt = 0.01;
-    let (ad, bd) = discretise(&lin.a, &lin.b, dt);
+    let (ad, bd) = control::zero_order_hold(&lin.a, &lin.b, dt)?;
     let q = DMatrix::from_diagonal(&DVector::from_column_slice(&[1.0, 10.0, 0.1, 0.1]));
     let r = DMatrix::from_element(1, 1, 0.1);
-    let (k, iterations) = lqr(&ad, &bd, &q, &r)?;
-    let closed = &ad - &bd * &k;
-    let radius = closed.complex_eigenvalues().iter().map(|z| z.norm()).fold(0.0, f64::max);
-    println!("LQR gain K = {:.3} after {iterations} Riccati iterations", k.row(0));
+    let design = control::dlqr(&ad, &bd, &q, &r)?;
+    let k = design.gain.clone();
+    let radius = design.poles.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    println!("LQR gain K = {:.3} (Riccati residual {:.1e})", k.row(0), design.residual);
     println!("closed-loop spectral radius of A_d - B_d K: {radius:.4} (< 1: stable at {} Hz)", 1.0 / dt);
 
     let tilted = consistent_state(

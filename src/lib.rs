@@ -73,6 +73,11 @@ pub use dirac_runtime::{
 /// the discrete adjoint of a Radau integration.
 pub use dirac_runtime::adjoint;
 
+/// Control design on the exact linearisation: zero-order hold, continuous and discrete LQR,
+/// pole placement, controllability, poles and zeros, frequency and step responses, and a
+/// sampled PID controller with anti-windup.
+pub use dirac_runtime::control;
+
 /// The linear-algebra crate dirac is built on, re-exported so that generic code over models
 /// and code that uses its matrices need no second, possibly different, version of it.
 pub use dirac_runtime::nalgebra;

@@ -83,7 +83,7 @@ pub mod adjoint {
 
 // The modules under the paths they had before the layers, for code that names them.
 pub use algebra::lu;
-pub use analysis::{diagnose, dirac_structure, init, joint_space, linear};
+pub use analysis::{control, diagnose, dirac_structure, init, joint_space, linear};
 pub use methods::{explicit, radau, variational};
 pub use model::{blocks, flat, keys, names, sparse, state, structure};
 pub use shape::{dims, layout, stack};

@@ -12,6 +12,7 @@ mod blocks;
 mod bodies;
 mod components;
 mod contacts;
+mod control;
 mod counters;
 mod dense_output;
 mod events;
