@@ -10,7 +10,8 @@
 //! `tests/integration/control.rs`).
 //!
 //! The nonlinear cart-pole then runs under `u_k = −K x(t_k)`, restarted at every sample by
-//! `solve_sampled`. Writes `target/dirac-examples/cart_pole.svg` (angle and input against time).
+//! `solve_sampled`. Writes `target/dirac-examples/cart_pole.svg` (angle and input against time)
+//! and `target/dirac-examples/cart_pole.html` (the motion, animated).
 
 use std::error::Error;
 
@@ -21,6 +22,7 @@ use dirac::prelude::*;
 #[path = "support/mod.rs"]
 mod support;
 
+use dirac::plot::Animation;
 use support::{Chart, Series, output_dir};
 
 /// A cart carrying an inverted pendulum, pushed by the force `u`.
@@ -112,5 +114,17 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     .write(&path)?;
     println!("wrote {}", path.display());
+
+    // The cart and the pole's tip, (x + l sin θ, l cos θ), as an animation to play in a browser.
+    let l = model.l;
+    let tip_x: Vec<f64> = cart.iter().zip(angle).map(|(x, th)| x + l * th.sin()).collect();
+    let tip_y: Vec<f64> = angle.iter().map(|th| l * th.cos()).collect();
+    let path = output_dir()?.join("cart_pole.html");
+    Animation::of(&solution, "Cart-pole under a 100 Hz LQR controller")?
+        .point("cart", cart, &vec![0.0; cart.len()])?
+        .point("tip", &tip_x, &tip_y)?
+        .link("cart", "tip")?
+        .write_html(&path)?;
+    println!("wrote {} (open it in a browser: it plays, loops and scrubs)", path.display());
     Ok(())
 }

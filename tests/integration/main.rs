@@ -33,6 +33,7 @@ mod linkage;
 mod named_access;
 mod network;
 mod paper;
+mod plots;
 mod prescribed;
 mod probes;
 mod profile;

@@ -342,6 +342,11 @@ where
         Some(self.impacts.iter().filter(|i| i.contact == index).copied().collect())
     }
 
+    /// The name of the unilateral constraint `impact` closed.
+    pub fn contact_name(&self, impact: &Impact) -> &str {
+        self.contact_names.get(impact.contact).map_or("a contact", String::as_str)
+    }
+
     /// The events located, in time order ([`SolveWithEvents::solve_with_events`](crate::simulate::events::SolveWithEvents::solve_with_events)).
     pub fn events(&self) -> &[Event] {
         &self.events

@@ -1,22 +1,4 @@
-//! A small SVG line chart: a title, axes with labelled ticks and units, one polyline per
-//! series, a legend, and optionally a log scale and markers. SVG text is laid out by the
-//! viewer, so nothing here needs fonts. The examples and `dirac-spice` draw with it.
-//!
-//! ```
-//! use dirac::plot::{Chart, Series};
-//!
-//! let t: Vec<f64> = (0..100).map(|k| 0.1 * k as f64).collect();
-//! let y: Vec<f64> = t.iter().map(|t| t.sin()).collect();
-//! let chart = Chart {
-//!     title: "a sine",
-//!     x_label: "t (s)",
-//!     y_label: "y",
-//!     series: vec![Series { name: "sin t", x: &t, y: &y }],
-//!     log_y: false,
-//! };
-//! let svg = chart.svg(&[]);
-//! assert!(svg.starts_with("<svg") && svg.contains("sin t") && svg.contains("t (s)"));
-//! ```
+//! The SVG line chart every figure is drawn with.
 
 use std::fmt::Write as _;
 use std::fs;

@@ -1,0 +1,323 @@
+//! Animations of planar mechanisms as one self-contained HTML file.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use dirac_runtime::nalgebra::DefaultAllocator;
+use dirac_runtime::{LagrangeDirac, Solution, Storage};
+
+use super::figure::PlotError;
+
+/// A planar mechanism drawn from its points' positions over time (bodies as dots, rods and
+/// links as lines between them), written as one HTML file with no outside resources that plays
+/// in real time, loops, and scrubs with a slider.
+///
+/// Between samples the positions are interpolated linearly. Opening the file with `#t=0.25`
+/// after its name shows the mechanism at `t = 0.25`, paused; each dot carries the position
+/// it is drawn at (`data-x`, `data-y`, in the model's units) and the clock its time (`data-t`).
+///
+/// ```
+/// use dirac::plot::Animation;
+///
+/// let t = [0.0, 0.5, 1.0];
+/// let (x, y) = ([0.0, 0.5, 1.0], [-1.0, -0.9, -0.8]);
+/// let html = Animation::new("a bob on a rod", &t)?
+///     .fixed("pivot", 0.0, 0.0)
+///     .point("bob", &x, &y)?
+///     .link("pivot", "bob")?
+///     .html();
+/// assert!(html.starts_with("<!DOCTYPE html>") && html.contains("\"bob\""));
+/// # Ok::<(), dirac::plot::PlotError>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Animation {
+    title: String,
+    times: Vec<f64>,
+    points: Vec<Point>,
+    links: Vec<(usize, usize)>,
+}
+
+#[derive(Clone, Debug)]
+struct Point {
+    name: String,
+    x: Vec<f64>,
+    y: Vec<f64>,
+}
+
+impl Animation {
+    /// An animation over the sample times `times` (finite, not decreasing), with nothing in it
+    /// yet.
+    pub fn new(title: impl Into<String>, times: &[f64]) -> Result<Self, PlotError> {
+        if times.is_empty() || times.iter().any(|t| !t.is_finite()) || times.windows(2).any(|w| w[1] < w[0]) {
+            return Err(PlotError::Times {
+                reason: "an animation needs at least one sample time, all finite and none before the one before it"
+                    .into(),
+            });
+        }
+        Ok(Animation { title: title.into(), times: times.to_vec(), points: Vec::new(), links: Vec::new() })
+    }
+
+    /// An animation over the sample times of `solution`.
+    pub fn of<M: LagrangeDirac, S>(
+        solution: &Solution<M, S>,
+        title: impl Into<String>,
+    ) -> Result<Self, PlotError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        Animation::new(title, solution.t())
+    }
+
+    /// Adds a point (a body, a joint) at `(x[k], y[k])` at sample `k`.
+    pub fn point(mut self, name: impl Into<String>, x: &[f64], y: &[f64]) -> Result<Self, PlotError> {
+        let name = name.into();
+        for (len, which) in [(x.len(), "x"), (y.len(), "y")] {
+            if len != self.times.len() {
+                return Err(PlotError::Lengths {
+                    name: format!("{name}.{which}"),
+                    x: self.times.len(),
+                    y: len,
+                });
+            }
+        }
+        self.points.push(Point { name, x: x.to_vec(), y: y.to_vec() });
+        Ok(self)
+    }
+
+    /// Adds a point whose coordinates are the columns `x` and `y` of `solution` (a coordinate,
+    /// `out(name)`, …).
+    pub fn point_of<M: LagrangeDirac, S>(
+        self,
+        solution: &Solution<M, S>,
+        name: impl Into<String>,
+        x: &str,
+        y: &str,
+    ) -> Result<Self, PlotError>
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let column = |c: &str| {
+            solution.column(c).ok_or_else(|| PlotError::UnknownColumn {
+                name: c.to_string(),
+                known: solution.names().iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
+            })
+        };
+        let (xs, ys) = (column(x)?, column(y)?);
+        self.point(name, xs, ys)
+    }
+
+    /// Adds a point that stays at `(x, y)`: a pivot, a wall's corner.
+    pub fn fixed(mut self, name: impl Into<String>, x: f64, y: f64) -> Self {
+        let n = self.times.len();
+        self.points.push(Point { name: name.into(), x: vec![x; n], y: vec![y; n] });
+        self
+    }
+
+    /// Draws a line between the points `a` and `b`, named as they were added.
+    pub fn link(mut self, a: &str, b: &str) -> Result<Self, PlotError> {
+        let find = |name: &str| {
+            self.points.iter().position(|p| p.name == name).ok_or_else(|| PlotError::UnknownPoint {
+                name: name.to_string(),
+                known: self.points.iter().map(|p| format!("`{}`", p.name)).collect::<Vec<_>>().join(", "),
+            })
+        };
+        let link = (find(a)?, find(b)?);
+        self.links.push(link);
+        Ok(self)
+    }
+
+    /// The animation as an HTML document.
+    pub fn html(&self) -> String {
+        let (mut x0, mut x1, mut y0, mut y1) =
+            (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+        for p in &self.points {
+            for (&x, &y) in p.x.iter().zip(&p.y).filter(|(x, y)| x.is_finite() && y.is_finite()) {
+                (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+            }
+        }
+        if !(x0.is_finite() && y0.is_finite()) {
+            (x0, x1, y0, y1) = (-1.0, 1.0, -1.0, 1.0);
+        }
+        let margin = 0.05 * (x1 - x0).max(y1 - y0).max(1e-9);
+        let mut data = String::from("{\"t\":");
+        numbers(&mut data, &self.times);
+        data.push_str(",\"points\":[");
+        for (k, p) in self.points.iter().enumerate() {
+            if k > 0 {
+                data.push(',');
+            }
+            let _ = write!(data, "{{\"name\":{},\"x\":", json_string(&p.name));
+            numbers(&mut data, &p.x);
+            data.push_str(",\"y\":");
+            numbers(&mut data, &p.y);
+            data.push('}');
+        }
+        data.push_str("],\"links\":[");
+        let links: Vec<String> = self.links.iter().map(|(a, b)| format!("[{a},{b}]")).collect();
+        data.push_str(&links.join(","));
+        data.push_str("],\"bounds\":");
+        numbers(&mut data, &[x0 - margin, x1 + margin, y0 - margin, y1 + margin]);
+        data.push('}');
+        let title = escape(&self.title);
+        PAGE.replace("{title}", &title).replace("{data}", &data)
+    }
+
+    /// Writes the animation as an HTML file.
+    pub fn write_html(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
+        std::fs::write(path, self.html())
+    }
+}
+
+/// `values` as a JSON array, each number in the shortest form that reads back to it; NaN and
+/// infinities as `null` (not drawn).
+fn numbers(out: &mut String, values: &[f64]) {
+    out.push('[');
+    for (k, x) in values.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        if x.is_finite() {
+            let _ = write!(out, "{x:e}");
+        } else {
+            out.push_str("null");
+        }
+    }
+    out.push(']');
+}
+
+/// `text` as a JSON string that is also safe inside a `<script>` element.
+fn json_string(text: &str) -> String {
+    let mut out = String::from("\"");
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '<' => out.push_str("\\u003c"),
+            '>' => out.push_str("\\u003e"),
+            '&' => out.push_str("\\u0026"),
+            c if (c as u32) < 0x20 => {
+                let _ = write!(out, "\\u{:04x}", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// The page: an SVG stage, the controls, and the script that draws the data at a time.
+const PAGE: &str = r##"<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>{title}</title>
+<style>
+body { font-family: sans-serif; margin: 1.5em; }
+#stage { border: 1px solid #888; background: white; }
+#controls { margin-top: 0.6em; display: flex; gap: 1em; align-items: center; }
+#scrub { width: 420px; }
+circle { fill: #1f77b4; stroke: #123; }
+circle.fixed { fill: #888; }
+line { stroke: #333; stroke-width: 3; stroke-linecap: round; }
+</style>
+</head>
+<body>
+<h2>{title}</h2>
+<svg id="stage" width="640" height="480" viewBox="0 0 640 480"><g id="links"></g><g id="points"></g></svg>
+<div id="controls">
+<button id="play" type="button">Pause</button>
+<input id="scrub" type="range" min="0" max="10000" value="0" aria-label="time">
+<label><input id="loop" type="checkbox" checked> loop</label>
+<span id="clock" data-t="0">t = 0</span>
+</div>
+<script>
+"use strict";
+const data = {data};
+const t = data.t, n = t.length, start = t[0], end = t[n - 1];
+const W = 640, H = 480, pad = 24;
+const [x0, x1, y0, y1] = data.bounds;
+const scale = Math.min((W - 2 * pad) / (x1 - x0), (H - 2 * pad) / (y1 - y0));
+const offsetX = (W - 2 * pad - (x1 - x0) * scale) / 2, offsetY = (H - 2 * pad - (y1 - y0) * scale) / 2;
+const px = x => pad + offsetX + (x - x0) * scale;
+const py = y => H - pad - offsetY - (y - y0) * scale;
+const svgNs = "http://www.w3.org/2000/svg";
+const circles = data.points.map(p => {
+  const c = document.createElementNS(svgNs, "circle");
+  c.setAttribute("r", 7);
+  c.setAttribute("id", "point-" + p.name);
+  c.setAttribute("data-name", p.name);
+  if (p.x.every(v => v === p.x[0]) && p.y.every(v => v === p.y[0])) c.setAttribute("class", "fixed");
+  const label = document.createElementNS(svgNs, "title");
+  label.textContent = p.name;
+  c.appendChild(label);
+  document.getElementById("points").appendChild(c);
+  return c;
+});
+const lines = data.links.map(() => {
+  const l = document.createElementNS(svgNs, "line");
+  document.getElementById("links").appendChild(l);
+  return l;
+});
+// The value of a series at a time: the last sample at or before it, or linearly between two.
+function at(series, time) {
+  if (time <= t[0]) return series[0];
+  if (time >= t[n - 1]) return series[n - 1];
+  let lo = 0, hi = n - 1;
+  while (hi - lo > 1) { const mid = (lo + hi) >> 1; if (t[mid] <= time) lo = mid; else hi = mid; }
+  if (t[lo] === time || series[lo] === null || series[hi] === null) return series[lo] === null ? NaN : series[lo];
+  const w = (time - t[lo]) / (t[hi] - t[lo]);
+  return series[lo] + w * (series[hi] - series[lo]);
+}
+let now = start, playing = true, last = null;
+const clock = document.getElementById("clock"), scrub = document.getElementById("scrub");
+const play = document.getElementById("play"), loop = document.getElementById("loop");
+function draw(time) {
+  now = time;
+  const where = data.points.map(p => [at(p.x, time), at(p.y, time)]);
+  where.forEach(([x, y], k) => {
+    const c = circles[k], shown = isFinite(x) && isFinite(y);
+    c.setAttribute("visibility", shown ? "visible" : "hidden");
+    c.setAttribute("data-x", String(x));
+    c.setAttribute("data-y", String(y));
+    if (shown) { c.setAttribute("cx", px(x).toFixed(2)); c.setAttribute("cy", py(y).toFixed(2)); }
+  });
+  data.links.forEach(([a, b], k) => {
+    const l = lines[k];
+    l.setAttribute("x1", px(where[a][0]).toFixed(2)); l.setAttribute("y1", py(where[a][1]).toFixed(2));
+    l.setAttribute("x2", px(where[b][0]).toFixed(2)); l.setAttribute("y2", py(where[b][1]).toFixed(2));
+  });
+  clock.setAttribute("data-t", String(time));
+  clock.textContent = "t = " + time.toFixed(3) + " s";
+  scrub.value = end > start ? Math.round(10000 * (time - start) / (end - start)) : 0;
+}
+function frame(wall) {
+  if (!playing) { last = null; return; }
+  if (last !== null) {
+    let time = now + (wall - last) / 1000;
+    if (time > end) {
+      if (loop.checked && end > start) time = start + (time - end) % (end - start);
+      else { time = end; setPlaying(false); }
+    }
+    draw(time);
+  }
+  last = wall;
+  requestAnimationFrame(frame);
+}
+function setPlaying(on) {
+  playing = on;
+  play.textContent = on ? "Pause" : "Play";
+  if (on) { if (now >= end) draw(start); last = null; requestAnimationFrame(frame); }
+}
+play.addEventListener("click", () => setPlaying(!playing));
+scrub.addEventListener("input", () => { setPlaying(false); draw(start + (end - start) * scrub.value / 10000); });
+const asked = /[#&]t=([-+0-9.eE]+)/.exec(location.hash);
+if (asked) { playing = false; play.textContent = "Play"; draw(Math.min(Math.max(parseFloat(asked[1]), start), end)); }
+else { draw(start); requestAnimationFrame(frame); }
+</script>
+</body>
+</html>
+"##;

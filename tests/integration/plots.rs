@@ -1,0 +1,207 @@
+//! Figures and animations of solutions (`dirac::plot`): the files they write, read back; the
+//! animation loaded in headless Chromium (installed from Debian's packages by
+//! `tests/browser/chromium.sh` on first use, or `DIRAC_CHROMIUM`), its drawn positions read from
+//! the page and compared with the solution.
+
+use std::ops::ControlFlow;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+use dirac::plot::{Animation, Figure, PlotError};
+use dirac::prelude::*;
+use dirac::{Event, EventContext, Events, RadauStats};
+
+use crate::zoo::{BouncingBall, DoublePendulum};
+
+fn go_on<M: LagrangeDirac, I: Integrator<M>>(_: &Event, _: &mut EventContext<'_, M, I>) -> ControlFlow<()>
+where
+    DefaultAllocator: Storage<M>,
+{
+    ControlFlow::Continue(())
+}
+
+fn bounces(e: f64) -> Solution<BouncingBall, RadauStats> {
+    let ball = BouncingBall { m: 0.3, g: 9.81, e };
+    let mut start = State::<BouncingBall>::zeros();
+    start.set_q(BouncingBall::Y, 1.0);
+    let mut radau = Radau::new(&ball, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    let mut events = Events::new().contacts(&ball);
+    // Short of the time the bounces accumulate at, t₁ (1 + 2e/(1 − e)), when the ball comes to rest.
+    let end = 0.9 * (2.0 / 9.81_f64).sqrt() * (1.0 + 2.0 * e / (1.0 - e));
+    radau.solve_with_events(0.0, &start, end, &Sampling::Every(0.01), &mut events, go_on).expect("bounces")
+}
+
+/// The value of attribute `name` in the SVG or HTML element `tag` (its text from `<` to `>`).
+fn attribute<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let key = format!(" {name}=\"");
+    let start = tag.find(&key)? + key.len();
+    Some(&tag[start..start + tag[start..].find('"')?])
+}
+
+/// Every element `<element …>` of `document`, as its opening tag's text.
+fn elements<'a>(document: &'a str, element: &str) -> Vec<&'a str> {
+    let open = format!("<{element} ");
+    document
+        .match_indices(&open)
+        .map(|(at, _)| &document[at..at + document[at..].find('>').unwrap_or(0)])
+        .collect()
+}
+
+#[test]
+fn a_figure_of_a_solution_is_written_with_its_axes_legend_lines_and_impacts() {
+    let solution = bounces(0.8);
+    let impacts = solution.impacts().len();
+    assert!(impacts >= 3, "{impacts} impacts");
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("bouncing_ball.svg");
+    Figure::of(&solution, &["y", "v"])
+        .expect("known columns")
+        .title("A ball bouncing")
+        .write(&path)
+        .expect("written");
+    let svg = std::fs::read_to_string(&path).expect("read back");
+    println!("{}: {} bytes", path.display(), svg.len());
+    // The chart's size, as drawn.
+    let root = elements(&svg, "svg")[0];
+    assert_eq!((attribute(root, "width"), attribute(root, "height")), (Some("860"), Some("450")));
+    assert!(svg.len() > 5_000, "{} bytes", svg.len());
+    // Axes labels, title and legend, as text.
+    for text in [">t [s]<", ">y, v<", ">A ball bouncing<", ">y<", ">v<", ">impact at floor<"] {
+        assert!(svg.contains(text), "{text} missing");
+    }
+    // One line per column, through every sample.
+    let lines = elements(&svg, "polyline");
+    assert_eq!(lines.len(), 2);
+    let drawn = attribute(lines[0], "points").expect("points").split_whitespace().count();
+    assert_eq!(drawn, solution.len());
+    // One marker per impact, and one in the legend.
+    assert_eq!(elements(&svg, "circle").len(), impacts + 1);
+}
+
+#[test]
+fn figures_overlay_solutions_draw_phase_portraits_and_refuse_unknown_columns_by_name() {
+    let (bouncy, dull) = (bounces(0.8), bounces(0.5));
+    let figure = Figure::new("Two balls")
+        .solution(&bouncy, &["y"], "e = 0.8")
+        .and_then(|f| f.solution(&dull, &["y"], "e = 0.5"))
+        .expect("known columns");
+    assert_eq!(
+        figure.legend(),
+        ["e = 0.8: y", "e = 0.5: y", "e = 0.8: impact at floor", "e = 0.5: impact at floor"]
+    );
+    let svg = figure.svg();
+    assert_eq!(elements(&svg, "polyline").len(), 2);
+    let phase = Figure::phase(&bouncy, "y", "v").expect("known columns").svg();
+    assert!(phase.contains(">y<") && phase.contains(">v<") && phase.contains(">(y, v)<"));
+    let refusal = Figure::of(&bouncy, &["y", "height"]).expect_err("no column `height`");
+    match &refusal {
+        PlotError::UnknownColumn { name, known } => {
+            assert_eq!(name, "height");
+            assert!(known.contains("`y`") && known.contains("`energy`"), "{known}");
+        }
+        other => panic!("{other}"),
+    }
+    let refusal = Figure::new("x").line("uneven", &[0.0, 1.0], &[0.0]).expect_err("lengths differ");
+    assert_eq!(refusal, PlotError::Lengths { name: "uneven".into(), x: 2, y: 1 });
+}
+
+/// Headless Chromium: `DIRAC_CHROMIUM`, or the project's own install under the target directory.
+fn chromium() -> &'static Path {
+    static CHROMIUM: OnceLock<Result<PathBuf, String>> = OnceLock::new();
+    let found = CHROMIUM.get_or_init(|| {
+        if let Some(path) = std::env::var_os("DIRAC_CHROMIUM") {
+            return Ok(path.into());
+        }
+        let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser/chromium.sh");
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("chromium");
+        let output = Command::new("bash").arg(&script).arg(&dir).output().map_err(|e| e.to_string())?;
+        if output.status.success() {
+            Ok(PathBuf::from(String::from_utf8_lossy(&output.stdout).trim()))
+        } else {
+            Err(String::from_utf8_lossy(&output.stderr).into_owned())
+        }
+    });
+    match found {
+        Ok(path) => path,
+        Err(why) => panic!("the animation test needs headless Chromium (tests/browser/chromium.sh): {why}"),
+    }
+}
+
+/// The page at `path` as Chromium leaves it after loading `path#t=time`.
+fn page_at(path: &Path, time: f64) -> String {
+    let url = format!("file://{}#t={time:e}", path.display());
+    let output = Command::new(chromium())
+        .args(["--virtual-time-budget=1000", "--dump-dom", &url])
+        .output()
+        .expect("Chromium runs");
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    String::from_utf8(output.stdout).expect("UTF-8")
+}
+
+/// The position a point is drawn at, read from its circle's `data-x`, `data-y`.
+fn drawn(page: &str, point: &str) -> (f64, f64) {
+    let id = format!("id=\"point-{point}\"");
+    let circle = elements(page, "circle").into_iter().find(|c| c.contains(&id)).expect("the point's circle");
+    let read = |name| attribute(circle, name).expect("the attribute").parse::<f64>().expect("a number");
+    (read("data-x"), read("data-y"))
+}
+
+#[test]
+fn an_animation_in_headless_chromium_draws_the_solutions_positions_at_the_times_asked() {
+    let mut pendulum = DoublePendulum { m1: 1.0, m2: 0.5, l1: 1.0, l2: 0.7, g: 9.81 };
+    let q = VecQ::<DoublePendulum>::from([1.0, 0.0, 1.7, 0.0]);
+    let start =
+        consistent_state(&pendulum, 0.0, &q, &VecQ::<DoublePendulum>::zeros(), Consistency::default())
+            .expect("a consistent start");
+    let options = RadauOptions::tolerances(1e-10, 1e-10);
+    let solution = Radau::new(&mut pendulum, options.clone())
+        .and_then(|mut radau| radau.solve(0.0, &start, 2.0, &Sampling::Every(0.01)))
+        .expect("swings");
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("double_pendulum.html");
+    Animation::of(&solution, "A double pendulum")
+        .map(|a| a.fixed("pivot", 0.0, 0.0))
+        .and_then(|a| a.point_of(&solution, "upper", "x1", "y1"))
+        .and_then(|a| a.point_of(&solution, "lower", "x2", "y2"))
+        .and_then(|a| a.link("pivot", "upper"))
+        .and_then(|a| a.link("upper", "lower"))
+        .expect("an animation")
+        .write_html(&path)
+        .expect("written");
+
+    // At a sample time the page draws the sample itself, to the last bit.
+    let t = solution.t();
+    let k = 57;
+    let page = page_at(&path, t[k]);
+    let clock = elements(&page, "span").into_iter().find(|s| s.contains("id=\"clock\"")).expect("the clock");
+    assert_eq!(attribute(clock, "data-t").map(|t| t.parse::<f64>()), Some(Ok(t[k])));
+    let (x, y) = drawn(&page, "lower");
+    println!(
+        "t = {}: drawn ({x}, {y}), solution ({}, {})",
+        t[k],
+        solution.column("x2").expect("x2")[k],
+        solution.column("y2").expect("y2")[k]
+    );
+    assert_eq!((x, y), (solution.column("x2").expect("x2")[k], solution.column("y2").expect("y2")[k]));
+    assert_eq!(drawn(&page, "pivot"), (0.0, 0.0));
+
+    // Between samples it draws the straight line between them; the motion itself (Radau's dense
+    // output, another solve sampled there) is within the interpolation's error, h²/8 |ẍ|.
+    let between = 1.2345;
+    let page = page_at(&path, between);
+    let (x, y) = drawn(&page, "lower");
+    let j = t.partition_point(|&s| s <= between) - 1;
+    let w = (between - t[j]) / (t[j + 1] - t[j]);
+    let (xs, ys) = (solution.column("x2").expect("x2"), solution.column("y2").expect("y2"));
+    let (lx, ly) = (xs[j] + w * (xs[j + 1] - xs[j]), ys[j] + w * (ys[j + 1] - ys[j]));
+    assert!((x - lx).abs() < 1e-12 && (y - ly).abs() < 1e-12, "({x}, {y}) against ({lx}, {ly})");
+    let exact = Radau::new(&mut pendulum, options)
+        .and_then(|mut radau| radau.solve(0.0, &start, 2.0, &Sampling::Times(vec![between])))
+        .expect("swings");
+    let (ex, ey) = (exact.column("x2").expect("x2")[0], exact.column("y2").expect("y2")[0]);
+    let off = (x - ex).hypot(y - ey);
+    println!("t = {between}: drawn ({x}, {y}), motion ({ex}, {ey}), {off:.1e} apart");
+    assert!(off < 2e-3, "{off}");
+    // The upper bob is drawn on its rod.
+    let (ux, uy) = drawn(&page, "upper");
+    assert!((ux.hypot(uy) - 1.0).abs() < 1e-3, "{}", ux.hypot(uy));
+}
