@@ -207,6 +207,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let constants = inherent_constants(model, names);
     let named = named(&sym, ident, model);
     let inputs = input_methods(&model.inputs);
+    let input_values = if model.inputs.is_empty() { TokenStream::new() } else { input_values() };
     let parameters = invalid_parameter(&sym.params, &model.requirements);
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     let switches = crate::contacts::switch_methods(model, &sym);
@@ -241,6 +242,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
 
                 #parameters
                 #methods
+                #input_values
                 #solve_with_contacts
             }
 
@@ -321,6 +323,18 @@ fn invalid_parameter(
             #(#finite)*
             #(#required)*
             ::core::option::Option::None
+        }
+    }
+}
+
+/// `input_values` of the `LagrangeDirac` impl, through `InputsOutputs::input_value`.
+pub(crate) fn input_values() -> TokenStream {
+    let p = rt();
+    quote! {
+        fn input_values(&self, out: &mut [::core::primitive::f64]) {
+            for (k, value) in ::core::iter::Iterator::enumerate(out.iter_mut()) {
+                *value = <Self as #p::InputsOutputs>::input_value(self, k);
+            }
         }
     }
 }

@@ -38,6 +38,7 @@ mod prescribed;
 mod probes;
 mod profile;
 mod radau;
+mod results;
 mod robots;
 mod sensitivities;
 mod spice;

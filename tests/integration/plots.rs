@@ -154,7 +154,7 @@ fn an_animation_in_headless_chromium_draws_the_solutions_positions_at_the_times_
         consistent_state(&pendulum, 0.0, &q, &VecQ::<DoublePendulum>::zeros(), Consistency::default())
             .expect("a consistent start");
     let options = RadauOptions::tolerances(1e-10, 1e-10);
-    let solution = Radau::new(&mut pendulum, options.clone())
+    let solution = Radau::new(&mut pendulum, options)
         .and_then(|mut radau| radau.solve(0.0, &start, 2.0, &Sampling::Every(0.01)))
         .expect("swings");
     let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("double_pendulum.html");

@@ -150,6 +150,7 @@ fn implementation(
 ) -> TokenStream {
     let p = rt();
     let solve_with_contacts = solve_with_contacts();
+    let input_values = crate::expand::input_values();
     let ident = composite.ident;
     let own = Own { model, blocks };
     let layout = layout(composite, model.rows.len(), model.holonomic);
@@ -186,6 +187,7 @@ fn implementation(
             impl #p::LagrangeDirac for #ident #bounds {
                 #consts
                 #core
+                #input_values
                 #solve_with_contacts
             }
 

@@ -1555,6 +1555,14 @@ const _: () = {
                 }
             }
         }
+        fn input_values(&self, out: &mut [::core::primitive::f64]) {
+            for (k, value) in ::core::iter::Iterator::enumerate(out.iter_mut()) {
+                *value = <Self as ::dirac::__private::InputsOutputs>::input_value(
+                    self,
+                    k,
+                );
+            }
+        }
         fn __solve_with_contacts<I: ::dirac::__private::Integrator<Self>>(
             integrator: &mut I,
             t0: ::core::primitive::f64,

@@ -217,6 +217,14 @@ where
         assert!(out.is_empty(), "outputs: the model has none, so the output slice must be empty");
     }
 
+    /// The values of the model's inputs now, into `out` (one per input, in the order of their
+    /// keys): what a solution records as `in(name)`. The derives implement it for models with
+    /// inputs; a hand-written model with inputs implements it too (the default writes NaN: not
+    /// known).
+    fn input_values(&self, out: &mut [f64]) {
+        out.fill(f64::NAN);
+    }
+
     /// The coordinate with this (dotted) name, if the model has one.
     fn coordinate(&self, name: &str) -> Option<Coordinate<Self>> {
         self.coordinate_names().iter().position(|c| c == name).map(Coordinate::unchecked)

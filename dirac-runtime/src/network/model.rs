@@ -197,6 +197,12 @@ impl LagrangeDirac for Network {
     const PRESCRIBED: bool = true;
     const STRUCTURE: Structure = Structure { pattern: &[], unknowns: &[] };
 
+    fn input_values(&self, out: &mut [f64]) {
+        for (k, value) in out.iter_mut().enumerate() {
+            *value = self.input_value(k);
+        }
+    }
+
     fn sizes(&self) -> Sizes {
         self.sizes
     }

@@ -116,7 +116,7 @@ where
             k += 1;
             self.restart_until(sample(k))?;
         }
-        recorder.finish(self.stats())
+        recorder.finish_from(self)
     }
 
     /// Sets an input between steps and restarts.
@@ -142,6 +142,12 @@ where
     /// step (an event function) sees them as the step did. Does nothing otherwise.
     fn set_inputs_at(&mut self, t: f64, state: &State<M>) {
         let _ = (t, state);
+    }
+
+    /// Whether something sets the model's inputs within the steps (a drive): then a solution's
+    /// inputs and outputs at a sample are read after [`Integrator::set_inputs_at`] its time.
+    fn driven(&self) -> bool {
+        false
     }
 
     /// Whether the end time has been reached.
@@ -311,7 +317,7 @@ where
                 break;
             }
         }
-        recorder.finish(self.stats())
+        recorder.finish_from(self)
     }
 }
 
@@ -588,13 +594,13 @@ where
     /// The solution, with a column per sensitivity value.
     pub fn finish<I: Integrator<M>>(
         self,
-        integrator: &I,
+        integrator: &mut I,
         recorder: Recorder<M>,
     ) -> Result<Solution<M, I::Stats>, SimError> {
         let (rows, series, samples) = (self.rows, self.series, recorder.len());
         let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
         let names = integrator.sensitivity_names().to_vec();
-        let solution = recorder.finish(integrator.stats())?;
+        let solution = recorder.finish_from(integrator)?;
         Ok(solution.with_sensitivities(names, columns))
     }
 }

@@ -18,6 +18,7 @@ pub mod impact;
 pub mod integrator;
 pub(crate) mod law_jump;
 pub(crate) mod laws;
+pub(crate) mod parquet;
 pub(crate) mod recorder;
 pub(crate) mod restart;
 pub mod sensitivity;

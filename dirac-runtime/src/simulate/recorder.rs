@@ -11,6 +11,7 @@ use crate::model::MatCQ;
 use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
 use crate::shape::dims::{Storage, VecC, VecH, VecQ};
+use crate::simulate::integrator::Integrator;
 use crate::simulate::solution::{Columns, Event, Impact, Sampling, Solution};
 
 /// Records samples during an integration.
@@ -96,6 +97,7 @@ where
             phi: sizes.zeros_h::<M>(),
             forces: sizes.zeros_q::<M>(),
             outputs: vec![0.0; layout.outputs],
+            inputs: vec![0.0; layout.inputs],
         };
         let table = Table { layout, columns, scratch, non_finite_output: None };
         let buffer = State::with_sizes(sizes);
@@ -273,6 +275,29 @@ where
         }
     }
 
+    /// The finished solution of `integrator`'s run, as [`Recorder::finish`]. Where a drive set
+    /// the inputs within the steps, the model held at a sample the inputs of the last
+    /// evaluation, not the sample's: each sample's inputs and outputs are read again after the
+    /// drive sets the inputs at its time and state, and the step's end's inputs restored.
+    pub fn finish_from<I: Integrator<M>>(
+        mut self,
+        integrator: &mut I,
+    ) -> Result<Solution<M, I::Stats>, SimError> {
+        if integrator.driven() {
+            let end = integrator.state().clone();
+            for k in 0..self.table.columns[0].len() {
+                let t = self.table.columns[0][k];
+                for (i, x) in self.buffer.components_mut().enumerate() {
+                    *x = self.table.columns[self.table.layout.slot(i)][k];
+                }
+                integrator.set_inputs_at(t, &self.buffer);
+                self.table.derive(integrator.model(), k, t, &self.buffer);
+            }
+            integrator.set_inputs_at(integrator.t(), &end);
+        }
+        self.finish(integrator.stats())
+    }
+
     /// The finished solution, with the integrator's statistics; an error naming the first
     /// output that was not finite, where it was not.
     pub fn finish<S>(self, stats: S) -> Result<Solution<M, S>, SimError> {
@@ -311,6 +336,7 @@ where
     phi: VecH<M>,
     forces: VecQ<M>,
     outputs: Vec<f64>,
+    inputs: Vec<f64>,
 }
 
 impl<M: LagrangeDirac> Table<M>
@@ -324,6 +350,16 @@ where
         for (i, x) in s.components().enumerate() {
             self.columns[l.slot(i)].push(*x);
         }
+        for column in &mut self.columns[l.derived(0)..] {
+            column.push(0.0);
+        }
+        self.derive(model, self.columns[0].len() - 1, t, s);
+    }
+
+    /// Computes the derived quantities, port efforts, outputs and inputs of sample `k`, at `t`
+    /// in state `s`, with the model's inputs as they are now.
+    fn derive(&mut self, model: &M, k: usize, t: f64, s: &State<M>) {
+        let l = &self.layout;
         let w = &mut self.scratch;
         let energy = model.energy(t, &s.q, &s.v, &s.p);
         let power = model.power(t, &s.q, &s.v);
@@ -339,17 +375,21 @@ where
         model.outputs(t, &s.q, &s.v, &s.lambda, &mut w.outputs);
         let dissipated: f64 = l.dissipation.iter().map(|&k| w.outputs[k]).sum();
         let sources = power + dissipated;
-        for (k, x) in [energy, sources, dissipated, av, phi, ipower, cpower].into_iter().enumerate() {
-            self.columns[l.derived(k)].push(x);
+        for (j, x) in [energy, sources, dissipated, av, phi, ipower, cpower].into_iter().enumerate() {
+            self.columns[l.derived(j)][k] = x;
         }
-        for (k, &i) in l.ports.iter().enumerate() {
-            self.columns[l.port(k)].push(w.forces[i]);
+        for (j, &i) in l.ports.iter().enumerate() {
+            self.columns[l.port(j)][k] = w.forces[i];
         }
-        for (k, &y) in w.outputs.iter().enumerate() {
-            self.columns[l.output(k)].push(y);
-            if !y.is_finite() && self.non_finite_output.is_none() {
-                self.non_finite_output = Some((t, k));
+        for (j, &y) in w.outputs.iter().enumerate() {
+            self.columns[l.output(j)][k] = y;
+            if !y.is_finite() && self.non_finite_output.is_none_or(|(first, _)| t < first) {
+                self.non_finite_output = Some((t, j));
             }
+        }
+        model.input_values(&mut w.inputs);
+        for (j, &u) in w.inputs.iter().enumerate() {
+            self.columns[l.input(j)][k] = u;
         }
     }
 }

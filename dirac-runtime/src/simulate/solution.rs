@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 use nalgebra::{DefaultAllocator, Dim};
 
-use crate::model::keys::{Constraint, Coordinate, Output};
+use crate::model::keys::{Constraint, Coordinate, Input, Output};
 use crate::model::state::State;
 use crate::model::{DISSIPATED_POWER, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
@@ -74,7 +74,7 @@ pub struct Impact {
 }
 
 /// Where each series of a solution sits: `t`, the state's slots in the order of [`Layout`],
-/// the derived quantities, the effort at each port, then the model's outputs.
+/// the derived quantities, the effort at each port, the model's outputs, then its inputs.
 #[derive(Clone)]
 pub(crate) struct Columns {
     /// Where the state's parts sit among its slots.
@@ -83,6 +83,8 @@ pub(crate) struct Columns {
     pub ports: Vec<usize>,
     /// The number of the model's outputs.
     pub outputs: usize,
+    /// The number of the model's inputs.
+    pub inputs: usize,
     /// The outputs that are the power a subsystem's dissipation takes (named
     /// `dissipated_power`, at any depth): their sum is the model's dissipated power.
     pub dissipation: Vec<usize>,
@@ -141,8 +143,14 @@ impl Columns {
             .filter(|(_, o)| o.rsplit('.').next() == Some(DISSIPATED_POWER))
             .map(|(k, _)| k)
             .collect();
-        let columns =
-            Columns { state: Layout::new(model.sizes()), ports, outputs: outputs.len(), dissipation };
+        let inputs = model.input_names();
+        let columns = Columns {
+            state: Layout::new(model.sizes()),
+            ports,
+            outputs: outputs.len(),
+            inputs: inputs.len(),
+            dissipation,
+        };
         let coordinates = model.coordinate_names();
         let mut names = vec!["t".to_owned()];
         names.extend(coordinates.iter().cloned());
@@ -152,6 +160,7 @@ impl Columns {
         names.extend(Self::DERIVED.iter().map(|s| (*s).to_owned()));
         names.extend(columns.ports.iter().map(|&i| format!("f({})", coordinates[i])));
         names.extend(outputs.iter().map(|o| format!("out({o})")));
+        names.extend(inputs.iter().map(|u| format!("in({u})")));
         (columns, names)
     }
 
@@ -173,6 +182,11 @@ impl Columns {
     /// The column of output `k`.
     pub fn output(&self, k: usize) -> usize {
         1 + self.state.len + Self::DERIVED.len() + self.ports.len() + k
+    }
+
+    /// The column of input `k`.
+    pub fn input(&self, k: usize) -> usize {
+        self.output(self.outputs) + k
     }
 }
 
@@ -404,6 +418,13 @@ where
         &self.columns[self.layout.output(key.index())]
     }
 
+    /// The series of an input (`#[dirac(input(name))]`: a controller's force, a source's
+    /// voltage), also the column `in(name)`: the value the model held at each sample (set by
+    /// the user between steps, by `solve_sampled`'s controller, by a drive or a held table).
+    pub fn input(&self, key: Input<M>) -> &[f64] {
+        &self.columns[self.layout.input(key.index())]
+    }
+
     /// The generalised energy `E = ⟨p, v⟩ − L`.
     pub fn energy(&self) -> &[f64] {
         &self.columns[self.layout.derived(0)]
@@ -486,17 +507,31 @@ where
     /// if the solution has them, follow the other columns as `d(x)/d(k)`: the state quantity
     /// `x` with respect to `k`.
     pub fn write_csv(&self, mut out: impl Write) -> io::Result<()> {
-        let len = self.layout.state.len;
-        let mut names = self.names.to_vec();
-        for wrt in &self.sensitivity_names {
-            names.extend(self.names[1..=len].iter().map(|quantity| format!("d({quantity})/d({wrt})")));
-        }
-        writeln!(out, "{}", names.join(","))?;
+        writeln!(out, "{}", self.all_names().join(","))?;
         for i in 0..self.len() {
             let row: Vec<String> =
                 self.columns.iter().chain(&self.sensitivities).map(|c| format!("{:e}", c[i])).collect();
             writeln!(out, "{}", row.join(","))?;
         }
         Ok(())
+    }
+
+    /// Writes the solution as an Apache Parquet file, readable by Polars, pandas, DuckDB and
+    /// Spark: one `DOUBLE` column per series, named and ordered as in
+    /// [`write_csv`](Solution::write_csv), the values exactly as computed.
+    pub fn write_parquet(&self, out: impl Write) -> io::Result<()> {
+        let columns: Vec<&[f64]> =
+            self.columns.iter().chain(&self.sensitivities).map(Vec::as_slice).collect();
+        crate::simulate::parquet::write(out, &self.all_names(), &columns)
+    }
+
+    /// The names of every series, the sensitivities' (`d(x)/d(k)`) after the others.
+    fn all_names(&self) -> Vec<String> {
+        let len = self.layout.state.len;
+        let mut names = self.names.to_vec();
+        for wrt in &self.sensitivity_names {
+            names.extend(self.names[1..=len].iter().map(|quantity| format!("d({quantity})/d({wrt})")));
+        }
+        names
     }
 }

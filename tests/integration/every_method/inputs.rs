@@ -223,3 +223,115 @@ fn stops_hold_in_sampled_and_event_solves() {
         }
     });
 }
+
+/// A spring with a damper, pushed by the input force `f`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x, dissipation = 0.5 * c * v * v, force(x) = f)]
+pub struct DampedForced {
+    pub m: f64,
+    pub k: f64,
+    pub c: f64,
+    pub f: f64,
+}
+
+/// Checks a solution's input, power and dissipated power columns sample by sample against the
+/// force `force(k)` the test set: the sources' power is `f v`, the damper's `c v²`; and the same
+/// values in its CSV, under the names `in(f)`, `power` and `dissipated_power`.
+fn inputs_and_powers_recorded(
+    what: &str,
+    solution: &Solution<DampedForced, impl std::fmt::Debug>,
+    c: f64,
+    force: impl Fn(usize) -> f64,
+) {
+    let (u, v) = (solution.input(DampedForced::F), solution.v(DampedForced::X));
+    assert_eq!(solution.column("in(f)"), Some(u), "{what}");
+    for k in 0..solution.len() {
+        assert_eq!(u[k], force(k), "{what}: the input at sample {k}, t = {}", solution.t()[k]);
+        let (power, dissipated) = (solution.power()[k], solution.dissipated_power()[k]);
+        assert!((power - u[k] * v[k]).abs() <= 1e-14 * (1.0 + power.abs()), "{what}: power {power} at {k}");
+        let damper = c * v[k] * v[k];
+        assert!(
+            (dissipated - damper).abs() <= 1e-14 * (1.0 + damper),
+            "{what}: {dissipated} against {damper}"
+        );
+    }
+    let mut csv = Vec::new();
+    solution.write_csv(&mut csv).expect("written");
+    let csv = String::from_utf8(csv).expect("UTF-8");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("a header").split(',').collect();
+    let column =
+        |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("{what}: no {name}"));
+    let (input, power, dissipated) = (column("in(f)"), column("power"), column("dissipated_power"));
+    for (k, line) in lines.enumerate() {
+        let row: Vec<f64> = line.split(',').map(|x| x.parse().expect("a number")).collect();
+        assert_eq!(row[input], u[k], "{what}: CSV row {k}");
+        assert_eq!(row[power], solution.power()[k], "{what}: CSV row {k}");
+        assert_eq!(row[dissipated], solution.dissipated_power()[k], "{what}: CSV row {k}");
+    }
+}
+
+/// The inputs a solution records are those that acted: held between steps, set by a sampled
+/// controller (each sample in a period holds the value set at its start; the sample that ends
+/// a period, recorded before the controller runs, the one before), or set within the steps by
+/// a drive (read again at each sample's own time, not the last evaluation's), in every method.
+#[test]
+fn inputs_and_powers_are_recorded_by_every_driver_in_every_method() {
+    let (c, gain, period, x0) = (0.4, 3.0, 0.25, 0.5);
+    let mut model = DampedForced { m: M, k: K, c, f: 0.7 };
+    let start = |model: &DampedForced| {
+        let (q, v) = (VecQ::<DampedForced>::from([x0]), VecQ::<DampedForced>::zeros());
+        consistent_state(model, 0.0, &q, &v, Consistency::default()).expect("consistent")
+    };
+    let begin = start(&model);
+    each_integrator!(&mut model, Fineness::new(1e-10, 1e-12, 1e-3), |method, integrator| {
+        let what = format!("{method:?}, held");
+        // The previous method's controller left its last force in the model.
+        integrator.model_mut().expect("an exclusive model").f = 0.7;
+        let solution = integrator
+            .solve(0.0, &begin, 1.0, &Sampling::Every(0.1))
+            .unwrap_or_else(|error| panic!("{what}: {error}"));
+        inputs_and_powers_recorded(&what, &solution, c, |_| 0.7);
+
+        let what = format!("{method:?}, sampled");
+        let solution = integrator
+            .solve_sampled(0.0, &begin, 2.0, period, &Sampling::Every(period / 4.0), |_, s, model| {
+                model.f = -gain * s.q(DampedForced::X);
+            })
+            .unwrap_or_else(|error| panic!("{what}: {error}"));
+        let (t, x) = (solution.t(), solution.q(DampedForced::X));
+        // The samples fall on the periods' starts every fourth one.
+        inputs_and_powers_recorded(&what, &solution, c, |k| {
+            let start = if k == 0 { 0 } else { 4 * ((k - 1) / 4) };
+            assert!(
+                (t[start] - period * (start / 4) as f64).abs() < 1e-12,
+                "{what}: sample {start} at {}",
+                t[start]
+            );
+            -gain * x[start]
+        });
+    });
+    let (u0, w) = (0.6, 2.3);
+    let mut source = |t: f64, _: &State<DampedForced>, model: &mut DampedForced| model.f = u0 * (w * t).sin();
+    let mut source_explicit = source;
+    let mut source_variational = source;
+    let mut driven = model.clone();
+    let fineness = Fineness::new(1e-10, 1e-12, 1e-3);
+    let mut radau = Radau::new(&mut driven, fineness.radau()).expect("valid options");
+    radau.drive(&mut source).expect("an exclusive model");
+    let solution = radau.solve(0.0, &begin, 2.0, &Sampling::Every(0.05)).expect("integrates");
+    let t = solution.t().to_vec();
+    inputs_and_powers_recorded("Radau, driven", &solution, c, |k| u0 * (w * t[k]).sin());
+    let mut explicit = Explicit::new(&mut driven, fineness.explicit()).expect("valid options");
+    explicit.drive(&mut source_explicit).expect("an exclusive model");
+    let solution = explicit.solve(0.0, &begin, 2.0, &Sampling::Every(0.05)).expect("integrates");
+    let t = solution.t().to_vec();
+    inputs_and_powers_recorded("Explicit, driven", &solution, c, |k| u0 * (w * t[k]).sin());
+    let mut variational =
+        Variational::new(&mut driven, fineness.h, fineness.variational()).expect("valid options");
+    variational.drive(&mut source_variational).expect("an exclusive model");
+    let solution = variational.solve(0.0, &begin, 2.0, &Sampling::Every(0.05)).expect("integrates");
+    let t = solution.t().to_vec();
+    inputs_and_powers_recorded("Variational, driven", &solution, c, |k| u0 * (w * t[k]).sin());
+}

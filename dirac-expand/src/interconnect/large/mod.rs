@@ -252,6 +252,7 @@ pub fn implementation(
     let (io_names, inputs) = (large.io_names(), large.input_methods());
     let inherent = large.inherent_items();
     let (consts, counts) = large.consts();
+    let input_values = crate::expand::input_values();
     quote! {
         const _: () = {
             #asserts
@@ -300,6 +301,7 @@ pub fn implementation(
                 #consts
                 #shape
                 #methods
+                #input_values
                 #ports
             }
 

@@ -65,6 +65,10 @@ where
         self.driver.apply_state(&mut self.model, (t, self.t_end), state);
     }
 
+    fn driven(&self) -> bool {
+        self.driver.driven()
+    }
+
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
         self.restarts.jump(
             self.model.get(),

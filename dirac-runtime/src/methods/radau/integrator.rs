@@ -111,6 +111,10 @@ where
         self.residual.apply_state(&mut self.model, t, state);
     }
 
+    fn driven(&self) -> bool {
+        self.residual.driven()
+    }
+
     fn restart_at(&mut self, t: f64, state: &State<M>) -> Result<(), SimError> {
         if self.forward.is_some() {
             return Err(SimError::InvalidOption {

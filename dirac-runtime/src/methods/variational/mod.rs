@@ -501,6 +501,10 @@ where
         self.driver.apply_state(&mut self.model, (t, self.t_end), state);
     }
 
+    fn driven(&self) -> bool {
+        self.driver.driven()
+    }
+
     /// Takes one step of size `h` (the last one shorter, so that it ends at the end time) and
     /// returns its size. Where Newton's iteration does not converge (the step's equations may
     /// have no solution near the motion: RATTLE's projection of a pendulum swinging through

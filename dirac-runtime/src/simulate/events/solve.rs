@@ -226,7 +226,7 @@ where
                 let (reset, before) = context.changes();
                 let context_touched = context.touched;
                 if flow.is_break() {
-                    return recorder.finish(self.stats());
+                    return recorder.finish_from(self);
                 }
                 if !(reset || before.is_some()) && events.switch_of[event.index] {
                     // A switching surface: the step that reached across it is cut there, and the
@@ -263,7 +263,7 @@ where
                 recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
             }
         }
-        recorder.finish(self.stats())
+        recorder.finish_from(self)
     }
 }
 
