@@ -228,6 +228,10 @@ pub mod attributes {}
 #[doc = include_str!("docs/paper.md")]
 pub mod paper {}
 
+/// Documentation: the paper's terms beside an engineer's.
+#[doc = include_str!("docs/words.md")]
+pub mod words {}
+
 /// Documentation: everything `cargo build` checks in a model.
 #[doc = include_str!("docs/compile_time_checks.md")]
 pub mod compile_time_checks {}

@@ -4,7 +4,6 @@
 //!
 //! It uses the model surface and the algebra; the simulation driver and the methods use it.
 
-/// Control design on linear models: LQR, pole placement, frequency and step responses, PID.
 pub mod control;
 /// Finding the true cause of a failure, for the messages of typed errors.
 pub mod diagnose;
