@@ -386,7 +386,7 @@ fn singular_systems_name_their_cause() {
         let err = start_of(&pendulum(1.0, 9.81, 0.0), 0.0, 0.0).err();
         match err {
             Some(SimError::NotDetermined { cause, .. }) => {
-                assert!(cause.contains("one-form of constraint `rod` is zero"), "{cause}")
+                assert!(cause.contains("row of constraint `rod` is zero"), "{cause}")
             }
             other => panic!("expected the rod's vanishing one-form, got {other:?}"),
         }

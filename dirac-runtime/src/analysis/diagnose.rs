@@ -266,7 +266,7 @@ where
         let name = &model.coordinate_names()[i];
         return Some((
             format!(
-                "Legendre map p = ∂L/∂v of `{name}` (the momentum of `{name}` does not match its velocity)"
+                "the momentum of `{name}` does not match its velocity (the Legendre map p = ∂L/∂v of `{name}`)"
             ),
             r,
         ));
@@ -334,8 +334,8 @@ where
             let j = dl.iamax();
             if a.row(j).amax() <= 1e-12 * a.amax().max(1e-300) || a.row(j).amax() == 0.0 {
                 return format!(
-                    "the one-form of constraint {} is zero at this state (its ∂φ/∂q or A(q) row vanishes), \
-                     so its multiplier is not determined",
+                    "the row of constraint {} is zero at this state (its ∂φ/∂q or A(q) row, the constraint's \
+                     one-form, vanishes), so its force (multiplier) is not determined",
                     constraints[0]
                 );
             }

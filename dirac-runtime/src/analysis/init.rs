@@ -149,8 +149,7 @@ where
         let ah = dense_cq::<M, M::Algebra>(&a, m, n).rows(0, h).into_owned();
         if !ah.iter().all(|x| x.is_finite()) {
             return Err(SimError::NonFinite {
-                t,
-                component: "a holonomic constraint's one-form ∂φ/∂q".into(),
+                t, component: "a holonomic constraint's row ∂φ/∂q".into()
             });
         }
         // φ / |∂φ/∂q| is how far the positions are from the constraint, to first order.
@@ -210,7 +209,7 @@ where
     let shape = model.shape();
     let mut a = M::Algebra::zeros_cq(&shape);
     model.constraint_matrix(t, q, &mut a);
-    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    non_finite_entry(model, t, "the constraint rows A(q)", M::Algebra::cq_values(&a), false)?;
     let a = dense_cq::<M, M::Algebra>(&a, m, n);
     let mut b = model.sizes().zeros_c::<M>();
     model.constraint_rate(t, q, &mut b);
@@ -311,7 +310,7 @@ where
     model.l_vv(t, q, v, &mut lvv);
     non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
     model.constraint_matrix(t, q, &mut a);
-    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    non_finite_entry(model, t, "the constraint rows A(q)", M::Algebra::cq_values(&a), false)?;
     let lambda = if saddle_path {
         DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)
     } else {

@@ -133,7 +133,7 @@ where
         model.holonomic(t, q, &mut phi);
         non_finite_entry(model, t, "a holonomic constraint φ(q)", phi.as_slice(), false)?;
         model.constraint_matrix(t, q, &mut a);
-        non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+        non_finite_entry(model, t, "the constraint rows A(q)", M::Algebra::cq_values(&a), false)?;
         if phi.amax() <= tolerance * amax(M::Algebra::cq_values(&a)) * (1.0 + q.amax()) {
             return Ok(());
         }
@@ -174,7 +174,7 @@ where
     }
     let mut a = M::Algebra::zeros_cq(&shape);
     model.constraint_matrix(t, q, &mut a);
-    non_finite_entry(model, t, "the constraint one-forms A(q)", M::Algebra::cq_values(&a), false)?;
+    non_finite_entry(model, t, "the constraint rows A(q)", M::Algebra::cq_values(&a), false)?;
     let mut b = sizes.zeros_c::<M>();
     model.constraint_rate(t, q, &mut b);
     non_finite_entry(model, t, "the constraint rates b(q, t)", b.as_slice(), false)?;

@@ -146,8 +146,10 @@ impl Contacts {
         let speed = |j: usize, x: &[f64]| dot(j, x) + moving[j];
         let approach: Vec<f64> = closing.iter().map(|&j| speed(j, state.v.as_slice())).collect();
         if let Some(i) = approach.iter().position(|c| !c.is_finite()) {
-            let component =
-                format!("the one-form ∂φ/∂q of the unilateral constraint `{}`", self.names[closing[i]]);
+            let component = format!(
+                "the contact direction ∂φ/∂q of the unilateral constraint `{}`",
+                self.names[closing[i]]
+            );
             return Err(SimError::NonFinite { t, component });
         }
         let mut active: Vec<usize> = (0..closing.len()).filter(|&i| approach[i] < 0.0).collect();
@@ -197,7 +199,8 @@ impl Contacts {
                 return Err(SimError::NotDetermined {
                     t,
                     cause: format!(
-                        "the impact at `{}`: its one-form moves nothing the model's constraints let move",
+                        "the impact at `{}`: its contact direction ∂φ/∂q (its one-form) moves nothing the model's joints and \
+                         constraints let move",
                         self.names[closing[active[0]]]
                     ),
                 });
