@@ -63,8 +63,8 @@ pub use dirac_runtime::{
     DenseOutput, Derivation, Dimensions, DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event,
     EventContext, Events, Explicit, ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input,
     InputsOutputs, Integrator, JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ,
-    MatYY, Membership, Named, Names, OperationCounts, Output, Parameters, Radau, RadauOptions, RadauStats,
-    ResidualBlocks, Sampling, Sensitivities, SimError, Sizes, Slot, Solution, SolveWithEvents,
+    MatYY, Membership, Named, Names, OperationCounts, Output, Parameters, Progress, Radau, RadauOptions,
+    RadauStats, ResidualBlocks, Sampling, Sensitivities, SimError, Sizes, Slot, Solution, SolveWithEvents,
     SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH, VecK,
     VecQ, VecY, Wrt, consistent_state, linearize,
 };

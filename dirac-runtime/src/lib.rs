@@ -71,6 +71,7 @@ pub use shape::layout::{Layout, Slot};
 pub use simulate::events::{EventContext, Events, SolveWithEvents};
 pub use simulate::held::Held;
 pub use simulate::integrator::{Drive, Integrator};
+pub use simulate::progress::Progress;
 pub use simulate::sensitivity::{Sensitivities, Wrt};
 pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
 

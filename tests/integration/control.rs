@@ -273,6 +273,12 @@ fn control_design_refuses_what_it_cannot_do_by_name() {
     let refusal = control::frequency_response(&oscillator, &b, &c, &mat(&[&[0.0]]), &[1.0, 2.0])
         .expect_err("at the pole");
     assert_eq!(refusal, ControlError::AtPole { frequency: 2.0 });
+    let huge = mat(&[&[0.0, 1e200], &[0.0, 0.0]]);
+    let refusal = control::dlqr(&huge, &b, &identity, &mat(&[&[1.0]])).expect_err("overflows");
+    assert!(matches!(refusal, ControlError::Shape { what: "A", .. }), "{refusal}");
+    let empty = DMatrix::<f64>::zeros(0, 0);
+    let refusal = control::place(&empty, &DMatrix::zeros(0, 1), &[]).expect_err("no states");
+    assert!(matches!(refusal, ControlError::Shape { what: "A", .. }), "{refusal}");
     let refusal = control::zero_order_hold(&a, &b, 0.0).expect_err("no sample time");
     assert!(matches!(refusal, ControlError::Shape { what: "dt", .. }), "{refusal}");
     println!("{refusal}");

@@ -13,6 +13,7 @@ use crate::model::{InputsOutputs, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::shape::layout::Layout;
 use crate::simulate::laws;
+use crate::simulate::progress::Progress;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::sensitivity::Sensitivities;
 use crate::simulate::solution::{Sampling, Solution};
@@ -290,6 +291,42 @@ where
             return solution;
         }
         self.solve_observed(t0, state, t_end, sampling, |_, _| ControlFlow::Continue(()))
+    }
+
+    /// [`Integrator::solve_observed`] with a report of the progress: `report` is called with
+    /// the time reached, the integrator's counters and the wall-clock time, at most once per
+    /// `interval` of wall-clock time (every step for a zero interval) and once at the end.
+    /// `Progress` displays as one line; [`Progress::bar`] draws a text bar. The guide's section
+    /// "Step by step, and observers" has a runnable example.
+    fn solve_with_progress(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        sampling: &Sampling,
+        interval: std::time::Duration,
+        mut report: impl FnMut(&Progress<Self::Stats>),
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+    {
+        refuse_unwatched(self.model())?;
+        let began = std::time::Instant::now();
+        let mut last = began;
+        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
+        self.start(t0, state, t_end)?;
+        recorder.record_initial(self.model(), t0, self.state());
+        while !self.finished() {
+            self.step()?;
+            recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
+            let now = std::time::Instant::now();
+            if now.duration_since(last) >= interval && !self.finished() {
+                last = now;
+                report(&Progress { t: self.t(), t0, t_end, stats: self.stats(), elapsed: now - began });
+            }
+        }
+        report(&Progress { t: self.t(), t0, t_end, stats: self.stats(), elapsed: began.elapsed() });
+        recorder.finish_from(self)
     }
 
     /// [`Integrator::solve`] with an observer called after every step with the time and the

@@ -19,6 +19,7 @@ pub mod integrator;
 pub(crate) mod law_jump;
 pub(crate) mod laws;
 pub(crate) mod parquet;
+pub mod progress;
 pub(crate) mod recorder;
 pub(crate) mod restart;
 pub mod sensitivity;

@@ -105,5 +105,6 @@ mod dissipation;
 mod events;
 mod inputs;
 mod parts;
+mod progress;
 mod sensitivities;
 pub(crate) mod switching;

@@ -231,6 +231,12 @@ pub fn place(
             reason: format!("pole placement here is for one input, but B has {} columns", b.ncols()),
         });
     }
+    if n == 0 {
+        return Err(ControlError::Shape {
+            what: "A",
+            reason: "pole placement needs a model with states".into(),
+        });
+    }
     if poles.len() != n {
         return Err(ControlError::Shape {
             what: "poles",

@@ -232,6 +232,18 @@ fn weights(
             reason: format!("is not positive semidefinite (an eigenvalue is {smallest:.3e})"),
         });
     }
+    // The iterations square and invert these matrices: entries beyond 1e150 overflow there.
+    for (what, matrix) in [("A", a), ("B", b), ("Q", q), ("R", r)] {
+        if matrix.amax() > 1e150 {
+            return Err(ControlError::Shape {
+                what,
+                reason: format!(
+                    "entries up to {:e} overflow the Riccati iterations: scale the states and inputs",
+                    matrix.amax()
+                ),
+            });
+        }
+    }
     let Some(cholesky) = r.clone().cholesky() else {
         return Err(ControlError::Weight {
             what: "R",

@@ -1,0 +1,109 @@
+//! Progress of a long run, reported while it runs, and one-line summaries of the work done.
+
+use std::fmt;
+use std::time::Duration;
+
+use crate::methods::explicit::ExplicitStats;
+use crate::methods::radau::RadauStats;
+use crate::methods::variational::VariationalStats;
+
+/// Where a run stands: handed to the report of
+/// [`Integrator::solve_with_progress`](crate::Integrator::solve_with_progress).
+#[derive(Clone, Copy, Debug)]
+pub struct Progress<S> {
+    /// The time reached.
+    pub t: f64,
+    /// The start time.
+    pub t0: f64,
+    /// The end time.
+    pub t_end: f64,
+    /// The integrator's counters so far (steps, rejected steps, …).
+    pub stats: S,
+    /// The wall-clock time since the run began.
+    pub elapsed: Duration,
+}
+
+impl<S> Progress<S> {
+    /// The fraction of the time span covered, in `[0, 1]`.
+    pub fn fraction(&self) -> f64 {
+        let span = self.t_end - self.t0;
+        if span > 0.0 { ((self.t - self.t0) / span).clamp(0.0, 1.0) } else { 1.0 }
+    }
+
+    /// The wall-clock time the rest of the run may take, if it goes on at the rate so far.
+    pub fn remaining(&self) -> Option<Duration> {
+        let done = self.fraction();
+        (done > 0.0).then(|| self.elapsed.mul_f64((1.0 - done) / done))
+    }
+
+    /// A text bar of `width` characters, `[#####     ]`.
+    pub fn bar(&self, width: usize) -> String {
+        let filled = (self.fraction() * width as f64).round() as usize;
+        format!("[{}{}]", "#".repeat(filled.min(width)), " ".repeat(width - filled.min(width)))
+    }
+}
+
+/// `t = 3.2 of 10 (32%), 412 steps (3 rejected), 0.8 s elapsed, about 1.7 s to go`.
+impl<S: fmt::Display> fmt::Display for Progress<S> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "t = {:.6} of {} ({:.0}%), {}, {:.1} s elapsed",
+            self.t,
+            self.t_end,
+            100.0 * self.fraction(),
+            self.stats,
+            self.elapsed.as_secs_f64()
+        )?;
+        match self.remaining() {
+            Some(rest) if self.fraction() < 1.0 => write!(f, ", about {:.1} s to go", rest.as_secs_f64()),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// `412 steps (3 rejected), 1300 residual evaluations, 20 Jacobians, 35 factorisations, 1250 Newton iterations`.
+impl fmt::Display for RadauStats {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} steps ({} rejected), {} residual evaluations, {} Jacobians, {} factorisations, {} Newton iterations",
+            self.steps,
+            self.rejected,
+            self.residual_evaluations,
+            self.jacobian_evaluations,
+            self.factorizations,
+            self.newton_iterations
+        )?;
+        if self.sensitivity_iterations > 0 {
+            write!(f, ", {} sensitivity iterations", self.sensitivity_iterations)?;
+        }
+        Ok(())
+    }
+}
+
+/// `412 steps (3 rejected), 2500 evaluations, 2500 factorisations`.
+impl fmt::Display for ExplicitStats {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} steps ({} rejected), {} evaluations, {} factorisations",
+            self.steps, self.rejected, self.evaluations, self.factorizations
+        )
+    }
+}
+
+/// `1000 steps, 2100 Newton iterations, 2100 factorisations`, and the sub-steps if any.
+impl fmt::Display for VariationalStats {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} steps, {} Newton iterations, {} factorisations",
+            self.steps, self.newton_iterations, self.factorizations
+        )?;
+        if self.substeps > 0 {
+            write!(f, ", {} sub-steps", self.substeps)?;
+        }
+        Ok(())
+    }
+}
