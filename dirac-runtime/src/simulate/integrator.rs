@@ -310,23 +310,24 @@ where
     where
         Self: Sized,
     {
-        refuse_unwatched(self.model())?;
         let began = std::time::Instant::now();
         let mut last = began;
-        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
-        self.start(t0, state, t_end)?;
-        recorder.record_initial(self.model(), t0, self.state());
-        while !self.finished() {
-            self.step()?;
-            recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
+        let solution = observed(self, t0, state, t_end, sampling, |integrator| {
             let now = std::time::Instant::now();
-            if now.duration_since(last) >= interval && !self.finished() {
+            if now.duration_since(last) >= interval && !integrator.finished() {
                 last = now;
-                report(&Progress { t: self.t(), t0, t_end, stats: self.stats(), elapsed: now - began });
+                report(&Progress {
+                    t: integrator.t(),
+                    t0,
+                    t_end,
+                    stats: integrator.stats(),
+                    elapsed: now - began,
+                });
             }
-        }
+            ControlFlow::Continue(())
+        });
         report(&Progress { t: self.t(), t0, t_end, stats: self.stats(), elapsed: began.elapsed() });
-        recorder.finish_from(self)
+        solution
     }
 
     /// [`Integrator::solve`] with an observer called after every step with the time and the
@@ -343,19 +344,37 @@ where
     where
         Self: Sized,
     {
-        refuse_unwatched(self.model())?;
-        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
-        self.start(t0, state, t_end)?;
-        recorder.record_initial(self.model(), t0, self.state());
-        while !self.finished() {
-            self.step()?;
-            recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
-            if observer(self.t(), self.state()).is_break() {
-                break;
-            }
-        }
-        recorder.finish_from(self)
+        observed(self, t0, state, t_end, sampling, |integrator| observer(integrator.t(), integrator.state()))
     }
+}
+
+/// The loop of [`Integrator::solve_observed`] and [`Integrator::solve_with_progress`]: records
+/// every step's samples and calls `after_step` with the integrator, stopping where it breaks.
+fn observed<M: LagrangeDirac, I: Integrator<M>>(
+    integrator: &mut I,
+    t0: f64,
+    state: &State<M>,
+    t_end: f64,
+    sampling: &Sampling,
+    mut after_step: impl FnMut(&I) -> ControlFlow<()>,
+) -> Result<Solution<M, I::Stats>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    refuse_unwatched(integrator.model())?;
+    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
+    integrator.start(t0, state, t_end)?;
+    recorder.record_initial(integrator.model(), t0, integrator.state());
+    while !integrator.finished() {
+        integrator.step()?;
+        recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
+            integrator.interpolate(t, out)
+        });
+        if after_step(integrator).is_break() {
+            break;
+        }
+    }
+    recorder.finish_from(integrator)
 }
 
 /// The most sample intervals [`Integrator::solve_sampled`] takes on: a period this short
