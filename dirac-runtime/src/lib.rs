@@ -35,6 +35,13 @@
 //!
 //! [`methods`] holds [`Radau`], [`Explicit`] and [`Variational`], each an [`Integrator`];
 //! nothing but the re-exports below uses them.
+//!
+//! # Features
+//!
+//! `sparse` adds sparse storage and its LU (`algebra::Sparse`), for composites made of arrays
+//! of subsystems and for run-time networks (`network`), and brings faer; `ensemble` adds
+//! `ensemble`, many runs on all cores, and brings rayon. Neither is on by default: the facade
+//! `dirac` turns them on with its features of the same names.
 
 pub mod algebra;
 pub mod analysis;
@@ -42,6 +49,7 @@ pub mod analysis;
 pub mod error;
 pub mod methods;
 pub mod model;
+#[cfg(feature = "sparse")]
 pub mod network;
 pub mod shape;
 pub mod simulate;
@@ -65,6 +73,7 @@ pub use model::{
     DenseModel, Derivation, EnergyBalance, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
     OperationCounts, Parameters,
 };
+#[cfg(feature = "sparse")]
 pub use network::{Network, NetworkBuilder, NetworkError};
 pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use shape::layout::{Layout, Slot};
@@ -88,7 +97,9 @@ pub use analysis::{control, diagnose, dirac_structure, init, joint_space, linear
 pub use methods::{explicit, radau, variational};
 pub use model::{blocks, flat, keys, names, sparse, state, structure};
 pub use shape::{dims, layout, stack};
-pub use simulate::{ensemble, events, held, impact, integrator, sensitivity, solution, sources};
+#[cfg(feature = "ensemble")]
+pub use simulate::ensemble;
+pub use simulate::{events, held, impact, integrator, sensitivity, solution, sources};
 
 /// The linear systems of implicit steps: the seam every method solves through, the condensed
 /// solver a model's algebra provides, and a full reference solver.
@@ -105,10 +116,13 @@ pub use nalgebra;
 /// Items generated code refers to by absolute path. Not part of the public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::algebra::{Algebra, Dense, Pattern, Sparse, SparseShape};
+    pub use crate::algebra::{Algebra, Dense};
+    #[cfg(feature = "sparse")]
+    pub use crate::algebra::{Pattern, Sparse, SparseShape};
     pub use crate::analysis::init::Consistency;
     pub use crate::error::SimError;
     pub use crate::model::Named;
+    #[cfg(feature = "sparse")]
     pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
     pub use crate::model::assemble::{
         EventRows, Offsets, gather_blocks, gather_c, gather_h, gather_q, place_block,

@@ -17,6 +17,7 @@ mod counters;
 mod dense_output;
 mod events;
 mod explicit;
+mod features;
 mod fitting;
 mod fmi;
 mod fuzz;

@@ -154,6 +154,16 @@ impl<'a> Composite<'a> {
                         ),
                     );
                 } else {
+                    if !cfg!(feature = "sparse") && !self.has_arrays() {
+                        cx.error_spanned_by(
+                            &field.ty,
+                            format!(
+                                "`{ident}` is an array of subsystems: a composite with one is sized when it runs \
+                                 and stored sparse, which needs the feature `sparse` of dirac, off in this build; \
+                                 turn it on in Cargo.toml: `dirac = {{ version = \"0.1\", features = [\"sparse\"] }}`"
+                            ),
+                        );
+                    }
                     self.subsystems.push(SubsystemField { ident, ty: elem.clone(), array: true });
                 }
             } else if let Some(name) = never_a_model(&field.ty) {

@@ -28,8 +28,9 @@ pub mod lu;
 pub(crate) mod mass;
 /// The linear systems of implicit steps: the seam and a full reference solver.
 pub mod newton;
+#[cfg(feature = "sparse")]
 pub mod sparse;
-#[cfg(test)]
+#[cfg(all(test, feature = "sparse"))]
 mod sparse_against_dense;
 #[cfg(test)]
 pub(crate) mod testing;
@@ -40,8 +41,9 @@ use nalgebra::{DMatrix, DefaultAllocator};
 pub use self::condensed::SaddleCondensed;
 pub use self::dense::{Dense, DenseCondensed, DenseSaddle};
 pub use self::lu::{Singular, amax};
+#[cfg(feature = "sparse")]
 pub use self::sparse::{Pattern, Sparse, SparseBlock, SparseSaddle, SparseShape};
-pub use self::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar};
+pub use self::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar, SparseScalar};
 use crate::shape::dims::{Dimensions, Storage};
 
 /// A dense copy of an `n × n` block, for set-up and failure analysis of small models.

@@ -10,9 +10,23 @@ use crate::shape::dims::{Dimensions, Storage, VecY};
 
 /// The scalars of linear systems: `f64`, and `Complex<f64>` for Radau's complex stage system.
 pub trait Scalar:
-    ComplexField<RealField = f64> + faer::traits::ComplexField + Copy + Send + Sync + fmt::Debug + 'static
+    ComplexField<RealField = f64> + SparseScalar + Copy + Send + Sync + fmt::Debug + 'static
 {
 }
+
+/// What the sparse LU needs of a scalar besides nalgebra's arithmetic: faer's (feature
+/// `sparse`); nothing without it.
+#[cfg(feature = "sparse")]
+pub trait SparseScalar: faer::traits::ComplexField {}
+#[cfg(feature = "sparse")]
+impl<T: faer::traits::ComplexField> SparseScalar for T {}
+
+/// What the sparse LU needs of a scalar besides nalgebra's arithmetic: faer's (feature
+/// `sparse`); nothing without it.
+#[cfg(not(feature = "sparse"))]
+pub trait SparseScalar {}
+#[cfg(not(feature = "sparse"))]
+impl<T> SparseScalar for T {}
 
 impl Scalar for f64 {}
 impl Scalar for Complex<f64> {}

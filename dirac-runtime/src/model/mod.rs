@@ -7,6 +7,7 @@
 
 /// Where the parts of composites made of arrays sit, for generated code.
 #[doc(hidden)]
+#[cfg(feature = "sparse")]
 pub mod arrays;
 /// Moving subsystem parts in and out of composites, for generated code.
 #[doc(hidden)]

@@ -8,6 +8,7 @@
 pub(crate) mod contacts;
 pub(crate) mod drive;
 /// Many simulations of one model on all cores, and sweeps split into jobs.
+#[cfg(feature = "ensemble")]
 pub mod ensemble;
 pub mod events;
 /// How an integrator holds its model: shared, or exclusive to change it while it runs.

@@ -37,12 +37,17 @@ mod held;
 
 use self::checkpoints::Checkpoints;
 use super::Radau;
-use super::coupled::{Columns, Entries, assemble};
+#[cfg(feature = "sparse")]
+use super::coupled::Entries;
+use super::coupled::{Columns, assemble};
 use super::stages::three;
 use super::tableau::{A, C1, C2, C3};
 use crate::algebra::Algebra;
-use crate::algebra::lu::{Lu, Singular};
+use crate::algebra::lu::Lu;
+#[cfg(feature = "sparse")]
+use crate::algebra::lu::Singular;
 use crate::algebra::newton::NewtonSolver;
+#[cfg(feature = "sparse")]
 use crate::algebra::sparse::lu::{Ordering, SparseLu};
 use crate::analysis::diagnose::describe_slot;
 use crate::error::SimError;
@@ -589,7 +594,7 @@ where
             }
             Factors::Dense(Lu::new(unknowns))
         } else {
-            Factors::Sparse(SparseTransposed::new(&jac, n, m))
+            sparse_factors(&jac, n, m)?
         };
         Ok(Sweep {
             layout,
@@ -771,6 +776,7 @@ where
                 mat.transpose_mut();
                 lu.factor()
             }
+            #[cfg(feature = "sparse")]
             Factors::Sparse(sparse) => sparse.factor(&self.jac, h, n, m),
         };
         factored.map_err(|_| SimError::SingularMatrix {
@@ -796,6 +802,7 @@ where
         }
         match &mut self.factors {
             Factors::Dense(lu) => lu.solve_slice(self.x.as_mut_slice()),
+            #[cfg(feature = "sparse")]
             Factors::Sparse(sparse) => sparse.lu.solve(self.x.as_mut_slice()),
         }
         // ν at every stage (and μ_p, μ_q), by the substitutions; ȳ_n = M Σ_k μ_k.
@@ -878,12 +885,45 @@ enum Factors {
     /// Of a model stored dense: the matrix assembled dense, transposed and factored.
     Dense(Lu<f64, Dyn>),
     /// Of a model stored sparse: assembled into the transpose's compressed columns.
+    #[cfg(feature = "sparse")]
     Sparse(SparseTransposed),
+}
+
+/// The factors of a model whose blocks are not stored dense.
+#[cfg(feature = "sparse")]
+fn sparse_factors<M: LagrangeDirac>(
+    jac: &[JacobianBlocks<M, M::Algebra>; 3],
+    n: usize,
+    m: usize,
+) -> Result<Factors, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    Ok(Factors::Sparse(SparseTransposed::new(jac, n, m)))
+}
+
+/// The factors of a model whose blocks are not stored dense: sparse storage is the feature
+/// `sparse`'s, so without it every algebra is dense and this is not reached but by an algebra
+/// of the user's own.
+#[cfg(not(feature = "sparse"))]
+fn sparse_factors<M: LagrangeDirac>(
+    _: &[JacobianBlocks<M, M::Algebra>; 3],
+    _: usize,
+    _: usize,
+) -> Result<Factors, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    Err(SimError::InvalidOption {
+        what: "adjoint",
+        reason: "this model's blocks are not stored dense, and the sparse adjoint needs the feature `sparse` of dirac".into(),
+    })
 }
 
 /// The transpose of the forward coupled matrix in compressed columns, whose pattern the
 /// blocks' patterns fix (every coefficient of the method is nonzero), ordered once and
 /// refactored each step by the sparse LU the saddle-point systems use.
+#[cfg(feature = "sparse")]
 struct SparseTransposed {
     /// The slot among the values of each entry [`assemble`] adds, in the order it adds them
     /// (the same every step: it follows the blocks' patterns), so that a step's assembly
@@ -892,6 +932,7 @@ struct SparseTransposed {
     lu: SparseLu<f64>,
 }
 
+#[cfg(feature = "sparse")]
 impl SparseTransposed {
     /// The pattern from the stage Jacobians' patterns, and its ordering.
     fn new<M: LagrangeDirac>(jac: &[JacobianBlocks<M, M::Algebra>; 3], n: usize, m: usize) -> Self
