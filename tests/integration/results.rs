@@ -1,11 +1,12 @@
-//! Results read by other tools: a solution written as Parquet and read back by Polars (installed
-//! on first use into a virtual environment under the target directory, or the Python named by
-//! `DIRAC_POLARS_PYTHON`), every value equal to the last bit.
+//! Results read by other tools: a solution written as Parquet and as an Arrow IPC file, each read
+//! back by Polars (installed on first use into a virtual environment under the target
+//! directory, or the Python named by `DIRAC_POLARS_PYTHON`), every value equal to the last bit.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 
+use dirac::RadauStats;
 use dirac::prelude::*;
 
 use crate::zoo::ForcedSpring;
@@ -46,19 +47,20 @@ fn python() -> &'static Path {
     }
 }
 
-/// Reads a Parquet file with Polars and prints it as CSV, each value by `repr` (which reads
-/// back to the same `f64`).
+/// Reads a Parquet (`parquet`) or Arrow IPC (`ipc`) file with Polars and prints it as CSV, each
+/// value by `repr` (which reads back to the same `f64`).
 const READ: &str = r#"
 import sys
 import polars as pl
-frame = pl.read_parquet(sys.argv[1])
+frame = pl.read_parquet(sys.argv[1]) if sys.argv[2] == "parquet" else pl.read_ipc(sys.argv[1])
+assert all(t == pl.Float64 for t in frame.dtypes), frame.dtypes
 print(",".join(frame.columns))
 for row in frame.iter_rows():
     print(",".join(repr(float(x)) for x in row))
 "#;
 
-#[test]
-fn a_solution_written_as_parquet_is_read_back_by_polars_with_the_same_values() {
+/// A driven spring's solution: inputs, powers, positions, momenta and multipliers.
+fn driven_spring() -> Solution<ForcedSpring, RadauStats> {
     let mut spring = ForcedSpring { m: 1.0, k: 4.0, f: 0.0 };
     let start = consistent_state(
         &spring,
@@ -71,12 +73,13 @@ fn a_solution_written_as_parquet_is_read_back_by_polars_with_the_same_values() {
     let mut source = |t: f64, _: &State<ForcedSpring>, model: &mut ForcedSpring| model.f = (3.0 * t).sin();
     let mut radau = Radau::new(&mut spring, RadauOptions::tolerances(1e-9, 1e-9)).expect("valid options");
     radau.drive(&mut source).expect("an exclusive model");
-    let solution = radau.solve(0.0, &start, 3.0, &Sampling::Every(0.01)).expect("integrates");
-    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("forced_spring.parquet");
-    let file = std::fs::File::create(&path).expect("a file");
-    solution.write_parquet(std::io::BufWriter::new(file)).expect("written");
+    radau.solve(0.0, &start, 3.0, &Sampling::Every(0.01)).expect("integrates")
+}
 
-    let output = Command::new(python()).args(["-c", READ]).arg(&path).output().expect("python runs");
+/// Reads the file at `path` in `format` with Polars and checks every column against `solution`.
+fn read_back_equal(solution: &Solution<ForcedSpring, RadauStats>, path: &Path, format: &str) {
+    let output =
+        Command::new(python()).args(["-c", READ]).arg(path).arg(format).output().expect("python runs");
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
     let text = String::from_utf8(output.stdout).expect("UTF-8");
     let mut lines = text.lines();
@@ -92,5 +95,33 @@ fn a_solution_written_as_parquet_is_read_back_by_polars_with_the_same_values() {
             assert_eq!(row[j].to_bits(), column[k].to_bits(), "{name} at sample {k}");
         }
     }
-    println!("{} columns × {} rows read back by Polars, every value equal", header.len(), rows.len());
+    println!(
+        "{format}: {} columns × {} rows read back by Polars, every value equal",
+        header.len(),
+        rows.len()
+    );
+}
+
+#[test]
+fn a_solution_written_as_parquet_is_read_back_by_polars_with_the_same_values() {
+    let solution = driven_spring();
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("forced_spring.parquet");
+    let file = std::fs::File::create(&path).expect("a file");
+    solution.write_parquet(std::io::BufWriter::new(file)).expect("written");
+    read_back_equal(&solution, &path, "parquet");
+}
+
+#[test]
+fn a_solution_written_as_arrow_ipc_is_read_back_by_polars_with_the_same_values() {
+    let solution = driven_spring();
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("forced_spring.arrow");
+    let file = std::fs::File::create(&path).expect("a file");
+    solution.write_arrow(std::io::BufWriter::new(file)).expect("written");
+    read_back_equal(&solution, &path, "ipc");
+    // The values sit in the file as the little-endian bytes of each f64, 8-byte aligned (what
+    // lets readers map them without copying): the first column's first value, found by its bytes.
+    let bytes = std::fs::read(&path).expect("the file");
+    let first = solution.t()[1].to_le_bytes();
+    let at = bytes.windows(8).position(|w| w == first).expect("the second time's bytes");
+    assert_eq!(at % 8, 0, "at byte {at}");
 }

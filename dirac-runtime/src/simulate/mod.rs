@@ -5,6 +5,7 @@
 //!
 //! It uses analysis, the model surface and the algebra; the methods implement its traits.
 
+pub(crate) mod arrow;
 pub(crate) mod contacts;
 pub(crate) mod drive;
 /// Many simulations of one model on all cores, and sweeps split into jobs.

@@ -525,6 +525,16 @@ where
         crate::simulate::parquet::write(out, &self.all_names(), &columns)
     }
 
+    /// Writes the solution as an Apache Arrow IPC file (Feather version 2), readable by Polars
+    /// (`read_ipc`), pyarrow, pandas (`read_feather`) and DuckDB without copying: one
+    /// non-nullable `Float64` column per series, named and ordered as in
+    /// [`write_csv`](Solution::write_csv), the values exactly as computed.
+    pub fn write_arrow(&self, out: impl Write) -> io::Result<()> {
+        let columns: Vec<&[f64]> =
+            self.columns.iter().chain(&self.sensitivities).map(Vec::as_slice).collect();
+        crate::simulate::arrow::write(out, &self.all_names(), &columns)
+    }
+
     /// The names of every series, the sensitivities' (`d(x)/d(k)`) after the others.
     fn all_names(&self) -> Vec<String> {
         let len = self.layout.state.len;
