@@ -147,6 +147,7 @@ fn main() {
             support::Series { name: "linear through N = 1000", x: &log_n, y: &linear },
         ],
         log_y: true,
+        log_x: false,
     }
     .write(&path)
     .expect("the chart is written");

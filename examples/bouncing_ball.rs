@@ -127,6 +127,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "height y [m]",
         series: vec![Series { name: "height", x: t, y }],
         log_y: false,
+        log_x: false,
     }
     .write_with_markers(
         &path,

@@ -111,6 +111,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "force u / 10 [N]", x: &ut, y: &scaled },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&path)?;
     println!("wrote {}", path.display());
@@ -120,11 +121,15 @@ fn main() -> Result<(), Box<dyn Error>> {
     let tip_x: Vec<f64> = cart.iter().zip(angle).map(|(x, th)| x + l * th.sin()).collect();
     let tip_y: Vec<f64> = angle.iter().map(|th| l * th.cos()).collect();
     let path = output_dir()?.join("cart_pole.html");
-    Animation::of(&solution, "Cart-pole under a 100 Hz LQR controller")?
+    let animation = Animation::of(&solution, "Cart-pole under a 100 Hz LQR controller")?
         .point("cart", cart, &vec![0.0; cart.len()])?
         .point("tip", &tip_x, &tip_y)?
-        .link("cart", "tip")?
-        .write_html(&path)?;
+        .link("cart", "tip")?;
+    animation.write_html(&path)?;
     println!("wrote {} (open it in a browser: it plays, loops and scrubs)", path.display());
+    // The same as an image that plays by itself wherever SVG is shown.
+    let path = output_dir()?.join("cart_pole_animated.svg");
+    animation.write_svg(&path)?;
+    println!("wrote {}", path.display());
     Ok(())
 }

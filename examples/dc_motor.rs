@@ -96,7 +96,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         Series { name: "speed, PWM [rad/s]", x: pwm.t(), y: pwm_speed },
     ];
     let (title, x_label, y_label) = ("DC motor from parts", "time t [s]", "speed, current");
-    Chart { title, x_label, y_label, series, log_y: false }.write(&path)?;
+    Chart { title, x_label, y_label, series, log_y: false, log_x: false }.write(&path)?;
     println!("wrote {}", path.display());
     Ok(())
 }

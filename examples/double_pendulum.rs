@@ -94,6 +94,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "Radau, tol 1e-6", x: radau.t(), y: &er },
         ],
         log_y: true,
+        log_x: false,
     }
     .write(&energy)?;
     let residuals = dir.join("double_pendulum_constraints.svg");
@@ -106,6 +107,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "Radau", x: radau.t(), y: radau.holonomic_residual() },
         ],
         log_y: true,
+        log_x: false,
     }
     .write(&residuals)?;
     for p in [&csv, &energy, &residuals] {

@@ -70,6 +70,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "start (30% off)", x: &grid, y: &first_angle },
         ],
         log_y: false,
+        log_x: false,
     };
     chart.write_with_markers(
         &dir.join("fit_pendulum.svg"),

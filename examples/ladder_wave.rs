@@ -87,6 +87,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "voltage dφ/dt [V]",
         series: names.iter().zip(&voltages).map(|(name, y)| Series { name, x: &nodes, y }).collect(),
         log_y: false,
+        log_x: false,
     }
     .write(&wave)?;
     let energy_change: Vec<f64> = sol.energy().iter().map(|e| (e - e0).abs().max(1e-16)).collect();
@@ -97,6 +98,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "|E − E(0)| [J] (log10)",
         series: vec![Series { name: "Radau, tolerance 1e-7", x: sol.t(), y: &energy_change }],
         log_y: true,
+        log_x: false,
     }
     .write(&energy)?;
     println!("wrote {} and {}", wave.display(), energy.display());

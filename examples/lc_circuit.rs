@@ -75,6 +75,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "cos t", x: radau.t(), y: &exact },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&charge)?;
     let energy_error = |energy: &[f64]| energy.iter().map(|e| (e - energy[0]).abs()).collect::<Vec<_>>();
@@ -89,6 +90,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "variational", x: variational.t(), y: &ev },
         ],
         log_y: true,
+        log_x: false,
     }
     .write(&errors)?;
     for path in [&csv, &charge, &errors] {

@@ -147,6 +147,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "x3", x: t, y: torn.q(Chain::right(Primitive2::X3)) },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&positions)?;
     let energy_error: Vec<f64> = torn.energy().iter().map(|e| (e - e0).abs()).collect();
@@ -163,6 +164,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "max |x torn - x whole| [m]", x: t, y: &deviation },
         ],
         log_y: true,
+        log_x: false,
     }
     .write(&errors)?;
     let forces = dir.join("mass_spring_chain_port_forces.svg");
@@ -172,6 +174,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "force [N]",
         series: vec![Series { name: "f2", x: t, y: f2 }, Series { name: "f2bar", x: t, y: f2bar }],
         log_y: false,
+        log_x: false,
     }
     .write(&forces)?;
     for path in [&csv, &positions, &errors, &forces] {

@@ -138,6 +138,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "speed omega [rad/s]", x: t, y: omega },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&states)?;
     let power = dir.join("motor_load_power.svg");
@@ -152,6 +153,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "friction b omega^2", x: t, y: &friction },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&power)?;
     let driven = driven_by_tables(&drive, &start)?;
@@ -203,6 +205,7 @@ fn driven_by_tables(drive: &Drive, start: &State<Drive>) -> Result<std::path::Pa
             Series { name: "PWM 50% at 20 Hz, 12 V", x: pulsed.t(), y: pulsed.v(Drive::MOTOR_THETA) },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&path)?;
     Ok(path)

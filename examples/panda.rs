@@ -104,6 +104,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "joint angle [rad]",
         series,
         log_y: false,
+        log_x: false,
     }
     .write(&joints)?;
     let (ut, u): (Vec<f64>, Vec<f64>) = commands.into_iter().unzip();
@@ -121,6 +122,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "voltage [10 V]", x: t, y: &tenths },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&motor)?;
     println!("wrote {} and {}", joints.display(), motor.display());

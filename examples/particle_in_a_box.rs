@@ -124,6 +124,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "|E(t) − E(0)| [J]",
         series,
         log_y: true,
+        log_x: false,
     }
     .write(&path)?;
     println!("wrote {}", path.display());

@@ -64,6 +64,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "start", x: &cells, y: &uniform },
         ],
         log_y: false,
+        log_x: false,
     };
     chart.write_with_markers(
         &dir.join("profile_recovery.svg"),

@@ -91,6 +91,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&path)?;
     let energy_error = |energy: &[f64]| energy.iter().map(|e| (e - energy[0]).abs()).collect::<Vec<_>>();
@@ -111,6 +112,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             },
         ],
         log_y: true,
+        log_x: false,
     }
     .write(&errors)?;
     for p in [&csv, &path, &errors] {

@@ -134,6 +134,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "drive torque [N m]", x: t, y: torque },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&motion)?;
     let damper: Vec<f64> = radau.power().iter().map(|p| -p).collect();
@@ -152,6 +153,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             Series { name: "stored, dE/dt", x: &t[1..t.len() - 1], y: &rate },
         ],
         log_y: false,
+        log_x: false,
     }
     .write(&power)?;
     for p in [&motion, &power] {

@@ -112,6 +112,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         y_label: "x [m], ∂x/∂μs [m]",
         series: vec![Series { name: "x", x: t, y: x }, Series { name: "∂x/∂μs", x: t, y: dx }],
         log_y: false,
+        log_x: false,
     }
     .write_with_markers(&path, &[Series { name: "switch", x: &switches, y: &at_switches }])?;
     println!("wrote {}", path.display());

@@ -30,7 +30,7 @@
 //!
 //! A model of fixed size needs none: the derives, the three integrators, events, impacts,
 //! sensitivities, the adjoint, linearisation, [`control`] design, [`plot`]s and animations, and
-//! CSV and Parquet output are always compiled. The rest is opt-in, so that a crate with one
+//! CSV, Parquet and Arrow output are always compiled. The rest is opt-in, so that a crate with one
 //! model builds in about a third of the time and with half the crates:
 //!
 //! | feature | on by default | gives | brings |

@@ -1,4 +1,4 @@
-//! Animations of planar mechanisms as one self-contained HTML file.
+//! Animations of planar mechanisms as one self-contained HTML file, or as an animated SVG.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -15,6 +15,11 @@ use super::figure::PlotError;
 /// Between samples the positions are interpolated linearly. Opening the file with `#t=0.25`
 /// after its name shows the mechanism at `t = 0.25`, paused; each dot carries the position
 /// it is drawn at (`data-x`, `data-y`, in the model's units) and the clock its time (`data-t`).
+///
+/// [`svg`](Animation::svg) writes the same animation as one SVG image that plays by itself,
+/// in real time and looping, wherever SVG is shown (a browser, a README, a slide): no script,
+/// its motion declared by SVG's own `<animate>` elements. Every sample is a key frame, so
+/// sample the solution as finely as the eye needs (`Sampling::Every(1.0 / 30.0)`), not more.
 ///
 /// ```
 /// use dirac::plot::Animation;
@@ -128,17 +133,6 @@ impl Animation {
 
     /// The animation as an HTML document.
     pub fn html(&self) -> String {
-        let (mut x0, mut x1, mut y0, mut y1) =
-            (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
-        for p in &self.points {
-            for (&x, &y) in p.x.iter().zip(&p.y).filter(|(x, y)| x.is_finite() && y.is_finite()) {
-                (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
-            }
-        }
-        if !(x0.is_finite() && y0.is_finite()) {
-            (x0, x1, y0, y1) = (-1.0, 1.0, -1.0, 1.0);
-        }
-        let margin = 0.05 * (x1 - x0).max(y1 - y0).max(1e-9);
         let mut data = String::from("{\"t\":");
         numbers(&mut data, &self.times);
         data.push_str(",\"points\":[");
@@ -156,7 +150,7 @@ impl Animation {
         let links: Vec<String> = self.links.iter().map(|(a, b)| format!("[{a},{b}]")).collect();
         data.push_str(&links.join(","));
         data.push_str("],\"bounds\":");
-        numbers(&mut data, &[x0 - margin, x1 + margin, y0 - margin, y1 + margin]);
+        numbers(&mut data, &self.bounds());
         data.push('}');
         let title = escape(&self.title);
         PAGE.replace("{title}", &title).replace("{data}", &data)
@@ -165,6 +159,164 @@ impl Animation {
     /// Writes the animation as an HTML file.
     pub fn write_html(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
         std::fs::write(path, self.html())
+    }
+
+    /// The animation as an SVG image that plays by itself, looping: points as dots and links
+    /// as lines, drawn in the model's units (the points' `cx`, `cy` are the model's `x`, `y`,
+    /// flipped and scaled onto the picture by one transform), interpolated linearly between
+    /// samples, with a bar along the bottom showing the time. A point is hidden while its
+    /// position is not finite.
+    pub fn svg(&self) -> String {
+        let [x0, x1, y0, y1] = self.bounds();
+        let (w, h, pad) = (640.0, 480.0, 24.0);
+        let scale = ((w - 2.0 * pad) / (x1 - x0)).min((h - 2.0 * pad - 24.0) / (y1 - y0));
+        // Model (x, y) to picture: x' = a + s x, y' = b − s y, the drawing centred.
+        let a = pad + ((w - 2.0 * pad) - (x1 - x0) * scale) / 2.0 - x0 * scale;
+        let b = h - pad - 24.0 - ((h - 2.0 * pad - 24.0) - (y1 - y0) * scale) / 2.0 + y0 * scale;
+        let (start, end) = (self.times[0], self.times[self.times.len() - 1]);
+        let span = end - start;
+        let timing = if span > 0.0 {
+            let mut keys = String::new();
+            for (k, t) in self.times.iter().enumerate() {
+                let _ = write!(keys, "{}{:e}", if k > 0 { ";" } else { "" }, (t - start) / span);
+            }
+            Some(format!(r#"dur="{span:e}s" repeatCount="indefinite" keyTimes="{keys}""#))
+        } else {
+            None
+        };
+        let title = escape(&self.title);
+        let mut out = String::new();
+        let _ = write!(
+            out,
+            r##"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif" font-size="13">
+<title>{title}</title>
+<rect width="{w}" height="{h}" fill="white"/>
+<g id="stage" transform="matrix({scale:e} 0 0 {neg:e} {a:e} {b:e})">
+"##,
+            neg = -scale
+        );
+        for &(i, j) in &self.links {
+            let (p, q) = (&self.points[i], &self.points[j]);
+            let ends = [("x1", &p.x), ("y1", &p.y), ("x2", &q.x), ("y2", &q.y)];
+            out.push_str("<line stroke=\"#333\" stroke-width=\"3\" stroke-linecap=\"round\" vector-effect=\"non-scaling-stroke\"");
+            for (name, series) in ends {
+                let _ = write!(out, r#" {name}="{:e}""#, first_finite(series));
+            }
+            out.push('>');
+            for (name, series) in ends {
+                animate(&mut out, name, series, timing.as_deref());
+            }
+            visibility(&mut out, &[&p.x, &p.y, &q.x, &q.y], timing.as_deref());
+            out.push_str("</line>\n");
+        }
+        for p in &self.points {
+            let fixed = p.x.iter().all(|&x| x == p.x[0]) && p.y.iter().all(|&y| y == p.y[0]);
+            let _ = write!(
+                out,
+                r##"<circle id="point-{id}" r="{r:e}" cx="{cx:e}" cy="{cy:e}" fill="{fill}" stroke="#123" vector-effect="non-scaling-stroke"><title>{id}</title>"##,
+                id = escape(&p.name),
+                r = 7.0 / scale,
+                cx = first_finite(&p.x),
+                cy = first_finite(&p.y),
+                fill = if fixed { "#888" } else { "#1f77b4" },
+            );
+            if !fixed {
+                animate(&mut out, "cx", &p.x, timing.as_deref());
+                animate(&mut out, "cy", &p.y, timing.as_deref());
+            }
+            visibility(&mut out, &[&p.x, &p.y], timing.as_deref());
+            out.push_str("</circle>\n");
+        }
+        let bar = w - 2.0 * pad;
+        let _ = write!(
+            out,
+            r##"</g>
+<text x="{pad}" y="{label}">{title}</text>
+<text x="{right}" y="{label}" text-anchor="end">{start} s to {end} s</text>
+<rect x="{pad}" y="{track}" width="{bar}" height="4" fill="#ddd"/>
+<rect id="time" x="{pad}" y="{track}" width="{width}" height="4" fill="#1f77b4">"##,
+            label = h - 14.0,
+            right = w - pad,
+            track = h - 30.0,
+            width = if span > 0.0 { 0.0 } else { bar },
+        );
+        if span > 0.0 {
+            let _ = write!(
+                out,
+                r#"<animate attributeName="width" from="0" to="{bar}" dur="{span:e}s" repeatCount="indefinite"/>"#
+            );
+        }
+        out.push_str("</rect>\n</svg>\n");
+        out
+    }
+
+    /// Writes the animation as an SVG file.
+    pub fn write_svg(&self, path: impl AsRef<Path>) -> std::io::Result<()> {
+        std::fs::write(path, self.svg())
+    }
+
+    /// The box the points move in, `[x0, x1, y0, y1]`, with a margin; the unit square about the
+    /// origin when no position is finite.
+    fn bounds(&self) -> [f64; 4] {
+        let (mut x0, mut x1, mut y0, mut y1) =
+            (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+        for p in &self.points {
+            for (&x, &y) in p.x.iter().zip(&p.y).filter(|(x, y)| x.is_finite() && y.is_finite()) {
+                (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+            }
+        }
+        if !(x0.is_finite() && y0.is_finite()) {
+            (x0, x1, y0, y1) = (-1.0, 1.0, -1.0, 1.0);
+        }
+        let margin = 0.05 * (x1 - x0).max(y1 - y0).max(1e-9);
+        [x0 - margin, x1 + margin, y0 - margin, y1 + margin]
+    }
+}
+
+/// The first finite value of a series, or zero.
+fn first_finite(series: &[f64]) -> f64 {
+    series.iter().copied().find(|x| x.is_finite()).unwrap_or(0.0)
+}
+
+/// An `<animate>` of attribute `name` through `series`, one key frame per sample; a value that
+/// is not finite holds the last finite one (the element is hidden then). Nothing for a still
+/// picture (`timing` none).
+fn animate(out: &mut String, name: &str, series: &[f64], timing: Option<&str>) {
+    let Some(timing) = timing else { return };
+    let _ = write!(out, r#"<animate attributeName="{name}" calcMode="linear" {timing} values=""#);
+    let mut held = first_finite(series);
+    for (k, &x) in series.iter().enumerate() {
+        if x.is_finite() {
+            held = x;
+        }
+        let _ = write!(out, "{}{held:e}", if k > 0 { ";" } else { "" });
+    }
+    out.push_str(r#""/>"#);
+}
+
+/// Hides an element while any of `series` is not finite: a discrete `<animate>` of its
+/// visibility, or a fixed `visibility` when nothing moves.
+fn visibility(out: &mut String, series: &[&Vec<f64>], timing: Option<&str>) {
+    let shown = |k: usize| series.iter().all(|s| s[k].is_finite());
+    let n = series.first().map_or(0, |s| s.len());
+    if (0..n).all(shown) {
+        return;
+    }
+    match timing {
+        Some(timing) => {
+            let _ =
+                write!(out, r#"<animate attributeName="visibility" calcMode="discrete" {timing} values=""#);
+            for k in 0..n {
+                let _ = write!(
+                    out,
+                    "{}{}",
+                    if k > 0 { ";" } else { "" },
+                    if shown(k) { "visible" } else { "hidden" }
+                );
+            }
+            out.push_str(r#""/>"#);
+        }
+        None => out.push_str(r#"<set attributeName="visibility" to="hidden"/>"#),
     }
 }
 

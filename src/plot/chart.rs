@@ -28,6 +28,8 @@ pub struct Chart<'a> {
     pub series: Vec<Series<'a>>,
     /// Plot the y values on a log10 scale (for errors).
     pub log_y: bool,
+    /// Plot the x values on a log10 scale (errors, tolerances, frequencies).
+    pub log_x: bool,
 }
 
 const COLORS: [&str; 6] = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"];
@@ -50,6 +52,12 @@ fn ticks(lo: f64, hi: f64) -> Vec<f64> {
         .unwrap_or(10.0 * magnitude);
     let first = (lo / step).ceil() * step;
     (0..).map(|k| first + k as f64 * step).take_while(|t| *t <= hi + 1e-9 * span).collect()
+}
+
+/// Whole decades (log₁₀ values) covering [lo, hi], at most about six of them.
+fn decades(lo: f64, hi: f64) -> Vec<f64> {
+    let step = ((hi - lo) / 6.0).ceil().max(1.0);
+    (0..).map(|k| lo.ceil() + k as f64 * step).take_while(|t| *t <= hi).collect()
 }
 
 fn label(value: f64, log: bool) -> String {
@@ -78,13 +86,14 @@ impl Chart<'_> {
     /// The chart as an SVG document, with `markers` drawn as points.
     pub fn svg(&self, markers: &[Series<'_>]) -> String {
         // On a log scale, zeros (exact values) are left out rather than drawn at 1e-300.
-        let transform =
-            |y: f64| if self.log_y { if y.abs() > 0.0 { y.abs().log10() } else { f64::NAN } } else { y };
+        let log = |v: f64| if v.abs() > 0.0 { v.abs().log10() } else { f64::NAN };
+        let transform = |y: f64| if self.log_y { log(y) } else { y };
+        let transform_x = |x: f64| if self.log_x { log(x) } else { x };
         let points = || {
             self.series
                 .iter()
                 .chain(markers)
-                .flat_map(|s| s.x.iter().zip(s.y).map(|(x, y)| (*x, transform(*y))))
+                .flat_map(|s| s.x.iter().zip(s.y).map(|(x, y)| (transform_x(*x), transform(*y))))
         };
         let (mut x0, mut x1, mut y0, mut y1) =
             (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
@@ -93,6 +102,9 @@ impl Chart<'_> {
         }
         if y1 - y0 < 1e-12 * y1.abs().max(1.0) {
             (y0, y1) = (y0 - 1.0, y1 + 1.0);
+        }
+        if self.log_x && x1 - x0 < 1e-12 * x1.abs().max(1.0) {
+            (x0, x1) = (x0 - 0.5, x1 + 0.5);
         }
         let pad = 0.05 * (y1 - y0);
         (y0, y1) = (y0 - pad, y1 + pad);
@@ -115,7 +127,8 @@ impl Chart<'_> {
             svg,
             r##"<rect x="{LEFT}" y="{TOP}" width="{pw}" height="{ph}" fill="none" stroke="#444"/>"##
         );
-        for t in ticks(x0, x1) {
+        let x_ticks = if self.log_x { decades(x0, x1) } else { ticks(x0, x1) };
+        for t in x_ticks {
             let x = sx(t);
             let _ =
                 writeln!(svg, r##"<line x1="{x}" y1="{TOP}" x2="{x}" y2="{}" stroke="#ddd"/>"##, TOP + ph);
@@ -123,15 +136,10 @@ impl Chart<'_> {
                 svg,
                 r#"<text x="{x}" y="{}" text-anchor="middle">{}</text>"#,
                 TOP + ph + 18.0,
-                label(t, false)
+                label(t, self.log_x)
             );
         }
-        let y_ticks = if self.log_y {
-            let step = ((y1 - y0) / 6.0).ceil().max(1.0);
-            (0..).map(|k| y0.ceil() + k as f64 * step).take_while(|t| *t <= y1).collect()
-        } else {
-            ticks(y0, y1)
-        };
+        let y_ticks = if self.log_y { decades(y0, y1) } else { ticks(y0, y1) };
         for t in y_ticks {
             let y = sy(t);
             let _ =
@@ -162,9 +170,9 @@ impl Chart<'_> {
             let color = COLORS[k % COLORS.len()];
             let mut path = String::new();
             for (x, y) in s.x.iter().zip(s.y) {
-                let y = transform(*y);
+                let (x, y) = (transform_x(*x), transform(*y));
                 if x.is_finite() && y.is_finite() {
-                    let _ = write!(path, "{:.2},{:.2} ", sx(*x), sy(y));
+                    let _ = write!(path, "{:.2},{:.2} ", sx(x), sy(y));
                 }
             }
             let _ = writeln!(
@@ -184,12 +192,12 @@ impl Chart<'_> {
             let k = self.series.len() + k;
             let color = COLORS[k % COLORS.len()];
             for (x, y) in s.x.iter().zip(s.y) {
-                let y = transform(*y);
+                let (x, y) = (transform_x(*x), transform(*y));
                 if x.is_finite() && y.is_finite() {
                     let _ = writeln!(
                         svg,
                         r#"<circle cx="{:.2}" cy="{:.2}" r="4" fill="none" stroke="{color}" stroke-width="1.5"/>"#,
-                        sx(*x),
+                        sx(x),
                         sy(y)
                     );
                 }

@@ -6,6 +6,7 @@ use dirac_runtime::nalgebra::DefaultAllocator;
 use dirac_runtime::{LagrangeDirac, Solution, Storage};
 
 use super::chart::{Chart, Series};
+use super::work_precision::Run;
 
 /// A chart of named series: a solution's columns against time, several solutions overlaid,
 /// a phase portrait, or any series, with events and impacts marked. Written as SVG.
@@ -43,6 +44,7 @@ pub struct Figure {
     lines: Vec<Line>,
     markers: Vec<Line>,
     log_y: bool,
+    log_x: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -99,6 +101,7 @@ impl Figure {
             lines: Vec::new(),
             markers: Vec::new(),
             log_y: false,
+            log_x: false,
         }
     }
 
@@ -198,6 +201,37 @@ impl Figure {
         self
     }
 
+    /// The same figure with the horizontal axis on a log₁₀ scale (errors, tolerances,
+    /// frequencies).
+    pub fn log_x(mut self) -> Self {
+        self.log_x = true;
+        self
+    }
+
+    /// A work-precision diagram: for each method (a name and its runs, from
+    /// [`work_precision`](crate::plot::work_precision))
+    /// the wall-clock time of each run against the error it reached, both on log scales. Lower
+    /// and further left is better; a method's line is its price for each digit.
+    ///
+    /// ```
+    /// use dirac::plot::{Figure, Run};
+    ///
+    /// let runs = [Run { tolerance: 1e-6, error: 3e-6, seconds: 0.01 }, Run { tolerance: 1e-9, error: 2e-9, seconds: 0.04 }];
+    /// let svg = Figure::work_precision("a pendulum", &[("Radau", &runs)])?.svg();
+    /// assert!(svg.contains("error") && svg.contains("Radau"));
+    /// # Ok::<(), dirac::plot::PlotError>(())
+    /// ```
+    pub fn work_precision(title: impl Into<String>, methods: &[(&str, &[Run])]) -> Result<Self, PlotError> {
+        let mut figure =
+            Figure::new(title).x_label("error reached").y_label("wall-clock time [s]").log_x().log_y();
+        for (name, runs) in methods {
+            let errors: Vec<f64> = runs.iter().map(|r| r.error).collect();
+            let seconds: Vec<f64> = runs.iter().map(|r| r.seconds).collect();
+            figure = figure.line(*name, &errors, &seconds)?;
+        }
+        Ok(figure)
+    }
+
     /// The names of the lines and markers, in the legend's order.
     pub fn legend(&self) -> Vec<&str> {
         self.lines.iter().chain(&self.markers).map(|l| l.name.as_str()).collect()
@@ -214,6 +248,7 @@ impl Figure {
             y_label: &self.y_label,
             series: series(&self.lines),
             log_y: self.log_y,
+            log_x: self.log_x,
         };
         chart.svg(&series(&self.markers))
     }

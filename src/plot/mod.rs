@@ -1,6 +1,8 @@
 //! Figures and animations of results, as files people open: SVG charts of a solution's series
 //! ([`Figure`]), with events and impacts marked and several solutions overlaid; and
-//! self-contained HTML animations of planar mechanisms ([`Animation`]) that play, scrub and loop.
+//! animations of planar mechanisms ([`Animation`]): self-contained HTML that plays, scrubs and
+//! loops, or an SVG image that plays by itself. [`work_precision`] runs a method at several
+//! tolerances and [`Figure::work_precision`] draws what each digit costs.
 //!
 //! Both are written by hand-rolled SVG: text is laid out by the viewer, so nothing here needs
 //! fonts or a graphics library. [`Chart`] is the line chart underneath, for series that do not
@@ -17,6 +19,7 @@
 //!     y_label: "y",
 //!     series: vec![Series { name: "sin t", x: &t, y: &y }],
 //!     log_y: false,
+//!     log_x: false,
 //! };
 //! let svg = chart.svg(&[]);
 //! assert!(svg.starts_with("<svg") && svg.contains("sin t") && svg.contains("t (s)"));
@@ -25,7 +28,9 @@
 mod animation;
 mod chart;
 mod figure;
+mod work_precision;
 
 pub use animation::Animation;
 pub use chart::{Chart, Series};
 pub use figure::{Figure, PlotError};
+pub use work_precision::{Run, work_precision};

@@ -107,6 +107,7 @@ impl Waveforms {
                 .map(|k| crate::plot::Series { name: &self.names[k], x: &self.times, y: &self.columns[k] })
                 .collect(),
             log_y: false,
+            log_x: false,
         };
         chart.write(path)
     }

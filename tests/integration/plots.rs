@@ -205,3 +205,139 @@ fn an_animation_in_headless_chromium_draws_the_solutions_positions_at_the_times_
     let (ux, uy) = drawn(&page, "upper");
     assert!((ux.hypot(uy) - 1.0).abs() < 1e-3, "{}", ux.hypot(uy));
 }
+
+/// Where the animated SVG at `path` draws `point` at time `time` after it began: the SVG is put
+/// in a page whose script pauses its animations at that time and writes the circle's animated
+/// centre (`cx`, `cy`: the model's `x`, `y`) into the page, which Chromium then dumps.
+fn svg_drawn_at(path: &Path, point: &str, time: f64) -> (f64, f64) {
+    let svg = std::fs::read_to_string(path).expect("the SVG");
+    let page = format!(
+        r#"<!DOCTYPE html><html><body>{svg}<pre id="out"></pre><script>
+window.addEventListener("load", () => {{
+  const stage = document.querySelector("svg");
+  stage.pauseAnimations();
+  stage.setCurrentTime({time:e});
+  setTimeout(() => {{
+    const c = document.getElementById("point-{point}");
+    document.getElementById("out").setAttribute("data-at", c.cx.animVal.value + " " + c.cy.animVal.value);
+  }}, 50);
+}});
+</script></body></html>"#
+    );
+    let wrapper = path.with_extension(format!("{point}.{time}.html"));
+    std::fs::write(&wrapper, page).expect("written");
+    let url = format!("file://{}", wrapper.display());
+    let output = Command::new(chromium())
+        .args(["--virtual-time-budget=1000", "--dump-dom", &url])
+        .output()
+        .expect("Chromium runs");
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let dom = String::from_utf8(output.stdout).expect("UTF-8");
+    let out = elements(&dom, "pre").into_iter().find(|p| p.contains("id=\"out\"")).expect("the output");
+    let at = attribute(out, "data-at").unwrap_or_else(|| panic!("nothing read from the SVG: {out}"));
+    let mut values = at.split(' ').map(|v| v.parse::<f64>().expect("a number"));
+    (values.next().expect("x"), values.next().expect("y"))
+}
+
+/// The same double pendulum as an animated SVG, played by Chromium's SMIL engine and paused at
+/// two times: at a sample it draws the sample, between samples the straight line between
+/// them. An SVG length is single precision, hence the 1e-6.
+#[test]
+fn an_animated_svg_in_headless_chromium_draws_the_solutions_positions_at_the_times_asked() {
+    let mut pendulum = DoublePendulum { m1: 1.0, m2: 0.5, l1: 1.0, l2: 0.7, g: 9.81 };
+    let q = VecQ::<DoublePendulum>::from([1.0, 0.0, 1.7, 0.0]);
+    let start =
+        consistent_state(&pendulum, 0.0, &q, &VecQ::<DoublePendulum>::zeros(), Consistency::default())
+            .expect("a consistent start");
+    let solution = Radau::new(&mut pendulum, RadauOptions::tolerances(1e-10, 1e-10))
+        .and_then(|mut radau| radau.solve(0.0, &start, 2.0, &Sampling::Every(1.0 / 30.0)))
+        .expect("swings");
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("double_pendulum.svg");
+    let animation = Animation::of(&solution, "A double pendulum")
+        .map(|a| a.fixed("pivot", 0.0, 0.0))
+        .and_then(|a| a.point_of(&solution, "upper", "x1", "y1"))
+        .and_then(|a| a.point_of(&solution, "lower", "x2", "y2"))
+        .and_then(|a| a.link("pivot", "upper"))
+        .and_then(|a| a.link("upper", "lower"))
+        .expect("an animation");
+    animation.write_svg(&path).expect("written");
+    let svg = std::fs::read_to_string(&path).expect("the SVG");
+    assert!(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""), "{}", &svg[..80]);
+    assert_eq!(elements(&svg, "circle").len(), 3);
+    assert_eq!(elements(&svg, "line").len(), 2);
+    assert!(!svg.contains("<script"), "an SVG that plays without a script");
+
+    let (t, xs, ys) = (solution.t(), solution.column("x2").expect("x2"), solution.column("y2").expect("y2"));
+    let k = 37;
+    let (x, y) = svg_drawn_at(&path, "lower", t[k]);
+    println!("t = {}: drawn ({x}, {y}), solution ({}, {})", t[k], xs[k], ys[k]);
+    assert!(
+        (x - xs[k]).abs() < 1e-6 && (y - ys[k]).abs() < 1e-6,
+        "({x}, {y}) against ({}, {})",
+        xs[k],
+        ys[k]
+    );
+
+    let between = 1.2345;
+    let (x, y) = svg_drawn_at(&path, "lower", between);
+    let j = t.partition_point(|&s| s <= between) - 1;
+    let w = (between - t[j]) / (t[j + 1] - t[j]);
+    let (lx, ly) = (xs[j] + w * (xs[j + 1] - xs[j]), ys[j] + w * (ys[j + 1] - ys[j]));
+    println!("t = {between}: drawn ({x}, {y}), between the samples ({lx}, {ly})");
+    assert!((x - lx).abs() < 1e-6 && (y - ly).abs() < 1e-6, "({x}, {y}) against ({lx}, {ly})");
+    // Not merely a sample: the samples on either side are far apart at this resolution.
+    assert!((xs[j + 1] - xs[j]).abs() > 1e-3, "{} {}", xs[j], xs[j + 1]);
+    // The pivot does not move.
+    let (px, py) = svg_drawn_at(&path, "pivot", between);
+    assert_eq!((px, py), (0.0, 0.0));
+}
+
+/// A work-precision sweep of Radau and the explicit method on a spring (x = cos 2t exactly):
+/// tighter tolerances reach smaller errors at more cost, and the diagram draws both methods on
+/// log scales.
+#[test]
+fn a_work_precision_sweep_reaches_smaller_errors_at_tighter_tolerances_and_is_drawn_on_log_scales() {
+    use dirac::plot::{Run, work_precision};
+    #[derive(LagrangeDirac)]
+    #[dirac(coordinates(x => v), lagrangian = 0.5 * v * v - 2.0 * x * x)]
+    struct Spring {}
+    let model = Spring {};
+    let mut start = State::<Spring>::zeros();
+    start.set_q(Spring::X, 1.0);
+    let t_end: f64 = 10.0;
+    let exact = (2.0 * t_end).cos();
+    let tolerances = [1e-4, 1e-6, 1e-8, 1e-10];
+    let radau = work_precision(&tolerances, 2, |tol| -> Result<f64, SimError> {
+        let mut radau = Radau::new(&model, RadauOptions::tolerances(tol, tol))?;
+        let end = radau.solve(0.0, &start, t_end, &Sampling::Times(vec![t_end]))?;
+        Ok((end.last().expect("a sample").q[0] - exact).abs())
+    })
+    .expect("Radau runs");
+    let explicit = work_precision(&tolerances, 2, |tol| -> Result<f64, SimError> {
+        let options = ExplicitOptions { rtol: tol, atol: tol, ..ExplicitOptions::default() };
+        let mut explicit = Explicit::new(&model, options)?;
+        let end = explicit.solve(0.0, &start, t_end, &Sampling::Times(vec![t_end]))?;
+        Ok((end.last().expect("a sample").q[0] - exact).abs())
+    })
+    .expect("explicit runs");
+    for (name, runs) in [("Radau", &radau), ("explicit", &explicit)] {
+        println!("{name}: {runs:?}");
+        assert_eq!(runs.iter().map(|r| r.tolerance).collect::<Vec<_>>(), tolerances);
+        assert!(runs.iter().all(|r| r.seconds > 0.0 && r.seconds.is_finite()), "{name}");
+        // Six decades of tolerance buy at least four of error.
+        assert!(runs[3].error < 1e-4 * runs[0].error, "{name}: {runs:?}");
+    }
+    // A sweep stops at the first failure and returns it.
+    let refused: Result<Vec<Run>, &str> =
+        work_precision(&tolerances, 1, |tol| if tol < 1e-7 { Err("too tight") } else { Ok(tol) });
+    assert_eq!(refused, Err("too tight"));
+
+    let figure =
+        Figure::work_precision("A spring", &[("Radau", &radau), ("explicit", &explicit)]).expect("a figure");
+    let svg = figure.svg();
+    assert_eq!(elements(&svg, "polyline").len(), 2);
+    assert_eq!(figure.legend(), ["Radau", "explicit"]);
+    assert!(svg.contains(">error reached<") && svg.contains(">wall-clock time [s]<"));
+    // Decade labels on both axes: the errors span 1e-4 down past 1e-8.
+    assert!(svg.contains(">1e-8<") || svg.contains(">1e-9<"), "{svg}");
+}
