@@ -114,6 +114,48 @@ fn radau_steps_do_not_allocate() {
     assert_eq!(allocations() - before, 1);
 }
 
+/// The allocations of a whole `solve_with_progress` (reports every step) to `t_end`, sampled at
+/// the end only, with `integrator`, and the number of reports.
+fn allocations_with_progress<I: Integrator<Pendulum>>(
+    integrator: &mut I,
+    start: &State<Pendulum>,
+    t_end: f64,
+) -> (usize, usize) {
+    let sampling = Sampling::Times(vec![t_end]);
+    let mut reports = 0;
+    let before = allocations();
+    let solution = integrator
+        .solve_with_progress(0.0, start, t_end, &sampling, std::time::Duration::ZERO, |progress| {
+            reports += 1;
+            std::hint::black_box(progress.fraction());
+        })
+        .expect("solves");
+    let counted = allocations() - before;
+    drop(solution);
+    (counted, reports)
+}
+
+/// Progress reported after every step costs no allocation per step: a run ten times as long,
+/// with ten times the reports, allocates as often (the solution's storage and the start's).
+#[test]
+fn progress_reports_do_not_allocate() {
+    let p = unit_pendulum();
+    let s = horizontal_start(&p);
+    let mut radau = Radau::new(&p, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid options");
+    allocations_with_progress(&mut radau, &s, 1.0);
+    let (short, few) = allocations_with_progress(&mut radau, &s, 1.0);
+    let (long, many) = allocations_with_progress(&mut radau, &s, 10.0);
+    assert!(many > 5 * few, "{few} and {many} reports");
+    assert_eq!(short, long, "Radau: {few} reports with {short} allocations, {many} with {long}");
+
+    let mut explicit = Explicit::new(&p, ExplicitOptions::default()).expect("valid options");
+    allocations_with_progress(&mut explicit, &s, 1.0);
+    let (short, few) = allocations_with_progress(&mut explicit, &s, 1.0);
+    let (long, many) = allocations_with_progress(&mut explicit, &s, 10.0);
+    assert!(many > 5 * few, "{few} and {many} reports");
+    assert_eq!(short, long, "explicit: {few} reports with {short} allocations, {many} with {long}");
+}
+
 /// Steps the variational integrator 200 times after 5 warm-up steps; allocations during them.
 fn allocations_in_variational_steps<M: LagrangeDirac>(
     model: &M,

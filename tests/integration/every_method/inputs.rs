@@ -334,4 +334,29 @@ fn inputs_and_powers_are_recorded_by_every_driver_in_every_method() {
     let solution = variational.solve(0.0, &begin, 2.0, &Sampling::Every(0.05)).expect("integrates");
     let t = solution.t().to_vec();
     inputs_and_powers_recorded("Variational, driven", &solution, c, |k| u0 * (w * t[k]).sin());
+
+    // Through located events (the spring passing x = 0) and with sensitivities: a drive's
+    // samples are read again at their own times there too, events' samples among them.
+    let (mut source_events, mut source_sensitivities) = (source, source);
+    let mut radau = Radau::new(&mut driven, fineness.radau()).expect("valid options");
+    radau.drive(&mut source_events).expect("an exclusive model");
+    let mut events =
+        Events::new().on("x_zero", Crossing::Either, |_, s: &State<DampedForced>, _| s.q(DampedForced::X));
+    let solution = radau
+        .solve_with_events(0.0, &begin, 2.0, &Sampling::Every(0.05), &mut events, |_, _| {
+            std::ops::ControlFlow::Continue(())
+        })
+        .expect("integrates");
+    assert!(!solution.event_times("x_zero").expect("an event of that name").is_empty());
+    let t = solution.t().to_vec();
+    inputs_and_powers_recorded("Radau, driven, with events", &solution, c, |k| u0 * (w * t[k]).sin());
+    let wrt = Sensitivities::new(&driven).parameter("k").expect("a parameter");
+    let mut radau = Radau::new(&mut driven, fineness.radau())
+        .and_then(|radau| radau.with_sensitivities(&wrt))
+        .expect("valid options");
+    radau.drive(&mut source_sensitivities).expect("an exclusive model");
+    let solution =
+        radau.solve_with_sensitivities(0.0, &begin, 2.0, &Sampling::Every(0.05)).expect("integrates");
+    let t = solution.t().to_vec();
+    inputs_and_powers_recorded("Radau, driven, with sensitivities", &solution, c, |k| u0 * (w * t[k]).sin());
 }
