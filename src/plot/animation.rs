@@ -176,11 +176,13 @@ impl Animation {
         let (start, end) = (self.times[0], self.times[self.times.len() - 1]);
         let span = end - start;
         let timing = if span > 0.0 {
+            // Clock values and key times in plain decimals (`Display`, never an exponent), which
+            // is all SMIL's grammar for them allows.
             let mut keys = String::new();
             for (k, t) in self.times.iter().enumerate() {
-                let _ = write!(keys, "{}{:e}", if k > 0 { ";" } else { "" }, (t - start) / span);
+                let _ = write!(keys, "{}{}", if k > 0 { ";" } else { "" }, (t - start) / span);
             }
-            Some(format!(r#"dur="{span:e}s" repeatCount="indefinite" keyTimes="{keys}""#))
+            Some(format!(r#"dur="{span}s" repeatCount="indefinite" keyTimes="{keys}""#))
         } else {
             None
         };
@@ -243,7 +245,7 @@ impl Animation {
         if span > 0.0 {
             let _ = write!(
                 out,
-                r#"<animate attributeName="width" from="0" to="{bar}" dur="{span:e}s" repeatCount="indefinite"/>"#
+                r#"<animate attributeName="width" from="0" to="{bar}" dur="{span}s" repeatCount="indefinite"/>"#
             );
         }
         out.push_str("</rect>\n</svg>\n");

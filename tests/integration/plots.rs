@@ -266,6 +266,16 @@ fn an_animated_svg_in_headless_chromium_draws_the_solutions_positions_at_the_tim
     assert_eq!(elements(&svg, "circle").len(), 3);
     assert_eq!(elements(&svg, "line").len(), 2);
     assert!(!svg.contains("<script"), "an SVG that plays without a script");
+    // SMIL's clock values and key times have no exponent form: plain decimals only.
+    // Two moving points (cx, cy), two links (both ends), the time bar; the pivot stands still.
+    let animates = elements(&svg, "animate");
+    assert_eq!(animates.len(), 2 * 2 + 2 * 4 + 1);
+    for animate in animates {
+        for name in ["dur", "keyTimes"] {
+            let value = attribute(animate, name).unwrap_or("");
+            assert!(!value.contains(['e', 'E']), "{name}=\"{value}\"");
+        }
+    }
 
     let (t, xs, ys) = (solution.t(), solution.column("x2").expect("x2"), solution.column("y2").expect("y2"));
     let k = 37;
