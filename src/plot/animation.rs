@@ -73,9 +73,16 @@ impl Animation {
         Animation::new(title, solution.t())
     }
 
-    /// Adds a point (a body, a joint) at `(x[k], y[k])` at sample `k`.
+    /// Adds a point (a body, a joint) at `(x[k], y[k])` at sample `k`. It is hidden at samples
+    /// where its position is not finite; a finite coordinate beyond 1e150 is refused
+    /// ([`PlotError::OutOfRange`]).
     pub fn point(mut self, name: impl Into<String>, x: &[f64], y: &[f64]) -> Result<Self, PlotError> {
         let name = name.into();
+        for (series, which) in [(x, "x"), (y, "y")] {
+            if let Some(&value) = series.iter().find(|v| v.is_finite() && v.abs() > LARGEST) {
+                return Err(PlotError::OutOfRange { name: format!("{name}.{which}"), value });
+            }
+        }
         for (len, which) in [(x.len(), "x"), (y.len(), "y")] {
             if len != self.times.len() {
                 return Err(PlotError::Lengths {
@@ -111,7 +118,8 @@ impl Animation {
         self.point(name, xs, ys)
     }
 
-    /// Adds a point that stays at `(x, y)`: a pivot, a wall's corner.
+    /// Adds a point that stays at `(x, y)`: a pivot, a wall's corner. Not drawn if either is
+    /// not finite or beyond 1e150.
     pub fn fixed(mut self, name: impl Into<String>, x: f64, y: f64) -> Self {
         let n = self.times.len();
         self.points.push(Point { name: name.into(), x: vec![x; n], y: vec![y; n] });
@@ -263,7 +271,7 @@ impl Animation {
         let (mut x0, mut x1, mut y0, mut y1) =
             (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
         for p in &self.points {
-            for (&x, &y) in p.x.iter().zip(&p.y).filter(|(x, y)| x.is_finite() && y.is_finite()) {
+            for (&x, &y) in p.x.iter().zip(&p.y).filter(|(x, y)| drawable(**x) && drawable(**y)) {
                 (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
             }
         }
@@ -275,9 +283,18 @@ impl Animation {
     }
 }
 
-/// The first finite value of a series, or zero.
+/// The largest magnitude of a position drawn: beyond it the picture's box and scale would
+/// overflow. A position beyond it is hidden, as one that is not finite is.
+const LARGEST: f64 = 1e150;
+
+/// Whether a position can be drawn: finite and within [`LARGEST`].
+fn drawable(x: f64) -> bool {
+    x.is_finite() && x.abs() <= LARGEST
+}
+
+/// The first drawable value of a series, or zero.
 fn first_finite(series: &[f64]) -> f64 {
-    series.iter().copied().find(|x| x.is_finite()).unwrap_or(0.0)
+    series.iter().copied().find(|&x| drawable(x)).unwrap_or(0.0)
 }
 
 /// An `<animate>` of attribute `name` through `series`, one key frame per sample; a value that
@@ -288,7 +305,7 @@ fn animate(out: &mut String, name: &str, series: &[f64], timing: Option<&str>) {
     let _ = write!(out, r#"<animate attributeName="{name}" calcMode="linear" {timing} values=""#);
     let mut held = first_finite(series);
     for (k, &x) in series.iter().enumerate() {
-        if x.is_finite() {
+        if drawable(x) {
             held = x;
         }
         let _ = write!(out, "{}{held:e}", if k > 0 { ";" } else { "" });
@@ -299,7 +316,7 @@ fn animate(out: &mut String, name: &str, series: &[f64], timing: Option<&str>) {
 /// Hides an element while any of `series` is not finite: a discrete `<animate>` of its
 /// visibility, or a fixed `visibility` when nothing moves.
 fn visibility(out: &mut String, series: &[&Vec<f64>], timing: Option<&str>) {
-    let shown = |k: usize| series.iter().all(|s| s[k].is_finite());
+    let shown = |k: usize| series.iter().all(|s| drawable(s[k]));
     let n = series.first().map_or(0, |s| s.len());
     if (0..n).all(shown) {
         return;
@@ -322,15 +339,15 @@ fn visibility(out: &mut String, series: &[&Vec<f64>], timing: Option<&str>) {
     }
 }
 
-/// `values` as a JSON array, each number in the shortest form that reads back to it; NaN and
-/// infinities as `null` (not drawn).
+/// `values` as a JSON array, each number in the shortest form that reads back to it; NaN,
+/// infinities and values beyond [`LARGEST`] as `null` (not drawn).
 fn numbers(out: &mut String, values: &[f64]) {
     out.push('[');
     for (k, x) in values.iter().enumerate() {
         if k > 0 {
             out.push(',');
         }
-        if x.is_finite() {
+        if drawable(*x) {
             let _ = write!(out, "{x:e}");
         } else {
             out.push_str("null");

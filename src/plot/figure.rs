@@ -79,6 +79,15 @@ pub enum PlotError {
         /// What is wrong with them.
         reason: String,
     },
+    /// A position too large to draw (beyond 1e150 in magnitude: the picture's scale would
+    /// overflow).
+    #[error("the series `{name}` has {value:e}, beyond the 1e150 a picture can scale")]
+    OutOfRange {
+        /// The series.
+        name: String,
+        /// The first value out of range.
+        value: f64,
+    },
     /// A series whose abscissae and ordinates differ in number.
     #[error("the series `{name}` has {x} abscissae but {y} ordinates")]
     Lengths {

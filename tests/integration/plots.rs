@@ -300,6 +300,19 @@ fn an_animated_svg_in_headless_chromium_draws_the_solutions_positions_at_the_tim
     // The pivot does not move.
     let (px, py) = svg_drawn_at(&path, "pivot", between);
     assert_eq!((px, py), (0.0, 0.0));
+
+    // A position too large to scale onto a picture is refused by name; a fixed one is hidden,
+    // and the picture stays finite.
+    let refusal = Animation::new("far", &[0.0, 1.0])
+        .and_then(|a| a.point("p", &[0.0, 1e200], &[0.0, 0.0]))
+        .expect_err("too far to draw");
+    assert_eq!(refusal, PlotError::OutOfRange { name: "p.x".into(), value: 1e200 });
+    let svg = Animation::new("far", &[0.0, 1.0])
+        .map(|a| a.fixed("f", 1e300, 0.0))
+        .and_then(|a| a.point("p", &[0.0, 1.0], &[0.0, 1.0]))
+        .expect("an animation")
+        .svg();
+    assert!(!svg.contains("NaN") && !svg.contains("inf"), "{svg}");
 }
 
 /// A work-precision sweep of Radau and the explicit method on a spring (x = cos 2t exactly):
