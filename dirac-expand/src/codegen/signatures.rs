@@ -49,6 +49,7 @@ pub fn solve_with_contacts() -> TokenStream {
                 integrator, t0, state, t_end, sampling,
             ))
         }
+        #[inline]
         fn __consistent_with_laws(
             &self,
             t: ::core::primitive::f64,

@@ -1335,6 +1335,7 @@ const _: () = {
                 ),
             )
         }
+        #[inline]
         fn __consistent_with_laws(
             &self,
             t: ::core::primitive::f64,

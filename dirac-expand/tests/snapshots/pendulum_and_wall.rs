@@ -400,6 +400,7 @@ const _: () = {
                 ),
             )
         }
+        #[inline]
         fn __consistent_with_laws(
             &self,
             t: ::core::primitive::f64,
@@ -1361,6 +1362,7 @@ const _: () = {
                 ),
             )
         }
+        #[inline]
         fn __consistent_with_laws(
             &self,
             t: ::core::primitive::f64,

@@ -444,6 +444,7 @@ const _: () = {
                 ),
             )
         }
+        #[inline]
         fn __consistent_with_laws(
             &self,
             t: ::core::primitive::f64,
