@@ -9,9 +9,9 @@
 //! with the sensitivities to all `N_θ` parameters and samples them at the end. Each pair is timed
 //! in 11 alternating pairs and the ratio is the median of the pairs' ratios; the forward side
 //! only up to 100 parameters. Ladders of 5, 50, 500 and 5000 cells: 10 to 10⁴ parameters. Run:
-//! `cargo bench --bench adjoint`.
+//! `cargo bench -p dirac-benches --bench adjoint`.
 //!
-//! `cargo bench --bench adjoint -- peers DIR` is the dirac side of the comparison with SUNDIALS
+//! `cargo bench -p dirac-benches --bench adjoint -- peers DIR` is the dirac side of the comparison with SUNDIALS
 //! IDAS's adjoint (`benches/peers/adjoint.sh`): for each ladder it writes into `DIR/<cells>/`
 //! the consistent start `y0.txt`, its derivative `yp0.txt` (`(v, 0, ṗ, 0)`), the cells' `l.txt`
 //! and `c.txt`, and `dirac.txt` (the objective `∫ ½ |q|² dt`, a running cost, and its gradient,

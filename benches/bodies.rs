@@ -11,7 +11,7 @@
 //! ratio printed with the steps of each and how far each ends from a tight reference of the
 //! hand-reduced model.
 //!
-//! Run: `cargo bench --bench bodies`.
+//! Run: `cargo bench -p dirac-benches --bench bodies`.
 
 #![allow(missing_docs)]
 

@@ -11,7 +11,7 @@
 //! Both at rtol = atol = 1e-8, with Radau and Explicit, alternated `ROUNDS` times each; the
 //! medians' ratio is printed with the steps of each and the final speeds, which agree.
 //!
-//! Run: `cargo bench --bench components`.
+//! Run: `cargo bench -p dirac-benches --bench components`.
 
 #![allow(missing_docs)]
 

@@ -5,7 +5,7 @@
 # of CI.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=$(cargo bench --bench kernels --no-run 2>&1 | sed -n 's/.*Executable .*(\(.*\))$/\1/p')
+bin=$(cargo bench -p dirac-benches --bench kernels --no-run 2>&1 | sed -n 's/.*Executable .*(\(.*\))$/\1/p')
 calls=100000
 count() {
     DIRAC_KERNEL_LOOP="$1" DIRAC_KERNEL_CALLS="$2" valgrind --tool=callgrind \

@@ -9,7 +9,7 @@
 //! of 21 solves), then for every sampled error from 1e-4 to 1e-10 the cheapest run of either
 //! output that reaches it, and the ratio of their times and evaluations.
 //!
-//! Run: `cargo bench --bench dense_output`.
+//! Run: `cargo bench -p dirac-benches --bench dense_output`.
 
 #![allow(missing_docs)]
 

@@ -4,7 +4,7 @@
 //! bit; the speed-up is the sequential time over the `dirac::ensemble::sweep` time (median of
 //! 5 of each, alternating).
 //!
-//! Run: `cargo bench --bench ensemble`.
+//! Run: `cargo bench -p dirac-benches --bench ensemble`.
 
 #![allow(missing_docs)]
 

@@ -6,7 +6,7 @@
 //!   every step (48 events, each found by the root finder on the dense output);
 //! - `events/variational`: the same with the variational integrator, step 0.01.
 //!
-//! Run: `cargo bench --bench events`.
+//! Run: `cargo bench -p dirac-benches --bench events`.
 
 #![allow(missing_docs)]
 

@@ -9,7 +9,7 @@
 //! The parts of `dirac::components` too: each part's expansion (the median of 15, the slowest
 //! named) and all of them together.
 //!
-//! Run: `cargo bench --bench expansion` (the parts alone: `cargo bench --bench expansion -- parts`).
+//! Run: `cargo bench -p dirac-benches --bench expansion` (the parts alone: `cargo bench -p dirac-benches --bench expansion -- parts`).
 
 use std::hint::black_box;
 

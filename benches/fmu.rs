@@ -6,7 +6,7 @@
 //! - the paper's chain over 20 s (2000 communication steps, no inputs);
 //! - the driven pendulum over 10 s (1000 steps, its force set at each).
 //!
-//! Run: `cargo bench --bench fmu`.
+//! Run: `cargo bench -p dirac-benches --bench fmu`.
 
 #![allow(missing_docs)]
 #![allow(unsafe_code)]

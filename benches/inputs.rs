@@ -7,7 +7,7 @@
 //! - `sampled`: a 100 Hz controller (`solve_sampled`, a restart every 10 ms) over 10 s, against
 //!   the same run without sampling (the force held at its value).
 //!
-//! Run: `cargo bench --bench inputs`.
+//! Run: `cargo bench -p dirac-benches --bench inputs`.
 
 #![allow(missing_docs)]
 

@@ -5,7 +5,7 @@
 //!   and on the 8-link pendulum of the test zoo.
 //! - `radau/*`: a whole integration with each solver, same tolerances.
 //!
-//! Run: `cargo bench --bench integrators`.
+//! Run: `cargo bench -p dirac-benches --bench integrators`.
 
 #![allow(missing_docs)]
 

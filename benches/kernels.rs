@@ -13,7 +13,7 @@
 //! writes the Jacobian's nonzeros packed in compressed sparse columns (`SparseJacobian`). Each
 //! hand-written kernel is checked against the generated one before timing.
 //!
-//! Run: `cargo bench --bench kernels`.
+//! Run: `cargo bench -p dirac-benches --bench kernels`.
 //!
 //! With `DIRAC_KERNEL_LOOP=<generated|hand-written> <model>` in the environment (models:
 //! `paper`, `cartesian2`, `cartesian4`) and `DIRAC_KERNEL_CALLS=<k>`, the binary instead calls

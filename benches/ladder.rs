@@ -9,7 +9,7 @@
 //! N fitted by least squares on log-log scale from 10³ to 10⁵. Ratios are to the N = 10³ row
 //! of the same run, since this machine is shared.
 //!
-//! Run: `cargo bench --bench ladder`.
+//! Run: `cargo bench -p dirac-benches --bench ladder`.
 
 #![allow(missing_docs, unsafe_code)]
 

@@ -4,7 +4,7 @@
 //! the exact modal solution (`zoo::modal_solution`, each eigenpair checked against the ladder's
 //! matrix), seconds the median of 3 solves from the consistent start.
 //!
-//! `cargo bench --bench ladder_peers -- setup DIR` writes what the IDA driver needs, computed
+//! `cargo bench -p dirac-benches --bench ladder_peers -- setup DIR` writes what the IDA driver needs, computed
 //! here so that both solvers start from the same state and are judged by the same reference:
 //! `y0.txt` and `yp0.txt` (the consistent state `y = (q, v, p, λ)` and its derivative
 //! `(v, 0, ṗ, 0)`), `nodes.txt` (the slot of each node flux `cells[j].b` in `y`) and `ref.txt`

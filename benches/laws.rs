@@ -10,7 +10,7 @@
 //! the two alternately, `ROUNDS` times each; the medians' ratio is printed, with the samples
 //! and switches of each, so that the work compared is seen to be the same.
 //!
-//! Run: `cargo bench --bench laws`.
+//! Run: `cargo bench -p dirac-benches --bench laws`.
 
 #![allow(missing_docs)]
 

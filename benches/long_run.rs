@@ -3,10 +3,10 @@
 //! over the same span at the tolerances listed. Printed: wall time and the largest energy
 //! error |E − E0| over the first and the last 10% of the span.
 //!
-//! `cargo bench --bench long_run -- drift` measures instead the drift from the position
+//! `cargo bench -p dirac-benches --bench long_run -- drift` measures instead the drift from the position
 //! constraint of Radau on the pendulum over 10⁴ s, with and without projection.
 //!
-//! Run: `cargo bench --bench long_run`.
+//! Run: `cargo bench -p dirac-benches --bench long_run`.
 
 #![allow(missing_docs)]
 

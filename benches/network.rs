@@ -7,7 +7,7 @@
 //! network runs, median of 5 runs of `max(20, 2·10⁵/N)` steps after 5 warm-up steps; the ratio
 //! network / derived; and the time to build the network (`finish` included).
 //!
-//! Run: `cargo bench --bench network`.
+//! Run: `cargo bench -p dirac-benches --bench network`.
 
 #![allow(missing_docs)]
 

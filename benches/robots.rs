@@ -1,10 +1,10 @@
 //! The Panda arm read from its URDF (`tests/robots/panda/panda_arm.urdf`), for the comparison
 //! with Pinocchio and MuJoCo in `benches/peers/robots.sh`, which runs this bench twice:
 //!
-//! - `cargo bench --bench robots -- evaluate`: seconds per call of what an implicit step
+//! - `cargo bench -p dirac-benches --bench robots -- evaluate`: seconds per call of what an implicit step
 //!   evaluates (the flat residual and Jacobian; the residual and Jacobian blocks the condensed
 //!   Newton solver uses), each the median of 15 batches, as `name,seconds` lines;
-//! - `cargo bench --bench robots -- swing DIR`: the 1 s free swing from rest under gravity by
+//! - `cargo bench -p dirac-benches --bench robots -- swing DIR`: the 1 s free swing from rest under gravity by
 //!   Explicit and Radau over a range of tolerances, as CSV `problem,tol,error,seconds,steps`:
 //!   the error is the largest joint-angle error at the samples of the reference
 //!   `DIR/arm_swing.csv` (Pinocchio's dynamics integrated by SciPy's DOP853 at 1e-12, written

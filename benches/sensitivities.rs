@@ -15,7 +15,7 @@
 //!
 //! Every solve is at `rtol = atol = 1e-8`, recording the state every 0.1 s. The two solves of a
 //! row are timed in 31 alternating pairs, and the ratio is the median of the pairs' ratios. Run:
-//! `cargo bench --bench sensitivities` (`-- WORD` for the rows whose model names WORD).
+//! `cargo bench -p dirac-benches --bench sensitivities` (`-- WORD` for the rows whose model names WORD).
 
 #![allow(missing_docs)]
 
@@ -54,7 +54,7 @@ fn row_wrt<M: Parameters>(name: &str, model: &M, start: &State<M>, t_end: f64, w
 where
     DefaultAllocator: Storage<M>,
 {
-    // `cargo bench --bench sensitivities -- WORD` runs only the rows whose model names WORD.
+    // `cargo bench -p dirac-benches --bench sensitivities -- WORD` runs only the rows whose model names WORD.
     if let Some(word) = std::env::args().skip(1).find(|a| !a.starts_with('-'))
         && !name.contains(&word)
     {

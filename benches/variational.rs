@@ -3,7 +3,7 @@
 //! scheme reduces to it) and RATTLE on the Cartesian pendulum. Both baselines are the textbook
 //! algorithms written directly for their model.
 //!
-//! Run: `cargo bench --bench variational`.
+//! Run: `cargo bench -p dirac-benches --bench variational`.
 
 #![allow(missing_docs)]
 

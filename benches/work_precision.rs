@@ -10,7 +10,7 @@
 //!
 //! `benches/peers/run.sh` runs it beside SUNDIALS IDA and diffsol on the same problems.
 //!
-//! Run: `cargo bench --bench work_precision -- radau|explicit [only=PROBLEM]`; with
+//! Run: `cargo bench -p dirac-benches --bench work_precision -- radau|explicit [only=PROBLEM]`; with
 //! `reference`, prints the
 //! chain's exact x1, x2, x3 at t = 20 and the 8-link pendulum's angles at t = 2.
 

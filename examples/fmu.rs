@@ -1,5 +1,5 @@
-//! Builds an FMU: `cargo run --release --example fmu -- MODEL [OUT] [--fmi2]`, with MODEL
-//! `paper_chain` or `driven_pendulum`, or `cargo run --release --example fmu -- netlist
+//! Builds an FMU: `cargo run --release --features fmi,spice --example fmu -- MODEL [OUT] [--fmi2]`, with MODEL
+//! `paper_chain` or `driven_pendulum`, or `cargo run --release --features fmi,spice --example fmu -- netlist
 //! FILE.cir [OUT] [--fmi2]` for a SPICE netlist. OUT defaults to `target/fmu/MODEL.fmu` (the
 //! netlist's name for a netlist; `-fmi2` added with `--fmi2`, for importers of FMI 2.0).
 //!
@@ -25,8 +25,8 @@ mod paper_chain;
 fn main() -> Result<(), Box<dyn Error>> {
     let (flags, mut args): (Vec<String>, Vec<String>) =
         std::env::args().skip(1).partition(|a| a.starts_with("--"));
-    let usage = "usage: cargo run --release --example fmu -- paper_chain|driven_pendulum [OUT] [--fmi2]\n       \
-                 cargo run --release --example fmu -- netlist FILE.cir [OUT] [--fmi2]";
+    let usage = "usage: cargo run --release --features fmi,spice --example fmu -- paper_chain|driven_pendulum [OUT] [--fmi2]\n       \
+                 cargo run --release --features fmi,spice --example fmu -- netlist FILE.cir [OUT] [--fmi2]";
     let version = match flags.as_slice() {
         [] => Version::Fmi3,
         [flag] if flag == "--fmi2" => Version::Fmi2,
@@ -43,7 +43,8 @@ fn main() -> Result<(), Box<dyn Error>> {
     let out =
         args.pop().map_or_else(|| PathBuf::from(format!("target/fmu/{name}{suffix}.fmu")), PathBuf::from);
     let example = format!("fmu_{model}");
-    let mut cargo = vec!["--example", &example];
+    // The example libraries need the features this program was built with (see Cargo.toml).
+    let mut cargo = vec!["--example", &example, "--features", "fmi,spice"];
     if !cfg!(debug_assertions) {
         cargo.push("--release");
     }

@@ -1,5 +1,5 @@
 //! The driven pendulum as the shared library of an FMI 3.0 co-simulation FMU. Build the `.fmu`
-//! with `cargo run --release --example fmu -- driven_pendulum`.
+//! with `cargo run --release --features fmi,spice --example fmu -- driven_pendulum`.
 
 #[path = "fmu/driven_pendulum.rs"]
 mod driven_pendulum;

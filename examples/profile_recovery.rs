@@ -13,7 +13,7 @@
 //! The example prints the recovered profile against the true one, and `χ²` of the fit against
 //! that of the true line on the same data, and plots both profiles.
 //!
-//! Run: `cargo run --release --example profile_recovery`.
+//! Run: `cargo run --release --features sparse --example profile_recovery`.
 
 use std::error::Error;
 

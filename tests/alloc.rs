@@ -1284,7 +1284,6 @@ fn steps_of_a_network_of_ten_thousand_parts_do_not_allocate() {
 /// A SPICE netlist's network, its nodes joined and its reference grounded (an LC ladder of
 /// 5 000 nodes from a pulse: 10⁴ parts, 5 000 unknowns), steps without allocating: the joined
 /// coordinates add up in place and the grounded entries are cleared in place.
-#[cfg(feature = "components")]
 #[test]
 fn steps_of_a_netlist_with_joined_nodes_do_not_allocate() {
     let n = 5_000;
@@ -1343,7 +1342,6 @@ fn steps_of_a_netlist_driven_by_waveforms_do_not_allocate() {
 /// parts' event functions allocate nothing, up to the first switch (the diode blocks once the
 /// sine turns down). The switch itself projects the state onto the new mode on the heap, as
 /// for a derived model.
-#[cfg(feature = "components")]
 #[test]
 fn watching_an_ideal_diode_in_a_netlist_does_not_allocate() {
     let n = 5_000;

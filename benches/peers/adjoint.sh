@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # dirac's adjoint gradients beside SUNDIALS IDAS's adjoint on the LC ladder of
-# `cargo bench --bench adjoint` (each cell's l_j = 1 + 0.3 sin j and c_j = 1, a flux pulse at
+# `cargo bench -p dirac-benches --bench adjoint` (each cell's l_j = 1 + 0.3 sin j and c_j = 1, a flux pulse at
 # rest, 5 s, tolerance 1e-8): the gradient of ∫ ½ |q|² dt with respect to all 2N parameters,
 # for 5, 50, 500 and 5000 cells. The dirac side writes the start and its own gradient and times
-# its gradients (`cargo bench --bench adjoint -- peers DIR`); idas_adjoint.c, linked against
+# its gradients (`cargo bench -p dirac-benches --bench adjoint -- peers DIR`); idas_adjoint.c, linked against
 # Debian's SUNDIALS and KLU unpacked into target/peers without installing, times IDAS's and
 # compares the two gradients. Prints both CSVs and their time ratios. Not part of CI.
 set -euo pipefail
@@ -21,7 +21,7 @@ lib="$root/usr/lib/x86_64-linux-gnu"
 gcc -O3 -o "$peers/idas_adjoint" benches/peers/idas_adjoint.c -I"$root/usr/include" \
     -I"$root/usr/include/suitesparse" -L"$lib" -Wl,-rpath,"$PWD/$lib" -lsundials_idas \
     -lsundials_nvecserial -lsundials_sunlinsolklu -lsundials_sunmatrixsparse -lklu -lm
-cargo bench --bench adjoint -- peers "$peers/adjoint" | tee "$peers/adjoint/dirac.csv"
+cargo bench -p dirac-benches --bench adjoint -- peers "$peers/adjoint" | tee "$peers/adjoint/dirac.csv"
 echo "cells,n_theta,seconds,steps_forward,steps_backward,G,difference" | tee "$peers/adjoint/idas.csv"
 for cells in 5 50 500 5000; do
     LD_LIBRARY_PATH="$PWD/$lib" "$peers/idas_adjoint" "$cells" "$peers/adjoint/$cells" | tee -a "$peers/adjoint/idas.csv"

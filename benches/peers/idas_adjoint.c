@@ -1,4 +1,4 @@
-/* SUNDIALS IDAS's adjoint on the LC ladder of `cargo bench --bench adjoint`, the peer of its
+/* SUNDIALS IDAS's adjoint on the LC ladder of `cargo bench -p dirac-benches --bench adjoint`, the peer of its
  * adjoint gradients: the gradient of G = ∫_0^T ½ |q|² dt with respect to every cell's
  * inductance and capacitance (N_θ = 2N), in the same formulation as dirac's composite
  * (y = (q, v, p, λ), F = M y' − f(t, y) = 0, M = diag(I, 0, I, 0), the algebraic variables out
@@ -11,7 +11,7 @@
  * gradient the backward quadrature of λᵀ F_θ. The forward run also integrates G as a
  * quadrature. Tolerances 1e-8 everywhere, as dirac's run.
  *
- * Reads from DIR (written by `cargo bench --bench adjoint -- peers DIR`): y0.txt and yp0.txt
+ * Reads from DIR (written by `cargo bench -p dirac-benches --bench adjoint -- peers DIR`): y0.txt and yp0.txt
  * (dirac's consistent start and its derivative), l.txt and c.txt (the cells), dirac.txt (G and
  * dirac's gradient, l_j c_j per line, for the comparison). Prints one CSV line:
  * cells,n_theta,seconds,steps_forward,steps_backward,G,largest relative difference from dirac's

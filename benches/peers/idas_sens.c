@@ -1,5 +1,5 @@
 /* SUNDIALS IDAS forward sensitivities of the paper's chain, the peer of
- * `cargo bench --bench sensitivities` (its paper-chain row). The chain is written as
+ * `cargo bench -p dirac-benches --bench sensitivities` (its paper-chain row). The chain is written as
  * ida_driver.c writes it (y = (q, v, p, mu), M y' = f(t, y), the algebraic variables out of the
  * error test), with its six parameters (m1, m2, k1, k2, m3, k3) in user data, so that IDAS
  * forms the sensitivity residuals by its own difference quotients (IDASetSensParams) and solves

@@ -23,8 +23,8 @@ lib="$root/usr/lib/x86_64-linux-gnu"
 gcc -O3 -o "$peers/ida_ladder" benches/peers/ida_ladder.c -I"$root/usr/include" \
     -I"$root/usr/include/suitesparse" -L"$lib" -Wl,-rpath,"$PWD/$lib" -lsundials_ida \
     -lsundials_nvecserial -lsundials_sunlinsolklu -lsundials_sunmatrixsparse -lklu -lm
-DIRAC_LADDER_CELLS=$cells cargo bench --bench ladder_peers -- setup "$peers/ladder"
-DIRAC_LADDER_CELLS=$cells cargo bench --bench ladder_peers > "$peers/ladder/radau.csv"
+DIRAC_LADDER_CELLS=$cells cargo bench -p dirac-benches --bench ladder_peers -- setup "$peers/ladder"
+DIRAC_LADDER_CELLS=$cells cargo bench -p dirac-benches --bench ladder_peers > "$peers/ladder/radau.csv"
 LD_LIBRARY_PATH="$PWD/$lib" "$peers/ida_ladder" "$cells" "$peers/ladder" > "$peers/ladder/ida.csv"
 cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol" --bin ladder
 for method in bdf esdirk34 tsit45; do

@@ -29,11 +29,11 @@ if [ ! -x "$out/pinocchio_panda" ]; then
         -I"$prefix/include" -I"$prefix/include/eigen3" -L"$prefix/lib" -Wl,-rpath,"$prefix/lib" \
         -lpinocchio_default -lboost_serialization
 fi
-cargo bench --bench robots --no-run
+cargo bench -p dirac-benches --bench robots --no-run
 for round in 1 2 3; do
     "$out/pinocchio_panda" "$out/panda_arm.bin" > "$out/pinocchio_$round.csv"
-    cargo bench --bench robots -- evaluate > "$out/dirac_$round.csv"
+    cargo bench -p dirac-benches --bench robots -- evaluate > "$out/dirac_$round.csv"
 done
-cargo bench --bench robots -- swing "$out" > "$out/dirac_swing.csv"
+cargo bench -p dirac-benches --bench robots -- swing "$out" > "$out/dirac_swing.csv"
 "$venv/bin/python" benches/peers/robots.py mujoco tests/robots/panda/panda_arm.urdf "$out"
 "$venv/bin/python" benches/peers/robots.py compare tests/robots/panda/panda_arm.urdf "$out"

@@ -22,7 +22,7 @@ gcc -O3 -o "$peers/ida_driver" benches/peers/ida_driver.c -I"$peers/sundials/usr
     -Wl,-rpath,"$PWD/$lib" -lsundials_ida -lsundials_nvecserial -lsundials_sunlinsoldense \
     -lsundials_sunmatrixdense -lm
 cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol"
-cargo bench --bench work_precision -- reference > "$peers/reference.txt"
+cargo bench -p dirac-benches --bench work_precision -- reference > "$peers/reference.txt"
 # Every solver runs once per round, the rounds one after the other (A B C … A B C …), and each
 # row's time is the median over the rounds: on a shared machine the load drifts over minutes,
 # and solvers timed at different moments would carry that drift into their ratios.
@@ -38,8 +38,8 @@ for round in $(seq "$rounds"); do
         "$peers/diffsol/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") \
             > "$peers/rounds/diffsol_$method.$round.csv"
     done
-    cargo bench -q --bench work_precision -- radau > "$peers/rounds/radau.$round.csv" 2>/dev/null
-    cargo bench -q --bench work_precision -- explicit > "$peers/rounds/explicit.$round.csv" 2>/dev/null
+    cargo bench -q -p dirac-benches --bench work_precision -- radau > "$peers/rounds/radau.$round.csv" 2>/dev/null
+    cargo bench -q -p dirac-benches --bench work_precision -- explicit > "$peers/rounds/explicit.$round.csv" 2>/dev/null
 done
 for name in ida diffsol_bdf diffsol_esdirk34 diffsol_tsit45 radau explicit; do
     python3 benches/peers/median.py "$peers"/rounds/"$name".*.csv > "$peers/$name.csv"

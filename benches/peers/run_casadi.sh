@@ -23,7 +23,7 @@ C
     gcc -O3 "$dir/main_$name.c" "$dir/driver.o" "$dir/$name.o" -o "$dir/bench_$name" -lm
     "$dir/bench_$name" >> "$dir/casadi.csv"
 done < "$dir/models.txt"
-cargo bench --bench kernels -- "generated F\+J" 2>&1 | grep -E "^kernels/|time:" > "$dir/dirac.txt"
+cargo bench -p dirac-benches --bench kernels -- "generated F\+J" 2>&1 | grep -E "^kernels/|time:" > "$dir/dirac.txt"
 python3 - "$dir" <<'PY'
 import re, sys
 d = sys.argv[1]

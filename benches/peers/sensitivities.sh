@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # dirac's forward sensitivities beside SUNDIALS IDAS's on the paper's chain (six parameters,
-# 20 s, tolerance 1e-8, output every 0.1 s), in one run: `cargo bench --bench sensitivities`
+# 20 s, tolerance 1e-8, output every 0.1 s), in one run: `cargo bench -p dirac-benches --bench sensitivities`
 # (every model; its paper-chain row and the final sensitivities are the ones to compare) and
 # idas_sens.c, linked statically against the SUNDIALS of Debian's libsundials-dev, unpacked into
 # target/peers without installing. Not part of CI.
@@ -16,6 +16,6 @@ fi
 lib="$root/usr/lib/x86_64-linux-gnu"
 gcc -O3 -o "$peers/idas_sens" benches/peers/idas_sens.c -I"$root/usr/include" "$lib/libsundials_idas.a" \
     "$lib/libsundials_nvecserial.a" "$lib/libsundials_sunlinsoldense.a" "$lib/libsundials_sunmatrixdense.a" -lm
-cargo bench --bench sensitivities
+cargo bench -p dirac-benches --bench sensitivities
 echo
 "$peers/idas_sens"

@@ -192,7 +192,7 @@ fn same(expected: &str, actual: &str) -> bool {
 
 #[test]
 fn solver_counters_match_the_snapshot() {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots/solver_counters.txt");
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("snapshots/solver_counters.txt");
     let actual = all_records();
     if std::env::var_os("DIRAC_BLESS").is_some() {
         std::fs::create_dir_all(path.parent().expect("a parent folder")).expect("create the folder");

@@ -78,14 +78,19 @@ fn scratch(name: &str, features: &[&str]) -> PathBuf {
     let manifest = format!(
         "[package]\nname = \"{name}\"\nversion = \"0.1.0\"\nedition = \"2024\"\n\n[dependencies]\n\
          dirac = {{ path = {:?}, features = [{features}] }}\n\n[workspace]\n",
-        env!("CARGO_MANIFEST_DIR")
+        checkout()
     );
     std::fs::write(dir.join("Cargo.toml"), manifest).expect("a manifest");
     std::fs::write(dir.join("src/bin/pendulum.rs"), PENDULUM).expect("a program");
     std::fs::write(dir.join("src/bin/ladder.rs"), LADDER).expect("a program");
-    let lock = Path::new(env!("CARGO_MANIFEST_DIR")).join("Cargo.lock");
+    let lock = checkout().join("Cargo.lock");
     std::fs::copy(lock, dir.join("Cargo.lock")).expect("the workspace's lock file");
     dir
+}
+
+/// The checkout's root: the facade package and the workspace's lock file.
+fn checkout() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("tests/ lies in the checkout")
 }
 
 /// `cargo ARGS` in `dir`, offline, into the scratch crates' shared target directory.
@@ -152,4 +157,47 @@ fn with_the_feature_sparse_the_same_array_of_subsystems_compiles() {
     let dir = scratch("lean_sparse", &["sparse"]);
     let check = cargo(&dir, &["check", "--bin", "ladder", "--message-format", "short"]);
     assert!(check.status.success(), "{}", text(&check.stderr));
+}
+
+/// The README's first command, `cargo run --release --example mass_spring_chain`, compiles the
+/// facade with its default features and the examples' dev-dependencies, nothing else: the
+/// tests' and benchmarks' dependencies (trybuild, proptest, num-dual, criterion) live in their
+/// own packages, and the examples that need a feature declare it.
+#[test]
+fn the_first_command_compiles_at_most_sixty_crates() {
+    let manifest = checkout().join("Cargo.toml");
+    let manifest = manifest.to_str().expect("a UTF-8 path");
+    let tree = cargo(
+        checkout(),
+        &[
+            "tree",
+            "--manifest-path",
+            manifest,
+            "--package",
+            "dirac",
+            "--edges",
+            "normal,build,dev",
+            "--prefix",
+            "none",
+            "--format",
+            "{p}",
+        ],
+    );
+    assert!(tree.status.success(), "{}", text(&tree.stderr));
+    let mut crates: Vec<String> = text(&tree.stdout)
+        .lines()
+        .filter_map(|line| line.split(" (").next().map(str::to_owned))
+        .filter(|line| !line.is_empty())
+        .collect();
+    crates.sort();
+    crates.dedup();
+    for heavy in ["criterion", "trybuild", "proptest", "num-dual", "faer", "rayon", "zip"] {
+        assert!(
+            !crates.iter().any(|c| c.split(' ').next() == Some(heavy)),
+            "{heavy} is in the first command: {crates:?}"
+        );
+    }
+    // 166 crates before the tests and benchmarks became packages of their own (BENCHMARKS.md,
+    // "First build of a one-model crate").
+    assert!(crates.len() <= 60, "{} crates: {crates:?}", crates.len());
 }

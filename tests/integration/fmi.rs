@@ -100,7 +100,7 @@ where
 
 /// Runs a script of `tests/fmi` with FMPy's Python; its stdout.
 fn script(name: &str, args: &[&str]) -> String {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("fmi").join(name);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("fmi").join(name);
     let output = Command::new(python()).arg(path).args(args).output().expect("python runs");
     let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
     assert!(output.status.success(), "{name} failed:\n{stdout}\n{}", String::from_utf8_lossy(&output.stderr));
@@ -296,7 +296,7 @@ fn the_driven_pendulum_fmu_follows_its_input_as_dirac_does() {
 /// subcircuits with coupled inductors, diodes and controlled sources, whose source `V1` is the
 /// FMU's input.
 fn netlist_resources() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("fmi").join("netlist")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("fmi").join("netlist")
 }
 
 #[test]
@@ -498,7 +498,7 @@ fn the_description_carries_units_and_doc_comments() {
 #[test]
 fn the_readmes_python_snippet_simulates_and_plots_an_fmu() {
     let readme =
-        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).expect("README");
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).expect("README");
     let snippet = readme
         .split("```python\n")
         .nth(1)

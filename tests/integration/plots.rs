@@ -112,7 +112,7 @@ fn chromium() -> &'static Path {
         if let Some(path) = std::env::var_os("DIRAC_CHROMIUM") {
             return Ok(path.into());
         }
-        let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser/chromium.sh");
+        let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("browser/chromium.sh");
         let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("chromium");
         let output = Command::new("bash").arg(&script).arg(&dir).output().map_err(|e| e.to_string())?;
         if output.status.success() {

@@ -5,7 +5,7 @@ use dirac::prelude::*;
 /// The Franka Emika Panda (`tests/robots/panda/panda.urdf`, from the `example-robot-data`
 /// package): seven revolute joints and two prismatic fingers, the second mimicking the first.
 #[derive(LagrangeDirac, Clone, Debug)]
-#[dirac(urdf = "tests/robots/panda/panda.urdf")]
+#[dirac(urdf = "../tests/robots/panda/panda.urdf")]
 pub struct Panda;
 
 /// The swing's start (tests/references/robots.py): the arm out to the side, fingers half open.
@@ -14,10 +14,10 @@ pub const SWING_START: [f64; 9] = [0.3, 0.5, -0.4, -1.2, 0.2, 1.4, 0.6, 0.02, 0.
 /// The Panda's seven-joint arm (`tests/robots/panda/panda_arm.urdf`: the fingers fixed), as
 /// `benches/peers/robots.sh` loads it into MuJoCo and Pinocchio too.
 #[derive(LagrangeDirac, Clone, Debug)]
-#[dirac(urdf = "tests/robots/panda/panda_arm.urdf")]
+#[dirac(urdf = "../tests/robots/panda/panda_arm.urdf")]
 pub struct PandaArm;
 
 /// The Panda with its joints' limits as hard stops.
 #[derive(LagrangeDirac, Clone, Debug)]
-#[dirac(urdf = "tests/robots/panda/panda.urdf", joint_limits)]
+#[dirac(urdf = "../tests/robots/panda/panda.urdf", joint_limits)]
 pub struct PandaStops;

@@ -7,7 +7,7 @@
 //!   λ = m (g y − |v|²) / (2 |q|²), error at t = 1 against the published x(1), y(1).
 //! - chain: the paper's three-mass chain with the massless tear coordinate eliminated, a linear
 //!   ODE of six states, error of x1, x2, x3 at t = 20 against the exact modal solution (passed
-//!   on the command line by run.sh, computed by `cargo bench --bench work_precision -- reference`).
+//!   on the command line by run.sh, computed by `cargo bench -p dirac-benches --bench work_precision -- reference`).
 //!
 //! Both forms are smaller and easier than the index-2 DAE dirac's Radau and IDA integrate (13
 //! unknowns for the chain), so the comparison favours diffsol. Its BDF initialises DAEs by
@@ -16,7 +16,7 @@
 //!
 //! - pendulum8: the zoo's 8-link pendulum in its angles, `M(θ) θ̈ = r(θ, ω)` solved per
 //!   evaluation, error of the angles at t = 2 against the reference `run.sh` passes (from
-//!   `cargo bench --bench work_precision -- reference`).
+//!   `cargo bench -p dirac-benches --bench work_precision -- reference`).
 //!
 //! Prints CSV `problem,tol,error,seconds,steps` for the method named by the first argument
 //! (`bdf`, `esdirk34` or `tsit45`); seconds is the median of 21 solves, each creating the
