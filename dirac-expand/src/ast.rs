@@ -10,7 +10,7 @@ use crate::ctxt::Ctxt;
 use crate::laws::{self, LawDecl, LawKind};
 use crate::symbol::{
     CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FORCE, FRICTION, HOLONOMIC,
-    INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, OUTPUT, PORT, PORTS, POSITIVE,
+    INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, NONZERO, OUTPUT, PORT, PORTS, POSITIVE,
     RESTITUTION, SWITCH, UNILATERAL, UNIT, URDF,
 };
 
@@ -44,8 +44,8 @@ pub struct Model<'a> {
     /// `__contacts(a, ...)`, written by the derive on the companion it makes of a model with
     /// unilateral constraints: the field that closes each contact, in their order.
     pub switches: Vec<Ident>,
-    /// `positive(r, ...)` and `nonnegative(d, ...)`: each parameter named with its requirement,
-    /// in the order written.
+    /// `positive(r, ...)`, `nonnegative(d, ...)` and `nonzero(k, ...)`: each parameter named
+    /// with its requirement, in the order written.
     pub requirements: Vec<(Ident, Requirement)>,
     /// `large`: the model may take more stack than the limit.
     pub large: bool,
@@ -74,6 +74,8 @@ pub enum Requirement {
     Positive,
     /// `nonnegative(d)`: zero or more.
     Nonnegative,
+    /// `nonzero(ratio)`: anything but zero.
+    Nonzero,
 }
 
 impl Requirement {
@@ -82,6 +84,7 @@ impl Requirement {
         match self {
             Requirement::Positive => "positive",
             Requirement::Nonnegative => "non-negative",
+            Requirement::Nonzero => "nonzero",
         }
     }
 }
@@ -342,9 +345,12 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                     model.urdf = Some(path);
                 }
             }
-            POSITIVE | NONNEGATIVE => {
-                let requirement =
-                    if key == POSITIVE { Requirement::Positive } else { Requirement::Nonnegative };
+            POSITIVE | NONNEGATIVE | NONZERO => {
+                let requirement = match key.to_string().as_str() {
+                    POSITIVE => Requirement::Positive,
+                    NONNEGATIVE => Requirement::Nonnegative,
+                    _ => Requirement::Nonzero,
+                };
                 let content;
                 syn::parenthesized!(content in input);
                 let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;

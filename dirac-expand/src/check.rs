@@ -125,7 +125,7 @@ fn check_units(cx: &Ctxt, model: &Model<'_>) {
     }
 }
 
-/// `positive(...)` and `nonnegative(...)` name parameters, each once.
+/// `positive(...)`, `nonnegative(...)` and `nonzero(...)` name parameters, each once.
 fn check_requirements(cx: &Ctxt, model: &Model<'_>) {
     let params: Vec<String> = model.params.iter().map(ToString::to_string).collect();
     let mut seen = HashSet::new();

@@ -292,7 +292,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
 }
 
 /// `fn invalid_parameter`: the first `f64` field that is NaN or infinite, then the first that
-/// breaks its `positive` or `nonnegative` requirement.
+/// breaks its `positive`, `nonnegative` or `nonzero` requirement.
 fn invalid_parameter(
     params: &[syn::Ident],
     requirements: &[(syn::Ident, crate::ast::Requirement)],
@@ -311,6 +311,7 @@ fn invalid_parameter(
         let holds = match requirement {
             crate::ast::Requirement::Positive => quote! { self.#field > 0.0 },
             crate::ast::Requirement::Nonnegative => quote! { self.#field >= 0.0 },
+            crate::ast::Requirement::Nonzero => quote! { self.#field != 0.0 },
         };
         quote! {
             if !(#holds) {

@@ -67,6 +67,8 @@ pub const MODE: &str = "_mode";
 pub const POSITIVE: &str = "positive";
 /// `nonnegative(d, ...)`: parameters that must not be negative.
 pub const NONNEGATIVE: &str = "nonnegative";
+/// `nonzero(ratio, ...)`: parameters that must not be zero (a gear's ratio, a transformer's).
+pub const NONZERO: &str = "nonzero";
 /// The name of time in model expressions.
 pub const TIME: &str = "t";
 
@@ -92,6 +94,7 @@ pub const MODEL_KEYS: &[&str] = &[
     UNIT,
     POSITIVE,
     NONNEGATIVE,
+    NONZERO,
     LARGE,
 ];
 

@@ -28,7 +28,7 @@ pub enum SimError {
         name: String,
         /// Its value.
         value: f64,
-        /// What it must be: `"finite"`, `"positive"` or `"non-negative"`.
+        /// What it must be: `"finite"`, `"positive"`, `"non-negative"` or `"nonzero"`.
         requirement: &'static str,
     },
     /// The sampling asked for is not usable.
@@ -77,6 +77,24 @@ pub enum SimError {
         t: f64,
         /// Which unknown is free, and why.
         cause: String,
+    },
+    /// The inertia `∂²L/∂v²` is not positive semi-definite: along some motion the kinetic
+    /// energy (a capacitor's electric energy, in node fluxes) is negative, as with a negative
+    /// mass or capacitance. No physical model has that; one whose inertia vanishes along some
+    /// motion (a degenerate Lagrangian) is allowed.
+    #[error(
+        "the inertia ∂²L/∂v² is not positive at t = {t}: the kinetic energy is negative along the \
+         motion of {coordinates} ({detail}); a mass, a capacitance or a moment of inertia must be \
+         positive (declare it `positive(...)`, and it is refused by name), or the Lagrangian's \
+         velocity terms have the wrong sign"
+    )]
+    NegativeInertia {
+        /// The time of the state.
+        t: f64,
+        /// The coordinates that motion moves most, as `` `x`, `y` ``.
+        coordinates: String,
+        /// The negative inertia found, relative to the model's own.
+        detail: String,
     },
     /// The iteration matrix (or the consistency system) is singular even at tiny steps.
     #[error("singular iteration matrix at t = {t} (step {h:e}): {detail}")]

@@ -120,7 +120,7 @@ pub struct CoupledInductors {
 /// An ideal transformer of turns ratio `n`: `v1 = n v2` and `i2 = −n i1`, lossless. Its row
 /// `transform` carries `−i1`.
 #[derive(LagrangeDirac, Clone, Debug, PartialEq)]
-#[dirac(coordinates(p1 => vp1, n1 => vn1, p2 => vp2, n2 => vn2), port(p1, n1, p2, n2))]
+#[dirac(coordinates(p1 => vp1, n1 => vn1, p2 => vp2, n2 => vn2), port(p1, n1, p2, n2), nonzero(n))]
 #[dirac(lagrangian = 0.0)]
 #[dirac(constraint(transform) = (vp1 - vn1) - n * (vp2 - vn2))]
 #[dirac(output(v1) = vp1 - vn1, output(v2) = vp2 - vn2, output(current1) = -transform)]

@@ -6,7 +6,7 @@ use crate::LagrangeDirac;
 /// `n` is `k w` at the rotational flange's speed `w` (its row `emf`), and the current `i`
 /// through it, into `p`, turns the flange with the torque `k i`. Lossless: `v i = (k i) w`.
 #[derive(LagrangeDirac, Clone, Debug, PartialEq)]
-#[dirac(coordinates(p => vp, n => vn, phi => w), port(p, n, phi))]
+#[dirac(coordinates(p => vp, n => vn, phi => w), port(p, n, phi), nonzero(k))]
 #[dirac(lagrangian = 0.0)]
 #[dirac(constraint(emf) = vp - vn - k * w)]
 #[dirac(output(i) = -emf, output(tau) = -k * emf)]

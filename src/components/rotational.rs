@@ -67,7 +67,7 @@ pub struct SpringDamper {
 /// related by `tau_b = −ratio tau_a`, and the torque on it at `a` is minus its row `gear`'s
 /// multiplier.
 #[derive(LagrangeDirac, Clone, Debug, PartialEq)]
-#[dirac(coordinates(a => wa, b => wb), port(a, b))]
+#[dirac(coordinates(a => wa, b => wb), port(a, b), nonzero(ratio))]
 #[dirac(lagrangian = 0.0)]
 #[dirac(constraint(gear) = wa - ratio * wb)]
 #[dirac(unit(a, b) = "rad", unit(wa, wb) = "rad/s", unit(ratio) = "1")]
@@ -174,7 +174,7 @@ pub struct Brake {
 /// flange `phi` and the translational flange `s` move as `v = radius w`. The force on it at `s`
 /// is minus its row `roll`'s multiplier.
 #[derive(LagrangeDirac, Clone, Debug, PartialEq)]
-#[dirac(coordinates(phi => w, s => v), port(phi, s))]
+#[dirac(coordinates(phi => w, s => v), port(phi, s), nonzero(radius))]
 #[dirac(lagrangian = 0.0)]
 #[dirac(constraint(roll) = v - radius * w)]
 #[dirac(unit(phi) = "rad", unit(w) = "rad/s", unit(s, radius) = "m", unit(v) = "m/s")]

@@ -819,4 +819,10 @@ fn every_parameter_of_every_part_is_checked() {
     refused(rot::Damper { d: 1.0 }, "d", -1.0, "non-negative");
     refused(rot::Clutch { kinetic: 1.0, stiction: 1.0, engaged: 1.0 }, "stiction", -1.0, "non-negative");
     refused(rot::Brake { kinetic: 1.0, stiction: 1.0, engaged: 1.0 }, "kinetic", -1.0, "non-negative");
+    // A ratio of zero locks a side (a gear, a wheel) or shorts it (a transformer, a motor's
+    // back-EMF): no part means that.
+    refused(rot::IdealGear { ratio: 4.0 }, "ratio", 0.0, "nonzero");
+    refused(rot::Wheel { radius: 0.3 }, "radius", 0.0, "nonzero");
+    refused(el::IdealTransformer { n: 2.0 }, "n", 0.0, "nonzero");
+    refused(em::Emf { k: 0.5 }, "k", 0.0, "nonzero");
 }

@@ -93,3 +93,83 @@ fn no_consistent_state_is_a_typed_error() {
         other => panic!("expected an undetermined coordinate, got {other:?}"),
     }
 }
+
+/// A spring and a mass whose mass nothing requires to be positive.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+struct LooseOscillator {
+    m: f64,
+    k: f64,
+}
+
+/// Two bodies on a spring, written with a kinetic energy that is negative along one motion (the
+/// cross term larger than the masses allow: `m1 m2 < c²`), and a third coordinate without
+/// inertia held by a row: degenerate there, which is allowed.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(a => va, b => vb, z => vz))]
+#[dirac(lagrangian = 0.5 * m1 * va * va + 0.5 * m2 * vb * vb + c * va * vb - 0.5 * k * (a - b) * (a - b))]
+#[dirac(holonomic(held) = z)]
+struct CrossedOscillator {
+    m1: f64,
+    m2: f64,
+    c: f64,
+    k: f64,
+}
+
+/// A negative mass is a wrong model, refused before anything runs with the coordinate it moves
+/// (it used to run, to x(5) = 74 m from x = 1); so is an inertia that is indefinite only through
+/// its cross terms, with the coordinates of the motion whose kinetic energy is negative. The
+/// same models with positive inertia start and run; and a degenerate inertia (`z`, none)
+/// stays allowed.
+#[test]
+fn a_negative_or_indefinite_inertia_is_refused_naming_the_coordinates() {
+    let q = VecQ::<LooseOscillator>::from([1.0]);
+    let zero = VecQ::<LooseOscillator>::zeros();
+    let negative = LooseOscillator { m: -1.0, k: 1.0 };
+    let named = |error: SimError, coordinates: &[&str]| match error {
+        SimError::NegativeInertia { coordinates: found, .. } => {
+            for c in coordinates {
+                assert!(found.contains(&format!("`{c}`")), "{found}");
+            }
+        }
+        other => panic!("expected a negative inertia, got {other}"),
+    };
+    named(consistent_state(&negative, 0.0, &q, &zero, Consistency::default()).expect_err("refused"), &["x"]);
+    // A state made by hand is refused by the integrators' start too.
+    let mut state = State::<LooseOscillator>::zeros();
+    state.set_q(LooseOscillator::X, 1.0);
+    let radau = Radau::new(&negative, RadauOptions::default()).expect("valid").solve(
+        0.0,
+        &state,
+        5.0,
+        &Sampling::Steps,
+    );
+    named(radau.expect_err("refused"), &["x"]);
+    let explicit = Explicit::new(&negative, ExplicitOptions::default()).expect("valid").solve(
+        0.0,
+        &state,
+        5.0,
+        &Sampling::Steps,
+    );
+    named(explicit.expect_err("refused"), &["x"]);
+    let positive = LooseOscillator { m: 1.0, k: 1.0 };
+    let start =
+        consistent_state(&positive, 0.0, &q, &zero, Consistency::default()).expect("a positive mass starts");
+    let run = Radau::new(&positive, RadauOptions::tolerances(1e-10, 1e-10))
+        .expect("valid")
+        .solve(0.0, &start, 5.0, &Sampling::Steps)
+        .expect("runs");
+    // x = cos t.
+    assert!((run.q(LooseOscillator::X)[run.len() - 1] - 5f64.cos()).abs() < 1e-8);
+
+    let crossed = CrossedOscillator { m1: 1.0, m2: 1.0, c: 2.0, k: 1.0 };
+    let q = VecQ::<CrossedOscillator>::from([1.0, 0.0, 0.0]);
+    let zero = VecQ::<CrossedOscillator>::zeros();
+    named(
+        consistent_state(&crossed, 0.0, &q, &zero, Consistency::default()).expect_err("refused"),
+        &["a", "b"],
+    );
+    let sound = CrossedOscillator { c: 0.5, ..crossed };
+    consistent_state(&sound, 0.0, &q, &zero, Consistency::default())
+        .expect("positive definite on a, b; none on z");
+}

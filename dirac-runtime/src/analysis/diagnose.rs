@@ -5,7 +5,8 @@
 
 use nalgebra::{DMatrix, DefaultAllocator, SVD};
 
-use crate::algebra::{Algebra, amax, dense_cq, dense_qq};
+use crate::algebra::{Algebra, dense_cq, dense_qq};
+use crate::analysis::init::floor_of;
 use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, MatCQ};
@@ -102,8 +103,10 @@ where
 }
 
 /// The algebraic equation that `state` violates the most beyond `tolerance` (relative to the
-/// size of the terms it is made of: `|A| (1 + |q|)` for `φ(q, t) = 0`, `|A| (1 + |v|)` for
-/// `A(q, t) v + b(q, t) = 0`, `1 + |p| + |∂L/∂v|` for the Legendre map `p = ∂L/∂v`), with its residual.
+/// size of the terms it is made of, row by row: `Σ_i |A_ji| (|q_i| + ρ |q|∞)` for `φ(q, t) = 0`,
+/// `Σ_i |A_ji| (|v_i| + ρ |v|∞) + |b_j|` for `A(q, t) v + b(q, t) = 0`, `|p_i| + ρ |p|∞` for
+/// the Legendre map `p = ∂L/∂v`, with `ρ` a small fraction: a test that does not depend on the
+/// units), with its residual.
 pub fn violated_equation<M: LagrangeDirac>(
     model: &M,
     t: f64,
@@ -114,10 +117,10 @@ where
     DefaultAllocator: Storage<M>,
 {
     let (holonomic, velocity) = constraint_residuals(model, t, state);
-    if let Some((j, r, _)) = holonomic.filter(|w| w.2 > tolerance) {
+    if let Some((j, r, _)) = holonomic.filter(|w| w.2 > tolerance || w.2.is_nan()) {
         return Some((format!("holonomic constraint `{}`", model.constraint_names()[j]), r));
     }
-    if let Some((j, r, _)) = velocity.filter(|w| w.2 > tolerance) {
+    if let Some((j, r, _)) = velocity.filter(|w| w.2 > tolerance || w.2.is_nan()) {
         return Some((format!("velocity constraint `{}`", model.constraint_names()[j]), r));
     }
     violated_legendre_map(model, t, state, tolerance)
@@ -125,7 +128,7 @@ where
 
 /// The largest residual of `φ(q, t) = 0` and of `A(q, t) v + b(q, t) = 0` at `state`, each as
 /// its row, the residual, and the residual relative to the size of the terms it is made of
-/// (`φ / (|A| (1 + |q|))` is a distance in q). Allocates nothing for a dense model.
+/// (see [`violated_equation`]). Allocates nothing for a dense model.
 fn constraint_residuals<M: LagrangeDirac>(
     model: &M,
     t: f64,
@@ -147,17 +150,47 @@ fn constraint_residuals_in<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let CheckRoom { phi, a, av, .. } = room;
+    let CheckRoom { phi, a, av, sizes_h, sizes_c, .. } = room;
     model.holonomic(t, &state.q, phi);
     model.constraint_matrix(t, &state.q, a);
-    let size_a = amax(M::Algebra::cq_values(a)).max(f64::MIN_POSITIVE);
-    let (q_scale, v_scale) = (size_a * (1.0 + state.q.amax()), size_a * (1.0 + state.v.amax()));
     model.constraint_rate(t, &state.q, av);
+    // Each row against the size of its own terms (in units of the row's own), the positions
+    // and velocities below a fraction of the largest measured against that fraction.
+    let (q_floor, v_floor) = (floor_of(state.q.amax()), floor_of(state.v.amax()));
+    let nh = sizes_h.len();
+    sizes_h.fill(0.0);
+    sizes_c.iter_mut().zip(av.iter()).for_each(|(s, b)| *s = b.abs());
+    M::Algebra::cq_entries(a, |row, column, value| {
+        if row < nh {
+            sizes_h[row] += value.abs() * (state.q[column].abs() + q_floor);
+        }
+        sizes_c[row] += value.abs() * (state.v[column].abs() + v_floor);
+    });
     M::Algebra::cq_mul(a, 1.0, state.v.as_slice(), av.as_mut_slice());
-    (
-        worst(phi.iter().copied()).map(|(j, r)| (j, r, r / q_scale)),
-        worst(av.iter().copied()).map(|(j, r)| (j, r, r / v_scale)),
-    )
+    (relative_worst(phi.as_slice(), sizes_h.as_slice()), relative_worst(av.as_slice(), sizes_c.as_slice()))
+}
+
+/// The residual furthest beyond its row's size (a NaN first), as its row, the residual and
+/// their ratio (infinite where the size is zero and the residual is not).
+fn relative_worst(residuals: &[f64], sizes: &[f64]) -> Option<Worst> {
+    let mut best: Option<Worst> = None;
+    for (j, (&r, &size)) in residuals.iter().zip(sizes).enumerate() {
+        let r = r.abs();
+        let ratio = if r.is_nan() {
+            f64::NAN
+        } else if r == 0.0 {
+            0.0
+        } else if size == 0.0 {
+            f64::INFINITY
+        } else {
+            r / size
+        };
+        match best {
+            Some((_, _, b)) if b.is_nan() || (!ratio.is_nan() && b >= ratio) => {}
+            _ => best = Some((j, r, ratio)),
+        }
+    }
+    best
 }
 
 /// The vectors and the constraint matrix the checks of a restart evaluate into, made once with
@@ -170,6 +203,9 @@ where
     a: MatCQ<M>,
     av: VecC<M>,
     dl_dv: VecQ<M>,
+    /// The sizes of the holonomic and of the velocity rows' terms.
+    sizes_h: VecH<M>,
+    sizes_c: VecC<M>,
 }
 
 impl<M: LagrangeDirac> CheckRoom<M>
@@ -183,6 +219,8 @@ where
             a: M::Algebra::zeros_cq(&model.shape()),
             av: sizes.zeros_c::<M>(),
             dl_dv: sizes.zeros_q::<M>(),
+            sizes_h: sizes.zeros_h::<M>(),
+            sizes_c: sizes.zeros_c::<M>(),
         }
     }
 }
@@ -260,9 +298,13 @@ where
 {
     let dl_dv = &mut room.dl_dv;
     model.dl_dv(t, &state.q, &state.v, dl_dv);
-    let p_scale = 1.0 + state.p.amax().max(dl_dv.amax());
-    let gap = state.p.iter().zip(dl_dv.iter()).map(|(p, l)| p - l);
-    if let Some((i, r)) = worst(gap).filter(|(_, r)| *r > tolerance * p_scale) {
+    // Each momentum against its own size, those below a fraction of the largest against that.
+    let floor = floor_of(state.p.amax().max(dl_dv.amax()));
+    let beyond = state.p.iter().zip(dl_dv.iter()).enumerate().find_map(|(i, (p, l))| {
+        let r = (p - l).abs();
+        (r.is_nan() || r > tolerance * (p.abs().max(l.abs()) + floor)).then_some((i, r))
+    });
+    if let Some((i, r)) = beyond {
         let name = &model.coordinate_names()[i];
         return Some((
             format!(
@@ -272,14 +314,6 @@ where
         ));
     }
     None
-}
-
-/// The index and size of the largest entry in absolute value.
-fn worst(values: impl Iterator<Item = f64>) -> Option<(usize, f64)> {
-    values.map(f64::abs).enumerate().fold(None, |best, (i, x)| match best {
-        Some((_, b)) if b >= x => best,
-        _ => Some((i, x)),
-    })
 }
 
 /// Why the saddle-point matrix `[L_vv Aᵀ; A 0]` of `model` at `(t, q, v)` is singular: the
@@ -310,10 +344,14 @@ where
     DefaultAllocator: Storage<M>,
 {
     let (n, m) = (lvv.nrows(), a.nrows());
+    // In the model's own units, so that the null space's largest entries are the unknowns it
+    // moves, whatever their units.
+    let units = crate::analysis::units::Units::of(lvv, a);
+    let a_scaled = units.a(a);
     let mut kkt = DMatrix::zeros(n + m, n + m);
-    kkt.view_mut((0, 0), (n, n)).copy_from(lvv);
-    kkt.view_mut((0, n), (n, m)).copy_from(&a.transpose());
-    kkt.view_mut((n, 0), (m, n)).copy_from(a);
+    kkt.view_mut((0, 0), (n, n)).copy_from(&units.lvv(lvv));
+    kkt.view_mut((0, n), (n, m)).copy_from(&a_scaled.transpose());
+    kkt.view_mut((n, 0), (m, n)).copy_from(&a_scaled);
     let Some(svd) = svd(&kkt) else {
         return "the matrix holds values that are not finite".to_owned();
     };
@@ -368,4 +406,85 @@ where
         Unknown::Velocity(i) => format!("no pivot for the velocity `{}`", model.velocity_names()[i]),
         Unknown::Multiplier(j) => format!("no pivot for the multiplier `{}`", model.constraint_names()[j]),
     }
+}
+
+/// An error if the inertia `L_vv` at `(t, q, v)` is not positive semi-definite: along some
+/// motion the kinetic energy is negative (a negative mass or capacitance), which no physical
+/// model has. A degenerate inertia (zero along some motion) passes.
+///
+/// A dense model's is decided on its eigenvalues in the model's own units ([`Units`]: unit
+/// inertia wherever there is some), so that a small inertia is not taken for round-off: an
+/// eigenvalue below `−1e-9` of the largest is negative. A sparse model's, on its diagonal and
+/// its 2 × 2 principal minors (`L_ii ≥ 0`, `L_ij² ≤ L_ii L_jj`), which catch a negative part
+/// in a network at a cost linear in its size.
+pub(crate) fn check_inertia<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let n = sizes.nq;
+    let mut lvv = M::Algebra::zeros_qq(&shape);
+    model.l_vv(t, q, v, &mut lvv);
+    if M::Algebra::qq_values(&lvv).iter().any(|x| !x.is_finite()) {
+        return Ok(());
+    }
+    let names = model.coordinate_names();
+    let negative = |coordinates: Vec<usize>, detail: String| SimError::NegativeInertia {
+        t,
+        coordinates: coordinates.iter().map(|&i| format!("`{}`", names[i])).collect::<Vec<_>>().join(", "),
+        detail,
+    };
+    if M::Algebra::dense_qq(&lvv).is_none() {
+        let mut diagonal = vec![0.0; n];
+        M::Algebra::qq_entries(&lvv, |row, column, value| {
+            if row == column {
+                diagonal[row] += value;
+            }
+        });
+        if let Some(i) = (0..n).find(|&i| diagonal[i] < 0.0) {
+            return Err(negative(vec![i], format!("∂²L/∂v² has {:e} on its diagonal there", diagonal[i])));
+        }
+        let mut found = None;
+        M::Algebra::qq_entries(&lvv, |row, column, value| {
+            if row < column
+                && found.is_none()
+                && value * value > (1.0 + 1e-9) * diagonal[row] * diagonal[column]
+            {
+                found = Some((row, column));
+            }
+        });
+        return match found {
+            Some((i, j)) => {
+                Err(negative(vec![i, j], "a 2 × 2 principal minor of ∂²L/∂v² is negative".into()))
+            }
+            None => Ok(()),
+        };
+    }
+    let mut a = M::Algebra::zeros_cq(&shape);
+    model.constraint_matrix(t, q, &mut a);
+    let (lvv, a) = (dense_qq::<M, M::Algebra>(&lvv, n), dense_cq::<M, M::Algebra>(&a, sizes.nc, n));
+    if !a.iter().all(|x| x.is_finite()) || n == 0 {
+        return Ok(());
+    }
+    let units = crate::analysis::units::Units::of(&lvv, &a);
+    let scaled = units.lvv(&lvv);
+    let scaled = (&scaled + scaled.transpose()) * 0.5;
+    let eigen = nalgebra::SymmetricEigen::new(scaled);
+    let (k, least) = eigen.eigenvalues.argmin();
+    let largest = eigen.eigenvalues.amax().max(1.0);
+    if least >= -1e-9 * largest {
+        return Ok(());
+    }
+    let direction = eigen.eigenvectors.column(k);
+    let biggest = direction.amax();
+    let moved: Vec<usize> = (0..n).filter(|&i| direction[i].abs() > 0.3 * biggest).collect();
+    Err(negative(
+        moved,
+        format!("an eigenvalue of {least:.3e} in the model's own units, where its inertia is 1"),
+    ))
 }

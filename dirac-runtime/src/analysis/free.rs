@@ -33,7 +33,7 @@ pub(crate) struct FreeVelocities<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
 {
-    /// `N`, `n × k`, orthonormal columns.
+    /// `N`, `n × k`, orthonormal columns (in the model's coordinates).
     basis: DMatrix<f64>,
     /// `N Nᵀ` in the model's storage, which completes `L_vv` into a regular matrix.
     pub projector: MatQQ<M>,
@@ -69,7 +69,7 @@ where
         let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
         model.l_vv(t, q, v, &mut lvv);
         model.constraint_matrix(t, q, &mut a);
-        let Some(basis) =
+        let Some(directions) =
             free_directions(&dense_qq::<M, M::Algebra>(&lvv, n), &dense_cq::<M, M::Algebra>(&a, m, n))
         else {
             return Err(SimError::NonFinite {
@@ -77,10 +77,12 @@ where
                 component: "the mass matrix or the constraint rows".into(),
             });
         };
-        let k = basis.ncols();
+        let k = directions.ncols();
         if k == 0 {
             return Ok(None);
         }
+        // The same directions, orthonormal in the model's coordinates.
+        let basis = directions.qr().q();
         let mut projector = M::Algebra::zeros_qq(&shape);
         if M::Algebra::dense_qq(&projector).is_none() {
             return Err(SimError::NotDetermined {

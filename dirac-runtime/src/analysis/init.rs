@@ -22,9 +22,11 @@ use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use crate::algebra::{Algebra, dense_cq, dense_qq};
 use crate::analysis::diagnose::{
-    DENSE_ANALYSIS, SPARSE_ANALYSIS, cause_of, check_finite_state, non_finite_entry, non_finite_qq, svd,
+    DENSE_ANALYSIS, SPARSE_ANALYSIS, cause_of, check_finite_state, check_inertia, non_finite_entry,
+    non_finite_qq, svd,
 };
 use crate::analysis::init_saddle;
+use crate::analysis::units::Units;
 use crate::error::SimError;
 use crate::model::configuration;
 use crate::model::state::State;
@@ -104,16 +106,18 @@ where
         };
         return Err(SimError::NonFinite { t, component: names[i].clone() });
     }
-    // Large models keep the saddle path, which has no velocities fixed by forces (yet); so do
-    // sparse models beyond a few hundred unknowns whose inertia and constraints fix every
-    // velocity, where the dense analysis would only cost an SVD.
+    // Large models and sparse ones beyond a few hundred unknowns take the saddle path: sparse
+    // factorisations, linear in the size of a network, where the dense analysis costs a
+    // singular value decomposition, cubic in it.
     let size = sizes.nq + sizes.nc;
-    let saddle_path = size > DENSE_ANALYSIS
-        || (size > SPARSE_ANALYSIS && init_saddle::velocities_determined(model, t, &s.q, &s.v));
+    let sparse = M::Algebra::dense_qq(&M::Algebra::zeros_qq(&model.shape())).is_none();
+    let saddle_path = size > DENSE_ANALYSIS || (sparse && size > SPARSE_ANALYSIS);
+    check_inertia(model, t, &s.q, &s.v)?;
     let free = if saddle_path {
-        init_saddle::project_positions(model, t, &mut s.q, (options.tolerance, options.max_iterations))?;
+        let budget = (options.tolerance, options.max_iterations);
+        init_saddle::project_positions(model, t, &mut s.q, budget)?;
         init_saddle::project_velocities(model, t, &s.q, &mut s.v, options.tolerance)?;
-        0
+        usize::from(init_saddle::free_velocities(model, t, &s.q, &mut s.v, budget)?)
     } else {
         project_positions(model, t, &mut s.q, options)?;
         project_velocities(model, t, &s.q, &mut s.v, options)?;
@@ -152,8 +156,12 @@ where
                 t, component: "a holonomic constraint's row ∂φ/∂q".into()
             });
         }
-        // φ / |∂φ/∂q| is how far the positions are from the constraint, to first order.
-        if phi.amax() <= options.tolerance * ah.amax() * (1.0 + q.amax()) {
+        // φ / |∂φ/∂q| is how far the positions are from the constraint, to first order; each
+        // row against the size of its terms linear in the positions.
+        let floor = floor_of(q.amax());
+        let sizes =
+            DVector::from_fn(h, |j, _| (0..n).map(|i| ah[(j, i)].abs() * (q[i].abs() + floor)).sum::<f64>());
+        if within(phi.as_slice(), sizes.as_slice(), options.tolerance) {
             return Ok(());
         }
         if iteration == options.max_iterations {
@@ -174,6 +182,31 @@ where
         residual,
         iterations: options.max_iterations,
     })
+}
+
+/// The fraction of the largest position (velocity) below which a position (velocity) is
+/// measured against that fraction in the tests of the constraints' residuals: each row is
+/// held to the size of its own terms, `Σ_i |A_ji| (|x_i| + FLOOR |x|∞)`, which does not depend
+/// on the units, and the floor leaves room for the round-off of the solves that mix the
+/// smallest values with the largest.
+pub(crate) const FLOOR: f64 = 1e-2;
+
+/// A position, velocity, momentum or force below this, in whatever units a model is written
+/// in, is a zero: no physical quantity is that small in units people use (the electron's mass
+/// is 9e-31 kg, its momentum in an atom 2e-24 kg m/s). The last floor of the residual tests,
+/// where everything is at rest and the round-off of a solve leaves values of 1e-50.
+pub(crate) const NEGLIGIBLE: f64 = 1e-30;
+
+/// The floor `FLOOR |x|∞`, at least [`NEGLIGIBLE`], against which a value of `x` below it is
+/// measured.
+pub(crate) fn floor_of(largest: f64) -> f64 {
+    (FLOOR * largest).max(NEGLIGIBLE)
+}
+
+/// Whether every residual is within `tolerance` times its row's `size` (a zero size asks for
+/// an exact zero).
+pub(crate) fn within(residuals: &[f64], sizes: &[f64], tolerance: f64) -> bool {
+    residuals.iter().zip(sizes).all(|(r, s)| r.abs() <= tolerance * s)
 }
 
 fn holonomic_not_finite<M: LagrangeDirac>(model: &M, t: f64, phi: &[f64]) -> SimError
@@ -215,35 +248,40 @@ where
     model.constraint_rate(t, q, &mut b);
     non_finite_entry(model, t, "the constraint rates b(q, t)", b.as_slice(), false)?;
     let b = DVector::from_column_slice(b.as_slice());
-    let av = &a * DVector::from_column_slice(v.as_slice()) + &b;
+    let v_now = DVector::from_column_slice(v.as_slice());
+    let av = &a * &v_now + &b;
     non_finite_entry(model, t, "the constraint velocities A(q, t) v + b(q, t)", av.as_slice(), false)?;
-    let size_a = a.amax();
-    if av.amax() <= options.tolerance * size_a * (1.0 + v.amax()) {
+    if worst_row(&a, &v_now, &b, options.tolerance).is_none() {
         return Ok(());
     }
     let mut lvv = M::Algebra::zeros_qq(&shape);
     model.l_vv(t, q, v, &mut lvv);
     non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
-    let w = dense_qq::<M, M::Algebra>(&lvv, n);
-    // A small multiple of I keeps the problem well posed where L_vv is singular off ker A.
-    let reg = 1e-10 * w.amax().max(1.0);
+    // The change of least kinetic energy, in the model's own units, where `L'` has a unit
+    // diagonal wherever there is inertia; along velocities that neither inertia nor the
+    // constraints fix, the least change (the minimal-norm solution). Refined once against the
+    // rows' residual, with the same factors.
+    let units = Units::of(&dense_qq::<M, M::Algebra>(&lvv, n), &a);
+    let a_scaled = units.a(&a);
     let mut kkt = DMatrix::zeros(n + m, n + m);
-    kkt.view_mut((0, 0), (n, n)).copy_from(&(w + DMatrix::identity(n, n) * reg));
-    kkt.view_mut((0, n), (n, m)).copy_from(&a.transpose());
-    kkt.view_mut((n, 0), (m, n)).copy_from(&a);
-    let mut rhs = DVector::zeros(n + m);
-    rhs.rows_mut(n, m).copy_from(&(-av));
-    let x = min_norm_solve(&kkt, &rhs);
-    for i in 0..n {
-        v[i] += x[i];
+    kkt.view_mut((0, 0), (n, n)).copy_from(&units.lvv(&dense_qq::<M, M::Algebra>(&lvv, n)));
+    kkt.view_mut((0, n), (n, m)).copy_from(&a_scaled.transpose());
+    kkt.view_mut((n, 0), (m, n)).copy_from(&a_scaled);
+    let Some(svd) = svd(&kkt) else {
+        return Err(SimError::NonFinite { t, component: "the mass matrix or the constraint rows".into() });
+    };
+    let cut = 1e-12 * svd.singular_values.max();
+    let mut av = av;
+    for _ in 0..2 {
+        let rhs = DVector::from_fn(n + m, |k, _| if k < n { 0.0 } else { -units.row[k - n] * av[k - n] });
+        let x = svd.solve(&rhs, cut).expect("SVD with both factors computed");
+        for i in 0..n {
+            v[i] += units.velocity[i] * x[i];
+        }
+        av = &a * DVector::from_column_slice(v.as_slice()) + &b;
     }
-    let after = &a * DVector::from_column_slice(v.as_slice()) + &b;
-    let limit = 1e3 * options.tolerance * size_a * (1.0 + v.amax());
-    if after.amax().is_nan() || after.amax() > limit {
-        let (j, residual) = after
-            .iter()
-            .enumerate()
-            .fold((0, 0.0f64), |b, (j, x)| if x.is_nan() || x.abs() > b.1 { (j, x.abs()) } else { b });
+    let v_now = DVector::from_column_slice(v.as_slice());
+    if let Some((j, residual)) = worst_row(&a, &v_now, &b, 1e3 * options.tolerance) {
         return Err(SimError::InconsistentInitialState {
             equation: format!("velocity constraint `{}`", model.constraint_names()[j]),
             residual,
@@ -253,9 +291,29 @@ where
     Ok(())
 }
 
+/// The row of `A v + b = 0` furthest beyond `tolerance` times the size of its own terms,
+/// `Σ_i |A_ji| (|v_i| + FLOOR |v|∞) + |b_j|` (a test that does not depend on the units of the velocities or of
+/// the rows), with its residual; `None` if every row is within it.
+fn worst_row(a: &DMatrix<f64>, v: &DVector<f64>, b: &DVector<f64>, tolerance: f64) -> Option<(usize, f64)> {
+    let mut worst: Option<(usize, f64, f64)> = None;
+    let floor = floor_of(v.amax());
+    for j in 0..a.nrows() {
+        let (mut sum, mut size) = (b[j], b[j].abs());
+        for i in 0..a.ncols() {
+            sum += a[(j, i)] * v[i];
+            size += a[(j, i)].abs() * (v[i].abs() + floor);
+        }
+        let excess = sum.abs() / size;
+        if sum.is_nan() || sum.abs() > tolerance * size && worst.is_none_or(|(_, _, e)| excess > e) {
+            worst = Some((j, sum.abs(), if sum.is_nan() { f64::INFINITY } else { excess }));
+        }
+    }
+    worst.map(|(j, residual, _)| (j, residual))
+}
+
 /// The right-hand sides of the multipliers' system at `(t, q, v)`: the momentum balance
 /// without constraint forces and the differentiated constraints, each checked to be finite.
-fn rates<M: LagrangeDirac>(
+pub(crate) fn rates<M: LagrangeDirac>(
     model: &M,
     t: f64,
     q: &VecQ<M>,
@@ -311,7 +369,9 @@ where
     non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
     model.constraint_matrix(t, q, &mut a);
     non_finite_entry(model, t, "the constraint rows A(q)", M::Algebra::cq_values(&a), false)?;
-    let lambda = if saddle_path {
+    let lambda = if saddle_path && free > 0 {
+        DVector::from_vec(init_saddle::free_multipliers(model, t, (q, v), (&top, &bottom))?)
+    } else if saddle_path {
         DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)
     } else {
         dense_multipliers(
@@ -346,13 +406,20 @@ where
     DefaultAllocator: Storage<M>,
 {
     let (n, m) = (lvv.nrows(), a.nrows());
+    // In the model's own units, so that a small inertia counts as inertia.
+    let units = Units::of(lvv, a);
+    let a_scaled = units.a(a);
     let mut kkt = DMatrix::zeros(n + m, n + m);
-    kkt.view_mut((0, 0), (n, n)).copy_from(lvv);
-    kkt.view_mut((0, n), (n, m)).copy_from(&(-a.transpose()));
-    kkt.view_mut((n, 0), (m, n)).copy_from(a);
+    kkt.view_mut((0, 0), (n, n)).copy_from(&units.lvv(lvv));
+    kkt.view_mut((0, n), (n, m)).copy_from(&(-a_scaled.transpose()));
+    kkt.view_mut((n, 0), (m, n)).copy_from(&a_scaled);
     let mut rhs = DVector::zeros(n + m);
-    rhs.rows_mut(0, n).copy_from_slice(top);
-    rhs.rows_mut(n, m).copy_from_slice(bottom);
+    for i in 0..n {
+        rhs[i] = units.velocity[i] * top[i];
+    }
+    for j in 0..m {
+        rhs[n + j] = units.row[j] * bottom[j];
+    }
     let singular = || SimError::NotDetermined { t, cause: cause_of(model, lvv, a) };
     let Some(svd) = svd(&kkt) else {
         return Err(singular());
@@ -363,25 +430,41 @@ where
         return Err(singular());
     }
     let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
-    Ok(x.rows(n, m).into_owned())
+    Ok(DVector::from_fn(m, |j, _| units.row[j] * x[n + j]))
 }
 
-/// An orthonormal basis (by columns) of `ker L_vv ∩ ker A`: the velocities that neither
-/// inertia nor constraints fix. Each kernel is taken relative to its own matrix's size (a
-/// model whose masses are all 1e-300 has inertia all the same): first `Z` spanning `ker A`,
-/// then the kernel of `Zᵀ L_vv Z`.
+/// A basis (by columns) of `ker L_vv ∩ ker A`: the velocities that neither inertia nor
+/// constraints fix. The kernels are taken in the model's own units ([`Units`]), so that a small
+/// inertia is inertia whatever the units: first `Z` spanning `ker A'`, then the kernel of
+/// `Zᵀ L' Z`, orthonormal there; the columns are those directions in the model's units,
+/// `D_v N'` (not orthonormal in them).
 pub(crate) fn free_directions(lvv: &DMatrix<f64>, a: &DMatrix<f64>) -> Option<DMatrix<f64>> {
     let n = lvv.nrows();
-    let z = if a.nrows() == 0 { DMatrix::identity(n, n) } else { null_space(a, 1e-10)? };
+    let units = Units::of(lvv, a);
+    let (lvv, a) = (units.lvv(lvv), units.a(a));
+    let z = if a.nrows() == 0 { DMatrix::identity(n, n) } else { null_space(&a, 1e-10)? };
     if z.ncols() == 0 {
         return Some(z);
     }
-    let reduced = z.transpose() * lvv * &z;
-    if lvv.amax() == 0.0 {
-        return Some(z);
+    let scaled = if lvv.amax() == 0.0 {
+        z
+    } else {
+        // `L'` has a unit diagonal where there is inertia: its kernel is relative to 1.
+        let reduced = z.transpose() * &lvv * &z;
+        z * null_space(&reduced, 1e-10)?
+    };
+    // Entries of round-off size are zeros: in the model's units they would be multiplied by
+    // the large scales of small inertias, and move velocities the constraints hold.
+    let mut scaled = scaled;
+    for mut column in scaled.column_iter_mut() {
+        let largest = column.amax();
+        column.apply(|x| {
+            if x.abs() <= 64.0 * f64::EPSILON * largest {
+                *x = 0.0;
+            }
+        });
     }
-    let inner = null_space(&reduced, 1e-10 * lvv.amax() / reduced.amax().max(f64::MIN_POSITIVE))?;
-    Some(z * inner)
+    Some(DMatrix::from_fn(n, scaled.ncols(), |i, k| units.velocity[i] * scaled[(i, k)]))
 }
 
 /// An orthonormal basis (by columns) of the null space of `a`: the right singular vectors
@@ -472,12 +555,15 @@ where
         let (top, _) = rates(model, t, q, v)?;
         let top = DVector::from_vec(top);
         let r = free.transpose() * &top;
-        // The size of the terms the balance is made of, for a relative test.
+        // The size of the terms each projected balance is made of (the forces may cancel
+        // there), for a test relative to them: `|N|ᵀ (|balance| + |F|)`.
         let mut force = model.sizes().zeros_q::<M>();
         model.force(t, q, v, &mut force);
-        let scale = 1.0 + top.amax().max(force.amax());
+        let floor = floor_of(top.amax().max(force.amax()));
+        let terms = DVector::from_fn(n, |i, _| top[i].abs() + force[i].abs() + floor);
+        let scale = free.abs().transpose() * terms;
         residual = r.amax();
-        if residual <= 1e2 * options.tolerance * scale {
+        if r.iter().zip(scale.iter()).all(|(r, s)| r.abs() <= 1e2 * options.tolerance * s) {
             return Ok(k);
         }
         let y = svd.solve(&r, 0.0).expect("SVD with both factors computed");

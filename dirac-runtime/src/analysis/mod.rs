@@ -18,3 +18,4 @@ pub mod joint_space;
 /// Linearisation about an equilibrium, in minimal coordinates.
 pub mod linear;
 pub(crate) mod projection;
+pub(crate) mod units;
