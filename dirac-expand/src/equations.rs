@@ -56,13 +56,13 @@ pub fn latex_accented(name: &str, extra: Option<&str>) -> String {
 }
 
 /// The name of symbol `sym` of a primitive model, for people.
-/// The condition of each switching surface (an event of direction 2), as text: `(name, c)`
-/// for `c = 0`.
+/// The condition of each switching surface (an event of direction 2, or 9 for a timed one), as
+/// text: `(name, c)` for `c = 0`.
 pub fn surfaces(model: &SymModel) -> Vec<(String, String)> {
     model
         .events
         .iter()
-        .filter(|(_, direction, _)| *direction == 2)
+        .filter(|(_, direction, _)| matches!(*direction, 2 | 9))
         .map(|(name, _, c)| {
             (name.clone(), pretty(&model.graph, *c, Style::Text, &|s| display_name(model, s, Style::Text)))
         })

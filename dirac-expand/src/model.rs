@@ -163,8 +163,9 @@ impl SymModel {
     /// Adds an event for each switching surface `c = 0` of a non-smooth function or a
     /// conditional in the Lagrangian, the forces (the dissipation's among them) and the
     /// constraints, named `switch0`, `switch1`, … (skipping names in use), with the direction
-    /// code 2 (a switching surface: located in every solve, the integration restarted there).
-    /// `c` and `−c` are one surface.
+    /// code 2 (a switching surface: located in every solve, the integration restarted there),
+    /// or 9 where `c` depends on time and parameters alone (a timed switch, whose crossing every
+    /// solve knows before its step and ends the step at). `c` and `−c` are one surface.
     fn add_switching_surfaces(&mut self) {
         let mut roots = vec![self.lagrangian];
         roots.extend(&self.force);
@@ -196,7 +197,9 @@ impl SymModel {
                     break name;
                 }
             };
-            self.events.push((name, 2, c));
+            let state = self.q.iter().chain(&self.v).chain(&self.p).chain(&self.lambda).chain(&self.inputs);
+            let timed = !state.filter_map(|&x| self.graph.as_sym(x)).any(|s| self.graph.depends_on(c, s));
+            self.events.push((name, if timed { 9 } else { 2 }, c));
         }
     }
 

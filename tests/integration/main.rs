@@ -41,6 +41,7 @@ mod profile;
 mod radau;
 mod results;
 mod robots;
+mod scales;
 mod sensitivities;
 mod spice;
 mod util;

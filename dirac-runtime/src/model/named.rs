@@ -52,7 +52,7 @@ pub trait Named {
     /// Whether the model or a subsystem has switching surfaces (non-smooth functions or
     /// conditionals in its Lagrangian, forces or constraints), which every solve locates.
     fn has_switches(&self) -> bool {
-        self.any_event(&|d| d == crate::model::names::SWITCH)
+        self.any_event(&crate::model::names::is_switch)
     }
 
     /// Every declared event's full dotted name and direction code (−1 falling, 1 rising, 0

@@ -9,6 +9,15 @@
 /// the surface `c = 0` of an `abs`, `min`, `max`, `clamp`, `signum` or conditional, crossed
 /// either way.
 pub const SWITCH: i8 = 2;
+/// The direction code of a timed switch: a switching surface whose condition `c` depends on
+/// time and parameters alone (a step source's `t < start`), whose crossings a solve finds
+/// before it steps and ends a step at, so that no step straddles one.
+pub const TIMED: i8 = 9;
+/// Whether a direction code is a switching surface's, timed or not.
+#[inline]
+pub const fn is_switch(code: i8) -> bool {
+    code == SWITCH || code == TIMED
+}
 /// The direction code of a friction law's engage event (`<law>_stops`: its slip stops).
 pub const STOPS: i8 = 3;
 /// The direction code of a friction law's release event (`<law>_slips`).
@@ -44,7 +53,7 @@ pub struct Names {
     /// The model's own events (`event(name, direction) = g`), each with the direction of the
     /// crossings that count: −1 falling, 1 rising, 0 either; [`SWITCH`] for the switching
     /// surfaces of its non-smooth functions and conditionals (`switch0`, …), which every
-    /// solve locates; [`STOPS`] to [`OPENS`] for the events that switch its laws (`friction`,
+    /// solve locates ([`TIMED`] for those of time alone); [`STOPS`] to [`OPENS`] for the events that switch its laws (`friction`,
     /// `diode`, `switch`), crossings of zero from above.
     pub events: &'static [(&'static str, i8)],
     /// The condition `c` of each of the model's own switching surfaces `c = 0`, as text, by

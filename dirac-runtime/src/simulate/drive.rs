@@ -23,6 +23,9 @@ pub(crate) struct Stops {
     goal: f64,
     /// The start of the stretch the integration is in.
     start: f64,
+    /// The crossing of a timed switch the next step is to end at, if any
+    /// ([`Integrator::end_step_at`](crate::Integrator::end_step_at)).
+    timed: Option<f64>,
 }
 
 impl Stops {
@@ -49,10 +52,20 @@ impl Stops {
         self.start = t;
         let passed = t + 64.0 * f64::EPSILON * t.abs().max(1.0);
         let k = self.times.partition_point(|&s| s <= passed);
-        match self.times.get(k) {
+        let stop = match self.times.get(k) {
             Some(&s) if s < goal => s,
             _ => goal,
+        };
+        // A timed switch's crossing is exact: it only has to lie ahead.
+        match self.timed {
+            Some(s) if s > t && s < stop => s,
+            _ => stop,
         }
+    }
+
+    /// Ends the stretch at `t` too, the crossing of a timed switch (`None`: no such end).
+    pub fn set_timed(&mut self, t: Option<f64>) {
+        self.timed = t;
     }
 
     /// The end the integration is heading for.
@@ -68,13 +81,13 @@ impl Stops {
         t >= end && end < self.goal
     }
 
-    /// The time at which inputs are read for an evaluation at `t` in the stretch that ends at
-    /// `end`: `t` itself, except at the end of a stretch when there are stops, where the inputs
-    /// are read just before it, so that a jump there (a held sample) reaches no stage of the
-    /// step that ends at it.
+    /// The time at which inputs (and the model itself) are read for an evaluation at `t` in the
+    /// stretch that ends at `end`: `t` itself, except at the end of a stretch when there are
+    /// stops, where they are read just before it, so that a jump there (a held sample, a timed
+    /// switch) reaches no stage of the step that ends at it.
     #[inline]
     pub fn read_at(&self, t: f64, end: f64) -> f64 {
-        if !self.times.is_empty() && t >= end { end.next_down() } else { t }
+        if (!self.times.is_empty() || self.timed.is_some()) && t >= end { end.next_down() } else { t }
     }
 }
 

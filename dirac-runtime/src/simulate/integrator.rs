@@ -151,6 +151,34 @@ where
         false
     }
 
+    /// Replaces the multipliers of `state`, the state at `t` within the last step, by those the
+    /// equations of motion give at its positions and velocities, where the method's own are
+    /// less accurate between steps (Radau's collocation polynomial holds index-2 multipliers to
+    /// its stage order only): what a release (a law's force through zero, a resting contact's)
+    /// is located on. Leaves them as they are by default, and where that system is singular.
+    #[doc(hidden)]
+    fn exact_multipliers(&self, t: f64, state: &mut State<M>) {
+        let _ = (t, state);
+    }
+
+    /// Where the next step would end as the integrator stands (its proposed step, within its
+    /// stretch): how far a timed switch is looked for before the step. The end time by
+    /// default.
+    #[doc(hidden)]
+    fn next_step_end(&self) -> f64 {
+        self.end()
+    }
+
+    /// Ends the next steps at `t` (`None`: no such bound), reading the model there from the
+    /// left, so that a timed switch crossed at `t` (a step source's edge) reaches no stage of
+    /// the step that ends at it. Returns whether the method honours it (a fixed-step method
+    /// does not: its steps straddle the switch, which the events then locate).
+    #[doc(hidden)]
+    fn end_step_at(&mut self, t: Option<f64>) -> bool {
+        let _ = t;
+        false
+    }
+
     /// Whether the end time has been reached.
     fn finished(&self) -> bool;
 
@@ -497,7 +525,7 @@ where
     model
         .event_declarations()
         .into_iter()
-        .filter(|&(_, d)| d == crate::model::names::SWITCH)
+        .filter(|&(_, d)| crate::model::names::is_switch(d))
         .map(|(name, _)| format!("`{name}`: {} = 0", model.surface(&name).unwrap_or("?")))
         .collect()
 }

@@ -32,6 +32,9 @@ where
         self.previous.clone_from(state);
         (self.t, self.t_previous, self.h_last) = (t0, t0, 0.0);
         self.t_end = self.driver.stops.stretch(t0, t_end);
+        // A tenth of the span: near t = 0, the resolution the run's own times have.
+        self.time_scale = 0.1 * (t_end - t0);
+        self.peaks = [0.0; 2];
         self.stats = ExplicitStats::default();
         self.accelerations.factorizations = 0;
         self.forget();
@@ -103,6 +106,19 @@ where
         self.driver.stops.goal()
     }
 
+    fn next_step_end(&self) -> f64 {
+        (self.t + self.h).min(self.driver.stops.goal())
+    }
+
+    fn end_step_at(&mut self, t: Option<f64>) -> bool {
+        if self.options.fixed_step.is_some() {
+            return false;
+        }
+        self.driver.stops.set_timed(t);
+        self.t_end = self.driver.stops.stretch(self.t, self.driver.stops.goal());
+        true
+    }
+
     fn step(&mut self) -> Result<f64, SimError> {
         if self.driver.stops.due(self.t, self.t_end) {
             // A stop: the inputs jump or bend here; the first stage is evaluated afresh. An
@@ -116,6 +132,7 @@ where
             }
         }
         let h = self.attempt()?;
+        self.observe_peaks();
         self.t_previous = self.t;
         self.h_last = h;
         self.previous.clone_from(&self.state);

@@ -104,6 +104,11 @@ where
     accelerations: Accelerations<M>,
     t: f64,
     t_end: f64,
+    /// The run's span, its own time scale: where steps end as too small near `t = 0`.
+    time_scale: f64,
+    /// The largest magnitude of the positions and of the velocities reached in the run (above
+    /// `rtol · atol`): the caps of their absolute tolerance, as Radau's (see its options).
+    peaks: [f64; 2],
     /// The start of the last step, and its size (zero before the first step and after a
     /// restart: no step to interpolate in).
     t_previous: f64,
@@ -163,6 +168,8 @@ where
             sizes,
             t: 0.0,
             t_end: 0.0,
+            time_scale: 1.0,
+            peaks: [0.0; 2],
             t_previous: 0.0,
             h_last: 0.0,
             h: 0.0,
@@ -191,9 +198,11 @@ where
         self.probe.get_mut().0.forget();
     }
 
-    /// The smallest step allowed at time `t`.
-    fn min_step(t: f64) -> f64 {
-        16.0 * f64::EPSILON * t.abs().max(1.0)
+    /// The smallest step allowed at time `t`: sixteen round-offs of `t`, or of the run's span
+    /// near `t = 0` (relative to the run's own time scale, so that a run of nanoseconds steps
+    /// as finely as a run of seconds).
+    fn min_step(&self, t: f64) -> f64 {
+        16.0 * f64::EPSILON * t.abs().max(self.time_scale)
     }
 
     /// Evaluates the start (or restart) at `t` with the velocities that only the forces fix
@@ -317,7 +326,8 @@ where
             let (k, stage) = ((&self.kq[..i], &self.kv[..i]), (&mut self.q_stage, &mut self.v_new));
             configuration::advance_by::<M>((&s.q, &s.v), h, &A[i][..i], k, stage);
             self.stats.evaluations += 1;
-            let t = self.t + C[i] * h;
+            // At a stretch's end the model is read from the left, as its inputs are.
+            let t = self.driver.stops.read_at(self.t + C[i] * h, self.t_end);
             if DRIVEN {
                 self.driver.apply(&mut self.model, (t, self.t_end), &self.q_stage, &self.v_new);
                 let (stage, rate) = ((&self.q_stage, &self.v_new), &mut self.accelerations.input_rate);
@@ -335,6 +345,10 @@ where
         }
         self.q_new.copy_from(&self.q_stage);
         let (rtol, atol) = (self.options.rtol, self.options.atol);
+        // The absolute tolerance never exceeds the relative one times the largest magnitude the
+        // positions (velocities) reach, this step's end included: invariant under units.
+        let [aq, av] =
+            self.candidate_peaks().map(|peak| if peak > 0.0 { atol.min(rtol * peak) } else { atol });
         let mut sum = 0.0;
         for i in 0..n {
             let (mut eq, mut ev) = (0.0, 0.0);
@@ -342,12 +356,33 @@ where
                 eq += e * self.kq[j][i];
                 ev += e * self.kv[j][i];
             }
-            let wq = atol + rtol * s.q[i].abs().max(self.q_new[i].abs());
-            let wv = atol + rtol * s.v[i].abs().max(self.v_new[i].abs());
+            let wq = aq + rtol * s.q[i].abs().max(self.q_new[i].abs());
+            let wv = av + rtol * s.v[i].abs().max(self.v_new[i].abs());
             sum += (h * eq / wq).powi(2) + (h * ev / wv).powi(2);
         }
         let error = (sum / (2 * n).max(1) as f64).sqrt();
         if error.is_finite() { Ok(error) } else { Err(Rejection::NonFinite) }
+    }
+
+    /// The peaks of the positions and velocities with those of the state reached and of the
+    /// candidate end `q_new`, `v_new` (magnitudes below `rtol · atol` left out: round-off of a
+    /// quantity at rest sets no scale).
+    fn candidate_peaks(&self) -> [f64; 2] {
+        let negligible = self.options.rtol * self.options.atol;
+        let peak = |start: f64, xs: &[&VecQ<M>]| {
+            xs.iter()
+                .flat_map(|x| x.iter())
+                .fold(start, |m, x| if x.abs() > negligible { m.max(x.abs()) } else { m })
+        };
+        [
+            peak(self.peaks[0], &[&self.state.q, &self.q_new]),
+            peak(self.peaks[1], &[&self.state.v, &self.v_new]),
+        ]
+    }
+
+    /// Takes in the state reached after an accepted step.
+    pub(crate) fn observe_peaks(&mut self) {
+        self.peaks = self.candidate_peaks();
     }
 
     /// Hairer's stiffness test (DOPRI5): the sixth and seventh stages both sit at the step's
@@ -412,7 +447,7 @@ where
             if self.t + 1.01 * h >= self.t_end || fixed.is_some() && self.t + 1.000_001 * h >= self.t_end {
                 h = self.t_end - self.t;
             }
-            if h < Self::min_step(self.t) {
+            if h < self.min_step(self.t) {
                 return Err(SimError::StepSizeTooSmall { t: self.t, h, reason: reason.reason().to_owned() });
             }
             let outcome = if self.driver.driven() { self.stages::<true>(h) } else { self.stages::<false>(h) };

@@ -83,8 +83,23 @@ where
         self.residual.apply_state(&mut self.model, t0, state);
         self.restarts.start(self.model.get(), (t0, t_end), state, self.options.rtol.max(1e-8))?;
         state.write_y(&mut self.y);
+        self.tolerances.begin_run(0.1 * (t_end - t0));
+        if let Some(cell) = &self.multipliers {
+            // The velocities only the forces fix, looked for where the model can say (a dense
+            // one); elsewhere the multipliers between steps stay the collocation polynomial's.
+            let accelerations = &mut cell.borrow_mut().0;
+            accelerations.forget();
+            if accelerations.prepare(self.model.get(), t0, (&state.q, &state.v)).is_err() {
+                accelerations.unprepare();
+            }
+        }
+        // The peaks start empty: a group at zero but for round-off (a multiplier that starts at
+        // 2e-16) would cap its tolerance at round-off. Accepted steps set them, and a step is
+        // judged by the peaks it would reach.
         self.state.clone_from(state);
         let span = t_end - t0;
+        // A tenth of the span: near t = 0, the resolution the run's own times have.
+        self.time_scale = 0.1 * span;
         self.stats = RadauStats::default();
         self.h = match self.options.initial_step {
             Some(h) => h,
@@ -131,6 +146,28 @@ where
 
     fn end(&self) -> f64 {
         self.residual.stops.goal()
+    }
+
+    fn exact_multipliers(&self, t: f64, state: &mut State<M>) {
+        if let Some(cell) = &self.multipliers {
+            let (accelerations, acceleration, lambda) = &mut *cell.borrow_mut();
+            if accelerations.evaluate(self.model.get(), t, (&state.q, &state.v), acceleration, lambda)
+                && lambda.iter().all(|x| x.is_finite())
+            {
+                state.lambda.copy_from(lambda);
+            }
+        }
+    }
+
+    fn next_step_end(&self) -> f64 {
+        (self.t + self.h.max(self.unclipped)).min(self.residual.stops.goal())
+    }
+
+    fn end_step_at(&mut self, t: Option<f64>) -> bool {
+        self.residual.stops.set_timed(t);
+        self.t_end = self.residual.stops.stretch(self.t, self.residual.stops.goal());
+        self.residual.stretch_end = self.t_end;
+        true
     }
 
     fn step(&mut self) -> Result<f64, SimError> {
@@ -208,6 +245,9 @@ where
             self.h = 1e-3 * self.dense.h;
         }
         self.dense.h = 0.0;
-        self.begin(t, self.residual.stops.goal(), false)
+        // A fresh Jacobian: the jump may have switched a law's mode, which changes the rows,
+        // and a simplified Newton iteration on the old mode's matrix can stop early with a
+        // wrong state that the error estimate does not see.
+        self.begin(t, self.residual.stops.goal(), true)
     }
 }

@@ -49,7 +49,7 @@ use crate::model::Condensed;
 use crate::model::LagrangeDirac;
 use crate::model::blocks::JacobianBlocks;
 use crate::model::state::State;
-use crate::shape::dims::{Storage, VecY};
+use crate::shape::dims::{Storage, VecC, VecQ, VecY};
 use crate::simulate::held::Held;
 use crate::simulate::restart::Restarts;
 
@@ -62,6 +62,10 @@ const REPLAY_ITERATIONS: usize = 20;
 /// One over the order of the error estimate the step size controls (`h⁴`), for the first
 /// step's choice.
 const FIRST_STEP_EXPONENT: f64 = 0.25;
+
+/// The equations of motion at acceleration level and their accelerations and multipliers:
+/// exact multipliers between steps.
+type ExactMultipliers<M> = (Accelerations<M>, VecQ<M>, VecC<M>);
 
 /// The Radau IIA integrator for a model `M`, with the Newton solver `S`.
 pub struct Radau<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra> = Condensed<M>>
@@ -112,6 +116,12 @@ where
     /// The step size the control proposed before the last step was cut to end at the end
     /// time: where a restart picks up.
     unclipped: f64,
+    /// The run's span, its own time scale: where steps end as too small near `t = 0`.
+    time_scale: f64,
+    /// The equations of motion at acceleration level, for the multipliers between steps where
+    /// a release is located on them (a model with laws or contacts): the collocation
+    /// polynomial's are of the stage order only. Behind a cell: read through `&self`.
+    multipliers: Option<RefCell<ExactMultipliers<M>>>,
     stats: RadauStats,
     /// What a restart checks after the model was handed out for a change.
     restarts: Restarts<M>,
@@ -160,6 +170,15 @@ where
             (options.projection && sizes.nc > 0).then(|| RefCell::new(Projector::new(model.get())));
         let legendre = Legendre::new(model.get());
         let restarts = Restarts::new(model.get());
+        // Releases are located on exact multipliers where the dense system that gives them is
+        // small; a large network keeps the collocation polynomial's (a dense solve there
+        // would cost more than the run).
+        let releases =
+            crate::simulate::laws::has_laws(model.get()) || !model.get().unilateral_names().is_empty();
+        let small = sizes.nq + sizes.nc <= crate::analysis::diagnose::SPARSE_ANALYSIS;
+        let multipliers = (releases && small).then(|| {
+            RefCell::new((Accelerations::new(model.get()), sizes.zeros_q::<M>(), sizes.zeros_c::<M>()))
+        });
         Ok(Radau {
             model,
             solver,
@@ -190,6 +209,8 @@ where
             need_factor: true,
             factored_h: 0.0,
             unclipped: 0.0,
+            time_scale: 1.0,
+            multipliers,
             stats: RadauStats::default(),
             restarts,
         })
@@ -202,9 +223,11 @@ where
         self.tolerances.set_absolute(&self.options, atol)
     }
 
-    /// The smallest step allowed at time `t`.
-    fn min_step(t: f64) -> f64 {
-        16.0 * f64::EPSILON * t.abs().max(1.0)
+    /// The smallest step allowed at time `t`: sixteen round-offs of `t`, or of the run's span
+    /// near `t = 0` (relative to the run's own time scale, so that a run of nanoseconds steps
+    /// as finely as a run of seconds).
+    fn min_step(&self, t: f64) -> f64 {
+        16.0 * f64::EPSILON * t.abs().max(self.time_scale)
     }
 
     /// One attempt after another until a step is accepted or the integration must give up.
@@ -225,7 +248,7 @@ where
             } else {
                 self.unclipped = 0.0;
             }
-            if self.h <= Self::min_step(self.t) {
+            if self.h <= self.min_step(self.t) {
                 return Err(SimError::StepSizeTooSmall { t: self.t, h: self.h, reason: reason.to_owned() });
             }
             self.tolerances.weights(&self.y, self.h, &mut self.weights);
@@ -251,7 +274,7 @@ where
             match self.newton() {
                 Outcome::Shrink(factor, why) => {
                     reason = why;
-                    if self.h * factor <= Self::min_step(self.t) {
+                    if self.h * factor <= self.min_step(self.t) {
                         return Err(self.newton_failure(why));
                     }
                     self.reject(factor);
@@ -260,6 +283,7 @@ where
                     }
                 }
                 Outcome::Converged(iterations) => {
+                    self.tolerances.weights_judging((&self.y, &self.stages.z[2]), self.h, &mut self.weights);
                     let mut err = self.estimate();
                     if err < 1.0 && self.forward.is_some() {
                         match self.solve_sensitivities(iterations) {
@@ -274,7 +298,7 @@ where
                             }
                             Err(Failure::NotConverged) => {
                                 reason = "the sensitivities' linear iteration did not converge";
-                                if self.h * 0.5 <= Self::min_step(self.t) {
+                                if self.h * 0.5 <= self.min_step(self.t) {
                                     let (t, h) = (self.t, self.h);
                                     return Err(SimError::StepSizeTooSmall {
                                         t,
@@ -486,6 +510,7 @@ where
             self.model.dl_dv(self.t + h, &s.q, &s.v, &mut s.p);
             s.write_y(&mut self.y);
         }
+        self.tolerances.observe(&self.y);
         self.t += h;
         self.stats.steps += 1;
         self.residual.eval(&mut self.model, self.t, &self.y, &mut self.f0);

@@ -140,6 +140,15 @@ pub struct RadauStats {
 /// The tolerances as the error estimate and the Newton iteration use them: Hairer's
 /// transformation, under which an `rtol` of 1e-6 asks the estimator for about 1e-5 locally,
 /// so that the achieved global error follows the requested one.
+///
+/// The absolute tolerance is a floor for components near zero, in the model's units; it never
+/// exceeds the relative tolerance times the largest magnitude its kind of quantity (positions,
+/// velocities, momenta, multipliers) has reached in the run. So a run of picofarads and
+/// nanoseconds, whose charges are 1e-12 and fluxes 1e-9, is held to the same relative accuracy
+/// as the same circuit in farads and seconds, where the default `atol` of 1e-8 changes nothing:
+/// the results do not depend on the units. Tolerances set per component
+/// ([`Radau::set_absolute_tolerances`](crate::methods::radau::Radau::set_absolute_tolerances))
+/// are the user's own and are kept as they are.
 pub(crate) struct Tolerances<M: LagrangeDirac>
 where
     DefaultAllocator: Storage<M>,
@@ -150,6 +159,20 @@ where
     sizes: Sizes,
     /// The Newton iteration's stopping tolerance.
     pub fnewt: f64,
+    /// Whether the absolute tolerances were set per component, and are kept as they are.
+    per_component: bool,
+    /// The largest magnitude of the positions, velocities, momenta and multipliers reached in
+    /// the run: the caps of their absolute tolerances.
+    peaks: [f64; 4],
+    /// The run's span: the time against which a step's size is measured where the multipliers'
+    /// weights grow by `span / h` (Hairer's `1/h` for index-2 variables, in the run's own unit
+    /// of time rather than in seconds).
+    time_scale: f64,
+    /// `rtol · atol` as given: a magnitude below it is below anything the tolerances resolve
+    /// (the round-off a solve leaves in a quantity at rest), and sets no peak.
+    negligible: f64,
+    /// Whether a step of the run was accepted.
+    accepted: bool,
 }
 
 impl<M: LagrangeDirac> Tolerances<M>
@@ -162,7 +185,74 @@ where
         let fnewt = (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt()));
         let mut atol_y = sizes.zeros_y::<M>();
         atol_y.fill(atol);
-        Tolerances { rtol, atol: atol_y, sizes, fnewt }
+        Tolerances {
+            rtol,
+            atol: atol_y,
+            sizes,
+            fnewt,
+            per_component: false,
+            peaks: [0.0; 4],
+            time_scale: 1.0,
+            negligible: options.rtol * options.atol,
+            accepted: false,
+        }
+    }
+
+    /// Forgets the peaks: a new run starts, over `span`.
+    pub fn begin_run(&mut self, span: f64) {
+        self.peaks = [0.0; 4];
+        self.accepted = false;
+        self.time_scale = span;
+    }
+
+    /// Takes in the state `y` reached (the start, or an accepted step's end): the peaks grow
+    /// to its magnitudes.
+    pub fn observe(&mut self, y: &VecY<M>) {
+        self.peaks = self.peaks_with(y, None);
+        self.accepted = true;
+    }
+
+    /// The peaks with those of `y`, and of `y + z` if given (a step's candidate end).
+    fn peaks_with(&self, y: &VecY<M>, z: Option<&VecY<M>>) -> [f64; 4] {
+        let l = Layout::new(self.sizes.typed::<M>());
+        let mut peaks = self.peaks;
+        for (k, range) in [(0, l.q..l.v), (1, l.v..l.p), (2, l.p..l.lambda), (3, l.lambda..l.len)] {
+            for i in range {
+                let end = z.map_or(0.0, |z| (y[i] + z[i]).abs());
+                let reached = y[i].abs().max(end);
+                if reached > self.negligible {
+                    peaks[k] = peaks[k].max(reached);
+                }
+            }
+        }
+        peaks
+    }
+
+    /// [`Self::weights`] for judging a step from `y` whose candidate end is `y + z`: the
+    /// absolute tolerances capped by the peaks the step would reach (the first step from a
+    /// state at rest has no peaks of its own yet).
+    /// After the run's first step, a kind of quantity still at rest (the fluxes of a circuit
+    /// whose held source voltage jumps from zero) keeps the absolute tolerance as given until a
+    /// step has moved it: the error estimate of a step from an inconsistent start is of the size
+    /// of its first motion, which its own end would make the scale.
+    pub fn weights_judging(&mut self, (y, z): (&VecY<M>, &VecY<M>), h: f64, out: &mut VecY<M>) {
+        let kept = self.peaks;
+        let reached = self.peaks_with(y, Some(z));
+        for (peak, (was, now)) in self.peaks.iter_mut().zip(kept.iter().zip(reached)) {
+            if !self.accepted || *was > 0.0 {
+                *peak = now;
+            }
+        }
+        self.weights(y, h, out);
+        self.peaks = kept;
+    }
+
+    /// The absolute tolerance of slot `i` (of group `group`): capped by `rtol` times the
+    /// group's peak, unless set per component or the group has not moved yet.
+    #[inline]
+    fn absolute(&self, i: usize, group: usize) -> f64 {
+        let (atol, peak) = (self.atol[i], self.peaks[group]);
+        if self.per_component || peak == 0.0 { atol } else { atol.min(self.rtol * peak) }
     }
 
     /// A Newton increment of round-off size in the weighted norm: `ε |y|` over
@@ -180,6 +270,7 @@ where
         for (slot, a) in self.atol.iter_mut().zip(atol.components()) {
             *slot = a * factor;
         }
+        self.per_component = true;
         Ok(())
     }
 
@@ -187,18 +278,34 @@ where
     /// first step's choice.
     pub fn motion_scale(&self, i: usize, y: f64) -> f64 {
         let l = Layout::new(self.sizes.typed::<M>());
-        let slot = if i < self.sizes.nq { l.q + i } else { l.v + i - self.sizes.nq };
-        self.atol[slot] + self.rtol * y.abs()
+        let (slot, group) = if i < self.sizes.nq { (l.q + i, 0) } else { (l.v + i - self.sizes.nq, 1) };
+        self.absolute(slot, group) + self.rtol * y.abs()
     }
 
-    /// The error weights at state `y` for a step `h`: `atol + rtol |y|`, divided by `h` for
-    /// the multipliers, index-2 variables whose error estimate is one order worse.
+    /// The error weights at state `y` for a step `h`: `atol + rtol |y|` (the absolute
+    /// tolerance capped as the type's documentation says), times `span / h` for the
+    /// multipliers, index-2 variables whose error estimate is one order worse.
     pub fn weights(&self, y: &VecY<M>, h: f64, out: &mut VecY<M>) {
-        let lambda = Layout::new(self.sizes.typed::<M>()).lambda;
+        let l = Layout::new(self.sizes.typed::<M>());
+        let index_two = self.time_scale / h;
         for (i, s) in out.iter_mut().enumerate() {
-            *s = self.atol[i] + self.rtol * y[i].abs();
+            let group = usize::from(i >= l.v) + usize::from(i >= l.p) + usize::from(i >= l.lambda);
+            *s = self.absolute(i, group) + self.rtol * y[i].abs();
+            if i >= l.lambda {
+                *s *= index_two;
+            }
+        }
+    }
+
+    /// The error weights of a sensitivity `s` for a step `h`: as [`Self::weights`], with the
+    /// absolute tolerances as given (a sensitivity's magnitude is not its state's).
+    pub fn sensitivity_weights(&self, s: &VecY<M>, h: f64, out: &mut VecY<M>) {
+        let lambda = Layout::new(self.sizes.typed::<M>()).lambda;
+        let index_two = self.time_scale / h;
+        for (i, w) in out.iter_mut().enumerate() {
+            *w = self.atol[i] + self.rtol * s[i].abs();
             if i >= lambda {
-                *s /= h;
+                *w *= index_two;
             }
         }
     }

@@ -71,9 +71,18 @@ where
         }
     }
 
+    /// The time the model is read at for an evaluation at `t`: `t`, or just before the end of
+    /// the stretch at its end (where a timed switch or an input's jump lies).
+    #[inline]
+    pub fn model_time(&self, t: f64) -> f64 {
+        self.stops.read_at(t, self.stretch_end)
+    }
+
     /// Writes `f(t, y)` into `out`, the inputs set first.
     #[inline]
     pub fn eval(&mut self, model: &mut Held<'_, M>, t: f64, y: &VecY<M>, out: &mut VecY<M>) {
+        // At a stretch's end the model is read from the left, as its inputs are.
+        let t = self.model_time(t);
         self.apply(model, t, y);
         let model = model.get();
         match &mut self.scratch {

@@ -157,7 +157,7 @@ where
         let exact = *factored_h == *h && forward.stage_jacobians_equal(jac);
         stats.jacobian_evaluations += 3;
         let h = *h;
-        let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.weights(s, h, out);
+        let weights = |s: &VecY<M>, out: &mut VecY<M>| tolerances.sensitivity_weights(s, h, out);
         let (before, coupled_before) = (forward.iterations, forward.coupled_steps);
         let iteration = Iteration {
             fnewt: tolerances.fnewt,

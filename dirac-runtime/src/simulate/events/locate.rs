@@ -74,6 +74,13 @@ where
         Ok(())
     }
 
+    /// Whether function `k` is a release, a force falling through zero (a law's or a resting
+    /// contact's): read on exact multipliers ([`Integrator::exact_multipliers`]).
+    fn reads_force(&self, k: usize) -> bool {
+        matches!(self.law_of[k], Some(crate::simulate::laws::Switch::Release(_)))
+            || self.release_of[k].is_some()
+    }
+
     fn evaluate(&mut self, k: usize, t: f64, state: &State<M>, model: &M) -> Result<f64, SimError> {
         self.evaluations += 1;
         let g = value(&mut self.functions[k], &self.names[k], t, state, model)?;
@@ -118,17 +125,34 @@ where
         let t = integrator.t();
         if !self.hi_current || self.t_hi != t {
             let model = integrator.model();
+            let mut exact = false;
             for k in 0..self.functions.len() {
                 self.hi[k] = self.evaluate(k, t, integrator.state(), model)?;
+                // A release read from the step's own multipliers, where it may have crossed or
+                // is near zero, is read again from exact ones.
+                let (g, sign) = (self.hi[k], self.signs[k]);
+                if self.reads_force(k) && (g.signum() != sign || g.abs() <= 1e-2 * self.peak[k]) {
+                    if !exact {
+                        self.probe.clone_from(integrator.state());
+                        integrator.exact_multipliers(t, &mut self.probe);
+                        exact = true;
+                    }
+                    self.evaluations += 1;
+                    let g = value(&mut self.functions[k], &self.names[k], t, &self.probe, model)?;
+                    self.peak[k] = self.peak[k].max(g.abs());
+                    self.hi[k] = g;
+                }
             }
             self.t_hi = t;
             self.hi_current = true;
         }
-        // The earliest crossing that counts.
-        let mut first: Option<(usize, f64)> = None;
+        // The earliest crossing that counts: a timed switch the step was made to end at counts
+        // at the first time on its other side, whatever its value at the step's end.
+        let timed = self.timed_crossing_at(t);
+        let mut first: Option<(usize, f64)> = timed;
         for k in 0..self.functions.len() {
             let (g, sign) = (self.hi[k], self.signs[k]);
-            if g == 0.0 || g.signum() == sign || sign == 0.0 {
+            if g == 0.0 || g.signum() == sign || sign == 0.0 || timed.is_some_and(|(j, _)| j == k) {
                 continue;
             }
             if !self.crossings[k].counts(g > 0.0) {
@@ -312,6 +336,9 @@ where
                 }
             }
             integrator.state_at(c, &mut self.probe)?;
+            if self.reads_force(k) {
+                integrator.exact_multipliers(c, &mut self.probe);
+            }
             integrator.set_inputs_at(c, &self.probe);
             self.inputs_moved = true;
             self.evaluations += 1;
@@ -339,7 +366,7 @@ where
 
 /// The value of the event function `g` called `name` at `t`: an error naming it if it is
 /// NaN.
-fn value<M: LagrangeDirac>(
+pub(super) fn value<M: LagrangeDirac>(
     g: &mut EventFunction<'_, M>,
     name: &str,
     t: f64,

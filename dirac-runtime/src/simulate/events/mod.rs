@@ -13,7 +13,7 @@
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
-use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS, SWITCH};
+use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS, SWITCH, TIMED, is_switch};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
@@ -24,6 +24,7 @@ use crate::simulate::solution::{Crossing, Event};
 mod locate;
 pub mod sensitivities;
 mod solve;
+mod timed;
 
 pub use self::solve::{EventContext, SolveWithEvents};
 
@@ -83,6 +84,12 @@ where
     /// Whether each function is a switching surface of the model, where the integration
     /// restarts.
     pub(crate) switch_of: Vec<bool>,
+    /// Whether each function is a timed switch (a switching surface of time alone), whose
+    /// next crossing ends a step ([`Events::bound_step`]).
+    pub(crate) timed_of: Vec<bool>,
+    /// The timed switch the integrator was asked to end its step at: its index, the step's
+    /// end (the first time off the switch's side) and the first time on its other side.
+    timed_next: Option<(usize, f64, f64)>,
     /// Whether each function is sampled within each step (switching surfaces, and the ideal
     /// switches' functions of their controls), for a crossing and crossing back.
     pub(crate) sampled: Vec<bool>,
@@ -153,6 +160,8 @@ where
             release_of: Vec::new(),
             reopened: Vec::new(),
             switch_of: Vec::new(),
+            timed_of: Vec::new(),
+            timed_next: None,
             sampled: Vec::new(),
             peak: Vec::new(),
             all_declared: None,
@@ -178,6 +187,7 @@ where
         self.contact_of.push(None);
         self.release_of.push(None);
         self.switch_of.push(false);
+        self.timed_of.push(false);
         self.sampled.push(false);
         self.declared_of.push(None);
         self.law_of.push(None);
@@ -296,7 +306,7 @@ where
         for (j, (name, direction)) in declared.into_iter().enumerate() {
             let crossing = match (direction, which) {
                 (STOPS | SLIPS | CONDUCTS | BLOCKS | CLOSES | OPENS, _) => Crossing::Falling,
-                (SWITCH, _) => Crossing::Either,
+                (SWITCH | TIMED, _) => Crossing::Either,
                 (_, Which::Switches) => continue,
                 (d, Which::All) if d < 0 => Crossing::Falling,
                 (1, Which::All) => Crossing::Rising,
@@ -307,8 +317,9 @@ where
                 m.events(t, &s.q, &s.v, &s.lambda, &mut values);
                 values[j]
             });
-            *self.switch_of.last_mut().expect("just added") = direction == SWITCH;
-            *self.sampled.last_mut().expect("just added") = direction == SWITCH;
+            *self.switch_of.last_mut().expect("just added") = is_switch(direction);
+            *self.sampled.last_mut().expect("just added") = is_switch(direction);
+            *self.timed_of.last_mut().expect("just added") = direction == TIMED;
             *self.declared_of.last_mut().expect("just added") = Some(j);
         }
         self.watch_laws(laws).watch_declared(k)
@@ -416,6 +427,7 @@ where
             self.contact_of.push(Some(j));
             self.release_of.push(None);
             self.switch_of.push(false);
+            self.timed_of.push(false);
             self.sampled.push(false);
             self.declared_of.push(None);
             self.law_of.push(None);

@@ -81,6 +81,7 @@ where
     rows.push_initial(integrator, &recorder);
     let mut restarted = vec![State::<M>::with_sizes(sizes); count];
     while !integrator.finished() {
+        events.bound_step(integrator)?;
         integrator.step()?;
         rows.complete(integrator);
         let mut jumped = false;

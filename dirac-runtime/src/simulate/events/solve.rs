@@ -150,6 +150,7 @@ where
         let mut after = state.clone();
         let mut reopened = Vec::new();
         while !self.finished() {
+            events.bound_step(self)?;
             if let Err(error) = self.step() {
                 // A step that fails where impacts accumulate fails because of them: the contact
                 // comes to rest where the integrator stands, if it can.

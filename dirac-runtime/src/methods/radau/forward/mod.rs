@@ -270,7 +270,8 @@ where
             let w = &mut self.work;
             w.tmp.copy_from(at.y);
             w.tmp += &at.z[k];
-            let t = at.t + ck * at.h;
+            // Read as the state's residual is: from the left at a stretch's end.
+            let t = residual.model_time(at.t + ck * at.h);
             residual.apply(model, t, &w.tmp);
             self.state.read_y(&w.tmp);
             let s = &self.state;
