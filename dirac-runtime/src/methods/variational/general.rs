@@ -292,9 +292,10 @@ where
     let mut converged = true;
     let mut finite = true;
     let (r_v, r_lambda) = unknowns.split(r);
+    let scale = &s.work.scale;
     for (i, r) in r_v.iter().enumerate() {
         x[i] -= r;
-        converged &= r.abs() <= tolerance * (1.0 + x[i].abs());
+        converged &= r.abs() <= tolerance * (scale[i] + x[i].abs());
         finite &= r.is_finite();
     }
     for (j, r) in r_lambda.iter().enumerate() {
@@ -307,9 +308,10 @@ where
     // lengths of 1e-2, Andrews' squeezer) never reaches 1e-12. Checked only then, so that the
     // iterations that converge pay nothing for it.
     if !converged && iteration >= 3 && finite {
-        let loose =
-            |r: &[f64], x: &[f64]| r.iter().zip(x).all(|(r, x)| r.abs() <= 1e3 * tolerance * (1.0 + x.abs()));
-        converged = loose(r_v, x.as_slice()) && loose(r_lambda, mult.as_slice());
+        let loose = |r: &[f64], x: &[f64], scale: &dyn Fn(usize) -> f64| {
+            r.iter().zip(x).enumerate().all(|(i, (r, x))| r.abs() <= 1e3 * tolerance * (scale(i) + x.abs()))
+        };
+        converged = loose(r_v, x.as_slice(), &|i| scale[i]) && loose(r_lambda, mult.as_slice(), &|_| 1.0);
     }
     if !finite {
         return Err(SimError::NonFinite {

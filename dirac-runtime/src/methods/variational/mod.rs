@@ -90,6 +90,11 @@ where
     /// The largest momentum at the last stability check that passed: a step that multiplies it
     /// by 8 is checked at once.
     p_checked: f64,
+    /// The largest `|⟨p, v⟩|` (twice the kinetic energy of a quadratic Lagrangian) reached at a
+    /// step since the (re)start: the energy the motion exchanges between its parts, the scale of
+    /// a stable run's energy error even where the energy's parts vanish together (a pendulum
+    /// released from the horizontal, at the top of its swing).
+    exchanged: f64,
     /// The state reached: `v` is the stage-2 velocity `w`, and `λ` the multipliers
     /// extrapolated from the steps' impulses to second order (see `update_multipliers`).
     state: State<M>,
@@ -148,6 +153,7 @@ where
             energy0: 0.0,
             size0: 0.0,
             p_checked: 0.0,
+            exchanged: 0.0,
             energy_scale: 0.0,
             state: State::with_sizes(sizes),
             previous: State::with_sizes(sizes),
@@ -209,7 +215,9 @@ where
         self.energy0 = model.energy(t0, &s.q, &s.v, &s.p);
         self.size0 = s.p.dot(&s.v).abs() + model.lagrangian(t0, &s.q, &s.v).abs();
         self.p_checked = s.p.amax();
+        self.exchanged = s.p.dot(&s.v).abs();
         self.previous.clone_from(s);
+        self.work.grow_scales(model, t0, s);
         self.mass = None;
         if M::SEPARABLE && self.options.use_structure {
             let lvv = &mut self.work.blocks.lvv0;
@@ -393,8 +401,10 @@ where
 
     /// A fixed step beyond the method's stability limit makes the discrete solution grow
     /// geometrically: the energy error (corrected by the work of the forces and of the
-    /// Lagrangian's time dependence) then becomes as large as the energy's own parts, which in
-    /// a stable run it never approaches, and far larger than the energy at the start and the
+    /// Lagrangian's time dependence) then becomes as large as the energy's own parts and as half
+    /// the largest kinetic energy the motion reached, which in a stable run it never approaches
+    /// (the second matters where the parts vanish together: a pendulum released from the
+    /// horizontal has energy 0 and, at the top of each swing, parts near 0), and far larger than the energy at the start and the
     /// work done since (the energy's parts grow with the solution, so the first test alone
     /// would let a run grow without bound when they grow alike). Checked every 16 steps, and
     /// at once after a step that multiplies the largest momentum by 8 (`pmax`).
@@ -410,7 +420,10 @@ where
         // energy's parts of a check whose error was small (those of a growing solution are not).
         let reference = self.size0 + self.work.work.abs() + self.energy_scale;
         let grown = reference > 0.0 && error > 100.0 * reference && error > 1e-3 * size;
-        if !grown && (error.is_finite() && error <= 0.5 * size.max(1e-9 * self.energy_scale) || size == 0.0) {
+        // Small: against the energy's parts now, or against half the largest kinetic energy the
+        // motion reached (`exchanged` is twice it). A growing solution's error outgrows both.
+        let small = error <= 0.5 * size.max(1e-9 * self.energy_scale) || error <= 0.25 * self.exchanged;
+        if !grown && (error.is_finite() && small || size == 0.0) {
             if error <= 0.1 * size {
                 self.energy_scale = self.energy_scale.max(size);
             }
@@ -421,11 +434,14 @@ where
             t: self.t,
             h: self.h,
             detail: format!(
-                "the energy went from {:e} to {energy:e} (the forces did {:e} of work): the step {:e} is \
-                 beyond the stability limit of the method for this model; take a smaller step (the \
-                 limit of a linear oscillation of frequency ω is h < 2/ω) or Radau, whose steps follow \
-                 the motion",
-                self.energy0, self.work.work, self.h
+                "the energy went from {:e} to {energy:e} (the forces did {:e} of work; the largest \
+                 kinetic energy reached was {:e}): the step {:e} is beyond or near the stability limit \
+                 of the method for this motion; take a smaller step (the limit of a linear oscillation \
+                 of frequency ω is h < 2/ω) or Radau, whose steps follow the motion",
+                self.energy0,
+                self.work.work,
+                0.5 * self.exchanged,
+                self.h
             ),
         })
     }
@@ -449,6 +465,7 @@ where
         self.driver.apply_state(&mut self.model, (t0, stretch), state);
         self.restarts.start(self.model.get(), (t0, t_end), state, 1e-8)?;
         self.state.clone_from(state);
+        self.work.scale.fill(0.0);
         self.work.big_lambda.fill(0.0);
         self.work.gamma.fill(0.0);
         self.stats = VariationalStats::default();
@@ -534,6 +551,7 @@ where
             let names = self.model.get().coordinate_names();
             return Err(SimError::NonFinite { t: self.t, component: names[i].clone() });
         }
+        self.exchanged = self.exchanged.max(s.p.dot(&s.v).abs());
         let limit = 8.0 * self.p_checked;
         let grew = (0..self.sizes.typed::<M>().nq).any(|i| s.p[i].abs() > limit);
         if grew || self.taken.is_multiple_of(16) || self.finished() {
@@ -596,6 +614,7 @@ where
         work.big_lambda *= share;
         work.gamma.copy_from(&self.work.gamma);
         work.gamma *= share;
+        work.scale.copy_from(&self.work.scale);
         let mut step = Step { model, h, t: t_previous, options: &self.options, state, work, stats };
         match &self.mass {
             Some(mass) => {

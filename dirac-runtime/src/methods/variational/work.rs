@@ -15,8 +15,10 @@ use crate::shape::dims::{Sizes, Storage, VecC, VecH, VecK, VecQ};
 /// Newton tolerances of the two stages.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VariationalOptions {
-    /// Converged when the Newton update is below `tolerance · (1 + |x|)` in every component
-    /// (default `1e-12`), or when it has stalled at round-off below `1e3 · tolerance`.
+    /// Converged when the Newton update is below `tolerance · (|x| + s)` in every component
+    /// (default `1e-12`; `s` the velocity's scale, the velocity its coordinate has at the
+    /// largest momentum of the start, or 1 for a multiplier), or when it has stalled at
+    /// round-off below `1e3 · tolerance`.
     pub tolerance: f64,
     /// Newton iterations allowed per stage.
     pub max_iterations: usize,
@@ -99,6 +101,13 @@ where
     pub small: Option<Lu<f64, M::Nc>>,
     /// The size of the last Newton update, for the stall test.
     pub last_update: f64,
+    /// Each velocity's scale for the Newton test, `min(|p|∞ / L_ii, |v|∞)` (the velocity the
+    /// coordinate has at the largest momentum, at most the largest velocity; `|v|∞` for one
+    /// without inertia), the largest since the start: the
+    /// momenta are what a step balances, and they weigh every coordinate in the model's own
+    /// terms (a roll's rate of 1e-12 on an inertia of 1e12 is as large as a slide's of 1 on a
+    /// mass of 1).
+    pub scale: VecQ<M>,
     /// `∂L/∂q` at the current point (separable models: independent of `v`).
     pub dl_dq: VecQ<M>,
     /// The energy put in since the start by the external forces and by the Lagrangian's
@@ -189,6 +198,29 @@ impl<M: LagrangeDirac> Work<M>
 where
     DefaultAllocator: Storage<M>,
 {
+    /// Lets [`Work::scale`] grow to the state at a (re)start: a run's scales do not shrink as
+    /// its energy does (zero them before a new run). 1 where the state is at rest (no momentum
+    /// and no velocity to measure by). Allocates nothing.
+    pub fn grow_scales(&mut self, model: &M, t: f64, state: &State<M>) {
+        let lvv = &mut self.blocks.lvv0;
+        model.l_vv(t, &state.q, &state.v, lvv);
+        let diagonal = &mut self.vectors.target;
+        diagonal.fill(0.0);
+        M::Algebra::qq_entries(lvv, |row, column, value| {
+            if row == column {
+                diagonal[row] += value;
+            }
+        });
+        let (p, v) = (state.p.amax(), state.v.amax());
+        for (s, &inertia) in self.scale.iter_mut().zip(self.vectors.target.iter()) {
+            // The velocity the coordinate has at the largest momentum, unless that is beyond the
+            // largest velocity (a coordinate of tiny inertia).
+            let reached = if inertia > 0.0 { (p / inertia).min(v) } else { v };
+            let reached = if reached > 0.0 && reached.is_finite() { reached } else { 1.0 };
+            *s = s.max(reached);
+        }
+    }
+
     pub fn new(model: &M) -> Self {
         let (sizes, shape) = (model.sizes(), model.shape());
         let qq = || M::Algebra::zeros_qq(&shape);
@@ -228,6 +260,7 @@ where
             saddle: M::Algebra::saddle(&shape),
             small: None,
             last_update: f64::INFINITY,
+            scale: q(),
             dl_dq: q(),
             work: 0.0,
             free: None,
