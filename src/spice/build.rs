@@ -112,9 +112,18 @@ impl Waveforms {
         chart.write(path)
     }
 
-    /// Writes the waveforms as CSV: a header `time,v(a),…`, then a row per sample.
+    /// Writes the waveforms as CSV: a header `t,v(a),…`, then a row per sample, the first at
+    /// `t = 0` (or the `.tran`'s start); an error, not a panic, if a column is short.
     pub fn write_csv(&self, mut out: impl Write) -> io::Result<()> {
-        writeln!(out, "time,{}", self.names.join(","))?;
+        if let Some(column) = self.columns.iter().position(|c| c.len() != self.times.len()) {
+            return Err(io::Error::other(format!(
+                "column `{}` holds {} values for {} times",
+                self.names[column],
+                self.columns[column].len(),
+                self.times.len()
+            )));
+        }
+        writeln!(out, "t,{}", self.names.join(","))?;
         for (i, t) in self.times.iter().enumerate() {
             write!(out, "{t:e}")?;
             for c in &self.columns {
@@ -664,6 +673,13 @@ impl Circuit {
         self.nodes.iter().map(|(n, _)| n.as_str())
     }
 
+    /// The voltage of `node` (lower case) in `state`, a state of the circuit's network: its
+    /// coordinate's rate, zero for the reference; `None` for a node the netlist does not have.
+    pub fn voltage(&self, state: &State<Network>, node: &str) -> Option<f64> {
+        let (_, coordinate) = self.nodes.iter().find(|(n, _)| n == node)?;
+        Some(coordinate.map_or(0.0, |c| state.v[c]))
+    }
+
     /// The netlist's `.tran`, if any.
     pub fn tran(&self) -> Option<&Tran> {
         self.tran.as_ref()
@@ -761,12 +777,7 @@ impl Circuit {
         if count > 1e7 {
             return Err(tran.token.error(format!("`.tran`: {count:e} samples; at most 10⁷ are recorded")));
         }
-        let count = count as usize;
-        let mut times: Vec<f64> =
-            (0..=count).map(|k| tran.start + k as f64 * tran.step).filter(|&t| t > 0.0).collect();
-        if times.last().is_some_and(|&t| t < tran.stop) {
-            times.push(tran.stop);
-        }
+        let times = sample_times(tran, count as usize);
         // Sources that follow a waveform set their inputs before every evaluation, and every
         // step ends at the waveforms' corners; they need a network of their own to set.
         let mut owned = (!self.drives.is_empty()).then(|| self.network.clone());
@@ -785,7 +796,6 @@ impl Circuit {
         // recorded columns are kept.
         let names: Vec<String> = self.columns.iter().map(|(n, _)| n.clone()).collect();
         let mut columns: Vec<Vec<f64>> = vec![Vec::with_capacity(times.len()); names.len()];
-        let sample_times: Vec<f64> = times.iter().copied().filter(|&t| t >= tran.start).collect();
         let mut record = |s: &State<Network>| {
             for (column, (_, at)) in columns.iter_mut().zip(&self.columns) {
                 column.push(match *at {
@@ -800,7 +810,7 @@ impl Circuit {
             // Ideal diodes conduct and block at events located between steps, where the
             // integration restarts in their new modes.
             let mut events = Events::new().switches_in(radau.model());
-            let sampling = Sampling::Times(sample_times.clone());
+            let sampling = Sampling::Times(times);
             let solution = radau
                 .solve_with_events(0.0, &start, tran.stop, &sampling, &mut events, |event, at| {
                     progress(event.t, at.stats().steps);
@@ -811,10 +821,15 @@ impl Circuit {
                 record(&solution.state(i).expect("a recorded sample"));
             }
             progress(tran.stop, radau.stats().steps);
-            return Ok(Waveforms { times: sample_times, names, columns });
+            return Ok(Waveforms { times: solution.t().to_vec(), names, columns });
         }
         radau.start(0.0, &start, tran.stop).map_err(simulation)?;
-        let (mut buffer, mut next, mut steps) = (start.clone(), times.len() - sample_times.len(), 0);
+        let (mut buffer, mut next, mut steps) = (start.clone(), 0, 0);
+        // The start, where the grid begins there.
+        if times.first() == Some(&0.0) {
+            record(&start);
+            next = 1;
+        }
         while !radau.finished() {
             radau.step().map_err(simulation)?;
             steps += 1;
@@ -826,6 +841,22 @@ impl Circuit {
             }
             progress(now, steps);
         }
-        Ok(Waveforms { times: sample_times, names, columns })
+        Ok(Waveforms { times, names, columns })
     }
+}
+
+/// The times `.tran` records: `tstart`, then every `tstep` to `tstop`, which ends the grid
+/// (once, where the last step falls on it), each rounded to twelve significant digits so that
+/// `1000 × 1e-8` is written `1e-5`, not `9.999999999999999e-6`, and none beyond `tstop`.
+fn sample_times(tran: &Tran, count: usize) -> Vec<f64> {
+    let clean = |t: f64| format!("{t:.11e}").parse::<f64>().unwrap_or(t);
+    let mut times: Vec<f64> =
+        (0..=count).map(|k| clean(tran.start + k as f64 * tran.step).min(tran.stop)).collect();
+    times.dedup();
+    match times.last() {
+        Some(&t) if tran.stop - t > 1e-9 * tran.step => times.push(tran.stop),
+        Some(_) => *times.last_mut().expect("not empty") = tran.stop,
+        None => times.push(tran.stop),
+    }
+    times
 }
