@@ -1,4 +1,5 @@
-//! Values sampled between Radau's steps against closed forms: as accurate as the steps' ends.
+//! Values sampled between the steps (Radau's and Explicit's) against closed forms: as
+//! accurate as the steps' ends.
 //!
 //! References: the Kepler orbit from Kepler's equation solved by Newton's method to round-off
 //! (`zoo::kepler_exact`), and the bead on a turning rod `r = r0 cosh ωt` (`zoo::bead_exact`).
@@ -21,23 +22,37 @@ fn errors<M: LagrangeDirac>(
 where
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
+    let radau = Radau::new(model, options).expect("valid");
+    errors_of(radau, (start, t_end), 20, mass, exact)
+}
+
+/// [`errors`] for any integrator, at `parts − 1` points inside every step.
+fn errors_of<M: LagrangeDirac>(
+    mut integrator: impl Integrator<M>,
+    (start, t_end): (&State<M>, f64),
+    parts: u32,
+    mass: f64,
+    exact: impl Fn(f64) -> [f64; 4],
+) -> (f64, f64)
+where
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
     let error = |t: f64, s: &State<M>| {
         let x = exact(t);
         let got = [s.q[0], s.q[1], s.v[0], s.v[1], s.p[0] / mass, s.p[1] / mass];
         got.iter().zip([x[0], x[1], x[2], x[3], x[2], x[3]]).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
     };
-    let mut radau = Radau::new(model, options).expect("valid");
-    radau.start(0.0, start, t_end).expect("starts");
+    integrator.start(0.0, start, t_end).expect("starts");
     let (mut at_ends, mut between) = (0.0f64, 0.0f64);
     let mut out = start.clone();
-    while !radau.finished() {
-        let t0 = radau.t();
-        radau.step().expect("steps");
-        let t1 = radau.t();
-        at_ends = at_ends.max(error(t1, radau.state()));
-        for k in 1..20 {
-            let t = t0 + (t1 - t0) * k as f64 / 20.0;
-            radau.interpolate(t, &mut out);
+    while !integrator.finished() {
+        let t0 = integrator.t();
+        integrator.step().expect("steps");
+        let t1 = integrator.t();
+        at_ends = at_ends.max(error(t1, integrator.state()));
+        for k in 1..parts {
+            let t = t0 + (t1 - t0) * f64::from(k) / f64::from(parts);
+            integrator.interpolate(t, &mut out);
             between = between.max(error(t, &out));
         }
     }
@@ -79,6 +94,27 @@ fn samples_between_steps_are_as_accurate_as_the_steps_ends() {
         let (ends, between) =
             errors(&bead, (&bead_start, 2.0), options, bead.m, |t| bead_exact(bead.w, 0.5, t));
         assert!(between <= 3.0 * ends, "bead at {tol:e}: {between:e} between steps, {ends:e} at their ends");
+    }
+}
+
+/// The bead at every tolerance from 1e-4 to 1e-12, a hundred points inside every step, in
+/// both integrators with dense output. Measured: at most 1.8× the steps' ends (Radau at 1e-12)
+/// and 1.7× (Explicit at 1e-11 and 1e-12).
+#[test]
+fn samples_on_the_bead_are_within_three_times_the_steps_ends_in_both_integrators() {
+    let (bead, bead_start) = bead();
+    let exact = |t| bead_exact(bead.w, 0.5, t);
+    for k in 4..=12 {
+        let tol = 10f64.powi(-k);
+        let radau = Radau::new(&bead, RadauOptions::tolerances(tol, tol)).expect("valid");
+        let (ends, between) = errors_of(radau, (&bead_start, 2.0), 100, bead.m, exact);
+        assert!(between <= 3.0 * ends, "Radau at {tol:e}: {between:e} between steps, {ends:e} at their ends");
+        let explicit = Explicit::new(&bead, ExplicitOptions::tolerances(tol, tol)).expect("valid");
+        let (ends, between) = errors_of(explicit, (&bead_start, 2.0), 100, bead.m, exact);
+        assert!(
+            between <= 3.0 * ends,
+            "Explicit at {tol:e}: {between:e} between steps, {ends:e} at their ends"
+        );
     }
 }
 
