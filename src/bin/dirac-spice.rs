@@ -3,8 +3,9 @@
 //! progress line on runs longer than a second.
 //!
 //! Usage: `dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]` (by default
-//! the tolerance is 1e-6 and the files go next to the netlist, with the extensions `.csv` and
-//! `.svg`).
+//! the tolerance is the netlist's `.options reltol`, else 1e-6, and the files go next to the
+//! netlist, with the extensions `.csv` and `.svg`). Every error the netlist has is reported,
+//! one line each; `.options` it does not apply are named.
 
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -13,13 +14,13 @@ use std::time::Instant;
 
 fn run() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
-    let (mut file, mut tol, mut out, mut svg) = (None, 1e-6, None, None);
+    let (mut file, mut tol, mut out, mut svg) = (None, None, None, None);
     let usage = "usage: dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]";
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--tol" => {
                 let value = args.next().ok_or("--tol needs a value")?;
-                tol = value.parse().map_err(|_| format!("--tol {value}: not a number"))?;
+                tol = Some(value.parse::<f64>().map_err(|_| format!("--tol {value}: not a number"))?);
             }
             "--out" => out = Some(PathBuf::from(args.next().ok_or("--out needs a file")?)),
             "--svg" => svg = Some(PathBuf::from(args.next().ok_or("--svg needs a file")?)),
@@ -33,10 +34,20 @@ fn run() -> Result<(), String> {
     }
     let file = file.ok_or(usage)?;
     let text = std::fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
-    let error =
-        |e: dirac::spice::SpiceError| format!("{}:{}:{}: {}", file.display(), e.line, e.column, e.message);
+    // Every error the netlist has, one line each.
+    let error = |e: dirac::spice::SpiceError| {
+        let line = |e: &dirac::spice::SpiceError| {
+            format!("{}:{}:{}: {}", file.display(), e.line, e.column, e.message)
+        };
+        e.all().map(line).collect::<Vec<_>>().join("\n")
+    };
     let clock = Instant::now();
     let netlist = dirac::spice::parse(&text).map_err(error)?;
+    let options = netlist.options();
+    if !options.ignored.is_empty() {
+        eprintln!("{}: `.options` ignored: {}", file.display(), options.ignored.join(", "));
+    }
+    let tol = tol.or(options.reltol).unwrap_or(1e-6);
     let circuit = netlist.circuit().map_err(error)?;
     let sizes = dirac::LagrangeDirac::sizes(&circuit.network);
     eprintln!(

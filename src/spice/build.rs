@@ -213,7 +213,7 @@ impl Netlist {
     /// The circuit of the netlist: its network, checked, and its initial state from `.ic` and
     /// the elements' `ic=`.
     pub fn circuit(&self) -> Result<Circuit, SpiceError> {
-        let first = |message: String| SpiceError { line: 1, column: 1, message };
+        let first = |message: String| SpiceError::at(1, 1, message);
         if self.elements.is_empty() {
             return Err(first("the netlist has no elements".into()));
         }
@@ -706,11 +706,8 @@ impl Circuit {
     /// otherwise): to integrate the network with an integrator and options of one's own.
     pub fn start(&self) -> Result<crate::State<Network>, SpiceError> {
         let (q, v) = self.start_values();
-        consistent_state(&self.network, 0.0, &q, &v, Consistency::default()).map_err(|e| SpiceError {
-            line: 1,
-            column: 1,
-            message: format!("the initial state: {e}"),
-        })
+        consistent_state(&self.network, 0.0, &q, &v, Consistency::default())
+            .map_err(|e| SpiceError::at(1, 1, format!("the initial state: {e}")))
     }
 
     /// Whether a source follows a waveform (`PULSE`, `PWL`, or a `SIN` with a delay or on a
@@ -760,13 +757,9 @@ impl Circuit {
         tol: f64,
         mut progress: impl FnMut(f64, usize),
     ) -> Result<Waveforms, SpiceError> {
-        let error = |what: &str, e: crate::SimError| SpiceError {
-            line: 1,
-            column: 1,
-            message: format!("{what}: {e}"),
-        };
+        let error = |what: &str, e: crate::SimError| SpiceError::at(1, 1, format!("{what}: {e}"));
         let Some(tran) = &self.tran else {
-            return Err(SpiceError { line: 1, column: 1, message: "the netlist has no `.tran`".into() });
+            return Err(SpiceError::at(1, 1, "the netlist has no `.tran`"));
         };
         let start = self.start()?;
         let mut options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };

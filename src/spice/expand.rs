@@ -305,11 +305,11 @@ struct Expression<'a> {
 
 impl Expression<'_> {
     fn error(&self, message: String) -> SpiceError {
-        SpiceError {
-            line: self.token.line,
-            column: self.token.column + 1 + self.at,
-            message: format!("`{}`: {message}", self.token.text),
-        }
+        SpiceError::at(
+            self.token.line,
+            self.token.column + 1 + self.at,
+            format!("`{}`: {message}", self.token.text),
+        )
     }
 
     fn blank(&mut self) {

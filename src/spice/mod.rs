@@ -34,9 +34,14 @@
 //!   `Xname nodes… name [params:] p=value …`, nested to 32 levels: an instance `X1`'s elements
 //!   are named `r:x1:r1` and its inner nodes `x1:node`, as ngspice names them with dots;
 //! - `.tran step stop [start [max_step]] [uic]`, `.ic v(node)=value`, `.save` and
-//!   `.print tran` (`v(node)`, `i(vsource)` or `all`: the columns recorded), `.end`.
+//!   `.print tran` (`v(node)`, `i(vsource)` or `all`: the columns recorded), `.end`;
+//! - `.options` (or `.option`, `.opt`): `reltol` applies (the `dirac-spice` command's tolerance
+//!   unless `--tol` is given); the others are read and named by [`Netlist::options`] as
+//!   ignored (`abstol`, `vntol`, `chgtol`: dirac's absolute tolerances follow each kind of
+//!   quantity's own scale, so picofarads and nanoseconds need no setting).
 //!
-//! Anything else is refused with its line, its column and its name. Node `0` (or `gnd`) is the
+//! Anything else is refused with its line, its column and its name; a netlist's errors are
+//! reported together ([`SpiceError::further`]), in the order of their lines. Node `0` (or `gnd`) is the
 //! reference. A run starts from the state the netlist gives, zero unless `.ic` or `ic=` say
 //! otherwise, as ngspice's `uic` does: no operating point is computed first.
 //!
@@ -63,9 +68,11 @@ pub use self::build::{Circuit, Waveforms};
 
 use self::read::Token;
 
-/// Why a netlist could not be read or simulated: where (1-based line and column) and what.
+/// Why a netlist could not be read or simulated: where (1-based line and column) and what,
+/// and the netlist's further errors, each with its own line, in the order of the lines (the
+/// reader reports every line it could not read at once).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("line {line}, column {column}: {message}")]
+#[error("{}", self.lines())]
 pub struct SpiceError {
     /// The line, from 1 (the title's).
     pub line: usize,
@@ -73,6 +80,26 @@ pub struct SpiceError {
     pub column: usize,
     /// What is wrong.
     pub message: String,
+    /// The errors on later lines, if any.
+    pub further: Vec<SpiceError>,
+}
+
+impl SpiceError {
+    /// An error at `line` and `column`, alone.
+    pub fn at(line: usize, column: usize, message: impl Into<String>) -> SpiceError {
+        SpiceError { line, column, message: message.into(), further: Vec::new() }
+    }
+
+    /// This error and the further ones, in order.
+    pub fn all(&self) -> impl Iterator<Item = &SpiceError> {
+        std::iter::once(self).chain(&self.further)
+    }
+
+    /// One line per error: `line L, column C: message`.
+    fn lines(&self) -> String {
+        let line = |e: &SpiceError| format!("line {}, column {}: {}", e.line, e.column, e.message);
+        self.all().map(line).collect::<Vec<_>>().join("\n")
+    }
 }
 
 /// A netlist as read: its title, elements and commands.
@@ -146,6 +173,8 @@ enum Kind {
 #[derive(Clone, Debug)]
 enum Command {
     Tran(Tran),
+    /// `.options`: `(name, value)`, `None` for a flag.
+    Options(Vec<(String, Option<f64>)>),
     /// `(node, voltage, where)`.
     Ic(Vec<(String, f64, Token)>),
     /// `.save` or `.print tran`: the columns to record, `v(node)` or `i(source)`; empty for
@@ -183,12 +212,39 @@ pub fn parse(text: &str) -> Result<Netlist, SpiceError> {
     read::parse(text)
 }
 
+/// What a netlist's `.options` lines ask for: the relative tolerance, which dirac applies (the
+/// `dirac-spice` command runs at it unless `--tol` is given), and the options it reads and
+/// ignores, by name (`abstol`, `vntol` and `chgtol` among them: dirac's absolute tolerances
+/// follow each kind of quantity's own scale, whatever its unit).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SpiceOptions {
+    /// `reltol`, if given.
+    pub reltol: Option<f64>,
+    /// The other options, as written (lower case), in order.
+    pub ignored: Vec<String>,
+}
+
 impl Netlist {
+    /// The netlist's `.options`, all lines together (a later value wins).
+    pub fn options(&self) -> SpiceOptions {
+        let mut options = SpiceOptions::default();
+        for command in &self.commands {
+            let Command::Options(list) = command else { continue };
+            for (name, value) in list {
+                match (name.as_str(), value) {
+                    ("reltol", Some(v)) => options.reltol = Some(*v),
+                    _ => options.ignored.push(name.clone()),
+                }
+            }
+        }
+        options
+    }
+
     /// The `.tran` command, if the netlist has one.
     pub fn tran(&self) -> Option<&Tran> {
         self.commands.iter().find_map(|c| match c {
             Command::Tran(t) => Some(t),
-            Command::Ic(_) | Command::Save(_) => None,
+            Command::Ic(_) | Command::Save(_) | Command::Options(_) => None,
         })
     }
 }

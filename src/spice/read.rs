@@ -17,7 +17,7 @@ pub(super) struct Token {
 
 impl Token {
     pub(super) fn error(&self, message: impl Into<String>) -> SpiceError {
-        SpiceError { line: self.line, column: self.column, message: message.into() }
+        SpiceError::at(self.line, self.column, message)
     }
 }
 
@@ -102,12 +102,9 @@ fn logical_lines(text: &str) -> Vec<Vec<Token>> {
 /// ignored as a unit (`10uF`, `2.2kOhm`), as SPICE reads it.
 pub(super) fn number(token: &Token) -> Result<f64, SpiceError> {
     let t = token.text.as_str();
-    let numeric = t.find(|c: char| !(c.is_ascii_digit() || "+-.e".contains(c))).unwrap_or(t.len());
-    // The longest prefix of number characters that parses; the rest is a suffix and a unit.
-    let (end, mantissa) = (1..=numeric)
-        .rev()
-        .find_map(|end| t[..end].parse::<f64>().ok().map(|m| (end, m)))
-        .ok_or_else(|| token.error(format!("`{t}` is not a number")))?;
+    // The longest prefix that is a number; the rest is a suffix and a unit.
+    let end = number_prefix(t.as_bytes());
+    let mantissa = t[..end].parse::<f64>().map_err(|_| token.error(format!("`{t}` is not a number")))?;
     let suffix = &t[end..];
     let scale = if suffix.starts_with("meg") {
         1e6
@@ -132,6 +129,32 @@ pub(super) fn number(token: &Token) -> Result<f64, SpiceError> {
     if value.is_finite() { Ok(value) } else { Err(token.error(format!("`{t}` is not a finite number"))) }
 }
 
+/// The length of the longest prefix of `t` that reads as a number, `[+-]digits[.digits][e[+-]digits]`
+/// with a digit in the mantissa (0 if none): one pass, however long the token.
+fn number_prefix(t: &[u8]) -> usize {
+    let digits = |from: usize| from + t[from..].iter().take_while(|b| b.is_ascii_digit()).count();
+    let mut k = usize::from(matches!(t.first(), Some(b'+' | b'-')));
+    let whole = digits(k);
+    let mut end = whole;
+    let mut any = whole > k;
+    if t.get(end) == Some(&b'.') {
+        let fraction = digits(end + 1);
+        any |= fraction > end + 1;
+        end = fraction;
+    }
+    if !any {
+        return 0;
+    }
+    if t.get(end) == Some(&b'e') {
+        k = end + 1 + usize::from(matches!(t.get(end + 1), Some(b'+' | b'-')));
+        let exponent = digits(k);
+        if exponent > k {
+            end = exponent;
+        }
+    }
+    end
+}
+
 /// Reads a netlist: its title, its `.param`s and `.subckt`s, and its elements (instances of
 /// subcircuits expanded) and commands.
 pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
@@ -139,27 +162,41 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
     let mut netlist = Netlist { title, models: HashMap::new(), elements: Vec::new(), commands: Vec::new() };
     let mut lines = logical_lines(text);
     let (mut scope, mut subckts, mut top) = (Scope::new(), HashMap::new(), Vec::new());
+    // Every line's error, in the order of the lines: a netlist's errors are reported at once.
+    let mut errors: Vec<SpiceError> = Vec::new();
     let mut k = 0;
     while k < lines.len() {
         let head = &lines[k][0];
-        match head.text.as_str() {
-            ".subckt" => {
-                let (name, definition, next) = expand::subckt(&lines, k)?;
-                if subckts.insert(name.clone(), definition).is_some() {
-                    return Err(head.error(format!("`.subckt {name}` is defined twice")));
+        let read = match head.text.as_str() {
+            ".subckt" => match expand::subckt(&lines, k) {
+                Ok((name, definition, next)) => {
+                    if subckts.insert(name.clone(), definition).is_some() {
+                        errors.push(head.error(format!("`.subckt {name}` is defined twice")));
+                    }
+                    k = next;
+                    continue;
                 }
-                k = next;
-                continue;
-            }
-            ".ends" => return Err(head.error("`.ends` without a `.subckt`")),
-            ".param" => expand::param(&lines[k], &mut scope)?,
-            ".model" => {
-                let (name, model) = diode_model(&lines[k], &scope)?;
+                Err(error) => {
+                    // Past the definition's `.ends`, if it has one: its lines are its own.
+                    errors.push(error);
+                    k = (k + 1..lines.len())
+                        .find(|&j| lines[j][0].text == ".ends")
+                        .map_or(lines.len(), |j| j + 1);
+                    continue;
+                }
+            },
+            ".ends" => Err(head.error("`.ends` without a `.subckt`")),
+            ".param" => expand::param(&lines[k], &mut scope),
+            ".model" => diode_model(&lines[k], &scope).map(|(name, model)| {
                 netlist.models.insert(name, model);
-            }
+            }),
             ".end" => break,
-            _ => top.push(k),
-        }
+            _ => {
+                top.push(k);
+                Ok(())
+            }
+        };
+        errors.extend(read.err());
         k += 1;
     }
     let frame = Frame { path: String::new(), ports: HashMap::new(), scope, depth: 0 };
@@ -167,8 +204,8 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
     for k in top {
         // The top level's lines are read once: taken, not copied.
         let tokens = std::mem::take(&mut lines[k]);
-        if tokens[0].text.starts_with('.') {
-            let tokens: Vec<Token> = tokens
+        let read = if tokens[0].text.starts_with('.') {
+            tokens
                 .iter()
                 .map(|t| match t.text.starts_with(['{', '\'']) {
                     true => expand::value_of(t, &frame.scope).map(|v| Token {
@@ -178,17 +215,24 @@ pub(super) fn parse(text: &str) -> Result<Netlist, SpiceError> {
                     }),
                     false => Ok(t.clone()),
                 })
-                .collect::<Result<_, _>>()?;
-            netlist.commands.extend(parse_command(&tokens)?);
+                .collect::<Result<Vec<Token>, _>>()
+                .and_then(|tokens| parse_command(&tokens))
+                .map(|command| netlist.commands.extend(command))
         } else {
             let elements = &mut netlist.elements;
             expand::flatten_top(tokens, &frame, &subckts, &mut count, &mut |line| {
                 elements.push(parse_element(line)?);
                 Ok(())
-            })?;
-        }
+            })
+        };
+        errors.extend(read.err());
     }
-    Ok(netlist)
+    errors.sort_by_key(|e| (e.line, e.column));
+    let mut errors = errors.into_iter();
+    match errors.next() {
+        None => Ok(netlist),
+        Some(first) => Err(SpiceError { further: errors.collect(), ..first }),
+    }
 }
 
 /// A `.model name D(IS=… N=…)` line (SPICE's defaults 1e-14 A and 1), or `.model name
@@ -248,11 +292,11 @@ fn diode_model(tokens: &[Token], scope: &Scope) -> Result<(String, DiodeModel), 
 fn at(tokens: &[Token], k: usize, what: impl std::fmt::Display) -> Result<&Token, SpiceError> {
     tokens.get(k).ok_or_else(|| {
         let last = tokens.last().expect("a line has a token");
-        SpiceError {
-            line: last.line,
-            column: last.column + last.text.chars().count(),
-            message: format!("`{}` needs {what}", tokens[0].text),
-        }
+        SpiceError::at(
+            last.line,
+            last.column + last.text.chars().count(),
+            format!("`{}` needs {what}", tokens[0].text),
+        )
     })
 }
 
@@ -488,8 +532,36 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
             }
             Ok(Some(Command::Save(probes)))
         }
+        ".options" | ".option" | ".opt" => {
+            // `name=value` pairs and flags: kept as written; the circuit applies what applies.
+            let mut options = Vec::new();
+            let mut k = 1;
+            while k < tokens.len() {
+                let name = &tokens[k];
+                if tokens.get(k + 1).is_some_and(|t| t.text == "=") {
+                    let token = at(tokens, k + 2, format_args!("a value for `{}`", name.text))?;
+                    // `reltol` applies and must be a tolerance; other values (`method=gear`)
+                    // need not be numbers: they are named as ignored.
+                    let value = if name.text == "reltol" {
+                        let value = number(token)?;
+                        if !(value > 0.0 && value < 1.0) {
+                            return Err(token.error(format!("`.options`: reltol {value} must lie in (0, 1)")));
+                        }
+                        Some(value)
+                    } else {
+                        number(token).ok()
+                    };
+                    options.push((name.text.clone(), value));
+                    k += 3;
+                } else {
+                    options.push((name.text.clone(), None));
+                    k += 1;
+                }
+            }
+            Ok(Some(Command::Options(options)))
+        }
         other => Err(head.error(format!(
-            "the command `{other}` is not supported (`.tran`, `.ic`, `.save`, `.print tran` and `.end` are)"
+            "the command `{other}` is not supported (`.tran`, `.ic`, `.save`, `.print tran`, `.options` and `.end` are)"
         ))),
     }
 }

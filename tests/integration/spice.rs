@@ -841,6 +841,7 @@ fn mutated_netlists_never_panic_and_every_refusal_has_a_line() {
     };
     let alphabet: Vec<char> = "0123456789abcdefgkmnpuvxyz .+-=(),;$*/^{}':\n\tEeRLCKVIGDX".chars().collect();
     let (mut read, mut refusals) = (0, 0);
+    let mut slowest = std::time::Duration::ZERO;
     for _ in 0..count {
         let base = if next(2) == 0 { EVERY_ELEMENT } else { IN_SUBCIRCUITS };
         let mut text: Vec<char> = base.chars().collect();
@@ -872,17 +873,25 @@ fn mutated_netlists_never_panic_and_every_refusal_has_a_line() {
         }
         let text: String = text.into_iter().collect();
         let lines = text.lines().count().max(1);
+        let clock = std::time::Instant::now();
         let outcome = std::panic::catch_unwind(|| spice::parse(&text).and_then(|n| n.circuit().map(|_| ())));
+        slowest = slowest.max(clock.elapsed());
         match outcome {
             Ok(Ok(())) => read += 1,
             Ok(Err(e)) => {
                 refusals += 1;
-                assert!(e.line >= 1 && e.line <= lines, "line {} of {lines}: {e}\n{text}", e.line);
+                for e in e.all() {
+                    assert!(e.line >= 1 && e.line <= lines, "line {} of {lines}: {e}\n{text}", e.line);
+                }
+                assert!(e.further.windows(2).all(|w| w[0].line <= w[1].line), "in the lines' order: {e}");
             }
             Err(_) => panic!("the reader panicked on:\n{text}"),
         }
     }
+    eprintln!("{count} netlists: {read} read, {refusals} refused, the slowest in {slowest:?}");
     assert!(read > 0 && refusals > 0, "{read} read, {refusals} refused");
+    // A guard against a hang, not a benchmark: each netlist is a few lines long.
+    assert!(slowest.as_secs_f64() < 5.0, "a netlist took {slowest:?}");
 }
 
 /// A series-RL ladder of 10⁴ sections (each a series resistor and inductor, and a shunt
@@ -937,4 +946,57 @@ fn a_series_rl_ladder_of_ten_thousand_sections_starts_from_its_resistors() {
     let current = run.column("i(v1)").expect("the source's current");
     let last = current[current.len() - 1];
     assert!((last + i[0]).abs() < 1e-9 * i[0], "i(v1)(5 µs) = {last:e}, the ladder's ODE {:e}", -i[0]);
+}
+
+/// Tokens as long as a file (1 MiB of digits, of dots and digits, of a number's characters):
+/// read in one pass each, then refused or read as a number, never scanned prefix by prefix
+/// (that scan took more than 20 s on the first). The time bound guards against a hang.
+#[test]
+fn a_megabyte_token_is_read_in_one_pass() {
+    let long = 1 << 20;
+    let cases = [
+        ("1".repeat(long), "not a finite number"),
+        ("1.".repeat(long / 2), "is not a number"),
+        ("+-e.".repeat(long / 4), "is not a number"),
+    ];
+    for (token, refusal) in cases {
+        let text = format!("t\nV1 a 0 1\nR1 a 0 {token}\n.tran 1 2\n.end\n");
+        let clock = std::time::Instant::now();
+        let error = spice::parse(&text).expect_err("refused");
+        assert!(clock.elapsed().as_secs_f64() < 5.0, "{:?}", clock.elapsed());
+        assert_eq!(error.line, 3);
+        assert!(error.message.contains(refusal), "{}", &error.message[..200.min(error.message.len())]);
+    }
+    // A long mantissa that is a number: 0.111… reads as 1/9.
+    let text = format!("t\nV1 a 0 1\nR1 a 0 0.{}\n.tran 1 2\n.end\n", "1".repeat(long));
+    assert!(spice::parse(&text).expect("reads").circuit().is_ok());
+}
+
+/// A netlist with several bad lines reports them all, in order, each with its line; the
+/// command-line tool prints one line per error.
+#[test]
+fn every_error_of_a_netlist_is_reported_at_once() {
+    let text = "three mistakes\nV1 a 0 1\nR1 a b -1\nC1 b 0\nQ1 a b c\nR2 b 0 1\n.tran 1 2\n.end\n";
+    let error = spice::parse(text).expect_err("refused");
+    let lines: Vec<usize> = error.all().map(|e| e.line).collect();
+    assert_eq!(lines, [3, 4, 5], "{error}");
+    assert!(error.message.contains("must be positive"), "{error}");
+    assert!(error.further[0].message.contains("needs a value"), "{error}");
+    assert!(error.further[1].message.contains("`q1` is not supported"), "{error}");
+    assert_eq!(error.to_string().lines().count(), 3, "{error}");
+}
+
+/// `.options` as netlists carry them: `reltol` applies (and must be a tolerance), the rest is
+/// read and named as ignored, flags and words included.
+#[test]
+fn options_are_accepted_and_what_is_ignored_is_named() {
+    let text = "rc\n.options reltol=1e-4 abstol=1e-12 method=gear\n.option noacct\n\
+                V1 a 0 1\nR1 a b 1k\nC1 b 0 1u\n.tran 1m 5m\n.end\n";
+    let netlist = spice::parse(text).expect("reads");
+    let options = netlist.options();
+    assert_eq!(options.reltol, Some(1e-4));
+    assert_eq!(options.ignored, ["abstol", "method", "noacct"]);
+    assert!(netlist.circuit().is_ok());
+    let error = spice::parse("rc\n.options reltol=2\nV1 a 0 1\nR1 a 0 1\n.end\n").expect_err("refused");
+    assert!(error.message.contains("reltol 2 must lie in (0, 1)") && error.line == 2, "{error}");
 }
