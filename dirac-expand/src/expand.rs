@@ -172,10 +172,34 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
         let doc = format!("The output `{name}`: its series in a solution, its value from `outputs`.");
         quote! { #[doc = #doc] #vis const #c: #p::Output<Self> = #p::Output::new(#k); }
     });
+    // A model with laws counts their mode coordinates among its own: `VecQ::<M>::from` would
+    // need them, so the model gives vectors of the coordinates its author wrote.
+    let own = (!model.laws.is_empty()).then(|| {
+        let k = proc_macro2::Literal::usize_unsuffixed(model.coordinates.len() - model.laws.len());
+        let modes: Vec<String> =
+            model.laws.iter().map(|l| format!("`{}{}`", l.name, crate::symbol::MODE)).collect();
+        let doc = format!(
+            "A vector of positions or velocities from the values of the coordinates written in \
+             the model, in their order; the laws' mode coordinates ({}) are zero, and the start \
+             chooses the modes. (`VecQ::<Self>::from` counts the modes too.)",
+            modes.join(", ")
+        );
+        quote! {
+            #[doc = #doc]
+            #vis fn vec_q(own: [::core::primitive::f64; #k]) -> #p::VecQ<Self> {
+                let mut q = <#p::VecQ<Self>>::zeros();
+                for (slot, value) in q.iter_mut().zip(own) {
+                    *slot = value;
+                }
+                q
+            }
+        }
+    });
     quote! {
         #[automatically_derived]
         impl #ident {
             #(#coordinates)*
+            #own
             #(#constraints)*
             #(#inputs)*
             #(#outputs)*

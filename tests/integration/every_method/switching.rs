@@ -531,6 +531,19 @@ pub struct Belt {
     pub mu_k: f64,
 }
 
+/// A model with a law counts the law's mode among its coordinates: `vec_q` takes the ones
+/// written in the model, and the start chooses the mode (a mass at rest under a moving belt
+/// slips backwards relative to it: mode −1).
+#[test]
+fn a_law_models_vectors_take_the_coordinates_written_in_it() {
+    let belt = Belt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 };
+    let q = Belt::vec_q([0.3]);
+    assert_eq!(q.as_slice(), [0.3, 0.0]);
+    let start =
+        consistent_state(&belt, 0.0, &q, &Belt::vec_q([0.0]), Consistency::default()).expect("consistent");
+    assert_eq!((start.q[Belt::X.index()], start.q[Belt::GRIP_MODE.index()]), (0.3, -1.0));
+}
+
 /// Stick-slip with the friction law, by a plain `solve` with each integrator, from rest (the
 /// belt moves, the mass does not: it starts slipping, and its mode is chosen so). Closed form:
 /// slipping from rest, `x = x_e (1 − cos ωt)` about `x_e = μk N/k`, until `v = vb` at
