@@ -404,12 +404,16 @@ fn adjoint_gradients_of_a_running_cost_match_central_differences() {
         };
         let fd = (at(theta + step) - at(theta - step)) / (2.0 * step);
         let name = &pendulum.parameter_names()[k];
+        // Read by the parameter's name, as a user would.
+        let adjoint = gradient.parameter(name).expect("a parameter of the model");
         assert!(
-            (gradient.parameters[k] - fd).abs() <= 1e-6 * fd.abs().max(1.0),
-            "∂G/∂{name}: adjoint {}, central difference {fd}",
-            gradient.parameters[k]
+            (adjoint - fd).abs() <= 1e-6 * fd.abs().max(1.0),
+            "∂G/∂{name}: adjoint {adjoint}, central difference {fd}"
         );
     }
+    assert_eq!(gradient.parameter("no such parameter"), None);
+    let names: Vec<&str> = gradient.parameters_by_name().map(|(name, _)| name).collect();
+    assert_eq!(names, ["m", "g", "l"]);
     for i in 0..2 {
         let step = 1e-5;
         let at = |delta: f64| {

@@ -206,6 +206,33 @@ where
     /// `∂G/∂u_k` for each input held between samples ([`Radau::record_held`]), in the order
     /// given there, at each of its samples `k`; empty for a run that held none.
     pub inputs: Vec<Vec<f64>>,
+    /// The model's parameter and coordinate names, for reading by name.
+    names: (Vec<String>, Vec<String>),
+}
+
+impl<M: LagrangeDirac> Gradient<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// `∂G/∂θ` for the parameter with this dotted name (`"gear.ratio"`), if the model has one.
+    pub fn parameter(&self, name: &str) -> Option<f64> {
+        self.names.0.iter().position(|p| p == name).map(|k| self.parameters[k])
+    }
+
+    /// `∂G/∂q₀` for the coordinate with this name (`"load.phi"`), if the model has one.
+    pub fn position(&self, name: &str) -> Option<f64> {
+        self.names.1.iter().position(|c| c == name).map(|i| self.positions[i])
+    }
+
+    /// `∂G/∂v₀` for the coordinate with this name, if the model has one.
+    pub fn velocity(&self, name: &str) -> Option<f64> {
+        self.names.1.iter().position(|c| c == name).map(|i| self.velocities[i])
+    }
+
+    /// The parameters' names and their components of the gradient, in order.
+    pub fn parameters_by_name(&self) -> impl Iterator<Item = (&str, f64)> {
+        self.names.0.iter().map(String::as_str).zip(self.parameters.iter().copied())
+    }
 }
 
 impl<M: LagrangeDirac> std::fmt::Debug for Gradient<M>
@@ -523,7 +550,8 @@ where
             return Err(SimError::NonFinite { t: self.t0, component });
         }
         let inputs = inputs.map_or_else(Vec::new, held::Accumulator::finish);
-        Ok(Gradient { value, parameters: sweep.theta, positions, velocities, inputs })
+        let names = (names, model.coordinate_names());
+        Ok(Gradient { value, parameters: sweep.theta, positions, velocities, inputs, names })
     }
 }
 
