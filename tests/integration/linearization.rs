@@ -58,6 +58,9 @@ fn the_inverted_pendulum_has_its_textbook_matrices() {
     assert_close(&lin.b, &DMatrix::from_row_slice(2, 1, &[0.0, 1.0 / (m * l * l)]), 1e-12);
     assert_close(&lin.c, &DMatrix::from_row_slice(1, 2, &[l, 0.0]), 1e-12);
     assert_close(&lin.d, &DMatrix::zeros(1, 1), 0.0);
+    // Without constraints the state is the model's own coordinate and velocity, named so.
+    assert_eq!(lin.basis, dirac::Basis::Coordinates(vec!["theta".into()]));
+    assert_eq!(lin.state_names(), ["δq(theta)", "δv(theta)"]);
     let mut eigenvalues: Vec<f64> = lin.a.complex_eigenvalues().iter().map(|z| z.re).collect();
     eigenvalues.sort_by(f64::total_cmp);
     let rate = (g / l).sqrt();
@@ -79,6 +82,11 @@ fn the_cartesian_pendulum_reduces_to_the_two_states_of_the_angle_form() {
     let model = Pendulum { m, g, l };
     // Upright, (0, l): unstable, eigenvalues ±√(g/l), so trace 0 and determinant −g/l.
     let up = linearize(&model, 0.0, &at_rest(&model, &[0.0, l])).expect("an equilibrium");
+    // Constrained: along an orthonormal basis of the free directions, named so.
+    assert_eq!(
+        (up.basis.clone(), up.state_names()),
+        (dirac::Basis::Orthonormal, vec!["δz[0]".into(), "δw[0]".into()])
+    );
     assert_eq!((up.positions_count(), up.a.nrows()), (1, 2), "one position and one velocity");
     let (trace, det) = trace_and_determinant(&up.a);
     assert!(trace.abs() < 1e-12 && (det + g / l).abs() < 1e-10, "trace {trace}, determinant {det}");

@@ -62,14 +62,31 @@ pub struct Linearization {
 pub enum Basis {
     /// `x = (δz, δw)`, coordinates along the orthonormal bases
     /// [`Linearization::positions`] and [`Linearization::velocities`] of the directions the
-    /// constraints allow (the model's own coordinates when it has no constraints).
+    /// constraints allow.
     Orthonormal,
     /// `x = (δq_s, δv_s)`: the displacements and velocities of these coordinates of the model,
-    /// by name ([`Linearization::in_coordinates`]).
+    /// by name: all of them for a model without constraints whose every velocity has inertia,
+    /// or those chosen by [`Linearization::in_coordinates`].
     Coordinates(Vec<String>),
 }
 
 impl Linearization {
+    /// The name of each component of the state `x`, in order: `δq(x)` and `δv(x)` for the
+    /// coordinates of [`Basis::Coordinates`] (a model without constraints is linearised in its
+    /// own), `δz[i]` and `δw[i]` along the orthonormal bases otherwise.
+    pub fn state_names(&self) -> Vec<String> {
+        match &self.basis {
+            Basis::Coordinates(names) => {
+                let positions = names.iter().map(|n| format!("δq({n})"));
+                positions.chain(names.iter().map(|n| format!("δv({n})"))).collect()
+            }
+            Basis::Orthonormal => {
+                let positions = (0..self.positions.ncols()).map(|i| format!("δz[{i}]"));
+                positions.chain((0..self.velocities.ncols()).map(|i| format!("δw[{i}]"))).collect()
+            }
+        }
+    }
+
     /// The number of position coordinates `δz`; the velocity coordinates `δw` follow them.
     pub fn positions_count(&self) -> usize {
         self.positions.ncols()
@@ -301,7 +318,14 @@ where
         yu += &y_lambda * &map.input;
     }
     let velocities = &velocities * &inertial;
-    let basis = Basis::Orthonormal;
+    // Without constraints and with inertia along every velocity, the bases are the identity:
+    // the state is the model's own coordinates, and says so.
+    let n = positions.nrows();
+    let own = positions.ncols() == n
+        && velocities.ncols() == n
+        && positions == DMatrix::identity(n, n)
+        && velocities == DMatrix::identity(n, n);
+    let basis = if own { Basis::Coordinates(model.coordinate_names()) } else { Basis::Orthonormal };
     Ok(Linearization {
         a: state_matrix,
         b: input_matrix,
