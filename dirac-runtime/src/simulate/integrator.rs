@@ -459,7 +459,7 @@ pub(crate) fn check_step_options(
         return Err(SimError::InvalidOption {
             what: "rtol",
             reason: format!(
-                "{rtol} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
+                "{rtol:e} is outside [2.2e-15, 1): a relative error of 100% or more controls nothing, \
                  and below 10 machine epsilons no step can meet it"
             ),
         });
