@@ -87,6 +87,13 @@ fn main() -> Result<(), Box<dyn Error>> {
         solution.stats.steps,
         commands.len()
     );
+    // The tool's pose: its origin and the direction its z axis points (the third column of
+    // its rotation), outputs of the robot read by name.
+    let tool = |name: &str| solution.column(&format!("out(arm.panda_hand_tcp_{name})")).map(|c| c[last]);
+    let (position, axis) = (["x", "y", "z"].map(tool), ["r13", "r23", "r33"].map(tool));
+    if let ([Some(x), Some(y), Some(z)], [Some(ax), Some(ay), Some(az)]) = (position, axis) {
+        println!("tool at ({x:.4}, {y:.4}, {z:.4}) m, pointing along ({ax:.3}, {ay:.3}, {az:.3})");
+    }
     let residual = solution.holonomic_residual().iter().fold(0.0_f64, |m, r| m.max(r.abs()));
     println!("the gearbox and the mimic finger hold to {residual:.1e}");
 

@@ -35,11 +35,37 @@ fn the_panda_has_the_joints_and_links_of_its_urdf() {
     assert_eq!(Panda.constraint_names(), ["panda_finger_joint2_mimic"]);
     assert_eq!(Panda.ports().len(), 9, "every joint is a port");
     let outputs = Panda::NAMES.output_names();
-    for link in ["panda_link1", "panda_link7", "panda_hand", "panda_hand_tcp", "panda_leftfinger"] {
-        for axis in ["x", "y", "z"] {
+    for link in
+        ["panda_link0", "panda_link1", "panda_link7", "panda_hand", "panda_hand_tcp", "panda_leftfinger"]
+    {
+        for axis in ["x", "y", "z", "r11", "r23", "r33"] {
             assert!(outputs.iter().any(|o| *o == format!("{link}_{axis}")), "{link}_{axis} in {outputs:?}");
         }
     }
+}
+
+/// Each link's pose, the root's too, against Pinocchio's `oMf` at ten random joint positions
+/// (`tests/references/panda_frames.csv`, computed by `tests/references/robots.py`): origins and
+/// rotations read by name from the model's outputs.
+#[test]
+fn the_panda_gives_every_links_position_and_rotation_as_pinocchio_does() {
+    let (header, rows) = table(include_str!("../references/panda_frames.csv"));
+    assert_eq!(header.len(), 9 + 6 * 12);
+    assert_eq!(rows.len(), 10);
+    let names = Panda::NAMES.output_names();
+    let mut outputs = vec![0.0; names.len()];
+    let mut worst = 0.0_f64;
+    for row in &rows {
+        let q = VecQ::<Panda>::from_column_slice(&row[0..9]);
+        let (v, lambda) = (VecQ::<Panda>::zeros(), VecC::<Panda>::zeros());
+        Panda.outputs(0.0, &q, &v, &lambda, &mut outputs);
+        for (column, reference) in header.iter().zip(row).skip(9) {
+            let k = names.iter().position(|n| n == column).unwrap_or_else(|| panic!("no output {column}"));
+            worst = worst.max((outputs[k] - reference).abs());
+        }
+    }
+    eprintln!("Panda's link poses against Pinocchio: {worst:.1e}");
+    assert!(worst < 1e-14, "{worst:e}");
 }
 
 #[test]

@@ -11,7 +11,10 @@ writes
 - panda_swing.csv: a 1 s free swing under gravity from rest, with the URDF's joint damping
   (tau = -d v) and its mimic joint (panda_finger_joint2 = panda_finger_joint1) reduced by
   hand: with G the 9 x 8 map from the eight independent velocities, G^T M G a = -G^T (nle + D G v).
-  Integrated by SciPy's DOP853 at rtol = atol = 1e-12; rows t, q0..q8, v0..v8 every 0.1 s.
+  Integrated by SciPy's DOP853 at rtol = atol = 1e-12; rows t, q0..q8, v0..v8 every 0.1 s;
+- panda_frames.csv: at 10 random joint positions (uniform within the limits, seed 41), the
+  pose of six links in the world (framesForwardKinematics, oMf), the root link included: per
+  link its origin x, y, z and its rotation r11..r33 (row-major); rows q0..q8 and then the links'.
 """
 
 import sys
@@ -69,6 +72,31 @@ def main(urdf, out):
     rows = [np.concatenate([[t], reduce @ y[:8], reduce @ y[8:]]) for t, y in zip(sol.t, sol.y.T)]
     header = ["t"] + [f"q{i}" for i in range(9)] + [f"v{i}" for i in range(9)]
     np.savetxt(f"{out}/panda_swing.csv", np.array(rows), delimiter=",", header=",".join(header),
+               comments="", fmt="%.17g")
+
+    frames(model, data, out)
+
+
+# The links whose poses panda_frames.csv holds: the root, an arm link, the last arm link, the
+# hand (fixed to it), the tool centre point (fixed, rotated) and a finger (prismatic).
+FRAME_LINKS = ["panda_link0", "panda_link3", "panda_link7", "panda_hand", "panda_hand_tcp", "panda_leftfinger"]
+
+
+def frames(model, data, out):
+    rng = np.random.default_rng(41)
+    rows = []
+    for _ in range(10):
+        q = rng.uniform(model.lowerPositionLimit, model.upperPositionLimit)
+        pin.framesForwardKinematics(model, data, q)
+        row = list(q)
+        for link in FRAME_LINKS:
+            pose = data.oMf[model.getFrameId(link, pin.BODY)]
+            row += list(pose.translation) + list(pose.rotation.ravel())
+        rows.append(row)
+    header = [f"q{i}" for i in range(9)]
+    for link in FRAME_LINKS:
+        header += [f"{link}_{a}" for a in "xyz"] + [f"{link}_r{i}{j}" for i in range(1, 4) for j in range(1, 4)]
+    np.savetxt(f"{out}/panda_frames.csv", np.array(rows), delimiter=",", header=",".join(header),
                comments="", fmt="%.17g")
 
 

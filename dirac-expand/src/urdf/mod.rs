@@ -21,7 +21,9 @@
 //! `<mimic>` becomes a holonomic row, `<dynamics damping>` a Rayleigh dissipation and
 //! `<dynamics friction>` a `friction` law (Coulomb friction with stiction); every joint
 //! coordinate is a port (a motor from the component library attaches to any joint), and each
-//! link's origin in the world is an output (`<link>_x`, `_y`, `_z`). With `joint_limits`, each
+//! link's pose in the world is an output, the root's too: its origin (`<link>_x`, `_y`, `_z`)
+//! and its rotation (`<link>_r11` to `<link>_r33`, entry `(i, j)` of the matrix whose columns
+//! are the link's axes in the world, Pinocchio's `oMf[link].rotation`). With `joint_limits`, each
 //! limited joint's `<limit lower upper>` is two unilateral constraints, `<joint>_lower` and
 //! `<joint>_upper`, with restitution 0: hard stops the joint rests against.
 
@@ -99,7 +101,9 @@ impl Writer<'_, '_, '_> {
         let (links, joints) = names;
         let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
         let identity = read::rpy([0.0; 3]).map(|row| row.map(Atom::Num));
-        let mut frames = vec![Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() }];
+        let root = Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() };
+        self.pose_outputs(&links[0], &root);
+        let mut frames = vec![root];
         let mut kinetic = Vec::new();
         let mut potential = Vec::new();
         for (k, joint) in robot.joints.iter().enumerate() {
@@ -174,9 +178,6 @@ impl Writer<'_, '_, '_> {
                 }
             }
             let origin = self.bind3(&format!("{link}_o"), origin);
-            for (axis, value) in XYZ.iter().zip(&origin) {
-                self.output(format!("{link}_{axis}"), &Poly::atom(value).render());
-            }
             // The link's energies.
             let body = &robot.links[k + 1];
             if body.mass > 0.0 || body.inertia.iter().flatten().any(|x| *x != 0.0) {
@@ -203,7 +204,9 @@ impl Writer<'_, '_, '_> {
                     potential.push(self.bind(format!("{link}_potential"), z.scaled(body.mass * GRAVITY)));
                 }
             }
-            frames.push(Frame { omega, velocity, rotation, origin });
+            let frame = Frame { omega, velocity, rotation, origin };
+            self.pose_outputs(link, &frame);
+            frames.push(frame);
         }
         let mut lagrangian = Poly::default();
         kinetic.iter().for_each(|t| lagrangian.add(&Poly::atom(t), 1.0));
@@ -338,6 +341,19 @@ impl Writer<'_, '_, '_> {
         let expr = self.expr(text);
         self.model.defines.push(DefineDecl { name: Ident::new(&name, self.span), expr });
         Atom::Name(name)
+    }
+
+    /// The link's origin in the world, `<link>_x`, `_y`, `_z`, and its rotation, `<link>_r11`
+    /// to `_r33`: entry `(i, j)` of the matrix whose columns are the link's axes in the world.
+    fn pose_outputs(&mut self, link: &str, frame: &Frame) {
+        for (axis, value) in XYZ.iter().zip(&frame.origin) {
+            self.output(format!("{link}_{axis}"), &Poly::atom(value).render());
+        }
+        for (i, row) in frame.rotation.iter().enumerate() {
+            for (j, value) in row.iter().enumerate() {
+                self.output(format!("{link}_r{}{}", i + 1, j + 1), &Poly::atom(value).render());
+            }
+        }
     }
 
     fn output(&mut self, name: String, text: &str) {
