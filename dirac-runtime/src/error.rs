@@ -197,7 +197,7 @@ pub enum SimError {
     },
     /// A change of the model while it runs that moves the momenta away from the velocities.
     #[error(
-        "the change of the model at t = {t} breaks the {equation} by {residual:e}: a change while the \
+        "after the change of the model at t = {t}, {equation}, by {residual:e}: a change while the \
          model runs must keep p = ∂L/∂v (inputs in forces or in the potential do); after a change of the \
          mass matrix, start again from a consistent state"
     )]

@@ -83,13 +83,21 @@ where
 
     /// The checks of a restart at the state reached after the model may have changed: the
     /// change moved no constraint off the state, the parameters are finite and the momenta
-    /// still match the velocities (`p = ∂L/∂v`), since a restart carries both over.
-    pub fn resume(&mut self, model: &M, t: f64, state: &State<M>, tolerance: f64) -> Result<(), SimError> {
+    /// still match the velocities (`p = ∂L/∂v`) to `tolerance`, or to `slack(i, p)` for
+    /// momentum `i` of value `p` (the accuracy its integrator solved the map to), since a
+    /// restart carries both over.
+    pub fn resume(
+        &mut self,
+        model: &M,
+        t: f64,
+        state: &State<M>,
+        (tolerance, slack): (f64, impl Fn(usize, f64) -> f64),
+    ) -> Result<(), SimError> {
         if let Some(before) = self.changed_from.take() {
             check_constraints_kept(model, t, state, before, &mut self.room)?;
         }
         check_parameters(model)?;
-        match violated_legendre_map_in(model, t, state, tolerance, &mut self.room) {
+        match violated_legendre_map_in(model, t, state, (tolerance, slack), &mut self.room) {
             Some((equation, residual)) => Err(SimError::MomentumChanged { t, equation, residual }),
             None => Ok(()),
         }

@@ -60,7 +60,12 @@ where
         if self.t >= t_end {
             return Ok(());
         }
-        self.restarts.resume(self.model.get(), self.t, &self.state, self.options.rtol.max(1e-8))?;
+        self.restarts.resume(
+            self.model.get(),
+            self.t,
+            &self.state,
+            (self.options.rtol.max(1e-8), |_, _| 0.0),
+        )?;
         self.resume(t_end)
     }
 

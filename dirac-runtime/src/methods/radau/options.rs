@@ -282,6 +282,13 @@ where
         self.absolute(slot, group) + self.rtol * y.abs()
     }
 
+    /// The error weight of momentum `i` of value `p`: the accuracy to which the Newton
+    /// iteration solves its Legendre map `p = ∂L/∂v`.
+    pub fn momentum_weight(&self, i: usize, p: f64) -> f64 {
+        let slot = Layout::new(self.sizes.typed::<M>()).p + i;
+        self.absolute(slot, 2) + self.rtol * p.abs()
+    }
+
     /// The error weights at state `y` for a step `h`: `atol + rtol |y|` (the absolute
     /// tolerance capped as the type's documentation says), times `span / h` for the
     /// multipliers, index-2 variables whose error estimate is one order worse.

@@ -482,7 +482,7 @@ where
         if self.t >= t_end {
             return Ok(());
         }
-        self.restarts.resume(self.model.get(), self.t, &self.state, 1e-8)?;
+        self.restarts.resume(self.model.get(), self.t, &self.state, (1e-8, |_, _| 0.0))?;
         self.begin(self.t, t_end)
     }
 

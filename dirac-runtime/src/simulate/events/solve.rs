@@ -148,6 +148,16 @@ where
         events.begin(self.model(), t0, self.state())?;
         recorder.record_initial(self.model(), t0, self.state());
         let mut after = state.clone();
+        // A timed switch at zero at the start (a pulse's first edge at `t0`): the run goes on
+        // from the first time after it, on its other side, from the consistent state nearest.
+        if let Some(t) = events.start_across(self)? {
+            after.clone_from(self.state());
+            if self.start(t, &after, t_end).is_err() {
+                after = project(self.model(), t, &after.q, &after.v, Consistency::default())?;
+                self.start(t, &after, t_end)?;
+            }
+            events.resume(self.model(), t, &after)?;
+        }
         let mut reopened = Vec::new();
         while !self.finished() {
             events.bound_step(self)?;

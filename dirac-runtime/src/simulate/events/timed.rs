@@ -75,6 +75,31 @@ where
         Ok(())
     }
 
+    /// At the start, at `t`: a timed switch that is zero there (a pulse train's first edge at
+    /// `t = start`) may hold the model on one side at `t` and on the other just after it. It
+    /// takes the sign it has at the first time it is not zero, if that comes within the run's
+    /// resolution in time (the integrators' smallest step, `16 ε max(|t|, span / 10)`), and
+    /// that time is returned, the latest over such switches: the run goes on from there, on
+    /// the side the switch then has. `None` if no timed switch is zero at `t`.
+    pub(crate) fn start_across<I: Integrator<M>>(&mut self, integrator: &I) -> Result<Option<f64>, SimError> {
+        let t = integrator.t();
+        let resolution = 16.0 * f64::EPSILON * t.abs().max(0.1 * (integrator.end() - t).abs());
+        let mut latest = None;
+        for k in 0..self.functions.len() {
+            if !self.timed_of[k] || self.signs[k] != 0.0 {
+                continue;
+            }
+            let off = |g: f64| g != 0.0;
+            if !off(self.timed_value(k, t + resolution, integrator)?) {
+                continue;
+            }
+            let across = self.first_off(k, (t, t + resolution), integrator, off)?;
+            self.signs[k] = self.timed_value(k, across, integrator)?.signum();
+            latest = Some(latest.map_or(across, |l: f64| l.max(across)));
+        }
+        Ok(latest)
+    }
+
     /// The timed switch the integrator was asked to end its step at, if the step it just took
     /// ended there: its index and the first time on its other side, where it is reported.
     pub(crate) fn timed_crossing_at(&mut self, t: f64) -> Option<(usize, f64)> {
