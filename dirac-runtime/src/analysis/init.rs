@@ -498,13 +498,20 @@ pub(crate) fn free_matrix<M: LagrangeDirac>(
 where
     DefaultAllocator: Storage<M>,
 {
+    free.transpose() * balance_dv(model, t, (q, v)) * free
+}
+
+/// `D = L_qv − L_vq + F_v`, dense: how the momentum balance moves with the velocities.
+fn balance_dv<M: LagrangeDirac>(model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) -> DMatrix<f64>
+where
+    DefaultAllocator: Storage<M>,
+{
     let (n, shape) = (model.sizes().nq, model.shape());
     let (mut lvq, mut fv) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_qq(&shape));
     model.l_vq(t, q, v, &mut lvq);
     model.force_dv(t, q, v, &mut fv);
     let lvq = dense_qq::<M, M::Algebra>(&lvq, n);
-    let d = lvq.transpose() - &lvq + dense_qq::<M, M::Algebra>(&fv, n);
-    free.transpose() * d * free
+    lvq.transpose() - &lvq + dense_qq::<M, M::Algebra>(&fv, n)
 }
 
 /// Solves for the velocities along the free directions `N` of `ker L_vv ∩ ker A` the momentum
@@ -539,7 +546,8 @@ where
     for _ in 0..options.max_iterations {
         // The matrix first: where it is singular, some velocity is not determined, whatever
         // the balance's residual.
-        let j = free_matrix(model, t, (q, v), &free);
+        let d = balance_dv(model, t, (q, v));
+        let j = free.transpose() * &d * &free;
         let Some(svd) = svd(&j) else {
             return Err(SimError::NonFinite {
                 t,
@@ -555,12 +563,14 @@ where
         let (top, _) = rates(model, t, q, v)?;
         let top = DVector::from_vec(top);
         let r = free.transpose() * &top;
-        // The size of the terms each projected balance is made of (the forces may cancel
-        // there), for a test relative to them: `|N|ᵀ (|balance| + |F|)`.
+        // The size of the terms each projected balance is made of (the forces cancel there:
+        // a source's current against its resistor's), for a test relative to them:
+        // `|N|ᵀ (|balance| + |F| + |D| |v|)`, the last the size of each velocity's force.
         let mut force = model.sizes().zeros_q::<M>();
         model.force(t, q, v, &mut force);
-        let floor = floor_of(top.amax().max(force.amax()));
-        let terms = DVector::from_fn(n, |i, _| top[i].abs() + force[i].abs() + floor);
+        let flows = d.abs() * DVector::from_iterator(n, v.iter().map(|x| x.abs()));
+        let floor = floor_of(top.amax().max(force.amax()).max(flows.amax()));
+        let terms = DVector::from_fn(n, |i, _| top[i].abs() + force[i].abs() + flows[i] + floor);
         let scale = free.abs().transpose() * terms;
         residual = r.amax();
         if r.iter().zip(scale.iter()).all(|(r, s)| r.abs() <= 1e2 * options.tolerance * s) {
