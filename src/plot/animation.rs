@@ -208,7 +208,13 @@ impl Animation {
         for &(i, j) in &self.links {
             let (p, q) = (&self.points[i], &self.points[j]);
             let ends = [("x1", &p.x), ("y1", &p.y), ("x2", &q.x), ("y2", &q.y)];
-            out.push_str("<line stroke=\"#333\" stroke-width=\"3\" stroke-linecap=\"round\" vector-effect=\"non-scaling-stroke\"");
+            // Widths in the model's units, the stage's scale undone: 3 px on the picture, in
+            // every renderer (not only those that know `vector-effect`).
+            let _ = write!(
+                out,
+                r##"<line stroke="#333" stroke-width="{:e}" stroke-linecap="round""##,
+                3.0 / scale
+            );
             for (name, series) in ends {
                 let _ = write!(out, r#" {name}="{:e}""#, first_finite(series));
             }
@@ -223,9 +229,10 @@ impl Animation {
             let fixed = p.x.iter().all(|&x| x == p.x[0]) && p.y.iter().all(|&y| y == p.y[0]);
             let _ = write!(
                 out,
-                r##"<circle id="point-{id}" r="{r:e}" cx="{cx:e}" cy="{cy:e}" fill="{fill}" stroke="#123" vector-effect="non-scaling-stroke"><title>{id}</title>"##,
+                r##"<circle id="point-{id}" r="{r:e}" cx="{cx:e}" cy="{cy:e}" fill="{fill}" stroke="#123" stroke-width="{stroke:e}"><title>{id}</title>"##,
                 id = escape(&p.name),
                 r = 7.0 / scale,
+                stroke = 1.0 / scale,
                 cx = first_finite(&p.x),
                 cy = first_finite(&p.y),
                 fill = if fixed { "#888" } else { "#1f77b4" },

@@ -45,6 +45,9 @@ pub struct Figure {
     markers: Vec<Line>,
     log_y: bool,
     log_x: bool,
+    /// Further panels on the same horizontal axis, drawn below this one: quantities of other
+    /// units (amperes under volts), a Bode plot's phase under its gain.
+    below: Vec<Figure>,
 }
 
 #[derive(Clone, Debug)]
@@ -111,17 +114,78 @@ impl Figure {
             markers: Vec::new(),
             log_y: false,
             log_x: false,
+            below: Vec::new(),
         }
     }
 
     /// The columns `columns` of `solution` (by the names of [`Solution::names`]: a coordinate
     /// `x`, a velocity `v`, `energy`, `out(name)`, `in(name)`, …) against time, its events and
-    /// impacts marked on the first. Titled and labelled by the names.
+    /// impacts marked on the first. Titled by the names, each axis labelled by its columns and
+    /// the unit the model declares for them ([`Solution::unit`]); columns of different units
+    /// go on panels of their own, one under the other (volts above amperes), in the order of
+    /// their first column.
     pub fn of<M: LagrangeDirac, S>(solution: &Solution<M, S>, columns: &[&str]) -> Result<Self, PlotError>
     where
         DefaultAllocator: Storage<M>,
     {
-        Figure::new(columns.join(", ")).y_label(columns.join(", ")).solution(solution, columns, "")
+        // The columns by unit, in the order each unit first appears.
+        let mut groups: Vec<(Option<&str>, Vec<&str>)> = Vec::new();
+        for &name in columns {
+            column(solution, name)?;
+            let unit = solution.unit(name);
+            match groups.iter_mut().find(|(u, _)| *u == unit) {
+                Some((_, names)) => names.push(name),
+                None => groups.push((unit, vec![name])),
+            }
+        }
+        let label = |(unit, names): &(Option<&str>, Vec<&str>)| match unit {
+            Some(unit) => format!("{} [{unit}]", names.join(", ")),
+            None => names.join(", "),
+        };
+        let mut groups = groups.into_iter();
+        let Some(first) = groups.next() else { return Ok(Figure::new("")) };
+        let mut figure =
+            Figure::new(columns.join(", ")).y_label(label(&first)).solution(solution, &first.1, "")?;
+        for group in groups {
+            let panel = Figure::new("").y_label(label(&group)).solution(solution, &group.1, "")?;
+            figure.below.push(panel);
+        }
+        Ok(figure)
+    }
+
+    /// A Bode plot of the channel from input `input` to output `output` of a frequency
+    /// response ([`frequency_response`](crate::control::frequency_response)): the gain in
+    /// decibels above, the unwrapped phase in degrees below, against the angular frequency on
+    /// a log scale.
+    ///
+    /// ```
+    /// use dirac::control::frequency_response;
+    /// use dirac::nalgebra::DMatrix;
+    /// use dirac::plot::Figure;
+    ///
+    /// // A first-order low-pass, 1 / (1 + s): −3 dB and −45° at ω = 1.
+    /// let (a, b, c, d) = (DMatrix::from_element(1, 1, -1.0), DMatrix::from_element(1, 1, 1.0),
+    ///     DMatrix::from_element(1, 1, 1.0), DMatrix::zeros(1, 1));
+    /// let frequencies: Vec<f64> = (0..=40).map(|k| 10f64.powf(-2.0 + 0.1 * k as f64)).collect();
+    /// let response = frequency_response(&a, &b, &c, &d, &frequencies)?;
+    /// let svg = Figure::bode(&response, 0, 0, "a low-pass").svg();
+    /// assert!(svg.contains("gain [dB]") && svg.contains("phase [°]") && svg.contains("ω [rad/s]"));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn bode(
+        response: &dirac_runtime::control::FrequencyResponse,
+        output: usize,
+        input: usize,
+        title: impl Into<String>,
+    ) -> Self {
+        let w = &response.frequencies;
+        let line = |label: &str, y: Vec<f64>| Line { name: label.to_string(), x: w.clone(), y };
+        let mut gain = Figure::new(title).x_label("ω [rad/s]").y_label("gain [dB]").log_x();
+        gain.lines.push(line("|G(jω)|", response.magnitude_db(output, input)));
+        let mut phase = Figure::new("").x_label("ω [rad/s]").y_label("phase [°]").log_x();
+        phase.lines.push(line("arg G(jω)", response.phase_degrees(output, input)));
+        gain.below.push(phase);
+        gain
     }
 
     /// A phase portrait: column `y` of `solution` against column `x`.
@@ -241,13 +305,52 @@ impl Figure {
         Ok(figure)
     }
 
-    /// The names of the lines and markers, in the legend's order.
-    pub fn legend(&self) -> Vec<&str> {
-        self.lines.iter().chain(&self.markers).map(|l| l.name.as_str()).collect()
+    /// This figure with `panel` drawn below it, on the same horizontal axis (a quantity of
+    /// another unit).
+    pub fn above(mut self, panel: Figure) -> Self {
+        self.below.push(panel);
+        self
     }
 
-    /// The figure as an SVG document.
+    /// The names of the lines and markers, in the legend's order, panel after panel.
+    pub fn legend(&self) -> Vec<&str> {
+        let own = self.lines.iter().chain(&self.markers).map(|l| l.name.as_str());
+        own.chain(self.below.iter().flat_map(Figure::legend)).collect()
+    }
+
+    /// The vertical axes' labels, panel after panel.
+    pub fn y_labels(&self) -> Vec<&str> {
+        std::iter::once(self.y_label.as_str()).chain(self.below.iter().flat_map(Figure::y_labels)).collect()
+    }
+
+    /// The figure as an SVG document: its panels one under the other.
     pub fn svg(&self) -> String {
+        if self.below.is_empty() {
+            return self.panel_svg();
+        }
+        let panels: Vec<String> =
+            std::iter::once(self.panel_svg()).chain(self.below.iter().map(Figure::svg)).collect();
+        let height = |svg: &str| {
+            let after = svg.split("height=\"").nth(1).unwrap_or("0");
+            after.split('"').next().and_then(|h| h.parse::<f64>().ok()).unwrap_or(0.0)
+        };
+        let width =
+            panels[0].split("width=\"").nth(1).and_then(|w| w.split('"').next()).unwrap_or("0").to_string();
+        let total: f64 = panels.iter().map(|p| height(p)).sum();
+        let mut out = format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{total}\" font-family=\"sans-serif\" font-size=\"13\">\n"
+        );
+        let mut top = 0.0;
+        for panel in &panels {
+            out.push_str(&format!("<g transform=\"translate(0 {top})\">\n{panel}</g>\n"));
+            top += height(panel);
+        }
+        out.push_str("</svg>\n");
+        out
+    }
+
+    /// This panel alone as an SVG document.
+    fn panel_svg(&self) -> String {
         fn series(lines: &[Line]) -> Vec<Series<'_>> {
             lines.iter().map(|l| Series { name: &l.name, x: &l.x, y: &l.y }).collect()
         }

@@ -364,3 +364,99 @@ fn a_work_precision_sweep_reaches_smaller_errors_at_tighter_tolerances_and_is_dr
     // Decade labels on both axes: the errors span 1e-4 down past 1e-8.
     assert!(svg.contains(">1e-8<") || svg.contains(">1e-9<"), "{svg}");
 }
+
+/// An RC circuit of library parts, charged from rest by a 1 V step.
+#[derive(Interconnection)]
+#[dirac(connect(source.p, r.p), connect(r.n, c.p), connect(c.n, ground.p), connect(source.n, ground.p))]
+struct ChargedRc {
+    source: dirac::components::electrical::StepVoltage,
+    r: dirac::components::electrical::Resistor,
+    c: dirac::components::electrical::Capacitor,
+    ground: dirac::components::electrical::Ground,
+}
+
+/// Axes carry the units the parts declare, and volts and amperes go on panels of their own,
+/// the volts (asked for first) above.
+#[test]
+fn a_figure_labels_its_axes_with_the_parts_units_and_gives_each_unit_its_panel() {
+    use dirac::components::electrical::{Capacitor, Ground, Resistor, StepVoltage};
+    let rc = ChargedRc {
+        source: StepVoltage { offset: 0.0, height: 1.0, start: 0.0 },
+        r: Resistor { r: 1.0 },
+        c: Capacitor { c: 1.0 },
+        ground: Ground {},
+    };
+    let zero = VecQ::<ChargedRc>::zeros();
+    let start = consistent_state(&rc, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+    let run = Radau::new(&rc, RadauOptions::default())
+        .and_then(|mut radau| radau.solve(0.0, &start, 3.0, &Sampling::Every(0.1)))
+        .expect("charges");
+    assert_eq!(
+        (run.unit("t"), run.unit("out(c.v)"), run.unit("out(r.i)")),
+        (Some("s"), Some("V"), Some("A"))
+    );
+    assert_eq!(run.unit("c.p"), Some("Wb"));
+    assert_eq!(run.unit("energy"), None, "no unit the model declares");
+    let figure = Figure::of(&run, &["out(c.v)", "out(r.i)", "out(source.v)"]).expect("known columns");
+    assert_eq!(figure.y_labels(), ["out(c.v), out(source.v) [V]", "out(r.i) [A]"]);
+    assert_eq!(figure.legend(), ["out(c.v)", "out(source.v)", "out(r.i)"]);
+    let svg = figure.svg();
+    // Two panels, one under the other, each a chart of its own.
+    let panels = elements(&svg, "g");
+    assert_eq!(panels.len(), 2, "{panels:?}");
+    assert_eq!(attribute(panels[1], "transform"), Some("translate(0 450)"));
+    assert!(svg.contains(">out(r.i) [A]<") && svg.contains(">out(c.v), out(source.v) [V]<"));
+    let outer = elements(&svg, "svg")[0];
+    assert_eq!(attribute(outer, "height"), Some("900"));
+}
+
+/// A Bode figure of a first-order low-pass, `1/(1 + s)`: the gain and the phase, each on a
+/// panel, against the frequency on a log scale.
+#[test]
+fn a_bode_figure_has_the_gain_above_the_phase() {
+    use dirac::control::frequency_response;
+    use dirac::nalgebra::DMatrix;
+    let one = |x: f64| DMatrix::from_element(1, 1, x);
+    let frequencies: Vec<f64> = (0..=40).map(|k| 10f64.powf(-2.0 + 0.1 * f64::from(k))).collect();
+    let response =
+        frequency_response(&one(-1.0), &one(1.0), &one(1.0), &one(0.0), &frequencies).expect("no pole");
+    // The response itself at ω = 1 (k = 20): −3.01 dB and −45°, from 1/(1 + j).
+    let (gain, phase) = (response.magnitude_db(0, 0)[20], response.phase_degrees(0, 0)[20]);
+    assert!(
+        (gain + 10.0 * 2f64.log10()).abs() < 1e-12 && (phase + 45.0).abs() < 1e-12,
+        "{gain} dB, {phase}°"
+    );
+    let figure = Figure::bode(&response, 0, 0, "a low-pass");
+    assert_eq!(figure.y_labels(), ["gain [dB]", "phase [°]"]);
+    let svg = figure.svg();
+    assert!(svg.contains(">a low-pass<") && svg.contains(">ω [rad/s]<"));
+    // Decade ticks on the frequency axis: 1e-2 to 1e2.
+    assert!(svg.contains(">1e-2<") && svg.contains(">1e2<"));
+}
+
+/// The animated SVG draws its lines and dots with widths in the model's units, the stage's
+/// scale undone (3 px and 1 px on the picture), not with `vector-effect`, which renderers
+/// other than browsers ignore and draw a stroke scaled with the stage.
+#[test]
+fn an_animated_svg_draws_its_strokes_without_vector_effect() {
+    let times = [0.0, 1.0];
+    let svg = Animation::new("a link", &times)
+        .expect("times")
+        .point("a", &[0.0, 0.0], &[0.0, 0.0])
+        .and_then(|a| a.point("b", &[2.0, 1.0], &[0.0, 1.0]))
+        .and_then(|a| a.link("a", "b"))
+        .expect("an animation")
+        .svg();
+    assert!(!svg.contains("vector-effect"), "{svg}");
+    let stage = elements(&svg, "g").into_iter().find(|g| g.contains("id=\"stage\"")).expect("the stage");
+    let matrix = attribute(stage, "transform").expect("a transform");
+    let scale: f64 =
+        matrix.trim_start_matches("matrix(").split(' ').next().and_then(|s| s.parse().ok()).expect("a scale");
+    let line = elements(&svg, "line")[0];
+    let width: f64 = attribute(line, "stroke-width").and_then(|w| w.parse().ok()).expect("a width");
+    assert!((width * scale - 3.0).abs() < 1e-12, "{width} × {scale}");
+    for circle in elements(&svg, "circle") {
+        let stroke: f64 = attribute(circle, "stroke-width").and_then(|w| w.parse().ok()).expect("a width");
+        assert!((stroke * scale - 1.0).abs() < 1e-12, "{stroke} × {scale}");
+    }
+}

@@ -88,6 +88,9 @@ pub(crate) struct Columns {
     /// The outputs that are the power a subsystem's dissipation takes (named
     /// `dissipated_power`, at any depth): their sum is the model's dissipated power.
     pub dissipation: Vec<usize>,
+    /// Each column's unit, where the model declares one (`unit(x) = "m"`): time in seconds,
+    /// coordinates, velocities, outputs and inputs as declared.
+    pub units: Arc<[Option<&'static str>]>,
 }
 
 impl Columns {
@@ -137,24 +140,34 @@ impl Columns {
     where
         DefaultAllocator: Storage<M>,
     {
-        let ports = model.ports().into_iter().map(|c| c.index()).collect();
+        let ports: Vec<usize> = model.ports().into_iter().map(|c| c.index()).collect();
         let outputs = model.output_names();
         let dissipation = (outputs.iter().enumerate())
             .filter(|(_, o)| o.rsplit('.').next() == Some(DISSIPATED_POWER))
             .map(|(k, _)| k)
             .collect();
         let inputs = model.input_names();
+        let coordinates = model.coordinate_names();
+        let velocities = model.velocity_names();
+        let unit = |name: &String| model.unit_of(name);
+        let mut units = vec![Some("s")];
+        units.extend(coordinates.iter().map(unit));
+        units.extend(velocities.iter().map(unit));
+        let unknown = coordinates.len() + model.constraint_names().len() + Self::DERIVED.len() + ports.len();
+        units.extend(std::iter::repeat_n(None, unknown));
+        units.extend(outputs.iter().map(unit));
+        units.extend(inputs.iter().map(unit));
         let columns = Columns {
             state: Layout::new(model.sizes()),
             ports,
             outputs: outputs.len(),
             inputs: inputs.len(),
             dissipation,
+            units: units.into(),
         };
-        let coordinates = model.coordinate_names();
         let mut names = vec!["t".to_owned()];
         names.extend(coordinates.iter().cloned());
-        names.extend(model.velocity_names());
+        names.extend(velocities);
         names.extend(coordinates.iter().map(|c| format!("p({c})")));
         names.extend(model.constraint_names().iter().map(|c| format!("lambda({c})")));
         names.extend(Self::DERIVED.iter().map(|s| (*s).to_owned()));
@@ -484,6 +497,15 @@ where
     pub fn column(&self, name: &str) -> Option<&[f64]> {
         let i = self.names.iter().position(|n| n == name)?;
         Some(&self.columns[i])
+    }
+
+    /// The unit of the column `name`, where the model declares it (`unit(x) = "m"`; the parts
+    /// of `dirac::components` declare theirs): `s` for `t`, a coordinate's, a velocity's, an
+    /// output's (`out(name)`) and an input's (`in(name)`) as declared. What figures label
+    /// their axes with.
+    pub fn unit(&self, name: &str) -> Option<&'static str> {
+        let i = self.names.iter().position(|n| n == name)?;
+        self.layout.units.get(i).copied().flatten()
     }
 
     /// Sample `i` as a state, if there is such a sample.
