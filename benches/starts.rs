@@ -3,7 +3,10 @@
 //! no node has capacitance, so every node voltage is a velocity that only the resistors fix)
 //! and the LC ladder of the same size, from netlists, for N = 10², 10³, 10⁴ and 10⁵ sections.
 //! The start must cost like a step: linear in N. Each time is the median of 5 starts (of 5
-//! steps of 1e-6 s after a start, for the step), alternating the two ladders.
+//! steps of 1e-6 s after a start, for the step), alternating the two ladders. The circuit's
+//! DC operating point (where a `.tran` without `uic` starts, computed when the netlist becomes
+//! a circuit) is timed with the reading of the netlist and the building of its network: the
+//! column "RL circuit", against the same netlist with `uic` (no operating point).
 //!
 //! Run: `cargo bench -p dirac-benches --bench starts`.
 
@@ -21,6 +24,13 @@ fn rl_ladder(n: usize) -> String {
         text += &format!("R{i} n{} m{i} 1\nL{i} m{i} n{i} 1m\nRS{i} n{i} 0 100\n", i - 1);
     }
     text + ".tran 1u 5u\n.end\n"
+}
+
+/// Seconds to read `text` and build its circuit.
+fn circuit_of(text: &str) -> (spice::Circuit, f64) {
+    let clock = Instant::now();
+    let circuit = spice::parse(text).expect("reads").circuit().expect("a circuit");
+    (circuit, clock.elapsed().as_secs_f64())
 }
 
 /// The LC ladder of `n` sections behind a 1 V source, for comparison: every node has
@@ -54,11 +64,21 @@ fn start_and_step(circuit: &spice::Circuit) -> (f64, f64) {
 }
 
 fn main() {
-    println!("| sections N | unknowns (RL) | RL start | RL start / N | RL step | LC start | LC step |");
-    println!("|---:|---:|---:|---:|---:|---:|---:|");
+    println!(
+        "| sections N | unknowns (RL) | RL circuit (op) | RL circuit (uic) | RL start | RL start / N | RL step | LC start | LC step |"
+    );
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for n in [100, 1_000, 10_000, 100_000] {
-        let rl = spice::parse(&rl_ladder(n)).expect("reads").circuit().expect("a circuit");
-        let lc = spice::parse(&lc_ladder(n)).expect("reads").circuit().expect("a circuit");
+        let (with_op, from_rest) = (rl_ladder(n), rl_ladder(n).replace(".tran 1u 5u", ".tran 1u 5u uic"));
+        let (mut op_builds, mut uic_builds) = (Vec::new(), Vec::new());
+        for _ in 0..5 {
+            op_builds.push(circuit_of(&with_op).1);
+            uic_builds.push(circuit_of(&from_rest).1);
+        }
+        // The start and the steps from rest (`uic`): from the operating point, where both
+        // ladders rest, the steps would be as long as the run.
+        let rl = circuit_of(&from_rest).0;
+        let lc = circuit_of(&lc_ladder(n).replace(".tran 1u 5u", ".tran 1u 5u uic")).0;
         let (mut rl_runs, mut lc_runs) = (Vec::new(), Vec::new());
         for _ in 0..5 {
             rl_runs.push(start_and_step(&rl));
@@ -68,8 +88,10 @@ fn main() {
         let steps = |runs: &[(f64, f64)]| median(runs.iter().map(|r| r.1).collect());
         let sizes = rl.network.sizes();
         println!(
-            "| {n} | {} | {:.4} s | {:.2e} s | {:.4} s | {:.4} s | {:.4} s |",
+            "| {n} | {} | {:.4} s | {:.4} s | {:.4} s | {:.2e} s | {:.4} s | {:.4} s | {:.4} s |",
             sizes.nq + sizes.nc,
+            median(op_builds),
+            median(uic_builds),
             starts(&rl_runs),
             starts(&rl_runs) / n as f64,
             steps(&rl_runs),

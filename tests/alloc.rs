@@ -1296,7 +1296,7 @@ fn steps_of_a_netlist_with_joined_nodes_do_not_allocate() {
     for k in 1..=n {
         text += &format!(" v(n{k})={:e}", (-((k as f64 - 1500.0) / 5.0).powi(2)).exp());
     }
-    text += "\n.tran 1 10\n.end\n";
+    text += "\n.tran 1 10 uic\n.end\n";
     let circuit = dirac::spice::parse(&text).expect("reads").circuit().expect("a circuit");
     assert_eq!(circuit.network.sizes().nq, n);
     let start = circuit.start().expect("consistent");

@@ -1,6 +1,8 @@
 //! Simulates a SPICE netlist's `.tran` and writes the node voltages and voltage-source
 //! currents (those `.save` or `.print tran` name, else all) as CSV and as an SVG chart, with a
-//! progress line on runs longer than a second.
+//! progress line on runs longer than a second. The run starts from the DC operating point
+//! (unless `.tran` has `uic`); a netlist with `.op` and no `.tran` has its operating point
+//! printed, one `name = value` a line.
 //!
 //! Usage: `dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]` (by default
 //! the tolerance is the netlist's `.options reltol`, else 1e-6, and the files go next to the
@@ -57,6 +59,13 @@ fn run() -> Result<(), String> {
         sizes.nq + sizes.nc,
         clock.elapsed().as_secs_f64()
     );
+    if circuit.tran().is_none() && netlist.asks_for_op() {
+        // `.op` alone: the operating point, one quantity a line.
+        for (name, value) in circuit.at_start().map_err(error)? {
+            println!("{name} = {value:.15e}");
+        }
+        return Ok(());
+    }
     let clock = Instant::now();
     let stop = circuit.tran().map_or(0.0, |t| t.stop);
     // A progress line once a second: rewritten in place on a terminal, one per line otherwise.

@@ -42,9 +42,11 @@ pub struct Circuit {
     corners: Vec<f64>,
 }
 
-/// The thermal voltage `k T / q` at SPICE's default temperature, 27 °C (CODATA 2018's exact
-/// Boltzmann constant and elementary charge).
-const THERMAL_VOLTAGE: f64 = 1.380_649e-23 * 300.15 / 1.602_176_634e-19;
+/// The thermal voltage `k T / q` at SPICE's default temperature, 27 °C, with the constants
+/// ngspice uses (CODATA 2014's Boltzmann constant and elementary charge, `CONSTboltz` and
+/// `CHARGE` in its `const.h`): a diode's current is then ngspice's to round-off (CODATA 2018's
+/// exact values move `k T / q` by 3.4e-7 of itself).
+const THERMAL_VOLTAGE: f64 = 1.380_648_52e-23 * 300.15 / 1.602_176_620_8e-19;
 
 /// Where a recorded column is read.
 #[derive(Clone, Copy, Debug)]
@@ -82,9 +84,15 @@ impl Waveforms {
         Some(&self.columns[k])
     }
 
-    /// Writes the waveforms as an SVG chart against time: every column if there are at most
-    /// twelve, else the first twelve (the title says so).
+    /// Writes the waveforms as an SVG figure against time: every column if there are at most
+    /// twelve, else the first twelve (the title says so); node voltages on a panel in volts,
+    /// source currents on one in amperes below it.
     pub fn write_svg(&self, title: &str, path: &std::path::Path) -> io::Result<()> {
+        self.figure(title).map_err(io::Error::other)?.write(path)
+    }
+
+    /// The figure [`write_svg`](Self::write_svg) writes.
+    pub fn figure(&self, title: &str) -> Result<crate::plot::Figure, crate::plot::PlotError> {
         const MOST: usize = 12;
         let shown = self.names.len().min(MOST);
         let title = if shown < self.names.len() {
@@ -92,24 +100,18 @@ impl Waveforms {
         } else {
             title.to_string()
         };
-        let voltages = self.names[..shown].iter().any(|n| n.starts_with("v("));
-        let currents = self.names[..shown].iter().any(|n| n.starts_with("i("));
-        let y_label = match (voltages, currents) {
-            (true, true) => "v (V), i (A)",
-            (false, true) => "i (A)",
-            _ => "v (V)",
+        let panel = |figure: crate::plot::Figure, prefix: &str| {
+            (0..shown)
+                .filter(|&k| self.names[k].starts_with(prefix))
+                .try_fold(figure, |figure, k| figure.line(&self.names[k], &self.times, &self.columns[k]))
         };
-        let chart = crate::plot::Chart {
-            title: &title,
-            x_label: "time (s)",
-            y_label,
-            series: (0..shown)
-                .map(|k| crate::plot::Series { name: &self.names[k], x: &self.times, y: &self.columns[k] })
-                .collect(),
-            log_y: false,
-            log_x: false,
-        };
-        chart.write(path)
+        let volts = panel(crate::plot::Figure::new(title.as_str()).y_label("v [V]"), "v(")?;
+        let amperes = panel(crate::plot::Figure::new("").y_label("i [A]"), "i(")?;
+        Ok(match (volts.legend().is_empty(), amperes.legend().is_empty()) {
+            (false, false) => volts.above(amperes),
+            (true, false) => amperes.title(title),
+            _ => volts,
+        })
     }
 
     /// Writes the waveforms as CSV: a header `t,v(a),…`, then a row per sample, the first at
@@ -136,10 +138,10 @@ impl Waveforms {
 }
 
 /// Union-find over node indices.
-struct Sets(Vec<usize>);
+pub(super) struct Sets(pub(super) Vec<usize>);
 
 impl Sets {
-    fn find(&mut self, a: usize) -> usize {
+    pub(super) fn find(&mut self, a: usize) -> usize {
         let mut r = a;
         while self.0[r] != r {
             self.0[r] = self.0[self.0[r]];
@@ -149,7 +151,7 @@ impl Sets {
     }
 
     /// Joins the sets of `a` and `b`; false if they were one already.
-    fn join(&mut self, a: usize, b: usize) -> bool {
+    pub(super) fn join(&mut self, a: usize, b: usize) -> bool {
         let (ra, rb) = (self.find(a), self.find(b));
         self.0[ra] = rb;
         ra != rb
@@ -306,7 +308,12 @@ impl Netlist {
         let rate = |e: &Element| (format!("i({})", e.name), CurrentAt::Rate(format!("{}.s", e.name)));
         let tran = self.tran().map(|t| (t.step, t.stop));
         let mut corners = Vec::new();
-        for (e, n) in self.elements.iter().zip(&ids) {
+        // Each source's value at `t = 0`, where the operating point is computed.
+        let mut values = vec![0.0; self.elements.len()];
+        for (k, (e, n)) in self.elements.iter().zip(&ids).enumerate() {
+            if let Kind::Voltage(x) | Kind::Current(x) = e.kind {
+                values[k] = x;
+            }
             let added = match &e.kind {
                 Kind::Resistor(r) => add(&mut b, e, Resistor { r: *r }),
                 Kind::Capacitor { c, .. } => add(&mut b, e, Capacitor { c: *c }),
@@ -344,6 +351,7 @@ impl Netlist {
                         wave.corners(stop, &e.token, &e.name, &mut corners)?;
                     }
                     let u = wave.at(0.0);
+                    values[k] = u;
                     match (current, wave.smooth_sine()) {
                         (false, _) if sensed.contains(&e.name) => {
                             currents.push(rate(e));
@@ -472,6 +480,27 @@ impl Netlist {
                 }
             }
         }
+        if !self.tran().is_some_and(|t| t.uic) {
+            // SPICE's start without `uic`: the DC operating point, the `.ic` nodes held there.
+            let held: Vec<(usize, f64)> = self
+                .commands
+                .iter()
+                .filter_map(|command| if let Command::Ic(ics) = command { Some(ics) } else { None })
+                .flatten()
+                .map(|(name, value, _)| (index[name.as_str()], *value))
+                .collect();
+            let point = self.operating_point(&ids, names.len(), &values, &held)?;
+            v0.iter_mut().for_each(|v| *v = 0.0);
+            for (n, (_, c)) in nodes.iter().enumerate() {
+                if let Some(c) = c {
+                    v0[*c] = point.voltages[n];
+                }
+            }
+            let windings = self.windings(&ids, &coupled, &by_name, &point.currents);
+            for (n, flux) in node_fluxes(names.len(), &windings)?.into_iter().enumerate().skip(1) {
+                q0[nodes[n].1.expect("a node other than the reference")] = flux;
+            }
+        }
         let columns = self.columns(&nodes, &index, &currents)?;
         let drives = driven
             .into_iter()
@@ -480,6 +509,57 @@ impl Netlist {
         corners.sort_by(f64::total_cmp);
         corners.dedup();
         Ok(Circuit { network, nodes, columns, q0, v0, tran: self.tran().cloned(), drives, corners })
+    }
+
+    /// The DC operating point of the elements (their nodes by number in `ids`, `count` with
+    /// the reference), the sources at their values at `t = 0`, the nodes of `held` at their
+    /// voltages.
+    fn operating_point(
+        &self,
+        ids: &[[usize; 4]],
+        count: usize,
+        values: &[f64],
+        held: &[(usize, f64)],
+    ) -> Result<super::op::OperatingPoint, SpiceError> {
+        let models = |e: &Element| match &e.kind {
+            Kind::Diode(model) => self.models.get(&model.text).copied(),
+            _ => None,
+        };
+        super::op::operating_point(&self.elements, ids, count, values, held, &models, THERMAL_VOLTAGE)
+    }
+
+    /// Each inductor winding `(from, to, flux ψ, element)` for the branch currents `currents`
+    /// (by element): `ψ = L i`, and for two coupled windings `ψ₁ = L₁ i₁ + M i₂`,
+    /// `ψ₂ = M i₁ + L₂ i₂`.
+    fn windings<'e>(
+        &'e self,
+        ids: &[[usize; 4]],
+        coupled: &HashMap<String, String>,
+        by_name: &HashMap<&str, usize>,
+        currents: &[f64],
+    ) -> Vec<(usize, usize, f64, &'e Element)> {
+        let mut windings = Vec::new();
+        for (k, e) in self.elements.iter().enumerate() {
+            match &e.kind {
+                Kind::Inductor { l, .. } if !coupled.contains_key(&e.name) => {
+                    windings.push((ids[k][0], ids[k][1], l * currents[k], e));
+                }
+                Kind::Coupling { a, b, k: coupling } => {
+                    let (ka, kb) = (by_name[a.text.as_str()], by_name[b.text.as_str()]);
+                    let (Kind::Inductor { l: l1, .. }, Kind::Inductor { l: l2, .. }) =
+                        (&self.elements[ka].kind, &self.elements[kb].kind)
+                    else {
+                        unreachable!("checked to be inductors");
+                    };
+                    let m = coupling * (l1 * l2).sqrt();
+                    let (i1, i2) = (currents[ka], currents[kb]);
+                    windings.push((ids[ka][0], ids[ka][1], l1 * i1 + m * i2, &self.elements[ka]));
+                    windings.push((ids[kb][0], ids[kb][1], m * i1 + l2 * i2, &self.elements[kb]));
+                }
+                _ => {}
+            }
+        }
+        windings
     }
 
     /// The columns to record: those `.save` and `.print` ask for, in their order, or if none
@@ -686,15 +766,17 @@ impl Circuit {
     }
 
     /// Simulates the `.tran` with Radau at the tolerance `tol` (relative and absolute, the
-    /// largest component's error), from the initial state the netlist gives (zero unless
-    /// `.ic` or `ic=` says otherwise), sampled every `.tran` step from its start.
+    /// largest component's error), from the DC operating point (with `uic`, from the state
+    /// the netlist gives: zero unless `.ic` or `ic=` says otherwise), sampled every `.tran`
+    /// step from its start.
     pub fn simulate(&self, tol: f64) -> Result<Waveforms, SpiceError> {
         self.simulate_observed(tol, |_, _| {})
     }
 
-    /// The positions (node fluxes) and velocities (node voltages) the netlist gives at `t = 0`
-    /// (zero unless `.ic` or `ic=` says otherwise), before they are made consistent with the
-    /// circuit's constraints ([`start`](Self::start) makes them so).
+    /// The positions (node fluxes) and velocities (node voltages) at `t = 0`: the DC
+    /// operating point's (with `uic`, those the netlist gives: zero unless `.ic` or `ic=` says
+    /// otherwise), before they are made consistent with the circuit's constraints
+    /// ([`start`](Self::start) makes them so).
     pub fn start_values(&self) -> (crate::nalgebra::DVector<f64>, crate::nalgebra::DVector<f64>) {
         (
             crate::nalgebra::DVector::from_column_slice(&self.q0),
@@ -702,12 +784,41 @@ impl Circuit {
         )
     }
 
-    /// The consistent state at `t = 0` the netlist gives (zero unless `.ic` or `ic=` says
-    /// otherwise): to integrate the network with an integrator and options of one's own.
+    /// The consistent state at `t = 0`: the DC operating point (with `uic`, the state the
+    /// netlist gives, zero unless `.ic` or `ic=` says otherwise), to integrate the network with
+    /// an integrator and options of one's own.
     pub fn start(&self) -> Result<crate::State<Network>, SpiceError> {
         let (q, v) = self.start_values();
         consistent_state(&self.network, 0.0, &q, &v, Consistency::default())
             .map_err(|e| SpiceError::at(1, 1, format!("the initial state: {e}")))
+    }
+
+    /// The recorded columns (node voltages `v(node)`, source currents `i(source)`) at the
+    /// start, `t = 0`: the DC operating point, unless `.tran` has `uic` (then the state `.ic`
+    /// and `ic=` give, made consistent).
+    ///
+    /// ```
+    /// let netlist = "a divider\nV1 in 0 3\nR1 in out 2k\nR2 out 0 1k\n.op\n.end\n";
+    /// let circuit = dirac::spice::parse(netlist)?.circuit()?;
+    /// let point = circuit.at_start()?;
+    /// let out = point.iter().find(|(name, _)| name == "v(out)").map(|(_, v)| *v);
+    /// assert!((out.unwrap_or(f64::NAN) - 1.0).abs() < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn at_start(&self) -> Result<Vec<(String, f64)>, SpiceError> {
+        let start = self.start()?;
+        Ok(self
+            .columns
+            .iter()
+            .map(|(name, at)| {
+                let value = match *at {
+                    Column::Rate(c) => start.v[c],
+                    Column::Zero => 0.0,
+                    Column::Current(r) => -start.lambda[r],
+                };
+                (name.clone(), value)
+            })
+            .collect())
     }
 
     /// Whether a source follows a waveform (`PULSE`, `PWL`, or a `SIN` with a delay or on a

@@ -33,7 +33,7 @@
 //! - `.subckt name ports… [params:] p=default …` … `.ends`, instantiated by
 //!   `Xname nodes… name [params:] p=value …`, nested to 32 levels: an instance `X1`'s elements
 //!   are named `r:x1:r1` and its inner nodes `x1:node`, as ngspice names them with dots;
-//! - `.tran step stop [start [max_step]] [uic]`, `.ic v(node)=value`, `.save` and
+//! - `.tran step stop [start [max_step]] [uic]`, `.op`, `.ic v(node)=value`, `.save` and
 //!   `.print tran` (`v(node)`, `i(vsource)` or `all`: the columns recorded), `.end`;
 //! - `.options` (or `.option`, `.opt`): `reltol` applies (the `dirac-spice` command's tolerance
 //!   unless `--tol` is given); the others are read and named by [`Netlist::options`] as
@@ -42,13 +42,22 @@
 //!
 //! Anything else is refused with its line, its column and its name; a netlist's errors are
 //! reported together ([`SpiceError::further`]), in the order of their lines. Node `0` (or `gnd`) is the
-//! reference. A run starts from the state the netlist gives, zero unless `.ic` or `ic=` say
-//! otherwise, as ngspice's `uic` does: no operating point is computed first.
+//! reference.
+//!
+//! A run starts, as in SPICE, from the DC operating point: every source at its value at
+//! `t = 0`, capacitors open, inductors shorted, the nodes `.ic` names held at their voltages;
+//! solved by modified nodal analysis on a sparse LU, Shockley diodes by Newton's method with
+//! SPICE's junction limiting ([`Circuit::at_start`] gives it; ngspice's `op` to 1e-9 on the
+//! netlists of the tests). With `uic` on `.tran` it starts instead from the state the netlist
+//! gives, zero unless `.ic` or `ic=` say otherwise, as ngspice's `uic` does. A netlist whose
+//! DC equations are singular (a loop of voltage sources and inductors) is refused without
+//! `uic`.
 //!
 //! ```
 //! use dirac::spice;
 //!
-//! let netlist = spice::parse("an RC step\nV1 in 0 1\nR1 in out 1k\nC1 out 0 1u\n.tran 10u 5m\n.end\n")?;
+//! // From rest (`uic`), the source on from t = 0.
+//! let netlist = spice::parse("an RC step\nV1 in 0 1\nR1 in out 1k\nC1 out 0 1u\n.tran 10u 5m uic\n.end\n")?;
 //! let circuit = netlist.circuit()?;
 //! let run = circuit.simulate(1e-8)?;
 //! // The capacitor charges as 1 − e^{−t/RC}, RC = 1 ms.
@@ -61,6 +70,7 @@
 
 mod build;
 mod expand;
+mod op;
 mod read;
 mod wave;
 
@@ -173,6 +183,8 @@ enum Kind {
 #[derive(Clone, Debug)]
 enum Command {
     Tran(Tran),
+    /// `.op`: the DC operating point, printed where there is no `.tran`.
+    Op,
     /// `.options`: `(name, value)`, `None` for a flag.
     Options(Vec<(String, Option<f64>)>),
     /// `(node, voltage, where)`.
@@ -204,6 +216,9 @@ pub struct Tran {
     pub start: f64,
     /// The largest step allowed, if given.
     pub max_step: Option<f64>,
+    /// `uic`: start from the values `.ic` and `ic=` give (zero elsewhere), not from the DC
+    /// operating point.
+    pub uic: bool,
     token: Token,
 }
 
@@ -244,7 +259,12 @@ impl Netlist {
     pub fn tran(&self) -> Option<&Tran> {
         self.commands.iter().find_map(|c| match c {
             Command::Tran(t) => Some(t),
-            Command::Ic(_) | Command::Save(_) | Command::Options(_) => None,
+            Command::Op | Command::Ic(_) | Command::Save(_) | Command::Options(_) => None,
         })
+    }
+
+    /// Whether the netlist asks for its operating point (`.op`).
+    pub fn asks_for_op(&self) -> bool {
+        self.commands.iter().any(|c| matches!(c, Command::Op))
     }
 }

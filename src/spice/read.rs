@@ -476,9 +476,14 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
                 stop,
                 start,
                 max_step: values.get(3).copied(),
+                uic: tokens[1..].iter().any(|t| t.text == "uic"),
                 token: head.clone(),
             })))
         }
+        // The operating point: where a `.tran` without `uic` starts, and what `dirac-spice`
+        // prints for a netlist without `.tran`.
+        ".op" if tokens.len() == 1 => Ok(Some(Command::Op)),
+        ".op" => Err(tokens[1].error("`.op` takes no values")),
         ".ic" => {
             let mut ics = Vec::new();
             let mut k = 1;
@@ -561,7 +566,7 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
             Ok(Some(Command::Options(options)))
         }
         other => Err(head.error(format!(
-            "the command `{other}` is not supported (`.tran`, `.ic`, `.save`, `.print tran`, `.options` and `.end` are)"
+            "the command `{other}` is not supported (`.tran`, `.op`, `.ic`, `.save`, `.print tran`, `.options` and `.end` are)"
         ))),
     }
 }
