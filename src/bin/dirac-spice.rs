@@ -52,14 +52,17 @@ fn run() -> Result<(), String> {
     let tol = tol.or(options.reltol).unwrap_or(1e-6);
     let circuit = netlist.circuit().map_err(error)?;
     let sizes = dirac::LagrangeDirac::sizes(&circuit.network);
+    let only_op = circuit.tran().is_none() && netlist.asks_for_op();
+    let next =
+        if only_op { "its operating point:".to_string() } else { format!("simulating at tolerance {tol:e}") };
     eprintln!(
-        "{}: {} parts, {} unknowns, read and built in {:.3} s; simulating at tolerance {tol:e}",
+        "{}: {} parts, {} unknowns, read and built in {:.3} s; {next}",
         file.display(),
         circuit.network.part_names().len(),
         sizes.nq + sizes.nc,
         clock.elapsed().as_secs_f64()
     );
-    if circuit.tran().is_none() && netlist.asks_for_op() {
+    if only_op {
         // `.op` alone: the operating point, one quantity a line.
         for (name, value) in circuit.at_start().map_err(error)? {
             println!("{name} = {value:.15e}");

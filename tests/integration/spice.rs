@@ -1063,3 +1063,33 @@ fn the_operating_point_is_ngspices_and_a_rest_of_the_transient() {
         );
     }
 }
+
+/// `.op` is read (and asked for), takes no values; `uic` starts from `.ic` where the operating
+/// point would hold the capacitor at the source's voltage; a loop of a voltage source and an
+/// inductor has no DC operating point and is refused with a pointer to `uic`, which runs it.
+#[test]
+fn the_operating_point_is_asked_for_by_op_skipped_by_uic_and_refused_where_singular() {
+    let divider = "d\nV1 in 0 3\nR1 in out 2k\nR2 out 0 1k\nC1 out 0 1u\n.op\n.end\n";
+    let netlist = spice::parse(divider).expect("reads");
+    assert!(netlist.asks_for_op() && netlist.tran().is_none());
+    let point = netlist.circuit().expect("a circuit").at_start().expect("a start");
+    let value = |name: &str| point.iter().find(|(n, _)| n == name).map(|(_, v)| *v);
+    // By hand: 3 V over 2 kΩ and 1 kΩ, the capacitor open.
+    assert_eq!(value("v(out)").map(|v| (v - 1.0).abs() < 1e-15), Some(true), "{point:?}");
+    assert_eq!(value("i(v1)").map(|i| (i + 1e-3).abs() < 1e-18), Some(true), "{point:?}");
+    let from_rest = divider.replace(".op", ".ic v(out)=0.25\n.tran 1m 2m uic");
+    let circuit = spice::parse(&from_rest).expect("reads").circuit().expect("a circuit");
+    let start = circuit.at_start().expect("a start");
+    assert!(start.iter().any(|(n, v)| n == "v(out)" && *v == 0.25), "{start:?}");
+    let error = spice::parse("d\n.op x\n.end\n").expect_err("refused");
+    assert!(error.message.contains("`.op` takes no values"), "{error}");
+
+    let parallel = "p\nV1 a 0 1\nL1 a 0 1m\n.tran 1u 10u\n.end\n";
+    let error = refused(parallel);
+    assert!(error.message.contains("singular") && error.message.contains("uic"), "{error}");
+    let run = spice::parse(&parallel.replace("10u", "10u uic")).expect("reads").circuit().expect("a circuit");
+    let current = run.simulate(1e-10).expect("runs");
+    // The inductor's current ramps as t / L through the source: i(v1) = −t / 1 mH at 10 µs.
+    let i = current.column("i(v1)").expect("the source's current");
+    assert!((i[i.len() - 1] + 1e-5 / 1e-3).abs() < 1e-9, "{}", i[i.len() - 1]);
+}
