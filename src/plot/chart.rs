@@ -33,8 +33,10 @@ pub struct Chart<'a> {
 }
 
 const COLORS: [&str; 6] = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"];
-const W: f64 = 860.0;
-const H: f64 = 450.0;
+/// A chart's width.
+pub(crate) const W: f64 = 860.0;
+/// A chart's height, and each panel's of a figure.
+pub(crate) const H: f64 = 450.0;
 const LEFT: f64 = 90.0;
 const RIGHT: f64 = 240.0;
 const TOP: f64 = 40.0;

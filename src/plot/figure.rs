@@ -325,28 +325,26 @@ impl Figure {
 
     /// The figure as an SVG document: its panels one under the other.
     pub fn svg(&self) -> String {
-        if self.below.is_empty() {
+        let panels = self.panels();
+        if panels.len() == 1 {
             return self.panel_svg();
         }
-        let panels: Vec<String> =
-            std::iter::once(self.panel_svg()).chain(self.below.iter().map(Figure::svg)).collect();
-        let height = |svg: &str| {
-            let after = svg.split("height=\"").nth(1).unwrap_or("0");
-            after.split('"').next().and_then(|h| h.parse::<f64>().ok()).unwrap_or(0.0)
-        };
-        let width =
-            panels[0].split("width=\"").nth(1).and_then(|w| w.split('"').next()).unwrap_or("0").to_string();
-        let total: f64 = panels.iter().map(|p| height(p)).sum();
+        let (width, height) = (super::chart::W, super::chart::H);
         let mut out = format!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{total}\" font-family=\"sans-serif\" font-size=\"13\">\n"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{}\" font-family=\"sans-serif\" font-size=\"13\">\n",
+            height * panels.len() as f64
         );
-        let mut top = 0.0;
-        for panel in &panels {
-            out.push_str(&format!("<g transform=\"translate(0 {top})\">\n{panel}</g>\n"));
-            top += height(panel);
+        for (k, panel) in panels.iter().enumerate() {
+            let top = height * k as f64;
+            out.push_str(&format!("<g transform=\"translate(0 {top})\">\n{}</g>\n", panel.panel_svg()));
         }
         out.push_str("</svg>\n");
         out
+    }
+
+    /// This panel and those below it, in order.
+    fn panels(&self) -> Vec<&Figure> {
+        std::iter::once(self).chain(self.below.iter().flat_map(Figure::panels)).collect()
     }
 
     /// This panel alone as an SVG document.

@@ -90,6 +90,10 @@ struct System<'a> {
     size: usize,
     /// Each element's branch current's unknown, if it has one.
     branch: Vec<Option<usize>>,
+    /// Each `F` and `H`'s controlling voltage source's branch unknown, found once.
+    controls: Vec<Option<usize>>,
+    /// The node voltages' count: the unknowns before the branch currents.
+    nodes: usize,
     /// Each `.ic`'s node, voltage and branch unknown.
     held: Vec<(usize, f64, usize)>,
     junctions: Vec<Junction>,
@@ -150,10 +154,23 @@ impl<'a> System<'a> {
             })
             .collect();
         let floating = (1..count).filter(|&n| paths.find(n) != paths.find(0)).collect();
+        let by_name: foldhash::HashMap<&str, usize> =
+            elements.iter().enumerate().map(|(k, e)| (e.name.as_str(), k)).collect();
+        let controls = elements
+            .iter()
+            .map(|e| match &e.kind {
+                Kind::CurrentControlled { source, .. } => {
+                    by_name.get(source.text.as_str()).and_then(|&s| branch[s])
+                }
+                _ => None,
+            })
+            .collect();
         System {
             elements,
             ids,
             size,
+            nodes: count - 1,
+            controls,
             branch,
             held,
             junction_voltages: vec![0.0; junctions.len()],
@@ -174,13 +191,15 @@ impl<'a> System<'a> {
         for _ in 0..=2 * ideal.len() + 2 {
             self.newton(values, scale, x)?;
             // Each ideal diode that conducts backwards blocks, each that blocks forwards conducts.
-            let largest = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-            let round_off = 1e-12 * largest;
+            // Round-off of each kind of unknown against its own largest: volts and amperes
+            // apart, so that picoamperes beside volts still count.
+            let largest = |values: &[f64]| values.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let (volts, amperes) = (1e-12 * largest(&x[..self.nodes]), 1e-12 * largest(&x[self.nodes..]));
             let mut switched = false;
             for &k in &ideal {
                 let j = self.branch[k].expect("an ideal diode's branch");
                 let across = node_voltage(x, self.ids[k][0]) - node_voltage(x, self.ids[k][1]);
-                if self.conducts[k] && x[j] < -round_off || !self.conducts[k] && across > round_off {
+                if self.conducts[k] && x[j] < -amperes || !self.conducts[k] && across > volts {
                     self.conducts[k] = !self.conducts[k];
                     switched = true;
                 }
@@ -198,8 +217,11 @@ impl<'a> System<'a> {
         for _ in 0..ITERATIONS {
             self.assemble(values, scale);
             let next = self.linear_solve()?;
-            let largest = next.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-            let converged = next.iter().zip(x.iter()).all(|(a, b)| (a - b).abs() <= 1e-14 * largest);
+            // On the node voltages: the branch currents follow from them linearly.
+            let nodes = self.nodes;
+            let largest = next[..nodes].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let converged =
+                next[..nodes].iter().zip(&x[..nodes]).all(|(a, b)| (a - b).abs() <= 1e-14 * largest);
             x.copy_from_slice(&next);
             let mut limited = false;
             for (junction, vd) in self.junctions.iter().zip(self.junction_voltages.iter_mut()) {
@@ -290,13 +312,8 @@ impl<'a> System<'a> {
                     put(Some(j), at(c), -gain);
                     put(Some(j), at(d), *gain);
                 }
-                Kind::CurrentControlled { source: control, value, transresistance } => {
-                    let sensed = self
-                        .elements
-                        .iter()
-                        .position(|x| x.name == control.text)
-                        .and_then(|s| self.branch[s])
-                        .expect("a controlling voltage source's branch");
+                Kind::CurrentControlled { value, transresistance, .. } => {
+                    let sensed = self.controls[k].expect("a controlling voltage source's branch");
                     if *transresistance {
                         let j = self.branch[k].expect("a CCVS's branch");
                         through(&mut put, j);

@@ -1093,3 +1093,23 @@ fn the_operating_point_is_asked_for_by_op_skipped_by_uic_and_refused_where_singu
     let i = current.column("i(v1)").expect("the source's current");
     assert!((i[i.len() - 1] + 1e-5 / 1e-3).abs() < 1e-9, "{}", i[i.len() - 1]);
 }
+
+/// Operating points at absurd values end in a circuit whose start is finite, or in an error
+/// with its cause: never a panic, a hang or a non-finite start.
+#[test]
+fn absurd_values_give_a_finite_operating_point_or_an_error() {
+    let netlists = [
+        "a\nV1 a 0 1e300\nR1 a b 1e-300\nR2 b 0 1e300\n.op\n.end\n",
+        "b\nI1 0 a 1e200\nR1 a 0 1e200\n.op\n.end\n",
+        ".model d D(IS=1e-300 N=1)\nV1 a 0 1e3\nR1 a b 1\nD1 b 0 d\n.op\n.end\n",
+        "d\n.model d D(IS=1e-14 N=1)\nV1 a 0 -1e6\nR1 a b 1e-9\nD1 b 0 d\nD2 0 b d\n.op\n.end\n",
+        "e\n.model i D(ideal)\nV1 a 0 1\nD1 a b i\nD2 b a i\nR1 b 0 1\n.op\n.end\n",
+        "f\nC1 a b 1p\nC2 b 0 1p\nV1 a 0 1\n.op\n.end\n",
+    ];
+    for text in netlists {
+        match spice::parse(text).and_then(|n| n.circuit()).and_then(|c| c.at_start()) {
+            Ok(point) => assert!(point.iter().all(|(_, v)| v.is_finite()), "{text}: {point:?}"),
+            Err(error) => assert!(!error.message.is_empty(), "{text}"),
+        }
+    }
+}
