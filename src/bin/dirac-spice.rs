@@ -1,12 +1,16 @@
 //! Simulates a SPICE netlist's `.tran` and writes the node voltages and voltage-source
-//! currents (those `.save` or `.print tran` name, else all) as CSV and as an SVG chart, with a
+//! currents (those `.save` or `.print` name, else all) as CSV and as an SVG chart, with a
 //! progress line on runs longer than a second. The run starts from the DC operating point
 //! (unless `.tran` has `uic`); a netlist with `.op` and no `.tran` has its operating point
-//! printed, one `name = value` a line.
+//! printed, one `name = value` a line. An `.ac` sweep is written as CSV (each column's real
+//! and imaginary parts, `vr(node)`, `vi(node)`) and as a Bode chart: to the files below where
+//! the netlist has no `.tran`, else to `FILE.ac.csv` and `FILE.ac.svg`.
 //!
-//! Usage: `dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]` (by default
-//! the tolerance is the netlist's `.options reltol`, else 1e-6, and the files go next to the
-//! netlist, with the extensions `.csv` and `.svg`). Every error the netlist has is reported,
+//! Usage: `dirac-spice FILE.cir [--tol TOL] [--max-step] [--out FILE.csv] [--svg FILE.svg]`
+//! (by default the tolerance is the netlist's `.options reltol`, else 1e-6, and the files go
+//! next to the netlist, with the extensions `.csv` and `.svg`). `.tran`'s largest step is read
+//! and, unless `--max-step` is given, not applied: see
+//! `dirac::spice::Circuit::bound_steps_by_max_step`. Every error the netlist has is reported,
 //! one line each; `.options` it does not apply are named.
 
 use std::io::{IsTerminal, Write};
@@ -16,14 +20,15 @@ use std::time::Instant;
 
 fn run() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
-    let (mut file, mut tol, mut out, mut svg) = (None, None, None, None);
-    let usage = "usage: dirac-spice FILE.cir [--tol TOL] [--out FILE.csv] [--svg FILE.svg]";
+    let (mut file, mut tol, mut out, mut svg, mut bound) = (None, None, None, None, false);
+    let usage = "usage: dirac-spice FILE.cir [--tol TOL] [--max-step] [--out FILE.csv] [--svg FILE.svg]";
     while let Some(arg) = args.next() {
         match arg.as_str() {
             "--tol" => {
                 let value = args.next().ok_or("--tol needs a value")?;
                 tol = Some(value.parse::<f64>().map_err(|_| format!("--tol {value}: not a number"))?);
             }
+            "--max-step" => bound = true,
             "--out" => out = Some(PathBuf::from(args.next().ok_or("--out needs a file")?)),
             "--svg" => svg = Some(PathBuf::from(args.next().ok_or("--svg needs a file")?)),
             "-h" | "--help" => {
@@ -50,11 +55,22 @@ fn run() -> Result<(), String> {
         eprintln!("{}: `.options` ignored: {}", file.display(), options.ignored.join(", "));
     }
     let tol = tol.or(options.reltol).unwrap_or(1e-6);
-    let circuit = netlist.circuit().map_err(error)?;
+    let mut circuit = netlist.circuit().map_err(error)?;
+    circuit.bound_steps_by_max_step(bound);
+    if let Some(h) = circuit.tran().and_then(|t| t.max_step).filter(|_| !bound) {
+        eprintln!(
+            "{}: `.tran`'s largest step {h:e} is not applied (Radau's error stays within its tolerance and every \
+             printed point is read from its polynomial); --max-step applies it",
+            file.display()
+        );
+    }
     let sizes = dirac::LagrangeDirac::sizes(&circuit.network);
-    let only_op = circuit.tran().is_none() && netlist.asks_for_op();
-    let next =
-        if only_op { "its operating point:".to_string() } else { format!("simulating at tolerance {tol:e}") };
+    let only_op = circuit.tran().is_none() && netlist.ac().is_none() && netlist.asks_for_op();
+    let next = match (only_op, circuit.tran()) {
+        (true, _) => "its operating point:".to_string(),
+        (false, None) => "its small-signal sweep".to_string(),
+        (false, Some(_)) => format!("simulating at tolerance {tol:e}"),
+    };
     eprintln!(
         "{}: {} parts, {} unknowns, read and built in {:.3} s; {next}",
         file.display(),
@@ -68,6 +84,39 @@ fn run() -> Result<(), String> {
             println!("{name} = {value:.15e}");
         }
         return Ok(());
+    }
+    let title = file.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    if netlist.ac().is_some() {
+        // `.ac`: the small-signal sweep, to FILE.csv and FILE.svg where it is the only analysis,
+        // else to FILE.ac.csv and FILE.ac.svg beside the transient's.
+        let clock = Instant::now();
+        let sweep = circuit.ac().map_err(error)?;
+        let alone = circuit.tran().is_none();
+        let (csv, figure) = match alone {
+            true => (
+                out.clone().unwrap_or_else(|| file.with_extension("csv")),
+                svg.clone().unwrap_or_else(|| file.with_extension("svg")),
+            ),
+            false => (file.with_extension("ac.csv"), file.with_extension("ac.svg")),
+        };
+        let handle = std::fs::File::create(&csv).map_err(|e| format!("{}: {e}", csv.display()))?;
+        let mut writer = std::io::BufWriter::new(handle);
+        sweep
+            .write_csv(&mut writer)
+            .and_then(|()| writer.flush())
+            .map_err(|e| format!("{}: {e}", csv.display()))?;
+        sweep.write_svg(&title, &figure).map_err(|e| format!("{}: {e}", figure.display()))?;
+        eprintln!(
+            "`.ac`: {} frequencies of {} columns in {:.3} s, written to {} and {}",
+            sweep.frequencies().len(),
+            sweep.names().len(),
+            clock.elapsed().as_secs_f64(),
+            csv.display(),
+            figure.display()
+        );
+        if alone {
+            return Ok(());
+        }
     }
     let clock = Instant::now();
     let stop = circuit.tran().map_or(0.0, |t| t.stop);
@@ -98,7 +147,6 @@ fn run() -> Result<(), String> {
         .and_then(|()| writer.flush())
         .map_err(|e| format!("{}: {e}", out.display()))?;
     let svg = svg.unwrap_or_else(|| file.with_extension("svg"));
-    let title = file.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
     waves.write_svg(&title, &svg).map_err(|e| format!("{}: {e}", svg.display()))?;
     eprintln!(
         "{} samples of {} columns in {seconds:.3} s, written to {} and {}",

@@ -32,14 +32,23 @@ pub struct Circuit {
     /// the reference, grounded).
     nodes: Vec<(String, Option<usize>)>,
     /// The columns recorded: every node and source current, or what `.save` and `.print` ask.
-    columns: Vec<(String, Column)>,
+    pub(super) columns: Vec<(String, Column)>,
     q0: Vec<f64>,
     v0: Vec<f64>,
     tran: Option<Tran>,
+    pub(super) ac: Option<super::Ac>,
     /// The sources that follow a waveform: the network input each sets, and the waveform.
     drives: Vec<(usize, Wave)>,
     /// Where the waveforms bend within the `.tran`, sorted: each step ends at one it reaches.
     corners: Vec<f64>,
+    /// The sources with an `AC` excitation: the network input each sets, its magnitude and
+    /// its phase in degrees.
+    pub(super) excitations: Vec<(usize, f64, f64)>,
+    /// The DC operating point `.ac` linearises about (node fluxes and voltages, no `.ic`
+    /// held), where the netlist has an `.ac`.
+    pub(super) small_signal_point: Option<(Vec<f64>, Vec<f64>)>,
+    /// Whether a run bounds its steps by `.tran`'s largest step.
+    bound_steps: bool,
 }
 
 /// The thermal voltage `k T / q` at SPICE's default temperature, 27 °C, with the constants
@@ -50,7 +59,7 @@ const THERMAL_VOLTAGE: f64 = 1.380_648_52e-23 * 300.15 / 1.602_176_620_8e-19;
 
 /// Where a recorded column is read.
 #[derive(Clone, Copy, Debug)]
-enum Column {
+pub(super) enum Column {
     /// The rate of this coordinate: a node's voltage.
     Rate(usize),
     /// The reference node's voltage.
@@ -93,13 +102,7 @@ impl Waveforms {
 
     /// The figure [`write_svg`](Self::write_svg) writes.
     pub fn figure(&self, title: &str) -> Result<crate::plot::Figure, crate::plot::PlotError> {
-        const MOST: usize = 12;
-        let shown = self.names.len().min(MOST);
-        let title = if shown < self.names.len() {
-            format!("{title} (the first {shown} of {} columns)", self.names.len())
-        } else {
-            title.to_string()
-        };
+        let (shown, title) = shown_columns(title, &self.names);
         let panel = |figure: crate::plot::Figure, prefix: &str| {
             (0..shown)
                 .filter(|&k| self.names[k].starts_with(prefix))
@@ -134,6 +137,17 @@ impl Waveforms {
             writeln!(out)?;
         }
         Ok(())
+    }
+}
+
+/// How many of the columns `names` a chart shows (the first twelve at most), and its title,
+/// which says so when some are left out.
+pub(super) fn shown_columns(title: &str, names: &[String]) -> (usize, String) {
+    const MOST: usize = 12;
+    let shown = names.len().min(MOST);
+    match shown < names.len() {
+        true => (shown, format!("{title} (the first {shown} of {} columns)", names.len())),
+        false => (shown, title.to_string()),
     }
 }
 
@@ -303,6 +317,7 @@ impl Netlist {
         // Each recorded current: a voltage source's row (its multiplier), or the coordinate whose
         // rate it is (`E`, `H` and sensed sources).
         let (mut currents, mut windings, mut driven) = (Vec::new(), Vec::new(), Vec::new());
+        let mut excited = Vec::new();
         let mut controls = Vec::new();
         let row = |e: &Element| (format!("i({})", e.name), CurrentAt::Row(format!("{}.source", e.name)));
         let rate = |e: &Element| (format!("i({})", e.name), CurrentAt::Rate(format!("{}.s", e.name)));
@@ -313,6 +328,10 @@ impl Netlist {
         for (k, (e, n)) in self.elements.iter().zip(&ids).enumerate() {
             if let Kind::Voltage(x) | Kind::Current(x) = e.kind {
                 values[k] = x;
+            }
+            if let Some((magnitude, phase)) = e.ac {
+                let current = matches!(e.kind, Kind::Current(_) | Kind::Source { current: true, .. });
+                excited.push((format!("{}.{}", e.name, if current { "i" } else { "u" }), magnitude, phase));
             }
             let added = match &e.kind {
                 Kind::Resistor(r) => add(&mut b, e, Resistor { r: *r }),
@@ -352,7 +371,8 @@ impl Netlist {
                     }
                     let u = wave.at(0.0);
                     values[k] = u;
-                    match (current, wave.smooth_sine()) {
+                    // A sine with an `AC` excitation is an input, which `.ac` perturbs.
+                    match (current, wave.smooth_sine().filter(|_| e.ac.is_none())) {
                         (false, _) if sensed.contains(&e.name) => {
                             currents.push(rate(e));
                             driven.push((format!("{}.u", e.name), wave));
@@ -374,8 +394,15 @@ impl Netlist {
                     }
                 }
                 Kind::Diode(model) => match self.models.get(&model.text) {
-                    Some(&DiodeModel::Shockley { is, n }) => {
-                        add(&mut b, e, ShockleyDiode { is, n_vt: n * THERMAL_VOLTAGE })
+                    Some(&DiodeModel::Shockley { is, n: emission }) => {
+                        // SPICE's `gmin` across the junction, as in the operating point: a
+                        // resistor of its own, `d1:gmin`, whose pins follow below.
+                        add(&mut b, e, ShockleyDiode { is, n_vt: emission * THERMAL_VOLTAGE })?;
+                        add_pins(&b, &mut pins, &[("p", n[0]), ("n", n[1])]);
+                        let name = format!("{}:gmin", e.name);
+                        b.add(&name, Resistor { r: 1.0 / super::op::GMIN })
+                            .map(|_| ())
+                            .map_err(|err| at(e, err))
                     }
                     Some(DiodeModel::Ideal) => add(&mut b, e, IdealDiode {}),
                     None => Err(model.error(format!("`{}`: no `.model` is named `{}`", e.name, model.text))),
@@ -480,6 +507,22 @@ impl Netlist {
                 }
             }
         }
+        // The state at the DC operating point with the nodes of `held` at their voltages: node
+        // fluxes that give the inductors their currents there, and node voltages.
+        let at_point = |held: &[(usize, f64)]| -> Result<(Vec<f64>, Vec<f64>), SpiceError> {
+            let point = self.operating_point(&ids, names.len(), &values, held)?;
+            let (mut q, mut v) = (vec![0.0; sizes.nq], vec![0.0; sizes.nq]);
+            for (n, (_, c)) in nodes.iter().enumerate() {
+                if let Some(c) = c {
+                    v[*c] = point.voltages[n];
+                }
+            }
+            let windings = self.windings(&ids, &coupled, &by_name, &point.currents);
+            for (n, flux) in node_fluxes(names.len(), &windings)?.into_iter().enumerate().skip(1) {
+                q[nodes[n].1.expect("a node other than the reference")] = flux;
+            }
+            Ok((q, v))
+        };
         if !self.tran().is_some_and(|t| t.uic) {
             // SPICE's start without `uic`: the DC operating point, the `.ic` nodes held there.
             let held: Vec<(usize, f64)> = self
@@ -489,17 +532,7 @@ impl Netlist {
                 .flatten()
                 .map(|(name, value, _)| (index[name.as_str()], *value))
                 .collect();
-            let point = self.operating_point(&ids, names.len(), &values, &held)?;
-            v0.iter_mut().for_each(|v| *v = 0.0);
-            for (n, (_, c)) in nodes.iter().enumerate() {
-                if let Some(c) = c {
-                    v0[*c] = point.voltages[n];
-                }
-            }
-            let windings = self.windings(&ids, &coupled, &by_name, &point.currents);
-            for (n, flux) in node_fluxes(names.len(), &windings)?.into_iter().enumerate().skip(1) {
-                q0[nodes[n].1.expect("a node other than the reference")] = flux;
-            }
+            (q0, v0) = at_point(&held)?;
         }
         let columns = self.columns(&nodes, &index, &currents)?;
         let drives = driven
@@ -508,7 +541,28 @@ impl Netlist {
             .collect();
         corners.sort_by(f64::total_cmp);
         corners.dedup();
-        Ok(Circuit { network, nodes, columns, q0, v0, tran: self.tran().cloned(), drives, corners })
+        let excitations = excited
+            .into_iter()
+            .map(|(input, magnitude, phase)| {
+                (network.input_index(&input).expect("a source's input"), magnitude, phase)
+            })
+            .collect();
+        // `.ac` linearises about the operating point without `.ic`, whatever `.tran` asks.
+        let small_signal_point = self.ac().map(|_| at_point(&[])).transpose()?;
+        Ok(Circuit {
+            network,
+            nodes,
+            columns,
+            q0,
+            v0,
+            tran: self.tran().cloned(),
+            ac: self.ac().cloned(),
+            drives,
+            corners,
+            excitations,
+            small_signal_point,
+            bound_steps: false,
+        })
     }
 
     /// The DC operating point of the elements (their nodes by number in `ids`, `count` with
@@ -861,6 +915,17 @@ impl Circuit {
         &self.corners
     }
 
+    /// Whether a run bounds its steps by `.tran`'s largest step (its fourth value): not by
+    /// default. SPICE's trapezoidal rule needs the bound to keep its error small between the
+    /// printed points; Radau bounds its error by its tolerance whatever its step, every printed
+    /// point is read from its collocation polynomial (of the same order as the steps), and
+    /// every corner of a source's waveform ends a step, so no feature is stepped over. Bounded,
+    /// a run takes at least `(stop − start) / max_step` steps for no gain in accuracy at its
+    /// tolerance (BENCHMARKS.md, "SPICE netlists against ngspice").
+    pub fn bound_steps_by_max_step(&mut self, bound: bool) {
+        self.bound_steps = bound;
+    }
+
     /// [`simulate`](Self::simulate), calling `progress` after every step with the time reached
     /// and the number of steps taken: for a progress line on long runs.
     pub fn simulate_observed(
@@ -874,7 +939,7 @@ impl Circuit {
         };
         let start = self.start()?;
         let mut options = RadauOptions { error_norm: ErrorNorm::Max, ..RadauOptions::tolerances(tol, tol) };
-        if let Some(h) = tran.max_step {
+        if let Some(h) = tran.max_step.filter(|_| self.bound_steps) {
             options.max_step = h;
         }
         let count = ((tran.stop - tran.start) / tran.step + 1e-9).floor();

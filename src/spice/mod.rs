@@ -11,7 +11,8 @@
 //!
 //! Supported:
 //! - `R`, `L` and `C` (with `ic=`), `K` (coupled inductors), `D`: Shockley diodes
-//!   (`.model name D(IS=… N=…)`, at 27 °C) and ideal ones (`.model name D(ideal)`, a flag of
+//!   (`.model name D(IS=… N=…)`, at 27 °C, with SPICE's `gmin` of 1e-12 S across the junction,
+//!   a resistor named `d1:gmin` beside the diode `d1`) and ideal ones (`.model name D(ideal)`, a flag of
 //!   dirac's own: no forward drop, no reverse current, the law `diode` of
 //!   [`IdealDiode`](crate::components::electrical::IdealDiode), which conducts and blocks at
 //!   located events);
@@ -22,7 +23,8 @@
 //!   unknown of modified nodal analysis, the rate of a coordinate of their own; such a branch
 //!   may not close a loop of capacitors and voltage sources (its current would be fixed only
 //!   through their derivatives), and is refused there;
-//! - `V` and `I` sources: `[DC] value`, then optionally `PULSE(V1 V2 TD TR TF PW PER NP)`,
+//! - `V` and `I` sources: `[DC] value`, `AC [magnitude [phase]]` (the small-signal excitation
+//!   of `.ac`, the phase in degrees), then optionally `PULSE(V1 V2 TD TR TF PW PER NP)`,
 //!   `PWL(T1 V1 T2 V2 … [TD=delay])` or `SIN(VO VA FREQ TD THETA PHASE)`, as ngspice defines
 //!   them (a zero rise or fall time is the `.tran` step, a zero width or period its stop time).
 //!   A run ends a step at each corner of a waveform (a pulse's edges, a `PWL`'s points, a
@@ -34,7 +36,12 @@
 //!   `Xname nodes… name [params:] p=value …`, nested to 32 levels: an instance `X1`'s elements
 //!   are named `r:x1:r1` and its inner nodes `x1:node`, as ngspice names them with dots;
 //! - `.tran step stop [start [max_step]] [uic]`, `.op`, `.ic v(node)=value`, `.save` and
-//!   `.print tran` (`v(node)`, `i(vsource)` or `all`: the columns recorded), `.end`;
+//!   `.print tran` or `.print ac` (`v(node)`, `i(vsource)` or `all`: the columns recorded),
+//!   `.end`;
+//! - `.ac dec|oct|lin points start stop`: the small-signal response about the DC operating
+//!   point ([`Circuit::ac`]), from the exact linearisation of the network's equations (the
+//!   Jacobian blocks the parts generate, the diodes' conductances at the operating point), at
+//!   each frequency by sparse LU; ngspice's sweeps to 1e-9 on the netlists of the tests;
 //! - `.options` (or `.option`, `.opt`): `reltol` applies (the `dirac-spice` command's tolerance
 //!   unless `--tol` is given); the others are read and named by [`Netlist::options`] as
 //!   ignored (`abstol`, `vntol`, `chgtol`: dirac's absolute tolerances follow each kind of
@@ -68,12 +75,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod ac;
 mod build;
 mod expand;
 mod op;
 mod read;
 mod wave;
 
+pub use self::ac::AcSweep;
 pub use self::build::{Circuit, Waveforms};
 
 use self::read::Token;
@@ -138,6 +147,8 @@ struct Element {
     name: String,
     nodes: Vec<String>,
     kind: Kind,
+    /// A source's small-signal excitation for `.ac`: `AC magnitude [phase in degrees]`.
+    ac: Option<(f64, f64)>,
     token: Token,
 }
 
@@ -183,14 +194,15 @@ enum Kind {
 #[derive(Clone, Debug)]
 enum Command {
     Tran(Tran),
+    Ac(Ac),
     /// `.op`: the DC operating point, printed where there is no `.tran`.
     Op,
     /// `.options`: `(name, value)`, `None` for a flag.
     Options(Vec<(String, Option<f64>)>),
     /// `(node, voltage, where)`.
     Ic(Vec<(String, f64, Token)>),
-    /// `.save` or `.print tran`: the columns to record, `v(node)` or `i(source)`; empty for
-    /// `all`.
+    /// `.save`, `.print tran` or `.print ac`: the columns to record, `v(node)` or `i(source)`;
+    /// empty for `all`.
     Save(Vec<Probe>),
 }
 
@@ -220,6 +232,61 @@ pub struct Tran {
     /// operating point.
     pub uic: bool,
     token: Token,
+}
+
+/// How an `.ac` sweep spaces its frequencies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Spacing {
+    /// `dec`: `points` per decade.
+    Decade,
+    /// `oct`: `points` per octave.
+    Octave,
+    /// `lin`: `points` in all, evenly spaced.
+    Linear,
+}
+
+/// The `.ac` command: a small-signal sweep `.ac dec|oct|lin points start stop` (frequencies
+/// in hertz), about the DC operating point.
+#[derive(Clone, Debug)]
+pub struct Ac {
+    /// How the frequencies are spaced.
+    pub spacing: Spacing,
+    /// Points per decade or octave, or in all.
+    pub points: usize,
+    /// The first frequency, in hertz.
+    pub start: f64,
+    /// The last frequency, in hertz.
+    pub stop: f64,
+    token: Token,
+}
+
+impl Ac {
+    /// The frequencies of the sweep, in hertz, as ngspice steps them: from `start`, multiplied by
+    /// `10^(1/points)` (or `2^(1/points)`) up to `stop`, or `points` evenly spaced.
+    ///
+    /// ```
+    /// let netlist = dirac::spice::parse("t\nV1 a 0 AC 1\nR1 a 0 1\n.ac dec 10 1 1k\n.end\n")?;
+    /// let f = netlist.ac().expect("an .ac").frequencies();
+    /// assert_eq!(f.len(), 31);
+    /// assert!((f[10] - 10.0).abs() < 1e-12 && (f[30] - 1e3).abs() < 1e-9);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn frequencies(&self) -> Vec<f64> {
+        let n = self.points as f64;
+        match self.spacing {
+            Spacing::Linear if self.points == 1 => vec![self.start],
+            Spacing::Linear => {
+                let step = (self.stop - self.start) / (n - 1.0);
+                (0..self.points).map(|k| self.start + k as f64 * step).collect()
+            }
+            Spacing::Decade | Spacing::Octave => {
+                let base: f64 = if self.spacing == Spacing::Decade { 10.0 } else { 2.0 };
+                // The last point within a relative 1e-9 of `stop` is kept, as ngspice keeps it.
+                let count = (n * (self.stop / self.start).log(base) + 1e-9).floor() as usize;
+                (0..=count).map(|k| self.start * base.powf(k as f64 / n)).collect()
+            }
+        }
+    }
 }
 
 /// Reads a netlist. Never panics: what it cannot read is an error with its line and column.
@@ -259,7 +326,15 @@ impl Netlist {
     pub fn tran(&self) -> Option<&Tran> {
         self.commands.iter().find_map(|c| match c {
             Command::Tran(t) => Some(t),
-            Command::Op | Command::Ic(_) | Command::Save(_) | Command::Options(_) => None,
+            _ => None,
+        })
+    }
+
+    /// The `.ac` command, if the netlist has one.
+    pub fn ac(&self) -> Option<&Ac> {
+        self.commands.iter().find_map(|c| match c {
+            Command::Ac(ac) => Some(ac),
+            _ => None,
         })
     }
 

@@ -18,8 +18,9 @@ use faer::{Conj, Mat};
 use super::build::Sets;
 use super::{DiodeModel, Element, Kind, SpiceError};
 
-/// What a node held only by capacitors is tied to the reference with, in siemens.
-const GMIN: f64 = 1e-12;
+/// SPICE's `gmin` across every junction, and what a node held only by capacitors is tied to the
+/// reference with, in siemens.
+pub(super) const GMIN: f64 = 1e-12;
 
 /// Newton iterations before the sources are stepped up from zero, and in each step.
 const ITERATIONS: usize = 100;

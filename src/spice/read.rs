@@ -5,7 +5,7 @@ use foldhash::{HashMap, HashMapExt};
 
 use super::expand::{self, Frame, Scope};
 use super::wave::Wave;
-use super::{Command, DiodeModel, Element, Kind, Netlist, Probe, SpiceError, Tran};
+use super::{Ac, Command, DiodeModel, Element, Kind, Netlist, Probe, Spacing, SpiceError, Tran};
 
 /// A token and where it starts (1-based line and column).
 #[derive(Clone, Debug)]
@@ -302,11 +302,30 @@ fn at(tokens: &[Token], k: usize, what: impl std::fmt::Display) -> Result<&Token
 
 /// An element line: its kind, with its name, nodes and place moved out of the line.
 fn parse_element(mut tokens: Vec<Token>) -> Result<Element, SpiceError> {
+    let ac = if tokens[0].text.starts_with(['v', 'i']) { small_signal(&mut tokens)? } else { None };
     let (kind, count) = read_element(&tokens)?;
     let mut line = tokens.drain(..=count);
     let token = line.next().expect("a line has a token");
     let nodes = line.map(|t| t.text).collect();
-    Ok(Element { name: token.text.clone(), nodes, kind, token })
+    Ok(Element { name: token.text.clone(), nodes, kind, ac, token })
+}
+
+/// A source's `AC [magnitude [phase]]` (after its nodes, before or after its DC value and
+/// waveform), taken out of the line: the magnitude 1 and the phase 0° where they are left out,
+/// as in SPICE.
+fn small_signal(tokens: &mut Vec<Token>) -> Result<Option<(f64, f64)>, SpiceError> {
+    let Some(k) = tokens.iter().skip(3).position(|t| t.text == "ac").map(|k| k + 3) else {
+        return Ok(None);
+    };
+    let numeric = |t: Option<&Token>| {
+        t.is_some_and(|t| t.text.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '.' | '-' | '+')))
+    };
+    let mut values = Vec::new();
+    while values.len() < 2 && numeric(tokens.get(k + 1 + values.len())) {
+        values.push(number(&tokens[k + 1 + values.len()])?);
+    }
+    tokens.drain(k..=k + values.len());
+    Ok(Some((values.first().copied().unwrap_or(1.0), values.get(1).copied().unwrap_or(0.0))))
 }
 
 /// An element line's kind and how many nodes follow its name.
@@ -480,6 +499,50 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
                 token: head.clone(),
             })))
         }
+        ".ac" => {
+            let spacing = match tokens.get(1) {
+                Some(t) if t.text == "dec" => Spacing::Decade,
+                Some(t) if t.text == "oct" => Spacing::Octave,
+                Some(t) if t.text == "lin" => Spacing::Linear,
+                Some(t) => {
+                    return Err(t.error(format!("`.ac`: expected `dec`, `oct` or `lin`, found `{}`", t.text)));
+                }
+                None => {
+                    return Err(head.error(
+                        "`.ac` takes `dec`, `oct` or `lin`, a number of points, a start and a stop frequency",
+                    ));
+                }
+            };
+            let what = "a number of points, a start and a stop frequency";
+            let (n, start, stop) = (at(tokens, 2, what)?, at(tokens, 3, what)?, at(tokens, 4, what)?);
+            if let Some(t) = tokens.get(5) {
+                return Err(t.error(format!("`.ac`: `{}` is not supported here", t.text)));
+            }
+            let points = number(n)?;
+            if !((1.0..=1e6).contains(&points) && points.fract() == 0.0) {
+                return Err(n.error(format!("`.ac`: the number of points {points} must be a whole number in [1, 10⁶]")));
+            }
+            let (start_value, stop_value) = (number(start)?, number(stop)?);
+            if !(start_value > 0.0 && start_value.is_finite()) {
+                return Err(start.error(format!("`.ac`: the start frequency {start_value} must be positive")));
+            }
+            if !(stop_value >= start_value && stop_value.is_finite()) {
+                return Err(stop.error(format!(
+                    "`.ac`: the stop frequency {stop_value} must be at least the start {start_value}"
+                )));
+            }
+            let ac = Ac { spacing, points: points as usize, start: start_value, stop: stop_value, token: head.clone() };
+            // Each sweep is computed point by point: a bound on its length keeps it finite.
+            let count = match spacing {
+                Spacing::Linear => points,
+                Spacing::Decade => points * (stop_value / start_value).log10(),
+                Spacing::Octave => points * (stop_value / start_value).log2(),
+            };
+            if count > 1e6 {
+                return Err(head.error(format!("`.ac`: {count:.3e} frequencies; at most 10⁶ are swept")));
+            }
+            Ok(Some(Command::Ac(ac)))
+        }
         // The operating point: where a `.tran` without `uic` starts, and what `dirac-spice`
         // prints for a netlist without `.tran`.
         ".op" if tokens.len() == 1 => Ok(Some(Command::Op)),
@@ -506,11 +569,14 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
             let mut k = 1;
             if head.text == ".print" {
                 match tokens.get(1) {
-                    Some(t) if t.text == "tran" => k = 2,
+                    Some(t) if t.text == "tran" || t.text == "ac" => k = 2,
                     Some(t) => {
-                        return Err(t.error(format!("`.print {}`: only `.print tran` is supported", t.text)));
+                        return Err(t.error(format!(
+                            "`.print {}`: `.print tran` and `.print ac` are supported",
+                            t.text
+                        )));
                     }
-                    None => return Err(head.error("`.print` needs `tran` and the columns to print")),
+                    None => return Err(head.error("`.print` needs `tran` or `ac` and the columns to print")),
                 }
             }
             let mut probes = Vec::new();
@@ -566,7 +632,7 @@ fn parse_command(tokens: &[Token]) -> Result<Option<Command>, SpiceError> {
             Ok(Some(Command::Options(options)))
         }
         other => Err(head.error(format!(
-            "the command `{other}` is not supported (`.tran`, `.op`, `.ic`, `.save`, `.print tran`, `.options` and `.end` are)"
+            "the command `{other}` is not supported (`.tran`, `.ac`, `.op`, `.ic`, `.save`, `.print`, `.options` and `.end` are)"
         ))),
     }
 }

@@ -380,11 +380,13 @@ fn a_netlist_fmu_is_described_with_units_and_refused_without_its_netlist() {
         r#"<fmiModelDescription fmiVersion="3.0" modelName="netlist""#,
         // The source's unit and doc comment, from its part's type.
         r#"causality="input" variability="continuous" description="The source&apos;s voltage `vp − vn`." start="1.0" unit="V"/>"#,
-        r#"<Float64 name="i1.i" valueReference="20" causality="input""#,
+        r#"<Float64 name="i1.i" valueReference="22" causality="input""#,
+        // SPICE's gmin across each diode, a parameter of its own.
+        r#"<Float64 name="d:x3:d1:gmin.r" valueReference="11""#,
     ] {
         assert!(xml.contains(element), "{element} is missing from\n{xml}");
     }
-    assert!(xml.contains(r#"<Float64 name="v1.u" valueReference="19""#), "{xml}");
+    assert!(xml.contains(r#"<Float64 name="v1.u" valueReference="21""#), "{xml}");
 
     let failure = Instance::<Netlist>::instantiate(None).err().expect("no netlist to read");
     assert!(failure.message.contains("no resources folder"), "{}", failure.message);

@@ -6,6 +6,7 @@ use dirac::components::electrical::{
     DampedSineVoltage, Ground as Gnd, IdealDiode, Resistor, SensedVoltageSource, ShockleyDiode,
     VoltageControlledCurrent, VoltageControlledVoltage, VoltageSource,
 };
+use dirac::nalgebra::Complex;
 use dirac::prelude::*;
 use dirac::spice::{self, SpiceError};
 
@@ -84,7 +85,8 @@ const VT: f64 = 1.380_648_52e-23 * 300.15 / 1.602_176_620_8e-19;
 /// give `[L1 M; M L2] (i1', i2') = (1 − i1, v(c) − 2 i2)`; node c:
 /// `C1 vc' = −i2 + 0.3 − (vc − ve) / R3`; node e: `C2 ve' = (vc − ve) / R3`; node f:
 /// `v(f) = 0.5 ve · R4`. `IN_SUBCIRCUITS` adds circuits of their own: the clipper
-/// `C6 v' = (2 sin πt − v)/R8 − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1)` at node out, and
+/// `C6 v' = (2 sin πt − v)/R8 − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1) − 2 gmin v` at node out
+/// (SPICE's gmin, 1e-12 S, across each junction), and
 /// `C3 v(q)' = pulse − v(q)`, `C4 v(r)' = pwl − v(r)/2`, `C5 v(w)' = sine − v(w)` at nodes q,
 /// r, w, and the controlled sources' circuit: `C7 v(k)' = sin πt − v(k)`, `v(m) = 3 v(k)` (E),
 /// `C8 v(n)' = v(m) − v(n)`, the current into V5's `+` pin `i5 = v(k) − sin πt`,
@@ -94,7 +96,8 @@ fn reference(t_end: f64, samples: &[f64]) -> Vec<[f64; 20]> {
     let (l1, l2, r3, c2): (f64, f64, f64, f64) = (1.0, 2.0, 1e3, 1e-3);
     let m = 0.5 * (l1 * l2).sqrt();
     let det = l1 * l2 - m * m;
-    let diode = |v: f64| 1e-14 * ((v / VT).exp() - 1.0);
+    // Each junction with SPICE's gmin (1e-12 S) across it, as the netlist's diodes have.
+    let diode = |v: f64| 1e-14 * ((v / VT).exp() - 1.0) + 1e-12 * v;
     let sine = |t: f64| (std::f64::consts::PI * t).sin();
     let f = |t: f64, x: [f64; 10]| -> [f64; 10] {
         let [i1, i2, vc, ve, out, q, r, w, k, n] = x;
@@ -315,7 +318,7 @@ R13 j 0 1
 ";
 
 /// The circuit of `IN_SUBCIRCUITS` written as a derived interconnection of the same library
-/// parts, node by node (the inner node `mid` between `r3a` and `r3b`). Its 52 pins and 38
+/// parts, node by node (the inner node `mid` between `r3a` and `r3b`). Its 56 pins and 42
 /// connections take more stack than dirac allows without asking: `large`, run on a thread with
 /// a larger stack.
 #[derive(Interconnection, Clone)]
@@ -332,6 +335,7 @@ R13 j 0 1
 #[dirac(connect(g1.p2, ground.p), connect(g1.n1, ground.p), connect(r4.n, ground.p))]
 #[dirac(connect(v4.p, r8.p), connect(r8.n, c6.p), connect(r8.n, d1.p), connect(r8.n, d2.n))]
 #[dirac(connect(v4.n, ground.p), connect(c6.n, ground.p), connect(d1.n, ground.p), connect(d2.p, ground.p))]
+#[dirac(connect(r8.n, gd1.p), connect(gd1.n, ground.p), connect(gd2.p, ground.p), connect(gd2.n, r8.n))]
 #[dirac(connect(v2.p, r5.p), connect(r5.n, c3.p), connect(v2.n, ground.p), connect(c3.n, ground.p))]
 #[dirac(connect(i2.n, r6.p), connect(i2.n, c4.p))]
 #[dirac(connect(i2.p, ground.p), connect(r6.n, ground.p), connect(c4.n, ground.p))]
@@ -360,6 +364,9 @@ struct Twin {
     c6: Capacitor,
     d1: ShockleyDiode,
     d2: ShockleyDiode,
+    /// SPICE's gmin across each junction, as the netlist's diodes have.
+    gd1: Resistor,
+    gd2: Resistor,
     v2: VoltageSource,
     r5: Resistor,
     c3: Capacitor,
@@ -473,6 +480,8 @@ fn every_element_in_subcircuits() {
         c6: Capacitor { c: 1e-3 },
         d1: diode.clone(),
         d2: diode,
+        gd1: Resistor { r: 1e12 },
+        gd2: Resistor { r: 1e12 },
         v2: VoltageSource { u: pulse(0.0) },
         r5: Resistor { r: 1.0 },
         c3: Capacitor { c: 1.0 },
@@ -575,12 +584,16 @@ D2 0 a dmod
 #[derive(Interconnection, Clone)]
 #[dirac(connect(v1.p, r1.p), connect(r1.n, c1.p), connect(r1.n, d1.p), connect(r1.n, d2.n))]
 #[dirac(connect(v1.n, ground.p), connect(c1.n, ground.p), connect(d1.n, ground.p), connect(d2.p, ground.p))]
+#[dirac(connect(r1.n, g1.p), connect(g1.n, ground.p), connect(g2.p, ground.p), connect(g2.n, r1.n))]
 struct ClipperTwin {
     v1: DampedSineVoltage,
     r1: Resistor,
     c1: Capacitor,
     d1: ShockleyDiode,
     d2: ShockleyDiode,
+    /// SPICE's gmin across each junction, as the netlist's diodes have.
+    g1: Resistor,
+    g2: Resistor,
     ground: Gnd,
 }
 
@@ -588,13 +601,14 @@ struct ClipperTwin {
 fn a_diode_clipper_in_a_subcircuit_follows_its_equation_and_its_derived_twin() {
     let run =
         spice::parse(CLIPPER).expect("reads").circuit().expect("a circuit").simulate(1e-10).expect("runs");
-    // The reference: C v' = (u − v)/R − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1), written here and
-    // integrated by RK4 with 4·10⁵ steps of 0.1 µs (the diodes' time constant is about 5 µs).
-    let (r, c, is) = (1e3, 1e-6, 1e-14);
+    // The reference: C v' = (u − v)/R − is (e^{v/vt} − 1) + is (e^{−v/vt} − 1) − 2 gmin v (SPICE's
+    // gmin, 1e-12 S, across each junction), written here and integrated by RK4 with 4·10⁵ steps
+    // of 0.1 µs (the diodes' time constant is about 5 µs).
+    let (r, c, is, gmin) = (1e3, 1e-6, 1e-14, 1e-12);
     let vt = VT;
     let f = |t: f64, v: f64| {
         let u = 2.0 * (std::f64::consts::TAU * 50.0 * t).sin();
-        ((u - v) / r - is * ((v / vt).exp() - 1.0) + is * ((-v / vt).exp() - 1.0)) / c
+        ((u - v) / r - is * ((v / vt).exp() - 1.0) + is * ((-v / vt).exp() - 1.0) - 2.0 * gmin * v) / c
     };
     let (h, steps) = (1e-7, 400_000);
     let (mut v, mut reference) = (0.0, vec![0.0]);
@@ -632,6 +646,8 @@ fn a_diode_clipper_in_a_subcircuit_follows_its_equation_and_its_derived_twin() {
         c1: Capacitor { c },
         d1: diode.clone(),
         d2: diode,
+        g1: Resistor { r: 1.0 / gmin },
+        g2: Resistor { r: 1.0 / gmin },
         ground: Gnd {},
     };
     let q = twin.sizes().zeros_q::<ClipperTwin>();
@@ -742,9 +758,9 @@ fn what_is_not_supported_is_refused_with_its_line_and_column() {
     let e = refused("t\nV1 a 0 PWL(0 0 1m 1 r=0)\nR1 a 0 1\n");
     assert_eq!((e.line, e.column), (2, 21));
     assert!(e.message.contains("a repeated `PWL` (`r=`) is not supported"), "{e}");
-    let e = refused("t\nV1 a 0 AC 1\nR1 a 0 1\n");
+    let e = refused("t\nV1 a 0 EXP(0 1)\nR1 a 0 1\n");
     assert_eq!((e.line, e.column), (2, 8));
-    assert!(e.message.contains("`ac` is not supported here"), "{e}");
+    assert!(e.message.contains("`exp` is not supported here"), "{e}");
     let e = refused("t\nR1 a 0 1\n  .subckt amp a b\nR2 a b 1\n");
     assert_eq!((e.line, e.column), (3, 3));
     assert!(e.message.contains("`.subckt amp` has no `.ends`"), "{e}");
@@ -833,9 +849,9 @@ fn circuits_no_solver_could_simulate_are_refused_naming_the_elements() {
     assert!(e.message.contains("`d1` closes a loop of voltage sources"), "{e}");
 }
 
-/// 10⁴ netlists made from the test netlist by deleting, repeating, swapping and changing
-/// characters and lines (a fixed seed): reading and building never panic and every refusal
-/// names a line of the netlist. A longer run: `DIRAC_SPICE_FUZZ=100000`.
+/// 10⁴ netlists made from the test netlists (two of them transient, one with an `.ac`) by
+/// deleting, repeating, swapping and changing characters and lines (a fixed seed): reading,
+/// building and sweeping never panic and every refusal names a line of the netlist. A longer run: `DIRAC_SPICE_FUZZ=100000`.
 #[test]
 fn mutated_netlists_never_panic_and_every_refusal_has_a_line() {
     let count: usize = std::env::var("DIRAC_SPICE_FUZZ").ok().and_then(|s| s.parse().ok()).unwrap_or(10_000);
@@ -848,7 +864,8 @@ fn mutated_netlists_never_panic_and_every_refusal_has_a_line() {
     let (mut read, mut refusals) = (0, 0);
     let mut slowest = std::time::Duration::ZERO;
     for _ in 0..count {
-        let base = if next(2) == 0 { EVERY_ELEMENT } else { IN_SUBCIRCUITS };
+        let swept = include_str!("../spice/ac/controlled.cir");
+        let base = [EVERY_ELEMENT, IN_SUBCIRCUITS, swept][next(3)];
         let mut text: Vec<char> = base.chars().collect();
         for _ in 0..1 + next(4) {
             let k = next(text.len());
@@ -879,7 +896,14 @@ fn mutated_netlists_never_panic_and_every_refusal_has_a_line() {
         let text: String = text.into_iter().collect();
         let lines = text.lines().count().max(1);
         let clock = std::time::Instant::now();
-        let outcome = std::panic::catch_unwind(|| spice::parse(&text).and_then(|n| n.circuit().map(|_| ())));
+        let outcome = std::panic::catch_unwind(|| {
+            let netlist = spice::parse(&text)?;
+            let circuit = netlist.circuit()?;
+            match netlist.ac() {
+                Some(_) => circuit.ac().map(|_| ()),
+                None => Ok(()),
+            }
+        });
         slowest = slowest.max(clock.elapsed());
         match outcome {
             Ok(Ok(())) => read += 1,
@@ -1008,7 +1032,7 @@ fn options_are_accepted_and_what_is_ignored_is_named() {
 
 /// The DC operating point a `.tran` without `uic` starts from, against ngspice's `op` on the
 /// same netlists (`tests/spice/op/*.cir`; `tests/references/spice_op.csv`, computed by
-/// `bash tests/references/spice_op.sh` at tolerances far below ngspice's defaults): every node
+/// `bash tests/references/spice.sh` at tolerances far below ngspice's defaults): every node
 /// voltage and every voltage source's current at `t = 0` to 1e-9 of the largest of its kind.
 /// Where the sources are constant the operating point is a rest of the transient: the run
 /// stays there to 1e-9 (which the inductors' currents, not printed by dirac, must also be
@@ -1112,4 +1136,159 @@ fn absurd_values_give_a_finite_operating_point_or_an_error() {
             Err(error) => assert!(!error.message.is_empty(), "{text}"),
         }
     }
+}
+
+/// `.ac` against ngspice's sweeps of the same netlists (`tests/spice/ac/*.cir`:
+/// `tests/references/spice_ac.csv`, computed by `bash tests/references/spice.sh` with the
+/// operating point at tolerances far below ngspice's defaults): every node voltage and every
+/// current dirac records, at every frequency, to 1e-9 of the column's largest magnitude, and the
+/// frequencies ngspice steps to 1e-12. The netlists hold a filter driven by a current source
+/// with a phase, a diode biased at its operating point (its small-signal conductance), and
+/// E, F, G and H sources with coupled inductors.
+#[test]
+fn the_small_signal_sweep_is_ngspices() {
+    let reference = include_str!("../references/spice_ac.csv");
+    let mut netlists: Vec<&str> = reference.lines().skip(1).filter_map(|l| l.split(',').next()).collect();
+    netlists.dedup();
+    assert_eq!(netlists.len(), 3);
+    for netlist in netlists {
+        let text = std::fs::read_to_string(format!("{}/../{netlist}", env!("CARGO_MANIFEST_DIR")))
+            .expect("the netlist");
+        let sweep = spice::parse(&text).expect("reads").circuit().expect("a circuit").ac().expect("sweeps");
+        // ngspice's rows: (frequency, name, value).
+        let rows: Vec<(f64, &str, Complex<f64>)> = reference
+            .lines()
+            .filter(|l| l.starts_with(&format!("{netlist},")))
+            .map(|l| {
+                let f: Vec<&str> = l.split(',').collect();
+                let number = |k: usize| f[k].parse::<f64>().expect("a number");
+                (number(1), f[2], Complex::new(number(3), number(4)))
+            })
+            .collect();
+        let mut frequencies: Vec<f64> = rows.iter().map(|r| r.0).collect();
+        frequencies.dedup();
+        assert_eq!(sweep.frequencies().len(), frequencies.len(), "{netlist}: the number of frequencies");
+        for (ours, theirs) in sweep.frequencies().iter().zip(&frequencies) {
+            assert!(
+                (ours - theirs).abs() <= 1e-12 * theirs,
+                "{netlist}: {ours} Hz against ngspice's {theirs}"
+            );
+        }
+        let mut compared = 0;
+        for name in sweep.names() {
+            let column = sweep.column(name).expect("a column");
+            let theirs: Vec<Complex<f64>> = rows.iter().filter(|r| r.1 == name).map(|r| r.2).collect();
+            assert_eq!(theirs.len(), column.len(), "{netlist}: ngspice has no column {name}");
+            let largest = theirs.iter().fold(0.0_f64, |m, z| m.max(z.norm()));
+            for ((ours, theirs), f) in column.iter().zip(&theirs).zip(&frequencies) {
+                // A node a source holds at zero is zero in both.
+                let error = (ours - theirs).norm();
+                assert!(error <= 1e-9 * largest, "{netlist}: {name} at {f} Hz is {ours}, ngspice {theirs}");
+            }
+            compared += 1;
+        }
+        assert!(compared >= 4, "{netlist}: {compared} columns compared");
+    }
+}
+
+/// `.ac` against the transfer functions of a series RLC written here: the capacitor's voltage
+/// `1 / (1 − ω²LC + jωRC)` of the source's, scaled by its `AC 2 -30` (magnitude 2, −30°), and a
+/// current source's `AC` into a parallel RC, `Z = R / (1 + jωRC)`, at every `lin` and `oct`
+/// point; a sine source with an `AC` is still a sine in `.tran`.
+#[test]
+fn the_small_signal_sweep_is_the_transfer_function() {
+    let netlist = "rlc\nV1 in 0 SIN(0 1 1k) AC 2 -30\nR1 in a 10\nL1 a b 1m\nC1 b 0 1u\n\
+                   I1 0 p DC 1m AC 1\nR2 p 0 1k\nC2 p 0 1u\n.ac lin 41 100 20k\n.tran 10u 1m\n.end\n";
+    let circuit = spice::parse(netlist).expect("reads").circuit().expect("a circuit");
+    let sweep = circuit.ac().expect("sweeps");
+    assert_eq!(sweep.frequencies().len(), 41);
+    let (source, v_b, v_p) = (
+        Complex::from_polar(2.0, (-30.0_f64).to_radians()),
+        sweep.column("v(b)").expect("a node"),
+        sweep.column("v(p)").expect("a node"),
+    );
+    for (k, f) in sweep.frequencies().iter().enumerate() {
+        assert!((f - (100.0 + 497.5 * k as f64)).abs() < 1e-9);
+        let w = std::f64::consts::TAU * f;
+        let series = source / Complex::new(1.0 - w * w * 1e-3 * 1e-6, w * 10.0 * 1e-6);
+        let parallel = 1e3 / Complex::new(1.0, w * 1e3 * 1e-6);
+        assert!(
+            (v_b[k] - series).norm() < 1e-10 * series.norm(),
+            "v(b) at {f} Hz: {} against {series}",
+            v_b[k]
+        );
+        assert!((v_p[k] - parallel).norm() < 1e-10 * parallel.norm(), "v(p) at {f} Hz");
+    }
+    // The transient still follows the sine from the operating point (zero there), to the
+    // tolerance: a sample between a step's ends is read from its collocation polynomial.
+    let run = circuit.simulate(1e-8).expect("runs");
+    let v_in = run.column("v(in)").expect("a node");
+    for (t, v) in run.times().iter().zip(v_in) {
+        assert!((v - (std::f64::consts::TAU * 1e3 * t).sin()).abs() < 1e-7, "v(in) at {t}");
+    }
+    // Octaves: from 1 kHz, 3 a octave, to 8 kHz: 10 points.
+    let octaves =
+        spice::parse("oct\nI1 0 p AC 1\nR2 p 0 1k\nC2 p 0 1u\n.ac oct 3 1k 8k\n.end\n").expect("reads");
+    let f = octaves.circuit().expect("a circuit").ac().expect("sweeps").frequencies().to_vec();
+    assert_eq!(f.len(), 10);
+    assert!((f[9] - 8e3).abs() < 1e-9 && (f[3] - 2e3).abs() < 1e-9);
+}
+
+/// What `.ac` cannot do is refused with its line: a spacing it does not know, a start at zero,
+/// a stop below the start, a sweep of more than 10⁶ points; an ideal diode, which has no
+/// small-signal model; and a netlist without `.ac`.
+#[test]
+fn a_sweep_that_cannot_be_run_is_refused_with_its_line() {
+    let refused = |commands: &str, part: &str| {
+        let text = format!("t\nV1 a 0 AC 1\nR1 a b 1k\n{part}\n{commands}\n.end\n");
+        match spice::parse(&text).and_then(|n| n.circuit()).and_then(|c| c.ac()) {
+            Ok(_) => panic!("{commands} with {part} was accepted"),
+            Err(e) => e,
+        }
+    };
+    let e = refused(".ac log 10 1 1k", "C1 b 0 1u");
+    assert_eq!((e.line, e.column), (5, 5), "{e}");
+    assert!(e.message.contains("`dec`, `oct` or `lin`"), "{e}");
+    let e = refused(".ac dec 10 0 1k", "C1 b 0 1u");
+    assert!(e.message.contains("start frequency 0 must be positive"), "{e}");
+    let e = refused(".ac dec 10 1k 1", "C1 b 0 1u");
+    assert!(e.message.contains("must be at least the start"), "{e}");
+    let e = refused(".ac lin 2.5 1 1k", "C1 b 0 1u");
+    assert!(e.message.contains("whole number"), "{e}");
+    let e = refused(".ac dec 1000000 1 1e300", "C1 b 0 1u");
+    assert!(e.message.contains("at most 10⁶"), "{e}");
+    let e = refused(".ac dec 10 1 1k", "D1 b 0 ideal\n.model ideal D(ideal)");
+    assert!(e.message.contains("ideal diode") && e.line == 6, "{e}");
+    let e =
+        spice::parse("t\nV1 a 0 1\nR1 a 0 1\n.op\n.end\n").expect("reads").circuit().expect("a circuit").ac();
+    assert!(e.expect_err("no .ac").message.contains("no `.ac`"));
+}
+
+/// `.tran`'s largest step is read and not applied unless asked for: an RC charge printed every
+/// 0.1 ms with a largest step of 1 µs takes tens of steps, and 5000 or more when the step is
+/// bounded, both within 1e-7 of the closed form `1 − e^{−t/RC}` at every printed point.
+#[test]
+fn the_largest_step_is_read_and_applied_only_when_asked() {
+    let text = "RC\nV1 in 0 1\nR1 in out 1k\nC1 out 0 1u\n.tran 0.1m 5m 0 1u uic\n.end\n";
+    let mut circuit = spice::parse(text).expect("reads").circuit().expect("a circuit");
+    assert_eq!(circuit.tran().and_then(|t| t.max_step), Some(1e-6));
+    let run = |circuit: &spice::Circuit| {
+        let mut steps = 0;
+        let waves = circuit.simulate_observed(1e-8, |_, n| steps = n).expect("runs");
+        let v = waves.column("v(out)").expect("a node");
+        let worst = waves
+            .times()
+            .iter()
+            .zip(v)
+            .map(|(t, v)| (v - (1.0 - (-t / 1e-3).exp())).abs())
+            .fold(0.0, f64::max);
+        assert_eq!(waves.times().len(), 51);
+        (steps, worst)
+    };
+    let (free, free_error) = run(&circuit);
+    circuit.bound_steps_by_max_step(true);
+    let (bounded, bounded_error) = run(&circuit);
+    assert!(free < 100, "{free} steps without the bound");
+    assert!(bounded >= 5000, "{bounded} steps with the bound");
+    assert!(free_error < 1e-7 && bounded_error < 1e-7, "{free_error:e}, {bounded_error:e}");
 }

@@ -1,7 +1,7 @@
 """ngspice's DC operating points of the netlists in tests/spice/op/, for
 tests/integration/spice.rs, independently of dirac:
 
-    bash tests/references/spice_op.sh
+    bash tests/references/spice.sh
 
 Each netlist's `.tran` and `.end` are removed and ngspice's `op` is run with tolerances far
 below its defaults (reltol 1e-12, abstol 1e-18 A, vntol 1e-15 V), printing 15 digits. Writes
