@@ -1,4 +1,5 @@
-"""LC ladder netlists and their exact solution, for benches/peers/spice.sh.
+"""LC ladder netlists and their exact solution, for benches/peers/spice.sh; the other circuits
+of the comparison and their references.
 
 `netlist N FILE`: an N-node ladder (L = C = 1; L1 from ground to node 1, Lk from node k-1 to k,
 Ck from node k to ground), node voltages starting from a Gaussian pulse five nodes wide centred
@@ -28,7 +29,7 @@ def window(n):
     return list(range(max(1, centre - 200), min(n, centre + 200) + 1))
 
 
-def netlist(n, path):
+def netlist(n, path, tran=".tran 1 10 uic"):
     v0 = pulse(n)
     with open(path, "w") as f:
         f.write(f"LC ladder of {n} nodes from a pulse\n")
@@ -38,7 +39,7 @@ def netlist(n, path):
         # Voltages below 1e-300 are written as zero: the pulse's tails underflow anyway.
         f.write(".ic " + " ".join(f"v(n{k})={v0[k - 1]:.17e}" for k in range(1, n + 1) if v0[k - 1] > 1e-300) + "\n")
         f.write(".save " + " ".join(f"v(n{k})" for k in window(n)) + "\n")
-        f.write(".tran 1 10 uic\n.end\n")
+        f.write(f"{tran}\n.end\n")
 
 
 def reference(n, path, t=10.0):
@@ -127,29 +128,31 @@ def rlc_reference(n, path, t=10.0):
 
 
 CLIPPER = """diode clipper
-V1 in 0 SIN(0 2 50)
+V1 in 0 SIN(0 2 1k)
 R1 in out 1k
-C1 out 0 1u
+C1 out 0 10n
 D1 out 0 dmod
 D2 0 out dmod
 .model dmod D(IS=1e-14 N=1)
 .save v(out)
-.tran 1m 40m
+.tran 10u 4m
 .end
 """
 
 
 def clipper_reference(path):
-    """The clipper's output at 40 ms: C v' = (u - v)/R - is (e^(v/vt) - 1) + is (e^(-v/vt) - 1),
-    by scipy's DOP853 and Radau at tight tolerances, which must agree."""
+    """The clipper's output at 4 ms: C v' = (u - v)/R - is (e^(v/vt) - 1) + is (e^(-v/vt) - 1)
+    - 2 gmin v (SPICE's gmin, 1e-12 S, across each junction), by scipy's DOP853 and Radau at
+    tight tolerances, which must agree."""
     from scipy.integrate import solve_ivp
     # k T / q at 27 °C with the constants ngspice 39 uses (CODATA 2014, its const.h), as dirac.
     vt = 1.38064852e-23 * 300.15 / 1.6021766208e-19
     def f(t, v):
-        u = 2.0 * np.sin(2 * np.pi * 50.0 * t)
-        return [((u - v[0]) / 1e3 - 1e-14 * np.expm1(v[0] / vt) + 1e-14 * np.expm1(-v[0] / vt)) / 1e-6]
-    a = solve_ivp(f, (0, 0.04), [0.0], method="DOP853", rtol=1e-13, atol=1e-16).y[0, -1]
-    b = solve_ivp(f, (0, 0.04), [0.0], method="Radau", rtol=1e-12, atol=1e-15).y[0, -1]
+        u = 2.0 * np.sin(2 * np.pi * 1e3 * t)
+        i = (u - v[0]) / 1e3 - 1e-14 * np.expm1(v[0] / vt) + 1e-14 * np.expm1(-v[0] / vt) - 2e-12 * v[0]
+        return [i / 1e-8]
+    a = solve_ivp(f, (0, 4e-3), [0.0], method="DOP853", rtol=1e-13, atol=1e-16).y[0, -1]
+    b = solve_ivp(f, (0, 4e-3), [0.0], method="Radau", rtol=1e-12, atol=1e-15).y[0, -1]
     assert abs(a - b) < 1e-9, (a, b)
     with open(path, "w") as out:
         out.write(f"out {a:.17e}\n")
@@ -191,56 +194,82 @@ def controlled_reference(path):
             out.write(f"{node} {v:.17e}\n")
 
 
-def timed(command, env=None):
-    """The median wall time of three runs of `command` (a whole process: reading, building,
-    simulating, writing), which must succeed."""
-    times = []
-    for _ in range(3):
-        start = time.perf_counter()
-        subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
-        times.append(time.perf_counter() - start)
-    return sorted(times)[1]
+def run(command, env=None):
+    """The wall time of one run of `command` (a whole process: reading, building, simulating,
+    writing), which must succeed."""
+    start = time.perf_counter()
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env)
+    return time.perf_counter() - start
+
+
+ROUNDS = 3
 
 
 def compare(sizes, ngspice, dirac, out):
-    """Runs both simulators on each circuit over a range of tolerances; prints a table of
+    """Runs both simulators on each circuit over a range of tolerances, dirac's and ngspice's
+    runs alternated, ROUNDS rounds, each run's time the median of its rounds; prints a table of
     (time, error) and, for every ngspice run, dirac's error at ngspice's time and dirac's time
-    at ngspice's error, interpolated log-log between dirac's runs."""
+    at ngspice's error, interpolated log-log between dirac's runs.
+
+    Cases with a largest step (`.tran`'s fourth value) are run by dirac as it reads them (the
+    step not applied: Radau's error control bounds its error and its dense output gives every
+    printed point) and, shown beside them and not compared, with `--max-step` (applied)."""
     env = dict(os.environ, SPICE_ASCIIRAWFILE="1")
-    cases = [("LC ladder", n) for n in sizes] + [("RLC ladder", 1000), ("diode clipper", 1), ("controlled sources", 1)]
+    cases = [("LC ladder", n, False) for n in sizes] + [("LC ladder", n, True) for n in sizes]
+    cases += [("RLC ladder", 1000, False), ("diode clipper", 1, False), ("diode clipper", 1, True),
+              ("controlled sources", 1, False)]
     rows = []
-    for name, n in cases:
+    for name, n, bounded in cases:
         stem = {"LC ladder": f"lc{n}", "RLC ladder": f"rlc{n}", "diode clipper": "clipper",
-                "controlled sources": "controlled"}[name]
+                "controlled sources": "controlled"}[name] + ("_max" if bounded else "")
         cir, ref = f"{out}/{stem}.cir", f"{out}/{stem}.ref"
-        stop = {"diode clipper": 0.04, "controlled sources": 5.0}.get(name, 10.0)
+        stop = {"diode clipper": 4e-3, "controlled sources": 5.0}.get(name, 10.0)
         if name == "LC ladder":
-            netlist(n, cir)
+            netlist(n, cir, ".tran 0.01 10 0 0.01 uic" if bounded else ".tran 1 10 uic")
             reference(n, ref)
         elif name == "RLC ladder":
             rlc_netlist(n, cir)
             rlc_reference(n, ref)
         elif name == "diode clipper":
-            open(cir, "w").write(CLIPPER)
+            open(cir, "w").write(CLIPPER.replace(".tran 10u 4m", ".tran 10u 4m 0 1u" if bounded else ".tran 10u 4m"))
             clipper_reference(ref)
         else:
             open(cir, "w").write(CONTROLLED)
             controlled_reference(ref)
+        label = f"{name}, max step" if bounded else name
         body = open(cir).read().replace(".end\n", "")
-        ours = []
+        # Every run of the case: (simulator, setting, command, env, result file).
+        runs = []
         for tol in (1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
-            csv = f"{out}/{stem}_dirac.csv"
-            seconds = timed([dirac, cir, "--tol", f"{tol:g}", "--out", csv, "--svg", f"{out}/{stem}_dirac.svg"])
-            ours.append((seconds, error(csv, ref, stop)))
-            rows.append(("dirac Radau", name, n, f"tol {tol:g}", seconds, ours[-1][1]))
+            csv = f"{out}/{stem}_dirac_{tol:g}.csv"
+            runs.append(("dirac Radau", f"tol {tol:g}", [dirac, cir, "--tol", f"{tol:g}", "--out", csv, "--svg", f"{out}/{stem}_dirac.svg"], None, csv))
+        if bounded:
+            for tol in (1e-3, 1e-6, 1e-9):
+                csv = f"{out}/{stem}_dirac_max_{tol:g}.csv"
+                runs.append(("dirac Radau, --max-step", f"tol {tol:g}", [dirac, cir, "--tol", f"{tol:g}", "--max-step", "--out", csv, "--svg", f"{out}/{stem}_dirac.svg"], None, csv))
         for method in ("trap", "gear"):
-            for reltol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8):
-                deck, raw = f"{out}/{stem}_{method}.cir", f"{out}/{stem}_{method}.raw"
+            for reltol in (1e-3, 1e-4, 1e-5, 1e-6):
+                deck, raw = f"{out}/{stem}_{method}_{reltol:g}.cir", f"{out}/{stem}_{method}_{reltol:g}.raw"
                 with open(deck, "w") as f:
                     f.write(body + f".options reltol={reltol:g} method={method}\n.end\n")
-                seconds = timed([ngspice, "-b", "-r", raw, deck], env)
-                e = error(raw, ref, stop)
-                rows.append((f"ngspice {method}", name, n, f"reltol {reltol:g}", seconds, e, *against(ours, seconds, e)))
+                runs.append((f"ngspice {method}", f"reltol {reltol:g}", [ngspice, "-b", "-r", raw, deck], env, raw))
+        # Alternated: dirac's runs and ngspice's interleaved, round after round.
+        ours_first = [k for k in range(len(runs)) if runs[k][0].startswith("dirac")]
+        theirs = [k for k in range(len(runs)) if runs[k][0].startswith("ngspice")]
+        order = [k for pair in zip(ours_first, theirs) for k in pair]
+        order += [k for k in range(len(runs)) if k not in order]
+        times = [[] for _ in runs]
+        for _ in range(ROUNDS):
+            for k in order:
+                times[k].append(run(runs[k][2], runs[k][3]))
+        seconds = [sorted(t)[len(t) // 2] for t in times]
+        errors = [error(r[4], ref, stop) for r in runs]
+        ours = [(seconds[k], errors[k]) for k in range(len(runs)) if runs[k][0] == "dirac Radau"]
+        for k, r in enumerate(runs):
+            row = (r[0], label, n, r[1], seconds[k], errors[k])
+            if r[0].startswith("ngspice"):
+                row += tuple(against(ours, seconds[k], errors[k]))
+            rows.append(row)
     print("| simulator | circuit | nodes | setting | wall time (s) | error | dirac's error at this time | ratio | dirac's time at this error | ratio |")
     print("|---|---|---:|---|---:|---:|---:|---:|---:|---:|")
     for r in rows:
@@ -251,6 +280,11 @@ def compare(sizes, ngspice, dirac, out):
         else:
             line += " | | | |"
         print(line)
+    compared = [r for r in rows if len(r) > 6]
+    met = [r for r in compared if r[5] / r[6] >= 100]
+    print(f"\n{len(met)} of {len(compared)} ngspice runs: dirac's error at ngspice's time at least 100× smaller; "
+          f"smallest margin {min(r[5] / r[6] for r in compared):.0f}×; "
+          f"dirac's time at ngspice's error {min(r[7] / r[4] for r in compared):.2f}–{max(r[7] / r[4] for r in compared):.2f}×")
 
 
 def against(ours, seconds, e):
