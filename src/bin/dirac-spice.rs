@@ -99,12 +99,7 @@ fn run() -> Result<(), String> {
             ),
             false => (file.with_extension("ac.csv"), file.with_extension("ac.svg")),
         };
-        let handle = std::fs::File::create(&csv).map_err(|e| format!("{}: {e}", csv.display()))?;
-        let mut writer = std::io::BufWriter::new(handle);
-        sweep
-            .write_csv(&mut writer)
-            .and_then(|()| writer.flush())
-            .map_err(|e| format!("{}: {e}", csv.display()))?;
+        write_file(&csv, |w| sweep.write_csv(w))?;
         sweep.write_svg(&title, &figure).map_err(|e| format!("{}: {e}", figure.display()))?;
         eprintln!(
             "`.ac`: {} frequencies of {} columns in {:.3} s, written to {} and {}",
@@ -140,12 +135,7 @@ fn run() -> Result<(), String> {
     }
     let seconds = clock.elapsed().as_secs_f64();
     let out = out.unwrap_or_else(|| file.with_extension("csv"));
-    let handle = std::fs::File::create(&out).map_err(|e| format!("{}: {e}", out.display()))?;
-    let mut writer = std::io::BufWriter::new(handle);
-    waves
-        .write_csv(&mut writer)
-        .and_then(|()| writer.flush())
-        .map_err(|e| format!("{}: {e}", out.display()))?;
+    write_file(&out, |w| waves.write_csv(w))?;
     let svg = svg.unwrap_or_else(|| file.with_extension("svg"));
     waves.write_svg(&title, &svg).map_err(|e| format!("{}: {e}", svg.display()))?;
     eprintln!(
@@ -158,6 +148,16 @@ fn run() -> Result<(), String> {
     // The process ends here and its memory with it: no need to free a large network part by part.
     std::mem::forget((circuit, waves, netlist, text));
     Ok(())
+}
+
+/// Writes `path` through a buffer with `write`; an error names the file.
+fn write_file(
+    path: &std::path::Path,
+    write: impl FnOnce(&mut std::io::BufWriter<std::fs::File>) -> std::io::Result<()>,
+) -> Result<(), String> {
+    let fail = |e: std::io::Error| format!("{}: {e}", path.display());
+    let mut writer = std::io::BufWriter::new(std::fs::File::create(path).map_err(fail)?);
+    write(&mut writer).and_then(|()| writer.flush()).map_err(fail)
 }
 
 fn main() -> ExitCode {

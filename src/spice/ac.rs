@@ -154,12 +154,8 @@ impl Circuit {
         let mut columns = vec![Vec::with_capacity(frequencies.len()); self.columns.len()];
         let (n, m) = (linear.n, linear.m);
         for &f in frequencies {
-            let x = solver.solve(&linear, std::f64::consts::TAU * f).map_err(|e| {
-                format!(
-                    "at {f:e} Hz the small-signal equations are singular ({e}): a resonance without loss, \
-                     or a node that nothing but current sources reaches"
-                )
-            })?;
+            let x =
+                solver.solve(&linear, std::f64::consts::TAU * f).map_err(|e| format!("at {f:e} Hz, {e}"))?;
             let at = |k: usize| Complex::new(x[k], x[k + n + m]);
             for (column, (_, place)) in columns.iter_mut().zip(&self.columns) {
                 column.push(match *place {
@@ -278,14 +274,16 @@ struct Solver {
 }
 
 impl Solver {
-    /// The solution `(Re δv, Re δλ, Im δv, Im δλ)` at `ω`, checked finite.
+    /// The solution `(Re δv, Re δλ, Im δv, Im δλ)` at `ω`, checked finite and balancing every
+    /// row to 1e-6 of its terms.
     fn solve(&mut self, linear: &Linear, omega: f64) -> Result<Vec<f64>, String> {
         let size = 2 * (linear.n + linear.m);
         linear.triplets(omega, &mut self.triplets);
         let matrix = SparseColMat::<usize, f64>::try_new_from_triplets(size, size, &self.triplets)
             .map_err(|e| format!("{e:?}"))?;
-        let lu = Lu::try_new_with_symbolic(self.symbolic.clone(), matrix.as_ref())
-            .map_err(|e| format!("{e:?}"))?;
+        let singular = "the small-signal equations are singular: a resonance without loss met exactly, or a \
+                        node that nothing but current sources reaches";
+        let lu = Lu::try_new_with_symbolic(self.symbolic.clone(), matrix.as_ref()).map_err(|_| singular)?;
         let mut x = Mat::<f64>::zeros(size, 1);
         let half = size / 2;
         for (i, r) in linear.rhs.iter().enumerate() {
@@ -295,7 +293,30 @@ impl Solver {
         lu.solve_in_place_with_conj(Conj::No, x.as_mut());
         let x: Vec<f64> = (0..size).map(|i| x[(i, 0)]).collect();
         if x.iter().any(|v| !v.is_finite()) {
-            return Err("the solution is not finite".into());
+            return Err(format!("the solution is not finite ({singular}, or an excitation too large)"));
+        }
+        // Each row's residual against the size of its own terms, and of the round-off its
+        // entries make at the solution's size: a matrix singular to round-off (a lossless
+        // resonance met exactly) leaves rows far from balanced.
+        let (mut residual, mut terms) = (vec![0.0; size], vec![0.0; size]);
+        let (mut entries, largest) = (vec![0.0; size], x.iter().fold(0.0_f64, |m, v| m.max(v.abs())));
+        for (i, r) in linear.rhs.iter().enumerate() {
+            (residual[i], residual[i + half]) = (-r.re, -r.im);
+            (terms[i], terms[i + half]) = (r.re.abs(), r.im.abs());
+        }
+        for t in &self.triplets {
+            residual[t.row] += t.val * x[t.col];
+            terms[t.row] += (t.val * x[t.col]).abs();
+            entries[t.row] += t.val.abs();
+        }
+        let bound = |i: usize| 1e-6 * terms[i] + 16.0 * f64::EPSILON * entries[i] * largest;
+        if let Some(i) = (0..size).find(|&i| residual[i].abs() > bound(i)) {
+            return Err(format!(
+                "the solution leaves row {} unbalanced by {:.1e} of its terms: {singular}, or the elements' \
+                 values differ too much at this frequency",
+                i % half,
+                residual[i].abs() / terms[i]
+            ));
         }
         Ok(x)
     }

@@ -523,6 +523,9 @@ impl Netlist {
             }
             Ok((q, v))
         };
+        // `.ac` linearises about the operating point without `.ic`, whatever `.tran` asks: the
+        // transient's own where it holds no node.
+        let mut small_signal_point = None;
         if !self.tran().is_some_and(|t| t.uic) {
             // SPICE's start without `uic`: the DC operating point, the `.ic` nodes held there.
             let held: Vec<(usize, f64)> = self
@@ -533,6 +536,12 @@ impl Netlist {
                 .map(|(name, value, _)| (index[name.as_str()], *value))
                 .collect();
             (q0, v0) = at_point(&held)?;
+            if held.is_empty() && self.ac().is_some() {
+                small_signal_point = Some((q0.clone(), v0.clone()));
+            }
+        }
+        if self.ac().is_some() && small_signal_point.is_none() {
+            small_signal_point = Some(at_point(&[])?);
         }
         let columns = self.columns(&nodes, &index, &currents)?;
         let drives = driven
@@ -547,8 +556,6 @@ impl Netlist {
                 (network.input_index(&input).expect("a source's input"), magnitude, phase)
             })
             .collect();
-        // `.ac` linearises about the operating point without `.ic`, whatever `.tran` asks.
-        let small_signal_point = self.ac().map(|_| at_point(&[])).transpose()?;
         Ok(Circuit {
             network,
             nodes,

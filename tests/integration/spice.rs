@@ -1292,3 +1292,30 @@ fn the_largest_step_is_read_and_applied_only_when_asked() {
     assert!(bounded >= 5000, "{bounded} steps with the bound");
     assert!(free_error < 1e-7 && bounded_error < 1e-7, "{free_error:e}, {bounded_error:e}");
 }
+
+/// `.ac` is as accurate at the scales electronics uses as at seconds and farads: a series RLC
+/// (R = 1 Ω, L = C = s) driven through its capacitor's voltage, `1 / (1 − ω²LC + jωRC)`, swept
+/// from 0.01/s to 100/s Hz for s = 1, 1e-9 and 1e-12, within the same relative bound of the
+/// transfer function written here at every scale.
+#[test]
+fn the_small_signal_sweep_is_as_accurate_at_every_scale() {
+    for s in [1.0, 1e-9, 1e-12] {
+        let netlist = format!(
+            "rlc at scale {s:e}\nV1 in 0 AC 1\nR1 in a 1\nL1 a b {s:e}\nC1 b 0 {s:e}\n.ac dec 20 {:e} {:e}\n.end\n",
+            0.01 / s,
+            100.0 / s
+        );
+        let sweep =
+            spice::parse(&netlist).expect("reads").circuit().expect("a circuit").ac().expect("sweeps");
+        let v = sweep.column("v(b)").expect("a node");
+        assert_eq!(v.len(), 81);
+        let mut worst = 0.0_f64;
+        for (f, v) in sweep.frequencies().iter().zip(v) {
+            let w = std::f64::consts::TAU * f;
+            let exact = 1.0 / Complex::new(1.0 - w * w * s * s, w * s);
+            worst = worst.max((v - exact).norm() / exact.norm());
+        }
+        eprintln!("scale {s:e}: the largest relative error {worst:e}");
+        assert!(worst < 1e-12, "scale {s:e}: {worst:e}");
+    }
+}
