@@ -184,6 +184,10 @@ fn jacobian_blocks(g: &Graph, b: &Blocks) -> Vec<Assign> {
     assigns
 }
 
+/// The arithmetic operations up to which a kernel is always inlined (see `Emitter::method`):
+/// the 8-link pendulum's largest kernels that a step evaluates together hold a few hundred.
+const ALWAYS_INLINED_OPERATIONS: usize = 1000;
+
 /// Writes methods of one primitive model.
 struct Emitter<'a> {
     model: &'a SymModel,
@@ -276,13 +280,29 @@ impl Emitter<'_> {
         let flat = sig.args.contains(&Arg::Y);
         let header = sig.header(|arg| self.uses(assigns, arg), !assigns.is_empty() || !check.is_empty());
         let body = emit(&self.model.graph, assigns, &|s| self.leaf(s, flat));
+        // A small kernel is inlined wherever it is called, however the compiler splits the
+        // crate into code units: a step that evaluates several (Explicit's accelerations read
+        // the residual, `L_vq` and `L_vv`) then computes what they share (the sines and cosines
+        // of the same angles) once. Left to the inliner's heuristics, the same kernels were
+        // inlined or not with the number of code units and of call sites, and the 8-link
+        // pendulum's explicit step cost 1.2-1.5 times the instructions. A large kernel keeps
+        // the hint alone, so that a large model's code is not copied into every caller; so do
+        // builds with debug assertions (tests), whose compile time matters more than their speed.
+        let inline = if op_count(&self.model.graph, assigns) <= ALWAYS_INLINED_OPERATIONS {
+            quote! {
+                #[cfg_attr(debug_assertions, inline)]
+                #[cfg_attr(not(debug_assertions), inline(always))]
+            }
+        } else {
+            quote! { #[inline] }
+        };
         match sig.out {
             Out::Scalar => quote! {
-                #[inline]
+                #inline
                 #header { let value: ::core::primitive::f64; #body value }
             },
             _ => quote! {
-                #[inline]
+                #inline
                 #header { #check #body }
             },
         }

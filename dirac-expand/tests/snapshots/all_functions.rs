@@ -79,7 +79,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -103,7 +104,8 @@ const _: () = {
                 + ::core::f64::consts::PI * self.k / s0.powi(2);
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -134,7 +136,8 @@ const _: () = {
                 + 0.5f64 * self.k * s6.sinh()
                 - 12.566370614359172f64 * self.k * q[2] / s1.powi(3);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -148,7 +151,8 @@ const _: () = {
             out[2usize] = 0.5f64 * v[2].powi(2) * (-s0.powi(2) + 1f64)
                 + v[2] * (s0 + 2f64);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -206,7 +210,8 @@ const _: () = {
                 - 12.566370614359172f64 * self.k * s25
                 + 75.39822368615503f64 * self.k * s2 / s3.powi(4);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -217,7 +222,8 @@ const _: () = {
             out[(0, 0)] = 0.5f64 * self.m * v[0] * q[0].sin() * q[0].cos();
             out[(1, 2)] = -2f64 * self.m * q[2] * v[1] / (q[2].powi(2) + 1f64).powi(2);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -231,7 +237,8 @@ const _: () = {
             out[(1, 1)] = self.m / (q[2].powi(2) + 1f64);
             out[(2, 2)] = s0 - s0 * v[2].powi(2) * s1 + 2f64 * v[2] * s1 + 2f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             t: ::core::primitive::f64,
@@ -243,7 +250,8 @@ const _: () = {
             out[1usize] = 0f64;
             out[2usize] = -self.k * v[2].powi(3) + q[1] / (t.powi(2) + 1f64);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             t: ::core::primitive::f64,
@@ -253,7 +261,8 @@ const _: () = {
         ) {
             out[(2, 1)] = (t.powi(2) + 1f64).powi(-1);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             t: ::core::primitive::f64,
@@ -264,7 +273,8 @@ const _: () = {
             out[(0, 0)] = -self.k * (0.5f64 * t).cos();
             out[(2, 2)] = -3f64 * self.k * v[2].powi(2);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
@@ -277,7 +287,8 @@ const _: () = {
             out[(1, 1)] = q[0].cos();
             out[(1, 2)] = -(q[0].powi(2) + 1f64);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -289,7 +300,8 @@ const _: () = {
             out[(0, 2)] = v[2] * q[2].sin();
             out[(1, 0)] = -v[1] * q[0].sin() - 2f64 * q[0] * v[2];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -302,7 +314,8 @@ const _: () = {
             out[(2, 0)] = -2f64 * q[0] * lambda[1];
             out[(2, 2)] = q[2].sin() * lambda[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
@@ -311,7 +324,8 @@ const _: () = {
         ) {
             out[0usize] = q[1] + q[0].powi(2) - q[2].sin();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -359,7 +373,8 @@ const _: () = {
             out.constraint_velocity[0usize] = v[1] + 2f64 * q[0] * v[0] - v[2] * s13;
             out.constraint_velocity[1usize] = v[1] * s4 - v[2] * s8;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -451,7 +466,8 @@ const _: () = {
             out.dav_dq[(0, 2)] = v[2] * s23;
             out.dav_dq[(1, 0)] = -v[1] * s0 - 2f64 * q[0] * v[2];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             t: ::core::primitive::f64,
@@ -499,7 +515,8 @@ const _: () = {
             out[9usize] = y[4] + 2f64 * y[0] * y[3] - y[5] * s13;
             out[10usize] = y[4] * s4 - y[5] * s8;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             t: ::core::primitive::f64,
@@ -596,7 +613,8 @@ const _: () = {
             out[(10, 4)] = s8;
             out[(10, 5)] = s26;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -608,7 +626,8 @@ const _: () = {
             out[1usize] = 0f64;
             out[2usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -619,7 +638,8 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
@@ -629,7 +649,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -879,7 +900,8 @@ const _: () = {
             out[1].constraint_velocity[0usize] = 0f64;
             out[1].constraint_velocity[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             t: ::core::primitive::f64,
@@ -917,7 +939,8 @@ const _: () = {
                 - (-s0 + 2f64 * q[0] / (s4 + 1f64)) * w.momentum_rate[0]
                 - v[0] * (0.5f64 * t).cos() * w.momentum_rate[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -949,7 +972,8 @@ const _: () = {
             8usize, 9usize, 10usize, 2usize, 5usize, 8usize, 9usize, 10usize, 3usize,
             4usize, 5usize, 6usize, 7usize, 8usize, 7usize, 8usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             t: ::core::primitive::f64,

@@ -92,7 +92,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -103,7 +104,8 @@ const _: () = {
             value = 0.5f64 * self.m * v[0].powi(2) - 0.5f64 * self.k * q[0].powi(2);
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -113,7 +115,8 @@ const _: () = {
         ) {
             out[0usize] = -self.k * q[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -123,7 +126,8 @@ const _: () = {
         ) {
             out[0usize] = self.m * v[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -133,7 +137,8 @@ const _: () = {
         ) {
             out[(0, 0)] = -self.k;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -141,7 +146,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -151,7 +157,8 @@ const _: () = {
         ) {
             out[(0, 0)] = self.m;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             t: ::core::primitive::f64,
@@ -161,7 +168,8 @@ const _: () = {
         ) {
             out[0usize] = -self.c * v[0] + self.a * (self.w * t).sin();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -169,7 +177,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -179,14 +188,16 @@ const _: () = {
         ) {
             out[(0, 0)] = -self.c;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -194,7 +205,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -202,14 +214,16 @@ const _: () = {
             _lambda: &::dirac::__private::VecC<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecH<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             t: ::core::primitive::f64,
@@ -222,7 +236,8 @@ const _: () = {
                 - self.k * q[0];
             out.dl_dv[0usize] = self.m * v[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -238,7 +253,8 @@ const _: () = {
             out.dpdot_dv[(0, 0)] = -self.c;
             out.l_vv[(0, 0)] = self.m;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             t: ::core::primitive::f64,
@@ -249,7 +265,8 @@ const _: () = {
             out[1usize] = y[2] - self.m * y[1];
             out[2usize] = -self.c * y[1] + self.a * (self.w * t).sin() - self.k * y[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             _t: ::core::primitive::f64,
@@ -262,7 +279,8 @@ const _: () = {
             out[(2, 0)] = -self.k;
             out[(2, 1)] = -self.c;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -272,7 +290,8 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -283,14 +302,16 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecC<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -510,7 +531,8 @@ const _: () = {
             out[4].momentum_rate[0usize] = self.a * t * s0.cos();
             out[4].dl_dv[0usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             t: ::core::primitive::f64,
@@ -531,7 +553,8 @@ const _: () = {
             out[3usize] = s0.sin() * w.momentum_rate[0];
             out[4usize] = self.a * t * s0.cos() * w.momentum_rate[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -562,7 +585,8 @@ const _: () = {
         const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[
             2usize, 0usize, 1usize, 2usize, 1usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             _t: ::core::primitive::f64,

@@ -80,7 +80,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -92,7 +93,8 @@ const _: () = {
                 - self.m * self.g * q[1];
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -103,7 +105,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = -self.m * self.g;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -114,7 +117,8 @@ const _: () = {
             out[0usize] = self.m * v[0];
             out[1usize] = self.m * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -122,7 +126,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -130,7 +135,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -141,7 +147,8 @@ const _: () = {
             out[(0, 0)] = self.m;
             out[(1, 1)] = self.m;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             _t: ::core::primitive::f64,
@@ -152,7 +159,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -160,7 +168,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -168,7 +177,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
@@ -178,7 +188,8 @@ const _: () = {
             out[(0, 0)] = 2f64 * q[0];
             out[(0, 1)] = 2f64 * q[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -189,7 +200,8 @@ const _: () = {
             out[(0, 0)] = 2f64 * v[0];
             out[(0, 1)] = 2f64 * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -201,7 +213,8 @@ const _: () = {
             out[(0, 0)] = s0;
             out[(1, 1)] = s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
@@ -210,7 +223,8 @@ const _: () = {
         ) {
             out[0usize] = q[0].powi(2) + q[1].powi(2) - self.l.powi(2);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -225,7 +239,8 @@ const _: () = {
             out.dl_dv[1usize] = self.m * v[1];
             out.constraint_velocity[0usize] = 2f64 * q[0] * v[0] + 2f64 * q[1] * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -247,7 +262,8 @@ const _: () = {
             out.dav_dq[(0, 0)] = 2f64 * v[0];
             out.dav_dq[(0, 1)] = 2f64 * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             _t: ::core::primitive::f64,
@@ -262,7 +278,8 @@ const _: () = {
             out[5usize] = -self.m * self.g + 2f64 * y[1] * y[6];
             out[6usize] = 2f64 * y[0] * y[2] + 2f64 * y[1] * y[3];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             _t: ::core::primitive::f64,
@@ -288,7 +305,8 @@ const _: () = {
             out[(6, 2)] = s0;
             out[(6, 3)] = s1;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -299,7 +317,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -310,7 +329,8 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
@@ -319,7 +339,8 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -546,7 +567,8 @@ const _: () = {
             out[2].dl_dv[1usize] = 0f64;
             out[2].constraint_velocity[0usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -565,7 +587,8 @@ const _: () = {
             out[1usize] = -self.m * w.momentum_rate[1];
             out[2usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -595,7 +618,8 @@ const _: () = {
             4usize, 6usize, 5usize, 6usize, 0usize, 2usize, 6usize, 1usize, 3usize,
             6usize, 2usize, 3usize, 4usize, 5usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             _t: ::core::primitive::f64,

@@ -94,7 +94,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -106,7 +107,8 @@ const _: () = {
                 - self.m * self.g * q[1];
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -117,7 +119,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = -self.m * self.g;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -128,7 +131,8 @@ const _: () = {
             out[0usize] = self.m * v[0];
             out[1usize] = self.m * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -136,7 +140,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -144,7 +149,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -155,7 +161,8 @@ const _: () = {
             out[(0, 0)] = self.m;
             out[(1, 1)] = self.m;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             _t: ::core::primitive::f64,
@@ -166,7 +173,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -174,7 +182,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -182,7 +191,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
@@ -192,7 +202,8 @@ const _: () = {
             out[(0, 0)] = 2f64 * q[0];
             out[(0, 1)] = 2f64 * q[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -203,7 +214,8 @@ const _: () = {
             out[(0, 0)] = 2f64 * v[0];
             out[(0, 1)] = 2f64 * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -215,7 +227,8 @@ const _: () = {
             out[(0, 0)] = s0;
             out[(1, 1)] = s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
@@ -224,7 +237,8 @@ const _: () = {
         ) {
             out[0usize] = q[0].powi(2) + q[1].powi(2) - self.l.powi(2);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -239,7 +253,8 @@ const _: () = {
             out.dl_dv[1usize] = self.m * v[1];
             out.constraint_velocity[0usize] = 2f64 * q[0] * v[0] + 2f64 * q[1] * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -261,7 +276,8 @@ const _: () = {
             out.dav_dq[(0, 0)] = 2f64 * v[0];
             out.dav_dq[(0, 1)] = 2f64 * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             _t: ::core::primitive::f64,
@@ -276,7 +292,8 @@ const _: () = {
             out[5usize] = -self.m * self.g + 2f64 * y[1] * y[6];
             out[6usize] = 2f64 * y[0] * y[2] + 2f64 * y[1] * y[3];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             _t: ::core::primitive::f64,
@@ -302,7 +319,8 @@ const _: () = {
             out[(6, 2)] = s0;
             out[(6, 3)] = s1;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -313,7 +331,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -324,7 +343,8 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
@@ -333,7 +353,8 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -594,7 +615,8 @@ const _: () = {
             out[4].dl_dv[1usize] = 0f64;
             out[4].constraint_velocity[0usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -615,7 +637,8 @@ const _: () = {
             out[3usize] = 0f64;
             out[4usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -637,7 +660,8 @@ const _: () = {
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
     impl ::dirac::__private::Hybrid for PendulumAndWall {
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn unilateral(
             &self,
             _t: ::core::primitive::f64,
@@ -650,7 +674,8 @@ const _: () = {
             );
             out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn unilateral_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -665,7 +690,8 @@ const _: () = {
             out[0usize] = 1f64;
             out[1usize] = self.w * s0 * (q[1] * s0).sin();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn restitution(
             &self,
             _t: ::core::primitive::f64,
@@ -678,7 +704,8 @@ const _: () = {
             );
             out[0usize] = self.e;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn unilateral_derivatives(
             &self,
             _t: ::core::primitive::f64,
@@ -734,7 +761,8 @@ const _: () = {
         fn unilateral_derivatives_len(&self) -> ::core::primitive::usize {
             36usize
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn events(
             &self,
             _t: ::core::primitive::f64,
@@ -749,7 +777,8 @@ const _: () = {
             out[0usize] = lambda[0];
             out[1usize] = q[1] * v[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn event_derivatives(
             &self,
             _t: ::core::primitive::f64,
@@ -799,7 +828,8 @@ const _: () = {
             4usize, 6usize, 5usize, 6usize, 0usize, 2usize, 6usize, 1usize, 3usize,
             6usize, 2usize, 3usize, 4usize, 5usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             _t: ::core::primitive::f64,
@@ -996,7 +1026,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -1008,7 +1039,8 @@ const _: () = {
                 - self.m * self.g * q[1] + 0.5f64 * v[2].powi(2);
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -1020,7 +1052,8 @@ const _: () = {
             out[1usize] = -self.m * self.g;
             out[2usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -1032,7 +1065,8 @@ const _: () = {
             out[1usize] = self.m * v[1];
             out[2usize] = v[2];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -1040,7 +1074,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -1048,7 +1083,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -1060,7 +1096,8 @@ const _: () = {
             out[(1, 1)] = self.m;
             out[(2, 2)] = 1f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             _t: ::core::primitive::f64,
@@ -1072,7 +1109,8 @@ const _: () = {
             out[1usize] = 0f64;
             out[2usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -1080,7 +1118,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -1088,7 +1127,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
@@ -1102,7 +1142,8 @@ const _: () = {
             out[(1, 1)] = self.w * self.wall_closed * s0 * (q[1] * s0).sin();
             out[(1, 2)] = -self.wall_closed + 1f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -1115,7 +1156,8 @@ const _: () = {
             out[(1, 1)] = self.w * self.wall_closed * v[1] * (q[1] / self.l).cos()
                 / self.l.powi(2);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -1129,7 +1171,8 @@ const _: () = {
                 + self.w * self.wall_closed * (q[1] / self.l).cos() * lambda[1]
                     / self.l.powi(2);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
@@ -1140,7 +1183,8 @@ const _: () = {
             out[1usize] = self.wall_closed * (q[0] - self.w * (q[1] / self.l).cos())
                 + q[2] * (-self.wall_closed + 1f64);
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -1164,7 +1208,8 @@ const _: () = {
             out.constraint_velocity[1usize] = self.wall_closed * v[0]
                 + self.w * self.wall_closed * v[1] * s0 * s2 + v[2] * s1;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -1195,7 +1240,8 @@ const _: () = {
             out.dav_dq[(0, 1)] = 2f64 * v[1];
             out.dav_dq[(1, 1)] = self.w * self.wall_closed * v[1] * s2 * s4;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             _t: ::core::primitive::f64,
@@ -1219,7 +1265,8 @@ const _: () = {
             out[10usize] = self.wall_closed * y[3]
                 + self.w * self.wall_closed * y[4] * s0 * s2 + y[5] * s1;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             _t: ::core::primitive::f64,
@@ -1261,7 +1308,8 @@ const _: () = {
             out[(10, 4)] = s6;
             out[(10, 5)] = s5;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -1273,7 +1321,8 @@ const _: () = {
             out[1usize] = 0f64;
             out[2usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -1284,7 +1333,8 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
@@ -1294,7 +1344,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -1637,7 +1688,8 @@ const _: () = {
             out[5].constraint_velocity[0usize] = 0f64;
             out[5].constraint_velocity[1usize] = v[0] - v[2] + self.w * v[1] * s0 * s3;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -1673,7 +1725,8 @@ const _: () = {
                 + self.w * s0 * s2 * lambda[1] * w.momentum_rate[1]
                 + lambda[1] * w.momentum_rate[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -1731,7 +1784,8 @@ const _: () = {
                 _ => ::core::option::Option::None,
             }
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn unilateral(
             &self,
             _t: ::core::primitive::f64,
@@ -1744,7 +1798,8 @@ const _: () = {
             );
             out[0usize] = q[0] - self.w * (q[1] / self.l).cos();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn unilateral_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -1760,7 +1815,8 @@ const _: () = {
             out[1usize] = self.w * s0 * (q[1] * s0).sin();
             out[2usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn restitution(
             &self,
             _t: ::core::primitive::f64,
@@ -1773,7 +1829,8 @@ const _: () = {
             );
             out[0usize] = self.e;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn unilateral_derivatives(
             &self,
             _t: ::core::primitive::f64,
@@ -1847,7 +1904,8 @@ const _: () = {
         fn unilateral_derivatives_len(&self) -> ::core::primitive::usize {
             54usize
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn events(
             &self,
             _t: ::core::primitive::f64,
@@ -1862,7 +1920,8 @@ const _: () = {
             out[0usize] = lambda[0];
             out[1usize] = q[1] * v[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn event_derivatives(
             &self,
             _t: ::core::primitive::f64,
@@ -1922,7 +1981,8 @@ const _: () = {
             1usize, 4usize, 9usize, 10usize, 2usize, 5usize, 10usize, 3usize, 4usize,
             5usize, 6usize, 7usize, 6usize, 7usize, 8usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             _t: ::core::primitive::f64,

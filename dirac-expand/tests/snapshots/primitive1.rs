@@ -86,7 +86,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -99,7 +100,8 @@ const _: () = {
                 - 0.5f64 * self.k2 * (q[1] - q[0]).powi(2);
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -111,7 +113,8 @@ const _: () = {
             out[0usize] = -self.k1 * q[0] + self.k2 * s0;
             out[1usize] = -self.k2 * s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -122,7 +125,8 @@ const _: () = {
             out[0usize] = self.m1 * v[0];
             out[1usize] = self.m2 * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -136,7 +140,8 @@ const _: () = {
             out[(1, 0)] = self.k2;
             out[(1, 1)] = s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -144,7 +149,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -155,7 +161,8 @@ const _: () = {
             out[(0, 0)] = self.m1;
             out[(1, 1)] = self.m2;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             _t: ::core::primitive::f64,
@@ -166,7 +173,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -174,7 +182,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -182,14 +191,16 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -197,7 +208,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatCQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -205,14 +217,16 @@ const _: () = {
             _lambda: &::dirac::__private::VecC<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecH<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -227,7 +241,8 @@ const _: () = {
             out.dl_dv[0usize] = self.m1 * v[0];
             out.dl_dv[1usize] = self.m2 * v[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -247,7 +262,8 @@ const _: () = {
             out.l_vv[(0, 0)] = self.m1;
             out.l_vv[(1, 1)] = self.m2;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             _t: ::core::primitive::f64,
@@ -262,7 +278,8 @@ const _: () = {
             out[4usize] = -self.k1 * y[0] + self.k2 * s0;
             out[5usize] = -self.k2 * s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             _t: ::core::primitive::f64,
@@ -281,7 +298,8 @@ const _: () = {
             out[(5, 0)] = self.k2;
             out[(5, 1)] = s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -292,7 +310,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -303,14 +322,16 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecC<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -539,7 +560,8 @@ const _: () = {
             out[3].dl_dv[0usize] = 0f64;
             out[3].dl_dv[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -559,7 +581,8 @@ const _: () = {
             out[2usize] = -q[0] * w.momentum_rate[0];
             out[3usize] = -s0 * w.momentum_rate[1] + s0 * w.momentum_rate[0];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -590,7 +613,8 @@ const _: () = {
             4usize, 5usize, 4usize, 5usize, 0usize, 2usize, 1usize, 3usize, 2usize,
             3usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             _t: ::core::primitive::f64,

@@ -95,7 +95,8 @@ const _: () = {
             }
             ::core::option::Option::None
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn lagrangian(
             &self,
             _t: ::core::primitive::f64,
@@ -108,7 +109,8 @@ const _: () = {
                 + 0.5f64 * self.i_turn * v[3].powi(2);
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -121,7 +123,8 @@ const _: () = {
             out[2usize] = 0f64;
             out[3usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -134,7 +137,8 @@ const _: () = {
             out[2usize] = self.i_roll * v[2];
             out[3usize] = self.i_turn * v[3];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_qq(
             &self,
             _t: ::core::primitive::f64,
@@ -142,7 +146,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vq(
             &self,
             _t: ::core::primitive::f64,
@@ -150,7 +155,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vv(
             &self,
             _t: ::core::primitive::f64,
@@ -163,7 +169,8 @@ const _: () = {
             out[(2, 2)] = self.i_roll;
             out[(3, 3)] = self.i_turn;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force(
             &self,
             _t: ::core::primitive::f64,
@@ -176,7 +183,8 @@ const _: () = {
             out[2usize] = 0f64;
             out[3usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -184,7 +192,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn force_dv(
             &self,
             _t: ::core::primitive::f64,
@@ -192,7 +201,8 @@ const _: () = {
             _v: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::MatQQ<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_matrix(
             &self,
             _t: ::core::primitive::f64,
@@ -204,7 +214,8 @@ const _: () = {
             out[(1, 1)] = 1f64;
             out[(1, 2)] = -self.r * q[3].sin();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -215,7 +226,8 @@ const _: () = {
             out[(0, 3)] = self.r * v[2] * q[3].sin();
             out[(1, 3)] = -self.r * v[2] * q[3].cos();
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn datl_dq(
             &self,
             _t: ::core::primitive::f64,
@@ -226,14 +238,16 @@ const _: () = {
             out[(2, 3)] = self.r * q[3].sin() * lambda[0]
                 - self.r * q[3].cos() * lambda[1];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic(
             &self,
             _t: ::core::primitive::f64,
             _q: &::dirac::__private::VecQ<Self>,
             _out: &mut ::dirac::__private::VecH<Self>,
         ) {}
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -256,7 +270,8 @@ const _: () = {
             out.constraint_velocity[0usize] = v[0] - self.r * v[2] * s0;
             out.constraint_velocity[1usize] = v[1] - self.r * v[2] * s1;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_blocks(
             &self,
             _t: ::core::primitive::f64,
@@ -282,7 +297,8 @@ const _: () = {
             out.dav_dq[(0, 3)] = self.r * v[2] * s1;
             out.dav_dq[(1, 3)] = -self.r * v[2] * s0;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual(
             &self,
             _t: ::core::primitive::f64,
@@ -306,7 +322,8 @@ const _: () = {
             out[12usize] = y[4] - self.r * y[6] * s0;
             out[13usize] = y[5] - self.r * y[6] * s1;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian(
             &self,
             _t: ::core::primitive::f64,
@@ -342,7 +359,8 @@ const _: () = {
             out[(13, 5)] = 1f64;
             out[(13, 6)] = s3;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn l_vt(
             &self,
             _t: ::core::primitive::f64,
@@ -355,7 +373,8 @@ const _: () = {
             out[2usize] = 0f64;
             out[3usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dl_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -366,7 +385,8 @@ const _: () = {
             value = 0f64;
             value
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn constraint_rate(
             &self,
             _t: ::core::primitive::f64,
@@ -376,7 +396,8 @@ const _: () = {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn dav_dt(
             &self,
             _t: ::core::primitive::f64,
@@ -657,7 +678,8 @@ const _: () = {
             out[3].constraint_velocity[0usize] = 0f64;
             out[3].constraint_velocity[1usize] = 0f64;
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn residual_blocks_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -681,7 +703,8 @@ const _: () = {
             out[2usize] = v[2] * w.dl_dv[2];
             out[3usize] = v[3] * w.dl_dv[3];
         }
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn holonomic_vjp_dtheta(
             &self,
             _t: ::core::primitive::f64,
@@ -714,7 +737,8 @@ const _: () = {
             2usize, 6usize, 12usize, 13usize, 3usize, 7usize, 4usize, 5usize, 6usize,
             7usize, 8usize, 10usize, 9usize, 10usize,
         ];
-        #[inline]
+        #[cfg_attr(debug_assertions, inline)]
+        #[cfg_attr(not(debug_assertions), inline(always))]
         fn jacobian_csc(
             &self,
             _t: ::core::primitive::f64,

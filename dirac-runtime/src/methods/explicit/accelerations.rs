@@ -260,6 +260,12 @@ where
             }
             model.l_vq(t, q, v, &mut self.lvq);
             M::Algebra::qq_mul(&self.lvq, -1.0, v.as_slice(), &mut x[..n]);
+            // A mass matrix that moves with the state is needed by every evaluation (to compare
+            // with the factored one, or to factor). Evaluated here, beside the other blocks and
+            // from this one place, the compiler inlines it and shares its trigonometry with
+            // theirs; a second call site (in the comparison and in `factor`) kept it out of line
+            // and cost the 8-link pendulum 32% more instructions a solve.
+            model.l_vv(t, q, v, &mut self.lvv);
         }
         // Constraint rows that depend on parameters alone are those of the factorisation held:
         // with no rates and no `∂(A v)/∂q`, the constraints' right-hand side is zero.
@@ -278,22 +284,18 @@ where
         // The factorisation holds while the matrix's entries stay the same: `L_vv` (constant
         // in a separable model, compared otherwise) and the constraint rows.
         let compare = self.changed < 4;
-        let mut lvv_fresh = false;
         let keep = self.factored
             && compare
             && (constant || M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a))
-            && (M::SEPARABLE || {
-                model.l_vv(t, q, v, &mut self.lvv);
-                lvv_fresh = true;
-                M::Algebra::qq_values(&self.lvv) == M::Algebra::qq_values(&self.factored_lvv)
-            });
+            && (M::SEPARABLE
+                || M::Algebra::qq_values(&self.lvv) == M::Algebra::qq_values(&self.factored_lvv));
         if keep {
             self.changed = 0;
         } else {
             if self.factored && compare {
                 self.changed += 1;
             }
-            self.factored = self.factor(model, t, (q, v), lvv_fresh);
+            self.factored = self.factor(model, t, (q, v));
             if !self.factored {
                 return false;
             }
@@ -343,9 +345,9 @@ where
         self.inverse_ready = true;
     }
 
-    /// Factors the system for the constraint rows in `a` (and `L_vv` at `(t, q, v)`, evaluated
-    /// here unless `lvv_fresh` says it was just now).
-    fn factor(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>), lvv_fresh: bool) -> bool {
+    /// Factors the system for the constraint rows in `a` and `L_vv` at `(t, q, v)` (evaluated
+    /// here for a separable model, whose `L_vv` is constant; by `evaluate` otherwise).
+    fn factor(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) -> bool {
         self.factorizations += 1;
         self.inverse_ready = false;
         if let Some(schur) = &mut self.schur {
@@ -358,30 +360,32 @@ where
             schur.a.mul_to(&schur.b, schur.s.matrix_mut());
             return schur.s.factor().is_ok();
         }
-        if !lvv_fresh {
+        if M::SEPARABLE {
             model.l_vv(t, q, v, &mut self.lvv);
         }
         // Along the velocities the forces fix, `L_vv` vanishes; `N Nᵀ` there makes the matrix
-        // regular and sets their accelerations to `Nᵀ` of the balance, zero once settled.
-        let (one, two);
-        let top: &[(f64, &MatQQ<M>)] = match &self.free {
-            Some(free) => {
-                two = [(1.0, &self.lvv), (1.0, &free.projector)];
-                &two
-            }
-            None => {
-                one = [(1.0, &self.lvv)];
-                &one
-            }
-        };
-        self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
-            top,
-            top_transposed: &[],
-            identity: 0.0,
-            right: &[(-1.0, &self.a)],
-            bottom: &[(1.0, 1.0, &self.a)],
-            corner: (0.0, 0.0),
-        });
+        // regular and sets their accelerations to `Nᵀ` of the balance, zero once settled. Each
+        // case assembles from a term list of constant length, so that its loops unroll (one
+        // list of either length cost the 8-link pendulum 3% more instructions a solve).
+        let (right, bottom) = ([(-1.0, &self.a)], [(1.0, 1.0, &self.a)]);
+        match &self.free {
+            Some(free) => self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+                top: &[(1.0, &self.lvv), (1.0, &free.projector)],
+                top_transposed: &[],
+                identity: 0.0,
+                right: &right,
+                bottom: &bottom,
+                corner: (0.0, 0.0),
+            }),
+            None => self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
+                top: &[(1.0, &self.lvv)],
+                top_transposed: &[],
+                identity: 0.0,
+                right: &right,
+                bottom: &bottom,
+                corner: (0.0, 0.0),
+            }),
+        }
         self.saddle.factor().is_ok()
     }
 

@@ -369,15 +369,22 @@ where
     /// quantity at rest sets no scale).
     fn candidate_peaks(&self) -> [f64; 2] {
         let negligible = self.options.rtol * self.options.atol;
-        let peak = |start: f64, xs: &[&VecQ<M>]| {
-            xs.iter()
-                .flat_map(|x| x.iter())
-                .fold(start, |m, x| if x.abs() > negligible { m.max(x.abs()) } else { m })
-        };
-        [
-            peak(self.peaks[0], &[&self.state.q, &self.q_new]),
-            peak(self.peaks[1], &[&self.state.v, &self.v_new]),
-        ]
+        // The size as a constant where the model fixes it, and one indexed pass: an iterator
+        // over both vectors cost the chain 10% more instructions a solve.
+        let n = <M::Nq as nalgebra::Dim>::try_to_usize().unwrap_or(self.sizes.nq);
+        let (q, q_new) = (&self.state.q.as_slice()[..n], &self.q_new.as_slice()[..n]);
+        let (v, v_new) = (&self.state.v.as_slice()[..n], &self.v_new.as_slice()[..n]);
+        let [mut peak_q, mut peak_v] = self.peaks;
+        for i in 0..n {
+            let (a, b) = (q[i].abs().max(q_new[i].abs()), v[i].abs().max(v_new[i].abs()));
+            if a > negligible && a > peak_q {
+                peak_q = a;
+            }
+            if b > negligible && b > peak_v {
+                peak_v = b;
+            }
+        }
+        [peak_q, peak_v]
     }
 
     /// Takes in the state reached after an accepted step.
