@@ -11,12 +11,16 @@
 //! only up to 100 parameters. Ladders of 5, 50, 500 and 5000 cells: 10 to 10⁴ parameters. Run:
 //! `cargo bench -p dirac-benches --bench adjoint`.
 //!
-//! `cargo bench -p dirac-benches --bench adjoint -- peers DIR` is the dirac side of the comparison with SUNDIALS
-//! IDAS's adjoint (`benches/peers/adjoint.sh`): for each ladder it writes into `DIR/<cells>/`
-//! the consistent start `y0.txt`, its derivative `yp0.txt` (`(v, 0, ṗ, 0)`), the cells' `l.txt`
-//! and `c.txt`, and `dirac.txt` (the objective `∫ ½ |q|² dt`, a running cost, and its gradient,
-//! `l_j c_j` a line), and prints a CSV line `cells,n_theta,seconds,steps` with the median time of
-//! 11 gradients (recording and sweep).
+//! `cargo bench -p dirac-benches --bench adjoint -- peers setup DIR` and `… -- peers DIR` are the
+//! dirac side of the comparison with SUNDIALS IDAS's adjoint (`benches/peers/adjoint.sh`), at
+//! equal achieved error. `setup` writes, for each ladder, into `DIR/<cells>/` the consistent
+//! start `y0.txt`, its derivative `yp0.txt` (`(v, 0, ṗ, 0)`), the cells' `l.txt` and `c.txt`,
+//! and `reference.txt`: the objective `∫ ½ |q|² dt` (a running cost) and its gradient, `l_j c_j`
+//! a line, by dirac at `rtol = atol = 1e-12` (the IDAS driver reports how far its own tightest
+//! gradient lies from it, an independent check). The timing run prints the work-precision CSV
+//! `problem,tol,error,seconds,steps` (problem `ladder<cells>`) over tolerances 1e-5 to 1e-10:
+//! the error is the largest difference from the reference gradient over its largest entry, the
+//! seconds the median of 5 gradients (recording and sweep).
 //!
 //! [`Radau::record`]: dirac::Radau::record
 //! [`Recording::gradient`]: dirac::adjoint::Recording::gradient
@@ -43,54 +47,84 @@ fn options() -> RadauOptions {
     RadauOptions::tolerances(1e-8, 1e-8)
 }
 
-/// The dirac side of `benches/peers/adjoint.sh`.
-fn peers(dir: &std::path::Path) {
-    println!("cells,n_theta,seconds,steps");
-    for n in [5, 50, 500, 5000] {
-        let mut ladder = unit_ladder(n);
-        for (j, cell) in ladder.cells.iter_mut().enumerate() {
-            cell.l = 1.0 + 0.3 * (j as f64).sin();
+/// The sizes and tolerances of the comparison with IDAS, and the reference's tolerance.
+const PEER_CELLS: [usize; 4] = [5, 50, 500, 5000];
+const PEER_TOLERANCES: [f64; 6] = [1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
+const REFERENCE_TOLERANCE: f64 = 1e-12;
+
+/// The ladder of `n` cells of the comparison with IDAS, and its start.
+fn peer_ladder(n: usize) -> (Ladder, State<Ladder>) {
+    let mut ladder = unit_ladder(n);
+    for (j, cell) in ladder.cells.iter_mut().enumerate() {
+        cell.l = 1.0 + 0.3 * (j as f64).sin();
+    }
+    let start = ladder_at_rest(&ladder, &pulse(n));
+    (ladder, start)
+}
+
+/// `∫ ½ |q|² dt` over 5 s and its gradient, `l_j c_j` in order, at tolerance `tol`; and the steps.
+fn peer_gradient(ladder: &Ladder, start: &State<Ladder>, tol: f64) -> (Vec<f64>, usize) {
+    let running = |_: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
+        out.q.copy_from(&y.q);
+        0.5 * y.q.norm_squared()
+    };
+    let objective = Objective::running(&running);
+    let mut radau = Radau::new(ladder, RadauOptions::tolerances(tol, tol)).expect("valid");
+    let recording = radau.record(0.0, start, 5.0).expect("integrates");
+    let g = recording.gradient(ladder, &objective).expect("a gradient");
+    let names = ladder.parameter_names();
+    let at = |name: String| names.iter().position(|n| *n == name).expect("a parameter");
+    let order =
+        (0..ladder.cells.len()).flat_map(|j| [at(format!("cells[{j}].l")), at(format!("cells[{j}].c"))]);
+    (std::iter::once(g.value).chain(order.map(|k| g.parameters[k])).collect(), recording.steps())
+}
+
+/// The dirac side of `benches/peers/adjoint.sh`: `setup` writes the problems and the reference
+/// gradients; otherwise the work-precision rows against those references.
+fn peers(dir: &std::path::Path, setup: bool) {
+    if setup {
+        for n in PEER_CELLS {
+            let (ladder, start) = peer_ladder(n);
+            let here = dir.join(n.to_string());
+            std::fs::create_dir_all(&here).expect("a writable folder");
+            write_start(&ladder, 0.0, &start, &here);
+            write_values(&here.join("l.txt"), ladder.cells.iter().map(|c| c.l));
+            write_values(&here.join("c.txt"), ladder.cells.iter().map(|c| c.c));
+            let (reference, _) = peer_gradient(&ladder, &start, REFERENCE_TOLERANCE);
+            write_values(&here.join("reference.txt"), reference.into_iter());
         }
-        let start = ladder_at_rest(&ladder, &pulse(n));
-        let here = dir.join(n.to_string());
-        std::fs::create_dir_all(&here).expect("a writable folder");
-        write_start(&ladder, 0.0, &start, &here);
-        write_values(&here.join("l.txt"), ladder.cells.iter().map(|c| c.l));
-        write_values(&here.join("c.txt"), ladder.cells.iter().map(|c| c.c));
-        let running = |_: f64, y: &State<Ladder>, out: &mut State<Ladder>| {
-            out.q.copy_from(&y.q);
-            0.5 * y.q.norm_squared()
-        };
-        let objective = Objective::running(&running);
-        let gradient = || {
-            let mut radau = Radau::new(&ladder, options()).expect("valid");
-            let recording = radau.record(0.0, &start, 5.0).expect("integrates");
-            (recording.gradient(&ladder, &objective).expect("a gradient"), recording.steps())
-        };
-        let (g, steps) = gradient();
-        let names = ladder.parameter_names();
-        let at = |name: String| names.iter().position(|n| *n == name).expect("a parameter");
-        let values = (0..n).flat_map(|j| [at(format!("cells[{j}].l")), at(format!("cells[{j}].c"))]);
-        write_values(
-            &here.join("dirac.txt"),
-            std::iter::once(g.value).chain(values.map(|k| g.parameters[k])),
-        );
-        let mut times: Vec<f64> = (0..11)
-            .map(|_| {
-                let start = std::time::Instant::now();
-                black_box(gradient());
-                start.elapsed().as_secs_f64()
-            })
-            .collect();
-        times.sort_by(f64::total_cmp);
-        println!("{n},{},{:.6e},{steps}", 2 * n, times[5]);
+        return;
+    }
+    println!("problem,tol,error,seconds,steps");
+    for n in PEER_CELLS {
+        let (ladder, start) = peer_ladder(n);
+        let text =
+            std::fs::read_to_string(dir.join(n.to_string()).join("reference.txt")).expect("run setup first");
+        let reference: Vec<f64> = text.split_whitespace().map(|x| x.parse().expect("a number")).collect();
+        let scale = reference[1..].iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        for tol in PEER_TOLERANCES {
+            let (g, steps) = peer_gradient(&ladder, &start, tol);
+            let error =
+                g[1..].iter().zip(&reference[1..]).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs())) / scale;
+            let mut times: Vec<f64> = (0..5)
+                .map(|_| {
+                    let clock = std::time::Instant::now();
+                    black_box(peer_gradient(&ladder, &start, tol));
+                    clock.elapsed().as_secs_f64()
+                })
+                .collect();
+            times.sort_by(f64::total_cmp);
+            println!("ladder{n},{tol:e},{error:.3e},{:.6e},{steps}", times[2]);
+        }
     }
 }
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if let Some(k) = args.iter().position(|a| a == "peers") {
-        peers(std::path::Path::new(&args[k + 1]));
+        let setup = args.get(k + 1).is_some_and(|a| a == "setup");
+        let dir = args.get(k + 1 + usize::from(setup)).expect("usage: adjoint peers [setup] DIR");
+        peers(std::path::Path::new(dir), setup);
         return;
     }
     println!(

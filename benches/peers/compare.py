@@ -2,13 +2,22 @@
 peer needs for the same achieved error (log-log interpolation between the peer's points), and the
 ratio; with --svg, draws all curves in one log-log work-precision diagram.
 Usage: compare.py [LABEL=]dirac.csv LABEL=peer.csv [LABEL=peer.csv ...] [--svg out.svg]
-(the first curve's label defaults to "dirac Radau")."""
+(the first curve's label defaults to "dirac Radau").
+
+A path holding `*` names the rounds of an alternated run (`rounds/radau.*.csv`, one file per
+round, numbered): then each round's ratio is formed from that round's two curves (the peer's
+time interpolated on its own curve of the same round), and the table shows the median time over
+the rounds, the median ratio and the range of the rounds' ratios. Both sides must have as many
+rounds. Errors and steps must agree between rounds (the solvers are deterministic)."""
 import csv
+import glob
 import math
+import re
+import statistics
 import sys
 
 
-def load(path):
+def load_one(path):
     with open(path) as f:
         rows = list(csv.DictReader(f))
     out = {}
@@ -18,8 +27,32 @@ def load(path):
     return out
 
 
+def load(path):
+    """A list of rounds (one curve set each), in the order of their round numbers."""
+    if "*" not in path:
+        return [load_one(path)]
+    paths = sorted(glob.glob(path), key=lambda p: int(re.findall(r"\d+", p)[-1]))
+    if not paths:
+        sys.exit(f"no file matches {path}")
+    rounds = [load_one(p) for p in paths]
+    for other, p in zip(rounds[1:], paths[1:]):
+        for problem, points in rounds[0].items():
+            if [(e, n) for e, _, n, _ in points] != [(e, n) for e, _, n, _ in other.get(problem, [])]:
+                sys.exit(f"{p}: {problem} reaches other errors or steps than {paths[0]}")
+    return rounds
+
+
+def merged(rounds):
+    """One curve set, each point's seconds the median over the rounds."""
+    out = {}
+    for problem, points in rounds[0].items():
+        out[problem] = [(e, statistics.median(r[problem][i][1] for r in rounds), n, tol)
+                        for i, (e, _, n, tol) in enumerate(points)]
+    return out
+
+
 def time_at(curve, error):
-    """IDA's time at `error`, interpolated in log-log space; None outside IDA's range."""
+    """The peer's time at `error`, interpolated in log-log space; None outside its range."""
     pts = sorted((e, s) for e, s, _, _ in curve if e > 0)
     for (e1, s1), (e2, s2) in zip(pts, pts[1:]):
         if e1 <= error <= e2:
@@ -35,17 +68,31 @@ if "--svg" in args:
     svg = args[k + 1]
     del args[k:k + 2]
 base_label, base_path = args[0].split("=", 1) if "=" in args[0] else ("dirac Radau", args[0])
-radau = load(base_path)
-peers = [(label, load(path)) for label, path in (a.split("=", 1) for a in args[1:])]
-for label, peer in peers:
-    print(f"{base_label} against {label}:")
-    print(f"{'problem':10} {'tol':>8} {'error':>10} {'dirac s':>11} {'peer s':>11} {'ratio':>7}")
+base_rounds = load(base_path)
+radau = merged(base_rounds)
+peer_rounds = [(label, load(path)) for label, path in (a.split("=", 1) for a in args[1:])]
+peers = [(label, merged(rounds)) for label, rounds in peer_rounds]
+for label, rounds in peer_rounds:
+    paired = len(rounds) == len(base_rounds) and len(rounds) > 1
+    if len(rounds) != len(base_rounds):
+        sys.exit(f"{label}: {len(rounds)} rounds against {len(base_rounds)} of {base_label}")
+    print(f"{base_label} against {label}" + (f" ({len(rounds)} rounds; ratio the median of the rounds' ratios, "
+                                              "their range beside it):" if paired else ":"))
+    print(f"{'problem':10} {'tol':>8} {'error':>10} {'dirac s':>11} {'peer s':>11} {'ratio':>7}"
+          + (f" {'range':>13}" if paired else ""))
+    peer = merged(rounds)
     for problem, points in radau.items():
-        for error, seconds, steps, tol in points:
+        for i, (error, seconds, steps, tol) in enumerate(points):
             other = time_at(peer.get(problem, []), error)
-            ratio = f"{seconds / other:7.3f}" if other else "    n/a"
+            ratios = []
+            for mine, theirs in zip(base_rounds, rounds):
+                t = time_at(theirs.get(problem, []), error)
+                if t:
+                    ratios.append(mine[problem][i][1] / t)
+            ratio = f"{statistics.median(ratios):7.3f}" if ratios else "    n/a"
             other_s = f"{other:11.3e}" if other else "        n/a"
-            print(f"{problem:10} {tol:8.0e} {error:10.2e} {seconds:11.3e} {other_s} {ratio}")
+            span = f" {min(ratios):6.3f}–{max(ratios):6.3f}" if paired and ratios else ""
+            print(f"{problem:10} {tol:8.0e} {error:10.2e} {seconds:11.3e} {other_s} {ratio}{span}")
     print()
 
 

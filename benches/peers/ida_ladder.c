@@ -55,15 +55,44 @@ static int res(sunrealtype t, N_Vector yy, N_Vector yp, N_Vector rr, void *data)
   return 0;
 }
 
-/* Entries (row, col, value) of dF/dy + cj dF/dy', gathered then compressed by column. */
+/* Entries (row, col, value) of dF/dy + cj dF/dy', gathered in a fixed order. The first call
+ * sorts them by column into the compressed-column pattern and keeps, for each entry, its slot
+ * in it (the pattern never changes: only cj moves the values); every call then scatters the
+ * values into their slots and copies the kept pattern, since IDA zeroes the whole sparse
+ * matrix, indices included, before it asks for the Jacobian. */
 typedef struct { long row, col; double val; } Entry;
 static Entry *entries;
 static long count;
+static long *slot, nnz_kept = -1;
+static sunindextype *colptrs_kept, *rowvals_kept;
 static void add(long row, long col, double val) { entries[count++] = (Entry){row, col, val}; }
 static int by_column(const void *a, const void *b) {
-  const Entry *x = a, *y = b;
+  const Entry *x = &entries[*(const long *)a], *y = &entries[*(const long *)b];
   if (x->col != y->col) return (x->col > y->col) - (x->col < y->col);
   return (x->row > y->row) - (x->row < y->row);
+}
+
+/* The pattern of the gathered entries, once: colptrs_kept, rowvals_kept and slot. */
+static void keep_pattern(long ny) {
+  long *order = malloc(count * sizeof(long));
+  for (long k = 0; k < count; k++) order[k] = k;
+  qsort(order, count, sizeof(long), by_column);
+  slot = malloc(count * sizeof(long));
+  colptrs_kept = malloc((ny + 1) * sizeof(sunindextype));
+  rowvals_kept = malloc(count * sizeof(sunindextype));
+  long k = 0, out = 0;
+  for (long c = 0; c < ny; c++) {
+    colptrs_kept[c] = out;
+    while (k < count && entries[order[k]].col == c) {
+      rowvals_kept[out] = entries[order[k]].row;
+      slot[order[k++]] = out;
+      while (k < count && entries[order[k]].col == c && entries[order[k]].row == rowvals_kept[out]) slot[order[k++]] = out;
+      out++;
+    }
+  }
+  colptrs_kept[ny] = out;
+  nnz_kept = out;
+  free(order);
 }
 
 static int jac(sunrealtype t, sunrealtype cj, N_Vector yy, N_Vector yp, N_Vector rr, SUNMatrix J, void *data,
@@ -95,19 +124,13 @@ static int jac(sunrealtype t, sunrealtype cj, N_Vector yy, N_Vector yp, N_Vector
     add(l0 + 2 + j, v0 + B_(j), -1.0);
     add(l0 + 2 + j, v0 + A_(j + 1), 1.0);
   }
-  qsort(entries, count, sizeof(Entry), by_column);
-  sunindextype *colptrs = SUNSparseMatrix_IndexPointers(J), *rowvals = SUNSparseMatrix_IndexValues(J);
+  long ny = 3 * NQ + NC;
+  if (nnz_kept < 0) keep_pattern(ny);
+  memcpy(SUNSparseMatrix_IndexPointers(J), colptrs_kept, (ny + 1) * sizeof(sunindextype));
+  memcpy(SUNSparseMatrix_IndexValues(J), rowvals_kept, nnz_kept * sizeof(sunindextype));
   double *vals = SUNSparseMatrix_Data(J);
-  long ny = 3 * NQ + NC, k = 0;
-  for (long c = 0; c < ny; c++) {
-    colptrs[c] = k;
-    while (k < count && entries[k].col == c) {
-      rowvals[k] = entries[k].row;
-      vals[k] = entries[k].val;
-      k++;
-    }
-  }
-  colptrs[ny] = k;
+  memset(vals, 0, nnz_kept * sizeof(double));
+  for (long k = 0; k < count; k++) vals[slot[k]] += entries[k].val;
   return 0;
 }
 

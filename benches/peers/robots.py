@@ -2,13 +2,19 @@
 
     robots.py setup URDF DIR    the reference swing (DIR/arm_swing.csv) and Pinocchio's model
                                 for the C++ driver (DIR/panda_arm.bin)
-    robots.py mujoco URDF DIR   MuJoCo's swing over a range of time steps (DIR/mujoco.csv)
-    robots.py compare URDF DIR  the ratios, from the files the other steps wrote
+    robots.py mujoco URDF DIR [ROUND]
+                                MuJoCo's swing over a range of time steps (DIR/mujoco_ROUND.csv)
+    robots.py compare URDF DIR [ROUNDS]
+                                the ratios, from the files the other steps wrote: each round's
+                                ratio from that round's pair of runs, then the median and the
+                                range over the rounds
 
 The swing starts from rest at the configuration SWING_START of tests/zoo/robots.rs and lasts
 1 s under gravity (0, 0, -9.81) with the URDF's joint damping. The reference is Pinocchio's
 forward dynamics (ABA, tau = -damping * v) integrated by SciPy's DOP853 at rtol = atol = 1e-12,
-sampled every 0.1 s; an error is the largest joint-angle error over those samples.
+sampled every 0.1 s; an error is the largest joint-angle error over those samples. The free
+swing leaves the joint limits (setup prints by how much): MuJoCo runs with its limits disabled,
+as dirac's model of the arm has none.
 """
 
 import csv
@@ -43,6 +49,10 @@ def setup(urdf, out):
     lower, upper = model.lowerPositionLimit, model.upperPositionLimit
     inside = np.all((sol.y[:7].T >= lower) & (sol.y[:7].T <= upper))
     print(f"reference swing: {sol.nfev} evaluations; within the joint limits throughout: {inside}")
+    for j in range(7):
+        lo, hi = float(np.min(sol.y[j])), float(np.max(sol.y[j]))
+        if lo < lower[j] or hi > upper[j]:
+            print(f"  joint {j + 1} spans [{lo:.2f}, {hi:.2f}] rad against its limits [{lower[j]:.2f}, {upper[j]:.2f}]")
     with open(f"{out}/arm_swing.csv", "w") as f:
         f.write(",".join(["t"] + [f"q{i}" for i in range(7)] + [f"v{i}" for i in range(7)]) + "\n")
         for t, y in zip(sol.t, sol.y.T):
@@ -57,7 +67,7 @@ def reference(out):
 def mujoco_model(urdf, out):
     """The URDF without its visual and collision elements (MuJoCo would load their meshes),
     static links fused as MuJoCo's URDF import does by default, joint limits disabled (the
-    swing stays within them; dirac's model has none)."""
+    free swing leaves them, and dirac's model has none)."""
     import mujoco
 
     text = open(urdf).read()
@@ -71,7 +81,7 @@ def mujoco_model(urdf, out):
     return model
 
 
-def run_mujoco(out_dir, urdf):
+def run_mujoco(out_dir, urdf, round_="1"):
     import mujoco
 
     model = mujoco_model(urdf, out_dir)
@@ -106,7 +116,7 @@ def run_mujoco(out_dir, urdf):
                 times.append(clock)
             rows.append((name, dt, error, statistics.median(times), 10 * per_sample))
             print(f"{name:20} dt {dt:8.0e}: error {error:9.2e}, {statistics.median(times):9.3e} s")
-    with open(f"{out_dir}/mujoco.csv", "w") as f:
+    with open(f"{out_dir}/mujoco_{round_}.csv", "w") as f:
         f.write("problem,tol,error,seconds,steps\n")
         for name, dt, error, seconds, steps in rows:
             f.write(f"{name},{dt},{error},{seconds},{steps}\n")
@@ -140,53 +150,76 @@ def time_at(curve, error):
     return None, ""
 
 
-def compare(out):
-    def medians(prefix):
+def spread(values):
+    """`median [low–high]` of per-round values."""
+    return f"{statistics.median(values):.2f} [{min(values):.2f}–{max(values):.2f}]"
+
+
+def compare(out, rounds):
+    def per_round(prefix):
         values = {}
-        for round_ in (1, 2, 3):
+        for round_ in range(1, rounds + 1):
             with open(f"{out}/{prefix}_{round_}.csv") as f:
                 for line in f:
                     name, value = line.strip().split(",")
                     values.setdefault(name, []).append(float(value))
-        return {k: statistics.median(v) for k, v in values.items()}
+        return values
 
-    pin_t, dirac_t = medians("pinocchio"), medians("dirac")
-    print("\nOne evaluation, seconds per call (medians of 3 alternated runs, each a median of 15 batches):")
+    pin_r, dirac_r = per_round("pinocchio"), per_round("dirac")
+    pin_t = {k: statistics.median(v) for k, v in pin_r.items()}
+    dirac_t = {k: statistics.median(v) for k, v in dirac_r.items()}
+    print(f"\nOne evaluation, seconds per call (medians of {rounds} alternated rounds, each a median of "
+          "15 batches); ratios per round, median [range]:")
     for k, v in pin_t.items():
         if k != "nv":
-            print(f"  Pinocchio {k:28} {v:9.3e}")
+            print(f"  Pinocchio {k:28} {v:9.3e}  rounds {' '.join(f'{x:.3e}' for x in pin_r[k])}")
     for k, v in dirac_t.items():
-        print(f"  dirac     {k:28} {v:9.3e}")
-    pin_step = pin_t["aba"] + pin_t["aba_derivatives"]
-    for k in ("residual_and_jacobian", "residual_and_jacobian_blocks"):
-        print(f"  ratio dirac {k} / Pinocchio (ABA + ABA derivatives): {dirac_t[k] / pin_step:.2f}")
-    print(f"  ratio dirac mass_matrix / Pinocchio CRBA: {dirac_t['mass_matrix'] / pin_t['crba']:.2f}")
-    print(f"  ratio dirac bias_torques / Pinocchio nonLinearEffects: "
-          f"{dirac_t['bias_torques'] / pin_t['nonlinear_effects']:.2f}")
+        print(f"  dirac     {k:28} {v:9.3e}  rounds {' '.join(f'{x:.3e}' for x in dirac_r[k])}")
 
-    dirac = load(f"{out}/dirac_swing.csv")
-    mujoco = load(f"{out}/mujoco.csv")
-    print("\nThe 1 s swing at equal achieved error (dirac's time at MuJoCo's error, interpolated):")
-    print(f"  {'MuJoCo':22} {'dt':>7} {'error':>9} {'MuJoCo s':>10} | "
-          f"{'Explicit s':>11} {'ratio':>6} | {'Radau s':>11} {'ratio':>6}")
-    for name, points in mujoco.items():
-        for error, seconds, dt in points:
+    def ratio(mine, theirs):
+        return spread([a / b for a, b in zip(dirac_r[mine], pin_r[theirs])])
+
+    # computeABADerivatives returns the accelerations (data.ddq) with their derivatives: it is
+    # everything an implicit step asks of Pinocchio, so it alone is the baseline.
+    for k in ("residual_and_jacobian", "residual_and_jacobian_blocks"):
+        print(f"  ratio dirac {k} / Pinocchio computeABADerivatives: {ratio(k, 'aba_derivatives')}")
+    print(f"  ratio dirac mass_matrix / Pinocchio CRBA: {ratio('mass_matrix', 'crba')}")
+    print(f"  ratio dirac bias_torques / Pinocchio nonLinearEffects: {ratio('bias_torques', 'nonlinear_effects')}")
+
+    dirac = [load(f"{out}/dirac_swing_{r}.csv") for r in range(1, rounds + 1)]
+    mujoco = [load(f"{out}/mujoco_{r}.csv") for r in range(1, rounds + 1)]
+    print(f"\nThe 1 s swing at equal achieved error (dirac's time at MuJoCo's error, interpolated on the "
+          f"same round's curve; times the median of {rounds} alternated rounds, ratios per round, "
+          "median [range]):")
+    print(f"  {'MuJoCo':20} {'dt':>7} {'error':>9} {'MuJoCo s':>10} | "
+          f"{'Explicit s':>11} {'ratio':>18} | {'Radau s':>11} {'ratio':>18}")
+    for name, points in mujoco[0].items():
+        for i, (error, _, dt) in enumerate(points):
+            theirs = [m[name][i][1] for m in mujoco]
             cells = []
             for method in ("explicit", "radau"):
-                t, mark = time_at(dirac[method], error)
-                cells.append(f"{mark:>2}{t:9.3e} {t / seconds:6.3f}" if t else f"{'n/a':>11} {'':6}")
-            print(f"  {name:22} {dt:7.0e} {error:9.2e} {seconds:10.3e} | {cells[0]} | {cells[1]}")
-    print("\ndirac's own curve:")
-    for method, points in dirac.items():
-        for error, seconds, tol in points:
+                mine = [time_at(d[method], error) for d in dirac]
+                if any(t is None for t, _ in mine):
+                    best = min(e for e, _, _ in dirac[0][method])
+                    cells.append(f"{'n/a':>11} {f'(best {best:.1e})':>18}")
+                    continue
+                mark = mine[0][1]
+                ratios = [t / s for (t, _), s in zip(mine, theirs)]
+                cells.append(f"{mark:>2}{statistics.median(t for t, _ in mine):9.3e} {spread(ratios):>18}")
+            print(f"  {name:20} {dt:7.0e} {error:9.2e} {statistics.median(theirs):10.3e} | {cells[0]} | {cells[1]}")
+    print("\ndirac's own curve (the first round's errors and steps, the median time):")
+    for method, points in dirac[0].items():
+        for i, (error, _, tol) in enumerate(points):
+            seconds = statistics.median(d[method][i][1] for d in dirac)
             print(f"  {method:9} tol {tol:7.0e}: error {error:9.2e} in {seconds:9.3e} s")
 
 
 if __name__ == "__main__":
     command, urdf, out = sys.argv[1:4]
+    extra = sys.argv[4] if len(sys.argv) > 4 else None
     if command == "setup":
         setup(urdf, out)
     elif command == "mujoco":
-        run_mujoco(out, urdf)
+        run_mujoco(out, urdf, extra or "1")
     elif command == "compare":
-        compare(out)
+        compare(out, int(extra or 3))

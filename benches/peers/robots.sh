@@ -3,19 +3,21 @@
 # (tests/robots/panda/panda_arm.urdf), in one run on this machine:
 #
 # 1. one evaluation of what an implicit step needs (dirac's residual and Jacobian) against
-#    Pinocchio's forward dynamics (ABA) plus its analytic derivatives, timed in C++
-#    (pinocchio_panda.cpp, built against the `pin` wheel's library), the two alternated;
+#    Pinocchio's `computeABADerivatives`, which returns the accelerations with their analytic
+#    derivatives, timed in C++ (pinocchio_panda.cpp, built against the `pin` wheel's library);
 # 2. the 1 s free swing from rest under gravity at equal achieved error: dirac's Explicit and
 #    Radau over a range of tolerances against MuJoCo's RK4, Euler (its default) and
 #    implicitfast over a range of time steps, every error against Pinocchio's dynamics
-#    integrated by SciPy's DOP853 at rtol = atol = 1e-12.
+#    integrated by SciPy's DOP853 at rtol = atol = 1e-12;
+#
+# every part alternated round by round (PEER_ROUNDS, default 5).
 #
 # Pinocchio, MuJoCo, SciPy and Eigen's headers are installed into a virtual environment
 # under target/peers; nothing is installed system-wide. Not part of CI.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-out=target/peers/robots
-venv=target/peers/robots-venv
+out=$PWD/target/peers/robots
+venv=$PWD/target/peers/robots-venv
 mkdir -p "$out"
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet pin mujoco scipy cmeel-eigen
@@ -30,10 +32,15 @@ if [ ! -x "$out/pinocchio_panda" ]; then
         -lpinocchio_default -lboost_serialization
 fi
 cargo bench -p dirac-benches --bench robots --no-run
-for round in 1 2 3; do
+# Every round runs each side once, one after the other (Pinocchio, dirac, dirac's swing,
+# MuJoCo's swing); a ratio is formed within a round, so the load of the minute it ran in enters
+# both sides of it, and the table shows the median and the range of the rounds' ratios.
+rounds=${PEER_ROUNDS:-5}
+rm -f "$out"/pinocchio_*.csv "$out"/dirac_*.csv "$out"/mujoco_*.csv
+for round in $(seq "$rounds"); do
     "$out/pinocchio_panda" "$out/panda_arm.bin" > "$out/pinocchio_$round.csv"
-    cargo bench -p dirac-benches --bench robots -- evaluate > "$out/dirac_$round.csv"
+    cargo bench -q -p dirac-benches --bench robots -- evaluate > "$out/dirac_$round.csv"
+    cargo bench -q -p dirac-benches --bench robots -- swing "$out" > "$out/dirac_swing_$round.csv"
+    "$venv/bin/python" benches/peers/robots.py mujoco tests/robots/panda/panda_arm.urdf "$out" "$round" > /dev/null
 done
-cargo bench -p dirac-benches --bench robots -- swing "$out" > "$out/dirac_swing.csv"
-"$venv/bin/python" benches/peers/robots.py mujoco tests/robots/panda/panda_arm.urdf "$out"
-"$venv/bin/python" benches/peers/robots.py compare tests/robots/panda/panda_arm.urdf "$out"
+"$venv/bin/python" benches/peers/robots.py compare tests/robots/panda/panda_arm.urdf "$out" "$rounds"

@@ -22,6 +22,10 @@ gcc -O3 -o "$peers/ida_driver" benches/peers/ida_driver.c -I"$peers/sundials/usr
     -Wl,-rpath,"$PWD/$lib" -lsundials_ida -lsundials_nvecserial -lsundials_sunlinsoldense \
     -lsundials_sunmatrixdense -lm
 cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml --target-dir "$peers/diffsol"
+# diffsol once more with one code unit, the setting its package carried before: timed in the
+# same rounds, so that the table shows what the setting does for it.
+CARGO_PROFILE_RELEASE_CODEGEN_UNITS=1 cargo build --release --manifest-path benches/peers/diffsol/Cargo.toml \
+    --target-dir "$peers/diffsol-cgu1"
 cargo bench -p dirac-benches --bench work_precision -- reference > "$peers/reference.txt"
 # Every solver runs once per round, the rounds one after the other (A B C … A B C …), and each
 # row's time is the median over the rounds: on a shared machine the load drifts over minutes,
@@ -38,6 +42,11 @@ for round in $(seq "$rounds"); do
         "$peers/diffsol/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") \
             > "$peers/rounds/diffsol_$method.$round.csv"
     done
+    for method in bdf tsit45; do
+        # shellcheck disable=SC2046
+        "$peers/diffsol-cgu1/release/dirac-peer-diffsol" "$method" $(cat "$peers/reference.txt") \
+            > "$peers/rounds/diffsol1_$method.$round.csv" 2>/dev/null
+    done
     cargo bench -q -p dirac-benches --bench work_precision -- radau > "$peers/rounds/radau.$round.csv" 2>/dev/null
     cargo bench -q -p dirac-benches --bench work_precision -- explicit > "$peers/rounds/explicit.$round.csv" 2>/dev/null
 done
@@ -49,12 +58,16 @@ echo "dirac Radau:"; cat "$peers/radau.csv"
 echo "dirac Explicit:"; cat "$peers/explicit.csv"
 echo "SUNDIALS IDA:"; cat "$peers/ida.csv"
 for method in bdf esdirk34 tsit45; do echo "diffsol $method:"; cat "$peers/diffsol_$method.csv"; done
-python3 benches/peers/compare.py "dirac Radau=$peers/radau.csv" "SUNDIALS IDA=$peers/ida.csv" \
-    "diffsol BDF=$peers/diffsol_bdf.csv" "diffsol ESDIRK34=$peers/diffsol_esdirk34.csv" \
-    "diffsol Tsit45 (ODE)=$peers/diffsol_tsit45.csv" "dirac Explicit=$peers/explicit.csv" \
+# Each round's ratio from that round's curves; the median and the range over the rounds.
+r="$peers/rounds"
+python3 benches/peers/compare.py "dirac Radau=$r/radau.*.csv" "SUNDIALS IDA=$r/ida.*.csv" \
+    "diffsol BDF=$r/diffsol_bdf.*.csv" "diffsol ESDIRK34=$r/diffsol_esdirk34.*.csv" \
+    "diffsol Tsit45 (ODE)=$r/diffsol_tsit45.*.csv" "dirac Explicit=$r/explicit.*.csv" \
     --svg "$peers/work_precision.svg"
-python3 benches/peers/compare.py "dirac Explicit=$peers/explicit.csv" \
-    "diffsol Tsit45 (ODE)=$peers/diffsol_tsit45.csv" "diffsol BDF=$peers/diffsol_bdf.csv"
+python3 benches/peers/compare.py "dirac Explicit=$r/explicit.*.csv" \
+    "diffsol Tsit45 (ODE)=$r/diffsol_tsit45.*.csv" "diffsol BDF=$r/diffsol_bdf.*.csv" \
+    "diffsol Tsit45 (ODE), one code unit=$r/diffsol1_tsit45.*.csv"
+python3 benches/peers/compare.py "dirac Radau=$r/radau.*.csv" "diffsol BDF, one code unit=$r/diffsol1_bdf.*.csv"
 # The same comparisons over each solver's fastest round: load from other work on a shared
 # machine only adds time, and it comes and goes over seconds, so medians over a few rounds can
 # still carry it into one solver's time and not the other's.

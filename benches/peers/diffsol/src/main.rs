@@ -138,20 +138,36 @@ fn pendulum8_rhs(y: &[f64], _p: &[f64], _t: f64, f: &mut [f64]) {
 
 /// The Jacobian-vector product of the 8-link pendulum by a forward difference (its analytic
 /// form, through the derivative of `M(θ)⁻¹`, is not what a user writes by hand); used only by
-/// the implicit methods' Newton iterations.
+/// the implicit methods' Newton iterations. diffsol forms its dense Jacobian from one product
+/// per column at the same `y`, so `f(y)` is kept from the last call and evaluated again only
+/// when `y` changes (the right-hand side depends on neither `t` nor `p`): one right-hand side
+/// per column, as a hand-written difference Jacobian would take.
 fn pendulum8_jac_mul(y: &[f64], p: &[f64], t: f64, w: &[f64], jw: &mut [f64]) {
+    thread_local! {
+        static AT: std::cell::Cell<Option<([f64; 2 * LINKS], [f64; 2 * LINKS])>> =
+            const { std::cell::Cell::new(None) };
+    }
     let norm = w.iter().map(|x| x * x).sum::<f64>().sqrt();
     if norm == 0.0 {
         jw.fill(0.0);
         return;
     }
+    let f0 = match AT.get() {
+        Some((at, f0)) if at[..] == y[..] => f0,
+        _ => {
+            let (mut at, mut f0) = ([0.0; 2 * LINKS], [0.0; 2 * LINKS]);
+            at.copy_from_slice(y);
+            pendulum8_rhs(y, p, t, &mut f0);
+            AT.set(Some((at, f0)));
+            f0
+        }
+    };
     let eps = 1e-7 * (1.0 + y.iter().map(|x| x * x).sum::<f64>().sqrt()) / norm;
     let mut shifted = [0.0; 2 * LINKS];
     for i in 0..2 * LINKS {
         shifted[i] = y[i] + eps * w[i];
     }
-    let (mut f0, mut f1) = ([0.0; 2 * LINKS], [0.0; 2 * LINKS]);
-    pendulum8_rhs(y, p, t, &mut f0);
+    let mut f1 = [0.0; 2 * LINKS];
     pendulum8_rhs(&shifted, p, t, &mut f1);
     for i in 0..2 * LINKS {
         jw[i] = (f1[i] - f0[i]) / eps;
