@@ -16,10 +16,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 records=benches/instruction_counts.txt
 limit=${GUARD_PERCENT:-2}
+command -v valgrind >/dev/null || { echo "instruction_guard.sh needs valgrind (apt-get install valgrind)" >&2; exit 2; }
 cargo build --release -p dirac-benches --bench small_models 2>&1 | grep -E '^error' >&2 || true
 driver=$(find target/release/deps -maxdepth 1 -type f -executable -name 'small_models-*' -printf '%T@ %p\n' |
     sort -n | tail -1 | cut -d' ' -f2)
 count() { # $1 = case, $2 = repeats
+    "$driver" "$1" 1 >/dev/null 2>&1 ||
+        { echo "case '$1' of $records does not run: not a case of benches/small_models.rs" >&2; exit 2; }
     valgrind --tool=callgrind --callgrind-out-file=/dev/null "$driver" "$1" "$2" 2>&1 |
         sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }

@@ -72,15 +72,14 @@ base_rounds = load(base_path)
 radau = merged(base_rounds)
 peer_rounds = [(label, load(path)) for label, path in (a.split("=", 1) for a in args[1:])]
 peers = [(label, merged(rounds)) for label, rounds in peer_rounds]
-for label, rounds in peer_rounds:
-    paired = len(rounds) == len(base_rounds) and len(rounds) > 1
+for (label, rounds), (_, peer) in zip(peer_rounds, peers):
     if len(rounds) != len(base_rounds):
         sys.exit(f"{label}: {len(rounds)} rounds against {len(base_rounds)} of {base_label}")
+    paired = len(rounds) > 1
     print(f"{base_label} against {label}" + (f" ({len(rounds)} rounds; ratio the median of the rounds' ratios, "
                                               "their range beside it):" if paired else ":"))
     print(f"{'problem':10} {'tol':>8} {'error':>10} {'dirac s':>11} {'peer s':>11} {'ratio':>7}"
           + (f" {'range':>13}" if paired else ""))
-    peer = merged(rounds)
     for problem, points in radau.items():
         for i, (error, seconds, steps, tol) in enumerate(points):
             other = time_at(peer.get(problem, []), error)

@@ -264,7 +264,7 @@ where
             // with the factored one, or to factor). Evaluated here, beside the other blocks and
             // from this one place, the compiler inlines it and shares its trigonometry with
             // theirs; a second call site (in the comparison and in `factor`) kept it out of line
-            // and cost the 8-link pendulum 32% more instructions a solve.
+            // and cost the 8-link pendulum 21% more instructions a solve.
             model.l_vv(t, q, v, &mut self.lvv);
         }
         // Constraint rows that depend on parameters alone are those of the factorisation held:
@@ -366,7 +366,7 @@ where
         // Along the velocities the forces fix, `L_vv` vanishes; `N Nᵀ` there makes the matrix
         // regular and sets their accelerations to `Nᵀ` of the balance, zero once settled. Each
         // case assembles from a term list of constant length, so that its loops unroll (one
-        // list of either length cost the 8-link pendulum 3% more instructions a solve).
+        // list of either length cost the 8-link pendulum 2% more instructions a solve).
         let (right, bottom) = ([(-1.0, &self.a)], [(1.0, 1.0, &self.a)]);
         match &self.free {
             Some(free) => self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {

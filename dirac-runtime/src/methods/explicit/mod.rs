@@ -370,7 +370,7 @@ where
     fn candidate_peaks(&self) -> [f64; 2] {
         let negligible = self.options.rtol * self.options.atol;
         // The size as a constant where the model fixes it, and one indexed pass: an iterator
-        // over both vectors cost the chain 10% more instructions a solve.
+        // over both vectors cost the chain 4% more instructions a solve.
         let n = <M::Nq as nalgebra::Dim>::try_to_usize().unwrap_or(self.sizes.nq);
         let (q, q_new) = (&self.state.q.as_slice()[..n], &self.q_new.as_slice()[..n]);
         let (v, v_new) = (&self.state.v.as_slice()[..n], &self.v_new.as_slice()[..n]);
