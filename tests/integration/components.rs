@@ -168,6 +168,32 @@ fn cauer_low_pass_transfer_function_against_its_ladder() {
     }
 }
 
+/// The minimal realisation of the driven filter has the five states Modelica tools report for
+/// the Cauer low-pass (seven storages, two capacitor loops), where its linearisation holds
+/// every node flux; its transfer functions are the ladder's, as above.
+#[test]
+fn cauer_low_pass_minimal_realisation_has_five_states() {
+    let model = CauerDriven { v: VoltageSource { u: 0.0 }, filter: CauerFilter::modelica() };
+    let zero = VecQ::<CauerDriven>::zeros();
+    let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+    let linear = linearize(&model, 0.0, &rest).expect("linearises");
+    let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
+    assert!(linear.a.nrows() > 5, "the linearisation carries the node fluxes: {}", linear.a.nrows());
+    assert_eq!(minimal.a.nrows(), 5, "{:?}", minimal.state_names());
+    let load = output_index::<CauerDriven>("filter.r2.v");
+    for w in [0.05, 0.7, 1.2, 3.0] {
+        let s = Complex::new(0.0, w);
+        let response = |l: &Linearization| {
+            let complex = |m: &DMatrix<f64>| m.map(|x| Complex::new(x, 0.0));
+            let (a, b, c, d) = (complex(&l.a), complex(&l.b), complex(&l.c), complex(&l.d));
+            let n = a.nrows();
+            (&c * (DMatrix::identity(n, n) * s - &a).lu().solve(&b).expect("regular") + &d)[(load, 0)]
+        };
+        let (full, reduced) = (response(&linear), response(&minimal));
+        assert!((full - reduced).norm() < 1e-10 * full.norm(), "at ω = {w}: {reduced} against {full}");
+    }
+}
+
 /// Chua's circuit, Modelica's ChuaCircuit: L and Ro in series from node a to ground, C2 at a,
 /// the conductor G from a to b, C1 and Chua's diode at b.
 #[derive(Interconnection, Clone, Debug)]

@@ -335,3 +335,65 @@ fn a_pid_controller_integrates_differentiates_and_unwinds_as_its_closed_forms_sa
     assert!(Pid::new(1.0, 0.0, 0.0).with_limits(1.0, -1.0).update(1.0, 0.0, dt).is_nan());
     assert_eq!(pid, before);
 }
+
+/// A model built in Kalman's form, a controllable and observable pair of states, one state no
+/// input reaches (it feeds the pair) and one no output sees (the pair feeds it), then hidden by
+/// an orthogonal change of coordinates: the minimal realisation keeps the pair's two poles, the
+/// transfer function, and nothing else. The reference is the construction itself; the cart-pole,
+/// controllable and observable, keeps all four states.
+#[test]
+fn the_minimal_realisation_keeps_what_the_inputs_reach_and_the_outputs_see() {
+    let kalman = mat(&[
+        &[-1.0, 2.0, 0.7, 0.0],
+        &[-3.0, -4.0, 0.0, 0.0],
+        &[0.0, 0.0, -5.0, 0.0],
+        &[1.0, 0.3, 0.0, -7.0],
+    ]);
+    let (b0, c0) = (mat(&[&[1.0], &[0.5], &[0.0], &[2.0]]), mat(&[&[1.0, -2.0, 3.0, 0.0]]));
+    let q =
+        mat(&[&[1.0, 2.0, 0.0, 1.0], &[0.5, -1.0, 3.0, 0.0], &[2.0, 0.0, 1.0, -1.0], &[0.0, 1.0, 1.0, 2.0]])
+            .qr()
+            .q();
+    let (a, b, c) = (&q * &kalman * q.transpose(), &q * &b0, &c0 * q.transpose());
+    let d = DMatrix::zeros(1, 1);
+    let minimal = control::minimal_realization(&a, &b, &c, &d, 1e-9).expect("a minimal realisation");
+    assert_eq!(minimal.a.nrows(), 2);
+    let pair = kalman.view((0, 0), (2, 2)).into_owned();
+    let (got, expected) = (control::poles(&minimal.a).expect("poles"), control::poles(&pair).expect("poles"));
+    for (g, e) in got.iter().zip(&expected) {
+        assert!((g - e).norm() < 1e-12, "{got:?} against {expected:?}");
+    }
+    let transfer = |a: &DMatrix<f64>, b: &DMatrix<f64>, c: &DMatrix<f64>, w: f64| {
+        let complex = |m: &DMatrix<f64>| m.map(|x| Complex::new(x, 0.0));
+        let n = a.nrows();
+        let s = DMatrix::identity(n, n) * Complex::new(0.0, w) - complex(a);
+        (complex(c) * s.lu().solve(&complex(b)).expect("regular"))[(0, 0)]
+    };
+    for w in [0.01, 1.0, 10.0] {
+        let (full, reduced) = (transfer(&a, &b, &c, w), transfer(&minimal.a, &minimal.b, &minimal.c, w));
+        assert!((full - reduced).norm() < 1e-12, "at ω = {w}: {reduced} against {full}");
+    }
+    let (ma, mb) = (&minimal.basis.transpose() * &a * &minimal.basis, minimal.basis.transpose() * &b);
+    assert!((ma - &minimal.a).amax() < 1e-14 && (mb - &minimal.b).amax() < 1e-14, "the basis maps the state");
+
+    let model = CartPole { mc: 1.0, mp: 0.1, l: 0.5, g: 9.81, u: 0.0 };
+    let upright = consistent_state(
+        &model,
+        0.0,
+        &VecQ::<CartPole>::zeros(),
+        &VecQ::<CartPole>::zeros(),
+        Consistency::default(),
+    )
+    .expect("upright");
+    let linear = linearize(&model, 0.0, &upright).expect("an equilibrium");
+    let same = linear.minreal(&model, 1e-9).expect("a minimal realisation");
+    assert_eq!(same.state_names(), ["δq(x)", "δq(th)", "δv(x)", "δv(th)"]);
+    assert!(
+        (&same.a - &linear.a).amax() < 1e-12 && (&same.b - &linear.b).amax() < 1e-12,
+        "{} {}",
+        same.a,
+        linear.a
+    );
+    let error = control::minimal_realization(&a, &b, &c, &d, 2.0).expect_err("not a relative tolerance");
+    assert!(matches!(error, ControlError::Tolerance { .. }), "{error}");
+}

@@ -68,6 +68,13 @@ pub enum Basis {
     /// by name: all of them for a model without constraints whose every velocity has inertia,
     /// or those chosen by [`Linearization::in_coordinates`].
     Coordinates(Vec<String>),
+    /// A minimal realisation ([`Linearization::minreal`]): each state named by what it is, the
+    /// displacement `δq(name)` or velocity `δv(name)` of one of the model's coordinates where that
+    /// reads it exactly, else an output `δy(name)` that does, `x[i]` otherwise; [`Linearization::positions`] and
+    /// [`Linearization::velocities`] then map the whole state to the part of `δq` and `δv` it
+    /// holds, `δq = positions · x` (plus, for a velocity an input sets directly, that input's
+    /// share).
+    Minimal(Vec<String>),
 }
 
 impl Linearization {
@@ -80,6 +87,7 @@ impl Linearization {
                 let positions = names.iter().map(|n| format!("δq({n})"));
                 positions.chain(names.iter().map(|n| format!("δv({n})"))).collect()
             }
+            Basis::Minimal(names) => names.clone(),
             Basis::Orthonormal => {
                 let positions = (0..self.positions.ncols()).map(|i| format!("δz[{i}]"));
                 positions.chain((0..self.velocities.ncols()).map(|i| format!("δw[{i}]"))).collect()
@@ -87,7 +95,9 @@ impl Linearization {
         }
     }
 
-    /// The number of position coordinates `δz`; the velocity coordinates `δw` follow them.
+    /// The number of position coordinates `δz`; the velocity coordinates `δw` follow them. A
+    /// minimal realisation does not split its state so: [`Linearization::positions`] maps all of
+    /// it, and this is the state's size.
     pub fn positions_count(&self) -> usize {
         self.positions.ncols()
     }
@@ -108,6 +118,13 @@ impl Linearization {
     where
         DefaultAllocator: Storage<M>,
     {
+        if matches!(self.basis, Basis::Minimal(_)) {
+            return Err(SimError::InvalidOption {
+                what: "coordinates",
+                reason: "a minimal realisation names its states already: choose coordinates before `minreal`"
+                    .into(),
+            });
+        }
         let names = model.coordinate_names();
         let chosen: Vec<String> = coordinates.iter().map(|c| names[c.index()].clone()).collect();
         let (nz, nw) = (self.positions.ncols(), self.velocities.ncols());

@@ -17,5 +17,6 @@ pub(crate) mod init_saddle;
 pub mod joint_space;
 /// Linearisation about an equilibrium, in minimal coordinates.
 pub mod linear;
+mod minreal;
 pub(crate) mod projection;
 pub(crate) mod units;

@@ -8,6 +8,7 @@
 //! - [`place`]: the gain that puts the poles of a single-input model where they are asked for.
 //! - [`controllability_matrix`], [`observability_matrix`], [`rank`]: which states the inputs
 //!   move and the outputs see.
+//! - [`minimal_realization`]: the states the inputs reach and the outputs see, and no others.
 //! - [`poles`], [`zeros`]: the eigenvalues of `A`, and the zeros of a single-input,
 //!   single-output model.
 //! - [`frequency_response`] (Bode data) and [`step_response`], both exact.
@@ -31,10 +32,12 @@
 //! # Ok::<(), control::ControlError>(())
 //! ```
 
+mod minimal;
 mod pid;
 mod response;
 mod riccati;
 
+pub use minimal::{MinimalRealization, minimal_realization};
 pub use pid::Pid;
 pub use response::{FrequencyResponse, StepResponse, frequency_response, step_response};
 pub use riccati::{Lqr, dlqr, lqr};
@@ -90,6 +93,12 @@ pub enum ControlError {
         equation: &'static str,
         /// What failed.
         reason: String,
+    },
+    /// A relative tolerance outside `(0, 1)`.
+    #[error("the tolerance {tolerance:e} is not a relative tolerance: give one in (0, 1), such as 1e-9")]
+    Tolerance {
+        /// The tolerance given.
+        tolerance: f64,
     },
     /// The asked poles are not closed under complex conjugation, so no real gain places them.
     #[error("the poles asked for are not in conjugate pairs: {pole} has no conjugate among them")]
