@@ -1,10 +1,12 @@
 //! A DC motor with a gearbox, a flexible shaft and a load from `dirac::components`, no Lagrangian
 //! written (`motor_load` derives them by hand): a 12 V step and 50 % PWM whose edges are located;
-//! the steady state against `V = R i + k ω`, `k i = (b/n²) ω`; the energy supplied, stored, lost.
+//! the steady state against `V = R i + k ω`, `k i = (b/n²) ω`; the energy supplied, stored, lost;
+//! and its linearisation from the source's voltage, reduced to the states that voltage reaches
+//! and the outputs see (`minreal`).
 
 use std::error::Error;
 
-use dirac::components::electrical::{Ground, Inductor, PulseVoltage, Resistor, StepVoltage};
+use dirac::components::electrical::{Ground, Inductor, PulseVoltage, Resistor, StepVoltage, VoltageSource};
 use dirac::components::electromechanical::Emf;
 use dirac::components::rotational::{Damper, Fixed, IdealGear, Inertia, SpringDamper};
 use dirac::prelude::*;
@@ -50,6 +52,14 @@ struct Pulsed {
     motor: GearedMotor,
 }
 
+/// The motor driven by a voltage that is an input, for its linearisation.
+#[derive(Interconnection, Clone)]
+#[dirac(connect(source.p, motor.r.p), connect(source.n, motor.ground.p))]
+struct Driven {
+    source: VoltageSource,
+    motor: GearedMotor,
+}
+
 fn main() -> Result<(), Box<dyn Error>> {
     let (volts, r, k, b, n) = (12.0, 1.0, 0.5, 0.1, 4.0);
     let motor = GearedMotor {
@@ -81,6 +91,20 @@ fn main() -> Result<(), Box<dyn Error>> {
     let stored = step.energy()[step.len() - 1] - step.energy()[0];
     let off = supplied - stored - lost;
     println!("energy: supplied {supplied:.4} J = stored {stored:.4} + lost {lost:.4} ({off:.0e})");
+    let driven = Driven { source: VoltageSource { u: 0.0 }, motor: motor.clone() };
+    let zero = VecQ::<Driven>::zeros();
+    let rest = consistent_state(&driven, 0.0, &zero, &zero, Consistency::default())?;
+    let linear = linearize(&driven, 0.0, &rest)?;
+    let minimal = linear.minreal(&driven, 1e-9)?;
+    let poles = dirac::control::poles(&minimal.a)?;
+    let poles: Vec<String> = poles.iter().map(|p| format!("{:.4}{:+.4}i", p.re, p.im)).collect();
+    println!(
+        "linearised at rest: {} states, {} of them reached and seen ({}); poles {}",
+        linear.a.nrows(),
+        minimal.a.nrows(),
+        minimal.state_names().join(", "),
+        poles.join(", ")
+    );
     let source = PulseVoltage { offset: 0.0, amplitude: volts, width: 0.5, period: 0.05, start: 0.0 };
     let pulsed = Pulsed { source, motor };
     let zero = VecQ::<Pulsed>::zeros();

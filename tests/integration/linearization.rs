@@ -504,9 +504,24 @@ mod from_parts {
         let zero = VecQ::<Drive>::zeros();
         let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
         let linear = linearize(&model, 0.0, &rest).expect("linearises");
-        for tolerance in [0.0, -1e-9, 1.0, f64::NAN] {
+        for tolerance in [0.0, -1e-9, 1.0, f64::NAN, f64::INFINITY] {
             let error = linear.minreal(&model, tolerance).expect_err("not a tolerance");
             assert!(matches!(error, SimError::InvalidOption { what: "tolerance", .. }), "{error}");
         }
+        // Another model than the one linearised: its names cannot name these states.
+        let other = super::Inverted { m: 1.0, l: 1.0, g: 9.81, tau: 0.0 };
+        let error = linear.minreal(&other, 1e-9).expect_err("another model");
+        assert!(error.to_string().contains("pass the model that was linearised"), "{error}");
+        // A non-finite entry is named.
+        let mut broken = linear.clone();
+        broken.a[(0, 1)] = f64::NAN;
+        let error = broken.minreal(&model, 1e-9).expect_err("a NaN");
+        assert!(error.to_string().contains("non-finite"), "{error}");
+        // A minimal realisation names its own states; it does not take others.
+        let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
+        let error = minimal
+            .in_coordinates(&model, &[model.coordinate("rotor.phi").expect("a coordinate")])
+            .expect_err("already named");
+        assert!(matches!(error, SimError::InvalidOption { what: "coordinates", .. }), "{error}");
     }
 }

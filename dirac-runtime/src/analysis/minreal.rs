@@ -42,18 +42,39 @@ impl Linearization {
                 }
                 other => SimError::InvalidOption { what: "minreal", reason: other.to_string() },
             })?;
-        let (to_q, to_v) = self.coordinate_maps();
-        let names = model.coordinate_names();
-        // Outputs without feedthrough read the state alone, after the coordinates.
-        let outputs = model.output_names();
-        let d_scale = self.d.amax();
-        let read = (0..self.c.nrows())
-            .filter(|&k| self.d.row(k).amax() <= 1e-12 * d_scale.max(f64::MIN_POSITIVE))
-            .map(|k| (format!("δy({})", outputs[k]), self.c.row(k).into_owned()));
+        let (names, outputs) = (model.coordinate_names(), model.output_names());
+        if names.len() != self.positions.nrows() || outputs.len() != self.c.nrows() {
+            return Err(SimError::InvalidOption {
+                what: "minreal",
+                reason: format!(
+                    "the model has {} coordinates and {} outputs, the linearisation {} and {}: pass the \
+                     model that was linearised",
+                    names.len(),
+                    outputs.len(),
+                    self.positions.nrows(),
+                    self.c.nrows()
+                ),
+            });
+        }
+        let to_q = self.position_map();
+        let to_v = self.velocity_map(&to_q);
+        // A velocity an input sets directly (`Q B` has a nonzero row) is not a function of the
+        // state; an output with feedthrough neither.
+        let direct = &to_q * &self.b;
+        let direct_scale = (to_q.amax() * self.b.amax()).max(f64::MIN_POSITIVE);
+        let d_scale = self.d.amax().max(f64::MIN_POSITIVE);
         let candidates: Vec<(String, RowDVector<f64>)> = (0..to_q.nrows())
             .map(|k| (format!("δq({})", names[k]), to_q.row(k).into_owned()))
-            .chain(to_v.iter().map(|(k, row)| (format!("δv({})", names[*k]), row.clone())))
-            .chain(read)
+            .chain(
+                (0..to_v.nrows())
+                    .filter(|&k| direct.row(k).amax() <= 1e-12 * direct_scale)
+                    .map(|k| (format!("δv({})", names[k]), to_v.row(k).into_owned())),
+            )
+            .chain(
+                (0..self.c.nrows())
+                    .filter(|&k| self.d.row(k).amax() <= 1e-12 * d_scale)
+                    .map(|k| (format!("δy({})", outputs[k]), self.c.row(k).into_owned())),
+            )
             .collect();
         let basis = &minimal.basis;
         let r = basis.ncols();
@@ -64,11 +85,12 @@ impl Linearization {
         let reached: Vec<RowDVector<f64>> =
             candidates.iter().map(|(_, f)| f * &minimal.controllable).collect();
         let largest = reached.iter().map(|f| f.norm()).fold(0.0, f64::max);
-        let mut chosen: Vec<(String, RowDVector<f64>)> = Vec::new();
-        // Orthonormal rows spanning the chosen functionals, restricted to the kept state.
+        let mut rows: Vec<RowDVector<f64>> = Vec::new();
+        let mut state_names: Vec<String> = Vec::new();
+        // Orthonormal rows spanning those chosen, restricted to the kept state.
         let mut spanned: Vec<RowDVector<f64>> = Vec::new();
         for ((name, functional), reached) in candidates.into_iter().zip(&reached) {
-            if chosen.len() == r {
+            if rows.len() == r {
                 break;
             }
             // The functional must vanish on what no output sees: then the kept state alone
@@ -78,68 +100,47 @@ impl Linearization {
             if length <= EXACT * largest || (reached - &restricted * &seen).norm() > EXACT * length {
                 continue;
             }
-            let mut residual = restricted.clone();
-            for _ in 0..2 {
-                for row in &spanned {
-                    residual -= row * (residual.dot(row));
-                }
-            }
+            let residual = outside(restricted.clone(), &spanned);
             let left = residual.norm();
             if left > INDEPENDENT * length {
                 spanned.push(residual / left);
-                chosen.push((name, restricted));
+                rows.push(restricted);
+                state_names.push(name);
             }
         }
         // The rest of the kept state: orthonormal directions no name covers.
-        let mut rows: Vec<RowDVector<f64>> = chosen.iter().map(|(_, row)| row.clone()).collect();
-        let mut state_names: Vec<String> = chosen.into_iter().map(|(name, _)| name).collect();
-        let mut unnamed = 0;
         for i in 0..r {
             if rows.len() == r {
                 break;
             }
-            let mut residual = RowDVector::from_fn(r, |_, j| if i == j { 1.0 } else { 0.0 });
-            for _ in 0..2 {
-                for row in &spanned {
-                    residual -= row * (residual.dot(row));
-                }
-            }
+            let residual = outside(RowDVector::from_fn(r, |_, j| if i == j { 1.0 } else { 0.0 }), &spanned);
             let left = residual.norm();
             if left > 0.5 {
                 let direction = residual / left;
                 spanned.push(direction.clone());
                 rows.push(direction);
-                state_names.push(format!("x[{unnamed}]"));
-                unnamed += 1;
+                state_names
+                    .push(format!("x[{}]", state_names.iter().filter(|n| n.starts_with("x[")).count()));
             }
         }
-        let to_named = if rows.is_empty() { DMatrix::zeros(0, 0) } else { DMatrix::from_rows(&rows) };
-        let Some(from_named) = to_named.clone().try_inverse() else {
-            return Err(SimError::InvalidOption {
+        let to_named = if r == 0 { DMatrix::zeros(0, 0) } else { DMatrix::from_rows(&rows) };
+        let from_named = if r == 0 {
+            DMatrix::zeros(0, 0)
+        } else {
+            to_named.clone().try_inverse().ok_or_else(|| SimError::InvalidOption {
                 what: "minreal",
                 reason: "the named states of the minimal realisation are not independent".into(),
-            });
+            })?
         };
-        let from_named = if r == 0 { DMatrix::zeros(0, 0) } else { from_named };
         Ok(Linearization {
             a: &to_named * &minimal.a * &from_named,
             b: &to_named * &minimal.b,
             c: &minimal.c * &from_named,
             d: minimal.d,
             positions: &to_q * basis * &from_named,
-            velocities: self.velocity_map() * basis * &from_named,
+            velocities: to_v * basis * &from_named,
             basis: Basis::Minimal(state_names),
         })
-    }
-
-    /// The displacements `δq = Q x` of every coordinate as functionals of the state, and the
-    /// velocities `δv = V x` of those whose velocity no input sets directly (by coordinate).
-    fn coordinate_maps(&self) -> (DMatrix<f64>, Vec<(usize, RowDVector<f64>)>) {
-        let to_q = self.position_map();
-        let to_v = self.velocity_map();
-        let free = self.velocity_free_of_inputs();
-        let rows = (0..to_v.nrows()).filter(|&k| free[k]).map(|k| (k, to_v.row(k).into_owned())).collect();
-        (to_q, rows)
     }
 
     /// `δq = Q x`.
@@ -153,20 +154,23 @@ impl Linearization {
         map
     }
 
-    /// `δv = V x` for the coordinates [`Linearization::velocity_free_of_inputs`] marks: the rate
-    /// of `δq = Q x`, `Q (A x + B δu)`.
-    fn velocity_map(&self) -> DMatrix<f64> {
+    /// `δv = V x` where no input sets the velocity directly: the rate of `δq = Q x`,
+    /// `Q (A x + B δu)`, without its inputs' share.
+    fn velocity_map(&self, to_q: &DMatrix<f64>) -> DMatrix<f64> {
         if matches!(self.basis, Basis::Minimal(_)) {
             return self.velocities.clone();
         }
-        self.position_map() * &self.a
+        to_q * &self.a
     }
+}
 
-    /// Which coordinates' velocities no input sets directly (`Q B` has a zero row).
-    fn velocity_free_of_inputs(&self) -> Vec<bool> {
-        let to_q = self.position_map();
-        let direct = &to_q * &self.b;
-        let scale = (to_q.amax() * self.b.amax()).max(f64::MIN_POSITIVE);
-        (0..to_q.nrows()).map(|k| direct.row(k).amax() <= 1e-12 * scale).collect()
+/// What of `row` lies outside the orthonormal rows `spanned` (twice projected out: once loses
+/// orthogonality where `row` lies nearly inside them).
+fn outside(mut row: RowDVector<f64>, spanned: &[RowDVector<f64>]) -> RowDVector<f64> {
+    for _ in 0..2 {
+        for s in spanned {
+            row -= s * row.dot(s);
+        }
     }
+    row
 }

@@ -12,7 +12,7 @@
 
 use nalgebra::{DMatrix, SVD};
 
-use super::{ControlError, columns, finite, rows, square};
+use super::{ControlError, check_model};
 
 /// A minimal realisation of `(A, B, C, D)`, with the map from its state to the original one.
 #[derive(Clone, Debug)]
@@ -59,24 +59,7 @@ pub fn minimal_realization(
     d: &DMatrix<f64>,
     tolerance: f64,
 ) -> Result<MinimalRealization, ControlError> {
-    let n = square("A", a)?;
-    rows("B", b, n)?;
-    columns("C", c, n)?;
-    if d.nrows() != c.nrows() || d.ncols() != b.ncols() {
-        return Err(ControlError::Shape {
-            what: "D",
-            reason: format!(
-                "{} × {} where C and B ask for {} × {}",
-                d.nrows(),
-                d.ncols(),
-                c.nrows(),
-                b.ncols()
-            ),
-        });
-    }
-    for (name, m) in [("A", a), ("B", b), ("C", c), ("D", d)] {
-        finite(name, m)?;
-    }
+    check_model(a, b, c, d)?;
     if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 1.0) {
         return Err(ControlError::Tolerance { tolerance });
     }
