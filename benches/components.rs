@@ -8,8 +8,11 @@
 //! - by hand: the armature charge and the motor angle, `L = ½ l i² + ½ (j_m + j_l/n²) ω² −
 //!   k q ω` with the forces `V − R i` and `−(b/n²) ω` (the `motor_load` example's way).
 //!
-//! Both at rtol = atol = 1e-8, with Radau and Explicit, alternated `ROUNDS` times each; the
-//! medians' ratio is printed with the steps of each and the final speeds, which agree.
+//! - reduced: the ten parts with `#[dirac(reduce)]`: 3 coordinates and 1 row.
+//!
+//! All at rtol = atol = 1e-8, with Radau and Explicit, alternated `ROUNDS` times each (parts,
+//! reduced, by hand in every round); the medians' ratios to the hand model are printed with
+//! the steps of each and the final rotor speeds, which agree.
 //!
 //! Run: `cargo bench -p dirac-benches --bench components`.
 
@@ -52,6 +55,29 @@ pub struct Parts {
     pub housing: Fixed,
 }
 
+/// The same ten parts, reduced when the program compiles (`#[dirac(reduce)]`): the
+/// connections, the ground, the fixed housing, the gear and the EMF are solved for, leaving
+/// the node fluxes `source.p` and `r.n`, the load angle `gear.b` and the source's row.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(reduce)]
+#[dirac(
+    connect(source.p, r.p), connect(r.n, l.p), connect(l.n, emf.p), connect(emf.n, ground.p),
+    connect(source.n, ground.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+    connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+)]
+pub struct Reduced {
+    pub source: VoltageSource,
+    pub r: Resistor,
+    pub l: Inductor,
+    pub emf: Emf,
+    pub ground: Ground,
+    pub rotor: Inertia,
+    pub gear: IdealGear,
+    pub load: Inertia,
+    pub bearing: Damper,
+    pub housing: Fixed,
+}
+
 /// The same motor reduced by hand to its charge and angle.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(coordinates(q => i, theta => w))]
@@ -73,29 +99,32 @@ fn median(mut times: Vec<f64>) -> f64 {
     times[times.len() / 2]
 }
 
-/// Times the two runs alternately and prints their medians' ratio and what each computed.
-fn compare(method: &str, parts: &dyn Fn() -> (usize, f64), by_hand: &dyn Fn() -> (usize, f64)) {
-    let (mut ta, mut tb) = (Vec::new(), Vec::new());
-    let (mut a, mut b) = ((0, 0.0), (0, 0.0));
+/// One run: its steps and the final rotor speed.
+type Run<'a> = &'a dyn Fn() -> (usize, f64);
+
+/// Times the runs alternately, round by round, and prints each median with its ratio to the
+/// last run's (the hand model's), and what each computed.
+fn compare(method: &str, runs: &[(&str, Run<'_>)]) {
+    let mut times = vec![Vec::new(); runs.len()];
+    let mut results = vec![(0, 0.0); runs.len()];
     for _ in 0..ROUNDS {
-        let start = Instant::now();
-        a = black_box(parts());
-        ta.push(start.elapsed().as_secs_f64());
-        let start = Instant::now();
-        b = black_box(by_hand());
-        tb.push(start.elapsed().as_secs_f64());
+        for (k, (_, run)) in runs.iter().enumerate() {
+            let start = Instant::now();
+            results[k] = black_box(run());
+            times[k].push(start.elapsed().as_secs_f64());
+        }
     }
-    let (ma, mb) = (median(ta), median(tb));
-    println!(
-        "{method:9} parts {:8.1} µs ({} steps, ω = {:.9}) | by hand {:8.1} µs ({} steps, ω = {:.9}) | ratio {:.2}",
-        ma * 1e6,
-        a.0,
-        a.1,
-        mb * 1e6,
-        b.0,
-        b.1,
-        ma / mb
-    );
+    let medians: Vec<f64> = times.into_iter().map(median).collect();
+    let base = medians[runs.len() - 1];
+    for (k, (name, _)) in runs.iter().enumerate() {
+        println!(
+            "{method:9} {name:8} {:9.1} µs ({:4} steps, rotor ω = {:.9}) | ratio to by hand {:.2}",
+            medians[k] * 1e6,
+            results[k].0,
+            results[k].1,
+            medians[k] / base
+        );
+    }
 }
 
 fn main() {
@@ -114,6 +143,23 @@ fn main() {
     let zero = VecQ::<Parts>::zeros();
     let start = consistent_state(&parts, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
     let rotor = Parts::NAMES.coordinate_names().iter().position(|n| n == "rotor.phi").expect("the rotor");
+    let reduced = Reduced {
+        source: parts.source.clone(),
+        r: parts.r.clone(),
+        l: parts.l.clone(),
+        emf: parts.emf.clone(),
+        ground: Ground {},
+        rotor: parts.rotor.clone(),
+        gear: parts.gear.clone(),
+        load: parts.load.clone(),
+        bearing: parts.bearing.clone(),
+        housing: parts.housing.clone(),
+    };
+    let zero_reduced = VecQ::<Reduced>::zeros();
+    let start_reduced = consistent_state(&reduced, 0.0, &zero_reduced, &zero_reduced, Consistency::default())
+        .expect("at rest");
+    // The rotor turns `ratio` times the load, whose angle the reduced model keeps.
+    let load = Reduced::NAMES.coordinate_names().iter().position(|n| n == "gear.b").expect("the load");
     let hand = ByHand { l: L, r: R, k: K, jm: JM, jl: JL, b: B, n: N, volts: VOLTS };
     let zero_hand = VecQ::<ByHand>::zeros();
     let start_hand =
@@ -122,28 +168,45 @@ fn main() {
     let last = Sampling::Times(vec![end]);
     compare(
         "Radau",
-        &|| {
-            let mut radau = Radau::new(&parts, RadauOptions::tolerances(rtol, atol)).expect("valid");
-            let s = radau.solve(0.0, &start, end, &last).expect("integrates");
-            (radau.stats().steps, s.last().expect("a sample").v[rotor])
-        },
-        &|| {
-            let mut radau = Radau::new(&hand, RadauOptions::tolerances(rtol, atol)).expect("valid");
-            let s = radau.solve(0.0, &start_hand, end, &last).expect("integrates");
-            (radau.stats().steps, s.last().expect("a sample").v[1])
-        },
+        &[
+            ("parts", &|| {
+                let mut radau = Radau::new(&parts, RadauOptions::tolerances(rtol, atol)).expect("valid");
+                let s = radau.solve(0.0, &start, end, &last).expect("integrates");
+                (radau.stats().steps, s.last().expect("a sample").v[rotor])
+            }),
+            ("reduced", &|| {
+                let mut radau = Radau::new(&reduced, RadauOptions::tolerances(rtol, atol)).expect("valid");
+                let s = radau.solve(0.0, &start_reduced, end, &last).expect("integrates");
+                (radau.stats().steps, N * s.last().expect("a sample").v[load])
+            }),
+            ("by hand", &|| {
+                let mut radau = Radau::new(&hand, RadauOptions::tolerances(rtol, atol)).expect("valid");
+                let s = radau.solve(0.0, &start_hand, end, &last).expect("integrates");
+                (radau.stats().steps, s.last().expect("a sample").v[1])
+            }),
+        ],
     );
     compare(
         "Explicit",
-        &|| {
-            let mut explicit = Explicit::new(&parts, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
-            let s = explicit.solve(0.0, &start, end, &last).expect("integrates");
-            (explicit.stats().steps, s.last().expect("a sample").v[rotor])
-        },
-        &|| {
-            let mut explicit = Explicit::new(&hand, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
-            let s = explicit.solve(0.0, &start_hand, end, &last).expect("integrates");
-            (explicit.stats().steps, s.last().expect("a sample").v[1])
-        },
+        &[
+            ("parts", &|| {
+                let mut explicit =
+                    Explicit::new(&parts, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+                let s = explicit.solve(0.0, &start, end, &last).expect("integrates");
+                (explicit.stats().steps, s.last().expect("a sample").v[rotor])
+            }),
+            ("reduced", &|| {
+                let mut explicit =
+                    Explicit::new(&reduced, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+                let s = explicit.solve(0.0, &start_reduced, end, &last).expect("integrates");
+                (explicit.stats().steps, N * s.last().expect("a sample").v[load])
+            }),
+            ("by hand", &|| {
+                let mut explicit =
+                    Explicit::new(&hand, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+                let s = explicit.solve(0.0, &start_hand, end, &last).expect("integrates");
+                (explicit.stats().steps, s.last().expect("a sample").v[1])
+            }),
+        ],
     );
 }

@@ -82,6 +82,8 @@
 
 extern crate self as dirac;
 
+#[doc(hidden)]
+pub use dirac_macros::__reduce;
 pub use dirac_macros::{Interconnection, LagrangeDirac};
 pub use dirac_runtime::{
     Algebra, Basis, Capability, Consistency, Constraint, Coordinate, Crossing, Dense, DenseModel,

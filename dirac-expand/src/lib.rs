@@ -21,6 +21,7 @@ mod interconnect;
 mod laws;
 mod lower;
 mod model;
+mod reduce;
 mod structure;
 mod suggest;
 mod sym;
@@ -37,10 +38,39 @@ use syn::DeriveInput;
 /// The expansion of `#[derive(LagrangeDirac)]` on `input`: the trait impls, or the errors
 /// (every one found, with its span) beside stub impls.
 pub fn lagrange_dirac(input: &DeriveInput) -> TokenStream {
-    expand::derive(input)
+    let expanded = expand::derive(input);
+    let description = reduce::description(input, reduce::Kind::Primitive);
+    quote::quote! { #expanded #description }
 }
 
 /// The expansion of `#[derive(Interconnection)]` on `input`.
 pub fn interconnection(input: &DeriveInput) -> TokenStream {
-    interconnect::derive(input)
+    let expanded = interconnect::derive(input);
+    // A reduced composite describes itself as the one model it becomes, when it has become it.
+    if reduced(input) {
+        return expanded;
+    }
+    let description = reduce::description(input, reduce::Kind::Composite);
+    quote::quote! { #expanded #description }
+}
+
+/// One step of a reduced composite's gathering of its parts' descriptions: the expansion of
+/// the hidden macro `dirac::__reduce`, which the derives call.
+pub fn reduce_step(tokens: TokenStream) -> TokenStream {
+    reduce::step(tokens)
+}
+
+/// Whether a composite asks for `reduce`.
+fn reduced(input: &DeriveInput) -> bool {
+    input.attrs.iter().filter(|a| a.path().is_ident(symbol::DIRAC)).any(|a| {
+        a.parse_args_with(|stream: syn::parse::ParseStream| {
+            let mut found = false;
+            while !stream.is_empty() {
+                let tree: proc_macro2::TokenTree = stream.parse()?;
+                found |= matches!(&tree, proc_macro2::TokenTree::Ident(i) if i == symbol::REDUCE);
+            }
+            Ok(found)
+        })
+        .unwrap_or(false)
+    })
 }

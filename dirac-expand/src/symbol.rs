@@ -102,4 +102,8 @@ pub const MODEL_KEYS: &[&str] = &[
 pub const CONNECT: &str = "connect";
 
 /// Every key a `#[dirac(...)]` attribute of an interconnection accepts, for error messages.
-pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, HOLONOMIC, LARGE];
+pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, HOLONOMIC, LARGE, REDUCE];
+
+/// `reduce`: flatten the composite's parts into one model and eliminate its aliases when it
+/// compiles.
+pub const REDUCE: &str = "reduce";

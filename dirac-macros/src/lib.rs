@@ -37,9 +37,21 @@ pub fn derive_lagrange_dirac(input: TokenStream) -> TokenStream {
 ///   velocities (`r * wheel.v_theta - cart.v_x`), with coefficients that may depend on their
 ///   coordinates and on the struct's `f64` fields.
 ///
+/// - `reduce`: flatten the parts into one model when the program compiles, solving the rows
+///   that only relate coordinates linearly with constant coefficients (connections, grounds,
+///   fixed flanges, gears); the names keep their dotted paths.
+///
 /// The result is again a Lagrange-Dirac system, so interconnections nest.
 #[proc_macro_derive(Interconnection, attributes(dirac))]
 pub fn derive_interconnection(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
     dirac_expand::interconnection(&input).into()
+}
+
+/// One step of a reduced composite's gathering of its parts (`#[dirac(reduce)]`): called by
+/// the code the derives emit, never by hand.
+#[doc(hidden)]
+#[proc_macro]
+pub fn __reduce(input: TokenStream) -> TokenStream {
+    dirac_expand::reduce_step(input.into()).into()
 }

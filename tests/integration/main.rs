@@ -39,6 +39,7 @@ mod prescribed;
 mod probes;
 mod profile;
 mod radau;
+mod reduction;
 mod results;
 mod robots;
 mod scales;

@@ -7,7 +7,7 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 use crate::ast::is_f64;
 use crate::ctxt::Ctxt;
 use crate::lower::member_path;
-use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, HOLONOMIC, INTERCONNECTION_KEYS, LARGE};
+use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, HOLONOMIC, INTERCONNECTION_KEYS, LARGE, REDUCE};
 
 /// A composite as written by the user.
 pub struct Composite<'a> {
@@ -23,6 +23,8 @@ pub struct Composite<'a> {
     pub holonomic: Vec<OneForm>,
     /// `large`: the composite may take more stack than the limit.
     pub large: bool,
+    /// `reduce`: the composite is flattened into one model with its aliases eliminated.
+    pub reduce: bool,
     /// Whether an attribute failed to parse (later stages then report nothing more).
     pub incomplete: bool,
     /// The struct's doc comment.
@@ -103,6 +105,7 @@ impl<'a> Composite<'a> {
             constraints: Vec::new(),
             holonomic: Vec::new(),
             large: false,
+            reduce: false,
             incomplete: false,
             doc: crate::ast::doc_comment(&input.attrs),
             param_docs: Vec::new(),
@@ -210,6 +213,7 @@ fn parse_items(cx: &Ctxt, composite: &mut Composite<'_>, input: ParseStream) -> 
         let key = input.call(Ident::parse_any)?;
         match key.to_string().as_str() {
             LARGE => composite.large = true,
+            REDUCE => composite.reduce = true,
             CONNECT => {
                 let content;
                 syn::parenthesized!(content in input);

@@ -7,7 +7,7 @@
 //! composite when the program compiles ([`consts`]), the methods from the signature table
 //! ([`methods`], with the rows' own parts from [`emit`]) and the named items ([`items`]).
 
-mod ast;
+pub(crate) mod ast;
 mod blocks;
 mod consts;
 mod emit;
@@ -42,6 +42,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         (model, linearity)
     });
     match (cx.into_compile_errors(), built) {
+        (None, Some(_)) if composite.reduce => crate::reduce::start(&composite, input),
         (None, Some((mut model, linearity))) => {
             let blocks = CompositeBlocks::derive(&mut model);
             if composite.has_arrays() {

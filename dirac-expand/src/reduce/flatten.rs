@@ -1,0 +1,779 @@
+//! One model from a composite's parts, with its aliases eliminated (DESIGN §6.1).
+//!
+//! Every name of a part is prefixed by where the part sits (`gear.wa` is the flat model's
+//! `gear__wa`); the Lagrangians, Rayleigh functions and forces add up; the parts' rows, the
+//! composite's own rows and its connections become the flat model's rows. Then the rows that
+//! only say how coordinates move together are solved at compile time and dropped:
+//!
+//! - `connect(a.x, b.y)`: `b.y` is `a.x` (the first in field order stays);
+//! - a position row affine in the coordinates with constant coefficients (`p`, a ground;
+//!   `phi - phi0`, a fixed flange): one of its coordinates is the rest's combination;
+//! - a velocity row linear in two or more velocities with constant coefficients and nothing
+//!   else (`wa - ratio * wb`, a gear; `vp - vn - k * w`, an EMF): the same for the velocities,
+//!   and for the coordinates with their difference at zero.
+//!
+//! A velocity row of that kind is solved in its integrated form (`a - ratio * b`), so that
+//! positions substitute positions. An eliminated coordinate's forces act on the coordinates it
+//! is made of, scaled by their coefficients (virtual work). A row whose multiplier a part reads
+//! (an output `i = -emf`) is solved only for a coordinate without inertia that no other row
+//! reaches, its multiplier then read off that coordinate's momentum balance; otherwise it
+//! stays a row. The reduced model moves like the composite started with the eliminated rows'
+//! offsets at zero: connected coordinates equal, geared ones in ratio.
+
+use std::collections::HashMap;
+
+use proc_macro2::{Span, TokenStream};
+use quote::{ToTokens, format_ident, quote};
+use syn::{DeriveInput, Expr, Ident};
+
+use super::Kind;
+use super::affine::{Coefficient, Role, affine, solve};
+use super::derivative::{D, derivative};
+use super::rewrite::{point_at_fields, rename};
+use crate::ast::{ConstraintKind, Model, Requirement};
+use crate::ctxt::Ctxt;
+use crate::interconnect::ast::Composite;
+
+/// A part's description, filed under where it sits in the composite.
+pub struct Part {
+    pub prefix: Vec<Ident>,
+    pub kind: Kind,
+    pub input: DeriveInput,
+}
+
+/// A coordinate of the flat model.
+#[derive(Clone)]
+struct Coordinate {
+    q: String,
+    v: String,
+    port: bool,
+}
+
+/// A row of the flat model.
+#[derive(Clone)]
+struct Row {
+    kind: ConstraintKind,
+    name: String,
+    expr: TokenStream,
+    /// A velocity row linear in two velocities or more with constant coefficients and
+    /// nothing else, integrated with its offset at zero: `wa - ratio * wb` as `a - ratio * b`.
+    /// The reduction solves it in this form, so that positions substitute positions.
+    position: Option<TokenStream>,
+}
+
+/// A coordinate solved for: `q = Σ kⱼ qⱼ + k₀` (the text for the list of eliminations).
+#[derive(Clone)]
+struct Elimination {
+    name: String,
+    by: String,
+}
+
+/// What a row gives at compile time.
+enum Solution {
+    /// The coordinate at this index is the others' combination plus a constant; the row's
+    /// coefficient of it.
+    For(usize, Vec<(String, Coefficient)>, Coefficient, f64),
+    /// The row holds whatever the coordinates: drop it.
+    Redundant,
+    /// The row stays a row.
+    None,
+}
+
+/// The coordinate `name` stands for after the connections so far: itself, or the one it was
+/// merged into.
+fn resolve(subst: &HashMap<String, TokenStream>, mut name: String) -> String {
+    while let Some(to) = subst.get(&name) {
+        let mut trees = to.clone().into_iter();
+        match (trees.next(), trees.next()) {
+            (Some(proc_macro2::TokenTree::Ident(i)), None) => name = i.to_string(),
+            _ => break,
+        }
+    }
+    name
+}
+
+/// The flat model while it is assembled.
+#[derive(Default, Clone)]
+struct Flat {
+    /// Each field of the flat model with the path of the composite's fields it reads.
+    params: Vec<(String, Vec<String>)>,
+    requirements: Vec<(String, Requirement)>,
+    inputs: Vec<String>,
+    coordinates: Vec<Coordinate>,
+    lagrangian: Vec<TokenStream>,
+    dissipation: Vec<TokenStream>,
+    forces: Vec<(String, TokenStream)>,
+    rows: Vec<Row>,
+    defines: Vec<(String, TokenStream)>,
+    outputs: Vec<(String, TokenStream)>,
+    units: Vec<(String, syn::LitStr)>,
+    connections: Vec<(String, String, Ident)>,
+    large: bool,
+    eliminated: Vec<Elimination>,
+}
+
+fn mangle(path: &[String]) -> String {
+    path.join("__")
+}
+
+fn strings(prefix: &[Ident]) -> Vec<String> {
+    prefix.iter().map(|i| syn::ext::IdentExt::unraw(i).to_string()).collect()
+}
+
+/// The flat model's expansion, or the errors that stop it beside stub impls.
+pub fn flatten(input: &DeriveInput, parts: &[Part]) -> TokenStream {
+    let cx = Ctxt::new();
+    let mut flat = Flat::default();
+    let top = Part { prefix: Vec::new(), kind: Kind::Composite, input: input.clone() };
+    for part in std::iter::once(&top).chain(parts) {
+        let field = part.prefix.first().unwrap_or(&input.ident);
+        match part.kind {
+            Kind::Primitive => flat.primitive(&cx, part, field),
+            Kind::Composite => flat.composite(&cx, part),
+        }
+    }
+    // A composite's rows read its parts' names, which are all known now.
+    for part in std::iter::once(&top).chain(parts).filter(|p| p.kind == Kind::Composite) {
+        flat.composite_rows(&cx, part);
+    }
+    let mut described = None;
+    if !cx.has_errors() {
+        // A reduced composite describes itself to the composites around it before its
+        // eliminations, its connections as rows: they reduce it again with their own
+        // connections, and every name of its parts is theirs to connect.
+        let mut whole = flat.clone();
+        whole.connections_as_rows();
+        described = Some(whole.input(input));
+        flat.eliminate(&cx);
+    }
+    if let Some(errors) = cx.into_compile_errors() {
+        let stub = crate::expand::stub_impls(&input.ident, (1, 1));
+        return quote! { #errors #stub };
+    }
+    let model = flat.input(input);
+    let model: DeriveInput = match syn::parse2(model) {
+        Ok(model) => model,
+        Err(e) => return e.to_compile_error(),
+    };
+    let expanded = crate::expand::derive(&model);
+    let fields: HashMap<String, Vec<String>> = flat.params.iter().cloned().collect();
+    let mut names: Vec<(String, String)> = flat
+        .params
+        .iter()
+        .map(|(p, _)| p.clone())
+        .chain(flat.inputs.iter().cloned())
+        .chain(flat.coordinates.iter().flat_map(|c| [c.q.clone(), c.v.clone()]))
+        .chain(flat.rows.iter().map(|r| r.name.clone()))
+        .chain(flat.outputs.iter().map(|(o, _)| o.clone()))
+        .chain(flat.defines.iter().map(|(d, _)| d.clone()))
+        .filter(|n| n.contains("__"))
+        .flat_map(|n| {
+            let dotted = n.replace("__", ".");
+            // The LaTeX of the equations escapes underscores.
+            let escaped = (n.replace('_', "\\_"), dotted.replace('_', "\\_"));
+            [(n, dotted), escaped]
+        })
+        .collect();
+    names.sort_by_key(|(n, _)| std::cmp::Reverse(n.len()));
+    let expanded = point_at_fields(expanded, &fields, &names);
+    let description = match described.map(syn::parse2::<DeriveInput>) {
+        Some(Ok(whole)) => super::description(&whole, Kind::Primitive),
+        Some(Err(e)) => e.to_compile_error(),
+        None => TokenStream::new(),
+    };
+    let eliminated = flat.eliminated.iter().map(|e| {
+        let (name, by) = (e.name.replace("__", "."), e.by.replace("__", "."));
+        quote! { (#name, #by) }
+    });
+    let (ident, vis) = (&input.ident, &input.vis);
+    quote! {
+        #expanded
+        #description
+        #[automatically_derived]
+        impl #ident {
+            /// The coordinates the reduction solved for at compile time, each with what it
+            /// equals in the coordinates that remain (`("r.p", "source.p")`, `("gear.a",
+            /// "gear.ratio * load.phi")`), in the order they were eliminated.
+            #vis const ELIMINATED: &'static [(&'static str, &'static str)] = &[#(#eliminated),*];
+        }
+    }
+}
+
+impl Flat {
+    /// A primitive part: every name prefixed, its terms added.
+    fn primitive(&mut self, cx: &Ctxt, part: &Part, field: &Ident) {
+        let own = Ctxt::new();
+        let model = Model::from_input(&own, &part.input);
+        if own.has_errors() || model.incomplete {
+            let _ = own.into_compile_errors();
+            cx.error_spanned_by(field, format!("`reduce` cannot read the part `{}`", part.input.ident));
+            return;
+        }
+        let unsupported = [
+            (!model.laws.is_empty(), "laws (`friction`, `diode`, `switch`)"),
+            (!model.unilaterals.is_empty(), "unilateral constraints"),
+            (!model.events.is_empty(), "events"),
+            (model.urdf.is_some(), "URDF robots"),
+            (!model.switches.is_empty(), "contacts"),
+        ];
+        for (_, what) in unsupported.iter().filter(|(has, _)| *has) {
+            cx.error_spanned_by(
+                field,
+                format!(
+                    "`reduce` does not flatten {what} yet, and `{}` (the part `{}`) has them; \
+                     remove `reduce` to interconnect it as it is",
+                    part.input.ident,
+                    strings(&part.prefix).join(".")
+                ),
+            );
+        }
+        let prefix = strings(&part.prefix);
+        let mut map: HashMap<String, TokenStream> = HashMap::new();
+        let mut name = |local: &str| -> String {
+            let mut path = prefix.clone();
+            path.push(local.to_owned());
+            let flat = mangle(&path);
+            let ident = format_ident!("{}", flat);
+            map.insert(local.to_owned(), quote! { #ident });
+            flat
+        };
+        let unraw = |i: &Ident| syn::ext::IdentExt::unraw(i).to_string();
+        let params: Vec<String> = model.params.iter().map(|p| name(&unraw(p))).collect();
+        let inputs: Vec<String> = model.inputs.iter().map(|u| name(&unraw(u))).collect();
+        let coordinates: Vec<(String, String, bool)> = model
+            .coordinates
+            .iter()
+            .map(|c| (name(&unraw(&c.name)), name(&unraw(&c.velocity)), model.ports.contains(&c.name)))
+            .collect();
+        // Rows by their names, the given ones or `holonomic0`, `constraint1`, … as outputs read them.
+        let ordered = model.ordered_constraints();
+        let rows: Vec<(ConstraintKind, String)> =
+            ordered.iter().map(|c| (c.decl.kind, name(&c.name))).collect();
+        let defines: Vec<String> = model.defines.iter().map(|d| name(&unraw(&d.name))).collect();
+        let outputs: Vec<String> = model.outputs.iter().map(|o| name(&unraw(&o.name))).collect();
+        let rename = |e: &Expr| rename(e.to_token_stream(), &map);
+
+        for (flat, param) in params.into_iter().zip(&model.params) {
+            // A reduced composite's field `l__l` is its part's `l.l`.
+            let mut path = prefix.clone();
+            path.extend(unraw(param).split("__").map(str::to_owned));
+            self.params.push((flat, path));
+        }
+        self.inputs.extend(inputs);
+        for (local, requirement) in &model.requirements {
+            let mut path = prefix.clone();
+            path.push(unraw(local));
+            self.requirements.push((mangle(&path), *requirement));
+        }
+        for (q, v, port) in coordinates {
+            self.coordinates.push(Coordinate { q, v, port });
+        }
+        if let Some((_, l)) = &model.lagrangian
+            && !is_zero(l)
+        {
+            self.lagrangian.push(rename(l));
+        }
+        if let Some((_, r)) = &model.dissipation {
+            self.dissipation.push(rename(r));
+        }
+        for force in &model.forces {
+            let key = map[&unraw(&force.coordinate)].to_string();
+            self.forces.push((key, rename(&force.expr)));
+        }
+        for ((kind, row), c) in rows.into_iter().zip(&ordered) {
+            self.rows.push(Row { kind, name: row, expr: rename(&c.decl.expr), position: None });
+        }
+        for (flat, d) in defines.into_iter().zip(&model.defines) {
+            self.defines.push((flat, rename(&d.expr)));
+        }
+        for (flat, o) in outputs.into_iter().zip(&model.outputs) {
+            self.outputs.push((flat, rename(&o.expr)));
+        }
+        for (local, unit) in &model.units {
+            if let Some(flat) = map.get(&unraw(local)) {
+                self.units.push((flat.to_string(), unit.clone()));
+            }
+        }
+        self.large |= model.large;
+    }
+
+    /// A composite: its own parameters, rows and connections, its parts' names by path.
+    fn composite(&mut self, cx: &Ctxt, part: &Part) {
+        let composite = Composite::from_input(cx, &part.input);
+        if composite.incomplete {
+            return;
+        }
+        if let Some(array) = composite.subsystems.iter().find(|s| s.array) {
+            cx.error_spanned_by(
+                &array.ident,
+                "`reduce` does not flatten arrays of subsystems yet; remove `reduce` to interconnect them as they are",
+            );
+            return;
+        }
+        let prefix = strings(&part.prefix);
+        let path_of = |dotted: &[String]| -> String {
+            let mut path = prefix.clone();
+            path.extend(dotted.iter().cloned());
+            mangle(&path)
+        };
+        for param in &composite.params {
+            let mut path = prefix.clone();
+            path.push(syn::ext::IdentExt::unraw(param).to_string());
+            self.params.push((mangle(&path), path));
+        }
+        for c in &composite.connections {
+            self.connections.push((path_of(&c.a.path), path_of(&c.b.path), c.key.clone()));
+        }
+        self.large |= composite.large;
+    }
+
+    /// A composite's own rows, their member paths read as the flat model's names.
+    fn composite_rows(&mut self, cx: &Ctxt, part: &Part) {
+        let own = Ctxt::new();
+        let composite = Composite::from_input(&own, &part.input);
+        let _ = own.into_compile_errors();
+        if composite.incomplete || cx.has_errors() {
+            return;
+        }
+        let prefix = strings(&part.prefix);
+        // The rows' names read as the composite's: every name a path below it.
+        let map: HashMap<String, TokenStream> = self
+            .names()
+            .into_iter()
+            .filter_map(|flat| {
+                let path: Vec<&str> = flat.split("__").collect();
+                let below =
+                    path.strip_prefix(prefix.iter().map(String::as_str).collect::<Vec<_>>().as_slice())?;
+                let ident = format_ident!("{}", flat);
+                Some((below.join("."), quote! { #ident }))
+            })
+            .collect();
+        let kinds = [
+            (ConstraintKind::Holonomic, &composite.holonomic),
+            (ConstraintKind::Velocity, &composite.constraints),
+        ];
+        for (kind, forms) in kinds {
+            for (k, form) in forms.iter().enumerate() {
+                let local =
+                    form.name.as_ref().map_or_else(|| format!("{}{k}", form.key), ToString::to_string);
+                let mut path = prefix.clone();
+                path.push(local);
+                self.rows.push(Row {
+                    kind,
+                    name: mangle(&path),
+                    expr: rename(form.expr.to_token_stream(), &map),
+                    position: None,
+                });
+            }
+        }
+    }
+
+    /// The connections as the rows they are, `v_a − v_b = 0`, named `reduce_connect0`, ….
+    fn connections_as_rows(&mut self) {
+        for (k, (a, b, _)) in std::mem::take(&mut self.connections).into_iter().enumerate() {
+            let velocity =
+                |q: &str| self.coordinates.iter().find(|c| c.q == q).map(|c| format_ident!("{}", c.v));
+            let (Some(va), Some(vb)) = (velocity(&a), velocity(&b)) else { continue };
+            let name = format!("reduce_connect{k}");
+            self.rows.push(Row {
+                kind: ConstraintKind::Velocity,
+                name,
+                expr: quote! { #va - #vb },
+                position: None,
+            });
+        }
+    }
+
+    /// Every name of the flat model so far.
+    fn names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self.params.iter().map(|(p, _)| p.clone()).collect();
+        names.extend(self.coordinates.iter().flat_map(|c| [c.q.clone(), c.v.clone()]));
+        names.extend(self.rows.iter().map(|r| r.name.clone()));
+        names.extend(self.defines.iter().map(|(d, _)| d.clone()));
+        names.extend(self.outputs.iter().map(|(o, _)| o.clone()));
+        names
+    }
+
+    /// Alias elimination: connections first, then the rows that are solvable at compile time.
+    fn eliminate(&mut self, cx: &Ctxt) {
+        // `subst` maps each eliminated coordinate and velocity to its expression in those left.
+        let mut subst: HashMap<String, TokenStream> = HashMap::new();
+        let positions: HashMap<String, TokenStream> = self
+            .coordinates
+            .iter()
+            .map(|c| {
+                let q = format_ident!("{}", c.q);
+                (c.v.clone(), quote! { #q })
+            })
+            .collect();
+        for k in 0..self.rows.len() {
+            if self.rows[k].kind == ConstraintKind::Velocity && self.integrable(&self.rows[k].expr) {
+                self.rows[k].position = Some(rename(self.rows[k].expr.clone(), &positions));
+            }
+        }
+        for (a, b, key) in std::mem::take(&mut self.connections) {
+            // A coordinate connected before stands for the one it was merged into.
+            let (a, b) = (resolve(&subst, a), resolve(&subst, b));
+            let (Some(ia), Some(ib)) = (self.coordinate(&a), self.coordinate(&b)) else {
+                let missing = if self.coordinate(&a).is_none() { &a } else { &b };
+                cx.error_spanned_by(
+                    &key,
+                    format!("`{}` is not a coordinate of the parts", missing.replace("__", ".")),
+                );
+                continue;
+            };
+            if ia == ib {
+                continue;
+            }
+            let (keep, drop) = if ia < ib { (ia, ib) } else { (ib, ia) };
+            let terms = vec![(self.coordinates[keep].q.clone(), Coefficient::number(1.0))];
+            self.substitute(&mut subst, drop, &terms, &Coefficient::number(0.0));
+        }
+        // Rows read by name (an output `i = -source`) need their multipliers: such a row is
+        // solved only where the momentum balance of the coordinate it is solved for gives its
+        // multiplier.
+        let read: Vec<String> = self.read_names();
+        loop {
+            let mut progress = false;
+            let mut k = 0;
+            while k < self.rows.len() {
+                let expr = rename(self.rows[k].expr.clone(), &subst);
+                self.rows[k].expr = expr.clone();
+                let position = self.rows[k].position.as_ref().map(|p| rename(p.clone(), &subst));
+                self.rows[k].position.clone_from(&position);
+                let solution = match &position {
+                    Some(position) => self.solvable(position, ConstraintKind::Holonomic),
+                    None => self.solvable(&expr, self.rows[k].kind),
+                };
+                match solution {
+                    Solution::For(index, others, constant, pivot) => {
+                        if read.contains(&self.rows[k].name) {
+                            match self.multiplier(&subst, k, index, pivot) {
+                                Some(multiplier) => {
+                                    subst.insert(self.rows[k].name.clone(), multiplier);
+                                }
+                                None => {
+                                    k += 1;
+                                    continue;
+                                }
+                            }
+                        }
+                        self.rows.remove(k);
+                        self.substitute(&mut subst, index, &others, &constant);
+                        progress = true;
+                    }
+                    Solution::Redundant => {
+                        self.rows.remove(k);
+                    }
+                    Solution::None => k += 1,
+                }
+            }
+            if !progress {
+                break;
+            }
+        }
+        // Everything else in the coordinates that remain.
+        let apply = |t: &mut TokenStream| *t = rename(t.clone(), &subst);
+        self.lagrangian.iter_mut().for_each(apply);
+        self.dissipation.iter_mut().for_each(apply);
+        self.forces.iter_mut().for_each(|(_, f)| apply(f));
+        self.rows.iter_mut().for_each(|r| apply(&mut r.expr));
+        self.defines.iter_mut().for_each(|(_, d)| apply(d));
+        self.outputs.iter_mut().for_each(|(_, o)| apply(o));
+    }
+
+    /// Whether a velocity row is linear in two velocities or more with constant coefficients
+    /// and reads nothing else.
+    fn integrable(&self, expr: &TokenStream) -> bool {
+        let Ok(expr) = syn::parse2::<Expr>(expr.clone()) else { return false };
+        let role = |name: &str| {
+            if self.coordinates.iter().any(|c| c.v == name) {
+                Role::Unknown
+            } else if self.params.iter().any(|(p, _)| p == name) && !self.inputs.iter().any(|u| u == name) {
+                Role::Constant
+            } else {
+                Role::Other
+            }
+        };
+        affine(&expr, &role).is_some_and(|row| row.terms.len() >= 2 && row.constant.is_zero())
+    }
+
+    fn coordinate(&self, name: &str) -> Option<usize> {
+        self.coordinates.iter().position(|c| c.q == name)
+    }
+
+    /// The names the parts' outputs, definitions and rows read.
+    fn read_names(&self) -> Vec<String> {
+        let mut read = Vec::new();
+        let exprs = self
+            .outputs
+            .iter()
+            .map(|(_, e)| e)
+            .chain(self.defines.iter().map(|(_, e)| e))
+            .chain(self.rows.iter().map(|r| &r.expr))
+            .chain(self.forces.iter().map(|(_, e)| e))
+            .chain(self.lagrangian.iter())
+            .chain(self.dissipation.iter());
+        for e in exprs {
+            collect_idents(e.clone(), &mut read);
+        }
+        read
+    }
+
+    /// The coordinate a row can be solved for, with what it equals: a position row affine in
+    /// the coordinates, or a homogeneous velocity row in two velocities or more, with constant
+    /// coefficients, and a number for the coefficient of the one solved for.
+    fn solvable(&self, expr: &TokenStream, kind: ConstraintKind) -> Solution {
+        self.solve_row(expr, kind).unwrap_or(Solution::None)
+    }
+
+    fn solve_row(&self, expr: &TokenStream, kind: ConstraintKind) -> Option<Solution> {
+        let expr: Expr = syn::parse2(expr.clone()).ok()?;
+        let constants: Vec<&str> = self
+            .params
+            .iter()
+            .map(|(p, _)| p.as_str())
+            .filter(|p| !self.inputs.iter().any(|u| u == p))
+            .collect();
+        let holonomic = kind == ConstraintKind::Holonomic;
+        let role = |name: &str| {
+            let unknown = self.coordinates.iter().any(|c| if holonomic { c.q == name } else { c.v == name });
+            if unknown {
+                Role::Unknown
+            } else if constants.contains(&name) {
+                Role::Constant
+            } else {
+                Role::Other
+            }
+        };
+        let row = affine(&expr, &role)?;
+        // A row its eliminations have emptied (two grounds joined) says nothing more.
+        if row.terms.is_empty() && row.constant.is_zero() {
+            return Some(Solution::Redundant);
+        }
+        if !holonomic && (row.terms.len() < 2 || !row.constant.is_zero()) {
+            return None;
+        }
+        // The last unknown with a number for coefficient: later parts hang on earlier ones.
+        let (x, pivot) = row.terms.iter().rev().find(|(_, c)| c.value.is_some_and(|v| v != 0.0))?;
+        let pivot = pivot.value?;
+        let index = self.coordinates.iter().position(|c| if holonomic { c.q == *x } else { c.v == *x })?;
+        let (others, constant) = solve(&row, x)?;
+        // Coordinates, not velocities, name the terms from here on.
+        let others = others
+            .into_iter()
+            .map(|(n, k)| {
+                let q = self.coordinates.iter().find(|c| c.q == n || c.v == n).map(|c| c.q.clone());
+                (q.unwrap_or(n), k)
+            })
+            .collect();
+        Some(Solution::For(index, others, constant, pivot))
+    }
+
+    /// The multiplier of row `k`, about to be solved for coordinate `index` (its coefficient
+    /// `pivot`), from that coordinate's momentum balance `0 = ∂L/∂x + F_x − ∂R/∂v_x + pivot λ`:
+    /// only where `x` has no inertia (`L` does not read `v_x`), no other row reaches it, and
+    /// the derivatives are taken here.
+    fn multiplier(
+        &self,
+        subst: &HashMap<String, TokenStream>,
+        k: usize,
+        index: usize,
+        pivot: f64,
+    ) -> Option<TokenStream> {
+        let Coordinate { q, v, .. } = &self.coordinates[index];
+        let now = |t: &TokenStream| -> Option<Expr> { syn::parse2(rename(t.clone(), subst)).ok() };
+        let reads = |t: &TokenStream, name: &str| {
+            let mut names = Vec::new();
+            collect_idents(rename(t.clone(), subst), &mut names);
+            names.iter().any(|n| n == name)
+        };
+        if self.lagrangian.iter().any(|l| reads(l, v)) {
+            return None;
+        }
+        let reached = self.rows.iter().enumerate().filter(|(j, _)| *j != k).any(|(_, row)| match row.kind {
+            ConstraintKind::Velocity => reads(&row.expr, v),
+            ConstraintKind::Holonomic => reads(&row.expr, q),
+        });
+        if reached {
+            return None;
+        }
+        let mut balance = D::Zero;
+        for l in &self.lagrangian {
+            balance = balance.plus(derivative(&now(l)?, q)?);
+        }
+        for (_, f) in self.forces.iter().filter(|(on, _)| on == q) {
+            balance = balance.plus(D::Of(rename(f.clone(), subst)));
+        }
+        for r in &self.dissipation {
+            balance = balance.plus(derivative(&now(r)?, v)?.negated());
+        }
+        let balance = balance.into_tokens();
+        let scale = super::affine::float(-1.0 / pivot);
+        Some(quote! { (#scale) * (#balance) })
+    }
+
+    /// Eliminates coordinate `index`: `q = Σ kⱼ qⱼ + k₀`, `v = Σ kⱼ vⱼ`; its forces act on the
+    /// `qⱼ` scaled by `kⱼ`.
+    fn substitute(
+        &mut self,
+        subst: &mut HashMap<String, TokenStream>,
+        index: usize,
+        terms: &[(String, Coefficient)],
+        constant: &Coefficient,
+    ) {
+        let gone = self.coordinates.remove(index);
+        let velocity = |q: &str| self.coordinates.iter().find(|c| c.q == q).map(|c| c.v.clone());
+        let combine = |names: &dyn Fn(&str) -> String, with_constant: bool| -> TokenStream {
+            let mut parts: Vec<TokenStream> = terms
+                .iter()
+                .map(|(n, k)| {
+                    let ident = format_ident!("{}", names(n));
+                    match k.value {
+                        Some(1.0) => quote! { #ident },
+                        _ => {
+                            let k = &k.tokens;
+                            quote! { (#k) * #ident }
+                        }
+                    }
+                })
+                .collect();
+            if with_constant && !constant.is_zero() {
+                parts.push(constant.tokens.clone());
+            }
+            if parts.is_empty() {
+                quote! { 0.0 }
+            } else {
+                quote! { #(#parts)+* }
+            }
+        };
+        let q = combine(&|n| n.to_owned(), true);
+        let v = combine(&|n| velocity(n).unwrap_or_else(|| n.to_owned()), false);
+        let by = if q.to_string() == "0.0" { "0".to_owned() } else { q.to_string() };
+        self.eliminated.push(Elimination { name: gone.q.clone(), by });
+        if gone.port {
+            for (n, _) in terms {
+                if let Some(c) = self.coordinates.iter_mut().find(|c| c.q == *n) {
+                    c.port = true;
+                }
+            }
+        }
+        let mut new = HashMap::new();
+        new.insert(gone.q.clone(), q);
+        new.insert(gone.v.clone(), v);
+        for value in subst.values_mut() {
+            *value = rename(value.clone(), &new);
+        }
+        subst.extend(new);
+        // Virtual work: F δq = F Σ kⱼ δqⱼ.
+        let mut moved = Vec::new();
+        for (target, force) in self.forces.iter().filter(|(t, _)| *t == gone.q) {
+            for (n, k) in terms {
+                let k = &k.tokens;
+                moved.push((n.clone(), quote! { (#k) * (#force) }));
+            }
+            let _ = target;
+        }
+        self.forces.retain(|(t, _)| *t != gone.q);
+        self.forces.extend(moved);
+    }
+
+    /// The flat model as a derive input of `LagrangeDirac`, under the composite's name.
+    fn input(&self, composite: &DeriveInput) -> TokenStream {
+        let ident = |s: &str| Ident::new(s, Span::call_site());
+        let mut attrs = Vec::new();
+        let doc = crate::ast::doc_comment(&composite.attrs);
+        if !doc.is_empty() {
+            attrs.push(quote! { #[doc = #doc] });
+        }
+        let coordinates = self.coordinates.iter().map(|c| {
+            let (q, v) = (ident(&c.q), ident(&c.v));
+            quote! { #q => #v }
+        });
+        attrs.push(quote! { #[dirac(coordinates(#(#coordinates),*))] });
+        let ports: Vec<Ident> = self.coordinates.iter().filter(|c| c.port).map(|c| ident(&c.q)).collect();
+        if !ports.is_empty() {
+            attrs.push(quote! { #[dirac(port(#(#ports),*))] });
+        }
+        if !self.inputs.is_empty() {
+            let inputs = self.inputs.iter().map(|u| ident(u));
+            attrs.push(quote! { #[dirac(input(#(#inputs),*))] });
+        }
+        let lagrangian = if self.lagrangian.is_empty() {
+            quote! { 0.0 }
+        } else {
+            let terms = self.lagrangian.iter().map(|t| quote! { (#t) });
+            quote! { #(#terms)+* }
+        };
+        attrs.push(quote! { #[dirac(lagrangian = #lagrangian)] });
+        if !self.dissipation.is_empty() {
+            let terms = self.dissipation.iter().map(|t| quote! { (#t) });
+            attrs.push(quote! { #[dirac(dissipation = #(#terms)+*)] });
+        }
+        let mut on: Vec<(&str, Vec<&TokenStream>)> = Vec::new();
+        for (q, f) in &self.forces {
+            match on.iter_mut().find(|(n, _)| n == q) {
+                Some((_, fs)) => fs.push(f),
+                None => on.push((q, vec![f])),
+            }
+        }
+        for (q, fs) in on {
+            let q = ident(q);
+            let fs = fs.iter().map(|f| quote! { (#f) });
+            attrs.push(quote! { #[dirac(force(#q) = #(#fs)+*)] });
+        }
+        for row in &self.rows {
+            let (name, expr) = (ident(&row.name), &row.expr);
+            let key = match row.kind {
+                ConstraintKind::Holonomic => quote! { holonomic },
+                ConstraintKind::Velocity => quote! { constraint },
+            };
+            attrs.push(quote! { #[dirac(#key(#name) = #expr)] });
+        }
+        for (name, expr) in &self.defines {
+            let name = ident(name);
+            attrs.push(quote! { #[dirac(define(#name) = #expr)] });
+        }
+        for (name, expr) in &self.outputs {
+            let name = ident(name);
+            attrs.push(quote! { #[dirac(output(#name) = #expr)] });
+        }
+        for (name, requirement) in &self.requirements {
+            let name = ident(name);
+            let key = match requirement {
+                Requirement::Positive => quote! { positive },
+                Requirement::Nonnegative => quote! { nonnegative },
+                Requirement::Nonzero => quote! { nonzero },
+            };
+            attrs.push(quote! { #[dirac(#key(#name))] });
+        }
+        let names = self.names();
+        for (name, unit) in self.units.iter().filter(|(n, _)| names.contains(n) || self.inputs.contains(n)) {
+            let name = ident(name);
+            attrs.push(quote! { #[dirac(unit(#name) = #unit)] });
+        }
+        if self.large {
+            attrs.push(quote! { #[dirac(large)] });
+        }
+        let (vis, name) = (&composite.vis, &composite.ident);
+        let fields = self.params.iter().map(|(p, _)| ident(p));
+        quote! {
+            #(#attrs)*
+            #vis struct #name { #(pub #fields: f64,)* }
+        }
+    }
+}
+
+fn is_zero(e: &Expr) -> bool {
+    matches!(e, Expr::Lit(syn::ExprLit { lit: syn::Lit::Float(f), .. }) if f.base10_parse::<f64>().ok() == Some(0.0))
+}
+
+fn collect_idents(tokens: TokenStream, out: &mut Vec<String>) {
+    for tree in tokens {
+        match tree {
+            proc_macro2::TokenTree::Ident(i) => out.push(i.to_string()),
+            proc_macro2::TokenTree::Group(g) => collect_idents(g.stream(), out),
+            _ => {}
+        }
+    }
+}

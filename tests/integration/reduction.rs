@@ -1,0 +1,326 @@
+//! `#[dirac(reduce)]`: a composite flattened into one model when it compiles, its aliases
+//! eliminated. The reference of every comparison is the same composite without `reduce`,
+//! which these tests' neighbours check against independent solutions (the motor in
+//! `linearization.rs`, the parts in `components.rs`): reduced and unreduced must move alike.
+
+// The derives' accessors and constants of these composites are not all read here.
+#![allow(dead_code)]
+
+use dirac::components::electrical::{Ground, Inductor, Resistor, VoltageSource};
+use dirac::components::electromechanical::Emf;
+use dirac::components::rotational::{Damper, Fixed, IdealGear, Inertia};
+use dirac::prelude::*;
+
+macro_rules! motor_drive {
+    ($(#[$attr:meta])* $name:ident) => {
+        /// A DC motor with a gearbox and a load on a viscous bearing, from ten parts.
+        #[derive(Interconnection, Clone, Debug)]
+        $(#[$attr])*
+        #[dirac(
+            connect(source.p, r.p), connect(r.n, l.p), connect(l.n, emf.p), connect(emf.n, ground.p),
+            connect(source.n, ground.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+            connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+        )]
+        pub struct $name {
+            pub source: VoltageSource,
+            pub r: Resistor,
+            pub l: Inductor,
+            pub emf: Emf,
+            pub ground: Ground,
+            pub rotor: Inertia,
+            pub gear: IdealGear,
+            pub load: Inertia,
+            pub bearing: Damper,
+            pub housing: Fixed,
+        }
+
+        impl $name {
+            fn new() -> $name {
+                $name {
+                    source: VoltageSource { u: 12.0 },
+                    r: Resistor { r: 1.0 },
+                    l: Inductor { l: 0.05 },
+                    emf: Emf { k: 0.5 },
+                    ground: Ground {},
+                    rotor: Inertia { j: 0.01 },
+                    gear: IdealGear { ratio: 4.0 },
+                    load: Inertia { j: 0.05 },
+                    bearing: Damper { d: 0.1 },
+                    housing: Fixed { phi0: 0.0 },
+                }
+            }
+        }
+    };
+}
+
+motor_drive!(Parts);
+motor_drive!(
+    #[dirac(reduce)]
+    Reduced
+);
+
+/// A run from rest, sampled at `times`, at tight tolerances.
+macro_rules! run {
+    ($ty:ty, $model:expr, $times:expr) => {{
+        let (model, times): (&$ty, &[f64]) = (&$model, &$times);
+        let zero = VecQ::<$ty>::zeros();
+        let start = consistent_state(model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+        let mut radau = Radau::new(model, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid");
+        let end = *times.last().expect("a time");
+        radau.solve(0.0, &start, end, &Sampling::Times(times.to_vec())).expect("integrates")
+    }};
+}
+
+#[test]
+fn the_motor_from_ten_parts_reduces_to_three_coordinates_and_one_row() {
+    assert_eq!(Reduced::NAMES.coordinate_names(), ["source.p", "r.n", "gear.b"]);
+    assert_eq!(Reduced::NAMES.constraint_names(), ["source.source"]);
+    assert_eq!((VecQ::<Reduced>::zeros().len(), VecC::<Reduced>::zeros().len()), (3, 1));
+    assert_eq!((VecQ::<Parts>::zeros().len(), VecC::<Parts>::zeros().len()), (17, 15));
+    // The connections merge, the ground and the housing become numbers, the gear a ratio, the
+    // EMF's node `k` times the rotor's angle.
+    let eliminated = Reduced::ELIMINATED;
+    assert_eq!(eliminated.len(), 14);
+    assert!(eliminated.contains(&("r.p", "source.p")));
+    assert!(eliminated.contains(&("housing.phi", "bearing.a")));
+    assert!(eliminated.contains(&("source.n", "0")));
+    assert!(eliminated.contains(&("bearing.a", "housing.phi0")));
+    assert!(
+        eliminated
+            .iter()
+            .any(|(name, by)| *name == "emf.phi" && by.contains("gear.ratio") && by.contains("gear.b"))
+    );
+    assert!(
+        eliminated.iter().any(|(name, by)| *name == "l.n" && by.contains("emf.k") && by.contains("gear.b"))
+    );
+    // Its parameters and outputs keep the parts' dotted names.
+    let parameters = Reduced::new().parameter_names();
+    for name in
+        ["source.u", "r.r", "l.l", "emf.k", "rotor.j", "gear.ratio", "load.j", "bearing.d", "housing.phi0"]
+    {
+        assert!(parameters.iter().any(|p| p == name), "no parameter `{name}` in {parameters:?}");
+    }
+}
+
+#[test]
+fn the_reduced_motor_moves_as_the_ten_parts_do() {
+    let times: Vec<f64> = (1..=8).map(|k| 0.05 * k as f64).collect();
+    let (parts, reduced) = (Parts::new(), Reduced::new());
+    let (full, flat) = (run!(Parts, parts, times), run!(Reduced, reduced, times));
+    let rotor = Parts::NAMES.coordinate_names().iter().position(|n| n == "rotor.phi").expect("the rotor");
+    let load = Reduced::NAMES.coordinate_names().iter().position(|n| n == "gear.b").expect("the load");
+    for (i, t) in times.iter().enumerate() {
+        let (a, b) = (full.state(i).expect("a sample"), flat.state(i).expect("a sample"));
+        // The rotor turns `ratio` times the load.
+        // Both at rtol = atol = 1e-11: they agree to the integrators' global error.
+        let (w, w_reduced) = (a.v[rotor], 4.0 * b.v[load]);
+        assert!((w - w_reduced).abs() < 1e-8 * (1.0 + w.abs()), "t = {t}: {w} against {w_reduced}");
+        assert!((a.q[rotor] - 4.0 * b.q[load]).abs() < 1e-8 * (1.0 + a.q[rotor].abs()));
+    }
+    // Every output the parts record, the reduced model records alike: currents, voltages,
+    // the power the source supplies (a multiplier), the bearing's torque.
+    let names = reduced.output_names();
+    let mut compared = 0;
+    for name in names.iter().filter(|n| parts.output_names().contains(n)) {
+        let column = format!("out({name})");
+        let (a, b) = (full.column(&column).expect("an output"), flat.column(&column).expect("an output"));
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() < 1e-7 * (1.0 + x.abs()), "{name}: {x} against {y}");
+        }
+        compared += 1;
+    }
+    assert!(compared >= 10, "only {compared} outputs in common: {names:?}");
+    assert!(names.iter().any(|n| n == "source.i") && names.iter().any(|n| n == "l.i"));
+}
+
+#[test]
+fn a_reduced_parameter_is_set_by_its_dotted_name_and_reaches_the_field() {
+    let mut reduced = Reduced::new();
+    let k = reduced.parameter_names().iter().position(|n| n == "gear.ratio").expect("the gear's ratio");
+    reduced.set_parameter_value(k, 2.0);
+    assert_eq!(reduced.gear.ratio, 2.0);
+    assert_eq!(reduced.parameter_value(k), 2.0);
+    // The reduced model runs with it: the rotor now turns twice the load.
+    let mut parts = Parts::new();
+    parts.gear.ratio = 2.0;
+    let (full, flat) = (run!(Parts, parts, [0.2]), run!(Reduced, reduced, [0.2]));
+    let rotor = Parts::NAMES.coordinate_names().iter().position(|n| n == "rotor.phi").expect("the rotor");
+    let load = Reduced::NAMES.coordinate_names().iter().position(|n| n == "gear.b").expect("the load");
+    let (a, b) = (full.state(0).expect("a sample"), flat.state(0).expect("a sample"));
+    assert!((a.v[rotor] - 2.0 * b.v[load]).abs() < 1e-8);
+}
+
+/// The motor alone, reduced, its terminals left open: a part of a larger reduced composite.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(reduce)]
+#[dirac(
+    connect(r.n, l.p), connect(l.n, emf.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+    connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+)]
+pub struct Motor {
+    pub r: Resistor,
+    pub l: Inductor,
+    pub emf: Emf,
+    pub rotor: Inertia,
+    pub gear: IdealGear,
+    pub load: Inertia,
+    pub bearing: Damper,
+    pub housing: Fixed,
+}
+
+/// The same motor, not reduced.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(
+    connect(r.n, l.p), connect(l.n, emf.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+    connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+)]
+pub struct PlainMotor {
+    pub r: Resistor,
+    pub l: Inductor,
+    pub emf: Emf,
+    pub rotor: Inertia,
+    pub gear: IdealGear,
+    pub load: Inertia,
+    pub bearing: Damper,
+    pub housing: Fixed,
+}
+
+/// A reduced motor driven by a source, reduced again.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(reduce)]
+#[dirac(connect(source.p, motor.r.p), connect(source.n, ground.p), connect(motor.emf.n, ground.p))]
+pub struct Driven {
+    pub source: VoltageSource,
+    pub ground: Ground,
+    pub motor: Motor,
+}
+
+/// A motor that is not reduced, driven and reduced around it.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(reduce)]
+#[dirac(connect(source.p, motor.r.p), connect(source.n, ground.p), connect(motor.emf.n, ground.p))]
+pub struct DrivenPlain {
+    pub source: VoltageSource,
+    pub ground: Ground,
+    pub motor: PlainMotor,
+}
+
+fn motor() -> Motor {
+    let p = Parts::new();
+    Motor {
+        r: p.r,
+        l: p.l,
+        emf: p.emf,
+        rotor: p.rotor,
+        gear: p.gear,
+        load: p.load,
+        bearing: p.bearing,
+        housing: p.housing,
+    }
+}
+
+#[test]
+fn reduced_composites_nest_and_reduce_to_the_same_model() {
+    let driven = Driven { source: VoltageSource { u: 12.0 }, ground: Ground {}, motor: motor() };
+    let m = motor();
+    let plain = PlainMotor {
+        r: m.r,
+        l: m.l,
+        emf: m.emf,
+        rotor: m.rotor,
+        gear: m.gear,
+        load: m.load,
+        bearing: m.bearing,
+        housing: m.housing,
+    };
+    let around = DrivenPlain { source: VoltageSource { u: 12.0 }, ground: Ground {}, motor: plain };
+    assert_eq!(Driven::NAMES.coordinate_names(), ["source.p", "motor.r.n", "motor.gear.b"]);
+    assert_eq!(DrivenPlain::NAMES.coordinate_names(), ["source.p", "motor.r.n", "motor.gear.b"]);
+    let parameters = driven.parameter_names();
+    assert!(parameters.iter().any(|p| p == "motor.gear.ratio"), "{parameters:?}");
+    let times = [0.1, 0.3];
+    let (flat, nested, around) =
+        (run!(Reduced, Reduced::new(), times), run!(Driven, driven, times), run!(DrivenPlain, around, times));
+    for i in 0..times.len() {
+        let f = flat.state(i).expect("a sample");
+        let (a, b) = (nested.state(i).expect("a sample"), around.state(i).expect("a sample"));
+        // The load's speed and the node flux between resistor and inductor, in the same
+        // places in all three.
+        for (v, q) in [(a.v[2], a.q[1]), (b.v[2], b.q[1])] {
+            assert!((f.v[2] - v).abs() < 1e-8, "{} against {v}", f.v[2]);
+            assert!((f.q[1] - q).abs() < 1e-8);
+        }
+    }
+    // A parameter set by its path reaches the nested field.
+    let mut driven = driven;
+    let k = driven.parameter_names().iter().position(|n| n == "motor.l.l").expect("the inductance");
+    driven.set_parameter_value(k, 0.1);
+    assert_eq!(driven.motor.l.l, 0.1);
+}
+
+/// A cart on a wheel that rolls without slipping: the composite's own row, `x = r θ` at the
+/// velocity level, is solved for the cart.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v_x), port(x), lagrangian = 0.5 * m * v_x * v_x - 0.5 * k * x * x)]
+pub struct Cart {
+    pub m: f64,
+    pub k: f64,
+}
+
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(theta => v_theta), port(theta), lagrangian = 0.5 * j * v_theta * v_theta)]
+pub struct Wheel {
+    pub j: f64,
+}
+
+macro_rules! rolling {
+    ($(#[$attr:meta])* $name:ident) => {
+        #[derive(Interconnection, Clone, Debug)]
+        $(#[$attr])*
+        #[dirac(constraint(roll) = radius * wheel.v_theta - cart.v_x)]
+        pub struct $name {
+            pub cart: Cart,
+            pub wheel: Wheel,
+            pub radius: f64,
+        }
+    };
+}
+
+rolling!(Rolling);
+rolling!(
+    #[dirac(reduce)]
+    RollingReduced
+);
+
+#[test]
+fn a_composites_own_row_is_solved_and_the_motion_is_the_closed_forms() {
+    assert_eq!(RollingReduced::NAMES.coordinate_names(), ["wheel.theta"]);
+    let (m, k, j, radius) = (2.0, 3.0, 0.5, 0.4);
+    let reduced = RollingReduced { cart: Cart { m, k }, wheel: Wheel { j }, radius };
+    // θ̈ (m r² + j) = −k r² θ: a harmonic oscillator of ω² = k r² / (m r² + j).
+    let omega = (k * radius * radius / (m * radius * radius + j)).sqrt();
+    let mut q = VecQ::<RollingReduced>::zeros();
+    q[0] = 1.0;
+    let zero = VecQ::<RollingReduced>::zeros();
+    let start = consistent_state(&reduced, 0.0, &q, &zero, Consistency::default()).expect("a start");
+    let mut radau = Radau::new(&reduced, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid");
+    let times = vec![0.5, 1.0, 2.0];
+    let solution = radau.solve(0.0, &start, 2.0, &Sampling::Times(times.clone())).expect("integrates");
+    for (i, t) in times.iter().enumerate() {
+        let theta = solution.state(i).expect("a sample").q[0];
+        assert!((theta - (omega * t).cos()).abs() < 1e-8, "t = {t}: {theta} against {}", (omega * t).cos());
+    }
+    // The unreduced composite started alike moves alike.
+    let plain = Rolling { cart: Cart { m, k }, wheel: Wheel { j }, radius };
+    let mut q = VecQ::<Rolling>::zeros();
+    q[0] = radius;
+    q[1] = 1.0;
+    let zero = VecQ::<Rolling>::zeros();
+    let start = consistent_state(&plain, 0.0, &q, &zero, Consistency::default()).expect("a start");
+    let mut radau = Radau::new(&plain, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid");
+    let full = radau.solve(0.0, &start, 2.0, &Sampling::Times(times.clone())).expect("integrates");
+    for i in 0..times.len() {
+        let (a, b) = (full.state(i).expect("a sample"), solution.state(i).expect("a sample"));
+        assert!((a.q[1] - b.q[0]).abs() < 1e-8 && (a.q[0] - radius * b.q[0]).abs() < 1e-8);
+    }
+}
