@@ -163,6 +163,14 @@ pub mod __private {
     {
     }
 
+    /// A composite reduced when it compiles keeps its parts as fields and reads only their
+    /// parameters: the derive reads every field here, so that a part without parameters (a
+    /// ground) is not reported as a field never read.
+    pub trait ReducedParts {
+        /// Reads every field of the composite.
+        fn read_parts(&self);
+    }
+
     /// A constant of the user's code, where generated code reads it: its type must be `f64`.
     #[inline(always)]
     pub const fn constant(value: f64) -> f64 {

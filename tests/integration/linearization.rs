@@ -498,6 +498,64 @@ mod from_parts {
         }
     }
 
+    /// The same ten parts, reduced when the program compiles.
+    #[derive(Interconnection, Clone, Debug)]
+    #[dirac(reduce)]
+    #[dirac(
+        connect(source.p, r.p), connect(r.n, l.p), connect(l.n, emf.p), connect(emf.n, ground.p),
+        connect(source.n, ground.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+        connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+    )]
+    struct Reduced {
+        source: VoltageSource,
+        r: Resistor,
+        l: Inductor,
+        emf: Emf,
+        ground: Ground,
+        rotor: Inertia,
+        gear: IdealGear,
+        load: Inertia,
+        bearing: Damper,
+        housing: Fixed,
+    }
+
+    #[test]
+    fn the_reduced_motor_linearises_to_its_physical_states_and_the_hand_models_poles() {
+        let d = drive();
+        let model = Reduced {
+            source: d.source,
+            r: d.r,
+            l: d.l,
+            emf: d.emf,
+            ground: d.ground,
+            rotor: d.rotor,
+            gear: d.gear,
+            load: d.load,
+            bearing: d.bearing,
+            housing: d.housing,
+        };
+        let zero = VecQ::<Reduced>::zeros();
+        let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+        let linear = linearize(&model, 0.0, &rest).expect("linearises");
+        // The load's angle and speed, the flux of the node between resistor and inductor (the
+        // current, times l, with the EMF's node `k n θ`), and the source's node flux, which
+        // only integrates the input: 4 states where the unreduced motor has 16.
+        assert_eq!(linear.a.nrows(), 4, "{:?}", linear.state_names());
+        let (a, _) = by_hand();
+        let expected = control::poles(&a).expect("poles");
+        let got = control::poles(&linear.a).expect("poles");
+        // Two at zero (the load's angle and the source's flux), then the motor's pair.
+        let (zeros, motor): (Vec<&Complex<f64>>, Vec<&Complex<f64>>) =
+            got.iter().partition(|p| p.norm() < 1e-10);
+        assert_eq!(zeros.len(), 2, "{got:?}");
+        for e in &expected {
+            assert!(motor.iter().any(|g| (*g - e).norm() < 1e-10 * e.norm()), "no pole {e} in {got:?}");
+        }
+        // What the input reaches and the outputs see is the hand model's two states.
+        let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
+        assert_eq!(minimal.a.nrows(), 2, "{:?}", minimal.state_names());
+    }
+
     #[test]
     fn minreal_refuses_a_tolerance_outside_zero_to_one() {
         let model = drive();

@@ -186,9 +186,19 @@ pub fn flatten(input: &DeriveInput, parts: &[Part]) -> TokenStream {
         quote! { (#name, #by) }
     });
     let (ident, vis) = (&input.ident, &input.vis);
+    let fields = match &input.data {
+        syn::Data::Struct(data) => data.fields.iter().filter_map(|f| f.ident.clone()).collect(),
+        _ => Vec::new(),
+    };
     quote! {
         #expanded
         #description
+        // Not `automatically_derived`: the reads must count for the dead-code lint.
+        impl ::dirac::__private::ReducedParts for #ident {
+            fn read_parts(&self) {
+                #(let _ = &self.#fields;)*
+            }
+        }
         #[automatically_derived]
         impl #ident {
             /// The coordinates the reduction solved for at compile time, each with what it
