@@ -47,7 +47,7 @@ pub fn lagrange_dirac(input: &DeriveInput) -> TokenStream {
 pub fn interconnection(input: &DeriveInput) -> TokenStream {
     let expanded = interconnect::derive(input);
     // A reduced composite describes itself as the one model it becomes, when it has become it.
-    if reduced(input) {
+    if interconnect::asks_reduce(input) {
         return expanded;
     }
     let description = reduce::description(input, reduce::Kind::Composite);
@@ -58,19 +58,4 @@ pub fn interconnection(input: &DeriveInput) -> TokenStream {
 /// the hidden macro `dirac::__reduce`, which the derives call.
 pub fn reduce_step(tokens: TokenStream) -> TokenStream {
     reduce::step(tokens)
-}
-
-/// Whether a composite asks for `reduce`.
-fn reduced(input: &DeriveInput) -> bool {
-    input.attrs.iter().filter(|a| a.path().is_ident(symbol::DIRAC)).any(|a| {
-        a.parse_args_with(|stream: syn::parse::ParseStream| {
-            let mut found = false;
-            while !stream.is_empty() {
-                let tree: proc_macro2::TokenTree = stream.parse()?;
-                found |= matches!(&tree, proc_macro2::TokenTree::Ident(i) if i == symbol::REDUCE);
-            }
-            Ok(found)
-        })
-        .unwrap_or(false)
-    })
 }

@@ -62,6 +62,14 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     }
 }
 
+/// Whether a composite asks for `reduce` (its errors are the derive's to report).
+pub fn asks_reduce(input: &DeriveInput) -> bool {
+    let cx = Ctxt::new();
+    let reduce = Composite::from_input(&cx, input).reduce;
+    let _ = cx.into_compile_errors();
+    reduce
+}
+
 /// The offsets of each subsystem and the composite's sizes, as const items. Each offset is a
 /// prefix sum over arrays of the subsystems' sizes, not a chain of constants, so that the
 /// compiler's query depth does not grow with the number of subsystems.

@@ -677,12 +677,11 @@ impl Flat {
         subst.extend(new);
         // Virtual work: F δq = F Σ kⱼ δqⱼ.
         let mut moved = Vec::new();
-        for (target, force) in self.forces.iter().filter(|(t, _)| *t == gone.q) {
+        for (_, force) in self.forces.iter().filter(|(t, _)| *t == gone.q) {
             for (n, k) in terms {
                 let k = &k.tokens;
                 moved.push((n.clone(), quote! { (#k) * (#force) }));
             }
-            let _ = target;
         }
         self.forces.retain(|(t, _)| *t != gone.q);
         self.forces.extend(moved);
