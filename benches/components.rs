@@ -8,7 +8,7 @@
 //! - by hand: the armature charge and the motor angle, `L = ½ l i² + ½ (j_m + j_l/n²) ω² −
 //!   k q ω` with the forces `V − R i` and `−(b/n²) ω` (the `motor_load` example's way).
 //!
-//! - reduced: the ten parts with `#[dirac(reduce)]`: 3 coordinates and 1 row.
+//! - reduced: the ten parts with `#[dirac(reduce)]`: 2 coordinates and no row.
 //!
 //! All at rtol = atol = 1e-8, with Radau and Explicit, alternated `ROUNDS` times each (parts,
 //! reduced, by hand in every round); the medians' ratios to the hand model are printed with

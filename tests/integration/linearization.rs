@@ -537,17 +537,17 @@ mod from_parts {
         let zero = VecQ::<Reduced>::zeros();
         let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
         let linear = linearize(&model, 0.0, &rest).expect("linearises");
-        // The load's angle and speed, the flux of the node between resistor and inductor (the
-        // current, times l, with the EMF's node `k n θ`), and the source's node flux, which
-        // only integrates the input: 4 states where the unreduced motor has 16.
-        assert_eq!(linear.a.nrows(), 4, "{:?}", linear.state_names());
+        // The load's angle and speed, and the flux of the node between resistor and inductor
+        // (the current, times l, with the EMF's node `k n θ`): 3 states where the unreduced
+        // motor has 16.
+        assert_eq!(linear.a.nrows(), 3, "{:?}", linear.state_names());
         let (a, _) = by_hand();
         let expected = control::poles(&a).expect("poles");
         let got = control::poles(&linear.a).expect("poles");
-        // Two at zero (the load's angle and the source's flux), then the motor's pair.
+        // One at zero (the load's angle, which nothing reads), then the motor's pair.
         let (zeros, motor): (Vec<&Complex<f64>>, Vec<&Complex<f64>>) =
             got.iter().partition(|p| p.norm() < 1e-10);
-        assert_eq!(zeros.len(), 2, "{got:?}");
+        assert_eq!(zeros.len(), 1, "{got:?}");
         for e in &expected {
             assert!(motor.iter().any(|g| (*g - e).norm() < 1e-10 * e.norm()), "no pole {e} in {got:?}");
         }

@@ -72,15 +72,17 @@ macro_rules! run {
 }
 
 #[test]
-fn the_motor_from_ten_parts_reduces_to_three_coordinates_and_one_row() {
-    assert_eq!(Reduced::NAMES.coordinate_names(), ["source.p", "r.n", "gear.b"]);
-    assert_eq!(Reduced::NAMES.constraint_names(), ["source.source"]);
-    assert_eq!((VecQ::<Reduced>::zeros().len(), VecC::<Reduced>::zeros().len()), (3, 1));
+fn the_motor_from_ten_parts_reduces_to_two_coordinates_and_no_row() {
+    assert_eq!(Reduced::NAMES.coordinate_names(), ["r.n", "gear.b"]);
+    assert!(Reduced::NAMES.constraint_names().is_empty());
+    assert_eq!((VecQ::<Reduced>::zeros().len(), VecC::<Reduced>::zeros().len()), (2, 0));
     assert_eq!((VecQ::<Parts>::zeros().len(), VecC::<Parts>::zeros().len()), (17, 15));
     // The connections merge, the ground and the housing become numbers, the gear a ratio, the
-    // EMF's node `k` times the rotor's angle.
+    // EMF's node `k` times the rotor's angle; the source's node, which only the resistor
+    // reads through its voltage, leaves with the source's row: its voltage is the input.
     let eliminated = Reduced::ELIMINATED;
-    assert_eq!(eliminated.len(), 14);
+    assert_eq!(eliminated.len(), 15);
+    assert!(eliminated.contains(&("source.p", "∫ source.u dt")), "{eliminated:?}");
     assert!(eliminated.contains(&("r.p", "source.p")));
     assert!(eliminated.contains(&("housing.phi", "bearing.a")));
     assert!(eliminated.contains(&("source.n", "0")));
@@ -234,8 +236,8 @@ fn reduced_composites_nest_and_reduce_to_the_same_model() {
         housing: m.housing,
     };
     let around = DrivenPlain { source: VoltageSource { u: 12.0 }, ground: Ground {}, motor: plain };
-    assert_eq!(Driven::NAMES.coordinate_names(), ["source.p", "motor.r.n", "motor.gear.b"]);
-    assert_eq!(DrivenPlain::NAMES.coordinate_names(), ["source.p", "motor.r.n", "motor.gear.b"]);
+    assert_eq!(Driven::NAMES.coordinate_names(), ["motor.r.n", "motor.gear.b"]);
+    assert_eq!(DrivenPlain::NAMES.coordinate_names(), ["motor.r.n", "motor.gear.b"]);
     let parameters = driven.parameter_names();
     assert!(parameters.iter().any(|p| p == "motor.gear.ratio"), "{parameters:?}");
     let times = [0.1, 0.3];
@@ -246,9 +248,9 @@ fn reduced_composites_nest_and_reduce_to_the_same_model() {
         let (a, b) = (nested.state(i).expect("a sample"), around.state(i).expect("a sample"));
         // The load's speed and the node flux between resistor and inductor, in the same
         // places in all three.
-        for (v, q) in [(a.v[2], a.q[1]), (b.v[2], b.q[1])] {
-            assert!((f.v[2] - v).abs() < 1e-8, "{} against {v}", f.v[2]);
-            assert!((f.q[1] - q).abs() < 1e-8);
+        for (v, q) in [(a.v[1], a.q[0]), (b.v[1], b.q[0])] {
+            assert!((f.v[1] - v).abs() < 1e-8, "{} against {v}", f.v[1]);
+            assert!((f.q[0] - q).abs() < 1e-8);
         }
     }
     // A parameter set by its path reaches the nested field.
@@ -322,5 +324,64 @@ fn a_composites_own_row_is_solved_and_the_motion_is_the_closed_forms() {
     for i in 0..times.len() {
         let (a, b) = (full.state(i).expect("a sample"), solution.state(i).expect("a sample"));
         assert!((a.q[1] - b.q[0]).abs() < 1e-8 && (a.q[0] - radius * b.q[0]).abs() < 1e-8);
+    }
+}
+
+macro_rules! speed_driven {
+    ($(#[$attr:meta])* $name:ident) => {
+        /// A rotor spun up through a damper by a prescribed speed.
+        #[derive(Interconnection, Clone, Debug)]
+        $(#[$attr])*
+        #[dirac(connect(drive.phi, damper.a), connect(damper.b, rotor.phi))]
+        pub struct $name {
+            pub drive: dirac::components::rotational::Speed,
+            pub damper: Damper,
+            pub rotor: Inertia,
+        }
+
+        impl $name {
+            fn new() -> $name {
+                $name {
+                    drive: dirac::components::rotational::Speed { w_ref: 2.0 },
+                    damper: Damper { d: 0.5 },
+                    rotor: Inertia { j: 0.25 },
+                }
+            }
+        }
+    };
+}
+
+speed_driven!(SpeedDriven);
+speed_driven!(
+    #[dirac(reduce)]
+    SpeedDrivenReduced
+);
+
+/// A prescribed speed on a flange that only a damper reads (through its speed) leaves the
+/// model with its row: one coordinate remains, the rotor's. Reference: `j ω' = d (w_ref − ω)`
+/// from rest, so `ω = w_ref (1 − e^{−d t / j})`, and the drive supplies `d (w_ref − ω) w_ref`;
+/// the unreduced composite records the same power.
+#[test]
+fn a_prescribed_speed_leaves_the_model_and_its_power_is_read_from_the_damper() {
+    assert_eq!(SpeedDrivenReduced::NAMES.coordinate_names(), ["damper.b"]);
+    assert!(SpeedDrivenReduced::NAMES.constraint_names().is_empty());
+    assert!(SpeedDrivenReduced::ELIMINATED.contains(&("drive.phi", "∫ drive.w_ref dt")));
+    let times: Vec<f64> = (1..=5).map(|k| 0.2 * k as f64).collect();
+    let (full, flat) = (
+        run!(SpeedDriven, SpeedDriven::new(), times),
+        run!(SpeedDrivenReduced, SpeedDrivenReduced::new(), times),
+    );
+    let (w_ref, d, j) = (2.0, 0.5, 0.25);
+    let (unreduced, reduced) = (
+        full.column("out(drive.supplied)").expect("an output"),
+        flat.column("out(drive.supplied)").expect("an output"),
+    );
+    for (i, &t) in times.iter().enumerate() {
+        let omega = w_ref * (1.0 - (-d * t / j).exp());
+        let state = flat.state(i).expect("a sample");
+        assert!((state.v[0] - omega).abs() < 1e-9, "t = {t}: ω {} against {omega}", state.v[0]);
+        let power = d * (w_ref - omega) * w_ref;
+        assert!((reduced[i].abs() - power).abs() < 1e-8, "t = {t}: {} against {power}", reduced[i]);
+        assert!((reduced[i] - unreduced[i]).abs() < 1e-8, "t = {t}: {} against {}", reduced[i], unreduced[i]);
     }
 }

@@ -475,7 +475,25 @@ impl Flat {
                     Solution::Redundant => {
                         self.rows.remove(k);
                     }
-                    Solution::None => k += 1,
+                    Solution::None => match self.prescribed(&subst, k) {
+                        Some((index, value, pivot)) => {
+                            if read.contains(&self.rows[k].name) {
+                                match self.multiplier(&subst, k, index, pivot) {
+                                    Some(multiplier) => {
+                                        subst.insert(self.rows[k].name.clone(), multiplier);
+                                    }
+                                    None => {
+                                        k += 1;
+                                        continue;
+                                    }
+                                }
+                            }
+                            self.rows.remove(k);
+                            self.prescribe(&mut subst, index, value);
+                            progress = true;
+                        }
+                        None => k += 1,
+                    },
                 }
             }
             if !progress {
@@ -578,6 +596,83 @@ impl Flat {
             })
             .collect();
         Some(Solution::For(index, others, constant, pivot))
+    }
+
+    /// A velocity row that prescribes one coordinate's velocity, `a v_x = u(t)` with `a` a
+    /// number and `u` read from parameters, inputs, time and definitions of those alone (a
+    /// voltage source's node, a speed source's flange), where nothing reads `x` itself, `L`
+    /// does not read `v_x` and no other row reaches it: `x` leaves the model, and `v_x` is `u/a`
+    /// wherever it is read. The index of `x`, what `v_x` equals, and `a`.
+    fn prescribed(
+        &self,
+        subst: &HashMap<String, TokenStream>,
+        k: usize,
+    ) -> Option<(usize, TokenStream, f64)> {
+        let row = &self.rows[k];
+        if row.kind != ConstraintKind::Velocity {
+            return None;
+        }
+        let state = |name: &str| {
+            self.coordinates.iter().any(|c| c.q == name || c.v == name)
+                || self.rows.iter().any(|r| r.name == name)
+                || self.outputs.iter().any(|(o, _)| o == name)
+        };
+        // A definition is known without the state if it reads none of it, nor another
+        // definition.
+        let known = |name: &str| {
+            self.defines.iter().find(|(d, _)| d == name).is_some_and(|(_, e)| {
+                let mut names = Vec::new();
+                collect_idents(rename(e.clone(), subst), &mut names);
+                !names.iter().any(|n| state(n) || self.defines.iter().any(|(d, _)| d == n))
+            })
+        };
+        let role = |name: &str| {
+            if self.coordinates.iter().any(|c| c.v == name) {
+                Role::Unknown
+            } else if name == "t" || self.params.iter().any(|(p, _)| p == name) || known(name) {
+                Role::Constant
+            } else {
+                Role::Other
+            }
+        };
+        let affine = affine(&syn::parse2::<Expr>(row.expr.clone()).ok()?, &role)?;
+        let [(x, pivot)] = affine.terms.as_slice() else { return None };
+        let pivot = pivot.value.filter(|p| *p != 0.0 && p.is_finite())?;
+        let index = self.coordinates.iter().position(|c| c.v == *x)?;
+        let (_, value) = solve(&affine, x)?;
+        let Coordinate { q, v, .. } = &self.coordinates[index];
+        let reads = |t: &TokenStream, name: &str| {
+            let mut names = Vec::new();
+            collect_idents(rename(t.clone(), subst), &mut names);
+            names.iter().any(|n| n == name)
+        };
+        let mut everything = self
+            .lagrangian
+            .iter()
+            .chain(&self.dissipation)
+            .chain(self.forces.iter().map(|(_, f)| f))
+            .chain(self.rows.iter().map(|r| &r.expr))
+            .chain(self.defines.iter().map(|(_, d)| d))
+            .chain(self.outputs.iter().map(|(_, o)| o));
+        if everything.any(|e| reads(e, q)) || self.lagrangian.iter().any(|l| reads(l, v)) {
+            return None;
+        }
+        let reached =
+            self.rows.iter().enumerate().any(|(j, r)| j != k && (reads(&r.expr, v) || reads(&r.expr, q)));
+        (!reached).then_some((index, value.tokens, pivot))
+    }
+
+    /// Removes coordinate `index`, whose velocity is `value` and whose position nothing reads;
+    /// its forces do no work on a prescribed motion.
+    fn prescribe(&mut self, subst: &mut HashMap<String, TokenStream>, index: usize, value: TokenStream) {
+        let gone = self.coordinates.remove(index);
+        self.eliminated.push(Elimination { name: gone.q.clone(), by: format!("∫ {value} dt") });
+        let new: HashMap<String, TokenStream> = [(gone.v.clone(), value)].into();
+        for existing in subst.values_mut() {
+            *existing = rename(existing.clone(), &new);
+        }
+        subst.extend(new);
+        self.forces.retain(|(on, _)| *on != gone.q);
     }
 
     /// The multiplier of row `k`, about to be solved for coordinate `index` (its coefficient
