@@ -73,6 +73,9 @@ enum Solution {
     /// The coordinate at this index is the others' combination plus a constant; the row's
     /// coefficient of it.
     For(usize, Vec<(String, Coefficient)>, Coefficient, f64),
+    /// The row prescribes the velocity of the coordinate at this index, which nothing else
+    /// reads: what the velocity equals, and the row's coefficient of it.
+    Prescribed(usize, TokenStream, f64),
     /// The row holds whatever the coordinates: drop it.
     Redundant,
     /// The row stays a row.
@@ -455,46 +458,40 @@ impl Flat {
                     Some(position) => self.solvable(position, ConstraintKind::Holonomic),
                     None => self.solvable(&expr, self.rows[k].kind),
                 };
-                match solution {
-                    Solution::For(index, others, constant, pivot) => {
-                        if read.contains(&self.rows[k].name) {
-                            match self.multiplier(&subst, k, index, pivot) {
-                                Some(multiplier) => {
-                                    subst.insert(self.rows[k].name.clone(), multiplier);
-                                }
-                                None => {
-                                    k += 1;
-                                    continue;
-                                }
-                            }
-                        }
-                        self.rows.remove(k);
-                        self.substitute(&mut subst, index, &others, &constant);
-                        progress = true;
+                let solution = match solution {
+                    Solution::None => self.prescribed(&subst, k).unwrap_or(Solution::None),
+                    solution => solution,
+                };
+                let (index, pivot) = match &solution {
+                    Solution::For(index, _, _, pivot) | Solution::Prescribed(index, _, pivot) => {
+                        (*index, *pivot)
                     }
                     Solution::Redundant => {
                         self.rows.remove(k);
+                        continue;
                     }
-                    Solution::None => match self.prescribed(&subst, k) {
-                        Some((index, value, pivot)) => {
-                            if read.contains(&self.rows[k].name) {
-                                match self.multiplier(&subst, k, index, pivot) {
-                                    Some(multiplier) => {
-                                        subst.insert(self.rows[k].name.clone(), multiplier);
-                                    }
-                                    None => {
-                                        k += 1;
-                                        continue;
-                                    }
-                                }
-                            }
-                            self.rows.remove(k);
-                            self.prescribe(&mut subst, index, value);
-                            progress = true;
-                        }
-                        None => k += 1,
-                    },
+                    Solution::None => {
+                        k += 1;
+                        continue;
+                    }
+                };
+                if read.contains(&self.rows[k].name) {
+                    let Some(multiplier) = self.multiplier(&subst, k, index, pivot) else {
+                        k += 1;
+                        continue;
+                    };
+                    subst.insert(self.rows[k].name.clone(), multiplier);
                 }
+                self.rows.remove(k);
+                match solution {
+                    Solution::For(_, others, constant, _) => {
+                        self.substitute(&mut subst, index, &others, &constant)
+                    }
+                    Solution::Prescribed(_, value, _) => self.prescribe(&mut subst, index, value),
+                    // Handled above.
+                    Solution::Redundant | Solution::None => {}
+                }
+                progress = true;
             }
             if !progress {
                 break;
@@ -603,11 +600,7 @@ impl Flat {
     /// voltage source's node, a speed source's flange), where nothing reads `x` itself, `L`
     /// does not read `v_x` and no other row reaches it: `x` leaves the model, and `v_x` is `u/a`
     /// wherever it is read. The index of `x`, what `v_x` equals, and `a`.
-    fn prescribed(
-        &self,
-        subst: &HashMap<String, TokenStream>,
-        k: usize,
-    ) -> Option<(usize, TokenStream, f64)> {
+    fn prescribed(&self, subst: &HashMap<String, TokenStream>, k: usize) -> Option<Solution> {
         let row = &self.rows[k];
         if row.kind != ConstraintKind::Velocity {
             return None;
@@ -659,7 +652,7 @@ impl Flat {
         }
         let reached =
             self.rows.iter().enumerate().any(|(j, r)| j != k && (reads(&r.expr, v) || reads(&r.expr, q)));
-        (!reached).then_some((index, value.tokens, pivot))
+        (!reached).then_some(Solution::Prescribed(index, value.tokens, pivot))
     }
 
     /// Removes coordinate `index`, whose velocity is `value` and whose position nothing reads;
