@@ -16,7 +16,7 @@ use dirac::fmi::{Export, Version};
 use dirac::prelude::*;
 
 #[path = "../../examples/fmu/driven_pendulum.rs"]
-mod driven_pendulum;
+pub mod driven_pendulum;
 #[path = "../../examples/fmu/netlist.rs"]
 mod netlist;
 #[path = "../../examples/fmu/paper_chain.rs"]

@@ -7,6 +7,7 @@ mod zoo;
 mod every_method;
 
 mod adjoint;
+mod alloc;
 mod authoring;
 mod blocks;
 mod bodies;

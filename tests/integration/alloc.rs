@@ -1,15 +1,14 @@
-//! No heap allocation inside an integration step: a counting global allocator observes the
-//! allocations of this thread while an integrator's steps run, after set-up.
+//! No heap allocation inside an integration step: a counting global allocator (the test
+//! binary's) observes the allocations of this thread while an integrator's steps run, after
+//! set-up. Counts are per thread, so the other tests running beside these do not disturb them.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use dirac::prelude::*;
 
-#[path = "zoo/mod.rs"]
-mod zoo;
-
-use zoo::*;
+use crate::fmi::driven_pendulum;
+use crate::zoo::{self, *};
 
 struct Counting;
 
@@ -1085,9 +1084,6 @@ fn checkpoints_hold_the_memory_of_an_adjoint_gradient_within_the_budget() {
     let stages = 4 * 8 * (3 * sizes.nq + sizes.nc) as isize;
     assert!(whole - short >= (many as isize) * stages / 2, "every step kept: {whole} bytes");
 }
-
-#[path = "../examples/fmu/driven_pendulum.rs"]
-mod driven_pendulum;
 
 /// An FMU's communication steps through its C functions (`dirac::fmi::abi`, what
 /// `export_fmu!` exports): set the input, step, read outputs, positions and the multiplier.
