@@ -102,6 +102,10 @@ pub struct Blocks {
     pub vjp_dtheta: Vec<Id>,
     /// `w_φᵀ ∂φ/∂θ_k` for every parameter `k`.
     pub holonomic_vjp_dtheta: Vec<Id>,
+    /// The velocities that no inertia and no constraint fixes, each solved from its own
+    /// momentum balance in closed form ([`solved_velocities`]): the coordinate and its
+    /// velocity. Empty unless every such velocity can be.
+    pub solved_velocities: Vec<(usize, Id)>,
 }
 
 /// The most values `Blocks::event_derivatives` emits: beyond it (thousands of events of a
@@ -277,7 +281,7 @@ impl Blocks {
                 .collect();
             (residual, m.graph.vjp(&weighted, &thetas))
         };
-        Blocks {
+        let mut blocks = Blocks {
             lagrangian,
             dl_dq,
             dl_dv,
@@ -319,6 +323,46 @@ impl Blocks {
             dtheta,
             vjp_dtheta,
             holonomic_vjp_dtheta,
-        }
+            solved_velocities: Vec::new(),
+        };
+        blocks.solved_velocities = solved_velocities(&mut m.graph, &v, &blocks);
+        blocks
     }
+}
+
+/// The velocities that only the forces fix, solved at compile time where each one's balance
+/// is affine in it alone (DESIGN §6.1, tearing). A coordinate `x` that no constraint row holds
+/// and whose velocity no momentum reads (`L_vv`'s row `x` zero) has the balance
+/// `g_x = ∂L/∂q_x + F_x − (L_vq v)_x − ∂²L/∂v_x∂t = 0`, without `v̇`. Where `c = ∂g_x/∂v_x` does
+/// not depend on `v_x` and `g_x` reads no other such velocity (a node between a resistor and an
+/// inductor, a massless flange on a damper, a motor's current without armature inductance),
+/// `v_x − g_x / c` is its solution, whatever `v_x` it is evaluated at: one evaluation instead
+/// of Newton's iterations. All of them or none: the runtime uses the closed form only where it
+/// covers every velocity the forces fix.
+fn solved_velocities(g: &mut Graph, v: &[Id], b: &Blocks) -> Vec<(usize, Id)> {
+    let n = v.len();
+    let free: Vec<usize> = (0..n)
+        .filter(|&i| b.l_vv[i].iter().all(|&e| g.is_zero(e)) && b.a.iter().all(|row| g.is_zero(row[i])))
+        .collect();
+    let mut solved = Vec::with_capacity(free.len());
+    for &i in &free {
+        let gyroscopic = dot(g, &b.l_vq[i], v);
+        let balance = g.sub(b.momentum_rate[i], gyroscopic);
+        let balance = g.sub(balance, b.l_vt[i]);
+        let c = g.diff(balance, v[i]);
+        let alone = free.iter().all(|&j| {
+            if j == i {
+                return true;
+            }
+            let d = g.diff(balance, v[j]);
+            g.is_zero(d)
+        });
+        let affine = g.as_sym(v[i]).is_some_and(|s| !g.depends_on(c, s));
+        if g.is_zero(c) || !alone || !affine {
+            return Vec::new();
+        }
+        let step = g.div(balance, c);
+        solved.push((i, g.sub(v[i], step)));
+    }
+    solved
 }

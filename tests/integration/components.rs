@@ -194,6 +194,74 @@ fn cauer_low_pass_minimal_realisation_has_five_states() {
     }
 }
 
+/// The driven filter reduced when it compiles: the ground and the connections leave, the
+/// source's node goes with its row (its voltage is the input), and the three capacitor nodes
+/// remain.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(reduce)]
+#[dirac(connect(v.p, filter.r1.p), connect(v.n, filter.g.p))]
+pub struct CauerReduced {
+    pub v: VoltageSource,
+    pub filter: CauerFilter,
+}
+
+/// The eigenvalues of `a`, sorted by real part, then imaginary part.
+fn eigenvalues(a: &DMatrix<f64>) -> Vec<Complex<f64>> {
+    let mut eigenvalues: Vec<Complex<f64>> = a.complex_eigenvalues().iter().copied().collect();
+    eigenvalues.sort_by(|x, y| x.re.total_cmp(&y.re).then(x.im.total_cmp(&y.im)));
+    eigenvalues
+}
+
+/// Whether every eigenvalue of `expected` is within `tolerance` (relative) of one of `got`,
+/// each of `got` used once, and the rest of `got` are zeros.
+fn same_spectrum_with_zeros(got: &[Complex<f64>], expected: &[Complex<f64>], tolerance: f64) -> bool {
+    let mut unused: Vec<Complex<f64>> = got.to_vec();
+    for e in expected {
+        let Some(k) = unused.iter().position(|g| (g - e).norm() <= tolerance * (1.0 + e.norm())) else {
+            return false;
+        };
+        unused.remove(k);
+    }
+    unused.iter().all(|z| z.norm() <= tolerance)
+}
+
+/// The reduced Cauer low-pass keeps three coordinates, the capacitor nodes' fluxes, and no
+/// row; its linearisation has their six states, the five Modelica tools report and one zero
+/// (the fluxes' common part, which no part reads), and its minimal realisation the five. The
+/// reference is the filter's nodal model written here by hand with the states MSL tools pick,
+/// `x = (v1, v2, v3, i1, i2)`:
+/// `Cm v̇ = −G v − E i + e₁ u/R1` and `L i̇ = Eᵀ v`, with `Cm` the capacitance matrix of the nodes
+/// (`C2` between nodes 1 and 2, `C4` between 2 and 3), `G = diag(1/R1, 0, 1/R2)` and the
+/// inductors' incidence `E = [[1, 0], [−1, 1], [0, −1]]`: its eigenvalues equal the reduced
+/// model's to 1e-10.
+#[test]
+fn the_reduced_cauer_low_pass_has_the_hand_models_eigenvalues() {
+    assert_eq!(VecQ::<CauerReduced>::zeros().len(), 3, "{:?}", CauerReduced::NAMES.coordinate_names());
+    assert!(CauerReduced::NAMES.constraint_names().is_empty());
+    let model = CauerReduced { v: VoltageSource { u: 0.0 }, filter: CauerFilter::modelica() };
+    let zero = VecQ::<CauerReduced>::zeros();
+    let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+    let linear = linearize(&model, 0.0, &rest).expect("linearises");
+    assert_eq!(linear.a.nrows(), 6);
+    let (c2, c4) = (c2(), c4());
+    let capacitance =
+        DMatrix::from_row_slice(3, 3, &[C1 + c2, -c2, 0.0, -c2, c2 + C3 + c4, -c4, 0.0, -c4, c4 + C5]);
+    let conductance = DMatrix::from_diagonal(&dirac::nalgebra::DVector::from_vec(vec![1.0, 0.0, 1.0]));
+    let incidence = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, -1.0, 1.0, 0.0, -1.0]);
+    let inverse = capacitance.try_inverse().expect("regular");
+    let mut hand = DMatrix::zeros(5, 5);
+    hand.view_mut((0, 0), (3, 3)).copy_from(&(-&inverse * conductance));
+    hand.view_mut((0, 3), (3, 2)).copy_from(&(-&inverse * &incidence));
+    let inductances = DMatrix::from_row_slice(2, 2, &[1.0 / L1, 0.0, 0.0, 1.0 / L2]);
+    hand.view_mut((3, 0), (2, 3)).copy_from(&(inductances * incidence.transpose()));
+    let (got, expected) = (eigenvalues(&linear.a), eigenvalues(&hand));
+    assert!(same_spectrum_with_zeros(&got, &expected, 1e-10), "{got:?} against {expected:?}");
+    let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
+    assert_eq!(minimal.a.nrows(), 5, "{:?}", minimal.state_names());
+    let got = eigenvalues(&minimal.a);
+    assert!(same_spectrum_with_zeros(&got, &expected, 1e-10), "{got:?} against {expected:?}");
+}
+
 /// Chua's circuit, Modelica's ChuaCircuit: L and Ro in series from node a to ground, C2 at a,
 /// the conductor G from a to b, C1 and Chua's diode at b.
 #[derive(Interconnection, Clone, Debug)]
@@ -249,6 +317,58 @@ fn chuas_circuit_against_scipy_before_the_chaos_separates() {
             [vc1[k] - row[1], vc2[k] - row[2], il[k] - row[3]].iter().fold(0.0f64, |m, x| m.max(x.abs()));
         assert!(worst < 5e-8, "at t = {}: {worst:e} from SciPy", row[0]);
     }
+}
+
+/// Chua's circuit reduced when it compiles: the connections and the ground leave; the two
+/// capacitor nodes remain, and the node between the inductor and `Ro`, whose velocity the
+/// derive solves from `Ro`'s current in closed form.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(reduce)]
+#[dirac(
+    connect(l.p, g.p), connect(g.n, nr.p), connect(nr.n, gnd.p), connect(c1.p, g.n), connect(l.n, ro.p),
+    connect(g.p, c2.p), connect(c1.n, gnd.p), connect(c2.n, gnd.p), connect(ro.n, gnd.p)
+)]
+pub struct ChuaReduced {
+    pub l: Inductor,
+    pub ro: Resistor,
+    pub g: Conductor,
+    pub c1: Capacitor,
+    pub c2: Capacitor,
+    pub nr: ChuaDiode,
+    pub gnd: Ground,
+}
+
+/// The reduced Chua circuit linearised at rest (the diode's inner slope `ga`): the three
+/// states of the hand model MSL tools use, `x = (v_C1, v_C2, i_L)` with
+/// `C1 v̇_C1 = G (v_C2 − v_C1) − ga v_C1`, `C2 v̇_C2 = G (v_C1 − v_C2) − i_L` and
+/// `L i̇_L = v_C2 − Ro i_L`, and two zeros: the fluxes of node `b` and of the inductor's two
+/// ends together, which no part reads. Eigenvalues equal to 1e-10.
+#[test]
+fn the_reduced_chua_circuit_has_the_hand_models_eigenvalues() {
+    let (l, ro, g, c1, c2, ga) = (18.0, 12.5e-3, 0.565, 10.0, 100.0, -0.757576);
+    let model = ChuaReduced {
+        l: Inductor { l },
+        ro: Resistor { r: ro },
+        g: Conductor { g },
+        c1: Capacitor { c: c1 },
+        c2: Capacitor { c: c2 },
+        nr: ChuaDiode { ga, gb: -0.409091, ve: 1.0 },
+        gnd: Ground {},
+    };
+    assert_eq!(VecQ::<ChuaReduced>::zeros().len(), 3, "{:?}", ChuaReduced::NAMES.coordinate_names());
+    assert!(ChuaReduced::NAMES.constraint_names().is_empty());
+    assert_eq!(ChuaReduced::SOLVED_VELOCITIES.len(), 1, "the node between L and Ro");
+    let zero = VecQ::<ChuaReduced>::zeros();
+    let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+    let linear = linearize(&model, 0.0, &rest).expect("linearises");
+    assert_eq!(linear.a.nrows(), 5);
+    let hand = DMatrix::from_row_slice(
+        3,
+        3,
+        &[-(g + ga) / c1, g / c1, 0.0, g / c2, -g / c2, -1.0 / c2, 0.0, 1.0 / l, -ro / l],
+    );
+    let (got, expected) = (eigenvalues(&linear.a), eigenvalues(&hand));
+    assert!(same_spectrum_with_zeros(&got, &expected, 1e-10), "{got:?} against {expected:?}");
 }
 
 /// Radau at 1e-12 stays within 3e-8 of SciPy's solution to t = 3550 (measured every 50 s), then

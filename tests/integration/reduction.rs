@@ -77,6 +77,9 @@ fn the_motor_from_ten_parts_reduces_to_two_coordinates_and_no_row() {
     assert!(Reduced::NAMES.constraint_names().is_empty());
     assert_eq!((VecQ::<Reduced>::zeros().len(), VecC::<Reduced>::zeros().len()), (2, 0));
     assert_eq!((VecQ::<Parts>::zeros().len(), VecC::<Parts>::zeros().len()), (17, 15));
+    // The node between the resistor and the inductor has no inertia: its velocity (the node's
+    // voltage) is solved in closed form from the resistor's current, `v = u − r i`.
+    assert_eq!(Reduced::SOLVED_VELOCITIES, [0]);
     // The connections merge, the ground and the housing become numbers, the gear a ratio, the
     // EMF's node `k` times the rotor's angle; the source's node, which only the resistor
     // reads through its voltage, leaves with the source's row: its voltage is the input.

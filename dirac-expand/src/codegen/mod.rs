@@ -15,7 +15,8 @@ use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
     EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
     L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
-    RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, Signature, UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ,
+    RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SOLVED_VELOCITIES, Signature, UNILATERAL, UNILATERAL_DERIVATIVES,
+    UNILATERAL_DQ,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -110,6 +111,15 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
     if !b.outputs.is_empty() {
         methods.extend(e.sized(&OUTPUTS, &b.outputs));
+    }
+    if !b.solved_velocities.is_empty() {
+        let coordinates = b.solved_velocities.iter().map(|&(i, _)| i);
+        let assigns: Vec<Assign> =
+            b.solved_velocities.iter().map(|&(i, value)| Assign::set(quote! { out[#i] }, value)).collect();
+        methods.extend(quote! {
+            const SOLVED_VELOCITIES: &'static [::core::primitive::usize] = &[#(#coordinates),*];
+        });
+        methods.extend(e.method(&SOLVED_VELOCITIES, &assigns, TokenStream::new()));
     }
     let mut hybrid = TokenStream::new();
     if !b.unilateral.is_empty() {

@@ -151,6 +151,8 @@ pub const RESIDUAL_BLOCKS: Signature = method("residual_blocks", &[T, Q, V, Lamb
 pub const JACOBIAN_BLOCKS: Signature = method("jacobian_blocks", &[T, Q, V, Lambda], Out::JacobianBlocks);
 pub const L_VT: Signature = method("l_vt", &[T, Q, V], Out::VecQ);
 pub const DL_DT: Signature = method("dl_dt", &[T, Q, V], Out::Scalar);
+/// Emitted by primitives whose velocities that only the forces fix are solved in closed form.
+pub const SOLVED_VELOCITIES: Signature = method("solved_velocities", &[T, Q, V], Out::VecQ);
 /// Provided by the trait from the blocks; primitives emit a specialised version.
 pub const RESIDUAL: Signature = method("residual", &[T, Y], Out::VecY);
 /// Provided by the trait from the blocks; primitives emit a specialised version.

@@ -14,7 +14,10 @@
 //! The explicit integrator solves `g = 0` at every stage and the variational integrator at
 //! every step's end, by Newton's method with that matrix (the terms with third derivatives
 //! of `L` left out: they change the rate, not the solution). `N` is found once per start, from
-//! the blocks there (set-up: it allocates); a solve allocates nothing. Dense models only: a
+//! the blocks there (set-up: it allocates); a solve allocates nothing. Where the derive solved
+//! the balance in closed form for every free velocity ([`LagrangeDirac::SOLVED_VELOCITIES`],
+//! each one's balance affine in it alone), that closed form replaces Newton's method: one
+//! evaluation of a small kernel per solve. Dense models only: a
 //! sparse model with such velocities is integrated by Radau, whose Newton matrix holds
 //! `F_v` already.
 
@@ -50,6 +53,10 @@ where
     g: Vec<f64>,
     residual: Vec<f64>,
     lu: Lu<f64, Dyn>,
+    /// Whether `N` spans exactly the coordinates the model solves in closed form, and the
+    /// storage of their solution.
+    closed_form: bool,
+    solution: VecQ<M>,
 }
 
 impl<M: LagrangeDirac> FreeVelocities<M>
@@ -95,6 +102,10 @@ where
         }
         let product = &basis * basis.transpose();
         M::Algebra::qq_values_mut(&mut projector).copy_from_slice(product.as_slice());
+        // `N` holds each solved coordinate's axis where `N Nᵀ` has 1 on its diagonal there;
+        // as many axes as directions, it is spanned by them.
+        let solved = M::SOLVED_VELOCITIES;
+        let closed_form = solved.len() == k && solved.iter().all(|&i| (product[(i, i)] - 1.0).abs() <= 1e-12);
         let mut free = FreeVelocities {
             basis,
             projector,
@@ -109,6 +120,8 @@ where
             g: vec![0.0; n],
             residual: vec![0.0; k],
             lu: Lu::new(k),
+            closed_form,
+            solution: sizes.zeros_q::<M>(),
         };
         if free.factor(model, t, (q, v)).is_err() {
             let svd = free_matrix(model, t, (q, v), &free.basis).svd(true, true);
@@ -180,9 +193,21 @@ where
     }
 
     /// Solves `Nᵀ (∂L/∂q + F − L_vq v − ∂²L/∂v∂t) = 0` for the velocities along `N` at
-    /// `(t, q)`, starting from `v`; false if Newton's method does not converge in eight
+    /// `(t, q)`, starting from `v`, in closed form where the model gives it; false if the closed
+    /// form is not finite (a resistance of zero), or Newton's method does not converge in eight
     /// iterations or the matrix is singular there.
     pub fn settle(&mut self, model: &M, t: f64, q: &VecQ<M>, v: &mut VecQ<M>) -> bool {
+        if self.closed_form {
+            model.solved_velocities(t, q, v, &mut self.solution);
+            for &i in M::SOLVED_VELOCITIES {
+                let solved = self.solution[i];
+                if !solved.is_finite() {
+                    return false;
+                }
+                v[i] = solved;
+            }
+            return true;
+        }
         let n = self.g.len();
         let k = self.basis.ncols();
         for _ in 0..8 {

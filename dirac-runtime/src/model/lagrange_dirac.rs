@@ -93,6 +93,11 @@ where
     /// changes to the model, `A` is then constant and `∂(A v + b)/∂(q, t)` zero: integrators
     /// keep what they derived from it.
     const CONSTANT_CONSTRAINTS: bool = false;
+    /// The coordinates whose velocity neither inertia nor a constraint fixes, only the forces,
+    /// when the derive solved each one's momentum balance for it in closed form (a node
+    /// between a resistor and an inductor): [`LagrangeDirac::solved_velocities`] gives them.
+    /// Empty otherwise; integrators then solve that balance by Newton's method.
+    const SOLVED_VELOCITIES: &'static [usize] = &[];
     /// The sparsity pattern of the condensed Newton system and what to say about each unknown;
     /// interconnections combine their subsystems' to check themselves when they compile.
     const STRUCTURE: Structure;
@@ -171,6 +176,13 @@ where
     /// `∂L/∂t`: with the power of the forces, the rate of change of the energy on solutions,
     /// `dE/dt = ⟨F, v⟩ − ∂L/∂t`.
     fn dl_dt(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>) -> f64;
+
+    /// Writes the velocity of each coordinate of [`LagrangeDirac::SOLVED_VELOCITIES`] that its
+    /// momentum balance gives at `(t, q)` and the other velocities of `v`, at its index of
+    /// `out`; the other entries of `out` are left alone.
+    fn solved_velocities(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut VecQ<Self>) {
+        let _ = (t, q, v, out);
+    }
 
     /// The interconnection forces `Ωᵀμ` of the model and, scattered, of its subsystems: the
     /// efforts at the ports (zero for a primitive model).

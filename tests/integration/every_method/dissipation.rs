@@ -380,3 +380,67 @@ fn the_power_balance_closes_per_subsystem_on_the_motor() {
         assert!(whole.abs() < bound, "{method:?}: the whole balance is off by {whole:e}");
     });
 }
+
+/// A massless node on a cubic damper, `F = −c ẏ³`, pushed away by a negative stiffness: its
+/// balance `c ẏ³ = k y` is not affine in `ẏ`, so Newton's method solves it.
+#[derive(LagrangeDirac)]
+#[dirac(coordinates(y => vy))]
+#[dirac(lagrangian = 0.5 * k * y * y)]
+#[dirac(force(y) = -c * vy * vy * vy)]
+pub struct CubicNode {
+    pub k: f64,
+    pub c: f64,
+}
+
+/// The derive solves a velocity that only the forces fix in closed form where its balance is
+/// affine in it alone: the RC circuit's current (`i = (u − q/C)/r`) and the inductance-free
+/// motor's (`i = (u − k w)/r`, through the gyrator's `L_vq`). Not the cubic damper's (not
+/// affine), nor the massless node of a composite (its direction mixes coordinates through the
+/// connection's row). The reference of each closed form is the model's own momentum balance,
+/// evaluated by its residual kernel: zero at the velocity the closed form gives, from any
+/// velocity it starts.
+#[test]
+fn velocities_that_only_forces_fix_are_solved_in_closed_form_where_affine() {
+    assert_eq!(Rc::SOLVED_VELOCITIES, [Rc::Q.index()]);
+    assert_eq!(Motor::SOLVED_VELOCITIES, [Motor::Q.index()]);
+    assert!(CubicNode::SOLVED_VELOCITIES.is_empty());
+    assert!(MassDamperSpring::SOLVED_VELOCITIES.is_empty());
+    let motor = Motor { r: 1.5, k: 0.8, j: 0.2, b: 0.1, u: 12.0 };
+    let lambda = VecC::<Motor>::zeros();
+    for (th, w, i) in [(0.0, 0.0, 0.0), (1.3, -2.0, 7.0), (-0.4, 9.5, -3.0)] {
+        let (q, mut v) = (VecQ::<Motor>::new(0.2, th), VecQ::<Motor>::new(i, w));
+        let mut solved = v;
+        motor.solved_velocities(0.0, &q, &v, &mut solved);
+        assert!((solved[0] - (motor.u - motor.k * w) / motor.r).abs() < 1e-14, "{solved:?}");
+        v[0] = solved[0];
+        // The balance `d/dt (k th) = k w = u − r i`: `ṗ − L_vq v` with `p = k th`.
+        let mut blocks = ResidualBlocks::<Motor>::zeros();
+        motor.residual_blocks(0.0, &q, &v, &lambda, &mut blocks);
+        let balance = blocks.momentum_rate[0] - motor.k * w;
+        assert!(balance.abs() < 1e-13, "{balance:e}");
+    }
+    // Both paths through every integrator: the closed forms above (`an_rc_circuit_…`,
+    // `a_motor_without_inductance_…`) and Newton's method here, against `ẏ = (k/c)^{1/3} y^{1/3}`
+    // integrated in closed form from `y(0) = 1`: `y^{2/3} = 1 + (2/3) (k/c)^{1/3} t`.
+    // Started from a moving guess: at rest the damper's `∂F/∂v = −3 c ẏ²` vanishes and fixes
+    // nothing.
+    let node = CubicNode { k: 2.0, c: 0.5 };
+    let start = consistent_state(
+        &node,
+        0.0,
+        &VecQ::<CubicNode>::new(1.0),
+        &VecQ::<CubicNode>::new(1.0),
+        Consistency::default(),
+    )
+    .expect("the node's velocity is fixed by the damper");
+    let times: Vec<f64> = (1..=10).map(|k| 0.2 * f64::from(k)).collect();
+    each_integrator!(&node, fineness(), |method, integrator| {
+        let solution =
+            integrator.solve(0.0, &start, 2.0, &Sampling::Times(times.clone())).expect("integrates");
+        for (k, &t) in solution.t().iter().enumerate() {
+            let y = (1.0 + 2.0 / 3.0 * (node.k / node.c).cbrt() * t).powf(1.5);
+            let e = (solution.q(CubicNode::Y)[k] - y).abs();
+            assert!(e < 10.0 * tolerance(method) * y, "{method:?} at {t}: off by {e:e}");
+        }
+    });
+}
