@@ -102,7 +102,11 @@ pub const MODEL_KEYS: &[&str] = &[
 pub const CONNECT: &str = "connect";
 
 /// Every key a `#[dirac(...)]` attribute of an interconnection accepts, for error messages.
-pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, HOLONOMIC, LARGE, REDUCE];
+pub const INTERCONNECTION_KEYS: &[&str] = &[CONNECT, CONSTRAINT, HOLONOMIC, JOINT, LARGE, REDUCE];
+
+/// `joint(th => w) = revolute(y, parent at [..], child at [..])`: a joint between rigid bodies
+/// (also `prismatic(axis, ..)` and `joint(name) = fixed(..)`).
+pub const JOINT: &str = "joint";
 
 /// `reduce`: flatten the composite's parts into one model and eliminate its aliases when it
 /// compiles.

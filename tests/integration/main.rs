@@ -29,6 +29,7 @@ mod initial;
 mod inputs;
 mod interconnection;
 mod jacobians;
+mod joints;
 mod ladder;
 mod linearization;
 mod linkage;

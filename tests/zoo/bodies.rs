@@ -27,6 +27,38 @@ pub struct SpatialDoublePendulum {
     pub a2: f64,
 }
 
+macro_rules! jointed_double_pendulum {
+    ($(#[$attr:meta])* $name:ident) => {
+        /// The spatial double pendulum with its joints named: link 1 turns about space's `y`
+        /// axis through the pivot at the origin, link 2 about link 1's `y` axis through the hinge
+        /// (`th2` is link 2's angle to link 1).
+        #[derive(Interconnection, Clone, Debug)]
+        $(#[$attr])*
+        #[dirac(joint(th1 => w1) = revolute(y, world, link1 at [0.0, 0.0, a1]))]
+        #[dirac(joint(th2 => w2) = revolute(y, link1 at [0.0, 0.0, -b1], link2 at [0.0, 0.0, a2]))]
+        pub struct $name {
+            pub link1: RigidBody,
+            pub link2: RigidBody,
+            pub a1: f64,
+            pub b1: f64,
+            pub a2: f64,
+        }
+
+        impl $name {
+            pub fn new(spatial: &SpatialDoublePendulum) -> $name {
+                let s = spatial.clone();
+                $name { link1: s.link1, link2: s.link2, a1: s.a1, b1: s.b1, a2: s.a2 }
+            }
+        }
+    };
+}
+
+jointed_double_pendulum!(JointedDoublePendulum);
+jointed_double_pendulum!(
+    #[dirac(reduce)]
+    ReducedDoublePendulum
+);
+
 /// The same pendulum in its two joint angles (about `y`, zero hanging down), written by hand:
 /// the centres at `(−a1 sin θ1, −a1 cos θ1)` and `(−l1 sin θ1 − a2 sin θ2, …)` in `(x, z)`,
 /// `l1 = a1 + b1`, and each link's own inertia about `y`.

@@ -4,10 +4,11 @@ use syn::ext::IdentExt;
 use syn::parse::ParseStream;
 use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
+use super::joints::{self, Joint};
 use crate::ast::is_f64;
 use crate::ctxt::Ctxt;
 use crate::lower::member_path;
-use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, HOLONOMIC, INTERCONNECTION_KEYS, LARGE, REDUCE};
+use crate::symbol::{CONNECT, CONSTRAINT, DIRAC, HOLONOMIC, INTERCONNECTION_KEYS, JOINT, LARGE, REDUCE};
 
 /// A composite as written by the user.
 pub struct Composite<'a> {
@@ -21,6 +22,11 @@ pub struct Composite<'a> {
     pub constraints: Vec<OneForm>,
     /// `holonomic(name) = expr`: position constraints between subsystems, `φ(q, t) = 0`.
     pub holonomic: Vec<OneForm>,
+    /// `joint(th => w) = revolute(..)`: joints between rigid bodies. Their rows are also in
+    /// `holonomic`, after the written ones, under names that start with the joint's.
+    pub joints: Vec<Joint>,
+    /// How many of `holonomic` were written as rows; the rest are the joints'.
+    pub written_rows: usize,
     /// `large`: the composite may take more stack than the limit.
     pub large: bool,
     /// `reduce`: the composite is flattened into one model with its aliases eliminated.
@@ -104,6 +110,8 @@ impl<'a> Composite<'a> {
             connections: Vec::new(),
             constraints: Vec::new(),
             holonomic: Vec::new(),
+            joints: Vec::new(),
+            written_rows: 0,
             large: false,
             reduce: false,
             incomplete: false,
@@ -122,6 +130,12 @@ impl<'a> Composite<'a> {
             if let Err(e) = attr.parse_args_with(parser) {
                 cx.syn_error(e);
                 composite.incomplete = true;
+            }
+        }
+        composite.written_rows = composite.holonomic.len();
+        for joint in &composite.joints {
+            for (name, expr) in joints::member_rows(joint) {
+                composite.holonomic.push(OneForm { key: joint.key.clone(), name: Some(name), expr });
             }
         }
         composite
@@ -225,6 +239,7 @@ fn parse_items(cx: &Ctxt, composite: &mut Composite<'_>, input: ParseStream) -> 
                 }
                 composite.connections.push(Connection { key, a, b });
             }
+            JOINT => composite.joints.push(joints::parse(key, input)?),
             CONSTRAINT | HOLONOMIC => {
                 let holonomic = key == HOLONOMIC;
                 let name = if input.peek(syn::token::Paren) {

@@ -12,6 +12,7 @@ mod blocks;
 mod consts;
 mod emit;
 mod items;
+pub(crate) mod joints;
 mod large;
 mod methods;
 mod model;

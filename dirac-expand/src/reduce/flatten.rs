@@ -20,6 +20,8 @@
 //! stays a row. The reduced model moves like the composite started with the eliminated rows'
 //! offsets at zero: connected coordinates equal, geared ones in ratio.
 
+mod bodies;
+
 use std::collections::HashMap;
 
 use proc_macro2::{Span, TokenStream};
@@ -33,6 +35,7 @@ use super::rewrite::{point_at_fields, rename};
 use crate::ast::{ConstraintKind, Model, Requirement};
 use crate::ctxt::Ctxt;
 use crate::interconnect::ast::Composite;
+use crate::interconnect::joints;
 
 /// A part's description, filed under where it sits in the composite.
 pub struct Part {
@@ -59,6 +62,21 @@ struct Row {
     /// nothing else, integrated with its offset at zero: `wa - ratio * wb` as `a - ratio * b`.
     /// The reduction solves it in this form, so that positions substitute positions.
     position: Option<TokenStream>,
+}
+
+/// A joint between two bodies, in the flat model's names.
+#[derive(Clone)]
+struct FlatJoint {
+    key: Ident,
+    name: String,
+    /// The joint's coordinate and velocity; none for a fixed joint.
+    coordinate: Option<(String, String)>,
+    kind: joints::Kind,
+    /// The parent body's prefix (`link1`), none for the world.
+    parent: Option<String>,
+    child: String,
+    at_parent: [joints::S; 3],
+    at_child: [joints::S; 3],
 }
 
 /// A coordinate solved for: `q = Σ kⱼ qⱼ + k₀` (the text for the list of eliminations).
@@ -111,6 +129,7 @@ struct Flat {
     outputs: Vec<(String, TokenStream)>,
     units: Vec<(String, syn::LitStr)>,
     connections: Vec<(String, String, Ident)>,
+    joints: Vec<FlatJoint>,
     large: bool,
     eliminated: Vec<Elimination>,
 }
@@ -146,6 +165,7 @@ pub fn flatten(input: &DeriveInput, parts: &[Part]) -> TokenStream {
         // connections, and every name of its parts is theirs to connect.
         let mut whole = flat.clone();
         whole.connections_as_rows();
+        whole.joints_as_rows();
         described = Some(whole.input(input));
         flat.eliminate(&cx);
     }
@@ -361,10 +381,28 @@ impl Flat {
                 Some((below.join("."), quote! { #ident }))
             })
             .collect();
-        let kinds = [
-            (ConstraintKind::Holonomic, &composite.holonomic),
-            (ConstraintKind::Velocity, &composite.constraints),
-        ];
+        let rename_params = |t: TokenStream| rename(t, &map);
+        for joint in &composite.joints {
+            let flat = |path: &[String]| {
+                let mut full = prefix.clone();
+                full.extend(path.iter().cloned());
+                mangle(&full)
+            };
+            let own = |i: &Ident| flat(&[syn::ext::IdentExt::unraw(i).to_string()]);
+            self.joints.push(FlatJoint {
+                key: joint.key.clone(),
+                name: own(&joint.name),
+                coordinate: joint.coordinate.as_ref().map(|(q, v)| (own(q), own(v))),
+                kind: joint.kind,
+                parent: (!joint.parent.path.is_empty()).then(|| flat(&joint.parent.path)),
+                child: flat(&joint.child.path),
+                at_parent: joints::point(&joint.parent.at, &rename_params),
+                at_child: joints::point(&joint.child.at, &rename_params),
+            });
+        }
+        let written = &composite.holonomic[..composite.written_rows];
+        let kinds =
+            [(ConstraintKind::Holonomic, written), (ConstraintKind::Velocity, &composite.constraints[..])];
         for (kind, forms) in kinds {
             for (k, form) in forms.iter().enumerate() {
                 let local =
@@ -411,6 +449,7 @@ impl Flat {
     fn eliminate(&mut self, cx: &Ctxt) {
         // `subst` maps each eliminated coordinate and velocity to its expression in those left.
         let mut subst: HashMap<String, TokenStream> = HashMap::new();
+        self.joint_coordinates(cx, &mut subst);
         let positions: HashMap<String, TokenStream> = self
             .coordinates
             .iter()

@@ -1,0 +1,32 @@
+use dirac::components::bodies::RigidBody;
+use dirac::components::rotational::Inertia;
+
+// A joint's child must be a body.
+#[derive(dirac::Interconnection)]
+#[dirac(reduce, joint(th => w) = revolute(y, world, wheel at [0.0, 0.0, 1.0]))]
+pub struct NotABody {
+    pub wheel: Inertia,
+}
+
+// Spherical joints are not written: the kinds are named.
+#[derive(dirac::Interconnection)]
+#[dirac(joint(ball => w) = spherical(world, link))]
+pub struct Spherical {
+    pub link: RigidBody,
+}
+
+// A hinge has a coordinate and its velocity.
+#[derive(dirac::Interconnection)]
+#[dirac(joint(hinge) = revolute(y, world, link))]
+pub struct NoVelocity {
+    pub link: RigidBody,
+}
+
+// An axis is one of the parent's.
+#[derive(dirac::Interconnection)]
+#[dirac(joint(th => w) = revolute(w, world, link))]
+pub struct BadAxis {
+    pub link: RigidBody,
+}
+
+fn main() {}
