@@ -4,6 +4,8 @@
 //!
 //! - bodies: two `RigidBody` parts (12 coordinates each, six rows for `RᵀR = I`) and ten
 //!   holonomic rows of joints: 24 coordinates and 22 rows;
+//! - joints reduced: the same bodies with their two joints named (`joint(th1 => w1) =
+//!   revolute(..)`) under `#[dirac(reduce)]`, which compiles them to the two joint angles;
 //! - by hand: the two angles, with the Lagrangian in their sines and cosines.
 //!
 //! Radau and Explicit at rtol = atol = 1e-8 (Radau projecting onto the constraints), the
@@ -23,7 +25,9 @@ use dirac::prelude::*;
 #[path = "../tests/zoo/mod.rs"]
 mod zoo;
 
-use zoo::bodies::{PlanarDoublePendulum, SpatialDoublePendulum, double_pendulums, spatial_start};
+use zoo::bodies::{
+    PlanarDoublePendulum, ReducedDoublePendulum, SpatialDoublePendulum, double_pendulums, spatial_start,
+};
 
 const ROUNDS: usize = 11;
 const END: f64 = 2.0;
@@ -42,6 +46,7 @@ fn body_angles(s: &State<SpatialDoublePendulum>) -> [f64; 2] {
 
 fn compare(
     method: &str,
+    label: &str,
     reference: [f64; 2],
     bodies: &dyn Fn() -> (usize, [f64; 2]),
     by_hand: &dyn Fn() -> (usize, [f64; 2]),
@@ -59,7 +64,7 @@ fn compare(
     let error = |x: [f64; 2]| (x[0] - reference[0]).abs().max((x[1] - reference[1]).abs());
     let (ma, mb) = (median(ta), median(tb));
     println!(
-        "{method:11} bodies {:9.1} µs ({:5} steps, off by {:.1e}) | by hand {:8.1} µs ({:5} steps, off by {:.1e}) | ratio {:5.1}",
+        "{method:11} {label:7} {:9.1} µs ({:5} steps, off by {:.1e}) | by hand {:8.1} µs ({:5} steps, off by {:.1e}) | ratio {:6.2}",
         ma * 1e6,
         a.0,
         error(a.1),
@@ -89,23 +94,39 @@ fn main() {
     let reference = [end.q[0], end.q[1]];
     let (rtol, atol, h) = (1e-8, 1e-8, 1e-3);
     let projected = RadauOptions { projection: true, ..RadauOptions::tolerances(rtol, atol) };
+    // The hand model's runs, the baseline of every row.
+    let hand_radau = || {
+        let mut radau = Radau::new(&planar, RadauOptions::tolerances(rtol, atol)).expect("valid");
+        let s = radau.solve(0.0, &hand_start, END, &last).expect("integrates");
+        let e = s.last().expect("a sample");
+        (radau.stats().steps, [e.q[0], e.q[1]])
+    };
+    let hand_explicit = || {
+        let mut explicit = Explicit::new(&planar, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+        let s = explicit.solve(0.0, &hand_start, END, &last).expect("integrates");
+        let e = s.last().expect("a sample");
+        (explicit.stats().steps, [e.q[0], e.q[1]])
+    };
+    let hand_variational = || {
+        let mut variational = Variational::new(&planar, h, VariationalOptions::default()).expect("valid");
+        let s = variational.solve(0.0, &hand_start, END, &last).expect("integrates");
+        let e = s.last().expect("a sample");
+        (variational.stats().steps, [e.q[0], e.q[1]])
+    };
     compare(
         "Radau",
+        "bodies",
         reference,
         &|| {
             let mut radau = Radau::new(&spatial, projected).expect("valid");
             let s = radau.solve(0.0, &start, END, &last).expect("integrates");
             (radau.stats().steps, body_angles(&s.last().expect("a sample")))
         },
-        &|| {
-            let mut radau = Radau::new(&planar, RadauOptions::tolerances(rtol, atol)).expect("valid");
-            let s = radau.solve(0.0, &hand_start, END, &last).expect("integrates");
-            let e = s.last().expect("a sample");
-            (radau.stats().steps, [e.q[0], e.q[1]])
-        },
+        &hand_radau,
     );
     compare(
         "Explicit",
+        "bodies",
         reference,
         &|| {
             let mut explicit =
@@ -113,16 +134,11 @@ fn main() {
             let s = explicit.solve(0.0, &start, END, &last).expect("integrates");
             (explicit.stats().steps, body_angles(&s.last().expect("a sample")))
         },
-        &|| {
-            let mut explicit =
-                Explicit::new(&planar, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
-            let s = explicit.solve(0.0, &hand_start, END, &last).expect("integrates");
-            let e = s.last().expect("a sample");
-            (explicit.stats().steps, [e.q[0], e.q[1]])
-        },
+        &hand_explicit,
     );
     compare(
         "Variational",
+        "bodies",
         reference,
         &|| {
             let mut variational =
@@ -130,11 +146,48 @@ fn main() {
             let s = variational.solve(0.0, &start, END, &last).expect("integrates");
             (variational.stats().steps, body_angles(&s.last().expect("a sample")))
         },
+        &hand_variational,
+    );
+    // The same bodies in joint coordinates: link 2's angle is the sum of the two joints'.
+    let reduced = ReducedDoublePendulum::new(&spatial);
+    let mut q = VecQ::<ReducedDoublePendulum>::zeros();
+    let mut v = VecQ::<ReducedDoublePendulum>::zeros();
+    (q[0], q[1], v[0], v[1]) = (TH[0], TH[1] - TH[0], W[0], W[1] - W[0]);
+    let reduced_start = consistent_state(&reduced, 0.0, &q, &v, Consistency::default()).expect("a start");
+    let angles = |s: &State<ReducedDoublePendulum>| [s.q[0], s.q[0] + s.q[1]];
+    compare(
+        "Radau",
+        "reduced",
+        reference,
         &|| {
-            let mut variational = Variational::new(&planar, h, VariationalOptions::default()).expect("valid");
-            let s = variational.solve(0.0, &hand_start, END, &last).expect("integrates");
-            let e = s.last().expect("a sample");
-            (variational.stats().steps, [e.q[0], e.q[1]])
+            let mut radau = Radau::new(&reduced, RadauOptions::tolerances(rtol, atol)).expect("valid");
+            let s = radau.solve(0.0, &reduced_start, END, &last).expect("integrates");
+            (radau.stats().steps, angles(&s.last().expect("a sample")))
         },
+        &hand_radau,
+    );
+    compare(
+        "Explicit",
+        "reduced",
+        reference,
+        &|| {
+            let mut explicit =
+                Explicit::new(&reduced, ExplicitOptions::tolerances(rtol, atol)).expect("valid");
+            let s = explicit.solve(0.0, &reduced_start, END, &last).expect("integrates");
+            (explicit.stats().steps, angles(&s.last().expect("a sample")))
+        },
+        &hand_explicit,
+    );
+    compare(
+        "Variational",
+        "reduced",
+        reference,
+        &|| {
+            let mut variational =
+                Variational::new(&reduced, h, VariationalOptions::default()).expect("valid");
+            let s = variational.solve(0.0, &reduced_start, END, &last).expect("integrates");
+            (variational.stats().steps, angles(&s.last().expect("a sample")))
+        },
+        &hand_variational,
     );
 }
