@@ -72,21 +72,7 @@ impl Flat {
         // The loops' rows first, while every name is still the parts'.
         for &k in &cuts {
             let joint = &all[k];
-            let rows = joints::rows(
-                joint.kind,
-                frame_of(&joint.parent),
-                &joint.at_parent,
-                &frames[&joint.child],
-                &joint.at_child,
-            );
-            for (suffix, row) in rows {
-                self.rows.push(Row {
-                    kind: ConstraintKind::Holonomic,
-                    name: format!("{}_{suffix}", joint.name),
-                    expr: row.tokens(),
-                    position: None,
-                });
-            }
+            self.push_joint_rows(joint, frame_of(&joint.parent), &frames[&joint.child]);
         }
         for (_, joint) in all.iter().enumerate().filter(|(k, _)| !cuts.contains(k)) {
             self.rewrite_in_joint_coordinate(joint, &frames[&joint.child], subst);
@@ -189,21 +175,20 @@ impl Flat {
                     &|_| None,
                 ),
             };
-            let rows = joints::rows(
-                joint.kind,
-                &own(&joint.parent),
-                &joint.at_parent,
-                &own(&Some(joint.child.clone())),
-                &joint.at_child,
-            );
-            for (suffix, row) in rows {
-                self.rows.push(Row {
-                    kind: ConstraintKind::Holonomic,
-                    name: format!("{}_{suffix}", joint.name),
-                    expr: row.tokens(),
-                    position: None,
-                });
-            }
+            self.push_joint_rows(&joint, &own(&joint.parent), &own(&Some(joint.child.clone())));
+        }
+    }
+
+    /// The rows that hold `joint` between the poses of its parent and its child, named
+    /// `{joint}_{suffix}`.
+    fn push_joint_rows(&mut self, joint: &FlatJoint, parent: &Frame, child: &Frame) {
+        for (suffix, row) in joints::rows(joint.kind, parent, &joint.at_parent, child, &joint.at_child) {
+            self.rows.push(Row {
+                kind: ConstraintKind::Holonomic,
+                name: format!("{}_{suffix}", joint.name),
+                expr: row.tokens(),
+                position: None,
+            });
         }
     }
 }
