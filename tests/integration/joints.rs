@@ -425,3 +425,75 @@ fn a_four_bar_of_bodies_keeps_one_cut_joints_rows_and_closes_as_the_circles_say(
     let swing = crank.iter().fold(f64::MIN, |m, x| m.max(*x)) - crank.iter().fold(f64::MAX, |m, x| m.min(*x));
     assert!(swing > 0.1, "{crank:?}");
 }
+
+macro_rules! damped_pivot {
+    ($(#[$attr:meta])* $name:ident) => {
+        /// The zoo's reduced pendulum with a rotational damper between its pivot's angle and a
+        /// fixed housing.
+        #[derive(Interconnection, Clone, Debug)]
+        $(#[$attr])*
+        #[dirac(connect(pendulum.th1, damper.b), connect(damper.a, housing.phi))]
+        pub struct $name {
+            pub pendulum: ReducedDoublePendulum,
+            pub damper: dirac::components::rotational::Damper,
+            pub housing: dirac::components::rotational::Fixed,
+        }
+    };
+}
+
+damped_pivot!(DampedPivot);
+damped_pivot!(
+    #[dirac(reduce)]
+    DampedPivotReduced
+);
+
+/// A reduced composite nested in a reduced one keeps its joint coordinates: the outer
+/// reduction receives the joints, not their rows. Reference: the same composite without
+/// `reduce` on the outer level (the inner pendulum reduced on its own, checked against the
+/// planar model above), at 1e-12.
+#[test]
+fn joints_of_a_nested_reduced_composite_stay_joint_coordinates() {
+    assert_eq!(DampedPivotReduced::NAMES.coordinate_names(), ["pendulum.th1", "pendulum.th2"]);
+    assert!(DampedPivotReduced::NAMES.constraint_names().is_empty());
+    let (spatial, _) = double_pendulums();
+    let damper = dirac::components::rotational::Damper { d: 0.7 };
+    let housing = dirac::components::rotational::Fixed { phi0: 0.0 };
+    let pendulum = ReducedDoublePendulum::new(&spatial);
+    let nested = DampedPivot { pendulum: pendulum.clone(), damper: damper.clone(), housing: housing.clone() };
+    let flat = DampedPivotReduced { pendulum, damper, housing };
+    let (q, v) = ([0.9, -1.3], [0.3, 0.8]);
+    let mut start = State::<DampedPivotReduced>::zeros();
+    start.q.copy_from_slice(&q);
+    start.v.copy_from_slice(&v);
+    let start = consistent_state(&flat, 0.0, &start.q, &start.v, Consistency::default()).expect("a start");
+    let names = DampedPivot::NAMES.coordinate_names();
+    let at = |name: &str| names.iter().position(|n| n == name).expect("a coordinate");
+    let (mut q0, mut v0) = (VecQ::<DampedPivot>::zeros(), VecQ::<DampedPivot>::zeros());
+    for (k, name) in ["pendulum.th1", "pendulum.th2"].iter().enumerate() {
+        q0[at(name)] = q[k];
+        v0[at(name)] = v[k];
+    }
+    q0[at("damper.b")] = q[0];
+    v0[at("damper.b")] = v[0];
+    let reference_start = consistent_state(&nested, 0.0, &q0, &v0, Consistency::default()).expect("a start");
+    let times: Vec<f64> = (1..=5).map(|k| 0.4 * k as f64).collect();
+    let tight = RadauOptions::tolerances(1e-12, 1e-12);
+    let reference = Radau::new(&nested, tight)
+        .expect("valid")
+        .solve(0.0, &reference_start, 2.0, &Sampling::Times(times.clone()))
+        .expect("it swings");
+    let got = Radau::new(&flat, tight)
+        .expect("valid")
+        .solve(0.0, &start, 2.0, &Sampling::Times(times.clone()))
+        .expect("it swings");
+    let mut apart = 0.0f64;
+    for k in 0..times.len() {
+        let (a, b) = (got.state(k).expect("a sample"), reference.state(k).expect("a sample"));
+        apart = apart.max(largest((0..2).map(|i| a.q[i] - b.q[at(["pendulum.th1", "pendulum.th2"][i])])));
+    }
+    println!("nested joints against the composite: max |Δθ| = {apart:.1e}");
+    assert!(apart < 1e-9, "{apart:e}");
+    // The damper took energy out: the reference is not at rest.
+    let energy = reference.column("energy").expect("the energy");
+    assert!(energy[energy.len() - 1] < energy[0] - 1e-3, "{energy:?}");
+}

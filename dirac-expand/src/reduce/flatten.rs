@@ -79,6 +79,66 @@ struct FlatJoint {
     at_child: [joints::S; 3],
 }
 
+impl FlatJoint {
+    /// The joint as a reduced composite describes it to the composites around it, in its flat
+    /// names: `#[dirac(__joint(th => w) = revolute(y, link1 at [..], link2 at [..]))]`.
+    fn attribute(&self) -> TokenStream {
+        let ident = |s: &str| Ident::new(s, Span::call_site());
+        let name = match &self.coordinate {
+            Some((q, v)) => {
+                let (q, v) = (ident(q), ident(v));
+                quote! { #q => #v }
+            }
+            None => {
+                let name = ident(&self.name);
+                quote! { #name }
+            }
+        };
+        let axis = |a: usize| ident(["x", "y", "z"][a]);
+        let (kind, axis) = match self.kind {
+            joints::Kind::Revolute(a) => (quote! { revolute }, Some(axis(a))),
+            joints::Kind::Prismatic(a) => (quote! { prismatic }, Some(axis(a))),
+            joints::Kind::Fixed => (quote! { fixed }, None),
+        };
+        let axis = axis.map(|a| quote! { #a, });
+        let parent = ident(self.parent.as_deref().unwrap_or("world"));
+        let child = ident(&self.child);
+        let point = |at: &[joints::S; 3]| {
+            let entries = at.iter().map(joints::S::tokens);
+            quote! { [#(#entries),*] }
+        };
+        let (at_parent, at_child) = (point(&self.at_parent), point(&self.at_child));
+        quote! {
+            #[dirac(__joint(#name) = #kind(#axis #parent at #at_parent, #child at #at_child))]
+        }
+    }
+}
+
+/// The input without the joints a reduced composite described, and those joints.
+fn split_joints(input: &DeriveInput) -> (DeriveInput, Vec<joints::Joint>) {
+    let mut input = input.clone();
+    let mut found = Vec::new();
+    input.attrs.retain(|attr| {
+        let joint = attr.path().is_ident("dirac").then(|| {
+            attr.parse_args_with(|content: syn::parse::ParseStream| {
+                let key: Ident = content.parse()?;
+                if key != "__joint" {
+                    return Err(content.error("not a joint"));
+                }
+                joints::parse(key, content)
+            })
+        });
+        match joint {
+            Some(Ok(joint)) => {
+                found.push(joint);
+                false
+            }
+            _ => true,
+        }
+    });
+    (input, found)
+}
+
 /// A coordinate solved for: `q = Σ kⱼ qⱼ + k₀` (the text for the list of eliminations).
 #[derive(Clone)]
 struct Elimination {
@@ -130,6 +190,8 @@ struct Flat {
     units: Vec<(String, syn::LitStr)>,
     connections: Vec<(String, String, Ident)>,
     joints: Vec<FlatJoint>,
+    /// Each body carried by a joint's coordinate, with the joint's name.
+    jointed: Vec<(String, String)>,
     large: bool,
     eliminated: Vec<Elimination>,
 }
@@ -165,7 +227,6 @@ pub fn flatten(input: &DeriveInput, parts: &[Part]) -> TokenStream {
         // connections, and every name of its parts is theirs to connect.
         let mut whole = flat.clone();
         whole.connections_as_rows();
-        whole.joints_as_rows();
         described = Some(whole.input(input));
         flat.eliminate(&cx);
     }
@@ -236,7 +297,8 @@ impl Flat {
     /// A primitive part: every name prefixed, its terms added.
     fn primitive(&mut self, cx: &Ctxt, part: &Part, field: &Ident) {
         let own = Ctxt::new();
-        let model = Model::from_input(&own, &part.input);
+        let (input, described_joints) = split_joints(&part.input);
+        let model = Model::from_input(&own, &input);
         if own.has_errors() || model.incomplete {
             let _ = own.into_compile_errors();
             cx.error_spanned_by(field, format!("`reduce` cannot read the part `{}`", part.input.ident));
@@ -328,6 +390,26 @@ impl Flat {
             }
         }
         self.large |= model.large;
+        // A reduced composite's joints, its bodies and points in its flat names.
+        for joint in described_joints {
+            let flat = |path: &[String]| {
+                let mut full = prefix.clone();
+                full.extend(path.iter().cloned());
+                mangle(&full)
+            };
+            let own = |i: &Ident| flat(&[syn::ext::IdentExt::unraw(i).to_string()]);
+            let in_flat_names = |t: TokenStream| super::rewrite::rename(t, &map);
+            self.joints.push(FlatJoint {
+                key: field.clone(),
+                name: own(&joint.name),
+                coordinate: joint.coordinate.as_ref().map(|(q, v)| (own(q), own(v))),
+                kind: joint.kind,
+                parent: (!joint.parent.path.is_empty()).then(|| flat(&joint.parent.path)),
+                child: flat(&joint.child.path),
+                at_parent: joints::point(&joint.parent.at, &in_flat_names),
+                at_child: joints::point(&joint.child.at, &in_flat_names),
+            });
+        }
     }
 
     /// A composite: its own parameters, rows and connections, its parts' names by path.
@@ -468,10 +550,21 @@ impl Flat {
             let (a, b) = (resolve(&subst, a), resolve(&subst, b));
             let (Some(ia), Some(ib)) = (self.coordinate(&a), self.coordinate(&b)) else {
                 let missing = if self.coordinate(&a).is_none() { &a } else { &b };
-                cx.error_spanned_by(
-                    &key,
-                    format!("`{}` is not a coordinate of the parts", missing.replace("__", ".")),
-                );
+                let joint = self.jointed.iter().find(|(body, _)| {
+                    missing.strip_prefix(body.as_str()).is_some_and(|rest| rest.starts_with("__"))
+                });
+                let message = match joint {
+                    Some((body, joint)) => format!(
+                        "`{}` is not a coordinate of the reduced model: joint `{joint}` carries `{}` in its own \
+                         coordinate under `reduce`; connect to the joint's coordinate, or leave `reduce` off \
+                         to keep the body's",
+                        missing.replace("__", "."),
+                        body.replace("__", "."),
+                        joint = joint.replace("__", "."),
+                    ),
+                    None => format!("`{}` is not a coordinate of the parts", missing.replace("__", ".")),
+                };
+                cx.error_spanned_by(&key, message);
                 continue;
             };
             if ia == ib {
@@ -865,6 +958,9 @@ impl Flat {
                 ConstraintKind::Velocity => quote! { constraint },
             };
             attrs.push(quote! { #[dirac(#key(#name) = #expr)] });
+        }
+        for joint in &self.joints {
+            attrs.push(joint.attribute());
         }
         for (name, expr) in &self.defines {
             let name = ident(name);

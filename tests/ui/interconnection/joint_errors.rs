@@ -29,4 +29,12 @@ pub struct BadAxis {
     pub link: RigidBody,
 }
 
+// Under `reduce` the joint carries the body in its angle: the body's own coordinates are gone.
+#[derive(dirac::Interconnection)]
+#[dirac(reduce, joint(th => w) = revolute(y, world, link), connect(link.x, spring.a))]
+pub struct ConnectedToAJointedBody {
+    pub link: RigidBody,
+    pub spring: dirac::components::translational::Spring,
+}
+
 fn main() {}

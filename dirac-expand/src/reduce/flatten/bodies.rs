@@ -76,6 +76,7 @@ impl Flat {
         }
         for (_, joint) in all.iter().enumerate().filter(|(k, _)| !cuts.contains(k)) {
             self.rewrite_in_joint_coordinate(joint, &frames[&joint.child], subst);
+            self.jointed.push((joint.child.clone(), joint.name.clone()));
         }
     }
 
@@ -150,8 +151,9 @@ impl Flat {
             self.forces.retain(|(on, _)| *on != gone.q);
             self.forces.extend(moved);
         }
+        // A joint's coordinate is a port: where a motor, a spring or a damper acts on the joint.
         if let Some((q, v)) = &joint.coordinate {
-            self.coordinates.insert(at, Coordinate { q: q.clone(), v: v.clone(), port: false });
+            self.coordinates.insert(at, Coordinate { q: q.clone(), v: v.clone(), port: true });
         }
         let rows: Vec<String> = BODY_ROWS.iter().map(|r| format!("{child}__{r}")).collect();
         self.rows.retain(|row| !rows.contains(&row.name));
@@ -159,24 +161,6 @@ impl Flat {
             *value = super::rename(value.clone(), &new);
         }
         subst.extend(new);
-    }
-
-    /// The joints as the rows they are, every body in its own coordinates: how a reduced
-    /// composite describes itself to the composites around it.
-    pub(super) fn joints_as_rows(&mut self) {
-        for joint in std::mem::take(&mut self.joints) {
-            let own = |body: &Option<String>| match body {
-                None => Frame::world(),
-                Some(body) => Frame::own(
-                    &|c| {
-                        let ident = format_ident!("{body}__{c}");
-                        quote! { #ident }
-                    },
-                    &|_| None,
-                ),
-            };
-            self.push_joint_rows(&joint, &own(&joint.parent), &own(&Some(joint.child.clone())));
-        }
     }
 
     /// The rows that hold `joint` between the poses of its parent and its child, named
