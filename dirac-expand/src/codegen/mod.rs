@@ -53,6 +53,26 @@ pub fn vector(target: &TokenStream, values: &[Id]) -> Vec<Assign> {
     values.iter().enumerate().map(|(i, &value)| Assign::set(quote! { #target[#i] }, value)).collect()
 }
 
+/// Zero entries from which a vector is zeroed at once and only its other entries written.
+const ZEROED_FROM: usize = 32;
+
+/// `target[i] = e_i`, as [`vector`]; where `ZEROED_FROM` entries or more are zero, `target`
+/// is zeroed first (the returned statement) and only the other entries are written, so that a
+/// large model's parameter and output derivatives, mostly zero, do not write each zero.
+pub fn zeroed_vector(graph: &Graph, target: &TokenStream, values: &[Id]) -> (TokenStream, Vec<Assign>) {
+    let zeros = values.iter().filter(|&&v| graph.is_zero(v)).count();
+    if zeros < ZEROED_FROM {
+        return (TokenStream::new(), vector(target, values));
+    }
+    let assigns = values
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| !graph.is_zero(**v))
+        .map(|(i, &value)| Assign::set(quote! { #target[#i] }, value))
+        .collect();
+    (quote! { #target.fill(0.0); }, assigns)
+}
+
 /// `out…[(i, j)] = e_ij` for the structurally nonzero entries only.
 pub fn matrix(graph: &Graph, target: &TokenStream, rows: &[Vec<Id>]) -> Vec<Assign> {
     let mut out = Vec::new();
@@ -278,10 +298,12 @@ impl Emitter<'_> {
     /// A method writing `values` into a slice that must hold exactly that many.
     fn sized(&self, sig: &Signature, values: &[Id]) -> TokenStream {
         let (count, name) = (values.len(), sig.name);
+        let (zero, assigns) = zeroed_vector(&self.model.graph, &quote! { out }, values);
         let check = quote! {
             ::core::assert_eq!(out.len(), #count, "{}: the slice must hold {} values", #name, #count);
+            #zero
         };
-        self.method(sig, &vector(&quote! { out }, values), check)
+        self.method(sig, &assigns, check)
     }
 
     /// One trait method: its header (`_x` for unused arguments) and a body that starts with

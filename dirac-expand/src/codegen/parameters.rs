@@ -12,7 +12,7 @@ use super::signatures::{
     Arg, HOLONOMIC_DTHETA, HOLONOMIC_VJP_DTHETA, RESIDUAL_BLOCKS_DTHETA, RESIDUAL_BLOCKS_DTHETA_ALL,
     RESIDUAL_BLOCKS_VJP_DTHETA, Signature,
 };
-use super::{Emitter, vector};
+use super::{Emitter, zeroed_vector};
 use crate::blocks::{Blocks, ParameterBlocks};
 use crate::sym::emit::{Assign, emit};
 
@@ -25,13 +25,10 @@ impl Emitter<'_> {
         let panic = quote! { ::core::panic!("the model has no parameter {}: it has {}", k, #count) };
         let k = (0..count).map(Literal::usize_unsuffixed);
         let (k1, k2) = (k.clone(), k);
-        let residual = self.by_parameter(&RESIDUAL_BLOCKS_DTHETA, b, &|d| {
-            let mut assigns = vector(&quote! { out.momentum_rate }, &d.momentum_rate);
-            assigns.extend(vector(&quote! { out.dl_dv }, &d.dl_dv));
-            assigns.extend(vector(&quote! { out.constraint_velocity }, &d.a_v));
-            assigns
+        let residual = self.by_parameter(&RESIDUAL_BLOCKS_DTHETA, b, &|d| self.blocks(&quote! { out }, d));
+        let holonomic = self.by_parameter(&HOLONOMIC_DTHETA, b, &|d| {
+            zeroed_vector(&self.model.graph, &quote! { out }, &d.phi)
         });
-        let holonomic = self.by_parameter(&HOLONOMIC_DTHETA, b, &|d| vector(&quote! { out }, &d.phi));
         let all = self.all_parameters(b);
         // The transposed blocks, every parameter in one reverse sweep (the trait's loops over
         // the blocks above serve a model without parameters).
@@ -66,26 +63,40 @@ impl Emitter<'_> {
         if b.dtheta.is_empty() {
             return TokenStream::new();
         }
-        let assigns: Vec<Assign> = b
-            .dtheta
-            .iter()
-            .enumerate()
-            .flat_map(|(k, d)| {
-                let k = Literal::usize_unsuffixed(k);
-                let mut assigns = vector(&quote! { out[#k].momentum_rate }, &d.momentum_rate);
-                assigns.extend(vector(&quote! { out[#k].dl_dv }, &d.dl_dv));
-                assigns.extend(vector(&quote! { out[#k].constraint_velocity }, &d.a_v));
-                assigns
-            })
-            .collect();
-        let header = RESIDUAL_BLOCKS_DTHETA_ALL.header(|arg| self.uses(&assigns, arg), !assigns.is_empty());
+        let mut zero = TokenStream::new();
+        let mut assigns: Vec<Assign> = Vec::new();
+        for (k, d) in b.dtheta.iter().enumerate() {
+            let k = Literal::usize_unsuffixed(k);
+            let (z, a) = self.blocks(&quote! { out[#k] }, d);
+            zero.extend(z);
+            assigns.extend(a);
+        }
+        let header = RESIDUAL_BLOCKS_DTHETA_ALL
+            .header(|arg| self.uses(&assigns, arg), !assigns.is_empty() || !zero.is_empty());
         let body = emit(&self.model.graph, &assigns, &|s| self.leaf(s, false));
         quote! {
             #[inline]
             #header {
+                #zero
                 #body
             }
         }
+    }
+
+    /// One parameter's derivatives of the residual blocks into `out.momentum_rate`, `out.dl_dv`
+    /// and `out.constraint_velocity`: the statements that zero a mostly zero block first, and
+    /// the assignments.
+    fn blocks(&self, out: &TokenStream, d: &ParameterBlocks) -> (TokenStream, Vec<Assign>) {
+        let g = &self.model.graph;
+        let (mut zero, mut assigns) = zeroed_vector(g, &quote! { #out.momentum_rate }, &d.momentum_rate);
+        for (target, values) in
+            [(quote! { #out.dl_dv }, &d.dl_dv), (quote! { #out.constraint_velocity }, &d.a_v)]
+        {
+            let (z, a) = zeroed_vector(g, &target, values);
+            zero.extend(z);
+            assigns.extend(a);
+        }
+        (zero, assigns)
     }
 
     /// A method whose body computes `assigns(∂/∂θ_k)` in the arm of parameter `k`.
@@ -93,15 +104,15 @@ impl Emitter<'_> {
         &self,
         sig: &Signature,
         b: &Blocks,
-        assigns: &dyn Fn(&ParameterBlocks) -> Vec<Assign>,
+        assigns: &dyn Fn(&ParameterBlocks) -> (TokenStream, Vec<Assign>),
     ) -> TokenStream {
-        let per_parameter: Vec<Vec<Assign>> = b.dtheta.iter().map(assigns).collect();
-        let used = |arg| arg == Arg::K || per_parameter.iter().any(|a| self.uses(a, arg));
-        let header = sig.header(used, per_parameter.iter().any(|a| !a.is_empty()));
-        let arms = per_parameter.iter().enumerate().map(|(k, assigns)| {
+        let per_parameter: Vec<(TokenStream, Vec<Assign>)> = b.dtheta.iter().map(assigns).collect();
+        let used = |arg| arg == Arg::K || per_parameter.iter().any(|(_, a)| self.uses(a, arg));
+        let header = sig.header(used, per_parameter.iter().any(|(z, a)| !a.is_empty() || !z.is_empty()));
+        let arms = per_parameter.iter().enumerate().map(|(k, (zero, assigns))| {
             let k = Literal::usize_unsuffixed(k);
             let body = emit(&self.model.graph, assigns, &|s| self.leaf(s, false));
-            quote! { #k => { #body } }
+            quote! { #k => { #zero #body } }
         });
         let count = b.dtheta.len();
         quote! {

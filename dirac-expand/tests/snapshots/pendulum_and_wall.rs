@@ -1841,65 +1841,18 @@ const _: () = {
                 out.len(), 54usize, "{}: the slice must hold {} values",
                 "unilateral_derivatives", 54usize
             );
+            out.fill(0.0);
             let s0 = self.l.powi(-1);
             let s1 = q[1] * s0;
             let s2 = s1.cos();
             let s3 = s1.sin();
             let s4 = self.l.powi(-2);
-            out[0usize] = 0f64;
-            out[1usize] = 0f64;
-            out[2usize] = 0f64;
-            out[3usize] = 0f64;
             out[4usize] = self.w * s2 * s4;
-            out[5usize] = 0f64;
-            out[6usize] = 0f64;
-            out[7usize] = 0f64;
-            out[8usize] = 0f64;
-            out[9usize] = 0f64;
-            out[10usize] = 0f64;
-            out[11usize] = 0f64;
-            out[12usize] = 0f64;
-            out[13usize] = 0f64;
-            out[14usize] = 0f64;
-            out[15usize] = 0f64;
-            out[16usize] = 0f64;
-            out[17usize] = 0f64;
-            out[18usize] = 0f64;
-            out[19usize] = 0f64;
-            out[20usize] = 0f64;
-            out[21usize] = 0f64;
-            out[22usize] = 0f64;
-            out[23usize] = 0f64;
-            out[24usize] = 0f64;
-            out[25usize] = 0f64;
-            out[26usize] = 0f64;
             out[27usize] = -self.w * q[1] * s3 * s4;
-            out[28usize] = 0f64;
             out[29usize] = -self.w * s3 * s4 - self.w * q[1] * s2 / self.l.powi(3);
-            out[30usize] = 0f64;
-            out[31usize] = 0f64;
-            out[32usize] = 0f64;
-            out[33usize] = 0f64;
-            out[34usize] = 0f64;
-            out[35usize] = 0f64;
             out[36usize] = 1f64;
             out[37usize] = -s2;
-            out[38usize] = 0f64;
             out[39usize] = s0 * s3;
-            out[40usize] = 0f64;
-            out[41usize] = 0f64;
-            out[42usize] = 0f64;
-            out[43usize] = 0f64;
-            out[44usize] = 0f64;
-            out[45usize] = 0f64;
-            out[46usize] = 0f64;
-            out[47usize] = 0f64;
-            out[48usize] = 0f64;
-            out[49usize] = 0f64;
-            out[50usize] = 0f64;
-            out[51usize] = 0f64;
-            out[52usize] = 0f64;
-            out[53usize] = 0f64;
         }
         fn unilateral_derivatives_len(&self) -> ::core::primitive::usize {
             54usize
