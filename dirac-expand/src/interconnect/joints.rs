@@ -200,11 +200,16 @@ pub struct Frame {
     pub r: M3,
     /// `(coordinate, velocity, ∂x, ∂R)`: the pose's rate is `Σ (∂x, ∂R) · velocity`.
     pub partials: Vec<(String, String, V3, M3)>,
+    /// Where the rotation is one turn about a fixed axis by a sum of joint angles (a chain of
+    /// hinges about parallel axes, the world's identity with no axis and no angle): the
+    /// axis and the angles, so that a hinge on it turns by the sum, `R_y(θ₁ + θ₂)`, as a
+    /// person writes a planar chain, not by the product of the two rotations.
+    turn: Option<(Option<usize>, Vec<String>)>,
 }
 
 impl Frame {
     pub fn world() -> Frame {
-        Frame { x: zero3(), r: identity(), partials: Vec::new() }
+        Frame { x: zero3(), r: identity(), partials: Vec::new(), turn: Some((None, Vec::new())) }
     }
 
     /// A body's own pose: its twelve coordinates `name(c)` moving with their velocities
@@ -227,7 +232,7 @@ impl Frame {
             }
             partials.push((q, v, dx, dr));
         }
-        Frame { x, r, partials }
+        Frame { x, r, partials, turn: None }
     }
 
     /// The child's pose through `joint` from this, its parent's; `q`, `v` the joint's
@@ -237,15 +242,42 @@ impl Frame {
             let q = format_ident!("{}", q);
             quote! { #q }
         });
-        let (r, own_dr, own_dx) = match (kind, &coordinate) {
-            (Kind::Revolute(k), Some(q)) => {
+        // A hinge about the axis its parent already turns about: the child turns by the sum of
+        // the angles, and its rotation's derivative along each of them is the same.
+        let turn = match (kind, qv, &self.turn) {
+            (Kind::Revolute(k), Some((q, _)), Some((axis, angles))) if axis.is_none_or(|a| a == k) => {
+                let mut angles = angles.clone();
+                angles.push(q.to_owned());
+                Some((Some(k), angles))
+            }
+            (Kind::Revolute(_), _, _) => None,
+            _ => self.turn.clone(),
+        };
+        let summed = match &turn {
+            Some((Some(k), angles)) if matches!(kind, Kind::Revolute(_)) => {
+                let angles: Vec<Ident> = angles.iter().map(|a| format_ident!("{}", a)).collect();
+                let sum = if angles.len() == 1 {
+                    quote! { #(#angles)* }
+                } else {
+                    quote! { (#(#angles)+*) }
+                };
+                Some(rotation(*k, &S::E(quote! { #sum.cos() }), &S::E(quote! { #sum.sin() })))
+            }
+            _ => None,
+        };
+        let (r, own_dr, own_dx) = match (kind, &coordinate, &summed) {
+            (Kind::Revolute(_), Some(_), Some((a, da))) => {
+                let dx = neg3(&mat_vec(da, at_child));
+                (a.clone(), Some(da.clone()), Some(dx))
+            }
+            (Kind::Revolute(k), Some(q), None) => {
                 let (c, s) = (S::E(quote! { #q.cos() }), S::E(quote! { #q.sin() }));
                 let (a, da) = rotation(k, &c, &s);
                 let dr = mat_mat(&self.r, &da);
                 let dx = neg3(&mat_vec(&dr, at_child));
                 (mat_mat(&self.r, &a), Some(dr), Some(dx))
             }
-            (Kind::Prismatic(k), Some(_)) => (self.r.clone(), Some(zero33()), Some(column(&self.r, k))),
+            (Kind::Prismatic(k), Some(_), _) => (self.r.clone(), Some(zero33()), Some(column(&self.r, k))),
             _ => (self.r.clone(), None, None),
         };
         // The point held on the parent, with the slide along the axis for a prismatic joint.
@@ -259,9 +291,15 @@ impl Frame {
         };
         let x = vec_sub(&vec_add(&self.x, &mat_vec(&self.r, &along)), &mat_vec(&r, at_child));
         let mut partials = Vec::new();
+        let angles = match &turn {
+            Some((_, angles)) => angles.as_slice(),
+            None => &[],
+        };
         for (q, v, dx_p, dr_p) in &self.partials {
-            let dr = match kind {
-                Kind::Revolute(k) => {
+            let dr = match (kind, &summed) {
+                (Kind::Revolute(_), Some((_, da))) if angles.contains(q) => da.clone(),
+                (Kind::Revolute(_), Some(_)) => zero33(),
+                (Kind::Revolute(k), None) => {
                     let theta = coordinate.clone().expect("a revolute joint has a coordinate");
                     let (a, _) = rotation(k, &S::E(quote! { #theta.cos() }), &S::E(quote! { #theta.sin() }));
                     mat_mat(dr_p, &a)
@@ -274,7 +312,7 @@ impl Frame {
         if let (Some((q, v)), Some(dr), Some(dx)) = (qv, own_dr, own_dx) {
             partials.push((q.to_owned(), v.to_owned(), dx, dr));
         }
-        Frame { x, r, partials }
+        Frame { x, r, partials, turn }
     }
 
     /// The pose's entry `n` (in [`body_coordinates`] order), its rate, and its derivative

@@ -351,6 +351,7 @@ impl Graph {
         let mut constant = 0.0;
         let mut like: BTreeMap<Id, f64> = BTreeMap::new();
         self.collect_terms(terms, &mut constant, &mut like);
+        self.pythagoras(&mut constant, &mut like);
         let mut out = Vec::with_capacity(like.len());
         for (rest, coef) in like {
             if coef != 0.0 {
@@ -362,6 +363,43 @@ impl Graph {
             (0, _) => self.num(constant),
             (1, true) => out[0],
             _ => self.intern(Node::Add(Num::new(constant), out.into())),
+        }
+    }
+
+    /// `c · m cos²x + c · m sin²x = c · m`: a rotation's entries squared and summed, which
+    /// the kinetic energy of a body turning about a fixed axis makes (`Rᵀ Ṙ`), are one.
+    fn pythagoras(&mut self, constant: &mut f64, like: &mut BTreeMap<Id, f64>) {
+        let candidates: Vec<(Id, f64)> = like.iter().map(|(&rest, &coef)| (rest, coef)).collect();
+        for (rest, coef) in candidates {
+            if !like.contains_key(&rest) {
+                continue;
+            }
+            let factors: Vec<Id> = match self.node(rest) {
+                Node::Mul(_, fs) => fs.to_vec(),
+                _ => vec![rest],
+            };
+            for (i, &factor) in factors.iter().enumerate() {
+                let Node::Powi(base, 2) = *self.node(factor) else { continue };
+                let Node::Call(Func::Cos, x) = *self.node(base) else { continue };
+                let sine = self.call(Func::Sin, x);
+                let square = self.powi(sine, 2);
+                let mut others = factors.clone();
+                others.remove(i);
+                let mut partner = others.clone();
+                partner.push(square);
+                let partner = self.mul(&partner);
+                if like.get(&partner) != Some(&coef) {
+                    continue;
+                }
+                like.remove(&rest);
+                like.remove(&partner);
+                let common = self.mul(&others);
+                match self.as_num(common) {
+                    Some(c) => *constant += coef * c,
+                    None => *like.entry(common).or_insert(0.0) += coef,
+                }
+                break;
+            }
         }
     }
 

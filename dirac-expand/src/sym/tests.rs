@@ -46,6 +46,22 @@ fn constant_folding_and_identities() {
 }
 
 #[test]
+fn squared_cosine_and_sine_of_one_angle_sum_to_one() {
+    same(&[
+        ("(+ (^ (cos x) 2) (^ (sin x) 2))", "1"),
+        ("(+ (* w (^ (cos x) 2)) (* w (^ (sin x) 2)))", "w"),
+        ("(+ (* 3 w v (^ (sin x) 2)) (* 3 v (^ (cos x) 2) w) y)", "(+ y (* 3 v w))"),
+        ("(+ (* 2 (^ (cos (+ x y)) 2)) (* 2 (^ (sin (+ y x)) 2)) 1)", "3"),
+    ]);
+    // Only equal coefficients of the same angle combine.
+    let mut g = Graph::new();
+    for kept in ["(+ (^ (cos x) 2) (* 2 (^ (sin x) 2)))", "(+ (^ (cos x) 2) (^ (sin y) 2))"] {
+        let e = g.parse_sexpr(kept).expect("parses");
+        assert_eq!(g.sexpr(e).matches("cos").count(), 1, "{kept} became {}", g.sexpr(e));
+    }
+}
+
+#[test]
 fn commutative_operands_are_canonical() {
     same(&[
         ("(+ x y)", "(+ y x)"),
