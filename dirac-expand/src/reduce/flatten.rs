@@ -80,6 +80,32 @@ struct FlatJoint {
 }
 
 impl FlatJoint {
+    /// `joint` of the part at `prefix`, its names prefixed, its points' parameters renamed by
+    /// `rename`; errors point at `key`.
+    fn new(
+        joint: &joints::Joint,
+        prefix: &[String],
+        key: Ident,
+        rename: &dyn Fn(TokenStream) -> TokenStream,
+    ) -> Self {
+        let flat = |path: &[String]| {
+            let mut full = prefix.to_vec();
+            full.extend(path.iter().cloned());
+            mangle(&full)
+        };
+        let own = |i: &Ident| flat(&[syn::ext::IdentExt::unraw(i).to_string()]);
+        FlatJoint {
+            key,
+            name: own(&joint.name),
+            coordinate: joint.coordinate.as_ref().map(|(q, v)| (own(q), own(v))),
+            kind: joint.kind,
+            parent: (!joint.parent.path.is_empty()).then(|| flat(&joint.parent.path)),
+            child: flat(&joint.child.path),
+            at_parent: joints::point(&joint.parent.at, rename),
+            at_child: joints::point(&joint.child.at, rename),
+        }
+    }
+
     /// The joint as a reduced composite describes it to the composites around it, in its flat
     /// names: `#[dirac(__joint(th => w) = revolute(y, link1 at [..], link2 at [..]))]`.
     fn attribute(&self) -> TokenStream {
@@ -391,24 +417,9 @@ impl Flat {
         }
         self.large |= model.large;
         // A reduced composite's joints, its bodies and points in its flat names.
-        for joint in described_joints {
-            let flat = |path: &[String]| {
-                let mut full = prefix.clone();
-                full.extend(path.iter().cloned());
-                mangle(&full)
-            };
-            let own = |i: &Ident| flat(&[syn::ext::IdentExt::unraw(i).to_string()]);
-            let in_flat_names = |t: TokenStream| super::rewrite::rename(t, &map);
-            self.joints.push(FlatJoint {
-                key: field.clone(),
-                name: own(&joint.name),
-                coordinate: joint.coordinate.as_ref().map(|(q, v)| (own(q), own(v))),
-                kind: joint.kind,
-                parent: (!joint.parent.path.is_empty()).then(|| flat(&joint.parent.path)),
-                child: flat(&joint.child.path),
-                at_parent: joints::point(&joint.parent.at, &in_flat_names),
-                at_child: joints::point(&joint.child.at, &in_flat_names),
-            });
+        let in_flat_names = |t: TokenStream| super::rewrite::rename(t, &map);
+        for joint in &described_joints {
+            self.joints.push(FlatJoint::new(joint, &prefix, field.clone(), &in_flat_names));
         }
     }
 
@@ -465,22 +476,7 @@ impl Flat {
             .collect();
         let rename_params = |t: TokenStream| rename(t, &map);
         for joint in &composite.joints {
-            let flat = |path: &[String]| {
-                let mut full = prefix.clone();
-                full.extend(path.iter().cloned());
-                mangle(&full)
-            };
-            let own = |i: &Ident| flat(&[syn::ext::IdentExt::unraw(i).to_string()]);
-            self.joints.push(FlatJoint {
-                key: joint.key.clone(),
-                name: own(&joint.name),
-                coordinate: joint.coordinate.as_ref().map(|(q, v)| (own(q), own(v))),
-                kind: joint.kind,
-                parent: (!joint.parent.path.is_empty()).then(|| flat(&joint.parent.path)),
-                child: flat(&joint.child.path),
-                at_parent: joints::point(&joint.parent.at, &rename_params),
-                at_child: joints::point(&joint.child.at, &rename_params),
-            });
+            self.joints.push(FlatJoint::new(joint, &prefix, joint.key.clone(), &rename_params));
         }
         let written = &composite.holonomic[..composite.written_rows];
         let kinds =
