@@ -34,6 +34,12 @@ pub struct Model<'a> {
     pub defines: Vec<DefineDecl>,
     /// `output(name) = expr`, in the order written.
     pub outputs: Vec<DefineDecl>,
+    /// `__recover("name") = expr` or `__recover("name", alias) = expr`, written by `reduce`
+    /// on the model it flattens: the series its eliminations took out of the state (an
+    /// eliminated coordinate, a connection's multiplier, a port's effort) in the names of the
+    /// model unreduced. Their expressions may also read the multipliers by row name, the
+    /// accelerations as `__dt_` and a velocity, and the series before them by alias.
+    pub recovered: Vec<(String, Option<Ident>, Expr)>,
     /// `unilateral(name, restitution = e) = expr`, in the order written.
     pub unilaterals: Vec<UnilateralDecl>,
     /// `event(name, direction) = expr`, in the order written, then the events of the laws.
@@ -160,6 +166,7 @@ impl<'a> Model<'a> {
             ports: Vec::new(),
             inputs: Vec::new(),
             outputs: Vec::new(),
+            recovered: Vec::new(),
             unilaterals: Vec::new(),
             events: Vec::new(),
             laws: Vec::new(),
@@ -387,6 +394,18 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             FRICTION => model.laws.push(laws::parse(LawKind::Friction, input)?),
             DIODE => model.laws.push(laws::parse(LawKind::Diode, input)?),
             SWITCH => model.laws.push(laws::parse(LawKind::Switch, input)?),
+            "__recover" => {
+                let content;
+                syn::parenthesized!(content in input);
+                let name: syn::LitStr = content.parse()?;
+                let alias = if content.parse::<Option<Token![,]>>()?.is_some() {
+                    Some(content.parse()?)
+                } else {
+                    None
+                };
+                input.parse::<Token![=]>()?;
+                model.recovered.push((name.value(), alias, input.parse()?));
+            }
             "__contacts" => {
                 let content;
                 syn::parenthesized!(content in input);

@@ -77,6 +77,7 @@ fn display_name(model: &SymModel, sym: u32, style: Style) -> String {
         Sym::Coordinate(i) => coordinate(i),
         Sym::Velocity(i) => model.velocities[i].to_string(),
         Sym::Momentum(i) => format!("p_{}", coordinate(i)),
+        Sym::Acceleration(i) => format!("{}'", model.velocities[i]),
         Sym::Multiplier(j) => format!("lambda_{}", model.constraints[j].name),
         Sym::Time => "t".to_owned(),
         Sym::PortEffort(i) => format!("f_{}", coordinate(i)),

@@ -46,6 +46,8 @@ pub struct SymModel {
     pub defines: Vec<(String, Id)>,
     /// `output(name) = …`: each name with its expression, in order.
     pub outputs: Vec<(String, Id)>,
+    /// `__recover("name") = …`: each name with its expression, in order.
+    pub recovered: Vec<(String, Id)>,
     /// The parameter symbols that are inputs, in the order declared.
     pub inputs: Vec<Id>,
     /// `unilateral(name, restitution = e) = φ`: each name with `φ(q, t)` and `e`, in order.
@@ -103,6 +105,7 @@ impl SymModel {
             constraints: Vec::new(),
             defines: Vec::new(),
             outputs: Vec::new(),
+            recovered: Vec::new(),
             inputs: Vec::new(),
             unilaterals: Vec::new(),
             events: Vec::new(),
@@ -148,6 +151,23 @@ impl SymModel {
         }
         if let Some(power) = dissipated_power {
             sm.outputs.push((DISSIPATED_POWER.to_owned(), power));
+        }
+        if !model.recovered.is_empty() {
+            // The accelerations are read only here, as `__dt_` and the velocity's name.
+            let mut recovering = with_multipliers.clone();
+            for (i, v) in sm.velocities.clone().iter().enumerate() {
+                let id = sm.declare(Sym::Acceleration(i));
+                recovering.declare(format!("__dt_{}", v.unraw()), id, Role::Velocity);
+            }
+            for (name, alias, expr) in &model.recovered {
+                let what = format!("the recovered series `{name}`");
+                let lowered = sm.lowerer(cx, &recovering).lower(expr, Context { what: &what, ..all });
+                let value = lowered.unwrap_or(zero);
+                if let Some(alias) = alias {
+                    recovering.declare(alias.to_string(), value, Role::Multiplier);
+                }
+                sm.recovered.push((name.clone(), value));
+            }
         }
         for e in &model.events {
             let what = format!("the event `{}`", e.name);

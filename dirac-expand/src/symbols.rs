@@ -17,6 +17,8 @@ pub enum Sym {
     Velocity(usize),
     /// The momentum `p_i`.
     Momentum(usize),
+    /// The acceleration `v̇_i`: only in the series a reduced composite recovers.
+    Acceleration(usize),
     /// The multiplier of the model's own constraint row `j`: a primitive's `λ_j`, a
     /// composite's interconnection multiplier `μ_j`.
     Multiplier(usize),

@@ -818,6 +818,34 @@ fn backward_steps_with_held_inputs_do_not_allocate() {
     same_allocations_at_two_tolerances(sweep);
 }
 
+/// A reduced composite records the series it recovers (eliminated coordinates, multipliers,
+/// port efforts) at each sample, solving for the accelerations there: without allocating. The
+/// reduced motor run sampled at 40 and at 80 times, at a loose and at a tight tolerance,
+/// allocates as often each time (a sample's columns are reserved with the run).
+#[test]
+fn recording_the_series_a_reduced_model_recovers_does_not_allocate() {
+    let model = crate::reduction::Reduced::new();
+    assert!(!model.recovered_names().is_empty() && crate::reduction::Reduced::RECOVERED_READS_ACCELERATIONS);
+    let zero = VecQ::<crate::reduction::Reduced>::zeros();
+    let start = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+    let run = |tolerance: f64, samples: usize| {
+        let times: Vec<f64> = (1..=samples).map(|k| 0.4 * k as f64 / samples as f64).collect();
+        let mut radau = Radau::new(&model, RadauOptions::tolerances(tolerance, tolerance)).expect("valid");
+        let before = allocations();
+        let solution = radau.solve(0.0, &start, 0.4, &Sampling::Times(times)).expect("integrates");
+        let counted = allocations() - before;
+        assert!(solution.column("lambda(connect6)").expect("recovered").iter().all(|x| x.is_finite()));
+        (counted, solution.stats.steps)
+    };
+    run(1e-6, 40);
+    let (loose, few) = run(1e-6, 40);
+    let (tight, many) = run(1e-11, 40);
+    let (denser, _) = run(1e-11, 80);
+    assert!(many > few + 20, "{few} and {many} steps");
+    assert_eq!(loose, tight, "{few} steps allocate {loose} times, {many} steps {tight} times");
+    assert_eq!(tight, denser, "40 samples allocate {tight} times, 80 samples {denser} times");
+}
+
 /// Runs `sweep(tolerance)` (the allocations it counted, and the steps of its run) once to warm
 /// up, then at a loose and a tight tolerance, and asserts that the tight run took more than
 /// twenty more steps and that both allocated as often.

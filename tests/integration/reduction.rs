@@ -35,7 +35,7 @@ macro_rules! motor_drive {
         }
 
         impl $name {
-            fn new() -> $name {
+            pub(crate) fn new() -> $name {
                 $name {
                     source: VoltageSource { u: 12.0 },
                     r: Resistor { r: 1.0 },
@@ -136,6 +136,80 @@ fn the_reduced_motor_moves_as_the_ten_parts_do() {
     }
     assert!(compared >= 10, "only {compared} outputs in common: {names:?}");
     assert!(names.iter().any(|n| n == "source.i") && names.iter().any(|n| n == "l.i"));
+}
+
+/// The series of `model` at `(t, q, v)` alone: the state made consistent (its multipliers and
+/// momenta solved there) and recorded as a run's first sample.
+macro_rules! sample_at {
+    ($ty:ty, $model:expr, $t:expr, $q:expr, $v:expr) => {{
+        let (model, t): (&$ty, f64) = (&$model, $t);
+        let start = consistent_state(model, t, &$q, &$v, Consistency::default()).expect("consistent");
+        let mut radau = Radau::new(model, RadauOptions::tolerances(1e-11, 1e-11)).expect("valid");
+        radau.solve(t, &start, t + 1e-3, &Sampling::Times(vec![t])).expect("integrates")
+    }};
+}
+
+/// What the reduction takes out of the state is still recorded under the composite's names:
+/// each eliminated coordinate, velocity and momentum, each eliminated connection's and part
+/// row's multiplier (those of coordinates with inertia read the accelerations), the
+/// interconnection force at every port, and each part's dissipated power. Reference: the same ten parts unreduced, at the same
+/// states (each sample of an unreduced run, read in the reduced model's two coordinates, made
+/// consistent in both and recorded there), so the two agree to rounding, not to the
+/// integrators' error. The port powers of each connection cancel (a connection is lossless).
+#[test]
+fn the_forces_and_port_powers_of_eliminated_connections_are_the_unreduced_models() {
+    let (parts, reduced) = (Parts::new(), Reduced::new());
+    let recovered = reduced.recovered_names();
+    let expected =
+        ["rotor.phi", "rotor.w", "p(rotor.phi)", "lambda(connect6)", "lambda(gear.gear)", "f(gear.a)"];
+    for name in expected.into_iter().chain(["out(r.dissipated_power)", "out(bearing.dissipated_power)"]) {
+        assert!(recovered.contains(&name), "`{name}` is not recovered: {recovered:?}");
+    }
+    let times: Vec<f64> = (1..=6).map(|k| 0.06 * k as f64).collect();
+    let full = run!(Parts, parts, times);
+    let (coordinates, velocities) = (parts.coordinate_names(), parts.velocity_names());
+    let (mut compared, mut efforts) = (0, 0);
+    for (i, &t) in times.iter().enumerate() {
+        let state = full.state(i).expect("a sample");
+        let (mut q, mut v) = (VecQ::<Reduced>::zeros(), VecQ::<Reduced>::zeros());
+        for (k, name) in reduced.coordinate_names().iter().enumerate() {
+            let j = coordinates.iter().position(|c| c == name).expect("a coordinate of the parts");
+            (q[k], v[k]) = (state.q[j], state.v[j]);
+        }
+        let unreduced = sample_at!(Parts, parts, t, state.q, state.v);
+        let flat = sample_at!(Reduced, reduced, t, q, v);
+        let mut port_power = 0.0;
+        for name in recovered {
+            let (Some(a), Some(b)) = (unreduced.column(name), flat.column(name)) else {
+                panic!("`{name}` is not a series of both");
+            };
+            assert!(
+                (a[0] - b[0]).abs() <= 1e-10 * (1.0 + a[0].abs()),
+                "t = {t}: `{name}` {} against {}",
+                b[0],
+                a[0]
+            );
+            compared += 1;
+            if let Some(port) = name.strip_prefix("f(").and_then(|n| n.strip_suffix(')')) {
+                let k = coordinates.iter().position(|c| c == port).expect("a port of the parts");
+                let speed = (unreduced.column(&velocities[k]), flat.column(&velocities[k]));
+                let (Some(va), Some(vb)) = speed else {
+                    panic!("`{}` is not a series of both", velocities[k])
+                };
+                let (pa, pb) = (a[0] * va[0], b[0] * vb[0]);
+                assert!(
+                    (pa - pb).abs() <= 1e-10 * (1.0 + pa.abs()),
+                    "t = {t}: power at `{port}` {pb} against {pa}"
+                );
+                port_power += pb;
+                efforts += 1;
+            }
+        }
+        assert!(port_power.abs() < 1e-9, "t = {t}: the connections take {port_power} W");
+    }
+    // Ten connections join 17 ports (the ground, the rotor and the load in two each).
+    assert_eq!(efforts, 6 * 17, "the efforts at the ports the connections join, at 6 times");
+    assert!(compared > 6 * 60, "only {compared} series compared");
 }
 
 #[test]

@@ -15,8 +15,8 @@ use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
     EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
     L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
-    RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SOLVED_VELOCITIES, Signature, UNILATERAL, UNILATERAL_DERIVATIVES,
-    UNILATERAL_DQ,
+    RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SOLVED_VELOCITIES, Signature, UNILATERAL,
+    UNILATERAL_DERIVATIVES, UNILATERAL_DQ,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -131,6 +131,19 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
     if !b.outputs.is_empty() {
         methods.extend(e.sized(&OUTPUTS, &b.outputs));
+    }
+    if !model.recovered.is_empty() {
+        let values: Vec<Id> = model.recovered.iter().map(|(_, id)| *id).collect();
+        let names = model.recovered.iter().map(|(name, _)| name);
+        let accelerations =
+            values.iter().any(|&id| g.deps(id).iter().any(|s| matches!(model.kind(s), Sym::Acceleration(_))));
+        methods.extend(quote! {
+            const RECOVERED_READS_ACCELERATIONS: ::core::primitive::bool = #accelerations;
+            fn recovered_names(&self) -> &'static [&'static ::core::primitive::str] {
+                &[#(#names),*]
+            }
+        });
+        methods.extend(e.sized(&RECOVERED, &values));
     }
     if !b.solved_velocities.is_empty() {
         let coordinates = b.solved_velocities.iter().map(|&(i, _)| i);
@@ -260,6 +273,10 @@ impl Emitter<'_> {
                 let j = index(j);
                 quote! { lambda[#j] }
             }
+            Sym::Acceleration(i) => {
+                let i = index(i);
+                quote! { a[#i] }
+            }
             Sym::Weight(block, i) => {
                 let i = index(i);
                 match block {
@@ -284,7 +301,8 @@ impl Emitter<'_> {
                 (Arg::T, Sym::Time) => true,
                 (Arg::Q, Sym::Coordinate(_))
                 | (Arg::V, Sym::Velocity(_))
-                | (Arg::Lambda, Sym::Multiplier(_)) => true,
+                | (Arg::Lambda, Sym::Multiplier(_))
+                | (Arg::A, Sym::Acceleration(_)) => true,
                 (Arg::WeightBlocks, Sym::Weight(block, _)) => block != Weighted::Holonomic,
                 (Arg::WeightHolonomic, Sym::Weight(block, _)) => block == Weighted::Holonomic,
                 (Arg::Y, k) => {

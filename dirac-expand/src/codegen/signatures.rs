@@ -88,6 +88,8 @@ pub enum Arg {
     V,
     /// Multipliers `λ`.
     Lambda,
+    /// Accelerations `v̇`.
+    A,
     /// The flat state `y = (q, v, p, λ)`.
     Y,
     /// The index `k` of a parameter.
@@ -130,7 +132,7 @@ const fn method(name: &'static str, args: &'static [Arg], out: Out) -> Signature
     Signature { name, args, out }
 }
 
-use Arg::{K, Lambda, Q, T, V, WeightBlocks, WeightHolonomic, Y};
+use Arg::{A, K, Lambda, Q, T, V, WeightBlocks, WeightHolonomic, Y};
 
 pub const LAGRANGIAN: Signature = method("lagrangian", &[T, Q, V], Out::Scalar);
 pub const DL_DQ: Signature = method("dl_dq", &[T, Q, V], Out::VecQ);
@@ -162,6 +164,9 @@ pub const JACOBIAN: Signature = method("jacobian", &[T, Y], Out::MatYY);
 pub const JACOBIAN_CSC: Signature = method("jacobian_csc", &[T, Y], Out::Values);
 /// The model's outputs, in the order declared; emitted for models that have outputs.
 pub const OUTPUTS: Signature = method("outputs", &[T, Q, V, Lambda], Out::Values);
+/// The series a reduced composite recovers from the balances it eliminated (see
+/// `LagrangeDirac::recovered`); emitted for reduced composites that have any.
+pub const RECOVERED: Signature = method("recovered", &[T, Q, V, A, Lambda], Out::Values);
 /// The derivatives for linearisation, each a dense column-major block in a slice; emitted for
 /// models with inputs or outputs.
 pub const DPDOT_DU: Signature = method("dpdot_du", &[T, Q, V, Lambda], Out::Values);
@@ -231,6 +236,7 @@ impl Arg {
             Arg::Q => ("q", quote! { &#p::VecQ<Self> }),
             Arg::V => ("v", quote! { &#p::VecQ<Self> }),
             Arg::Lambda => ("lambda", quote! { &#p::VecC<Self> }),
+            Arg::A => ("a", quote! { &#p::VecQ<Self> }),
             Arg::Y => ("y", quote! { &#p::VecY<Self> }),
             Arg::K => ("k", quote! { ::core::primitive::usize }),
             Arg::WeightBlocks => ("w", quote! { &#p::ResidualBlocks<Self> }),

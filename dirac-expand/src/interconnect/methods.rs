@@ -170,6 +170,7 @@ fn subsystem_part(sig: &Signature, field: &syn::Ident, ty: &syn::Type, i: usize)
             Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &#slot) },
             Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &#slot) },
             Arg::Y => unreachable!("composites assemble their flat methods from the blocks"),
+            Arg::A => unreachable!("only a reduced composite's flat model recovers series"),
             Arg::K => quote! { k },
             Arg::WeightBlocks | Arg::WeightHolonomic => {
                 unreachable!("composites write their transposed parameter blocks by hand")

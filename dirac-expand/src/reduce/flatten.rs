@@ -21,6 +21,7 @@
 //! offsets at zero: connected coordinates equal, geared ones in ratio.
 
 mod bodies;
+mod recover;
 
 use std::collections::HashMap;
 
@@ -36,6 +37,7 @@ use crate::ast::{ConstraintKind, Model, Requirement};
 use crate::ctxt::Ctxt;
 use crate::interconnect::ast::Composite;
 use crate::interconnect::joints;
+use crate::symbol::DISSIPATED_POWER;
 
 /// A part's description, filed under where it sits in the composite.
 pub struct Part {
@@ -62,6 +64,19 @@ struct Row {
     /// nothing else, integrated with its offset at zero: `wa - ratio * wb` as `a - ratio * b`.
     /// The reduction solves it in this form, so that positions substitute positions.
     position: Option<TokenStream>,
+    /// A composite's own row (not a part's): its force is an interconnection force, part of
+    /// the efforts at the ports it reaches.
+    interconnection: bool,
+}
+
+/// A connection `connect(a, b)`: the row `v_a − v_b = 0`, named as the composite unreduced
+/// names it (`connect3`, `drive__connect0`).
+#[derive(Clone)]
+struct Connection {
+    a: String,
+    b: String,
+    key: Ident,
+    name: String,
 }
 
 /// A joint between two bodies, in the flat model's names.
@@ -214,12 +229,26 @@ struct Flat {
     defines: Vec<(String, TokenStream)>,
     outputs: Vec<(String, TokenStream)>,
     units: Vec<(String, syn::LitStr)>,
-    connections: Vec<(String, String, Ident)>,
+    connections: Vec<Connection>,
     joints: Vec<FlatJoint>,
     /// Each body carried by a joint's coordinate, with the joint's name.
     jointed: Vec<(String, String)>,
     large: bool,
     eliminated: Vec<Elimination>,
+    /// The coordinates and the Lagrangian's terms before the eliminations.
+    original: Vec<Coordinate>,
+    original_lagrangian: Vec<TokenStream>,
+    /// The rows and connections eliminated, in order, with their multipliers.
+    recoveries: Vec<recover::Recovery>,
+    /// The interconnection rows' terms at each port, before the eliminations.
+    port_terms: Vec<recover::PortTerm>,
+    /// Each part's Rayleigh function with the output its power is (`r.dissipated_power`) and
+    /// the part's velocities.
+    dissipations: Vec<(String, TokenStream, Vec<String>)>,
+    /// What each term and row reads when the eliminations start (see `recover`).
+    names_read: recover::NamesRead,
+    /// What the reduced model recovers at each sample (see `recover`).
+    recovered: Vec<recover::Recovered>,
 }
 
 fn mangle(path: &[String]) -> String {
@@ -389,20 +418,42 @@ impl Flat {
         for (q, v, port) in coordinates {
             self.coordinates.push(Coordinate { q, v, port });
         }
+        // Term by term: the balance of one coordinate then reads only the terms that hold it
+        // (a nested reduced composite's Lagrangian is the sum of all its parts').
+        let terms = |e: &Expr| {
+            let mut terms = Vec::new();
+            crate::lower::additive_terms(e, false, &mut terms);
+            terms.into_iter().map(|(term, negated)| {
+                let term = rename(&term);
+                if negated {
+                    quote! { -(#term) }
+                } else {
+                    term
+                }
+            })
+        };
         if let Some((_, l)) = &model.lagrangian
             && !is_zero(l)
         {
-            self.lagrangian.push(rename(l));
+            let split: Vec<TokenStream> = terms(l).collect();
+            self.lagrangian.extend(split);
         }
         if let Some((_, r)) = &model.dissipation {
-            self.dissipation.push(rename(r));
+            let split: Vec<TokenStream> = terms(r).collect();
+            self.dissipation.extend(split);
+            // Its power, an output of the part unreduced.
+            let velocities = model.coordinates.iter().map(|c| map[&unraw(&c.velocity)].to_string()).collect();
+            let output =
+                prefix.iter().cloned().chain([DISSIPATED_POWER.to_owned()]).collect::<Vec<_>>().join(".");
+            self.dissipations.push((output, rename(r), velocities));
         }
         for force in &model.forces {
             let key = map[&unraw(&force.coordinate)].to_string();
             self.forces.push((key, rename(&force.expr)));
         }
         for ((kind, row), c) in rows.into_iter().zip(&ordered) {
-            self.rows.push(Row { kind, name: row, expr: rename(&c.decl.expr), position: None });
+            let expr = rename(&c.decl.expr);
+            self.rows.push(Row { kind, name: row, expr, position: None, interconnection: false });
         }
         for (flat, d) in defines.into_iter().zip(&model.defines) {
             self.defines.push((flat, rename(&d.expr)));
@@ -447,8 +498,10 @@ impl Flat {
             path.push(syn::ext::IdentExt::unraw(param).to_string());
             self.params.push((mangle(&path), path));
         }
-        for c in &composite.connections {
-            self.connections.push((path_of(&c.a.path), path_of(&c.b.path), c.key.clone()));
+        for (i, c) in composite.connections.iter().enumerate() {
+            let (a, b, key) = (path_of(&c.a.path), path_of(&c.b.path), c.key.clone());
+            let name = path_of(&[format!("connect{i}")]);
+            self.connections.push(Connection { a, b, key, name });
         }
         self.large |= composite.large;
     }
@@ -492,23 +545,25 @@ impl Flat {
                     name: mangle(&path),
                     expr: rename(form.expr.to_token_stream(), &map),
                     position: None,
+                    interconnection: true,
                 });
             }
         }
     }
 
-    /// The connections as the rows they are, `v_a − v_b = 0`, named `reduce_connect0`, ….
+    /// The connections as the rows they are, `v_a − v_b = 0`, under the names the composite
+    /// gives them (`connect0`, …).
     fn connections_as_rows(&mut self) {
-        for (k, (a, b, _)) in std::mem::take(&mut self.connections).into_iter().enumerate() {
+        for Connection { a, b, name, .. } in std::mem::take(&mut self.connections) {
             let velocity =
                 |q: &str| self.coordinates.iter().find(|c| c.q == q).map(|c| format_ident!("{}", c.v));
             let (Some(va), Some(vb)) = (velocity(&a), velocity(&b)) else { continue };
-            let name = format!("reduce_connect{k}");
             self.rows.push(Row {
                 kind: ConstraintKind::Velocity,
                 name,
                 expr: quote! { #va - #vb },
                 position: None,
+                interconnection: false,
             });
         }
     }
@@ -527,7 +582,11 @@ impl Flat {
     fn eliminate(&mut self, cx: &Ctxt) {
         // `subst` maps each eliminated coordinate and velocity to its expression in those left.
         let mut subst: HashMap<String, TokenStream> = HashMap::new();
+        self.original = self.coordinates.clone();
+        self.original_lagrangian = self.lagrangian.clone();
+        self.port_terms();
         self.joint_coordinates(cx, &mut subst);
+        self.note_names_read();
         let positions: HashMap<String, TokenStream> = self
             .coordinates
             .iter()
@@ -541,9 +600,10 @@ impl Flat {
                 self.rows[k].position = Some(rename(self.rows[k].expr.clone(), &positions));
             }
         }
-        for (a, b, key) in std::mem::take(&mut self.connections) {
+        let connections = std::mem::take(&mut self.connections);
+        for (j, Connection { a, b, key, name }) in connections.iter().enumerate() {
             // A coordinate connected before stands for the one it was merged into.
-            let (a, b) = (resolve(&subst, a), resolve(&subst, b));
+            let (a, b) = (resolve(&subst, a.clone()), resolve(&subst, b.clone()));
             let (Some(ia), Some(ib)) = (self.coordinate(&a), self.coordinate(&b)) else {
                 let missing = if self.coordinate(&a).is_none() { &a } else { &b };
                 let joint = self.jointed.iter().find(|(body, _)| {
@@ -560,13 +620,16 @@ impl Flat {
                     ),
                     None => format!("`{}` is not a coordinate of the parts", missing.replace("__", ".")),
                 };
-                cx.error_spanned_by(&key, message);
+                cx.error_spanned_by(key, message);
                 continue;
             };
             if ia == ib {
+                self.not_recovered(name);
                 continue;
             }
             let (keep, drop) = if ia < ib { (ia, ib) } else { (ib, ia) };
+            let pivot = if drop == ia { 1.0 } else { -1.0 };
+            self.recover(&subst, name, (drop, pivot), None, &connections[j + 1..]);
             let terms = vec![(self.coordinates[keep].q.clone(), Coefficient::number(1.0))];
             self.substitute(&mut subst, drop, &terms, &Coefficient::number(0.0));
         }
@@ -595,7 +658,8 @@ impl Flat {
                         (*index, *pivot)
                     }
                     Solution::Redundant => {
-                        self.rows.remove(k);
+                        let name = self.rows.remove(k).name;
+                        self.not_recovered(&name);
                         continue;
                     }
                     Solution::None => {
@@ -610,6 +674,8 @@ impl Flat {
                     };
                     subst.insert(self.rows[k].name.clone(), multiplier);
                 }
+                let name = self.rows[k].name.clone();
+                self.recover(&subst, &name, (index, pivot), Some(k), &[]);
                 self.rows.remove(k);
                 match solution {
                     Solution::For(_, others, constant, _) => {
@@ -633,6 +699,7 @@ impl Flat {
         self.rows.iter_mut().for_each(|r| apply(&mut r.expr));
         self.defines.iter_mut().for_each(|(_, d)| apply(d));
         self.outputs.iter_mut().for_each(|(_, o)| apply(o));
+        self.recovered = self.recovered(&subst);
     }
 
     /// Whether a velocity row is linear in two velocities or more with constant coefficients
@@ -788,7 +855,17 @@ impl Flat {
     fn prescribe(&mut self, subst: &mut HashMap<String, TokenStream>, index: usize, value: TokenStream) {
         let gone = self.coordinates.remove(index);
         self.eliminated.push(Elimination { name: gone.q.clone(), by: format!("∫ {value} dt") });
-        let new: HashMap<String, TokenStream> = [(gone.v.clone(), value)].into();
+        // Its acceleration, for the multipliers recovered: the rate of a function of time and
+        // parameters; an input's or a definition's is not known here.
+        let mut read = Vec::new();
+        collect_idents(value.clone(), &mut read);
+        let opaque = read.iter().any(|n| self.inputs.contains(n) || self.defines.iter().any(|(d, _)| d == n));
+        let rate =
+            (!opaque).then(|| syn::parse2::<Expr>(value.clone()).ok().and_then(|e| derivative(&e, "t")));
+        let rate = rate.flatten().map_or_else(|| quote! { __unknown }, D::into_tokens);
+        let new: HashMap<String, TokenStream> =
+            [(gone.v.clone(), value), (recover::acceleration(&gone.v), rate)].into();
+        self.note_substitution(&new);
         for existing in subst.values_mut() {
             *existing = rename(existing.clone(), &new);
         }
@@ -875,6 +952,7 @@ impl Flat {
         };
         let q = combine(&|n| n.to_owned(), true);
         let v = combine(&|n| velocity(n).unwrap_or_else(|| n.to_owned()), false);
+        let a = combine(&|n| recover::acceleration(&velocity(n).unwrap_or_else(|| n.to_owned())), false);
         let by = if q.to_string() == "0.0" { "0".to_owned() } else { q.to_string() };
         self.eliminated.push(Elimination { name: gone.q.clone(), by });
         if gone.port {
@@ -886,7 +964,9 @@ impl Flat {
         }
         let mut new = HashMap::new();
         new.insert(gone.q.clone(), q);
+        new.insert(recover::acceleration(&gone.v), a);
         new.insert(gone.v.clone(), v);
+        self.note_substitution(&new);
         for value in subst.values_mut() {
             *value = rename(value.clone(), &new);
         }
@@ -965,6 +1045,13 @@ impl Flat {
         for (name, expr) in &self.outputs {
             let name = ident(name);
             attrs.push(quote! { #[dirac(output(#name) = #expr)] });
+        }
+        for recover::Recovered { name, alias, value } in &self.recovered {
+            let alias = alias.as_ref().map(|a| {
+                let a = ident(a);
+                quote! { , #a }
+            });
+            attrs.push(quote! { #[dirac(__recover(#name #alias) = #value)] });
         }
         for (name, requirement) in &self.requirements {
             let name = ident(name);

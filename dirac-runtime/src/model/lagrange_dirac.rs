@@ -229,6 +229,34 @@ where
         assert!(out.is_empty(), "outputs: the model has none, so the output slice must be empty");
     }
 
+    /// Whether [`LagrangeDirac::recovered`] reads the accelerations (a multiplier recovered
+    /// from the momentum balance of a coordinate with inertia).
+    const RECOVERED_READS_ACCELERATIONS: bool = false;
+
+    /// The series a reduced composite (`#[dirac(reduce)]`) took out of its state and recovers
+    /// at each sample, in the names the composite has unreduced: each eliminated coordinate
+    /// and its velocity (`rotor.phi`, `rotor.w`), each eliminated connection's or row's
+    /// multiplier (`lambda(connect6)`), and the interconnection force at each port
+    /// (`f(gear.a)`). A solution records them under these names. None for other models.
+    fn recovered_names(&self) -> &'static [&'static str] {
+        &[]
+    }
+
+    /// The series of [`LagrangeDirac::recovered_names`] at `(t, q, v)` with accelerations `a`
+    /// and multipliers `λ`, into `out` (one value per name).
+    fn recovered(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        a: &VecQ<Self>,
+        lambda: &VecC<Self>,
+        out: &mut [f64],
+    ) {
+        let _ = (t, q, v, a, lambda);
+        assert!(out.is_empty(), "recovered: the model recovers nothing, so the slice must be empty");
+    }
+
     /// The values of the model's inputs now, into `out` (one per input, in the order of their
     /// keys): what a solution records as `in(name)`. The derives implement it for models with
     /// inputs; a hand-written model with inputs implements it too (the default writes NaN: not

@@ -7,6 +7,7 @@ use nalgebra::DefaultAllocator;
 
 use crate::algebra::{Algebra, amax};
 use crate::error::SimError;
+use crate::methods::explicit::accelerations::Accelerations;
 use crate::model::MatCQ;
 use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
@@ -98,6 +99,15 @@ where
             forces: sizes.zeros_q::<M>(),
             outputs: vec![0.0; layout.outputs],
             inputs: vec![0.0; layout.inputs],
+            recovered: vec![0.0; layout.recovered.len()],
+            accelerations: sizes.zeros_q::<M>(),
+            motion: (!layout.recovered.is_empty() && M::RECOVERED_READS_ACCELERATIONS).then(|| {
+                Box::new(Motion {
+                    solver: Accelerations::new(model),
+                    lambda: sizes.zeros_c::<M>(),
+                    prepared: false,
+                })
+            }),
         };
         let table = Table { layout, columns, scratch, non_finite_output: None };
         let buffer = State::with_sizes(sizes);
@@ -337,6 +347,40 @@ where
     forces: VecQ<M>,
     outputs: Vec<f64>,
     inputs: Vec<f64>,
+    /// The series the model recovers, and the accelerations they read (zero unless
+    /// `motion` solves for them).
+    recovered: Vec<f64>,
+    accelerations: VecQ<M>,
+    motion: Option<Box<Motion<M>>>,
+}
+
+/// The accelerations at a sample, for the series a reduced model recovers from the balances of
+/// coordinates with inertia: the saddle-point solve Explicit steps with, on its own storage.
+struct Motion<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    solver: Accelerations<M>,
+    lambda: VecC<M>,
+    /// Whether the velocities that only the forces fix were looked for (once, at the first
+    /// sample: it allocates).
+    prepared: bool,
+}
+
+impl<M: LagrangeDirac> Motion<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The accelerations at `(t, q, v)` into `out`; false where the system is singular there.
+    fn at(&mut self, model: &M, t: f64, s: &State<M>, out: &mut VecQ<M>) -> bool {
+        if !self.prepared {
+            self.prepared = true;
+            if self.solver.prepare(model, t, (&s.q, &s.v)).is_err() {
+                self.solver.unprepare();
+            }
+        }
+        self.solver.evaluate(model, t, (&s.q, &s.v), out, &mut self.lambda)
+    }
 }
 
 impl<M: LagrangeDirac> Table<M>
@@ -390,6 +434,17 @@ where
         model.input_values(&mut w.inputs);
         for (j, &u) in w.inputs.iter().enumerate() {
             self.columns[l.input(j)][k] = u;
+        }
+        if !l.recovered.is_empty() {
+            let known = w.motion.as_mut().is_none_or(|m| m.at(model, t, s, &mut w.accelerations));
+            if known {
+                model.recovered(t, &s.q, &s.v, &w.accelerations, &s.lambda, &mut w.recovered);
+            } else {
+                w.recovered.fill(f64::NAN);
+            }
+            for (&column, &x) in l.recovered.iter().zip(&w.recovered) {
+                self.columns[column][k] = x;
+            }
         }
     }
 }

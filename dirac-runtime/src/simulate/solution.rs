@@ -88,6 +88,9 @@ pub(crate) struct Columns {
     /// The outputs that are the power a subsystem's dissipation takes (named
     /// `dissipated_power`, at any depth): their sum is the model's dissipated power.
     pub dissipation: Vec<usize>,
+    /// The column of each series the model recovers ([`LagrangeDirac::recovered_names`]): a
+    /// port's effort column where the name is one, otherwise a column after the inputs'.
+    pub recovered: Vec<usize>,
     /// Each column's unit, where the model declares one (`unit(x) = "m"`): time in seconds,
     /// coordinates, velocities, outputs and inputs as declared.
     pub units: Arc<[Option<&'static str>]>,
@@ -157,13 +160,14 @@ impl Columns {
         units.extend(std::iter::repeat_n(None, unknown));
         units.extend(outputs.iter().map(unit));
         units.extend(inputs.iter().map(unit));
-        let columns = Columns {
+        let mut columns = Columns {
             state: Layout::new(model.sizes()),
             ports,
             outputs: outputs.len(),
             inputs: inputs.len(),
             dissipation,
-            units: units.into(),
+            recovered: Vec::new(),
+            units: Arc::from([]),
         };
         let mut names = vec!["t".to_owned()];
         names.extend(coordinates.iter().cloned());
@@ -174,6 +178,15 @@ impl Columns {
         names.extend(columns.ports.iter().map(|&i| format!("f({})", coordinates[i])));
         names.extend(outputs.iter().map(|o| format!("out({o})")));
         names.extend(inputs.iter().map(|u| format!("in({u})")));
+        for name in model.recovered_names() {
+            let column = names.iter().position(|n| n == name).unwrap_or_else(|| {
+                names.push((*name).to_owned());
+                units.push(model.unit_of(name));
+                names.len() - 1
+            });
+            columns.recovered.push(column);
+        }
+        columns.units = units.into();
         (columns, names)
     }
 

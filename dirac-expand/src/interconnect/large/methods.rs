@@ -88,7 +88,7 @@ impl Large<'_> {
                 Arg::Q => quote! { &#p::gather_q::<#ty, Self>(q, &__s) },
                 Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &__s) },
                 Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &__s) },
-                Arg::Y | Arg::K | Arg::WeightBlocks | Arg::WeightHolonomic => {
+                Arg::Y | Arg::K | Arg::A | Arg::WeightBlocks | Arg::WeightHolonomic => {
                     unreachable!("arrays assemble no flat or parameter methods this way")
                 }
             })

@@ -172,6 +172,7 @@ impl Flat {
                 name: format!("{}_{suffix}", joint.name),
                 expr: row.tokens(),
                 position: None,
+                interconnection: true,
             });
         }
     }
