@@ -40,6 +40,12 @@ pub struct Model<'a> {
     /// model unreduced. Their expressions may also read the multipliers by row name, the
     /// accelerations as `__dt_` and a velocity, and the series before them by alias.
     pub recovered: Vec<(String, Option<Ident>, Expr)>,
+    /// `__interconnection(row, ...)` and `__dissipation("r.dissipated_power") = R`, written by
+    /// `reduce` in the description of a composite it flattens: which of its rows are the
+    /// composite's (connections, its own rows) rather than its parts', and each part's
+    /// Rayleigh function, so that a composite around it recovers their forces and powers.
+    pub interconnection_rows: Vec<String>,
+    pub part_dissipations: Vec<(String, Expr)>,
     /// `unilateral(name, restitution = e) = expr`, in the order written.
     pub unilaterals: Vec<UnilateralDecl>,
     /// `event(name, direction) = expr`, in the order written, then the events of the laws.
@@ -167,6 +173,8 @@ impl<'a> Model<'a> {
             inputs: Vec::new(),
             outputs: Vec::new(),
             recovered: Vec::new(),
+            interconnection_rows: Vec::new(),
+            part_dissipations: Vec::new(),
             unilaterals: Vec::new(),
             events: Vec::new(),
             laws: Vec::new(),
@@ -394,6 +402,19 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             FRICTION => model.laws.push(laws::parse(LawKind::Friction, input)?),
             DIODE => model.laws.push(laws::parse(LawKind::Diode, input)?),
             SWITCH => model.laws.push(laws::parse(LawKind::Switch, input)?),
+            "__interconnection" => {
+                let content;
+                syn::parenthesized!(content in input);
+                let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                model.interconnection_rows.extend(names.iter().map(|n| n.unraw().to_string()));
+            }
+            "__dissipation" => {
+                let content;
+                syn::parenthesized!(content in input);
+                let name: syn::LitStr = content.parse()?;
+                input.parse::<Token![=]>()?;
+                model.part_dissipations.push((name.value(), input.parse()?));
+            }
             "__recover" => {
                 let content;
                 syn::parenthesized!(content in input);

@@ -149,16 +149,64 @@ macro_rules! sample_at {
     }};
 }
 
+/// Compares every series the reduced model `$b` recovers with the same series of the unreduced
+/// model `$a` at the same states: each sample of a run of `$a` at `times`, read in `$b`'s
+/// coordinates by name, made consistent in both and recorded there (so they agree to
+/// rounding, not to the integrators' error). At every port, the effort times the port's
+/// velocity agrees too, and the powers of all ports sum to zero (connections are lossless).
+/// The numbers of series and of port efforts compared.
+macro_rules! assert_recovered {
+    (($ta:ty, $a:expr), ($tb:ty, $b:expr), $times:expr) => {{
+        let (a, b, times): (&$ta, &$tb, &[f64]) = (&$a, &$b, &$times);
+        let full = run!($ta, a.clone(), times);
+        let (coordinates, velocities) = (a.coordinate_names(), a.velocity_names());
+        let (mut compared, mut efforts) = (0, 0);
+        for (i, &t) in times.iter().enumerate() {
+            let state = full.state(i).expect("a sample");
+            let (mut q, mut v) = (VecQ::<$tb>::zeros(), VecQ::<$tb>::zeros());
+            for (k, name) in b.coordinate_names().iter().enumerate() {
+                let j = coordinates.iter().position(|c| c == name).expect("a coordinate of both");
+                (q[k], v[k]) = (state.q[j], state.v[j]);
+            }
+            let unreduced = sample_at!($ta, *a, t, state.q, state.v);
+            let reduced = sample_at!($tb, *b, t, q, v);
+            let mut port_power = 0.0;
+            for name in b.recovered_names() {
+                let (Some(x), Some(y)) = (unreduced.column(name), reduced.column(name)) else {
+                    panic!("`{name}` is not a series of both");
+                };
+                let (x, y) = (x[0], y[0]);
+                assert!((x - y).abs() <= 1e-10 * (1.0 + x.abs()), "t = {t}: `{name}` {y} against {x}");
+                compared += 1;
+                if let Some(port) = name.strip_prefix("f(").and_then(|n| n.strip_suffix(')')) {
+                    let k = coordinates.iter().position(|c| c == port).expect("a port of both");
+                    let speed = (unreduced.column(&velocities[k]), reduced.column(&velocities[k]));
+                    let (Some(vx), Some(vy)) = speed else {
+                        panic!("`{}` is not a series of both", velocities[k])
+                    };
+                    let (px, py) = (x * vx[0], y * vy[0]);
+                    assert!(
+                        (px - py).abs() <= 1e-10 * (1.0 + px.abs()),
+                        "t = {t}: power at `{port}` {py} against {px}"
+                    );
+                    port_power += py;
+                    efforts += 1;
+                }
+            }
+            assert!(port_power.abs() < 1e-9, "t = {t}: the connections take {port_power} W");
+        }
+        (compared, efforts)
+    }};
+}
+
 /// What the reduction takes out of the state is still recorded under the composite's names:
 /// each eliminated coordinate, velocity and momentum, each eliminated connection's and part
 /// row's multiplier (those of coordinates with inertia read the accelerations), the
-/// interconnection force at every port, and each part's dissipated power. Reference: the same ten parts unreduced, at the same
-/// states (each sample of an unreduced run, read in the reduced model's two coordinates, made
-/// consistent in both and recorded there), so the two agree to rounding, not to the
-/// integrators' error. The port powers of each connection cancel (a connection is lossless).
+/// interconnection force at every port, and each part's dissipated power. Reference: the same
+/// ten parts unreduced, at the same states (`assert_recovered`).
 #[test]
 fn the_forces_and_port_powers_of_eliminated_connections_are_the_unreduced_models() {
-    let (parts, reduced) = (Parts::new(), Reduced::new());
+    let reduced = Reduced::new();
     let recovered = reduced.recovered_names();
     let expected =
         ["rotor.phi", "rotor.w", "p(rotor.phi)", "lambda(connect6)", "lambda(gear.gear)", "f(gear.a)"];
@@ -166,47 +214,7 @@ fn the_forces_and_port_powers_of_eliminated_connections_are_the_unreduced_models
         assert!(recovered.contains(&name), "`{name}` is not recovered: {recovered:?}");
     }
     let times: Vec<f64> = (1..=6).map(|k| 0.06 * k as f64).collect();
-    let full = run!(Parts, parts, times);
-    let (coordinates, velocities) = (parts.coordinate_names(), parts.velocity_names());
-    let (mut compared, mut efforts) = (0, 0);
-    for (i, &t) in times.iter().enumerate() {
-        let state = full.state(i).expect("a sample");
-        let (mut q, mut v) = (VecQ::<Reduced>::zeros(), VecQ::<Reduced>::zeros());
-        for (k, name) in reduced.coordinate_names().iter().enumerate() {
-            let j = coordinates.iter().position(|c| c == name).expect("a coordinate of the parts");
-            (q[k], v[k]) = (state.q[j], state.v[j]);
-        }
-        let unreduced = sample_at!(Parts, parts, t, state.q, state.v);
-        let flat = sample_at!(Reduced, reduced, t, q, v);
-        let mut port_power = 0.0;
-        for name in recovered {
-            let (Some(a), Some(b)) = (unreduced.column(name), flat.column(name)) else {
-                panic!("`{name}` is not a series of both");
-            };
-            assert!(
-                (a[0] - b[0]).abs() <= 1e-10 * (1.0 + a[0].abs()),
-                "t = {t}: `{name}` {} against {}",
-                b[0],
-                a[0]
-            );
-            compared += 1;
-            if let Some(port) = name.strip_prefix("f(").and_then(|n| n.strip_suffix(')')) {
-                let k = coordinates.iter().position(|c| c == port).expect("a port of the parts");
-                let speed = (unreduced.column(&velocities[k]), flat.column(&velocities[k]));
-                let (Some(va), Some(vb)) = speed else {
-                    panic!("`{}` is not a series of both", velocities[k])
-                };
-                let (pa, pb) = (a[0] * va[0], b[0] * vb[0]);
-                assert!(
-                    (pa - pb).abs() <= 1e-10 * (1.0 + pa.abs()),
-                    "t = {t}: power at `{port}` {pb} against {pa}"
-                );
-                port_power += pb;
-                efforts += 1;
-            }
-        }
-        assert!(port_power.abs() < 1e-9, "t = {t}: the connections take {port_power} W");
-    }
+    let (compared, efforts) = assert_recovered!((Parts, Parts::new()), (Reduced, reduced), times);
     // Ten connections join 17 ports (the ground, the rotor and the load in two each).
     assert_eq!(efforts, 6 * 17, "the efforts at the ports the connections join, at 6 times");
     assert!(compared > 6 * 60, "only {compared} series compared");
@@ -335,6 +343,45 @@ fn reduced_composites_nest_and_reduce_to_the_same_model() {
     let k = driven.parameter_names().iter().position(|n| n == "motor.l.l").expect("the inductance");
     driven.set_parameter_value(k, 0.1);
     assert_eq!(driven.motor.l.l, 0.1);
+}
+
+/// The motor and its source, neither reduced: the reference of the nested reductions' series.
+#[derive(Interconnection, Clone, Debug)]
+#[dirac(connect(source.p, motor.r.p), connect(source.n, ground.p), connect(motor.emf.n, ground.p))]
+pub struct DrivenUnreduced {
+    pub source: VoltageSource,
+    pub ground: Ground,
+    pub motor: PlainMotor,
+}
+
+/// A reduced composite nested in a reduced one recovers its own connections under their
+/// nested names (`lambda(motor.connect3)`), its ports' efforts and its parts' dissipated
+/// powers, as the two composites unreduced record them, at the same states
+/// (`assert_recovered`).
+#[test]
+fn nested_reductions_recover_the_inner_connections_under_their_nested_names() {
+    let m = motor();
+    let plain = PlainMotor {
+        r: m.r.clone(),
+        l: m.l.clone(),
+        emf: m.emf.clone(),
+        rotor: m.rotor.clone(),
+        gear: m.gear.clone(),
+        load: m.load.clone(),
+        bearing: m.bearing.clone(),
+        housing: m.housing.clone(),
+    };
+    let unreduced = DrivenUnreduced { source: VoltageSource { u: 12.0 }, ground: Ground {}, motor: plain };
+    let driven = Driven { source: VoltageSource { u: 12.0 }, ground: Ground {}, motor: m };
+    let recovered = driven.recovered_names();
+    let expected = ["lambda(motor.connect3)", "lambda(connect0)", "f(motor.gear.a)", "motor.rotor.w"];
+    for name in expected.into_iter().chain(["out(motor.r.dissipated_power)"]) {
+        assert!(recovered.contains(&name), "`{name}` is not recovered: {recovered:?}");
+    }
+    let times = [0.05, 0.2];
+    let (compared, efforts) = assert_recovered!((DrivenUnreduced, unreduced), (Driven, driven), times);
+    assert_eq!(efforts, 2 * 17, "the efforts at the ports the connections join, at 2 times");
+    assert!(compared > 2 * 60, "only {compared} series compared");
 }
 
 /// A cart on a wheel that rolls without slipping: the composite's own row, `x = r θ` at the

@@ -441,11 +441,19 @@ impl Flat {
         if let Some((_, r)) = &model.dissipation {
             let split: Vec<TokenStream> = terms(r).collect();
             self.dissipation.extend(split);
-            // Its power, an output of the part unreduced.
-            let velocities = model.coordinates.iter().map(|c| map[&unraw(&c.velocity)].to_string()).collect();
-            let output =
-                prefix.iter().cloned().chain([DISSIPATED_POWER.to_owned()]).collect::<Vec<_>>().join(".");
-            self.dissipations.push((output, rename(r), velocities));
+            // Its power, an output of the part unreduced (of each of its parts, for a reduced
+            // composite's description).
+            let velocities: Vec<String> =
+                model.coordinates.iter().map(|c| map[&unraw(&c.velocity)].to_string()).collect();
+            let dotted =
+                |local: &str| prefix.iter().map(String::as_str).chain([local]).collect::<Vec<_>>().join(".");
+            if model.part_dissipations.is_empty() {
+                self.dissipations.push((dotted(DISSIPATED_POWER), rename(r), velocities));
+            } else {
+                for (output, r) in &model.part_dissipations {
+                    self.dissipations.push((dotted(output), rename(r), velocities.clone()));
+                }
+            }
         }
         for force in &model.forces {
             let key = map[&unraw(&force.coordinate)].to_string();
@@ -453,7 +461,8 @@ impl Flat {
         }
         for ((kind, row), c) in rows.into_iter().zip(&ordered) {
             let expr = rename(&c.decl.expr);
-            self.rows.push(Row { kind, name: row, expr, position: None, interconnection: false });
+            let interconnection = model.interconnection_rows.contains(&c.name);
+            self.rows.push(Row { kind, name: row, expr, position: None, interconnection });
         }
         for (flat, d) in defines.into_iter().zip(&model.defines) {
             self.defines.push((flat, rename(&d.expr)));
@@ -563,7 +572,7 @@ impl Flat {
                 name,
                 expr: quote! { #va - #vb },
                 position: None,
-                interconnection: false,
+                interconnection: true,
             });
         }
     }
@@ -1037,6 +1046,14 @@ impl Flat {
         }
         for joint in &self.joints {
             attrs.push(joint.attribute());
+        }
+        let interconnection = self.rows.iter().filter(|r| r.interconnection).map(|r| ident(&r.name));
+        let interconnection: Vec<Ident> = interconnection.collect();
+        if !interconnection.is_empty() {
+            attrs.push(quote! { #[dirac(__interconnection(#(#interconnection),*))] });
+        }
+        for (output, r, _) in &self.dissipations {
+            attrs.push(quote! { #[dirac(__dissipation(#output) = #r)] });
         }
         for (name, expr) in &self.defines {
             let name = ident(name);
