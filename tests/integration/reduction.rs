@@ -214,6 +214,15 @@ fn the_forces_and_port_powers_of_eliminated_connections_are_the_unreduced_models
         assert!(recovered.contains(&name), "`{name}` is not recovered: {recovered:?}");
     }
     let times: Vec<f64> = (1..=6).map(|k| 0.06 * k as f64).collect();
+    // The files a solution writes hold them too, as its columns are.
+    let solution = run!(Reduced, reduced, times);
+    let mut csv = Vec::new();
+    solution.write_csv(&mut csv).expect("written");
+    let csv = String::from_utf8(csv).expect("text");
+    let (header, first) = (csv.lines().next().expect("a header"), csv.lines().nth(1).expect("a row"));
+    let at = header.split(',').position(|n| n == "lambda(connect6)").expect("in the header");
+    let written: f64 = first.split(',').nth(at).expect("a value").parse().expect("a number");
+    assert_eq!(written, solution.column("lambda(connect6)").expect("recovered")[0]);
     let (compared, efforts) = assert_recovered!((Parts, Parts::new()), (Reduced, reduced), times);
     // Ten connections join 17 ports (the ground, the rotor and the load in two each).
     assert_eq!(efforts, 6 * 17, "the efforts at the ports the connections join, at 6 times");

@@ -238,6 +238,9 @@ struct Flat {
     /// The coordinates and the Lagrangian's terms before the eliminations.
     original: Vec<Coordinate>,
     original_lagrangian: Vec<TokenStream>,
+    /// The Lagrangian and the Rayleigh function split into their terms (see `recover`).
+    lagrangian_terms: Vec<TokenStream>,
+    dissipation_terms: Vec<TokenStream>,
     /// The rows and connections eliminated, in order, with their multipliers.
     recoveries: Vec<recover::Recovery>,
     /// The interconnection rows' terms at each port, before the eliminations.
@@ -418,8 +421,10 @@ impl Flat {
         for (q, v, port) in coordinates {
             self.coordinates.push(Coordinate { q, v, port });
         }
-        // Term by term: the balance of one coordinate then reads only the terms that hold it
-        // (a nested reduced composite's Lagrangian is the sum of all its parts').
+        // Also term by term, for the multipliers recovered: the balance of one coordinate then
+        // reads only the terms that hold it (a nested reduced composite's Lagrangian is the sum
+        // of all its parts'). The model is written with the parts' terms as they are, which the
+        // simplifier combines best.
         let terms = |e: &Expr| {
             let mut terms = Vec::new();
             crate::lower::additive_terms(e, false, &mut terms);
@@ -435,12 +440,14 @@ impl Flat {
         if let Some((_, l)) = &model.lagrangian
             && !is_zero(l)
         {
+            self.lagrangian.push(rename(l));
             let split: Vec<TokenStream> = terms(l).collect();
-            self.lagrangian.extend(split);
+            self.lagrangian_terms.extend(split);
         }
         if let Some((_, r)) = &model.dissipation {
+            self.dissipation.push(rename(r));
             let split: Vec<TokenStream> = terms(r).collect();
-            self.dissipation.extend(split);
+            self.dissipation_terms.extend(split);
             // Its power, an output of the part unreduced (of each of its parts, for a reduced
             // composite's description).
             let velocities: Vec<String> =
@@ -592,7 +599,7 @@ impl Flat {
         // `subst` maps each eliminated coordinate and velocity to its expression in those left.
         let mut subst: HashMap<String, TokenStream> = HashMap::new();
         self.original = self.coordinates.clone();
-        self.original_lagrangian = self.lagrangian.clone();
+        self.original_lagrangian = self.lagrangian_terms.clone();
         self.port_terms();
         self.joint_coordinates(cx, &mut subst);
         self.note_names_read();

@@ -83,8 +83,8 @@ where
                 ),
             });
         }
-        let mut columns = Vec::with_capacity(names.len());
-        for _ in 0..names.len() {
+        let mut columns = Vec::with_capacity(layout.stored);
+        for _ in 0..layout.stored {
             let mut column = Vec::new();
             column.try_reserve_exact(expected as usize).map_err(|_| SimError::InvalidSampling {
                 reason: format!("no memory for {expected:e} samples of {} series", names.len()),
@@ -109,7 +109,12 @@ where
                 })
             }),
         };
-        let table = Table { layout, columns, scratch, non_finite_output: None };
+        let count = names.len() - layout.stored;
+        let mut appended = Vec::new();
+        appended.try_reserve_exact(expected as usize * count).map_err(|_| SimError::InvalidSampling {
+            reason: format!("no memory for {expected:e} samples of {} series", names.len()),
+        })?;
+        let table = Table { layout, columns, appended, scratch, non_finite_output: None };
         let buffer = State::with_sizes(sizes);
         let mut recorder = Recorder {
             table,
@@ -318,8 +323,13 @@ where
             let component = format!("the output `{name}`");
             return Err(SimError::NonFinite { t, component });
         }
-        let solution =
-            Solution::new(self.table.layout, self.names, self.table.columns, self.buffer.sizes(), stats);
+        let solution = Solution::new(
+            self.table.layout,
+            self.names,
+            (self.table.columns, self.table.appended),
+            self.buffer.sizes(),
+            stats,
+        );
         Ok(solution.with_events(self.events, self.event_names).with_impacts(self.impacts, self.contact_names))
     }
 }
@@ -331,6 +341,8 @@ where
 {
     layout: Columns,
     columns: Vec<Vec<f64>>,
+    /// The series after the stored columns, sample by sample (see `Columns::stored`).
+    appended: Vec<f64>,
     scratch: Scratch<M>,
     /// When and which output was first not finite.
     non_finite_output: Option<(f64, usize)>,
@@ -397,6 +409,8 @@ where
         for column in &mut self.columns[l.derived(0)..] {
             column.push(0.0);
         }
+        let appended = l.recovered.iter().filter(|&&c| c >= l.stored).count();
+        self.appended.extend(std::iter::repeat_n(0.0, appended));
         self.derive(model, self.columns[0].len() - 1, t, s);
     }
 
@@ -442,8 +456,12 @@ where
             } else {
                 w.recovered.fill(f64::NAN);
             }
+            let appended = l.recovered.iter().filter(|&&c| c >= l.stored).count();
             for (&column, &x) in l.recovered.iter().zip(&w.recovered) {
-                self.columns[column][k] = x;
+                match column.checked_sub(l.stored) {
+                    Some(j) => self.appended[k * appended + j] = x,
+                    None => self.columns[column][k] = x,
+                }
             }
         }
     }

@@ -91,6 +91,10 @@ pub(crate) struct Columns {
     /// The column of each series the model recovers ([`LagrangeDirac::recovered_names`]): a
     /// port's effort column where the name is one, otherwise a column after the inputs'.
     pub recovered: Vec<usize>,
+    /// The columns recorded each in its own vector; those after them (the recovered series
+    /// that are not a port's effort) are recorded sample by sample in one vector, so that a
+    /// short run of a reduced model allocates once for them, not once per series.
+    pub stored: usize,
     /// Each column's unit, where the model declares one (`unit(x) = "m"`): time in seconds,
     /// coordinates, velocities, outputs and inputs as declared.
     pub units: Arc<[Option<&'static str>]>,
@@ -167,6 +171,7 @@ impl Columns {
             inputs: inputs.len(),
             dissipation,
             recovered: Vec::new(),
+            stored: 0,
             units: Arc::from([]),
         };
         let mut names = vec!["t".to_owned()];
@@ -178,6 +183,7 @@ impl Columns {
         names.extend(columns.ports.iter().map(|&i| format!("f({})", coordinates[i])));
         names.extend(outputs.iter().map(|o| format!("out({o})")));
         names.extend(inputs.iter().map(|u| format!("in({u})")));
+        columns.stored = names.len();
         for name in model.recovered_names() {
             let column = names.iter().position(|n| n == name).unwrap_or_else(|| {
                 names.push((*name).to_owned());
@@ -237,6 +243,10 @@ where
     sensitivity_names: Vec<String>,
     /// ... and their series: sensitivity `j` of state slot `i` at `j * len + i`.
     sensitivities: Vec<Vec<f64>>,
+    /// The series after the stored columns, sample by sample ([`Columns::stored`]), and the
+    /// same as columns once one is read.
+    appended: Vec<f64>,
+    appended_columns: OnceLock<Vec<Vec<f64>>>,
     model: PhantomData<fn() -> M>,
 }
 
@@ -265,7 +275,7 @@ where
     pub(crate) fn new(
         layout: Columns,
         names: Arc<[String]>,
-        columns: Vec<Vec<f64>>,
+        (columns, appended): (Vec<Vec<f64>>, Vec<f64>),
         sizes: Sizes,
         stats: S,
     ) -> Self {
@@ -273,6 +283,8 @@ where
             layout,
             names,
             columns,
+            appended,
+            appended_columns: OnceLock::new(),
             sizes,
             stats,
             events: Vec::new(),
@@ -509,7 +521,23 @@ where
     /// The column with this name.
     pub fn column(&self, name: &str) -> Option<&[f64]> {
         let i = self.names.iter().position(|n| n == name)?;
-        Some(&self.columns[i])
+        Some(self.series(i))
+    }
+
+    /// Series `i`, in the order of the names.
+    fn series(&self, i: usize) -> &[f64] {
+        let Some(j) = i.checked_sub(self.columns.len()) else { return &self.columns[i] };
+        let appended = self.appended_columns.get_or_init(|| {
+            let count = self.names.len() - self.columns.len();
+            (0..count).map(|j| self.appended.iter().skip(j).step_by(count).copied().collect()).collect()
+        });
+        &appended[j]
+    }
+
+    /// Every series, in the order of the names, then the sensitivities.
+    fn all_series(&self) -> Vec<&[f64]> {
+        let series = (0..self.names.len()).map(|i| self.series(i));
+        series.chain(self.sensitivities.iter().map(Vec::as_slice)).collect()
     }
 
     /// The unit of the column `name`, where the model declares it (`unit(x) = "m"`; the parts
@@ -543,9 +571,9 @@ where
     /// `x` with respect to `k`.
     pub fn write_csv(&self, mut out: impl Write) -> io::Result<()> {
         writeln!(out, "{}", self.all_names().join(","))?;
+        let series = self.all_series();
         for i in 0..self.len() {
-            let row: Vec<String> =
-                self.columns.iter().chain(&self.sensitivities).map(|c| format!("{:e}", c[i])).collect();
+            let row: Vec<String> = series.iter().map(|c| format!("{:e}", c[i])).collect();
             writeln!(out, "{}", row.join(","))?;
         }
         Ok(())
@@ -555,9 +583,7 @@ where
     /// Spark: one `DOUBLE` column per series, named and ordered as in
     /// [`write_csv`](Solution::write_csv), the values exactly as computed.
     pub fn write_parquet(&self, out: impl Write) -> io::Result<()> {
-        let columns: Vec<&[f64]> =
-            self.columns.iter().chain(&self.sensitivities).map(Vec::as_slice).collect();
-        crate::simulate::parquet::write(out, &self.all_names(), &columns)
+        crate::simulate::parquet::write(out, &self.all_names(), &self.all_series())
     }
 
     /// Writes the solution as an Apache Arrow IPC file (Feather version 2), readable by Polars
@@ -565,9 +591,7 @@ where
     /// non-nullable `Float64` column per series, named and ordered as in
     /// [`write_csv`](Solution::write_csv), the values exactly as computed.
     pub fn write_arrow(&self, out: impl Write) -> io::Result<()> {
-        let columns: Vec<&[f64]> =
-            self.columns.iter().chain(&self.sensitivities).map(Vec::as_slice).collect();
-        crate::simulate::arrow::write(out, &self.all_names(), &columns)
+        crate::simulate::arrow::write(out, &self.all_names(), &self.all_series())
     }
 
     /// The names of every series, the sensitivities' (`d(x)/d(k)`) after the others.

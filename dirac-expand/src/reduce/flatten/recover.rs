@@ -101,8 +101,8 @@ impl Flat {
             names
         };
         self.names_read = NamesRead {
-            lagrangian: self.lagrangian.iter().map(names).collect(),
-            dissipation: self.dissipation.iter().map(names).collect(),
+            lagrangian: self.lagrangian_terms.iter().map(names).collect(),
+            dissipation: self.dissipation_terms.iter().map(names).collect(),
             rows: self.rows.iter().map(|r| (r.name.clone(), names(&r.expr))).collect(),
         };
     }
@@ -197,7 +197,7 @@ impl Flat {
         };
         let mut balance = D::Zero;
         let named = &self.names_read;
-        let terms = self.lagrangian.iter().zip(&named.lagrangian);
+        let terms = self.lagrangian_terms.iter().zip(&named.lagrangian);
         for (l, _) in terms.filter(|(_, names)| reads_x(names)) {
             let l = now(l)?;
             balance = balance.plus(derivative(&l, q)?.negated());
@@ -225,7 +225,9 @@ impl Flat {
             let f = now(f)?;
             balance = balance.plus(D::Of(quote! { #f }).negated());
         }
-        for (r, _) in self.dissipation.iter().zip(&named.dissipation).filter(|(_, names)| reads_x(names)) {
+        for (r, _) in
+            self.dissipation_terms.iter().zip(&named.dissipation).filter(|(_, names)| reads_x(names))
+        {
             balance = balance.plus(derivative(&now(r)?, v)?);
         }
         let reaches = |r: &super::Row| named.rows.get(&r.name).is_none_or(|names| reads_x(names));
