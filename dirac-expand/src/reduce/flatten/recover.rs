@@ -162,8 +162,9 @@ impl Flat {
         self.recoveries.push(Recovery { name: name.to_owned(), multiplier: None });
     }
 
-    /// `Σ_{r ≠ own} A_{r,x} λ_r`'s complement: what row `own`'s force on coordinate `index`
-    /// is, `d/dt ∂L/∂v_x − ∂L/∂x − F_x + ∂R/∂v_x − Σ_{r ≠ own} A_{r,x} λ_r`.
+    /// The force row `own` puts on coordinate `index` (its multiplier times its coefficient
+    /// there), from that coordinate's momentum balance in the model now:
+    /// `d/dt ∂L/∂v_x − ∂L/∂x − F_x + ∂R/∂v_x − Σ_{r ≠ own} A_{r,x} λ_r`.
     fn balance(
         &self,
         subst: &HashMap<String, TokenStream>,
