@@ -229,6 +229,40 @@ fn the_forces_and_port_powers_of_eliminated_connections_are_the_unreduced_models
     assert!(compared > 6 * 60, "only {compared} series compared");
 }
 
+/// An oscillator whose recovered series divides by its position (the hidden attribute the
+/// reduction emits, written here by hand): `m a / x = −k` wherever `x ≠ 0`, and 0/0 at rest.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), lagrangian = 0.5 * m * v * v - 0.5 * k * x * x)]
+#[dirac(__recover("stiffness") = -m * __dt_v / x)]
+pub struct Divided {
+    pub m: f64,
+    pub k: f64,
+}
+
+/// A recovered series that is not finite at a sample ends the run with an error naming it and
+/// when, as an output does; where it is finite it is recorded (reference: `m ẍ = −k x`).
+#[test]
+fn a_recovered_series_that_is_not_finite_is_an_error_naming_it() {
+    let model = Divided { m: 2.0, k: 3.0 };
+    let run = |x: f64| {
+        let (q, v) = (VecQ::<Divided>::from_element(x), VecQ::<Divided>::zeros());
+        let start = consistent_state(&model, 0.0, &q, &v, Consistency::default()).expect("consistent");
+        Radau::new(&model, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid").solve(
+            0.0,
+            &start,
+            0.5,
+            &Sampling::Every(0.25),
+        )
+    };
+    let solution = run(1.0).expect("finite away from x = 0");
+    for k in solution.column("stiffness").expect("recovered") {
+        assert!((k - 3.0).abs() < 1e-12, "{k}");
+    }
+    let error = run(0.0).expect_err("0/0 at rest");
+    assert!(matches!(error, SimError::NonFinite { t, .. } if t == 0.0), "{error:?}");
+    assert!(error.to_string().contains("the recovered series `stiffness`"), "{error}");
+}
+
 #[test]
 fn a_reduced_parameter_is_set_by_its_dotted_name_and_reaches_the_field() {
     let mut reduced = Reduced::new();

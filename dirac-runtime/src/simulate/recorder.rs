@@ -109,12 +109,14 @@ where
                 })
             }),
         };
-        let count = names.len() - layout.stored;
         let mut appended = Vec::new();
-        appended.try_reserve_exact(expected as usize * count).map_err(|_| SimError::InvalidSampling {
-            reason: format!("no memory for {expected:e} samples of {} series", names.len()),
+        appended.try_reserve_exact(expected as usize * layout.appended).map_err(|_| {
+            SimError::InvalidSampling {
+                reason: format!("no memory for {expected:e} samples of {} series", names.len()),
+            }
         })?;
-        let table = Table { layout, columns, appended, scratch, non_finite_output: None };
+        let table =
+            Table { layout, columns, appended, scratch, non_finite_output: None, not_recovered: None };
         let buffer = State::with_sizes(sizes);
         let mut recorder = Recorder {
             table,
@@ -314,7 +316,8 @@ where
     }
 
     /// The finished solution, with the integrator's statistics; an error naming the first
-    /// output that was not finite, where it was not.
+    /// output or recovered series that was not finite, where it was not (and, for a recovered
+    /// series, why its accelerations were not solved there).
     pub fn finish<S>(self, stats: S) -> Result<Solution<M, S>, SimError> {
         if let Some((t, k)) = self.table.non_finite_output {
             // The column is named `out(name)`.
@@ -322,6 +325,21 @@ where
             let name = column.strip_prefix("out(").and_then(|c| c.strip_suffix(')')).unwrap_or(column);
             let component = format!("the output `{name}`");
             return Err(SimError::NonFinite { t, component });
+        }
+        if let Some((t, j, known)) = self.table.not_recovered {
+            let name = &self.names[self.table.layout.recovered[j]];
+            if known {
+                return Err(SimError::NonFinite { t, component: format!("the recovered series `{name}`") });
+            }
+            return Err(SimError::NotDetermined {
+                t,
+                cause: format!(
+                    "the accelerations the recovered series `{name}` reads: the saddle-point system of the \
+                     inertia and the constraint rows is singular there, or the model has velocities that only \
+                     the forces fix and sizes known only when it runs (their accelerations are solved in models \
+                     of fixed size only)"
+                ),
+            });
         }
         let solution = Solution::new(
             self.table.layout,
@@ -346,6 +364,9 @@ where
     scratch: Scratch<M>,
     /// When and which output was first not finite.
     non_finite_output: Option<(f64, usize)>,
+    /// When and which recovered series was first not finite, and whether the accelerations it
+    /// reads were solved there.
+    not_recovered: Option<(f64, usize, bool)>,
 }
 
 /// Storage for the derived quantities of a sample.
@@ -409,8 +430,7 @@ where
         for column in &mut self.columns[l.derived(0)..] {
             column.push(0.0);
         }
-        let appended = l.recovered.iter().filter(|&&c| c >= l.stored).count();
-        self.appended.extend(std::iter::repeat_n(0.0, appended));
+        self.appended.extend(std::iter::repeat_n(0.0, l.appended));
         self.derive(model, self.columns[0].len() - 1, t, s);
     }
 
@@ -456,11 +476,13 @@ where
             } else {
                 w.recovered.fill(f64::NAN);
             }
-            let appended = l.recovered.iter().filter(|&&c| c >= l.stored).count();
-            for (&column, &x) in l.recovered.iter().zip(&w.recovered) {
+            for (j, (&column, &x)) in l.recovered.iter().zip(&w.recovered).enumerate() {
                 match column.checked_sub(l.stored) {
-                    Some(j) => self.appended[k * appended + j] = x,
+                    Some(i) => self.appended[k * l.appended + i] = x,
                     None => self.columns[column][k] = x,
+                }
+                if !x.is_finite() && self.not_recovered.is_none_or(|(first, ..)| t < first) {
+                    self.not_recovered = Some((t, j, known));
                 }
             }
         }

@@ -95,6 +95,8 @@ pub(crate) struct Columns {
     /// that are not a port's effort) are recorded sample by sample in one vector, so that a
     /// short run of a reduced model allocates once for them, not once per series.
     pub stored: usize,
+    /// How many series are recorded after the stored columns.
+    pub appended: usize,
     /// Each column's unit, where the model declares one (`unit(x) = "m"`): time in seconds,
     /// coordinates, velocities, outputs and inputs as declared.
     pub units: Arc<[Option<&'static str>]>,
@@ -172,6 +174,7 @@ impl Columns {
             dissipation,
             recovered: Vec::new(),
             stored: 0,
+            appended: 0,
             units: Arc::from([]),
         };
         let mut names = vec!["t".to_owned()];
@@ -192,6 +195,7 @@ impl Columns {
             });
             columns.recovered.push(column);
         }
+        columns.appended = names.len() - columns.stored;
         columns.units = units.into();
         (columns, names)
     }
@@ -528,7 +532,7 @@ where
     fn series(&self, i: usize) -> &[f64] {
         let Some(j) = i.checked_sub(self.columns.len()) else { return &self.columns[i] };
         let appended = self.appended_columns.get_or_init(|| {
-            let count = self.names.len() - self.columns.len();
+            let count = self.layout.appended;
             (0..count).map(|j| self.appended.iter().skip(j).step_by(count).copied().collect()).collect()
         });
         &appended[j]
