@@ -168,17 +168,18 @@ fn cauer_low_pass_transfer_function_against_its_ladder() {
     }
 }
 
-/// The minimal realisation of the driven filter has the five states Modelica tools report for
-/// the Cauer low-pass (seven storages, two capacitor loops), where its linearisation holds
-/// every node flux; its transfer functions are the ladder's, as above.
+/// The driven filter, unreduced (ten parts, every pin a coordinate, every connection a row),
+/// linearises to the five states Modelica tools report for the Cauer low-pass (seven storages,
+/// two capacitor loops): the node fluxes' levels that no part reads are not states. Its
+/// minimal realisation keeps the five, and its transfer functions are the ladder's, as above.
 #[test]
-fn cauer_low_pass_minimal_realisation_has_five_states() {
+fn cauer_low_pass_linearises_to_five_states() {
     let model = CauerDriven { v: VoltageSource { u: 0.0 }, filter: CauerFilter::modelica() };
     let zero = VecQ::<CauerDriven>::zeros();
     let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
     let linear = linearize(&model, 0.0, &rest).expect("linearises");
     let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
-    assert!(linear.a.nrows() > 5, "the linearisation carries the node fluxes: {}", linear.a.nrows());
+    assert_eq!(linear.a.nrows(), 5, "{:?}", linear.state_names());
     assert_eq!(minimal.a.nrows(), 5, "{:?}", minimal.state_names());
     let load = output_index::<CauerDriven>("filter.r2.v");
     for w in [0.05, 0.7, 1.2, 3.0] {
@@ -226,9 +227,9 @@ fn same_spectrum_with_zeros(got: &[Complex<f64>], expected: &[Complex<f64>], tol
 }
 
 /// The reduced Cauer low-pass keeps three coordinates, the capacitor nodes' fluxes, and no
-/// row; its linearisation has their six states, the five Modelica tools report and one zero
-/// (the fluxes' common part, which no part reads), and its minimal realisation the five. The
-/// reference is the filter's nodal model written here by hand with the states MSL tools pick,
+/// row; its linearisation has the five states Modelica tools report: the three node voltages
+/// and the two differences of fluxes the inductors read (the fluxes' common level, which no
+/// part reads, is not a state), and so has its minimal realisation. The reference is the filter's nodal model written here by hand with the states MSL tools pick,
 /// `x = (v1, v2, v3, i1, i2)`:
 /// `Cm v̇ = −G v − E i + e₁ u/R1` and `L i̇ = Eᵀ v`, with `Cm` the capacitance matrix of the nodes
 /// (`C2` between nodes 1 and 2, `C4` between 2 and 3), `G = diag(1/R1, 0, 1/R2)` and the
@@ -242,7 +243,7 @@ fn the_reduced_cauer_low_pass_has_the_hand_models_eigenvalues() {
     let zero = VecQ::<CauerReduced>::zeros();
     let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
     let linear = linearize(&model, 0.0, &rest).expect("linearises");
-    assert_eq!(linear.a.nrows(), 6);
+    assert_eq!(linear.a.nrows(), 5, "{:?}", linear.state_names());
     let (c2, c4) = (c2(), c4());
     let capacitance =
         DMatrix::from_row_slice(3, 3, &[C1 + c2, -c2, 0.0, -c2, c2 + C3 + c4, -c4, 0.0, -c4, c4 + C5]);
@@ -341,8 +342,8 @@ pub struct ChuaReduced {
 /// The reduced Chua circuit linearised at rest (the diode's inner slope `ga`): the three
 /// states of the hand model MSL tools use, `x = (v_C1, v_C2, i_L)` with
 /// `C1 v̇_C1 = G (v_C2 − v_C1) − ga v_C1`, `C2 v̇_C2 = G (v_C1 − v_C2) − i_L` and
-/// `L i̇_L = v_C2 − Ro i_L`, and two zeros: the fluxes of node `b` and of the inductor's two
-/// ends together, which no part reads. Eigenvalues equal to 1e-10.
+/// `L i̇_L = v_C2 − Ro i_L`, and no more: the fluxes of node `b` and of the inductor's two ends
+/// together, which no part reads, are not states. Eigenvalues equal to 1e-10.
 #[test]
 fn the_reduced_chua_circuit_has_the_hand_models_eigenvalues() {
     let (l, ro, g, c1, c2, ga) = (18.0, 12.5e-3, 0.565, 10.0, 100.0, -0.757576);
@@ -361,7 +362,7 @@ fn the_reduced_chua_circuit_has_the_hand_models_eigenvalues() {
     let zero = VecQ::<ChuaReduced>::zeros();
     let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
     let linear = linearize(&model, 0.0, &rest).expect("linearises");
-    assert_eq!(linear.a.nrows(), 5);
+    assert_eq!(linear.a.nrows(), 3, "{:?}", linear.state_names());
     let hand = DMatrix::from_row_slice(
         3,
         3,

@@ -21,6 +21,14 @@
 //! others are functions of the state and the inputs. `D₂₂` singular is a velocity nothing
 //! fixes, an error.
 //!
+//! In a circuit the positions are electrical integrals, node fluxes (`Wb`) and branch charges
+//! (`C`): only the combinations the motion or the outputs read are states (an inductor's flux,
+//! a capacitor's charge). The directions `δz` along integrals alone that no column of `A` or
+//! `C` reads (the common flux of nodes joined by inductors and capacitors only, a source's
+//! charge) are dropped, so that a circuit has the states a circuit simulator reports: its
+//! capacitors' voltages and its inductors' currents, up to capacitor loops and inductor
+//! cut-sets. Mechanical positions stay, read or not.
+//!
 //! Every matrix comes from the model's generated derivatives, none from differences.
 
 use nalgebra::{DMatrix, DefaultAllocator, SVD};
@@ -47,7 +55,8 @@ pub struct Linearization {
     /// The feedthrough matrix.
     pub d: DMatrix<f64>,
     /// An orthonormal basis of the position directions the holonomic constraints allow
-    /// (`n × (n − h)`; the identity without holonomic constraints).
+    /// (`n × (n − h)`; the identity without holonomic constraints), less the levels of
+    /// electrical integrals that nothing reads (see the module's documentation).
     pub positions: DMatrix<f64>,
     /// An orthonormal basis of the velocities all constraints allow (`n × (n − m)`; the
     /// identity without constraints) that have inertia: velocities the forces fix instead
@@ -335,6 +344,23 @@ where
         yu += &y_lambda * &map.input;
     }
     let velocities = &velocities * &inertial;
+    // The levels of electrical integrals that nothing reads leave the state.
+    let integrals: Vec<bool> =
+        model.coordinate_names().iter().map(|c| is_integral(model.unit_of(c))).collect();
+    let unread = unread_integrals(&integrals, &positions, &state_matrix, &output_matrix);
+    let (state_matrix, input_matrix, output_matrix, positions) = if unread.ncols() > 0 {
+        let kept = complement(&unread);
+        let (nk, nx) = (kept.ncols(), nz + nw);
+        // x = E x' (the unread levels at zero) and x' = T x, with T E = I and A E's dropped
+        // columns zero.
+        let mut embed = DMatrix::zeros(nx, nk + nw);
+        embed.view_mut((0, 0), (nz, nk)).copy_from(&kept);
+        embed.view_mut((nz, nk), (nw, nw)).fill_with_identity();
+        let take = embed.transpose();
+        (&take * &state_matrix * &embed, &take * &input_matrix, &output_matrix * &embed, &positions * &kept)
+    } else {
+        (state_matrix, input_matrix, output_matrix, positions)
+    };
     // Without constraints and with inertia along every velocity, the bases are the identity:
     // the state is the model's own coordinates, and says so.
     let n = positions.nrows();
@@ -352,6 +378,69 @@ where
         velocities,
         basis,
     })
+}
+
+/// Whether a coordinate of this unit is an electrical integral: a node's flux (`Wb`, the
+/// integral of its potential) or a branch's charge (`C`, the integral of its current). Only
+/// differences of fluxes (an inductor's) and charges a part stores (a capacitor's) are
+/// physical; the common level of a group of them, where nothing reads it, is not a state (the
+/// states a circuit simulator reports are its capacitors' voltages and inductors' currents).
+/// A mechanical position is a state even where nothing reads it (a free wheel's angle).
+fn is_integral(unit: Option<&str>) -> bool {
+    matches!(unit, Some("Wb" | "C"))
+}
+
+/// The position directions `δz` (columns, orthonormal, `n_z × g`) that move electrical
+/// integrals only and that neither the motion (`A`'s columns) nor the outputs (`C`'s) read:
+/// the kernel of those columns stacked on the rows of `positions` of the other coordinates,
+/// each block scaled to its largest entry.
+fn unread_integrals(
+    integrals: &[bool],
+    positions: &DMatrix<f64>,
+    state_matrix: &DMatrix<f64>,
+    output_matrix: &DMatrix<f64>,
+) -> DMatrix<f64> {
+    let nz = positions.ncols();
+    if nz == 0 || !integrals.iter().any(|&x| x) {
+        return DMatrix::zeros(nz, 0);
+    }
+    let others: Vec<usize> = (0..integrals.len()).filter(|&i| !integrals[i]).collect();
+    let (nx, ny) = (state_matrix.nrows(), output_matrix.nrows());
+    let mut stacked = DMatrix::zeros(others.len() + nx + ny, nz);
+    for (row, &i) in others.iter().enumerate() {
+        stacked.row_mut(row).copy_from(&positions.row(i));
+    }
+    let scaled = |m: DMatrix<f64>| {
+        let largest = m.amax();
+        if largest > 0.0 { m / largest } else { m }
+    };
+    let read = scaled(state_matrix.columns(0, nz).into_owned());
+    stacked.view_mut((others.len(), 0), (nx, nz)).copy_from(&read);
+    let seen = scaled(output_matrix.columns(0, nz).into_owned());
+    stacked.view_mut((others.len() + nx, 0), (ny, nz)).copy_from(&seen);
+    // Padded to square, the SVD's V is complete; its rows with singular values at round-off
+    // (relative to the largest, which the scaling makes at least 1) span the kernel.
+    let rows = stacked.nrows();
+    let mut square = DMatrix::zeros(rows.max(nz), nz);
+    square.view_mut((0, 0), (rows, nz)).copy_from(&stacked);
+    let svd = SVD::new(square, false, true);
+    let Some(vt) = svd.v_t.as_ref() else { return DMatrix::zeros(nz, 0) };
+    let tolerance = 1e-9 * svd.singular_values.max();
+    let columns: Vec<_> =
+        (0..nz).filter(|&i| svd.singular_values[i] <= tolerance).map(|i| vt.row(i).transpose()).collect();
+    if columns.is_empty() { DMatrix::zeros(nz, 0) } else { DMatrix::from_columns(&columns) }
+}
+
+/// An orthonormal basis of the complement of the orthonormal columns `w`.
+fn complement(w: &DMatrix<f64>) -> DMatrix<f64> {
+    let n = w.nrows();
+    let projector = DMatrix::<f64>::identity(n, n) - w * w.transpose();
+    let eigen = nalgebra::SymmetricEigen::new(projector);
+    let columns: Vec<_> = (0..n)
+        .filter(|&i| eigen.eigenvalues[i] > 0.5)
+        .map(|i| eigen.eigenvectors.column(i).into_owned())
+        .collect();
+    if columns.is_empty() { DMatrix::zeros(n, 0) } else { DMatrix::from_columns(&columns) }
 }
 
 /// The eigenvectors of the symmetric, positive semidefinite `mass` with positive eigenvalues

@@ -408,25 +408,24 @@ impl Names {
     /// The doc comment of the parameter (or input field) with this full dotted name
     /// (`left.k1`), if it has one.
     pub fn doc_of(&self, name: &str) -> Option<&'static str> {
-        let (names, own) = self.owner(name)?;
+        let (names, own) = self.owner(name);
         names.docs.iter().find(|(n, _)| *n == own).map(|&(_, doc)| doc)
     }
 
     /// The declared unit of the coordinate, velocity, parameter, input or output with this
     /// full dotted name, if it has one.
     pub fn unit_of(&self, name: &str) -> Option<&'static str> {
-        let (names, own) = self.owner(name)?;
+        let (names, own) = self.owner(name);
         names.units.iter().find(|(n, _)| *n == own).map(|&(_, unit)| unit)
     }
 
-    /// The names of the (sub)model a dotted name belongs to, and the name within it.
-    fn owner<'n>(&self, name: &'n str) -> Option<(&Names, &'n str)> {
-        match name.split_once('.') {
-            None => Some((self, name)),
-            Some((field, rest)) => {
-                let sub = self.subsystems.iter().find(|s| s.field == field)?;
-                sub.names.owner(rest)
-            }
+    /// The names of the (sub)model a dotted name belongs to, and the name within it: the model
+    /// itself for a dotted name of its own (a reduced composite's `r.n`).
+    fn owner<'n>(&self, name: &'n str) -> (&Names, &'n str) {
+        let Some((field, rest)) = name.split_once('.') else { return (self, name) };
+        match self.subsystems.iter().find(|s| s.field == field) {
+            Some(sub) => sub.names.owner(rest),
+            None => (self, name),
         }
     }
 
@@ -627,6 +626,34 @@ mod tests {
         assert_eq!(CHAIN.doc_of("left.k"), Some("Stiffness."));
         assert_eq!(CHAIN.doc_of("right.k"), None);
         assert_eq!(LEFT.doc, "The left half.");
+    }
+
+    /// A reduced composite: one flat model whose own names are dotted.
+    static FLAT: Names = Names {
+        coordinates: &["r.n"],
+        velocities: &["r.vn"],
+        constraints: &[],
+        holonomic: 0,
+        ports: &[],
+        inputs: &[],
+        outputs: &[],
+        unilaterals: &[],
+        events: &[],
+        surfaces: &[],
+        parameters: &["r.r"],
+        subsystems: &[],
+        doc: "",
+        docs: &[("r.r", "Resistance.")],
+        units: &[("r.n", "Wb"), ("r.r", "Ohm")],
+    };
+
+    #[test]
+    fn a_flat_models_dotted_names_are_its_own() {
+        assert_eq!(FLAT.unit_of("r.n"), Some("Wb"));
+        assert_eq!(FLAT.unit_of("r.r"), Some("Ohm"));
+        assert_eq!(FLAT.doc_of("r.r"), Some("Resistance."));
+        assert_eq!(FLAT.unit_of("r.vn"), None);
+        assert_eq!(FLAT.unit_of("l.n"), None);
     }
 
     #[test]
