@@ -95,6 +95,24 @@ pub struct Inductor {
     pub l: f64,
 }
 
+/// An inductor `vp − vn = l di/dt` whose current `i` (into `p`, through the part, out of `n`)
+/// is the rate of its coordinate `s`: the inductor branch of modified nodal analysis. Its
+/// magnetic energy `½ l i²` is kinetic in `s`, and the pins exchange the current through
+/// lossless forces. The inductance may be zero, a short circuit whose current the rest of the
+/// circuit fixes: one assembly serves both, and at `l = 0` it has one state less. Give it an
+/// initial current through the velocity of `s`. [`Inductor`] carries the flux `p − n` instead,
+/// one coordinate less, and needs `l > 0`.
+#[derive(LagrangeDirac, Clone, Debug, PartialEq)]
+#[dirac(coordinates(p => vp, n => vn, s => i), port(p, n), nonnegative(l))]
+#[dirac(lagrangian = 0.5 * l * i * i)]
+#[dirac(force(s) = vp - vn, force(p) = -i, force(n) = i)]
+#[dirac(output(v) = vp - vn, output(energy) = 0.5 * l * i * i)]
+#[dirac(unit(p, n) = "Wb", unit(vp, vn, v) = "V", unit(s) = "C", unit(i) = "A", unit(l) = "H", unit(energy) = "J")]
+pub struct BranchInductor {
+    /// Inductance, zero or more.
+    pub l: f64,
+}
+
 /// Two magnetically coupled inductors (a transformer with leakage): the magnetic energy
 /// `½ ψᵀ L⁻¹ ψ` of the winding fluxes `ψ₁ = p1 − n1`, `ψ₂ = p2 − n2` with the inductance
 /// matrix `L = [l1 m; m l2]`, which must be positive definite (`m² < l1 l2`).

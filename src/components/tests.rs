@@ -255,6 +255,31 @@ fn inductor_carries_its_flux_over_l() {
 }
 
 #[test]
+fn branch_inductor_carries_its_current_as_the_rate_of_its_charge() {
+    let (l, i) = (0.2, 1.5);
+    // At `l di/dt = vp − vn` the balance of `s` holds.
+    let at = At::new(el::BranchInductor { l }).set("p", 0.3, 4.0, 0.0).set("n", 0.1, 1.0, 0.0).set(
+        "s",
+        0.0,
+        i,
+        3.0 / l,
+    );
+    assert_close!(at.effort("s"), 0.0);
+    assert_close!(at.effort("p"), i);
+    assert_close!(at.effort("n"), -i);
+    assert_close!(at.output("v"), 3.0);
+    assert_close!(at.output("energy"), 0.5 * l * i * i);
+    assert_balance(&at, 3.0 * i);
+    // With no inductance the pins' voltages are equal where the balance holds.
+    let at = At::new(el::BranchInductor { l: 0.0 })
+        .set("p", 0.3, 2.0, 0.0)
+        .set("n", 0.1, 2.0, 0.0)
+        .set("s", 0.0, i, 7.0);
+    assert_close!(at.effort("s"), 0.0);
+    assert_balance(&at, 0.0);
+}
+
+#[test]
 fn coupled_inductors_invert_their_inductance_matrix() {
     let (l1, l2, m) = (2.0, 0.5, 0.8);
     let (psi1, psi2) = (0.3 - 0.1, -0.4 - 0.2);
@@ -750,6 +775,7 @@ fn every_parameter_of_every_part_is_checked() {
     each_parameter(el::DampedSineVoltage { offset: 0.0, amplitude: 1.0, f: 1.0, damping: 0.0, phase: 0.0 });
     each_parameter(el::Capacitor { c: 1.0 });
     each_parameter(el::Inductor { l: 1.0 });
+    each_parameter(el::BranchInductor { l: 1.0 });
     each_parameter(el::CoupledInductors { l1: 1.0, l2: 2.0, m: 0.5 });
     each_parameter(el::IdealTransformer { n: 2.0 });
     each_parameter(el::Gyrator { g: 1.0 });
@@ -795,6 +821,7 @@ fn every_parameter_of_every_part_is_checked() {
     refused(el::Resistor { r: 1.0 }, "r", 0.0, "positive");
     refused(el::Capacitor { c: 1.0 }, "c", 0.0, "positive");
     refused(el::Inductor { l: 1.0 }, "l", -1.0, "positive");
+    refused(el::BranchInductor { l: 1.0 }, "l", -1.0, "non-negative");
     refused(el::CoupledInductors { l1: 1.0, l2: 2.0, m: 0.5 }, "l2", 0.0, "positive");
     refused(el::Conductor { g: 1.0 }, "g", -1.0, "non-negative");
     refused(el::ChuaDiode { ga: -0.7, gb: -0.4, ve: 1.0 }, "ve", 0.0, "positive");

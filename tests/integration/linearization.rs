@@ -379,7 +379,7 @@ mod from_parts {
     //! motor's equations reduced by hand: `l di/dt = u − r i − k ω`,
     //! `(jm + jl/n²) dω/dt = k i − (b/n²) ω`.
 
-    use dirac::components::electrical::{Ground, Inductor, Resistor, VoltageSource};
+    use dirac::components::electrical::{BranchInductor, Ground, Inductor, Resistor, VoltageSource};
     use dirac::components::electromechanical::Emf;
     use dirac::components::rotational::{Damper, Fixed, IdealGear, Inertia};
     use dirac::control;
@@ -441,6 +441,10 @@ mod from_parts {
         let zero = VecQ::<Drive>::zeros();
         let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
         let linear = linearize(&model, 0.0, &rest).expect("linearises");
+        // The inductor's flux, the seven flange angles the holonomic rows leave free (the
+        // connections hold their offsets by their rates) and the speed: 9 where every node flux
+        // made 16, the levels of the fluxes that nothing reads not being states.
+        assert_eq!(linear.a.nrows(), 9, "{:?}", linear.state_names());
         let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
         assert_eq!(
             minimal.a.nrows(),
@@ -476,15 +480,20 @@ mod from_parts {
         // Every state is named, and reads what its name says: a velocity's row of the map from
         // the state is that state alone, an output's row of C too.
         let names = minimal.state_names();
-        // In the model's order: the first velocity that reads a kept state alone is the EMF's
-        // node (`k ω`); no coordinate reads the current alone, the source's output does.
-        assert_eq!(names, ["δv(l.n)", "δy(source.i)"]);
+        // In the model's order: the flux of the inductor's node (the current times `l`, the
+        // ground's flux fixed), then the rotor's speed.
+        assert_eq!(names, ["δq(l.p)", "δv(emf.phi)"]);
         let coordinates = Drive::NAMES.coordinate_names();
         let outputs = Drive::NAMES.output_names();
         for (i, name) in names.iter().enumerate() {
             let unit = DMatrix::from_fn(1, 2, |_, j| if i == j { 1.0 } else { 0.0 });
             let inside = |prefix: &str| name.strip_prefix(prefix).and_then(|n| n.strip_suffix(')'));
-            let row = if let Some(c) = inside("δv(") {
+            let row = if let Some(c) = inside("δq(") {
+                minimal
+                    .positions
+                    .row(coordinates.iter().position(|n| n == c).expect("a coordinate"))
+                    .into_owned()
+            } else if let Some(c) = inside("δv(") {
                 minimal
                     .velocities
                     .row(coordinates.iter().position(|n| n == c).expect("a coordinate"))
@@ -554,6 +563,108 @@ mod from_parts {
         // What the input reaches and the outputs see is the hand model's two states.
         let minimal = linear.minreal(&model, 1e-9).expect("a minimal realisation");
         assert_eq!(minimal.a.nrows(), 2, "{:?}", minimal.state_names());
+    }
+
+    /// The same ten parts with the inductor that carries its current as a coordinate's rate,
+    /// reduced: one assembly for any inductance, zero included.
+    #[derive(Interconnection, Clone, Debug)]
+    #[dirac(reduce)]
+    #[dirac(
+        connect(source.p, r.p), connect(r.n, l.p), connect(l.n, emf.p), connect(emf.n, ground.p),
+        connect(source.n, ground.p), connect(emf.phi, rotor.phi), connect(rotor.phi, gear.a),
+        connect(gear.b, load.phi), connect(load.phi, bearing.b), connect(bearing.a, housing.phi)
+    )]
+    struct Branch {
+        source: VoltageSource,
+        r: Resistor,
+        l: BranchInductor,
+        emf: Emf,
+        ground: Ground,
+        rotor: Inertia,
+        gear: IdealGear,
+        load: Inertia,
+        bearing: Damper,
+        housing: Fixed,
+    }
+
+    fn branch(l: f64, u: f64) -> Branch {
+        let d = drive();
+        Branch {
+            source: VoltageSource { u },
+            r: d.r,
+            l: BranchInductor { l },
+            emf: d.emf,
+            ground: d.ground,
+            rotor: d.rotor,
+            gear: d.gear,
+            load: d.load,
+            bearing: d.bearing,
+            housing: d.housing,
+        }
+    }
+
+    /// With inductance the motor has its 3 states (the current, the load's angle and speed)
+    /// and the hand model's poles; with `l = 0` the same assembly has 2 (the angle and the
+    /// speed) and the pole of `j ω̇ = k (u − k ω)/r − (b/n²) ω`, the hand model without its
+    /// inductor. One pole at zero each time: the load's angle, which nothing reads.
+    #[test]
+    fn one_assembly_linearises_to_three_states_and_to_two_without_inductance() {
+        let j = JM + JL / (N * N);
+        for (l, states) in [(L, 3), (0.0, 2)] {
+            let model = branch(l, 0.0);
+            let zero = VecQ::<Branch>::zeros();
+            let rest = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+            let linear = linearize(&model, 0.0, &rest).expect("linearises");
+            assert_eq!(linear.a.nrows(), states, "l = {l}: {:?}", linear.state_names());
+            let expected = if l > 0.0 {
+                control::poles(&by_hand().0).expect("poles")
+            } else {
+                vec![Complex::new(-(K * K / R + B / (N * N)) / j, 0.0)]
+            };
+            let got = control::poles(&linear.a).expect("poles");
+            let (zeros, motor): (Vec<&Complex<f64>>, Vec<&Complex<f64>>) =
+                got.iter().partition(|p| p.norm() < 1e-10);
+            assert_eq!((zeros.len(), motor.len()), (1, expected.len()), "l = {l}: {got:?}");
+            for e in &expected {
+                assert!(motor.iter().any(|g| (*g - e).norm() < 1e-10 * e.norm()), "no pole {e} in {got:?}");
+            }
+        }
+    }
+
+    /// Without inductance the current follows the speed, `i = (u − k ω)/r`, and the speed the
+    /// first-order step response `ω = ω∞ (1 − e^(−t/τ))` with `τ = j/(k²/r + b/n²)` and
+    /// `ω∞ = (k u/r) τ/j`: Radau and Explicit at 1e-10 within 1e-7 of it.
+    #[test]
+    fn without_inductance_the_motor_is_first_order_on_every_integrator() {
+        let (u, j) = (12.0, JM + JL / (N * N));
+        let tau = j / (K * K / R + B / (N * N));
+        let (top, times): (f64, Vec<f64>) = (K * u / R * tau / j, vec![0.01, 0.05, 0.1, 0.3]);
+        let model = branch(0.0, u);
+        let zero = VecQ::<Branch>::zeros();
+        let start = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("at rest");
+        let check = |what: &str, speed: &[f64], current: &[f64]| {
+            for ((t, w), i) in times.iter().zip(speed).zip(current) {
+                let exact = top * (1.0 - (-*t / tau).exp());
+                assert!((w - exact).abs() < 1e-7 * top, "{what} at t = {t}: ω = {w} against {exact}");
+                assert!((i - (u - K * w) / R).abs() < 1e-7 * u / R, "{what} at t = {t}: i = {i}");
+            }
+        };
+        let sampling = Sampling::Times(times.clone());
+        let radau = Radau::new(&model, RadauOptions::tolerances(1e-10, 1e-10))
+            .expect("valid")
+            .solve(0.0, &start, 0.3, &sampling)
+            .expect("integrates");
+        let explicit = Explicit::new(&model, ExplicitOptions::tolerances(1e-10, 1e-10))
+            .expect("valid")
+            .solve(0.0, &start, 0.3, &sampling)
+            .expect("integrates");
+        let read = |w: Option<&[f64]>, i: Option<&[f64]>| {
+            (w.expect("the speed").to_vec(), i.expect("the current").to_vec())
+        };
+        let (w, i) = read(radau.column("rotor.w"), radau.column("l.i"));
+        check("Radau", &w, &i);
+        let (w, i) = read(explicit.column("rotor.w"), explicit.column("l.i"));
+        check("Explicit", &w, &i);
     }
 
     #[test]
