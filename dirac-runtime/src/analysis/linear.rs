@@ -141,8 +141,9 @@ impl Linearization {
             return Err(SimError::InvalidOption {
                 what: "coordinates",
                 reason: format!(
-                    "the constraints leave {nz} positions but {nw} velocities free: named coordinates \
-                     need constraints that are all holonomic"
+                    "the state holds {nz} positions but {nw} velocities: named coordinates need as many \
+                     of each (constraints that are all holonomic, and no level of node fluxes or charges \
+                     left out as unread)"
                 ),
             });
         }
