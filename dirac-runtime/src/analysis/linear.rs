@@ -350,7 +350,8 @@ where
         model.coordinate_names().iter().map(|c| is_integral(model.unit_of(c))).collect();
     let unread = unread_integrals(&integrals, &positions, &state_matrix, &output_matrix);
     let (state_matrix, input_matrix, output_matrix, positions) = if unread.ncols() > 0 {
-        let kept = complement(&unread);
+        // The complement of the unread directions: the kernel of their transpose.
+        let (kept, _) = null_space(&unread.transpose(), nz, 1e-10);
         let (nk, nx) = (kept.ncols(), nz + nw);
         // x = E x' (the unread levels at zero) and x' = T x, with T E = I and A E's dropped
         // columns zero.
@@ -419,29 +420,21 @@ fn unread_integrals(
     stacked.view_mut((others.len(), 0), (nx, nz)).copy_from(&read);
     let seen = scaled(output_matrix.columns(0, nz).into_owned());
     stacked.view_mut((others.len() + nx, 0), (ny, nz)).copy_from(&seen);
-    // Padded to square, the SVD's V is complete; its rows with singular values at round-off
-    // (relative to the largest, which the scaling makes at least 1) span the kernel.
-    let rows = stacked.nrows();
-    let mut square = DMatrix::zeros(rows.max(nz), nz);
-    square.view_mut((0, 0), (rows, nz)).copy_from(&stacked);
-    let svd = SVD::new(square, false, true);
-    let Some(vt) = svd.v_t.as_ref() else { return DMatrix::zeros(nz, 0) };
-    let tolerance = 1e-9 * svd.singular_values.max();
-    let columns: Vec<_> =
-        (0..nz).filter(|&i| svd.singular_values[i] <= tolerance).map(|i| vt.row(i).transpose()).collect();
-    if columns.is_empty() { DMatrix::zeros(nz, 0) } else { DMatrix::from_columns(&columns) }
+    null_space(&stacked, nz, 1e-9).0
 }
 
-/// An orthonormal basis of the complement of the orthonormal columns `w`.
-fn complement(w: &DMatrix<f64>) -> DMatrix<f64> {
-    let n = w.nrows();
-    let projector = DMatrix::<f64>::identity(n, n) - w * w.transpose();
-    let eigen = nalgebra::SymmetricEigen::new(projector);
-    let columns: Vec<_> = (0..n)
-        .filter(|&i| eigen.eigenvalues[i] > 0.5)
-        .map(|i| eigen.eigenvectors.column(i).into_owned())
-        .collect();
-    if columns.is_empty() { DMatrix::zeros(n, 0) } else { DMatrix::from_columns(&columns) }
+/// An orthonormal basis of `ker rows` in `R^n` (singular values at most `relative` times the
+/// largest), and the rank of `rows`.
+fn null_space(rows: &DMatrix<f64>, n: usize, relative: f64) -> (DMatrix<f64>, usize) {
+    let r = rows.nrows();
+    // Padded to square, the SVD's V is complete; its rows beyond the rank span the kernel.
+    let mut square = DMatrix::zeros(n.max(r), n);
+    square.view_mut((0, 0), (r, n)).copy_from(rows);
+    let svd = SVD::new(square, false, true);
+    let vt = svd.v_t.as_ref().expect("asked for V");
+    let tolerance = relative * svd.singular_values.max().max(f64::MIN_POSITIVE);
+    let kernel: Vec<usize> = (0..n).filter(|&i| svd.singular_values[i] <= tolerance).collect();
+    (DMatrix::from_fn(n, kernel.len(), |i, j| vt[(kernel[j], i)]), n - kernel.len())
 }
 
 /// The eigenvectors of the symmetric, positive semidefinite `mass` with positive eigenvalues
@@ -470,26 +463,17 @@ fn split_by_inertia(mass: &DMatrix<f64>, scale: f64) -> (DMatrix<f64>, DMatrix<f
 
 /// An orthonormal basis of `ker rows` in `R^n`: the identity when there are no rows.
 fn kernel(rows: &DMatrix<f64>, n: usize, t: f64) -> Result<DMatrix<f64>, SimError> {
-    let r = rows.nrows();
-    if r == 0 {
+    if rows.nrows() == 0 {
         return Ok(DMatrix::identity(n, n));
     }
-    // Padded to square, the SVD's V is complete; its rows beyond the rank span the kernel.
-    let mut square = DMatrix::zeros(n.max(r), n);
-    square.view_mut((0, 0), (r, n)).copy_from(rows);
-    let svd = SVD::new(square, false, true);
-    let vt = svd.v_t.as_ref().expect("asked for V");
-    let largest = svd.singular_values.max();
-    let tolerance = 1e-10 * largest.max(f64::MIN_POSITIVE);
-    let independent = svd.singular_values.iter().filter(|&&s| s > tolerance).count();
-    if independent < r {
+    let (kernel, rank) = null_space(rows, n, 1e-10);
+    if rank < rows.nrows() {
         return Err(SimError::NotDetermined {
             t,
             cause: "the constraints are dependent at this state".into(),
         });
     }
-    let kernel: Vec<usize> = (0..n).filter(|&i| svd.singular_values[i] <= tolerance).collect();
-    Ok(DMatrix::from_fn(n, kernel.len(), |i, j| vt[(kernel[j], i)]))
+    Ok(kernel)
 }
 
 /// Refuses a state that is not at rest or whose momenta change.
