@@ -37,6 +37,7 @@ mod start;
 
 use std::hint::black_box;
 
+use dirac::State;
 use dirac::adjoint::Objective;
 use dirac::prelude::*;
 use paired::paired;

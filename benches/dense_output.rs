@@ -20,6 +20,7 @@ mod zoo;
 mod median;
 
 use dirac::DenseOutput;
+use dirac::State;
 use dirac::prelude::*;
 use median::median_seconds;
 use zoo::{BeadOnRod, Kepler, bead_exact, kepler_exact};
@@ -34,7 +35,7 @@ struct Run {
     seconds: f64,
 }
 
-fn runs<M: LagrangeDirac>(
+fn runs<M: LagrangeDirac + Hybrid>(
     problem: &'static str,
     model: &M,
     (start, t_end): (&State<M>, f64),

@@ -20,6 +20,7 @@ use std::ffi::CString;
 use std::ptr::{null, null_mut};
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use dirac::Input;
 use dirac::fmi::{Export, Version, abi};
 use dirac::prelude::*;
 use driven_pendulum::DrivenPendulum;
@@ -73,7 +74,7 @@ where
 }
 
 /// The same run with `solve_sampled`.
-fn sampled<M: Export>(steps: usize, input: Option<Input<M>>) -> f64
+fn sampled<M: Export + dirac::Hybrid>(steps: usize, input: Option<Input<M>>) -> f64
 where
     DefaultAllocator: Storage<M>,
 {

@@ -17,6 +17,7 @@ mod zoo;
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use dirac::State;
 use dirac::prelude::*;
 use zoo::ForcedSpring;
 

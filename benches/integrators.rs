@@ -15,6 +15,7 @@ mod zoo;
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use dirac::State;
 use dirac::nalgebra::{Complex, DefaultAllocator};
 use dirac::prelude::*;
 use dirac::runtime::newton::{Condensed, Full, NewtonSolver};

@@ -17,6 +17,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+use dirac::State;
 use dirac::prelude::*;
 
 #[path = "../examples/support/mod.rs"]

@@ -18,6 +18,7 @@ use std::hint::black_box;
 use std::ops::ControlFlow;
 use std::time::Instant;
 
+use dirac::State;
 use dirac::prelude::*;
 
 /// Friction as the law.

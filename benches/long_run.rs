@@ -16,6 +16,7 @@ mod zoo;
 use std::ops::ControlFlow;
 use std::time::Instant;
 
+use dirac::State;
 use dirac::prelude::*;
 use zoo::*;
 

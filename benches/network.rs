@@ -13,6 +13,7 @@
 
 use std::time::Instant;
 
+use dirac::State;
 use dirac::network::Network;
 use dirac::prelude::*;
 

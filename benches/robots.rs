@@ -15,6 +15,7 @@
 use std::hint::black_box;
 use std::time::Instant;
 
+use dirac::State;
 use dirac::prelude::*;
 
 #[path = "../tests/zoo/mod.rs"]

@@ -27,6 +27,7 @@ mod paired;
 
 use std::hint::black_box;
 
+use dirac::State;
 use dirac::Storage;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
@@ -39,7 +40,7 @@ fn options() -> RadauOptions {
 
 /// One row: the median times of a plain solve and of one with the first `count` parameters'
 /// sensitivities, and the ratio.
-fn row<M: Parameters>(name: &str, model: &M, start: &State<M>, t_end: f64, count: usize)
+fn row<M: Parameters + Hybrid>(name: &str, model: &M, start: &State<M>, t_end: f64, count: usize)
 where
     DefaultAllocator: Storage<M>,
 {
@@ -50,8 +51,13 @@ where
 }
 
 /// One row for the sensitivities `wrt`.
-fn row_wrt<M: Parameters>(name: &str, model: &M, start: &State<M>, t_end: f64, wrt: &Sensitivities<M>)
-where
+fn row_wrt<M: Parameters + Hybrid>(
+    name: &str,
+    model: &M,
+    start: &State<M>,
+    t_end: f64,
+    wrt: &Sensitivities<M>,
+) where
     DefaultAllocator: Storage<M>,
 {
     // `cargo bench -p dirac-benches --bench sensitivities -- WORD` runs only the rows whose model names WORD.

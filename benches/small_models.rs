@@ -15,6 +15,7 @@
 #[path = "../tests/zoo/mod.rs"]
 mod zoo;
 
+use dirac::State;
 use dirac::prelude::*;
 use zoo::*;
 

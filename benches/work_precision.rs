@@ -22,6 +22,7 @@ mod zoo;
 #[path = "support/median.rs"]
 mod median;
 
+use dirac::State;
 use dirac::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use dirac::prelude::*;
 use dirac::{ExplicitStats, RadauStats};

@@ -20,6 +20,7 @@
 use std::error::Error;
 use std::ops::ControlFlow;
 
+use dirac::State;
 use dirac::prelude::*;
 
 #[path = "support/mod.rs"]

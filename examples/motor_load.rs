@@ -24,6 +24,7 @@ use std::error::Error;
 use std::fs::File;
 use std::io::BufWriter;
 
+use dirac::State;
 use dirac::prelude::*;
 use dirac::sources::{Hold, Table};
 

@@ -19,6 +19,7 @@ use std::ops::ControlFlow;
 use std::time::Instant;
 
 use dirac::EventContext;
+use dirac::State;
 use dirac::prelude::*;
 
 #[path = "support/mod.rs"]

@@ -14,6 +14,7 @@
 
 use std::error::Error;
 
+use dirac::State;
 use dirac::adjoint::Objective;
 use dirac::prelude::*;
 

@@ -53,6 +53,7 @@
 //!
 //! ```
 //! use dirac::prelude::*;
+//! use dirac::State;
 //!
 //! /// A planar pendulum of length `l` in Cartesian coordinates.
 //! #[derive(LagrangeDirac)]
@@ -91,9 +92,9 @@ pub use dirac_runtime::{
     EventContext, Events, Explicit, ExplicitOptions, ExplicitStats, Fixed, Held, Hybrid, Impact, Input,
     InputsOutputs, Integrator, JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ,
     MatYY, Membership, Named, Names, OperationCounts, Output, Parameters, Progress, Radau, RadauOptions,
-    RadauStats, ResidualBlocks, Sampling, Sensitivities, SimError, Sizes, Slot, Solution, SolveWithEvents,
-    SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH, VecK,
-    VecQ, VecY, Wrt, consistent_state, linearize,
+    RadauStats, ResidualBlocks, Run, Sampling, Sensitive, Sensitivities, SimError, Sizes, Slot, Solution,
+    SolveWithEvents, SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC,
+    VecH, VecK, VecQ, VecY, Wrt, consistent_state, linearize,
 };
 
 /// Gradients of one objective with respect to every parameter and initial value at once, by
@@ -213,6 +214,7 @@ pub mod spice;
 ///
 /// ```
 /// use dirac::prelude::*;
+/// use dirac::State;
 ///
 /// /// The kinetic energy `½ vᵀ L_vv v` of any model (dense or sparse), at its state.
 /// fn kinetic_energy<M: LagrangeDirac>(model: &M, state: &State<M>) -> f64
@@ -239,11 +241,11 @@ pub mod prelude {
     pub use crate::nalgebra::DefaultAllocator;
     pub use crate::{
         Algebra, Consistency, Constraint, Coordinate, Crossing, DenseModel, DenseOutput, Derivation,
-        Dimensions, DiracStructure, Drive, EnergyBalance, Equations, ErrorNorm, Event, Events, Explicit,
-        ExplicitOptions, Fixed, Hybrid, Input, InputsOutputs, Integrator, Interconnection, JacobianBlocks,
-        LagrangeDirac, Linearization, MatCQ, MatQQ, MatYY, Named, Output, Parameters, Radau, RadauOptions,
-        ResidualBlocks, Sampling, Sensitivities, SimError, Sizes, Solution, SolveWithEvents, SparseJacobian,
-        State, Storage, Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state, linearize,
+        Dimensions, DiracStructure, EnergyBalance, Equations, ErrorNorm, Event, Events, Explicit,
+        ExplicitOptions, Hybrid, InputsOutputs, Integrator, Interconnection, JacobianBlocks, LagrangeDirac,
+        Linearization, MatCQ, MatQQ, MatYY, Named, Parameters, Radau, RadauOptions, ResidualBlocks, Sampling,
+        Sensitive, Sensitivities, SimError, Sizes, Solution, SolveWithEvents, SparseJacobian, Storage,
+        Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state, linearize,
     };
 }
 

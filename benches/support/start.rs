@@ -5,6 +5,7 @@
 use std::io::Write;
 use std::path::Path;
 
+use dirac::State;
 use dirac::prelude::*;
 
 /// Writes `values` into `path`, one a line, at full precision.

@@ -8,7 +8,7 @@ use syn::DeriveInput;
 use crate::ast::Model;
 use crate::blocks::Blocks;
 use crate::check::check;
-use crate::codegen::signatures::{REQUIRED, fixed_storage, rt, solve_with_contacts};
+use crate::codegen::signatures::{REQUIRED, fixed_storage, hybrid_reach, rt};
 use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
 use crate::equations::{equations, surfaces};
@@ -209,7 +209,7 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
 
 fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -> TokenStream {
     let p = rt();
-    let solve_with_contacts = solve_with_contacts();
+    let hybrid_reach = hybrid_reach();
     let Analysed { mut sym, blocks, pattern, unknowns } = analysed;
     let ident = model.ident;
     let Generated { methods, inputs_outputs, hybrid, parameters: parameter_methods, sparse, counts } =
@@ -267,7 +267,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                 #parameters
                 #methods
                 #input_values
-                #solve_with_contacts
+                #hybrid_reach
             }
 
             #[automatically_derived]

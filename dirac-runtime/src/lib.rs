@@ -77,10 +77,12 @@ pub use model::{
 pub use network::{Network, NetworkBuilder, NetworkError};
 pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use shape::layout::{Layout, Slot};
-pub use simulate::events::{EventContext, Events, SolveWithEvents};
+pub use simulate::events::{EventContext, Events};
 pub use simulate::held::Held;
 pub use simulate::integrator::{Drive, Integrator};
 pub use simulate::progress::Progress;
+pub use simulate::run::{Run, SensitiveRun, SolveWithEvents};
+pub use simulate::sensitive::Sensitive;
 pub use simulate::sensitivity::{Sensitivities, Wrt};
 pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
 
@@ -140,10 +142,10 @@ pub mod __private {
     };
     pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
-    pub use crate::simulate::events::sensitivities::solve_with_sensitivities_through_events;
-    pub use crate::simulate::events::{Events, SolveWithEvents};
+    pub use crate::simulate::events::Events;
     pub use crate::simulate::integrator::Integrator;
     pub use crate::simulate::laws::{consistent_with_laws, has_laws, law_names};
+    pub use crate::simulate::run::SolveWithEvents;
     pub use crate::simulate::solution::{Sampling, Solution};
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;

@@ -5,6 +5,7 @@
 
 #![allow(dead_code)]
 
+use dirac::State;
 use dirac::prelude::*;
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra_lm::{DVector, Dyn, OMatrix, Owned, U2, Vector2};

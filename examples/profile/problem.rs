@@ -15,6 +15,7 @@ use std::cell::{Cell as Counter, RefCell};
 use argmin::core::{CostFunction, Error, Executor, Gradient, State as _};
 use argmin::solver::linesearch::MoreThuenteLineSearch;
 use argmin::solver::quasinewton::LBFGS;
+use dirac::State;
 use dirac::adjoint::Objective;
 use dirac::prelude::*;
 

@@ -22,6 +22,7 @@ pub struct Run {
 /// ```
 /// use dirac::plot::work_precision;
 /// use dirac::prelude::*;
+/// use dirac::State;
 ///
 /// #[derive(LagrangeDirac)]
 /// #[dirac(coordinates(x => v), lagrangian = 0.5 * v * v - 0.5 * x * x)]

@@ -894,6 +894,7 @@ impl Circuit {
     /// `&mut` a clone of [`network`](Self::network)). It does not allocate.
     ///
     /// ```
+    /// use dirac::Drive;
     /// use dirac::prelude::*;
     ///
     /// let text = "an RC pulse\nV1 in 0 PULSE(0 1 1m 0.1m 0.1m 2m 5m)\nR1 in out 1k\nC1 out 0 1u\n.tran 0.1m 10m\n";

@@ -5,6 +5,7 @@
 //! agree to round-off, not to the tolerance); and central differences of whole simulations at
 //! perturbed parameters and initial values (to the tolerance).
 
+use dirac::State;
 use dirac::adjoint::{Objective, Recording};
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;

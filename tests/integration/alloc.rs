@@ -6,6 +6,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use dirac::prelude::*;
+use dirac::{Drive, Input, State};
 
 use crate::fmi::driven_pendulum;
 use crate::zoo::{self, *};

@@ -1,6 +1,7 @@
 //! The block-wise methods agree with the flat residual and Jacobian (each is its own generated
 //! schedule), the identities between blocks hold, and matrices are written sparsely.
 
+use dirac::State;
 use dirac::Storage;
 use dirac::nalgebra::{DMatrix, DefaultAllocator};
 use dirac::prelude::*;

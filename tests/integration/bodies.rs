@@ -1,6 +1,7 @@
 //! Rigid bodies in space (`dirac::components::bodies`) against closed forms: a free
 //! asymmetric body against Jacobi's elliptic-function solution of Euler's equations.
 
+use dirac::State;
 use dirac::components::bodies::RigidBody;
 use dirac::prelude::*;
 

@@ -5,6 +5,7 @@
 
 use std::ops::ControlFlow;
 
+use dirac::State;
 use dirac::prelude::*;
 use dirac::{Events, Impact};
 

@@ -12,6 +12,7 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
+use dirac::State;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
 use dirac::{ExplicitStats, RadauStats, Storage, VariationalStats};

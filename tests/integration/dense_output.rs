@@ -6,6 +6,7 @@
 //! Neither goes through dirac.
 
 use dirac::DenseOutput;
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::zoo::{BeadOnRod, Kepler, bead_exact, kepler_exact};

@@ -7,6 +7,7 @@
 use std::f64::consts::PI;
 use std::ops::ControlFlow;
 
+use dirac::State;
 use dirac::prelude::*;
 use dirac::{Crossing, Events};
 

@@ -9,6 +9,7 @@
 use std::ops::ControlFlow;
 
 use dirac::ExplicitStats;
+use dirac::State;
 use dirac::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use dirac::prelude::*;
 

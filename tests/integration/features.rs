@@ -14,6 +14,7 @@ use std::process::{Command, Output};
 
 /// A pendulum: a model of fixed size, what a first crate has.
 const PENDULUM: &str = r#"use dirac::prelude::*;
+use dirac::State;
 
 /// A planar pendulum in Cartesian coordinates, held on a circle by a rod.
 #[derive(LagrangeDirac)]

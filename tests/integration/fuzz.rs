@@ -7,6 +7,7 @@
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
+use dirac::State;
 use dirac::Storage;
 use dirac::prelude::*;
 

@@ -1,6 +1,7 @@
 //! Generated blocks of the pendulum (holonomic) and the rolling disk (nonholonomic) against
 //! derivations by hand, at seeded random states.
 
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::util::Rng;

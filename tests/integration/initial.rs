@@ -1,5 +1,6 @@
 //! Consistent initial states: projections, multipliers, and the errors when none exists.
 
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::zoo::*;

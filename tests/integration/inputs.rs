@@ -4,6 +4,7 @@
 //! interval by interval here, independently of dirac.
 
 use dirac::prelude::*;
+use dirac::{Input, State};
 
 use crate::zoo::{AdjustableMass, ForcedPair, ForcedSpring};
 

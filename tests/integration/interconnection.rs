@@ -6,6 +6,8 @@
 //! derivative gives μ (derived in `rack_and_pinion_is_the_geared_model`). The references are
 //! the monolithic models' generated equations, or formulas derived by hand.
 
+use dirac::Fixed;
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::util::Rng;

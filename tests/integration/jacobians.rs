@@ -1,6 +1,7 @@
 //! For every model in the zoo: the generated flat Jacobian equals central differences of the
 //! generated residual (the reference), at seeded random states.
 
+use dirac::State;
 use dirac::Storage;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;

@@ -8,6 +8,7 @@
 // The derives' accessors and constants of these models are not all read here.
 #![allow(dead_code)]
 
+use dirac::State;
 use dirac::components::bodies::RigidBody;
 use dirac::prelude::*;
 

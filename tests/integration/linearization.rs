@@ -4,6 +4,7 @@
 //! upright (A and B derived by hand below); and against simulated responses of the nonlinear
 //! model to small perturbations, propagated by the matrix exponential of the linear one.
 
+use dirac::State;
 use dirac::nalgebra::{DMatrix, DVector};
 use dirac::prelude::*;
 

@@ -2,6 +2,7 @@
 //! the variational integrator's general Newton path converges with its default options at
 //! every step size tried, and its error against Radau at tight tolerance falls as h².
 
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::zoo::*;

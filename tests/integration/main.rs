@@ -35,6 +35,7 @@ mod linearization;
 mod linkage;
 mod named_access;
 mod network;
+mod one_run;
 mod paper;
 mod plots;
 mod prescribed;

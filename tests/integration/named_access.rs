@@ -1,5 +1,7 @@
 //! Reading and writing q, v, p and λ by name, and the names a model reports.
 
+use dirac::Fixed;
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::zoo::{Pendulum, Primitive2, RollingDisk};

@@ -3,6 +3,7 @@
 
 use std::ops::ControlFlow;
 
+use dirac::State;
 use dirac::components::electrical::{
     Capacitor, CurrentSource, DampedSineVoltage, Ground as Gnd, IdealDiode, Inductor, Resistor, VoltageSource,
 };

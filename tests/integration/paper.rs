@@ -3,6 +3,7 @@
 //! until interconnected), checked at seeded random states. The references are the equations
 //! as printed in the paper.
 
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::util::Rng;

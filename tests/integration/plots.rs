@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::OnceLock;
 
+use dirac::State;
 use dirac::plot::{Animation, Figure, PlotError};
 use dirac::prelude::*;
 use dirac::{Event, EventContext, Events, RadauStats};

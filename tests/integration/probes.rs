@@ -6,6 +6,7 @@
 use std::sync::mpsc;
 use std::time::Duration;
 
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::every_method::{Fineness, Method};
@@ -77,7 +78,7 @@ where
     fn into_solution(self, start: &State<M>) -> Result<Solution<M, Self::Stats>, SimError>;
 }
 
-impl<I: Integrator<M>, M: LagrangeDirac> IntoSolution<M> for I
+impl<I: Integrator<M>, M: LagrangeDirac + Hybrid> IntoSolution<M> for I
 where
     DefaultAllocator: Storage<M>,
 {

@@ -5,6 +5,7 @@
 //! eigenproblem of (M, K) solved here with nalgebra's symmetric eigensolver; the LC circuit's
 //! is q = cos t; the rolling disk's energy is constant and its no-slip constraint exact.
 
+use dirac::State;
 use dirac::nalgebra::{Matrix3, SymmetricEigen, Vector3};
 use dirac::prelude::*;
 

@@ -7,6 +7,7 @@ use std::process::Command;
 use std::sync::OnceLock;
 
 use dirac::RadauStats;
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::zoo::ForcedSpring;

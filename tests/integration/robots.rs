@@ -7,6 +7,7 @@ use dirac::joint_space;
 use std::ops::ControlFlow;
 
 use dirac::Events;
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::every_method::{Fineness, Method};

@@ -5,6 +5,7 @@
 //! whole simulations against central differences of whole simulations at perturbed parameters
 //! and initial values, and against the closed-form solution of the harmonic oscillator.
 
+use dirac::State;
 use dirac::Storage;
 use dirac::nalgebra::DefaultAllocator;
 use dirac::prelude::*;
@@ -441,7 +442,7 @@ fn harmonic_oscillator_sensitivities_match_the_closed_form() {
 /// sensitivity's largest value and `floor`. The differences are extrapolated (Richardson) from
 /// steps `δ = 1e-3 θ` and `2δ`, so that their truncation error is `O(δ⁴)` and the noise of the
 /// adaptive step sequence at a tolerance of 1e-11, about `1e-11 / δ`, stays near 1e-8.
-fn check_against_simulations<M: Parameters + Clone>(
+fn check_against_simulations<M: Parameters + Hybrid + Clone>(
     model: &M,
     start: &dyn Fn(&M) -> State<M>,
     parameters: &[&str],

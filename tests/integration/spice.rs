@@ -1,6 +1,8 @@
 //! SPICE netlists read into run-time networks: a netlist with every supported element against
 //! a reference written and integrated independently here, the refusals, and a fuzzer.
 
+use dirac::Drive;
+use dirac::State;
 use dirac::components::electrical::{
     Capacitor, CoupledInductors, CurrentControlledCurrent, CurrentControlledVoltage, CurrentSource,
     DampedSineVoltage, Ground as Gnd, IdealDiode, Resistor, SensedVoltageSource, ShockleyDiode,

@@ -3,6 +3,7 @@
 //! References: the pendulum's published x(1), y(1) (DESIGN.md §3); the chain's exact modal
 //! solution; momentum maps from the models' symmetries (Noether); energy from the models.
 
+use dirac::State;
 use dirac::prelude::*;
 
 use crate::zoo::*;

@@ -2,6 +2,7 @@
 //! subsystems' sizes, not a chain of constants that once exceeded the compiler's query depth.
 
 use dirac::prelude::*;
+use dirac::Fixed;
 
 /// A mass on a spring between two ports.
 #[derive(LagrangeDirac)]

@@ -1,6 +1,7 @@
 //! Rigid bodies joined by joints, with the planar models they reduce to: shared by the
 //! integration tests (`tests/integration/bodies.rs`) and the `bodies` benchmark.
 
+use dirac::State;
 use dirac::components::bodies::RigidBody;
 use dirac::prelude::*;
 

@@ -4,6 +4,7 @@
 
 #![allow(dead_code)]
 
+use dirac::State;
 use dirac::prelude::*;
 
 pub mod bodies;

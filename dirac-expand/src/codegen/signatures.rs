@@ -10,45 +10,12 @@ pub fn rt() -> TokenStream {
     quote! { ::dirac::__private }
 }
 
-/// The `LagrangeDirac` item that lets a plain `solve` watch a model's unilateral constraints:
-/// `solve_with_events` with `Events::new().contacts(model)`, which needs the `Hybrid` impl the
-/// derives also emit (the runtime calls it only for models that declare such constraints).
-pub fn solve_with_contacts() -> TokenStream {
+/// The `LagrangeDirac` items that reach the `Hybrid` impl the derives also emit: sensitivities
+/// carried across events, and a consistent start with each law in the mode its state puts it
+/// in.
+pub fn hybrid_reach() -> TokenStream {
     let p = rt();
     quote! {
-        fn __solve_with_contacts<I: #p::Integrator<Self>>(
-            integrator: &mut I,
-            t0: ::core::primitive::f64,
-            state: &#p::State<Self>,
-            t_end: ::core::primitive::f64,
-            sampling: &#p::Sampling,
-        ) -> ::core::option::Option<
-            ::core::result::Result<#p::Solution<Self, <I as #p::Integrator<Self>>::Stats>, #p::SimError>,
-        > {
-            let mut events = #p::Events::new().contacts(#p::Integrator::model(integrator)).switches();
-            ::core::option::Option::Some(#p::SolveWithEvents::solve_with_events(
-                integrator,
-                t0,
-                state,
-                t_end,
-                sampling,
-                &mut events,
-                |_, _| ::core::ops::ControlFlow::Continue(()),
-            ))
-        }
-        fn __solve_with_sensitivities_through_events<I: #p::Integrator<Self>>(
-            integrator: &mut I,
-            t0: ::core::primitive::f64,
-            state: &#p::State<Self>,
-            t_end: ::core::primitive::f64,
-            sampling: &#p::Sampling,
-        ) -> ::core::option::Option<
-            ::core::result::Result<#p::Solution<Self, <I as #p::Integrator<Self>>::Stats>, #p::SimError>,
-        > {
-            ::core::option::Option::Some(#p::solve_with_sensitivities_through_events(
-                integrator, t0, state, t_end, sampling,
-            ))
-        }
         #[inline]
         fn __consistent_with_laws(
             &self,

@@ -29,7 +29,7 @@ use self::emit::Own;
 use self::items::{Targets, equations, inherent_items, names};
 use self::methods::{Methods, methods};
 use self::model::CompositeModel;
-use crate::codegen::signatures::{rt, solve_with_contacts};
+use crate::codegen::signatures::{hybrid_reach, rt};
 use crate::ctxt::Ctxt;
 use crate::expand::stub_impls;
 
@@ -159,7 +159,7 @@ fn implementation(
     linearity: TokenStream,
 ) -> TokenStream {
     let p = rt();
-    let solve_with_contacts = solve_with_contacts();
+    let hybrid_reach = hybrid_reach();
     let input_values = crate::expand::input_values();
     let ident = composite.ident;
     let own = Own { model, blocks };
@@ -198,7 +198,7 @@ fn implementation(
                 #consts
                 #core
                 #input_values
-                #solve_with_contacts
+                #hybrid_reach
             }
 
             #[automatically_derived]

@@ -289,39 +289,6 @@ where
         out
     }
 
-    /// A plain [`Integrator::solve`](crate::Integrator::solve) of a model that declares
-    /// unilateral constraints, with them watched: `solve_with_events` and
-    /// `Events::new().contacts(model)`, which the [`Hybrid`](crate::model::Hybrid) capability
-    /// allows and the plain solve's bounds do not name. The derives implement it; `None` from a
-    /// model that cannot, which the solve then refuses.
-    #[doc(hidden)]
-    fn __solve_with_contacts<I: crate::simulate::integrator::Integrator<Self>>(
-        integrator: &mut I,
-        t0: f64,
-        state: &State<Self>,
-        t_end: f64,
-        sampling: &crate::simulate::solution::Sampling,
-    ) -> Option<Result<crate::simulate::solution::Solution<Self, I::Stats>, crate::error::SimError>> {
-        let _ = (integrator, t0, state, t_end, sampling);
-        None
-    }
-
-    /// [`Integrator::solve_with_sensitivities`](crate::Integrator::solve_with_sensitivities)
-    /// of a model that declares unilateral constraints or has switching surfaces: the
-    /// sensitivities carried across each impact and each crossing by its jump. The derives
-    /// implement it; `None` from a model that cannot, which the solve then refuses.
-    #[doc(hidden)]
-    fn __solve_with_sensitivities_through_events<I: crate::simulate::integrator::Integrator<Self>>(
-        integrator: &mut I,
-        t0: f64,
-        state: &State<Self>,
-        t_end: f64,
-        sampling: &crate::simulate::solution::Sampling,
-    ) -> Option<Result<crate::simulate::solution::Solution<Self, I::Stats>, crate::error::SimError>> {
-        let _ = (integrator, t0, state, t_end, sampling);
-        None
-    }
-
     /// [`consistent_state`](crate::consistent_state) of a model with friction laws or ideal
     /// diodes, each law's mode chosen from the state (which needs the model's event functions,
     /// of the [`Hybrid`](crate::model::Hybrid) capability). The derives implement it; `None`
@@ -341,8 +308,11 @@ where
 
 /// A model of fixed size with dense storage on the stack: every model `#[derive(LagrangeDirac)]`
 /// makes and every composite of named subsystems. Generic code over such models may use
-/// nalgebra's dense matrices on its blocks (`MatQQ::<M>::zeros()`, `a.transpose() * λ`).
-pub trait DenseModel: LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed
+/// nalgebra's dense matrices on its blocks (`MatQQ::<M>::zeros()`, `a.transpose() * λ`), and
+/// run it ([`Integrator::solve`](crate::Integrator::solve) watches a model's contacts and laws,
+/// which the [`Hybrid`](crate::model::Hybrid) capability every such model has declares).
+pub trait DenseModel:
+    LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed + crate::model::Hybrid
 where
     DefaultAllocator: Storage<Self>,
 {
@@ -350,7 +320,7 @@ where
 
 impl<M> DenseModel for M
 where
-    M: LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed,
+    M: LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed + crate::model::Hybrid,
     DefaultAllocator: Storage<M>,
 {
 }

@@ -207,21 +207,6 @@ impl LagrangeDirac for Network {
         self.sizes
     }
 
-    /// The parts' laws and switching surfaces watched, their events read from the parts.
-    fn __solve_with_contacts<I: crate::simulate::integrator::Integrator<Self>>(
-        integrator: &mut I,
-        t0: f64,
-        state: &crate::model::state::State<Self>,
-        t_end: f64,
-        sampling: &crate::simulate::solution::Sampling,
-    ) -> Option<Result<crate::simulate::solution::Solution<Self, I::Stats>, crate::error::SimError>> {
-        use crate::simulate::events::SolveWithEvents;
-        let mut events = crate::simulate::events::Events::new().switches_in(integrator.model());
-        Some(integrator.solve_with_events(t0, state, t_end, sampling, &mut events, |_, _| {
-            std::ops::ControlFlow::Continue(())
-        }))
-    }
-
     fn __consistent_with_laws(
         &self,
         t: f64,

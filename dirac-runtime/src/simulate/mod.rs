@@ -24,6 +24,9 @@ pub(crate) mod parquet;
 pub mod progress;
 pub(crate) mod recorder;
 pub(crate) mod restart;
+/// One run: samples, events, a controller, an observer and a progress report together.
+pub mod run;
+pub mod sensitive;
 pub mod sensitivity;
 /// Simulation results with named series.
 pub mod solution;

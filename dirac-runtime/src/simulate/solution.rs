@@ -403,7 +403,7 @@ where
         self.contact_names.get(impact.contact).map_or("a contact", String::as_str)
     }
 
-    /// The events located, in time order ([`SolveWithEvents::solve_with_events`](crate::simulate::events::SolveWithEvents::solve_with_events)).
+    /// The events located, in time order ([`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events)).
     pub fn events(&self) -> &[Event] {
         &self.events
     }

@@ -3,9 +3,11 @@
 //! series of free fall, and each impulse the momentum the law reverses, `m (1 + e) |v⁻|`.
 
 use std::ops::ControlFlow;
+use std::time::Duration;
 
+use dirac::State;
 use dirac::prelude::*;
-use dirac::{Events, Impact};
+use dirac::{Events, Impact, Solution};
 
 use super::{Fineness, Method};
 use crate::zoo::BouncingBall;
@@ -68,46 +70,51 @@ fn a_ball_bounces_on_its_declared_floor_under_every_method() {
     });
 }
 
-/// A declared floor is never passed unannounced: a plain solve watches it (the ball bounces
-/// off it), a sampled-controller solve, an observed solve and a solve with events that watch
-/// nothing end at once in a typed error naming the floor and the two ways on; with
-/// `Events::free_motion()` the ball falls through it, as asked.
+/// A declared floor is never passed unannounced: every run watches it (a plain solve, a
+/// sampled-controller solve, an observed one, one with progress, one with events that watch
+/// nothing else), and the ball bounces off it once in the first second, at the touchdown of free
+/// fall, `√(2 h0/g)`; with `Events::free_motion()` the ball falls through it, as asked.
 #[test]
 fn no_solve_passes_through_a_declared_floor_unannounced() {
-    let ball = BouncingBall { m: 0.3, g: G, e: 0.8 };
+    let mut ball = BouncingBall { m: 0.3, g: G, e: 0.8 };
     let mut start = State::<BouncingBall>::zeros();
     start.set_q(BouncingBall::Y, 1.0);
-    let refused = |method: Method, result: Result<(), SimError>| match result {
-        Err(SimError::InvalidOption { what: "contacts", reason }) => {
-            assert!(
-                reason.contains("`floor`") && reason.contains("Events::new().contacts(&model)"),
-                "{reason}"
-            );
-            assert!(reason.contains("free_motion()"), "{reason}");
-        }
-        other => panic!("{method:?}: {other:?}"),
-    };
-    each_integrator!(&ball, Fineness::new(1e-8, 1e-8, 0.01), |method, integrator| {
-        let bounced = integrator
-            .solve(0.0, &start, 1.0, &Sampling::Every(0.01))
-            .unwrap_or_else(|error| panic!("{method:?}: {error}"));
+    fn bounced<S>(method: Method, how: &str, solution: Result<Solution<BouncingBall, S>, SimError>) {
+        let solution = solution.unwrap_or_else(|error| panic!("{method:?}, {how}: {error}"));
         // The touchdown at √(2 h0/g) = 0.4515 s; the next, 2 · 0.8 · 0.4515 s later, is past 1 s.
-        let impacts = bounced.impacts_at("floor").expect("the floor");
-        assert_eq!(impacts.len(), 1, "{method:?}: {impacts:?}");
-        assert!((impacts[0].t - (2.0 / G).sqrt()).abs() < 1e-7, "{method:?}: {impacts:?}");
-        let lowest = bounced.q(BouncingBall::Y).iter().copied().fold(f64::INFINITY, f64::min);
-        assert!(lowest > -1e-9, "{method:?}: {lowest}");
-        let observed =
-            integrator.solve_observed(0.0, &start, 1.0, &Sampling::Steps, |_, _| ControlFlow::Continue(()));
-        refused(method, observed.map(|_| ()));
-        let sampled = integrator.solve_sampled(0.0, &start, 1.0, 0.1, &Sampling::Steps, |_, _, _| {});
-        refused(method, sampled.map(|_| ()));
+        let impacts = solution.impacts_at("floor").expect("the floor");
+        assert_eq!(impacts.len(), 1, "{method:?}, {how}: {impacts:?}");
+        assert!((impacts[0].t - (2.0 / G).sqrt()).abs() < 1e-7, "{method:?}, {how}: {impacts:?}");
+        let lowest = solution.q(BouncingBall::Y).iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(lowest > -1e-9, "{method:?}, {how}: {lowest}");
+    }
+    each_integrator!(&mut ball, Fineness::new(1e-8, 1e-8, 0.01), |method, integrator| {
+        let plain = integrator.solve(0.0, &start, 1.0, &Sampling::Every(0.01));
+        bounced(method, "solve", plain);
+        let mut steps = 0;
+        let observed = integrator.solve_observed(0.0, &start, 1.0, &Sampling::Steps, |_, _| {
+            steps += 1;
+            ControlFlow::Continue(())
+        });
+        bounced(method, "solve_observed", observed);
+        assert!(steps > 2, "{method:?}: the observer saw {steps} steps");
+        let mut samples = 0;
+        let sampled =
+            integrator.solve_sampled(0.0, &start, 1.0, 0.1, &Sampling::Steps, |_, _, _| samples += 1);
+        bounced(method, "solve_sampled", sampled);
+        assert_eq!(samples, 10, "{method:?}: samples at 0, 0.1, …, 0.9");
+        let mut reports = 0;
+        let progress =
+            integrator
+                .solve_with_progress(0.0, &start, 1.0, &Sampling::Steps, Duration::ZERO, |_| reports += 1);
+        bounced(method, "solve_with_progress", progress);
+        assert!(reports > 2, "{method:?}: {reports} reports");
         let mut events = Events::new();
         let watched_nothing =
             integrator.solve_with_events(0.0, &start, 1.0, &Sampling::Steps, &mut events, |_, _| {
                 ControlFlow::Continue(())
             });
-        refused(method, watched_nothing.map(|_| ()));
+        bounced(method, "solve_with_events", watched_nothing);
         // The opt-out: free fall through the floor, y = 1 − g t²/2 = −3.905 at t = 1.
         let mut events = Events::new().free_motion();
         let free = integrator

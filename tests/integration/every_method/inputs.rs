@@ -4,6 +4,7 @@
 //! piecewise in closed form for an input held constant over each interval.
 
 use dirac::prelude::*;
+use dirac::{Drive, State};
 
 use super::{Fineness, Method};
 use crate::zoo::ForcedSpring;

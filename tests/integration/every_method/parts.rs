@@ -5,6 +5,8 @@
 //! torque) sum to zero: Kirchhoff's current law and Newton's third law at every node, with no
 //! equation written for them.
 
+use dirac::Drive;
+use dirac::State;
 use dirac::components::electrical::{Capacitor, Ground, Inductor, Resistor, StepVoltage, VoltageSource};
 use dirac::components::electromechanical::Emf;
 use dirac::components::rotational::{self as rot, Clutch, IdealGear, Inertia, Torque};

@@ -2,6 +2,7 @@
 
 use std::time::Duration;
 
+use dirac::State;
 use dirac::prelude::*;
 
 use super::Fineness;

@@ -10,6 +10,7 @@ use std::f64::consts::PI;
 use std::ops::ControlFlow;
 
 use dirac::EventContext;
+use dirac::State;
 use dirac::prelude::*;
 
 use super::{Fineness, Method};

@@ -1,4 +1,4 @@
-use dirac::prelude::*;
+use dirac::prelude::*; use dirac::State;
 
 #[derive(LagrangeDirac)]
 #[dirac(coordinates(x1 => v1, x2 => v2), port(x2))]

@@ -1,4 +1,4 @@
-use dirac::prelude::*;
+use dirac::prelude::*; use dirac::State;
 
 /// Three independent mistakes are all reported, and using the model afterwards adds no error.
 #[derive(LagrangeDirac)]

@@ -10,6 +10,7 @@ use crate::model::state::State;
 use crate::model::{LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::simulate::integrator::Integrator;
+use crate::simulate::sensitive::Sensitive;
 use crate::simulate::sensitivity::Sensitivities;
 
 impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Integrator<M> for Radau<'_, M, S>
@@ -19,59 +20,6 @@ where
     type Stats = RadauStats;
 
     const NAME: &'static str = "Radau";
-
-    const SENSITIVITIES: bool = true;
-
-    fn carry_sensitivities(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
-    where
-        M: Parameters,
-    {
-        self.carry(wrt)
-    }
-
-    fn sensitivity_names(&self) -> &[String] {
-        &self.sensitivity_names
-    }
-
-    fn sensitivity(&self, j: usize, out: &mut State<M>) -> bool {
-        self.sensitivity_now(j, out)
-    }
-
-    fn interpolate_sensitivity(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
-        self.sensitivity_within(j, t, out)
-    }
-
-    fn sensitivity_parameter(&self, j: usize) -> Option<usize> {
-        match self.forward.as_deref().filter(|forward| j < forward.len()).map(|forward| forward.wrt(j)) {
-            Some(crate::simulate::sensitivity::Wrt::Parameter(k)) => Some(k),
-            _ => None,
-        }
-    }
-
-    fn restart_with_sensitivities(
-        &mut self,
-        t: f64,
-        state: &State<M>,
-        sensitivities: &[State<M>],
-    ) -> Result<(), SimError> {
-        let Some(forward) = self.forward.as_deref_mut() else {
-            return self.restart_at(t, state);
-        };
-        if sensitivities.len() != forward.len() {
-            return Err(SimError::InvalidOption {
-                what: "sensitivities",
-                reason: format!("{} given at the restart, {} carried", sensitivities.len(), forward.len()),
-            });
-        }
-        for (j, s) in sensitivities.iter().enumerate() {
-            forward.set_value(j, s);
-        }
-        self.restart_state(t, state)
-    }
-
-    fn complete_initial_sensitivity(&self, j: usize, out: &mut State<M>) {
-        self.initial_multipliers(j, out);
-    }
 
     fn model(&self) -> &M {
         self.model.get()
@@ -253,5 +201,61 @@ where
         // and a simplified Newton iteration on the old mode's matrix can stop early with a
         // wrong state that the error estimate does not see.
         self.begin(t, self.residual.stops.goal(), true)
+    }
+}
+
+impl<M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Sensitive<M> for Radau<'_, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn carry_sensitivities(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
+    where
+        M: Parameters,
+    {
+        self.carry(wrt)
+    }
+
+    fn sensitivity_names(&self) -> &[String] {
+        &self.sensitivity_names
+    }
+
+    fn sensitivity(&self, j: usize, out: &mut State<M>) -> bool {
+        self.sensitivity_now(j, out)
+    }
+
+    fn interpolate_sensitivity(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
+        self.sensitivity_within(j, t, out)
+    }
+
+    fn sensitivity_parameter(&self, j: usize) -> Option<usize> {
+        match self.forward.as_deref().filter(|forward| j < forward.len()).map(|forward| forward.wrt(j)) {
+            Some(crate::simulate::sensitivity::Wrt::Parameter(k)) => Some(k),
+            _ => None,
+        }
+    }
+
+    fn restart_with_sensitivities(
+        &mut self,
+        t: f64,
+        state: &State<M>,
+        sensitivities: &[State<M>],
+    ) -> Result<(), SimError> {
+        let Some(forward) = self.forward.as_deref_mut() else {
+            return self.restart_at(t, state);
+        };
+        if sensitivities.len() != forward.len() {
+            return Err(SimError::InvalidOption {
+                what: "sensitivities",
+                reason: format!("{} given at the restart, {} carried", sensitivities.len(), forward.len()),
+            });
+        }
+        for (j, s) in sensitivities.iter().enumerate() {
+            forward.set_value(j, s);
+        }
+        self.restart_state(t, state)
+    }
+
+    fn complete_initial_sensitivity(&self, j: usize, out: &mut State<M>) {
+        self.initial_multipliers(j, out);
     }
 }

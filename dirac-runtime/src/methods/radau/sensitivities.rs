@@ -1,6 +1,6 @@
 //! The forward sensitivities of a Radau integration, as its users see them: asked for with
-//! [`Radau::with_sensitivities`] (or [`Integrator::carry_sensitivities`]), read step by step,
-//! or recorded in a [`Solution`](crate::Solution) by [`Integrator::solve_with_sensitivities`].
+//! [`Radau::with_sensitivities`] (or [`Sensitive::carry_sensitivities`]), read step by step,
+//! or recorded in a [`Solution`](crate::Solution) by [`Sensitive::solve_with_sensitivities`].
 
 use nalgebra::DefaultAllocator;
 
@@ -11,7 +11,7 @@ use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Storage, VecY};
-use crate::simulate::integrator::Integrator;
+use crate::simulate::sensitive::Sensitive;
 use crate::simulate::sensitivity::{Initial, Sensitivities};
 
 impl<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'m, M, S>
@@ -22,9 +22,9 @@ where
     /// `wrt`'s parameters and initial values alongside it (the staggered direct method: each
     /// step's sensitivities are solved with the step's factored iteration matrix, once its
     /// state has converged). Their initial values are made consistent at the start; read them
-    /// with [`Integrator::sensitivity`], or record them with
-    /// [`Integrator::solve_with_sensitivities`]. The same as
-    /// [`Integrator::carry_sensitivities`], as a builder.
+    /// with [`Sensitive::sensitivity`], or record them with
+    /// [`Sensitive::solve_with_sensitivities`]. The same as
+    /// [`Sensitive::carry_sensitivities`], as a builder.
     ///
     /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
     /// projection's derivative is not carried) or with no sensitivity asked for.
@@ -36,7 +36,7 @@ where
         Ok(self)
     }
 
-    /// [`Integrator::carry_sensitivities`].
+    /// [`Sensitive::carry_sensitivities`].
     pub(super) fn carry(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
     where
         M: Parameters,
@@ -56,7 +56,7 @@ where
         Ok(())
     }
 
-    /// [`Integrator::sensitivity`].
+    /// [`Sensitive::sensitivity`].
     pub(super) fn sensitivity_now(&self, j: usize, out: &mut State<M>) -> bool {
         match &self.forward {
             Some(forward) if j < forward.len() => {
@@ -67,7 +67,7 @@ where
         }
     }
 
-    /// [`Integrator::interpolate_sensitivity`]: the collocation polynomial of the stages.
+    /// [`Sensitive::interpolate_sensitivity`]: the collocation polynomial of the stages.
     pub(super) fn sensitivity_within(&self, j: usize, t: f64, out: &mut State<M>) -> bool {
         match &self.forward {
             Some(forward) if j < forward.len() => {
@@ -82,7 +82,7 @@ where
         }
     }
 
-    /// [`Integrator::complete_initial_sensitivity`]: the multipliers' sensitivities at the
+    /// [`Sensitive::complete_initial_sensitivity`]: the multipliers' sensitivities at the
     /// start, extrapolated from the first step's stages.
     pub(super) fn initial_multipliers(&self, j: usize, out: &mut State<M>) {
         if let Some(forward) = self.forward.as_deref()

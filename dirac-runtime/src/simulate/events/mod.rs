@@ -2,7 +2,7 @@
 //! between steps, on the integrator's dense output, to round-off in `t`.
 //!
 //! [`Events`] holds the functions and locates their crossings after each step
-//! ([`Events::locate`], which allocates nothing); [`SolveWithEvents::solve_with_events`] runs a whole
+//! ([`Events::locate`], which allocates nothing); [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) runs a whole
 //! integration with them, hands each event to the user's action in time order, and restarts
 //! from a consistent state when the action reset the state or changed the model.
 //!
@@ -23,10 +23,10 @@ use crate::simulate::solution::{Crossing, Event};
 
 mod locate;
 pub mod sensitivities;
-mod solve;
+pub(crate) mod solve;
 mod timed;
 
-pub use self::solve::{EventContext, SolveWithEvents};
+pub use self::solve::EventContext;
 
 /// An event function: `g(t, state, model)`.
 type EventFunction<'e, M> = Box<dyn FnMut(f64, &State<M>, &M) -> f64 + 'e>;
@@ -71,13 +71,13 @@ where
     evaluations: usize,
     /// The model's unilateral constraints, when watched ([`Events::contacts`]), and which
     /// of them each event function is.
-    contacts: Option<Contacts>,
+    pub(crate) contacts: Option<Contacts>,
     /// Whether the model's unilateral constraints are left unwatched on purpose
     /// ([`Events::free_motion`]).
     pub(crate) free_motion: bool,
-    contact_of: Vec<Option<usize>>,
+    pub(crate) contact_of: Vec<Option<usize>>,
     /// The contact each release event function opens (in a companion whose contacts rest).
-    release_of: Vec<Option<usize>>,
+    pub(crate) release_of: Vec<Option<usize>>,
     /// Functions restarted at zero by an impact that reopened their contact: they count as
     /// positive there, so that a closing again within the same step is seen.
     reopened: Vec<bool>,
@@ -217,7 +217,7 @@ where
     }
 
     /// The index among the unilateral constraints of the contact called `name`.
-    fn contact_index(&self, name: &str) -> Option<usize> {
+    pub(crate) fn contact_index(&self, name: &str) -> Option<usize> {
         self.contacts.as_ref()?.names.iter().position(|n| n == name)
     }
 
@@ -272,7 +272,7 @@ where
     /// Adds the switching surfaces of the model's non-smooth functions and conditionals
     /// (`abs`, `min`, `max`, `clamp`, `signum`, `if a > b { … } else { … }` in its Lagrangian,
     /// forces or constraints; `switch0`, … by name, dotted in an interconnection): at each
-    /// crossing, [`SolveWithEvents::solve_with_events`] restarts the integration, so that no
+    /// crossing, [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) restarts the integration, so that no
     /// step reaches across the kink. A plain [`Integrator::solve`](crate::Integrator::solve)
     /// adds them itself; [`Events::declared`] has them among the declared events.
     ///
@@ -290,6 +290,25 @@ where
     /// of a [`Network`](crate::network::Network), as well as a derived model's.
     pub fn switches_in(self, model: &M) -> Self {
         self.add_declared(model.event_declarations(), Which::Switches, |_| laws::laws(model))
+    }
+
+    /// Adds what makes `model`'s motion piecewise that these events leave unwatched: its
+    /// unilateral constraints (unless [`free_motion`](Self::free_motion) asked for the motion
+    /// without them), its laws, and, with `surfaces`, its switching surfaces. What every run
+    /// watches ([`Run`](crate::simulate::run::Run)); an error where the laws are half watched
+    /// (`switches()` on a network, whose parts declare them: `switches_in(&network)` reads them).
+    pub(crate) fn watch_model(mut self, model: &M, surfaces: bool) -> Result<Self, SimError> {
+        if self.contacts.is_none() && !self.free_motion && !model.unilateral_names().is_empty() {
+            self = self.contacts(model);
+        }
+        let laws = laws::has_laws(model);
+        if self.all_declared.is_none() && (laws || (surfaces && model.has_switches())) {
+            self = self.switches_in(model);
+        }
+        if laws && !self.watches_laws(model) {
+            return Err(solve::unwatched_laws(model));
+        }
+        Ok(self)
     }
 
     /// Watches the declared events `declared` (all, or the switching surfaces and laws only),
@@ -326,7 +345,7 @@ where
     }
 
     /// Marks the watched functions that switch one of the model's laws (`friction`, `diode`),
-    /// which [`SolveWithEvents::solve_with_events`] then switches at their events.
+    /// which [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) then switches at their events.
     fn watch_laws(mut self, laws: Vec<Law>) -> Self {
         if laws.is_empty() {
             return self;
@@ -361,7 +380,13 @@ where
 
     /// Switches the law of event `k` at `t` in `state`, the state there, leaving it consistent
     /// in the law's new mode; whether `k` is a law's event.
-    fn switch_law(&mut self, model: &M, k: usize, t: f64, state: &mut State<M>) -> Result<bool, SimError> {
+    pub(crate) fn switch_law(
+        &mut self,
+        model: &M,
+        k: usize,
+        t: f64,
+        state: &mut State<M>,
+    ) -> Result<bool, SimError> {
         let Some(switch) = self.law_of[k] else { return Ok(false) };
         let (l, engage) = match switch {
             Switch::Engage(l) => (l, true),
@@ -393,7 +418,7 @@ where
 
     /// Adds the model's unilateral constraints (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`), each
     /// an event of its own name when `φ` falls through zero. At such an event
-    /// [`SolveWithEvents::solve_with_events`] applies the impact law before the action: the
+    /// [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) applies the impact law before the action: the
     /// momentum jumps along the constraint's one-form, `p⁺ = p⁻ + Λ ∂φ/∂q`, so that the normal
     /// velocity is reversed and scaled by the restitution `e`, `∂φ/∂q v⁺ = −e ∂φ/∂q v⁻`,
     /// with the model's own constraints kept; contacts that close at once share one law. The
@@ -450,7 +475,13 @@ where
     /// is closed there too (`φ ≤ 0` at the event: its event pending at the same time, or
     /// touching zero exactly): `state`'s velocities change by the impact law; the impulses
     /// are returned.
-    fn impact(&mut self, model: &M, k: usize, t: f64, state: &mut State<M>) -> Result<Impacts, SimError> {
+    pub(crate) fn impact(
+        &mut self,
+        model: &M,
+        k: usize,
+        t: f64,
+        state: &mut State<M>,
+    ) -> Result<Impacts, SimError> {
         let contact = self.contact_of[k].expect("event k watches a contact");
         let mut closing = vec![contact];
         for j in 0..self.functions.len() {

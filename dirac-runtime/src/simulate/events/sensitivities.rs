@@ -12,17 +12,17 @@ use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::simulate::impact::{Saltation, saltation};
-use crate::simulate::integrator::{Integrator, SensitivityRows};
 use crate::simulate::law_jump::law_jump;
 use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::restart_nearest_with;
+use crate::simulate::sensitive::{Sensitive, SensitivityRows};
 use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 use crate::simulate::surface::surface_jump;
 
-/// [`Integrator::solve_with_sensitivities`] of a model with unilateral constraints, switching
+/// [`Sensitive::solve_with_sensitivities`] of a model with unilateral constraints, switching
 /// surfaces or laws: the integration watches the contacts, locates the surfaces and switches
-/// the laws as [`Integrator::solve`] does. At each law's switch every sensitivity jumps as at a
+/// the laws as [`Integrator::solve`](crate::Integrator::solve) does. At each law's switch every sensitivity jumps as at a
 /// surface, with the rates of the old mode and the new (see the `law_jump` module). At each crossing of a
 /// surface every sensitivity's velocities jump by `(v̇⁻ − v̇⁺) ∂t*/∂x s` plus, for a parameter,
 /// `(v̇⁻ − v̇⁺) ∂t*/∂θ` (the jump of the rate times the crossing's shift; see the
@@ -35,7 +35,7 @@ use crate::simulate::surface::surface_jump;
 /// A contact that comes to rest ends the integration in [`SimError::ContactCloses`], as
 /// without sensitivities (resting contacts would switch the model's constraints, whose
 /// sensitivities' jump is not carried).
-pub fn solve_with_sensitivities_through_events<M: Hybrid + Parameters, I: Integrator<M>>(
+pub fn solve_with_sensitivities_through_events<M: Hybrid + Parameters, I: Sensitive<M>>(
     integrator: &mut I,
     t0: f64,
     state: &State<M>,
@@ -224,7 +224,7 @@ where
 /// Each sensitivity just before the jump at `t`, carried across it, into `out`: positions and
 /// velocities by its saltation matrix (and a parameter's column), momenta by the Legendre map
 /// at the state after it ([`momenta`]), multipliers zero.
-fn carry<M: Hybrid + Parameters, I: Integrator<M>>(
+fn carry<M: Hybrid + Parameters, I: Sensitive<M>>(
     integrator: &I,
     jump: &Jump<M>,
     t: f64,
@@ -252,7 +252,7 @@ fn carry<M: Hybrid + Parameters, I: Integrator<M>>(
 
 /// The momenta's part of each sensitivity in `out`, from its positions' and velocities' by the
 /// Legendre map at the state `after`: `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`.
-fn momenta<M: Hybrid + Parameters, I: Integrator<M>>(
+fn momenta<M: Hybrid + Parameters, I: Sensitive<M>>(
     integrator: &I,
     t: f64,
     after: &State<M>,

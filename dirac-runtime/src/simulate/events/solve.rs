@@ -1,24 +1,19 @@
-//! A whole integration with events: each crossing handed to the user's action in time order,
-//! impacts applied at contacts, and a restart from a consistent state where the action
-//! reset the state or changed the model.
-
-use std::ops::ControlFlow;
+//! What crossing an event does beyond the events themselves: the context an action sees, a
+//! contact brought to rest, a restart from a consistent state where an action reset the state
+//! or changed the model, and the errors naming what slid or went unwatched.
 
 use nalgebra::DefaultAllocator;
 
 use super::Events;
-use crate::analysis::diagnose::{CheckRoom, check_constraints_kept};
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::{Integrator, refuse_unwatched_contacts};
+use crate::simulate::integrator::Integrator;
 use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::constraint_violation;
-use crate::simulate::restart::restart_at_nearest;
-use crate::simulate::solution::{Event, Impact, Sampling, Solution};
 
 /// What an event's action may do: read the event's time and state, reset the state, change
 /// the model (if the integrator holds it exclusively).
@@ -29,13 +24,13 @@ where
     t: f64,
     state: &'a mut State<M>,
     integrator: &'a mut I,
-    reset: bool,
+    pub(crate) reset: bool,
     /// How far the state was from the constraints before the model was first handed out.
     before: Option<f64>,
     /// The impulse of the event's contact, when the event is an impact.
-    impulse: Option<f64>,
+    pub(crate) impulse: Option<f64>,
     /// Whether the action asked for the state or the model to change.
-    touched: bool,
+    pub(crate) touched: bool,
 }
 
 impl<'a, M: LagrangeDirac, I: Integrator<M>> EventContext<'a, M, I>
@@ -100,189 +95,9 @@ where
     }
 }
 
-/// Running an integration with events: implemented for every [`Integrator`] (and in the
-/// facade's prelude).
-pub trait SolveWithEvents<M: Hybrid>: Integrator<M> + Sized
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// [`Integrator::solve`] with events: after each step, the crossings of the `events`'
-    /// functions within it are located on the dense output and handed to `action` in time
-    /// order, with an [`EventContext`] to read the state at the event, reset it
-    /// ([`EventContext::state_mut`]) or change the model ([`EventContext::model_mut`]).
-    ///
-    /// - An action that changes nothing costs no restart: the search goes on within the step.
-    /// - After a reset or a change, the integration restarts at the event from the consistent
-    ///   state nearest to the one the action left ([`consistent_state`](crate::consistent_state)).
-    /// - `ControlFlow::Break(())` ends the solution at the event (the integrator itself stays
-    ///   at the end of the step that held it; [`Integrator::restart_at`] moves it back).
-    ///
-    /// The solution records every event ([`Solution::events`](crate::simulate::solution::Solution::events)) and, unless it samples at
-    /// chosen times, the state at each event, twice when the action reset it (before, then
-    /// after). The [`Events`] type has an example.
-    fn solve_with_events(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        sampling: &Sampling,
-        events: &mut Events<'_, M>,
-        mut action: impl FnMut(&Event, &mut EventContext<'_, M, Self>) -> ControlFlow<()>,
-    ) -> Result<Solution<M, Self::Stats>, SimError> {
-        if events.contacts.is_none() && !events.free_motion {
-            refuse_unwatched_contacts(self.model())?;
-        }
-        let mut recorder = Recorder::new(self.model(), sampling, t0, t_end)?;
-        recorder.name_events(events.names());
-        if let Some(contacts) = &events.contacts {
-            recorder.name_contacts(&contacts.names);
-        }
-        // Each law starts in the mode the state puts it in (the start made consistent there, if
-        // the state held another).
-        if laws::has_laws(self.model()) && !events.watches_laws(self.model()) {
-            return Err(unwatched_laws(self.model()));
-        }
-        let chosen = laws::start_in_modes(self.model(), t0, state)?;
-        let state = chosen.as_ref().unwrap_or(state);
-        self.start(t0, state, t_end)?;
-        events.begin(self.model(), t0, self.state())?;
-        recorder.record_initial(self.model(), t0, self.state());
-        let mut after = state.clone();
-        // A timed switch at zero at the start (a pulse's first edge at `t0`): the run goes on
-        // from the first time after it, on its other side, from the consistent state nearest.
-        if let Some(t) = events.start_across(self)? {
-            after.clone_from(self.state());
-            if self.start(t, &after, t_end).is_err() {
-                after = project(self.model(), t, &after.q, &after.v, Consistency::default())?;
-                self.start(t, &after, t_end)?;
-            }
-            events.resume(self.model(), t, &after)?;
-        }
-        let mut reopened = Vec::new();
-        while !self.finished() {
-            events.bound_step(self)?;
-            if let Err(error) = self.step() {
-                // A step that fails where impacts accumulate fails because of them: the contact
-                // comes to rest where the integrator stands, if it can.
-                let Some(j) = (match (&error, &events.contacts) {
-                    (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) => contacts.zeno(*t),
-                    _ => None,
-                }) else {
-                    return Err(sliding(self, events, error));
-                };
-                rest_where_it_stands(self, events, &mut recorder, j)?;
-                continue;
-            }
-            let mut restarted = false;
-            loop {
-                let event = match events.locate(self) {
-                    Ok(Some(event)) => event,
-                    Ok(None) => break,
-                    // A contact pressed in without an impact rests from the step's end, if it can.
-                    Err(SimError::ContactCloses { contact, t_limit: None, .. })
-                        if events
-                            .contact_index(&contact)
-                            .is_some_and(|j| self.model().contact_row(j).is_some()) =>
-                    {
-                        let j = events.contact_index(&contact).expect("just found");
-                        rest_where_it_stands(self, events, &mut recorder, j)?;
-                        restarted = true;
-                        break;
-                    }
-                    Err(error) => return Err(error),
-                };
-                let t = event.t;
-                recorder.record_step(self.model(), t, events.state(), |ts, out| self.interpolate(ts, out));
-                recorder.record_event(self.model(), event, events.state());
-                after.clone_from(events.state());
-                let mut impulse = None;
-                let mut switched = false;
-                reopened.clear();
-                if let Some(contact) = events.contact_of[event.index] {
-                    let impacts = events.impact(self.model(), event.index, t, &mut after)?;
-                    for &(j, lambda) in &impacts.impulses {
-                        recorder.record_impact(Impact { contact: j, t, impulse: lambda });
-                        if lambda > 0.0 {
-                            reopened.push(j);
-                        }
-                        if j == contact {
-                            impulse = Some(lambda);
-                        }
-                    }
-                    if let Some(j) = impacts.resting {
-                        // Left at rest: the contact closes, if it can, and the restart
-                        // projects the state onto it (a plastic impact).
-                        if !close(self, j, true) {
-                            let contacts =
-                                events.contacts.as_ref().expect("contact events come with their contacts");
-                            return Err(contacts.closes(j, t));
-                        }
-                        events.contacts.as_mut().expect("contact events come with their contacts").rested(j);
-                        reopened.retain(|&c| c != j);
-                        switched = true;
-                    }
-                }
-                if let Some(j) = events.release_of[event.index] {
-                    switched |= close(self, j, false);
-                }
-                // A law switches its mode: the state is made consistent in the new one.
-                let law = events.switch_law(self.model(), event.index, t, &mut after)?;
-                // Consistent already, unless an impact or a contact changed it too.
-                let consistent = law && !switched && reopened.is_empty();
-                switched |= law;
-                let mut context = EventContext::new(t, &mut after, self);
-                context.impulse = impulse;
-                context.reset = !reopened.is_empty() || switched;
-                let flow = action(&event, &mut context);
-                let (reset, before) = context.changes();
-                let context_touched = context.touched;
-                if flow.is_break() {
-                    return recorder.finish_from(self);
-                }
-                if !(reset || before.is_some()) && events.switch_of[event.index] {
-                    // A switching surface: the step that reached across it is cut there, and the
-                    // integration goes on from the state at the crossing, on the other side.
-                    // The interpolated state is the step's, on the constraints as its steps are;
-                    // where the integrator's own check refuses it, from the consistent state
-                    // nearest to it.
-                    restart_at_nearest(self, t, &mut after)?;
-                    events.resume(self.model(), t, &after)?;
-                    restarted = true;
-                    break;
-                }
-                if reset || before.is_some() {
-                    if let (false, Some(before)) = (reset, before) {
-                        check_constraints_kept(
-                            self.model(),
-                            t,
-                            &after,
-                            before,
-                            &mut CheckRoom::new(self.model()),
-                        )?;
-                    }
-                    if consistent && !context_touched {
-                        restart_consistent(self, events, &mut recorder, t, &after)?;
-                    } else {
-                        restart_from(self, events, &mut recorder, t, &after)?;
-                    }
-                    events.reopen(&reopened);
-                    restarted = true;
-                    break;
-                }
-            }
-            if !restarted {
-                recorder.record_step(self.model(), self.t(), self.state(), |t, out| self.interpolate(t, out));
-            }
-        }
-        recorder.finish_from(self)
-    }
-}
-
-impl<M: Hybrid, I: Integrator<M>> SolveWithEvents<M> for I where DefaultAllocator: Storage<M> {}
-
 /// A step that failed where the state sits on a switching surface failed because the motion
 /// slides along it: `error` named as that, with the surface; any other failure as it is.
-fn sliding<M: Hybrid, I: Integrator<M>>(
+pub(crate) fn sliding<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
     error: SimError,
@@ -308,7 +123,7 @@ where
 }
 
 /// The error for a solve with events that would leave the model's laws unswitched.
-fn unwatched_laws<M: Hybrid>(model: &M) -> SimError
+pub(crate) fn unwatched_laws<M: Hybrid>(model: &M) -> SimError
 where
     DefaultAllocator: Storage<M>,
 {
@@ -327,7 +142,7 @@ where
 
 /// Closes (or opens) contact `j` of the integrator's model, if the model can rest it (a
 /// companion made by `with_contacts`) and the integrator holds it exclusively.
-fn close<M: Hybrid, I: Integrator<M>>(integrator: &mut I, j: usize, closed: bool) -> bool
+pub(crate) fn close<M: Hybrid, I: Integrator<M>>(integrator: &mut I, j: usize, closed: bool) -> bool
 where
     DefaultAllocator: Storage<M>,
 {
@@ -338,7 +153,7 @@ where
 /// Contact `j` comes to rest where the integrator stands (the end of its last step): closed,
 /// the state projected onto it, the integration restarted there. An error naming the contact
 /// if the model cannot rest it.
-fn rest_where_it_stands<M: Hybrid, I: Integrator<M>>(
+pub(crate) fn rest_where_it_stands<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
     recorder: &mut Recorder<M>,
@@ -359,7 +174,7 @@ where
 
 /// Restarts the integration at `t` from the consistent state nearest to `state`, watching on
 /// from there and recording it.
-fn restart_from<M: Hybrid, I: Integrator<M>>(
+pub(crate) fn restart_from<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
     recorder: &mut Recorder<M>,
@@ -375,7 +190,7 @@ where
 
 /// Restarts the integration at `t` from `state`, consistent already, watching on from there
 /// and recording it.
-fn restart_consistent<M: Hybrid, I: Integrator<M>>(
+pub(crate) fn restart_consistent<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
     recorder: &mut Recorder<M>,

@@ -1,0 +1,298 @@
+//! The one loop of every run: steps, samples, events located and crossed (impacts, law
+//! switches, switching surfaces, actions), a controller's samples and what is called after each
+//! step.
+
+use std::ops::ControlFlow;
+
+use nalgebra::DefaultAllocator;
+
+use crate::analysis::diagnose::{CheckRoom, check_constraints_kept};
+use crate::analysis::init::{Consistency, consistent_state, project};
+use crate::error::SimError;
+use crate::model::state::State;
+use crate::model::{Hybrid, LagrangeDirac};
+use crate::shape::dims::Storage;
+use crate::simulate::events::solve::{
+    close, rest_where_it_stands, restart_consistent, restart_from, sliding,
+};
+use crate::simulate::events::{EventContext, Events};
+use crate::simulate::integrator::{Integrator, check_period};
+use crate::simulate::laws;
+use crate::simulate::recorder::Recorder;
+use crate::simulate::restart::restart_at_nearest;
+use crate::simulate::solution::{Event, Impact, Sampling, Solution};
+
+/// An event's action, borrowed for the run's loop.
+pub(crate) type ActionRef<'h, M, I> =
+    &'h mut dyn FnMut(&Event, &mut EventContext<'_, M, I>) -> ControlFlow<()>;
+
+/// A sampled-data controller, borrowed for the run's loop.
+type ControllerRef<'h, M> = &'h mut dyn FnMut(f64, &State<M>, &mut M);
+
+/// What a run calls after every step, borrowed for its loop.
+type AfterStep<'h, I> = &'h mut dyn FnMut(&I) -> ControlFlow<()>;
+
+/// What a run does besides stepping and watching events.
+pub(crate) struct Hooks<'h, M: LagrangeDirac, I>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The action at each event.
+    pub action: ActionRef<'h, M, I>,
+    /// A sampled-data controller and its period.
+    pub every: Option<(f64, ControllerRef<'h, M>)>,
+    /// Called after every step; a break ends the run.
+    pub after_step: Option<AfterStep<'h, I>>,
+}
+
+/// The one loop of every run: steps, the samples recorded, the events located and crossed
+/// (impacts, law switches, switching surfaces, the user's actions), the controller's samples,
+/// the observer after each step.
+pub(crate) fn drive<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    (t0, state, t_end): (f64, &State<M>, f64),
+    sampling: &Sampling,
+    events: &mut Events<'_, M>,
+    hooks: Hooks<'_, M, I>,
+) -> Result<Solution<M, I::Stats>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let Hooks { action, mut every, mut after_step } = hooks;
+    if let Some((period, _)) = &every {
+        check_period(t0, t_end, *period)?;
+    }
+    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
+    recorder.name_events(events.names());
+    if let Some(contacts) = &events.contacts {
+        recorder.name_contacts(&contacts.names);
+    }
+    // The controller's first sample sets the inputs the start holds.
+    let sample = |k: usize, period: f64| (t0 + k as f64 * period).min(t_end);
+    let mut stop = t_end;
+    if let Some((period, controller)) = &mut every {
+        controller(t0, state, integrator.model_mut().ok_or(SimError::SharedModel { t: t0 })?);
+        stop = sample(1, *period);
+    }
+    // Each law starts in the mode the state puts it in (the start made consistent there, if
+    // the state held another).
+    let chosen = laws::start_in_modes(integrator.model(), t0, state)?;
+    let state = chosen.as_ref().unwrap_or(state);
+    integrator.start(t0, state, stop)?;
+    events.begin(integrator.model(), t0, integrator.state())?;
+    recorder.record_initial(integrator.model(), t0, integrator.state());
+    let mut after = state.clone();
+    // A timed switch at zero at the start (a pulse's first edge at `t0`): the run goes on
+    // from the first time after it, on its other side, from the consistent state nearest.
+    if let Some(t) = events.start_across(integrator)? {
+        after.clone_from(integrator.state());
+        if integrator.start(t, &after, stop).is_err() {
+            after = project(integrator.model(), t, &after.q, &after.v, Consistency::default())?;
+            integrator.start(t, &after, stop)?;
+        }
+        events.resume(integrator.model(), t, &after)?;
+    }
+    let watching = !events.names().is_empty();
+    let mut reopened = Vec::new();
+    let mut k = 1;
+    loop {
+        while !integrator.finished() {
+            let restarted = if watching {
+                match step_with_events(integrator, events, &mut recorder, &mut after, &mut reopened, action)?
+                {
+                    Stepped::Ended => return recorder.finish_from(integrator),
+                    Stepped::Restarted => true,
+                    Stepped::On => false,
+                }
+            } else {
+                integrator.step()?;
+                false
+            };
+            if !restarted {
+                recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
+                    integrator.interpolate(t, out)
+                });
+            }
+            if let Some(after_step) = &mut after_step
+                && after_step(integrator).is_break()
+            {
+                return recorder.finish_from(integrator);
+            }
+        }
+        let Some((period, controller)) = &mut every else { break };
+        let t = integrator.t();
+        if t >= t_end {
+            break;
+        }
+        after.clone_from(integrator.state());
+        controller(t, &after, integrator.model_mut().ok_or(SimError::SharedModel { t })?);
+        k += 1;
+        resample(integrator, events, &mut recorder, sample(k, *period))?;
+    }
+    recorder.finish_from(integrator)
+}
+
+/// Goes on from a controller's sample towards `next`, the model changed by the controller:
+/// where it moved a constraint, the state jumps to the consistent state nearest in the
+/// kinetic-energy norm (the impulse through the constraints); where it changed a law's mode,
+/// the state is made consistent in the new one; the events watch on from there.
+fn resample<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    next: f64,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let t = integrator.t();
+    match integrator.restart_until(next) {
+        Err(SimError::ConstraintMoved { .. }) => {
+            let state = integrator.state();
+            let jumped = consistent_state(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
+            // The change was checked: on towards `next`, then from the state after the impulse.
+            integrator.restart_until(next)?;
+            integrator.restart_at(t, &jumped)?;
+            recorder.record_reset(integrator.model(), t, &jumped);
+        }
+        other => other?,
+    }
+    if let Some(chosen) = laws::start_in_modes(integrator.model(), t, integrator.state())? {
+        integrator.restart_at(t, &chosen)?;
+        recorder.record_reset(integrator.model(), t, &chosen);
+    }
+    events.resume(integrator.model(), t, integrator.state())
+}
+
+/// How a step with events ended.
+enum Stepped {
+    /// The step stands; the run goes on from its end.
+    On,
+    /// The run restarted within the step or at its end (a reset, a switch, an impact, a rest),
+    /// its samples recorded up to there.
+    Restarted,
+    /// An action ended the run.
+    Ended,
+}
+
+/// One step with the events watched: the step taken (or a Zeno sequence of impacts brought to
+/// rest), then each crossing within it located and crossed in time order (impacts, law
+/// switches, switching surfaces, the action), restarting where one of them changes the state
+/// or the model.
+fn step_with_events<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    after: &mut State<M>,
+    reopened: &mut Vec<usize>,
+    action: ActionRef<'_, M, I>,
+) -> Result<Stepped, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    events.bound_step(integrator)?;
+    if let Err(error) = integrator.step() {
+        // A step that fails where impacts accumulate fails because of them: the contact comes
+        // to rest where the integrator stands, if it can.
+        let Some(j) = (match (&error, &events.contacts) {
+            (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) => contacts.zeno(*t),
+            _ => None,
+        }) else {
+            return Err(sliding(integrator, events, error));
+        };
+        rest_where_it_stands(integrator, events, recorder, j)?;
+        return Ok(Stepped::Restarted);
+    }
+    loop {
+        let event = match events.locate(integrator) {
+            Ok(Some(event)) => event,
+            Ok(None) => return Ok(Stepped::On),
+            // A contact pressed in without an impact rests from the step's end, if it can.
+            Err(SimError::ContactCloses { contact, t_limit: None, .. })
+                if events
+                    .contact_index(&contact)
+                    .is_some_and(|j| integrator.model().contact_row(j).is_some()) =>
+            {
+                let j = events.contact_index(&contact).expect("just found");
+                rest_where_it_stands(integrator, events, recorder, j)?;
+                return Ok(Stepped::Restarted);
+            }
+            Err(error) => return Err(error),
+        };
+        let t = event.t;
+        recorder
+            .record_step(integrator.model(), t, events.state(), |ts, out| integrator.interpolate(ts, out));
+        recorder.record_event(integrator.model(), event, events.state());
+        after.clone_from(events.state());
+        let mut impulse = None;
+        let mut switched = false;
+        reopened.clear();
+        if let Some(contact) = events.contact_of[event.index] {
+            let impacts = events.impact(integrator.model(), event.index, t, after)?;
+            for &(j, lambda) in &impacts.impulses {
+                recorder.record_impact(Impact { contact: j, t, impulse: lambda });
+                if lambda > 0.0 {
+                    reopened.push(j);
+                }
+                if j == contact {
+                    impulse = Some(lambda);
+                }
+            }
+            if let Some(j) = impacts.resting {
+                // Left at rest: the contact closes, if it can, and the restart projects the
+                // state onto it (a plastic impact).
+                if !close(integrator, j, true) {
+                    let contacts = events.contacts.as_ref().expect("contact events come with their contacts");
+                    return Err(contacts.closes(j, t));
+                }
+                events.contacts.as_mut().expect("contact events come with their contacts").rested(j);
+                reopened.retain(|&c| c != j);
+                switched = true;
+            }
+        }
+        if let Some(j) = events.release_of[event.index] {
+            switched |= close(integrator, j, false);
+        }
+        // A law switches its mode: the state is made consistent in the new one.
+        let law = events.switch_law(integrator.model(), event.index, t, after)?;
+        // Consistent already, unless an impact or a contact changed it too.
+        let consistent = law && !switched && reopened.is_empty();
+        switched |= law;
+        let mut context = EventContext::new(t, after, integrator);
+        context.impulse = impulse;
+        context.reset = !reopened.is_empty() || switched;
+        let flow = action(&event, &mut context);
+        let (reset, before) = context.changes();
+        let touched = context.touched;
+        if flow.is_break() {
+            return Ok(Stepped::Ended);
+        }
+        if !(reset || before.is_some()) && events.switch_of[event.index] {
+            // A switching surface: the step that reached across it is cut there, and the
+            // integration goes on from the state at the crossing, on the other side. The
+            // interpolated state is the step's, on the constraints as its steps are; where the
+            // integrator's own check refuses it, from the consistent state nearest to it.
+            restart_at_nearest(integrator, t, after)?;
+            events.resume(integrator.model(), t, after)?;
+            return Ok(Stepped::Restarted);
+        }
+        if reset || before.is_some() {
+            if let (false, Some(before)) = (reset, before) {
+                check_constraints_kept(
+                    integrator.model(),
+                    t,
+                    after,
+                    before,
+                    &mut CheckRoom::new(integrator.model()),
+                )?;
+            }
+            if consistent && !touched {
+                restart_consistent(integrator, events, recorder, t, after)?;
+            } else {
+                restart_from(integrator, events, recorder, t, after)?;
+            }
+            events.reopen(reopened);
+            return Ok(Stepped::Restarted);
+        }
+    }
+}

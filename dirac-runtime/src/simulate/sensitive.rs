@@ -1,0 +1,258 @@
+//! Forward sensitivities carried by a method that can ([`Sensitive`]: Radau), and their
+//! recording beside a solution's samples, through impacts, switching surfaces and laws.
+
+use nalgebra::DefaultAllocator;
+
+use crate::error::SimError;
+use crate::model::state::State;
+use crate::model::{Hybrid, LagrangeDirac, Parameters};
+use crate::shape::dims::Storage;
+use crate::shape::layout::Layout;
+use crate::simulate::events::sensitivities::solve_with_sensitivities_through_events;
+use crate::simulate::integrator::Integrator;
+use crate::simulate::laws;
+use crate::simulate::recorder::Recorder;
+use crate::simulate::sensitivity::Sensitivities;
+use crate::simulate::solution::{Sampling, Solution};
+
+/// An integrator that carries the forward sensitivities of its solution with respect to
+/// parameters and initial values: [`Radau`](crate::Radau) (the staggered direct method). A
+/// method without them does not implement it, so asking one for sensitivities does not compile.
+pub trait Sensitive<M: LagrangeDirac>: Integrator<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Asks the integrator to carry the forward sensitivities of its solution with respect to
+    /// `wrt`'s parameters and initial values from its next start (Radau: the staggered direct
+    /// method).
+    fn carry_sensitivities(&mut self, wrt: &Sensitivities<M>) -> Result<(), SimError>
+    where
+        M: Parameters;
+
+    /// The names of the sensitivities carried, in order: what they are taken with respect to
+    /// (none unless asked for).
+    fn sensitivity_names(&self) -> &[String];
+
+    /// Writes sensitivity `j` at the time reached, `∂(q, v, p, λ)/∂θ_j`, into `out`; `false`
+    /// (leaving `out` alone) if there is no sensitivity `j`.
+    fn sensitivity(&self, j: usize, out: &mut State<M>) -> bool;
+
+    /// Writes sensitivity `j` at time `t` within the last step into `out`; `false` if there is
+    /// no sensitivity `j`.
+    fn interpolate_sensitivity(&self, j: usize, t: f64, out: &mut State<M>) -> bool;
+
+    /// The parameter sensitivity `j` is taken with respect to (its index), or `None` for an
+    /// initial value's (or no sensitivity `j`).
+    fn sensitivity_parameter(&self, j: usize) -> Option<usize>;
+
+    /// Restarts the integration at `t` from `state` (consistent) with the sensitivities
+    /// `sensitivities` (one per sensitivity carried), after a jump whose derivative the caller
+    /// carried them across (an impact).
+    fn restart_with_sensitivities(
+        &mut self,
+        t: f64,
+        state: &State<M>,
+        sensitivities: &[State<M>],
+    ) -> Result<(), SimError>;
+
+    /// Completes sensitivity `j` at the start of the integration, in `out`, with what the first
+    /// step taught: the multipliers' sensitivities, which a method may not carry at the start
+    /// (Radau extrapolates them from its first step's stages). Does nothing by default.
+    fn complete_initial_sensitivity(&self, j: usize, out: &mut State<M>) {
+        let _ = (j, out);
+    }
+
+    /// Integrates from `state` at `t0` to `t_end` with the sensitivities asked for
+    /// ([`Sensitive::carry_sensitivities`]), recording the state as [`Integrator::solve`] does
+    /// and every sensitivity at the same samples: read them from the solution by quantity and
+    /// name ([`Solution::sensitivity`]). A model with unilateral constraints has its contacts
+    /// watched, as [`Integrator::solve`] does, and each sensitivity carried across each impact
+    /// by the impact's saltation matrix ([`saltation`](crate::impact::saltation)); one with
+    /// switching surfaces (`abs`, `signum`, conditionals) has them located, and each
+    /// sensitivity carried across each crossing by `(f⁻ − f⁺) ∂t*/∂θ`, the jump of the rate
+    /// times the crossing's shift; one with laws (friction, diodes, ideal switches) has them
+    /// switched, and each sensitivity carried across each switch the same way, with the rates
+    /// of the old mode and the new.
+    fn solve_with_sensitivities(
+        &mut self,
+        t0: f64,
+        state: &State<M>,
+        t_end: f64,
+        sampling: &Sampling,
+    ) -> Result<Solution<M, Self::Stats>, SimError>
+    where
+        Self: Sized,
+        M: Hybrid + Parameters,
+    {
+        record_with_sensitivities(self, t0, state, t_end, sampling)
+    }
+}
+
+/// The model's switching surfaces, each as `` `name`: g = 0 ``.
+fn surfaces<M: LagrangeDirac>(model: &M) -> Vec<String>
+where
+    DefaultAllocator: Storage<M>,
+{
+    model
+        .event_declarations()
+        .into_iter()
+        .filter(|&(_, d)| crate::model::names::is_switch(d))
+        .map(|(name, _)| format!("`{name}`: {} = 0", model.surface(&name).unwrap_or("?")))
+        .collect()
+}
+
+/// [`Sensitive::solve_with_sensitivities`]: the samples of the state, and at each the
+/// sensitivities, recorded sample by sample (each sample's values side by side, contiguous
+/// writes) and turned into one column per value at the end.
+fn record_with_sensitivities<M: Hybrid + Parameters, I: Sensitive<M>>(
+    integrator: &mut I,
+    t0: f64,
+    state: &State<M>,
+    t_end: f64,
+    sampling: &Sampling,
+) -> Result<Solution<M, I::Stats>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let count = integrator.sensitivity_names().len();
+    if count == 0 {
+        return Err(SimError::InvalidOption {
+            what: "sensitivities",
+            reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
+        });
+    }
+    let model = integrator.model();
+    if !model.unilateral_names().is_empty() || model.has_switches() || laws::has_laws(model) {
+        // The jump of a sensitivity across a switch needs the event functions' derivatives,
+        // which a model assembled while the program runs (a network) does not generate.
+        let width = 2 * model.sizes().nq + model.sizes().nc + 1 + model.parameter_count();
+        let declared = model.event_declarations().len();
+        if declared > 0 && model.event_derivatives_len() != declared * width {
+            let what = match model.has_switches() {
+                true => format!("its switching surfaces ({})", surfaces(model).join(", ")),
+                false => format!("its laws' switches ({})", laws::law_names(model).join(", ")),
+            };
+            return Err(SimError::InvalidOption {
+                what: "sensitivities",
+                reason: format!(
+                    "this model (a network, assembled while the program runs) does not carry \
+                     sensitivities across {what}: take differences of solutions"
+                ),
+            });
+        }
+        return solve_with_sensitivities_through_events(integrator, t0, state, t_end, sampling);
+    }
+    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
+    let mut rows = SensitivityRows::new(integrator, &mut recorder)?;
+    integrator.start(t0, state, t_end)?;
+    recorder.record_initial(integrator.model(), t0, integrator.state());
+    rows.push_initial(integrator, &recorder);
+    while !integrator.finished() {
+        let before = recorder.len();
+        integrator.step()?;
+        rows.complete(integrator);
+        recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
+            integrator.interpolate(t, out)
+        });
+        rows.push_within(integrator, &recorder, before);
+    }
+    rows.finish(integrator, recorder)
+}
+
+/// The sensitivities recorded sample by sample beside a [`Recorder`]'s samples (each sample's
+/// values side by side, contiguous writes), turned into one column per value at the end.
+pub(crate) struct SensitivityRows<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    rows: Vec<f64>,
+    /// Values a sample: every sensitivity's state.
+    series: usize,
+    len: usize,
+    buffer: State<M>,
+    /// The samples whose multipliers' sensitivities the next step completes: the start's, and
+    /// those just after a restart.
+    incomplete: Vec<usize>,
+}
+
+impl<M: LagrangeDirac> SensitivityRows<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Room for `integrator`'s sensitivities at `recorder`'s samples.
+    pub fn new<I: Sensitive<M>>(integrator: &I, recorder: &mut Recorder<M>) -> Result<Self, SimError> {
+        let sizes = integrator.model().sizes();
+        let len = Layout::new(sizes).len;
+        let series = integrator.sensitivity_names().len() * len;
+        let rows = recorder.extra_series(series)?;
+        Ok(SensitivityRows { rows, series, len, buffer: State::with_sizes(sizes), incomplete: Vec::new() })
+    }
+
+    /// The sensitivities at the start, if it is sampled, to be completed by the first step.
+    pub fn push_initial<I: Sensitive<M>>(&mut self, integrator: &I, recorder: &Recorder<M>) {
+        if recorder.len() > 0 {
+            for j in 0..integrator.sensitivity_names().len() {
+                integrator.sensitivity(j, &mut self.buffer);
+                self.rows.extend(self.buffer.components());
+            }
+            self.incomplete.push(0);
+        }
+    }
+
+    /// The sensitivities at the samples from `before` on, each within the last step.
+    pub fn push_within<I: Sensitive<M>>(&mut self, integrator: &I, recorder: &Recorder<M>, before: usize) {
+        for k in before..recorder.len() {
+            let ts = recorder.time(k);
+            for j in 0..integrator.sensitivity_names().len() {
+                if ts >= integrator.t() {
+                    integrator.sensitivity(j, &mut self.buffer);
+                } else {
+                    integrator.interpolate_sensitivity(j, ts, &mut self.buffer);
+                }
+                self.rows.extend(self.buffer.components());
+            }
+        }
+    }
+
+    /// `sensitivities` at the samples from `before` on, taken where the integration restarts
+    /// with them: their multipliers' parts are completed by the next step.
+    pub fn push_restart(&mut self, sensitivities: &[State<M>], recorder: &Recorder<M>, before: usize) {
+        for k in before..recorder.len() {
+            for s in sensitivities {
+                self.rows.extend(s.components());
+            }
+            self.incomplete.push(k);
+        }
+    }
+
+    /// Completes the multipliers' sensitivities of the samples at the start of the step just
+    /// taken from that step (see [`Sensitive::complete_initial_sensitivity`]).
+    pub fn complete<I: Sensitive<M>>(&mut self, integrator: &I) {
+        let (series, len) = (self.series, self.len);
+        for k in self.incomplete.drain(..) {
+            for j in 0..integrator.sensitivity_names().len() {
+                let row = &mut self.rows[k * series + j * len..k * series + (j + 1) * len];
+                for (x, &v) in self.buffer.components_mut().zip(row.iter()) {
+                    *x = v;
+                }
+                integrator.complete_initial_sensitivity(j, &mut self.buffer);
+                for (x, &v) in row.iter_mut().zip(self.buffer.components()) {
+                    *x = v;
+                }
+            }
+        }
+    }
+
+    /// The solution, with a column per sensitivity value.
+    pub fn finish<I: Sensitive<M>>(
+        self,
+        integrator: &mut I,
+        recorder: Recorder<M>,
+    ) -> Result<Solution<M, I::Stats>, SimError> {
+        let (rows, series, samples) = (self.rows, self.series, recorder.len());
+        let columns = (0..series).map(|i| (0..samples).map(|k| rows[k * series + i]).collect()).collect();
+        let names = integrator.sensitivity_names().to_vec();
+        let solution = recorder.finish_from(integrator)?;
+        Ok(solution.with_sensitivities(names, columns))
+    }
+}
