@@ -104,7 +104,7 @@ pub use dirac_runtime::adjoint;
 /// Control design on the exact linearisation: zero-order hold, continuous and discrete LQR,
 /// pole placement, controllability, poles and zeros, frequency and step responses, and a
 /// sampled PID controller with anti-windup.
-pub use dirac_runtime::control;
+pub use dirac_runtime::analysis::control;
 
 /// The linear-algebra crate dirac is built on, re-exported so that generic code over models
 /// and code that uses its matrices need no second, possibly different, version of it.
@@ -117,14 +117,14 @@ pub use dirac_runtime::algebra;
 /// Many simulations of one model on all cores (parameter sweeps, Monte Carlo), and sweeps
 /// larger than one machine split into independent jobs. Feature `ensemble`.
 #[cfg(feature = "ensemble")]
-pub use dirac_runtime::ensemble;
+pub use dirac_runtime::simulate::ensemble;
 
 /// Input sources read by time: tables of samples, held or interpolated.
-pub use dirac_runtime::sources;
+pub use dirac_runtime::simulate::sources;
 
 /// An impact at unilateral constraints as a map of the state before it, with its derivative
 /// with respect to positions, velocities, time and parameters.
-pub use dirac_runtime::impact;
+pub use dirac_runtime::simulate::impact;
 
 /// Joint-space dynamics of mechanisms (robots read from URDF files among them): the mass
 /// matrix, gravity and bias torques, inverse dynamics.
@@ -153,7 +153,7 @@ pub use dirac_runtime::impact;
 /// let bias = joint_space::bias_torques(&model, 0.0, &q, &v);
 /// assert!((bias[0] - gravity[0]).abs() < 1e-15);
 /// ```
-pub use dirac_runtime::joint_space;
+pub use dirac_runtime::analysis::joint_space;
 
 /// Networks assembled while the program runs: compiled parts (any model of fixed size, the
 /// component library's among them) added under names, their ports connected by name.

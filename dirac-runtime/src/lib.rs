@@ -93,16 +93,6 @@ pub mod adjoint {
     pub use crate::methods::radau::{Gradient, Objective, Recording, SampleFunction, StateFunction};
 }
 
-// The modules under the paths they had before the layers, for code that names them.
-pub use algebra::lu;
-pub use analysis::{control, diagnose, dirac_structure, init, joint_space, linear};
-pub use methods::{explicit, radau, variational};
-pub use model::{blocks, flat, keys, names, sparse, state, structure};
-pub use shape::{dims, layout, stack};
-#[cfg(feature = "ensemble")]
-pub use simulate::ensemble;
-pub use simulate::{events, held, impact, integrator, sensitivity, solution, sources};
-
 /// The linear systems of implicit steps: the seam every method solves through, the condensed
 /// solver a model's algebra provides, and a full reference solver.
 pub mod newton {

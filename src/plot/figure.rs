@@ -173,7 +173,7 @@ impl Figure {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn bode(
-        response: &dirac_runtime::control::FrequencyResponse,
+        response: &dirac_runtime::analysis::control::FrequencyResponse,
         output: usize,
         input: usize,
         title: impl Into<String>,

@@ -364,33 +364,6 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
         }
-        fn __solve_with_sensitivities_through_events<
-            I: ::dirac::__private::Integrator<Self>,
-        >(
-            integrator: &mut I,
-            t0: ::core::primitive::f64,
-            state: &::dirac::__private::State<Self>,
-            t_end: ::core::primitive::f64,
-            sampling: &::dirac::__private::Sampling,
-        ) -> ::core::option::Option<
-            ::core::result::Result<
-                ::dirac::__private::Solution<
-                    Self,
-                    <I as ::dirac::__private::Integrator<Self>>::Stats,
-                >,
-                ::dirac::__private::SimError,
-            >,
-        > {
-            ::core::option::Option::Some(
-                ::dirac::__private::solve_with_sensitivities_through_events(
-                    integrator,
-                    t0,
-                    state,
-                    t_end,
-                    sampling,
-                ),
-            )
-        }
         #[inline]
         fn __consistent_with_laws(
             &self,
@@ -1325,33 +1298,6 @@ const _: () = {
         ) {
             out[0usize] = 0f64;
             out[1usize] = 0f64;
-        }
-        fn __solve_with_sensitivities_through_events<
-            I: ::dirac::__private::Integrator<Self>,
-        >(
-            integrator: &mut I,
-            t0: ::core::primitive::f64,
-            state: &::dirac::__private::State<Self>,
-            t_end: ::core::primitive::f64,
-            sampling: &::dirac::__private::Sampling,
-        ) -> ::core::option::Option<
-            ::core::result::Result<
-                ::dirac::__private::Solution<
-                    Self,
-                    <I as ::dirac::__private::Integrator<Self>>::Stats,
-                >,
-                ::dirac::__private::SimError,
-            >,
-        > {
-            ::core::option::Option::Some(
-                ::dirac::__private::solve_with_sensitivities_through_events(
-                    integrator,
-                    t0,
-                    state,
-                    t_end,
-                    sampling,
-                ),
-            )
         }
         #[inline]
         fn __consistent_with_laws(

@@ -17,7 +17,7 @@
 //! the index), not shipped between machines.
 //!
 //! ```
-//! use dirac_runtime::ensemble::{Shard, sweep};
+//! use dirac_runtime::simulate::ensemble::{Shard, sweep};
 //!
 //! let inputs: Vec<f64> = (0..1000).map(|i| 1.0 + i as f64 / 1000.0).collect();
 //! // This process is job 2 of 4: it takes inputs 500..750.

@@ -349,7 +349,7 @@ where
     }
 
     /// Ends a step at each of `times` and restarts there, from now on: the instants where the
-    /// inputs jump or bend (a table's samples: [`Table::times`](crate::sources::Table::times)),
+    /// inputs jump or bend (a table's samples: [`Table::times`](crate::simulate::sources::Table::times)),
     /// known in advance, so located exactly, and no step straddles one. A drive reads the
     /// inputs at a stop's time from the left for the step that ends there and from the right
     /// after it. Set it before `start`; by default the method refuses.

@@ -1,11 +1,8 @@
-//! Progress of a long run, reported while it runs, and one-line summaries of the work done.
+//! Progress of a long run, reported while it runs. Each method's counters display as one line
+//! in the method's own folder.
 
 use std::fmt;
 use std::time::Duration;
-
-use crate::methods::explicit::ExplicitStats;
-use crate::methods::radau::RadauStats;
-use crate::methods::variational::VariationalStats;
 
 /// Where a run stands: handed to the report of
 /// [`Integrator::solve_with_progress`](crate::Integrator::solve_with_progress).
@@ -59,51 +56,5 @@ impl<S: fmt::Display> fmt::Display for Progress<S> {
             Some(rest) if self.fraction() < 1.0 => write!(f, ", about {:.1} s to go", rest.as_secs_f64()),
             _ => Ok(()),
         }
-    }
-}
-
-/// `412 steps (3 rejected), 1300 residual evaluations, 20 Jacobians, 35 factorisations, 1250 Newton iterations`.
-impl fmt::Display for RadauStats {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} steps ({} rejected), {} residual evaluations, {} Jacobians, {} factorisations, {} Newton iterations",
-            self.steps,
-            self.rejected,
-            self.residual_evaluations,
-            self.jacobian_evaluations,
-            self.factorizations,
-            self.newton_iterations
-        )?;
-        if self.sensitivity_iterations > 0 {
-            write!(f, ", {} sensitivity iterations", self.sensitivity_iterations)?;
-        }
-        Ok(())
-    }
-}
-
-/// `412 steps (3 rejected), 2500 evaluations, 2500 factorisations`.
-impl fmt::Display for ExplicitStats {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} steps ({} rejected), {} evaluations, {} factorisations",
-            self.steps, self.rejected, self.evaluations, self.factorizations
-        )
-    }
-}
-
-/// `1000 steps, 2100 Newton iterations, 2100 factorisations`, and the sub-steps if any.
-impl fmt::Display for VariationalStats {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} steps, {} Newton iterations, {} factorisations",
-            self.steps, self.newton_iterations, self.factorizations
-        )?;
-        if self.substeps > 0 {
-            write!(f, ", {} sub-steps", self.substeps)?;
-        }
-        Ok(())
     }
 }

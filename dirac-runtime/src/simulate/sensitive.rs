@@ -67,7 +67,7 @@ where
     /// and every sensitivity at the same samples: read them from the solution by quantity and
     /// name ([`Solution::sensitivity`]). A model with unilateral constraints has its contacts
     /// watched, as [`Integrator::solve`] does, and each sensitivity carried across each impact
-    /// by the impact's saltation matrix ([`saltation`](crate::impact::saltation)); one with
+    /// by the impact's saltation matrix ([`saltation`](crate::simulate::impact::saltation)); one with
     /// switching surfaces (`abs`, `signum`, conditionals) has them located, and each
     /// sensitivity carried across each crossing by `(f⁻ − f⁺) ∂t*/∂θ`, the jump of the rate
     /// times the crossing's shift; one with laws (friction, diodes, ideal switches) has them

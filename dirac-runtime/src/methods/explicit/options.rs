@@ -79,3 +79,14 @@ pub struct ExplicitStats {
     /// Factorisations of the saddle-point system `[L_vv −Aᵀ; A 0]`.
     pub factorizations: usize,
 }
+
+/// `412 steps (3 rejected), 2500 evaluations, 2500 factorisations`.
+impl std::fmt::Display for ExplicitStats {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} steps ({} rejected), {} evaluations, {} factorisations",
+            self.steps, self.rejected, self.evaluations, self.factorizations
+        )
+    }
+}

@@ -330,3 +330,23 @@ where
         ErrorNorm::Max => scaled.fold(0.0, |m, e| if e.abs() > m || e.is_nan() { e.abs() } else { m }),
     }
 }
+
+/// `412 steps (3 rejected), 1300 residual evaluations, 20 Jacobians, 35 factorisations, 1250 Newton iterations`.
+impl std::fmt::Display for RadauStats {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} steps ({} rejected), {} residual evaluations, {} Jacobians, {} factorisations, {} Newton iterations",
+            self.steps,
+            self.rejected,
+            self.residual_evaluations,
+            self.jacobian_evaluations,
+            self.factorizations,
+            self.newton_iterations
+        )?;
+        if self.sensitivity_iterations > 0 {
+            write!(f, ", {} sensitivity iterations", self.sensitivity_iterations)?;
+        }
+        Ok(())
+    }
+}

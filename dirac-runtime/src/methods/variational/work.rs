@@ -302,3 +302,18 @@ where
         }
     }
 }
+
+/// `1000 steps, 2100 Newton iterations, 2100 factorisations`, and the sub-steps if any.
+impl std::fmt::Display for VariationalStats {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} steps, {} Newton iterations, {} factorisations",
+            self.steps, self.newton_iterations, self.factorizations
+        )?;
+        if self.substeps > 0 {
+            write!(f, ", {} sub-steps", self.substeps)?;
+        }
+        Ok(())
+    }
+}
