@@ -74,24 +74,7 @@ where
         controller(t0, state, integrator.model_mut().ok_or(SimError::SharedModel { t: t0 })?);
         stop = sample(1, *period);
     }
-    // Each law starts in the mode the state puts it in (the start made consistent there, if
-    // the state held another).
-    let chosen = laws::start_in_modes(integrator.model(), t0, state)?;
-    let state = chosen.as_ref().unwrap_or(state);
-    integrator.start(t0, state, stop)?;
-    events.begin(integrator.model(), t0, integrator.state())?;
-    recorder.record_initial(integrator.model(), t0, integrator.state());
-    let mut after = state.clone();
-    // A timed switch at zero at the start (a pulse's first edge at `t0`): the run goes on
-    // from the first time after it, on its other side, from the consistent state nearest.
-    if let Some(t) = events.start_across(integrator)? {
-        after.clone_from(integrator.state());
-        if integrator.start(t, &after, stop).is_err() {
-            after = project(integrator.model(), t, &after.q, &after.v, Consistency::default())?;
-            integrator.start(t, &after, stop)?;
-        }
-        events.resume(integrator.model(), t, &after)?;
-    }
+    let mut after = begin(integrator, events, &mut recorder, (t0, state, stop))?;
     let watching = !events.names().is_empty();
     let mut reopened = Vec::new();
     let mut k = 1;
@@ -130,6 +113,38 @@ where
         resample(integrator, events, &mut recorder, sample(k, *period))?;
     }
     recorder.finish_from(integrator)
+}
+
+/// Starts `integrator` from `state` at `t0` towards `stop`, each law in the mode the state puts
+/// it in, the events watched from there and the start recorded; returns the state started from.
+fn begin<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    (t0, state, stop): (f64, &State<M>, f64),
+) -> Result<State<M>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    // Each law starts in the mode the state puts it in (the start made consistent there, if
+    // the state held another).
+    let chosen = laws::start_in_modes(integrator.model(), t0, state)?;
+    let state = chosen.as_ref().unwrap_or(state);
+    integrator.start(t0, state, stop)?;
+    events.begin(integrator.model(), t0, integrator.state())?;
+    recorder.record_initial(integrator.model(), t0, integrator.state());
+    let mut after = state.clone();
+    // A timed switch at zero at the start (a pulse's first edge at `t0`): the run goes on
+    // from the first time after it, on its other side, from the consistent state nearest.
+    if let Some(t) = events.start_across(integrator)? {
+        after.clone_from(integrator.state());
+        if integrator.start(t, &after, stop).is_err() {
+            after = project(integrator.model(), t, &after.q, &after.v, Consistency::default())?;
+            integrator.start(t, &after, stop)?;
+        }
+        events.resume(integrator.model(), t, &after)?;
+    }
+    Ok(after)
 }
 
 /// Goes on from a controller's sample towards `next`, the model changed by the controller:
@@ -219,80 +234,120 @@ where
             }
             Err(error) => return Err(error),
         };
-        let t = event.t;
-        recorder
-            .record_step(integrator.model(), t, events.state(), |ts, out| integrator.interpolate(ts, out));
-        recorder.record_event(integrator.model(), event, events.state());
-        after.clone_from(events.state());
-        let mut impulse = None;
-        let mut switched = false;
-        reopened.clear();
-        if let Some(contact) = events.contact_of[event.index] {
-            let impacts = events.impact(integrator.model(), event.index, t, after)?;
-            for &(j, lambda) in &impacts.impulses {
-                recorder.record_impact(Impact { contact: j, t, impulse: lambda });
-                if lambda > 0.0 {
-                    reopened.push(j);
-                }
-                if j == contact {
-                    impulse = Some(lambda);
-                }
-            }
-            if let Some(j) = impacts.resting {
-                // Left at rest: the contact closes, if it can, and the restart projects the
-                // state onto it (a plastic impact).
-                if !close(integrator, j, true) {
-                    let contacts = events.contacts.as_ref().expect("contact events come with their contacts");
-                    return Err(contacts.closes(j, t));
-                }
-                events.contacts.as_mut().expect("contact events come with their contacts").rested(j);
-                reopened.retain(|&c| c != j);
-                switched = true;
-            }
-        }
-        if let Some(j) = events.release_of[event.index] {
-            switched |= close(integrator, j, false);
-        }
-        // A law switches its mode: the state is made consistent in the new one.
-        let law = events.switch_law(integrator.model(), event.index, t, after)?;
-        // Consistent already, unless an impact or a contact changed it too.
-        let consistent = law && !switched && reopened.is_empty();
-        switched |= law;
-        let mut context = EventContext::new(t, after, integrator);
-        context.impulse = impulse;
-        context.reset = !reopened.is_empty() || switched;
-        let flow = action(&event, &mut context);
-        let (reset, before) = context.changes();
-        let touched = context.touched;
-        if flow.is_break() {
-            return Ok(Stepped::Ended);
-        }
-        if !(reset || before.is_some()) && events.switch_of[event.index] {
-            // A switching surface: the step that reached across it is cut there, and the
-            // integration goes on from the state at the crossing, on the other side. The
-            // interpolated state is the step's, on the constraints as its steps are; where the
-            // integrator's own check refuses it, from the consistent state nearest to it.
-            restart_at_nearest(integrator, t, after)?;
-            events.resume(integrator.model(), t, after)?;
-            return Ok(Stepped::Restarted);
-        }
-        if reset || before.is_some() {
-            if let (false, Some(before)) = (reset, before) {
-                check_constraints_kept(
-                    integrator.model(),
-                    t,
-                    after,
-                    before,
-                    &mut CheckRoom::new(integrator.model()),
-                )?;
-            }
-            if consistent && !touched {
-                restart_consistent(integrator, events, recorder, t, after)?;
-            } else {
-                restart_from(integrator, events, recorder, t, after)?;
-            }
-            events.reopen(reopened);
-            return Ok(Stepped::Restarted);
+        if let Some(stepped) = cross(integrator, events, recorder, after, reopened, action, event)? {
+            return Ok(stepped);
         }
     }
+}
+
+/// Crosses `event`, located within the last step: records it, applies its impacts, its
+/// contact's rest or release and its law's switch, hands it to the action, and restarts where
+/// any of them changed the state or the model (`Some`); `None` where the search goes on
+/// within the step.
+fn cross<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    after: &mut State<M>,
+    reopened: &mut Vec<usize>,
+    action: ActionRef<'_, M, I>,
+    event: Event,
+) -> Result<Option<Stepped>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let t = event.t;
+    recorder.record_step(integrator.model(), t, events.state(), |ts, out| integrator.interpolate(ts, out));
+    recorder.record_event(integrator.model(), event, events.state());
+    after.clone_from(events.state());
+    let (impulse, mut switched) = strike(integrator, events, recorder, after, reopened, &event)?;
+    // A law switches its mode: the state is made consistent in the new one.
+    let law = events.switch_law(integrator.model(), event.index, t, after)?;
+    // Consistent already, unless an impact or a contact changed it too.
+    let consistent = law && !switched && reopened.is_empty();
+    switched |= law;
+    let mut context = EventContext::new(t, after, integrator);
+    context.impulse = impulse;
+    context.reset = !reopened.is_empty() || switched;
+    let flow = action(&event, &mut context);
+    let (reset, before) = context.changes();
+    let touched = context.touched;
+    if flow.is_break() {
+        return Ok(Some(Stepped::Ended));
+    }
+    if !(reset || before.is_some()) && events.switch_of[event.index] {
+        // A switching surface: the step that reached across it is cut there, and the
+        // integration goes on from the state at the crossing, on the other side. The
+        // interpolated state is the step's, on the constraints as its steps are; where the
+        // integrator's own check refuses it, from the consistent state nearest to it.
+        restart_at_nearest(integrator, t, after)?;
+        events.resume(integrator.model(), t, after)?;
+        return Ok(Some(Stepped::Restarted));
+    }
+    if !(reset || before.is_some()) {
+        return Ok(None);
+    }
+    if let (false, Some(before)) = (reset, before) {
+        check_constraints_kept(
+            integrator.model(),
+            t,
+            after,
+            before,
+            &mut CheckRoom::new(integrator.model()),
+        )?;
+    }
+    if consistent && !touched {
+        restart_consistent(integrator, events, recorder, t, after)?;
+    } else {
+        restart_from(integrator, events, recorder, t, after)?;
+    }
+    events.reopen(reopened);
+    Ok(Some(Stepped::Restarted))
+}
+
+/// What `event` does to the contacts, when it is one's (an impact, with every contact closed
+/// there too; a contact left at rest closed) or a resting contact's release: `after` changed
+/// by the impact law, the impulses recorded, the contacts the impact reopened in `reopened`.
+/// Returns the event's own contact's impulse and whether a contact closed or opened.
+fn strike<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    after: &mut State<M>,
+    reopened: &mut Vec<usize>,
+    event: &Event,
+) -> Result<(Option<f64>, bool), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let t = event.t;
+    let (mut impulse, mut switched) = (None, false);
+    reopened.clear();
+    if let Some(contact) = events.contact_of[event.index] {
+        let impacts = events.impact(integrator.model(), event.index, t, after)?;
+        for &(j, lambda) in &impacts.impulses {
+            recorder.record_impact(Impact { contact: j, t, impulse: lambda });
+            if lambda > 0.0 {
+                reopened.push(j);
+            }
+            if j == contact {
+                impulse = Some(lambda);
+            }
+        }
+        if let Some(j) = impacts.resting {
+            // Left at rest: the contact closes, if it can, and the restart projects the state
+            // onto it (a plastic impact).
+            if !close(integrator, j, true) {
+                let contacts = events.contacts.as_ref().expect("contact events come with their contacts");
+                return Err(contacts.closes(j, t));
+            }
+            events.contacts.as_mut().expect("contact events come with their contacts").rested(j);
+            reopened.retain(|&c| c != j);
+            switched = true;
+        }
+    }
+    if let Some(j) = events.release_of[event.index] {
+        switched |= close(integrator, j, false);
+    }
+    Ok((impulse, switched))
 }
