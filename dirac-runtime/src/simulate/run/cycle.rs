@@ -75,32 +75,13 @@ where
         stop = sample(1, *period);
     }
     let mut after = begin(integrator, events, &mut recorder, (t0, state, stop))?;
-    let watching = !events.names().is_empty();
     let mut reopened = Vec::new();
     let mut k = 1;
     loop {
-        while !integrator.finished() {
-            let restarted = if watching {
-                match step_with_events(integrator, events, &mut recorder, &mut after, &mut reopened, action)?
-                {
-                    Stepped::Ended => return recorder.finish_from(integrator),
-                    Stepped::Restarted => true,
-                    Stepped::On => false,
-                }
-            } else {
-                integrator.step()?;
-                false
-            };
-            if !restarted {
-                recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
-                    integrator.interpolate(t, out)
-                });
-            }
-            if let Some(after_step) = &mut after_step
-                && after_step(integrator).is_break()
-            {
-                return recorder.finish_from(integrator);
-            }
+        let mut stretch =
+            Stretch { events, recorder: &mut recorder, after: &mut after, reopened: &mut reopened };
+        if stretch.run(integrator, action, &mut after_step)?.is_break() {
+            return recorder.finish_from(integrator);
         }
         let Some((period, controller)) = &mut every else { break };
         let t = integrator.t();
@@ -113,6 +94,69 @@ where
         resample(integrator, events, &mut recorder, sample(k, *period))?;
     }
     recorder.finish_from(integrator)
+}
+
+/// What the steps of a run between two of the controller's samples work on.
+struct Stretch<'a, 'e, M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    events: &'a mut Events<'e, M>,
+    recorder: &'a mut Recorder<M>,
+    /// The state after the last event crossed.
+    after: &'a mut State<M>,
+    /// The contacts the last impact reopened.
+    reopened: &'a mut Vec<usize>,
+}
+
+impl<M: Hybrid> Stretch<'_, '_, M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Steps until the integrator reaches its end (the next sample, or the run's end), the
+    /// events watched and the samples recorded; a break where an action or the after-step hook
+    /// ended the run.
+    fn run<I: Integrator<M>>(
+        &mut self,
+        integrator: &mut I,
+        action: ActionRef<'_, M, I>,
+        after_step: &mut Option<AfterStep<'_, I>>,
+    ) -> Result<ControlFlow<()>, SimError> {
+        let watching = !self.events.names().is_empty();
+        while !integrator.finished() {
+            let restarted = if watching {
+                match step_with_events(
+                    integrator,
+                    self.events,
+                    self.recorder,
+                    self.after,
+                    self.reopened,
+                    action,
+                )? {
+                    Stepped::Ended => return Ok(ControlFlow::Break(())),
+                    Stepped::Restarted => true,
+                    Stepped::On => false,
+                }
+            } else {
+                integrator.step()?;
+                false
+            };
+            if !restarted {
+                self.recorder.record_step(
+                    integrator.model(),
+                    integrator.t(),
+                    integrator.state(),
+                    |t, out| integrator.interpolate(t, out),
+                );
+            }
+            if let Some(after_step) = after_step
+                && after_step(integrator).is_break()
+            {
+                return Ok(ControlFlow::Break(()));
+            }
+        }
+        Ok(ControlFlow::Continue(()))
+    }
 }
 
 /// Starts `integrator` from `state` at `t0` towards `stop`, each law in the mode the state puts
