@@ -362,3 +362,53 @@ fn a_sampled_controller_that_moves_a_constraint_moves_the_state_by_the_impulse()
         assert!(checked > 40, "{method:?}: {checked} samples");
     });
 }
+
+/// The sensitivity column of the matrix on the method that carries them (Radau; the others
+/// refuse when they compile, `tests/ui/run/`): `∂x/∂x0` through a run with sensitivities, for
+/// each kind of piecewise motion that has it in closed form, each sample against it.
+///
+/// - nothing and declared events: the oscillator, `∂x/∂x0 = cos 2t` (the event moves nothing);
+/// - contacts: the ball dropped from `h0`, `∂y/∂h0 = 1` before the touchdown at
+///   `T0 = v1/g` (`v1 = √(2 g h0)`), and `(1 + e) g s / v1 − e` at `s = t − T0` after it, until
+///   the next touchdown (the impact's saltation: the time it moves by, `∂T0/∂h0 = 1/v1`, times
+///   the jump of the velocity, plus the reversed velocity's own sensitivity);
+/// - switching surfaces: `ẍ = −c sign x` from rest at `x0`, `∂x/∂x0 = 1` before the crossing at
+///   `t1 = √(2 x0/c)`, `1 − 2 c s / v1` at `s = t − t1` after it (`v1 = c t1`), until the next.
+#[test]
+fn sensitivities_compose_with_every_kind_of_piecewise_motion_they_cross() {
+    fn check<M: Case + Parameters>(case: &M, start: &State<M>, t_end: f64, exact: impl Fn(f64) -> f64)
+    where
+        DefaultAllocator: Storage<M>,
+    {
+        let x = Coordinate::<M>::unchecked(0);
+        let wrt = Sensitivities::new(case).initial_position(x);
+        let name = wrt.names()[0].clone();
+        let mut radau = Radau::new(case, Fineness::new(1e-10, 1e-12, 1e-3).radau()).expect("valid");
+        let solution = radau
+            .run(0.0, start, t_end)
+            .sampling(Sampling::Every(0.01))
+            .sensitivities(&wrt)
+            .solve()
+            .unwrap_or_else(|error| panic!("{}: {error}", M::KIND));
+        let dx = solution.dq(x, &name).expect("recorded");
+        for (&t, &d) in solution.t().iter().zip(dx) {
+            // Samples within 1e-6 of a crossing hold the value on either side.
+            if case.crossings().iter().any(|(_, at)| (t - at).abs() < 1e-6) {
+                continue;
+            }
+            assert!((d - exact(t)).abs() < 1e-6, "{}: ∂x/∂x0 at {t} = {d}, not {}", M::KIND, exact(t));
+        }
+    }
+    let spring = Oscillator { m: 1.0, k: 4.0 };
+    check(&spring, &spring.start(), 2.0, |t| (2.0 * t).cos());
+    let marked = Marked { m: 1.0, k: 4.0 };
+    check(&marked, &marked.start(), 2.0, |t| (2.0 * t).cos());
+    let ball = BouncingBall { m: 0.3, g: G, e: 0.8 };
+    let (v1, t0) = ((2.0 * G).sqrt(), (2.0 / G).sqrt());
+    let second = t0 * (1.0 + 2.0 * ball.e);
+    check(&ball, &ball.start(), second - 0.05, |t| {
+        if t < t0 { 1.0 } else { (1.0 + ball.e) * G * (t - t0) / v1 - ball.e }
+    });
+    let rocker = Rocker { m: 1.0, c: 2.0 };
+    check(&rocker, &rocker.start(), 2.5, |t| if t < 1.0 { 1.0 } else { 1.0 - 2.0 * 2.0 * (t - 1.0) / 2.0 });
+}
