@@ -101,6 +101,11 @@ pub use dirac_runtime::{
 /// the discrete adjoint of a Radau integration.
 pub use dirac_runtime::adjoint;
 
+/// What a [`Run`] was asked that feeds back into the model (a controller, an event action, a
+/// drive) or carries beside it (sensitivities), which decides, when it compiles, what else it
+/// offers.
+pub use dirac_runtime::feedback;
+
 /// Control design on the exact linearisation: zero-order hold, continuous and discrete LQR,
 /// pole placement, controllability, poles and zeros, frequency and step responses, and a
 /// sampled PID controller with anti-windup.

@@ -81,7 +81,7 @@ pub use simulate::events::{EventContext, Events};
 pub use simulate::held::Held;
 pub use simulate::integrator::{Drive, Integrator};
 pub use simulate::progress::Progress;
-pub use simulate::run::{Run, SensitiveRun, SolveWithEvents};
+pub use simulate::run::{Run, SolveWithEvents, feedback};
 pub use simulate::sensitive::Sensitive;
 pub use simulate::sensitivity::{Sensitivities, Wrt};
 pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};

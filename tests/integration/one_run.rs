@@ -9,9 +9,10 @@ use std::f64::consts::PI;
 use std::ops::ControlFlow;
 use std::time::Duration;
 
+use dirac::adjoint::Objective;
 use dirac::components::electrical::{Capacitor, Ground, Resistor, VoltageSource};
 use dirac::prelude::*;
-use dirac::{Drive, Solution, State};
+use dirac::{Solution, State};
 
 use crate::every_method::switching::Belt;
 use crate::every_method::{Fineness, Method};
@@ -268,16 +269,7 @@ where
                     })
                     .solve(),
                 Way::Progress => run.progress(Duration::ZERO, |_| reports += 1).solve(),
-                Way::Driven => {
-                    drop(run);
-                    integrator.drive(&mut drive).expect("every method drives");
-                    integrator.stop_at(&STOPS).expect("every method stops");
-                    integrator
-                        .run(0.0, &start, t_end)
-                        .sampling(Sampling::Every(0.01))
-                        .events(M::watched())
-                        .solve()
-                }
+                Way::Driven => run.drive(&mut drive, &STOPS).solve(),
             };
             check(case, method, way, solution);
             let (samples, off, calls) = seen.borrow().clone();
@@ -363,52 +355,166 @@ fn a_sampled_controller_that_moves_a_constraint_moves_the_state_by_the_impulse()
     });
 }
 
-/// The sensitivity column of the matrix on the method that carries them (Radau; the others
-/// refuse when they compile, `tests/ui/run/`): `∂x/∂x0` through a run with sensitivities, for
-/// each kind of piecewise motion that has it in closed form, each sample against it.
-///
-/// - nothing and declared events: the oscillator, `∂x/∂x0 = cos 2t` (the event moves nothing);
-/// - contacts: the ball dropped from `h0`, `∂y/∂h0 = 1` before the touchdown at
-///   `T0 = v1/g` (`v1 = √(2 g h0)`), and `(1 + e) g s / v1 − e` at `s = t − T0` after it, until
-///   the next touchdown (the impact's saltation: the time it moves by, `∂T0/∂h0 = 1/v1`, times
-///   the jump of the velocity, plus the reversed velocity's own sensitivity);
-/// - switching surfaces: `ẍ = −c sign x` from rest at `x0`, `∂x/∂x0 = 1` before the crossing at
-///   `t1 = √(2 x0/c)`, `1 − 2 c s / v1` at `s = t − t1` after it (`v1 = c t1`), until the next.
-#[test]
-fn sensitivities_compose_with_every_kind_of_piecewise_motion_they_cross() {
-    fn check<M: Case + Parameters>(case: &M, start: &State<M>, t_end: f64, exact: impl Fn(f64) -> f64)
-    where
-        DefaultAllocator: Storage<M>,
-    {
-        let x = Coordinate::<M>::unchecked(0);
-        let wrt = Sensitivities::new(case).initial_position(x);
-        let name = wrt.names()[0].clone();
-        let mut radau = Radau::new(case, Fineness::new(1e-10, 1e-12, 1e-3).radau()).expect("valid");
-        let solution = radau
-            .run(0.0, start, t_end)
-            .sampling(Sampling::Every(0.01))
-            .sensitivities(&wrt)
-            .solve()
-            .unwrap_or_else(|error| panic!("{}: {error}", M::KIND));
-        let dx = solution.dq(x, &name).expect("recorded");
-        for (&t, &d) in solution.t().iter().zip(dx) {
-            // Samples within 1e-6 of a crossing hold the value on either side.
-            if case.crossings().iter().any(|(_, at)| (t - at).abs() < 1e-6) {
-                continue;
+/// What a differentiated run is asked for: forward sensitivities, or a recording for the
+/// adjoint.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Carried {
+    Sensitivities,
+    Adjoint,
+}
+
+/// `∂x/∂x0` of a case in closed form, for the differentiated columns of the matrix, and the end
+/// of a differentiated run (before a crossing the closed form does not follow).
+trait Tangent: Case + Parameters
+where
+    DefaultAllocator: Storage<Self>,
+{
+    fn d_dx0(&self, t: f64) -> f64;
+    fn differentiated_end(&self) -> f64 {
+        self.t_end()
+    }
+}
+
+/// The oscillator: `∂x/∂x0 = cos 2t`.
+impl Tangent for Oscillator {
+    fn d_dx0(&self, t: f64) -> f64 {
+        (2.0 * t).cos()
+    }
+}
+
+/// The oscillator with its event, which moves nothing: `cos 2t`.
+impl Tangent for Marked {
+    fn d_dx0(&self, t: f64) -> f64 {
+        (2.0 * t).cos()
+    }
+}
+
+/// The ball dropped from `h0`: `∂y/∂h0 = 1` before the touchdown at `T0 = v1/g`
+/// (`v1 = √(2 g h0)`), and `(1 + e) g s / v1 − e` at `s = t − T0` after it, until the next
+/// touchdown (the impact's saltation: the time it moves by, `∂T0/∂h0 = 1/v1`, times the jump of
+/// the velocity, plus the reversed velocity's own sensitivity).
+impl Tangent for BouncingBall {
+    fn d_dx0(&self, t: f64) -> f64 {
+        let (v1, t0) = ((2.0 * G).sqrt(), (2.0 / G).sqrt());
+        if t < t0 { 1.0 } else { (1.0 + self.e) * G * (t - t0) / v1 - self.e }
+    }
+    fn differentiated_end(&self) -> f64 {
+        self.crossings()[1].1 - 0.05
+    }
+}
+
+/// The mass over the belt, from `x0`: `x = x_e + (x0 − x_e) cos ωt` until it grips at `t₁`,
+/// `∂x/∂x0 = cos ωt`; gripping, `x = x(t₁) + vb (t − t₁)`, and the shift of `t₁` cancels
+/// (the velocity is `vb` on both sides), `∂x/∂x0 = c₁ = cos ωt₁`; it slips again where
+/// `x = μs N / k`, which does not depend on `x0`, at `t₂` with `∂t₂/∂x0 = −c₁/vb`, and then
+/// follows a motion `F(t − t₂)` that does not either: `∂x/∂x0 = F'(s) c₁/vb
+/// = c₁ (cos ωs − d ω sin(ωs)/vb)`, `d = μs N/k − x_e`.
+impl Tangent for Belt {
+    fn d_dx0(&self, t: f64) -> f64 {
+        let (omega, xe) = ((self.k / self.m).sqrt(), self.mu_k * self.n / self.k);
+        let [(_, t1), (_, t2)] = [self.crossings()[0], self.crossings()[1]];
+        let c1 = (omega * t1).cos();
+        match t {
+            t if t <= t1 => (omega * t).cos(),
+            t if t <= t2 => c1,
+            t => {
+                let (s, d) = (t - t2, self.mu_s * self.n / self.k - xe);
+                c1 * ((omega * s).cos() - d * omega * (omega * s).sin() / self.vb)
             }
-            assert!((d - exact(t)).abs() < 1e-6, "{}: ∂x/∂x0 at {t} = {d}, not {}", M::KIND, exact(t));
         }
     }
-    let spring = Oscillator { m: 1.0, k: 4.0 };
-    check(&spring, &spring.start(), 2.0, |t| (2.0 * t).cos());
-    let marked = Marked { m: 1.0, k: 4.0 };
-    check(&marked, &marked.start(), 2.0, |t| (2.0 * t).cos());
-    let ball = BouncingBall { m: 0.3, g: G, e: 0.8 };
-    let (v1, t0) = ((2.0 * G).sqrt(), (2.0 / G).sqrt());
-    let second = t0 * (1.0 + 2.0 * ball.e);
-    check(&ball, &ball.start(), second - 0.05, |t| {
-        if t < t0 { 1.0 } else { (1.0 + ball.e) * G * (t - t0) / v1 - ball.e }
-    });
-    let rocker = Rocker { m: 1.0, c: 2.0 };
-    check(&rocker, &rocker.start(), 2.5, |t| if t < 1.0 { 1.0 } else { 1.0 - 2.0 * 2.0 * (t - 1.0) / 2.0 });
+}
+
+/// `ẍ = −c sign x` from rest at `x0`: `∂x/∂x0 = 1` before the crossing at `t1 = √(2 x0/c)`,
+/// `1 − 2 c s / v1` at `s = t − t1` after it (`v1 = c t1`), until the next.
+impl Tangent for Rocker {
+    fn d_dx0(&self, t: f64) -> f64 {
+        let (t1, v1) = (1.0, self.c);
+        if t < t1 { 1.0 } else { 1.0 - 2.0 * self.c * (t - t1) / v1 }
+    }
+    fn differentiated_end(&self) -> f64 {
+        2.5
+    }
+}
+
+/// The differentiated columns of the matrix for one case, on the method that carries them
+/// (Radau; the others refuse when they compile, as do a controller and a drive with either:
+/// `tests/ui/run/`): each way of running that composes with them ({plain, observer, progress})
+/// with sensitivities, each sample's `∂x/∂x0` against the closed form, and with a recording,
+/// the adjoint gradient of `x(T)` with respect to `x0` against it. Returns the cells checked.
+fn differentiated<M: Tangent>(case: &M) -> usize
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut cells = 0;
+    let x = Coordinate::<M>::unchecked(0);
+    let wrt = Sensitivities::new(case).initial_position(x);
+    let name = wrt.names()[0].clone();
+    let (start, t_end) = (case.start(), case.differentiated_end());
+    for carried in [Carried::Sensitivities, Carried::Adjoint] {
+        for way in [Way::Plain, Way::Observed, Way::Progress] {
+            let label = format!("{} × {way:?} × {carried:?}", M::KIND);
+            let mut radau = Radau::new(case, Fineness::new(1e-10, 1e-12, 1e-3).radau()).expect("valid");
+            let (mut steps, mut reports) = (0, 0);
+            let run = radau.run(0.0, &start, t_end).sampling(Sampling::Every(0.01)).events(M::watched());
+            let run = match way {
+                Way::Observed => run.observe(|_, _| {
+                    steps += 1;
+                    ControlFlow::Continue(())
+                }),
+                Way::Progress => run.progress(Duration::ZERO, |_| reports += 1),
+                _ => run,
+            };
+            match carried {
+                Carried::Sensitivities => {
+                    let solution =
+                        run.sensitivities(&wrt).solve().unwrap_or_else(|error| panic!("{label}: {error}"));
+                    let dx = solution.dq(x, &name).expect("recorded");
+                    for (&t, &d) in solution.t().iter().zip(dx) {
+                        // Samples within 1e-6 of a crossing hold the value on either side.
+                        if case.crossings().iter().any(|(_, at)| (t - at).abs() < 1e-6) {
+                            continue;
+                        }
+                        let exact = case.d_dx0(t);
+                        assert!((d - exact).abs() < 1e-6, "{label}: ∂x/∂x0 at {t} = {d}, not {exact}");
+                    }
+                    assert!(solution.t().len() > 100, "{label}: {} samples", solution.t().len());
+                }
+                Carried::Adjoint => {
+                    let recording = run.record().unwrap_or_else(|error| panic!("{label}: {error}"));
+                    let terminal = |_: f64, y: &State<M>, out: &mut State<M>| {
+                        out.q[0] = 1.0;
+                        y.q[0]
+                    };
+                    let gradient = recording
+                        .gradient(case, &Objective::terminal(&terminal))
+                        .unwrap_or_else(|error| panic!("{label}: {error}"));
+                    let (d, exact) = (gradient.positions[0], case.d_dx0(t_end));
+                    assert!((d - exact).abs() < 1e-6, "{label}: ∂x(T)/∂x0 = {d}, not {exact}");
+                    assert!((gradient.value - case.exact(t_end)).abs() < 1e-6, "{label}: x(T)");
+                }
+            }
+            match way {
+                Way::Observed => assert!(steps >= 10, "{label}: {steps} steps observed"),
+                Way::Progress => assert!(reports >= 10, "{label}: {reports} reports"),
+                _ => {}
+            }
+            cells += 1;
+        }
+    }
+    cells
+}
+
+/// The differentiated columns of the matrix: 5 kinds of piecewise motion × {plain, observer,
+/// progress} × {sensitivities, adjoint} on Radau = 30 cells, each against its closed form. The
+/// other cells of those columns (Explicit and Variational; a sampled controller or a drive on
+/// Radau) are refused when they compile: `tests/ui/run/`.
+#[test]
+fn sensitivities_and_recordings_compose_with_every_kind_of_piecewise_motion() {
+    let cells = differentiated(&Oscillator { m: 1.0, k: 4.0 })
+        + differentiated(&Marked { m: 1.0, k: 4.0 })
+        + differentiated(&BouncingBall { m: 0.3, g: G, e: 0.8 })
+        + differentiated(&Belt { m: 1.0, k: 4.0, vb: 0.5, n: 9.81, mu_s: 0.4, mu_k: 0.25 })
+        + differentiated(&Rocker { m: 1.0, c: 2.0 });
+    assert_eq!(cells, 30);
 }

@@ -8,12 +8,17 @@ use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::shape::layout::Layout;
-use crate::simulate::events::sensitivities::solve_with_sensitivities_through_events;
+use std::ops::ControlFlow;
+
+use crate::simulate::events::sensitivities::{Crossed, Jump, carry, momenta};
+use crate::simulate::events::{EventContext, Events};
 use crate::simulate::integrator::Integrator;
 use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
+use crate::simulate::restart::restart_nearest_with;
+use crate::simulate::run::cycle::{Hooks, Tangent, drive};
 use crate::simulate::sensitivity::Sensitivities;
-use crate::simulate::solution::{Sampling, Solution};
+use crate::simulate::solution::{Event, Sampling, Solution};
 
 /// An integrator that carries the forward sensitivities of its solution with respect to
 /// parameters and initial values: [`Radau`](crate::Radau) (the staggered direct method). A
@@ -101,9 +106,8 @@ where
         .collect()
 }
 
-/// [`Sensitive::solve_with_sensitivities`]: the samples of the state, and at each the
-/// sensitivities, recorded sample by sample (each sample's values side by side, contiguous
-/// writes) and turned into one column per value at the end.
+/// [`Sensitive::solve_with_sensitivities`]: the run's one loop with the sensitivities
+/// carried ([`Carrier`]), the model's contacts, laws and switching surfaces watched.
 fn record_with_sensitivities<M: Hybrid + Parameters, I: Sensitive<M>>(
     integrator: &mut I,
     t0: f64,
@@ -114,49 +118,147 @@ fn record_with_sensitivities<M: Hybrid + Parameters, I: Sensitive<M>>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let count = integrator.sensitivity_names().len();
-    if count == 0 {
-        return Err(SimError::InvalidOption {
-            what: "sensitivities",
-            reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
-        });
-    }
-    let model = integrator.model();
-    if !model.unilateral_names().is_empty() || model.has_switches() || laws::has_laws(model) {
-        // The jump of a sensitivity across a switch needs the event functions' derivatives,
-        // which a model assembled while the program runs (a network) does not generate.
-        let width = 2 * model.sizes().nq + model.sizes().nc + 1 + model.parameter_count();
-        let declared = model.event_declarations().len();
-        if declared > 0 && model.event_derivatives_len() != declared * width {
-            let what = match model.has_switches() {
-                true => format!("its switching surfaces ({})", surfaces(model).join(", ")),
-                false => format!("its laws' switches ({})", laws::law_names(model).join(", ")),
-            };
+    let mut carrier = Carrier::new(integrator)?;
+    let mut events = Events::new();
+    events.watch_model(integrator.model(), true)?;
+    let mut no_action = |_: &Event, _: &mut EventContext<'_, M, I>| ControlFlow::Continue(());
+    let hooks = Hooks { action: &mut no_action, every: None, after_step: None, tangent: Some(&mut carrier) };
+    let recorder = drive(integrator, (t0, state, t_end), sampling, &mut events, hooks)?;
+    carrier.finish(integrator, recorder)
+}
+
+/// The forward sensitivities a run carries ([`Tangent`]): recorded beside the samples, carried
+/// across each jump by its saltation (see [`carry`]).
+pub(crate) struct Carrier<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// The sensitivities at the samples, once the run started.
+    rows: Option<SensitivityRows<M>>,
+    /// The sensitivities just after the last jump.
+    restarted: Vec<State<M>>,
+    buffer: State<M>,
+}
+
+impl<M: Hybrid + Parameters> Carrier<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Room for the sensitivities `integrator` was asked to carry, after checking that the
+    /// run can carry them across what its model's events do.
+    pub fn new<I: Sensitive<M>>(integrator: &I) -> Result<Self, SimError> {
+        let count = integrator.sensitivity_names().len();
+        if count == 0 {
             return Err(SimError::InvalidOption {
                 what: "sensitivities",
-                reason: format!(
-                    "this model (a network, assembled while the program runs) does not carry \
-                     sensitivities across {what}: take differences of solutions"
-                ),
+                reason: "none were asked for: build the integrator with `with_sensitivities`".into(),
             });
         }
-        return solve_with_sensitivities_through_events(integrator, t0, state, t_end, sampling);
+        carried_across_events(integrator.model())?;
+        let sizes = integrator.model().sizes();
+        Ok(Carrier {
+            rows: None,
+            restarted: vec![State::with_sizes(sizes); count],
+            buffer: State::with_sizes(sizes),
+        })
     }
-    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
-    let mut rows = SensitivityRows::new(integrator, &mut recorder)?;
-    integrator.start(t0, state, t_end)?;
-    recorder.record_initial(integrator.model(), t0, integrator.state());
-    rows.push_initial(integrator, &recorder);
-    while !integrator.finished() {
-        let before = recorder.len();
-        integrator.step()?;
-        rows.complete(integrator);
-        recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
-            integrator.interpolate(t, out)
+
+    /// The solution of the run, with a column per sensitivity value.
+    pub fn finish<I: Sensitive<M>>(
+        self,
+        integrator: &mut I,
+        recorder: Recorder<M>,
+    ) -> Result<Solution<M, I::Stats>, SimError> {
+        let rows = self.rows.expect("a run that started records its sensitivities");
+        rows.finish(integrator, recorder)
+    }
+}
+
+/// Refuses a model whose events' jumps the sensitivities cannot be carried across: a network's
+/// switching surfaces and laws (their event functions' derivatives are not generated for a
+/// model assembled while the program runs), and contacts that can rest.
+fn carried_across_events<M: Hybrid + Parameters>(model: &M) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.unilateral_names();
+    if let Some(j) = (0..names.len()).find(|&j| model.contact_row(j).is_some()) {
+        return Err(SimError::InvalidOption {
+            what: "sensitivities",
+            reason: format!(
+                "the contact `{}` can rest (a companion made by `with_contacts`): resting switches the \
+                 model's constraints, and that switch's sensitivities are not carried; carry them on the \
+                 model itself, whose impacts are",
+                names[j]
+            ),
         });
-        rows.push_within(integrator, &recorder, before);
     }
-    rows.finish(integrator, recorder)
+    if names.is_empty() && !model.has_switches() && !laws::has_laws(model) {
+        return Ok(());
+    }
+    let width = 2 * model.sizes().nq + model.sizes().nc + 1 + model.parameter_count();
+    let declared = model.event_declarations().len();
+    if declared > 0 && model.event_derivatives_len() != declared * width {
+        let what = match model.has_switches() {
+            true => format!("its switching surfaces ({})", surfaces(model).join(", ")),
+            false => format!("its laws' switches ({})", laws::law_names(model).join(", ")),
+        };
+        return Err(SimError::InvalidOption {
+            what: "sensitivities",
+            reason: format!(
+                "this model (a network, assembled while the program runs) does not carry \
+                 sensitivities across {what}: take differences of solutions"
+            ),
+        });
+    }
+    Ok(())
+}
+
+impl<M: Hybrid + Parameters, I: Sensitive<M>> Tangent<M, I> for Carrier<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn cross(
+        &mut self,
+        model: &M,
+        events: &mut Events<'_, M>,
+        event: &Event,
+    ) -> Result<Crossed<M>, SimError> {
+        events.cross(model, event, "sensitivities")
+    }
+
+    fn started(&mut self, integrator: &I, recorder: &Recorder<M>, _: &State<M>) -> Result<(), SimError> {
+        let mut rows = SensitivityRows::new(integrator, recorder)?;
+        rows.push_initial(integrator, recorder);
+        self.rows = Some(rows);
+        Ok(())
+    }
+
+    fn after_step(&mut self, integrator: &I, _: f64) {
+        self.rows.as_mut().expect("started").complete(integrator);
+    }
+
+    fn sampled(&mut self, integrator: &I, recorder: &Recorder<M>, before: usize) {
+        self.rows.as_mut().expect("started").push_within(integrator, recorder, before);
+    }
+
+    fn jump(&mut self, integrator: &mut I, t: f64, mut jump: Jump<M>) -> Result<State<M>, SimError> {
+        carry(integrator, &jump, t, &mut self.restarted, &mut self.buffer);
+        // From the consistent state nearest to the crossing where the restart refuses it, as a
+        // solve does, the sensitivities' momenta following it.
+        let restarted = &mut self.restarted;
+        restart_nearest_with(integrator, t, &mut jump.after, |integrator, t, after, projected| {
+            if projected {
+                momenta(integrator, t, after, restarted);
+            }
+            integrator.restart_with_sensitivities(t, after, restarted)
+        })?;
+        Ok(jump.after)
+    }
+
+    fn restarted(&mut self, recorder: &Recorder<M>, before: usize) {
+        self.rows.as_mut().expect("started").push_restart(&self.restarted, recorder, before);
+    }
 }
 
 /// The sensitivities recorded sample by sample beside a [`Recorder`]'s samples (each sample's
@@ -180,7 +282,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// Room for `integrator`'s sensitivities at `recorder`'s samples.
-    pub fn new<I: Sensitive<M>>(integrator: &I, recorder: &mut Recorder<M>) -> Result<Self, SimError> {
+    pub fn new<I: Sensitive<M>>(integrator: &I, recorder: &Recorder<M>) -> Result<Self, SimError> {
         let sizes = integrator.model().sizes();
         let len = Layout::new(sizes).len;
         let series = integrator.sensitivity_names().len() * len;

@@ -57,11 +57,16 @@ use crate::model::{Hybrid, LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Sizes, Storage, VecQ, VecY};
 use crate::shape::layout::Layout;
 use crate::simulate::events::Events;
-use crate::simulate::events::sensitivities::Jump;
+use crate::simulate::events::sensitivities::{Crossed, Jump};
 use crate::simulate::integrator::Integrator;
 use crate::simulate::laws::has_laws;
+use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::restart_at_nearest;
+use crate::simulate::run::Run;
+use crate::simulate::run::cycle::Tangent;
+use crate::simulate::run::feedback::Open;
 use crate::simulate::sensitivity::Initial;
+use crate::simulate::solution::{Event, Sampling};
 
 /// The most unknowns of the condensed transposed stage system, `3 (n + m)`, of a model stored
 /// dense: 1200 keeps its matrix at 11.5 MB and its factorisation under a second a step. A model
@@ -270,66 +275,13 @@ where
 {
     /// Integrates from the consistent `state` at `t0` to `t_end`, as
     /// [`Integrator::solve`] does, and keeps every accepted step for
-    /// [`Recording::gradient`].
-    ///
-    /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
-    /// projection's derivative is not carried) or a drive (its inputs' derivative is not known).
-    ///
-    /// A model with unilateral constraints has its contacts watched, and one with switching
-    /// surfaces (`abs`, `signum`, conditionals) has them located, as `solve` does: the
-    /// recording keeps each impact's or crossing's jump and the sweep carries the adjoint back
-    /// across it by the transposed saltation matrix. A model with laws (friction, diodes, ideal
-    /// switches) has them switched as `solve` does, and each switch kept as a crossing is. A contact that comes to rest ends the
-    /// recording in [`SimError::ContactCloses`].
+    /// [`Recording::gradient`]: a shorthand of `run(t0, state, t_end).record()`
+    /// ([`Run::record`](crate::Run::record)), which says what is crossed and what refused.
     pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError>
     where
         M: Hybrid + Parameters,
     {
-        self.check_recordable()?;
-        // Each law starts in the mode the state puts it in, as in a solve.
-        let chosen = crate::simulate::laws::start_in_modes(self.model.get(), t0, state)?;
-        let state = chosen.as_ref().unwrap_or(state);
-        self.start(t0, state, t_end)?;
-        let sizes = self.model.sizes();
-        let model = self.model.get();
-        let (contacts, switches) =
-            (!model.unilateral_names().is_empty(), model.has_switches() || has_laws(model));
-        let mut events = (contacts || switches).then(|| {
-            let events = if contacts { Events::new().contacts(model) } else { Events::new() };
-            if switches { events.switches_in(model) } else { events }
-        });
-        if let Some(events) = &mut events {
-            events.begin(self.model.get(), t0, &self.state)?;
-        }
-        let mut steps = Vec::new();
-        let mut impacts = Vec::new();
-        while !self.finished() {
-            let (t, y) = (self.t, self.y.clone());
-            let h = self.step()?;
-            let z = [self.stages.z[0].clone(), self.stages.z[1].clone(), self.stages.z[2].clone()];
-            debug_assert_eq!(z[0].len(), sizes.ny());
-            steps.push(Step { t, h, y, z });
-            let Some(events) = &mut events else { continue };
-            while let Some(event) = events.locate(self)? {
-                let crossed = events.cross(self.model.get(), &event, "adjoint")?;
-                let Some(mut jump) = crossed.jump else { continue };
-                restart_at_nearest(self, event.t, &mut jump.after)?;
-                events.resume(self.model.get(), event.t, &jump.after)?;
-                events.reopen(&jump.reopened);
-                impacts.push(Cut { step: steps.len() - 1, t: event.t, jump });
-                break;
-            }
-        }
-        let end = self.y.clone();
-        Ok(Recording {
-            t0,
-            start: state.clone(),
-            t_end: self.t,
-            end,
-            kept: Kept::Whole(steps),
-            impacts,
-            held: None,
-        })
+        self.run(t0, state, t_end).record()
     }
 
     /// Integrates as [`record`](Self::record) does, but keeps, of the steps, only their sizes
@@ -405,6 +357,97 @@ where
         }
         Ok(())
     }
+}
+
+impl<'m, M: Hybrid + Parameters, S: NewtonSolver<M, M::Algebra>> Run<'_, M, Radau<'m, M, S>, Open>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Runs the integration as [`Run::solve`] does and keeps every accepted step for
+    /// [`Recording::gradient`], instead of samples. The run's observer, progress report and
+    /// events of its own compose with it; a controller, an event action or a drive, whose
+    /// derivatives are not carried, do not compile with it.
+    ///
+    /// A model with unilateral constraints has its contacts watched, and one with switching
+    /// surfaces (`abs`, `signum`, conditionals) has them located, as `solve` does: the
+    /// recording keeps each impact's or crossing's jump and the sweep carries the adjoint back
+    /// across it by the transposed saltation matrix. A model with laws (friction, diodes, ideal
+    /// switches) has them switched as `solve` does, and each switch kept as a crossing is. A
+    /// contact that comes to rest ends the recording in [`SimError::ContactCloses`].
+    ///
+    /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
+    /// projection's derivative is not carried) or a drive set on the integrator before the run
+    /// (its inputs' derivative is not known).
+    pub fn record(self) -> Result<Recording<M>, SimError> {
+        self.integrator.check_recordable()?;
+        let t0 = self.t0;
+        let mut tape = Tape { steps: Vec::new(), impacts: Vec::new(), from: None, start: None };
+        let (_, radau) = self.sampling(Sampling::Times(Vec::new())).go(Some(&mut tape))?;
+        let start = tape.start.expect("a run that started keeps its start");
+        Ok(Recording {
+            t0,
+            start,
+            t_end: radau.t,
+            end: radau.y.clone(),
+            kept: Kept::Whole(tape.steps),
+            impacts: tape.impacts,
+            held: None,
+        })
+    }
+}
+
+/// What [`Run::record`] keeps of a run, as a [`Tangent`] its loop carries: every accepted step
+/// and every jump.
+struct Tape<M: LagrangeDirac>
+where
+    DefaultAllocator: Storage<M>,
+{
+    steps: Vec<Step<M>>,
+    impacts: Vec<Cut<M>>,
+    /// The start of the step being taken.
+    from: Option<(f64, VecY<M>)>,
+    /// The state the run started from.
+    start: Option<State<M>>,
+}
+
+impl<M: Hybrid + Parameters, S: NewtonSolver<M, M::Algebra>> Tangent<M, Radau<'_, M, S>> for Tape<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn cross(
+        &mut self,
+        model: &M,
+        events: &mut Events<'_, M>,
+        event: &Event,
+    ) -> Result<Crossed<M>, SimError> {
+        events.cross(model, event, "adjoint")
+    }
+
+    fn started(&mut self, _: &Radau<'_, M, S>, _: &Recorder<M>, from: &State<M>) -> Result<(), SimError> {
+        self.start = Some(from.clone());
+        Ok(())
+    }
+
+    fn before_step(&mut self, radau: &Radau<'_, M, S>) {
+        self.from = Some((radau.t, radau.y.clone()));
+    }
+
+    fn after_step(&mut self, radau: &Radau<'_, M, S>, h: f64) {
+        let (t, y) = self.from.take().expect("a step has a start");
+        let z = [radau.stages.z[0].clone(), radau.stages.z[1].clone(), radau.stages.z[2].clone()];
+        self.steps.push(Step { t, h, y, z });
+    }
+
+    fn sampled(&mut self, _: &Radau<'_, M, S>, _: &Recorder<M>, _: usize) {}
+
+    fn jump(&mut self, radau: &mut Radau<'_, M, S>, t: f64, mut jump: Jump<M>) -> Result<State<M>, SimError> {
+        restart_at_nearest(radau, t, &mut jump.after)?;
+        let after = jump.after.clone();
+        self.impacts.push(Cut { step: self.steps.len() - 1, t, jump });
+        Ok(after)
+    }
+
+    fn restarted(&mut self, _: &Recorder<M>, _: usize) {}
 }
 
 impl<M: LagrangeDirac> Recording<M>

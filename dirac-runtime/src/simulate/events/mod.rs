@@ -194,6 +194,12 @@ where
         self
     }
 
+    /// Whether event `index` is one whose crossing makes the state or the model jump: a
+    /// contact's, a law's or a switching surface's (not one of the run's own).
+    pub(crate) fn jumps_at(&self, index: usize) -> bool {
+        self.contact_of[index].is_some() || self.law_of[index].is_some() || self.switch_of[index]
+    }
+
     /// After a restart at an impact: the contacts `reopened` (their indices among the
     /// unilateral constraints) moved away from zero, so their functions count as positive
     /// from there, whatever their sign at the impact.
@@ -297,18 +303,19 @@ where
     /// without them), its laws, and, with `surfaces`, its switching surfaces. What every run
     /// watches ([`Run`](crate::simulate::run::Run)); an error where the laws are half watched
     /// (`switches()` on a network, whose parts declare them: `switches_in(&network)` reads them).
-    pub(crate) fn watch_model(mut self, model: &M, surfaces: bool) -> Result<Self, SimError> {
-        if self.contacts.is_none() && !self.free_motion && !model.unilateral_names().is_empty() {
-            self = self.contacts(model);
-        }
+    pub(crate) fn watch_model(&mut self, model: &M, surfaces: bool) -> Result<(), SimError> {
         let laws = laws::has_laws(model);
-        if self.all_declared.is_none() && (laws || (surfaces && model.has_switches())) {
-            self = self.switches_in(model);
-        }
-        if laws && !self.watches_laws(model) {
+        // Refused before anything changes, so that the caller's events stay as they were.
+        if laws && self.all_declared.is_some() && !self.watches_laws(model) {
             return Err(solve::unwatched_laws(model));
         }
-        Ok(self)
+        if self.contacts.is_none() && !self.free_motion && !model.unilateral_names().is_empty() {
+            *self = std::mem::take(self).contacts(model);
+        }
+        if self.all_declared.is_none() && (laws || (surfaces && model.has_switches())) {
+            *self = std::mem::take(self).switches_in(model);
+        }
+        Ok(())
     }
 
     /// Watches the declared events `declared` (all, or the switching surfaces and laws only),

@@ -1,6 +1,16 @@
-//! Forward sensitivities through impacts: the solve of a model with unilateral constraints
-//! that carries each sensitivity across each impact by the impact's saltation matrix
-//! ([`saltation`]), the impact's time moving with the parameters and the initial values.
+//! The jumps of impacts, law switches and switching surfaces with their derivatives
+//! ([`Events::cross`]), and forward sensitivities carried across them: at each law's switch
+//! every sensitivity jumps as at a surface, with the rates of the old mode and the new (see the
+//! `law_jump` module). At each crossing of a surface every sensitivity's velocities jump by
+//! `(v̇⁻ − v̇⁺) ∂t*/∂x s` plus, for a parameter, `(v̇⁻ − v̇⁺) ∂t*/∂θ` (the jump of the rate times
+//! the crossing's shift; see the `surface` module), and at each impact every sensitivity
+//! `s = ∂(q, v)/∂θ` just before it becomes `S s + c_θ` just after it (`S` the saltation matrix
+//! ([`saltation`]), `c_θ` its column for the parameter `θ`, zero for an initial value), the
+//! momenta's part following the Legendre map, `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`. The
+//! multipliers' part restarts at zero and is completed, at the impact's sample after it, from
+//! the next step, as at the start. A contact that comes to rest ends such a run in
+//! [`SimError::ContactCloses`] (resting would switch the model's constraints, whose
+//! sensitivities' jump is not carried).
 
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
@@ -13,123 +23,9 @@ use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::simulate::impact::{Saltation, saltation};
 use crate::simulate::law_jump::law_jump;
-use crate::simulate::laws;
-use crate::simulate::recorder::Recorder;
-use crate::simulate::restart::restart_nearest_with;
-use crate::simulate::sensitive::{Sensitive, SensitivityRows};
-use crate::simulate::solution::{Event, Impact, Sampling, Solution};
+use crate::simulate::sensitive::Sensitive;
+use crate::simulate::solution::Event;
 use crate::simulate::surface::surface_jump;
-
-/// [`Sensitive::solve_with_sensitivities`] of a model with unilateral constraints, switching
-/// surfaces or laws: the integration watches the contacts, locates the surfaces and switches
-/// the laws as [`Integrator::solve`](crate::Integrator::solve) does. At each law's switch every sensitivity jumps as at a
-/// surface, with the rates of the old mode and the new (see the `law_jump` module). At each crossing of a
-/// surface every sensitivity's velocities jump by `(v̇⁻ − v̇⁺) ∂t*/∂x s` plus, for a parameter,
-/// `(v̇⁻ − v̇⁺) ∂t*/∂θ` (the jump of the rate times the crossing's shift; see the
-/// `surface` module), and at each impact every sensitivity `s = ∂(q, v)/∂θ` just
-/// before it becomes `S s + c_θ` just after it (`S` the saltation matrix, `c_θ` its column for
-/// the parameter `θ`, zero for an initial value), the momenta's part following the Legendre
-/// map, `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`. The multipliers' part restarts at zero and is
-/// completed, at the impact's sample after it, from the next step, as at the start.
-///
-/// A contact that comes to rest ends the integration in [`SimError::ContactCloses`], as
-/// without sensitivities (resting contacts would switch the model's constraints, whose
-/// sensitivities' jump is not carried).
-pub fn solve_with_sensitivities_through_events<M: Hybrid + Parameters, I: Sensitive<M>>(
-    integrator: &mut I,
-    t0: f64,
-    state: &State<M>,
-    t_end: f64,
-    sampling: &Sampling,
-) -> Result<Solution<M, I::Stats>, SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    let count = integrator.sensitivity_names().len();
-    let model = integrator.model();
-    let names = model.unilateral_names();
-    if let Some(j) = (0..names.len()).find(|&j| model.contact_row(j).is_some()) {
-        return Err(SimError::InvalidOption {
-            what: "sensitivities",
-            reason: format!(
-                "the contact `{}` can rest (a companion made by `with_contacts`): resting switches the \
-                 model's constraints, and that switch's sensitivities are not carried; carry them on the \
-                 model itself, whose impacts are",
-                names[j]
-            ),
-        });
-    }
-    let sizes = integrator.model().sizes();
-    let n = sizes.nq;
-    let mut recorder = Recorder::new(integrator.model(), sampling, t0, t_end)?;
-    let model = integrator.model();
-    let events = if names.is_empty() { Events::new() } else { Events::new().contacts(model) };
-    let switches = model.has_switches() || laws::has_laws(model);
-    let mut events = if switches { events.switches_in(model) } else { events };
-    // Each law starts in the mode the state puts it in, as in a solve.
-    let chosen = laws::start_in_modes(model, t0, state)?;
-    let state = chosen.as_ref().unwrap_or(state);
-    if let Some(contacts) = &events.contacts {
-        recorder.name_contacts(&contacts.names);
-    }
-    recorder.name_events(events.names());
-    let mut rows = SensitivityRows::new(integrator, &mut recorder)?;
-    let mut buffer = State::<M>::with_sizes(sizes);
-    integrator.start(t0, state, t_end)?;
-    events.begin(integrator.model(), t0, integrator.state())?;
-    recorder.record_initial(integrator.model(), t0, integrator.state());
-    rows.push_initial(integrator, &recorder);
-    let mut restarted = vec![State::<M>::with_sizes(sizes); count];
-    while !integrator.finished() {
-        events.bound_step(integrator)?;
-        integrator.step()?;
-        rows.complete(integrator);
-        let mut jumped = false;
-        while let Some(event) = events.locate(integrator)? {
-            let t = event.t;
-            let before = recorder.len();
-            recorder.record_step(integrator.model(), t, events.state(), |ts, out| {
-                integrator.interpolate(ts, out)
-            });
-            recorder.record_event(integrator.model(), event, events.state());
-            rows.push_within(integrator, &recorder, before);
-            let crossed = events.cross(integrator.model(), &event, "sensitivities")?;
-            for &(j, impulse) in &crossed.impulses {
-                recorder.record_impact(Impact { contact: j, t, impulse });
-            }
-            let Some(mut jump) = crossed.jump else { continue };
-            carry(integrator, &jump, t, &mut restarted, &mut buffer, n);
-            // From the consistent state nearest to the crossing where the restart refuses it,
-            // as a solve does, the sensitivities' momenta following it.
-            restart_nearest_with(integrator, t, &mut jump.after, |integrator, t, after, projected| {
-                if projected {
-                    momenta(integrator, t, after, &mut restarted);
-                }
-                integrator.restart_with_sensitivities(t, after, &restarted)
-            })?;
-            let consistent = &jump.after;
-            events.resume(integrator.model(), t, consistent)?;
-            events.reopen(&jump.reopened);
-            if !crossed.impulses.is_empty() || crossed.switched {
-                // An impact's state after it is a sample of its own, as a law's switch's is; a
-                // switching surface's is the crossing's, just recorded.
-                let before = recorder.len();
-                recorder.record_reset(integrator.model(), t, consistent);
-                rows.push_restart(&restarted, &recorder, before);
-            }
-            jumped = true;
-            break;
-        }
-        if !jumped {
-            let before = recorder.len();
-            recorder.record_step(integrator.model(), integrator.t(), integrator.state(), |t, out| {
-                integrator.interpolate(t, out)
-            });
-            rows.push_within(integrator, &recorder, before);
-        }
-    }
-    rows.finish(integrator, recorder)
-}
 
 /// An event crossed ([`Events::cross`]): each closing contact's impulse and, if any pushed (or
 /// the event is a switching surface's or a law's), the jump.
@@ -224,16 +120,16 @@ where
 /// Each sensitivity just before the jump at `t`, carried across it, into `out`: positions and
 /// velocities by its saltation matrix (and a parameter's column), momenta by the Legendre map
 /// at the state after it ([`momenta`]), multipliers zero.
-fn carry<M: Hybrid + Parameters, I: Sensitive<M>>(
+pub(crate) fn carry<M: Hybrid + Parameters, I: Sensitive<M>>(
     integrator: &I,
     jump: &Jump<M>,
     t: f64,
     out: &mut [State<M>],
     buffer: &mut State<M>,
-    n: usize,
 ) where
     DefaultAllocator: Storage<M>,
 {
+    let n = integrator.model().sizes().nq;
     let mut x = DVector::<f64>::zeros(2 * n);
     for (j, s) in out.iter_mut().enumerate() {
         integrator.interpolate_sensitivity(j, t, buffer);
@@ -252,7 +148,7 @@ fn carry<M: Hybrid + Parameters, I: Sensitive<M>>(
 
 /// The momenta's part of each sensitivity in `out`, from its positions' and velocities' by the
 /// Legendre map at the state `after`: `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`.
-fn momenta<M: Hybrid + Parameters, I: Sensitive<M>>(
+pub(crate) fn momenta<M: Hybrid + Parameters, I: Sensitive<M>>(
     integrator: &I,
     t: f64,
     after: &State<M>,

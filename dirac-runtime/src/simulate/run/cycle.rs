@@ -12,6 +12,7 @@ use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::Storage;
+use crate::simulate::events::sensitivities::{Crossed, Jump};
 use crate::simulate::events::solve::{
     close, rest_where_it_stands, restart_consistent, restart_from, sliding,
 };
@@ -20,7 +21,7 @@ use crate::simulate::integrator::{Integrator, check_period};
 use crate::simulate::laws;
 use crate::simulate::recorder::Recorder;
 use crate::simulate::restart::restart_at_nearest;
-use crate::simulate::solution::{Event, Impact, Sampling, Solution};
+use crate::simulate::solution::{Event, Impact, Sampling};
 
 /// An event's action, borrowed for the run's loop.
 pub(crate) type ActionRef<'h, M, I> =
@@ -31,6 +32,40 @@ type ControllerRef<'h, M> = &'h mut dyn FnMut(f64, &State<M>, &mut M);
 
 /// What a run calls after every step, borrowed for its loop.
 type AfterStep<'h, I> = &'h mut dyn FnMut(&I) -> ControlFlow<()>;
+
+/// What a run carries beside the state and differentiates through its jumps: the forward
+/// sensitivities of a run that asked for them, or the steps an adjoint's sweep goes back over.
+/// Its crossings are the differentiated ones ([`Events::cross`]): impacts, law switches and
+/// switching surfaces, each with its saltation; a run that carries one has no action, no
+/// controller and no drive (refused when it compiles, [`Run::sensitivities`](super::Run::sensitivities)).
+pub(crate) trait Tangent<M: LagrangeDirac, I>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Crosses `event`, a contact's, a law's or a switching surface's, with its derivative
+    /// ([`Events::cross`], which names what crosses in its refusals).
+    fn cross(&mut self, model: &M, events: &mut Events<'_, M>, event: &Event)
+    -> Result<Crossed<M>, SimError>;
+    /// The run started from `from` at the integrator's time, its start recorded.
+    fn started(&mut self, integrator: &I, recorder: &Recorder<M>, from: &State<M>) -> Result<(), SimError>;
+    /// A step is about to be taken.
+    fn before_step(&mut self, integrator: &I) {
+        let _ = integrator;
+    }
+    /// A step of size `h` was taken.
+    fn after_step(&mut self, integrator: &I, h: f64);
+    /// The samples from `before` on were recorded within the last step.
+    fn sampled(&mut self, integrator: &I, recorder: &Recorder<M>, before: usize);
+    /// Carries what it holds across `jump` at `t` and restarts the integration there from the
+    /// state after it, the consistent one nearest where the restart refuses it; returns that
+    /// state.
+    fn jump(&mut self, integrator: &mut I, t: f64, jump: Jump<M>) -> Result<State<M>, SimError>;
+    /// The samples from `before` on were recorded where the integration restarted after a jump.
+    fn restarted(&mut self, recorder: &Recorder<M>, before: usize);
+}
+
+/// A carried tangent, borrowed for the run's loop.
+pub(crate) type TangentRef<'h, M, I> = &'h mut dyn Tangent<M, I>;
 
 /// What a run does besides stepping and watching events.
 pub(crate) struct Hooks<'h, M: LagrangeDirac, I>
@@ -43,22 +78,35 @@ where
     pub every: Option<(f64, ControllerRef<'h, M>)>,
     /// Called after every step; a break ends the run.
     pub after_step: Option<AfterStep<'h, I>>,
+    /// Carried beside the state and through its jumps.
+    pub tangent: Option<TangentRef<'h, M, I>>,
+}
+
+impl<'h, M: LagrangeDirac, I> Hooks<'h, M, I>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Only `action` at each event.
+    pub fn acting(action: ActionRef<'h, M, I>) -> Self {
+        Hooks { action, every: None, after_step: None, tangent: None }
+    }
 }
 
 /// The one loop of every run: steps, the samples recorded, the events located and crossed
 /// (impacts, law switches, switching surfaces, the user's actions), the controller's samples,
-/// the observer after each step.
+/// the observer after each step, the tangent carried. Returns the samples recorded, for the
+/// caller to finish into a solution.
 pub(crate) fn drive<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     (t0, state, t_end): (f64, &State<M>, f64),
     sampling: &Sampling,
     events: &mut Events<'_, M>,
     hooks: Hooks<'_, M, I>,
-) -> Result<Solution<M, I::Stats>, SimError>
+) -> Result<Recorder<M>, SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let Hooks { action, mut every, mut after_step } = hooks;
+    let Hooks { action, mut every, mut after_step, mut tangent } = hooks;
     if let Some((period, _)) = &every {
         check_period(t0, t_end, *period)?;
     }
@@ -75,13 +123,21 @@ where
         stop = sample(1, *period);
     }
     let mut after = begin(integrator, events, &mut recorder, (t0, state, stop))?;
+    if let Some(tangent) = &mut tangent {
+        tangent.started(integrator, &recorder, &after)?;
+    }
     let mut reopened = Vec::new();
     let mut k = 1;
     loop {
-        let mut stretch =
-            Stretch { events, recorder: &mut recorder, after: &mut after, reopened: &mut reopened };
+        let mut stretch = Stretch {
+            events,
+            recorder: &mut recorder,
+            after: &mut after,
+            reopened: &mut reopened,
+            tangent: tangent.as_deref_mut(),
+        };
         if stretch.run(integrator, action, &mut after_step)?.is_break() {
-            return recorder.finish_from(integrator);
+            return Ok(recorder);
         }
         let Some((period, controller)) = &mut every else { break };
         let t = integrator.t();
@@ -93,11 +149,11 @@ where
         k += 1;
         resample(integrator, events, &mut recorder, sample(k, *period))?;
     }
-    recorder.finish_from(integrator)
+    Ok(recorder)
 }
 
 /// What the steps of a run between two of the controller's samples work on.
-struct Stretch<'a, 'e, M: LagrangeDirac>
+struct Stretch<'a, 'e, 't, M: LagrangeDirac, I>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -107,16 +163,18 @@ where
     after: &'a mut State<M>,
     /// The contacts the last impact reopened.
     reopened: &'a mut Vec<usize>,
+    /// Carried beside the state, if the run carries anything.
+    tangent: Option<&'a mut (dyn Tangent<M, I> + 't)>,
 }
 
-impl<M: Hybrid> Stretch<'_, '_, M>
+impl<M: Hybrid, I: Integrator<M>> Stretch<'_, '_, '_, M, I>
 where
     DefaultAllocator: Storage<M>,
 {
     /// Steps until the integrator reaches its end (the next sample, or the run's end), the
     /// events watched and the samples recorded; a break where an action or the after-step hook
     /// ended the run.
-    fn run<I: Integrator<M>>(
+    fn run(
         &mut self,
         integrator: &mut I,
         action: ActionRef<'_, M, I>,
@@ -125,29 +183,26 @@ where
         let watching = !self.events.names().is_empty();
         while !integrator.finished() {
             let restarted = if watching {
-                match step_with_events(
-                    integrator,
-                    self.events,
-                    self.recorder,
-                    self.after,
-                    self.reopened,
-                    action,
-                )? {
+                match self.step_with_events(integrator, action)? {
                     Stepped::Ended => return Ok(ControlFlow::Break(())),
                     Stepped::Restarted => true,
                     Stepped::On => false,
                 }
             } else {
-                integrator.step()?;
+                self.step(integrator)?;
                 false
             };
             if !restarted {
+                let before = self.recorder.len();
                 self.recorder.record_step(
                     integrator.model(),
                     integrator.t(),
                     integrator.state(),
                     |t, out| integrator.interpolate(t, out),
                 );
+                if let Some(tangent) = &mut self.tangent {
+                    tangent.sampled(integrator, self.recorder, before);
+                }
             }
             if let Some(after_step) = after_step
                 && after_step(integrator).is_break()
@@ -156,6 +211,18 @@ where
             }
         }
         Ok(ControlFlow::Continue(()))
+    }
+
+    /// One step, the tangent told before and after it.
+    fn step(&mut self, integrator: &mut I) -> Result<(), SimError> {
+        if let Some(tangent) = &mut self.tangent {
+            tangent.before_step(integrator);
+        }
+        let h = integrator.step()?;
+        if let Some(tangent) = &mut self.tangent {
+            tangent.after_step(integrator, h);
+        }
+        Ok(())
     }
 }
 
@@ -234,119 +301,158 @@ enum Stepped {
     Ended,
 }
 
-/// One step with the events watched: the step taken (or a Zeno sequence of impacts brought to
-/// rest), then each crossing within it located and crossed in time order (impacts, law
-/// switches, switching surfaces, the action), restarting where one of them changes the state
-/// or the model.
-fn step_with_events<M: Hybrid, I: Integrator<M>>(
-    integrator: &mut I,
-    events: &mut Events<'_, M>,
-    recorder: &mut Recorder<M>,
-    after: &mut State<M>,
-    reopened: &mut Vec<usize>,
-    action: ActionRef<'_, M, I>,
-) -> Result<Stepped, SimError>
+impl<M: Hybrid, I: Integrator<M>> Stretch<'_, '_, '_, M, I>
 where
     DefaultAllocator: Storage<M>,
 {
-    events.bound_step(integrator)?;
-    if let Err(error) = integrator.step() {
-        // A step that fails where impacts accumulate fails because of them: the contact comes
-        // to rest where the integrator stands, if it can.
-        let Some(j) = (match (&error, &events.contacts) {
-            (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) => contacts.zeno(*t),
-            _ => None,
-        }) else {
-            return Err(sliding(integrator, events, error));
-        };
-        rest_where_it_stands(integrator, events, recorder, j)?;
-        return Ok(Stepped::Restarted);
-    }
-    loop {
-        let event = match events.locate(integrator) {
-            Ok(Some(event)) => event,
-            Ok(None) => return Ok(Stepped::On),
-            // A contact pressed in without an impact rests from the step's end, if it can.
-            Err(SimError::ContactCloses { contact, t_limit: None, .. })
-                if events
-                    .contact_index(&contact)
-                    .is_some_and(|j| integrator.model().contact_row(j).is_some()) =>
-            {
-                let j = events.contact_index(&contact).expect("just found");
-                rest_where_it_stands(integrator, events, recorder, j)?;
-                return Ok(Stepped::Restarted);
+    /// One step with the events watched: the step taken (or a Zeno sequence of impacts brought
+    /// to rest), then each crossing within it located and crossed in time order (impacts, law
+    /// switches, switching surfaces, the action), restarting where one of them changes the
+    /// state or the model.
+    fn step_with_events(
+        &mut self,
+        integrator: &mut I,
+        action: ActionRef<'_, M, I>,
+    ) -> Result<Stepped, SimError> {
+        self.events.bound_step(integrator)?;
+        // A contact that comes to rest switches the constraints, whose jump a tangent does not
+        // carry: a run that carries one ends there.
+        let rests = self.tangent.is_none();
+        if let Err(error) = self.step(integrator) {
+            // A step that fails where impacts accumulate fails because of them: the contact
+            // comes to rest where the integrator stands, if it can.
+            let Some(j) = (match (&error, &self.events.contacts) {
+                (SimError::StepSizeTooSmall { t, .. }, Some(contacts)) if rests => contacts.zeno(*t),
+                _ => None,
+            }) else {
+                return Err(sliding(integrator, self.events, error));
+            };
+            rest_where_it_stands(integrator, self.events, self.recorder, j)?;
+            return Ok(Stepped::Restarted);
+        }
+        loop {
+            let event = match self.events.locate(integrator) {
+                Ok(Some(event)) => event,
+                Ok(None) => return Ok(Stepped::On),
+                // A contact pressed in without an impact rests from the step's end, if it can.
+                Err(SimError::ContactCloses { contact, t_limit: None, .. })
+                    if rests
+                        && self
+                            .events
+                            .contact_index(&contact)
+                            .is_some_and(|j| integrator.model().contact_row(j).is_some()) =>
+                {
+                    let j = self.events.contact_index(&contact).expect("just found");
+                    rest_where_it_stands(integrator, self.events, self.recorder, j)?;
+                    return Ok(Stepped::Restarted);
+                }
+                Err(error) => return Err(error),
+            };
+            let crossed = match self.tangent.is_some() {
+                true => self.cross_carried(integrator, event)?,
+                false => self.cross(integrator, action, event)?,
+            };
+            if let Some(stepped) = crossed {
+                return Ok(stepped);
             }
-            Err(error) => return Err(error),
-        };
-        if let Some(stepped) = cross(integrator, events, recorder, after, reopened, action, event)? {
-            return Ok(stepped);
         }
     }
-}
 
-/// Crosses `event`, located within the last step: records it, applies its impacts, its
-/// contact's rest or release and its law's switch, hands it to the action, and restarts where
-/// any of them changed the state or the model (`Some`); `None` where the search goes on
-/// within the step.
-fn cross<M: Hybrid, I: Integrator<M>>(
-    integrator: &mut I,
-    events: &mut Events<'_, M>,
-    recorder: &mut Recorder<M>,
-    after: &mut State<M>,
-    reopened: &mut Vec<usize>,
-    action: ActionRef<'_, M, I>,
-    event: Event,
-) -> Result<Option<Stepped>, SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    let t = event.t;
-    recorder.record_step(integrator.model(), t, events.state(), |ts, out| integrator.interpolate(ts, out));
-    recorder.record_event(integrator.model(), event, events.state());
-    after.clone_from(events.state());
-    let (impulse, mut switched) = strike(integrator, events, recorder, after, reopened, &event)?;
-    // A law switches its mode: the state is made consistent in the new one.
-    let law = events.switch_law(integrator.model(), event.index, t, after)?;
-    // Consistent already, unless an impact or a contact changed it too.
-    let consistent = law && !switched && reopened.is_empty();
-    switched |= law;
-    let mut context = EventContext::new(t, after, integrator);
-    context.impulse = impulse;
-    context.reset = !reopened.is_empty() || switched;
-    let flow = action(&event, &mut context);
-    let (reset, before) = context.changes();
-    let touched = context.touched;
-    if flow.is_break() {
-        return Ok(Some(Stepped::Ended));
+    /// Crosses `event`, located within the last step: records it, applies its impacts, its
+    /// contact's rest or release and its law's switch, hands it to the action, and restarts
+    /// where any of them changed the state or the model (`Some`); `None` where the search goes
+    /// on within the step.
+    fn cross(
+        &mut self,
+        integrator: &mut I,
+        action: ActionRef<'_, M, I>,
+        event: Event,
+    ) -> Result<Option<Stepped>, SimError> {
+        let Stretch { events, recorder, after, reopened, .. } = self;
+        let t = event.t;
+        recorder
+            .record_step(integrator.model(), t, events.state(), |ts, out| integrator.interpolate(ts, out));
+        recorder.record_event(integrator.model(), event, events.state());
+        after.clone_from(events.state());
+        let (impulse, mut switched) = strike(integrator, events, recorder, after, reopened, &event)?;
+        // A law switches its mode: the state is made consistent in the new one.
+        let law = events.switch_law(integrator.model(), event.index, t, after)?;
+        // Consistent already, unless an impact or a contact changed it too.
+        let consistent = law && !switched && reopened.is_empty();
+        switched |= law;
+        let mut context = EventContext::new(t, after, integrator);
+        context.impulse = impulse;
+        context.reset = !reopened.is_empty() || switched;
+        let flow = action(&event, &mut context);
+        let (reset, before) = context.changes();
+        let touched = context.touched;
+        if flow.is_break() {
+            return Ok(Some(Stepped::Ended));
+        }
+        if !(reset || before.is_some()) && events.switch_of[event.index] {
+            // A switching surface: the step that reached across it is cut there, and the
+            // integration goes on from the state at the crossing, on the other side. The
+            // interpolated state is the step's, on the constraints as its steps are; where the
+            // integrator's own check refuses it, from the consistent state nearest to it.
+            restart_at_nearest(integrator, t, after)?;
+            events.resume(integrator.model(), t, after)?;
+            return Ok(Some(Stepped::Restarted));
+        }
+        if !(reset || before.is_some()) {
+            return Ok(None);
+        }
+        if let (false, Some(before)) = (reset, before) {
+            check_constraints_kept(
+                integrator.model(),
+                t,
+                after,
+                before,
+                &mut CheckRoom::new(integrator.model()),
+            )?;
+        }
+        if consistent && !touched {
+            restart_consistent(integrator, events, recorder, t, after)?;
+        } else {
+            restart_from(integrator, events, recorder, t, after)?;
+        }
+        events.reopen(reopened);
+        Ok(Some(Stepped::Restarted))
     }
-    if !(reset || before.is_some()) && events.switch_of[event.index] {
-        // A switching surface: the step that reached across it is cut there, and the
-        // integration goes on from the state at the crossing, on the other side. The
-        // interpolated state is the step's, on the constraints as its steps are; where the
-        // integrator's own check refuses it, from the consistent state nearest to it.
-        restart_at_nearest(integrator, t, after)?;
-        events.resume(integrator.model(), t, after)?;
-        return Ok(Some(Stepped::Restarted));
+
+    /// Crosses `event` in a run that carries a tangent: records it and the tangent there, and
+    /// crosses its impact, law switch or switching surface with its derivative
+    /// ([`Events::cross`]), the tangent carried across the jump and the integration restarted
+    /// after it (`Some`); `None` for an event of the run's own, which changes nothing.
+    fn cross_carried(&mut self, integrator: &mut I, event: Event) -> Result<Option<Stepped>, SimError> {
+        let Stretch { events, recorder, tangent, .. } = self;
+        let tangent = tangent.as_deref_mut().expect("a run that carries a tangent");
+        let t = event.t;
+        let before = recorder.len();
+        recorder
+            .record_step(integrator.model(), t, events.state(), |ts, out| integrator.interpolate(ts, out));
+        recorder.record_event(integrator.model(), event, events.state());
+        tangent.sampled(integrator, recorder, before);
+        if !events.jumps_at(event.index) {
+            return Ok(None);
+        }
+        let crossed = tangent.cross(integrator.model(), events, &event)?;
+        for &(j, impulse) in &crossed.impulses {
+            recorder.record_impact(Impact { contact: j, t, impulse });
+        }
+        let Some(mut jump) = crossed.jump else { return Ok(None) };
+        let reopened = std::mem::take(&mut jump.reopened);
+        let after = tangent.jump(integrator, t, jump)?;
+        events.resume(integrator.model(), t, &after)?;
+        events.reopen(&reopened);
+        if !crossed.impulses.is_empty() || crossed.switched {
+            // An impact's state after it is a sample of its own, as a law's switch's is; a
+            // switching surface's is the crossing's, just recorded.
+            let before = recorder.len();
+            recorder.record_reset(integrator.model(), t, &after);
+            tangent.restarted(recorder, before);
+        }
+        Ok(Some(Stepped::Restarted))
     }
-    if !(reset || before.is_some()) {
-        return Ok(None);
-    }
-    if let (false, Some(before)) = (reset, before) {
-        check_constraints_kept(
-            integrator.model(),
-            t,
-            after,
-            before,
-            &mut CheckRoom::new(integrator.model()),
-        )?;
-    }
-    if consistent && !touched {
-        restart_consistent(integrator, events, recorder, t, after)?;
-    } else {
-        restart_from(integrator, events, recorder, t, after)?;
-    }
-    events.reopen(reopened);
-    Ok(Some(Stepped::Restarted))
 }
 
 /// What `event` does to the contacts, when it is one's (an impact, with every contact closed

@@ -8,6 +8,7 @@
 //! `solve_sampled`, `solve_observed`, `solve_with_progress` and `solve_with_events` are
 //! one-line shorthands of it.
 
+use std::marker::PhantomData;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 
@@ -18,15 +19,54 @@ use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::simulate::events::{EventContext, Events};
-use crate::simulate::integrator::Integrator;
+use crate::simulate::integrator::{Drive, Integrator};
 use crate::simulate::progress::Progress;
-use crate::simulate::sensitive::Sensitive;
+use crate::simulate::sensitive::{Carrier, Sensitive};
 use crate::simulate::sensitivity::Sensitivities;
 use crate::simulate::solution::{Event, Sampling, Solution};
 
-mod cycle;
+pub(crate) mod cycle;
 
+pub(crate) use self::cycle::TangentRef;
 use self::cycle::{ActionRef, Hooks, drive};
+
+/// What a [`Run`] was asked that feeds back into the model as it runs, which decides what it
+/// can carry besides the state: the third parameter of its type.
+pub mod feedback {
+    /// Nothing feeds back into the model: the run can carry forward sensitivities
+    /// ([`Run::sensitivities`](super::Run::sensitivities)) or record its steps for an adjoint
+    /// (`Run::record`, with Radau).
+    #[derive(Debug)]
+    pub struct Open;
+
+    /// A sampled controller, an event action or a drive changes the model as it runs: their
+    /// derivatives are not carried, so neither sensitivities nor a recording are offered.
+    #[derive(Debug)]
+    pub struct FedBack;
+
+    /// The run carries forward sensitivities: nothing that feeds back into the model is
+    /// offered.
+    #[derive(Debug)]
+    pub struct WithSensitivities;
+
+    /// The states in which a controller, an action or a drive may still be added.
+    pub trait MayFeedBack: private::Sealed {}
+    impl MayFeedBack for Open {}
+    impl MayFeedBack for FedBack {}
+
+    /// The states that solve without sensitivities.
+    pub trait Plain: private::Sealed {}
+    impl Plain for Open {}
+    impl Plain for FedBack {}
+
+    mod private {
+        pub trait Sealed {}
+        impl Sealed for super::Open {}
+        impl Sealed for super::FedBack {}
+    }
+}
+
+use self::feedback::{FedBack, MayFeedBack, Open, Plain, WithSensitivities};
 
 /// An event's action: what it does with the event, the state and the model there.
 type Action<'r, M, I> = Box<dyn FnMut(&Event, &mut EventContext<'_, M, I>) -> ControlFlow<()> + 'r>;
@@ -41,25 +81,33 @@ type Observer<'r, M> = Box<dyn FnMut(f64, &State<M>) -> ControlFlow<()> + 'r>;
 type Report<'r, S> = Box<dyn FnMut(&Progress<S>) + 'r>;
 
 /// One run of integrator `I` over model `M`, built by [`Integrator::run`] and its options, and
-/// run by [`Run::solve`]. Every option composes with every other, and with the model's own
-/// contacts, laws and switching surfaces, which every run watches.
+/// run by [`Run::solve`] (or, with Radau, recorded for an adjoint by `Run::record`). Every
+/// option composes with every other, and with the model's own contacts, laws and switching
+/// surfaces, which every run watches. What is asked for is tracked in the type's third
+/// parameter ([`feedback`]): a run whose controller, event action or drive feeds back into
+/// the model offers no sensitivities and no recording, and one with sensitivities offers none
+/// of those, refused when it compiles.
 ///
 /// The facade's guide (`dirac::guide`, "One run: controllers, events and contacts together") has
 /// a runnable example: a block on a spring, with a wall, under a controller at 100 Hz.
-pub struct Run<'r, M: LagrangeDirac, I: Integrator<M>>
+pub struct Run<'r, M: LagrangeDirac, I: Integrator<M>, F = Open>
 where
     DefaultAllocator: Storage<M>,
 {
-    integrator: &'r mut I,
-    t0: f64,
-    start: &'r State<M>,
-    t_end: f64,
+    pub(crate) integrator: &'r mut I,
+    pub(crate) t0: f64,
+    pub(crate) start: &'r State<M>,
+    pub(crate) t_end: f64,
     sampling: Sampling,
     events: Events<'r, M>,
     action: Option<Action<'r, M, I>>,
     every: Option<(f64, Controller<'r, M>)>,
     observer: Option<Observer<'r, M>>,
     progress: Option<(Duration, Report<'r, I::Stats>)>,
+    wrt: Option<&'r Sensitivities<M>>,
+    /// Why the run cannot go: a drive the integrator refused.
+    refused: Option<SimError>,
+    feedback: PhantomData<F>,
 }
 
 impl<'r, M: LagrangeDirac, I: Integrator<M>> Run<'r, M, I>
@@ -80,9 +128,17 @@ where
             every: None,
             observer: None,
             progress: None,
+            wrt: None,
+            refused: None,
+            feedback: PhantomData,
         }
     }
+}
 
+impl<'r, M: LagrangeDirac, I: Integrator<M>, F> Run<'r, M, I, F>
+where
+    DefaultAllocator: Storage<M>,
+{
     /// Records samples as `sampling` says (every step by default).
     pub fn sampling(mut self, sampling: Sampling) -> Self {
         self.sampling = sampling;
@@ -94,29 +150,6 @@ where
     /// in the solution and handed to the action of [`Run::on_event`], if any.
     pub fn events(mut self, events: Events<'r, M>) -> Self {
         self.events = events;
-        self
-    }
-
-    /// Hands each event, the model's contacts' and laws' included, to `action`, in time order,
-    /// with an [`EventContext`] to read the state there, reset it or change the model, as
-    /// [`SolveWithEvents::solve_with_events`] describes.
-    pub fn on_event(
-        mut self,
-        action: impl FnMut(&Event, &mut EventContext<'_, M, I>) -> ControlFlow<()> + 'r,
-    ) -> Self {
-        self.action = Some(Box::new(action));
-        self
-    }
-
-    /// Runs under a sampled-data controller: every `period` from the start,
-    /// `controller(t_k, state, model)` reads the state and sets the model's inputs (or
-    /// parameters), held until the next sample. No step straddles a sample. An input that
-    /// moves a constraint (a voltage source's voltage, a prescribed position) moves the state
-    /// as an impulse through the constraints would, to the consistent state nearest in the
-    /// kinetic-energy norm; a law whose mode the new inputs change (a push past static
-    /// friction) switches there. Needs an integrator built on `&mut model`.
-    pub fn every(mut self, period: f64, controller: impl FnMut(f64, &State<M>, &mut M) + 'r) -> Self {
-        self.every = Some((period, Box::new(controller)));
         self
     }
 
@@ -136,17 +169,70 @@ where
         self
     }
 
-    /// Runs the integration and records its [`Solution`]: the samples, every event (the
-    /// model's contacts and laws among them), every impact.
-    pub fn solve(self) -> Result<Solution<M, I::Stats>, SimError>
+    /// The same run in feedback state `G`.
+    fn now<G>(self) -> Run<'r, M, I, G> {
+        let Run {
+            integrator,
+            t0,
+            start,
+            t_end,
+            sampling,
+            events,
+            action,
+            every,
+            observer,
+            progress,
+            wrt,
+            refused,
+            ..
+        } = self;
+        Run {
+            integrator,
+            t0,
+            start,
+            t_end,
+            sampling,
+            events,
+            action,
+            every,
+            observer,
+            progress,
+            wrt,
+            refused,
+            feedback: PhantomData,
+        }
+    }
+
+    /// Runs the loop with `tangent` carried (if any), the observer and the progress report
+    /// called after each step; the samples recorded.
+    pub(crate) fn go(
+        self,
+        tangent: Option<TangentRef<'_, M, I>>,
+    ) -> Result<(crate::simulate::recorder::Recorder<M>, &'r mut I), SimError>
     where
         M: Hybrid,
     {
-        let Run { integrator, t0, start, t_end, sampling, events, action, every, observer, progress } = self;
+        let Run {
+            integrator,
+            t0,
+            start,
+            t_end,
+            sampling,
+            mut events,
+            action,
+            every,
+            observer,
+            progress,
+            refused,
+            ..
+        } = self;
+        if let Some(error) = refused {
+            return Err(error);
+        }
         // A run without events of its own watches the model's switching surfaces too, so that
         // no step reaches across a kink; one with events watches what they ask for.
         let surfaces = events.names().is_empty();
-        let mut events = events.watch_model(integrator.model(), surfaces)?;
+        events.watch_model(integrator.model(), surfaces)?;
         let mut action = action;
         let mut no_action = |_: &Event, _: &mut EventContext<'_, M, I>| ControlFlow::Continue(());
         let action: ActionRef<'_, M, I> = match &mut action {
@@ -154,99 +240,170 @@ where
             None => &mut no_action,
         };
         let began = Instant::now();
-        let mut last = began;
-        let mut observer = observer;
-        let mut progress = progress;
-        let watching = observer.is_some() || progress.is_some();
-        let mut after_step = |integrator: &I| {
-            if let Some((interval, report)) = &mut progress {
-                let now = Instant::now();
-                if now.duration_since(last) >= *interval && !integrator.finished() {
-                    last = now;
-                    report(&Progress {
-                        t: integrator.t(),
-                        t0,
-                        t_end,
-                        stats: integrator.stats(),
-                        elapsed: now - began,
-                    });
-                }
-            }
-            match &mut observer {
-                Some(observer) => observer(integrator.t(), integrator.state()),
-                None => ControlFlow::Continue(()),
-            }
-        };
+        let mut watch = Watch { began, last: began, t0, t_end, observer, progress };
+        let watching = watch.observer.is_some() || watch.progress.is_some();
+        let mut after_step = |integrator: &I| watch.after_step(integrator);
         let mut every = every;
         let hooks = Hooks {
             action,
             every: every.as_mut().map(|(period, controller)| (*period, &mut **controller as _)),
             after_step: if watching { Some(&mut after_step) } else { None },
+            tangent: tangent.map(|tangent| -> TangentRef<'_, M, I> { tangent }),
         };
-        let solution = drive(integrator, (t0, start, t_end), &sampling, &mut events, hooks);
-        if let Some((_, report)) = &mut progress {
-            report(&Progress {
-                t: integrator.t(),
-                t0,
-                t_end,
-                stats: integrator.stats(),
-                elapsed: began.elapsed(),
-            });
-        }
-        solution
+        let recorder = drive(integrator, (t0, start, t_end), &sampling, &mut events, hooks);
+        watch.finish(integrator);
+        Ok((recorder?, integrator))
     }
 }
 
-impl<'r, M: Parameters, I: Sensitive<M>> Run<'r, M, I>
+/// The observer and the progress report of a run, called after each step.
+struct Watch<'r, M: LagrangeDirac, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    began: Instant,
+    /// When the last report was made.
+    last: Instant,
+    t0: f64,
+    t_end: f64,
+    observer: Option<Observer<'r, M>>,
+    progress: Option<(Duration, Report<'r, S>)>,
+}
+
+impl<M: LagrangeDirac, S> Watch<'_, M, S>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Reports the progress, if an interval passed since the last report, and calls the
+    /// observer.
+    fn after_step<I: Integrator<M, Stats = S>>(&mut self, integrator: &I) -> ControlFlow<()> {
+        if let Some((interval, report)) = &mut self.progress {
+            let now = Instant::now();
+            if now.duration_since(self.last) >= *interval && !integrator.finished() {
+                self.last = now;
+                let elapsed = now - self.began;
+                report(&Progress {
+                    t: integrator.t(),
+                    t0: self.t0,
+                    t_end: self.t_end,
+                    stats: integrator.stats(),
+                    elapsed,
+                });
+            }
+        }
+        match &mut self.observer {
+            Some(observer) => observer(integrator.t(), integrator.state()),
+            None => ControlFlow::Continue(()),
+        }
+    }
+
+    /// The last report, at the end.
+    fn finish<I: Integrator<M, Stats = S>>(&mut self, integrator: &I) {
+        if let Some((_, report)) = &mut self.progress {
+            report(&Progress {
+                t: integrator.t(),
+                t0: self.t0,
+                t_end: self.t_end,
+                stats: integrator.stats(),
+                elapsed: self.began.elapsed(),
+            });
+        }
+    }
+}
+impl<'r, M: LagrangeDirac, I: Integrator<M>, F: MayFeedBack> Run<'r, M, I, F>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Hands each event, the model's contacts' and laws' included, to `action`, in time order,
+    /// with an [`EventContext`] to read the state there, reset it or change the model, as
+    /// [`SolveWithEvents::solve_with_events`] describes.
+    pub fn on_event(
+        mut self,
+        action: impl FnMut(&Event, &mut EventContext<'_, M, I>) -> ControlFlow<()> + 'r,
+    ) -> Run<'r, M, I, FedBack> {
+        self.action = Some(Box::new(action));
+        self.now()
+    }
+
+    /// Runs under a sampled-data controller: every `period` from the start,
+    /// `controller(t_k, state, model)` reads the state and sets the model's inputs (or
+    /// parameters), held until the next sample. No step straddles a sample. An input that
+    /// moves a constraint (a voltage source's voltage, a prescribed position) moves the state
+    /// as an impulse through the constraints would, to the consistent state nearest in the
+    /// kinetic-energy norm; a law whose mode the new inputs change (a push past static
+    /// friction) switches there. Needs an integrator built on `&mut model`.
+    pub fn every(
+        mut self,
+        period: f64,
+        controller: impl FnMut(f64, &State<M>, &mut M) + 'r,
+    ) -> Run<'r, M, I, FedBack> {
+        self.every = Some((period, Box::new(controller)));
+        self.now()
+    }
+
+    /// Sets the model's inputs with `drive(t, state, model)` before every evaluation of the
+    /// model, within the steps (a source, a table, a continuous feedback), and ends a step at
+    /// each of `stops`, where those inputs jump or bend: [`Drive::drive`] and
+    /// [`Drive::stop_at`] on the integrator, which keeps them after the run. Needs an
+    /// integrator built on `&mut model`; where the integrator refuses, the run's `solve` says
+    /// why.
+    pub fn drive<'m>(
+        mut self,
+        drive: &'m mut dyn FnMut(f64, &State<M>, &mut M),
+        stops: &[f64],
+    ) -> Run<'r, M, I, FedBack>
+    where
+        I: Drive<'m, M>,
+    {
+        if let Err(error) = self.integrator.drive(drive).and_then(|()| self.integrator.stop_at(stops)) {
+            self.refused = Some(error);
+        }
+        self.now()
+    }
+}
+
+impl<M: Hybrid, I: Integrator<M>, F: Plain> Run<'_, M, I, F>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Runs the integration and records its [`Solution`]: the samples, every event (the
+    /// model's contacts and laws among them), every impact.
+    pub fn solve(self) -> Result<Solution<M, I::Stats>, SimError> {
+        let (recorder, integrator) = self.go(None)?;
+        recorder.finish_from(integrator)
+    }
+}
+
+impl<'r, M: Parameters, I: Sensitive<M>> Run<'r, M, I, Open>
 where
     DefaultAllocator: Storage<M>,
 {
     /// Carries the forward sensitivities of the solution with respect to `wrt`'s parameters and
     /// initial values, recorded at the same samples as the state ([`Solution::sensitivity`]),
     /// through impacts, switching surfaces and law switches (each crossing's jump carried).
-    /// Only a method that carries them ([`Sensitive`]: Radau) offers it. The run that results
-    /// takes samples and a progress report; a controller, an observer that stops the run or an
-    /// event action that resets the state are not offered with sensitivities, whose jumps
-    /// through them are not derived.
-    pub fn sensitivities(self, wrt: &'r Sensitivities<M>) -> SensitiveRun<'r, M, I> {
-        SensitiveRun {
-            integrator: self.integrator,
-            t0: self.t0,
-            start: self.start,
-            t_end: self.t_end,
-            sampling: self.sampling,
-            wrt,
-        }
+    /// Only a method that carries them ([`Sensitive`]: Radau) offers it, and only on a run
+    /// whose model nothing feeds back into: a controller, an event action or a drive before or
+    /// after it does not compile. Samples, events of the run's own (recorded, moving nothing),
+    /// an observer and a progress report compose with it.
+    pub fn sensitivities(mut self, wrt: &'r Sensitivities<M>) -> Run<'r, M, I, WithSensitivities> {
+        self.wrt = Some(wrt);
+        self.now()
     }
 }
 
-/// A [`Run`] that carries forward sensitivities ([`Run::sensitivities`]).
-pub struct SensitiveRun<'r, M: LagrangeDirac, I: Integrator<M>>
+impl<M: Parameters + Hybrid, I: Sensitive<M>> Run<'_, M, I, WithSensitivities>
 where
     DefaultAllocator: Storage<M>,
 {
-    integrator: &'r mut I,
-    t0: f64,
-    start: &'r State<M>,
-    t_end: f64,
-    sampling: Sampling,
-    wrt: &'r Sensitivities<M>,
-}
-
-impl<M: Parameters + Hybrid, I: Sensitive<M>> SensitiveRun<'_, M, I>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Records samples as `sampling` says.
-    pub fn sampling(mut self, sampling: Sampling) -> Self {
-        self.sampling = sampling;
-        self
-    }
-
-    /// Runs the integration with the sensitivities and records both.
+    /// Runs the integration with the sensitivities and records both: the state as
+    /// [`Run::solve`] does and each sensitivity at the same samples, read by quantity and name
+    /// ([`Solution::sensitivity`]).
     pub fn solve(self) -> Result<Solution<M, I::Stats>, SimError> {
-        self.integrator.carry_sensitivities(self.wrt)?;
-        self.integrator.solve_with_sensitivities(self.t0, self.start, self.t_end, &self.sampling)
+        let wrt = self.wrt.expect("a run with sensitivities holds what they are taken with respect to");
+        self.integrator.carry_sensitivities(wrt)?;
+        let mut carrier = Carrier::new(&*self.integrator)?;
+        let (recorder, integrator) = self.go(Some(&mut carrier))?;
+        carrier.finish(integrator, recorder)
     }
 }
 
@@ -283,9 +440,9 @@ where
         events: &mut Events<'_, M>,
         mut action: impl FnMut(&Event, &mut EventContext<'_, M, Self>) -> ControlFlow<()>,
     ) -> Result<Solution<M, Self::Stats>, SimError> {
-        *events = std::mem::take(events).watch_model(self.model(), false)?;
-        let hooks = Hooks { action: &mut action, every: None, after_step: None };
-        drive(self, (t0, state, t_end), sampling, events, hooks)
+        events.watch_model(self.model(), false)?;
+        let recorder = drive(self, (t0, state, t_end), sampling, events, Hooks::acting(&mut action))?;
+        recorder.finish_from(self)
     }
 }
 
