@@ -93,8 +93,8 @@ pub use dirac_runtime::{
     InputsOutputs, Integrator, JacobianBlocks, LagrangeDirac, Layout, Linearization, MatCQ, MatKK, MatQQ,
     MatYY, Membership, Named, Names, OperationCounts, Output, Parameters, Progress, Radau, RadauOptions,
     RadauStats, ResidualBlocks, Run, Sampling, Sensitive, Sensitivities, SimError, Sizes, Slot, Solution,
-    SolveWithEvents, SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC,
-    VecH, VecK, VecQ, VecY, Wrt, consistent_state, linearize,
+    Solve, SparseJacobian, State, Storage, Variational, VariationalOptions, VariationalStats, VecC, VecH,
+    VecK, VecQ, VecY, Wrt, consistent_state, linearize,
 };
 
 /// Gradients of one objective with respect to every parameter and initial value at once, by
@@ -125,11 +125,11 @@ pub use dirac_runtime::algebra;
 pub use dirac_runtime::simulate::ensemble;
 
 /// Input sources read by time: tables of samples, held or interpolated.
-pub use dirac_runtime::simulate::sources;
+pub use dirac_runtime::integrator::sources;
 
 /// An impact at unilateral constraints as a map of the state before it, with its derivative
 /// with respect to positions, velocities, time and parameters.
-pub use dirac_runtime::simulate::impact;
+pub use dirac_runtime::hybrid::impact;
 
 /// Joint-space dynamics of mechanisms (robots read from URDF files among them): the mass
 /// matrix, gravity and bias torques, inverse dynamics.
@@ -249,8 +249,8 @@ pub mod prelude {
         Dimensions, DiracStructure, EnergyBalance, Equations, ErrorNorm, Event, Events, Explicit,
         ExplicitOptions, Hybrid, InputsOutputs, Integrator, Interconnection, JacobianBlocks, LagrangeDirac,
         Linearization, MatCQ, MatQQ, MatYY, Named, Parameters, Radau, RadauOptions, ResidualBlocks, Sampling,
-        Sensitive, Sensitivities, SimError, Sizes, Solution, SolveWithEvents, SparseJacobian, Storage,
-        Variational, VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state, linearize,
+        Sensitive, Sensitivities, SimError, Sizes, Solution, Solve, SparseJacobian, Storage, Variational,
+        VariationalOptions, VecC, VecH, VecQ, VecY, consistent_state, linearize,
     };
 }
 

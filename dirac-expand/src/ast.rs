@@ -7,7 +7,7 @@ use syn::punctuated::Punctuated;
 use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 
 use crate::ctxt::Ctxt;
-use crate::laws::{self, LawDecl, LawKind};
+use crate::law_decl::{self, LawDecl, LawKind};
 use crate::symbol::{
     CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FORCE, FRICTION, HOLONOMIC,
     INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, NONZERO, OUTPUT, PORT, PORTS, POSITIVE,
@@ -51,7 +51,7 @@ pub struct Model<'a> {
     /// `event(name, direction) = expr`, in the order written, then the events of the laws.
     pub events: Vec<EventDecl>,
     /// `friction(...)` and `diode(...)`, in the order written; each is also written into the
-    /// coordinates, constraints, events and Lagrangian ([`laws::desugar`]).
+    /// coordinates, constraints, events and Lagrangian (the `laws` module's `desugar`).
     pub laws: Vec<LawDecl>,
     /// `__contacts(a, ...)`, written by the derive on the companion it makes of a model with
     /// unilateral constraints: the field that closes each contact, in their order.
@@ -216,12 +216,6 @@ impl<'a> Model<'a> {
                 model.incomplete = true;
             }
         }
-        if let Some(path) = model.urdf.clone().filter(|_| !model.incomplete) {
-            crate::urdf::desugar(cx, &mut model, &path);
-        } else if let Some(key) = &model.joint_limits {
-            cx.error_spanned_by(key, "`joint_limits` are a URDF file's: add `urdf = \"robot.urdf\"`");
-        }
-        laws::desugar(cx, &mut model);
         model
     }
 }
@@ -399,9 +393,9 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
                 model.units.extend(names.iter().map(|n| (n.unraw(), unit.clone())));
             }
             EVENT => model.events.push(parse_event(input)?),
-            FRICTION => model.laws.push(laws::parse(LawKind::Friction, input)?),
-            DIODE => model.laws.push(laws::parse(LawKind::Diode, input)?),
-            SWITCH => model.laws.push(laws::parse(LawKind::Switch, input)?),
+            FRICTION => model.laws.push(law_decl::parse(LawKind::Friction, input)?),
+            DIODE => model.laws.push(law_decl::parse(LawKind::Diode, input)?),
+            SWITCH => model.laws.push(law_decl::parse(LawKind::Switch, input)?),
             "__interconnection" => {
                 let content;
                 syn::parenthesized!(content in input);

@@ -8,7 +8,7 @@ use syn::DeriveInput;
 use crate::ast::Model;
 use crate::blocks::Blocks;
 use crate::check::check;
-use crate::codegen::signatures::{REQUIRED, fixed_storage, hybrid_reach, rt};
+use crate::codegen::signatures::{REQUIRED, fixed_storage, rt};
 use crate::codegen::{Generated, generate};
 use crate::ctxt::Ctxt;
 use crate::equations::{equations, surfaces};
@@ -19,7 +19,7 @@ use dirac_structure::stack::{STACK_LIMIT, stack_bytes};
 /// Expands the derive on `input`; user errors become `compile_error!` next to a stub impl.
 pub fn derive(input: &DeriveInput) -> TokenStream {
     let cx = Ctxt::new();
-    let model = Model::from_input(&cx, input);
+    let model = crate::desugar::read(&cx, input);
     let name = input.ident.to_string();
     // After a syntax error, names and items may be missing: report only the syntax errors.
     let analysed = if model.incomplete {
@@ -209,7 +209,6 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
 
 fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -> TokenStream {
     let p = rt();
-    let hybrid_reach = hybrid_reach();
     let Analysed { mut sym, blocks, pattern, unknowns } = analysed;
     let ident = model.ident;
     let Generated { methods, inputs_outputs, hybrid, parameters: parameter_methods, sparse, counts } =
@@ -267,7 +266,6 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                 #parameters
                 #methods
                 #input_values
-                #hybrid_reach
             }
 
             #[automatically_derived]

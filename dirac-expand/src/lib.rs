@@ -15,9 +15,11 @@ mod check;
 mod codegen;
 mod contacts;
 mod ctxt;
+mod desugar;
 mod equations;
 mod expand;
 mod interconnect;
+mod law_decl;
 mod laws;
 mod lower;
 mod model;
@@ -45,7 +47,7 @@ pub fn lagrange_dirac(input: &DeriveInput) -> TokenStream {
 
 /// The expansion of `#[derive(Interconnection)]` on `input`.
 pub fn interconnection(input: &DeriveInput) -> TokenStream {
-    let expanded = interconnect::derive(input);
+    let expanded = interconnect::derive(input, reduce::start);
     // A reduced composite describes itself as the one model it becomes, when it has become it.
     if interconnect::asks_reduce(input) {
         return expanded;

@@ -6,7 +6,7 @@ use syn::ext::IdentExt;
 
 use crate::ast::{ConstraintKind, Model};
 use crate::ctxt::Ctxt;
-use crate::laws::LawKind;
+use crate::law_decl::LawKind;
 use crate::lower::{Context, Lowerer, Role, Scope, additive_terms};
 use crate::sym::{Graph, Id, Node};
 use crate::symbol::{DISSIPATED_POWER, TIME};

@@ -47,18 +47,26 @@ pub mod algebra;
 pub mod analysis;
 /// The typed errors of a simulation.
 pub mod error;
+pub mod hybrid;
+pub mod integrator;
 pub mod methods;
 pub mod model;
 #[cfg(feature = "sparse")]
 pub mod network;
+pub mod output;
 pub mod shape;
 pub mod simulate;
 
 pub use algebra::{Algebra, Dense};
 pub use analysis::dirac_structure::{DiracStructure, Membership};
-pub use analysis::init::{Consistency, consistent_state};
+pub use analysis::init::Consistency;
 pub use analysis::linear::{Basis, Linearization, linearize};
 pub use error::{Capability, SimError};
+pub use hybrid::event::{Crossing, Event, Impact};
+pub use hybrid::events::{EventContext, Events};
+pub use hybrid::laws::consistent_state;
+pub use integrator::held::Held;
+pub use integrator::{Drive, Integrator};
 pub use methods::explicit::{Explicit, ExplicitOptions, ExplicitStats};
 pub use methods::radau::{DenseOutput, ErrorNorm, Radau, RadauOptions, RadauStats};
 pub use methods::variational::{Variational, VariationalOptions, VariationalStats};
@@ -75,16 +83,13 @@ pub use model::{
 };
 #[cfg(feature = "sparse")]
 pub use network::{Network, NetworkBuilder, NetworkError};
+pub use output::progress::Progress;
+pub use output::solution::{Sampling, Solution};
 pub use shape::dims::{Dimensions, Fixed, MatKK, MatYY, Sizes, Storage, VecC, VecH, VecK, VecQ, VecY};
 pub use shape::layout::{Layout, Slot};
-pub use simulate::events::{EventContext, Events};
-pub use simulate::held::Held;
-pub use simulate::integrator::{Drive, Integrator};
-pub use simulate::progress::Progress;
-pub use simulate::run::{Run, SolveWithEvents, feedback};
+pub use simulate::run::{Run, Solve, feedback};
 pub use simulate::sensitive::Sensitive;
 pub use simulate::sensitivity::{Sensitivities, Wrt};
-pub use simulate::solution::{Crossing, Event, Impact, Sampling, Solution};
 
 /// Gradients of one objective with respect to every parameter and initial value at once: the
 /// discrete adjoint of a Radau integration, recorded with [`Radau::record`] and swept back
@@ -113,6 +118,9 @@ pub mod __private {
     pub use crate::algebra::{Pattern, Sparse, SparseShape};
     pub use crate::analysis::init::Consistency;
     pub use crate::error::SimError;
+    pub use crate::hybrid::events::Events;
+    pub use crate::hybrid::laws::{consistent_with_laws, law_names};
+    pub use crate::integrator::Integrator;
     pub use crate::model::Named;
     #[cfg(feature = "sparse")]
     pub use crate::model::arrays::{Field, Pattern as RowPattern, Placement, instances, put};
@@ -121,6 +129,7 @@ pub mod __private {
         place_event_derivatives, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+    pub use crate::model::hybrid::has_laws;
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};
     pub use crate::model::names::{Message, Names, ResolveError, Resolved, Subsystem};
     pub use crate::model::sparse::SparseJacobian;
@@ -130,13 +139,10 @@ pub mod __private {
         DenseModel, Derivation, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
         OperationCounts, Parameters,
     };
+    pub use crate::output::solution::{Sampling, Solution};
     pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};
     pub use crate::shape::stack::{STACK_LIMIT, stack_bytes};
-    pub use crate::simulate::events::Events;
-    pub use crate::simulate::integrator::Integrator;
-    pub use crate::simulate::laws::{consistent_with_laws, has_laws, law_names};
-    pub use crate::simulate::run::SolveWithEvents;
-    pub use crate::simulate::solution::{Sampling, Solution};
+    pub use crate::simulate::run::Solve;
     pub use nalgebra::{Const, DefaultAllocator, Dyn};
     pub use std::borrow::Cow;
 

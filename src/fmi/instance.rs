@@ -97,7 +97,7 @@ where
     /// The model until the first step moves it into the integrator.
     model: Option<F::Model>,
     /// The integrator, from the first step on: kept across steps, so that each communication
-    /// point restarts it with its step size (as [`Integrator::solve_sampled`] does) and a step
+    /// point restarts it with its step size (as [`Solve::solve_sampled`](crate::Solve::solve_sampled) does) and a step
     /// allocates nothing.
     radau: Option<Radau<'static, F::Model>>,
     table: Table,

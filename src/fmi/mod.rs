@@ -54,7 +54,7 @@ pub use variables::DescriptionError;
 use std::path::Path;
 
 use crate::nalgebra::DefaultAllocator;
-use crate::{InputsOutputs, LagrangeDirac, Parameters, Storage, VecQ};
+use crate::{Hybrid, InputsOutputs, LagrangeDirac, Parameters, Storage, VecQ};
 
 /// The version of the FMI standard an FMU follows. One library serves both: `export_fmu!`
 /// exports the functions of each.
@@ -115,7 +115,7 @@ impl Default for Experiment {
 /// assert!(xml.contains(r#"<Float64 name="x" valueReference="5""#));
 /// # Ok::<(), dirac::fmi::DescriptionError>(())
 /// ```
-pub trait Export: LagrangeDirac + InputsOutputs + Parameters
+pub trait Export: LagrangeDirac + Hybrid + InputsOutputs + Parameters
 where
     DefaultAllocator: Storage<Self>,
 {
@@ -187,7 +187,7 @@ where
     DefaultAllocator: Storage<Self::Model>,
 {
     /// The model each instance simulates.
-    type Model: LagrangeDirac + InputsOutputs + Parameters;
+    type Model: LagrangeDirac + Hybrid + InputsOutputs + Parameters;
 
     /// The FMU's model identifier: its name, and its library's name inside the FMU. A C
     /// identifier by FMI's rules.

@@ -15,10 +15,11 @@ use crate::network::{Network, NetworkBuilder, NetworkError, Port};
 use crate::runtime::Held;
 use crate::{
     Consistency, Drive, ErrorNorm, Events, InputsOutputs, Integrator, LagrangeDirac, Radau, RadauOptions,
-    Sampling, SolveWithEvents, State, consistent_state,
+    Sampling, Solve, State, consistent_state,
 };
 
 use super::expand::is_ground;
+use super::op::Sets;
 use super::wave::Wave;
 use super::{Command, DiodeModel, Element, Kind, Netlist, SpiceError, Tran};
 
@@ -148,27 +149,6 @@ pub(super) fn shown_columns(title: &str, names: &[String]) -> (usize, String) {
     match shown < names.len() {
         true => (shown, format!("{title} (the first {shown} of {} columns)", names.len())),
         false => (shown, title.to_string()),
-    }
-}
-
-/// Union-find over node indices.
-pub(super) struct Sets(pub(super) Vec<usize>);
-
-impl Sets {
-    pub(super) fn find(&mut self, a: usize) -> usize {
-        let mut r = a;
-        while self.0[r] != r {
-            self.0[r] = self.0[self.0[r]];
-            r = self.0[r];
-        }
-        r
-    }
-
-    /// Joins the sets of `a` and `b`; false if they were one already.
-    pub(super) fn join(&mut self, a: usize, b: usize) -> bool {
-        let (ra, rb) = (self.find(a), self.find(b));
-        self.0[ra] = rb;
-        ra != rb
     }
 }
 

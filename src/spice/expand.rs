@@ -9,7 +9,7 @@
 use foldhash::HashMap;
 
 use super::SpiceError;
-use super::read::{Token, number};
+use super::token::{Token, number};
 
 /// Parameter values by (lower-case) name.
 pub(super) type Scope = HashMap<String, f64>;

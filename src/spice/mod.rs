@@ -80,12 +80,13 @@ mod build;
 mod expand;
 mod op;
 mod read;
+mod token;
 mod wave;
 
 pub use self::ac::AcSweep;
 pub use self::build::{Circuit, Waveforms};
 
-use self::read::Token;
+use self::token::Token;
 
 /// Why a netlist could not be read or simulated: where (1-based line and column) and what,
 /// and the netlist's further errors, each with its own line, in the order of the lines (the

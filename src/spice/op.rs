@@ -15,7 +15,6 @@ use faer::linalg::solvers::SolveCore;
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{Conj, Mat};
 
-use super::build::Sets;
 use super::{DiodeModel, Element, Kind, SpiceError};
 
 /// SPICE's `gmin` across every junction, and what a node held only by capacitors is tied to the
@@ -402,5 +401,26 @@ fn limit_junction(new: f64, old: f64, j: &Junction) -> f64 {
         }
     } else {
         new
+    }
+}
+
+/// Union-find over node indices.
+pub(super) struct Sets(pub(super) Vec<usize>);
+
+impl Sets {
+    pub(super) fn find(&mut self, a: usize) -> usize {
+        let mut r = a;
+        while self.0[r] != r {
+            self.0[r] = self.0[self.0[r]];
+            r = self.0[r];
+        }
+        r
+    }
+
+    /// Joins the sets of `a` and `b`; false if they were one already.
+    pub(super) fn join(&mut self, a: usize, b: usize) -> bool {
+        let (ra, rb) = (self.find(a), self.find(b));
+        self.0[ra] = rb;
+        ra != rb
     }
 }

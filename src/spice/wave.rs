@@ -3,7 +3,7 @@
 //! at which a run ends a step and restarts so that no step straddles one.
 
 use super::SpiceError;
-use super::read::Token;
+use super::token::Token;
 use crate::sources::{Hold, Table};
 
 /// A source's waveform, read from a netlist, with the defaults that depend on the `.tran`
@@ -31,7 +31,7 @@ impl Wave {
     /// line; `tokens` are those after the function's name.
     pub(super) fn read(name: &str, function: &Token, tokens: &[Token]) -> Result<Wave, SpiceError> {
         let numbers = |tokens: &[Token]| -> Result<Vec<f64>, SpiceError> {
-            tokens.iter().map(super::read::number).collect()
+            tokens.iter().map(super::token::number).collect()
         };
         match function.text.as_str() {
             "pulse" => {
@@ -70,7 +70,7 @@ impl Wave {
                             let value = tokens
                                 .get(k + 2)
                                 .ok_or_else(|| token.error(format!("`{name}`: `td=` needs a value")))?;
-                            delay = super::read::number(value)?;
+                            delay = super::token::number(value)?;
                             k += 3;
                         }
                         "r" => {
@@ -79,7 +79,7 @@ impl Wave {
                             );
                         }
                         _ => {
-                            values.push((super::read::number(token)?, token));
+                            values.push((super::token::number(token)?, token));
                             k += 1;
                         }
                     }

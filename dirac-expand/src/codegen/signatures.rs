@@ -10,25 +10,6 @@ pub fn rt() -> TokenStream {
     quote! { ::dirac::__private }
 }
 
-/// The `LagrangeDirac` items that reach the `Hybrid` impl the derives also emit: sensitivities
-/// carried across events, and a consistent start with each law in the mode its state puts it
-/// in.
-pub fn hybrid_reach() -> TokenStream {
-    let p = rt();
-    quote! {
-        #[inline]
-        fn __consistent_with_laws(
-            &self,
-            t: ::core::primitive::f64,
-            q: &#p::VecQ<Self>,
-            v: &#p::VecQ<Self>,
-            options: #p::Consistency,
-        ) -> ::core::option::Option<::core::result::Result<#p::State<Self>, #p::SimError>> {
-            #p::has_laws(self).then(|| #p::consistent_with_laws(self, t, q, v, options))
-        }
-    }
-}
-
 /// The items of a `LagrangeDirac` impl for a model whose sizes are fixed when it compiles:
 /// dense storage on the stack, the sizes `sizes` (an expression of type `Sizes`).
 pub fn fixed_storage(sizes: &TokenStream) -> TokenStream {

@@ -29,12 +29,17 @@ use self::emit::Own;
 use self::items::{Targets, equations, inherent_items, names};
 use self::methods::{Methods, methods};
 use self::model::CompositeModel;
-use crate::codegen::signatures::{hybrid_reach, rt};
+use crate::codegen::signatures::rt;
 use crate::ctxt::Ctxt;
 use crate::expand::stub_impls;
 
-/// Expands the derive on `input`; user errors become `compile_error!` next to a stub impl.
-pub fn derive(input: &DeriveInput) -> TokenStream {
+/// Expands the derive on `input`; user errors become `compile_error!` next to a stub impl. A
+/// composite that asks for `reduce` is expanded by `reduce` (the reduction's start) once it
+/// is checked.
+pub fn derive(
+    input: &DeriveInput,
+    reduce: impl FnOnce(&Composite<'_>, &DeriveInput) -> TokenStream,
+) -> TokenStream {
     let cx = Ctxt::new();
     let composite = Composite::from_input(&cx, input);
     let model = if composite.incomplete { None } else { CompositeModel::build(&cx, &composite) };
@@ -43,7 +48,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         (model, linearity)
     });
     match (cx.into_compile_errors(), built) {
-        (None, Some(_)) if composite.reduce => crate::reduce::start(&composite, input),
+        (None, Some(_)) if composite.reduce => reduce(&composite, input),
         (None, Some((mut model, linearity))) => {
             let blocks = CompositeBlocks::derive(&mut model);
             if composite.has_arrays() {
@@ -159,7 +164,6 @@ fn implementation(
     linearity: TokenStream,
 ) -> TokenStream {
     let p = rt();
-    let hybrid_reach = hybrid_reach();
     let input_values = crate::expand::input_values();
     let ident = composite.ident;
     let own = Own { model, blocks };
@@ -198,7 +202,6 @@ fn implementation(
                 #consts
                 #core
                 #input_values
-                #hybrid_reach
             }
 
             #[automatically_derived]

@@ -33,7 +33,7 @@ use super::Kind;
 use super::affine::{Coefficient, Role, affine, solve};
 use super::derivative::{D, derivative};
 use super::rewrite::{point_at_fields, rename};
-use crate::ast::{ConstraintKind, Model, Requirement};
+use crate::ast::{ConstraintKind, Requirement};
 use crate::ctxt::Ctxt;
 use crate::interconnect::ast::Composite;
 use crate::interconnect::joints;
@@ -356,7 +356,7 @@ impl Flat {
     fn primitive(&mut self, cx: &Ctxt, part: &Part, field: &Ident) {
         let own = Ctxt::new();
         let (input, described_joints) = split_joints(&part.input);
-        let model = Model::from_input(&own, &input);
+        let model = crate::desugar::read(&own, &input);
         if own.has_errors() || model.incomplete {
             let _ = own.into_compile_errors();
             cx.error_spanned_by(field, format!("`reduce` cannot read the part `{}`", part.input.ident));

@@ -35,7 +35,7 @@ use syn::{Expr, Ident, LitStr};
 
 use crate::ast::{ConstraintDecl, ConstraintKind, CoordinateDecl, DefineDecl, Model, UnilateralDecl};
 use crate::ctxt::Ctxt;
-use crate::laws::{LawDecl, LawKind};
+use crate::law_decl::{LawDecl, LawKind};
 use poly::{Atom, Poly};
 use read::{Kind, Mat3, Robot};
 

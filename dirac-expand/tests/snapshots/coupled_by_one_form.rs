@@ -1563,28 +1563,6 @@ const _: () = {
                 );
             }
         }
-        #[inline]
-        fn __consistent_with_laws(
-            &self,
-            t: ::core::primitive::f64,
-            q: &::dirac::__private::VecQ<Self>,
-            v: &::dirac::__private::VecQ<Self>,
-            options: ::dirac::__private::Consistency,
-        ) -> ::core::option::Option<
-            ::core::result::Result<
-                ::dirac::__private::State<Self>,
-                ::dirac::__private::SimError,
-            >,
-        > {
-            ::dirac::__private::has_laws(self)
-                .then(|| ::dirac::__private::consistent_with_laws(
-                    self,
-                    t,
-                    q,
-                    v,
-                    options,
-                ))
-        }
     }
     #[automatically_derived]
     impl ::dirac::__private::Derivation for CoupledByOneForm

@@ -6,7 +6,7 @@
 use nalgebra::{DMatrix, DefaultAllocator, SVD};
 
 use crate::algebra::{Algebra, dense_cq, dense_qq};
-use crate::analysis::init::floor_of;
+use crate::analysis::floors::floor_of;
 use crate::error::SimError;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, MatCQ};

@@ -25,7 +25,8 @@ use crate::analysis::diagnose::{
     DENSE_ANALYSIS, SPARSE_ANALYSIS, cause_of, check_finite_state, check_inertia, non_finite_entry,
     non_finite_qq, svd,
 };
-use crate::analysis::init_saddle;
+use crate::analysis::floors::{floor_of, within};
+use crate::analysis::init_saddle::{self, rates};
 use crate::analysis::units::Units;
 use crate::error::SimError;
 use crate::model::configuration;
@@ -51,31 +52,8 @@ impl Default for Consistency {
     }
 }
 
-/// The consistent state nearest to positions `q` and velocities `v` at time `t`.
-///
-/// A model with friction laws or ideal diodes (`friction(...)`, `diode(...)`) has each law's
-/// mode in a coordinate of its own (`<law>_mode`); whatever `q` holds there, the mode is chosen
-/// from the state: stuck (0) where the relative velocity is zero and the friction force within
-/// its bound, slipping (±1, the sign of the relative velocity) otherwise; a diode conducting
-/// (0) where its reverse voltage is not positive and its current not negative, blocking (1)
-/// otherwise.
-pub fn consistent_state<M: LagrangeDirac>(
-    model: &M,
-    t: f64,
-    q: &VecQ<M>,
-    v: &VecQ<M>,
-    options: Consistency,
-) -> Result<State<M>, SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    match M::__consistent_with_laws(model, t, q, v, options) {
-        Some(state) => state,
-        None => project(model, t, q, v, options),
-    }
-}
-
-/// [`consistent_state`] with every law's mode as `q` holds it.
+/// The consistent state nearest to positions `q` and velocities `v` at time `t`, every law's
+/// mode as `q` holds it ([`consistent_state`](crate::consistent_state) chooses them).
 pub(crate) fn project<M: LagrangeDirac>(
     model: &M,
     t: f64,
@@ -184,31 +162,6 @@ where
     })
 }
 
-/// The fraction of the largest position (velocity) below which a position (velocity) is
-/// measured against that fraction in the tests of the constraints' residuals: each row is
-/// held to the size of its own terms, `Σ_i |A_ji| (|x_i| + FLOOR |x|∞)`, which does not depend
-/// on the units, and the floor leaves room for the round-off of the solves that mix the
-/// smallest values with the largest.
-pub(crate) const FLOOR: f64 = 1e-2;
-
-/// A position, velocity, momentum or force below this, in whatever units a model is written
-/// in, is a zero: no physical quantity is that small in units people use (the electron's mass
-/// is 9e-31 kg, its momentum in an atom 2e-24 kg m/s). The last floor of the residual tests,
-/// where everything is at rest and the round-off of a solve leaves values of 1e-50.
-pub(crate) const NEGLIGIBLE: f64 = 1e-30;
-
-/// The floor `FLOOR |x|∞`, at least [`NEGLIGIBLE`], against which a value of `x` below it is
-/// measured.
-pub(crate) fn floor_of(largest: f64) -> f64 {
-    (FLOOR * largest).max(NEGLIGIBLE)
-}
-
-/// Whether every residual is within `tolerance` times its row's `size` (a zero size asks for
-/// an exact zero).
-pub(crate) fn within(residuals: &[f64], sizes: &[f64], tolerance: f64) -> bool {
-    residuals.iter().zip(sizes).all(|(r, s)| r.abs() <= tolerance * s)
-}
-
 fn holonomic_not_finite<M: LagrangeDirac>(model: &M, t: f64, phi: &[f64]) -> SimError
 where
     DefaultAllocator: Storage<M>,
@@ -309,43 +262,6 @@ fn worst_row(a: &DMatrix<f64>, v: &DVector<f64>, b: &DVector<f64>, tolerance: f6
         }
     }
     worst.map(|(j, residual, _)| (j, residual))
-}
-
-/// The right-hand sides of the multipliers' system at `(t, q, v)`: the momentum balance
-/// without constraint forces and the differentiated constraints, each checked to be finite.
-pub(crate) fn rates<M: LagrangeDirac>(
-    model: &M,
-    t: f64,
-    q: &VecQ<M>,
-    v: &VecQ<M>,
-) -> Result<(Vec<f64>, Vec<f64>), SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    let (sizes, shape) = (model.sizes(), model.shape());
-    let (mut dl_dq, mut force, mut lvt) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
-    model.dl_dq(t, q, v, &mut dl_dq);
-    non_finite_entry(model, t, "∂L/∂q", dl_dq.as_slice(), true)?;
-    model.force(t, q, v, &mut force);
-    non_finite_entry(model, t, "the force", force.as_slice(), true)?;
-    model.l_vt(t, q, v, &mut lvt);
-    non_finite_entry(model, t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
-    let mut lvq = M::Algebra::zeros_qq(&shape);
-    model.l_vq(t, q, v, &mut lvq);
-    non_finite_qq(model, t, "L_vq", &lvq)?;
-    let mut g = M::Algebra::zeros_cq(&shape);
-    model.dav_dq(t, q, v, &mut g);
-    non_finite_entry(model, t, "∂(A v + b)/∂q", M::Algebra::cq_values(&g), false)?;
-    let mut rate = sizes.zeros_c::<M>();
-    model.dav_dt(t, q, v, &mut rate);
-    non_finite_entry(model, t, "∂(A v + b)/∂t", rate.as_slice(), false)?;
-    let mut top = dl_dq + force - lvt;
-    M::Algebra::qq_mul(&lvq, -1.0, v.as_slice(), top.as_mut_slice());
-    non_finite_entry(model, t, "the momentum balance", top.as_slice(), true)?;
-    let mut bottom: Vec<f64> = rate.iter().map(|x| -x).collect();
-    M::Algebra::cq_mul(&g, -1.0, v.as_slice(), &mut bottom);
-    non_finite_entry(model, t, "the constraint accelerations", &bottom, false)?;
-    Ok((top.as_slice().to_vec(), bottom))
 }
 
 /// λ from the differentiated constraints, with the accelerations as by-product: by the

@@ -12,8 +12,8 @@ use nalgebra::DefaultAllocator;
 
 use crate::algebra::lu::Singular;
 use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
-use crate::analysis::diagnose::{non_finite_entry, singular_cause};
-use crate::analysis::init::{FLOOR, floor_of, within};
+use crate::analysis::diagnose::{non_finite_entry, non_finite_qq, singular_cause};
+use crate::analysis::floors::{FLOOR, floor_of, within};
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
 use crate::model::configuration;
@@ -377,7 +377,7 @@ where
         let blocks = Blocks::at(model, t, q, v)?;
         blocks.shifted(&mut shifted, blocks.shift());
         shifted.factor().map_err(|s| not_determined(model, t, q, v, s))?;
-        let (balance, _) = crate::analysis::init::rates(model, t, q, v)?;
+        let (balance, _) = rates(model, t, q, v)?;
         x[..n].copy_from_slice(&balance);
         model.constraint_rate(t, q, &mut b);
         for (xr, br) in x[n..].iter_mut().zip(b.iter()) {
@@ -459,4 +459,41 @@ where
         }
     }
     Ok(solution.split_off(n))
+}
+
+/// The right-hand sides of the multipliers' system at `(t, q, v)`: the momentum balance
+/// without constraint forces and the differentiated constraints, each checked to be finite.
+pub(crate) fn rates<M: LagrangeDirac>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+) -> Result<(Vec<f64>, Vec<f64>), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (sizes, shape) = (model.sizes(), model.shape());
+    let (mut dl_dq, mut force, mut lvt) = (sizes.zeros_q::<M>(), sizes.zeros_q::<M>(), sizes.zeros_q::<M>());
+    model.dl_dq(t, q, v, &mut dl_dq);
+    non_finite_entry(model, t, "∂L/∂q", dl_dq.as_slice(), true)?;
+    model.force(t, q, v, &mut force);
+    non_finite_entry(model, t, "the force", force.as_slice(), true)?;
+    model.l_vt(t, q, v, &mut lvt);
+    non_finite_entry(model, t, "∂²L/∂v∂t", lvt.as_slice(), true)?;
+    let mut lvq = M::Algebra::zeros_qq(&shape);
+    model.l_vq(t, q, v, &mut lvq);
+    non_finite_qq(model, t, "L_vq", &lvq)?;
+    let mut g = M::Algebra::zeros_cq(&shape);
+    model.dav_dq(t, q, v, &mut g);
+    non_finite_entry(model, t, "∂(A v + b)/∂q", M::Algebra::cq_values(&g), false)?;
+    let mut rate = sizes.zeros_c::<M>();
+    model.dav_dt(t, q, v, &mut rate);
+    non_finite_entry(model, t, "∂(A v + b)/∂t", rate.as_slice(), false)?;
+    let mut top = dl_dq + force - lvt;
+    M::Algebra::qq_mul(&lvq, -1.0, v.as_slice(), top.as_mut_slice());
+    non_finite_entry(model, t, "the momentum balance", top.as_slice(), true)?;
+    let mut bottom: Vec<f64> = rate.iter().map(|x| -x).collect();
+    M::Algebra::cq_mul(&g, -1.0, v.as_slice(), &mut bottom);
+    non_finite_entry(model, t, "the constraint accelerations", &bottom, false)?;
+    Ok((top.as_slice().to_vec(), bottom))
 }

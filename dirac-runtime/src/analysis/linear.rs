@@ -202,7 +202,7 @@ impl Linearization {
 
 /// Linearises `model` about the equilibrium `state` at time `t`: a consistent state at rest
 /// (`v = 0`) whose momenta do not change (`ṗ = 0`, with the multipliers that hold it there,
-/// as [`consistent_state`](crate::analysis::init::consistent_state) computes them). Dense models only.
+/// as [`consistent_state`](crate::consistent_state) computes them). Dense models only.
 pub fn linearize<M: InputsOutputs>(model: &M, t: f64, state: &State<M>) -> Result<Linearization, SimError>
 where
     DefaultAllocator: Storage<M>,

@@ -4,12 +4,15 @@
 //!
 //! It uses the model surface and the algebra; the simulation driver and the methods use it.
 
+/// The accelerations and multipliers at a state, solved from the saddle-point system.
+pub(crate) mod accelerations;
 pub mod control;
 /// Finding the true cause of a failure, for the messages of typed errors.
 pub mod diagnose;
 /// Dirac structures as objects, with products, interconnection and membership.
 pub mod dirac_structure;
 /// Consistent initial states.
+pub(crate) mod floors;
 pub(crate) mod free;
 pub mod init;
 pub(crate) mod init_saddle;

@@ -1,4 +1,4 @@
-//! The integration methods, each an [`Integrator`](crate::simulate::integrator::Integrator):
+//! The integration methods, each an [`Integrator`](crate::integrator::Integrator):
 //! Radau IIA for stiff models, an explicit Runge-Kutta pair for models that are not, and a
 //! variational integrator for long runs.
 //!

@@ -6,6 +6,7 @@
 use nalgebra::DefaultAllocator;
 
 use crate::model::lagrange_dirac::LagrangeDirac;
+use crate::model::names::{CLOSES, CONDUCTS, STOPS};
 use crate::shape::dims::{Storage, VecC, VecQ};
 
 /// A model with event functions and unilateral constraints. The derives implement it for
@@ -35,7 +36,7 @@ where
     /// `∂g/∂q` (`n`), `∂g/∂v` (`n`), `∂g/∂λ` (`m`), `∂g/∂t` and `∂g/∂θ` (the model's `P`
     /// parameters in order), `2n + m + 1 + P` values an event
     /// ([`Hybrid::event_derivatives_len`] in all). Generated symbolically where that is not
-    /// zero; otherwise it panics. What carries a sensitivity across a switching surface.
+    /// zero; otherwise it writes nothing. What carries a sensitivity across a switching surface.
     fn event_derivatives(
         &self,
         t: f64,
@@ -44,8 +45,11 @@ where
         lambda: &VecC<Self>,
         out: &mut [f64],
     ) {
-        let _ = (t, q, v, lambda, out);
-        panic!("event_derivatives: not generated for this model (see event_derivatives_len)")
+        let _ = (t, q, v, lambda);
+        assert!(
+            out.is_empty(),
+            "event_derivatives: not generated for this model, so the slice must be empty"
+        );
     }
 
     /// The values `φ_u(q, t)` of the unilateral constraints, into `out` (one per constraint):
@@ -96,10 +100,13 @@ where
     ///
     /// `k n² + k n + (P + 1)(3k + k n)` values in all
     /// ([`Hybrid::unilateral_derivatives_len`]). Generated symbolically where that is not zero;
-    /// otherwise it panics.
+    /// otherwise it writes nothing.
     fn unilateral_derivatives(&self, t: f64, q: &VecQ<Self>, out: &mut [f64]) {
-        let _ = (t, q, out);
-        panic!("unilateral_derivatives: not generated for this model (see unilateral_derivatives_len)")
+        let _ = (t, q);
+        assert!(
+            out.is_empty(),
+            "unilateral_derivatives: not generated for this model, so the slice must be empty"
+        );
     }
 
     /// Whether unilateral constraint `j` is closed, held as a holonomic constraint: in the
@@ -123,4 +130,12 @@ where
         let _ = j;
         None
     }
+}
+
+/// Whether `model` declares a friction law, an ideal diode or an ideal switch.
+pub fn has_laws<M: LagrangeDirac>(model: &M) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    model.any_event(&|code| matches!(code, STOPS | CONDUCTS | CLOSES))
 }

@@ -288,28 +288,12 @@ where
         self.jacobian(t, y, &mut out);
         out
     }
-
-    /// [`consistent_state`](crate::consistent_state) of a model with friction laws or ideal
-    /// diodes, each law's mode chosen from the state (which needs the model's event functions,
-    /// of the [`Hybrid`](crate::model::Hybrid) capability). The derives implement it; `None`
-    /// from a model without such laws.
-    #[doc(hidden)]
-    fn __consistent_with_laws(
-        &self,
-        t: f64,
-        q: &VecQ<Self>,
-        v: &VecQ<Self>,
-        options: crate::analysis::init::Consistency,
-    ) -> Option<Result<State<Self>, crate::error::SimError>> {
-        let _ = (t, q, v, options);
-        None
-    }
 }
 
 /// A model of fixed size with dense storage on the stack: every model `#[derive(LagrangeDirac)]`
 /// makes and every composite of named subsystems. Generic code over such models may use
 /// nalgebra's dense matrices on its blocks (`MatQQ::<M>::zeros()`, `a.transpose() * λ`), and
-/// run it ([`Integrator::solve`](crate::Integrator::solve) watches a model's contacts and laws,
+/// run it ([`Solve::solve`](crate::Solve::solve) watches a model's contacts and laws,
 /// which the [`Hybrid`](crate::model::Hybrid) capability every such model has declares).
 pub trait DenseModel:
     LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed + crate::model::Hybrid

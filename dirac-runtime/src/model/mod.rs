@@ -20,7 +20,7 @@ mod derivation;
 mod energy;
 /// The flat DAE assembled from a model's blocks.
 pub mod flat;
-mod hybrid;
+pub(crate) mod hybrid;
 mod inputs_outputs;
 /// Typed names of coordinates and constraints.
 pub mod keys;

@@ -22,7 +22,7 @@
 //! Parts may declare events, switching surfaces and laws (an ideal diode, friction, an ideal
 //! switch): the network's are its parts', named with the part's name (`"D1.diode_blocks"`). A
 //! plain `solve` watches the laws and surfaces and switches them at their events, as for a
-//! derived model; with [`solve_with_events`](crate::SolveWithEvents::solve_with_events), a
+//! derived model; with [`solve_with_events`](crate::Solve::solve_with_events), a
 //! network's are watched by [`Events::switches_in`](crate::Events::switches_in) or
 //! [`Events::declared_in`](crate::Events::declared_in), which read them from the network
 //! (`switches()` and `declared()` read a derived model's, known when it compiles). Parts with

@@ -207,17 +207,6 @@ impl LagrangeDirac for Network {
         self.sizes
     }
 
-    fn __consistent_with_laws(
-        &self,
-        t: f64,
-        q: &DVector<f64>,
-        v: &DVector<f64>,
-        options: crate::analysis::init::Consistency,
-    ) -> Option<Result<crate::model::state::State<Self>, crate::error::SimError>> {
-        crate::simulate::laws::has_laws(self)
-            .then(|| crate::simulate::laws::consistent_with_laws(self, t, q, v, options))
-    }
-
     fn shape(&self) -> SparseShape {
         self.shape.clone()
     }

@@ -1,24 +1,27 @@
 //! Forward sensitivities carried by a method that can ([`Sensitive`]: Radau), and their
 //! recording beside a solution's samples, through impacts, switching surfaces and laws.
 
-use nalgebra::DefaultAllocator;
+use nalgebra::{DVector, DefaultAllocator};
 
 use crate::error::SimError;
+use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
 use crate::shape::layout::Layout;
 use std::ops::ControlFlow;
 
-use crate::simulate::events::sensitivities::{Crossed, Jump, carry, momenta};
-use crate::simulate::events::{EventContext, Events};
-use crate::simulate::integrator::Integrator;
-use crate::simulate::laws;
-use crate::simulate::recorder::Recorder;
-use crate::simulate::restart::restart_nearest_with;
-use crate::simulate::run::cycle::{Hooks, Tangent, drive};
+use crate::hybrid::event::Event;
+use crate::hybrid::events::{EventContext, Events};
+use crate::hybrid::jumps::{Crossed, Jump};
+use crate::hybrid::laws;
+use crate::integrator::Integrator;
+use crate::integrator::restart::restart_nearest_with;
+use crate::output::recorder::Recorder;
+use crate::output::solution::{Sampling, Solution};
+use crate::simulate::run::cycle::{Hooks, drive};
+use crate::simulate::run::tangent::Tangent;
 use crate::simulate::sensitivity::Sensitivities;
-use crate::simulate::solution::{Event, Sampling, Solution};
 
 /// An integrator that carries the forward sensitivities of its solution with respect to
 /// parameters and initial values: [`Radau`](crate::Radau) (the staggered direct method). A
@@ -68,11 +71,11 @@ where
     }
 
     /// Integrates from `state` at `t0` to `t_end` with the sensitivities asked for
-    /// ([`Sensitive::carry_sensitivities`]), recording the state as [`Integrator::solve`] does
+    /// ([`Sensitive::carry_sensitivities`]), recording the state as [`Solve::solve`](crate::Solve::solve) does
     /// and every sensitivity at the same samples: read them from the solution by quantity and
     /// name ([`Solution::sensitivity`]). A model with unilateral constraints has its contacts
-    /// watched, as [`Integrator::solve`] does, and each sensitivity carried across each impact
-    /// by the impact's saltation matrix ([`saltation`](crate::simulate::impact::saltation)); one with
+    /// watched, as [`Solve::solve`](crate::Solve::solve) does, and each sensitivity carried across each impact
+    /// by the impact's saltation matrix ([`saltation`](crate::hybrid::impact::saltation)); one with
     /// switching surfaces (`abs`, `signum`, conditionals) has them located, and each
     /// sensitivity carried across each crossing by `(f⁻ − f⁺) ∂t*/∂θ`, the jump of the rate
     /// times the crossing's shift; one with laws (friction, diodes, ideal switches) has them
@@ -193,7 +196,7 @@ where
             ),
         });
     }
-    if names.is_empty() && !model.has_switches() && !laws::has_laws(model) {
+    if names.is_empty() && !model.has_switches() && !crate::model::hybrid::has_laws(model) {
         return Ok(());
     }
     let width = 2 * model.sizes().nq + model.sizes().nc + 1 + model.parameter_count();
@@ -356,5 +359,63 @@ where
         let names = integrator.sensitivity_names().to_vec();
         let solution = recorder.finish_from(integrator)?;
         Ok(solution.with_sensitivities(names, columns))
+    }
+}
+
+/// Each sensitivity just before the jump at `t`, carried across it, into `out`: positions and
+/// velocities by its saltation matrix (and a parameter's column), momenta by the Legendre map
+/// at the state after it ([`momenta`]), multipliers zero.
+pub(crate) fn carry<M: Hybrid + Parameters, I: Sensitive<M>>(
+    integrator: &I,
+    jump: &Jump<M>,
+    t: f64,
+    out: &mut [State<M>],
+    buffer: &mut State<M>,
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let n = integrator.model().sizes().nq;
+    let mut x = DVector::<f64>::zeros(2 * n);
+    for (j, s) in out.iter_mut().enumerate() {
+        integrator.interpolate_sensitivity(j, t, buffer);
+        x.rows_mut(0, n).copy_from_slice(buffer.q.as_slice());
+        x.rows_mut(n, n).copy_from_slice(buffer.v.as_slice());
+        let mut y = &jump.matrix * &x;
+        if let Some(k) = integrator.sensitivity_parameter(j) {
+            y += jump.parameters.column(k);
+        }
+        s.q.copy_from_slice(y.rows(0, n).as_slice());
+        s.v.copy_from_slice(y.rows(n, n).as_slice());
+        s.lambda.fill(0.0);
+    }
+    momenta(integrator, t, &jump.after, out);
+}
+
+/// The momenta's part of each sensitivity in `out`, from its positions' and velocities' by the
+/// Legendre map at the state `after`: `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`.
+pub(crate) fn momenta<M: Hybrid + Parameters, I: Sensitive<M>>(
+    integrator: &I,
+    t: f64,
+    after: &State<M>,
+    out: &mut [State<M>],
+) where
+    DefaultAllocator: Storage<M>,
+{
+    let model = integrator.model();
+    let sizes = model.sizes();
+    let shape = model.shape();
+    let mut l_vq = <M::Algebra as crate::algebra::Algebra<M>>::zeros_qq(&shape);
+    let mut l_vv = <M::Algebra as crate::algebra::Algebra<M>>::zeros_qq(&shape);
+    model.l_vq(t, &after.q, &after.v, &mut l_vq);
+    model.l_vv(t, &after.q, &after.v, &mut l_vv);
+    let mut blocks = ResidualBlocks::<M>::with_sizes(&sizes);
+    for (j, s) in out.iter_mut().enumerate() {
+        s.p.fill(0.0);
+        if let Some(k) = integrator.sensitivity_parameter(j) {
+            model.residual_blocks_dtheta(k, t, &after.q, &after.v, &after.lambda, &mut blocks);
+            s.p.copy_from(&blocks.dl_dv);
+        }
+        <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vq, 1.0, s.q.as_slice(), s.p.as_mut_slice());
+        <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vv, 1.0, s.v.as_slice(), s.p.as_mut_slice());
     }
 }

@@ -172,7 +172,7 @@ where
 }
 
 /// Consistent initial sensitivities at a consistent start: the derivative of
-/// [`consistent_state`](crate::analysis::init::consistent_state) there. From zero for a parameter, or the unit
+/// [`consistent_state`](crate::consistent_state) there. From zero for a parameter, or the unit
 /// vector of an initial value, the position part is corrected onto
 /// `∂φ/∂q s_q + ∂φ/∂θ = 0` by the smallest change, the velocity part onto
 /// `A s_v + ∂(A v + b)/∂q s_q + ∂(A v + b)/∂θ = 0` by the change of least kinetic energy,

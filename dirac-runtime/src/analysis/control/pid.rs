@@ -1,7 +1,7 @@
 //! A sampled PID controller with a filtered derivative and anti-windup by back-calculation.
 
 /// A PID controller for a sampled loop: call [`Pid::update`] once per sample (in the closure of
-/// [`Integrator::solve_sampled`](crate::Integrator::solve_sampled)) and hold its output until the
+/// [`Solve::solve_sampled`](crate::Solve::solve_sampled)) and hold its output until the
 /// next.
 ///
 /// ```text

@@ -6,10 +6,10 @@ use nalgebra::DefaultAllocator;
 use super::tableau::weights_at;
 use super::{ERROR_OLD_START, Explicit, ExplicitStats};
 use crate::error::SimError;
+use crate::integrator::{Drive, Integrator};
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, configuration};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::{Drive, Integrator};
 
 impl<M: LagrangeDirac> Integrator<M> for Explicit<'_, M>
 where

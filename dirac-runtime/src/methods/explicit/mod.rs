@@ -36,7 +36,6 @@
 //! [`SimError::TooManySteps`]. Use [`Radau`](crate::methods::radau::Radau) there; the facade's guide has a
 //! table of which integrator suits which model. A step allocates nothing.
 
-pub(crate) mod accelerations;
 mod integrator;
 mod options;
 mod tableau;
@@ -45,19 +44,19 @@ use std::cell::RefCell;
 
 use nalgebra::DefaultAllocator;
 
-use self::accelerations::Accelerations;
 pub use self::options::{ExplicitOptions, ExplicitStats};
 use self::tableau::{A, C, E};
+use crate::analysis::accelerations::Accelerations;
 use crate::analysis::diagnose::singular_cause;
 use crate::error::SimError;
+use crate::integrator::drive::Driver;
+use crate::integrator::held::Held;
+use crate::integrator::restart::Restarts;
+use crate::integrator::rough_power;
 use crate::model::LagrangeDirac;
 use crate::model::configuration;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecC, VecQ};
-use crate::simulate::drive::Driver;
-use crate::simulate::held::Held;
-use crate::simulate::integrator::rough_power;
-use crate::simulate::restart::Restarts;
 
 /// The step-size controller's constants, as in DOPRI5: the safety factor and the bounds on
 /// the ratio of new to old step. Its PI control takes the new step as
@@ -153,7 +152,7 @@ where
     /// An integrator for `model`.
     ///
     /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
-    /// change it between steps ([`Integrator::update`](crate::Integrator::update), [`Integrator::set_input`](crate::Integrator::set_input)).
+    /// change it between steps ([`Integrator::update`](crate::integrator::Integrator::update), [`Integrator::set_input`](crate::integrator::Integrator::set_input)).
     pub fn new(model: impl Into<Held<'m, M>>, options: ExplicitOptions) -> Result<Self, SimError> {
         options.validate()?;
         let model = model.into();

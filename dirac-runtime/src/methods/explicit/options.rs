@@ -1,7 +1,7 @@
 //! The explicit integrator's options and counters.
 
 use crate::error::SimError;
-use crate::simulate::integrator::check_step_options;
+use crate::integrator::check_step_options;
 
 /// Tolerances and limits of an [`Explicit`](crate::methods::explicit::Explicit) integration.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -34,6 +34,7 @@ use nalgebra::{DVector, DefaultAllocator, Dyn};
 
 mod checkpoints;
 mod held;
+mod record;
 
 use self::checkpoints::Checkpoints;
 use super::Radau;
@@ -46,27 +47,17 @@ use crate::algebra::Algebra;
 use crate::algebra::lu::Lu;
 #[cfg(feature = "sparse")]
 use crate::algebra::lu::Singular;
-use crate::algebra::newton::NewtonSolver;
 #[cfg(feature = "sparse")]
 use crate::algebra::sparse::lu::{Ordering, SparseLu};
 use crate::analysis::diagnose::describe_slot;
 use crate::error::SimError;
+use crate::hybrid::jumps::Jump;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
-use crate::model::{Hybrid, LagrangeDirac, ParameterDerivatives, Parameters};
+use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Sizes, Storage, VecQ, VecY};
 use crate::shape::layout::Layout;
-use crate::simulate::events::Events;
-use crate::simulate::events::sensitivities::{Crossed, Jump};
-use crate::simulate::integrator::Integrator;
-use crate::simulate::laws::has_laws;
-use crate::simulate::recorder::Recorder;
-use crate::simulate::restart::restart_at_nearest;
-use crate::simulate::run::Run;
-use crate::simulate::run::cycle::Tangent;
-use crate::simulate::run::feedback::Open;
 use crate::simulate::sensitivity::Initial;
-use crate::simulate::solution::{Event, Sampling};
 
 /// The most unknowns of the condensed transposed stage system, `3 (n + m)`, of a model stored
 /// dense: 1200 keeps its matrix at 11.5 MB and its factorisation under a second a step. A model
@@ -203,9 +194,9 @@ where
     /// [`parameter_names`](crate::model::Named::parameter_names).
     pub parameters: Vec<f64>,
     /// `∂G/∂q₀(i)`: with respect to each initial position, through the consistent start, as
-    /// [`Sensitivities::initial_position`](crate::Sensitivities::initial_position) seeds it.
+    /// [`Sensitivities::initial_position`](crate::simulate::sensitivity::Sensitivities::initial_position) seeds it.
     pub positions: VecQ<M>,
-    /// `∂G/∂v₀(i)`, as [`Sensitivities::initial_velocity`](crate::Sensitivities::initial_velocity)
+    /// `∂G/∂v₀(i)`, as [`Sensitivities::initial_velocity`](crate::simulate::sensitivity::Sensitivities::initial_velocity)
     /// seeds it.
     pub velocities: VecQ<M>,
     /// `∂G/∂u_k` for each input held between samples ([`Radau::record_held`]), in the order
@@ -267,187 +258,6 @@ where
             .field("bytes", &self.bytes())
             .finish()
     }
-}
-
-impl<'m, M: LagrangeDirac, S: NewtonSolver<M, M::Algebra>> Radau<'m, M, S>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Integrates from the consistent `state` at `t0` to `t_end`, as
-    /// [`Integrator::solve`] does, and keeps every accepted step for
-    /// [`Recording::gradient`]: a shorthand of `run(t0, state, t_end).record()`
-    /// ([`Run::record`](crate::Run::record)), which says what is crossed and what refused.
-    pub fn record(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<Recording<M>, SimError>
-    where
-        M: Hybrid + Parameters,
-    {
-        self.run(t0, state, t_end).record()
-    }
-
-    /// Integrates as [`record`](Self::record) does, but keeps, of the steps, only their sizes
-    /// and as many of their starts as half of `budget` bytes holds, thinned to every second
-    /// one whenever it is full. The sweep solves the steps between two starts again and keeps
-    /// them within the other half, recursively when they do not fit: the memory is bounded by
-    /// `budget` plus eight bytes a step (the sizes), at the cost of solving the run again once
-    /// for every level of checkpoints (one when `N` steps satisfy `N ≤ budget² / (32 s²)` for
-    /// states of `s` bytes).
-    ///
-    /// Turns on [`RadauOptions::exact_stages`](super::RadauOptions::exact_stages): each step's stages are solved to round-off, so
-    /// that the sweep solves it again with the same result and the gradient is exact for the
-    /// discrete solution. Forward sensitivities of the same run need that option too.
-    /// Refused as `record` refuses, and for a budget below sixteen states.
-    pub fn record_within(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        budget: usize,
-    ) -> Result<Recording<M>, SimError> {
-        self.check_recordable()?;
-        if let Some(contact) = self.model.get().unilateral_names().first() {
-            return Err(SimError::InvalidOption {
-                what: "adjoint",
-                reason: format!(
-                    "the contact `{contact}`: a recording within a budget does not cross impacts yet; \
-                     record every step with `record`"
-                ),
-            });
-        }
-        if self.model.get().has_switches() || has_laws(self.model.get()) {
-            return Err(SimError::InvalidOption {
-                what: "adjoint",
-                reason: "the model has switching surfaces or laws (friction, diodes, switches): a recording \
-                         within a budget does not cross them yet; record every step with `record`"
-                    .into(),
-            });
-        }
-        let sizes = self.model.sizes();
-        let mut checkpoints = Checkpoints::new(sizes, self.options, budget)?;
-        let exact = self.options.exact_stages;
-        self.options.exact_stages = true;
-        let run = self.start(t0, state, t_end).and_then(|()| {
-            while !self.finished() {
-                checkpoints.mark(self.t, &self.y);
-                checkpoints.push(self.step()?);
-            }
-            Ok(())
-        });
-        self.options.exact_stages = exact;
-        run?;
-        let end = self.y.clone();
-        Ok(Recording {
-            t0,
-            start: state.clone(),
-            t_end: self.t,
-            end,
-            kept: Kept::Checkpointed(checkpoints),
-            impacts: Vec::new(),
-            held: None,
-        })
-    }
-
-    /// What `record` refuses, by name.
-    fn check_recordable(&self) -> Result<(), SimError> {
-        let invalid = |reason: &str| Err(SimError::InvalidOption { what: "adjoint", reason: reason.into() });
-        if self.options.projection {
-            return invalid("the projection onto the constraints has no derivative carried: turn it off");
-        }
-        if self.residual.driven() || self.feedback.is_some() {
-            return invalid("a drive's inputs have no derivative to transpose: hold the inputs instead");
-        }
-        Ok(())
-    }
-}
-
-impl<'m, M: Hybrid + Parameters, S: NewtonSolver<M, M::Algebra>> Run<'_, M, Radau<'m, M, S>, Open>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Runs the integration as [`Run::solve`] does and keeps every accepted step for
-    /// [`Recording::gradient`], instead of samples. The run's observer, progress report and
-    /// events of its own compose with it; a controller, an event action or a drive, whose
-    /// derivatives are not carried, do not compile with it.
-    ///
-    /// A model with unilateral constraints has its contacts watched, and one with switching
-    /// surfaces (`abs`, `signum`, conditionals) has them located, as `solve` does: the
-    /// recording keeps each impact's or crossing's jump and the sweep carries the adjoint back
-    /// across it by the transposed saltation matrix. A model with laws (friction, diodes, ideal
-    /// switches) has them switched as `solve` does, and each switch kept as a crossing is. A
-    /// contact that comes to rest ends the recording in [`SimError::ContactCloses`].
-    ///
-    /// Refused with an [`InvalidOption`](SimError::InvalidOption) with projection on (the
-    /// projection's derivative is not carried) or a drive set on the integrator before the run
-    /// (its inputs' derivative is not known).
-    pub fn record(self) -> Result<Recording<M>, SimError> {
-        self.integrator.check_recordable()?;
-        let t0 = self.t0;
-        let mut tape = Tape { steps: Vec::new(), impacts: Vec::new(), from: None, start: None };
-        let (_, radau) = self.sampling(Sampling::Times(Vec::new())).go(Some(&mut tape))?;
-        let start = tape.start.expect("a run that started keeps its start");
-        Ok(Recording {
-            t0,
-            start,
-            t_end: radau.t,
-            end: radau.y.clone(),
-            kept: Kept::Whole(tape.steps),
-            impacts: tape.impacts,
-            held: None,
-        })
-    }
-}
-
-/// What [`Run::record`] keeps of a run, as a [`Tangent`] its loop carries: every accepted step
-/// and every jump.
-struct Tape<M: LagrangeDirac>
-where
-    DefaultAllocator: Storage<M>,
-{
-    steps: Vec<Step<M>>,
-    impacts: Vec<Cut<M>>,
-    /// The start of the step being taken.
-    from: Option<(f64, VecY<M>)>,
-    /// The state the run started from.
-    start: Option<State<M>>,
-}
-
-impl<M: Hybrid + Parameters, S: NewtonSolver<M, M::Algebra>> Tangent<M, Radau<'_, M, S>> for Tape<M>
-where
-    DefaultAllocator: Storage<M>,
-{
-    fn cross(
-        &mut self,
-        model: &M,
-        events: &mut Events<'_, M>,
-        event: &Event,
-    ) -> Result<Crossed<M>, SimError> {
-        events.cross(model, event, "adjoint")
-    }
-
-    fn started(&mut self, _: &Radau<'_, M, S>, _: &Recorder<M>, from: &State<M>) -> Result<(), SimError> {
-        self.start = Some(from.clone());
-        Ok(())
-    }
-
-    fn before_step(&mut self, radau: &Radau<'_, M, S>) {
-        self.from = Some((radau.t, radau.y.clone()));
-    }
-
-    fn after_step(&mut self, radau: &Radau<'_, M, S>, h: f64) {
-        let (t, y) = self.from.take().expect("a step has a start");
-        let z = [radau.stages.z[0].clone(), radau.stages.z[1].clone(), radau.stages.z[2].clone()];
-        self.steps.push(Step { t, h, y, z });
-    }
-
-    fn sampled(&mut self, _: &Radau<'_, M, S>, _: &Recorder<M>, _: usize) {}
-
-    fn jump(&mut self, radau: &mut Radau<'_, M, S>, t: f64, mut jump: Jump<M>) -> Result<State<M>, SimError> {
-        restart_at_nearest(radau, t, &mut jump.after)?;
-        let after = jump.after.clone();
-        self.impacts.push(Cut { step: self.steps.len() - 1, t, jump });
-        Ok(after)
-    }
-
-    fn restarted(&mut self, _: &Recorder<M>, _: usize) {}
 }
 
 impl<M: LagrangeDirac> Recording<M>

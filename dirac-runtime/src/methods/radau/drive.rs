@@ -10,13 +10,13 @@ use super::residual::{DriveFn, Residual};
 use crate::algebra::Algebra;
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
+use crate::integrator::Drive;
+use crate::integrator::held::Held;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
 use crate::model::{InputsOutputs, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage, VecC, VecQ, VecY};
 use crate::shape::layout::Layout;
-use crate::simulate::held::Held;
-use crate::simulate::integrator::Drive;
 
 /// The feedback's `∂u/∂(q, v)`, written by the user as `n_u × 2n` values, column-major (the
 /// columns of `q`, then those of `v`).

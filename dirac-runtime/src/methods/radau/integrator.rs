@@ -6,10 +6,10 @@ use nalgebra::DefaultAllocator;
 use super::{DenseOutput, Radau, RadauStats};
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
+use crate::integrator::Integrator;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
 use crate::simulate::sensitive::Sensitive;
 use crate::simulate::sensitivity::Sensitivities;
 

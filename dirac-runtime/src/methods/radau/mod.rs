@@ -41,17 +41,17 @@ use self::tableau::{Eigen, eigen};
 use crate::algebra::Algebra;
 use crate::algebra::lu::Singular;
 use crate::algebra::newton::NewtonSolver;
+use crate::analysis::accelerations::Accelerations;
 use crate::analysis::diagnose::{describe_slot, pivot_name, singular_cause};
 use crate::analysis::projection::Projector;
 use crate::error::SimError;
-use crate::methods::explicit::accelerations::Accelerations;
+use crate::integrator::held::Held;
+use crate::integrator::restart::Restarts;
 use crate::model::Condensed;
 use crate::model::LagrangeDirac;
 use crate::model::blocks::JacobianBlocks;
 use crate::model::state::State;
 use crate::shape::dims::{Storage, VecC, VecQ, VecY};
-use crate::simulate::held::Held;
-use crate::simulate::restart::Restarts;
 
 /// Below this contraction rate of the last Newton iteration the Jacobian is kept.
 const THET: f64 = 0.001;
@@ -134,7 +134,7 @@ where
     /// An integrator for `model` with the condensed Newton solver of its algebra.
     ///
     /// Built on `&model`, the integrator reads the model; built on `&mut model`, it may also
-    /// change it between steps ([`Integrator::update`](crate::Integrator::update), [`Integrator::set_input`](crate::Integrator::set_input)).
+    /// change it between steps ([`Integrator::update`](crate::integrator::Integrator::update), [`Integrator::set_input`](crate::integrator::Integrator::set_input)).
     pub fn new(model: impl Into<Held<'m, M>>, options: RadauOptions) -> Result<Self, SimError> {
         options.validate()?;
         let model = model.into();
@@ -174,7 +174,7 @@ where
         // small; a large network keeps the collocation polynomial's (a dense solve there
         // would cost more than the run).
         let releases =
-            crate::simulate::laws::has_laws(model.get()) || !model.get().unilateral_names().is_empty();
+            crate::model::hybrid::has_laws(model.get()) || !model.get().unilateral_names().is_empty();
         let small = sizes.nq + sizes.nc <= crate::analysis::diagnose::SPARSE_ANALYSIS;
         let multipliers = (releases && small).then(|| {
             RefCell::new((Accelerations::new(model.get()), sizes.zeros_q::<M>(), sizes.zeros_c::<M>()))

@@ -3,11 +3,11 @@
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
+use crate::integrator::check_step_options;
 use crate::model::LagrangeDirac;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecY};
 use crate::shape::layout::Layout;
-use crate::simulate::integrator::check_step_options;
 
 /// Tolerances and limits of a Radau integration.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,7 +47,7 @@ pub struct RadauOptions {
 }
 
 /// How Radau samples its solution between steps (`Sampling::Every`, `Sampling::Times`,
-/// events, [`Integrator::interpolate`](crate::Integrator::interpolate)).
+/// events, [`Integrator::interpolate`](crate::integrator::Integrator::interpolate)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum DenseOutput {
     /// The collocation polynomial corrected by the step's ends, the velocities from the

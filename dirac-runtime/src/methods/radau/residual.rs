@@ -3,14 +3,14 @@
 
 use nalgebra::DefaultAllocator;
 
+pub(crate) use crate::integrator::drive::DriveFn;
+use crate::integrator::drive::Stops;
+use crate::integrator::held::Held;
 use crate::model::LagrangeDirac;
 use crate::model::blocks::ResidualBlocks;
 use crate::model::flat::residual;
 use crate::model::state::State;
 use crate::shape::dims::{Sizes, Storage, VecY};
-pub(crate) use crate::simulate::drive::DriveFn;
-use crate::simulate::drive::Stops;
-use crate::simulate::held::Held;
 
 /// Evaluates a model's flat residual `f(t, y)` without allocating: through the model's own
 /// [`LagrangeDirac::residual`](crate::model::LagrangeDirac::residual) when its sizes are fixed (its

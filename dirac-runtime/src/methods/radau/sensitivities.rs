@@ -1,6 +1,6 @@
 //! The forward sensitivities of a Radau integration, as its users see them: asked for with
 //! [`Radau::with_sensitivities`] (or [`Sensitive::carry_sensitivities`]), read step by step,
-//! or recorded in a [`Solution`](crate::Solution) by [`Sensitive::solve_with_sensitivities`].
+//! or recorded in a [`Solution`](crate::output::solution::Solution) by [`Sensitive::solve_with_sensitivities`].
 
 use nalgebra::DefaultAllocator;
 

@@ -9,11 +9,11 @@ use super::options::{ErrorNorm, RadauStats, norm};
 use super::residual::Residual;
 use super::tableau::{C1, C2, C3, Eigen, T, TI};
 use crate::algebra::newton::NewtonSolver;
+use crate::integrator::held::Held;
+use crate::integrator::rough_power;
 use crate::model::LagrangeDirac;
 use crate::shape::dims::{Sizes, Storage, VecY};
 use crate::shape::layout::Layout;
-use crate::simulate::held::Held;
-use crate::simulate::integrator::rough_power;
 
 /// How a Newton iteration ended.
 pub(crate) enum Outcome {

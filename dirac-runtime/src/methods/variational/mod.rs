@@ -24,7 +24,7 @@
 //! holonomic constraints it is RATTLE.
 //!
 //! Events are located on the discrete flow: the state at a time within a step is a step of
-//! the method to that time ([`Integrator::state_at`](crate::Integrator::state_at)), so an impact time is solved within the
+//! the method to that time ([`Integrator::state_at`](crate::integrator::Integrator::state_at)), so an impact time is solved within the
 //! step, on the trajectory the method takes. A restart there (an impact's reset) keeps the
 //! grid: the step after it ends where the interrupted one would have, so the map across an
 //! impact (a step `αh` to it, the rest `(1 − α)h` after it) is as symmetric in time as the
@@ -53,14 +53,14 @@ use crate::algebra::Algebra;
 use crate::algebra::mass::Mass;
 use crate::analysis::projection::Projector;
 use crate::error::SimError;
+use crate::integrator::drive::Driver;
+use crate::integrator::held::Held;
+use crate::integrator::restart::{Restarts, constraint_violation};
+use crate::integrator::{Drive, Integrator};
 use crate::model::configuration;
 use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage, VecC};
-use crate::simulate::drive::Driver;
-use crate::simulate::held::Held;
-use crate::simulate::integrator::{Drive, Integrator};
-use crate::simulate::restart::{Restarts, constraint_violation};
 
 /// The variational integrator for a model `M`, with fixed step `h`.
 pub struct Variational<'m, M: LagrangeDirac>

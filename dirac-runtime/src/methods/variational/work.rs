@@ -69,7 +69,7 @@ pub struct VariationalStats {
     /// one per multiplier update and one for the velocity projection.
     pub factorizations: usize,
     /// Sub-steps taken where a whole step's Newton iteration did not converge (see
-    /// [`Variational`](crate::Variational)): each counts here, the step they make up in `steps`.
+    /// [`Variational`](crate::methods::variational::Variational)): each counts here, the step they make up in `steps`.
     pub substeps: usize,
 }
 

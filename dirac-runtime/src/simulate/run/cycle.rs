@@ -6,22 +6,23 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
+use super::restarts::{close, rest_where_it_stands, restart_consistent, restart_from};
+use super::tangent::{Tangent, TangentRef};
 use crate::analysis::diagnose::{CheckRoom, check_constraints_kept};
-use crate::analysis::init::{Consistency, consistent_state, project};
+use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
+use crate::hybrid::event::{Event, Impact};
+use crate::hybrid::events::context::sliding;
+use crate::hybrid::events::{EventContext, Events};
+use crate::hybrid::laws;
+use crate::hybrid::laws::consistent_state;
+use crate::integrator::restart::restart_at_nearest;
+use crate::integrator::{Integrator, check_period};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
+use crate::output::recorder::Recorder;
+use crate::output::solution::Sampling;
 use crate::shape::dims::Storage;
-use crate::simulate::events::sensitivities::{Crossed, Jump};
-use crate::simulate::events::solve::{
-    close, rest_where_it_stands, restart_consistent, restart_from, sliding,
-};
-use crate::simulate::events::{EventContext, Events};
-use crate::simulate::integrator::{Integrator, check_period};
-use crate::simulate::laws;
-use crate::simulate::recorder::Recorder;
-use crate::simulate::restart::restart_at_nearest;
-use crate::simulate::solution::{Event, Impact, Sampling};
 
 /// An event's action, borrowed for the run's loop.
 pub(crate) type ActionRef<'h, M, I> =
@@ -32,40 +33,6 @@ type ControllerRef<'h, M> = &'h mut dyn FnMut(f64, &State<M>, &mut M);
 
 /// What a run calls after every step, borrowed for its loop.
 type AfterStep<'h, I> = &'h mut dyn FnMut(&I) -> ControlFlow<()>;
-
-/// What a run carries beside the state and differentiates through its jumps: the forward
-/// sensitivities of a run that asked for them, or the steps an adjoint's sweep goes back over.
-/// Its crossings are the differentiated ones ([`Events::cross`]): impacts, law switches and
-/// switching surfaces, each with its saltation; a run that carries one has no action, no
-/// controller and no drive (refused when it compiles, [`Run::sensitivities`](super::Run::sensitivities)).
-pub(crate) trait Tangent<M: LagrangeDirac, I>
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// Crosses `event`, a contact's, a law's or a switching surface's, with its derivative
-    /// ([`Events::cross`], which names what crosses in its refusals).
-    fn cross(&mut self, model: &M, events: &mut Events<'_, M>, event: &Event)
-    -> Result<Crossed<M>, SimError>;
-    /// The run started from `from` at the integrator's time, its start recorded.
-    fn started(&mut self, integrator: &I, recorder: &Recorder<M>, from: &State<M>) -> Result<(), SimError>;
-    /// A step is about to be taken.
-    fn before_step(&mut self, integrator: &I) {
-        let _ = integrator;
-    }
-    /// A step of size `h` was taken.
-    fn after_step(&mut self, integrator: &I, h: f64);
-    /// The samples from `before` on were recorded within the last step.
-    fn sampled(&mut self, integrator: &I, recorder: &Recorder<M>, before: usize);
-    /// Carries what it holds across `jump` at `t` and restarts the integration there from the
-    /// state after it, the consistent one nearest where the restart refuses it; returns that
-    /// state.
-    fn jump(&mut self, integrator: &mut I, t: f64, jump: Jump<M>) -> Result<State<M>, SimError>;
-    /// The samples from `before` on were recorded where the integration restarted after a jump.
-    fn restarted(&mut self, recorder: &Recorder<M>, before: usize);
-}
-
-/// A carried tangent, borrowed for the run's loop.
-pub(crate) type TangentRef<'h, M, I> = &'h mut dyn Tangent<M, I>;
 
 /// What a run does besides stepping and watching events.
 pub(crate) struct Hooks<'h, M: LagrangeDirac, I>

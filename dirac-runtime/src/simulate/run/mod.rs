@@ -3,7 +3,7 @@
 //! model's contacts, laws and switching surfaces are always watched, whatever else the run
 //! does, so that every combination means what each part means alone.
 //!
-//! [`Integrator::run`](crate::Integrator::run) begins one; [`Run::solve`](crate::Run::solve)
+//! [`Solve::run`](crate::Solve::run) begins one; [`Run::solve`](crate::Run::solve)
 //! runs it to a [`Solution`](crate::Solution). `solve`,
 //! `solve_sampled`, `solve_observed`, `solve_with_progress` and `solve_with_events` are
 //! one-line shorthands of it.
@@ -15,20 +15,26 @@ use std::time::{Duration, Instant};
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
+use crate::hybrid::event::Event;
+use crate::hybrid::events::{EventContext, Events};
+use crate::integrator::{Drive, Integrator};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
+use crate::output::progress::Progress;
+use crate::output::solution::{Sampling, Solution};
 use crate::shape::dims::Storage;
-use crate::simulate::events::{EventContext, Events};
-use crate::simulate::integrator::{Drive, Integrator};
-use crate::simulate::progress::Progress;
 use crate::simulate::sensitive::{Carrier, Sensitive};
 use crate::simulate::sensitivity::Sensitivities;
-use crate::simulate::solution::{Event, Sampling, Solution};
 
 pub(crate) mod cycle;
+mod restarts;
+mod solve;
+pub(crate) mod tangent;
 
-pub(crate) use self::cycle::TangentRef;
+pub use self::solve::Solve;
+
 use self::cycle::{ActionRef, Hooks, drive};
+pub(crate) use self::tangent::TangentRef;
 
 /// What a [`Run`] was asked that feeds back into the model as it runs, which decides what it
 /// can carry besides the state: the third parameter of its type.
@@ -80,7 +86,7 @@ type Observer<'r, M> = Box<dyn FnMut(f64, &State<M>) -> ControlFlow<()> + 'r>;
 /// A report of the run's progress.
 type Report<'r, S> = Box<dyn FnMut(&Progress<S>) + 'r>;
 
-/// One run of integrator `I` over model `M`, built by [`Integrator::run`] and its options, and
+/// One run of integrator `I` over model `M`, built by [`Solve::run`] and its options, and
 /// run by [`Run::solve`] (or, with Radau, recorded for an adjoint by `Run::record`). Every
 /// option composes with every other, and with the model's own contacts, laws and switching
 /// surfaces, which every run watches. What is asked for is tracked in the type's third
@@ -101,7 +107,7 @@ where
     sampling: Sampling,
     events: Events<'r, M>,
     action: Option<Action<'r, M, I>>,
-    every: Option<(f64, Controller<'r, M>)>,
+    controller: Option<(f64, Controller<'r, M>)>,
     observer: Option<Observer<'r, M>>,
     progress: Option<(Duration, Report<'r, I::Stats>)>,
     wrt: Option<&'r Sensitivities<M>>,
@@ -115,7 +121,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// A run of `integrator` from `start` at `t0` to `t_end` that records every step and does
-    /// nothing else ([`Integrator::run`]).
+    /// nothing else ([`Solve::run`](crate::Solve::run)).
     pub(crate) fn new(integrator: &'r mut I, t0: f64, start: &'r State<M>, t_end: f64) -> Self {
         Run {
             integrator,
@@ -125,7 +131,7 @@ where
             sampling: Sampling::Steps,
             events: Events::new(),
             action: None,
-            every: None,
+            controller: None,
             observer: None,
             progress: None,
             wrt: None,
@@ -179,7 +185,7 @@ where
             sampling,
             events,
             action,
-            every,
+            controller,
             observer,
             progress,
             wrt,
@@ -194,7 +200,7 @@ where
             sampling,
             events,
             action,
-            every,
+            controller,
             observer,
             progress,
             wrt,
@@ -208,7 +214,7 @@ where
     pub(crate) fn go(
         self,
         tangent: Option<TangentRef<'_, M, I>>,
-    ) -> Result<(crate::simulate::recorder::Recorder<M>, &'r mut I), SimError>
+    ) -> Result<(crate::output::recorder::Recorder<M>, &'r mut I), SimError>
     where
         M: Hybrid,
     {
@@ -220,7 +226,7 @@ where
             sampling,
             mut events,
             action,
-            every,
+            controller,
             observer,
             progress,
             refused,
@@ -233,6 +239,10 @@ where
         // no step reaches across a kink; one with events watches what they ask for.
         let surfaces = events.names().is_empty();
         events.watch_model(integrator.model(), surfaces)?;
+        let mut tangent = tangent;
+        if let Some(tangent) = &mut tangent {
+            tangent.prepare(integrator);
+        }
         let mut action = action;
         let mut no_action = |_: &Event, _: &mut EventContext<'_, M, I>| ControlFlow::Continue(());
         let action: ActionRef<'_, M, I> = match &mut action {
@@ -243,14 +253,17 @@ where
         let mut watch = Watch { began, last: began, t0, t_end, observer, progress };
         let watching = watch.observer.is_some() || watch.progress.is_some();
         let mut after_step = |integrator: &I| watch.after_step(integrator);
-        let mut every = every;
+        let mut controller = controller;
         let hooks = Hooks {
             action,
-            every: every.as_mut().map(|(period, controller)| (*period, &mut **controller as _)),
+            every: controller.as_mut().map(|(period, controller)| (*period, &mut **controller as _)),
             after_step: if watching { Some(&mut after_step) } else { None },
-            tangent: tangent.map(|tangent| -> TangentRef<'_, M, I> { tangent }),
+            tangent: tangent.as_deref_mut().map(|tangent| -> TangentRef<'_, M, I> { tangent }),
         };
         let recorder = drive(integrator, (t0, start, t_end), &sampling, &mut events, hooks);
+        if let Some(tangent) = &mut tangent {
+            tangent.restore(integrator);
+        }
         watch.finish(integrator);
         Ok((recorder?, integrator))
     }
@@ -316,7 +329,7 @@ where
 {
     /// Hands each event, the model's contacts' and laws' included, to `action`, in time order,
     /// with an [`EventContext`] to read the state there, reset it or change the model, as
-    /// [`SolveWithEvents::solve_with_events`] describes.
+    /// [`Solve::solve_with_events`] describes.
     pub fn on_event(
         mut self,
         action: impl FnMut(&Event, &mut EventContext<'_, M, I>) -> ControlFlow<()> + 'r,
@@ -337,7 +350,7 @@ where
         period: f64,
         controller: impl FnMut(f64, &State<M>, &mut M) + 'r,
     ) -> Run<'r, M, I, FedBack> {
-        self.every = Some((period, Box::new(controller)));
+        self.controller = Some((period, Box::new(controller)));
         self.now()
     }
 
@@ -406,44 +419,3 @@ where
         carrier.finish(integrator, recorder)
     }
 }
-
-/// Running an integration with events: implemented for every [`Integrator`] (and in the
-/// facade's prelude).
-pub trait SolveWithEvents<M: Hybrid>: Integrator<M> + Sized
-where
-    DefaultAllocator: Storage<M>,
-{
-    /// [`Integrator::solve`] with events: after each step, the crossings of the `events`'
-    /// functions within it are located on the dense output and handed to `action` in time
-    /// order, with an [`EventContext`] to read the state at the event, reset it
-    /// ([`EventContext::state_mut`]) or change the model ([`EventContext::model_mut`]). The
-    /// model's unilateral constraints are watched too unless `events` asked for the
-    /// [`free_motion`](Events::free_motion), and its laws always.
-    ///
-    /// - An action that changes nothing costs no restart: the search goes on within the step.
-    /// - After a reset or a change, the integration restarts at the event from the consistent
-    ///   state nearest to the one the action left ([`consistent_state`](crate::consistent_state)).
-    /// - `ControlFlow::Break(())` ends the solution at the event (the integrator itself stays
-    ///   at the end of the step that held it; [`Integrator::restart_at`] moves it back).
-    ///
-    /// The solution records every event ([`Solution::events`]) and, unless it samples at
-    /// chosen times, the state at each event, twice when the action reset it (before, then
-    /// after). The [`Events`] type has an example. A shorthand of
-    /// `run(t0, state, t_end).sampling(..).events(..).on_event(action).solve()`
-    /// ([`Integrator::run`]), which `events` is borrowed by, not moved into.
-    fn solve_with_events(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        sampling: &Sampling,
-        events: &mut Events<'_, M>,
-        mut action: impl FnMut(&Event, &mut EventContext<'_, M, Self>) -> ControlFlow<()>,
-    ) -> Result<Solution<M, Self::Stats>, SimError> {
-        events.watch_model(self.model(), false)?;
-        let recorder = drive(self, (t0, state, t_end), sampling, events, Hooks::acting(&mut action))?;
-        recorder.finish_from(self)
-    }
-}
-
-impl<M: Hybrid, I: Integrator<M>> SolveWithEvents<M> for I where DefaultAllocator: Storage<M> {}

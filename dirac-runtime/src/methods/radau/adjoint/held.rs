@@ -14,12 +14,12 @@ use nalgebra::DefaultAllocator;
 use super::{Kept, Objective, Radau, Recording, Step};
 use crate::algebra::newton::NewtonSolver;
 use crate::error::SimError;
+use crate::integrator::Integrator;
+use crate::model::hybrid::has_laws;
 use crate::model::keys::Input;
 use crate::model::state::State;
 use crate::model::{Hybrid, InputsOutputs, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
-use crate::simulate::laws::has_laws;
 
 /// `∂ṗ/∂u` of a model's inputs at a state, `n × n_u`, column-major.
 pub(super) type InputRates<M> = fn(&M, f64, &State<M>, &mut [f64]);

@@ -33,12 +33,12 @@ use super::residual::Residual;
 use super::stages::three;
 use super::tableau::{C1, C2, C3, Eigen};
 use crate::algebra::newton::NewtonSolver;
+use crate::integrator::held::Held;
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, ParameterDerivatives};
 use crate::shape::dims::{Storage, VecY};
 use crate::shape::layout::Layout;
-use crate::simulate::held::Held;
 use crate::simulate::sensitivity::Wrt;
 
 /// One sensitivity: what it is with respect to, its value, its stages and its dense output.

@@ -10,9 +10,9 @@ use nalgebra::DefaultAllocator;
 use super::locate::value;
 use super::{Events, INTERIOR};
 use crate::error::SimError;
+use crate::integrator::Integrator;
 use crate::model::LagrangeDirac;
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
 
 /// How far past a crossing, in round-offs of `t`, a timed switch may stay at zero before its
 /// other side is taken to begin there all the same.

@@ -8,6 +8,7 @@ use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 use nalgebra::{DefaultAllocator, Dim};
 
+use crate::hybrid::event::{Event, Impact};
 use crate::model::keys::{Constraint, Coordinate, Input, Output};
 use crate::model::state::State;
 use crate::model::{DISSIPATED_POWER, LagrangeDirac};
@@ -24,53 +25,6 @@ pub enum Sampling {
     Every(f64),
     /// At these increasing times within the time span (dense output between steps).
     Times(Vec<f64>),
-}
-
-/// Which sign changes of an event function count as the event.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Crossing {
-    /// From negative to positive.
-    Rising,
-    /// From positive to negative.
-    Falling,
-    /// Either way.
-    Either,
-}
-
-impl Crossing {
-    /// Whether a crossing in the direction `rising` counts.
-    pub(crate) fn counts(self, rising: bool) -> bool {
-        match self {
-            Crossing::Rising => rising,
-            Crossing::Falling => !rising,
-            Crossing::Either => true,
-        }
-    }
-}
-
-/// An event located in an integration: which function crossed zero, when, and which way.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Event {
-    /// The event function's index in its [`Events`](crate::simulate::events::Events), in the order they were added.
-    pub index: usize,
-    /// The time of the crossing, to round-off: the first time at which the function's value is
-    /// zero or has its new sign.
-    pub t: f64,
-    /// [`Crossing::Rising`] or [`Crossing::Falling`]: the way it crossed.
-    pub crossing: Crossing,
-}
-
-/// An impact at a unilateral constraint `φ(q, t) ≥ 0`: which one (its index among the model's
-/// [`unilateral_names`](crate::model::Named::unilateral_names)), when, and the impulse
-/// `Λ ≥ 0` its one-form took, `p⁺ = p⁻ + Λ ∂φ/∂q`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Impact {
-    /// The unilateral constraint.
-    pub contact: usize,
-    /// The time of the impact.
-    pub t: f64,
-    /// The impulse along the constraint's one-form (a momentum: N·s for a force on a length).
-    pub impulse: f64,
 }
 
 /// Where each series of a solution sits: `t`, the state's slots in the order of [`Layout`],
@@ -385,7 +339,7 @@ where
     }
 
     /// The impacts at the model's unilateral constraints, in time order (with
-    /// [`Events::contacts`](crate::simulate::events::Events::contacts)). Contacts that close at one time share
+    /// [`Events::contacts`](crate::hybrid::events::Events::contacts)). Contacts that close at one time share
     /// one impact law and are recorded one by one, each with its own impulse.
     pub fn impacts(&self) -> &[Impact] {
         &self.impacts
@@ -403,7 +357,7 @@ where
         self.contact_names.get(impact.contact).map_or("a contact", String::as_str)
     }
 
-    /// The events located, in time order ([`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events)).
+    /// The events located, in time order ([`Solve::solve_with_events`](crate::Solve::solve_with_events)).
     pub fn events(&self) -> &[Event] {
         &self.events
     }
@@ -587,7 +541,7 @@ where
     /// Spark: one `DOUBLE` column per series, named and ordered as in
     /// [`write_csv`](Solution::write_csv), the values exactly as computed.
     pub fn write_parquet(&self, out: impl Write) -> io::Result<()> {
-        crate::simulate::parquet::write(out, &self.all_names(), &self.all_series())
+        crate::output::parquet::write(out, &self.all_names(), &self.all_series())
     }
 
     /// Writes the solution as an Apache Arrow IPC file (Feather version 2), readable by Polars
@@ -595,7 +549,7 @@ where
     /// non-nullable `Float64` column per series, named and ordered as in
     /// [`write_csv`](Solution::write_csv), the values exactly as computed.
     pub fn write_arrow(&self, out: impl Write) -> io::Result<()> {
-        crate::simulate::arrow::write(out, &self.all_names(), &self.all_series())
+        crate::output::arrow::write(out, &self.all_names(), &self.all_series())
     }
 
     /// The names of every series, the sensitivities' (`d(x)/d(k)`) after the others.

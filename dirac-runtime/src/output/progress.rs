@@ -5,7 +5,7 @@ use std::fmt;
 use std::time::Duration;
 
 /// Where a run stands: handed to the report of
-/// [`Integrator::solve_with_progress`](crate::Integrator::solve_with_progress).
+/// [`Solve::solve_with_progress`](crate::Solve::solve_with_progress).
 #[derive(Clone, Copy, Debug)]
 pub struct Progress<S> {
     /// The time reached.

@@ -39,12 +39,12 @@
 use nalgebra::{DVector, DefaultAllocator};
 
 use crate::error::SimError;
+use crate::hybrid::impact::{Motion, accelerations, motion_at};
+use crate::hybrid::surface::{SurfaceJump, event_gradient, rate_jump};
 use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, Parameters};
 use crate::shape::dims::{Storage, VecQ};
-use crate::simulate::impact::{Motion, accelerations, motion_at};
-use crate::simulate::surface::{SurfaceJump, event_gradient, rate_jump};
 
 /// The relative step of the differences of the multipliers.
 const STEP: f64 = 1e-4;

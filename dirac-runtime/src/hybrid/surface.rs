@@ -19,11 +19,11 @@
 use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use crate::error::SimError;
+use crate::hybrid::impact::accelerations;
 use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, Parameters};
 use crate::shape::dims::{Storage, VecC, VecQ};
-use crate::simulate::impact::accelerations;
 
 /// The relative offset from the surface at which each side's accelerations are read.
 const OFFSET: f64 = 1e-6;

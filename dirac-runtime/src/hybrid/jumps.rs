@@ -12,20 +12,18 @@
 //! [`SimError::ContactCloses`] (resting would switch the model's constraints, whose
 //! sensitivities' jump is not carried).
 
-use nalgebra::{DMatrix, DVector, DefaultAllocator};
+use nalgebra::{DMatrix, DefaultAllocator};
 
-use super::Events;
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
-use crate::model::blocks::ResidualBlocks;
+use crate::hybrid::event::Event;
+use crate::hybrid::events::Events;
+use crate::hybrid::impact::{Saltation, saltation};
+use crate::hybrid::law_jump::law_jump;
+use crate::hybrid::surface::surface_jump;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac, Parameters};
 use crate::shape::dims::Storage;
-use crate::simulate::impact::{Saltation, saltation};
-use crate::simulate::law_jump::law_jump;
-use crate::simulate::sensitive::Sensitive;
-use crate::simulate::solution::Event;
-use crate::simulate::surface::surface_jump;
 
 /// An event crossed ([`Events::cross`]): each closing contact's impulse and, if any pushed (or
 /// the event is a switching surface's or a law's), the jump.
@@ -114,63 +112,5 @@ where
         let after = project(model, t, &after.q, &after.v, Consistency::default())?;
         let jump = Jump { matrix, parameters, after, reopened };
         Ok(Crossed { impulses: impacts.impulses, jump: Some(jump), switched: false })
-    }
-}
-
-/// Each sensitivity just before the jump at `t`, carried across it, into `out`: positions and
-/// velocities by its saltation matrix (and a parameter's column), momenta by the Legendre map
-/// at the state after it ([`momenta`]), multipliers zero.
-pub(crate) fn carry<M: Hybrid + Parameters, I: Sensitive<M>>(
-    integrator: &I,
-    jump: &Jump<M>,
-    t: f64,
-    out: &mut [State<M>],
-    buffer: &mut State<M>,
-) where
-    DefaultAllocator: Storage<M>,
-{
-    let n = integrator.model().sizes().nq;
-    let mut x = DVector::<f64>::zeros(2 * n);
-    for (j, s) in out.iter_mut().enumerate() {
-        integrator.interpolate_sensitivity(j, t, buffer);
-        x.rows_mut(0, n).copy_from_slice(buffer.q.as_slice());
-        x.rows_mut(n, n).copy_from_slice(buffer.v.as_slice());
-        let mut y = &jump.matrix * &x;
-        if let Some(k) = integrator.sensitivity_parameter(j) {
-            y += jump.parameters.column(k);
-        }
-        s.q.copy_from_slice(y.rows(0, n).as_slice());
-        s.v.copy_from_slice(y.rows(n, n).as_slice());
-        s.lambda.fill(0.0);
-    }
-    momenta(integrator, t, &jump.after, out);
-}
-
-/// The momenta's part of each sensitivity in `out`, from its positions' and velocities' by the
-/// Legendre map at the state `after`: `s_p = L_vq s_q + L_vv s_v + ∂(∂L/∂v)/∂θ`.
-pub(crate) fn momenta<M: Hybrid + Parameters, I: Sensitive<M>>(
-    integrator: &I,
-    t: f64,
-    after: &State<M>,
-    out: &mut [State<M>],
-) where
-    DefaultAllocator: Storage<M>,
-{
-    let model = integrator.model();
-    let sizes = model.sizes();
-    let shape = model.shape();
-    let mut l_vq = <M::Algebra as crate::algebra::Algebra<M>>::zeros_qq(&shape);
-    let mut l_vv = <M::Algebra as crate::algebra::Algebra<M>>::zeros_qq(&shape);
-    model.l_vq(t, &after.q, &after.v, &mut l_vq);
-    model.l_vv(t, &after.q, &after.v, &mut l_vv);
-    let mut blocks = ResidualBlocks::<M>::with_sizes(&sizes);
-    for (j, s) in out.iter_mut().enumerate() {
-        s.p.fill(0.0);
-        if let Some(k) = integrator.sensitivity_parameter(j) {
-            model.residual_blocks_dtheta(k, t, &after.q, &after.v, &after.lambda, &mut blocks);
-            s.p.copy_from(&blocks.dl_dv);
-        }
-        <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vq, 1.0, s.q.as_slice(), s.p.as_mut_slice());
-        <M::Algebra as crate::algebra::Algebra<M>>::qq_mul(&l_vv, 1.0, s.v.as_slice(), s.p.as_mut_slice());
     }
 }

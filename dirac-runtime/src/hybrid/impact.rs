@@ -22,11 +22,11 @@ use nalgebra::{DMatrix, DVector, DefaultAllocator};
 
 use crate::algebra::Algebra;
 use crate::error::SimError;
+use crate::hybrid::contacts::Contacts;
 use crate::model::blocks::ResidualBlocks;
 use crate::model::state::State;
 use crate::model::{Hybrid, Parameters};
 use crate::shape::dims::{Storage, VecQ};
-use crate::simulate::contacts::Contacts;
 
 /// An impact and its derivative ([`impact_map`]): the velocities after it and how they move
 /// with the positions, the velocities before it, the time and the parameters.

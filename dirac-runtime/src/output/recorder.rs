@@ -6,14 +6,15 @@ use std::sync::Arc;
 use nalgebra::DefaultAllocator;
 
 use crate::algebra::{Algebra, amax};
+use crate::analysis::accelerations::Accelerations;
 use crate::error::SimError;
-use crate::methods::explicit::accelerations::Accelerations;
+use crate::hybrid::event::{Event, Impact};
+use crate::integrator::Integrator;
 use crate::model::MatCQ;
 use crate::model::state::State;
 use crate::model::{EnergyBalance, LagrangeDirac};
+use crate::output::solution::{Columns, Sampling, Solution};
 use crate::shape::dims::{Storage, VecC, VecH, VecQ};
-use crate::simulate::integrator::Integrator;
-use crate::simulate::solution::{Columns, Event, Impact, Sampling, Solution};
 
 /// Records samples during an integration.
 pub(crate) struct Recorder<M: LagrangeDirac>

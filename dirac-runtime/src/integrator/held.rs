@@ -5,8 +5,8 @@
 use core::ops::Deref;
 
 /// A model held by an integrator. Integrators take either `&model` or `&mut model` where they
-/// take a model; only the second lets [`Integrator::update`](crate::simulate::integrator::Integrator::update) and
-/// [`Integrator::set_input`](crate::simulate::integrator::Integrator::set_input) change it while it runs.
+/// take a model; only the second lets [`Integrator::update`](crate::integrator::Integrator::update) and
+/// [`Integrator::set_input`](crate::integrator::Integrator::set_input) change it while it runs.
 pub enum Held<'m, M> {
     /// Read only.
     Shared(&'m M),

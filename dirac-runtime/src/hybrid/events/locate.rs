@@ -6,11 +6,11 @@ use nalgebra::DefaultAllocator;
 
 use super::{EventFunction, Events, INTERIOR, MAX_ITERATIONS};
 use crate::error::SimError;
+use crate::hybrid::event::{Crossing, Event};
+use crate::integrator::Integrator;
 use crate::model::LagrangeDirac;
 use crate::model::state::State;
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
-use crate::simulate::solution::{Crossing, Event};
 
 impl<'e, M: LagrangeDirac> Events<'e, M>
 where
@@ -77,7 +77,7 @@ where
     /// Whether function `k` is a release, a force falling through zero (a law's or a resting
     /// contact's): read on exact multipliers ([`Integrator::exact_multipliers`]).
     fn reads_force(&self, k: usize) -> bool {
-        matches!(self.law_of[k], Some(crate::simulate::laws::Switch::Release(_)))
+        matches!(self.law_of[k], Some(crate::hybrid::laws::Switch::Release(_)))
             || self.release_of[k].is_some()
     }
 

@@ -1,19 +1,15 @@
-//! What crossing an event does beyond the events themselves: the context an action sees, a
-//! contact brought to rest, a restart from a consistent state where an action reset the state
-//! or changed the model, and the errors naming what slid or went unwatched.
+//! The context an event's action sees, and the errors naming what slid or went unwatched.
 
 use nalgebra::DefaultAllocator;
 
 use super::Events;
-use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
+use crate::hybrid::laws;
+use crate::integrator::Integrator;
+use crate::integrator::restart::constraint_violation;
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::Storage;
-use crate::simulate::integrator::Integrator;
-use crate::simulate::laws;
-use crate::simulate::recorder::Recorder;
-use crate::simulate::restart::constraint_violation;
 
 /// What an event's action may do: read the event's time and state, reset the state, change
 /// the model (if the integrator holds it exclusively).
@@ -138,70 +134,4 @@ where
             names.join(", ")
         ),
     }
-}
-
-/// Closes (or opens) contact `j` of the integrator's model, if the model can rest it (a
-/// companion made by `with_contacts`) and the integrator holds it exclusively.
-pub(crate) fn close<M: Hybrid, I: Integrator<M>>(integrator: &mut I, j: usize, closed: bool) -> bool
-where
-    DefaultAllocator: Storage<M>,
-{
-    integrator.model().contact_row(j).is_some()
-        && integrator.model_mut().is_some_and(|model| model.set_contact_closed(j, closed))
-}
-
-/// Contact `j` comes to rest where the integrator stands (the end of its last step): closed,
-/// the state projected onto it, the integration restarted there. An error naming the contact
-/// if the model cannot rest it.
-pub(crate) fn rest_where_it_stands<M: Hybrid, I: Integrator<M>>(
-    integrator: &mut I,
-    events: &mut Events<'_, M>,
-    recorder: &mut Recorder<M>,
-    j: usize,
-) -> Result<(), SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    let t = integrator.t();
-    let contacts = events.contacts.as_mut().expect("contacts are watched");
-    if !close(integrator, j, true) {
-        return Err(contacts.closes(j, contacts.last_impact(j).min(t)));
-    }
-    contacts.rested(j);
-    let state = integrator.state().clone();
-    restart_from(integrator, events, recorder, t, &state)
-}
-
-/// Restarts the integration at `t` from the consistent state nearest to `state`, watching on
-/// from there and recording it.
-pub(crate) fn restart_from<M: Hybrid, I: Integrator<M>>(
-    integrator: &mut I,
-    events: &mut Events<'_, M>,
-    recorder: &mut Recorder<M>,
-    t: f64,
-    state: &State<M>,
-) -> Result<(), SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    let consistent = project(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
-    restart_consistent(integrator, events, recorder, t, &consistent)
-}
-
-/// Restarts the integration at `t` from `state`, consistent already, watching on from there
-/// and recording it.
-pub(crate) fn restart_consistent<M: Hybrid, I: Integrator<M>>(
-    integrator: &mut I,
-    events: &mut Events<'_, M>,
-    recorder: &mut Recorder<M>,
-    t: f64,
-    state: &State<M>,
-) -> Result<(), SimError>
-where
-    DefaultAllocator: Storage<M>,
-{
-    integrator.restart_at(t, state)?;
-    events.resume(integrator.model(), t, state)?;
-    recorder.record_reset(integrator.model(), t, state);
-    Ok(())
 }

@@ -22,6 +22,7 @@ use nalgebra::DefaultAllocator;
 
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
+use crate::model::hybrid::has_laws;
 use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
@@ -111,14 +112,6 @@ where
     laws(model).iter().map(|law| rows[law.row].clone()).collect()
 }
 
-/// Whether `model` declares a friction law, an ideal diode or an ideal switch.
-pub fn has_laws<M: LagrangeDirac>(model: &M) -> bool
-where
-    DefaultAllocator: Storage<M>,
-{
-    model.any_event(&|code| matches!(code, STOPS | CONDUCTS | CLOSES))
-}
-
 /// Switches `law` at an event at `t`, in `state` (the state there): sets its mode and leaves
 /// `state` consistent in it. `values` holds the model's declared event functions.
 pub(crate) fn switch<M: Hybrid>(
@@ -192,6 +185,30 @@ where
     let chosen = consistent_with_laws(model, t0, &state.q, &state.v, Consistency::default())?;
     let same = laws(model).iter().all(|law| chosen.q[law.mode] == state.q[law.mode]);
     Ok((!same).then_some(chosen))
+}
+
+/// The consistent state nearest to positions `q` and velocities `v` at time `t`.
+///
+/// A model with friction laws or ideal diodes (`friction(...)`, `diode(...)`) has each law's
+/// mode in a coordinate of its own (`<law>_mode`); whatever `q` holds there, the mode is chosen
+/// from the state: stuck (0) where the relative velocity is zero and the friction force within
+/// its bound, slipping (±1, the sign of the relative velocity) otherwise; a diode conducting
+/// (0) where its reverse voltage is not positive and its current not negative, blocking (1)
+/// otherwise.
+pub fn consistent_state<M: Hybrid>(
+    model: &M,
+    t: f64,
+    q: &VecQ<M>,
+    v: &VecQ<M>,
+    options: Consistency,
+) -> Result<State<M>, SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    match has_laws(model) {
+        true => consistent_with_laws(model, t, q, v, options),
+        false => project(model, t, q, v, options),
+    }
 }
 
 /// The consistent state nearest to positions `q` and velocities `v` at `t`, with each law's

@@ -11,10 +11,10 @@ use crate::analysis::diagnose::{
 };
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
+use crate::integrator::held::Held;
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, check_parameters};
 use crate::shape::dims::Storage;
-use crate::simulate::held::Held;
 
 /// The restart bookkeeping an integrator keeps beside its model.
 pub(crate) struct Restarts<M: LagrangeDirac>
@@ -61,7 +61,7 @@ where
         // Set-up, once a run: a restart allocates nothing, and its model was checked here.
         check_inertia(model, t0, &state.q, &state.v)?;
         self.changed_from = None;
-        self.rows_switch = crate::simulate::laws::has_laws(model);
+        self.rows_switch = crate::model::hybrid::has_laws(model);
         Ok(())
     }
 

@@ -2,7 +2,7 @@
 //! between steps, on the integrator's dense output, to round-off in `t`.
 //!
 //! [`Events`] holds the functions and locates their crossings after each step
-//! ([`Events::locate`], which allocates nothing); [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) runs a whole
+//! ([`Events::locate`], which allocates nothing); [`Solve::solve_with_events`](crate::Solve::solve_with_events) runs a whole
 //! integration with them, hands each event to the user's action in time order, and restarts
 //! from a consistent state when the action reset the state or changed the model.
 //!
@@ -13,20 +13,19 @@
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
+use crate::hybrid::contacts::{Contacts, Impacts};
+use crate::hybrid::event::{Crossing, Event};
+use crate::hybrid::laws::{self, Law, Switch};
 use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS, SWITCH, TIMED, is_switch};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
 use crate::shape::dims::{Sizes, Storage};
-use crate::simulate::contacts::{Contacts, Impacts};
-use crate::simulate::laws::{self, Law, Switch};
-use crate::simulate::solution::{Crossing, Event};
 
+pub(crate) mod context;
 mod locate;
-pub mod sensitivities;
-pub(crate) mod solve;
 mod timed;
 
-pub use self::solve::EventContext;
+pub use self::context::EventContext;
 
 /// An event function: `g(t, state, model)`.
 type EventFunction<'e, M> = Box<dyn FnMut(f64, &State<M>, &M) -> f64 + 'e>;
@@ -101,13 +100,13 @@ where
     /// one evaluation of them all.
     all_declared: Option<AllDeclared<M>>,
     /// Which declared function each watched function is, if it is one.
-    declared_of: Vec<Option<usize>>,
+    pub(crate) declared_of: Vec<Option<usize>>,
     /// The declared functions' values at a sample.
     declared_values: Vec<f64>,
     /// The model's friction laws and ideal diodes, where `declared` or `switches` watches them.
-    laws: Vec<Law>,
+    pub(crate) laws: Vec<Law>,
     /// Which switch of which law each watched function is, if it is one.
-    law_of: Vec<Option<Switch>>,
+    pub(crate) law_of: Vec<Option<Switch>>,
     /// The law switched at the event being handled, whose functions restart positive.
     switched_law: Option<usize>,
 }
@@ -278,8 +277,8 @@ where
     /// Adds the switching surfaces of the model's non-smooth functions and conditionals
     /// (`abs`, `min`, `max`, `clamp`, `signum`, `if a > b { … } else { … }` in its Lagrangian,
     /// forces or constraints; `switch0`, … by name, dotted in an interconnection): at each
-    /// crossing, [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) restarts the integration, so that no
-    /// step reaches across the kink. A plain [`Integrator::solve`](crate::Integrator::solve)
+    /// crossing, [`Solve::solve_with_events`](crate::Solve::solve_with_events) restarts the integration, so that no
+    /// step reaches across the kink. A plain [`Solve::solve`](crate::Solve::solve)
     /// adds them itself; [`Events::declared`] has them among the declared events.
     ///
     /// Also adds the events of the model's laws (`friction`, `diode`, `switch`: `grip_stops`,
@@ -304,10 +303,10 @@ where
     /// watches ([`Run`](crate::simulate::run::Run)); an error where the laws are half watched
     /// (`switches()` on a network, whose parts declare them: `switches_in(&network)` reads them).
     pub(crate) fn watch_model(&mut self, model: &M, surfaces: bool) -> Result<(), SimError> {
-        let laws = laws::has_laws(model);
+        let laws = crate::model::hybrid::has_laws(model);
         // Refused before anything changes, so that the caller's events stay as they were.
         if laws && self.all_declared.is_some() && !self.watches_laws(model) {
-            return Err(solve::unwatched_laws(model));
+            return Err(context::unwatched_laws(model));
         }
         if self.contacts.is_none() && !self.free_motion && !model.unilateral_names().is_empty() {
             *self = std::mem::take(self).contacts(model);
@@ -352,7 +351,7 @@ where
     }
 
     /// Marks the watched functions that switch one of the model's laws (`friction`, `diode`),
-    /// which [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) then switches at their events.
+    /// which [`Solve::solve_with_events`](crate::Solve::solve_with_events) then switches at their events.
     fn watch_laws(mut self, laws: Vec<Law>) -> Self {
         if laws.is_empty() {
             return self;
@@ -416,7 +415,7 @@ where
     /// if they were not there. Without it (or [`Events::contacts`]), a solve with events of a
     /// model that declares unilateral constraints ends at once in [`SimError::InvalidOption`],
     /// and so do `solve_observed` and `solve_sampled`; a plain
-    /// [`Integrator::solve`](crate::Integrator::solve) watches them. A declared wall never lets
+    /// [`Solve::solve`](crate::Solve::solve) watches them. A declared wall never lets
     /// a motion through unannounced.
     pub fn free_motion(mut self) -> Self {
         self.free_motion = true;
@@ -425,7 +424,7 @@ where
 
     /// Adds the model's unilateral constraints (`#[dirac(unilateral(name) = φ)]`, `φ ≥ 0`), each
     /// an event of its own name when `φ` falls through zero. At such an event
-    /// [`SolveWithEvents::solve_with_events`](crate::SolveWithEvents::solve_with_events) applies the impact law before the action: the
+    /// [`Solve::solve_with_events`](crate::Solve::solve_with_events) applies the impact law before the action: the
     /// momentum jumps along the constraint's one-form, `p⁺ = p⁻ + Λ ∂φ/∂q`, so that the normal
     /// velocity is reversed and scaled by the restitution `e`, `∂φ/∂q v⁺ = −e ∂φ/∂q v⁻`,
     /// with the model's own constraints kept; contacts that close at once share one law. The

@@ -5,10 +5,10 @@
 use nalgebra::DefaultAllocator;
 
 use crate::error::SimError;
+use crate::integrator::held::Held;
 use crate::model::LagrangeDirac;
 use crate::model::state::State;
 use crate::shape::dims::{Storage, VecC, VecQ};
-use crate::simulate::held::Held;
 
 /// Sets a model's inputs from time and state before each evaluation. Borrowed, not boxed: an
 /// integrator holds nothing that needs dropping at the end of its borrows.

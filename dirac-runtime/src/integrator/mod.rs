@@ -1,19 +1,22 @@
-//! The driver every integrator shares: start, step, read the state, interpolate within the
-//! last step; and, written once on top of those, `solve` and `solve_observed`, which run an
-//! integration and record a [`Solution`](crate::Solution).
-
-use std::ops::ControlFlow;
+//! What every integrator does: start, step, read the state, interpolate within the last step,
+//! restart after a change of its model; how it holds its model, the drive that sets the
+//! model's inputs within its steps, and the checks of its starts and restarts. A whole run on
+//! top of these steps is [`Solve::run`](crate::Solve::run)'s.
 
 use nalgebra::DefaultAllocator;
+
+pub(crate) mod drive;
+/// How an integrator holds its model: shared, or exclusive to change it while it runs.
+pub mod held;
+pub(crate) mod restart;
+/// Input sources read by time: tables held or interpolated.
+pub mod sources;
 
 use crate::error::{Capability, SimError};
 use crate::model::keys::Input;
 use crate::model::state::State;
-use crate::model::{Hybrid, InputsOutputs, LagrangeDirac};
+use crate::model::{InputsOutputs, LagrangeDirac};
 use crate::shape::dims::Storage;
-use crate::simulate::progress::Progress;
-use crate::simulate::run::Run;
-use crate::simulate::solution::{Sampling, Solution};
 
 /// An integrator of a model `M`: [`Explicit`](crate::Explicit), [`Radau`](crate::Radau) or
 /// [`Variational`](crate::Variational).
@@ -34,7 +37,7 @@ where
     fn model(&self) -> &M;
 
     /// Prepares to integrate from `state` at `t0` to `t_end`. The state should be consistent
-    /// (see [`consistent_state`](crate::analysis::init::consistent_state)).
+    /// (see [`consistent_state`](crate::consistent_state)).
     fn start(&mut self, t0: f64, state: &State<M>, t_end: f64) -> Result<(), SimError>;
 
     /// The model to change between steps, if the integrator holds it exclusively (it was built
@@ -69,39 +72,6 @@ where
         let t = self.t();
         change(self.model_mut().ok_or(SimError::SharedModel { t })?);
         self.restart()
-    }
-
-    /// Begins a run from `state` at `t0` to `t_end`, whose options (samples, events, a
-    /// sampled-data controller, an observer, a progress report) compose with each other and
-    /// with the model's contacts, laws and switching surfaces, which every run watches; ended
-    /// by [`Run::solve`]. [`Run`] has an example.
-    fn run<'r>(&'r mut self, t0: f64, state: &'r State<M>, t_end: f64) -> Run<'r, M, Self>
-    where
-        Self: Sized,
-    {
-        Run::new(self, t0, state, t_end)
-    }
-
-    /// Runs from `t0` to `t_end` under a sampled-data controller: every `period`, from `t0` on,
-    /// `controller(t_k, state, model)` reads the state and sets the model's inputs (or
-    /// parameters), which are held until the next sample. The integration stops at each sample
-    /// instant and restarts there, so no step straddles a change. Needs an integrator built on
-    /// `&mut model`. The guide's section "Inputs and controllers" has an example. A shorthand
-    /// of `run(..).sampling(..).every(period, controller).solve()` ([`Run::every`]).
-    fn solve_sampled(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        period: f64,
-        sampling: &Sampling,
-        controller: impl FnMut(f64, &State<M>, &mut M),
-    ) -> Result<Solution<M, Self::Stats>, SimError>
-    where
-        Self: Sized,
-        M: Hybrid,
-    {
-        self.run(t0, state, t_end).sampling(sampling.clone()).every(period, controller).solve()
     }
 
     /// Sets an input between steps and restarts.
@@ -194,68 +164,9 @@ where
 
     /// The work done since the last [`Integrator::start`].
     fn stats(&self) -> Self::Stats;
-
-    /// Integrates from `state` at `t0` to `t_end`, recording samples as `sampling` says, with
-    /// the model's unilateral constraints, laws and switching surfaces watched: its impacts and
-    /// switches are in the solution. A shorthand of `run(..).sampling(..).solve()`
-    /// ([`Integrator::run`]).
-    fn solve(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        sampling: &Sampling,
-    ) -> Result<Solution<M, Self::Stats>, SimError>
-    where
-        Self: Sized,
-        M: Hybrid,
-    {
-        self.run(t0, state, t_end).sampling(sampling.clone()).solve()
-    }
-
-    /// [`Integrator::solve`] with a report of the progress: `report` is called with the time
-    /// reached, the integrator's counters and the wall-clock time, at most once per `interval`
-    /// of wall-clock time (every step for a zero interval) and once at the end. `Progress`
-    /// displays as one line; [`Progress::bar`] draws a text bar. The guide's section "Step by
-    /// step, and observers" has a runnable example. A shorthand of
-    /// `run(..).sampling(..).progress(interval, report).solve()` ([`Run::progress`]).
-    fn solve_with_progress(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        sampling: &Sampling,
-        interval: std::time::Duration,
-        report: impl FnMut(&Progress<Self::Stats>),
-    ) -> Result<Solution<M, Self::Stats>, SimError>
-    where
-        Self: Sized,
-        M: Hybrid,
-    {
-        self.run(t0, state, t_end).sampling(sampling.clone()).progress(interval, report).solve()
-    }
-
-    /// [`Integrator::solve`] with an observer called after every step with the time and the
-    /// state reached (read by name: `state.q(Model::X)`); returning `ControlFlow::Break(())`
-    /// stops the integration there. A shorthand of `run(..).sampling(..).observe(observer).solve()`
-    /// ([`Run::observe`]).
-    fn solve_observed(
-        &mut self,
-        t0: f64,
-        state: &State<M>,
-        t_end: f64,
-        sampling: &Sampling,
-        observer: impl FnMut(f64, &State<M>) -> ControlFlow<()>,
-    ) -> Result<Solution<M, Self::Stats>, SimError>
-    where
-        Self: Sized,
-        M: Hybrid,
-    {
-        self.run(t0, state, t_end).sampling(sampling.clone()).observe(observer).solve()
-    }
 }
 
-/// The most sample intervals [`Integrator::solve_sampled`] takes on: a period this short
+/// The most sample intervals `solve_sampled` takes on: a period this short
 /// against the span is a mistake, not a controller.
 const MAX_SAMPLES: f64 = 1e9;
 
@@ -333,7 +244,7 @@ pub(crate) fn check_step_options(
 /// interpolation or held, a continuous feedback; and that ends its steps at the times where
 /// those inputs jump or bend ([`Drive::stop_at`]), restarting there. Every method offers it
 /// (Radau also with the feedback's Jacobian: `Radau::drive_feedback`). Every method also sets
-/// inputs between steps ([`Integrator::set_input`], [`Integrator::solve_sampled`]). The
+/// inputs between steps ([`Integrator::set_input`], [`Solve::solve_sampled`](crate::Solve::solve_sampled)). The
 /// facade's guide (`dirac::guide`, "Inputs and controllers") drives a model from a table in
 /// each method.
 pub trait Drive<'m, M: LagrangeDirac>: Integrator<M>
@@ -349,7 +260,7 @@ where
     }
 
     /// Ends a step at each of `times` and restarts there, from now on: the instants where the
-    /// inputs jump or bend (a table's samples: [`Table::times`](crate::simulate::sources::Table::times)),
+    /// inputs jump or bend (a table's samples: [`Table::times`](crate::integrator::sources::Table::times)),
     /// known in advance, so located exactly, and no step straddles one. A drive reads the
     /// inputs at a stop's time from the left for the step that ends there and from the right
     /// after it. Set it before `start`; by default the method refuses.

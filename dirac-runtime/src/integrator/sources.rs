@@ -17,7 +17,7 @@ pub enum Hold {
 /// first sample its value, after the last the last value.
 ///
 /// ```
-/// use dirac_runtime::simulate::sources::{Hold, Table};
+/// use dirac_runtime::integrator::sources::{Hold, Table};
 ///
 /// let ramp = Table::new(vec![0.0, 1.0, 3.0], vec![0.0, 2.0, 2.0], Hold::Linear)?;
 /// assert_eq!(ramp.at(0.5), 1.0);
