@@ -24,7 +24,7 @@ pub(crate) struct Stops {
     /// The start of the stretch the integration is in.
     start: f64,
     /// The crossing of a timed switch the next step is to end at, if any
-    /// ([`Integrator::end_step_at`](crate::Integrator::end_step_at)).
+    /// ([`Integrator::end_step_at`](crate::integrator::Integrator::end_step_at)).
     timed: Option<f64>,
 }
 

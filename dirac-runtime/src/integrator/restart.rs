@@ -22,7 +22,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     /// How far the state was from the constraints when the model was last handed out for a
-    /// change ([`Integrator::model_mut`](crate::Integrator::model_mut)), relative to the size
+    /// change ([`Integrator::model_mut`](crate::integrator::Integrator::model_mut)), relative to the size
     /// of their terms; checked against the changed model at the restart.
     changed_from: Option<f64>,
     /// Whether the model's rows may hold other velocities after a restart than at the start
@@ -154,7 +154,7 @@ where
 /// Restarts `integrator` at `t` from `state`, the state interpolated at a crossing within the
 /// last step: where the integrator's own check refuses it (off the constraints by more than a
 /// restart allows), from the consistent state nearest to it, which `state` becomes.
-pub(crate) fn restart_at_nearest<M: LagrangeDirac, I: crate::Integrator<M>>(
+pub(crate) fn restart_at_nearest<M: LagrangeDirac, I: crate::integrator::Integrator<M>>(
     integrator: &mut I,
     t: f64,
     state: &mut State<M>,
@@ -167,7 +167,7 @@ where
 
 /// [`restart_at_nearest`] by `restart(integrator, t, state, projected)`, told whether `state`
 /// was projected (what a restart that carries more than the state, sensitivities, adapts).
-pub(crate) fn restart_nearest_with<M: LagrangeDirac, I: crate::Integrator<M>>(
+pub(crate) fn restart_nearest_with<M: LagrangeDirac, I: crate::integrator::Integrator<M>>(
     integrator: &mut I,
     t: f64,
     state: &mut State<M>,

@@ -6,7 +6,7 @@ use crate::error::SimError;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Hold {
     /// The last sample's value until the next sample (zero-order hold). Its jumps are met by
-    /// ending the steps there: [`Drive::stop_at`](crate::Drive::stop_at) with
+    /// ending the steps there: [`Drive::stop_at`](crate::integrator::Drive::stop_at) with
     /// [`Table::times`].
     Zero,
     /// The straight line between the two samples around `t`.
@@ -75,7 +75,7 @@ impl Table {
     }
 
     /// The sample times, where a zero-order hold jumps and a linear interpolation bends: the
-    /// stops to give [`Drive::stop_at`](crate::Drive::stop_at).
+    /// stops to give [`Drive::stop_at`](crate::integrator::Drive::stop_at).
     pub fn times(&self) -> &[f64] {
         &self.times
     }
