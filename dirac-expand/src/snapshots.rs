@@ -128,7 +128,7 @@ fn interconnection_by_ports() {
             #[dirac(connect(left.x2, right.x2bar))]
             pub struct Chain { pub left: Primitive1, pub right: Primitive2 }
         },
-        crate::interconnect::derive,
+        |input| crate::interconnect::derive(input, crate::reduce::start),
     );
 }
 
@@ -140,6 +140,6 @@ fn interconnection_by_a_one_form() {
             #[dirac(constraint(tie) = (1.0 + 0.1 * wheel.theta.sin()) * wheel.v_theta - c * cart.x.cos() * cart.v_x)]
             pub struct CoupledByOneForm { pub wheel: Wheel, pub cart: Cart, pub c: f64 }
         },
-        crate::interconnect::derive,
+        |input| crate::interconnect::derive(input, crate::reduce::start),
     );
 }
