@@ -241,6 +241,22 @@ fn read_link(node: Node<'_, '_>, at: &impl Fn(Node<'_, '_>, String) -> Error) ->
             ),
         ));
     }
+    // The products of inertia turn the axes: the moments about the principal axes must hold the
+    // same, or the tensor is no rigid body's (an indefinite one makes an energy that is not
+    // positive).
+    let [p, q, r] = principal_moments(&i);
+    let slack = 1e-12 * (p.abs() + q.abs() + r.abs());
+    if p < -slack || p + q < r - slack {
+        return Err(at(
+            inertia_node,
+            format!(
+                "link `{}`: the inertia tensor (ixx = {a}, iyy = {b}, izz = {c}, ixy = {}, ixz = {}, iyz = {}) has \
+                 principal moments {p:.6e}, {q:.6e}, {r:.6e}, no rigid body's: each must be non-negative and at \
+                 most the sum of the other two (products of inertia this large need larger moments)",
+                link.name, i[0][1], i[0][2], i[1][2]
+            ),
+        ));
+    }
     // The inertia about the centre of mass, turned from the inertial frame into the link's.
     let ri = mul(&rotation, &i);
     link.inertia = mul(&ri, &transpose(&rotation));
@@ -352,6 +368,29 @@ pub fn rpy([roll, pitch, yaw]: [f64; 3]) -> Mat3 {
         [-sp, cp * sr, cp * cr],
     ];
     m.map(|row| row.map(|x| if x.abs() < 1e-15 { 0.0 } else { x }))
+}
+
+/// The eigenvalues of the symmetric `a`, ascending: the principal moments of an inertia tensor,
+/// in closed form (the roots of the characteristic cubic, by their trigonometric form).
+fn principal_moments(a: &Mat3) -> [f64; 3] {
+    let off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    let mut moments = if off == 0.0 {
+        [a[0][0], a[1][1], a[2][2]]
+    } else {
+        let mean = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
+        let d = [a[0][0] - mean, a[1][1] - mean, a[2][2] - mean];
+        let spread = ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2.0 * off) / 6.0).sqrt();
+        // B = (A − mean I) / spread has eigenvalues 2 cos(φ + 2πk/3), φ = acos(det B / 2) / 3.
+        let b = |r: usize, c: usize| (a[r][c] - if r == c { mean } else { 0.0 }) / spread;
+        let det = b(0, 0) * (b(1, 1) * b(2, 2) - b(1, 2) * b(2, 1))
+            - b(0, 1) * (b(1, 0) * b(2, 2) - b(1, 2) * b(2, 0))
+            + b(0, 2) * (b(1, 0) * b(2, 1) - b(1, 1) * b(2, 0));
+        let phi = (det / 2.0).clamp(-1.0, 1.0).acos() / 3.0;
+        let third = 2.0 * std::f64::consts::PI / 3.0;
+        [0.0, 1.0, 2.0].map(|k| mean + 2.0 * spread * (phi + k * third).cos())
+    };
+    moments.sort_by(f64::total_cmp);
+    moments
 }
 
 pub fn mul(a: &Mat3, b: &Mat3) -> Mat3 {
@@ -471,6 +510,27 @@ mod tests {
         assert_eq!(r.links[1].com, [1.0, 2.0, 3.0]);
     }
 
+    /// The principal moments of `R diag(1, 2, 3) Rᵀ`, a tensor built from them by a rotation
+    /// (the reference), and of a diagonal one, to round-off.
+    #[test]
+    fn principal_moments_are_the_eigenvalues_a_rotation_hid() {
+        let (c, s) = (0.7_f64.cos(), 0.7_f64.sin());
+        let (c2, s2) = (0.3_f64.cos(), 0.3_f64.sin());
+        let rz = [[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]];
+        let rx = [[1.0, 0.0, 0.0], [0.0, c2, -s2], [0.0, s2, c2]];
+        let r = super::mul(&rz, &rx);
+        let d = [[1.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 3.0]];
+        let tensor = super::mul(&super::mul(&r, &d), &super::transpose(&r));
+        let moments = super::principal_moments(&tensor);
+        for (got, want) in moments.iter().zip([1.0, 2.0, 3.0]) {
+            assert!((got - want).abs() < 1e-13, "{moments:?}");
+        }
+        assert_eq!(
+            super::principal_moments(&[[3.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 2.0]]),
+            [1.0, 2.0, 3.0]
+        );
+    }
+
     #[test]
     fn every_malformed_or_unsupported_element_is_refused_with_its_line() {
         let joint = |kind: &str, extra: &str| {
@@ -510,6 +570,15 @@ mod tests {
                      ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link>"
                 ),
                 "at most the sum of the other two",
+                4,
+            ),
+            (
+                // Principal moments 3, 1 and −1: the products of inertia make it indefinite.
+                format!(
+                    "{LINK}\n<link name=\"a\"><inertial><mass value=\"1\"/>\n<inertia ixx=\"1\" iyy=\"1\" izz=\"1\" \
+                     ixy=\"2\" ixz=\"0\" iyz=\"0\"/></inertial></link>"
+                ),
+                "principal moments -1.000000e0, 1.000000e0, 3.000000e0, no rigid body's",
                 4,
             ),
             (
