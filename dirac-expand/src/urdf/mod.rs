@@ -55,6 +55,8 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>, path: &LitStr) {
                 path.value()
             );
             cx.error_spanned_by(path, message);
+            // Nothing of the robot is in the model: its other errors would only mislead.
+            model.incomplete = true;
             return;
         }
     };
@@ -62,6 +64,7 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>, path: &LitStr) {
         Ok(robot) => robot,
         Err(e) => {
             cx.error_spanned_by(path, format!("{}, {e}", path.value()));
+            model.incomplete = true;
             return;
         }
     };

@@ -148,7 +148,40 @@ pub fn parse(text: &str) -> Result<Robot, Error> {
         parent_of[child] = Some(read.len());
         read.push((joint, child));
     }
+    // A cycle of joints, named by its joints, at the first of them in the file.
+    let cycle_from = |link: usize| {
+        let (mut seen, mut at_link) = (Vec::new(), link);
+        while let Some(j) = parent_of[at_link] {
+            if let Some(k) = seen.iter().position(|&(l, _)| l == at_link) {
+                let mut cycle: Vec<(usize, usize)> = seen[k..].to_vec();
+                cycle.reverse();
+                let names: Vec<String> =
+                    cycle.iter().map(|&(_, j)| format!("`{}`", read[j].0.name)).collect();
+                let path: Vec<&str> =
+                    cycle.iter().map(|&(_, j)| links[read[j].0.parent].name.as_str()).collect();
+                let first = cycle.iter().map(|&(_, j)| j).min().expect("a cycle has joints");
+                return Some(at(
+                    joint_nodes[first],
+                    format!(
+                        "the joints {} close a cycle ({} → {}): a URDF is a tree (close loops with `holonomic` rows \
+                         on an interconnection)",
+                        names.join(", "),
+                        path.join(" → "),
+                        path[0]
+                    ),
+                ));
+            }
+            seen.push((at_link, j));
+            at_link = read[j].0.parent;
+        }
+        None
+    };
     let roots: Vec<usize> = (0..links.len()).filter(|&i| parent_of[i].is_none()).collect();
+    if roots.is_empty()
+        && let Some(error) = cycle_from(0)
+    {
+        return Err(error);
+    }
     let &[root_link] = roots.as_slice() else {
         let names: Vec<&str> = roots.iter().map(|&i| links[i].name.as_str()).collect();
         return Err(at(
@@ -178,6 +211,9 @@ pub fn parse(text: &str) -> Result<Robot, Error> {
     if order.len() != links.len() {
         // Links outside the tree hang from a cycle.
         let lost = (0..links.len()).find(|i| position[*i] == usize::MAX).expect("a link outside the tree");
+        if let Some(error) = cycle_from(lost) {
+            return Err(error);
+        }
         return Err(at(
             link_nodes[lost],
             format!("link `{}` is on a cycle of joints: a URDF is a tree", links[lost].name),
@@ -600,8 +636,16 @@ mod tests {
                  <joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n\
                  <joint name=\"k\" type=\"fixed\"><parent link=\"b\"/><child link=\"a\"/></joint>"
                     .to_owned(),
-                "no root link",
-                1,
+                "the joints `j`, `k` close a cycle (a → b → a)",
+                3,
+            ),
+            (
+                "<link name=\"base\"/><link name=\"b\"/><link name=\"c\"/>\n\
+                 <joint name=\"m\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>\n\
+                 <joint name=\"n\" type=\"fixed\"><parent link=\"c\"/><child link=\"b\"/></joint>"
+                    .to_owned(),
+                "the joints `m`, `n` close a cycle (b → c → b)",
+                3,
             ),
         ];
         for (body, message, line) in cases {
