@@ -9,9 +9,9 @@ use syn::{Data, DeriveInput, Expr, Fields, Ident, Token, Type, Visibility};
 use crate::ctxt::Ctxt;
 use crate::law_decl::{self, LawDecl, LawKind};
 use crate::symbol::{
-    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FORCE, FRICTION, HOLONOMIC,
-    INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, NONZERO, OUTPUT, PORT, PORTS, POSITIVE,
-    RESTITUTION, SWITCH, UNILATERAL, UNIT, URDF,
+    CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FLOATING, FORCE, FRICTION,
+    GRAVITY, HOLONOMIC, INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, NONZERO, OUTPUT,
+    PORT, PORTS, POSITIVE, RESTITUTION, SWITCH, UNILATERAL, UNIT, URDF,
 };
 
 /// A model as written by the user.
@@ -71,6 +71,10 @@ pub struct Model<'a> {
     pub urdf: Option<syn::LitStr>,
     /// `joint_limits`: the URDF's joint limits as unilateral constraints (the key, for spans).
     pub joint_limits: Option<Ident>,
+    /// `floating`: the URDF robot's root moves freely (the key, for spans).
+    pub floating: Option<Ident>,
+    /// `gravity = [gx, gy, gz]`: the URDF robot's gravity, with its key.
+    pub gravity: Option<(Ident, Expr)>,
     /// Files the model was read from, which the expansion names so that Cargo rebuilds it when
     /// they change.
     pub tracked_files: Vec<String>,
@@ -191,6 +195,8 @@ impl<'a> Model<'a> {
             units: Vec::new(),
             urdf: None,
             joint_limits: None,
+            floating: None,
+            gravity: None,
             tracked_files: Vec::new(),
             incomplete: false,
         };
@@ -345,6 +351,16 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             }
             LARGE => model.large = true,
             JOINT_LIMITS => model.joint_limits = Some(key.clone()),
+            FLOATING => model.floating = Some(key.clone()),
+            GRAVITY => {
+                input.parse::<Token![=]>()?;
+                let expr: Expr = input.parse()?;
+                if model.gravity.is_some() {
+                    cx.error_spanned_by(&key, "duplicate `gravity`: a robot has one");
+                } else {
+                    model.gravity = Some((key, expr));
+                }
+            }
             URDF => {
                 input.parse::<Token![=]>()?;
                 let path: syn::LitStr = input.parse()?;

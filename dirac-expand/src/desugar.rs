@@ -10,8 +10,12 @@ pub fn read<'a>(cx: &Ctxt, input: &'a syn::DeriveInput) -> Model<'a> {
     let mut model = Model::from_input(cx, input);
     if let Some(path) = model.urdf.clone().filter(|_| !model.incomplete) {
         crate::urdf::desugar(cx, &mut model, &path);
-    } else if let Some(key) = &model.joint_limits {
-        cx.error_spanned_by(key, "`joint_limits` are a URDF file's: add `urdf = \"robot.urdf\"`");
+    } else if model.urdf.is_none() {
+        let keys =
+            [&model.joint_limits, &model.floating, &model.gravity.as_ref().map(|(key, _)| key.clone())];
+        for key in keys.into_iter().flatten() {
+            cx.error_spanned_by(key, format!("`{key}` is a URDF robot's: add `urdf = \"robot.urdf\"`"));
+        }
     }
     crate::laws::desugar(cx, &mut model);
     model

@@ -39,6 +39,12 @@ pub const URDF: &str = "urdf";
 /// `joint_limits`: with `urdf`, each limited joint's `<limit lower upper>` as two unilateral
 /// constraints with restitution 0 (hard stops).
 pub const JOINT_LIMITS: &str = "joint_limits";
+/// `floating`: with `urdf`, the robot's root moves freely in the world (a free flyer, its
+/// coordinates named after the joint `root_joint`).
+pub const FLOATING: &str = "floating";
+/// `gravity = [gx, gy, gz]`: with `urdf`, the acceleration of gravity in the world's axes,
+/// expressions in the model's parameters (`[0.0, 0.0, -9.81]` unless given).
+pub const GRAVITY: &str = "gravity";
 /// The restitution of a `unilateral` constraint.
 pub const RESTITUTION: &str = "restitution";
 /// `event(name) = expr` or `event(name, falling | rising | either) = expr`: a function whose
@@ -88,6 +94,8 @@ pub const MODEL_KEYS: &[&str] = &[
     DISSIPATION,
     URDF,
     JOINT_LIMITS,
+    FLOATING,
+    GRAVITY,
     FRICTION,
     DIODE,
     SWITCH,

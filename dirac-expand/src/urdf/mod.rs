@@ -2,8 +2,9 @@
 //! written into the model as joint coordinates, definitions, a Lagrangian and outputs, which
 //! then go through the derive like any model written by hand.
 //!
-//! The Lagrangian is the links' kinetic energy less their potential in gravity `(0, 0, −9.81)`,
-//! in the joint coordinates. Each link's angular velocity `ω` and the velocity `v` of its
+//! The Lagrangian is the links' kinetic energy less their potential in gravity, `(0, 0, −9.81)`
+//! unless `gravity = [gx, gy, gz]` gives it as expressions in the model's parameters, in the
+//! joint coordinates. Each link's angular velocity `ω` and the velocity `v` of its
 //! frame's origin are carried in the link's own axes by the usual recursion from the root,
 //!
 //! ```text
@@ -17,6 +18,18 @@
 //! it, and `V_k = m g z_c` with the height of the centre of mass from the third row of the
 //! link's rotation in the world. Every step is a definition, so the derive's graph shares them
 //! and differentiates each once.
+//!
+//! A `floating` joint (from the root, fixed in the world), or the whole robot with the model's
+//! `floating` (a free joint `root_joint` from the world to the root, as Pinocchio's free
+//! flyer), moves its child freely: the coordinates `<joint>_x`, `_y`, `_z` are the child's
+//! origin and `<joint>_r11` … `_r33` its rotation `R` in the joint's frame, held orthogonal by
+//! six holonomic rows (`<joint>_unit1` …, `<joint>_square12` …), the embedding of
+//! `RigidBody`. The recursion starts from the child's `ω` read off `Ω̂ = RᵀṘ` and its origin's
+//! velocity `Rᵀ ẋ`; the Lagrangian keeps the symmetries of the free robot, so the variational
+//! integrator keeps its momenta, which are outputs (`linear_momentum_x` …, `angular_momentum_x`
+//! … about the world's origin). A floating base must have mass (its own or a link's fixed to
+//! it). A `planar` joint is a slide along two directions of the plane normal to its axis and a
+//! turn about the axis: coordinates `<joint>_x`, `<joint>_y` and `<joint>_theta`.
 //!
 //! `<mimic>` becomes a holonomic row, `<dynamics damping>` a Rayleigh dissipation and
 //! `<dynamics friction>` a `friction` law (Coulomb friction with stiction); every joint
@@ -39,7 +52,8 @@ use crate::law_decl::{LawDecl, LawKind};
 use poly::{Atom, Poly};
 use read::{Kind, Mat3, Robot};
 
-/// The acceleration of gravity, along −z, as Pinocchio and MuJoCo assume it.
+/// The acceleration of gravity, along −z, as Pinocchio and MuJoCo assume it, unless the model
+/// gives its own.
 pub const GRAVITY: f64 = 9.81;
 
 /// Reads the URDF named by `path` (relative to the crate being compiled) and writes the robot
@@ -60,7 +74,7 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>, path: &LitStr) {
             return;
         }
     };
-    let robot = match read::parse(&text) {
+    let robot = match read::parse(&text, model.floating.is_some()) {
         Ok(robot) => robot,
         Err(e) => {
             cx.error_spanned_by(path, format!("{}, {e}", path.value()));
@@ -102,91 +116,29 @@ impl Writer<'_, '_, '_> {
     fn robot(&mut self, robot: &Robot) {
         let Some(names) = self.identifiers(robot) else { return };
         let (links, joints) = names;
+        let Some(gravity) = self.gravity() else { return };
         let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
         let identity = read::rpy([0.0; 3]).map(|row| row.map(Atom::Num));
         let root = Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() };
-        self.pose_outputs(&links[0], &root);
+        if robot.links[0].shown {
+            self.pose_outputs(&links[0], &root);
+        }
         let mut frames = vec![root];
         let mut kinetic = Vec::new();
         let mut potential = Vec::new();
+        let mut momenta = Momenta::default();
         for (k, joint) in robot.joints.iter().enumerate() {
             let link = &links[k + 1];
-            let parent = &frames[joint.parent];
-            let (q, v) = (Atom::Name(joints[k].clone()), Atom::Name(format!("v_{}", joints[k])));
-            // The rotation about the axis, as (cos, sin) definitions, for a revolute joint.
-            let turn = (joint.kind == Kind::Revolute).then(|| {
-                let cos = self.define(format!("{link}_cos"), &format!("{}.cos()", joints[k]));
-                let sin = self.define(format!("{link}_sin"), &format!("{}.sin()", joints[k]));
-                (cos, sin)
-            });
-            // d: the child's origin in the parent's frame.
-            let mut d: [Poly; 3] = joint.xyz.map(Poly::num);
-            if joint.kind == Kind::Prismatic {
-                let along = matvec(&joint.rotation, &joint.axis.map(Atom::Num));
-                for (di, ai) in d.iter_mut().zip(&along) {
-                    di.add(&ai.mul(&Poly::atom(&q)), 1.0);
-                }
-            }
-            // ω_k and v_k in the child's axes.
-            let w_in_joint =
-                self.bind3(&format!("{link}_wj"), matvec(&read::transpose(&joint.rotation), &parent.omega));
-            let mut arm = cross(&parent.omega.clone().map(|a| Poly::atom(&a)), &d);
-            for (ai, vi) in arm.iter_mut().zip(&parent.velocity) {
-                ai.add(&Poly::atom(vi), 1.0);
-            }
-            let arm = self.bind3(&format!("{link}_uj"), arm);
-            let arm_in_joint =
-                self.bind3(&format!("{link}_vj"), matvec(&read::transpose(&joint.rotation), &arm));
-            let (mut omega, mut velocity) = match &turn {
-                Some((cos, sin)) => (
-                    rotate_back(&joint.axis, cos, sin, &w_in_joint),
-                    rotate_back(&joint.axis, cos, sin, &arm_in_joint),
-                ),
-                None => {
-                    (w_in_joint.clone().map(|a| Poly::atom(&a)), arm_in_joint.clone().map(|a| Poly::atom(&a)))
-                }
+            let frame = match joint.kind {
+                Kind::Floating => self.free_frame(joint, link, &joints[k]),
+                _ => self.moved_frame(joint, link, &joints[k], &frames[joint.parent]),
             };
-            let rate = Poly::atom(&v);
-            match joint.kind {
-                Kind::Revolute => omega.iter_mut().zip(joint.axis).for_each(|(w, a)| w.add(&rate, a)),
-                Kind::Prismatic => velocity.iter_mut().zip(joint.axis).for_each(|(u, a)| u.add(&rate, a)),
-                Kind::Fixed => {}
-            }
-            let omega = self.bind3(&format!("{link}_w"), omega);
-            let velocity = self.bind3(&format!("{link}_v"), velocity);
-            // The rotation and origin in the world: R_p E Rot(a, q), and o_p + R_p d.
-            let pe: [[Poly; 3]; 3] = std::array::from_fn(|i| {
-                std::array::from_fn(|j| {
-                    let mut s = Poly::default();
-                    for m in 0..3 {
-                        s.add(&Poly::atom(&parent.rotation[i][m]), joint.rotation[m][j]);
-                    }
-                    s
-                })
-            });
-            let mut rotation: [[Atom; 3]; 3] = std::array::from_fn(|_| zero());
-            for (i, row) in pe.into_iter().enumerate() {
-                let row = self.bind3(&format!("{link}_e{}", i + 1), row);
-                let row = match &turn {
-                    // Row i of R_p E Rot is Rotᵀ applied to row i of R_p E.
-                    Some((cos, sin)) => rotate_back(&joint.axis, cos, sin, &row),
-                    None => row.map(|a| Poly::atom(&a)),
-                };
-                rotation[i] = self.bind3(&format!("{link}_r{}", i + 1), row);
-            }
-            let mut origin: [Poly; 3] = parent.origin.clone().map(|a| Poly::atom(&a));
-            for (i, o) in origin.iter_mut().enumerate() {
-                for (m, dm) in d.iter().enumerate() {
-                    o.add(&Poly::atom(&parent.rotation[i][m]).mul(dm), 1.0);
-                }
-            }
-            let origin = self.bind3(&format!("{link}_o"), origin);
-            // The link's energies.
+            // The link's energies, and its momenta when the robot floats.
             let body = &robot.links[k + 1];
             if body.mass > 0.0 || body.inertia.iter().flatten().any(|x| *x != 0.0) {
-                let w: [Poly; 3] = omega.clone().map(|a| Poly::atom(&a));
+                let w: [Poly; 3] = frame.omega.clone().map(|a| Poly::atom(&a));
                 let mut vc = cross(&w, &body.com.map(Poly::num));
-                vc.iter_mut().zip(&velocity).for_each(|(c, u)| c.add(&Poly::atom(u), 1.0));
+                vc.iter_mut().zip(&frame.velocity).for_each(|(c, u)| c.add(&Poly::atom(u), 1.0));
                 let vc = self.bind3(&format!("{link}_vc"), vc);
                 let mut t = Poly::default();
                 for c in &vc {
@@ -199,18 +151,37 @@ impl Writer<'_, '_, '_> {
                     }
                 }
                 kinetic.push(self.bind(format!("{link}_kinetic"), t));
-                let mut z = Poly::atom(&origin[2]);
-                for (r, c) in rotation[2].iter().zip(body.com) {
-                    z.add(&Poly::atom(r), c);
-                }
                 if body.mass > 0.0 {
-                    potential.push(self.bind(format!("{link}_potential"), z.scaled(body.mass * GRAVITY)));
+                    // The centre of mass in the world, row by row, as far as gravity needs it.
+                    let centre = |i: usize| {
+                        let mut z = Poly::atom(&frame.origin[i]);
+                        for (r, c) in frame.rotation[i].iter().zip(body.com) {
+                            z.add(&Poly::atom(r), c);
+                        }
+                        z
+                    };
+                    let v = match &gravity {
+                        None => centre(2).scaled(body.mass * GRAVITY),
+                        Some(g) => {
+                            let mut v = Poly::default();
+                            for (i, gi) in g.iter().enumerate() {
+                                v.add(&Poly::atom(gi).mul(&centre(i)), -body.mass);
+                            }
+                            v
+                        }
+                    };
+                    potential.push(self.bind(format!("{link}_potential"), v));
+                }
+                if robot.joints.iter().any(|j| j.kind == Kind::Floating) {
+                    momenta.add(self, link, body, &frame, &vc);
                 }
             }
-            let frame = Frame { omega, velocity, rotation, origin };
-            self.pose_outputs(link, &frame);
+            if body.shown {
+                self.pose_outputs(link, &frame);
+            }
             frames.push(frame);
         }
+        momenta.outputs(self);
         let mut lagrangian = Poly::default();
         kinetic.iter().for_each(|t| lagrangian.add(&Poly::atom(t), 1.0));
         potential.iter().for_each(|u| lagrangian.add(&Poly::atom(u), -1.0));
@@ -227,11 +198,183 @@ impl Writer<'_, '_, '_> {
         self.model.lagrangian = Some((key, self.expr(&lagrangian.render())));
     }
 
+    /// `gravity = [gx, gy, gz]` as three definitions, `None` inside for `(0, 0, −9.81)`; the
+    /// outer `None` after an error.
+    fn gravity(&mut self) -> Option<Option<[Atom; 3]>> {
+        let Some((key, expr)) = self.model.gravity.clone() else { return Some(None) };
+        let elems = match &expr {
+            Expr::Array(array) if array.elems.len() == 3 => array.elems.iter().cloned().collect::<Vec<_>>(),
+            _ => {
+                self.cx.error_spanned_by(
+                    &expr,
+                    format!(
+                        "`{key}` is three expressions, `[gx, gy, gz]`: the acceleration of gravity in the world's \
+                         axes, in m/s² (`[0.0, 0.0, -9.81]` pulls down the z axis)"
+                    ),
+                );
+                self.model.incomplete = true;
+                return None;
+            }
+        };
+        let mut atoms = Vec::new();
+        for (axis, expr) in XYZ.iter().zip(elems) {
+            let name = format!("gravity_{axis}");
+            self.model.defines.push(DefineDecl { name: Ident::new(&name, key.span()), expr });
+            atoms.push(Atom::Name(name));
+        }
+        Some(Some(atoms.try_into().expect("three axes")))
+    }
+
+    /// The frame of a link a floating joint moves: its coordinates are the link's origin and
+    /// rotation `R` in the joint's frame, held orthogonal by six holonomic rows. Its angular
+    /// velocity in its own axes is read off `Ω̂ = RᵀṘ` and its origin's velocity is `Rᵀ ẋ`.
+    fn free_frame(&mut self, joint: &read::Joint, link: &str, name: &str) -> Frame {
+        let coordinate = |suffix: &str| Atom::Name(format!("{name}_{suffix}"));
+        let rate = |suffix: &str| Atom::Name(format!("v_{name}_{suffix}"));
+        let r: [[Atom; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| coordinate(&format!("r{}{}", i + 1, j + 1))));
+        let dr: [[Atom; 3]; 3] =
+            std::array::from_fn(|i| std::array::from_fn(|j| rate(&format!("r{}{}", i + 1, j + 1))));
+        // Column products: c_a · ċ_b.
+        let column = |a: usize, b: usize| {
+            let mut s = Poly::default();
+            for m in 0..3 {
+                s.add(&Poly::atom(&r[m][a]).mul(&Poly::atom(&dr[m][b])), 1.0);
+            }
+            s
+        };
+        let omega = self.bind3(&format!("{link}_w"), [column(2, 1), column(0, 2), column(1, 0)]);
+        let velocity = self.bind3(
+            &format!("{link}_v"),
+            std::array::from_fn(|i| {
+                let mut s = Poly::default();
+                for (m, axis) in XYZ.iter().enumerate() {
+                    s.add(&Poly::atom(&r[m][i]).mul(&Poly::atom(&rate(axis))), 1.0);
+                }
+                s
+            }),
+        );
+        // In the world (the root's frame is the world's): E R and xyz + E x.
+        let rotation = std::array::from_fn(|i| {
+            let row = std::array::from_fn(|j| {
+                let mut s = Poly::default();
+                for (m, rm) in r.iter().enumerate() {
+                    s.add(&Poly::atom(&rm[j]), joint.rotation[i][m]);
+                }
+                s
+            });
+            self.bind3(&format!("{link}_r{}", i + 1), row)
+        });
+        let origin = std::array::from_fn(|i| {
+            let mut s = Poly::num(joint.xyz[i]);
+            for (m, axis) in XYZ.iter().enumerate() {
+                s.add(&Poly::atom(&coordinate(axis)), joint.rotation[i][m]);
+            }
+            s
+        });
+        let origin = self.bind3(&format!("{link}_o"), origin);
+        // RᵀR = I: unit columns, orthogonal to each other.
+        for (row, (a, b)) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)].into_iter().enumerate() {
+            let mut phi = Poly::default();
+            for rm in &r {
+                phi.add(&Poly::atom(&rm[a]).mul(&Poly::atom(&rm[b])), 1.0);
+            }
+            let row_name = if a == b {
+                phi.add(&Poly::num(1.0), -1.0);
+                format!("{name}_unit{}", a + 1)
+            } else {
+                format!("{name}_square{}{}", a + 1, b + 1)
+            };
+            debug_assert!(row < 6);
+            self.model.constraints.push(ConstraintDecl {
+                kind: ConstraintKind::Holonomic,
+                key: Ident::new("holonomic", self.span),
+                name: Some(Ident::new(&row_name, self.span)),
+                expr: self.expr(&phi.render()),
+            });
+        }
+        Frame { omega, velocity, rotation, origin }
+    }
+
+    /// The frame of a link a revolute, prismatic or fixed joint moves from its parent's.
+    fn moved_frame(&mut self, joint: &read::Joint, link: &str, coordinate: &str, parent: &Frame) -> Frame {
+        let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
+        let (q, v) = (Atom::Name(coordinate.to_owned()), Atom::Name(format!("v_{coordinate}")));
+        // The rotation about the axis, as (cos, sin) definitions, for a revolute joint.
+        let turn = (joint.kind == Kind::Revolute).then(|| {
+            let cos = self.define(format!("{link}_cos"), &format!("{coordinate}.cos()"));
+            let sin = self.define(format!("{link}_sin"), &format!("{coordinate}.sin()"));
+            (cos, sin)
+        });
+        // d: the child's origin in the parent's frame.
+        let mut d: [Poly; 3] = joint.xyz.map(Poly::num);
+        if joint.kind == Kind::Prismatic {
+            let along = matvec(&joint.rotation, &joint.axis.map(Atom::Num));
+            for (di, ai) in d.iter_mut().zip(&along) {
+                di.add(&ai.mul(&Poly::atom(&q)), 1.0);
+            }
+        }
+        // ω_k and v_k in the child's axes.
+        let w_in_joint =
+            self.bind3(&format!("{link}_wj"), matvec(&read::transpose(&joint.rotation), &parent.omega));
+        let mut arm = cross(&parent.omega.clone().map(|a| Poly::atom(&a)), &d);
+        for (ai, vi) in arm.iter_mut().zip(&parent.velocity) {
+            ai.add(&Poly::atom(vi), 1.0);
+        }
+        let arm = self.bind3(&format!("{link}_uj"), arm);
+        let arm_in_joint = self.bind3(&format!("{link}_vj"), matvec(&read::transpose(&joint.rotation), &arm));
+        let (mut omega, mut velocity) = match &turn {
+            Some((cos, sin)) => (
+                rotate_back(&joint.axis, cos, sin, &w_in_joint),
+                rotate_back(&joint.axis, cos, sin, &arm_in_joint),
+            ),
+            None => {
+                (w_in_joint.clone().map(|a| Poly::atom(&a)), arm_in_joint.clone().map(|a| Poly::atom(&a)))
+            }
+        };
+        let rate = Poly::atom(&v);
+        match joint.kind {
+            Kind::Revolute => omega.iter_mut().zip(joint.axis).for_each(|(w, a)| w.add(&rate, a)),
+            Kind::Prismatic => velocity.iter_mut().zip(joint.axis).for_each(|(u, a)| u.add(&rate, a)),
+            Kind::Fixed | Kind::Floating | Kind::Planar => {}
+        }
+        let omega = self.bind3(&format!("{link}_w"), omega);
+        let velocity = self.bind3(&format!("{link}_v"), velocity);
+        // The rotation and origin in the world: R_p E Rot(a, q), and o_p + R_p d.
+        let pe: [[Poly; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let mut s = Poly::default();
+                for m in 0..3 {
+                    s.add(&Poly::atom(&parent.rotation[i][m]), joint.rotation[m][j]);
+                }
+                s
+            })
+        });
+        let mut rotation: [[Atom; 3]; 3] = std::array::from_fn(|_| zero());
+        for (i, row) in pe.into_iter().enumerate() {
+            let row = self.bind3(&format!("{link}_e{}", i + 1), row);
+            let row = match &turn {
+                // Row i of R_p E Rot is Rotᵀ applied to row i of R_p E.
+                Some((cos, sin)) => rotate_back(&joint.axis, cos, sin, &row),
+                None => row.map(|a| Poly::atom(&a)),
+            };
+            rotation[i] = self.bind3(&format!("{link}_r{}", i + 1), row);
+        }
+        let mut origin: [Poly; 3] = parent.origin.clone().map(|a| Poly::atom(&a));
+        for (i, o) in origin.iter_mut().enumerate() {
+            for (m, dm) in d.iter().enumerate() {
+                o.add(&Poly::atom(&parent.rotation[i][m]).mul(dm), 1.0);
+            }
+        }
+        let origin = self.bind3(&format!("{link}_o"), origin);
+        Frame { omega, velocity, rotation, origin }
+    }
+
     /// Mimic joints as holonomic rows, damping as a Rayleigh function.
     fn joint_laws(&mut self, robot: &Robot, joints: &[String]) {
         let mut rayleigh = Poly::default();
         for (k, joint) in robot.joints.iter().enumerate() {
-            if joint.kind == Kind::Fixed {
+            if matches!(joint.kind, Kind::Fixed | Kind::Floating) {
                 continue;
             }
             let v = Poly::atom(&Atom::Name(format!("v_{}", joints[k])));
@@ -263,9 +406,9 @@ impl Writer<'_, '_, '_> {
                 }
             }
             if let Some(mimic) = &joint.mimic {
-                let Some(leader) =
-                    robot.joints.iter().position(|j| j.name == mimic.joint && j.kind != Kind::Fixed)
-                else {
+                let Some(leader) = robot.joints.iter().position(|j| {
+                    j.name == mimic.joint && matches!(j.kind, Kind::Revolute | Kind::Prismatic)
+                }) else {
                     let message = format!(
                         "{}: joint `{}` mimics `{}`, which is no moving joint of the robot",
                         self.path.value(),
@@ -302,34 +445,52 @@ impl Writer<'_, '_, '_> {
     /// The identifiers of the links and the moving joints, or `None` after an error.
     fn identifiers(&mut self, robot: &Robot) -> Option<(Vec<String>, Vec<String>)> {
         let mut ok = true;
-        let mut ident = |what: &str, name: &str| {
+        // A link's name only starts the names of its quantities (`box_x`, so `box` will do); a
+        // joint's is its coordinate's.
+        let mut ident = |what: &str, name: &str, used: &str| {
             let id: String =
                 name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
             let id = if id.starts_with(|c: char| c.is_ascii_digit()) { format!("_{id}") } else { id };
-            if syn::parse_str::<Ident>(&id).is_err() {
+            if syn::parse_str::<Ident>(&format!("{id}{used}")).is_err() {
                 let message = format!("{}: {what} `{name}` cannot be a Rust name", self.path.value());
                 self.cx.error_spanned_by(self.path, message);
                 ok = false;
             }
             id
         };
-        let links: Vec<String> = robot.links.iter().map(|l| ident("link", &l.name)).collect();
-        let joints: Vec<String> = robot.joints.iter().map(|j| ident("joint", &j.name)).collect();
+        let links: Vec<String> = robot.links.iter().map(|l| ident("link", &l.name, "_x")).collect();
+        let joints: Vec<String> = robot.joints.iter().map(|j| ident("joint", &j.name, "")).collect();
         if !ok {
+            // Nothing of the robot is in the model: its other errors would only mislead.
+            self.model.incomplete = true;
             return None;
         }
         for (k, joint) in robot.joints.iter().enumerate() {
-            if joint.kind == Kind::Fixed {
-                continue;
+            let names = match joint.kind {
+                Kind::Fixed => continue,
+                // The origin, then the rotation row by row.
+                Kind::Floating => XYZ
+                    .iter()
+                    .map(|axis| format!("{}_{axis}", joints[k]))
+                    .chain(
+                        (1..=3)
+                            .flat_map(|i| (1..=3).map(move |j| (i, j)))
+                            .map(|(i, j)| format!("{}_r{i}{j}", joints[k])),
+                    )
+                    .collect(),
+                _ => vec![joints[k].clone()],
+            };
+            for coordinate in names {
+                let name = Ident::new(&coordinate, self.span);
+                let velocity = Ident::new(&format!("v_{coordinate}"), self.span);
+                self.model.ports.push(name.clone());
+                self.model.coordinates.push(CoordinateDecl { name, velocity });
             }
-            let name = Ident::new(&joints[k], self.span);
-            let velocity = Ident::new(&format!("v_{}", joints[k]), self.span);
-            self.model.ports.push(name.clone());
-            self.model.coordinates.push(CoordinateDecl { name, velocity });
         }
         if self.model.coordinates.is_empty() {
             let message = format!("{}: the robot has no moving joint", self.path.value());
             self.cx.error_spanned_by(self.path, message);
+            self.model.incomplete = true;
             return None;
         }
         Some((links, joints))
@@ -375,6 +536,73 @@ impl Writer<'_, '_, '_> {
     fn bind3(&mut self, name: &str, p: [Poly; 3]) -> [Atom; 3] {
         let [a, b, c] = p;
         [self.bind(format!("{name}x"), a), self.bind(format!("{name}y"), b), self.bind(format!("{name}z"), c)]
+    }
+}
+
+/// The momenta of a floating robot, summed link by link in the world's axes: the linear momentum
+/// `Σ m W v_c` and the angular momentum about the world's origin `Σ W I ω + c × m W v_c`.
+#[derive(Default)]
+struct Momenta {
+    linear: [Poly; 3],
+    angular: [Poly; 3],
+}
+
+impl Momenta {
+    fn add(
+        &mut self,
+        writer: &mut Writer<'_, '_, '_>,
+        link: &str,
+        body: &read::Link,
+        frame: &Frame,
+        vc: &[Atom; 3],
+    ) {
+        let world = |writer: &mut Writer<'_, '_, '_>, name: &str, x: [Poly; 3]| {
+            let x = writer.bind3(name, x).map(|a| Poly::atom(&a));
+            let turned = std::array::from_fn(|i| {
+                let mut s = Poly::default();
+                for (r, xj) in frame.rotation[i].iter().zip(&x) {
+                    s.add(&Poly::atom(r).mul(xj), 1.0);
+                }
+                s
+            });
+            writer.bind3(&format!("{name}_world"), turned).map(|a| Poly::atom(&a))
+        };
+        let momentum =
+            world(writer, &format!("{link}_p"), vc.clone().map(|a| Poly::atom(&a).scaled(body.mass)));
+        let spin = std::array::from_fn(|i| {
+            let mut s = Poly::default();
+            for (w, inertia) in frame.omega.iter().zip(body.inertia[i]) {
+                s.add(&Poly::atom(w), inertia);
+            }
+            s
+        });
+        let spin = world(writer, &format!("{link}_h"), spin);
+        let centre: [Poly; 3] = std::array::from_fn(|i| {
+            let mut s = Poly::atom(&frame.origin[i]);
+            for (r, c) in frame.rotation[i].iter().zip(body.com) {
+                s.add(&Poly::atom(r), c);
+            }
+            s
+        });
+        let centre = writer.bind3(&format!("{link}_cw"), centre).map(|a| Poly::atom(&a));
+        let moment = cross(&centre, &momentum);
+        for i in 0..3 {
+            self.linear[i].add(&momentum[i], 1.0);
+            self.angular[i].add(&spin[i], 1.0);
+            self.angular[i].add(&moment[i], 1.0);
+        }
+    }
+
+    /// `linear_momentum_x` … and `angular_momentum_x` …, if any link moved.
+    fn outputs(self, writer: &mut Writer<'_, '_, '_>) {
+        if self.linear.iter().all(|p| p.terms.is_empty()) && self.angular.iter().all(|p| p.terms.is_empty()) {
+            return;
+        }
+        for (what, momentum) in [("linear", &self.linear), ("angular", &self.angular)] {
+            for (axis, p) in XYZ.iter().zip(momentum) {
+                writer.output(format!("{what}_momentum_{axis}"), &p.render());
+            }
+        }
     }
 }
 
@@ -459,7 +687,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("dirac-urdf-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("a temporary folder");
         let file = dir.join("bad.urdf");
-        let text = "<robot name=\"r\">\n<link name=\"a\"/>\n<joint name=\"j\" type=\"floating\">\n</joint>\n</robot>";
+        let text = "<robot name=\"r\">\n<link name=\"a\"/>\n<joint name=\"j\" type=\"spherical\">\n</joint>\n</robot>";
         std::fs::write(&file, text).expect("written");
         let path = file.display().to_string();
         let input: syn::DeriveInput = syn::parse_quote! {
@@ -467,7 +695,7 @@ mod tests {
             struct Bad;
         };
         let out = crate::lagrange_dirac(&input).to_string();
-        assert!(out.contains("line 3, column 1: joint `j` is `floating`, which is not supported"), "{out}");
+        assert!(out.contains("line 3, column 1: joint `j` is `spherical`, which is not supported"), "{out}");
         let input: syn::DeriveInput = syn::parse_quote! {
             #[dirac(urdf = "no/such.urdf")]
             struct Missing;

@@ -9,7 +9,8 @@ pub type Mat3 = [[f64; 3]; 3];
 
 /// A robot as its URDF describes it, with the links in tree order (parents before children).
 pub struct Robot {
-    /// The links; the first is the root, fixed in the world.
+    /// The links; the first is the root, fixed in the world (a frame of its own, not shown, when
+    /// the robot is asked to float).
     pub links: Vec<Link>,
     /// The joints in tree order: joint `k` moves `links[k + 1]`.
     pub joints: Vec<Joint>,
@@ -23,6 +24,9 @@ pub struct Link {
     pub com: [f64; 3],
     /// The inertia tensor about the centre of mass, in the link's axes.
     pub inertia: Mat3,
+    /// Whether the link is the file's (its pose an output), not a frame the reader added: the
+    /// world a floating robot moves in, or the frames between a planar joint's three motions.
+    pub shown: bool,
 }
 
 /// The kinds of joints this reader accepts.
@@ -34,6 +38,12 @@ pub enum Kind {
     Prismatic,
     /// No motion.
     Fixed,
+    /// A free motion in space (six degrees of freedom), its rotation carried by the nine
+    /// entries of a matrix held orthogonal; only between the root and its child.
+    Floating,
+    /// `planar` as written, a motion in the plane normal to the axis; the reader turns it into
+    /// two slides and a turn, so no joint of a [`Robot`] has this kind.
+    Planar,
 }
 
 /// A joint: the frame of its child link in its parent's, and its motion.
@@ -83,7 +93,9 @@ impl fmt::Display for Error {
 type Node<'a, 'i> = roxmltree::Node<'a, 'i>;
 
 /// Reads a robot from the text of a URDF file.
-pub fn parse(text: &str) -> Result<Robot, Error> {
+/// Reads a robot from the text of a URDF file; with `float_root`, its root moves freely in the
+/// world, by a floating joint [`FLOATING_ROOT`] from a world frame of its own.
+pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
     let doc = roxmltree::Document::parse(text).map_err(|e| {
         let pos = e.pos();
         Error { line: pos.row, column: pos.col, message: format!("not well-formed XML: {e}") }
@@ -195,16 +207,16 @@ pub fn parse(text: &str) -> Result<Robot, Error> {
     };
     // Tree order: breadth first from the root, children in the file's order.
     let mut order = vec![root_link];
-    let mut joints = Vec::new();
+    let mut tree = Vec::new();
     let mut position = vec![usize::MAX; links.len()];
     position[root_link] = 0;
     let mut k = 0;
     while k < order.len() {
         let parent = order[k];
-        for (joint, child) in read.iter().filter(|(j, _)| j.parent == parent) {
+        for (j, (joint, child)) in read.iter().enumerate().filter(|(_, (j, _))| j.parent == parent) {
             position[*child] = order.len();
             order.push(*child);
-            joints.push((joint, *child));
+            tree.push((j, joint, *child));
         }
         k += 1;
     }
@@ -219,33 +231,185 @@ pub fn parse(text: &str) -> Result<Robot, Error> {
             format!("link `{}` is on a cycle of joints: a URDF is a tree", links[lost].name),
         ));
     }
-    let joints = joints
-        .into_iter()
-        .map(|(j, _)| Joint {
-            name: j.name.clone(),
-            kind: j.kind,
-            parent: position[j.parent],
-            xyz: j.xyz,
-            rotation: j.rotation,
-            axis: j.axis,
-            mimic: j.mimic.as_ref().map(|m| Mimic {
-                joint: m.joint.clone(),
-                multiplier: m.multiplier,
-                offset: m.offset,
-            }),
-            damping: j.damping,
-            friction: j.friction,
-            limits: j.limits,
-        })
-        .collect();
+    // A floating joint joins the root, fixed in the world, to the robot: a robot asked to float
+    // has none of its own.
+    for (j, joint, _) in &tree {
+        if joint.kind != Kind::Floating {
+            continue;
+        }
+        let parent = &links[joint.parent].name;
+        if float_root {
+            return Err(at(
+                joint_nodes[*j],
+                format!(
+                    "joint `{}` is `floating`, and the model floats the whole robot (`floating`): remove one of \
+                     the two",
+                    joint.name
+                ),
+            ));
+        }
+        if joint.parent != root_link {
+            return Err(at(
+                joint_nodes[*j],
+                format!(
+                    "joint `{}` is `floating` with the parent `{parent}`, a link that moves: a floating joint joins \
+                     the root, fixed in the world, to a body that moves freely",
+                    joint.name
+                ),
+            ));
+        }
+    }
+    // The joints in tree order, a planar one as its three motions, each followed by its child.
     let mut slots: Vec<Option<Link>> = links.into_iter().map(Some).collect();
-    let links = order.iter().map(|&i| slots[i].take().expect("each link once")).collect();
-    Ok(Robot { links, joints })
+    let mut robot = Robot { links: Vec::new(), joints: Vec::new() };
+    let mut index = vec![usize::MAX; slots.len()];
+    if float_root {
+        let world =
+            Link { name: "world".to_owned(), mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: false };
+        robot.links.push(world);
+        robot.joints.push(Joint::moving(FLOATING_ROOT, Kind::Floating, 0, [0.0; 3]));
+    }
+    index[root_link] = robot.links.len();
+    robot.links.push(slots[root_link].take().expect("each link once"));
+    for (_, joint, child) in tree {
+        let parent = index[joint.parent];
+        let moved = slots[child].take().expect("each link once");
+        if joint.kind == Kind::Planar {
+            let [along, across] = in_plane(&joint.axis);
+            let frame = |suffix: &str| Link {
+                name: format!("__{}_{suffix}", joint.name),
+                mass: 0.0,
+                com: [0.0; 3],
+                inertia: [[0.0; 3]; 3],
+                shown: false,
+            };
+            let mut x = Joint::moving(&format!("{}_x", joint.name), Kind::Prismatic, parent, along);
+            (x.xyz, x.rotation, x.damping) = (joint.xyz, joint.rotation, joint.damping);
+            robot.joints.push(x);
+            robot.links.push(frame("x"));
+            let mut y =
+                Joint::moving(&format!("{}_y", joint.name), Kind::Prismatic, robot.links.len() - 1, across);
+            y.damping = joint.damping;
+            robot.joints.push(y);
+            robot.links.push(frame("y"));
+            let mut turn = Joint::moving(
+                &format!("{}_theta", joint.name),
+                Kind::Revolute,
+                robot.links.len() - 1,
+                joint.axis,
+            );
+            turn.damping = joint.damping;
+            robot.joints.push(turn);
+        } else {
+            robot.joints.push(Joint {
+                name: joint.name.clone(),
+                kind: joint.kind,
+                parent,
+                xyz: joint.xyz,
+                rotation: joint.rotation,
+                axis: joint.axis,
+                mimic: joint.mimic.as_ref().map(|m| Mimic {
+                    joint: m.joint.clone(),
+                    multiplier: m.multiplier,
+                    offset: m.offset,
+                }),
+                damping: joint.damping,
+                friction: joint.friction,
+                limits: joint.limits,
+            });
+        }
+        index[child] = robot.links.len();
+        robot.links.push(moved);
+    }
+    // The names a planar joint's motions take are free.
+    let mut names = std::collections::HashSet::new();
+    if let Some(twice) = robot.joints.iter().find(|j| !names.insert(j.name.as_str())) {
+        return Err(at(
+            root,
+            format!(
+                "two joints are named `{}` (a planar joint's motions are `<joint>_x`, `_y` and `_theta`; the free motion of a floating robot is `{FLOATING_ROOT}`)",
+                twice.name
+            ),
+        ));
+    }
+    // A floating body must have inertia to move: its own mass or that of the links fixed to it.
+    for (k, joint) in robot.joints.iter().enumerate() {
+        if joint.kind == Kind::Floating && robot.rigid_mass(k + 1) == 0.0 {
+            let body = &robot.links[k + 1].name;
+            let node = tree_node(&joint_nodes, &read, &joint.name).unwrap_or(root);
+            return Err(at(
+                node,
+                format!(
+                    "the floating base `{body}` has no mass, nor has any link fixed to it: a body that moves freely \
+                     needs inertia (give `{body}` an `<inertial>`)"
+                ),
+            ));
+        }
+    }
+    Ok(robot)
+}
+
+/// The name of the free motion of a robot asked to float, as Pinocchio names its free flyer.
+pub const FLOATING_ROOT: &str = "root_joint";
+
+fn tree_node<'a, 'i>(nodes: &[Node<'a, 'i>], read: &[(Joint, usize)], name: &str) -> Option<Node<'a, 'i>> {
+    read.iter().position(|(j, _)| j.name == name).map(|j| nodes[j])
+}
+
+impl Robot {
+    /// The mass of link `k` and of every link fixed to it, directly or through other fixed joints.
+    fn rigid_mass(&self, k: usize) -> f64 {
+        let mut mass = self.links[k].mass;
+        for (j, joint) in self.joints.iter().enumerate() {
+            if joint.parent == k && joint.kind == Kind::Fixed {
+                mass += self.rigid_mass(j + 1);
+            }
+        }
+        mass
+    }
+}
+
+impl Joint {
+    /// A joint the reader adds: no offset, damping, friction, limits or mimic.
+    fn moving(name: &str, kind: Kind, parent: usize, axis: [f64; 3]) -> Joint {
+        Joint {
+            name: name.to_owned(),
+            kind,
+            parent,
+            xyz: [0.0; 3],
+            rotation: rpy([0.0; 3]),
+            axis,
+            mimic: None,
+            damping: 0.0,
+            friction: 0.0,
+            limits: None,
+        }
+    }
+}
+
+/// Two unit directions in the plane normal to the unit `axis`, `b` and `axis × b`: `b` from the
+/// coordinate axis least along `axis` (x, then y), so the plane normal to z has x and y.
+fn in_plane(axis: &[f64; 3]) -> [[f64; 3]; 2] {
+    let least = (0..3).min_by(|&i, &j| axis[i].abs().total_cmp(&axis[j].abs())).expect("three entries");
+    let mut b = [0.0; 3];
+    b[least] = 1.0;
+    let along = axis[least];
+    b.iter_mut().zip(axis).for_each(|(x, a)| *x -= along * a);
+    let norm = (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt();
+    let b = b.map(|x| x / norm);
+    let c =
+        [axis[1] * b[2] - axis[2] * b[1], axis[2] * b[0] - axis[0] * b[2], axis[0] * b[1] - axis[1] * b[0]];
+    [b.map(snap), c.map(snap)]
+}
+
+/// Within 1e-15 of zero is zero.
+fn snap(x: f64) -> f64 {
+    if x.abs() < 1e-15 { 0.0 } else { x }
 }
 
 fn read_link(node: Node<'_, '_>, at: &impl Fn(Node<'_, '_>, String) -> Error) -> Result<Link, Error> {
     let name = required(node, "name", at)?.to_owned();
-    let mut link = Link { name, mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3] };
+    let mut link = Link { name, mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: true };
     let Some(inertial) = element(node, "inertial") else { return Ok(link) };
     let (com, rotation) = read_origin(inertial, at)?;
     let mass_node = element(inertial, "mass").ok_or_else(|| {
@@ -312,12 +476,14 @@ fn read_joint(
         "revolute" | "continuous" => Kind::Revolute,
         "prismatic" => Kind::Prismatic,
         "fixed" => Kind::Fixed,
+        "floating" => Kind::Floating,
+        "planar" => Kind::Planar,
         other => {
             return Err(at(
                 node,
                 format!(
                     "joint `{name}` is `{other}`, which is not supported; joints may be revolute, continuous, \
-                     prismatic or fixed"
+                     prismatic, fixed, planar or floating"
                 ),
             ));
         }
@@ -341,10 +507,11 @@ fn read_joint(
         axis = triple(a, "xyz", at)?;
     }
     let norm = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt();
-    if kind != Kind::Fixed && (norm == 0.0 || !norm.is_finite()) {
+    let axial = matches!(kind, Kind::Revolute | Kind::Prismatic | Kind::Planar);
+    if axial && (norm == 0.0 || !norm.is_finite()) {
         return Err(at(node, format!("joint `{name}` has a zero axis")));
     }
-    if kind != Kind::Fixed {
+    if axial {
         axis = axis.map(|x| x / norm);
     }
     let (mut damping, mut friction) = (0.0, 0.0);
@@ -362,7 +529,7 @@ fn read_joint(
     let continuous = node.attribute("type") == Some("continuous");
     if let Some(l) = element(node, "limit") {
         // A continuous joint's limit names its effort and velocity only.
-        if kind != Kind::Fixed && !continuous {
+        if matches!(kind, Kind::Revolute | Kind::Prismatic) && !continuous {
             let lower = optional_number(l, "lower", at)?;
             let upper = optional_number(l, "upper", at)?;
             if let (Some(lower), Some(upper)) = (lower, upper) {
@@ -403,7 +570,7 @@ pub fn rpy([roll, pitch, yaw]: [f64; 3]) -> Mat3 {
         [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
         [-sp, cp * sr, cp * cr],
     ];
-    m.map(|row| row.map(|x| if x.abs() < 1e-15 { 0.0 } else { x }))
+    m.map(|row| row.map(snap))
 }
 
 /// The eigenvalues of the symmetric `a`, ascending: the principal moments of an inertia tensor,
@@ -499,7 +666,7 @@ mod tests {
     const LINK: &str = r#"<link name="base"/>"#;
 
     fn robot(body: &str) -> Result<Robot, Error> {
-        parse(&format!("<robot name=\"r\">\n{body}\n</robot>"))
+        parse(&format!("<robot name=\"r\">\n{body}\n</robot>"), false)
     }
 
     fn refused(body: &str) -> Error {
@@ -567,6 +734,75 @@ mod tests {
         );
     }
 
+    /// A planar joint is a slide along each of two directions in the plane normal to its
+    /// axis (the first from the coordinate axis least along it) and a turn about the axis,
+    /// between two frames the reader adds and does not show.
+    #[test]
+    fn a_planar_joint_is_two_slides_and_a_turn() {
+        let r = robot(&arm(r#"<joint name="j" type="planar"><parent link="base"/><child link="arm"/>
+               <origin xyz="0 0 1"/><axis xyz="0 0 1"/><dynamics damping="0.5"/></joint>"#))
+        .expect("a robot");
+        let kinds: Vec<(&str, Kind, usize, [f64; 3])> =
+            r.joints.iter().map(|j| (j.name.as_str(), j.kind, j.parent, j.axis)).collect();
+        assert_eq!(
+            kinds,
+            [
+                ("j_x", Kind::Prismatic, 0, [1.0, 0.0, 0.0]),
+                ("j_y", Kind::Prismatic, 1, [0.0, 1.0, 0.0]),
+                ("j_theta", Kind::Revolute, 2, [0.0, 0.0, 1.0])
+            ]
+        );
+        assert_eq!((r.joints[0].xyz, r.joints[1].xyz), ([0.0, 0.0, 1.0], [0.0; 3]));
+        assert!(r.joints.iter().all(|j| j.damping == 0.5));
+        let shown: Vec<(&str, bool)> = r.links.iter().map(|l| (l.name.as_str(), l.shown)).collect();
+        assert_eq!(shown, [("base", true), ("__j_x", false), ("__j_y", false), ("arm", true)]);
+        // Any axis: two unit directions normal to it and to each other, right-handed.
+        let a = [0.6, 0.0, 0.8];
+        let [b, c] = super::in_plane(&a);
+        let dot = |x: &[f64; 3], y: &[f64; 3]| x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+        assert!(dot(&a, &b).abs() < 1e-15 && dot(&a, &c).abs() < 1e-15 && dot(&b, &c).abs() < 1e-15);
+        assert!((dot(&b, &b) - 1.0).abs() < 1e-15 && (dot(&c, &c) - 1.0).abs() < 1e-15);
+        let triple = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+            + a[2] * (b[0] * c[1] - b[1] * c[0]);
+        assert!((triple - 1.0).abs() < 1e-15, "{triple}");
+    }
+
+    /// A robot asked to float hangs from a world frame of its own by `root_joint`; a floating
+    /// joint of the file's joins the root to a body that moves freely.
+    #[test]
+    fn a_floating_robot_hangs_from_a_world_of_its_own() {
+        // The massless base carries the arm's mass through a fixed joint.
+        let text = format!(
+            "<robot name=\"r\">\n{}\n</robot>",
+            arm(r#"<joint name="j" type="fixed"><parent link="base"/><child link="arm"/></joint>"#)
+        );
+        let r = parse(&text, true).expect("a robot");
+        let joints: Vec<(&str, Kind, usize)> =
+            r.joints.iter().map(|j| (j.name.as_str(), j.kind, j.parent)).collect();
+        assert_eq!(joints, [(FLOATING_ROOT, Kind::Floating, 0), ("j", Kind::Fixed, 1)]);
+        // Through a hinge, the base would turn about it without inertia.
+        let hinged = text.replace(r#"type="fixed">"#, r#"type="continuous"><axis xyz="0 0 1"/>"#);
+        let e = parse(&hinged, true).err().expect("refused");
+        assert!(e.message.contains("the floating base `base` has no mass"), "{e}");
+        assert_eq!((r.links[0].shown, r.links[1].name.as_str(), r.links[1].shown), (false, "base", true));
+        let text = format!(
+            "<robot name=\"r\">\n{}\n</robot>",
+            arm(r#"<joint name="free" type="floating"><parent link="base"/><child link="arm"/></joint>"#)
+        );
+        let r = parse(&text, false).expect("a robot");
+        assert_eq!((r.joints[0].kind, r.links[0].shown), (Kind::Floating, true));
+        // Asked to float a robot that floats already.
+        let e = parse(&text, true).err().expect("refused");
+        assert!(
+            e.message.contains("joint `free` is `floating`, and the model floats the whole robot"),
+            "{e}"
+        );
+        assert_eq!(e.line, 4);
+        // Asked to float a massless root.
+        let e = parse("<robot name=\"r\">\n<link name=\"a\"/>\n</robot>", true).err().expect("refused");
+        assert!(e.message.contains("the floating base `a` has no mass"), "{e}");
+    }
+
     #[test]
     fn every_malformed_or_unsupported_element_is_refused_with_its_line() {
         let joint = |kind: &str, extra: &str| {
@@ -576,8 +812,36 @@ mod tests {
         };
         let cases: Vec<(String, &str, u32)> = vec![
             ("<robot".to_owned(), "not well-formed XML", 3),
-            (joint("floating", ""), "joint `j` is `floating`, which is not supported", 4),
-            (joint("planar", ""), "`planar`, which is not supported", 4),
+            (joint("spherical", ""), "joint `j` is `spherical`, which is not supported", 4),
+            (joint("planar", "<axis xyz=\"0 0 0\"/>"), "joint `j` has a zero axis", 4),
+            (
+                // The arm floats from the base, and the hand from the arm, which moves.
+                format!(
+                    "{}\n<link name=\"hand\"><inertial><mass value=\"1\"/>\
+                     <inertia ixx=\"1\" iyy=\"1\" izz=\"1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link>\n\
+                     <joint name=\"k\" type=\"floating\"><parent link=\"arm\"/><child link=\"hand\"/></joint>",
+                    joint("floating", "")
+                ),
+                "joint `k` is `floating` with the parent `arm`, a link that moves",
+                6,
+            ),
+            (
+                format!(
+                    "{LINK}\n<link name=\"shell\"/>\n<link name=\"tip\"/>\n\
+                     <joint name=\"free\" type=\"floating\"><parent link=\"base\"/><child link=\"shell\"/></joint>\n\
+                     <joint name=\"weld\" type=\"fixed\"><parent link=\"shell\"/><child link=\"tip\"/></joint>"
+                ),
+                "the floating base `shell` has no mass, nor has any link fixed to it",
+                5,
+            ),
+            (
+                arm(
+                    "<joint name=\"j\" type=\"planar\"><parent link=\"base\"/><child link=\"arm\"/></joint>\n\
+                     <link name=\"x\"/><joint name=\"j_x\" type=\"fixed\"><parent link=\"arm\"/><child link=\"x\"/></joint>",
+                ),
+                "two joints are named `j_x` (a planar joint's motions are `<joint>_x`, `_y` and `_theta`",
+                1,
+            ),
             (joint("revolute", "<axis xyz=\"0 0 0\"/>"), "joint `j` has a zero axis", 4),
             (joint("revolute", "<axis xyz=\"0 1\"/>"), "`xyz=\"0 1\"` is not three finite numbers", 4),
             (joint("revolute", "<origin xyz=\"0 nan 0\"/>"), "is not three finite numbers", 4),
@@ -653,7 +917,7 @@ mod tests {
             assert!(e.message.contains(message), "{body}\ngave: {e}\nexpected: {message}");
             assert_eq!(e.line, line, "{body}\ngave: {e}");
         }
-        let e = parse("<model/>").err().expect("refused");
+        let e = parse("<model/>", false).err().expect("refused");
         assert!(e.message.contains("a URDF's is `<robot>`"), "{e}");
     }
 }

@@ -5,6 +5,8 @@ use core::fmt;
 
 use nalgebra::DefaultAllocator;
 
+use crate::error::SimError;
+use crate::model::Named;
 use crate::model::keys::{Constraint, Coordinate};
 use crate::shape::dims::{Dimensions, Fixed, Sizes, Storage, VecC, VecQ, VecY};
 use crate::shape::layout::Layout;
@@ -196,5 +198,60 @@ where
         let mut state = Self::with_sizes(sizes);
         state.read_y(y);
         state
+    }
+}
+
+impl<M: Dimensions + Named> State<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    /// Places the body a free joint moves (a URDF robot's `floating` joint, `root_joint` of a
+    /// robot the model floats): its frame's origin and its rotation (rows of `R`, whose columns
+    /// are the body's axes in the joint's frame), the origin's velocity in the joint's axes and
+    /// the angular velocity `omega` in the body's own axes, `Ṙ = R ω̂`. Give the state to
+    /// [`consistent_state`](crate::consistent_state) for one to start from.
+    ///
+    /// The guide's "Floating bases, planar joints, gravity" starts a floating top with it.
+    /// An error names the model's free joints when `joint` is none of them.
+    pub fn place_free_body(
+        &mut self,
+        joint: &str,
+        origin: [f64; 3],
+        rotation: [[f64; 3]; 3],
+        velocity: [f64; 3],
+        omega: [f64; 3],
+    ) -> Result<&mut Self, SimError> {
+        let names = M::NAMES.coordinate_names();
+        let index = |suffix: &str| names.iter().position(|n| *n == format!("{joint}_{suffix}"));
+        let Some(slots) = ["x", "y", "z", "r11", "r12", "r13", "r21", "r22", "r23", "r31", "r32", "r33"]
+            .into_iter()
+            .map(index)
+            .collect::<Option<Vec<usize>>>()
+        else {
+            let free: Vec<&str> = names
+                .iter()
+                .filter_map(|n| n.strip_suffix("_r33"))
+                .filter(|j| names.contains(&format!("{j}_r11")))
+                .collect();
+            return Err(SimError::InvalidOption {
+                what: "free joint",
+                reason: format!(
+                    "the model has no free joint `{joint}` (coordinates `{joint}_x` … `{joint}_r33`); its free joints: {}",
+                    if free.is_empty() { "none".to_owned() } else { free.join(", ") }
+                ),
+            });
+        };
+        let [w1, w2, w3] = omega;
+        let hat = [[0.0, -w3, w2], [w3, 0.0, -w1], [-w2, w1, 0.0]];
+        for i in 0..3 {
+            self.q[slots[i]] = origin[i];
+            self.v[slots[i]] = velocity[i];
+            for j in 0..3 {
+                let k = slots[3 + 3 * i + j];
+                self.q[k] = rotation[i][j];
+                self.v[k] = (0..3).map(|m| rotation[i][m] * hat[m][j]).sum();
+            }
+        }
+        Ok(self)
     }
 }
