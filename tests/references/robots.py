@@ -15,6 +15,16 @@ writes
 - panda_frames.csv: at 10 random joint positions (uniform within the limits, seed 41), the
   pose of six links in the world (framesForwardKinematics, oMf), the root link included: per
   link its origin x, y, z and its rotation r11..r33 (row-major); rows q0..q8 and then the links'.
+
+    python robots.py --floating ROBOT.urdf OUT.csv SEED
+
+writes, for the robot with Pinocchio's free flyer as its root joint (its other joints revolute or
+prismatic, each column named by its joint, in Pinocchio's depth-first order), at 10 random states (joint
+positions uniform within the URDF's limits, [-pi, pi] where it has none, the base anywhere in
+[-1, 1]^3 turned by a uniformly random rotation, every velocity uniform in [-2, 2]), the base's
+origin x, y, z and rotation r11..r33 (row-major, oMi of the root joint), the joint positions,
+the base's linear and angular velocity in its own axes (Pinocchio's free-flyer velocity), the
+joint velocities, and crba, computeGeneralizedGravity and nonLinearEffects in those velocities.
 """
 
 import sys
@@ -100,5 +110,47 @@ def frames(model, data, out):
                comments="", fmt="%.17g")
 
 
+def floating(urdf, out, seed):
+    model = pin.buildModelFromUrdf(urdf, pin.JointModelFreeFlyer())
+    data = model.createData()
+    nv = model.nv
+    assert model.nq == nv + 1 and all(model.joints[k].nq == 1 for k in range(2, model.njoints))
+    lower = np.where(np.isfinite(model.lowerPositionLimit[7:]), model.lowerPositionLimit[7:], -np.pi)
+    upper = np.where(np.isfinite(model.upperPositionLimit[7:]), model.upperPositionLimit[7:], np.pi)
+    # Pinocchio reads an unlimited joint's limits as +-1.8e308.
+    lower = np.maximum(lower, -np.pi)
+    upper = np.minimum(upper, np.pi)
+    rng = np.random.default_rng(seed)
+    rows = []
+    for _ in range(10):
+        rotation = pin.Quaternion(rng.normal(size=4)).normalized()
+        q = np.concatenate([rng.uniform(-1.0, 1.0, 3), rotation.coeffs(), rng.uniform(lower, upper)])
+        v = rng.uniform(-2.0, 2.0, nv)
+        pin.forwardKinematics(model, data, q)
+        base = data.oMi[1]
+        mass = pin.crba(model, data, q)
+        mass = np.triu(mass) + np.triu(mass, 1).T
+        gravity = pin.computeGeneralizedGravity(model, data, q).copy()
+        bias = pin.nonLinearEffects(model, data, q, v).copy()
+        rows.append(np.concatenate([base.translation, base.rotation.ravel(), q[7:], v, mass.ravel(), gravity, bias]))
+    # Pinocchio orders the joints depth first: each column is named by its joint.
+    names = [model.names[k] for k in range(2, model.njoints)]
+    header = (
+        [f"base_{a}" for a in "xyz"]
+        + [f"base_r{i}{j}" for i in range(1, 4) for j in range(1, 4)]
+        + names
+        + [f"base_v{a}" for a in "xyz"]
+        + [f"base_w{a}" for a in "xyz"]
+        + [f"v_{name}" for name in names]
+        + [f"M{i}_{j}" for i in range(nv) for j in range(nv)]
+        + [f"g{i}" for i in range(nv)]
+        + [f"b{i}" for i in range(nv)]
+    )
+    np.savetxt(out, np.array(rows), delimiter=",", header=",".join(header), comments="", fmt="%.17g")
+
+
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    if sys.argv[1] == "--floating":
+        floating(sys.argv[2], sys.argv[3], int(sys.argv[4]))
+    else:
+        main(sys.argv[1], sys.argv[2])

@@ -8,3 +8,4 @@ venv=target/references/venv
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet scipy pin
 "$venv/bin/python" tests/references/robots.py tests/robots/panda/panda.urdf tests/references
+"$venv/bin/python" tests/references/robots.py --floating tests/robots/panda/panda.urdf tests/references/panda_floating.csv 43

@@ -21,3 +21,23 @@ pub struct PandaArm;
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(urdf = "../tests/robots/panda/panda.urdf", joint_limits)]
 pub struct PandaStops;
+
+/// The Panda floating in the world (Pinocchio's free flyer as its root joint, `root_joint`),
+/// under gravity.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/panda/panda.urdf", floating)]
+pub struct FloatingPanda;
+
+/// A symmetric body, floating, without gravity (`tests/robots/free/top.urdf`).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/free/top.urdf", floating, gravity = [0.0, 0.0, 0.0])]
+pub struct FreeTop;
+
+/// A puck on a planar joint whose plane holds gravity `g` along `−y`
+/// (`tests/robots/free/puck.urdf`).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/free/puck.urdf", gravity = [0.0, -g, 0.0])]
+pub struct Puck {
+    /// Gravity's acceleration, along −y.
+    pub g: f64,
+}
