@@ -127,6 +127,7 @@ impl Writer<'_, '_, '_> {
         let mut kinetic = Vec::new();
         let mut potential = Vec::new();
         let mut momenta = Momenta::default();
+        let floats = robot.joints.iter().any(|j| j.kind == Kind::Floating);
         for (k, joint) in robot.joints.iter().enumerate() {
             let link = &links[k + 1];
             let frame = match joint.kind {
@@ -172,7 +173,7 @@ impl Writer<'_, '_, '_> {
                     };
                     potential.push(self.bind(format!("{link}_potential"), v));
                 }
-                if robot.joints.iter().any(|j| j.kind == Kind::Floating) {
+                if floats {
                     momenta.add(self, link, body, &frame, &vc);
                 }
             }
@@ -274,7 +275,7 @@ impl Writer<'_, '_, '_> {
         });
         let origin = self.bind3(&format!("{link}_o"), origin);
         // RᵀR = I: unit columns, orthogonal to each other.
-        for (row, (a, b)) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)].into_iter().enumerate() {
+        for (a, b) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)] {
             let mut phi = Poly::default();
             for rm in &r {
                 phi.add(&Poly::atom(&rm[a]).mul(&Poly::atom(&rm[b])), 1.0);
@@ -285,7 +286,6 @@ impl Writer<'_, '_, '_> {
             } else {
                 format!("{name}_square{}{}", a + 1, b + 1)
             };
-            debug_assert!(row < 6);
             self.model.constraints.push(ConstraintDecl {
                 kind: ConstraintKind::Holonomic,
                 key: Ident::new("holonomic", self.span),
