@@ -88,7 +88,7 @@ impl Analysed {
         let blocks = Blocks::derive(&mut sym);
         let pattern = condensed_pattern(&sym.graph, &blocks);
         let unknowns = unknown_messages(&sym, name);
-        check_structure(cx, &sym, &pattern, &unknowns);
+        check_structure(cx, &sym, name, &pattern, &unknowns);
         Analysed { sym, blocks, pattern, unknowns }
     }
 }

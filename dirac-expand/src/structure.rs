@@ -60,26 +60,54 @@ pub fn unknown_messages(model: &SymModel, name: &str) -> Vec<String> {
     let multipliers = model.constraints.iter().map(|c| {
         format!(
             "structurally singular model: the multiplier of constraint `{}` of `{name}` is determined by no \
-             equation: the constraint depends on the others, or there are more constraints than velocities",
+             equation: the constraint acts on no velocity (a relation between coordinates alone is a \
+             `holonomic` constraint)",
             c.name
         )
     });
     velocities.chain(multipliers).collect()
 }
 
+/// The pattern with the multipliers' diagonal filled: what the dense solvers factor once they
+/// deflate redundant rows (`dirac_runtime::algebra::lu::Deflation`), so that rows that fix the
+/// same velocities twice are matched, and only velocities nothing determines stay unpaired.
+pub fn with_corner(pattern: &[bool], n: usize, m: usize) -> Vec<bool> {
+    let k = n + m;
+    let mut out = pattern.to_vec();
+    for r in n..k {
+        out[r * k + r] = true;
+    }
+    out
+}
+
+/// The first multiplier whose constraint acts on no velocity (its column of `Aᵀ` is empty).
+pub fn idle_row(pattern: &[bool], n: usize, m: usize) -> Option<usize> {
+    let k = n + m;
+    (0..m).find(|&r| (0..n).all(|j| !pattern[j * k + n + r]))
+}
+
 /// For a closed primitive (no ports): an error at the unknown nothing determines. A model
-/// with ports may be completed by an interconnection, which checks the whole.
-pub fn check_structure(cx: &Ctxt, model: &SymModel, pattern: &[bool], messages: &[String]) {
+/// with ports may be completed by an interconnection, which checks the whole. Redundant rows
+/// (more rows on some velocities than they number) are accepted: their multipliers are fixed
+/// at their least norm when the model runs.
+pub fn check_structure(cx: &Ctxt, model: &SymModel, name: &str, pattern: &[bool], messages: &[String]) {
     if !model.ports.is_empty() {
         return;
     }
-    let n = model.n();
-    if let Some(unknown) = unpaired(pattern, n + model.m()) {
-        let message = &messages[unknown];
+    let (n, m) = (model.n(), model.m());
+    if let Some(r) = idle_row(pattern, n, m) {
+        cx.error_spanned_by(&model.constraints[r].ident, &messages[n + r]);
+    } else if let Some(unknown) = unpaired(&with_corner(pattern, n, m), n + m) {
         if unknown < n {
-            cx.error_spanned_by(&model.coordinates[unknown], message);
+            cx.error_spanned_by(&model.coordinates[unknown], &messages[unknown]);
         } else {
-            cx.error_spanned_by(&model.constraints[unknown - n].ident, message);
+            let c = &model.constraints[unknown - n];
+            let message = format!(
+                "structurally singular model: the velocities constraint `{}` of `{name}` acts on are not all \
+                 determined: one of them has no inertia, and no potential, force or other constraint fixes it",
+                c.name
+            );
+            cx.error_spanned_by(&c.ident, &message);
         }
     }
 }

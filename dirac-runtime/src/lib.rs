@@ -134,7 +134,9 @@ pub mod __private {
     pub use crate::model::names::{Message, Names, ResolveError, Resolved, Subsystem};
     pub use crate::model::sparse::SparseJacobian;
     pub use crate::model::state::State;
-    pub use crate::model::structure::{Structure, all, composite_unknown, prefix_sum, unpaired_unknown};
+    pub use crate::model::structure::{
+        Structure, all, composite_unknown, prefix_sum, undetermined_unknown, unpaired_unknown,
+    };
     pub use crate::model::{
         DenseModel, Derivation, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
         OperationCounts, Parameters,

@@ -26,6 +26,18 @@ const NONE: usize = usize::MAX;
 /// The first unknown (column) of the row-major `k × k` pattern that a maximum matching leaves
 /// unpaired, if any: the pattern can be nonsingular only if there is none.
 pub const fn unpaired(pattern: &[bool], k: usize, s: &mut Scratch<'_>) -> Option<usize> {
+    unpaired_with_corner(pattern, k, k, s)
+}
+
+/// As [`unpaired`], with the diagonal entries from `corner` on counted as present: the
+/// multipliers' corner of a saddle-point system whose redundant rows are deflated, where each
+/// multiplier may pair with its own row and only the velocities can stay unpaired.
+pub const fn unpaired_with_corner(
+    pattern: &[bool],
+    k: usize,
+    corner: usize,
+    s: &mut Scratch<'_>,
+) -> Option<usize> {
     let mut i = 0;
     while i < k {
         s.row_of[i] = NONE;
@@ -34,7 +46,7 @@ pub const fn unpaired(pattern: &[bool], k: usize, s: &mut Scratch<'_>) -> Option
     }
     let mut r = 0;
     while r < k {
-        augment(pattern, k, r, s);
+        augment(pattern, k, corner, r, s);
         r += 1;
     }
     let mut c = 0;
@@ -49,7 +61,7 @@ pub const fn unpaired(pattern: &[bool], k: usize, s: &mut Scratch<'_>) -> Option
 
 /// Searches depth first, with an explicit stack, for an augmenting path from equation `r` and
 /// flips it if there is one.
-const fn augment(pattern: &[bool], k: usize, r: usize, s: &mut Scratch<'_>) {
+const fn augment(pattern: &[bool], k: usize, corner: usize, r: usize, s: &mut Scratch<'_>) {
     let mut i = 0;
     while i < k {
         s.visited[i] = false;
@@ -65,7 +77,7 @@ const fn augment(pattern: &[bool], k: usize, r: usize, s: &mut Scratch<'_>) {
         let mut c = s.stack_col[depth];
         let mut advanced = false;
         while c < k {
-            if pattern[row * k + c] && !s.visited[c] {
+            if (pattern[row * k + c] || row == c && c >= corner) && !s.visited[c] {
                 s.visited[c] = true;
                 s.stack_col[depth] = c + 1;
                 s.parent[c] = row;

@@ -63,7 +63,8 @@ impl CompositeModel {
             let jl = lit(j);
             let message = message(&format!(
                 "structurally singular interconnection: the multiplier of `{}` of `{name}` is determined by no \
-                 equation: it constrains velocities that other constraints already fix",
+                 equation: it constrains no velocity (a relation between coordinates alone is a `holonomic` \
+                 row)",
                 self.rows[j].name
             ));
             rows.extend(quote! { u[__NQ + __ROWS[#jl]] = #message; });
@@ -102,7 +103,7 @@ impl CompositeModel {
             const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
             const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
             const _: () = if __RESOLVED
-                && let ::core::option::Option::Some(c) = #p::unpaired_unknown::<__K>(&__PATTERN, __K)
+                && let ::core::option::Option::Some(c) = #p::undetermined_unknown::<__K>(&__PATTERN, __K, __NQ)
             {
                 ::core::panic!("{}", __UNKNOWNS[c])
             };

@@ -50,8 +50,8 @@ const _: () = {
                 "structurally singular model: the velocity `va` of `AllFunctions` is determined by no equation: coordinate `a` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `vb` of `AllFunctions` is determined by no equation: coordinate `b` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `vc` of `AllFunctions` is determined by no equation: coordinate `c` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
-                "structurally singular model: the multiplier of constraint `link` of `AllFunctions` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
-                "structurally singular model: the multiplier of constraint `slide` of `AllFunctions` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+                "structurally singular model: the multiplier of constraint `link` of `AllFunctions` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
+                "structurally singular model: the multiplier of constraint `slide` of `AllFunctions` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
             ],
         };
         fn invalid_parameter(

@@ -480,7 +480,7 @@ const _: () = {
                 a += 1;
             }
         }
-        u[__NQ + __ROWS[0]] = "structurally singular interconnection: the multiplier of `tie` of `CoupledByOneForm` is determined by no equation: it constrains velocities that other constraints already fix";
+        u[__NQ + __ROWS[0]] = "structurally singular interconnection: the multiplier of `tie` of `CoupledByOneForm` is determined by no equation: it constrains no velocity (a relation between coordinates alone is a `holonomic` row)";
         p[(__NQ + __ROWS[0]) * __K + __R0.index] = true;
         if __R0.velocity {
             p[__R0.index * __K + __NQ + __ROWS[0]] = true;
@@ -520,9 +520,9 @@ const _: () = {
     const __PATTERN: [::core::primitive::bool; __K * __K] = __STRUCTURE.0;
     const __UNKNOWNS: [&::core::primitive::str; __K] = __STRUCTURE.1;
     const _: () = if __RESOLVED
-        && let ::core::option::Option::Some(c) = ::dirac::__private::unpaired_unknown::<
+        && let ::core::option::Option::Some(c) = ::dirac::__private::undetermined_unknown::<
             __K,
-        >(&__PATTERN, __K)
+        >(&__PATTERN, __K, __NQ)
     {
         ::core::panic!("{}", __UNKNOWNS[c])
     };

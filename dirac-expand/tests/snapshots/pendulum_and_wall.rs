@@ -45,7 +45,7 @@ const _: () = {
             unknowns: &[
                 "structurally singular model: the velocity `vx` of `PendulumAndWall` is determined by no equation: coordinate `x` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `vy` of `PendulumAndWall` is determined by no equation: coordinate `y` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
-                "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWall` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+                "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWall` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
             ],
         };
         fn invalid_parameter(
@@ -890,8 +890,8 @@ const _: () = {
                 "structurally singular model: the velocity `vx` of `PendulumAndWallWithContacts` is determined by no equation: coordinate `x` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `vy` of `PendulumAndWallWithContacts` is determined by no equation: coordinate `y` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `wall_slack_rate` of `PendulumAndWallWithContacts` is determined by no equation: coordinate `wall_slack` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
-                "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWallWithContacts` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
-                "structurally singular model: the multiplier of constraint `wall_force` of `PendulumAndWallWithContacts` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+                "structurally singular model: the multiplier of constraint `rod` of `PendulumAndWallWithContacts` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
+                "structurally singular model: the multiplier of constraint `wall_force` of `PendulumAndWallWithContacts` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
             ],
         };
         fn invalid_parameter(

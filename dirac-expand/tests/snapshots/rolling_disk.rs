@@ -52,8 +52,8 @@ const _: () = {
                 "structurally singular model: the velocity `v_y` of `RollingDisk` is determined by no equation: coordinate `y` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `v_theta` of `RollingDisk` is determined by no equation: coordinate `theta` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
                 "structurally singular model: the velocity `v_phi` of `RollingDisk` is determined by no equation: coordinate `phi` has no inertia, no potential or constraint fixes it, and no force or dissipation depends on its velocity",
-                "structurally singular model: the multiplier of constraint `roll_x` of `RollingDisk` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
-                "structurally singular model: the multiplier of constraint `roll_y` of `RollingDisk` is determined by no equation: the constraint depends on the others, or there are more constraints than velocities",
+                "structurally singular model: the multiplier of constraint `roll_x` of `RollingDisk` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
+                "structurally singular model: the multiplier of constraint `roll_y` of `RollingDisk` is determined by no equation: the constraint acts on no velocity (a relation between coordinates alone is a `holonomic` constraint)",
             ],
         };
         fn invalid_parameter(

@@ -150,4 +150,13 @@ where
             im[i] = yi.im;
         }
     }
+
+    fn least_norm(&mut self, y: &mut VecY<M>) {
+        let lambda = Layout::new(self.sizes.typed::<M>()).lambda;
+        self.real.least_norm(&mut y.as_mut_slice()[lambda..]);
+    }
+
+    fn deflating(&self) -> bool {
+        self.real.deflating()
+    }
 }

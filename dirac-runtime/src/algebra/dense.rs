@@ -5,7 +5,7 @@
 use nalgebra::{Complex, ComplexField, DefaultAllocator, Dim, OMatrix, OVector};
 
 use super::traits::{Algebra, JacobianBlocks, NewtonSolver, Saddle, SaddleTerms, Scalar};
-use crate::algebra::lu::{Lu, Singular};
+use crate::algebra::lu::{Deflation, Lu, Singular};
 use crate::shape::dims::{Dimensions, Fixed, Sizes, Storage, VecY};
 use crate::shape::layout::Layout;
 
@@ -36,7 +36,7 @@ where
     }
 
     fn saddle<T: Scalar>(s: &Sizes) -> DenseSaddle<M, T> {
-        DenseSaddle { lu: Lu::new(s.nk()), sizes: *s }
+        DenseSaddle { lu: Lu::new(s.nk()), deflation: Deflation::new(s.nc), sizes: *s }
     }
 
     fn condensed(s: &Sizes) -> DenseCondensed<M> {
@@ -133,6 +133,7 @@ where
     DefaultAllocator: Storage<M>,
 {
     lu: Lu<T, M::Nk>,
+    deflation: Deflation<T, M::Nc>,
     sizes: Sizes,
 }
 
@@ -184,11 +185,20 @@ where
     }
 
     fn factor(&mut self) -> Result<(), Singular> {
-        self.lu.factor()
+        self.lu.factor_saddle(self.sizes.nq, &mut self.deflation)
     }
 
     fn solve(&mut self, x: &mut [T]) {
+        self.deflation.project(&mut x[self.sizes.nq..]);
         self.lu.solve_slice(x);
+    }
+
+    fn least_norm(&mut self, lambda: &mut [T]) {
+        self.deflation.project(lambda);
+    }
+
+    fn deflating(&self) -> bool {
+        self.deflation.active()
     }
 }
 
@@ -233,6 +243,7 @@ where
     inv_sigma: T,
     coupling: OMatrix<T, M::Nq, M::Nq>,
     lu: Lu<T, M::Nk>,
+    deflation: Deflation<T, M::Nc>,
 }
 
 impl<M: Dimensions, T: ComplexField<RealField = f64> + Copy> Shifted<M, T>
@@ -246,6 +257,7 @@ where
             inv_sigma: T::one(),
             coupling: OMatrix::<T, M::Nq, M::Nq>::zeros_generic(n, n),
             lu: Lu::new(sizes.nk()),
+            deflation: Deflation::new(sizes.nc),
         }
     }
 
@@ -261,7 +273,7 @@ where
             }
         }
         condensed_matrix(jac, sigma, &self.coupling, self.lu.matrix_mut());
-        self.lu.factor()
+        self.lu.factor_saddle(jac.l_vq.nrows(), &mut self.deflation)
     }
 }
 
@@ -320,7 +332,7 @@ fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
 /// Solves `(σ M − J) x = r` in place with the factored condensed matrix.
 fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
     jac: &JacobianBlocks<M, Dense>,
-    shifted: &Shifted<M, T>,
+    shifted: &mut Shifted<M, T>,
     sizes: &Sizes,
     x: &mut OVector<T, M::Ny>,
 ) where
@@ -348,6 +360,7 @@ fn condensed_solve<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
         }
         b[n + k] = bk;
     }
+    shifted.deflation.project(&mut b.as_mut_slice()[n..]);
     shifted.lu.solve(&mut b);
     let nq = M::Nq::from_usize(n);
     let mut xq = OVector::<T, M::Nq>::zeros_generic(nq, nalgebra::Const::<1>);
@@ -388,7 +401,7 @@ where
     }
 
     fn solve(&mut self, r: &mut VecY<M>) {
-        condensed_solve(&self.jac, &self.real, &self.sizes, r);
+        condensed_solve(&self.jac, &mut self.real, &self.sizes, r);
     }
 
     fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>) {
@@ -396,11 +409,20 @@ where
         let mut x = OVector::<Complex<f64>, M::Ny>::from_fn_generic(ny, nalgebra::Const::<1>, |i, _| {
             Complex::new(re[i], im[i])
         });
-        condensed_solve(&self.jac, &self.complex, &self.sizes, &mut x);
+        condensed_solve(&self.jac, &mut self.complex, &self.sizes, &mut x);
         for i in 0..x.len() {
             re[i] = x[i].re;
             im[i] = x[i].im;
         }
+    }
+
+    fn least_norm(&mut self, y: &mut VecY<M>) {
+        let lambda = Layout::new(self.sizes.typed::<M>()).lambda;
+        self.real.deflation.project(&mut y.as_mut_slice()[lambda..]);
+    }
+
+    fn deflating(&self) -> bool {
+        self.real.deflation.active()
     }
 }
 

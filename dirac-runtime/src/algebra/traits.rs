@@ -118,6 +118,16 @@ where
     fn factor(&mut self) -> Result<(), Singular>;
     /// Replaces `x` (`n + m` entries, velocities then multipliers) by the solution.
     fn solve(&mut self, x: &mut [T]);
+    /// Replaces the multipliers `lambda` by those of least norm with the same force where the
+    /// last factorisation found the rows redundant (see
+    /// [`Deflation`](crate::algebra::lu::Deflation)); leaves them otherwise.
+    fn least_norm(&mut self, lambda: &mut [T]) {
+        let _ = lambda;
+    }
+    /// Whether its factorisations deflate redundant rows.
+    fn deflating(&self) -> bool {
+        false
+    }
 }
 
 /// Solves the linear systems of a Newton iteration for one Jacobian and one pair of shifts:
@@ -138,6 +148,15 @@ where
     fn solve(&mut self, r: &mut VecY<M>);
     /// Replaces `re + i im` by the solution of `(σ_c M − J) x = re + i im`.
     fn solve_complex(&mut self, re: &mut VecY<M>, im: &mut VecY<M>);
+    /// Replaces the multipliers of the state `y` by those of least norm with the same force
+    /// where the last factorisation found the rows redundant; leaves them otherwise.
+    fn least_norm(&mut self, y: &mut VecY<M>) {
+        let _ = y;
+    }
+    /// Whether its factorisations deflate redundant rows.
+    fn deflating(&self) -> bool {
+        false
+    }
 }
 
 /// The Jacobian blocks of [`ResidualBlocks`](crate::ResidualBlocks), the input of a condensed Newton step, stored as

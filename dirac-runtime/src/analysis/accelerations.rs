@@ -22,7 +22,7 @@
 
 use nalgebra::{DefaultAllocator, OMatrix};
 
-use crate::algebra::lu::Lu;
+use crate::algebra::lu::{Deflation, Lu};
 use crate::algebra::mass::Mass;
 use crate::algebra::{Algebra, Saddle, SaddleTerms, amax};
 use crate::analysis::free::FreeVelocities;
@@ -43,6 +43,7 @@ where
     a: OMatrix<f64, M::Nc, M::Nq>,
     b: OMatrix<f64, M::Nq, M::Nc>,
     s: Lu<f64, M::Nc>,
+    deflation: Deflation<f64, M::Nc>,
     top: VecQ<M>,
     bottom: VecC<M>,
 }
@@ -232,6 +233,7 @@ where
                 <M::Nc as nalgebra::Dim>::from_usize(m),
             ),
             s: Lu::new(m),
+            deflation: Deflation::new(m),
             top: self.sizes.zeros_q::<M>(),
             bottom: self.sizes.zeros_c::<M>(),
         });
@@ -358,7 +360,8 @@ where
             schur.a.copy_from(a);
             schur.b = schur.mass.solve_transpose(a);
             schur.a.mul_to(&schur.b, schur.s.matrix_mut());
-            return schur.s.factor().is_ok();
+            let rows = &schur.a;
+            return schur.s.factor_schur(&mut schur.deflation, (rows.ncols(), |i, k| rows[(k, i)])).is_ok();
         }
         if M::SEPARABLE {
             model.l_vv(t, q, v, &mut self.lvv);
@@ -422,6 +425,7 @@ where
                     *y -= a[r + j * m] * t;
                 }
             }
+            schur.deflation.project(schur.bottom.as_mut_slice());
             schur.s.solve(&mut schur.bottom);
             let lambda = schur.bottom.as_slice();
             x[..n].copy_from_slice(top);

@@ -342,11 +342,26 @@ where
     };
     let largest = svd.singular_values.max().max(1e-300);
     let null = svd.singular_values.iter().filter(|&&x| x <= 1e-12 * largest).count();
-    if null > free {
+    // Redundant rows (`ker Aᵀ`, in the rows' units) leave the multipliers' part along them
+    // undetermined, as the free directions leave the accelerations'.
+    let redundant = if m == 0 { None } else { null_space(&a_scaled.transpose(), 1e-10) };
+    // A row that is zero by itself (its one-form vanishes here) is undetermined, not redundant.
+    let vanishing =
+        redundant.as_ref().is_some_and(|z| z.row_iter().any(|row| row.norm_squared() > 1.0 - 1e-9));
+    let dependent = if vanishing { 0 } else { redundant.as_ref().map_or(0, |z| z.ncols()) };
+    if null > free + dependent {
         return Err(singular());
     }
     let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
-    Ok(DVector::from_fn(m, |j, _| units.row[j] * x[n + j]))
+    let lambda = DVector::from_fn(m, |j, _| units.row[j] * x[n + j]);
+    if dependent == 0 {
+        return Ok(lambda);
+    }
+    // The multipliers of least norm in the model's units with the same force `Aᵀ λ`: what the
+    // integrators' deflated factorisations keep (`algebra::lu::Deflation`).
+    let force = a.transpose() * &lambda;
+    let aligned = crate::analysis::diagnose::svd(&a.transpose()).ok_or_else(singular)?;
+    aligned.solve(&force, 1e-10 * aligned.singular_values.max()).map_err(|_| singular())
 }
 
 /// A basis (by columns) of `ker L_vv ∩ ker A`: the velocities that neither inertia nor

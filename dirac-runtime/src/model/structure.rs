@@ -7,7 +7,7 @@
 //! no equation determines (a coordinate without inertia that no constraint or potential fixes)
 //! or a dependent constraint leaves an unknown unpaired.
 
-use dirac_structure::matching::{Scratch, unpaired};
+use dirac_structure::matching::{Scratch, unpaired_with_corner};
 
 /// The pattern of the condensed system and a message for each of its unknowns.
 #[derive(Clone, Copy, Debug)]
@@ -21,6 +21,33 @@ pub struct Structure {
 /// The first unknown of a `k × k` pattern that a maximum matching leaves unpaired, if any.
 /// `K` bounds the size (an upper bound is enough); usable in `const` items.
 pub const fn unpaired_unknown<const K: usize>(pattern: &[bool], k: usize) -> Option<usize> {
+    unpaired_from::<K>(pattern, k, k)
+}
+
+/// The first unknown of a `k × k` saddle-point pattern with `n` velocities that nothing
+/// determines once redundant rows are allowed: a multiplier whose row acts on no velocity
+/// (its column is empty above the corner), else an unknown a maximum matching leaves unpaired
+/// with the multipliers' diagonal counted. Rows that fix the same velocities twice pass: the
+/// dense solvers fix their multipliers at the least norm (`algebra::lu::Deflation`). `K`
+/// bounds the size; usable in `const` items.
+pub const fn undetermined_unknown<const K: usize>(pattern: &[bool], k: usize, n: usize) -> Option<usize> {
+    let mut c = n;
+    while c < k {
+        let mut row = 0;
+        while row < n && !pattern[row * k + c] {
+            row += 1;
+        }
+        if row == n {
+            return Some(c);
+        }
+        c += 1;
+    }
+    unpaired_from::<K>(pattern, k, n)
+}
+
+/// The matching of [`unpaired_unknown`], with the diagonal counted from `corner` on, over
+/// scratch arrays of `K` entries.
+const fn unpaired_from<const K: usize>(pattern: &[bool], k: usize, corner: usize) -> Option<usize> {
     let (mut row_of, mut col_of, mut visited) = ([0; K], [0; K], [false; K]);
     let (mut stack_row, mut stack_col, mut parent) = ([0; K], [0; K], [0; K]);
     let mut scratch = Scratch {
@@ -31,7 +58,7 @@ pub const fn unpaired_unknown<const K: usize>(pattern: &[bool], k: usize) -> Opt
         stack_col: &mut stack_col,
         parent: &mut parent,
     };
-    unpaired(pattern, k, &mut scratch)
+    unpaired_with_corner(pattern, k, corner, &mut scratch)
 }
 
 /// `values[0] + … + values[end − 1]`; usable in `const` items.
@@ -78,7 +105,7 @@ pub const fn composite_unknown(
 
 #[cfg(test)]
 mod tests {
-    use super::unpaired_unknown;
+    use super::{undetermined_unknown, unpaired_unknown};
 
     #[test]
     fn finds_perfect_matchings_and_their_absence() {
@@ -93,6 +120,23 @@ mod tests {
         assert_eq!(unpaired_unknown::<3>(&crowded, 3), Some(2));
         // Evaluated at compile time, with a bound K above the size k.
         const CHECKED: Option<usize> = unpaired_unknown::<4>(&[true, true, false, true], 2);
+        // One velocity fixed by two rows: the second multiplier pairs with its own corner.
+        #[rustfmt::skip]
+        let twice = [
+            true, true, true,
+            true, false, false,
+            true, false, false,
+        ];
+        assert_eq!(unpaired_unknown::<3>(&twice, 3), Some(2));
+        assert_eq!(undetermined_unknown::<3>(&twice, 3, 1), None);
+        // A row on no velocity stays undetermined.
+        #[rustfmt::skip]
+        let idle = [
+            true, true, false,
+            true, false, false,
+            false, false, false,
+        ];
+        assert_eq!(undetermined_unknown::<3>(&idle, 3, 1), Some(2));
         assert_eq!(CHECKED, None);
     }
 }

@@ -66,6 +66,9 @@ where
         zero_algebraic::<M>(&layout, &mut self.e);
         self.e += &self.f2;
         step.solver.solve(&mut self.e);
+        // Redundant rows: the multipliers' part that exerts no force is not determined by the
+        // step, so not its error.
+        step.solver.least_norm(&mut self.e);
         let mut err = scaled_error::<M>(&self.e, step.weights, step.error_norm);
         if err >= 1.0 && refine {
             self.tmp.copy_from(step.y);
@@ -79,6 +82,7 @@ where
             }
             self.e += &self.f2;
             step.solver.solve(&mut self.e);
+            step.solver.least_norm(&mut self.e);
             err = scaled_error::<M>(&self.e, step.weights, step.error_norm);
         }
         err

@@ -252,6 +252,7 @@ where
                 return Err(SimError::StepSizeTooSmall { t: self.t, h: self.h, reason: reason.to_owned() });
             }
             self.tolerances.weights(&self.y, self.h, &mut self.weights);
+            let fresh = self.need_jac;
             if self.need_jac {
                 self.evaluate_jacobian()?;
             }
@@ -264,12 +265,26 @@ where
                 if singular >= 6 {
                     let s = &self.state;
                     let cause = singular_cause(self.model.get(), self.t, &s.q, &s.v);
-                    let detail = format!("{}; {cause}", pivot_name(self.model.get(), column));
+                    let mut detail = format!("{}; {cause}", pivot_name(self.model.get(), column));
+                    if self.solver.deflating() && self.projector.is_none() {
+                        detail.push_str(
+                            "; the model's rows are redundant, and without `RadauOptions::projection` the \
+                             positions drift off the constraints to where the rows contradict each other: \
+                             turn it on",
+                        );
+                    }
                     return Err(SimError::SingularMatrix { t: self.t, h: self.h, detail });
                 }
                 reason = "singular iteration matrix";
                 self.reject(0.5);
                 continue;
+            }
+            if fresh {
+                // Redundant rows: the multipliers' part that exerts no force is no unknown of
+                // the steps, and drifts as the rows turn; with rows evaluated at this state, it
+                // is set back to zero (the force `Aᵀ λ`, so the residual, is unchanged).
+                self.solver.least_norm(&mut self.y);
+                self.state.read_y(&self.y);
             }
             match self.newton() {
                 Outcome::Shrink(factor, why) => {

@@ -14,7 +14,7 @@ use crate::algebra::mass::Mass;
 use crate::error::SimError;
 use crate::model::LagrangeDirac;
 use crate::model::configuration;
-use crate::shape::dims::{Dimensions, Storage, VecQ};
+use crate::shape::dims::{Dimensions, Storage, VecC, VecQ};
 
 /// A dense `m × n` block.
 type Cq<M> = OMatrix<f64, <M as Dimensions>::Nc, <M as Dimensions>::Nq>;
@@ -62,8 +62,7 @@ where
             s.model.constraint_rate(t1, &q1, &mut s.work.vectors.rate);
             gamma -= &s.work.vectors.rate;
         }
-        let small = factor_small(s, &(&a1 * &d))?;
-        small.solve(&mut gamma);
+        solve_small(s, &(&a1 * &d), Some(&a1), &mut gamma)?;
         s.work.gamma.copy_from(&gamma);
         s.state.v.copy_from(&(w + d * &gamma));
         s.state.p.copy_from(&(target + a1.transpose() * &gamma));
@@ -108,8 +107,7 @@ where
         for j in 0..sizes.nh {
             c.row_mut(j).copy_from(&a1.row(j));
         }
-        let small = factor_small(s, &(c * &b))?;
-        small.solve(&mut r);
+        solve_small(s, &(c * &b), None, &mut r)?;
         s.work.big_lambda -= &r;
         s.stats.newton_iterations += 1;
         // Converged when the velocities stop moving, each against its own size and scale (a
@@ -130,21 +128,30 @@ where
     Err(s.diverged())
 }
 
-/// Factors the `m × m` matrix `matrix` in the work space's storage.
+/// Solves `matrix x = rhs` in place, factored in the work space's storage, where `matrix` is
+/// `B M⁻¹ Aᵀ` for the rows `A` (`rows`, or the step's first rows `A(q_k)` if none) that the
+/// unknowns act through: redundant rows deflated, the solution of least norm.
 #[inline(always)]
-fn factor_small<'s, M: LagrangeDirac>(
-    s: &'s mut Step<'_, M>,
+fn solve_small<M: LagrangeDirac>(
+    s: &mut Step<'_, M>,
     matrix: &OMatrix<f64, M::Nc, M::Nc>,
-) -> Result<&'s Lu<f64, M::Nc>, SimError>
+    rows: Option<&OMatrix<f64, M::Nc, M::Nq>>,
+    rhs: &mut VecC<M>,
+) -> Result<(), SimError>
 where
     DefaultAllocator: Storage<M>,
 {
     s.stats.factorizations += 1;
-    let m = s.work.sizes.nc;
+    let (n, m) = (s.work.sizes.nq, s.work.sizes.nc);
     let small = s.work.small.get_or_insert_with(|| Lu::new(m));
     small.matrix_mut().copy_from(matrix);
-    match small.factor() {
-        Ok(()) => Ok(small),
+    let a = rows.unwrap_or_else(|| dense::<M>(&s.work.a0));
+    match small.factor_schur(&mut s.work.small_deflation, (n, |i, k| a[(k, i)])) {
+        Ok(()) => {
+            s.work.small_deflation.project(rhs.as_mut_slice());
+            small.solve(rhs);
+            Ok(())
+        }
         Err(e) => Err(SimError::SingularMatrix {
             t: s.t,
             h: s.h,

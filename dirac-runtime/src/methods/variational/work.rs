@@ -3,7 +3,7 @@
 use crate::analysis::free::FreeVelocities;
 use nalgebra::DefaultAllocator;
 
-use crate::algebra::lu::Lu;
+use crate::algebra::lu::{Deflation, Lu};
 use crate::algebra::{Algebra, Saddle, SaddleTerms};
 use crate::analysis::diagnose::{pivot_name, singular_cause};
 use crate::error::SimError;
@@ -99,6 +99,8 @@ where
     pub saddle: <M::Algebra as Algebra<M>>::Saddle<f64>,
     /// The `m × m` systems of the separable path, when it is taken.
     pub small: Option<Lu<f64, M::Nc>>,
+    /// The separable path's deflation of redundant rows.
+    pub small_deflation: Deflation<f64, M::Nc>,
     /// The size of the last Newton update, for the stall test.
     pub last_update: f64,
     /// Each velocity's scale for the Newton test, `min(|p|∞ / L_ii, |v|∞)` (the velocity the
@@ -259,6 +261,7 @@ where
             },
             saddle: M::Algebra::saddle(&shape),
             small: None,
+            small_deflation: Deflation::new(sizes.nc),
             last_update: f64::INFINITY,
             scale: q(),
             dl_dq: q(),

@@ -134,6 +134,17 @@ where
         let t0 = self.t0;
         let mut tape = Tape { kept, impacts: Vec::new(), from: None, start: None, exact: false };
         let (_, radau) = self.sampling(Sampling::Times(Vec::new())).go(Some(&mut tape))?;
+        if radau.solver.deflating() {
+            // Its steps' transposed systems are singular in the same multipliers, and not
+            // deflated: refused rather than solved on a pivot of round-off.
+            return Err(SimError::InvalidOption {
+                what: "adjoint",
+                reason: "the model's constraint rows are redundant (their multipliers are fixed at their least \
+                         norm, which the adjoint sweep does not carry): drop the rows that repeat others, or use \
+                         forward sensitivities"
+                    .into(),
+            });
+        }
         let start = tape.start.expect("a run that started keeps its start");
         Ok(Recording {
             t0,
