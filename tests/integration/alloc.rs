@@ -330,6 +330,35 @@ where
 /// Holonomic (the pendulum, on the separable m × m path, and the 8-link pendulum, on the
 /// saddle-point path), nonholonomic (the rolling disk), interconnected and degenerate (the
 /// paper's chain) and array models (the LC ladder, sparse).
+/// Redundant rows (the Bennett linkage's five cut rows on three angles): every method's
+/// deflated factorisations, their projections of right-hand sides and Radau's return of the
+/// multipliers to least norm work in place.
+#[test]
+fn steps_of_models_with_redundant_rows_do_not_allocate() {
+    let (model, start) = crate::redundant::bennett_start();
+    // Radau with its projection, which rows redundant only on the loop need (off it they
+    // contradict each other).
+    let options = RadauOptions { projection: true, ..RadauOptions::tolerances(1e-10, 1e-10) };
+    let mut radau = Radau::new(&model, options).expect("valid options");
+    radau.start(0.0, &start, 100.0).expect("starts");
+    for _ in 0..5 {
+        radau.step().expect("steps");
+    }
+    let before = allocations();
+    for _ in 0..200 {
+        radau.step().expect("steps");
+    }
+    assert_eq!(allocations() - before, 0, "Radau");
+    assert_eq!(allocations_in_explicit_steps(&model, &start, 100.0), 0, "Explicit");
+    assert_eq!(
+        allocations_in_variational_steps(&model, &start, VariationalOptions::default()),
+        0,
+        "separable"
+    );
+    let general = VariationalOptions { use_structure: false, ..VariationalOptions::default() };
+    assert_eq!(allocations_in_variational_steps(&model, &start, general), 0, "general");
+}
+
 #[test]
 fn explicit_steps_do_not_allocate() {
     let p = unit_pendulum();

@@ -318,27 +318,27 @@ pub struct FourBarByHand {
     pub g: f64,
 }
 
+/// A rod of mass `m` and length `2 h` along its `z` axis, thin (its section 0.02 across),
+/// under gravity.
+pub(crate) fn rod(m: f64, h: f64) -> RigidBody {
+    let across = m * (4.0 * h * h + 4e-4) / 12.0;
+    RigidBody::new(m, [across, across, m * 8e-4 / 12.0]).with_gravity(9.81)
+}
+
+/// The four-bar's half-lengths `h1, h2, h3` of crank, coupler and rocker and the distance `d`
+/// between the pivots.
+pub(crate) const FOUR_BAR: [f64; 4] = [0.2, 0.5, 0.4, 0.7];
+
 fn four_bar() -> FourBar {
-    let rod = |m: f64, h: f64| {
-        let across = m * (4.0 * h * h + 4e-4) / 12.0;
-        RigidBody::new(m, [across, across, m * 8e-4 / 12.0]).with_gravity(9.81)
-    };
-    FourBar {
-        crank: rod(0.5, 0.2),
-        coupler: rod(0.8, 0.5),
-        rocker: rod(0.6, 0.4),
-        h1: 0.2,
-        h2: 0.5,
-        h3: 0.4,
-        d: 0.7,
-    }
+    let [h1, h2, h3, d] = FOUR_BAR;
+    FourBar { crank: rod(0.5, h1), coupler: rod(0.8, h2), rocker: rod(0.6, h3), h1, h2, h3, d }
 }
 
 /// The coupler's and rocker's angles where the crank is at `p1`, the rocker hanging: the far
 /// end `B` of the coupler is where the circle of radius `2 h2` about the crank's end meets the
 /// circle of radius `2 h3` about the rocker's pivot, the lower of the two points.
-fn closed_loop(model: &FourBar, p1: f64) -> (f64, f64) {
-    let (l1, l2, l3, d) = (2.0 * model.h1, 2.0 * model.h2, 2.0 * model.h3, model.d);
+pub(crate) fn closed_loop([h1, h2, h3, d]: [f64; 4], p1: f64) -> (f64, f64) {
+    let (l1, l2, l3) = (2.0 * h1, 2.0 * h2, 2.0 * h3);
     let a = [-l1 * p1.sin(), -l1 * p1.cos()];
     let o = [d, 0.0];
     let (dx, dz) = (o[0] - a[0], o[1] - a[1]);
@@ -353,6 +353,17 @@ fn closed_loop(model: &FourBar, p1: f64) -> (f64, f64) {
     let b = if candidates[0][1] < candidates[1][1] { candidates[0] } else { candidates[1] };
     // B = A − l2 (sin p2, cos p2) = O − l3 (sin p3, cos p3).
     ((a[0] - b[0]).atan2(a[1] - b[1]), (o[0] - b[0]).atan2(o[1] - b[1]))
+}
+
+/// The coupler's and rocker's rates where the crank turns at `w1`, from the loop's rows
+/// differentiated: `l1 c1 w1 + l2 c2 w2 = l3 c3 w3`, `l1 s1 w1 + l2 s2 w2 = l3 s3 w3`.
+pub(crate) fn loop_rates([h1, h2, h3, _]: [f64; 4], (p1, p2, p3): (f64, f64, f64), w1: f64) -> (f64, f64) {
+    let (l1, l2, l3) = (2.0 * h1, 2.0 * h2, 2.0 * h3);
+    let (r1, r2) = (-l1 * p1.cos() * w1, -l1 * p1.sin() * w1);
+    let det = l2 * p2.cos() * (-l3 * p3.sin()) + l3 * p3.cos() * l2 * p2.sin();
+    let w2 = (r1 * (-l3 * p3.sin()) + l3 * p3.cos() * r2) / det;
+    let w3 = (l2 * p2.cos() * r2 - l2 * p2.sin() * r1) / det;
+    (w2, w3)
 }
 
 #[test]
@@ -376,16 +387,10 @@ fn a_four_bar_of_bodies_keeps_one_cut_joints_rows_and_closes_as_the_circles_say(
         d: model.d,
         g: 9.81,
     };
-    // Started closed: the crank at 0.3 rad turning at 1.5 rad/s, the others' rates from the
-    // loop's rows differentiated, `l1 c1 w1 + l2 c2 w2 = l3 c3 w3`, `l1 s1 w1 + l2 s2 w2 = l3 s3 w3`.
-    let p1 = 0.3;
-    let (p2, p3) = closed_loop(&model, p1);
-    let (l1, l2, l3) = (2.0 * model.h1, 2.0 * model.h2, 2.0 * model.h3);
-    let w1 = 1.5;
-    let (r1, r2) = (-l1 * p1.cos() * w1, -l1 * p1.sin() * w1);
-    let det = l2 * p2.cos() * (-l3 * p3.sin()) + l3 * p3.cos() * l2 * p2.sin();
-    let w2 = (r1 * (-l3 * p3.sin()) + l3 * p3.cos() * r2) / det;
-    let w3 = (l2 * p2.cos() * r2 - l2 * p2.sin() * r1) / det;
+    // Started closed: the crank at 0.3 rad turning at 1.5 rad/s.
+    let (p1, w1) = (0.3, 1.5);
+    let (p2, p3) = closed_loop(FOUR_BAR, p1);
+    let (w2, w3) = loop_rates(FOUR_BAR, (p1, p2, p3), w1);
     let mut start = State::<FourBar>::zeros();
     (start.q[0], start.q[1], start.q[2]) = (p1, p2 - p1, p3);
     (start.v[0], start.v[1], start.v[2]) = (w1, w2 - w1, w3);
@@ -409,7 +414,7 @@ fn a_four_bar_of_bodies_keeps_one_cut_joints_rows_and_closes_as_the_circles_say(
             let (a, b) = (solution.state(k).expect("a sample"), reference.state(k).expect("a sample"));
             let angles = [a.q[0], a.q[0] + a.q[1], a.q[2]];
             apart = apart.max(largest((0..3).map(|i| angles[i] - b.q[i])));
-            let (p2, p3) = closed_loop(&model, angles[0]);
+            let (p2, p3) = closed_loop(FOUR_BAR, angles[0]);
             closure = closure.max((p2 - angles[1]).abs()).max((p3 - angles[2]).abs());
         }
         let drift = largest(solution.holonomic_residual().iter().copied());

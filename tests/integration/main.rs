@@ -45,6 +45,7 @@ mod probes;
 mod profile;
 mod radau;
 mod reduction;
+pub(crate) mod redundant;
 mod results;
 mod robots;
 mod scales;
