@@ -13,10 +13,11 @@ pub const STACK_LIMIT: usize = 256 * 1024;
 
 /// An estimate of the stack bytes one Radau integrator of a model with `n` coordinates and
 /// `m` constraints holds: two copies of the Jacobian blocks (`4n² + 2mn` numbers each), the
-/// real and complex condensed matrices (`(n + m)²` numbers, and twice that), and about twenty
-/// vectors of `3n + m`.
+/// real and complex condensed matrices (`(n + m)²` numbers, and twice that) with the bases
+/// that deflate their redundant multipliers (`m²` and twice that, and four vectors of `m`),
+/// and about twenty vectors of `3n + m`.
 pub const fn stack_bytes(n: usize, m: usize) -> usize {
     let k = n + m;
-    let numbers = 2 * (4 * n * n + 2 * m * n) + 3 * k * k + 20 * (3 * n + m);
+    let numbers = 2 * (4 * n * n + 2 * m * n) + 3 * k * k + 3 * m * m + 4 * m + 20 * (3 * n + m);
     8 * numbers
 }
