@@ -279,7 +279,7 @@ where
                 self.reject(0.5);
                 continue;
             }
-            if fresh {
+            if fresh && self.solver.deflating() {
                 // Redundant rows: the multipliers' part that exerts no force is no unknown of
                 // the steps, and drifts as the rows turn; with rows evaluated at this state, it
                 // is set back to zero (the force `Aᵀ λ`, so the residual, is unchanged).
