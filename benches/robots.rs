@@ -77,10 +77,21 @@ fn evaluate() {
     let bias = per_call(|| {
         black_box(dirac::joint_space::bias_torques(&PandaArm, 0.0, black_box(&s.q), black_box(&s.v)));
     });
+    let tau = VecQ::<PandaArm>::from_fn(|i, _| 0.5 * i as f64 - 1.0);
+    let forward = per_call(|| {
+        black_box(dirac::joint_space::forward_dynamics(
+            &PandaArm,
+            0.0,
+            black_box(&s.q),
+            black_box(&s.v),
+            black_box(&tau),
+        ));
+    });
     println!("residual_and_jacobian,{flat:.4e}");
     println!("residual_and_jacobian_blocks,{blocks:.4e}");
     println!("mass_matrix,{mass:.4e}");
     println!("bias_torques,{bias:.4e}");
+    println!("forward_dynamics,{forward:.4e}");
 }
 
 /// The largest joint-angle error at the reference's samples.

@@ -132,7 +132,8 @@ pub use dirac_runtime::integrator::sources;
 pub use dirac_runtime::hybrid::impact;
 
 /// Joint-space dynamics of mechanisms (robots read from URDF files among them): the mass
-/// matrix, gravity and bias torques, inverse dynamics.
+/// matrix, gravity and bias torques, forward and inverse dynamics; for a robot fixed in the
+/// world, by the recursions of its tree generated when it compiles.
 ///
 /// ```
 /// use dirac::joint_space;
@@ -157,6 +158,10 @@ pub use dirac_runtime::hybrid::impact;
 /// // The bias of a pendulum in its angle is its gravity torque alone: M does not depend on θ.
 /// let bias = joint_space::bias_torques(&model, 0.0, &q, &v);
 /// assert!((bias[0] - gravity[0]).abs() < 1e-15);
+/// // Forward dynamics: under a torque τ it accelerates by (τ − b) / M.
+/// let tau = VecQ::<Pendulum>::from_column_slice(&[2.0]);
+/// let a = joint_space::forward_dynamics(&model, 0.0, &q, &v, &tau).expect("a regular M");
+/// assert!((a[0] - (2.0 - bias[0]) / mass[(0, 0)]).abs() < 1e-12);
 /// ```
 pub use dirac_runtime::analysis::joint_space;
 

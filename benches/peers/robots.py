@@ -185,6 +185,7 @@ def compare(out, rounds):
         print(f"  ratio dirac {k} / Pinocchio computeABADerivatives: {ratio(k, 'aba_derivatives')}")
     print(f"  ratio dirac mass_matrix / Pinocchio CRBA: {ratio('mass_matrix', 'crba')}")
     print(f"  ratio dirac bias_torques / Pinocchio nonLinearEffects: {ratio('bias_torques', 'nonlinear_effects')}")
+    print(f"  ratio dirac forward_dynamics / Pinocchio ABA: {ratio('forward_dynamics', 'aba')}")
 
     dirac = [load(f"{out}/dirac_swing_{r}.csv") for r in range(1, rounds + 1)]
     mujoco = [load(f"{out}/mujoco_{r}.csv") for r in range(1, rounds + 1)]

@@ -75,6 +75,9 @@ pub struct Model<'a> {
     pub floating: Option<Ident>,
     /// `gravity = [gx, gy, gz]`: the URDF robot's gravity, with its key.
     pub gravity: Option<(Ident, Expr)>,
+    /// The kinematic tree of a URDF robot fixed in the world, for the recursions of its
+    /// joint-space dynamics.
+    pub tree: Option<crate::urdf::tree::Tree>,
     /// Files the model was read from, which the expansion names so that Cargo rebuilds it when
     /// they change.
     pub tracked_files: Vec<String>,
@@ -197,6 +200,7 @@ impl<'a> Model<'a> {
             joint_limits: None,
             floating: None,
             gravity: None,
+            tree: None,
             tracked_files: Vec::new(),
             incomplete: false,
         };

@@ -235,6 +235,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     let switches = crate::contacts::switch_methods(model, &sym);
     let tracked = &model.tracked_files;
+    let joint_space = crate::urdf::tree::joint_space(model);
     quote! {
         // The files the model was read from: Cargo rebuilds it when one changes.
         #(const _: &[u8] = include_bytes!(#tracked);)*
@@ -307,6 +308,8 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
             impl #p::SparseJacobian for #ident {
                 #sparse
             }
+
+            #joint_space
 
             #constants
         };
@@ -497,5 +500,6 @@ pub fn stub_impls(ident: &syn::Ident, (n, m): (usize, usize)) -> TokenStream {
         impl #p::InputsOutputs for #ident {}
         impl #p::Parameters for #ident {}
         impl #p::Hybrid for #ident {}
+        impl #p::JointSpace for #ident {}
     }
 }

@@ -138,7 +138,7 @@ pub mod __private {
         Structure, all, composite_unknown, prefix_sum, undetermined_unknown, unpaired_unknown,
     };
     pub use crate::model::{
-        DenseModel, Derivation, Equations, Hybrid, InputsOutputs, LagrangeDirac, MatCQ, MatQQ,
+        DenseModel, Derivation, Equations, Hybrid, InputsOutputs, JointSpace, LagrangeDirac, MatCQ, MatQQ,
         OperationCounts, Parameters,
     };
     pub use crate::output::solution::{Sampling, Solution};

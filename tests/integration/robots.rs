@@ -12,7 +12,7 @@ use dirac::prelude::*;
 
 use crate::every_method::{Fineness, Method};
 use crate::util::check_jacobian_by_differences;
-use crate::zoo::robots::{Panda, PandaStops, PandaStopsWithContacts, SWING_START};
+use crate::zoo::robots::{FloatingPanda, Panda, PandaStops, PandaStopsWithContacts, SWING_START};
 
 fn table(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
     let mut lines = text.lines();
@@ -90,6 +90,93 @@ fn the_panda_has_pinocchios_mass_matrix_gravity_and_bias_torques() {
         "Panda against Pinocchio: mass matrix {worst_m:.1e}, gravity {worst_g:.1e}, bias {worst_b:.1e}"
     );
     assert!(worst_m < 1e-12 && worst_g < 1e-12 && worst_b < 1e-12, "{worst_m:e} {worst_g:e} {worst_b:e}");
+}
+
+/// Pinocchio's articulated-body algorithm (`aba`) at 20 random states under random torques
+/// (`tests/references/panda_aba.csv`, computed by `tests/references/robots.py --aba`): the
+/// accelerations of the Panda's generated recursion.
+#[test]
+fn the_pandas_forward_dynamics_are_pinocchios_aba() {
+    const { assert!(<Panda as joint_space::JointSpace>::RECURSIVE) };
+    let (header, rows) = table(include_str!("../references/panda_aba.csv"));
+    assert_eq!((header.len(), rows.len()), (4 * 9, 20));
+    let mut worst = 0.0_f64;
+    for row in &rows {
+        let [q, v, tau] = [0, 9, 18].map(|k| VecQ::<Panda>::from_column_slice(&row[k..k + 9]));
+        let a = joint_space::forward_dynamics(&Panda, 0.0, &q, &v, &tau).expect("a regular mass matrix");
+        worst = worst.max(relative_error(a.iter().copied(), &row[27..36]));
+    }
+    eprintln!("Panda's forward dynamics against Pinocchio's aba: {worst:.1e}");
+    assert!(worst < 1e-12, "{worst:e}");
+}
+
+/// A deterministic stream of numbers in `[-1, 1)`.
+fn uniform(seed: &mut u64) -> f64 {
+    *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+    ((*seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+}
+
+/// The recursions generated for a robot's tree against the same quantities read off the
+/// model's blocks, `joint_space::blocks` (from the Lagrangian the derive differentiated), at 20
+/// random states; the accelerations of the articulated-body recursion against `M a + b = τ`
+/// from the blocks. Returns the largest relative differences (mass, gravity, bias, `M a + b − τ`).
+fn recursions_against_blocks<M: DenseModel>(model: &M) -> [f64; 4]
+where
+    dirac::__private::DefaultAllocator: dirac::__private::Storage<M>,
+{
+    let mut seed = 45_u64;
+    let mut worst = [0.0_f64; 4];
+    for _ in 0..20 {
+        let [q, v, tau] = [2.0, 2.0, 5.0].map(|scale| VecQ::<M>::from_fn(|_, _| scale * uniform(&mut seed)));
+        let mass = joint_space::mass_matrix(model, 0.0, &q);
+        let gravity = joint_space::gravity_torques(model, 0.0, &q);
+        let bias = joint_space::bias_torques(model, 0.0, &q, &v);
+        let a = joint_space::forward_dynamics(model, 0.0, &q, &v, &tau).expect("a regular mass matrix");
+        let mut from_blocks = mass.clone();
+        joint_space::blocks::mass_matrix(model, 0.0, &q, &mut from_blocks);
+        let (mut g, mut b) = (gravity.clone(), bias.clone());
+        joint_space::blocks::gravity_torques(model, 0.0, &q, &mut g);
+        joint_space::blocks::bias_torques(model, 0.0, &q, &v, &mut b);
+        let balance = &from_blocks * a + &b;
+        let relative = |x: f64, scale: f64| x / scale.max(1.0);
+        worst[0] = worst[0].max(relative((&mass - &from_blocks).amax(), from_blocks.amax()));
+        worst[1] = worst[1].max(relative((&gravity - &g).amax(), g.amax()));
+        worst[2] = worst[2].max(relative((&bias - &b).amax(), b.amax()));
+        worst[3] = worst[3].max(relative((balance - &tau).amax(), tau.amax()));
+    }
+    worst
+}
+
+/// The puck of `tests/robots/free/puck.urdf` (a planar joint normal to z) under a gravity that
+/// is a parameter and pulls along no axis.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/free/puck.urdf", gravity = [g * tilt.sin(), -g * tilt.cos(), -0.5 * g])]
+struct TiltedPuck {
+    g: f64,
+    tilt: f64,
+}
+
+/// The Panda (its finger mimicking the other through a row the recursions leave alone), its
+/// companion with its stops' slack coordinates (each of unit mass, beside the tree), and the
+/// puck, whose planar joint is two slides and a turn, under a gravity that is a parameter
+/// pointing along no axis. A robot that floats keeps the blocks (its base's embedded rotation
+/// is no joint of the recursions).
+#[test]
+fn the_recursions_of_a_robots_tree_are_its_lagrangians() {
+    use dirac::joint_space::JointSpace;
+    const { assert!(Panda::RECURSIVE && PandaStopsWithContacts::RECURSIVE && TiltedPuck::RECURSIVE) };
+    const { assert!(!FloatingPanda::RECURSIVE) };
+    for (name, worst, bound) in [
+        ("Panda", recursions_against_blocks(&Panda), 1e-13),
+        ("Panda with its stops' slacks", recursions_against_blocks(&PandaStops.with_contacts()), 1e-13),
+        ("puck", recursions_against_blocks(&TiltedPuck { g: 9.0, tilt: 0.3 }), 1e-13),
+    ] {
+        eprintln!(
+            "{name}: recursions against the blocks: mass {:.1e}, gravity {:.1e}, bias {:.1e}, M a + b − τ {:.1e}",
+            worst[0], worst[1], worst[2], worst[3]
+        );
+        assert!(worst.iter().all(|w| *w < bound), "{name}: {worst:?}");
+    }
 }
 
 #[test]

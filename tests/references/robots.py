@@ -16,6 +16,13 @@ writes
   pose of six links in the world (framesForwardKinematics, oMf), the root link included: per
   link its origin x, y, z and its rotation r11..r33 (row-major); rows q0..q8 and then the links'.
 
+    python robots.py --aba ROBOT.urdf OUT.csv SEED
+
+writes, at 20 random states (joint positions uniform within the URDF's limits, velocities
+uniform in [-2, 2], torques uniform in [-5, 5]), the accelerations of Pinocchio's
+articulated-body algorithm (aba) under those torques, with no damping: rows q0..q8, v0..v8,
+tau0..tau8, a0..a8.
+
     python robots.py --floating ROBOT.urdf OUT.csv SEED
 
 writes, for the robot with Pinocchio's free flyer as its root joint (its other joints revolute or
@@ -110,6 +117,22 @@ def frames(model, data, out):
                comments="", fmt="%.17g")
 
 
+def aba(urdf, out, seed):
+    model = pin.buildModelFromUrdf(urdf)
+    data = model.createData()
+    rng = np.random.default_rng(seed)
+    n = model.nv
+    rows = []
+    for _ in range(20):
+        q = rng.uniform(model.lowerPositionLimit, model.upperPositionLimit)
+        v = rng.uniform(-2.0, 2.0, n)
+        tau = rng.uniform(-5.0, 5.0, n)
+        a = pin.aba(model, data, q, v, tau).copy()
+        rows.append(np.concatenate([q, v, tau, a]))
+    header = [f"{x}{i}" for x in ("q", "v", "tau", "a") for i in range(n)]
+    np.savetxt(out, np.array(rows), delimiter=",", header=",".join(header), comments="", fmt="%.17g")
+
+
 def floating(urdf, out, seed):
     model = pin.buildModelFromUrdf(urdf, pin.JointModelFreeFlyer())
     data = model.createData()
@@ -152,5 +175,7 @@ def floating(urdf, out, seed):
 if __name__ == "__main__":
     if sys.argv[1] == "--floating":
         floating(sys.argv[2], sys.argv[3], int(sys.argv[4]))
+    elif sys.argv[1] == "--aba":
+        aba(sys.argv[2], sys.argv[3], int(sys.argv[4]))
     else:
         main(sys.argv[1], sys.argv[2])

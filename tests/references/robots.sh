@@ -9,3 +9,4 @@ venv=target/references/venv
 "$venv/bin/pip" install --quiet scipy pin
 "$venv/bin/python" tests/references/robots.py tests/robots/panda/panda.urdf tests/references
 "$venv/bin/python" tests/references/robots.py --floating tests/robots/panda/panda.urdf tests/references/panda_floating.csv 43
+"$venv/bin/python" tests/references/robots.py --aba tests/robots/panda/panda.urdf tests/references/panda_aba.csv 44

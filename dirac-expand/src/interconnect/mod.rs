@@ -226,6 +226,9 @@ fn implementation(
                 #hybrid
             }
 
+            #[automatically_derived]
+            impl #p::JointSpace for #ident #bounds {}
+
             #inherent
         };
     }

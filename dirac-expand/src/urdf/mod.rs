@@ -42,6 +42,7 @@
 
 mod poly;
 mod read;
+pub mod tree;
 
 use proc_macro2::Span;
 use syn::{Expr, Ident, LitStr};
@@ -117,6 +118,14 @@ impl Writer<'_, '_, '_> {
         let Some(names) = self.identifiers(robot) else { return };
         let (links, joints) = names;
         let Some(gravity) = self.gravity() else { return };
+        let written = match &self.model.gravity {
+            Some((_, Expr::Array(array))) => {
+                let elems: Vec<Expr> = array.elems.iter().cloned().collect();
+                elems.try_into().ok()
+            }
+            _ => None,
+        };
+        self.model.tree = tree::Tree::of(robot, &joints, written);
         let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
         let identity = read::rpy([0.0; 3]).map(|row| row.map(Atom::Num));
         let root = Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() };

@@ -996,6 +996,9 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::JointSpace for AllFunctions {}
+    #[automatically_derived]
     impl AllFunctions {
         ///The coordinate `a`: names its position, velocity and momentum in a state.
         pub const A: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(

@@ -2611,6 +2611,14 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    impl ::dirac::__private::JointSpace for Chain
+    where
+        Primitive1: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive1>,
+        Primitive2: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Primitive2>,
+    {}
+    #[automatically_derived]
     impl Chain
     where
         Primitive1: ::dirac::__private::Member,

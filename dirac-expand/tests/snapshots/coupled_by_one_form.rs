@@ -2883,6 +2883,14 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    impl ::dirac::__private::JointSpace for CoupledByOneForm
+    where
+        Wheel: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Wheel>,
+        Cart: ::dirac::__private::Member,
+        ::dirac::__private::DefaultAllocator: ::dirac::__private::Storage<Cart>,
+    {}
+    #[automatically_derived]
     impl CoupledByOneForm
     where
         Wheel: ::dirac::__private::Member,

@@ -572,6 +572,9 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::JointSpace for Pendulum {}
+    #[automatically_derived]
     impl Pendulum {
         ///The coordinate `x`: names its position, velocity and momentum in a state.
         const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(

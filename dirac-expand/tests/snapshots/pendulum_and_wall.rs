@@ -782,6 +782,9 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::JointSpace for PendulumAndWall {}
+    #[automatically_derived]
     impl PendulumAndWall {
         ///The coordinate `x`: names its position, velocity and momentum in a state.
         pub const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(
@@ -1824,6 +1827,9 @@ const _: () = {
             out[23] = s5;
         }
     }
+    #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::JointSpace for PendulumAndWallWithContacts {}
     #[automatically_derived]
     impl PendulumAndWallWithContacts {
         ///The coordinate `x`: names its position, velocity and momentum in a state.

@@ -560,6 +560,9 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::JointSpace for Primitive1 {}
+    #[automatically_derived]
     impl Primitive1 {
         ///The coordinate `x1`: names its position, velocity and momentum in a state.
         pub const X1: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(

@@ -701,6 +701,9 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
+    impl ::dirac::__private::JointSpace for RollingDisk {}
+    #[automatically_derived]
     impl RollingDisk {
         ///The coordinate `x`: names its position, velocity and momentum in a state.
         pub const X: ::dirac::__private::Coordinate<Self> = ::dirac::__private::Coordinate::new(

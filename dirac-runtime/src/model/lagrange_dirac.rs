@@ -296,7 +296,10 @@ where
 /// run it ([`Solve::solve`](crate::Solve::solve) watches a model's contacts and laws,
 /// which the [`Hybrid`](crate::model::Hybrid) capability every such model has declares).
 pub trait DenseModel:
-    LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed + crate::model::Hybrid
+    LagrangeDirac<Algebra = crate::algebra::Dense>
+    + crate::shape::dims::Fixed
+    + crate::model::Hybrid
+    + crate::model::JointSpace
 where
     DefaultAllocator: Storage<Self>,
 {
@@ -304,7 +307,10 @@ where
 
 impl<M> DenseModel for M
 where
-    M: LagrangeDirac<Algebra = crate::algebra::Dense> + crate::shape::dims::Fixed + crate::model::Hybrid,
+    M: LagrangeDirac<Algebra = crate::algebra::Dense>
+        + crate::shape::dims::Fixed
+        + crate::model::Hybrid
+        + crate::model::JointSpace,
     DefaultAllocator: Storage<M>,
 {
 }

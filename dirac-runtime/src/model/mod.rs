@@ -22,6 +22,8 @@ mod energy;
 pub mod flat;
 pub(crate) mod hybrid;
 mod inputs_outputs;
+/// The joint-space dynamics a model computes: from its blocks, or by its tree's recursions.
+pub mod joint_space;
 /// Typed names of coordinates and constraints.
 pub mod keys;
 mod lagrange_dirac;
@@ -44,6 +46,7 @@ pub use self::derivation::{Derivation, Equations, OperationCounts};
 pub use self::energy::EnergyBalance;
 pub use self::hybrid::Hybrid;
 pub use self::inputs_outputs::InputsOutputs;
+pub use self::joint_space::JointSpace;
 pub use self::lagrange_dirac::{Condensed, DenseModel, LagrangeDirac, MatCQ, MatQQ, check_parameters};
 pub use self::named::Named;
 pub(crate) use self::parameters::ParameterDerivatives;
