@@ -78,6 +78,8 @@ pub struct Model<'a> {
     /// The kinematic tree of a URDF robot fixed in the world, for the recursions of its
     /// joint-space dynamics.
     pub tree: Option<crate::urdf::tree::Tree>,
+    /// `LINKS` of `impl Shapes` for a URDF robot: its links as a view draws them.
+    pub shapes: Option<proc_macro2::TokenStream>,
     /// Files the model was read from, which the expansion names so that Cargo rebuilds it when
     /// they change.
     pub tracked_files: Vec<String>,
@@ -201,6 +203,7 @@ impl<'a> Model<'a> {
             floating: None,
             gravity: None,
             tree: None,
+            shapes: None,
             tracked_files: Vec::new(),
             incomplete: false,
         };

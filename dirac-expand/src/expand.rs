@@ -236,6 +236,14 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let switches = crate::contacts::switch_methods(model, &sym);
     let tracked = &model.tracked_files;
     let joint_space = crate::urdf::tree::joint_space(model);
+    let shapes = model.shapes.as_ref().map(|links| {
+        quote! {
+            #[automatically_derived]
+            impl #p::Shapes for #ident {
+                const LINKS: &'static [#p::geometry::Link] = #links;
+            }
+        }
+    });
     quote! {
         // The files the model was read from: Cargo rebuilds it when one changes.
         #(const _: &[u8] = include_bytes!(#tracked);)*
@@ -310,6 +318,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
             }
 
             #joint_space
+            #shapes
 
             #constants
         };

@@ -129,6 +129,7 @@ pub mod __private {
         place_event_derivatives, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+    pub use crate::model::geometry;
     pub use crate::model::hybrid::has_laws;
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};
     pub use crate::model::names::{Message, Names, ResolveError, Resolved, Subsystem};
@@ -139,7 +140,7 @@ pub mod __private {
     };
     pub use crate::model::{
         DenseModel, Derivation, Equations, Hybrid, InputsOutputs, JointSpace, LagrangeDirac, MatCQ, MatQQ,
-        OperationCounts, Parameters,
+        OperationCounts, Parameters, Shapes,
     };
     pub use crate::output::solution::{Sampling, Solution};
     pub use crate::shape::dims::{Dimensions, Fixed, MatYY, Sizes, Storage, VecC, VecH, VecQ, VecY};

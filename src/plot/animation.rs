@@ -348,7 +348,7 @@ fn visibility(out: &mut String, series: &[&Vec<f64>], timing: Option<&str>) {
 
 /// `values` as a JSON array, each number in the shortest form that reads back to it; NaN,
 /// infinities and values beyond [`LARGEST`] as `null` (not drawn).
-fn numbers(out: &mut String, values: &[f64]) {
+pub(super) fn numbers(out: &mut String, values: &[f64]) {
     out.push('[');
     for (k, x) in values.iter().enumerate() {
         if k > 0 {
@@ -364,7 +364,7 @@ fn numbers(out: &mut String, values: &[f64]) {
 }
 
 /// `text` as a JSON string that is also safe inside a `<script>` element.
-fn json_string(text: &str) -> String {
+pub(super) fn json_string(text: &str) -> String {
     let mut out = String::from("\"");
     for c in text.chars() {
         match c {
@@ -383,7 +383,7 @@ fn json_string(text: &str) -> String {
     out
 }
 
-fn escape(text: &str) -> String {
+pub(super) fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 

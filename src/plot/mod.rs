@@ -1,8 +1,9 @@
 //! Figures and animations of results, as files people open: SVG charts of a solution's series
 //! ([`Figure`]), with events and impacts marked and several solutions overlaid; and
 //! animations of planar mechanisms ([`Animation`]): self-contained HTML that plays, scrubs and
-//! loops, or an SVG image that plays by itself. [`work_precision`] runs a method at several
-//! tolerances and [`Figure::work_precision`] draws what each digit costs.
+//! loops, or an SVG image that plays by itself; robots read from URDF files in 3D ([`Scene`]).
+//! [`work_precision`] runs a method at several tolerances and [`Figure::work_precision`] draws
+//! what each digit costs.
 //!
 //! Both are written by hand-rolled SVG: text is laid out by the viewer, so nothing here needs
 //! fonts or a graphics library. [`Chart`] is the line chart underneath, for series that do not
@@ -28,9 +29,14 @@
 mod animation;
 mod chart;
 mod figure;
+mod scene;
 mod work_precision;
+
+/// The shapes of a robot's links that a [`Scene`] draws, which the derive reads from a URDF.
+pub use dirac_runtime::model::geometry;
 
 pub use animation::Animation;
 pub use chart::{Chart, Series};
 pub use figure::{Figure, PlotError};
+pub use scene::Scene;
 pub use work_precision::{Run, work_precision};

@@ -461,3 +461,172 @@ fn an_animated_svg_draws_its_strokes_without_vector_effect() {
         assert!((stroke * scale - 1.0).abs() < 1e-12, "{stroke} × {scale}");
     }
 }
+
+/// A two-link arm drawn with every URDF primitive (`tests/robots/shapes/arm.urdf`): a red sphere
+/// at the end of the upper arm, a blue box at the end of the forearm.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/shapes/arm.urdf")]
+struct ShapesArm;
+
+/// What headless Chromium shows of `path#t=time` in a window 800 pixels wide: the page (its
+/// DOM after the script ran) and the screenshot's pixels, row by row, as RGBA.
+fn shown_at(path: &Path, time: f64) -> (String, Vec<u8>, usize) {
+    let page = page_at(path, time);
+    let shot = path.with_extension(format!("{time}.png"));
+    let url = format!("file://{}#t={time:e}", path.display());
+    let output = Command::new(chromium())
+        .args(["--virtual-time-budget=1000", "--window-size=800,700", "--force-device-scale-factor=1"])
+        .arg(format!("--screenshot={}", shot.display()))
+        .arg(&url)
+        .output()
+        .expect("Chromium runs");
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let file = std::fs::File::open(&shot).expect("the screenshot");
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::normalize_to_color8() | png::Transformations::ALPHA);
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut pixels = vec![0; reader.output_buffer_size().expect("a size")];
+    let info = reader.next_frame(&mut pixels).expect("its pixels");
+    assert_eq!((info.color_type, info.bit_depth), (png::ColorType::Rgba, png::BitDepth::Eight));
+    pixels.truncate(info.buffer_size());
+    (page, pixels, info.width as usize)
+}
+
+/// Where the page's camera draws the world's point `p` (in the canvas's pixels), and how many
+/// pixels a metre is, from the canvas's `data-` attributes.
+fn projected(page: &str, p: [f64; 3]) -> ((usize, usize), f64) {
+    let canvas = elements(page, "canvas").into_iter().next().expect("the canvas");
+    let read = |name: &str| -> Vec<f64> {
+        attribute(canvas, name)
+            .unwrap_or_else(|| panic!("the canvas's {name}"))
+            .split(',')
+            .map(|x| x.parse().expect("a number"))
+            .collect()
+    };
+    let (centre, right, up, scale, pixel) =
+        (read("data-center"), read("data-right"), read("data-up"), read("data-scale")[0], read("data-pixel"));
+    let d: Vec<f64> = (0..3).map(|i| p[i] - centre[i]).collect();
+    let along = |axis: &[f64]| (0..3).map(|i| axis[i] * d[i]).sum::<f64>();
+    let at = (
+        (pixel[0] + scale * along(&right)).round() as usize,
+        (pixel[1] - scale * along(&up)).round() as usize,
+    );
+    (at, scale)
+}
+
+/// The share of the screenshot's pixels within `radius` pixels of `centre` that `colour` says
+/// are its.
+fn share(
+    pixels: &[u8],
+    width: usize,
+    (cx, cy): (usize, usize),
+    radius: f64,
+    colour: impl Fn([u8; 3]) -> bool,
+) -> f64 {
+    let r = radius.floor() as isize;
+    let (mut inside, mut coloured) = (0, 0);
+    for dy in -r..=r {
+        for dx in -r..=r {
+            if ((dx * dx + dy * dy) as f64).sqrt() > radius {
+                continue;
+            }
+            let (x, y) = (cx as isize + dx, cy as isize + dy);
+            inside += 1;
+            coloured += usize::from(colour(pixel(pixels, width, (x as usize, y as usize))));
+        }
+    }
+    coloured as f64 / inside as f64
+}
+
+/// The world position of the point `x` fixed in `link`, at sample `k`, from the solution's pose
+/// outputs.
+fn in_world<M: LagrangeDirac, S>(solution: &Solution<M, S>, link: &str, x: [f64; 3], k: usize) -> [f64; 3]
+where
+    DefaultAllocator: Storage<M>,
+{
+    let value = |suffix: &str| solution.column(&format!("out({link}_{suffix})")).expect("a pose output")[k];
+    std::array::from_fn(|i| {
+        let row: f64 = (0..3).map(|j| value(&format!("r{}{}", i + 1, j + 1)) * x[j]).sum();
+        value(["x", "y", "z"][i]) + row
+    })
+}
+
+/// The screenshot's pixel at `(x, y)`, RGB.
+fn pixel(pixels: &[u8], width: usize, (x, y): (usize, usize)) -> [u8; 3] {
+    let at = 4 * (y * width + x);
+    [pixels[at], pixels[at + 1], pixels[at + 2]]
+}
+
+/// The 3D view in headless Chromium: at two sample times of a swing, the screenshot shows the
+/// red sphere and the blue box where the solution's poses put them (projected by the camera the
+/// page reports), not where the other time put them, and white away from the robot.
+#[test]
+fn a_scene_in_headless_chromium_draws_a_robots_shapes_where_the_solution_puts_them() {
+    use dirac::plot::Scene;
+    let q = VecQ::<ShapesArm>::from_column_slice(&[1.2, 0.9]);
+    let start = consistent_state(&ShapesArm, 0.0, &q, &VecQ::<ShapesArm>::zeros(), Consistency::default())
+        .expect("a start");
+    let solution = Radau::new(&ShapesArm, RadauOptions::tolerances(1e-8, 1e-8))
+        .and_then(|mut radau| radau.solve(0.0, &start, 1.0, &Sampling::Every(1.0 / 30.0)))
+        .expect("swings");
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("shapes_arm.html");
+    Scene::of(&solution, "An arm of primitives").expect("a scene").write_html(&path).expect("written");
+    let t = solution.t();
+    let (a, b) = (0, 12);
+    let sphere = |k| in_world(&solution, "upper", [0.0, 0.0, -0.5], k);
+    let cube = |k| in_world(&solution, "lower", [0.0, 0.0, -0.45], k);
+    // By hue, whatever the shading: the sphere is (0.85, 0.1, 0.1), the box (0.1, 0.2, 0.85),
+    // everything else grey or white.
+    let red =
+        |[r, g, b]: [u8; 3]| r > 40 && u16::from(r) > 3 * u16::from(g) && u16::from(r) > 3 * u16::from(b);
+    let blue =
+        |[r, g, b]: [u8; 3]| b > 40 && u16::from(b) > 3 * u16::from(r) && u16::from(b) > 2 * u16::from(g);
+    for (now, other) in [(a, b), (b, a)] {
+        let (page, pixels, width) = shown_at(&path, t[now]);
+        let ((s, scale), (c, _)) = (projected(&page, sphere(now)), projected(&page, cube(now)));
+        let ((s_then, _), (c_then, _)) = (projected(&page, sphere(other)), projected(&page, cube(other)));
+        // Within 0.7 of the sphere's radius (0.08) and of the box's half edge (0.06) of their
+        // centres: the limbs that join them (radius 0.025 and 0.03) may pass in front.
+        let (rs, rc) = (0.7 * 0.08 * scale, 0.7 * 0.06 * scale);
+        let (on_s, on_c) = (share(&pixels, width, s, rs, red), share(&pixels, width, c, rc, blue));
+        let (off_s, off_c) =
+            (share(&pixels, width, s_then, rs, red), share(&pixels, width, c_then, rc, blue));
+        println!(
+            "t = {}: sphere at {s:?} {:.0}% red (at the other time's place {:.0}%), box at {c:?} {:.0}% blue ({:.0}%)",
+            t[now],
+            100.0 * on_s,
+            100.0 * off_s,
+            100.0 * on_c,
+            100.0 * off_c
+        );
+        // Measured 52–63 % for the sphere and 100 % for the box; elsewhere 0 %.
+        assert!(on_s > 0.3 && on_c > 0.3, "{on_s} {on_c}");
+        assert!(off_s < 0.05 && off_c < 0.05, "{off_s} {off_c} where the other time put them");
+        assert_eq!(pixel(&pixels, width, (20, 20)), [255, 255, 255], "the corner is background");
+    }
+}
+
+/// The Panda's links are meshes, drawn as their frames and the lines between them: the
+/// screenshot is not background at each link's origin where the state puts it.
+#[test]
+fn a_scene_of_the_panda_draws_its_links_where_its_pose_outputs_put_them() {
+    use crate::zoo::robots::{Panda, SWING_START};
+    use dirac::plot::Scene;
+    let q = VecQ::<Panda>::from_column_slice(&SWING_START);
+    let start =
+        consistent_state(&Panda, 0.0, &q, &VecQ::<Panda>::zeros(), Consistency::default()).expect("a start");
+    let solution = Radau::new(&Panda, RadauOptions::tolerances(1e-8, 1e-8))
+        .and_then(|mut radau| radau.solve(0.0, &start, 0.5, &Sampling::Every(0.1)))
+        .expect("swings");
+    let path = Path::new(env!("CARGO_TARGET_TMPDIR")).join("panda.html");
+    Scene::of(&solution, "The Panda").expect("a scene").write_html(&path).expect("written");
+    let k = 3;
+    let (page, pixels, width) = shown_at(&path, solution.t()[k]);
+    for link in ["panda_link2", "panda_link4", "panda_link6", "panda_hand"] {
+        let (at, _) = projected(&page, in_world(&solution, link, [0.0; 3], k));
+        let shown = pixel(&pixels, width, at);
+        println!("{link} at {at:?}: {shown:?}");
+        assert_ne!(shown, [255, 255, 255], "{link} at {at:?}");
+    }
+    assert_eq!(pixel(&pixels, width, (20, 20)), [255, 255, 255], "the corner is background");
+}

@@ -43,6 +43,7 @@
 mod poly;
 mod read;
 pub mod tree;
+mod view;
 
 use proc_macro2::Span;
 use syn::{Expr, Ident, LitStr};
@@ -126,6 +127,7 @@ impl Writer<'_, '_, '_> {
             _ => None,
         };
         self.model.tree = tree::Tree::of(robot, &joints, written);
+        self.model.shapes = Some(view::links(robot, &links));
         let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
         let identity = read::rpy([0.0; 3]).map(|row| row.map(Atom::Num));
         let root = Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() };

@@ -27,6 +27,26 @@ pub struct Link {
     /// Whether the link is the file's (its pose an output), not a frame the reader added: the
     /// world a floating robot moves in, or the frames between a planar joint's three motions.
     pub shown: bool,
+    /// Its `<visual>` shapes, as a view draws them.
+    pub visuals: Vec<Shape>,
+}
+
+/// A `<visual>`: its geometry, its frame in the link's, and its colour.
+pub struct Shape {
+    pub geometry: Geometry,
+    pub xyz: [f64; 3],
+    pub rotation: Mat3,
+    /// `<material>`'s `<color rgba="…"/>`, inline or by the name of the robot's material.
+    pub color: Option<[f64; 4]>,
+}
+
+/// A `<geometry>`'s shape.
+pub enum Geometry {
+    Box([f64; 3]),
+    Sphere(f64),
+    Cylinder { radius: f64, length: f64 },
+    Capsule { radius: f64, length: f64 },
+    Mesh(String),
 }
 
 /// The kinds of joints this reader accepts.
@@ -111,13 +131,20 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
             format!("the root element is `<{}>`; a URDF's is `<robot>`", root.tag_name().name()),
         ));
     }
+    // The robot's named materials, which a visual may name.
+    let mut materials = HashMap::new();
+    for material in root.children().filter(|c| c.is_element() && c.tag_name().name() == "material") {
+        if let (Some(name), Some(color)) = (material.attribute("name"), element(material, "color")) {
+            materials.insert(name.to_owned(), rgba(color, &at)?);
+        }
+    }
     let mut links = Vec::new();
     let mut link_nodes = Vec::new();
     let mut joint_nodes = Vec::new();
     for child in root.children().filter(Node::is_element) {
         match child.tag_name().name() {
             "link" => {
-                links.push(read_link(child, &at)?);
+                links.push(read_link(child, &materials, &at)?);
                 link_nodes.push(child);
             }
             "joint" => joint_nodes.push(child),
@@ -264,8 +291,14 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
     let mut robot = Robot { links: Vec::new(), joints: Vec::new() };
     let mut index = vec![usize::MAX; slots.len()];
     if float_root {
-        let world =
-            Link { name: "world".to_owned(), mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: false };
+        let world = Link {
+            name: "world".to_owned(),
+            mass: 0.0,
+            com: [0.0; 3],
+            inertia: [[0.0; 3]; 3],
+            shown: false,
+            visuals: Vec::new(),
+        };
         robot.links.push(world);
         robot.joints.push(Joint::moving(FLOATING_ROOT, Kind::Floating, 0, [0.0; 3]));
     }
@@ -282,6 +315,7 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
                 com: [0.0; 3],
                 inertia: [[0.0; 3]; 3],
                 shown: false,
+                visuals: Vec::new(),
             };
             let mut x = Joint::moving(&format!("{}_x", joint.name), Kind::Prismatic, parent, along);
             (x.xyz, x.rotation, x.damping) = (joint.xyz, joint.rotation, joint.damping);
@@ -407,9 +441,17 @@ fn snap(x: f64) -> f64 {
     if x.abs() < 1e-15 { 0.0 } else { x }
 }
 
-fn read_link(node: Node<'_, '_>, at: &impl Fn(Node<'_, '_>, String) -> Error) -> Result<Link, Error> {
+fn read_link(
+    node: Node<'_, '_>,
+    materials: &HashMap<String, [f64; 4]>,
+    at: &impl Fn(Node<'_, '_>, String) -> Error,
+) -> Result<Link, Error> {
     let name = required(node, "name", at)?.to_owned();
-    let mut link = Link { name, mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: true };
+    let mut visuals = Vec::new();
+    for visual in node.children().filter(|c| c.is_element() && c.tag_name().name() == "visual") {
+        visuals.push(read_visual(visual, &name, materials, at)?);
+    }
+    let mut link = Link { name, mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: true, visuals };
     let Some(inertial) = element(node, "inertial") else { return Ok(link) };
     let (com, rotation) = read_origin(inertial, at)?;
     let mass_node = element(inertial, "mass").ok_or_else(|| {
@@ -463,6 +505,77 @@ fn read_link(node: Node<'_, '_>, at: &impl Fn(Node<'_, '_>, String) -> Error) ->
     link.mass = mass;
     link.com = com;
     Ok(link)
+}
+
+/// A `<visual>` of link `link`: its origin, its geometry and its colour.
+fn read_visual(
+    node: Node<'_, '_>,
+    link: &str,
+    materials: &HashMap<String, [f64; 4]>,
+    at: &impl Fn(Node<'_, '_>, String) -> Error,
+) -> Result<Shape, Error> {
+    let (xyz, rotation) = read_origin(node, at)?;
+    let geometry = element(node, "geometry")
+        .ok_or_else(|| at(node, format!("link `{link}`: `<visual>` has no `<geometry>`")))?;
+    let Some(shape) = geometry.children().find(Node::is_element) else {
+        return Err(at(geometry, format!("link `{link}`: `<geometry>` holds no shape")));
+    };
+    let positive = |key: &str| -> Result<f64, Error> {
+        let x = number(shape, key, at)?;
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(at(
+                shape,
+                format!(
+                    "link `{link}`: a `<{}>` whose `{key}` is {x}, not positive",
+                    shape.tag_name().name()
+                ),
+            ))
+        }
+    };
+    let geometry = match shape.tag_name().name() {
+        "box" => {
+            let size = triple(shape, "size", at)?;
+            if size.iter().any(|x| *x <= 0.0) {
+                return Err(at(
+                    shape,
+                    format!("link `{link}`: a `<box>` whose size {size:?} is not positive"),
+                ));
+            }
+            Geometry::Box(size)
+        }
+        "sphere" => Geometry::Sphere(positive("radius")?),
+        "cylinder" => Geometry::Cylinder { radius: positive("radius")?, length: positive("length")? },
+        "capsule" => Geometry::Capsule { radius: positive("radius")?, length: positive("length")? },
+        "mesh" => Geometry::Mesh(required(shape, "filename", at)?.to_owned()),
+        other => {
+            return Err(at(
+                shape,
+                format!(
+                    "link `{link}`: `<{other}>` is no URDF geometry; a shape is a box, sphere, cylinder, capsule or mesh"
+                ),
+            ));
+        }
+    };
+    let color = match element(node, "material") {
+        None => None,
+        Some(material) => match element(material, "color") {
+            Some(color) => Some(rgba(color, at)?),
+            None => material.attribute("name").and_then(|name| materials.get(name).copied()),
+        },
+    };
+    Ok(Shape { geometry, xyz, rotation, color })
+}
+
+/// `<color rgba="r g b a"/>`, each in `[0, 1]`.
+fn rgba(node: Node<'_, '_>, at: &impl Fn(Node<'_, '_>, String) -> Error) -> Result<[f64; 4], Error> {
+    let text = required(node, "rgba", at)?;
+    let values: Vec<f64> = text.split_whitespace().filter_map(parse_number).collect();
+    match values.as_slice() {
+        [r, g, b, a] if values.iter().all(|x| (0.0..=1.0).contains(x)) => Ok([*r, *g, *b, *a]),
+        _ => Err(at(node, format!("`rgba=\"{text}\"` is not four numbers between 0 and 1"))),
+    }
 }
 
 /// A joint as written, with its parent and child as indices of the file's links.
@@ -804,6 +917,34 @@ mod tests {
     }
 
     #[test]
+    fn visuals_are_read_with_their_frames_and_colours() {
+        let robot = robot(
+            r#"<material name="steel"><color rgba="0.5 0.5 0.6 1"/></material>
+            <link name="base">
+              <visual><origin xyz="0 0 0.1" rpy="0 0 1.5707963267948966"/><geometry><box size="1 2 3"/></geometry>
+                <material name="steel"/></visual>
+              <visual><geometry><cylinder radius="0.1" length="0.5"/></geometry></visual>
+              <visual><geometry><mesh filename="package://arm/base.stl"/></geometry>
+                <material name="red"><color rgba="1 0 0 1"/></material></visual>
+            </link>"#,
+        )
+        .expect("a robot");
+        let visuals = &robot.links[0].visuals;
+        assert_eq!(visuals.len(), 3);
+        assert!(matches!(visuals[0].geometry, Geometry::Box(size) if size == [1.0, 2.0, 3.0]));
+        assert_eq!(visuals[0].xyz, [0.0, 0.0, 0.1]);
+        // A quarter turn about z: the shape's x axis along the link's y.
+        assert_eq!([visuals[0].rotation[0][0], visuals[0].rotation[1][0]], [0.0, 1.0]);
+        assert_eq!(visuals[0].color, Some([0.5, 0.5, 0.6, 1.0]));
+        assert!(
+            matches!(visuals[1].geometry, Geometry::Cylinder { radius, length } if (radius, length) == (0.1, 0.5))
+        );
+        assert_eq!(visuals[1].color, None);
+        assert!(matches!(&visuals[2].geometry, Geometry::Mesh(file) if file == "package://arm/base.stl"));
+        assert_eq!(visuals[2].color, Some([1.0, 0.0, 0.0, 1.0]));
+    }
+
+    #[test]
     fn every_malformed_or_unsupported_element_is_refused_with_its_line() {
         let joint = |kind: &str, extra: &str| {
             arm(&format!(
@@ -880,6 +1021,30 @@ mod tests {
                 ),
                 "principal moments -1.000000e0, 1.000000e0, 3.000000e0, no rigid body's",
                 4,
+            ),
+            (
+                "<link name=\"base\"><visual>\n<geometry><sphere radius=\"-1\"/></geometry></visual></link>"
+                    .to_owned(),
+                "link `base`: a `<sphere>` whose `radius` is -1, not positive",
+                3,
+            ),
+            (
+                "<link name=\"base\"><visual>\n<geometry><cone radius=\"1\"/></geometry></visual></link>"
+                    .to_owned(),
+                "`<cone>` is no URDF geometry",
+                3,
+            ),
+            (
+                "<link name=\"base\">\n<visual/></link>".to_owned(),
+                "link `base`: `<visual>` has no `<geometry>`",
+                3,
+            ),
+            (
+                "<link name=\"base\"><visual><geometry><box size=\"1 1 1\"/></geometry>\n\
+                 <material name=\"m\"><color rgba=\"1 0 0\"/></material></visual></link>"
+                    .to_owned(),
+                "`rgba=\"1 0 0\"` is not four numbers between 0 and 1",
+                3,
             ),
             (
                 format!("{LINK}\n<link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>"),

@@ -20,6 +20,8 @@ mod derivation;
 mod energy;
 /// The flat DAE assembled from a model's blocks.
 pub mod flat;
+/// The shapes of a robot's links, for views of its motion.
+pub mod geometry;
 pub(crate) mod hybrid;
 mod inputs_outputs;
 /// The joint-space dynamics a model computes: from its blocks, or by its tree's recursions.
@@ -44,6 +46,7 @@ pub const DISSIPATED_POWER: &str = "dissipated_power";
 
 pub use self::derivation::{Derivation, Equations, OperationCounts};
 pub use self::energy::EnergyBalance;
+pub use self::geometry::Shapes;
 pub use self::hybrid::Hybrid;
 pub use self::inputs_outputs::InputsOutputs;
 pub use self::joint_space::JointSpace;
