@@ -121,18 +121,13 @@ fn methods(tree: &Tree, model: &Model<'_>) -> Option<TokenStream> {
             *slot = Some(index(&joint.coordinate)?);
         }
     }
-    // Every other coordinate must be a unit slack, `½ rate²` in the Lagrangian.
-    let slacks: Vec<String> =
-        model
-            .laws
-            .iter()
-            .map(|l| format!("{}{}", l.name, crate::symbol::MODE))
-            .chain(
-                model.switches.is_empty().then(Vec::new).unwrap_or_else(|| {
-                    model.unilaterals.iter().map(|u| format!("{}_slack", u.name)).collect()
-                }),
-            )
-            .collect();
+    // Every other coordinate must be a unit slack, `½ rate²` in the Lagrangian: a law's mode,
+    // and a contact's slack in the companion that can close contacts (the one with switches).
+    let mut slacks: Vec<String> =
+        model.laws.iter().map(|l| format!("{}{}", l.name, crate::symbol::MODE)).collect();
+    if !model.switches.is_empty() {
+        slacks.extend(model.unilaterals.iter().map(|u| format!("{}_slack", u.name)));
+    }
     let mut units = Vec::new();
     for (i, name) in names.iter().enumerate() {
         if slots.contains(&Some(i)) {
