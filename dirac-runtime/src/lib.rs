@@ -129,6 +129,7 @@ pub mod __private {
         place_event_derivatives, scatter_c, scatter_cq, scatter_h, scatter_q, scatter_qq,
     };
     pub use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
+    pub use crate::model::flat::{jacobian_csc_from_blocks, l_qq_from_blocks};
     pub use crate::model::geometry;
     pub use crate::model::hybrid::has_laws;
     pub use crate::model::keys::{Constraint, Coordinate, Input, Output};

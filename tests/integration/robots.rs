@@ -11,7 +11,7 @@ use dirac::State;
 use dirac::prelude::*;
 
 use crate::every_method::{Fineness, Method};
-use crate::util::check_jacobian_by_differences;
+use crate::util::{check_csc_against_dense, check_jacobian_by_differences};
 use crate::zoo::robots::{FloatingPanda, Panda, PandaStops, PandaStopsWithContacts, SWING_START};
 
 fn table(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
@@ -183,6 +183,42 @@ fn the_recursions_of_a_robots_tree_are_its_lagrangians() {
 fn the_panda_has_the_derivatives_its_differences_say() {
     check_jacobian_by_differences(&Panda, 38, 5);
     crate::blocks::check_blocks(&Panda, 39);
+}
+
+/// The Panda's second derivatives are large enough that it compiles them once, in its Jacobian
+/// blocks, and reads `L_qq`, the flat Jacobian (checked above against differences of the flat
+/// residual, which is compiled on its own) and the compressed columns from there. `L_qq` is
+/// checked here against central differences of `∂L/∂q`, which is also compiled on its own.
+#[test]
+fn the_second_derivatives_a_large_model_reads_from_its_blocks_are_its_differences() {
+    check_csc_against_dense(&Panda, 40, 3);
+    let mut rng = crate::util::Rng::new(41);
+    for _ in 0..5 {
+        let y = crate::util::random_y(&Panda, &mut rng);
+        let s = State::<Panda>::from_y(Panda.sizes(), &y);
+        let mut l_qq = MatQQ::<Panda>::zeros();
+        Panda.l_qq(0.0, &s.q, &s.v, &mut l_qq);
+        let dl_dq = |q: &VecQ<Panda>| {
+            let mut out = VecQ::<Panda>::zeros();
+            Panda.dl_dq(0.0, q, &s.v, &mut out);
+            out
+        };
+        let n = Panda.sizes().nq;
+        for c in 0..n {
+            let h = 1e-6;
+            let (mut plus, mut minus) = (s.q, s.q);
+            plus[c] += h;
+            minus[c] -= h;
+            let column = (dl_dq(&plus) - dl_dq(&minus)) / (2.0 * h);
+            for r in 0..n {
+                let (exact, approx) = (l_qq[(r, c)], column[r]);
+                assert!(
+                    (exact - approx).abs() <= 1e-6 * exact.abs().max(1.0),
+                    "L_qq[{r}, {c}]: {exact} against {approx}"
+                );
+            }
+        }
+    }
 }
 
 /// The swing's start, its fingers made consistent with the mimic row.

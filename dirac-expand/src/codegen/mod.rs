@@ -16,7 +16,7 @@ use self::signatures::{
     EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
     L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
     RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SOLVED_VELOCITIES, Signature, UNILATERAL,
-    UNILATERAL_DERIVATIVES, UNILATERAL_DQ,
+    UNILATERAL_DERIVATIVES, UNILATERAL_DQ, rt,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -104,6 +104,10 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         residual_blocks: op_count(g, &residual_blocks),
         jacobian_blocks: op_count(g, &jacobian_blocks),
     };
+    // A model whose second derivatives are large compiles them once more than it needs, in
+    // `jacobian_blocks` and `l_vq` (which Explicit reads at each stage): its `l_qq`, flat
+    // `jacobian` and `jacobian_csc`, which no step calls, read them from the blocks.
+    let compact = counts.jacobian_blocks > COMPACT_OPERATIONS;
     let table: [(Signature, Vec<Assign>); 21] = [
         (LAGRANGIAN, vec![Assign::set(quote! { value }, b.lagrangian)]),
         (DL_DQ, vector(&out, &b.dl_dq)),
@@ -127,8 +131,20 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         (CONSTRAINT_RATE, vector(&out, &b.b)),
         (DAV_DT, vector(&out, &b.dav_dt)),
     ];
-    let mut methods: TokenStream =
-        table.iter().map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new())).collect();
+    let read_from_blocks = [L_QQ.name, JACOBIAN.name];
+    let mut methods: TokenStream = table
+        .iter()
+        .filter(|(sig, _)| !(compact && read_from_blocks.contains(&sig.name)))
+        .map(|(sig, assigns)| e.method(sig, assigns, TokenStream::new()))
+        .collect();
+    if compact {
+        let (p, f64) = (rt(), quote! { ::core::primitive::f64 });
+        methods.extend(quote! {
+            fn l_qq(&self, t: #f64, q: &#p::VecQ<Self>, v: &#p::VecQ<Self>, out: &mut #p::MatQQ<Self>) {
+                #p::l_qq_from_blocks(self, t, q, v, out)
+            }
+        });
+    }
     if !b.outputs.is_empty() {
         methods.extend(e.sized(&OUTPUTS, &b.outputs));
     }
@@ -199,7 +215,7 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
         inputs_outputs,
         hybrid,
         parameters,
-        sparse: e.csc_jacobian(&b.flat_jacobian),
+        sparse: e.csc_jacobian(&b.flat_jacobian, compact),
         counts,
     }
 }
@@ -230,6 +246,14 @@ fn jacobian_blocks(g: &Graph, b: &Blocks) -> Vec<Assign> {
 /// The arithmetic operations up to which a kernel is always inlined (see `Emitter::method`):
 /// the 8-link pendulum's largest kernels that a step evaluates together hold a few hundred.
 const ALWAYS_INLINED_OPERATIONS: usize = 1000;
+
+/// The arithmetic operations above which a kernel is not even hinted inline (see
+/// `Emitter::method`).
+const HINTED_OPERATIONS: usize = 5000;
+
+/// The arithmetic operations of `jacobian_blocks` above which a model's second derivatives are
+/// compiled once (see `generate`): the Panda's hold 23 000, the 8-link pendulum's a few hundred.
+const COMPACT_OPERATIONS: usize = 10_000;
 
 /// Writes methods of one primitive model.
 struct Emitter<'a> {
@@ -335,16 +359,22 @@ impl Emitter<'_> {
         // the residual, `L_vq` and `L_vv`) then computes what they share (the sines and cosines
         // of the same angles) once. Left to the inliner's heuristics, the same kernels were
         // inlined or not with the number of code units and of call sites, and the 8-link
-        // pendulum's explicit step cost 1.2-1.5 times the instructions. A large kernel keeps
+        // pendulum's explicit step cost 1.2-1.5 times the instructions. A larger kernel keeps
         // the hint alone, so that a large model's code is not copied into every caller; so do
         // builds with debug assertions (tests), whose compile time matters more than their speed.
-        let inline = if op_count(&self.model.graph, assigns) <= ALWAYS_INLINED_OPERATIONS {
+        // A very large one has no hint at all: with it, every code unit that calls the kernel
+        // gets and optimises its own copy (the Talos humanoid's mass matrix was compiled five
+        // times), and a call costs nothing beside such a kernel.
+        let operations = op_count(&self.model.graph, assigns);
+        let inline = if operations <= ALWAYS_INLINED_OPERATIONS {
             quote! {
                 #[cfg_attr(debug_assertions, inline)]
                 #[cfg_attr(not(debug_assertions), inline(always))]
             }
-        } else {
+        } else if operations <= HINTED_OPERATIONS {
             quote! { #[inline] }
+        } else {
+            TokenStream::new()
         };
         match sig.out {
             Out::Scalar => quote! {
@@ -360,8 +390,8 @@ impl Emitter<'_> {
 
     /// The items of the `SparseJacobian` impl: the pattern of `jac` (every entry that is not
     /// structurally zero) in compressed sparse columns, and `jacobian_csc` writing those entries
-    /// in that order.
-    fn csc_jacobian(&self, jac: &[Vec<Id>]) -> TokenStream {
+    /// in that order (read from the blocks if `compact`).
+    fn csc_jacobian(&self, jac: &[Vec<Id>], compact: bool) -> TokenStream {
         let g = &self.model.graph;
         let mut starts = vec![0usize];
         let mut rows = Vec::new();
@@ -385,7 +415,21 @@ impl Emitter<'_> {
                 "jacobian_csc: the output must hold one value per stored Jacobian entry"
             );
         };
-        let method = self.method(&JACOBIAN_CSC, &assigns, check);
+        let method = if compact {
+            let p = rt();
+            quote! {
+                fn jacobian_csc(
+                    &self,
+                    t: ::core::primitive::f64,
+                    y: &#p::VecY<Self>,
+                    out: &mut [::core::primitive::f64],
+                ) {
+                    #p::jacobian_csc_from_blocks(self, t, y, out)
+                }
+            }
+        } else {
+            self.method(&JACOBIAN_CSC, &assigns, check)
+        };
         quote! {
             const JACOBIAN_COLUMN_STARTS: &'static [::core::primitive::usize] = &[#(#starts),*];
             const JACOBIAN_ROW_INDICES: &'static [::core::primitive::usize] = &[#(#rows),*];
