@@ -235,7 +235,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
     let storage = fixed_storage(&quote! { <Self as #p::Fixed>::SIZES });
     let switches = crate::contacts::switch_methods(model, &sym);
     let tracked = &model.tracked_files;
-    let joint_space = crate::urdf::tree::joint_space(model);
+    let (joint_space, tree_dynamics) = crate::urdf::tree::joint_space(model);
     let shapes = model.shapes.as_ref().map(|links| {
         quote! {
             #[automatically_derived]
@@ -275,6 +275,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
                 #parameters
                 #methods
                 #input_values
+                #tree_dynamics
             }
 
             #[automatically_derived]

@@ -120,12 +120,12 @@ fn uniform(seed: &mut u64) -> f64 {
 /// model's blocks, `joint_space::blocks` (from the Lagrangian the derive differentiated), at 20
 /// random states; the accelerations of the articulated-body recursion against `M a + b = τ`
 /// from the blocks. Returns the largest relative differences (mass, gravity, bias, `M a + b − τ`).
-fn recursions_against_blocks<M: DenseModel>(model: &M) -> [f64; 4]
+fn recursions_against_blocks<M: DenseModel>(model: &M) -> [f64; 5]
 where
     dirac::__private::DefaultAllocator: dirac::__private::Storage<M>,
 {
     let mut seed = 45_u64;
-    let mut worst = [0.0_f64; 4];
+    let mut worst = [0.0_f64; 5];
     for _ in 0..20 {
         let [q, v, tau] = [2.0, 2.0, 5.0].map(|scale| VecQ::<M>::from_fn(|_, _| scale * uniform(&mut seed)));
         let mass = joint_space::mass_matrix(model, 0.0, &q);
@@ -143,6 +143,19 @@ where
         worst[1] = worst[1].max(relative((&gravity - &g).amax(), g.amax()));
         worst[2] = worst[2].max(relative((&bias - &b).amax(), b.amax()));
         worst[3] = worst[3].max(relative((balance - &tau).amax(), tau.amax()));
+        // What the accelerations read: `∂L/∂q + F − L_vt − L_vq v` and `L_vv`.
+        let (mut rate, mut l_vv) = (VecQ::<M>::zeros(), dirac::MatQQ::<M>::zeros());
+        assert!(model.tree_dynamics(0.0, &q, &v, &mut rate, &mut l_vv), "a tree's recursions");
+        let (mut dl_dq, mut force, mut l_vt) = (VecQ::<M>::zeros(), VecQ::<M>::zeros(), VecQ::<M>::zeros());
+        let mut l_vq = dirac::MatQQ::<M>::zeros();
+        model.dl_dq(0.0, &q, &v, &mut dl_dq);
+        model.force(0.0, &q, &v, &mut force);
+        model.l_vt(0.0, &q, &v, &mut l_vt);
+        model.l_vq(0.0, &q, &v, &mut l_vq);
+        let expected = dl_dq + force - l_vt - l_vq * &v;
+        worst[4] = worst[4]
+            .max(relative((rate - &expected).amax(), expected.amax()))
+            .max(relative((l_vv - &from_blocks).amax(), from_blocks.amax()));
     }
     worst
 }
@@ -166,14 +179,18 @@ fn the_recursions_of_a_robots_tree_are_its_lagrangians() {
     use dirac::joint_space::JointSpace;
     const { assert!(Panda::RECURSIVE && PandaStopsWithContacts::RECURSIVE && TiltedPuck::RECURSIVE) };
     const { assert!(!FloatingPanda::RECURSIVE) };
+    let (mut rate, mut l_vv) = (VecQ::<FloatingPanda>::zeros(), dirac::MatQQ::<FloatingPanda>::zeros());
+    let q = VecQ::<FloatingPanda>::zeros();
+    assert!(!FloatingPanda.tree_dynamics(0.0, &q, &q, &mut rate, &mut l_vv), "no recursions: the blocks");
     for (name, worst, bound) in [
         ("Panda", recursions_against_blocks(&Panda), 1e-13),
         ("Panda with its stops' slacks", recursions_against_blocks(&PandaStops.with_contacts()), 1e-13),
         ("puck", recursions_against_blocks(&TiltedPuck { g: 9.0, tilt: 0.3 }), 1e-13),
     ] {
         eprintln!(
-            "{name}: recursions against the blocks: mass {:.1e}, gravity {:.1e}, bias {:.1e}, M a + b − τ {:.1e}",
-            worst[0], worst[1], worst[2], worst[3]
+            "{name}: recursions against the blocks: mass {:.1e}, gravity {:.1e}, bias {:.1e}, M a + b − τ {:.1e}, \
+             balance and L_vv the accelerations read {:.1e}",
+            worst[0], worst[1], worst[2], worst[3], worst[4]
         );
         assert!(worst.iter().all(|w| *w < bound), "{name}: {worst:?}");
     }

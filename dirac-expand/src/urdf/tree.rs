@@ -98,18 +98,43 @@ impl Tree {
 
 /// `impl JointSpace` for the model: the recursions of its tree where it has one and every other
 /// coordinate is a slack of unit mass the derive added (a law's mode, a contact's slack), the
-/// provided methods otherwise.
-pub fn joint_space(model: &Model<'_>) -> TokenStream {
+/// provided methods otherwise; and, with the recursions, the `LagrangeDirac::tree_dynamics` that
+/// reads them (nothing otherwise).
+pub fn joint_space(model: &Model<'_>) -> (TokenStream, TokenStream) {
     let p = rt();
     let ident = model.ident;
-    let methods = model.tree.as_ref().and_then(|tree| methods(tree, model)).unwrap_or_default();
-    quote! {
+    let methods = model.tree.as_ref().and_then(|tree| methods(tree, model));
+    // With the recursions, the accelerations read the balance and the mass matrix from them.
+    let hook = methods.as_ref().map(|_| {
+        quote! {
+            fn tree_dynamics(
+                &self,
+                t: ::core::primitive::f64,
+                q: &#p::VecQ<Self>,
+                v: &#p::VecQ<Self>,
+                rate: &mut #p::VecQ<Self>,
+                l_vv: &mut #p::MatQQ<Self>,
+            ) -> ::core::primitive::bool {
+                <Self as #p::JointSpace>::mass_matrix(self, t, q, l_vv);
+                <Self as #p::JointSpace>::bias_torques(self, t, q, v, rate);
+                let mut force = #p::VecQ::<Self>::zeros();
+                #p::LagrangeDirac::force(self, t, q, v, &mut force);
+                for (r, f) in rate.iter_mut().zip(force.iter()) {
+                    *r = f - *r;
+                }
+                true
+            }
+        }
+    });
+    let methods = methods.unwrap_or_default();
+    let implementation = quote! {
         #[automatically_derived]
         #[allow(clippy::approx_constant)]
         impl #p::JointSpace for #ident {
             #methods
         }
-    }
+    };
+    (implementation, hook.unwrap_or_default())
 }
 
 fn methods(tree: &Tree, model: &Model<'_>) -> Option<TokenStream> {

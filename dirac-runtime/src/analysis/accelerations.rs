@@ -252,10 +252,18 @@ where
         if !self.checked {
             self.look_for_mass(model, t, (q, v));
         }
-        model.residual_blocks(t, q, v, &self.zero_lambda, &mut self.blocks);
+        // A robot's tree gives the balance and the mass matrix by its recursions; its momenta
+        // are then `M v`.
+        let tree = model.tree_dynamics(t, q, v, &mut self.blocks.momentum_rate, &mut self.lvv);
+        if tree {
+            self.blocks.dl_dv.fill(0.0);
+            M::Algebra::qq_mul(&self.lvv, 1.0, v.as_slice(), self.blocks.dl_dv.as_mut_slice());
+        } else {
+            model.residual_blocks(t, q, v, &self.zero_lambda, &mut self.blocks);
+        }
         let x = self.x.as_mut_slice();
         x[..n].copy_from_slice(self.blocks.momentum_rate.as_slice());
-        if !M::SEPARABLE {
+        if !tree && !M::SEPARABLE {
             model.l_vt(t, q, v, &mut self.lvt);
             for (x, l) in x[..n].iter_mut().zip(self.lvt.iter()) {
                 *x -= l;

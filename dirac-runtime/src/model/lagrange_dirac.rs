@@ -184,6 +184,26 @@ where
         let _ = (t, q, v, out);
     }
 
+    /// For a robot whose joints form a tree fixed in the world (a URDF model whose
+    /// [`JointSpace`](crate::model::JointSpace) is recursive): writes the momentum balance
+    /// without its accelerations and constraint forces, `∂L/∂q + F − L_vt − L_vq v = F − b(q, v)`
+    /// with `b` the bias torques of the recursive Newton-Euler algorithm, into `rate`, and
+    /// `L_vv = M(q)` of the composite rigid bodies into `l_vv`, and returns `true`; every other
+    /// model writes nothing and returns `false` (the default). The accelerations that
+    /// `Explicit` steps on and that consistent starts are checked with read these in place of
+    /// the blocks `∂L/∂q`, `L_vq` and `L_vv`.
+    fn tree_dynamics(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        rate: &mut VecQ<Self>,
+        l_vv: &mut MatQQ<Self>,
+    ) -> bool {
+        let _ = (t, q, v, rate, l_vv);
+        false
+    }
+
     /// The interconnection forces `Ωᵀμ` of the model and, scattered, of its subsystems: the
     /// efforts at the ports (zero for a primitive model).
     fn interconnection_forces(&self, t: f64, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut VecQ<Self>) {
