@@ -10,8 +10,8 @@ use crate::ctxt::Ctxt;
 use crate::law_decl::{self, LawDecl, LawKind};
 use crate::symbol::{
     CONSTRAINT, COORDINATES, CROSSINGS, DEFINE, DIODE, DIRAC, DISSIPATION, EVENT, FLOATING, FORCE, FRICTION,
-    GRAVITY, HOLONOMIC, INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, NONZERO, OUTPUT,
-    PORT, PORTS, POSITIVE, RESTITUTION, SWITCH, UNILATERAL, UNIT, URDF,
+    GRAVITY, GROUND, HOLONOMIC, INPUT, JOINT_LIMITS, LAGRANGIAN, LARGE, MODEL_KEYS, NONNEGATIVE, NONZERO,
+    OUTPUT, PORT, PORTS, POSITIVE, RESTITUTION, SWITCH, UNILATERAL, UNIT, URDF,
 };
 
 /// A model as written by the user.
@@ -75,6 +75,9 @@ pub struct Model<'a> {
     pub floating: Option<Ident>,
     /// `gravity = [gx, gy, gz]`: the URDF robot's gravity, with its key.
     pub gravity: Option<(Ident, Expr)>,
+    /// `ground` or `ground(restitution = e)`: the URDF robot's collision shapes touch the
+    /// ground, with their restitution (the key, for spans).
+    pub ground: Option<(Ident, Option<Expr>)>,
     /// The kinematic tree of a URDF robot fixed in the world, for the recursions of its
     /// joint-space dynamics.
     pub tree: Option<crate::urdf::tree::Tree>,
@@ -202,6 +205,7 @@ impl<'a> Model<'a> {
             joint_limits: None,
             floating: None,
             gravity: None,
+            ground: None,
             tree: None,
             shapes: None,
             tracked_files: Vec::new(),
@@ -359,6 +363,14 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             LARGE => model.large = true,
             JOINT_LIMITS => model.joint_limits = Some(key.clone()),
             FLOATING => model.floating = Some(key.clone()),
+            GROUND => {
+                let restitution = parse_restitution(input, "ground(restitution = e)")?;
+                if model.ground.is_some() {
+                    cx.error_spanned_by(&key, "duplicate `ground`: a robot touches one");
+                } else {
+                    model.ground = Some((key.clone(), restitution));
+                }
+            }
             GRAVITY => {
                 input.parse::<Token![=]>()?;
                 let expr: Expr = input.parse()?;
@@ -532,6 +544,25 @@ fn parse_event(input: ParseStream) -> syn::Result<EventDecl> {
 }
 
 /// `(name) = expr` or `(name, restitution = e) = expr`, after `unilateral`.
+/// `(restitution = e)` after a key, if there is one.
+fn parse_restitution(input: ParseStream, written: &str) -> syn::Result<Option<Expr>> {
+    if !input.peek(syn::token::Paren) {
+        return Ok(None);
+    }
+    let content;
+    syn::parenthesized!(content in input);
+    let key = content.call(Ident::parse_any)?;
+    if key != RESTITUTION {
+        return Err(syn::Error::new(key.span(), format!("unknown option `{key}`; expected `{written}`")));
+    }
+    content.parse::<Token![=]>()?;
+    let e = content.parse::<Expr>()?;
+    if !content.is_empty() {
+        return Err(content.error(format!("expected `{written}`")));
+    }
+    Ok(Some(e))
+}
+
 fn parse_unilateral(input: ParseStream) -> syn::Result<UnilateralDecl> {
     let content;
     syn::parenthesized!(content in input);

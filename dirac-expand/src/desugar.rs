@@ -11,8 +11,12 @@ pub fn read<'a>(cx: &Ctxt, input: &'a syn::DeriveInput) -> Model<'a> {
     if let Some(path) = model.urdf.clone().filter(|_| !model.incomplete) {
         crate::urdf::desugar(cx, &mut model, &path);
     } else if model.urdf.is_none() {
-        let keys =
-            [&model.joint_limits, &model.floating, &model.gravity.as_ref().map(|(key, _)| key.clone())];
+        let keys = [
+            &model.joint_limits,
+            &model.floating,
+            &model.gravity.as_ref().map(|(key, _)| key.clone()),
+            &model.ground.as_ref().map(|(key, _)| key.clone()),
+        ];
         for key in keys.into_iter().flatten() {
             cx.error_spanned_by(key, format!("`{key}` is a URDF robot's: add `urdf = \"robot.urdf\"`"));
         }

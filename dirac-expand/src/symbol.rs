@@ -42,6 +42,10 @@ pub const JOINT_LIMITS: &str = "joint_limits";
 /// `floating`: with `urdf`, the robot's root moves freely in the world (a free flyer, its
 /// coordinates named after the joint `root_joint`).
 pub const FLOATING: &str = "floating";
+/// `ground` or `ground(restitution = e)`: with `urdf`, the robot's `<collision>` shapes touch
+/// the ground, the plane `z = 0` of the world, each point that can touch it a unilateral
+/// constraint with restitution `e` (0 unless given).
+pub const GROUND: &str = "ground";
 /// `gravity = [gx, gy, gz]`: with `urdf`, the acceleration of gravity in the world's axes,
 /// expressions in the model's parameters (`[0.0, 0.0, -9.81]` unless given).
 pub const GRAVITY: &str = "gravity";
@@ -95,6 +99,7 @@ pub const MODEL_KEYS: &[&str] = &[
     URDF,
     JOINT_LIMITS,
     FLOATING,
+    GROUND,
     GRAVITY,
     FRICTION,
     DIODE,

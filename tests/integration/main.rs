@@ -24,6 +24,7 @@ mod floating;
 mod fmi;
 mod free_flyer;
 mod fuzz;
+mod ground;
 mod hand_derivations;
 mod hygiene;
 mod impact;

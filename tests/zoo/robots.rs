@@ -41,3 +41,18 @@ pub struct Puck {
     /// Gravity's acceleration, along −y.
     pub g: f64,
 }
+
+/// A solid ball (mass 1, radius 0.1) that floats and bounces on the ground with restitution `e`
+/// (`tests/robots/ground/ball.urdf`).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/ground/ball.urdf", floating, ground(restitution = e))]
+pub struct GroundBall {
+    /// The restitution of its impacts on the ground.
+    pub e: f64,
+}
+
+/// A brick and the capsule fixed to it, floating, bouncing elastically on the ground at its
+/// eight corners and the capsule's two ends (`tests/robots/ground/brick.urdf`).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/ground/brick.urdf", floating, ground(restitution = 1.0))]
+pub struct Brick;

@@ -39,6 +39,13 @@
 //! are the link's axes in the world, Pinocchio's `oMf[link].rotation`). With `joint_limits`, each
 //! limited joint's `<limit lower upper>` is two unilateral constraints, `<joint>_lower` and
 //! `<joint>_upper`, with restitution 0: hard stops the joint rests against.
+//!
+//! With `ground` (or `ground(restitution = e)`), the plane `z = 0` of the world: each point of
+//! the links' `<collision>` shapes that can touch it is a unilateral constraint, its height
+//! above the ground from the link's rotation and origin in the world: a sphere's centre less its
+//! radius, a capsule's two ends less its radius, a box's eight corners. The height of a
+//! cylinder's lowest rim point, `z_c − r √(1 − a_z²)`, has no derivative where the cylinder
+//! stands on a face, and a mesh is not read: both are refused.
 
 mod poly;
 mod read;
@@ -194,6 +201,9 @@ impl Writer<'_, '_, '_> {
             frames.push(frame);
         }
         momenta.outputs(self);
+        if self.model.ground.is_some() {
+            self.ground_contacts(robot, &links, &frames);
+        }
         let mut lagrangian = Poly::default();
         kinetic.iter().for_each(|t| lagrangian.add(&Poly::atom(t), 1.0));
         potential.iter().for_each(|u| lagrangian.add(&Poly::atom(u), -1.0));
@@ -208,6 +218,88 @@ impl Writer<'_, '_, '_> {
         }
         let key = Ident::new("lagrangian", self.span);
         self.model.lagrangian = Some((key, self.expr(&lagrangian.render())));
+    }
+
+    /// With `ground`, each point of the links' `<collision>` shapes that can touch the ground
+    /// `z = 0` as a unilateral constraint, its height above the ground (less the radius of a
+    /// sphere or capsule about it): a sphere's centre, a capsule's two ends, a box's eight
+    /// corners. A cylinder's rim and a mesh are refused with their line.
+    fn ground_contacts(&mut self, robot: &Robot, links: &[String], frames: &[Frame]) {
+        let Some((key, restitution)) = self.model.ground.clone() else { return };
+        let restitution = restitution.unwrap_or_else(|| self.expr("0.0"));
+        let mut touching = false;
+        for ((link, name), frame) in robot.links.iter().zip(links).zip(frames) {
+            let mut points = Vec::new();
+            for collision in &link.collisions {
+                let shape = &collision.shape;
+                let at = |local: [f64; 3]| -> [f64; 3] {
+                    std::array::from_fn(|i| {
+                        shape.xyz[i] + (0..3).map(|j| shape.rotation[i][j] * local[j]).sum::<f64>()
+                    })
+                };
+                match shape.geometry {
+                    read::Geometry::Sphere(r) => points.push((at([0.0; 3]), r)),
+                    read::Geometry::Capsule { radius, length } => {
+                        points.push((at([0.0, 0.0, length / 2.0]), radius));
+                        points.push((at([0.0, 0.0, -length / 2.0]), radius));
+                    }
+                    read::Geometry::Box([a, b, c]) => {
+                        for corner in 0..8 {
+                            let sign = |bit: usize| if corner >> bit & 1 == 0 { -0.5 } else { 0.5 };
+                            points.push((at([sign(0) * a, sign(1) * b, sign(2) * c]), 0.0));
+                        }
+                    }
+                    read::Geometry::Cylinder { .. } | read::Geometry::Mesh(_) => {
+                        let why = match &shape.geometry {
+                            read::Geometry::Mesh(file) => {
+                                format!("a collision mesh (`{file}`) cannot touch the `ground`: its file is not read")
+                            }
+                            _ => "a collision cylinder cannot touch the `ground`: the height of its lowest point \
+                                  has no derivative where it stands on a face"
+                                .to_owned(),
+                        };
+                        let message = format!(
+                            "{}, line {}, column {}: link `{}`: {why}; a shape that touches the ground is a \
+                             sphere, a capsule or a box",
+                            self.path.value(),
+                            collision.line,
+                            collision.column,
+                            link.name
+                        );
+                        self.cx.error_spanned_by(self.path, message);
+                        self.model.incomplete = true;
+                        return;
+                    }
+                }
+            }
+            for (k, (point, radius)) in points.iter().enumerate() {
+                let mut height = Poly::atom(&frame.origin[2]);
+                for (r, x) in frame.rotation[2].iter().zip(point) {
+                    height.add(&Poly::atom(r), *x);
+                }
+                height.add(&Poly::num(1.0), -radius);
+                let contact = if points.len() == 1 {
+                    format!("{name}_ground")
+                } else {
+                    format!("{name}_ground{}", k + 1)
+                };
+                self.model.unilaterals.push(UnilateralDecl {
+                    name: Ident::new(&contact, self.span),
+                    restitution: Some(restitution.clone()),
+                    expr: self.expr(&height.render()),
+                });
+                touching = true;
+            }
+        }
+        if !touching {
+            self.cx.error_spanned_by(
+                &key,
+                format!(
+                    "`ground`: no link of `{}` has a `<collision>` shape to touch it with",
+                    self.path.value()
+                ),
+            );
+        }
     }
 
     /// `gravity = [gx, gy, gz]` as three definitions, `None` inside for `(0, 0, −9.81)`; the
@@ -713,6 +805,43 @@ mod tests {
         };
         let out = crate::lagrange_dirac(&input).to_string();
         assert!(out.contains("cannot read the URDF `no/such.urdf`"), "{out}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// `ground` refuses a collision cylinder at its line and a robot with nothing to touch it
+    /// with, and writes a box's eight corners as contacts.
+    #[test]
+    fn the_ground_is_touched_by_spheres_capsules_and_boxes_only() {
+        let dir = std::env::temp_dir().join(format!("dirac-ground-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        let expand = |name: &str, link: &str| {
+            let file = dir.join(name);
+            let inertial = "<inertial><mass value=\"1\"/><inertia ixx=\"1\" iyy=\"1\" izz=\"1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial>";
+            let text = format!("<robot name=\"r\">\n<link name=\"a\">{inertial}\n{link}\n</link>\n</robot>");
+            std::fs::write(&file, text).expect("written");
+            let path = file.display().to_string();
+            let input: syn::DeriveInput = syn::parse_quote! {
+                #[dirac(urdf = #path, floating, ground)]
+                struct Robot;
+            };
+            crate::lagrange_dirac(&input).to_string()
+        };
+        let out = expand(
+            "cylinder.urdf",
+            "<collision><geometry><cylinder radius=\"1\" length=\"1\"/></geometry></collision>",
+        );
+        assert!(
+            out.contains("line 3, column 1: link `a`: a collision cylinder cannot touch the `ground`"),
+            "{out}"
+        );
+        let out = expand("none.urdf", "");
+        assert!(out.contains("no link of"), "{out}");
+        let out = expand("box.urdf", "<collision><geometry><box size=\"1 1 1\"/></geometry></collision>");
+        assert!(!out.contains("compile_error"), "{}", &out[..out.len().min(3000)]);
+        for k in 1..=8 {
+            assert!(out.contains(&format!("\"a_ground{k}\"")), "corner {k}");
+        }
+        assert!(!out.contains("\"a_ground9\""));
         std::fs::remove_dir_all(&dir).ok();
     }
 

@@ -29,6 +29,15 @@ pub struct Link {
     pub shown: bool,
     /// Its `<visual>` shapes, as a view draws them.
     pub visuals: Vec<Shape>,
+    /// Its `<collision>` shapes, where it touches the ground.
+    pub collisions: Vec<Collision>,
+}
+
+/// A `<collision>`: its shape (no colour), and where it is written, for errors about it.
+pub struct Collision {
+    pub shape: Shape,
+    pub line: u32,
+    pub column: u32,
 }
 
 /// A `<visual>`: its geometry, its frame in the link's, and its colour.
@@ -298,6 +307,7 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
             inertia: [[0.0; 3]; 3],
             shown: false,
             visuals: Vec::new(),
+            collisions: Vec::new(),
         };
         robot.links.push(world);
         robot.joints.push(Joint::moving(FLOATING_ROOT, Kind::Floating, 0, [0.0; 3]));
@@ -316,6 +326,7 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
                 inertia: [[0.0; 3]; 3],
                 shown: false,
                 visuals: Vec::new(),
+                collisions: Vec::new(),
             };
             let mut x = Joint::moving(&format!("{}_x", joint.name), Kind::Prismatic, parent, along);
             (x.xyz, x.rotation, x.damping) = (joint.xyz, joint.rotation, joint.damping);
@@ -449,9 +460,16 @@ fn read_link(
     let name = required(node, "name", at)?.to_owned();
     let mut visuals = Vec::new();
     for visual in node.children().filter(|c| c.is_element() && c.tag_name().name() == "visual") {
-        visuals.push(read_visual(visual, &name, materials, at)?);
+        visuals.push(read_shape(visual, &name, materials, at)?);
     }
-    let mut link = Link { name, mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: true, visuals };
+    let mut collisions = Vec::new();
+    for collision in node.children().filter(|c| c.is_element() && c.tag_name().name() == "collision") {
+        let shape = read_shape(collision, &name, materials, at)?;
+        let Error { line, column, .. } = at(collision, String::new());
+        collisions.push(Collision { shape, line, column });
+    }
+    let mut link =
+        Link { name, mass: 0.0, com: [0.0; 3], inertia: [[0.0; 3]; 3], shown: true, visuals, collisions };
     let Some(inertial) = element(node, "inertial") else { return Ok(link) };
     let (com, rotation) = read_origin(inertial, at)?;
     let mass_node = element(inertial, "mass").ok_or_else(|| {
@@ -507,16 +525,18 @@ fn read_link(
     Ok(link)
 }
 
-/// A `<visual>` of link `link`: its origin, its geometry and its colour.
-fn read_visual(
+/// A `<visual>` or `<collision>` of link `link`: its origin, its geometry and its colour (a
+/// visual's).
+fn read_shape(
     node: Node<'_, '_>,
     link: &str,
     materials: &HashMap<String, [f64; 4]>,
     at: &impl Fn(Node<'_, '_>, String) -> Error,
 ) -> Result<Shape, Error> {
     let (xyz, rotation) = read_origin(node, at)?;
-    let geometry = element(node, "geometry")
-        .ok_or_else(|| at(node, format!("link `{link}`: `<visual>` has no `<geometry>`")))?;
+    let geometry = element(node, "geometry").ok_or_else(|| {
+        at(node, format!("link `{link}`: `<{}>` has no `<geometry>`", node.tag_name().name()))
+    })?;
     let Some(shape) = geometry.children().find(Node::is_element) else {
         return Err(at(geometry, format!("link `{link}`: `<geometry>` holds no shape")));
     };
@@ -942,6 +962,25 @@ mod tests {
         assert_eq!(visuals[1].color, None);
         assert!(matches!(&visuals[2].geometry, Geometry::Mesh(file) if file == "package://arm/base.stl"));
         assert_eq!(visuals[2].color, Some([1.0, 0.0, 0.0, 1.0]));
+    }
+
+    #[test]
+    fn collisions_are_read_with_their_frames_and_lines() {
+        let robot = robot(
+            "<link name=\"foot\">\n<visual><geometry><box size=\"1 1 1\"/></geometry></visual>\n\
+             <collision><origin xyz=\"0 0 -0.1\"/><geometry><sphere radius=\"0.05\"/></geometry></collision>\n\
+             <collision><geometry><mesh filename=\"foot.stl\"/></geometry></collision>\n</link>",
+        )
+        .expect("a robot");
+        let collisions = &robot.links[0].collisions;
+        assert_eq!(collisions.len(), 2);
+        assert!(matches!(collisions[0].shape.geometry, Geometry::Sphere(r) if r == 0.05));
+        assert_eq!(collisions[0].shape.xyz, [0.0, 0.0, -0.1]);
+        assert_eq!((collisions[0].line, collisions[1].line), (4, 5));
+        assert!(matches!(&collisions[1].shape.geometry, Geometry::Mesh(file) if file == "foot.stl"));
+        let e = refused("<link name=\"foot\">\n<collision/></link>");
+        assert!(e.message.contains("link `foot`: `<collision>` has no `<geometry>`"), "{e}");
+        assert_eq!(e.line, 3);
     }
 
     #[test]
