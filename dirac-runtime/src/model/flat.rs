@@ -65,8 +65,8 @@ where
 }
 
 /// What a model whose second derivatives are large emits as its
-/// [`LagrangeDirac::l_qq`](crate::model::LagrangeDirac::l_qq), so that they are compiled once,
-/// in its [`LagrangeDirac::jacobian_blocks`](crate::model::LagrangeDirac::jacobian_blocks):
+/// [`LagrangeDirac::l_qq`], so that they are compiled once,
+/// in its [`LagrangeDirac::jacobian_blocks`]:
 /// `L_qq = ∂ṗ/∂q − F_q` at `λ = 0`, where the constraint forces' part of `∂ṗ/∂q` vanishes.
 pub fn l_qq_from_blocks<M: LagrangeDirac>(model: &M, t: f64, q: &VecQ<M>, v: &VecQ<M>, out: &mut MatQQ<M>)
 where
@@ -85,7 +85,7 @@ where
 
 /// What a model whose second derivatives are large emits as its
 /// [`SparseJacobian::jacobian_csc`]: the entries of its pattern read from the flat Jacobian
-/// that [`LagrangeDirac::jacobian`](crate::model::LagrangeDirac::jacobian) assembles from the
+/// that [`LagrangeDirac::jacobian`] assembles from the
 /// blocks (on the heap: it is not called while stepping).
 ///
 /// # Panics
