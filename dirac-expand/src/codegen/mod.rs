@@ -400,8 +400,11 @@ impl Emitter<'_> {
             for (row, entries) in jac.iter().enumerate() {
                 let value = entries[col];
                 if !g.is_zero(value) {
-                    let k = Literal::usize_unsuffixed(rows.len());
-                    assigns.push(Assign::set(quote! { out[#k] }, value));
+                    // A compact model reads its values from the blocks: only the pattern is kept.
+                    if !compact {
+                        let k = Literal::usize_unsuffixed(rows.len());
+                        assigns.push(Assign::set(quote! { out[#k] }, value));
+                    }
                     rows.push(row);
                 }
             }

@@ -300,16 +300,7 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
     let mut robot = Robot { links: Vec::new(), joints: Vec::new() };
     let mut index = vec![usize::MAX; slots.len()];
     if float_root {
-        let world = Link {
-            name: "world".to_owned(),
-            mass: 0.0,
-            com: [0.0; 3],
-            inertia: [[0.0; 3]; 3],
-            shown: false,
-            visuals: Vec::new(),
-            collisions: Vec::new(),
-        };
-        robot.links.push(world);
+        robot.links.push(Link::frame("world".to_owned()));
         robot.joints.push(Joint::moving(FLOATING_ROOT, Kind::Floating, 0, [0.0; 3]));
     }
     index[root_link] = robot.links.len();
@@ -319,15 +310,7 @@ pub fn parse(text: &str, float_root: bool) -> Result<Robot, Error> {
         let moved = slots[child].take().expect("each link once");
         if joint.kind == Kind::Planar {
             let [along, across] = in_plane(&joint.axis);
-            let frame = |suffix: &str| Link {
-                name: format!("__{}_{suffix}", joint.name),
-                mass: 0.0,
-                com: [0.0; 3],
-                inertia: [[0.0; 3]; 3],
-                shown: false,
-                visuals: Vec::new(),
-                collisions: Vec::new(),
-            };
+            let frame = |suffix: &str| Link::frame(format!("__{}_{suffix}", joint.name));
             let mut x = Joint::moving(&format!("{}_x", joint.name), Kind::Prismatic, parent, along);
             (x.xyz, x.rotation, x.damping) = (joint.xyz, joint.rotation, joint.damping);
             robot.joints.push(x);
@@ -411,6 +394,22 @@ impl Robot {
             }
         }
         mass
+    }
+}
+
+impl Link {
+    /// A frame the reader adds (the world a floating robot moves in, the frames between a planar
+    /// joint's motions): no mass, no shapes, its pose no output.
+    fn frame(name: String) -> Link {
+        Link {
+            name,
+            mass: 0.0,
+            com: [0.0; 3],
+            inertia: [[0.0; 3]; 3],
+            shown: false,
+            visuals: Vec::new(),
+            collisions: Vec::new(),
+        }
     }
 }
 
