@@ -37,8 +37,11 @@ pub struct Blocks {
     pub a: Matrix,
     /// `A(q, t) v + b(q, t)`: the constraints at velocity level, zero on solutions.
     pub a_v: Vec<Id>,
-    /// `A(q)ᵀ λ`.
+    /// `A(q)ᵀ λ`, and the forces that grow with the multipliers ([`SymModel::slip`]): `Bᵀ λ`.
     pub at_lambda: Vec<Id>,
+    /// `B − A`, `m × n`: what the forces a row's multiplier drives add to its one-form (empty
+    /// unless the model has [`SymModel::slip`] forces).
+    pub slip_rows: Matrix,
     /// `∂(A v + b)/∂q`.
     pub dav_dq: Matrix,
     /// `∂(Aᵀ λ)/∂q`.
@@ -155,6 +158,7 @@ impl Blocks {
         let (n, rows) = (m.n(), m.m());
         let (q, v, p, lambda) = (m.q.clone(), m.v.clone(), m.p.clone(), m.lambda.clone());
         let (a, force, phi, lagrangian) = (m.a.clone(), m.force.clone(), m.phi.clone(), m.lagrangian);
+        let slip = m.slip.clone();
         let rates = m.b.clone();
         let time = m.symbols.declare(&mut m.graph, Sym::Time);
         let g = &mut m.graph;
@@ -163,9 +167,18 @@ impl Blocks {
         let at_lambda: Vec<Id> = (0..n)
             .map(|i| {
                 let column: Vec<Id> = a.iter().map(|row| row[i]).collect();
-                dot(g, &column, &lambda)
+                let at_lambda = dot(g, &column, &lambda);
+                match slip.get(i) {
+                    Some(&s) => g.add2(at_lambda, s),
+                    None => at_lambda,
+                }
             })
             .collect();
+        let slip_rows = if slip.is_empty() {
+            Vec::new()
+        } else {
+            lambda.iter().map(|&l| slip.iter().map(|&s| g.diff(s, l)).collect()).collect()
+        };
         let momentum_rate: Vec<Id> = (0..n).map(|i| g.add(&[dl_dq[i], force[i], at_lambda[i]])).collect();
         // The velocity block of the condensed matrix, entry by entry.
         let (mut l_vv, mut l_vq) = (zeros(g, n, n), zeros(g, n, n));
@@ -294,6 +307,7 @@ impl Blocks {
             a,
             a_v,
             at_lambda,
+            slip_rows,
             dav_dq,
             datl_dq,
             phi,

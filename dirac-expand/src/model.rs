@@ -40,6 +40,10 @@ pub struct SymModel {
     pub b: Vec<Id>,
     /// `φ(q, t)`, one per holonomic row.
     pub phi: Vec<Id>,
+    /// The forces that grow with constraint forces, one per coordinate (empty without them): a
+    /// friction law's slip whose kinetic force names a row, `−μ λ_n s ∂g/∂v`, linear in the
+    /// multipliers.
+    pub slip: Vec<Id>,
     pub constraints: Vec<RowName>,
     /// `define(name) = …`: each name with its expression, in order (the symbol
     /// [`Sym::Define`] `k` is bound to the expression).
@@ -102,6 +106,7 @@ impl SymModel {
             a: Vec::new(),
             b: Vec::new(),
             phi: Vec::new(),
+            slip: Vec::new(),
             constraints: Vec::new(),
             defines: Vec::new(),
             outputs: Vec::new(),
@@ -137,13 +142,14 @@ impl SymModel {
             lw.lower(e, Context { what, ..all }).map(|r| (e, r))
         });
         let dissipated_power = dissipation.and_then(|(e, r)| sm.dissipate(cx, e, r));
-        sm.slip_forces(cx, model, &scope);
         sm.lower_constraints(cx, model, &scope);
-        // Outputs may also name a constraint, standing for its multiplier.
+        // Outputs, events and a friction law's force may also name a constraint, standing for
+        // its multiplier.
         let mut with_multipliers = scope.clone();
         for (row, &lambda) in sm.constraints.iter().zip(&sm.lambda) {
             with_multipliers.declare(row.name.clone(), lambda, Role::Multiplier);
         }
+        sm.slip_forces(cx, model, &with_multipliers);
         for o in &model.outputs {
             let what = format!("the output `{}`", o.name);
             let lowered = sm.lowerer(cx, &with_multipliers).lower(&o.expr, Context { what: &what, ..all });
@@ -254,7 +260,9 @@ impl SymModel {
 
     /// Adds the kinetic force of each friction law, `−f_k s ∂g/∂v` (`s` its mode: ±1 slipping
     /// to the side of `g`'s sign, 0 stuck), and checks that every law's `g` depends on a
-    /// velocity, as its row, a velocity constraint, needs.
+    /// velocity, as its row, a velocity constraint, needs. A kinetic force that names rows
+    /// (`mu * floor`: Coulomb's law on the contact force of `floor`) must be linear in their
+    /// multipliers; its push goes to [`SymModel::slip`], apart from the forces of the state.
     fn slip_forces(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) {
         fn all(what: &str) -> Context<'_> {
             Context { what, velocities: true, switch_on_velocities: true }
@@ -278,15 +286,42 @@ impl SymModel {
             let (LawKind::Friction, Some(kinetic)) = (law.kind, &law.kinetic) else { continue };
             let what = format!("the kinetic force of `{}`", law.name);
             let Some(f) = self.lowerer(cx, scope).lower(kinetic, all(&what)) else { continue };
+            let on_rows = self
+                .lambda
+                .iter()
+                .any(|&l| self.graph.depends_on(f, self.graph.as_sym(l).expect("a symbol")));
+            if on_rows && !self.linear_in_multipliers(f) {
+                cx.error_spanned_by(
+                    kinetic,
+                    format!(
+                        "{what} must be linear in the constraint forces it names, as Coulomb's law is: \
+                         `mu * floor` (the friction coefficient times the contact force of `floor`)"
+                    ),
+                );
+                continue;
+            }
             let mode = law.mode();
             let Some(i) = self.coordinates.iter().position(|c| *c == mode) else { continue };
             let s = self.q[i];
             let push = self.graph.mul2(f, s);
+            if on_rows && self.slip.is_empty() {
+                self.slip = vec![self.graph.num(0.0); self.n()];
+            }
+            let forces = if on_rows { &mut self.slip } else { &mut self.force };
             for (j, d) in gradient.into_iter().enumerate() {
                 let term = self.graph.mul2(push, d);
-                self.force[j] = self.graph.sub(self.force[j], term);
+                forces[j] = self.graph.sub(forces[j], term);
             }
         }
+    }
+
+    /// Whether `f` is linear in the multipliers: none of its derivatives by one depends on any.
+    fn linear_in_multipliers(&mut self, f: Id) -> bool {
+        let syms: Vec<u32> = self.lambda.iter().map(|&l| self.graph.as_sym(l).expect("a symbol")).collect();
+        self.lambda.clone().into_iter().all(|l| {
+            let d = self.graph.diff(f, l);
+            syms.iter().all(|&s| !self.graph.depends_on(d, s))
+        })
     }
 
     /// Lowers each `unilateral(name, restitution = e) = φ`: `φ` of the coordinates and time,

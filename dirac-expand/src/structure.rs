@@ -27,7 +27,8 @@ pub fn condensed_pattern(graph: &Graph, b: &Blocks) -> Vec<bool> {
         for j in 0..n {
             let a = nonzero(b.a[r][j]);
             pattern[(n + r) * k + j] = a || nonzero(b.dav_dq[r][j]);
-            pattern[j * k + n + r] = a;
+            let slip = b.slip_rows.get(r).is_some_and(|row| nonzero(row[j]));
+            pattern[j * k + n + r] = a || slip;
         }
     }
     pattern

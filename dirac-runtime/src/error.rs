@@ -264,6 +264,9 @@ pub enum Capability {
     Sensitivities,
     /// Inputs set within the steps from time and state (a drive).
     Drive,
+    /// Friction whose force grows with a contact force (`kinetic = mu * floor`), for which
+    /// the balance's constraint forces are not the rows' one-forms.
+    ContactFriction,
 }
 
 impl core::fmt::Display for Capability {
@@ -275,6 +278,10 @@ impl core::fmt::Display for Capability {
             Capability::Drive => {
                 "inputs set within its steps (a drive): Radau drives them (`Radau::drive`); every method \
                  sets them between steps (`set_input`, `solve_sampled`)"
+            }
+            Capability::ContactFriction => {
+                "friction that pushes with a contact force (`kinetic = mu * floor`): Radau and Explicit \
+                 step it, without sensitivities, adjoints or linearisation"
             }
         })
     }

@@ -301,6 +301,39 @@ fn watching_friction_laws_does_not_allocate() {
     }
 }
 
+/// Friction on a contact force (`kinetic = mu * floor`): the steps of Radau and Explicit read
+/// the slip rows `B − A` beside the constraint rows, and the stop is located, without
+/// allocating. The block slides on the flat from 3 m/s and stops at `v0 / (μ g)` = 0.76 s.
+#[test]
+fn stepping_friction_on_a_contact_force_does_not_allocate() {
+    let block = SlopeBlock { m: 2.0, g: 9.81, slope: 0.0, mu: 0.4, push: 0.0 };
+    let mut v = VecQ::<SlopeBlock>::zeros();
+    v[SlopeBlock::X.index()] = 3.0;
+    let start = dirac::consistent_state(&block, 0.0, &VecQ::<SlopeBlock>::zeros(), &v, Default::default())
+        .expect("slipping");
+    fn run<I: Integrator<SlopeBlock>>(mut integrator: I, start: &State<SlopeBlock>) -> (usize, Option<f64>) {
+        let mut events = dirac::Events::new().switches();
+        integrator.start(0.0, start, 1.0).expect("starts");
+        events.begin(integrator.model(), 0.0, start).expect("begins");
+        let before = allocations();
+        while !integrator.finished() {
+            integrator.step().expect("steps");
+            if let Some(event) = events.locate(&mut integrator).expect("locates") {
+                assert_eq!(events.name(&event), "slide_stops");
+                return (allocations() - before, Some(event.t));
+            }
+        }
+        (allocations() - before, None)
+    }
+    let radau = Radau::new(&block, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let explicit = Explicit::new(&block, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    for (name, (allocated, stops)) in [("Radau", run(radau, &start)), ("Explicit", run(explicit, &start))] {
+        assert_eq!(allocated, 0, "{name}");
+        let stops = stops.expect("the slip stops");
+        assert!((stops - 3.0 / (0.4 * 9.81)).abs() < 1e-6, "{name}: stops at {stops}");
+    }
+}
+
 /// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
 /// sparse LU, under both integrators.
 /// Steps the explicit integrator 200 times after 5 warm-up steps, reading the state within

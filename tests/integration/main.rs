@@ -12,6 +12,7 @@ mod authoring;
 mod blocks;
 mod bodies;
 mod components;
+mod contact_friction;
 mod contacts;
 mod control;
 mod counters;

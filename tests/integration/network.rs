@@ -352,7 +352,7 @@ fn connection_errors_name_the_parts() {
     assert!(err(b.add("R.2", Resistor { r: 2.0 })).starts_with("part name `R.2`: `.` is not allowed"));
     assert_eq!(
         err(b.add("S1", Stop { gap: 0.1, restitution: 0.5 })),
-        "part `S1` has unilateral constraints; a run-time network does not resolve impacts yet"
+        "part `S1` has unilateral constraints, which a run-time network does not resolve yet"
     );
     assert_eq!(err(b.one_form("k", &[("R1.p", 1.0), ("R1.p", 2.0)])), "one-form `k`: `R1.p` appears twice");
     assert_eq!(

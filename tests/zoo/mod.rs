@@ -962,3 +962,40 @@ pub struct FrictionBelt {
     pub mu_s: f64,
     pub mu_k: f64,
 }
+
+/// A block of mass `m` on a slope of angle `slope`, `x` down the slope and `y` off it: the row
+/// `floor` holds it on the slope (its multiplier the contact force) and Coulomb friction on
+/// that force, `μ λ_floor`, resists its slip. A force `push t` along the slope grows with time.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) + m * g * (x * sin(slope) - y * cos(slope)))]
+#[dirac(force(x) = push * t)]
+#[dirac(holonomic(floor) = y)]
+#[dirac(friction(slide, kinetic = mu * floor) = vx)]
+pub struct SlopeBlock {
+    pub m: f64,
+    pub g: f64,
+    pub slope: f64,
+    pub mu: f64,
+    pub push: f64,
+}
+
+/// A ball of mass `m` and radius `r` (moment of inertia `2/5 m r²`) on a slope of angle
+/// `slope`, `x` down the slope, `y` off it, `phi` its turn: the row `floor` holds it on the
+/// slope and Coulomb friction on the contact force, `μ λ_floor`, acts where it touches, whose
+/// velocity is `vx − r w`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy, phi => w))]
+#[dirac(
+    lagrangian = 0.5 * m * (vx * vx + vy * vy) + 0.2 * m * r * r * w * w
+        + m * g * (x * sin(slope) - y * cos(slope))
+)]
+#[dirac(holonomic(floor) = y)]
+#[dirac(friction(touch, kinetic = mu * floor) = vx - r * w)]
+pub struct SlopeBall {
+    pub m: f64,
+    pub g: f64,
+    pub r: f64,
+    pub slope: f64,
+    pub mu: f64,
+}

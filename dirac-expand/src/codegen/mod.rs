@@ -15,7 +15,7 @@ use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
     EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
     L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
-    RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SOLVED_VELOCITIES, Signature, UNILATERAL,
+    RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SLIP_ROWS, SOLVED_VELOCITIES, Signature, UNILATERAL,
     UNILATERAL_DERIVATIVES, UNILATERAL_DQ, rt,
 };
 use crate::blocks::Blocks;
@@ -107,7 +107,7 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
     // A model whose second derivatives are large compiles them once more than it needs, in
     // `jacobian_blocks` and `l_vq` (which Explicit reads at each stage): its `l_qq`, flat
     // `jacobian` and `jacobian_csc`, which no step calls, read them from the blocks.
-    let compact = counts.jacobian_blocks > COMPACT_OPERATIONS;
+    let compact = counts.jacobian_blocks > COMPACT_OPERATIONS && b.slip_rows.is_empty();
     let table: [(Signature, Vec<Assign>); 21] = [
         (LAGRANGIAN, vec![Assign::set(quote! { value }, b.lagrangian)]),
         (DL_DQ, vector(&out, &b.dl_dq)),
@@ -144,6 +144,10 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
                 #p::l_qq_from_blocks(self, t, q, v, out)
             }
         });
+    }
+    if !b.slip_rows.is_empty() {
+        methods.extend(quote! { const NON_ASSOCIATED: ::core::primitive::bool = true; });
+        methods.extend(e.method(&SLIP_ROWS, &matrix(g, &out, &b.slip_rows), TokenStream::new()));
     }
     if !b.outputs.is_empty() {
         methods.extend(e.sized(&OUTPUTS, &b.outputs));

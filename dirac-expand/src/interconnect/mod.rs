@@ -267,6 +267,11 @@ fn subsystem_asserts(composite: &Composite<'_>) -> TokenStream {
                     fn subsystem<M: #p::LagrangeDirac>() where #p::DefaultAllocator: #p::Storage<M> {}
                     subsystem::<#ty>();
                 };
+                const _: () = ::core::assert!(
+                    !<#ty as #p::LagrangeDirac>::NON_ASSOCIATED,
+                    "a subsystem whose friction pushes with a contact force (`kinetic = mu * floor`) is \
+                     simulated on its own, not interconnected"
+                );
             }
         })
         .collect()

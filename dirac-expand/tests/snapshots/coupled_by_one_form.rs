@@ -6,6 +6,11 @@ const _: () = {
         {}
         subsystem::<Wheel>();
     };
+    const _: () = ::core::assert!(
+        ! < Wheel as ::dirac::__private::LagrangeDirac > ::NON_ASSOCIATED,
+        "a subsystem whose friction pushes with a contact force (`kinetic = mu * floor`) is \
+                     simulated on its own, not interconnected"
+    );
     const _: fn() = || {
         fn subsystem<M: ::dirac::__private::LagrangeDirac>()
         where
@@ -13,6 +18,11 @@ const _: () = {
         {}
         subsystem::<Cart>();
     };
+    const _: () = ::core::assert!(
+        ! < Cart as ::dirac::__private::LagrangeDirac > ::NON_ASSOCIATED,
+        "a subsystem whose friction pushes with a contact force (`kinetic = mu * floor`) is \
+                     simulated on its own, not interconnected"
+    );
     const __NQS: [::core::primitive::usize; 2] = [
         <Wheel as ::dirac::__private::Fixed>::NQ,
         <Cart as ::dirac::__private::Fixed>::NQ,

@@ -58,11 +58,12 @@ fn assemble<M: Dimensions, A: Algebra<M>, T: Scalar>(
 {
     let one = T::one();
     let top = [(sigma, &jac.l_vv), (one, &jac.l_vq), (-one, &jac.dpdot_dv), (-one / sigma, &jac.dpdot_dq)];
+    let right = [(-sigma, &jac.a), (-sigma, &jac.slip)];
     saddle.assemble(&SaddleTerms {
         top: &top,
         top_transposed: &[],
         identity: T::zero(),
-        right: &[(-sigma, &jac.a)],
+        right: if jac.non_associated { &right } else { &right[..1] },
         bottom: &[(sigma, sigma, &jac.a), (one, one, &jac.dav_dq)],
         corner: (T::zero(), T::zero()),
     });

@@ -322,6 +322,14 @@ fn condensed_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
             s[(j, n + k)] = -sigma.scale(jac.a[(k, j)]);
         }
     }
+    // The multipliers' columns of a balance on `Bᵀλ`.
+    if jac.non_associated {
+        for j in 0..n {
+            for k in 0..m {
+                s[(j, n + k)] -= sigma.scale(jac.slip[(k, j)]);
+            }
+        }
+    }
     for k in 0..m {
         for l in 0..m {
             s[(n + k, n + l)] = T::zero();

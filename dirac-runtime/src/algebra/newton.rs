@@ -71,7 +71,8 @@ fn full_matrix<M: Dimensions, T: ComplexField<RealField = f64> + Copy>(
             s[(p + i, v + j)] = -r(jac.dpdot_dv[(i, j)]);
         }
         for k in 0..m {
-            s[(p + i, lambda + k)] = -r(jac.a[(k, i)]);
+            let force = if jac.non_associated { jac.a[(k, i)] + jac.slip[(k, i)] } else { jac.a[(k, i)] };
+            s[(p + i, lambda + k)] = -r(force);
             s[(lambda + k, q + i)] = -r(jac.dav_dq[(k, i)]);
             s[(lambda + k, v + i)] = -r(jac.a[(k, i)]);
         }

@@ -177,6 +177,13 @@ where
     pub a: A::Cq,
     /// `∂(A(q, t) v + b(q, t))/∂q`.
     pub dav_dq: A::Cq,
+    /// `B − A` ([`LagrangeDirac::slip_rows`](crate::LagrangeDirac::slip_rows)), read where
+    /// `non_associated`: the momentum balance's constraint forces are then `Bᵀλ`, and the
+    /// multipliers' column of the Jacobian `Bᵀ`.
+    pub slip: A::Cq,
+    /// Whether `slip` is part of the Jacobian (set by the integrator for a model that is
+    /// [`NON_ASSOCIATED`](crate::LagrangeDirac::NON_ASSOCIATED)).
+    pub non_associated: bool,
 }
 
 impl<M: Dimensions, A: Algebra<M>> JacobianBlocks<M, A>
@@ -193,6 +200,8 @@ where
             l_vv: A::zeros_qq(shape),
             a: A::zeros_cq(shape),
             dav_dq: A::zeros_cq(shape),
+            slip: A::zeros_cq(shape),
+            non_associated: false,
         }
     }
 
@@ -209,6 +218,8 @@ where
         .all(|(a, b)| A::qq_values(a) == A::qq_values(b))
             && A::cq_values(&self.a) == A::cq_values(&other.a)
             && A::cq_values(&self.dav_dq) == A::cq_values(&other.dav_dq)
+            && self.non_associated == other.non_associated
+            && (!self.non_associated || A::cq_values(&self.slip) == A::cq_values(&other.slip))
     }
 
     /// Copies every block of `other` into these, without allocating.
@@ -223,5 +234,9 @@ where
         }
         A::cq_values_mut(&mut self.a).copy_from_slice(A::cq_values(&other.a));
         A::cq_values_mut(&mut self.dav_dq).copy_from_slice(A::cq_values(&other.dav_dq));
+        self.non_associated = other.non_associated;
+        if other.non_associated {
+            A::cq_values_mut(&mut self.slip).copy_from_slice(A::cq_values(&other.slip));
+        }
     }
 }

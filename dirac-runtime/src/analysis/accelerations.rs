@@ -81,6 +81,9 @@ where
     lvq: MatQQ<M>,
     a: MatCQ<M>,
     dav: MatCQ<M>,
+    /// `B − A` of a [`LagrangeDirac::NON_ASSOCIATED`] model, and of its factored system.
+    slip: MatCQ<M>,
+    factored_slip: MatCQ<M>,
     /// The constraint rows and `L_vv` of the factored system, whose factorisation is kept
     /// while they stay the same (every evaluation of a model with a constant mass matrix and
     /// constant constraint rows, such as a circuit of linear parts).
@@ -136,6 +139,8 @@ where
             lvq: M::Algebra::zeros_qq(&shape),
             a_projected: a.clone(),
             factored_a: a.clone(),
+            slip: a.clone(),
+            factored_slip: a.clone(),
             a,
             dav: M::Algebra::zeros_cq(&shape),
             factored: false,
@@ -213,7 +218,8 @@ where
     /// model.
     fn look_for_mass(&mut self, model: &M, t: f64, (q, v): (&VecQ<M>, &VecQ<M>)) {
         self.checked = true;
-        if !M::SEPARABLE {
+        // The shortcut's `A M⁻¹ Aᵀ` is symmetric; a balance on `Bᵀλ` is not.
+        if !M::SEPARABLE || M::NON_ASSOCIATED {
             return;
         }
         model.l_vv(t, q, v, &mut self.lvv);
@@ -279,11 +285,14 @@ where
         }
         // Constraint rows that depend on parameters alone are those of the factorisation held:
         // with no rates and no `∂(A v)/∂q`, the constraints' right-hand side is zero.
-        let constant = M::CONSTANT_CONSTRAINTS && self.factored;
+        let constant = M::CONSTANT_CONSTRAINTS && !M::NON_ASSOCIATED && self.factored;
         if m > 0 && constant {
             x[n..].fill(0.0);
         } else if m > 0 {
             model.constraint_matrix(t, q, &mut self.a);
+            if M::NON_ASSOCIATED {
+                model.slip_rows(t, q, v, &mut self.slip);
+            }
             model.dav_dq(t, q, v, &mut self.dav);
             model.dav_dt(t, q, v, &mut self.rate);
             for ((x, r), u) in x[n..].iter_mut().zip(self.rate.iter()).zip(self.input_rate.iter()) {
@@ -297,6 +306,8 @@ where
         let keep = self.factored
             && compare
             && (constant || M::Algebra::cq_values(&self.a) == M::Algebra::cq_values(&self.factored_a))
+            && (!M::NON_ASSOCIATED
+                || M::Algebra::cq_values(&self.slip) == M::Algebra::cq_values(&self.factored_slip))
             && (M::SEPARABLE
                 || M::Algebra::qq_values(&self.lvv) == M::Algebra::qq_values(&self.factored_lvv));
         if keep {
@@ -312,6 +323,10 @@ where
             if self.changed < 4 {
                 M::Algebra::cq_values_mut(&mut self.factored_a)
                     .copy_from_slice(M::Algebra::cq_values(&self.a));
+                if M::NON_ASSOCIATED {
+                    M::Algebra::cq_values_mut(&mut self.factored_slip)
+                        .copy_from_slice(M::Algebra::cq_values(&self.slip));
+                }
                 if self.schur.is_none() {
                     M::Algebra::qq_values_mut(&mut self.factored_lvv)
                         .copy_from_slice(M::Algebra::qq_values(&self.lvv));
@@ -378,13 +393,15 @@ where
         // regular and sets their accelerations to `Nᵀ` of the balance, zero once settled. Each
         // case assembles from a term list of constant length, so that its loops unroll (one
         // list of either length cost the 8-link pendulum 2% more instructions a solve).
-        let (right, bottom) = ([(-1.0, &self.a)], [(1.0, 1.0, &self.a)]);
+        let right = [(-1.0, &self.a), (-1.0, &self.slip)];
+        let right = if M::NON_ASSOCIATED { &right[..] } else { &right[..1] };
+        let bottom = [(1.0, 1.0, &self.a)];
         match &self.free {
             Some(free) => self.saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
                 top: &[(1.0, &self.lvv), (1.0, &free.projector)],
                 top_transposed: &[],
                 identity: 0.0,
-                right: &right,
+                right,
                 bottom: &bottom,
                 corner: (0.0, 0.0),
             }),
@@ -392,7 +409,7 @@ where
                 top: &[(1.0, &self.lvv)],
                 top_transposed: &[],
                 identity: 0.0,
-                right: &right,
+                right,
                 bottom: &bottom,
                 corner: (0.0, 0.0),
             }),

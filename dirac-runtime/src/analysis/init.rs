@@ -285,16 +285,28 @@ where
     non_finite_qq(model, t, "the mass matrix L_vv", &lvv)?;
     model.constraint_matrix(t, q, &mut a);
     non_finite_entry(model, t, "the constraint rows A(q)", M::Algebra::cq_values(&a), false)?;
+    // Friction that pushes with a contact force makes the balance's rows `B = A + (B − A)`:
+    // solved densely.
+    let saddle_path = saddle_path && !M::NON_ASSOCIATED;
     let lambda = if saddle_path && free > 0 {
         DVector::from_vec(init_saddle::free_multipliers(model, t, (q, v), (&top, &bottom))?)
     } else if saddle_path {
         DVector::from_vec(init_saddle::multipliers(model, t, (q, v), (&top, &bottom))?)
     } else {
+        let a = dense_cq::<M, M::Algebra>(&a, m, n);
+        let b = if M::NON_ASSOCIATED {
+            let mut slip = M::Algebra::zeros_cq(&shape);
+            model.slip_rows(t, q, v, &mut slip);
+            non_finite_entry(model, t, "the slip rows B − A", M::Algebra::cq_values(&slip), false)?;
+            Some(&a + dense_cq::<M, M::Algebra>(&slip, m, n))
+        } else {
+            None
+        };
         dense_multipliers(
             model,
             t,
             &dense_qq::<M, M::Algebra>(&lvv, n),
-            &dense_cq::<M, M::Algebra>(&a, m, n),
+            (&a, b.as_ref()),
             (&top, &bottom),
             free,
         )?
@@ -309,12 +321,13 @@ where
 /// λ from the dense saddle-point system, by a singular value decomposition that names the
 /// cause when it is singular. Its null space may hold the `free` directions of
 /// `ker L_vv ∩ ker A` in `v̇` (velocities the forces fix): they leave `λ` unique, and the
-/// minimal-norm solution takes it.
+/// minimal-norm solution takes it. The balance reads the constraint forces `Bᵀλ`, with `B`
+/// the second of `(a, b)` where friction pushes with a contact force, `A` otherwise.
 fn dense_multipliers<M: LagrangeDirac>(
     model: &M,
     t: f64,
     lvv: &DMatrix<f64>,
-    a: &DMatrix<f64>,
+    (a, b): (&DMatrix<f64>, Option<&DMatrix<f64>>),
     (top, bottom): (&[f64], &[f64]),
     free: usize,
 ) -> Result<DVector<f64>, SimError>
@@ -325,9 +338,11 @@ where
     // In the model's own units, so that a small inertia counts as inertia.
     let units = Units::of(lvv, a);
     let a_scaled = units.a(a);
+    let b = b.unwrap_or(a);
+    let b_scaled = units.a(b);
     let mut kkt = DMatrix::zeros(n + m, n + m);
     kkt.view_mut((0, 0), (n, n)).copy_from(&units.lvv(lvv));
-    kkt.view_mut((0, n), (n, m)).copy_from(&(-a_scaled.transpose()));
+    kkt.view_mut((0, n), (n, m)).copy_from(&(-b_scaled.transpose()));
     kkt.view_mut((n, 0), (m, n)).copy_from(&a_scaled);
     let mut rhs = DVector::zeros(n + m);
     for i in 0..n {
@@ -344,7 +359,7 @@ where
     let null = svd.singular_values.iter().filter(|&&x| x <= 1e-12 * largest).count();
     // Redundant rows (`ker Aᵀ`, in the rows' units) leave the multipliers' part along them
     // undetermined, as the free directions leave the accelerations'.
-    let redundant = if m == 0 { None } else { null_space(&a_scaled.transpose(), 1e-10) };
+    let redundant = if m == 0 { None } else { null_space(&b_scaled.transpose(), 1e-10) };
     // A row that is zero by itself (its one-form vanishes here) is undetermined, not redundant.
     let vanishing =
         redundant.as_ref().is_some_and(|z| z.row_iter().any(|row| row.norm_squared() > 1.0 - 1e-9));
@@ -357,10 +372,10 @@ where
     if dependent == 0 {
         return Ok(lambda);
     }
-    // The multipliers of least norm in the model's units with the same force `Aᵀ λ`: what the
+    // The multipliers of least norm in the model's units with the same force `Bᵀ λ`: what the
     // integrators' deflated factorisations keep (`algebra::lu::Deflation`).
-    let force = a.transpose() * &lambda;
-    let aligned = crate::analysis::diagnose::svd(&a.transpose()).ok_or_else(singular)?;
+    let force = b.transpose() * &lambda;
+    let aligned = crate::analysis::diagnose::svd(&b.transpose()).ok_or_else(singular)?;
     aligned.solve(&force, 1e-10 * aligned.singular_values.max()).map_err(|_| singular())
 }
 

@@ -35,7 +35,7 @@ use nalgebra::{DMatrix, DefaultAllocator, SVD};
 
 use crate::algebra::Algebra;
 use crate::analysis::diagnose::violated_equation;
-use crate::error::SimError;
+use crate::error::{Capability, SimError};
 use crate::model::blocks::{JacobianBlocks, ResidualBlocks};
 use crate::model::keys::Coordinate;
 use crate::model::state::State;
@@ -208,6 +208,9 @@ where
     DefaultAllocator: Storage<M>,
 {
     check_parameters(model)?;
+    if M::NON_ASSOCIATED {
+        return Err(SimError::Unsupported { method: "linearize", capability: Capability::ContactFriction });
+    }
     let sizes = model.sizes();
     let (n, m, nh) = (sizes.nq, sizes.nc, sizes.nh);
     let (nu, ny) = (model.input_names().len(), model.output_names().len());

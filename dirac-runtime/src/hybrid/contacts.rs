@@ -162,12 +162,19 @@ impl Contacts {
         let (mut lvv, mut a) = (M::Algebra::zeros_qq(&shape), M::Algebra::zeros_cq(&shape));
         model.l_vv(t, &state.q, &state.v, &mut lvv);
         model.constraint_matrix(t, &state.q, &mut a);
+        // The model's own rows push back with their one-forms, and with the friction their
+        // impulses drive where it slips (`B = A + (B − A)`).
+        let mut slip = M::Algebra::zeros_cq(&shape);
+        if M::NON_ASSOCIATED {
+            model.slip_rows(t, &state.q, &state.v, &mut slip);
+        }
+        let right = [(-1.0, &a), (-1.0, &slip)];
         let mut saddle = M::Algebra::saddle(&shape);
         saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
             top: &[(1.0, &lvv)],
             top_transposed: &[],
             identity: 0.0,
-            right: &[(-1.0, &a)],
+            right: if M::NON_ASSOCIATED { &right } else { &right[..1] },
             bottom: &[(1.0, 1.0, &a)],
             corner: (0.0, 0.0),
         });

@@ -29,7 +29,9 @@ where
 
     /// The power `⟨Aᵀλ, v⟩ = −⟨λ, b(q, t)⟩` that the constraints put into the model where
     /// they hold: zero unless a constraint prescribes a motion. On solutions
-    /// `dE/dt = ⟨F, v⟩ − ∂L/∂t + constraint_power`.
+    /// `dE/dt = ⟨F, v⟩ − ∂L/∂t + constraint_power`. Where friction pushes with a contact
+    /// force ([`LagrangeDirac::NON_ASSOCIATED`]), its power `⟨(B − A)ᵀλ, v⟩` adds to this:
+    /// a solution's constraint-power series holds both.
     fn constraint_power(&self, t: f64, q: &VecQ<Self>, lambda: &VecC<Self>) -> f64 {
         let mut b = self.sizes().zeros_c::<Self>();
         self.constraint_rate(t, q, &mut b);

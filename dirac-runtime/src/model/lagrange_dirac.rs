@@ -98,6 +98,11 @@ where
     /// between a resistor and an inductor): [`LagrangeDirac::solved_velocities`] gives them.
     /// Empty otherwise; integrators then solve that balance by Newton's method.
     const SOLVED_VELOCITIES: &'static [usize] = &[];
+    /// Whether some force grows with a constraint force (Coulomb friction `μ λ_n` on the
+    /// multiplier `λ_n` of a contact row, while it slips): the momentum balance then reads
+    /// `Bᵀλ` with `B = A +` [`LagrangeDirac::slip_rows`], not `Aᵀλ`. Decided when
+    /// the model compiles; `false` unless the derive emits `slip_rows`.
+    const NON_ASSOCIATED: bool = false;
     /// The sparsity pattern of the condensed Newton system and what to say about each unknown;
     /// interconnections combine their subsystems' to check themselves when they compile.
     const STRUCTURE: Structure;
@@ -133,6 +138,13 @@ where
     fn dav_dq(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatCQ<Self>);
     /// `∂(A(q, t)ᵀ λ)/∂q` (sparse write).
     fn datl_dq(&self, t: f64, q: &VecQ<Self>, lambda: &VecC<Self>, out: &mut MatQQ<Self>);
+    /// `B − A` at `(t, q, v)`: row `j` holds what the forces driven by multiplier `j` add to the
+    /// one-form of row `j` (for friction slipping on the contact force of row `j`, `−μ s ∂g/∂v`),
+    /// so that the constraint forces of the momentum balance are `Bᵀλ`. Zero (nothing written)
+    /// unless [`LagrangeDirac::NON_ASSOCIATED`] (sparse write).
+    fn slip_rows(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatCQ<Self>) {
+        let _ = (t, q, v, out);
+    }
     /// The holonomic constraint values `φ(q, t)`, zero on the constraint manifold.
     fn holonomic(&self, t: f64, q: &VecQ<Self>, out: &mut VecH<Self>);
     /// The rates `b(q, t)` of the constraints `A(q, t) v + b(q, t) = 0`: `∂φ/∂t` for a

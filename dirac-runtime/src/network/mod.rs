@@ -111,8 +111,8 @@ pub enum NetworkError {
         reason: String,
     },
     /// A part that a network cannot hold yet: one with unilateral constraints, whose impacts a
-    /// network does not resolve.
-    #[error("part `{part}` has {what}; a run-time network does not resolve impacts yet")]
+    /// network does not resolve, or with friction that pushes with a contact force.
+    #[error("part `{part}` has {what}, which a run-time network does not resolve yet")]
     Unsupported {
         /// The part.
         part: String,
@@ -209,6 +209,12 @@ impl NetworkBuilder {
         }
         if self.by_name.contains_key(name) {
             return bad("a part of this name is already in the network");
+        }
+        if M::NON_ASSOCIATED {
+            return Err(NetworkError::Unsupported {
+                part: name.to_string(),
+                what: "friction that pushes with a contact force (`kinetic = mu * floor`)".into(),
+            });
         }
         let member = Member(model);
         let part: Box<dyn Part> = Box::new(member);

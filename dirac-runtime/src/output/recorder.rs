@@ -95,6 +95,7 @@ where
         let (sizes, shape) = (model.sizes(), model.shape());
         let scratch = Scratch {
             a: M::Algebra::zeros_cq(&shape),
+            slip: M::Algebra::zeros_cq(&shape),
             av: sizes.zeros_c::<M>(),
             phi: sizes.zeros_h::<M>(),
             forces: sizes.zeros_q::<M>(),
@@ -376,6 +377,8 @@ where
     DefaultAllocator: Storage<M>,
 {
     a: MatCQ<M>,
+    /// `B − A` of a model whose friction pushes with a contact force.
+    slip: MatCQ<M>,
     av: VecC<M>,
     phi: VecH<M>,
     forces: VecQ<M>,
@@ -444,9 +447,17 @@ where
         let power = model.power(t, &s.q, &s.v);
         model.constraint_matrix(t, &s.q, &mut w.a);
         model.constraint_rate(t, &s.q, &mut w.av);
-        let cpower = -w.av.dot(&s.lambda);
+        let mut cpower = -w.av.dot(&s.lambda);
         M::Algebra::cq_mul(&w.a, 1.0, s.v.as_slice(), w.av.as_mut_slice());
         let av = amax(w.av.as_slice());
+        if M::NON_ASSOCIATED {
+            // The power of the friction the contact forces drive, `⟨(B − A)ᵀλ, v⟩`, is the
+            // constraints' too: the balance's constraint forces are `Bᵀλ`.
+            w.av.fill(0.0);
+            model.slip_rows(t, &s.q, &s.v, &mut w.slip);
+            M::Algebra::cq_mul(&w.slip, 1.0, s.v.as_slice(), w.av.as_mut_slice());
+            cpower += w.av.dot(&s.lambda);
+        }
         model.holonomic(t, &s.q, &mut w.phi);
         let phi = amax(w.phi.as_slice());
         model.interconnection_forces(t, &s.q, &s.lambda, &mut w.forces);

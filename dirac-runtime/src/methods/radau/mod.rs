@@ -202,7 +202,7 @@ where
             start: Start::new(sizes),
             legendre,
             controller: Controller::new(),
-            jac: JacobianBlocks::with_shape(shape),
+            jac: JacobianBlocks { non_associated: M::NON_ASSOCIATED, ..JacobianBlocks::with_shape(shape) },
             projector,
             jac_current: false,
             need_jac: true,
@@ -360,6 +360,9 @@ where
         }
         let s = &self.state;
         self.model.jacobian_blocks(self.t, &s.q, &s.v, &s.lambda, &mut self.jac);
+        if M::NON_ASSOCIATED {
+            self.model.slip_rows(self.t, &s.q, &s.v, &mut self.jac.slip);
+        }
         if let Some(feedback) = &mut self.feedback {
             feedback.add_columns(&mut self.model, &mut self.residual, self.t, &self.y, &mut self.jac)?;
         }

@@ -7,7 +7,7 @@ use nalgebra::DefaultAllocator;
 use super::Radau;
 use super::forward::{At, Failure, Forward, Iteration};
 use crate::algebra::newton::NewtonSolver;
-use crate::error::SimError;
+use crate::error::{Capability, SimError};
 use crate::model::state::State;
 use crate::model::{LagrangeDirac, ParameterDerivatives, Parameters};
 use crate::shape::dims::{Storage, VecY};
@@ -45,6 +45,12 @@ where
             |reason: &str| Err(SimError::InvalidOption { what: "sensitivities", reason: reason.into() });
         if wrt.is_empty() {
             return invalid("no parameter or initial value to differentiate with respect to");
+        }
+        if M::NON_ASSOCIATED {
+            return Err(SimError::Unsupported {
+                method: "Radau's sensitivities",
+                capability: Capability::ContactFriction,
+            });
         }
         if self.options.projection {
             return invalid("they are not carried through the projection onto the constraints: turn it off");

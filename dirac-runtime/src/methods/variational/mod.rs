@@ -52,7 +52,7 @@ pub use self::work::{VariationalOptions, VariationalStats};
 use crate::algebra::Algebra;
 use crate::algebra::mass::Mass;
 use crate::analysis::projection::Projector;
-use crate::error::SimError;
+use crate::error::{Capability, SimError};
 use crate::integrator::drive::Driver;
 use crate::integrator::held::Held;
 use crate::integrator::restart::{Restarts, constraint_violation};
@@ -128,6 +128,12 @@ where
     /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
     pub fn new(model: impl Into<Held<'m, M>>, h: f64, options: VariationalOptions) -> Result<Self, SimError> {
         let model = model.into();
+        if M::NON_ASSOCIATED {
+            return Err(SimError::Unsupported {
+                method: "Variational",
+                capability: Capability::ContactFriction,
+            });
+        }
         if h.is_nan() || h <= 0.0 || h.is_infinite() {
             return Err(SimError::InvalidOption {
                 what: "step",

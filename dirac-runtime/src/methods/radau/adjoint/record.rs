@@ -7,7 +7,7 @@ use nalgebra::DefaultAllocator;
 use super::checkpoints::Checkpoints;
 use super::{Cut, Kept, Radau, Recording, Step};
 use crate::algebra::newton::NewtonSolver;
-use crate::error::SimError;
+use crate::error::{Capability, SimError};
 use crate::hybrid::event::Event;
 use crate::hybrid::events::Events;
 use crate::hybrid::jumps::{Crossed, Jump};
@@ -56,6 +56,12 @@ where
     /// What a recording refuses, by name.
     pub(super) fn check_recordable(&self) -> Result<(), SimError> {
         let invalid = |reason: &str| Err(SimError::InvalidOption { what: "adjoint", reason: reason.into() });
+        if M::NON_ASSOCIATED {
+            return Err(SimError::Unsupported {
+                method: "Radau's adjoint",
+                capability: Capability::ContactFriction,
+            });
+        }
         if self.options.projection {
             return invalid("the projection onto the constraints has no derivative carried: turn it off");
         }
