@@ -280,8 +280,8 @@ impl core::fmt::Display for Capability {
                  sets them between steps (`set_input`, `solve_sampled`)"
             }
             Capability::ContactFriction => {
-                "friction that pushes with a contact force (`kinetic = mu * floor`): Radau and Explicit \
-                 step it, without sensitivities, adjoints or linearisation"
+                "friction that pushes with a contact force (`kinetic = mu * floor`): every integrator \
+                 steps it, but forward sensitivities, adjoints and linearisation do not carry it yet"
             }
         })
     }

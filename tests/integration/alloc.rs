@@ -301,7 +301,7 @@ fn watching_friction_laws_does_not_allocate() {
     }
 }
 
-/// Friction on a contact force (`kinetic = mu * floor`): the steps of Radau and Explicit read
+/// Friction on a contact force (`kinetic = mu * floor`): the steps of every integrator read
 /// the slip rows `B − A` beside the constraint rows, and the stop is located, without
 /// allocating. The block slides on the flat from 3 m/s and stops at `v0 / (μ g)` = 0.76 s.
 #[test]
@@ -327,7 +327,12 @@ fn stepping_friction_on_a_contact_force_does_not_allocate() {
     }
     let radau = Radau::new(&block, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
     let explicit = Explicit::new(&block, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid");
-    for (name, (allocated, stops)) in [("Radau", run(radau, &start)), ("Explicit", run(explicit, &start))] {
+    let variational = Variational::new(&block, 1e-3, VariationalOptions::default()).expect("valid");
+    for (name, (allocated, stops)) in [
+        ("Radau", run(radau, &start)),
+        ("Explicit", run(explicit, &start)),
+        ("Variational", run(variational, &start)),
+    ] {
         assert_eq!(allocated, 0, "{name}");
         let stops = stops.expect("the slip stops");
         assert!((stops - 3.0 / (0.4 * 9.81)).abs() < 1e-6, "{name}: stops at {stops}");

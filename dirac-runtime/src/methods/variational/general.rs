@@ -54,9 +54,13 @@ where
         model.dl_dv(t1, &x.q1, v, &mut x.lv1);
         model.dl_dq(t0, q, v, &mut x.lq);
         model.force(tm, &x.qm, v, &mut x.f);
-        // The constraint impulse A(q_k)ᵀ Λ, held in `target` (unused in this stage).
+        // The constraint impulse A(q_k)ᵀ Λ (B(q_k)ᵀ Λ where friction pushes with a contact
+        // force), held in `target` (unused in this stage).
         x.target.fill(0.0);
         M::Algebra::cq_tr_mul(&w.a0, 1.0, w.big_lambda.as_slice(), x.target.as_mut_slice());
+        if M::NON_ASSOCIATED {
+            M::Algebra::cq_tr_mul(&w.slip0, 1.0, w.big_lambda.as_slice(), x.target.as_mut_slice());
+        }
         let r = x.r.as_mut_slice();
         for i in 0..n {
             r[i] = 0.5 * (x.lv0[i] + x.lv1[i]) - 0.5 * h * (x.lq[i] + x.f[i]) - x.target[i] - s.state.p[i];
@@ -84,7 +88,7 @@ where
             v,
             unknowns.split_mut(r).1,
         );
-        assemble_stage_one::<M>(&mut w.saddle, b, &w.a0, h);
+        assemble_stage_one::<M>(&mut w.saddle, b, (&w.a0, &w.slip0), h);
         if newton_update(s, Stage::One, iteration)? {
             return Ok(());
         }
@@ -120,7 +124,7 @@ fn midpoint_rows<M: LagrangeDirac>(
 fn assemble_stage_one<M: LagrangeDirac>(
     saddle: &mut <M::Algebra as Algebra<M>>::Saddle<f64>,
     b: &mut StageBlocks<M>,
-    a0: &MatCQ<M>,
+    (a0, slip0): (&MatCQ<M>, &MatCQ<M>),
     h: f64,
 ) where
     DefaultAllocator: Storage<M>,
@@ -128,11 +132,12 @@ fn assemble_stage_one<M: LagrangeDirac>(
     // ½ (L_vv(q_k) + L_vv(q_{k+1}) + h L_vq(q_{k+1})) − (h/2)(L_vq(q_k)ᵀ + F_v + (h/2) F_q)
     let terms =
         [(0.5, &b.lvv0), (0.5, &b.lvv1), (0.5 * h, &b.lvq1), (-0.5 * h, &b.fv), (-0.25 * h * h, &b.fq)];
+    let forces = [(-1.0, a0), (-1.0, slip0)];
     let rest = SaddleTerms {
         top: &[],
         top_transposed: &[(-0.5 * h, &b.lvq0)],
         identity: 0.0,
-        right: &[(-1.0, a0)],
+        right: if M::NON_ASSOCIATED { &forces[..] } else { &forces[..1] },
         // Holonomic rows: A(q_{k+1}); the others: A(q_{k+½}) + (h/2) ∂(A v)/∂q there.
         bottom: &[(1.0, 0.0, &b.a1), (0.0, 1.0, &b.am), (0.0, 0.5 * h, &b.gm)],
         corner: (0.0, 0.0),
@@ -219,6 +224,9 @@ where
             x.target[i] = 0.5 * (x.lv0[i] + x.lv1[i]) + 0.5 * h * (x.lq[i] + x.f[i]);
         }
         model.constraint_matrix(t1, &x.q1, &mut w.blocks.a1);
+        if M::NON_ASSOCIATED {
+            model.slip_rows(t1, &x.q1, v, &mut w.slip1);
+        }
         if M::PRESCRIBED {
             model.constraint_rate(t1, &x.q1, &mut x.rate);
         }
@@ -232,6 +240,9 @@ where
         // The constraint impulse A(q_{k+1})ᵀ Γ, held in `lv0` (not needed after `target`).
         x.lv0.fill(0.0);
         M::Algebra::cq_tr_mul(&b.a1, 1.0, w.gamma.as_slice(), x.lv0.as_mut_slice());
+        if M::NON_ASSOCIATED {
+            M::Algebra::cq_tr_mul(&w.slip1, 1.0, w.gamma.as_slice(), x.lv0.as_mut_slice());
+        }
         let (r_v, r_lambda) = unknowns.split_mut(x.r.as_mut_slice());
         for (i, r) in r_v.iter_mut().enumerate() {
             *r = x.lv1[i] - x.lv0[i] - x.target[i];
@@ -249,7 +260,7 @@ where
         if let Some(free) = &w.free {
             free.remove(r_v);
         }
-        assemble_legendre::<M>(&mut w.saddle, (&b.lvv1, &b.a1), w.free.as_ref());
+        assemble_legendre::<M>(&mut w.saddle, (&b.lvv1, &b.a1, &w.slip1), w.free.as_ref());
         if newton_update(s, Stage::Two, iteration)? {
             let w = &mut s.work;
             if let Some(free) = &mut w.free
@@ -257,12 +268,30 @@ where
             {
                 return Err(s.diverged());
             }
+            if M::NON_ASSOCIATED {
+                friction_work(s);
+            }
             let x = &s.work.vectors;
             model.dl_dv(t1, &x.q1, &s.state.v, &mut s.state.p);
             return Ok(());
         }
     }
     Err(s.diverged())
+}
+
+/// The work of the friction the step's impulses drive, `⟨(B − A)ᵀΛ, v⟩ + ⟨(B − A)ᵀΓ, v⟩`
+/// (`B − A` at the step's start and end), into the work the energy check allows for.
+fn friction_work<M: LagrangeDirac>(s: &mut Step<'_, M>)
+where
+    DefaultAllocator: Storage<M>,
+{
+    let w = &mut s.work;
+    let rate = &mut w.vectors.rate;
+    for (slip, impulse) in [(&w.slip0, &w.big_lambda), (&w.slip1, &w.gamma)] {
+        rate.fill(0.0);
+        M::Algebra::cq_mul(slip, 1.0, w.v.as_slice(), rate.as_mut_slice());
+        w.work += rate.dot(impulse);
+    }
 }
 
 /// Factors the assembled stage matrix, applies the Newton update in `work.vectors.r` to the

@@ -52,7 +52,7 @@ pub use self::work::{VariationalOptions, VariationalStats};
 use crate::algebra::Algebra;
 use crate::algebra::mass::Mass;
 use crate::analysis::projection::Projector;
-use crate::error::{Capability, SimError};
+use crate::error::SimError;
 use crate::integrator::drive::Driver;
 use crate::integrator::held::Held;
 use crate::integrator::restart::{Restarts, constraint_violation};
@@ -128,12 +128,6 @@ where
     /// change it between steps ([`Integrator::update`], [`Integrator::set_input`]).
     pub fn new(model: impl Into<Held<'m, M>>, h: f64, options: VariationalOptions) -> Result<Self, SimError> {
         let model = model.into();
-        if M::NON_ASSOCIATED {
-            return Err(SimError::Unsupported {
-                method: "Variational",
-                capability: Capability::ContactFriction,
-            });
-        }
         if h.is_nan() || h <= 0.0 || h.is_infinite() {
             return Err(SimError::InvalidOption {
                 what: "step",
@@ -225,7 +219,7 @@ where
         self.previous.clone_from(s);
         self.work.grow_scales(model, t0, s);
         self.mass = None;
-        if M::SEPARABLE && self.options.use_structure {
+        if M::SEPARABLE && !M::NON_ASSOCIATED && self.options.use_structure {
             let lvv = &mut self.work.blocks.lvv0;
             model.l_vv(t0, &s.q, &s.v, lvv);
             self.mass = M::Algebra::dense_qq(lvv).and_then(|matrix| Mass::new(&self.sizes, matrix));
@@ -321,6 +315,9 @@ where
             self.driver.apply(&mut self.model, (self.t + 0.5 * h, self.t_end), &s.q, &s.v);
         }
         self.model.get().constraint_matrix(self.t, &self.state.q, &mut self.work.a0);
+        if M::NON_ASSOCIATED {
+            self.model.get().slip_rows(self.t, &self.state.q, &self.state.v, &mut self.work.slip0);
+        }
         self.work.v.copy_from(&self.state.v);
         self.work.big_lambda.copy_from(&self.work.gamma);
         let mut step = Step {
@@ -613,6 +610,9 @@ where
         let (state, work, stats) = &mut *probe;
         state.clone_from(&self.previous);
         model.constraint_matrix(t_previous, &state.q, &mut work.a0);
+        if M::NON_ASSOCIATED {
+            model.slip_rows(t_previous, &state.q, &state.v, &mut work.slip0);
+        }
         work.v.copy_from(&state.v);
         // The last step's impulses, scaled to the shorter step, start Newton.
         let share = h / h_last;

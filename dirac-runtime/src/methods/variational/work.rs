@@ -91,6 +91,10 @@ where
     pub midpoint: (VecC<M>, f64),
     /// `A(q_k)`.
     pub a0: MatCQ<M>,
+    /// `B − A` at the step's start and end, for a model whose friction pushes with a contact
+    /// force ([`LagrangeDirac::NON_ASSOCIATED`]): its impulses act along `B`.
+    pub slip0: MatCQ<M>,
+    pub slip1: MatCQ<M>,
     /// The blocks of the stage systems.
     pub blocks: StageBlocks<M>,
     /// The vectors of the stage systems.
@@ -130,7 +134,10 @@ where
         let b = &mut self.blocks;
         model.l_vv(t, &state.q, &state.v, &mut b.lvv1);
         model.constraint_matrix(t, &state.q, &mut b.a1);
-        assemble_legendre::<M>(&mut self.saddle, (&b.lvv1, &b.a1), None);
+        if M::NON_ASSOCIATED {
+            model.slip_rows(t, &state.q, &state.v, &mut self.slip1);
+        }
+        assemble_legendre::<M>(&mut self.saddle, (&b.lvv1, &b.a1, &self.slip1), None);
         self.saddle.factor().is_ok()
     }
 }
@@ -140,12 +147,14 @@ where
 /// terms, so that a model without such velocities sums one.
 pub(crate) fn assemble_legendre<M: LagrangeDirac>(
     saddle: &mut <M::Algebra as Algebra<M>>::Saddle<f64>,
-    (lvv, a): (&MatQQ<M>, &MatCQ<M>),
+    (lvv, a, slip): (&MatQQ<M>, &MatCQ<M>, &MatCQ<M>),
     free: Option<&FreeVelocities<M>>,
 ) where
     DefaultAllocator: Storage<M>,
 {
-    let (right, bottom) = (&[(-1.0, a)], &[(1.0, 1.0, a)]);
+    let forces = [(-1.0, a), (-1.0, slip)];
+    let right = if M::NON_ASSOCIATED { &forces[..] } else { &forces[..1] };
+    let bottom = &[(1.0, 1.0, a)];
     let rest =
         |top| SaddleTerms { top, top_transposed: &[], identity: 0.0, right, bottom, corner: (0.0, 0.0) };
     match free {
@@ -235,6 +244,8 @@ where
             gamma: sizes.zeros_c::<M>(),
             midpoint: (sizes.zeros_c::<M>(), 0.0),
             a0: cq(),
+            slip0: cq(),
+            slip1: cq(),
             blocks: StageBlocks {
                 lvv0: qq(),
                 lvv1: qq(),
