@@ -286,11 +286,9 @@ impl SymModel {
             let (LawKind::Friction, Some(kinetic)) = (law.kind, &law.kinetic) else { continue };
             let what = format!("the kinetic force of `{}`", law.name);
             let Some(f) = self.lowerer(cx, scope).lower(kinetic, all(&what)) else { continue };
-            let on_rows = self
-                .lambda
-                .iter()
-                .any(|&l| self.graph.depends_on(f, self.graph.as_sym(l).expect("a symbol")));
-            if on_rows && !self.linear_in_multipliers(f) {
+            let multipliers = self.multiplier_symbols();
+            let on_rows = multipliers.iter().any(|&l| self.graph.depends_on(f, l));
+            if on_rows && !self.linear_in(f, &multipliers) {
                 cx.error_spanned_by(
                     kinetic,
                     format!(
@@ -315,9 +313,14 @@ impl SymModel {
         }
     }
 
-    /// Whether `f` is linear in the multipliers: none of its derivatives by one depends on any.
-    fn linear_in_multipliers(&mut self, f: Id) -> bool {
-        let syms: Vec<u32> = self.lambda.iter().map(|&l| self.graph.as_sym(l).expect("a symbol")).collect();
+    /// The symbols of the multipliers.
+    fn multiplier_symbols(&self) -> Vec<u32> {
+        self.lambda.iter().map(|&l| self.graph.as_sym(l).expect("a multiplier is a symbol")).collect()
+    }
+
+    /// Whether `f` is linear in the symbols `syms` (of `self.lambda`): none of its derivatives
+    /// by one depends on any.
+    fn linear_in(&mut self, f: Id, syms: &[u32]) -> bool {
         self.lambda.clone().into_iter().all(|l| {
             let d = self.graph.diff(f, l);
             syms.iter().all(|&s| !self.graph.depends_on(d, s))

@@ -8,6 +8,7 @@
 use dirac::prelude::*;
 use dirac::{Coordinate, State};
 
+use crate::every_method::Fineness;
 use crate::util::check_jacobian_by_differences;
 use crate::zoo::{SlopeBall, SlopeBlock};
 
@@ -25,9 +26,9 @@ where
     consistent_state(model, 0.0, &q0, &v0, Consistency::default()).expect("a consistent start")
 }
 
-/// Solves `model` from `start` to `t_end` with Radau and Explicit at tolerance `tol` and with
-/// the variational integrator at step 1e-3, and hands each solution to `check` with the
-/// method's name.
+/// Solves `model` from `start` to `t_end` with every integrator (Radau and Explicit at
+/// tolerance `tol`, the variational integrator at step 1e-3), and hands each solution to
+/// `check` with the method's name.
 fn every_method<M: Hybrid>(
     model: &M,
     start: &State<M>,
@@ -37,27 +38,14 @@ fn every_method<M: Hybrid>(
 ) where
     DefaultAllocator: Storage<M>,
 {
-    let radau = Radau::new(model, RadauOptions::tolerances(tol, tol))
-        .expect("valid options")
-        .solve(0.0, start, t_end, &Sampling::Steps)
-        .unwrap_or_else(|e| panic!("Radau: {e}"));
-    let events: Vec<(String, f64)> =
-        radau.events().iter().map(|e| (radau.event_name(e).to_string(), e.t)).collect();
-    check("Radau", radau.t(), &|i| radau.q(i).to_vec(), &events);
-    let explicit = Explicit::new(model, ExplicitOptions::tolerances(tol, tol))
-        .expect("valid options")
-        .solve(0.0, start, t_end, &Sampling::Steps)
-        .unwrap_or_else(|e| panic!("Explicit: {e}"));
-    let events: Vec<(String, f64)> =
-        explicit.events().iter().map(|e| (explicit.event_name(e).to_string(), e.t)).collect();
-    check("Explicit", explicit.t(), &|i| explicit.q(i).to_vec(), &events);
-    let variational = Variational::new(model, 1e-3, VariationalOptions::default())
-        .expect("valid options")
-        .solve(0.0, start, t_end, &Sampling::Steps)
-        .unwrap_or_else(|e| panic!("Variational: {e}"));
-    let events: Vec<(String, f64)> =
-        variational.events().iter().map(|e| (variational.event_name(e).to_string(), e.t)).collect();
-    check("Variational", variational.t(), &|i| variational.q(i).to_vec(), &events);
+    each_integrator!(model, Fineness::new(tol, tol, 1e-3), |method, integrator| {
+        let solution = integrator
+            .solve(0.0, start, t_end, &Sampling::Steps)
+            .unwrap_or_else(|e| panic!("{method:?}: {e}"));
+        let events: Vec<(String, f64)> =
+            solution.events().iter().map(|e| (solution.event_name(e).to_string(), e.t)).collect();
+        check(&format!("{method:?}"), solution.t(), &|i| solution.q(i).to_vec(), &events);
+    });
 }
 
 #[test]
@@ -271,5 +259,23 @@ fn friction_on_a_contact_force_is_refused_where_it_is_not_carried() {
             "part `block` has friction that pushes with a contact force (`kinetic = mu * floor`), which a \
              run-time network does not resolve yet"
         )
+    );
+}
+
+/// Friction takes power out: a negative coefficient (or a contact force that pulls) would make
+/// the slip push the block on, and a consistent start (and every switch) refuses it by name.
+#[test]
+fn friction_that_would_push_is_refused_by_name() {
+    let block = SlopeBlock { m: 2.0, g: G, slope: 0.0, mu: -0.4, push: 0.0 };
+    let mut v = block.sizes().zeros_q::<SlopeBlock>();
+    v[SlopeBlock::X.index()] = 3.0;
+    let err =
+        consistent_state(&block, 0.0, &block.sizes().zeros_q::<SlopeBlock>(), &v, Consistency::default())
+            .err()
+            .map(|e| e.to_string());
+    let message = err.expect("refused");
+    assert!(
+        message.contains("contact force of `floor` puts") && message.contains("must not be negative"),
+        "{message}"
     );
 }

@@ -164,17 +164,28 @@ impl Contacts {
         model.constraint_matrix(t, &state.q, &mut a);
         // The model's own rows push back with their one-forms, and with the friction their
         // impulses drive where it slips (`B = A + (B − A)`).
-        let mut slip = M::Algebra::zeros_cq(&shape);
-        if M::NON_ASSOCIATED {
+        let slip = M::NON_ASSOCIATED.then(|| {
+            let mut slip = M::Algebra::zeros_cq(&shape);
             model.slip_rows(t, &state.q, &state.v, &mut slip);
-        }
-        let right = [(-1.0, &a), (-1.0, &slip)];
+            slip
+        });
+        let (own, both);
+        let right: &[_] = match &slip {
+            Some(slip) => {
+                both = [(-1.0, &a), (-1.0, slip)];
+                &both
+            }
+            None => {
+                own = [(-1.0, &a)];
+                &own
+            }
+        };
         let mut saddle = M::Algebra::saddle(&shape);
         saddle.assemble(&SaddleTerms::<M, M::Algebra, f64> {
             top: &[(1.0, &lvv)],
             top_transposed: &[],
             identity: 0.0,
-            right: if M::NON_ASSOCIATED { &right } else { &right[..1] },
+            right,
             bottom: &[(1.0, 1.0, &a)],
             corner: (0.0, 0.0),
         });
