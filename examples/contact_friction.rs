@@ -22,6 +22,7 @@ use dirac::prelude::*;
 #[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy) + m * g * (x * sin(slope) - y * cos(slope)))]
 #[dirac(holonomic(floor) = y)]
 #[dirac(friction(slide, kinetic = mu * floor) = vx)]
+#[dirac(nonnegative(mu))]
 struct Block {
     m: f64,
     g: f64,
@@ -39,6 +40,7 @@ struct Block {
 )]
 #[dirac(holonomic(floor) = y)]
 #[dirac(friction(touch, kinetic = mu * floor) = vx - r * w)]
+#[dirac(nonnegative(mu))]
 struct Ball {
     m: f64,
     g: f64,

@@ -247,6 +247,22 @@ pub enum SimError {
         /// Where it was going.
         t_end: f64,
     },
+    /// Friction that pushes with a contact force puts power into the model where it slips:
+    /// its kinetic force `μ λ` is negative (a negative coefficient, or a contact force that
+    /// pulls).
+    #[error(
+        "the friction driven by the contact force of `{row}` puts {power:e} of power into the model at t = {t}: \
+         its kinetic force (`mu * {row}`) is negative; friction takes power out, so the coefficient must not be \
+         negative (declare it `nonnegative`) and the contact must push"
+    )]
+    FrictionPushes {
+        /// When.
+        t: f64,
+        /// The row whose multiplier drives the friction.
+        row: String,
+        /// The power it puts in, `λ_row (B − A)_row v > 0`.
+        power: f64,
+    },
     /// A capability asked of an integration method that it does not offer.
     #[error("{method} does not offer {capability}")]
     Unsupported {

@@ -20,6 +20,7 @@
 
 use nalgebra::DefaultAllocator;
 
+use crate::algebra::{Algebra, amax};
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::hybrid::has_laws;
@@ -130,7 +131,8 @@ where
     if !engage {
         let force = state.lambda[law.row];
         state.q[law.mode] = if law.kind == Kind::Friction && force > 0.0 { -1.0 } else { 1.0 };
-        return consistent(model, t, state);
+        consistent(model, t, state)?;
+        return dissipating(model, t, state);
     }
     let located = state.q[law.mode];
     state.q[law.mode] = 0.0;
@@ -138,7 +140,8 @@ where
     if law.kind == Kind::Friction && !holds(model, law, t, &stuck, values) {
         // Held, the force would exceed the bound: the slip goes on, to the other side.
         state.q[law.mode] = -located;
-        return consistent(model, t, state);
+        consistent(model, t, state)?;
+        return dissipating(model, t, state);
     }
     *state = stuck;
     Ok(())
@@ -184,6 +187,9 @@ where
     }
     let chosen = consistent_with_laws(model, t0, &state.q, &state.v, Consistency::default())?;
     let same = laws(model).iter().all(|law| chosen.q[law.mode] == state.q[law.mode]);
+    if same {
+        dissipating(model, t0, state)?;
+    }
     Ok((!same).then_some(chosen))
 }
 
@@ -262,5 +268,34 @@ where
             released = true;
         }
     }
-    if released { project(model, t, &q, v, options) } else { Ok(state) }
+    let state = if released { project(model, t, &q, v, options)? } else { state };
+    dissipating(model, t, &state)?;
+    Ok(state)
+}
+
+/// An error naming the row whose contact force drives friction that puts power into `model`
+/// at `state` (`λ_j (B − A)_j v > 0`: a negative coefficient, or a contact force that pulls);
+/// `Ok` for a model whose friction takes power out, or that has none on a contact force.
+fn dissipating<M: Hybrid>(model: &M, t: f64, state: &State<M>) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if !M::NON_ASSOCIATED {
+        return Ok(());
+    }
+    let shape = model.shape();
+    let mut slip = M::Algebra::zeros_cq(&shape);
+    model.slip_rows(t, &state.q, &state.v, &mut slip);
+    let mut rates = model.sizes().zeros_c::<M>();
+    M::Algebra::cq_mul(&slip, 1.0, state.v.as_slice(), rates.as_mut_slice());
+    // Beyond the round-off of velocities that start a slip from rest.
+    let scale = 1e-9 * amax(M::Algebra::cq_values(&slip)) * (1.0 + state.v.amax());
+    for (j, (rate, lambda)) in rates.iter().zip(state.lambda.iter()).enumerate() {
+        let power = rate * lambda;
+        if power > scale * lambda.abs() {
+            let row = model.constraint_names()[j].clone();
+            return Err(SimError::FrictionPushes { t, row, power });
+        }
+    }
+    Ok(())
 }
