@@ -42,6 +42,9 @@ pub struct Blocks {
     /// `B − A`, `m × n`: what the forces a row's multiplier drives add to its one-form (empty
     /// unless the model has [`SymModel::slip`] forces).
     pub slip_rows: Matrix,
+    /// `∂((B − A)ᵀ λ)/∂v`, n × n: empty unless the slip forces depend on the velocities (a
+    /// friction cone's turn with the slip).
+    pub slip_dv: Matrix,
     /// `∂(A v + b)/∂q`.
     pub dav_dq: Matrix,
     /// `∂(Aᵀ λ)/∂q`.
@@ -203,7 +206,25 @@ impl Blocks {
         let l_qq = jacobian(g, &dl_dq, &q);
         let force_dq = jacobian(g, &force, &q);
         let force_dv = jacobian(g, &force, &v);
-        let datl_dq = jacobian(g, &at_lambda, &q);
+        // A friction cone's push on a contact force turns with the slip, so it depends on the
+        // velocities, which `datl_dq(t, q, λ)` does not take: its part is then left out there.
+        // Nothing reads `datl_dq` for such a model (its sensitivities and adjoint are refused);
+        // the momentum rate's derivatives above carry it.
+        let velocity_syms: Vec<u32> = v.iter().filter_map(|&x| g.as_sym(x)).collect();
+        let turns = slip.iter().any(|&s| velocity_syms.iter().any(|&x| g.depends_on(s, x)));
+        let slip_dv = if turns { jacobian(g, &slip, &v) } else { Vec::new() };
+        let datl_dq = match turns {
+            false => jacobian(g, &at_lambda, &q),
+            true => {
+                let plain: Vec<Id> = (0..n)
+                    .map(|i| {
+                        let column: Vec<Id> = a.iter().map(|row| row[i]).collect();
+                        dot(g, &column, &lambda)
+                    })
+                    .collect();
+                jacobian(g, &plain, &q)
+            }
+        };
         let mut flat_residual = v.clone();
         for (i, &d) in dl_dv.iter().enumerate() {
             flat_residual.push(g.sub(p[i], d));
@@ -308,6 +329,7 @@ impl Blocks {
             a_v,
             at_lambda,
             slip_rows,
+            slip_dv,
             dav_dq,
             datl_dq,
             phi,

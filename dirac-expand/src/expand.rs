@@ -175,9 +175,9 @@ fn inherent_constants(model: &Model<'_>, names: &KeyConstants) -> TokenStream {
     // A model with laws counts their mode coordinates among its own: `VecQ::<M>::from` would
     // need them, so the model gives vectors of the coordinates its author wrote.
     let own = (!model.laws.is_empty()).then(|| {
-        let k = proc_macro2::Literal::usize_unsuffixed(model.coordinates.len() - model.laws.len());
         let modes: Vec<String> =
-            model.laws.iter().map(|l| format!("`{}{}`", l.name, crate::symbol::MODE)).collect();
+            model.laws.iter().flat_map(|l| l.modes()).map(|mode| format!("`{mode}`")).collect();
+        let k = proc_macro2::Literal::usize_unsuffixed(model.coordinates.len() - modes.len());
         let doc = format!(
             "A vector of positions or velocities from the values of the coordinates written in \
              the model, in their order; the laws' mode coordinates ({}) are zero, and the start \

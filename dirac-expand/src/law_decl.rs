@@ -22,8 +22,12 @@ pub enum LawKind {
 pub struct LawDecl {
     pub kind: LawKind,
     pub name: Ident,
-    /// The relative velocity (friction) or the reverse voltage (diode).
+    /// The relative velocity (friction) or the reverse voltage (diode); a friction cone's first
+    /// tangent velocity.
     pub g: Expr,
+    /// A friction cone's second tangent velocity: `friction(c, kinetic = f) = (gx, gy)` is
+    /// Coulomb's isotropic law in the plane of `(gx, gy)`.
+    pub g2: Option<Expr>,
     /// The force while slipping.
     pub kinetic: Option<Expr>,
     /// The bound of the force while stuck.
@@ -36,6 +40,25 @@ impl LawDecl {
     /// The coordinate that holds the law's mode.
     pub fn mode(&self) -> Ident {
         format_ident!("{}{}", self.name, MODE)
+    }
+
+    /// The coordinates that hold the mode: `c_mode`, or a cone's slip direction `c_mode_1`,
+    /// `c_mode_2` (zero while stuck).
+    pub fn modes(&self) -> Vec<Ident> {
+        match self.g2 {
+            None => vec![self.mode()],
+            Some(_) => {
+                vec![format_ident!("{}{}_1", self.name, MODE), format_ident!("{}{}_2", self.name, MODE)]
+            }
+        }
+    }
+
+    /// The rows the law holds while engaged: `c`, or a cone's `c_1`, `c_2`.
+    pub fn rows(&self) -> Vec<Ident> {
+        match self.g2 {
+            None => vec![self.name.clone()],
+            Some(_) => vec![format_ident!("{}_1", self.name), format_ident!("{}_2", self.name)],
+        }
     }
 }
 
@@ -89,7 +112,24 @@ pub fn parse(kind: LawKind, input: ParseStream) -> syn::Result<LawDecl> {
         *slot = Some(content.parse::<Expr>()?);
     }
     input.parse::<Token![=]>()?;
-    let g: Expr = input.parse()?;
+    let (g, g2) = match input.parse::<Expr>()? {
+        Expr::Tuple(tuple) if kind == LawKind::Friction && tuple.elems.len() == 2 => {
+            let mut elems = tuple.elems.into_iter();
+            (elems.next().expect("two"), elems.next())
+        }
+        Expr::Tuple(tuple) => {
+            let message = match kind {
+                LawKind::Friction => format!(
+                    "a friction cone slips in a plane: write its two tangent velocities, \
+                     `{FRICTION}({name}, {KINETIC} = mu * n) = (vx, vy)`, not {}",
+                    tuple.elems.len()
+                ),
+                _ => "this law holds one quantity, not a tuple".to_string(),
+            };
+            return Err(syn::Error::new(tuple.paren_token.span.join(), message));
+        }
+        g => (g, None),
+    };
     if kind == LawKind::Friction && kinetic.is_none() {
         return Err(syn::Error::new(
             name.span(),
@@ -108,5 +148,5 @@ pub fn parse(kind: LawKind, input: ParseStream) -> syn::Result<LawDecl> {
             ),
         ));
     }
-    Ok(LawDecl { kind, name, g, kinetic, stiction, closed })
+    Ok(LawDecl { kind, name, g, g2, kinetic, stiction, closed })
 }

@@ -32,8 +32,8 @@
 
 use proc_macro2::Span;
 use quote::{format_ident, quote_spanned};
-use syn::Expr;
 use syn::spanned::Spanned;
+use syn::{Expr, Ident};
 
 use crate::ast::{ConstraintDecl, ConstraintKind, CoordinateDecl, EventDecl, Model};
 use crate::ctxt::Ctxt;
@@ -65,6 +65,12 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>) {
     let mut rates = Vec::new();
     let mut items = Vec::new();
     for law in &model.laws {
+        if let Some(g2) = &law.g2 {
+            let (cone, cone_rates) = cone(law, g2);
+            items.push(cone);
+            rates.extend(cone_rates);
+            continue;
+        }
         let span = law.g.span();
         let (s, rate) = (law.mode(), format_ident!("{}{}_rate", law.name, MODE));
         let (name, g) = (&law.name, &law.g);
@@ -97,13 +103,13 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>) {
             _ => engage,
         };
         items.push((
-            CoordinateDecl { name: s, velocity: rate.clone() },
-            ConstraintDecl {
+            vec![CoordinateDecl { name: s, velocity: rate.clone() }],
+            vec![ConstraintDecl {
                 kind: ConstraintKind::Velocity,
                 key: name.clone(),
                 name: Some(name.clone()),
                 expr: row,
-            },
+            }],
             [
                 EventDecl {
                     name: format_ident!("{}_{}", name, engage_name),
@@ -119,9 +125,9 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>) {
         ));
         rates.push(rate);
     }
-    for (coordinate, row, events) in items {
-        model.coordinates.push(coordinate);
-        model.constraints.push(row);
+    for (coordinates, rows, events) in items {
+        model.coordinates.extend(coordinates);
+        model.constraints.extend(rows);
         model.events.extend(events);
     }
     if let Some((_, lagrangian)) = &mut model.lagrangian {
@@ -135,6 +141,70 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>) {
         );
     }
 }
+
+/// The items of a friction cone `friction(c, kinetic = f, stiction = f_s) = (g1, g2)`, and its
+/// slacks' rates. Its mode is the unit slip direction `m = (c_mode_1, c_mode_2)`, zero while
+/// stuck, so `σ = |m|²` is 0 stuck and 1 slipping; its rows `c_1`, `c_2` are
+/// `(1 − σ) g_i + σ ṁ_i = 0`. It stops or turns (`c_stops`) where the slip leaves the direction
+/// frozen in `m` by more than [`CONE_TURN`] (`m·g − κ |m⊥·g|` falls through zero, `κ = cot` of
+/// that angle), and slips (`c_slips`) where the force that holds it reaches its bound
+/// (`f_s − |λ|`). The kinetic force pushes against the slip itself, `g / |g|` (see the model's
+/// `slip_forces`): `m` only makes the stop an event, and the runtime freezes it again at each
+/// turn.
+fn cone(law: &crate::law_decl::LawDecl, g2: &Expr) -> ConeItems {
+    let span = law.g.span();
+    let name = &law.name;
+    let (modes, rows) = (law.modes(), law.rows());
+    let (g1, [m1, m2], [c1, c2]) = (&law.g, [&modes[0], &modes[1]], [&rows[0], &rows[1]]);
+    let (r1, r2) = (format_ident!("{}_rate", m1), format_ident!("{}_rate", m2));
+    let sigma = quote_spanned!(span=> (#m1 * #m1 + #m2 * #m2));
+    let row =
+        |g: &Expr, rate: &Ident| written(span, quote_spanned!(span=> (1.0 - #sigma) * (#g) + #sigma * #rate));
+    let kappa = 1.0 / CONE_TURN.to_radians().tan();
+    let stops = written(
+        span,
+        quote_spanned!(span=> #m1 * (#g1) + #m2 * (#g2) - #kappa * (#m1 * (#g2) - #m2 * (#g1)).abs() + (1.0 - #sigma)),
+    );
+    let bound = law.stiction.as_ref().or(law.kinetic.as_ref()).expect("parsed with its force");
+    // `σ` under the root keeps its derivative finite while slipping, where both forces are zero.
+    let slips = written(
+        span,
+        quote_spanned!(span=> (1.0 - #sigma) * ((#bound) - (#c1 * #c1 + #c2 * #c2 + #sigma).sqrt()) + #sigma),
+    );
+    let coordinates = vec![
+        CoordinateDecl { name: m1.clone(), velocity: r1.clone() },
+        CoordinateDecl { name: m2.clone(), velocity: r2.clone() },
+    ];
+    let rows = [(c1, g1, &r1), (c2, g2, &r2)]
+        .into_iter()
+        .map(|(c, g, r)| ConstraintDecl {
+            kind: ConstraintKind::Velocity,
+            key: c.clone(),
+            name: Some(c.clone()),
+            expr: row(g, r),
+        })
+        .collect();
+    let events = [
+        EventDecl { name: format_ident!("{}_stops", name), direction: STOPS, expr: stops },
+        EventDecl { name: format_ident!("{}_slips", name), direction: SLIPS, expr: slips },
+    ];
+    ((coordinates, rows, events), vec![r1, r2])
+}
+
+/// A law's coordinates, rows and two events.
+type LawItems = (Vec<CoordinateDecl>, Vec<ConstraintDecl>, [EventDecl; 2]);
+/// A cone's items and its slacks' rates.
+type ConeItems = (LawItems, Vec<Ident>);
+
+/// How far a cone's slip turns from the direction frozen in its mode before the runtime
+/// freezes it again, in degrees.
+pub const CONE_TURN: f64 = 60.0;
+
+/// The slip speed, in the model's units of velocity, that keeps a cone's kinetic force defined
+/// where a slip starts from rest (see the model's `cone_direction`): Coulomb's direction
+/// `g / |g|` is not, and within about this speed of rest the force turns to the direction
+/// frozen in the mode. The runtime reads a stop where the slip is within a few of these of rest.
+pub const CONE_ONSET: f64 = 1e-9;
 
 /// The expression the derive wrote.
 fn written(span: Span, tokens: proc_macro2::TokenStream) -> Expr {

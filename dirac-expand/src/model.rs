@@ -269,18 +269,25 @@ impl SymModel {
         }
         for law in &model.laws {
             let what = format!("the law `{}`", law.name);
-            let Some(g) = self.lowerer(cx, scope).lower(&law.g, all(&what)) else { continue };
-            let gradient: Vec<Id> = self.v.clone().iter().map(|&v| self.graph.diff(g, v)).collect();
-            if gradient.iter().all(|&d| self.graph.is_zero(d)) {
-                let quantity = match law.kind {
-                    LawKind::Friction => "its relative velocity, as `v - vb`",
-                    LawKind::Diode => "its reverse voltage in node-flux coordinates, as `vo - va`",
-                    LawKind::Switch => "its voltage in node-flux coordinates, as `va - vb`",
-                };
-                cx.error_spanned_by(
-                    &law.g,
-                    format!("{what} depends on no velocity; its row holds `g = 0` on the velocities: write {quantity}"),
-                );
+            let mut slips = Vec::new();
+            for g_expr in std::iter::once(&law.g).chain(&law.g2) {
+                let Some(g) = self.lowerer(cx, scope).lower(g_expr, all(&what)) else { continue };
+                let gradient: Vec<Id> = self.v.clone().iter().map(|&v| self.graph.diff(g, v)).collect();
+                if gradient.iter().all(|&d| self.graph.is_zero(d)) {
+                    let quantity = match law.kind {
+                        LawKind::Friction => "its relative velocity, as `v - vb`",
+                        LawKind::Diode => "its reverse voltage in node-flux coordinates, as `vo - va`",
+                        LawKind::Switch => "its voltage in node-flux coordinates, as `va - vb`",
+                    };
+                    cx.error_spanned_by(
+                        g_expr,
+                        format!("{what} depends on no velocity; its row holds `g = 0` on the velocities: write {quantity}"),
+                    );
+                    continue;
+                }
+                slips.push((g, gradient));
+            }
+            if slips.len() != 1 + law.g2.iter().count() {
                 continue;
             }
             let (LawKind::Friction, Some(kinetic)) = (law.kind, &law.kinetic) else { continue };
@@ -298,19 +305,82 @@ impl SymModel {
                 );
                 continue;
             }
-            let mode = law.mode();
-            let Some(i) = self.coordinates.iter().position(|c| *c == mode) else { continue };
-            let s = self.q[i];
-            let push = self.graph.mul2(f, s);
+            // Coulomb's force takes power out: a coefficient (or a force) that its form shows
+            // is never positive would push along the slip.
+            let coefficients: Vec<Id> = match on_rows {
+                true => self.lambda.clone().into_iter().map(|l| self.graph.diff(f, l)).collect(),
+                false => vec![f],
+            };
+            if coefficients.iter().any(|&c| never_positive(&self.graph, c)) {
+                let (what, like) = match on_rows {
+                    true => ("friction coefficient", "`mu * floor` with `#[dirac(nonnegative(mu))]`"),
+                    false => ("kinetic force", "`mu * m * g`"),
+                };
+                cx.error_spanned_by(
+                    kinetic,
+                    format!(
+                        "the {what} of `{}` is never positive, so the friction would push along the slip and \
+                         put power into the model; Coulomb's force opposes it: write {like}",
+                        law.name
+                    ),
+                );
+                continue;
+            }
+            let modes: Option<Vec<Id>> = law
+                .modes()
+                .iter()
+                .map(|mode| self.coordinates.iter().position(|c| c == mode).map(|i| self.q[i]))
+                .collect();
+            let Some(modes) = modes else { continue };
+            // Each quantity's share of the push: the mode `s` of a line, `σ (g_i + ε m_i) / |g + ε m|`
+            // of a cone (see `cone_direction`).
+            let shares = match modes[..] {
+                [s] => vec![s],
+                _ => self.cone_direction(&slips.iter().map(|(g, _)| *g).collect::<Vec<_>>(), &modes),
+            };
             if on_rows && self.slip.is_empty() {
                 self.slip = vec![self.graph.num(0.0); self.n()];
             }
-            let forces = if on_rows { &mut self.slip } else { &mut self.force };
-            for (j, d) in gradient.into_iter().enumerate() {
-                let term = self.graph.mul2(push, d);
-                forces[j] = self.graph.sub(forces[j], term);
+            for ((_, gradient), share) in slips.into_iter().zip(shares) {
+                let push = self.graph.mul2(f, share);
+                let forces = if on_rows { &mut self.slip } else { &mut self.force };
+                for (j, d) in gradient.into_iter().enumerate() {
+                    let term = self.graph.mul2(push, d);
+                    forces[j] = self.graph.sub(forces[j], term);
+                }
             }
         }
+    }
+
+    /// The direction of a friction cone's slip `g` against the direction `m` frozen in its mode
+    /// (zero while stuck), with `p = m·g` the slip along `m` and `w = m⊥·g` across it:
+    ///
+    /// ```text
+    /// d = (√(p² + ε²) m + w m⊥) / √(p² + w² + ε²),    m⊥ = (−m₂, m₁),
+    /// ```
+    ///
+    /// Coulomb's `g / |g|` but for a relative `O(ε² / p²)` (`ε` is
+    /// [`CONE_ONSET`](crate::laws::CONE_ONSET)), and smooth everywhere: at the start of a slip from
+    /// rest (`g = 0`) and through a stop along `m` it is `m`, as a friction line's is its mode.
+    fn cone_direction(&mut self, g: &[Id], m: &[Id]) -> Vec<Id> {
+        let (g1, g2, m1, m2) = (g[0], g[1], m[0], m[1]);
+        let along = [self.graph.mul2(m1, g1), self.graph.mul2(m2, g2)];
+        let p = self.graph.add(&along);
+        let (a, b) = (self.graph.mul2(m1, g2), self.graph.mul2(m2, g1));
+        let w = self.graph.sub(a, b);
+        let eps2 = self.graph.num(crate::laws::CONE_ONSET * crate::laws::CONE_ONSET);
+        let p2 = self.graph.mul2(p, p);
+        let w2 = self.graph.mul2(w, w);
+        let r2 = self.graph.add2(p2, eps2);
+        let r = self.graph.call(crate::sym::graph::Func::Sqrt, r2);
+        let n2 = self.graph.add2(r2, w2);
+        let n = self.graph.call(crate::sym::graph::Func::Sqrt, n2);
+        // (r m1 − w m2) / n and (r m2 + w m1) / n.
+        let (rm1, wm2) = (self.graph.mul2(r, m1), self.graph.mul2(w, m2));
+        let (rm2, wm1) = (self.graph.mul2(r, m2), self.graph.mul2(w, m1));
+        let d1 = self.graph.sub(rm1, wm2);
+        let d2 = self.graph.add2(rm2, wm1);
+        vec![self.graph.div(d1, n), self.graph.div(d2, n)]
     }
 
     /// The symbols of the multipliers.

@@ -16,7 +16,7 @@ const G: f64 = 9.81;
 
 /// The consistent start of `model` at positions and velocities `(q, v)`, its laws' modes chosen
 /// from them.
-fn start<M: Hybrid>(model: &M, q: &[f64], v: &[f64]) -> State<M>
+pub(crate) fn start<M: Hybrid>(model: &M, q: &[f64], v: &[f64]) -> State<M>
 where
     DefaultAllocator: Storage<M>,
 {

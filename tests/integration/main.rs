@@ -24,6 +24,7 @@ mod fitting;
 mod floating;
 mod fmi;
 mod free_flyer;
+mod friction_cone;
 mod fuzz;
 mod ground;
 mod hand_derivations;

@@ -98,3 +98,29 @@ where
         assert_eq!(stored, dense, "CSC values scattered back differ from the dense Jacobian");
     }
 }
+
+/// The roots of `f` in `[a, b]`, in increasing order: each sign change over `pieces` equal
+/// pieces, bisected until the midpoint is an end.
+pub fn roots_in(f: &dyn Fn(f64) -> f64, a: f64, b: f64, pieces: usize) -> Vec<f64> {
+    let at = |i: usize| a + (b - a) * i as f64 / pieces as f64;
+    let mut roots = Vec::new();
+    for i in 0..pieces {
+        let (mut lo, mut hi) = (at(i), at(i + 1));
+        if f(lo) * f(hi) >= 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid == lo || mid == hi {
+                break;
+            }
+            if f(lo) * f(mid) <= 0.0 {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        roots.push(0.5 * (lo + hi));
+    }
+    roots
+}

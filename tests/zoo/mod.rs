@@ -999,3 +999,65 @@ pub struct SlopeBall {
     pub slope: f64,
     pub mu: f64,
 }
+
+/// A puck of mass `m` on the floor `z = 0` under Coulomb's isotropic friction cone on the
+/// contact force, `μ λ_floor` against the slip `(vx, vy)`; pushed with `push t` along the
+/// direction `angle` and with the constant `side` at right angles to it.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy, z => vz))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy + vz * vz) - m * g * z)]
+#[dirac(holonomic(floor) = z)]
+#[dirac(force(x) = push * t * cos(angle) - side * sin(angle))]
+#[dirac(force(y) = push * t * sin(angle) + side * cos(angle))]
+#[dirac(friction(slip, kinetic = mu * floor) = (vx, vy))]
+#[dirac(nonnegative(mu))]
+pub struct Puck {
+    pub m: f64,
+    pub g: f64,
+    pub mu: f64,
+    pub push: f64,
+    pub angle: f64,
+    pub side: f64,
+}
+
+/// [`Puck`] with a kinetic force that names no row, `μ m g`: Coulomb's cone as a force of the
+/// state (its push is in `force`, not in the slip rows).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * m * (vx * vx + vy * vy))]
+#[dirac(force(y) = side)]
+#[dirac(friction(slip, kinetic = mu * m * g) = (vx, vy))]
+pub struct FlatPuck {
+    pub m: f64,
+    pub g: f64,
+    pub mu: f64,
+    pub side: f64,
+}
+
+/// A symmetric top on the floor, its point tip held on it (the row `floor`) under Coulomb's
+/// cone on the contact force: centre of mass `(x, y, z)`, ZXZ Euler angles (`psi` precession,
+/// `theta` tilt, `phi` spin), the tip at `l` below the centre along the axis; mass `m`,
+/// moments `a` across the axis and `c` about it, both at the centre. The tip's velocity on the
+/// floor is the centre's less `l` times the axis' rate.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy, z => vz, psi => wpsi, theta => wtheta, phi => wphi))]
+#[dirac(
+    lagrangian = 0.5 * m * (vx * vx + vy * vy + vz * vz)
+        + 0.5 * a * (wtheta * wtheta + wpsi * wpsi * sin(theta) * sin(theta))
+        + 0.5 * c * (wphi + wpsi * cos(theta)) * (wphi + wpsi * cos(theta))
+        - m * g * z
+)]
+#[dirac(holonomic(floor) = z - l * cos(theta))]
+#[dirac(friction(tip, kinetic = mu * floor) = (
+    vx - l * (cos(theta) * wtheta * sin(psi) + sin(theta) * cos(psi) * wpsi),
+    vy + l * (cos(theta) * wtheta * cos(psi) - sin(theta) * sin(psi) * wpsi)
+))]
+#[dirac(nonnegative(mu))]
+pub struct GroundTop {
+    pub m: f64,
+    pub g: f64,
+    pub l: f64,
+    pub a: f64,
+    pub c: f64,
+    pub mu: f64,
+}

@@ -15,8 +15,8 @@ use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
     EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
     L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
-    RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SLIP_ROWS, SOLVED_VELOCITIES, Signature, UNILATERAL,
-    UNILATERAL_DERIVATIVES, UNILATERAL_DQ, rt,
+    RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SLIP_DV, SLIP_ROWS, SOLVED_VELOCITIES, Signature,
+    UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ, rt,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -148,6 +148,10 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
     if !b.slip_rows.is_empty() {
         methods.extend(quote! { const NON_ASSOCIATED: ::core::primitive::bool = true; });
         methods.extend(e.method(&SLIP_ROWS, &matrix(g, &out, &b.slip_rows), TokenStream::new()));
+    }
+    if !b.slip_dv.is_empty() {
+        methods.extend(quote! { const SLIP_TURNS: ::core::primitive::bool = true; });
+        methods.extend(e.method(&SLIP_DV, &matrix(g, &out, &b.slip_dv), TokenStream::new()));
     }
     if !b.outputs.is_empty() {
         methods.extend(e.sized(&OUTPUTS, &b.outputs));

@@ -94,6 +94,7 @@ pub const FORCE_DV: Signature = method("force_dv", &[T, Q, V], Out::MatQQ);
 pub const CONSTRAINT_MATRIX: Signature = method("constraint_matrix", &[T, Q], Out::MatCQ);
 /// `B − A`: emitted for models whose kinetic friction names a row (see `Blocks::slip_rows`).
 pub const SLIP_ROWS: Signature = method("slip_rows", &[T, Q, V], Out::MatCQ);
+pub const SLIP_DV: Signature = method("slip_dv", &[T, Q, V, Lambda], Out::MatQQ);
 pub const DAV_DQ: Signature = method("dav_dq", &[T, Q, V], Out::MatCQ);
 pub const DATL_DQ: Signature = method("datl_dq", &[T, Q, Lambda], Out::MatQQ);
 pub const HOLONOMIC: Signature = method("holonomic", &[T, Q], Out::VecH);

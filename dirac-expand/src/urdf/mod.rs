@@ -487,6 +487,7 @@ impl Writer<'_, '_, '_> {
                     kind: LawKind::Friction,
                     name: Ident::new(&format!("{}_friction", joints[k]), self.span),
                     g: self.expr(&v.render()),
+                    g2: None,
                     kinetic: Some(self.expr(&format!("{:?}", joint.friction))),
                     stiction: None,
                     closed: None,

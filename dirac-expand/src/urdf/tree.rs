@@ -148,8 +148,7 @@ fn methods(tree: &Tree, model: &Model<'_>) -> Option<TokenStream> {
     }
     // Every other coordinate must be a unit slack, `½ rate²` in the Lagrangian: a law's mode,
     // and a contact's slack in the companion that can close contacts (the one with switches).
-    let mut slacks: Vec<String> =
-        model.laws.iter().map(|l| format!("{}{}", l.name, crate::symbol::MODE)).collect();
+    let mut slacks: Vec<String> = model.laws.iter().flat_map(|l| l.modes()).map(|m| m.to_string()).collect();
     if !model.switches.is_empty() {
         slacks.extend(model.unilaterals.iter().map(|u| format!("{}_slack", u.name)));
     }

@@ -74,7 +74,11 @@ where
             let before = self.state().clone();
             let mut after = before.clone();
             self.switch_law(model, event.index, t, &mut after)?;
-            let modes: Vec<usize> = self.laws.iter().map(|law| law.mode).collect();
+            let modes: Vec<usize> = self
+                .laws
+                .iter()
+                .flat_map(|law| std::iter::once(law.mode).chain(law.cone.map(|c| c.0)))
+                .collect();
             let jump = law_jump(model, t, &before, &after, declared, &modes, (self.name(event), what))?;
             let (matrix, parameters) = (jump.matrix, jump.parameters);
             let jump = Jump { matrix, parameters, after, reopened: Vec::new() };

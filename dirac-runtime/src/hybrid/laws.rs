@@ -41,6 +41,11 @@ pub(crate) struct Law {
     /// The engage and release events among the model's declared ones.
     pub engage: usize,
     pub release: usize,
+    /// A friction cone's second mode coordinate and second row: its mode is the slip
+    /// direction `(q[mode], q[cone.0])`, zero while stuck, and its force `(λ[row], λ[cone.1])`.
+    pub cone: Option<(usize, usize)>,
+    /// The law's name.
+    pub name: String,
 }
 
 /// The laws, by what decides their switches.
@@ -95,10 +100,19 @@ pub(crate) fn laws_among(declared: &[(String, i8)], coordinates: &[String], rows
         let Some(law) = name.strip_suffix(engaged) else { continue };
         let release =
             declared.iter().position(|(n, c)| *c == release_code && *n == format!("{law}{released}"));
-        let mode = coordinates.iter().position(|c| *c == format!("{law}_mode"));
-        let row = rows.iter().position(|r| r == law);
+        let coordinate = |suffix: &str| coordinates.iter().position(|c| *c == format!("{law}_mode{suffix}"));
+        let row_named = |suffix: &str| rows.iter().position(|r| *r == format!("{law}{suffix}"));
+        let (mode, row, cone) = match coordinate("") {
+            Some(mode) => (Some(mode), row_named(""), None),
+            None => match (coordinate("_2"), row_named("_2")) {
+                (Some(mode), Some(row)) if kind == Kind::Friction => {
+                    (coordinate("_1"), row_named("_1"), Some((mode, row)))
+                }
+                _ => continue,
+            },
+        };
         if let (Some(release), Some(mode), Some(row)) = (release, mode, row) {
-            out.push(Law { kind, mode, row, engage, release });
+            out.push(Law { kind, mode, row, engage, release, cone, name: law.to_string() });
         }
     }
     out
@@ -109,8 +123,7 @@ pub fn law_names<M: LagrangeDirac>(model: &M) -> Vec<String>
 where
     DefaultAllocator: Storage<M>,
 {
-    let rows = model.constraint_names();
-    laws(model).iter().map(|law| rows[law.row].clone()).collect()
+    laws(model).into_iter().map(|law| law.name).collect()
 }
 
 /// Switches `law` at an event at `t`, in `state` (the state there): sets its mode and leaves
@@ -128,6 +141,10 @@ where
 {
     // The slack rests in either mode: its row holds it released, and engaged nothing moves it.
     state.v[law.mode] = 0.0;
+    if let Some(cone) = law.cone {
+        state.v[cone.0] = 0.0;
+        return switch_cone(model, law, engage, t, state, values);
+    }
     if !engage {
         let force = state.lambda[law.row];
         state.q[law.mode] = if law.kind == Kind::Friction && force > 0.0 { -1.0 } else { 1.0 };
@@ -147,6 +164,98 @@ where
     Ok(())
 }
 
+/// Switches the friction cone `law` (see [`switch`]). Released, it slips against the force that
+/// held it. At its engage event the slip has stopped, or turned from the direction frozen in
+/// its mode by [`CONE_TURN`](crate::model::names::CONE_TURN): stopped, it sticks where the force that holds it stays
+/// within its bound and slips on against that force otherwise; turned, its direction is frozen
+/// again along the slip.
+fn switch_cone<M: Hybrid>(
+    model: &M,
+    law: &Law,
+    engage: bool,
+    t: f64,
+    state: &mut State<M>,
+    values: &mut [f64],
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    if engage {
+        let g = cone_slip(model, law, t, &state.q, &state.v);
+        if norm(g) > stopped(&state.v) {
+            set_cone(state, law, [g[0] / norm(g), g[1] / norm(g)]);
+            consistent(model, t, state)?;
+            return dissipating(model, t, state);
+        }
+        set_cone(state, law, [0.0, 0.0]);
+        let stuck = project(model, t, &state.q, &state.v, Consistency::default())?;
+        if holds(model, law, t, &stuck, values) {
+            *state = stuck;
+            return Ok(());
+        }
+        *state = stuck;
+    }
+    let force = cone_force(law, state);
+    set_cone(state, law, [-force[0] / norm(force), -force[1] / norm(force)]);
+    consistent(model, t, state)?;
+    dissipating(model, t, state)
+}
+
+/// A cone's force `(λ_1, λ_2)` in `state`.
+fn cone_force<M: Hybrid>(law: &Law, state: &State<M>) -> [f64; 2]
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (_, row) = law.cone.expect("a cone");
+    [state.lambda[law.row], state.lambda[row]]
+}
+
+/// Sets a cone's mode, its frozen slip direction (zero: stuck).
+fn set_cone<M: Hybrid>(state: &mut State<M>, law: &Law, direction: [f64; 2])
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (mode, _) = law.cone.expect("a cone");
+    state.q[law.mode] = direction[0];
+    state.q[mode] = direction[1];
+}
+
+/// A cone's slip `(g_1, g_2)` at positions `q` and velocities `v`: its rows stuck, `A v + b`.
+fn cone_slip<M: Hybrid>(model: &M, law: &Law, t: f64, q: &VecQ<M>, v: &VecQ<M>) -> [f64; 2]
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (mode, row) = law.cone.expect("a cone");
+    let mut q = q.clone();
+    q[law.mode] = 0.0;
+    q[mode] = 0.0;
+    let shape = model.shape();
+    let mut a = M::Algebra::zeros_cq(&shape);
+    model.constraint_matrix(t, &q, &mut a);
+    let mut rows = model.sizes().zeros_c::<M>();
+    model.constraint_rate(t, &q, &mut rows);
+    M::Algebra::cq_mul(&a, 1.0, v.as_slice(), rows.as_mut_slice());
+    [rows[law.row], rows[row]]
+}
+
+/// The slip below which a cone counts as stopped at its engage event, at velocities `v`: a
+/// few times the slip within which its kinetic force turns to its frozen direction, and not
+/// below the round-off of the velocities.
+fn stopped<M: Hybrid>(v: &VecQ<M>) -> f64
+where
+    DefaultAllocator: Storage<M>,
+{
+    (4.0 * CONE_ONSET).max(AT_ZERO * (1.0 + v.amax()))
+}
+
+/// The slip speed within which a cone's kinetic force turns to its frozen direction (the
+/// derive's `CONE_ONSET`).
+const CONE_ONSET: f64 = 1e-9;
+
+fn norm(x: [f64; 2]) -> f64 {
+    x[0].hypot(x[1])
+}
+
 /// Whether engaged `law` holds in the consistent `state`: its force strictly within its bound
 /// (friction), its current not negative (diode); a closed switch holds.
 fn holds<M: Hybrid>(model: &M, law: &Law, t: f64, state: &State<M>, values: &mut [f64]) -> bool
@@ -156,6 +265,9 @@ where
     model.events(t, &state.q, &state.v, &state.lambda, values);
     let margin = values[law.release];
     match law.kind {
+        Kind::Friction if law.cone.is_some() => {
+            margin > STRICTLY_WITHIN * (norm(cone_force(law, state)) + margin.abs())
+        }
         Kind::Friction => margin > STRICTLY_WITHIN * (state.lambda[law.row].abs() + margin.abs()),
         Kind::Diode => margin >= 0.0,
         Kind::Switch => true,
@@ -186,7 +298,10 @@ where
         return Ok(None);
     }
     let chosen = consistent_with_laws(model, t0, &state.q, &state.v, Consistency::default())?;
-    let same = laws(model).iter().all(|law| chosen.q[law.mode] == state.q[law.mode]);
+    let same = laws(model).iter().all(|law| {
+        chosen.q[law.mode] == state.q[law.mode]
+            && law.cone.is_none_or(|(mode, _)| chosen.q[mode] == state.q[mode])
+    });
     if same {
         dissipating(model, t0, state)?;
     }
@@ -236,17 +351,42 @@ where
     let (mut q, mut v) = (q.clone(), v.clone());
     for law in &laws {
         v[law.mode] = 0.0;
+        if let Some((mode, _)) = law.cone {
+            v[mode] = 0.0;
+        }
     }
     let v = &v;
     let mut values = vec![0.0; model.event_declarations().len()];
-    // Each law's `g` is its engage function with the law released to the positive side.
-    for law in &laws {
+    // A cone slips along its `g` (keeping the direction frozen in `q` while the slip is within
+    // its turn of it), or is tentatively stuck.
+    let mut cones = Vec::new();
+    for law in laws.iter().filter(|law| law.cone.is_some()) {
+        let (mode, _) = law.cone.expect("a cone");
+        let g = cone_slip(model, law, t, &q, v);
+        let frozen = [q[law.mode], q[mode]];
+        let turn = crate::model::names::CONE_TURN.to_radians().tan().recip();
+        let (along, across) = (frozen[0] * g[0] + frozen[1] * g[1], frozen[0] * g[1] - frozen[1] * g[0]);
+        let keeps = (norm(frozen) - 1.0).abs() < 1e-12 && along - turn * across.abs() > 0.0;
+        let direction = match norm(g) > AT_ZERO * (1.0 + v.amax()) {
+            true if keeps => frozen,
+            true => [g[0] / norm(g), g[1] / norm(g)],
+            false => {
+                cones.push(law);
+                [0.0, 0.0]
+            }
+        };
+        q[law.mode] = direction[0];
+        q[mode] = direction[1];
+    }
+    let lines: Vec<&Law> = laws.iter().filter(|law| law.cone.is_none()).collect();
+    // Each other law's `g` is its engage function with the law released to the positive side.
+    for law in &lines {
         q[law.mode] = 1.0;
     }
     model.events(t, &q, v, &model.sizes().zeros_c::<M>(), &mut values);
     let at_zero = AT_ZERO * (1.0 + v.amax());
-    let mut tentative = Vec::new();
-    for law in &laws {
+    let mut tentative = cones;
+    for law in lines {
         let g = values[law.engage];
         q[law.mode] = match (law.kind, g) {
             (Kind::Friction, g) if g.abs() > at_zero => g.signum(),
@@ -263,10 +403,17 @@ where
     let state = project(model, t, &q, v, options)?;
     let mut released = false;
     for law in tentative {
-        if !holds(model, law, t, &state, &mut values) {
-            q[law.mode] = if law.kind == Kind::Friction && state.lambda[law.row] > 0.0 { -1.0 } else { 1.0 };
-            released = true;
+        if holds(model, law, t, &state, &mut values) {
+            continue;
         }
+        released = true;
+        if let Some((mode, _)) = law.cone {
+            let force = cone_force(law, &state);
+            q[law.mode] = -force[0] / norm(force);
+            q[mode] = -force[1] / norm(force);
+            continue;
+        }
+        q[law.mode] = if law.kind == Kind::Friction && state.lambda[law.row] > 0.0 { -1.0 } else { 1.0 };
     }
     let state = if released { project(model, t, &q, v, options)? } else { state };
     dissipating(model, t, &state)?;

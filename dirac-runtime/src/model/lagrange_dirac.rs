@@ -103,6 +103,11 @@ where
     /// `Bᵀλ` with `B = A +` [`LagrangeDirac::slip_rows`], not `Aᵀλ`. Decided when
     /// the model compiles; `false` unless the derive emits `slip_rows`.
     const NON_ASSOCIATED: bool = false;
+    /// Whether [`LagrangeDirac::slip_rows`] depend on the velocities (a friction cone on a
+    /// contact force pushes against the slip's direction): integrators that hold `B` fixed
+    /// over a step then evaluate it at the step's velocity, with
+    /// [`LagrangeDirac::slip_dv`] in their matrix. `false` unless the derive emits `slip_dv`.
+    const SLIP_TURNS: bool = false;
     /// The sparsity pattern of the condensed Newton system and what to say about each unknown;
     /// interconnections combine their subsystems' to check themselves when they compile.
     const STRUCTURE: Structure;
@@ -144,6 +149,12 @@ where
     /// unless [`LagrangeDirac::NON_ASSOCIATED`] (sparse write).
     fn slip_rows(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut MatCQ<Self>) {
         let _ = (t, q, v, out);
+    }
+    /// `∂((B − A)ᵀ λ)/∂v` at `(t, q, v)`: how the forces that grow with the multipliers turn
+    /// with the velocities (a friction cone's push on a contact force follows the slip). Zero
+    /// (nothing written) unless [`LagrangeDirac::SLIP_TURNS`] (sparse write).
+    fn slip_dv(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, lambda: &VecC<Self>, out: &mut MatQQ<Self>) {
+        let _ = (t, q, v, lambda, out);
     }
     /// The holonomic constraint values `φ(q, t)`, zero on the constraint manifold.
     fn holonomic(&self, t: f64, q: &VecQ<Self>, out: &mut VecH<Self>);

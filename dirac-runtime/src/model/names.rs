@@ -22,6 +22,9 @@ pub const fn is_switch(code: i8) -> bool {
 pub const STOPS: i8 = 3;
 /// The direction code of a friction law's release event (`<law>_slips`).
 pub const SLIPS: i8 = 4;
+/// How far a friction cone's slip turns from the direction frozen in its mode before its
+/// engage event freezes it again, in degrees (the derive's `CONE_TURN`).
+pub const CONE_TURN: f64 = 60.0;
 /// The direction code of an ideal diode's engage event (`<law>_conducts`).
 pub const CONDUCTS: i8 = 5;
 /// The direction code of an ideal diode's release event (`<law>_blocks`).

@@ -54,6 +54,11 @@ where
         model.dl_dv(t1, &x.q1, v, &mut x.lv1);
         model.dl_dq(t0, q, v, &mut x.lq);
         model.force(tm, &x.qm, v, &mut x.f);
+        if M::SLIP_TURNS {
+            // Friction that turns with the slip pushes against the step's own slip: held at
+            // the start's velocity, its stiffness across the slip would be explicit.
+            model.slip_rows(t0, q, v, &mut w.slip0);
+        }
         // The constraint impulse A(q_k)ᵀ Λ (B(q_k)ᵀ Λ where friction pushes with a contact
         // force), held in `target` (unused in this stage).
         x.target.fill(0.0);
@@ -75,6 +80,9 @@ where
         model.l_vq(t1, &x.q1, v, &mut b.lvq1);
         model.force_dq(tm, &x.qm, v, &mut b.fq);
         model.force_dv(tm, &x.qm, v, &mut b.fv);
+        if M::SLIP_TURNS {
+            model.slip_dv(t0, q, v, &w.big_lambda, &mut b.sv);
+        }
         model.constraint_matrix(t1, &x.q1, &mut b.a1);
         model.constraint_matrix(tm, &x.qm, &mut b.am);
         model.dav_dq(tm, &x.qm, v, &mut b.gm);
@@ -130,8 +138,16 @@ fn assemble_stage_one<M: LagrangeDirac>(
     DefaultAllocator: Storage<M>,
 {
     // ½ (L_vv(q_k) + L_vv(q_{k+1}) + h L_vq(q_{k+1})) − (h/2)(L_vq(q_k)ᵀ + F_v + (h/2) F_q)
-    let terms =
-        [(0.5, &b.lvv0), (0.5, &b.lvv1), (0.5 * h, &b.lvq1), (-0.5 * h, &b.fv), (-0.25 * h * h, &b.fq)];
+    // − ∂(B(q_k, v)ᵀ Λ)/∂v where the slip turns with the velocity.
+    let terms = [
+        (0.5, &b.lvv0),
+        (0.5, &b.lvv1),
+        (0.5 * h, &b.lvq1),
+        (-0.5 * h, &b.fv),
+        (-0.25 * h * h, &b.fq),
+        (-1.0, &b.sv),
+    ];
+    let terms = if M::SLIP_TURNS { &terms[..] } else { &terms[..5] };
     let forces = [(-1.0, a0), (-1.0, slip0)];
     let rest = SaddleTerms {
         top: &[],
@@ -154,7 +170,7 @@ fn assemble_stage_one<M: LagrangeDirac>(
         }
         saddle.assemble(&SaddleTerms { top: &[(1.0, &b.sum)], ..rest });
     } else {
-        saddle.assemble(&SaddleTerms { top: &terms, ..rest });
+        saddle.assemble(&SaddleTerms { top: terms, ..rest });
     }
 }
 

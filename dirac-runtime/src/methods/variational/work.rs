@@ -179,6 +179,8 @@ where
     /// The force Jacobians at the midpoint.
     pub fq: MatQQ<M>,
     pub fv: MatQQ<M>,
+    /// `∂((B − A)ᵀ Λ)/∂v` at the step's start, for a model whose slip turns with the velocity.
+    pub sv: MatQQ<M>,
     /// `A` at the step's end and midpoint, and `∂(A v)/∂q` at the midpoint.
     pub a1: MatCQ<M>,
     pub am: MatCQ<M>,
@@ -253,6 +255,7 @@ where
                 lvq1: qq(),
                 fq: qq(),
                 fv: qq(),
+                sv: qq(),
                 a1: cq(),
                 am: cq(),
                 gm: cq(),
