@@ -187,6 +187,12 @@ fn a_puck_at_rest_holds_within_the_cone_and_slips_along_the_force_beyond_it() {
     let state = start(&pushed, &[], &[]);
     let direction = [state.q[FlatPuck::SLIP_MODE_1.index()], state.q[FlatPuck::SLIP_MODE_2.index()]];
     assert!(direction[0].abs() < 1e-15 && direction[1] == 1.0, "{direction:?}");
+    // No friction and nothing pushing: held and slipping are one motion; the start picks one
+    // (it slips, any way) rather than a direction of zero over zero.
+    let free = FlatPuck { mu: 0.0, side: 0.0, ..held };
+    let state = start(&free, &[], &[]);
+    assert!(state.q.iter().chain(state.v.iter()).all(|x| x.is_finite()), "{:?}", state.q);
+    assert_eq!(state.q[FlatPuck::SLIP_MODE_1.index()].hypot(state.q[FlatPuck::SLIP_MODE_2.index()]), 1.0);
 }
 
 /// Sensitivities across a cone's switches (its turns and its stop) against central differences

@@ -195,10 +195,17 @@ where
         }
         *state = stuck;
     }
-    let force = cone_force(law, state);
-    set_cone(state, law, [-force[0] / norm(force), -force[1] / norm(force)]);
+    let direction = against(cone_force(law, state));
+    set_cone(state, law, direction);
     consistent(model, t, state)?;
     dissipating(model, t, state)
+}
+
+/// The direction a cone slips in against the force that held it: any, where no force held it
+/// (nothing pushes, and the cone's bound is zero).
+fn against(force: [f64; 2]) -> [f64; 2] {
+    let length = norm(force);
+    if length > 0.0 { [-force[0] / length, -force[1] / length] } else { [1.0, 0.0] }
 }
 
 /// A cone's force `(λ_1, λ_2)` in `state`.
@@ -408,9 +415,7 @@ where
         }
         released = true;
         if let Some((mode, _)) = law.cone {
-            let force = cone_force(law, &state);
-            q[law.mode] = -force[0] / norm(force);
-            q[mode] = -force[1] / norm(force);
+            [q[law.mode], q[mode]] = against(cone_force(law, &state));
             continue;
         }
         q[law.mode] = if law.kind == Kind::Friction && state.lambda[law.row] > 0.0 { -1.0 } else { 1.0 };
