@@ -75,9 +75,9 @@ pub struct Model<'a> {
     pub floating: Option<Ident>,
     /// `gravity = [gx, gy, gz]`: the URDF robot's gravity, with its key.
     pub gravity: Option<(Ident, Expr)>,
-    /// `ground` or `ground(restitution = e)`: the URDF robot's collision shapes touch the
-    /// ground, with their restitution (the key, for spans).
-    pub ground: Option<(Ident, Option<Expr>)>,
+    /// `ground`, `ground(restitution = e, friction = mu)`: the URDF robot's collision shapes
+    /// touch the ground.
+    pub ground: Option<Ground>,
     /// The kinematic tree of a URDF robot fixed in the world, for the recursions of its
     /// joint-space dynamics.
     pub tree: Option<crate::urdf::tree::Tree>,
@@ -364,11 +364,11 @@ fn parse_items(cx: &Ctxt, model: &mut Model<'_>, input: ParseStream) -> syn::Res
             JOINT_LIMITS => model.joint_limits = Some(key.clone()),
             FLOATING => model.floating = Some(key.clone()),
             GROUND => {
-                let restitution = parse_restitution(input, "ground(restitution = e)")?;
+                let ground = parse_ground(input, key.clone())?;
                 if model.ground.is_some() {
                     cx.error_spanned_by(&key, "duplicate `ground`: a robot touches one");
                 } else {
-                    model.ground = Some((key.clone(), restitution));
+                    model.ground = Some(ground);
                 }
             }
             GRAVITY => {
@@ -543,24 +543,55 @@ fn parse_event(input: ParseStream) -> syn::Result<EventDecl> {
     Ok(EventDecl { name, direction, expr })
 }
 
-/// `(name) = expr` or `(name, restitution = e) = expr`, after `unilateral`.
-/// `(restitution = e)` after a key, if there is one.
-fn parse_restitution(input: ParseStream, written: &str) -> syn::Result<Option<Expr>> {
+/// `ground`, `ground(restitution = e, friction = mu)`.
+pub struct Ground {
+    /// The key, for spans.
+    pub key: Ident,
+    /// The restitution of the impacts on it (0 unless given).
+    pub restitution: Option<Expr>,
+    /// The coefficient of Coulomb's friction cone at each point that rests on it (none unless
+    /// given).
+    pub friction: Option<Expr>,
+    /// `links = ["foot", …]`: the links whose collision shapes touch it (all unless given).
+    pub links: Option<Expr>,
+}
+
+/// `(restitution = e, friction = mu, links = [...])` (each optional, in any order) after
+/// `ground`, if there is one.
+fn parse_ground(input: ParseStream, key: Ident) -> syn::Result<Ground> {
+    let mut ground = Ground { key, restitution: None, friction: None, links: None };
     if !input.peek(syn::token::Paren) {
-        return Ok(None);
+        return Ok(ground);
     }
     let content;
     syn::parenthesized!(content in input);
-    let key = content.call(Ident::parse_any)?;
-    if key != RESTITUTION {
-        return Err(syn::Error::new(key.span(), format!("unknown option `{key}`; expected `{written}`")));
+    while !content.is_empty() {
+        let option = content.call(Ident::parse_any)?;
+        let slot = match option.to_string().as_str() {
+            RESTITUTION => &mut ground.restitution,
+            FRICTION => &mut ground.friction,
+            "links" => &mut ground.links,
+            _ => {
+                return Err(syn::Error::new(
+                    option.span(),
+                    format!(
+                        "unknown option `{option}` of `{GROUND}`; expected `{RESTITUTION} = e` (of its impacts), \
+                         `{FRICTION} = mu` (Coulomb's coefficient where a point rests on it) or \
+                         `links = [\"foot\", …]` (the links that touch it, all unless given)"
+                    ),
+                ));
+            }
+        };
+        if slot.is_some() {
+            return Err(syn::Error::new(option.span(), format!("`{option}` given twice")));
+        }
+        content.parse::<Token![=]>()?;
+        *slot = Some(content.parse::<Expr>()?);
+        if !content.is_empty() {
+            content.parse::<Token![,]>()?;
+        }
     }
-    content.parse::<Token![=]>()?;
-    let e = content.parse::<Expr>()?;
-    if !content.is_empty() {
-        return Err(content.error(format!("expected `{written}`")));
-    }
-    Ok(Some(e))
+    Ok(ground)
 }
 
 fn parse_unilateral(input: ParseStream) -> syn::Result<UnilateralDecl> {

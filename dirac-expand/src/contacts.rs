@@ -74,7 +74,7 @@ pub fn companion(input: &DeriveInput, model: &Model<'_>) -> Option<syn::Result<(
     let with = "This model in its companion with contacts that can rest, all open.";
     let items = quote! {
         #[doc = #doc]
-        #[allow(dead_code)]
+        #[allow(dead_code, non_snake_case)]
         #[derive(Clone, Debug)]
         #definition
         #[allow(dead_code)]

@@ -15,7 +15,7 @@ pub fn read<'a>(cx: &Ctxt, input: &'a syn::DeriveInput) -> Model<'a> {
             &model.joint_limits,
             &model.floating,
             &model.gravity.as_ref().map(|(key, _)| key.clone()),
-            &model.ground.as_ref().map(|(key, _)| key.clone()),
+            &model.ground.as_ref().map(|ground| ground.key.clone()),
         ];
         for key in keys.into_iter().flatten() {
             cx.error_spanned_by(key, format!("`{key}` is a URDF robot's: add `urdf = \"robot.urdf\"`"));

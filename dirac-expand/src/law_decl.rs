@@ -34,6 +34,10 @@ pub struct LawDecl {
     pub stiction: Option<Expr>,
     /// A switch's control: closed while it is positive.
     pub closed: Option<Expr>,
+    /// The field that turns the law on (1) and off (0): a cone at a contact that can rest acts
+    /// only while the contact is closed (`<contact>_closed`). Off, its rows hold its mode
+    /// coordinates still and its events never fall.
+    pub gate: Option<Ident>,
 }
 
 impl LawDecl {
@@ -148,5 +152,5 @@ pub fn parse(kind: LawKind, input: ParseStream) -> syn::Result<LawDecl> {
             ),
         ));
     }
-    Ok(LawDecl { kind, name, g, g2, kinetic, stiction, closed })
+    Ok(LawDecl { kind, name, g, g2, kinetic, stiction, closed, gate: None })
 }

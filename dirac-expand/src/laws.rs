@@ -158,18 +158,29 @@ fn cone(law: &crate::law_decl::LawDecl, g2: &Expr) -> ConeItems {
     let (g1, [m1, m2], [c1, c2]) = (&law.g, [&modes[0], &modes[1]], [&rows[0], &rows[1]]);
     let (r1, r2) = (format_ident!("{}_rate", m1), format_ident!("{}_rate", m2));
     let sigma = quote_spanned!(span=> (#m1 * #m1 + #m2 * #m2));
-    let row =
-        |g: &Expr, rate: &Ident| written(span, quote_spanned!(span=> (1.0 - #sigma) * (#g) + #sigma * #rate));
+    // A gated cone (at a contact that can rest) is itself while its gate is 1; at 0 its rows
+    // hold its mode still and its events stay at 1.
+    let (on, off) = match &law.gate {
+        Some(k) => (quote_spanned!(span=> #k * ), quote_spanned!(span=> + (1.0 - #k))),
+        None => (quote_spanned!(span=>), quote_spanned!(span=>)),
+    };
+    let row = |g: &Expr, rate: &Ident| {
+        let held = match &law.gate {
+            Some(k) => quote_spanned!(span=> + (1.0 - #k) * #rate),
+            None => quote_spanned!(span=>),
+        };
+        written(span, quote_spanned!(span=> #on ((1.0 - #sigma) * (#g) + #sigma * #rate) #held))
+    };
     let kappa = 1.0 / CONE_TURN.to_radians().tan();
     let stops = written(
         span,
-        quote_spanned!(span=> #m1 * (#g1) + #m2 * (#g2) - #kappa * (#m1 * (#g2) - #m2 * (#g1)).abs() + (1.0 - #sigma)),
+        quote_spanned!(span=> #on (#m1 * (#g1) + #m2 * (#g2) - #kappa * (#m1 * (#g2) - #m2 * (#g1)).abs() + (1.0 - #sigma)) #off),
     );
     let bound = law.stiction.as_ref().or(law.kinetic.as_ref()).expect("parsed with its force");
     // `σ` under the root keeps its derivative finite while slipping, where both forces are zero.
     let slips = written(
         span,
-        quote_spanned!(span=> (1.0 - #sigma) * ((#bound) - (#c1 * #c1 + #c2 * #c2 + #sigma).sqrt()) + #sigma),
+        quote_spanned!(span=> #on ((1.0 - #sigma) * ((#bound) - (#c1 * #c1 + #c2 * #c2 + #sigma).sqrt()) + #sigma) #off),
     );
     let coordinates = vec![
         CoordinateDecl { name: m1.clone(), velocity: r1.clone() },

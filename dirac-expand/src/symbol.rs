@@ -42,9 +42,11 @@ pub const JOINT_LIMITS: &str = "joint_limits";
 /// `floating`: with `urdf`, the robot's root moves freely in the world (a free flyer, its
 /// coordinates named after the joint `root_joint`).
 pub const FLOATING: &str = "floating";
-/// `ground` or `ground(restitution = e)`: with `urdf`, the robot's `<collision>` shapes touch
-/// the ground, the plane `z = 0` of the world, each point that can touch it a unilateral
-/// constraint with restitution `e` (0 unless given).
+/// `ground` or `ground(restitution = e, friction = mu)`: with `urdf`, the robot's
+/// `<collision>` shapes touch the ground, the plane `z = 0` of the world, each point that can
+/// touch it a unilateral constraint with restitution `e` (0 unless given) and, where it rests
+/// (in the companion with contacts that can rest), Coulomb's friction cone with coefficient
+/// `mu` (none unless given).
 pub const GROUND: &str = "ground";
 /// `gravity = [gx, gy, gz]`: with `urdf`, the acceleration of gravity in the world's axes,
 /// expressions in the model's parameters (`[0.0, 0.0, -9.81]` unless given).

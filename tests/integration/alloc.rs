@@ -358,6 +358,33 @@ fn stepping_a_friction_cone_does_not_allocate() {
     }
 }
 
+/// A friction cone at a contact that rests (the URDF ball's `ground(friction = mu)`, its rows
+/// and events on only while the contact is closed): the ball slides to its roll without
+/// allocating, under every integrator.
+#[test]
+fn stepping_a_cone_at_a_resting_contact_does_not_allocate() {
+    use crate::zoo::robots::{RollingBall, RollingBallWithContacts};
+    let mut ball = RollingBall { mu: 0.3 }.with_contacts();
+    assert!(ball.set_contact_closed(0, true));
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let mut start = State::<RollingBallWithContacts>::zeros();
+    start.place_free_body("root_joint", [0.0, 0.0, 0.1], identity, [2.0, 0.0, 0.0], [0.0; 3]).expect("free");
+    let start = dirac::consistent_state(&ball, 0.0, &start.q, &start.v, Default::default()).expect("sliding");
+    let radau = Radau::new(&ball, RadauOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let explicit = Explicit::new(&ball, ExplicitOptions::tolerances(1e-10, 1e-10)).expect("valid");
+    let variational = Variational::new(&ball, 1e-3, VariationalOptions::default()).expect("valid");
+    let rolls = 2.0 * 2.0 / (7.0 * 0.3 * 9.81);
+    for (name, (allocated, stops)) in [
+        ("Radau", to_the_first_switch(radau, &start, "ball_ground_slip_stops")),
+        ("Explicit", to_the_first_switch(explicit, &start, "ball_ground_slip_stops")),
+        ("Variational", to_the_first_switch(variational, &start, "ball_ground_slip_stops")),
+    ] {
+        assert_eq!(allocated, 0, "{name}");
+        let stops = stops.expect("the slip stops");
+        assert!((stops - rolls).abs() < 1e-6, "{name}: rolls from {stops}");
+    }
+}
+
 /// The sparse path: a model made of an array of 200 cells, stored sparse and factored by a
 /// sparse LU, under both integrators.
 /// Steps the explicit integrator 200 times after 5 warm-up steps, reading the state within

@@ -51,6 +51,26 @@ pub struct GroundBall {
     pub e: f64,
 }
 
+/// The ball of [`GroundBall`] under Coulomb's friction cone where it rests on the ground
+/// (`ground(friction = mu)`: in its companion `RollingBallWithContacts`, the cone
+/// `ball_ground_slip` on the contact's force while the contact is closed).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/ground/ball.urdf", floating, ground(friction = mu))]
+pub struct RollingBall {
+    /// The coefficient of friction.
+    pub mu: f64,
+}
+
+/// The brick of [`Brick`] under Coulomb's friction cone at each corner that rests on the ground:
+/// lying on a face, four contacts whose normal forces are redundant (four rows, three
+/// freedoms). Its companion needs more than a test thread's stack (`large`).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "../tests/robots/ground/brick.urdf", floating, large, ground(friction = mu))]
+pub struct SlidingBrick {
+    /// The coefficient of friction.
+    pub mu: f64,
+}
+
 /// A brick and the capsule fixed to it, floating, bouncing elastically on the ground at its
 /// eight corners and the capsule's two ends (`tests/robots/ground/brick.urdf`).
 #[derive(LagrangeDirac, Clone, Debug)]

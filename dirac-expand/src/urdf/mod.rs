@@ -45,7 +45,16 @@
 //! above the ground from the link's rotation and origin in the world: a sphere's centre less its
 //! radius, a capsule's two ends less its radius, a box's eight corners. The height of a
 //! cylinder's lowest rim point, `z_c − r √(1 − a_z²)`, has no derivative where the cylinder
-//! stands on a face, and a mesh is not read: both are refused.
+//! stands on a face, and a mesh is not read: both are refused. `ground(links = ["foot", …])`
+//! lets only the shapes of the links named touch it (a robot's feet, its other shapes left out
+//! of the contacts).
+//!
+//! `ground(friction = mu)` puts Coulomb's isotropic friction cone at each such point while it
+//! rests on the ground: in the companion with contacts that can rest (`with_contacts()`), the
+//! cone `<contact>_slip` on the point's slip in the world's `(x, y)`, `R (v + ω × p) + ω_w × (0,
+//! 0, −r)`, with the kinetic force `mu` times the contact's force `<contact>_force`, its rows
+//! and events on only while `<contact>_closed` is 1 (open, its rows hold its mode still and its
+//! events stay away from zero). Impacts are frictionless: friction acts on a resting contact.
 
 mod poly;
 mod read;
@@ -225,10 +234,17 @@ impl Writer<'_, '_, '_> {
     /// sphere or capsule about it): a sphere's centre, a capsule's two ends, a box's eight
     /// corners. A cylinder's rim and a mesh are refused with their line.
     fn ground_contacts(&mut self, robot: &Robot, links: &[String], frames: &[Frame]) {
-        let Some((key, restitution)) = self.model.ground.clone() else { return };
-        let restitution = restitution.unwrap_or_else(|| self.expr("0.0"));
+        let Some(ground) = self.model.ground.as_ref() else { return };
+        let (key, friction) = (ground.key.clone(), ground.friction.clone());
+        let restitution = ground.restitution.clone().unwrap_or_else(|| self.expr("0.0"));
+        // Friction acts where a point rests: in the companion with contacts that can rest.
+        let friction = friction.filter(|_| !self.model.switches.is_empty());
+        let Some(only) = self.touching_links(robot) else { return };
         let mut touching = false;
         for ((link, name), frame) in robot.links.iter().zip(links).zip(frames) {
+            if only.as_ref().is_some_and(|only| !only.contains(&link.name)) {
+                continue;
+            }
             let mut points = Vec::new();
             for collision in &link.collisions {
                 let shape = &collision.shape;
@@ -288,6 +304,10 @@ impl Writer<'_, '_, '_> {
                     restitution: Some(restitution.clone()),
                     expr: self.expr(&height.render()),
                 });
+                if let Some(mu) = &friction {
+                    let law = self.ground_cone(&contact, mu, frame, point, *radius);
+                    self.model.laws.push(law);
+                }
                 touching = true;
             }
         }
@@ -299,6 +319,92 @@ impl Writer<'_, '_, '_> {
                     self.path.value()
                 ),
             );
+        }
+    }
+
+    /// The names in `ground(links = ["foot", …])`, each a link of `robot` with a collision
+    /// shape: `Some(None)` where it is not given (every link touches), `None` after an error.
+    fn touching_links(&mut self, robot: &Robot) -> Option<Option<Vec<String>>> {
+        let Some(expr) = self.model.ground.as_ref().and_then(|ground| ground.links.clone()) else {
+            return Some(None);
+        };
+        let fail = |writer: &mut Self, at: &dyn quote::ToTokens, message: String| {
+            writer.cx.error_spanned_by(at, message);
+            writer.model.incomplete = true;
+            None
+        };
+        let Expr::Array(array) = &expr else {
+            return fail(
+                self,
+                &expr,
+                "`links` names the links that touch the ground: `links = [\"foot\", …]`".into(),
+            );
+        };
+        let mut names = Vec::new();
+        for elem in &array.elems {
+            let Expr::Lit(syn::ExprLit { lit: syn::Lit::Str(name), .. }) = elem else {
+                return fail(self, elem, "a link's name in `links`, as a string: `\"foot\"`".into());
+            };
+            let value = name.value();
+            let Some(link) = robot.links.iter().find(|link| link.name == value) else {
+                let hint = crate::suggest::did_you_mean(&value, robot.links.iter().map(|l| l.name.as_str()));
+                return fail(self, name, format!("no link `{value}` in `{}`{hint}", self.path.value()));
+            };
+            if link.collisions.is_empty() {
+                return fail(
+                    self,
+                    name,
+                    format!("link `{value}` has no `<collision>` shape to touch the ground with"),
+                );
+            }
+            names.push(value);
+        }
+        if names.is_empty() {
+            return fail(
+                self,
+                &expr,
+                "`links` is empty: name at least one link that touches the ground".into(),
+            );
+        }
+        Some(Some(names))
+    }
+
+    /// Coulomb's cone `<contact>_slip` at the point `point` (in the axes of the link at
+    /// `frame`) less `radius` below it, where it rests on the ground: against the point's slip
+    /// `(ẋ, ẏ)` in the world, `R (v + ω × p) + ω_w × (0, 0, −r)` (`ω_w = R ω`), with the kinetic
+    /// force `mu` times the contact's force, and on only while the contact is closed.
+    fn ground_cone(
+        &mut self,
+        contact: &str,
+        mu: &Expr,
+        frame: &Frame,
+        point: &[f64; 3],
+        radius: f64,
+    ) -> LawDecl {
+        let omega: [Poly; 3] = frame.omega.clone().map(|a| Poly::atom(&a));
+        let mut moving = cross(&omega, &point.map(Poly::num));
+        moving.iter_mut().zip(&frame.velocity).for_each(|(m, v)| m.add(&Poly::atom(v), 1.0));
+        let world = |i: usize, of: &[Poly; 3]| {
+            let mut s = Poly::default();
+            for (r, x) in frame.rotation[i].iter().zip(of) {
+                s.add(&Poly::atom(r).mul(x), 1.0);
+            }
+            s
+        };
+        let (mut x, mut y) = (world(0, &moving), world(1, &moving));
+        x.add(&world(1, &omega), -radius);
+        y.add(&world(0, &omega), radius);
+        let force = Ident::new(&format!("{contact}_force"), self.span);
+        let kinetic: Expr = syn::parse_quote_spanned!(self.span=> (#mu) * #force);
+        LawDecl {
+            kind: LawKind::Friction,
+            name: Ident::new(&format!("{contact}_slip"), self.span),
+            g: self.expr(&x.render()),
+            g2: Some(self.expr(&y.render())),
+            kinetic: Some(kinetic),
+            stiction: None,
+            closed: None,
+            gate: Some(Ident::new(&format!("{contact}_closed"), self.span)),
         }
     }
 
@@ -491,6 +597,7 @@ impl Writer<'_, '_, '_> {
                     kinetic: Some(self.expr(&format!("{:?}", joint.friction))),
                     stiction: None,
                     closed: None,
+                    gate: None,
                 });
             }
             if let (Some((lower, upper)), true, None) =

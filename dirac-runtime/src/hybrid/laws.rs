@@ -187,13 +187,34 @@ where
             consistent(model, t, state)?;
             return dissipating(model, t, state);
         }
+        // Every other cone whose slip has stopped here too stops with it (a box's corners
+        // on the ground stop together): held one by one, the rows of those still slipping
+        // would make the contacts' redundant normal forces decide the motion.
+        let mut together = vec![law.clone()];
         set_cone(state, law, [0.0, 0.0]);
+        for other in laws(model) {
+            let Some((mode, _)) = other.cone else { continue };
+            let slipping = state.q[other.mode] != 0.0 || state.q[mode] != 0.0;
+            if slipping && norm(cone_slip(model, &other, t, &state.q, &state.v)) <= stopped(&state.v) {
+                set_cone(state, &other, [0.0, 0.0]);
+                together.push(other);
+            }
+        }
         let stuck = project(model, t, &state.q, &state.v, Consistency::default())?;
-        if holds(model, law, t, &stuck, values) {
-            *state = stuck;
+        let slip_on: Vec<(&Law, [f64; 2])> = together
+            .iter()
+            .filter(|law| !holds(model, law, t, &stuck, values))
+            .map(|law| (law, against(cone_force(law, &stuck))))
+            .collect();
+        *state = stuck;
+        if slip_on.is_empty() {
             return Ok(());
         }
-        *state = stuck;
+        for (law, direction) in slip_on {
+            set_cone(state, law, direction);
+        }
+        consistent(model, t, state)?;
+        return dissipating(model, t, state);
     }
     let direction = against(cone_force(law, state));
     set_cone(state, law, direction);

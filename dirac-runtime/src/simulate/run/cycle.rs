@@ -6,7 +6,7 @@ use std::ops::ControlFlow;
 
 use nalgebra::DefaultAllocator;
 
-use super::restarts::{close, rest_where_it_stands, restart_consistent, restart_from};
+use super::restarts::{close, rest_where_it_stands, restart_consistent, restart_from, restart_in_modes};
 use super::tangent::{Tangent, TangentRef};
 use crate::analysis::diagnose::{CheckRoom, check_constraints_kept};
 use crate::analysis::init::{Consistency, project};
@@ -342,6 +342,7 @@ where
         recorder.record_event(integrator.model(), event, events.state());
         after.clone_from(events.state());
         let (impulse, mut switched) = strike(integrator, events, recorder, after, reopened, &event)?;
+        let contact_switched = switched;
         // A law switches its mode: the state is made consistent in the new one.
         let law = events.switch_law(integrator.model(), event.index, t, after)?;
         // Consistent already, unless an impact or a contact changed it too.
@@ -379,6 +380,8 @@ where
         }
         if consistent && !touched {
             restart_consistent(integrator, events, recorder, t, after)?;
+        } else if contact_switched && !touched {
+            restart_in_modes(integrator, events, recorder, t, after)?;
         } else {
             restart_from(integrator, events, recorder, t, after)?;
         }

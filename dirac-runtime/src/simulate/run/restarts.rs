@@ -7,6 +7,7 @@ use nalgebra::DefaultAllocator;
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::hybrid::events::Events;
+use crate::hybrid::laws::consistent_state;
 use crate::integrator::Integrator;
 use crate::model::Hybrid;
 use crate::model::state::State;
@@ -42,7 +43,25 @@ where
     }
     contacts.rested(j);
     let state = integrator.state().clone();
-    restart_from(integrator, events, recorder, t, &state)
+    restart_in_modes(integrator, events, recorder, t, &state)
+}
+
+/// Restarts the integration at `t` after a contact closed or opened: from the consistent state
+/// nearest to `state` with each law's mode chosen there again (a cone at a contact that has
+/// just closed sticks or slips as the contact's slip says), watching on from there and
+/// recording it.
+pub(crate) fn restart_in_modes<M: Hybrid, I: Integrator<M>>(
+    integrator: &mut I,
+    events: &mut Events<'_, M>,
+    recorder: &mut Recorder<M>,
+    t: f64,
+    state: &State<M>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let consistent = consistent_state(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
+    restart_consistent(integrator, events, recorder, t, &consistent)
 }
 
 /// Restarts the integration at `t` from the consistent state nearest to `state`, watching on
