@@ -378,11 +378,27 @@ where
     let vanishing =
         redundant.as_ref().is_some_and(|z| z.row_iter().any(|row| row.norm_squared() > 1.0 - 1e-9));
     let dependent = if vanishing { 0 } else { redundant.as_ref().map_or(0, |z| z.ncols()) };
-    if null > free + dependent {
-        return Err(singular());
-    }
-    let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
-    let lambda = DVector::from_fn(m, |j, _| units.row[j] * x[n + j]);
+    let lambda = if null <= free + dependent {
+        let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
+        DVector::from_fn(m, |j, _| units.row[j] * x[n + j])
+    } else {
+        // Singular in the model's own units is singular in the units it is written in too,
+        // unless the scaling made it so: a velocity whose inertia the constraints hold to a
+        // sliver (a floating base's rotation rates near a turn about an axis) scaled to a unit
+        // one. Where the system as written is regular, it decides.
+        let mut written = DMatrix::zeros(n + m, n + m);
+        written.view_mut((0, 0), (n, n)).copy_from(lvv);
+        written.view_mut((0, n), (n, m)).copy_from(&(-b.transpose()));
+        written.view_mut((n, 0), (m, n)).copy_from(a);
+        let rhs = DVector::from_fn(n + m, |i, _| if i < n { top[i] } else { bottom[i - n] });
+        let svd = crate::analysis::diagnose::svd(&written).ok_or_else(singular)?;
+        let largest = svd.singular_values.max().max(1e-300);
+        if svd.singular_values.iter().filter(|&&x| x <= 1e-12 * largest).count() > free + dependent {
+            return Err(singular());
+        }
+        let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
+        x.rows(n, m).into_owned()
+    };
     if dependent == 0 {
         return Ok(lambda);
     }

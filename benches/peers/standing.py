@@ -1,0 +1,123 @@
+"""The A1 quadruped standing under a joint PD controller and falling without it, in MuJoCo,
+beside dirac's run of the same robot (benches/peers/standing.rs).
+
+Reads dirac's lines (`case,t,quantity,value`) from the file given, loads the same URDF into
+MuJoCo (its visuals dropped, only the feet's collision spheres kept, a free joint on the base,
+the plane z = 0), starts from dirac's start (the four feet on the ground), runs the same PD law
+sampled at 1 kHz (held between samples) and prints both runs' base and joints side by side.
+MuJoCo at its best for contact with friction: elliptic cones, `impratio` 10, 10 iterations of
+its no-slip solver, the Newton solver, time step 1e-4 s. dirac's robot has no joint limits, so
+MuJoCo's are disabled.
+
+    python standing.py A1_URDF DIRAC_LINES
+"""
+
+import re
+import sys
+import time
+from collections import defaultdict
+
+import mujoco
+import numpy as np
+
+KP, KD, PERIOD, MU, STEP = 50.0, 3.0, 1e-3, 0.8, 1e-4
+LEGS = ["FR", "FL", "RR", "RL"]
+JOINTS = [("hip", 0.0), ("thigh", 0.8), ("calf", -1.81)]
+
+
+def model(urdf: str) -> mujoco.MjModel:
+    text = open(urdf).read()
+    text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
+    text = re.sub(r"<collision>.*?</collision>", lambda m: m.group(0) if "sphere" in m.group(0) else "", text, flags=re.S)
+    text = re.sub(r"(<robot[^>]*>)", r'\1<mujoco><compiler discardvisual="true" fusestatic="false"/></mujoco>', text, count=1)
+    path = "/tmp/dirac_a1_mujoco.urdf"
+    open(path, "w").write(text)
+    spec = mujoco.MjSpec.from_file(path)
+    spec.option.timestep = STEP
+    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+    spec.option.impratio = 10
+    spec.option.noslip_iterations = 10
+    spec.option.solver = mujoco.mjtSolver.mjSOL_NEWTON
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_LIMIT
+    spec.worldbody.first_body().add_freejoint()
+    floor = spec.worldbody.add_geom()
+    floor.type = mujoco.mjtGeom.mjGEOM_PLANE
+    floor.size = [10, 10, 0.1]
+    for geom in spec.geoms:
+        geom.friction = [MU, 0, 0]
+        geom.condim = 3
+    return spec.compile()
+
+
+def run(m: mujoco.MjModel, start: dict, end: float, times: list, control: bool) -> dict:
+    d = mujoco.MjData(m)
+    d.qpos[0:3] = [start["base_x"], start["base_y"], start["base_z"]]
+    d.qpos[3:7] = [1, 0, 0, 0]
+    joints = [f"{leg}_{j}_joint" for leg in LEGS for j, _ in JOINTS]
+    angles = {f"{leg}_{j}_joint": a for leg in LEGS for j, a in JOINTS}
+    adr = {name: (m.joint(name).qposadr[0], m.joint(name).dofadr[0]) for name in joints}
+    actuated = {name: m.joint(name).dofadr[0] for name in joints}
+    for name in joints:
+        d.qpos[adr[name][0]] = start[name]
+    mujoco.mj_forward(m, d)
+    out = defaultdict(dict)
+    per_sample = round(PERIOD / STEP)
+    samples = iter(sorted(times))
+    next_sample = next(samples, None)
+    step = 0
+    while True:
+        t = step * STEP
+        while next_sample is not None and abs(t - next_sample) < 0.5 * STEP:
+            out[next_sample].update({"base_x": d.qpos[0], "base_y": d.qpos[1], "base_z": d.qpos[2]})
+            out[next_sample].update({name: d.qpos[adr[name][0]] for name in joints})
+            next_sample = next(samples, None)
+        if t >= end - 0.5 * STEP:
+            break
+        if step % per_sample == 0:
+            d.qfrc_applied[:] = 0.0
+            if control:
+                for name in joints:
+                    q, v = d.qpos[adr[name][0]], d.qvel[adr[name][1]]
+                    d.qfrc_applied[actuated[name]] = KP * (angles[name] - q) - KD * v
+        mujoco.mj_step(m, d)
+        step += 1
+    return out
+
+
+def main():
+    urdf, lines = sys.argv[1], sys.argv[2]
+    dirac = defaultdict(lambda: defaultdict(dict))
+    for line in open(lines):
+        case, t, quantity, value = line.strip().split(",")
+        dirac[case][float(t)][quantity] = float(value)
+    start = dirac["start"][0.0]
+    m = model(urdf)
+    print(f"MuJoCo {mujoco.__version__}: nq = {m.nq}, mass {sum(m.body_mass):.4f} kg, step {STEP} s")
+    for case, end, control in [("standing", 5.0, True), ("falling", 0.15, False)]:
+        times = sorted(dirac[case])
+        clock = time.perf_counter()
+        theirs = run(m, start, end, times, control)
+        print(f"MuJoCo: {end} s in {time.perf_counter() - clock:.2f} s of wall time")
+        print(f"\n{case} ({'PD at 1 kHz' if control else 'no torques'}):")
+        print(f"{'t':>6} | {'dirac z':>10} {'MuJoCo z':>10} {'Δz':>9} | {'dirac x':>10} {'MuJoCo x':>10} | {'joints Δ (rad)':>14}")
+        for t in times:
+            mine, other = dirac[case][t], theirs.get(t)
+            if other is None:
+                continue
+            joints = max(abs(mine[k] - other[k]) for k in mine if k.endswith("_joint"))
+            print(
+                f"{t:6.3f} | {mine['base_z']:10.6f} {other['base_z']:10.6f} {mine['base_z'] - other['base_z']:+9.2e} | "
+                f"{mine['base_x']:+10.6f} {other['base_x']:+10.6f} | {joints:14.2e}"
+            )
+        if control:
+            # Settled (the PD's oscillation has died out by 2.5 s in both): what moves after.
+            late = [t for t in times if t >= 2.5]
+            for name, run_ in [("dirac", dirac[case]), ("MuJoCo", theirs)]:
+                z = [run_[t]["base_z"] for t in late]
+                x = [run_[t]["base_x"] for t in late]
+                print(f"{name}: from 2.5 s to 5 s the base moves {max(z) - min(z):.2e} m in z, {max(x) - min(x):.2e} m in x")
+
+
+if __name__ == "__main__":
+    main()
