@@ -7,7 +7,7 @@
 //! (`ground(friction = mu, links = [...])`); the run starts with all four resting, from the
 //! consistent state nearest to the SRDF's standing posture. Prints `case,t,quantity,value` lines:
 //! the start (the state MuJoCo starts from) and the base's position and the joints' angles at
-//! the sample times.
+//! the sample times; writes the standing run as a 3D page, `standing.html`.
 
 use dirac::prelude::*;
 
@@ -120,6 +120,13 @@ fn run() -> Result<(), SimError> {
                 .solve()?,
             false => run.solve()?,
         };
+        if control {
+            // The standing robot in 3D, for a browser: target/peers/standing/standing.html.
+            dirac::plot::Scene::of(&solution, "The A1 standing under a joint PD controller")
+                .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?
+                .write_html("standing.html")
+                .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?;
+        }
         eprintln!(
             "{case}: {end} s in {:.2} s of wall time, {} steps, slips {:?}",
             clock.elapsed().as_secs_f64(),
