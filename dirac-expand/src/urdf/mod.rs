@@ -953,6 +953,40 @@ mod tests {
         std::fs::remove_dir_all(&dir).ok();
     }
 
+    /// `ground(friction = mu, links = [...])`: the cone of each point of the links named, in the
+    /// companion only (the model itself has no contact force to push with), gated by its
+    /// contact's `closed`; the other link's shapes touch nothing.
+    #[test]
+    fn the_ground_with_friction_puts_a_cone_at_each_resting_point_of_the_links_named() {
+        let dir = std::env::temp_dir().join(format!("dirac-ground-friction-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        let file = dir.join("two.urdf");
+        let inertial = "<inertial><mass value=\"1\"/><inertia ixx=\"1\" iyy=\"1\" izz=\"1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial>";
+        let sphere = "<collision><geometry><sphere radius=\"0.1\"/></geometry></collision>";
+        let text = format!(
+            "<robot name=\"r\"><link name=\"a\">{inertial}{sphere}</link>\
+             <joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/><origin xyz=\"1 0 0\"/></joint>\
+             <link name=\"b\">{inertial}{sphere}</link></robot>"
+        );
+        std::fs::write(&file, text).expect("written");
+        let path = file.display().to_string();
+        let input: syn::DeriveInput = syn::parse_quote! {
+            #[dirac(urdf = #path, floating, ground(friction = mu, links = ["b"]))]
+            struct Robot { mu: f64 }
+        };
+        let out = crate::lagrange_dirac(&input).to_string();
+        assert!(!out.contains("compile_error"), "{}", &out[..out.len().min(3000)]);
+        assert!(out.contains("\"b_ground\"") && !out.contains("\"a_ground\""), "only `b` touches");
+        // The model's own names list no cone; its companion's does, with both events.
+        let model = out.find("RobotWithContacts").expect("a companion");
+        assert!(!out[..model].contains("b_ground_slip"), "no cone outside the companion");
+        for name in ["\"b_ground_slip_stops\"", "\"b_ground_slip_slips\"", "\"b_ground_slip_mode_1\""] {
+            assert!(out[model..].contains(name), "{name}");
+        }
+        assert!(out[model..].contains("b_ground_closed"), "gated by the contact");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
     /// The humanoid (4 s unoptimised): only with `DIRAC_TALOS=1`, from
     /// `benches/robot_build.sh`'s instructions.
     #[test]

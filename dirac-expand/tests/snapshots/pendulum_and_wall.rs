@@ -801,7 +801,7 @@ const _: () = {
     }
 };
 ///`PendulumAndWall` with contacts that can rest: each unilateral constraint `c` has a row `c_force` that holds it while `c_closed` is 1 (its multiplier the contact force) and a slack coordinate `c_slack` that the row holds at zero while the contact is open. Made by `PendulumAndWall::with_contacts`.
-#[allow(dead_code)]
+#[allow(dead_code, non_snake_case)]
 #[derive(Clone, Debug)]
 pub struct PendulumAndWallWithContacts {
     ///The parameter `m` of `PendulumAndWall`.
