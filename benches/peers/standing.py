@@ -9,7 +9,11 @@ MuJoCo at its best for contact with friction: elliptic cones, `impratio` 10, 10 
 its no-slip solver, the Newton solver, time step 1e-4 s. dirac's robot has no joint limits, so
 MuJoCo's are disabled.
 
-    python standing.py A1_URDF DIRAC_LINES
+    python standing.py A1_URDF DIRAC_LINES [PAGE CHROMIUM]
+
+With the standing run's 3D page and headless Chromium, also checks the page: at the run's end
+its screenshot is not background where dirac's state puts each foot (projected by the camera
+the page reports on its canvas), and is background in the corner.
 """
 
 import re
@@ -119,5 +123,41 @@ def main():
                 print(f"{name}: from 2.5 s to 5 s the base moves {max(z) - min(z):.2e} m in z, {max(x) - min(x):.2e} m in x")
 
 
+def view(page: str, chromium: str, feet: dict, t: float) -> bool:
+    import subprocess
+
+    from PIL import Image
+
+    url = f"file://{page}#t={t:e}"
+    dom = subprocess.run([chromium, "--virtual-time-budget=1000", "--dump-dom", url], capture_output=True, text=True, check=True).stdout
+    canvas = re.search(r"<canvas[^>]*>", dom).group(0)
+    read = lambda name: [float(x) for x in re.search(rf'{name}="([^"]*)"', canvas).group(1).split(",")]
+    centre, right, up, scale, pixel = read("data-center"), read("data-right"), read("data-up"), read("data-scale")[0], read("data-pixel")
+    shot = page.replace(".html", ".png")
+    subprocess.run(
+        [chromium, "--virtual-time-budget=1000", "--window-size=800,700", "--force-device-scale-factor=1", f"--screenshot={shot}", url],
+        capture_output=True, check=True,
+    )
+    image = Image.open(shot).convert("RGB")
+    ok = image.getpixel((20, 20)) == (255, 255, 255)
+    print(f"\n3D page at t = {t} s ({shot}): the corner is {'background' if ok else 'not background'}")
+    for leg in LEGS:
+        p = [feet[f"{leg}_foot_{axis}"] for axis in "xyz"]
+        d = [p[i] - centre[i] for i in range(3)]
+        along = lambda axis: sum(axis[i] * d[i] for i in range(3))
+        at = (round(pixel[0] + scale * along(right)), round(pixel[1] - scale * along(up)))
+        shown = image.getpixel(at)
+        drawn = shown != (255, 255, 255)
+        ok &= drawn
+        print(f"{leg} foot at ({p[0]:+.4f}, {p[1]:+.4f}, {p[2]:+.4f}) m, pixel {at}: {shown} {'(drawn)' if drawn else '(background!)'}")
+    return ok
+
+
 if __name__ == "__main__":
     main()
+    if len(sys.argv) > 4:
+        lines = [line.strip().split(",") for line in open(sys.argv[2])]
+        feet = {quantity: float(value) for case, t, quantity, value in lines if case == "view"}
+        end = max(float(t) for case, t, _, _ in lines if case == "view")
+        if not view(sys.argv[3], sys.argv[4], feet, end):
+            sys.exit("the 3D page does not show the robot's feet where dirac's state puts them")

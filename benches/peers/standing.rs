@@ -121,6 +121,15 @@ fn run() -> Result<(), SimError> {
             false => run.solve()?,
         };
         if control {
+            // Where the feet stand at the end, for the check of the 3D page's pixels.
+            let last = solution.len() - 1;
+            for leg in LEGS {
+                for axis in ["x", "y", "z"] {
+                    let name = format!("{leg}_foot_{axis}");
+                    let column = solution.column(&format!("out({name})")).expect("a foot's pose output");
+                    println!("view,{},{name},{:.17e}", solution.t()[last], column[last]);
+                }
+            }
             // The standing robot in 3D, for a browser: target/peers/standing/standing.html.
             dirac::plot::Scene::of(&solution, "The A1 standing under a joint PD controller")
                 .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?

@@ -3,7 +3,8 @@
 # example-robot-data package (its URDF, its base floating, its four feet's spheres touching the
 # ground under Coulomb's cone, mu = 0.8) held in the SRDF's standing posture by a joint PD
 # controller sampled at 1 kHz for 5 s, and falling for 0.15 s with the controller off
-# (benches/peers/standing.rs, benches/peers/standing.py). MuJoCo and the robot's data are
+# (benches/peers/standing.rs, benches/peers/standing.py), and the standing robot's 3D page
+# checked in headless Chromium (tests/browser/chromium.sh). MuJoCo and the robot's data are
 # installed into a virtual environment under target/peers; dirac's side is built in a crate of
 # its own under target/peers/standing (the 12-joint robot takes a minute to compile). Not part
 # of CI.
@@ -18,6 +19,7 @@ mkdir -p "$out/src"
 [ -x "$venv/bin/python" ] || python3 -m venv "$venv"
 "$venv/bin/pip" install --quiet mujoco
 "$venv/bin/pip" install --quiet --no-deps example-robot-data
+"$venv/bin/pip" install --quiet pillow
 site=$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
 urdf="$site/cmeel.prefix/share/example-robot-data/robots/a1_description/urdf/a1.urdf"
 cat > "$out/Cargo.toml" <<TOML
@@ -37,4 +39,5 @@ debug = false
 TOML
 sed "s|@URDF@|$urdf|" benches/peers/standing.rs > "$out/src/main.rs"
 (cd "$out" && CARGO_TARGET_DIR="$out/target" cargo run --quiet --release > "$out/dirac.csv")
-"$venv/bin/python" benches/peers/standing.py "$urdf" "$out/dirac.csv"
+chromium=$(bash tests/browser/chromium.sh)
+"$venv/bin/python" benches/peers/standing.py "$urdf" "$out/dirac.csv" "$out/standing.html" "$chromium"
