@@ -81,6 +81,11 @@ pub struct Model<'a> {
     /// The kinematic tree of a URDF robot fixed in the world, for the recursions of its
     /// joint-space dynamics.
     pub tree: Option<crate::urdf::tree::Tree>,
+    /// `∂L/∂q` and `∂L/∂v` of the coordinates named, by the recursions of a URDF robot's tree
+    /// (its composite momenta and weights): what the blocks differentiate in place of the
+    /// Lagrangian's gradient, which they equal. Every other coordinate's come from the
+    /// Lagrangian.
+    pub gradients: Option<Vec<(String, Expr, Expr)>>,
     /// `LINKS` of `impl Shapes` for a URDF robot: its links as a view draws them.
     pub shapes: Option<proc_macro2::TokenStream>,
     /// Files the model was read from, which the expansion names so that Cargo rebuilds it when
@@ -207,6 +212,7 @@ impl<'a> Model<'a> {
             gravity: None,
             ground: None,
             tree: None,
+            gradients: None,
             shapes: None,
             tracked_files: Vec::new(),
             incomplete: false,

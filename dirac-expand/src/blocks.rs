@@ -165,8 +165,13 @@ impl Blocks {
         let rates = m.b.clone();
         let time = m.symbols.declare(&mut m.graph, Sym::Time);
         let g = &mut m.graph;
-        let dl_dv = gradient(g, lagrangian, &v);
-        let dl_dq = gradient(g, lagrangian, &q);
+        let (dl_dq, dl_dv) = match m.gradients.clone() {
+            Some(given) => given,
+            None => {
+                let dl_dv = gradient(g, lagrangian, &v);
+                (gradient(g, lagrangian, &q), dl_dv)
+            }
+        };
         let at_lambda: Vec<Id> = (0..n)
             .map(|i| {
                 let column: Vec<Id> = a.iter().map(|row| row[i]).collect();

@@ -32,6 +32,10 @@ pub struct SymModel {
     pub p: Vec<Id>,
     pub lambda: Vec<Id>,
     pub lagrangian: Id,
+    /// `∂L/∂q` and `∂L/∂v`, one per coordinate, where the model gives them
+    /// ([`Model::gradients`](crate::ast::Model::gradients)); `None` otherwise, and the blocks
+    /// differentiate the Lagrangian.
+    pub gradients: Option<(Vec<Id>, Vec<Id>)>,
     pub force: Vec<Id>,
     /// `A(q, t)`, `m × n`.
     pub a: Vec<Vec<Id>>,
@@ -102,6 +106,7 @@ impl SymModel {
             p: Vec::new(),
             lambda: Vec::new(),
             lagrangian: zero,
+            gradients: None,
             force: Vec::new(),
             a: Vec::new(),
             b: Vec::new(),
@@ -182,8 +187,35 @@ impl SymModel {
         }
         sm.lower_unilaterals(cx, model, &scope);
         sm.lagrangian = lagrangian?;
+        sm.gradients = sm.lower_gradients(cx, model, &scope);
         sm.add_switching_surfaces();
         (!cx.has_errors()).then_some(sm)
+    }
+
+    /// `∂L/∂q` and `∂L/∂v` of every coordinate: the model's expressions for those it names, the
+    /// Lagrangian's derivatives for the others (a law's mode, a contact's slack); `None` if the
+    /// model names none.
+    fn lower_gradients(&mut self, cx: &Ctxt, model: &Model<'_>, scope: &Scope) -> Option<(Vec<Id>, Vec<Id>)> {
+        let named = model.gradients.as_ref()?;
+        let context = Context { what: "the Lagrangian", velocities: true, switch_on_velocities: false };
+        let mut dl_dq = Vec::with_capacity(self.n());
+        let mut dl_dv = Vec::with_capacity(self.n());
+        for i in 0..self.n() {
+            let given = named.iter().find(|(name, ..)| self.coordinates[i].unraw() == *name);
+            let (dq, dv) = match given {
+                Some((_, dq, dv)) => {
+                    let mut lw = self.lowerer(cx, scope);
+                    (lw.lower(dq, context)?, lw.lower(dv, context)?)
+                }
+                None => {
+                    let (q, v, l) = (self.q[i], self.v[i], self.lagrangian);
+                    (self.graph.diff(l, q), self.graph.diff(l, v))
+                }
+            };
+            dl_dq.push(dq);
+            dl_dv.push(dv);
+        }
+        Some((dl_dq, dl_dv))
     }
 
     /// Adds an event for each switching surface `c = 0` of a non-smooth function or a

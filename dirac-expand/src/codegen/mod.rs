@@ -256,12 +256,14 @@ fn jacobian_blocks(g: &Graph, b: &Blocks) -> Vec<Assign> {
 const ALWAYS_INLINED_OPERATIONS: usize = 1000;
 
 /// The arithmetic operations above which a kernel is not even hinted inline (see
-/// `Emitter::method`).
-const HINTED_OPERATIONS: usize = 5000;
+/// `Emitter::method`): the Panda's `L_vq` and `L_vv` hold about 3 200 and 2 600, and with the hint
+/// its release rebuild took 5.4 s instead of 4.4 (`benches/robot_build.sh`), its swing the same.
+const HINTED_OPERATIONS: usize = 2000;
 
 /// The arithmetic operations of `jacobian_blocks` above which a model's second derivatives are
-/// compiled once (see `generate`): the Panda's hold 23 000, the 8-link pendulum's a few hundred.
-const COMPACT_OPERATIONS: usize = 10_000;
+/// compiled once (see `generate`): the Panda's hold 8 850 (23 000 while they differentiated its
+/// Lagrangian link by link), the 8-link pendulum's a few hundred.
+const COMPACT_OPERATIONS: usize = 4_000;
 
 /// Writes methods of one primitive model.
 struct Emitter<'a> {

@@ -19,6 +19,14 @@
 //! link's rotation in the world. Every step is a definition, so the derive's graph shares them
 //! and differentiates each once.
 //!
+//! For a robot whose joints form a tree fixed in the world, the blocks do not differentiate this
+//! Lagrangian: its gradient is written out too, from the momentum `H` and the weight `W` of the
+//! links beyond each joint, carried from the leaves to the root (`∂L/∂v = Sᵀ H`, `∂L/∂q = Hᵀ (V ×
+//! S) + Sᵀ W`, `Writer::gradients`), and the Jacobian blocks differentiate that. The
+//! Lagrangian's own gradient reaches every link's energy through the whole chain above it, and
+//! its derivatives again, so its code grew with the cube of the chain's length; the recursion's
+//! gradient grows with the number of links and its derivatives with their square.
+//!
 //! A `floating` joint (from the root, fixed in the world), or the whole robot with the model's
 //! `floating` (a free joint `root_joint` from the world to the root, as Pinocchio's free
 //! flyer), moves its child freely: the coordinates `<joint>_x`, `_y`, `_z` are the child's
@@ -126,6 +134,10 @@ struct Frame {
     velocity: [Atom; 3],
     rotation: [[Atom; 3]; 3],
     origin: [Atom; 3],
+    /// The cosine and sine of a revolute joint's angle (`None` for another joint).
+    turn: Option<(Atom, Atom)>,
+    /// The link's origin in its parent's frame (`xyz`, and the slide of a prismatic joint).
+    offset: [Poly; 3],
 }
 
 const XYZ: [&str; 3] = ["x", "y", "z"];
@@ -146,7 +158,14 @@ impl Writer<'_, '_, '_> {
         self.model.shapes = Some(view::links(robot, &links));
         let zero = || [Atom::Num(0.0), Atom::Num(0.0), Atom::Num(0.0)];
         let identity = read::rpy([0.0; 3]).map(|row| row.map(Atom::Num));
-        let root = Frame { omega: zero(), velocity: zero(), rotation: identity, origin: zero() };
+        let root = Frame {
+            omega: zero(),
+            velocity: zero(),
+            rotation: identity,
+            origin: zero(),
+            turn: None,
+            offset: [0.0; 3].map(Poly::num),
+        };
         if robot.links[0].shown {
             self.pose_outputs(&links[0], &root);
         }
@@ -210,6 +229,7 @@ impl Writer<'_, '_, '_> {
             frames.push(frame);
         }
         momenta.outputs(self);
+        self.gradients(robot, &links, &joints, &frames, &gravity);
         if self.model.ground.is_some() {
             self.ground_contacts(robot, &links, &frames);
         }
@@ -227,6 +247,156 @@ impl Writer<'_, '_, '_> {
         }
         let key = Ident::new("lagrangian", self.span);
         self.model.lagrangian = Some((key, self.expr(&lagrangian.render())));
+    }
+
+    /// `∂L/∂v` and `∂L/∂q` of each joint of a robot whose joints form a tree fixed in the world,
+    /// from the momentum `H` and the weight `W` of the links beyond the joint, in the axes of the
+    /// link it moves and about its origin (forces: moment, then force):
+    ///
+    /// ```text
+    /// ∂L/∂v = Sᵀ H,    ∂L/∂q = Hᵀ (V × S) + Sᵀ W
+    /// ```
+    ///
+    /// with `S` the joint's motion (`(a, 0)` for a turn about `a`, `(0, a)` for a slide) and `V =
+    /// (ω, v)` the link's velocity. Each link adds its own momentum `(I ω + m c × v, m v + ω × m c)`
+    /// (inertia about its origin) and weight `(m c × g, m g)` to its parent's, moved by the joint
+    /// (`f' = R f`, `n' = R n + d × f'`). The first term is `Σ ∂T/∂q` over the links beyond the
+    /// joint: turning the joint moves each of their velocities by `S × (V_b − V_parent)` and turns
+    /// their inertias by `S×`, which leaves `h_bᵀ (V_parent × S)`, and `V_parent × S = V × S`.
+    /// These are linear in the number of links; the Lagrangian's gradient, differentiated link by
+    /// link through the chain, is not. Nothing for a floating or planar robot.
+    fn gradients(
+        &mut self,
+        robot: &Robot,
+        links: &[String],
+        joints: &[String],
+        frames: &[Frame],
+        gravity: &Option<[Atom; 3]>,
+    ) {
+        if robot.joints.iter().any(|j| matches!(j.kind, Kind::Floating | Kind::Planar)) {
+            return;
+        }
+        type Force = [[Poly; 3]; 2];
+        let empty = || -> Force { Default::default() };
+        let mut momentum: Vec<Force> = (0..robot.links.len()).map(|_| empty()).collect();
+        let mut weight: Vec<Force> = (0..robot.links.len()).map(|_| empty()).collect();
+        for (l, body) in robot.links.iter().enumerate().skip(1) {
+            if body.mass == 0.0 && body.inertia.iter().flatten().all(|x| *x == 0.0) {
+                continue;
+            }
+            let frame = &frames[l];
+            let c = body.com;
+            let cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+            let first: [Poly; 3] = c.map(|x| Poly::num(body.mass * x));
+            let w: [Poly; 3] = frame.omega.clone().map(|a| Poly::atom(&a));
+            let u: [Poly; 3] = frame.velocity.clone().map(|a| Poly::atom(&a));
+            let mut n = cross(&first, &u);
+            for (i, ni) in n.iter_mut().enumerate() {
+                for (j, wj) in w.iter().enumerate() {
+                    let about_origin =
+                        body.inertia[i][j] + body.mass * (if i == j { cc } else { 0.0 } - c[i] * c[j]);
+                    ni.add(wj, about_origin);
+                }
+            }
+            let mut f = cross(&w, &first);
+            for (fi, ui) in f.iter_mut().zip(&u) {
+                fi.add(ui, body.mass);
+            }
+            momentum[l] = [n, f];
+            if body.mass > 0.0 {
+                // Gravity in the link's axes: column j of its rotation in the world, dotted with g.
+                let g: [Poly; 3] = std::array::from_fn(|j| match gravity {
+                    None => Poly::atom(&frame.rotation[2][j]).scaled(-GRAVITY),
+                    Some(g) => {
+                        let mut s = Poly::default();
+                        for (row, gi) in frame.rotation.iter().zip(g) {
+                            s.add(&Poly::atom(&row[j]).mul(&Poly::atom(gi)), 1.0);
+                        }
+                        s
+                    }
+                });
+                let g = self.bind3(&format!("{}_gravity", links[l]), g).map(|a| Poly::atom(&a));
+                weight[l] = [cross(&first, &g), g.map(|x| x.scaled(body.mass))];
+            }
+        }
+        let mut gradients = Vec::new();
+        for (k, joint) in robot.joints.iter().enumerate().rev() {
+            let (l, link) = (k + 1, &links[k + 1]);
+            let [hn, hf] = std::mem::take(&mut momentum[l]);
+            let [wn, wf] = std::mem::take(&mut weight[l]);
+            let bind = |w: &mut Self, name: &str, x: [Poly; 3]| {
+                w.bind3(&format!("{link}_{name}"), x).map(|a| Poly::atom(&a))
+            };
+            let (hn, hf) = (bind(self, "hn", hn), bind(self, "hf", hf));
+            let (wn, wf) = (bind(self, "wn", wn), bind(self, "wf", wf));
+            if matches!(joint.kind, Kind::Revolute | Kind::Prismatic) {
+                let frame = &frames[l];
+                let a = joint.axis.map(Poly::num);
+                let w: [Poly; 3] = frame.omega.clone().map(|x| Poly::atom(&x));
+                let u: [Poly; 3] = frame.velocity.clone().map(|x| Poly::atom(&x));
+                let dot = |x: &[Poly; 3], y: &[Poly; 3]| {
+                    let mut s = Poly::default();
+                    for (xi, yi) in x.iter().zip(y) {
+                        s.add(&xi.mul(yi), 1.0);
+                    }
+                    s
+                };
+                let (dv, mut dq) = if joint.kind == Kind::Revolute {
+                    // V × (a, 0) = (ω × a, v × a).
+                    let mut dq = dot(&hn, &cross(&w, &a));
+                    dq.add(&dot(&hf, &cross(&u, &a)), 1.0);
+                    (dot(&a, &hn), dq)
+                } else {
+                    // V × (0, a) = (0, ω × a).
+                    (dot(&a, &hf), dot(&hf, &cross(&w, &a)))
+                };
+                dq.add(&dot(&a, if joint.kind == Kind::Revolute { &wn } else { &wf }), 1.0);
+                gradients.push((joints[k].clone(), self.expr(&dq.render()), self.expr(&dv.render())));
+            }
+            if joint.parent == 0 {
+                continue;
+            }
+            for (what, forces, (n, f)) in [("h", &mut momentum, (hn, hf)), ("w", &mut weight, (wn, wf))] {
+                if n.iter().chain(&f).all(|x| x.as_atom() == Some(Atom::Num(0.0))) {
+                    continue;
+                }
+                let (n, f) = self.moved_to_parent(joint, &format!("{link}_{what}"), &frames[l], n, f);
+                for (total, x) in forces[joint.parent].iter_mut().flatten().zip(n.iter().chain(&f)) {
+                    total.add(x, 1.0);
+                }
+            }
+        }
+        gradients.reverse();
+        self.model.gradients = Some(gradients);
+    }
+
+    /// A force `(n, f)` in the axes of the link a joint moves, about its origin, in its parent's
+    /// axes about the parent's origin: `(R n + d × R f, R f)`, its steps defined as `<name>_…`.
+    fn moved_to_parent(
+        &mut self,
+        joint: &read::Joint,
+        name: &str,
+        frame: &Frame,
+        n: [Poly; 3],
+        f: [Poly; 3],
+    ) -> ([Poly; 3], [Poly; 3]) {
+        let turn = |w: &mut Self, step: &str, x: [Poly; 3]| -> [Poly; 3] {
+            let x = w.bind3(&format!("{name}_{step}"), x);
+            let turned = match &frame.turn {
+                Some((cos, sin)) => {
+                    w.bind3(&format!("{name}_{step}t"), rotate(&joint.axis, cos, sin, &x, 1.0))
+                }
+                None => x,
+            };
+            matvec(&joint.rotation, &turned)
+        };
+        let f = turn(self, "fp", f);
+        let f = self.bind3(&format!("{name}_fq"), f).map(|a| Poly::atom(&a));
+        let mut n = turn(self, "np", n);
+        for (ni, di) in n.iter_mut().zip(cross(&frame.offset, &f)) {
+            ni.add(&di, 1.0);
+        }
+        (n, f)
     }
 
     /// With `ground`, each point of the links' `<collision>` shapes that can touch the ground
@@ -502,7 +672,7 @@ impl Writer<'_, '_, '_> {
                 expr: self.expr(&phi.render()),
             });
         }
-        Frame { omega, velocity, rotation, origin }
+        Frame { omega, velocity, rotation, origin, turn: None, offset: joint.xyz.map(Poly::num) }
     }
 
     /// The frame of a link a revolute, prismatic or fixed joint moves from its parent's.
@@ -576,7 +746,7 @@ impl Writer<'_, '_, '_> {
             }
         }
         let origin = self.bind3(&format!("{link}_o"), origin);
-        Frame { omega, velocity, rotation, origin }
+        Frame { omega, velocity, rotation, origin, turn, offset: d }
     }
 
     /// Mimic joints as holonomic rows, damping as a Rayleigh function.
@@ -839,6 +1009,11 @@ fn cross(a: &[Poly; 3], b: &[Poly; 3]) -> [Poly; 3] {
 
 /// `Rot(a, q)ᵀ y = cos q (y − a (a·y)) − sin q (a × y) + a (a·y)`.
 fn rotate_back(axis: &[f64; 3], cos: &Atom, sin: &Atom, y: &[Atom; 3]) -> [Poly; 3] {
+    rotate(axis, cos, sin, y, -1.0)
+}
+
+/// `Rot(a, ±q) y = cos q (y − a (a·y)) ± sin q (a × y) + a (a·y)`, the sign `turn`.
+fn rotate(axis: &[f64; 3], cos: &Atom, sin: &Atom, y: &[Atom; 3], turn: f64) -> [Poly; 3] {
     let y: [Poly; 3] = y.clone().map(|a| Poly::atom(&a));
     let mut along = Poly::default();
     for (a, yi) in axis.iter().zip(&y) {
@@ -851,7 +1026,7 @@ fn rotate_back(axis: &[f64; 3], cos: &Atom, sin: &Atom, y: &[Atom; 3]) -> [Poly;
         let mut perp = y[i].clone();
         perp.add(&along, -axis[i]);
         let mut out = cos.mul(&perp);
-        out.add(&sin.mul(&a_cross_y[i]), -1.0);
+        out.add(&sin.mul(&a_cross_y[i]), turn);
         out.add(&along, axis[i]);
         out
     })
@@ -1002,6 +1177,61 @@ mod tests {
         let out = crate::lagrange_dirac(&input).to_string();
         eprintln!("expanded in {:?}, {} bytes", start.elapsed(), out.len());
         assert!(!out.contains("compile_error"), "{}", &out[..out.len().min(3000)]);
+    }
+
+    /// The joints' `∂L/∂q` and `∂L/∂v` that the blocks read, from the tree's momenta and weights
+    /// ([`Writer::gradients`]), against the Lagrangian's gradient that the graph differentiates
+    /// link by link (the reference: the links' energies as written), at states of the Panda's
+    /// nine joints (seven turns, two slides, one mimicking the other) drawn from a fixed
+    /// sequence, under its default gravity and under a gravity of three parameters, and of
+    /// Talos's 32 (a tree of five branches; its 20 friction laws' modes are the Lagrangian's).
+    #[test]
+    fn a_trees_gradients_from_its_momenta_equal_the_lagrangians() {
+        let inputs: [(syn::DeriveInput, usize); 3] = [
+            (
+                syn::parse_quote! {
+                    #[dirac(urdf = "../tests/robots/panda/panda.urdf")]
+                    struct Panda;
+                },
+                9,
+            ),
+            (
+                syn::parse_quote! {
+                    #[dirac(urdf = "../tests/robots/panda/panda.urdf", gravity = [gx, gy, gz - 1.0])]
+                    struct Panda { gx: f64, gy: f64, gz: f64 }
+                },
+                9,
+            ),
+            (
+                syn::parse_quote! {
+                    #[dirac(urdf = "../tests/robots/talos/talos_reduced.urdf", large)]
+                    struct Talos;
+                },
+                32,
+            ),
+        ];
+        for (input, joints) in &inputs {
+            let cx = crate::ctxt::Ctxt::new();
+            let model = crate::desugar::read(&cx, input);
+            let mut sym = crate::model::SymModel::build(&cx, &model).expect("the Panda lowers");
+            assert!(cx.into_compile_errors().is_none());
+            let (dl_dq, dl_dv) = sym.gradients.clone().expect("a tree fixed in the world");
+            assert_eq!(model.gradients.as_ref().map(Vec::len), Some(*joints));
+            // Every symbol a value of its own, in [−1, 1].
+            let value = |s: u32| (f64::from(s) * 12.9898 + 0.7).sin();
+            for i in 0..sym.n() {
+                let (q, v, l) = (sym.q[i], sym.v[i], sym.lagrangian);
+                for (given, wrt) in [(dl_dq[i], q), (dl_dv[i], v)] {
+                    let reference = sym.graph.diff(l, wrt);
+                    let (a, b) = (sym.graph.eval(given, &value), sym.graph.eval(reference, &value));
+                    assert!(
+                        (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
+                        "{}: {a} against {b}",
+                        sym.coordinates[i]
+                    );
+                }
+            }
+        }
     }
 
     #[test]
