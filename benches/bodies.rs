@@ -23,8 +23,7 @@ use std::time::Instant;
 use dirac::State;
 use dirac::prelude::*;
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use zoo::bodies::{
     PlanarDoublePendulum, ReducedDoublePendulum, SpatialDoublePendulum, double_pendulums, spatial_start,

@@ -13,8 +13,7 @@ use std::time::Instant;
 use dirac::ensemble::sweep;
 use dirac::prelude::*;
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use zoo::Pendulum;
 

@@ -24,8 +24,7 @@
 
 #[path = "models/cartesian.rs"]
 mod cartesian;
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use std::hint::black_box;
 

@@ -22,8 +22,7 @@ use dirac::prelude::*;
 
 #[path = "../examples/support/mod.rs"]
 mod support;
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use zoo::{Ladder, ladder_at_rest, unit_ladder};
 

@@ -19,8 +19,7 @@ use std::time::Instant;
 
 use dirac::prelude::*;
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 #[path = "support/start.rs"]
 mod start;

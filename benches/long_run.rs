@@ -10,8 +10,7 @@
 
 #![allow(missing_docs)]
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use std::ops::ControlFlow;
 use std::time::Instant;

@@ -17,8 +17,7 @@ use dirac::State;
 use dirac::network::Network;
 use dirac::prelude::*;
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use zoo::{ladder_at_rest, network_ladder, unit_ladder};
 

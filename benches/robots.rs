@@ -18,8 +18,7 @@ use std::time::Instant;
 use dirac::State;
 use dirac::prelude::*;
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use zoo::robots::{PandaArm, SWING_START};
 

@@ -19,8 +19,7 @@
 
 #![allow(missing_docs)]
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 #[path = "support/paired.rs"]
 mod paired;

@@ -12,8 +12,7 @@
 
 #![allow(missing_docs)]
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use dirac::State;
 use dirac::prelude::*;

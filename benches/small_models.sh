@@ -31,6 +31,9 @@ git worktree add --detach "$work/tree" "$base" >/dev/null 2>&1
 cp benches/small_models.rs "$work/tree/benches/"
 grep -q 'name = "small_models"' "$work/tree/Cargo.toml" ||
     printf '\n[[bench]]\nname = "small_models"\nharness = false\n' >>"$work/tree/Cargo.toml"
+# Before the benchmarks' library (benches/lib.rs), each benchmark took the zoo in by `#[path]`.
+[ -f "$work/tree/benches/lib.rs" ] ||
+    sed -i 's|^use dirac_benches::zoo;|#[path = "../tests/zoo/mod.rs"]\nmod zoo;|' "$work/tree/benches/small_models.rs"
 # Cases whose models the base's zoo does not have yet are dropped from its copy of the driver.
 grep -q 'struct SaturatedServo' "$work/tree/tests/zoo/mod.rs" ||
     sed -i '/SaturatedServo\|&servo/d' "$work/tree/benches/small_models.rs"

@@ -7,8 +7,7 @@
 
 #![allow(missing_docs)]
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 use std::hint::black_box;
 

@@ -16,8 +16,7 @@
 
 #![allow(missing_docs)]
 
-#[path = "../tests/zoo/mod.rs"]
-mod zoo;
+use dirac_benches::zoo;
 
 #[path = "support/median.rs"]
 mod median;
