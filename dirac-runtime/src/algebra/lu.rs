@@ -408,7 +408,38 @@ where
     /// Factors a saddle-point matrix whose first `n` unknowns are velocities and whose last
     /// are multipliers, deflating redundant multipliers (see [`Deflation`]). A singular
     /// velocity column, or a vanishing row, is an error as from [`Lu::factor`].
+    ///
+    /// Rows once found independent cost one [`Lu::factor`]: that path is inlined, the
+    /// measurement out of line.
+    #[inline]
     pub fn factor_saddle<C: Dim>(&mut self, n: usize, deflation: &mut Deflation<T, C>) -> Result<(), Singular>
+    where
+        DefaultAllocator: Allocator<C, C> + Allocator<C>,
+    {
+        let stopped = if deflation.active == Some(false) {
+            match self.factor() {
+                Err(Singular { column }) if column >= n => Some(column),
+                other => {
+                    deflation.deflated = false;
+                    return other;
+                }
+            }
+        } else {
+            None
+        };
+        self.factor_saddle_measured(n, deflation, stopped)
+    }
+
+    /// [`Lu::factor_saddle`] where the rows may be redundant: measured the first time, at
+    /// each factorisation once they were, and where the factorisation of rows so far
+    /// independent `stopped` at a multiplier's column.
+    #[inline(never)]
+    fn factor_saddle_measured<C: Dim>(
+        &mut self,
+        n: usize,
+        deflation: &mut Deflation<T, C>,
+        stopped: Option<usize>,
+    ) -> Result<(), Singular>
     where
         DefaultAllocator: Allocator<C, C> + Allocator<C>,
     {
@@ -416,23 +447,15 @@ where
         let measure = |deflation: &mut Deflation<T, C>, s: &OMatrix<T, D, D>| {
             deflation.measure(m, n, |i, k| s[(i, n + k)], |k| s[(n + k, n + k)] == T::zero())
         };
-        if deflation.active.is_none() {
+        if let Some(column) = stopped {
+            self.restore(column);
+            deflation.active = Some(true);
+            measure(deflation, &self.lu);
+        } else if deflation.active.is_none() {
             let redundant = measure(deflation, &self.lu);
             deflation.active = Some(redundant);
-        } else if deflation.active == Some(true) {
-            measure(deflation, &self.lu);
         } else {
-            match self.factor() {
-                Err(Singular { column }) if column >= n && m > 0 => {
-                    self.restore(column);
-                    deflation.active = Some(true);
-                    measure(deflation, &self.lu);
-                }
-                other => {
-                    deflation.deflated = false;
-                    return other;
-                }
-            }
+            measure(deflation, &self.lu);
         }
         if deflation.deflated {
             deflation.apply(&mut self.lu, n, m, true);
@@ -443,7 +466,28 @@ where
     /// Factors a Schur complement `B M⁻¹ Aᵀ` of `m` constraint rows, deflating it where the
     /// rows are redundant (see [`Deflation`]): `rows = (n, a)` gives their `n` columns,
     /// `a(i, k)` the entry of row `k` at coordinate `i` of `A`, whose span it measures.
+    ///
+    /// Rows once found independent cost one [`Lu::factor`]: that path is inlined, the
+    /// measurement out of line.
+    #[inline]
     pub fn factor_schur<C: Dim>(
+        &mut self,
+        deflation: &mut Deflation<T, C>,
+        rows: (usize, impl Fn(usize, usize) -> T),
+    ) -> Result<(), Singular>
+    where
+        DefaultAllocator: Allocator<C, C> + Allocator<C>,
+    {
+        if deflation.active == Some(false) {
+            deflation.deflated = false;
+            return self.factor();
+        }
+        self.factor_schur_measured(deflation, rows)
+    }
+
+    /// [`Lu::factor_schur`] where the rows may be redundant.
+    #[inline(never)]
+    fn factor_schur_measured<C: Dim>(
         &mut self,
         deflation: &mut Deflation<T, C>,
         (n, a): (usize, impl Fn(usize, usize) -> T),
@@ -452,13 +496,9 @@ where
         DefaultAllocator: Allocator<C, C> + Allocator<C>,
     {
         let m = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
-        if deflation.active != Some(false) {
-            let redundant = deflation.measure(m, n, a, |_| true);
-            if deflation.active.is_none() {
-                deflation.active = Some(redundant);
-            }
-        } else {
-            deflation.deflated = false;
+        let redundant = deflation.measure(m, n, a, |_| true);
+        if deflation.active.is_none() {
+            deflation.active = Some(redundant);
         }
         if deflation.deflated {
             deflation.apply(&mut self.lu, 0, m, false);
