@@ -98,7 +98,7 @@ def main():
     start = dirac["start"][0.0]
     m = model(urdf)
     print(f"MuJoCo {mujoco.__version__}: nq = {m.nq}, mass {sum(m.body_mass):.4f} kg, step {STEP} s")
-    for case, end, control in [("standing", 5.0, True), ("falling", 0.15, False)]:
+    for case, end, control in [("standing", 5.0, True), ("falling", 0.35, False)]:
         times = sorted(dirac[case])
         clock = time.perf_counter()
         theirs = run(m, start, end, times, control)

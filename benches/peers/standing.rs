@@ -100,7 +100,7 @@ fn run() -> Result<(), SimError> {
     for &(i, ..) in &held {
         println!("start,0,{},{:.17e}", names[i], start.q[i]);
     }
-    for (case, end, every, control) in [("standing", 5.0, 0.25, true), ("falling", 0.15, 0.025, false)] {
+    for (case, end, every, control) in [("standing", 5.0, 0.25, true), ("falling", 0.35, 0.05, false)] {
         // Each run from zero torques (the last run's are held in the model).
         for &(.., input) in &held {
             model.set_input_value(input, 0.0);

@@ -146,8 +146,9 @@ pub fn desugar(cx: &Ctxt, model: &mut Model<'_>) {
 /// slacks' rates. Its mode is the unit slip direction `m = (c_mode_1, c_mode_2)`, zero while
 /// stuck, so `σ = |m|²` is 0 stuck and 1 slipping; its rows `c_1`, `c_2` are
 /// `(1 − σ) g_i + σ ṁ_i = 0`. It stops or turns (`c_stops`) where the slip leaves the direction
-/// frozen in `m` by more than [`CONE_TURN`] (`m·g − κ |m⊥·g|` falls through zero, `κ = cot` of
-/// that angle), and slips (`c_slips`) where the force that holds it reaches its bound
+/// frozen in `m` by more than [`CONE_TURN`] (`m·g − κ |m⊥·g|` falls through `−2 ε`, `κ = cot` of
+/// that angle, `ε` [`CONE_ONSET`]: where a slip starts, `g` is round-off, and a margin of zero
+/// would read its noise as a turn), and slips (`c_slips`) where the force that holds it reaches its bound
 /// (`f_s − |λ|`). The kinetic force pushes against the slip itself, `g / |g|` (see the model's
 /// `slip_forces`): `m` only makes the stop an event, and the runtime freezes it again at each
 /// turn.
@@ -172,9 +173,10 @@ fn cone(law: &crate::law_decl::LawDecl, g2: &Expr) -> ConeItems {
         written(span, quote_spanned!(span=> #on ((1.0 - #sigma) * (#g) + #sigma * #rate) #held))
     };
     let kappa = 1.0 / CONE_TURN.to_radians().tan();
+    let margin = 2.0 * CONE_ONSET;
     let stops = written(
         span,
-        quote_spanned!(span=> #on (#m1 * (#g1) + #m2 * (#g2) - #kappa * (#m1 * (#g2) - #m2 * (#g1)).abs() + (1.0 - #sigma)) #off),
+        quote_spanned!(span=> #on (#m1 * (#g1) + #m2 * (#g2) - #kappa * (#m1 * (#g2) - #m2 * (#g1)).abs() + (1.0 - #sigma) + #margin) #off),
     );
     let bound = law.stiction.as_ref().or(law.kinetic.as_ref()).expect("parsed with its force");
     // `σ` under the root keeps its derivative finite while slipping, where both forces are zero.

@@ -263,6 +263,23 @@ pub enum SimError {
         /// The power it puts in, `λ_row (B − A)_row v > 0`.
         power: f64,
     },
+    /// A law switches again and again with time hardly moving: its modes cannot settle where
+    /// it stands (a slip that turns from its direction as soon as it starts, say where contacts
+    /// coupled through a body start to slip together), so the run would not advance.
+    #[error(
+        "the law `{law}` switched {switches} times within {span:e} at t = {t}: its modes do not settle \
+         there, and the run would not advance"
+    )]
+    LawChatters {
+        /// The law, such as `FR_foot_ground_slip`.
+        law: String,
+        /// When its last switch was.
+        t: f64,
+        /// How many switches came within `span`.
+        switches: usize,
+        /// The time they took.
+        span: f64,
+    },
     /// A capability asked of an integration method that it does not offer.
     #[error("{method} does not offer {capability}")]
     Unsupported {

@@ -190,7 +190,12 @@ fn a_ball_sliding_on_the_ground_rolls_on_at_five_sevenths_of_its_speed() {
         );
         assert_eq!(stops.len(), 1, "{method:?}: it sticks once and rolls on: {stops:?}");
         assert!(solution.event_times("ball_ground opens").expect("a resting contact").is_empty());
-        assert!(late < 1e-9 && at < 1e-9 && speed < 1e-9, "{method:?}");
+        // The stop is read where the slip has turned back by 2e-9 (the derive's margin), 1.9e-10 s
+        // after t_r here (2e-9 over the slip's deceleration 7/2 μ g); the variational sample at t_r
+        // is then read inside the step that ends at the stop, second order in h = 1e-4 (3.3e-9
+        // measured; Radau 7.2e-13, Explicit 2.7e-13).
+        let at_bound = if method == Method::Variational { 1e-8 } else { 1e-9 };
+        assert!(late < 1e-9 && at < at_bound && speed < 1e-9, "{method:?}");
         // The variational steps are second order in h = 1e-4 along the roll (5.0e-7 measured,
         // 5.0e-5 at h = 1e-3); the adaptive methods meet their tolerance.
         let bound = if method == Method::Variational { 1e-6 } else { 1e-9 };

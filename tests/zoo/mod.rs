@@ -1034,6 +1034,22 @@ pub struct FlatPuck {
     pub side: f64,
 }
 
+/// A puck that tows a load along x, so its inertia is `mx` along x and `my` along y, pushed by
+/// the constant force `(fx, fy)` under Coulomb's cone of the fixed bound `bound`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, y => vy))]
+#[dirac(lagrangian = 0.5 * (mx * vx * vx + my * vy * vy))]
+#[dirac(force(x) = fx)]
+#[dirac(force(y) = fy)]
+#[dirac(friction(slip, kinetic = bound) = (vx, vy))]
+pub struct TowingPuck {
+    pub mx: f64,
+    pub my: f64,
+    pub fx: f64,
+    pub fy: f64,
+    pub bound: f64,
+}
+
 /// A symmetric top on the floor, its point tip held on it (the row `floor`) under Coulomb's
 /// cone on the contact force: centre of mass `(x, y, z)`, ZXZ Euler angles (`psi` precession,
 /// `theta` tilt, `phi` spin), the tip at `l` below the centre along the axis; mass `m`,

@@ -21,6 +21,7 @@
 use nalgebra::DefaultAllocator;
 
 use crate::algebra::{Algebra, amax};
+use crate::analysis::accelerations::Accelerations;
 use crate::analysis::init::{Consistency, project};
 use crate::error::SimError;
 use crate::model::hybrid::has_laws;
@@ -210,7 +211,7 @@ where
         if slip_on.is_empty() {
             return Ok(());
         }
-        for (law, direction) in slip_on {
+        for (law, direction) in starting_directions(model, t, state, slip_on) {
             set_cone(state, law, direction);
         }
         consistent(model, t, state)?;
@@ -221,6 +222,67 @@ where
     consistent(model, t, state)?;
     dissipating(model, t, state)
 }
+
+/// The directions the cones `starting` (stuck in `state`, their forces past their bounds) slip
+/// in from rest, from the directions against those forces given with them.
+///
+/// From rest (`g = 0`) a cone's kinetic force is `−μ N m` along its frozen direction `m`, so the
+/// slip starts at the rate `ġ = a − μ N W m` (`W` the Delassus block of the contacts starting,
+/// `a` their acceleration without friction). It slips on along `m` only where `ġ ∥ m`; against
+/// the force that held it is that direction only for a contact alone, or with `W` round. Two
+/// feet starting at once turn each other's slip: frozen against their forces, their slips would
+/// turn from `m` at once, stop and start again ever sooner. The directions are found together
+/// as the fixed point of `m ← ġ(m) / |ġ(m)|`, `ġ` from the accelerations in those modes (one
+/// saddle solve each) by a difference along the motion. For one contact it contracts by about
+/// `μ N / |λ|` per round, `λ` the force that would hold it (past the bound, so below one).
+/// Where it does not settle in [`ONSET_ROUNDS`], or the accelerations are singular, the last
+/// directions stand.
+fn starting_directions<'l, M: Hybrid>(
+    model: &M,
+    t: f64,
+    state: &State<M>,
+    starting: Vec<(&'l Law, [f64; 2])>,
+) -> Vec<(&'l Law, [f64; 2])>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let mut directions = starting;
+    let mut accelerations = Accelerations::new(model);
+    let sizes = model.sizes();
+    let (mut acceleration, mut lambda) = (sizes.zeros_q::<M>(), sizes.zeros_c::<M>());
+    let (mut q, v) = (state.q.clone(), &state.v);
+    // A step along the motion short enough that `g` is linear in it, long enough that its
+    // change stands well above the round-off of the velocities.
+    let h = 1e-7;
+    for _ in 0..ONSET_ROUNDS {
+        for (law, direction) in &directions {
+            set_cone_in(&mut q, law, *direction);
+        }
+        if !accelerations.evaluate(model, t, (&q, v), &mut acceleration, &mut lambda) {
+            break;
+        }
+        let ahead = (&q + v * h, v + &acceleration * h);
+        let mut turned: f64 = 0.0;
+        for (law, direction) in &mut directions {
+            let (g0, g1) =
+                (cone_slip(model, law, t, &q, v), cone_slip(model, law, t + h, &ahead.0, &ahead.1));
+            let rate = [(g1[0] - g0[0]) / h, (g1[1] - g0[1]) / h];
+            if norm(rate) == 0.0 || !norm(rate).is_finite() {
+                continue;
+            }
+            let next = [rate[0] / norm(rate), rate[1] / norm(rate)];
+            turned = turned.max(norm([next[0] - direction[0], next[1] - direction[1]]));
+            *direction = next;
+        }
+        if turned < 1e-12 {
+            break;
+        }
+    }
+    directions
+}
+
+/// The most rounds of [`starting_directions`].
+const ONSET_ROUNDS: usize = 200;
 
 /// The direction a cone slips in against the force that held it: any, where no force held it
 /// (nothing pushes, and the cone's bound is zero).
@@ -243,9 +305,17 @@ fn set_cone<M: Hybrid>(state: &mut State<M>, law: &Law, direction: [f64; 2])
 where
     DefaultAllocator: Storage<M>,
 {
+    set_cone_in(&mut state.q, law, direction);
+}
+
+/// Sets a cone's mode in the positions `q`.
+fn set_cone_in<M: Hybrid>(q: &mut VecQ<M>, law: &Law, direction: [f64; 2])
+where
+    DefaultAllocator: Storage<M>,
+{
     let (mode, _) = law.cone.expect("a cone");
-    state.q[law.mode] = direction[0];
-    state.q[mode] = direction[1];
+    q[law.mode] = direction[0];
+    q[mode] = direction[1];
 }
 
 /// A cone's slip `(g_1, g_2)` at positions `q` and velocities `v`: its rows stuck, `A v + b`.
@@ -430,16 +500,22 @@ where
     }
     let state = project(model, t, &q, v, options)?;
     let mut released = false;
+    let mut starting = Vec::new();
     for law in tentative {
         if holds(model, law, t, &state, &mut values) {
             continue;
         }
         released = true;
-        if let Some((mode, _)) = law.cone {
-            [q[law.mode], q[mode]] = against(cone_force(law, &state));
+        if law.cone.is_some() {
+            starting.push((law, against(cone_force(law, &state))));
             continue;
         }
         q[law.mode] = if law.kind == Kind::Friction && state.lambda[law.row] > 0.0 { -1.0 } else { 1.0 };
+    }
+    if !starting.is_empty() {
+        for (law, direction) in starting_directions(model, t, &state, starting) {
+            set_cone_in(&mut q, law, direction);
+        }
     }
     let state = if released { project(model, t, &q, v, options)? } else { state };
     dissipating(model, t, &state)?;

@@ -109,7 +109,19 @@ where
     pub(crate) law_of: Vec<Option<Switch>>,
     /// The law switched at the event being handled, whose functions restart positive.
     switched_law: Option<usize>,
+    /// For each law, when its latest run of switches close together began and how many it
+    /// holds (see [`CHATTER_SWITCHES`]).
+    chatter: Vec<(f64, usize)>,
 }
+
+/// A law that switches more than this many times, each within [`CHATTER_SPAN`] of the first,
+/// ends the run ([`SimError::LawChatters`]): its modes do not settle, and the steps between its
+/// switches, too long to fail as too small, would not carry the run anywhere.
+const CHATTER_SWITCHES: usize = 100;
+
+/// The span of time, in the model's units, within which [`CHATTER_SWITCHES`] switches of one law
+/// end the run (plus the resolution of `t`).
+const CHATTER_SPAN: f64 = 1e-7;
 
 /// Which of a model's declared events to watch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -169,6 +181,7 @@ where
             laws: Vec::new(),
             law_of: Vec::new(),
             switched_law: None,
+            chatter: Vec::new(),
         }
     }
 
@@ -356,6 +369,7 @@ where
         if laws.is_empty() {
             return self;
         }
+        self.chatter = vec![(f64::NEG_INFINITY, 0); laws.len()];
         self.laws = laws;
         for (k, declared) in self.declared_of.iter().enumerate() {
             let Some(j) = *declared else { continue };
@@ -398,6 +412,19 @@ where
             Switch::Engage(l) => (l, true),
             Switch::Release(l) => (l, false),
         };
+        let (first, count) = &mut self.chatter[l];
+        if t - *first > CHATTER_SPAN + 1e-15 * t.abs() {
+            (*first, *count) = (t, 0);
+        }
+        *count += 1;
+        if *count > CHATTER_SWITCHES {
+            return Err(SimError::LawChatters {
+                law: self.laws[l].name.clone(),
+                t,
+                switches: *count,
+                span: t - *first,
+            });
+        }
         laws::switch(model, &self.laws[l], engage, t, state, &mut self.declared_values)?;
         self.switched_law = Some(l);
         Ok(true)
