@@ -401,6 +401,10 @@ where
     }
 }
 
+/// The share of the largest pivot below which a multiplier's pivot counts as round-off: rows
+/// dependent to rounding leave about `1e-16` of it, rows merely ill-conditioned far more.
+const DEPENDENT: f64 = 1e-10;
+
 impl<T: ComplexField<RealField = f64> + Copy, D: Dim> Lu<T, D>
 where
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
@@ -419,6 +423,11 @@ where
         let stopped = if deflation.active == Some(false) {
             match self.factor() {
                 Err(Singular { column }) if column >= n => Some(column),
+                // Rows that turned dependent since (a contact that closed beside others) leave
+                // a pivot of round-off, not an exact zero: measured again, from the matrix.
+                Ok(()) if self.nearly_dependent(n) => {
+                    Some(D::try_to_usize().unwrap_or_else(|| self.lu.nrows()))
+                }
                 other => {
                     deflation.deflated = false;
                     return other;
@@ -428,6 +437,22 @@ where
             None
         };
         self.factor_saddle_measured(n, deflation, stopped)
+    }
+
+    /// Whether a factorisation's pivots from column `first` on (a saddle's multipliers, or
+    /// all of a Schur complement's) span more than [`DEPENDENT`] of their largest: rows
+    /// dependent to round-off, which the factorisation passed as regular.
+    #[inline]
+    fn nearly_dependent(&self, first: usize) -> bool {
+        let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
+        let (mut smallest, mut largest) = (f64::INFINITY, 0.0_f64);
+        for k in first..n {
+            // The pivot's inverse, kept by the factorisation.
+            let inverse = self.inv_diagonal[k].norm1();
+            smallest = smallest.min(inverse);
+            largest = largest.max(inverse);
+        }
+        largest > 0.0 && smallest < DEPENDENT * largest
     }
 
     /// [`Lu::factor_saddle`] where the rows may be redundant: measured the first time, at
@@ -479,8 +504,16 @@ where
         DefaultAllocator: Allocator<C, C> + Allocator<C>,
     {
         if deflation.active == Some(false) {
-            deflation.deflated = false;
-            return self.factor();
+            match self.factor() {
+                Ok(()) if self.nearly_dependent(0) => {
+                    self.restore(D::try_to_usize().unwrap_or_else(|| self.lu.nrows()));
+                    deflation.active = Some(true);
+                }
+                other => {
+                    deflation.deflated = false;
+                    return other;
+                }
+            }
         }
         self.factor_schur_measured(deflation, rows)
     }
@@ -506,8 +539,9 @@ where
         self.factor()
     }
 
-    /// Undoes the first `steps` elimination steps of a factorisation that stopped there, in
-    /// reverse order, which gives back the matrix it started from (to rounding).
+    /// Undoes the first `steps` elimination steps of a factorisation that stopped there (or of
+    /// all of a finished one), in reverse order, which gives back the matrix it started from
+    /// (to rounding).
     fn restore(&mut self, steps: usize) {
         let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
         for l in (0..steps).rev() {
@@ -682,6 +716,30 @@ mod tests {
         // The least-norm solution of the consistent singular system, by the pseudo-inverse.
         let reference = s.pseudo_inverse(1e-10).expect("an SVD") * r;
         assert!((&x - &reference).amax() < 1e-12, "{x} against {reference}");
+    }
+
+    #[test]
+    fn measures_again_rows_that_turned_dependent() {
+        // First factored with independent rows (the third row moved off the span of the
+        // others), then with the redundant ones: a contact that closed beside others.
+        let (h, a, k, b) = redundant_saddle();
+        let mut independent = k.clone();
+        independent[(5, 2)] += 0.5;
+        independent[(2, 5)] += 0.5;
+        let mut lu = Lu::<f64, nalgebra::Dyn>::new(6);
+        let mut deflation = Deflation::<f64, nalgebra::Dyn>::new(3);
+        lu.matrix_mut().copy_from(&independent);
+        lu.factor_saddle(3, &mut deflation).expect("regular");
+        assert!(!deflation.active());
+        lu.matrix_mut().copy_from(&k);
+        lu.factor_saddle(3, &mut deflation).expect("deflated");
+        assert!(deflation.active());
+        let mut x = b.as_slice().to_vec();
+        lu.solve_slice(&mut x);
+        let reference = least_norm_reference(&h, &a, &b);
+        for i in 0..6 {
+            assert!((x[i] - reference[i]).abs() < 1e-12, "{i}: {} against {}", x[i], reference[i]);
+        }
     }
 
     #[test]
