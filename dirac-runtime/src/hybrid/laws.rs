@@ -28,7 +28,7 @@ use crate::model::hybrid::has_laws;
 use crate::model::names::{BLOCKS, CLOSES, CONDUCTS, OPENS, SLIPS, STOPS};
 use crate::model::state::State;
 use crate::model::{Hybrid, LagrangeDirac};
-use crate::shape::dims::{Storage, VecQ};
+use crate::shape::dims::{Storage, VecC, VecQ};
 
 /// One law of a model, by the indices the runtime reads it with.
 #[derive(Clone, Debug)]
@@ -166,10 +166,12 @@ where
 }
 
 /// Switches the friction cone `law` (see [`switch`]). Released, it slips against the force that
-/// held it. At its engage event the slip has stopped, or turned from the direction frozen in
-/// its mode by [`CONE_TURN`](crate::model::names::CONE_TURN): stopped, it sticks where the force that holds it stays
-/// within its bound and slips on against that force otherwise; turned, its direction is frozen
-/// again along the slip.
+/// held it (at its bound, its slip starts at the rate zero). At its engage event the slip has
+/// stopped, or turned from the direction frozen in its mode by
+/// [`CONE_TURN`](crate::model::names::CONE_TURN): stopped, it sticks (with every other slip
+/// stopped there) where the force that holds it stays within its bound, and slips on from rest
+/// otherwise; turned, its direction is frozen again along the slip. Either way every stuck cone
+/// that cannot hold then starts to slip with it ([`start_slips`]).
 fn switch_cone<M: Hybrid>(
     model: &M,
     law: &Law,
@@ -191,36 +193,140 @@ where
         // Every other cone whose slip has stopped here too stops with it (a box's corners
         // on the ground stop together): held one by one, the rows of those still slipping
         // would make the contacts' redundant normal forces decide the motion.
-        let mut together = vec![law.clone()];
         set_cone(state, law, [0.0, 0.0]);
         for other in laws(model) {
             let Some((mode, _)) = other.cone else { continue };
             let slipping = state.q[other.mode] != 0.0 || state.q[mode] != 0.0;
             if slipping && norm(cone_slip(model, &other, t, &state.q, &state.v)) <= stopped(&state.v) {
                 set_cone(state, &other, [0.0, 0.0]);
-                together.push(other);
             }
         }
-        let stuck = project(model, t, &state.q, &state.v, Consistency::default())?;
-        let slip_on: Vec<(&Law, [f64; 2])> = together
-            .iter()
-            .filter(|law| !holds(model, law, t, &stuck, values))
-            .map(|law| (law, against(cone_force(law, &stuck))))
-            .collect();
-        *state = stuck;
-        if slip_on.is_empty() {
-            return Ok(());
-        }
-        for (law, direction) in starting_directions(model, t, state, slip_on) {
-            set_cone(state, law, direction);
-        }
         consistent(model, t, state)?;
-        return dissipating(model, t, state);
+        return start_slips(model, t, state, values, Vec::new());
     }
+    // At its bound the slip starts against the force (its rate zero, so along any direction
+    // of its own); any other cone that cannot hold once it slips starts with it.
     let direction = against(cone_force(law, state));
     set_cone(state, law, direction);
     consistent(model, t, state)?;
-    dissipating(model, t, state)
+    start_slips(model, t, state, values, vec![(law.clone(), direction)])
+}
+
+/// Settles the cones at `t` after a switch, `state` consistent in their modes: every stuck
+/// cone that cannot hold starts to slip, together with those `starting` (just released, at
+/// rest), in the directions [`starting_directions`] finds for all of them at once; one that
+/// would slip backwards in them sticks instead; until each stuck cone holds. `state` is left
+/// consistent in the modes found. An error where they do not settle within a round per cone.
+fn start_slips<M: Hybrid>(
+    model: &M,
+    t: f64,
+    state: &mut State<M>,
+    values: &mut [f64],
+    mut starting: Vec<(Law, [f64; 2])>,
+) -> Result<(), SimError>
+where
+    DefaultAllocator: Storage<M>,
+{
+    let cones: Vec<Law> = laws(model).into_iter().filter(|law| law.cone.is_some()).collect();
+    let is_stuck = |state: &State<M>, law: &Law| {
+        let (mode, _) = law.cone.expect("a cone");
+        state.q[law.mode] == 0.0 && state.q[mode] == 0.0
+    };
+    for _ in 0..=2 * cones.len() {
+        let more: Vec<(Law, [f64; 2])> = cones
+            .iter()
+            .filter(|law| is_stuck(state, law) && !starting.iter().any(|(s, _)| s.row == law.row))
+            .filter(|law| !holds(model, law, t, state, values) || leaving_bound(model, law, t, state, values))
+            .map(|law| (law.clone(), against(cone_force(law, state))))
+            .collect();
+        if more.is_empty() && starting.iter().all(|(law, direction)| slipping_along(state, law, *direction)) {
+            return dissipating(model, t, state);
+        }
+        starting.extend(more);
+        // Each starts from rest: stuck, then set in its direction.
+        for (law, _) in &starting {
+            set_cone(state, law, [0.0, 0.0]);
+        }
+        consistent(model, t, state)?;
+        let refs: Vec<(&Law, [f64; 2])> = starting.iter().map(|(law, direction)| (law, *direction)).collect();
+        match starting_directions(model, t, state, refs)? {
+            Onset::Directions(directions) => {
+                let directions: Vec<[f64; 2]> = directions.into_iter().map(|(_, d)| d).collect();
+                for ((law, direction), found) in starting.iter_mut().zip(directions) {
+                    *direction = found;
+                    set_cone(state, law, found);
+                }
+            }
+            Onset::Backwards(i) => {
+                // It sticks; the others are found again without it.
+                starting.remove(i);
+                for (law, direction) in &starting {
+                    set_cone(state, law, *direction);
+                }
+            }
+        }
+        consistent(model, t, state)?;
+    }
+    Err(SimError::NotDetermined {
+        t,
+        cause: format!(
+            "the slips of {} start and stop again as each starts: no modes in which each stuck cone holds \
+             and each slip starts along itself were found",
+            starting.iter().map(|(law, _)| format!("`{}`", law.name)).collect::<Vec<_>>().join(", ")
+        ),
+    })
+}
+
+/// Whether stuck cone `law`, holding in the consistent `state` with its force at its bound
+/// (within [`AT_BOUND`] of it), leaves it at once: its force grows past the bound as the motion
+/// goes on. Its release would otherwise come at once after the switch, and a cone that sticks
+/// at its bound as another starts to slip can trade switches with it ever faster.
+fn leaving_bound<M: Hybrid>(model: &M, law: &Law, t: f64, state: &State<M>, values: &mut [f64]) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    model.events(t, &state.q, &state.v, &state.lambda, values);
+    let margin = values[law.release];
+    if margin > AT_BOUND * norm(cone_force(law, state)) {
+        return false;
+    }
+    let sizes = model.sizes();
+    let (mut acceleration, mut lambda) = (sizes.zeros_q::<M>(), sizes.zeros_c::<M>());
+    let mut accelerations = Accelerations::new(model);
+    if !accelerations.evaluate(model, t, (&state.q, &state.v), &mut acceleration, &mut lambda) {
+        return false;
+    }
+    // Along the motion, a step as short as the slip rates' (see `SlipRates::at`).
+    let h = 1e-7;
+    // Both margins from the same solve, so that its round-off cancels.
+    model.events(t, &state.q, &state.v, &lambda, values);
+    let margin = values[law.release];
+    let ahead = (&state.q + &state.v * h, &state.v + &acceleration * h);
+    let mut later = sizes.zeros_q::<M>();
+    if !accelerations.evaluate(model, t + h, (&ahead.0, &ahead.1), &mut later, &mut lambda) {
+        return false;
+    }
+    model.events(t + h, &ahead.0, &ahead.1, &lambda, values);
+    values[law.release] < margin
+}
+
+/// The share of its force within which a stuck cone's force counts as at its bound.
+const AT_BOUND: f64 = 1e-6;
+
+/// Whether cone `law` slips along `direction` in `state` (its frozen direction).
+fn slipping_along<M: Hybrid>(state: &State<M>, law: &Law, direction: [f64; 2]) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    let (mode, _) = law.cone.expect("a cone");
+    state.q[law.mode] == direction[0] && state.q[mode] == direction[1] && norm(direction) > 0.0
+}
+
+/// What [`starting_directions`] found: the directions, or the index of a cone that would slip
+/// backwards in the only directions in which each slips along itself (so it sticks).
+enum Onset<'l> {
+    Directions(Vec<(&'l Law, [f64; 2])>),
+    Backwards(usize),
 }
 
 /// The directions the cones `starting` (stuck in `state`, their forces past their bounds) slip
@@ -228,61 +334,185 @@ where
 ///
 /// From rest (`g = 0`) a cone's kinetic force is `−μ N m` along its frozen direction `m`, so the
 /// slip starts at the rate `ġ = a − μ N W m` (`W` the Delassus block of the contacts starting,
-/// `a` their acceleration without friction). It slips on along `m` only where `ġ ∥ m`; against
-/// the force that held it is that direction only for a contact alone, or with `W` round. Two
-/// feet starting at once turn each other's slip: frozen against their forces, their slips would
-/// turn from `m` at once, stop and start again ever sooner. The directions are found together
-/// as the fixed point of `m ← ġ(m) / |ġ(m)|`, `ġ` from the accelerations in those modes (one
-/// saddle solve each) by a difference along the motion. For one contact it contracts by about
-/// `μ N / |λ|` per round, `λ` the force that would hold it (past the bound, so below one).
-/// Where it does not settle in [`ONSET_ROUNDS`], or the accelerations are singular, the last
-/// directions stand.
+/// `a` their acceleration without friction). It slips on along `m` only where `ġ = k m` with
+/// `k > 0`; against the force that held it is that direction only for a contact alone at its
+/// bound (`k = 0`), or with `W` round. Two feet starting at once turn each other's slip: frozen
+/// against their forces, their slips would turn from `m` at once, stop and start again ever
+/// sooner. The directions and rates `(θ_i, k_i)` of all the cones starting are found together
+/// by Newton's method on `ġ_i(m(θ)) − k_i m_i = 0`, `ġ` from the accelerations in those modes
+/// (one saddle solve each) by a difference along the motion, its change with the angles by
+/// differences too. (The plain iteration `m ← ġ(m)/|ġ(m)|` contracts only by `μN / (|λ| − μN)`
+/// for one contact, `λ` the force that would hold it: not at all within twice the bound, where
+/// it flips between `m` and `−m`.) An error where no directions slip along themselves, or the
+/// accelerations are singular in those modes: the motion is not determined there.
 fn starting_directions<'l, M: Hybrid>(
     model: &M,
     t: f64,
     state: &State<M>,
     starting: Vec<(&'l Law, [f64; 2])>,
-) -> Vec<(&'l Law, [f64; 2])>
+) -> Result<Onset<'l>, SimError>
 where
     DefaultAllocator: Storage<M>,
 {
-    let mut directions = starting;
-    let mut accelerations = Accelerations::new(model);
-    let sizes = model.sizes();
-    let (mut acceleration, mut lambda) = (sizes.zeros_q::<M>(), sizes.zeros_c::<M>());
-    let (mut q, v) = (state.q.clone(), &state.v);
-    // A step along the motion short enough that `g` is linear in it, long enough that its
-    // change stands well above the round-off of the velocities.
-    let h = 1e-7;
+    let n = starting.len();
+    let mut rates = SlipRates::new(model, state);
+    let mut angles: Vec<f64> = starting.iter().map(|(_, m)| m[1].atan2(m[0])).collect();
+    let laws: Vec<&Law> = starting.iter().map(|(law, _)| *law).collect();
+    let undetermined = |detail: &str| SimError::NotDetermined {
+        t,
+        cause: format!(
+            "the slips of {} start together from rest and {detail}",
+            laws.iter().map(|law| format!("`{}`", law.name)).collect::<Vec<_>>().join(", ")
+        ),
+    };
+    let singular = || undetermined("the accelerations are singular in the modes they would slip in");
+    let mut g = rates.at(model, t, &laws, &angles).ok_or_else(singular)?;
+    let along =
+        |g: &[[f64; 2]], angles: &[f64], i: usize| g[i][0] * angles[i].cos() + g[i][1] * angles[i].sin();
+    let mut k: Vec<f64> = (0..n).map(|i| along(&g, &angles, i).max(0.0)).collect();
+    let residual = |g: &[[f64; 2]], angles: &[f64], k: &[f64]| {
+        (0..n)
+            .map(|i| norm([g[i][0] - k[i] * angles[i].cos(), g[i][1] - k[i] * angles[i].sin()]))
+            .fold(0.0, f64::max)
+    };
+    // The residual counts against the rates and against how much the friction turns them.
+    let mut scale = f64::MIN_POSITIVE;
+    let mut r = residual(&g, &angles, &k);
+    let mut converged = false;
     for _ in 0..ONSET_ROUNDS {
-        for (law, direction) in &directions {
-            set_cone_in(&mut q, law, *direction);
+        // The Jacobian of the residual in (θ, k), its angle columns by differences.
+        let mut jacobian = nalgebra::DMatrix::<f64>::zeros(2 * n, 2 * n);
+        for j in 0..n {
+            let mut turned = angles.clone();
+            turned[j] += ONSET_ANGLE_STEP;
+            let g_turned = rates.at(model, t, &laws, &turned).ok_or_else(singular)?;
+            for i in 0..n {
+                for c in 0..2 {
+                    jacobian[(2 * i + c, j)] = (g_turned[i][c] - g[i][c]) / ONSET_ANGLE_STEP;
+                }
+            }
+            scale = scale.max(jacobian.column(j).amax());
+            let (sin, cos) = angles[j].sin_cos();
+            jacobian[(2 * j, j)] += k[j] * sin;
+            jacobian[(2 * j + 1, j)] -= k[j] * cos;
+            jacobian[(2 * j, n + j)] = -cos;
+            jacobian[(2 * j + 1, n + j)] = -sin;
         }
-        if !accelerations.evaluate(model, t, (&q, v), &mut acceleration, &mut lambda) {
+        scale = g.iter().map(|g| norm(*g)).fold(scale, f64::max);
+        converged = r <= ONSET_TOLERANCE * scale;
+        if converged {
             break;
         }
-        let ahead = (&q + v * h, v + &acceleration * h);
-        let mut turned: f64 = 0.0;
-        for (law, direction) in &mut directions {
-            let (g0, g1) =
-                (cone_slip(model, law, t, &q, v), cone_slip(model, law, t + h, &ahead.0, &ahead.1));
-            let rate = [(g1[0] - g0[0]) / h, (g1[1] - g0[1]) / h];
-            if norm(rate) == 0.0 || !norm(rate).is_finite() {
+        let values = nalgebra::DVector::<f64>::from_iterator(
+            2 * n,
+            (0..n).flat_map(|i| {
+                let (sin, cos) = angles[i].sin_cos();
+                [g[i][0] - k[i] * cos, g[i][1] - k[i] * sin]
+            }),
+        );
+        let Some(step) = jacobian.lu().solve(&values) else { break };
+        // Halve the step until the residual falls.
+        let mut length = 1.0;
+        let mut accepted = false;
+        for _ in 0..30 {
+            let trial_angles: Vec<f64> = (0..n).map(|i| angles[i] - length * step[i]).collect();
+            let trial_k: Vec<f64> = (0..n).map(|i| k[i] - length * step[n + i]).collect();
+            let Some(trial_g) = rates.at(model, t, &laws, &trial_angles) else {
+                length /= 2.0;
                 continue;
+            };
+            let trial_r = residual(&trial_g, &trial_angles, &trial_k);
+            if trial_r < r {
+                (angles, k, g, r) = (trial_angles, trial_k, trial_g, trial_r);
+                accepted = true;
+                break;
             }
-            let next = [rate[0] / norm(rate), rate[1] / norm(rate)];
-            turned = turned.max(norm([next[0] - direction[0], next[1] - direction[1]]));
-            *direction = next;
+            length /= 2.0;
         }
-        if turned < 1e-12 {
+        if !accepted {
             break;
         }
     }
-    directions
+    if !converged {
+        return Err(undetermined(&format!(
+            "no directions were found in which each slips along itself (the slips' rates stay {r:e} off \
+             their directions, {:e} relative)",
+            r / scale
+        )));
+    }
+    // At its bound a slip starts at the rate zero.
+    if let Some(i) =
+        (0..n).filter(|&i| k[i] < -ONSET_TOLERANCE * scale).min_by(|&i, &j| k[i].total_cmp(&k[j]))
+    {
+        return Ok(Onset::Backwards(i));
+    }
+    Ok(Onset::Directions(
+        laws.into_iter().zip(angles).map(|(law, angle)| (law, [angle.cos(), angle.sin()])).collect(),
+    ))
 }
 
-/// The most rounds of [`starting_directions`].
-const ONSET_ROUNDS: usize = 200;
+/// The rates `ġ` at which the slips of cones start from rest in given directions.
+struct SlipRates<M: Hybrid>
+where
+    DefaultAllocator: Storage<M>,
+{
+    accelerations: Accelerations<M>,
+    acceleration: VecQ<M>,
+    lambda: VecC<M>,
+    q: VecQ<M>,
+    v: VecQ<M>,
+}
+
+impl<M: Hybrid> SlipRates<M>
+where
+    DefaultAllocator: Storage<M>,
+{
+    fn new(model: &M, state: &State<M>) -> Self {
+        let sizes = model.sizes();
+        SlipRates {
+            accelerations: Accelerations::new(model),
+            acceleration: sizes.zeros_q::<M>(),
+            lambda: sizes.zeros_c::<M>(),
+            q: state.q.clone(),
+            v: state.v.clone(),
+        }
+    }
+
+    /// Each of `laws`' slip rates, frozen at `angles`; `None` where the accelerations are
+    /// singular there.
+    fn at(&mut self, model: &M, t: f64, laws: &[&Law], angles: &[f64]) -> Option<Vec<[f64; 2]>> {
+        for (law, angle) in laws.iter().zip(angles) {
+            set_cone_in(&mut self.q, law, [angle.cos(), angle.sin()]);
+        }
+        let (q, v) = (&self.q, &self.v);
+        if !self.accelerations.evaluate(model, t, (q, v), &mut self.acceleration, &mut self.lambda) {
+            return None;
+        }
+        // A step along the motion short enough that `g` is linear in it, long enough that its
+        // change stands well above the round-off of the velocities.
+        let h = 1e-7;
+        let ahead = (q + v * h, v + &self.acceleration * h);
+        let rates: Vec<[f64; 2]> = laws
+            .iter()
+            .map(|law| {
+                let (g0, g1) =
+                    (cone_slip(model, law, t, q, v), cone_slip(model, law, t + h, &ahead.0, &ahead.1));
+                [(g1[0] - g0[0]) / h, (g1[1] - g0[1]) / h]
+            })
+            .collect();
+        rates.iter().all(|g| g[0].is_finite() && g[1].is_finite()).then_some(rates)
+    }
+}
+
+/// The most Newton iterations of [`starting_directions`].
+const ONSET_ROUNDS: usize = 50;
+
+/// The residual of [`starting_directions`], relative to the slips' rates, within which the
+/// directions stand: the differences that give the rates are good to about `1e-9`.
+const ONSET_TOLERANCE: f64 = 1e-8;
+
+/// The turn of a direction by which [`starting_directions`] differentiates the rates.
+const ONSET_ANGLE_STEP: f64 = 1e-6;
 
 /// The direction a cone slips in against the force that held it: any, where no force held it
 /// (nothing pushes, and the cone's bound is zero).
@@ -513,8 +743,20 @@ where
         q[law.mode] = if law.kind == Kind::Friction && state.lambda[law.row] > 0.0 { -1.0 } else { 1.0 };
     }
     if !starting.is_empty() {
-        for (law, direction) in starting_directions(model, t, &state, starting) {
-            set_cone_in(&mut q, law, direction);
+        let names = starting.iter().map(|(law, _)| format!("`{}`", law.name)).collect::<Vec<_>>().join(", ");
+        match starting_directions(model, t, &state, starting)? {
+            Onset::Directions(directions) => {
+                for (law, direction) in directions {
+                    set_cone_in(&mut q, law, direction);
+                }
+            }
+            Onset::Backwards(_) => {
+                let cause = format!(
+                    "the slips of {names} start together from rest, and in the only directions in which each slips \
+                     along itself one would slip backwards"
+                );
+                return Err(SimError::NotDetermined { t, cause });
+            }
         }
     }
     let state = if released { project(model, t, &q, v, options)? } else { state };

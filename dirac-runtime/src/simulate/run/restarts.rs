@@ -49,7 +49,9 @@ where
 /// Restarts the integration at `t` after a contact closed or opened: from the consistent state
 /// nearest to `state` with each law's mode chosen there again (a cone at a contact that has
 /// just closed sticks or slips as the contact's slip says), watching on from there and
-/// recording it.
+/// recording it. A closed contact whose force would pull there opens (the most pulling first,
+/// then the state again), as a contact that has just come to rest does where the motion
+/// lifts it at once (a box's corner landing while it tips away from it).
 pub(crate) fn restart_in_modes<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
@@ -60,9 +62,48 @@ pub(crate) fn restart_in_modes<M: Hybrid, I: Integrator<M>>(
 where
     DefaultAllocator: Storage<M>,
 {
-    let consistent = consistent_state(integrator.model(), t, &state.q, &state.v, Consistency::default())?;
+    let contacts = integrator.model().unilateral_names().len();
+    let consistent = loop {
+        let model = integrator.model();
+        let closed_rows: Vec<(usize, usize)> = (0..contacts)
+            .filter(|&j| model.contact_closed(j))
+            .filter_map(|j| Some((j, model.contact_row(j)?)))
+            .collect();
+        let pulling = match consistent_state(model, t, &state.q, &state.v, Consistency::default()) {
+            Ok(consistent) => {
+                // Pulling beyond the round-off of the forces.
+                let scale = AT_ZERO * (1.0 + consistent.lambda.amax());
+                let most = closed_rows
+                    .iter()
+                    .map(|&(j, r)| (j, consistent.lambda[r]))
+                    .filter(|&(_, force)| force < -scale)
+                    .min_by(|a, b| a.1.total_cmp(&b.1));
+                match most {
+                    Some((j, _)) => j,
+                    None => break consistent,
+                }
+            }
+            // Friction driven by a closed contact's force puts power in: the force pulls.
+            Err(SimError::FrictionPushes { row, t, power }) => {
+                let names = model.constraint_names();
+                match closed_rows.iter().find(|&&(_, r)| names[r] == row) {
+                    Some(&(j, _)) => j,
+                    None => return Err(SimError::FrictionPushes { row, t, power }),
+                }
+            }
+            Err(error) => return Err(error),
+        };
+        if !close(integrator, pulling, false) {
+            let contact = integrator.model().unilateral_names()[pulling].clone();
+            let cause = format!("the closed contact `{contact}` would pull, and the model cannot open it");
+            return Err(SimError::NotDetermined { t, cause });
+        }
+    };
     restart_consistent(integrator, events, recorder, t, &consistent)
 }
+
+/// The share of the largest force within which a contact force counts as zero.
+const AT_ZERO: f64 = 1e-9;
 
 /// Restarts the integration at `t` from the consistent state nearest to `state`, watching on
 /// from there and recording it.
