@@ -200,6 +200,10 @@ where
     fn deflating(&self) -> bool {
         self.deflation.active()
     }
+
+    fn remeasure(&mut self) {
+        self.deflation.remeasure();
+    }
 }
 
 /// The condensed saddle-point solver of size `n + m` (design notes §2.4), dense.
@@ -431,6 +435,11 @@ where
 
     fn deflating(&self) -> bool {
         self.real.deflation.active()
+    }
+
+    fn remeasure(&mut self) {
+        self.real.deflation.remeasure();
+        self.complex.deflation.remeasure();
     }
 }
 

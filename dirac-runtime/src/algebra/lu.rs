@@ -189,8 +189,9 @@ where
 /// the matrix is regular. The rows' rank is measured at the first factorisation (Gram-Schmidt,
 /// twice, a row dependent when less than 1e-11 of its norm is left); where they are independent
 /// nothing changes, unless a later factorisation finds the multipliers' columns exactly
-/// dependent. Once deflating, the same rows (by index) make the basis at every factorisation,
-/// so that its rank is the mechanism's, also where the positions drift a little off the loop.
+/// dependent, or [`Deflation::remeasure`] asks for it (the integrators do at every restart).
+/// Once deflating, the same rows (by index) make the basis at every factorisation, so that its
+/// rank is the mechanism's, also where the positions drift a little off the loop.
 /// A row that is zero by itself (a vanishing one-form) is not deflated: that stays singular.
 pub struct Deflation<T: ComplexField, C: Dim>
 where
@@ -233,6 +234,15 @@ where
     /// Whether redundant rows have been met, so that every factorisation deflates.
     pub fn active(&self) -> bool {
         self.active == Some(true)
+    }
+
+    /// Measures the rows again at the next factorisation, as at the first: the model changed
+    /// (a contact closed beside others), and rows found independent may be redundant now.
+    /// Rows that turn dependent by round-off leave a pivot of round-off, not the exact zero
+    /// that makes an independent set's factorisation measure them again.
+    pub fn remeasure(&mut self) {
+        self.active = None;
+        self.rank = 0;
     }
 
     /// Replaces `lambda` (the multipliers, or a right-hand side's constraint rows) by its part
@@ -401,10 +411,6 @@ where
     }
 }
 
-/// The share of the largest pivot below which a multiplier's pivot counts as round-off: rows
-/// dependent to rounding leave about `1e-16` of it, rows merely ill-conditioned far more.
-const DEPENDENT: f64 = 1e-10;
-
 impl<T: ComplexField<RealField = f64> + Copy, D: Dim> Lu<T, D>
 where
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
@@ -423,11 +429,6 @@ where
         let stopped = if deflation.active == Some(false) {
             match self.factor() {
                 Err(Singular { column }) if column >= n => Some(column),
-                // Rows that turned dependent since (a contact that closed beside others) leave
-                // a pivot of round-off, not an exact zero: measured again, from the matrix.
-                Ok(()) if self.nearly_dependent(n) => {
-                    Some(D::try_to_usize().unwrap_or_else(|| self.lu.nrows()))
-                }
                 other => {
                     deflation.deflated = false;
                     return other;
@@ -437,22 +438,6 @@ where
             None
         };
         self.factor_saddle_measured(n, deflation, stopped)
-    }
-
-    /// Whether a factorisation's pivots from column `first` on (a saddle's multipliers, or
-    /// all of a Schur complement's) span more than [`DEPENDENT`] of their largest: rows
-    /// dependent to round-off, which the factorisation passed as regular.
-    #[inline]
-    fn nearly_dependent(&self, first: usize) -> bool {
-        let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
-        let (mut smallest, mut largest) = (f64::INFINITY, 0.0_f64);
-        for k in first..n {
-            // The pivot's inverse, kept by the factorisation.
-            let inverse = self.inv_diagonal[k].norm1();
-            smallest = smallest.min(inverse);
-            largest = largest.max(inverse);
-        }
-        largest > 0.0 && smallest < DEPENDENT * largest
     }
 
     /// [`Lu::factor_saddle`] where the rows may be redundant: measured the first time, at
@@ -504,16 +489,8 @@ where
         DefaultAllocator: Allocator<C, C> + Allocator<C>,
     {
         if deflation.active == Some(false) {
-            match self.factor() {
-                Ok(()) if self.nearly_dependent(0) => {
-                    self.restore(D::try_to_usize().unwrap_or_else(|| self.lu.nrows()));
-                    deflation.active = Some(true);
-                }
-                other => {
-                    deflation.deflated = false;
-                    return other;
-                }
-            }
+            deflation.deflated = false;
+            return self.factor();
         }
         self.factor_schur_measured(deflation, rows)
     }
@@ -539,9 +516,8 @@ where
         self.factor()
     }
 
-    /// Undoes the first `steps` elimination steps of a factorisation that stopped there (or of
-    /// all of a finished one), in reverse order, which gives back the matrix it started from
-    /// (to rounding).
+    /// Undoes the first `steps` elimination steps of a factorisation that stopped there, in
+    /// reverse order, which gives back the matrix it started from (to rounding).
     fn restore(&mut self, steps: usize) {
         let n = D::try_to_usize().unwrap_or_else(|| self.lu.nrows());
         for l in (0..steps).rev() {
@@ -720,8 +696,9 @@ mod tests {
 
     #[test]
     fn measures_again_rows_that_turned_dependent() {
-        // First factored with independent rows (the third row moved off the span of the
-        // others), then with the redundant ones: a contact that closed beside others.
+        // First factored with independent rows (the third row off the span of the others),
+        // then, asked to measure again, with the redundant ones: a contact that closed beside
+        // others, at the restart after it.
         let (h, a, k, b) = redundant_saddle();
         let mut independent = k.clone();
         independent[(5, 2)] += 0.5;
@@ -731,6 +708,7 @@ mod tests {
         lu.matrix_mut().copy_from(&independent);
         lu.factor_saddle(3, &mut deflation).expect("regular");
         assert!(!deflation.active());
+        deflation.remeasure();
         lu.matrix_mut().copy_from(&k);
         lu.factor_saddle(3, &mut deflation).expect("deflated");
         assert!(deflation.active());

@@ -128,6 +128,8 @@ where
     fn deflating(&self) -> bool {
         false
     }
+    /// Measures the rows' redundancy again at the next factorisation: the model changed.
+    fn remeasure(&mut self) {}
 }
 
 /// Solves the linear systems of a Newton iteration for one Jacobian and one pair of shifts:
@@ -157,6 +159,8 @@ where
     fn deflating(&self) -> bool {
         false
     }
+    /// Measures the rows' redundancy again at the next factorisation: the model changed.
+    fn remeasure(&mut self) {}
 }
 
 /// The Jacobian blocks of [`ResidualBlocks`](crate::ResidualBlocks), the input of a condensed Newton step, stored as

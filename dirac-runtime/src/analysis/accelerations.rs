@@ -205,8 +205,18 @@ where
         &self.blocks.dl_dv
     }
 
+    /// Measures the constraint rows' redundancy again at the next factorisation: the model
+    /// changed (a contact closed or opened).
+    pub fn remeasure(&mut self) {
+        self.saddle.remeasure();
+        if let Some(schur) = &mut self.schur {
+            schur.deflation.remeasure();
+        }
+    }
+
     /// Forgets the factorisation and the mass matrix: the model may have changed.
     pub fn forget(&mut self) {
+        self.remeasure();
         self.factored = false;
         self.changed = 0;
         self.inverse_ready = false;

@@ -296,8 +296,8 @@ where
     if !accelerations.evaluate(model, t, (&state.q, &state.v), &mut acceleration, &mut lambda) {
         return false;
     }
-    // Along the motion, a step as short as the slip rates' (see `SlipRates::at`).
-    let h = 1e-7;
+    // Along the motion.
+    let h = RATE_STEP;
     // Both margins from the same solve, so that its round-off cancels.
     model.events(t, &state.q, &state.v, &lambda, values);
     let margin = values[law.release];
@@ -375,8 +375,11 @@ where
             .map(|i| norm([g[i][0] - k[i] * angles[i].cos(), g[i][1] - k[i] * angles[i].sin()]))
             .fold(0.0, f64::max)
     };
-    // The residual counts against the rates and against how much the friction turns them.
+    // The residual counts against the rates and against how much the friction turns them, and
+    // not below the round-off of the rates' differences (where a contact's force is about zero,
+    // its friction turns nothing, and any direction starts the slip alike).
     let mut scale = f64::MIN_POSITIVE;
+    let noise = 10.0 * f64::EPSILON * (1.0 + state.v.amax()) / RATE_STEP;
     let mut r = residual(&g, &angles, &k);
     let mut converged = false;
     for _ in 0..ONSET_ROUNDS {
@@ -399,7 +402,7 @@ where
             jacobian[(2 * j + 1, n + j)] = -sin;
         }
         scale = g.iter().map(|g| norm(*g)).fold(scale, f64::max);
-        converged = r <= ONSET_TOLERANCE * scale;
+        converged = r <= (ONSET_TOLERANCE * scale).max(noise);
         if converged {
             break;
         }
@@ -441,8 +444,9 @@ where
         )));
     }
     // At its bound a slip starts at the rate zero.
-    if let Some(i) =
-        (0..n).filter(|&i| k[i] < -ONSET_TOLERANCE * scale).min_by(|&i, &j| k[i].total_cmp(&k[j]))
+    if let Some(i) = (0..n)
+        .filter(|&i| k[i] < -(ONSET_TOLERANCE * scale).max(noise))
+        .min_by(|&i, &j| k[i].total_cmp(&k[j]))
     {
         return Ok(Onset::Backwards(i));
     }
@@ -488,9 +492,7 @@ where
         if !self.accelerations.evaluate(model, t, (q, v), &mut self.acceleration, &mut self.lambda) {
             return None;
         }
-        // A step along the motion short enough that `g` is linear in it, long enough that its
-        // change stands well above the round-off of the velocities.
-        let h = 1e-7;
+        let h = RATE_STEP;
         let ahead = (q + v * h, v + &self.acceleration * h);
         let rates: Vec<[f64; 2]> = laws
             .iter()
@@ -503,6 +505,11 @@ where
         rates.iter().all(|g| g[0].is_finite() && g[1].is_finite()).then_some(rates)
     }
 }
+
+/// The step along the motion by which [`SlipRates`] differentiates the slips: short enough that
+/// `g` is linear in it, long enough that its change stands well above the round-off of the
+/// velocities.
+const RATE_STEP: f64 = 1e-7;
 
 /// The most Newton iterations of [`starting_directions`].
 const ONSET_ROUNDS: usize = 50;

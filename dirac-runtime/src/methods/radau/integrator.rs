@@ -190,6 +190,11 @@ where
         )?;
         state.write_y(&mut self.y);
         self.state.clone_from(state);
+        // The rows may have changed (a contact closed or opened): redundant now, or no longer.
+        self.solver.remeasure();
+        if let Some(cell) = &self.multipliers {
+            cell.borrow_mut().0.remeasure();
+        }
         // The state may have jumped (an impact): start again with a short step, which grows by
         // up to 8× a step, so that the steps after the event see an event function leave zero
         // (a ball leaving the floor) before one of them could span its return.

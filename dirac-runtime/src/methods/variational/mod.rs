@@ -49,8 +49,8 @@ use self::general::general_step;
 use self::separable::separable_step;
 use self::work::{Step, Work};
 pub use self::work::{VariationalOptions, VariationalStats};
-use crate::algebra::Algebra;
 use crate::algebra::mass::Mass;
+use crate::algebra::{Algebra, Saddle};
 use crate::analysis::projection::Projector;
 use crate::error::SimError;
 use crate::integrator::drive::Driver;
@@ -495,6 +495,9 @@ where
             self.find_free_velocities(t, state)?;
         }
         self.state.clone_from(state);
+        // The rows may have changed (a contact closed or opened): redundant now, or no longer.
+        self.work.saddle.remeasure();
+        self.work.small_deflation.remeasure();
         self.work.big_lambda.fill(0.0);
         self.work.gamma.fill(0.0);
         if t >= self.t_end {
