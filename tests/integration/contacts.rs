@@ -267,6 +267,59 @@ fn a_bar_falling_flat_strikes_with_both_ends_at_once() {
     assert!((rise - exact_rise).abs() < 1e-9, "{rise} against {exact_rise}");
 }
 
+/// Three equal beads on a line, the second and third touching at rest, the first pushed by a
+/// constant force `f` and striking the second plastically at speed `u`. The first contact's
+/// impulse drives the touching one in, so the impact takes both at once: momentum
+/// conservation with all three moving together gives `u/3` each, the impulses `2 m u/3` on
+/// the first contact and `m u/3` on the second (closed form), and after it the three move on
+/// together pushed by `f`, the contacts pressed. Taken one contact at a time, the first impact
+/// would give `m u/2` and leave the touching contact approaching at zero gap.
+#[test]
+fn a_plastic_impact_takes_a_touching_contact_it_drives_in_with_it() {
+    let (m, f, v, d) = (1.5, 1.2, 2.0, 0.1);
+    let mut beads = ThreeBeads { m, f, d }.with_contacts();
+    let mut start = State::<ThreeBeadsWithContacts>::zeros();
+    start.set_q(ThreeBeadsWithContacts::X1, -1.0);
+    start.set_q(ThreeBeadsWithContacts::X3, d);
+    start.set_v(ThreeBeadsWithContacts::X1, v);
+    let start =
+        consistent_state(&beads, 0.0, &start.q, &start.v, Consistency::default()).expect("consistent");
+    let mut radau = Radau::new(&mut beads, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid options");
+    let mut events = Events::new().contacts(radau.model());
+    // The first bead covers 1 − d from rest at speed v under the acceleration a = f/m.
+    let a = f / m;
+    let t1 = (-v + (v * v + 2.0 * a * (1.0 - d)).sqrt()) / a;
+    let u = v + a * t1;
+    let solution = radau
+        .solve_with_events(0.0, &start, 2.0 * t1, &Sampling::Every(0.1), &mut events, go_on)
+        .expect("integrates");
+    let impacts = solution.impacts();
+    assert_eq!(impacts.len(), 2, "one impact on both contacts: {impacts:?}");
+    for (impact, exact) in impacts.iter().zip([2.0 * m * u / 3.0, m * u / 3.0]) {
+        assert!(relative(impact.t, t1) < 1e-10, "{impact:?} at {t1}");
+        assert!(relative(impact.impulse, exact) < 1e-10, "{impact:?} against {exact}");
+    }
+    let last = solution.len() - 1;
+    let exact = u / 3.0 + a / 3.0 * (solution.t()[last] - t1);
+    for bead in [ThreeBeadsWithContacts::X1, ThreeBeadsWithContacts::X2, ThreeBeadsWithContacts::X3] {
+        let speed = solution.v(bead)[last];
+        assert!(relative(speed, exact) < 1e-10, "{speed} against {exact}");
+    }
+}
+
+/// Three beads of mass `m` on a line, each at least `d` from the next (plastic contacts), the
+/// first pushed along the line by the force `f`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => v1, x2 => v2, x3 => v3))]
+#[dirac(lagrangian = 0.5 * m * (v1 * v1 + v2 * v2 + v3 * v3) + f * x1)]
+#[dirac(unilateral(first, restitution = 0.0) = x2 - x1 - d)]
+#[dirac(unilateral(second, restitution = 0.0) = x3 - x2 - d)]
+struct ThreeBeads {
+    m: f64,
+    f: f64,
+    d: f64,
+}
+
 /// A spinning bar whose end lands without bouncing is not held there: right after the impact
 /// its end accelerates away from the floor in free flight (`−g + (l/2) sin θ ω² > 0`), so a
 /// contact closed there would pull. It opens at once, and the bar flies on freely: checked

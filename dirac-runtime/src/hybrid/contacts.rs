@@ -190,9 +190,11 @@ impl Contacts {
             corner: (0.0, 0.0),
         });
         saddle.factor().map_err(|s| not_determined(model, t, &state.q, &state.v, s))?;
+        // Every touching contact's column: one that was not approaching may be driven in by
+        // the others' impulses.
         let mut per_unit = DMatrix::<f64>::zeros(n, closing.len());
         let mut x = vec![0.0; n + m];
-        for &i in &active {
+        for i in 0..closing.len() {
             x.fill(0.0);
             for (c, xc) in x[..n].iter_mut().enumerate() {
                 *xc = rows[closing[i] + c * k];
@@ -200,9 +202,21 @@ impl Contacts {
             saddle.solve(&mut x);
             per_unit.column_mut(i).copy_from_slice(&x[..n]);
         }
+        // The normal speed a contact that was not approaching is driven to, below which it
+        // joins the impact.
+        let driven_in = -1e-9 * approach.iter().fold(0.0f64, |s, x| s.max(x.abs()));
 
-        // Newton's law on the approaching contacts; one that would pull is left out.
+        // Newton's law on the approaching contacts; one that would pull is left out, and one
+        // the others' impulses would drive in joins, stopped by its own impulse (plastically: it
+        // had no approach to restore). Left and joined by turns, at most as often as the
+        // contacts are many, twice.
+        let target = |i: usize| match approach[i] < 0.0 {
+            true => -(1.0 + self.restitution[closing[i]]) * approach[i],
+            false => -approach[i],
+        };
+        let mut rounds = 0;
         let lambda = loop {
+            rounds += 1;
             let size = active.len();
             let mut w = DMatrix::<f64>::zeros(size, size);
             let mut rhs = DVector::<f64>::zeros(size);
@@ -210,7 +224,7 @@ impl Contacts {
                 for (c, &l) in active.iter().enumerate() {
                     w[(r, c)] = dot(closing[i], per_unit.column(l).as_slice());
                 }
-                rhs[r] = -(1.0 + self.restitution[closing[i]]) * approach[i];
+                rhs[r] = target(i);
             }
             let lambda = w.clone().lu().solve(&rhs).or_else(|| w.svd(true, true).solve(&rhs, 1e-12).ok());
             let Some(lambda) = lambda.filter(|l| l.iter().all(|x| x.is_finite())) else {
@@ -226,8 +240,29 @@ impl Contacts {
             match (0..size).filter(|&r| lambda[r] < 0.0).min_by(|&r, &s| lambda[r].total_cmp(&lambda[s])) {
                 Some(r) if size > 1 => {
                     active.remove(r);
+                    continue;
                 }
-                _ => break lambda,
+                _ => {}
+            }
+            if rounds > 2 * closing.len() {
+                break lambda;
+            }
+            let speed_after = |i: usize| {
+                let change: f64 = active
+                    .iter()
+                    .enumerate()
+                    .map(|(r, &l)| lambda[r].max(0.0) * dot(closing[i], per_unit.column(l).as_slice()))
+                    .sum();
+                approach[i] + change
+            };
+            let joins = (0..closing.len())
+                .filter(|i| !active.contains(i))
+                .map(|i| (i, speed_after(i)))
+                .filter(|&(_, s)| s < driven_in)
+                .min_by(|a, b| a.1.total_cmp(&b.1));
+            match joins {
+                Some((i, _)) => active.push(i),
+                None => break lambda,
             }
         };
         for (r, &i) in active.iter().enumerate() {
