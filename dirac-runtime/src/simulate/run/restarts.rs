@@ -54,7 +54,7 @@ where
 /// The contacts' modes are settled first, as the complementarity of the contacts at rest on
 /// their surfaces asks at acceleration level: a closed contact whose force would pull opens,
 /// and an open one that touches without normal speed (`φ_j` and `φ̇_j` at round-off) closes
-/// where its acceleration `φ̈_j` would press it in or keep it touching (a foot that a knee's stop would lift
+/// where its acceleration `φ̈_j` would press it in (a foot that a knee's stop would lift
 /// stays down where the leg's fall presses it instead). One contact changes at a time, the
 /// lowest-numbered of those in the wrong mode, then the state again (Murty's principal
 /// pivoting, which settles in finitely many changes where the contacts' response is a
@@ -147,8 +147,9 @@ where
 }
 
 /// The open contacts that touch their surfaces at `state` without normal speed (`φ_j` and
-/// `φ̇_j` at round-off) and whose acceleration `φ̈_j` would press them in or keep them
-/// touching (closed, such a contact's force is zero: it rests without pressing). The rates are
+/// `φ̇_j` at round-off) and whose acceleration `φ̈_j` would press them in, beyond its
+/// round-off: a contact whose force and acceleration are both about zero stays as it is, so
+/// that the two tests cannot flip it back and forth. The rates are
 /// differences of `φ` along the motion, `q(t + s) ≈ q + s v + s²/2 v̇` with `v̇` from the
 /// equations of motion, measured only where some open contact touches.
 fn pressed_in<M: Hybrid>(model: &M, t: f64, state: &State<M>) -> Vec<usize>
@@ -185,7 +186,7 @@ where
     };
     let (before, after) = (gaps(-h, Some(&accel)), gaps(h, Some(&accel)));
     let pressing = PRESSES * (1.0 + accel.amax());
-    touching.into_iter().filter(|&j| (after[j] - 2.0 * now[j] + before[j]) / (h * h) < pressing).collect()
+    touching.into_iter().filter(|&j| (after[j] - 2.0 * now[j] + before[j]) / (h * h) < -pressing).collect()
 }
 
 /// The step of the differences that measure an open contact's rates, relative to the size of
@@ -195,8 +196,8 @@ const TOUCH_STEP: f64 = 1e-4;
 const TOUCHES: f64 = 1e-10;
 /// A touching contact whose normal speed is within this share of the velocities' size rests.
 const RESTS: f64 = 1e-6;
-/// A resting open contact whose normal acceleration is below this share of the accelerations'
-/// size does not leave its surface.
+/// A resting open contact whose normal acceleration is below minus this share of the
+/// accelerations' size is pressed in.
 const PRESSES: f64 = 1e-6;
 
 /// The share of the largest force within which a contact force counts as zero.
