@@ -2,12 +2,14 @@
 beside dirac's run of the same robot (benches/peers/standing.rs).
 
 Reads dirac's lines (`case,t,quantity,value`) from the file given, loads the same URDF into
-MuJoCo (its visuals dropped, only the feet's collision spheres kept, a free joint on the base,
-the plane z = 0), starts from dirac's start (the four feet on the ground), runs the same PD law
-sampled at 1 kHz (held between samples) and prints both runs' base and joints side by side.
-MuJoCo at its best for contact with friction: elliptic cones, `impratio` 10, 10 iterations of
-its no-slip solver, the Newton solver, time step 1e-4 s. dirac's robot has no joint limits, so
-MuJoCo's are disabled.
+MuJoCo (its visuals dropped, a free joint on the base, the plane z = 0), starts from dirac's
+start (the four feet on the ground), runs the same PD law sampled at 1 kHz (held between
+samples) and prints both runs' base and joints side by side. Standing, only the feet's
+collision spheres touch and the joint limits are off, as in dirac's standing robot; falling,
+the trunk's box touches too and the joints stop at their limits (MuJoCo's limits stiffened to
+a 2 ms time constant, dirac's are hard), with the feet's friction and without. MuJoCo at its
+best for contact with friction: elliptic cones, `impratio` 10, 10 iterations of its no-slip
+solver, the Newton solver, time step 1e-4 s.
 
     python standing.py A1_URDF DIRAC_LINES [PAGE CHROMIUM]
 
@@ -24,15 +26,17 @@ from collections import defaultdict
 import mujoco
 import numpy as np
 
-KP, KD, PERIOD, MU, STEP = 50.0, 3.0, 1e-3, 0.8, 1e-4
+KP, KD, PERIOD, MU, STEP, LIMIT_TIME = 50.0, 3.0, 1e-3, 0.8, 1e-4, 2e-3
 LEGS = ["FR", "FL", "RR", "RL"]
 JOINTS = [("hip", 0.0), ("thigh", 0.8), ("calf", -1.81)]
 
 
-def model(urdf: str) -> mujoco.MjModel:
+def model(urdf: str, falling: bool = False, mu: float = MU) -> mujoco.MjModel:
     text = open(urdf).read()
     text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
-    text = re.sub(r"<collision>.*?</collision>", lambda m: m.group(0) if "sphere" in m.group(0) else "", text, flags=re.S)
+    # The feet's spheres; falling, the trunk's box too.
+    touches = lambda shape: "sphere" in shape or (falling and "0.267 0.194 0.114" in shape)
+    text = re.sub(r"<collision>.*?</collision>", lambda m: m.group(0) if touches(m.group(0)) else "", text, flags=re.S)
     text = re.sub(r"(<robot[^>]*>)", r'\1<mujoco><compiler discardvisual="true" fusestatic="false"/></mujoco>', text, count=1)
     path = "/tmp/dirac_a1_mujoco.urdf"
     open(path, "w").write(text)
@@ -43,14 +47,17 @@ def model(urdf: str) -> mujoco.MjModel:
     spec.option.noslip_iterations = 10
     spec.option.solver = mujoco.mjtSolver.mjSOL_NEWTON
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
-    spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_LIMIT
+    if not falling:
+        spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_LIMIT
+    for joint in spec.joints:
+        joint.solref_limit = [LIMIT_TIME, 1.0]
     spec.worldbody.first_body().add_freejoint()
     floor = spec.worldbody.add_geom()
     floor.type = mujoco.mjtGeom.mjGEOM_PLANE
     floor.size = [10, 10, 0.1]
     for geom in spec.geoms:
-        geom.friction = [MU, 0, 0]
-        geom.condim = 3
+        geom.friction = [mu, 0, 0]
+        geom.condim = 3 if mu > 0 else 1
     return spec.compile()
 
 
@@ -92,18 +99,26 @@ def run(m: mujoco.MjModel, start: dict, end: float, times: list, control: bool) 
 def main():
     urdf, lines = sys.argv[1], sys.argv[2]
     dirac = defaultdict(lambda: defaultdict(dict))
+    ends = {}
     for line in open(lines):
-        case, t, quantity, value = line.strip().split(",")
+        case, t, quantity, value = line.strip().split(",", 3)
+        if case == "end":
+            ends[quantity] = (float(t), value)
+            continue
         dirac[case][float(t)][quantity] = float(value)
     start = dirac["start"][0.0]
     m = model(urdf)
     print(f"MuJoCo {mujoco.__version__}: nq = {m.nq}, mass {sum(m.body_mass):.4f} kg, step {STEP} s")
-    for case, end, control in [("standing", 5.0, True), ("falling", 0.35, False)]:
+    for case, control, mu in [("standing", True, MU), ("falling", False, MU), ("frictionless", False, 0.0)]:
         times = sorted(dirac[case])
+        end = max(times)
+        if case in ends:
+            print(f"\ndirac's {case} run reached {ends[case][0]} s: {ends[case][1]}")
+        m = model(urdf, falling=not control, mu=mu)
         clock = time.perf_counter()
         theirs = run(m, start, end, times, control)
         print(f"MuJoCo: {end} s in {time.perf_counter() - clock:.2f} s of wall time")
-        print(f"\n{case} ({'PD at 1 kHz' if control else 'no torques'}):")
+        print(f"\n{case} ({'PD at 1 kHz' if control else f'no torques, mu = {mu}'}):")
         print(f"{'t':>6} | {'dirac z':>10} {'MuJoCo z':>10} {'Δz':>9} | {'dirac x':>10} {'MuJoCo x':>10} | {'joints Δ (rad)':>14}")
         for t in times:
             mine, other = dirac[case][t], theirs.get(t)

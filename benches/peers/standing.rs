@@ -1,13 +1,16 @@
 //! The Unitree A1 quadruped (example-robot-data's `a1.urdf`, its base floating) standing on the
 //! ground on its four feet under a joint PD controller sampled at 1 kHz, and falling with the
-//! controller off: dirac's side of `benches/peers/standing.sh`, which builds this file in a
-//! crate of its own (`@URDF@` replaced by the URDF's path) and runs MuJoCo on the same robot.
+//! controller off onto its joints' stops and its trunk: dirac's side of
+//! `benches/peers/standing.sh`, which builds this file in a crate of its own (`@URDF@` replaced
+//! by the URDF's path) and runs MuJoCo on the same robot.
 //!
 //! Each foot's sphere is a contact with the ground under Coulomb's friction cone
 //! (`ground(friction = mu, links = [...])`); the run starts with all four resting, from the
-//! consistent state nearest to the SRDF's standing posture. Prints `case,t,quantity,value` lines:
-//! the start (the state MuJoCo starts from) and the base's position and the joints' angles at
-//! the sample times; writes the standing run as a 3D page, `standing.html`.
+//! consistent state nearest to the SRDF's standing posture. The falling robot also has its
+//! joints' `<limit>`s as hard stops (`joint_limits`) and its trunk's box touching the ground.
+//! Prints `case,t,quantity,value` lines: the start (the state MuJoCo starts from) and the
+//! base's position and the joints' angles at the sample times, and `end` lines with the time
+//! each fall reached; writes the standing run as a 3D page, `standing.html`.
 
 use dirac::prelude::*;
 
@@ -35,6 +38,15 @@ struct A1 {
     rl1: f64,
     rl2: f64,
     rl3: f64,
+}
+
+/// The A1 without torques, its joints stopped at their limits, its feet and its trunk touching
+/// the ground.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(urdf = "@URDF@", floating, large, joint_limits)]
+#[dirac(ground(friction = mu, links = ["FR_foot", "FL_foot", "RR_foot", "RL_foot", "trunk"]))]
+struct A1Falling {
+    mu: f64,
 }
 
 /// The legs in the order of the inputs, and each leg's joints with their standing angles (the
@@ -100,61 +112,113 @@ fn run() -> Result<(), SimError> {
     for &(i, ..) in &held {
         println!("start,0,{},{:.17e}", names[i], start.q[i]);
     }
-    for (case, end, every, control) in [("standing", 5.0, 0.25, true), ("falling", 0.35, 0.05, false)] {
-        // Each run from zero torques (the last run's are held in the model).
-        for &(.., input) in &held {
-            model.set_input_value(input, 0.0);
+    let (case, end, every) = ("standing", 5.0, 0.25);
+    let mut radau = Radau::new(&mut model, RadauOptions::tolerances(1e-8, 1e-8))?;
+    let clock = std::time::Instant::now();
+    let controlled = held.clone();
+    let solution = radau
+        .run(0.0, &start, end)
+        .sampling(Sampling::Every(every))
+        .every(PERIOD, move |_, state, model: &mut A1WithContacts| {
+            for &(i, angle, input) in &controlled {
+                model.set_input_value(input, KP * (angle - state.q[i]) - KD * state.v[i]);
+            }
+        })
+        .solve()?;
+    // Where the feet stand at the end, for the check of the 3D page's pixels.
+    let last = solution.len() - 1;
+    for leg in LEGS {
+        for axis in ["x", "y", "z"] {
+            let name = format!("{leg}_foot_{axis}");
+            let column = solution.column(&format!("out({name})")).expect("a foot's pose output");
+            println!("view,{},{name},{:.17e}", solution.t()[last], column[last]);
         }
-        let mut radau = Radau::new(&mut model, RadauOptions::tolerances(1e-8, 1e-8))?;
-        let clock = std::time::Instant::now();
-        let controlled = held.clone();
-        let run = radau.run(0.0, &start, end).sampling(Sampling::Every(every));
-        // Off, the controller is not run at all: the torques stay zero.
-        let solution = match control {
-            true => run
-                .every(PERIOD, move |_, state, model: &mut A1WithContacts| {
-                    for &(i, angle, input) in &controlled {
-                        model.set_input_value(input, KP * (angle - state.q[i]) - KD * state.v[i]);
-                    }
-                })
-                .solve()?,
-            false => run.solve()?,
-        };
-        if control {
-            // Where the feet stand at the end, for the check of the 3D page's pixels.
-            let last = solution.len() - 1;
-            for leg in LEGS {
-                for axis in ["x", "y", "z"] {
-                    let name = format!("{leg}_foot_{axis}");
-                    let column = solution.column(&format!("out({name})")).expect("a foot's pose output");
-                    println!("view,{},{name},{:.17e}", solution.t()[last], column[last]);
-                }
-            }
-            // The standing robot in 3D, for a browser: target/peers/standing/standing.html.
-            dirac::plot::Scene::of(&solution, "The A1 standing under a joint PD controller")
-                .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?
-                .write_html("standing.html")
-                .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?;
+    }
+    // The standing robot in 3D, for a browser: target/peers/standing/standing.html.
+    dirac::plot::Scene::of(&solution, "The A1 standing under a joint PD controller")
+        .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?
+        .write_html("standing.html")
+        .map_err(|error| SimError::InvalidOption { what: "scene", reason: error.to_string() })?;
+    eprintln!(
+        "{case}: {end} s in {:.2} s of wall time, {} steps, slips {:?}",
+        clock.elapsed().as_secs_f64(),
+        solution.stats.steps,
+        LEGS.map(|leg| solution.event_times(&format!("{leg}_foot_ground_slip_slips")).map_or(0, |t| t.len()))
+    );
+    for k in 0..solution.len() {
+        let (t, state) = (solution.t()[k], solution.state(k).expect("a sample"));
+        // The samples every `every`, not those the run records at its events.
+        if ((t / every).round() * every - t).abs() > 1e-9 {
+            continue;
         }
-        eprintln!(
-            "{case}: {end} s in {:.2} s of wall time, {} steps, slips {:?}",
-            clock.elapsed().as_secs_f64(),
-            solution.stats.steps,
-            LEGS.map(|leg| solution.event_times(&format!("{leg}_foot_ground_slip_slips")).map_or(0, |t| t.len()))
-        );
-        for k in 0..solution.len() {
-            let (t, state) = (solution.t()[k], solution.state(k).expect("a sample"));
-            // The samples every `every`, not those the run records at its events.
-            if ((t / every).round() * every - t).abs() > 1e-9 {
-                continue;
+        for (axis, &i) in ["x", "y", "z"].iter().zip(&base) {
+            println!("{case},{t},base_{axis},{:.17e}", state.q[i]);
+        }
+        for &(i, ..) in &held {
+            println!("{case},{t},{},{:.17e}", names[i], state.q[i]);
+        }
+    }
+    // Falling from the same posture: with the feet's friction, and without it.
+    for (case, mu) in [("falling", MU), ("frictionless", 0.0)] {
+        fall(case, mu)?;
+    }
+    Ok(())
+}
+
+/// The A1 falling without torques from the consistent state nearest to the standing posture,
+/// its feet resting, with the friction coefficient `mu`, for a second or until the run ends in
+/// an error (printed): its base and joints every 0.05 s, and the time it reached.
+fn fall(case: &str, mu: f64) -> Result<(), SimError> {
+    let every = 0.05;
+    let mut model = A1Falling { mu }.with_contacts();
+    let contacts = model.unilateral_names();
+    for leg in LEGS {
+        let j = contacts.iter().position(|c| *c == format!("{leg}_foot_ground")).expect("a foot's contact");
+        assert!(model.set_contact_closed(j, true), "the companion rests its feet");
+    }
+    let names = model.coordinate_names();
+    let index = |name: &str| names.iter().position(|c| c == name).unwrap_or_else(|| panic!("no {name}"));
+    let mut guess = dirac::State::<A1FallingWithContacts>::zeros();
+    let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    guess.place_free_body("root_joint", [0.0, 0.0, 0.3], identity, [0.0; 3], [0.0; 3]).expect("free");
+    for leg in LEGS {
+        for (joint, angle) in JOINTS {
+            guess.q[index(&format!("{leg}_{joint}_joint"))] = angle;
+        }
+    }
+    let start = consistent_state(&model, 0.0, &guess.q, &guess.v, Consistency::default())?;
+    let base = ["x", "y", "z"].map(|axis| index(&format!("root_joint_{axis}")));
+    let joints: Vec<usize> =
+        LEGS.iter().flat_map(|leg| JOINTS.map(|(joint, _)| index(&format!("{leg}_{joint}_joint")))).collect();
+    let print = |t: f64, q: &[f64]| {
+        for (axis, &i) in ["x", "y", "z"].iter().zip(&base) {
+            println!("{case},{t},base_{axis},{:.17e}", q[i]);
+        }
+        for &i in &joints {
+            println!("{case},{t},{},{:.17e}", names[i], q[i]);
+        }
+    };
+    // A run from sample to sample, so that a fall that ends in an error still shows its course.
+    let mut radau = Radau::new(&mut model, RadauOptions::tolerances(1e-8, 1e-8))?;
+    let (clock, mut steps, mut state, mut t) = (std::time::Instant::now(), 0, start, 0.0);
+    print(t, state.q.as_slice());
+    let mut ended = "ok".to_string();
+    while t < 1.0 - 1e-9 {
+        let next = ((t / every).round() + 1.0) * every;
+        match radau.run(t, &state, next).solve() {
+            Ok(solution) => {
+                steps += solution.stats.steps;
+                state = solution.state(solution.len() - 1).expect("a sample");
+                t = next;
+                print(t, state.q.as_slice());
             }
-            for (axis, &i) in ["x", "y", "z"].iter().zip(&base) {
-                println!("{case},{t},base_{axis},{:.17e}", state.q[i]);
-            }
-            for &(i, ..) in &held {
-                println!("{case},{t},{},{:.17e}", names[i], state.q[i]);
+            Err(error) => {
+                ended = error.to_string();
+                break;
             }
         }
     }
+    eprintln!("{case}: {t} s in {:.2} s of wall time, {steps} steps; {ended}", clock.elapsed().as_secs_f64());
+    println!("end,{t},{case},{}", ended.replace(',', ";"));
     Ok(())
 }
