@@ -521,7 +521,9 @@ where
 }
 
 /// `v̇` at `(t, q, v)`: the equations of motion with the constraints at acceleration level,
-/// `[L_vv −Aᵀ; A 0] (v̇, λ) = (∂L/∂q + F − L_vt − L_vq v, −∂(A v + b)/∂q v − ∂(A v + b)/∂t)`.
+/// `[L_vv −Bᵀ; A 0] (v̇, λ) = (∂L/∂q + F − L_vt − L_vq v, −∂(A v + b)/∂q v − ∂(A v + b)/∂t)`
+/// (`B = A` but where slipping friction cones put their kinetic force on a contact's row, see
+/// [`LagrangeDirac::slip_rows`](crate::model::LagrangeDirac::slip_rows)).
 pub(crate) fn accelerations<M: Hybrid>(
     model: &M,
     t: f64,
@@ -536,7 +538,7 @@ where
 
 /// The motion at `(t, q, v)` from the equations of motion with the constraints at acceleration
 /// level (see [`accelerations`]): the accelerations, the multipliers, and the factorised matrix
-/// `[L_vv −Aᵀ; A 0]` of the system that gave them.
+/// `[L_vv −Bᵀ; A 0]` of the system that gave them.
 pub(crate) struct Motion {
     pub accelerations: DVector<f64>,
     pub multipliers: DVector<f64>,
@@ -564,9 +566,15 @@ where
     let mut rate = sizes.zeros_c::<M>();
     model.dav_dt(t, q, v, &mut rate);
     let velocities = DVector::from_column_slice(v.as_slice());
+    // The rows' forces are `Bᵀλ`: with the friction that slipping cones' contact forces drive,
+    // `B = A + (B − A)`.
+    let pushing = match M::NON_ASSOCIATED {
+        true => &a + dense_cq(model, &|b| model.slip_rows(t, q, v, b)),
+        false => a.clone(),
+    };
     let mut matrix = DMatrix::<f64>::zeros(n + m, n + m);
     matrix.view_mut((0, 0), (n, n)).copy_from(&h);
-    matrix.view_mut((0, n), (n, m)).copy_from(&(-a.transpose()));
+    matrix.view_mut((0, n), (n, m)).copy_from(&(-pushing.transpose()));
     matrix.view_mut((n, 0), (m, n)).copy_from(&a);
     let mut rhs = DVector::<f64>::zeros(n + m);
     let top = &lvq * &velocities;

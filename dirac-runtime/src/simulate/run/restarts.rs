@@ -92,8 +92,9 @@ where
                 let scale = AT_ZERO * (1.0 + consistent.lambda.amax());
                 let pulling =
                     closed_rows.iter().filter(|&&(_, r)| consistent.lambda[r] < -scale).map(|&(j, _)| j);
-                let pressed =
-                    pressed_in(model, t, &consistent).into_iter().filter(|&j| model.contact_row(j).is_some());
+                let pressed = pressed_in(model, t, &consistent)?
+                    .into_iter()
+                    .filter(|&j| model.contact_row(j).is_some());
                 match pulling.chain(pressed).min() {
                     Some(j) => j,
                     None => break consistent,
@@ -152,7 +153,7 @@ where
 /// that the two tests cannot flip it back and forth. The rates are
 /// differences of `φ` along the motion, `q(t + s) ≈ q + s v + s²/2 v̇` with `v̇` from the
 /// equations of motion, measured only where some open contact touches.
-fn pressed_in<M: Hybrid>(model: &M, t: f64, state: &State<M>) -> Vec<usize>
+fn pressed_in<M: Hybrid>(model: &M, t: f64, state: &State<M>) -> Result<Vec<usize>, SimError>
 where
     DefaultAllocator: Storage<M>,
 {
@@ -179,14 +180,15 @@ where
         })
         .collect();
     if touching.is_empty() {
-        return touching;
+        return Ok(touching);
     }
-    let Ok(accel) = crate::hybrid::impact::accelerations(model, t, &state.q, &state.v) else {
-        return Vec::new();
-    };
+    let accel = crate::hybrid::impact::accelerations(model, t, &state.q, &state.v)?;
     let (before, after) = (gaps(-h, Some(&accel)), gaps(h, Some(&accel)));
     let pressing = PRESSES * (1.0 + accel.amax());
-    touching.into_iter().filter(|&j| (after[j] - 2.0 * now[j] + before[j]) / (h * h) < -pressing).collect()
+    Ok(touching
+        .into_iter()
+        .filter(|&j| (after[j] - 2.0 * now[j] + before[j]) / (h * h) < -pressing)
+        .collect())
 }
 
 /// The step of the differences that measure an open contact's rates, relative to the size of
