@@ -394,7 +394,15 @@ where
         let svd = crate::analysis::diagnose::svd(&written).ok_or_else(singular)?;
         let largest = svd.singular_values.max().max(1e-300);
         if svd.singular_values.iter().filter(|&&x| x <= 1e-12 * largest).count() > free + dependent {
-            return Err(singular());
+            // Friction on redundant contact forces (a box's corners on the ground, slipping
+            // apart): how they share the load changes the friction and so the accelerations.
+            // They share it without part along `ker Aᵀ`, as a deflated factorisation does.
+            if std::ptr::eq(a, b) {
+                return Err(singular());
+            }
+            let x =
+                deflated_solve(&kkt, &rhs, n, &a.transpose(), units.row.as_slice()).ok_or_else(singular)?;
+            return Ok(DVector::from_fn(m, |j, _| units.row[j] * x[n + j]));
         }
         let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
         x.rows(n, m).into_owned()
@@ -407,6 +415,41 @@ where
     let force = b.transpose() * &lambda;
     let aligned = crate::analysis::diagnose::svd(&b.transpose()).ok_or_else(singular)?;
     aligned.solve(&force, 1e-10 * aligned.singular_values.max()).map_err(|_| singular())
+}
+
+/// The solution `x = (v̇, λ')` of the acceleration-level system `kkt x = rhs` (`n`
+/// velocities, then the multipliers scaled by `row`, `λ = row ∘ λ'`) whose multipliers have
+/// no part along `ker Aᵀ` (`at` is `Aᵀ`, `n × m`), in the model's units: where the rows are
+/// redundant, the one solution the integrators' deflation keeps. `None` where the equations
+/// have no solution or more than one even so.
+pub(crate) fn deflated_solve(
+    kkt: &DMatrix<f64>,
+    rhs: &DVector<f64>,
+    n: usize,
+    at: &DMatrix<f64>,
+    row: &[f64],
+) -> Option<DVector<f64>> {
+    let size = kkt.ncols();
+    let kernel = null_space(at, 1e-10)?;
+    let d = kernel.ncols();
+    let mut stacked = DMatrix::zeros(size + d, size);
+    stacked.view_mut((0, 0), (size, size)).copy_from(kkt);
+    let scale = kkt.amax().max(f64::MIN_POSITIVE);
+    for k in 0..d {
+        for (j, r) in row.iter().enumerate() {
+            stacked[(size + k, n + j)] = scale * kernel[(j, k)] * r;
+        }
+    }
+    let mut right = DVector::zeros(size + d);
+    right.rows_mut(0, size).copy_from(rhs);
+    let decomposition = crate::analysis::diagnose::svd(&stacked)?;
+    let largest = decomposition.singular_values.max();
+    if decomposition.singular_values.iter().any(|&x| x <= 1e-12 * largest) {
+        return None;
+    }
+    let x = decomposition.solve(&right, 1e-12 * largest).ok()?;
+    let residual = (kkt * &x - rhs).amax();
+    (residual <= 1e-9 * (scale * x.amax() + rhs.amax())).then_some(x)
 }
 
 /// A basis (by columns) of `ker L_vv ∩ ker A`: the velocities that neither inertia nor
@@ -589,4 +632,44 @@ where
          constraint, and no force or dissipation that depends on it (∂F/∂v)",
         picked.join(", ")
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use nalgebra::{DMatrix, DVector};
+
+    use super::deflated_solve;
+
+    /// A unit mass in the plane held at `y = 0` by two identical rows (a box's two corners on
+    /// the ground, seen from the side), friction on each row's force pushing along `x`
+    /// (`B = A + (B − A)`: `0.3 λ_1` and `−0.2 λ_2`), under gravity `g`. The rows leave
+    /// `λ_1 + λ_2 = g` and nothing else; without part along `ker Aᵀ = (1, −1)` the two share
+    /// it, `λ_1 = λ_2 = g/2`, and `ẍ = 0.3 g/2 − 0.2 g/2 = 0.05 g`: worked by hand.
+    #[test]
+    fn redundant_rows_with_friction_share_their_load_evenly() {
+        let g = 9.81;
+        let a = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, 0.0, 1.0]);
+        let b = DMatrix::from_row_slice(2, 2, &[0.3, 1.0, -0.2, 1.0]);
+        let mut kkt = DMatrix::zeros(4, 4);
+        kkt.view_mut((0, 0), (2, 2)).fill_with_identity();
+        kkt.view_mut((0, 2), (2, 2)).copy_from(&(-b.transpose()));
+        kkt.view_mut((2, 0), (2, 2)).copy_from(&a);
+        let rhs = DVector::from_row_slice(&[0.0, -g, 0.0, 0.0]);
+        assert!(kkt.clone().lu().solve(&rhs).is_none_or(|x| !x.iter().all(|x: &f64| x.is_finite())));
+        let x = deflated_solve(&kkt, &rhs, 2, &a.transpose(), &[1.0, 1.0]).expect("a solution");
+        let expected = [0.05 * g, 0.0, g / 2.0, g / 2.0];
+        for (x, e) in x.iter().zip(expected) {
+            assert!((x - e).abs() < 1e-12 * g, "{x} against {e}");
+        }
+        // Scaled multipliers (`λ = row ∘ λ'`) share the load in the model's units all the same.
+        let row = [2.0, 0.5];
+        let mut scaled = kkt.clone();
+        for (j, r) in row.iter().enumerate() {
+            for i in 0..2 {
+                scaled[(i, 2 + j)] *= r;
+            }
+        }
+        let x = deflated_solve(&scaled, &rhs, 2, &a.transpose(), &row).expect("a solution");
+        assert!((row[0] * x[2] - g / 2.0).abs() < 1e-12 * g && (row[1] * x[3] - g / 2.0).abs() < 1e-12 * g);
+    }
 }

@@ -589,15 +589,20 @@ where
     if !massless.is_empty() {
         free_massless_rows(model, (t, q, v), &massless, &mut matrix, &mut rhs);
     }
-    let system = matrix.lu();
-    if !system.solve_mut(&mut rhs) || rhs.iter().any(|x| !x.is_finite()) {
-        return Err(SimError::NotDetermined {
-            t,
-            cause: "the accelerations: the mass matrix bordered by the constraint rows is \
-                    singular there"
-                .into(),
-        });
+    let system = matrix.clone().lu();
+    let mut solution = rhs.clone();
+    if !system.solve_mut(&mut solution) || solution.iter().any(|x| !x.is_finite()) {
+        // Redundant rows (a box's four corners on the ground): the multipliers without part
+        // along `ker Aᵀ`, as the integrators' deflation takes them.
+        let ones = vec![1.0; m];
+        solution = crate::analysis::init::deflated_solve(&matrix, &rhs, n, &a.transpose(), &ones)
+            .ok_or_else(|| SimError::NotDetermined {
+                t,
+                cause: "the accelerations: the mass matrix bordered by the constraint rows is singular there"
+                    .into(),
+            })?;
     }
+    let rhs = solution;
     Ok(Motion {
         accelerations: rhs.rows(0, n).into_owned(),
         multipliers: rhs.rows(n, m).into_owned(),

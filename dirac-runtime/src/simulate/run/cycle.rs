@@ -343,10 +343,19 @@ where
         after.clone_from(events.state());
         let (impulse, mut switched) = strike(integrator, events, recorder, after, reopened, &event)?;
         let contact_switched = switched;
-        // A law switches its mode: the state is made consistent in the new one.
-        let law = events.switch_law(integrator.model(), event.index, t, after)?;
+        // A law switches its mode: the state is made consistent in the new one. Where that leaves
+        // a contact's force pulling, so that the friction it drives would push, the contacts'
+        // modes are settled again (the contact opens).
+        let (law, pulled) = match events.switch_law(integrator.model(), event.index, t, after) {
+            Ok(law) => (law, false),
+            Err(SimError::FrictionPushes { row, .. }) if pulls_at_contact(integrator.model(), &row) => {
+                (true, true)
+            }
+            Err(error) => return Err(error),
+        };
+        let contact_switched = contact_switched || pulled;
         // Consistent already, unless an impact or a contact changed it too.
-        let consistent = law && !switched && reopened.is_empty();
+        let consistent = law && !switched && !pulled && reopened.is_empty();
         switched |= law;
         let mut context = EventContext::new(t, after, integrator);
         context.impulse = impulse;
@@ -429,6 +438,19 @@ where
 /// there too; a contact left at rest closed) or a resting contact's release: `after` changed
 /// by the impact law, the impulses recorded, the contacts the impact reopened in `reopened`.
 /// Returns the event's own contact's impulse and whether a contact closed or opened.
+/// Whether `row` is the row of a closed contact of `model` that can open: a friction that
+/// such a contact's pulling force would make push is settled by opening it.
+fn pulls_at_contact<M: Hybrid>(model: &M, row: &str) -> bool
+where
+    DefaultAllocator: Storage<M>,
+{
+    let names = model.constraint_names();
+    (0..model.unilateral_names().len())
+        .filter(|&j| model.contact_closed(j))
+        .filter_map(|j| model.contact_row(j))
+        .any(|r| names[r] == row)
+}
+
 fn strike<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
