@@ -2,7 +2,8 @@
 # A quadruped standing on the ground, dirac against MuJoCo in one run: the Unitree A1 from the
 # example-robot-data package (its URDF, its base floating, its four feet's spheres touching the
 # ground under Coulomb's cone, mu = 0.8) held in the SRDF's standing posture by a joint PD
-# controller sampled at 1 kHz for 5 s, and falling for 0.35 s with the controller off
+# controller sampled at 1 kHz for 5 s, and falling for 1 s with the controller off onto its
+# joints' stops and its trunk, with the feet's friction and without
 # (benches/peers/standing.rs, benches/peers/standing.py), and the standing robot's 3D page
 # checked in headless Chromium (tests/browser/chromium.sh). MuJoCo and the robot's data are
 # installed into a virtual environment under target/peers; dirac's side is built in a crate of
