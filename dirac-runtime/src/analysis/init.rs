@@ -378,7 +378,18 @@ where
     let vanishing =
         redundant.as_ref().is_some_and(|z| z.row_iter().any(|row| row.norm_squared() > 1.0 - 1e-9));
     let dependent = if vanishing { 0 } else { redundant.as_ref().map_or(0, |z| z.ncols()) };
-    let lambda = if null <= free + dependent {
+    // Friction on redundant contact forces (a box's corners on the ground, slipping apart): how
+    // they share the load changes the friction and so the accelerations, and `B`'s rows need
+    // not be redundant where `A`'s are. They share it without part along `ker Aᵀ`, as a
+    // deflated factorisation does.
+    let sharing = null > free + dependent
+        && !std::ptr::eq(a, b)
+        && null_space(&a_scaled.transpose(), 1e-10)
+            .is_some_and(|z| z.ncols() > 0 && z.row_iter().all(|row| row.norm_squared() <= 1.0 - 1e-9));
+    let lambda = if sharing {
+        let x = deflated_solve(&kkt, &rhs, n, &a.transpose(), units.row.as_slice()).ok_or_else(singular)?;
+        return Ok(DVector::from_fn(m, |j, _| units.row[j] * x[n + j]));
+    } else if null <= free + dependent {
         let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
         DVector::from_fn(m, |j, _| units.row[j] * x[n + j])
     } else {
@@ -394,15 +405,7 @@ where
         let svd = crate::analysis::diagnose::svd(&written).ok_or_else(singular)?;
         let largest = svd.singular_values.max().max(1e-300);
         if svd.singular_values.iter().filter(|&&x| x <= 1e-12 * largest).count() > free + dependent {
-            // Friction on redundant contact forces (a box's corners on the ground, slipping
-            // apart): how they share the load changes the friction and so the accelerations.
-            // They share it without part along `ker Aᵀ`, as a deflated factorisation does.
-            if std::ptr::eq(a, b) {
-                return Err(singular());
-            }
-            let x =
-                deflated_solve(&kkt, &rhs, n, &a.transpose(), units.row.as_slice()).ok_or_else(singular)?;
-            return Ok(DVector::from_fn(m, |j, _| units.row[j] * x[n + j]));
+            return Err(singular());
         }
         let x = svd.solve(&rhs, 1e-12 * largest).expect("SVD with both factors computed");
         x.rows(n, m).into_owned()
