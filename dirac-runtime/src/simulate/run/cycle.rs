@@ -434,10 +434,6 @@ where
     }
 }
 
-/// What `event` does to the contacts, when it is one's (an impact, with every contact closed
-/// there too; a contact left at rest closed) or a resting contact's release: `after` changed
-/// by the impact law, the impulses recorded, the contacts the impact reopened in `reopened`.
-/// Returns the event's own contact's impulse and whether a contact closed or opened.
 /// Whether `row` is the row of a closed contact of `model` that can open: a friction that
 /// such a contact's pulling force would make push is settled by opening it.
 fn pulls_at_contact<M: Hybrid>(model: &M, row: &str) -> bool
@@ -451,6 +447,10 @@ where
         .any(|r| names[r] == row)
 }
 
+/// What `event` does to the contacts, when it is one's (an impact, with every contact closed
+/// there too; a contact left at rest closed) or a resting contact's release: `after` changed
+/// by the impact law, the impulses recorded, the contacts the impact reopened in `reopened`.
+/// Returns the event's own contact's impulse and whether a contact closed or opened.
 fn strike<M: Hybrid, I: Integrator<M>>(
     integrator: &mut I,
     events: &mut Events<'_, M>,
