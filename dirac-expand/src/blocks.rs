@@ -73,6 +73,12 @@ pub struct Blocks {
     pub dpdot_du: Matrix,
     /// `∂(∂L/∂v)/∂u`, `n × n_u`: nonzero when an input enters the momenta.
     pub l_vu: Matrix,
+    /// `∂F/∂u`, `n × n_u`: the part of `∂ṗ/∂u` the forces give (a transcription evaluates
+    /// the forces and `∂L/∂q` at different points).
+    pub force_du: Matrix,
+    /// The weighted Hessian that transcriptions of optimal control problems need, for models
+    /// with inputs small enough ([`SECOND_ORDER_MAX`]).
+    pub second_order: Option<SecondOrder>,
     /// `∂(A v + b)/∂u`, `m × n_u`: nonzero when an input prescribes a motion (a voltage source's
     /// voltage, a speed source's speed).
     pub av_du: Matrix,
@@ -118,6 +124,55 @@ pub struct Blocks {
 /// large model, each with a dense row) the model does without them, and a sensitivity across
 /// its switching surfaces is refused by name.
 pub const EVENT_DERIVATIVES_MAX: usize = 1 << 14;
+
+/// The most entries of the weighted Hessian's lower triangle, `d (d + 1) / 2` for
+/// `d = 2n + n_u`, for which a model with inputs gets [`SecondOrder`]: a 12-link chain with
+/// 12 torques (`d = 36`) has 666.
+pub const SECOND_ORDER_MAX: usize = 1 << 11;
+
+/// `H = ∂²/∂x² (a · ∂L/∂q + b · ∂L/∂v + c · F)` over `x = (q, v, u)`, the weights `a`, `b`,
+/// `c` being [`Sym::Weight`] symbols: every second derivative of the residual blocks a
+/// transcription's Lagrangian Hessian contracts with its multipliers, formed as forward over
+/// reverse (the weighted gradient by one reverse sweep, then its derivatives).
+pub struct SecondOrder {
+    /// The structurally nonzero entries `(row, column)` of the lower triangle, row by row.
+    pub pattern: Vec<(usize, usize)>,
+    /// Their values, in the same order.
+    pub values: Vec<Id>,
+}
+
+impl SecondOrder {
+    fn derive(m: &mut SymModel, b: &Blocks) -> Option<SecondOrder> {
+        let x: Vec<Id> = m.q.iter().chain(&m.v).chain(&m.inputs).copied().collect();
+        let d = x.len();
+        if m.inputs.is_empty() || d * (d + 1) / 2 > SECOND_ORDER_MAX {
+            return None;
+        }
+        let mut weighted = Vec::new();
+        for (kind, block) in [
+            (Weighted::HessianDlDq, &b.dl_dq),
+            (Weighted::HessianDlDv, &b.dl_dv),
+            (Weighted::HessianForce, &b.force),
+        ] {
+            for (i, &e) in block.iter().enumerate() {
+                weighted.push((e, m.symbols.declare(&mut m.graph, Sym::Weight(kind, i))));
+            }
+        }
+        let g = &mut m.graph;
+        let gradient = g.vjp(&weighted, &x);
+        let (mut pattern, mut values) = (Vec::new(), Vec::new());
+        for (row, &e) in gradient.iter().enumerate() {
+            for (column, &xc) in x.iter().enumerate().take(row + 1) {
+                let entry = g.diff(e, xc);
+                if !g.is_zero(entry) {
+                    pattern.push((row, column));
+                    values.push(entry);
+                }
+            }
+        }
+        Some(SecondOrder { pattern, values })
+    }
+}
 
 /// The derivatives of the residual blocks and holonomic constraints with respect to one
 /// parameter, at fixed `(t, q, v, λ)`.
@@ -243,6 +298,7 @@ impl Blocks {
         let inputs = m.inputs.clone();
         let dpdot_du = jacobian(g, &momentum_rate, &inputs);
         let l_vu = jacobian(g, &dl_dv, &inputs);
+        let force_du = jacobian(g, &force, &inputs);
         let av_du = jacobian(g, &a_v, &inputs);
         let outputs: Vec<Id> = m.outputs.iter().map(|(_, id)| *id).collect();
         let (output_dq, output_dv, output_du) =
@@ -349,6 +405,8 @@ impl Blocks {
             dl_dt,
             dpdot_du,
             l_vu,
+            force_du,
+            second_order: None,
             av_du,
             outputs,
             output_dq,
@@ -367,6 +425,7 @@ impl Blocks {
             solved_velocities: Vec::new(),
         };
         blocks.solved_velocities = solved_velocities(&mut m.graph, &v, &blocks);
+        blocks.second_order = SecondOrder::derive(m, &blocks);
         blocks
     }
 }

@@ -294,6 +294,7 @@ fn implementation(model: &Model<'_>, analysed: Analysed, names: &KeyConstants) -
             }
 
             #[automatically_derived]
+            #[allow(clippy::approx_constant)]
             impl #p::InputsOutputs for #ident {
                 #inputs
                 #inputs_outputs

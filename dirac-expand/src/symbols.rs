@@ -49,6 +49,12 @@ pub enum Weighted {
     ConstraintVelocity,
     /// The holonomic constraints `φ`.
     Holonomic,
+    /// `∂L/∂q` in the weighted Hessian of the transcriptions ([`crate::blocks::SecondOrder`]).
+    HessianDlDq,
+    /// `∂L/∂v` in the weighted Hessian.
+    HessianDlDv,
+    /// The force `F` in the weighted Hessian.
+    HessianForce,
 }
 
 impl Sym {

@@ -13,10 +13,10 @@ use quote::quote;
 
 use self::signatures::{
     AV_DU, Arg, CONSTRAINT_MATRIX, CONSTRAINT_RATE, DATL_DQ, DAV_DQ, DAV_DT, DL_DQ, DL_DT, DL_DV, DPDOT_DU,
-    EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS, JACOBIAN_CSC,
-    L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV, OUTPUTS, Out,
-    RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SLIP_DV, SLIP_ROWS, SOLVED_VELOCITIES, Signature,
-    UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ, rt,
+    EVENT_DERIVATIVES, EVENTS, FORCE, FORCE_DQ, FORCE_DU, FORCE_DV, HOLONOMIC, JACOBIAN, JACOBIAN_BLOCKS,
+    JACOBIAN_CSC, L_QQ, L_VQ, L_VT, L_VU, L_VV, LAGRANGIAN, OUTPUT_DLAMBDA, OUTPUT_DQ, OUTPUT_DU, OUTPUT_DV,
+    OUTPUTS, Out, RECOVERED, RESIDUAL, RESIDUAL_BLOCKS, RESTITUTION, SLIP_DV, SLIP_ROWS, SOLVED_VELOCITIES,
+    Signature, UNILATERAL, UNILATERAL_DERIVATIVES, UNILATERAL_DQ, WEIGHTED_HESSIAN, rt,
 };
 use crate::blocks::Blocks;
 use crate::model::SymModel;
@@ -217,6 +217,17 @@ pub fn generate(model: &SymModel, b: &Blocks) -> Generated {
             inputs_outputs.extend(e.sized(&sig, &column_major(block)));
         }
     }
+    if let Some(second) = &b.second_order {
+        inputs_outputs.extend(e.sized(&FORCE_DU, &column_major(&b.force_du)));
+        let (rows, columns): (Vec<usize>, Vec<usize>) = second.pattern.iter().copied().unzip();
+        inputs_outputs.extend(quote! {
+            const SECOND_ORDER: ::core::primitive::bool = true;
+            fn weighted_hessian_pattern(&self) -> &'static [(::core::primitive::usize, ::core::primitive::usize)] {
+                &[#((#rows, #columns)),*]
+            }
+        });
+        inputs_outputs.extend(e.sized(&WEIGHTED_HESSIAN, &second.values));
+    }
     let parameters = e.parameter_methods(b);
     Generated {
         methods,
@@ -318,6 +329,9 @@ impl Emitter<'_> {
                     Weighted::DlDv => quote! { w.dl_dv[#i] },
                     Weighted::ConstraintVelocity => quote! { w.constraint_velocity[#i] },
                     Weighted::Holonomic => quote! { w[#i] },
+                    Weighted::HessianDlDq => quote! { wq[#i] },
+                    Weighted::HessianDlDv => quote! { wv[#i] },
+                    Weighted::HessianForce => quote! { wf[#i] },
                 }
             }
             kind => unreachable!("{kind:?} is read only from the flat state or not at all"),
@@ -337,7 +351,12 @@ impl Emitter<'_> {
                 | (Arg::V, Sym::Velocity(_))
                 | (Arg::Lambda, Sym::Multiplier(_))
                 | (Arg::A, Sym::Acceleration(_)) => true,
-                (Arg::WeightBlocks, Sym::Weight(block, _)) => block != Weighted::Holonomic,
+                (Arg::WeightBlocks, Sym::Weight(block, _)) => {
+                    matches!(block, Weighted::MomentumRate | Weighted::DlDv | Weighted::ConstraintVelocity)
+                }
+                (Arg::WeightDlDq, Sym::Weight(Weighted::HessianDlDq, _))
+                | (Arg::WeightDlDv, Sym::Weight(Weighted::HessianDlDv, _))
+                | (Arg::WeightForce, Sym::Weight(Weighted::HessianForce, _)) => true,
                 (Arg::WeightHolonomic, Sym::Weight(block, _)) => block == Weighted::Holonomic,
                 (Arg::Y, k) => {
                     matches!(k, Sym::Coordinate(_) | Sym::Velocity(_) | Sym::Momentum(_) | Sym::Multiplier(_))

@@ -47,6 +47,10 @@ pub enum Arg {
     WeightBlocks,
     /// The weights of the holonomic constraints in a vector-Jacobian product, `&VecH<Self>`.
     WeightHolonomic,
+    /// The weights of `∂L/∂q`, `∂L/∂v` and `F` in the weighted Hessian, each `&VecQ<Self>`.
+    WeightDlDq,
+    WeightDlDv,
+    WeightForce,
 }
 
 /// What a method returns (a scalar) or writes into its `out` argument.
@@ -80,7 +84,7 @@ const fn method(name: &'static str, args: &'static [Arg], out: Out) -> Signature
     Signature { name, args, out }
 }
 
-use Arg::{A, K, Lambda, Q, T, V, WeightBlocks, WeightHolonomic, Y};
+use Arg::{A, K, Lambda, Q, T, V, WeightBlocks, WeightDlDq, WeightDlDv, WeightForce, WeightHolonomic, Y};
 
 pub const LAGRANGIAN: Signature = method("lagrangian", &[T, Q, V], Out::Scalar);
 pub const DL_DQ: Signature = method("dl_dq", &[T, Q, V], Out::VecQ);
@@ -122,6 +126,11 @@ pub const RECOVERED: Signature = method("recovered", &[T, Q, V, A, Lambda], Out:
 /// models with inputs or outputs.
 pub const DPDOT_DU: Signature = method("dpdot_du", &[T, Q, V, Lambda], Out::Values);
 pub const L_VU: Signature = method("l_vu", &[T, Q, V], Out::Values);
+/// `∂F/∂u` and the weighted Hessian of the transcriptions; emitted for models with inputs
+/// (see `Blocks::second_order`).
+pub const FORCE_DU: Signature = method("force_du", &[T, Q, V], Out::Values);
+pub const WEIGHTED_HESSIAN: Signature =
+    method("weighted_hessian", &[T, Q, V, WeightDlDq, WeightDlDv, WeightForce], Out::Values);
 pub const AV_DU: Signature = method("av_du", &[T, Q, V], Out::Values);
 pub const OUTPUT_DQ: Signature = method("output_dq", &[T, Q, V, Lambda], Out::Values);
 pub const OUTPUT_DV: Signature = method("output_dv", &[T, Q, V, Lambda], Out::Values);
@@ -192,6 +201,9 @@ impl Arg {
             Arg::K => ("k", quote! { ::core::primitive::usize }),
             Arg::WeightBlocks => ("w", quote! { &#p::ResidualBlocks<Self> }),
             Arg::WeightHolonomic => ("w", quote! { &#p::VecH<Self> }),
+            Arg::WeightDlDq => ("wq", quote! { &#p::VecQ<Self> }),
+            Arg::WeightDlDv => ("wv", quote! { &#p::VecQ<Self> }),
+            Arg::WeightForce => ("wf", quote! { &#p::VecQ<Self> }),
         }
     }
 }

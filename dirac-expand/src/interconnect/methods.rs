@@ -175,6 +175,9 @@ fn subsystem_part(sig: &Signature, field: &syn::Ident, ty: &syn::Type, i: usize)
             Arg::WeightBlocks | Arg::WeightHolonomic => {
                 unreachable!("composites write their transposed parameter blocks by hand")
             }
+            Arg::WeightDlDq | Arg::WeightDlDv | Arg::WeightForce => {
+                unreachable!("composites have no second-order blocks")
+            }
         })
         .collect();
     if sig.out == Out::Scalar {

@@ -100,4 +100,47 @@ where
             "output_du: the model has no outputs or no inputs, so the slice must be empty"
         );
     }
+
+    /// Whether the derive generated [`InputsOutputs::force_du`] and the weighted Hessian
+    /// ([`InputsOutputs::weighted_hessian`]) that transcriptions of optimal control problems
+    /// need: for primitive models with inputs whose Hessian's lower triangle over `(q, v, u)`
+    /// has at most 2048 entries. `false` for every other model.
+    const SECOND_ORDER: bool = false;
+
+    /// `∂F/∂u` of the forces alone, `n × n_u`, dense and column-major (`∂ṗ/∂u` holds
+    /// `∂²L/∂q∂u` too). Generated where [`InputsOutputs::SECOND_ORDER`].
+    fn force_du(&self, t: f64, q: &VecQ<Self>, v: &VecQ<Self>, out: &mut [f64]) {
+        let _ = (t, q, v);
+        assert!(out.is_empty(), "force_du: the model has no second-order blocks, so the slice must be empty");
+    }
+
+    /// The structurally nonzero entries `(row, column)`, `row ≥ column`, of the weighted
+    /// Hessian's lower triangle over `x = (q, v, u)` (indices `0..n` for `q`, `n..2n` for `v`,
+    /// `2n..2n + n_u` for `u`), in the order [`InputsOutputs::weighted_hessian`] writes them.
+    /// Known when the model compiles; empty where not [`InputsOutputs::SECOND_ORDER`].
+    fn weighted_hessian_pattern(&self) -> &'static [(usize, usize)] {
+        &[]
+    }
+
+    /// The lower triangle of `∂²/∂x² (wqᵀ ∂L/∂q + wvᵀ ∂L/∂v + wfᵀ F)` at `(t, q, v)` and the
+    /// model's inputs, over `x = (q, v, u)`, one value per entry of
+    /// [`InputsOutputs::weighted_hessian_pattern`]: the second derivatives of the residual
+    /// blocks contracted with multipliers, generated symbolically (forward over reverse).
+    #[allow(clippy::too_many_arguments)]
+    fn weighted_hessian(
+        &self,
+        t: f64,
+        q: &VecQ<Self>,
+        v: &VecQ<Self>,
+        wq: &VecQ<Self>,
+        wv: &VecQ<Self>,
+        wf: &VecQ<Self>,
+        out: &mut [f64],
+    ) {
+        let _ = (t, q, v, wq, wv, wf);
+        assert!(
+            out.is_empty(),
+            "weighted_hessian: the model has no second-order blocks, so the slice must be empty"
+        );
+    }
 }

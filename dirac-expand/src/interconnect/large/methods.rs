@@ -88,8 +88,15 @@ impl Large<'_> {
                 Arg::Q => quote! { &#p::gather_q::<#ty, Self>(q, &__s) },
                 Arg::V => quote! { &#p::gather_q::<#ty, Self>(v, &__s) },
                 Arg::Lambda => quote! { &#p::gather_c::<#ty, Self>(lambda, &__s) },
-                Arg::Y | Arg::K | Arg::A | Arg::WeightBlocks | Arg::WeightHolonomic => {
-                    unreachable!("arrays assemble no flat or parameter methods this way")
+                Arg::Y
+                | Arg::K
+                | Arg::A
+                | Arg::WeightBlocks
+                | Arg::WeightHolonomic
+                | Arg::WeightDlDq
+                | Arg::WeightDlDv
+                | Arg::WeightForce => {
+                    unreachable!("arrays assemble no flat, parameter or second-order methods this way")
                 }
             })
             .collect();
