@@ -41,6 +41,7 @@
 //! | `fmi` | no | `fmi`: models exported as FMUs | zip |
 //! | `spice` | no | `spice`: SPICE netlists, the `dirac-spice` program (with `sparse` and `components`) | — |
 //! | `full` | no | all of the above | |
+//! | `ipopt` | no | `optimal::ipopt`: optimal control problems solved by IPOPT, its library loaded when first used (Debian: `coinor-libipopt-dev`) | libloading |
 //!
 //! ```toml
 //! [dependencies]
@@ -123,6 +124,11 @@ pub use dirac_runtime::algebra;
 /// larger than one machine split into independent jobs. Feature `ensemble`.
 #[cfg(feature = "ensemble")]
 pub use dirac_runtime::simulate::ensemble;
+
+/// Optimal control: a problem on a model with inputs, its DMOC transcription with exact
+/// sparse derivatives generated when the model compiles, and IPOPT to solve it (feature
+/// `ipopt`).
+pub use dirac_runtime::optimal;
 
 /// Input sources read by time: tables of samples, held or interpolated.
 pub use dirac_runtime::integrator::sources;

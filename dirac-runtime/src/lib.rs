@@ -53,6 +53,8 @@ pub mod methods;
 pub mod model;
 #[cfg(feature = "sparse")]
 pub mod network;
+/// Optimal control problems on models with inputs, transcribed by DMOC and solved by IPOPT.
+pub mod optimal;
 pub mod output;
 pub mod shape;
 pub mod simulate;

@@ -41,6 +41,7 @@ mod linkage;
 mod named_access;
 mod network;
 mod one_run;
+mod optimal;
 mod paper;
 mod plots;
 mod prescribed;

@@ -1,0 +1,254 @@
+//! Optimal control by DMOC: the transcription's Jacobian and Lagrangian Hessian against
+//! central differences of its own equations and gradient, a cart-pole swing-up solved by IPOPT
+//! and replayed by the variational integrator with the inputs it found, and the typed errors
+//! of malformed problems.
+
+use dirac::optimal::ipopt::IpoptOptions;
+use dirac::optimal::{Dmoc, Nlp, OptimalError, Problem};
+use dirac::prelude::*;
+
+use crate::zoo::unit_pendulum;
+
+/// Installs IPOPT's library from Debian's packages if it is missing (`.ci/ipopt.sh`), before
+/// anything in this process tries to load it: a newcomer's `cargo test` needs nothing more.
+fn with_ipopt() {
+    static INSTALL: std::sync::Once = std::sync::Once::new();
+    INSTALL.call_once(|| {
+        let script = concat!(env!("CARGO_MANIFEST_DIR"), "/../.ci/ipopt.sh");
+        let status = std::process::Command::new("bash").arg(script).status().expect("bash runs");
+        assert!(status.success(), "{script} could not install IPOPT (coinor-libipopt-dev)");
+    });
+}
+
+/// A cart of mass `mc` pushed by `f`, with a pole of mass `mp` at distance `l` hinged on it;
+/// `theta` is measured from hanging straight down.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, theta => w), input(f))]
+#[dirac(lagrangian = 0.5 * (mc + mp) * vx * vx + mp * l * vx * w * cos(theta) + 0.5 * mp * l * l * w * w
+    + mp * g * l * cos(theta))]
+#[dirac(force(x) = f)]
+pub struct CartPole {
+    pub mc: f64,
+    pub mp: f64,
+    pub l: f64,
+    pub g: f64,
+    pub f: f64,
+}
+
+/// A model whose inputs enter its Lagrangian, its momenta and its forces, so that every block
+/// of the transcription's derivatives (`∂²L/∂q∂u`, `∂²L/∂v∂u`, `∂F/∂u`) is exercised: a
+/// mass on a spring whose anchor `a` moves, in a field coupling `b` to its velocity, with a
+/// damper and a push `f` that grows with the position.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v, y => vy), input(a), input(b), input(f))]
+#[dirac(lagrangian = 0.5 * m * (v * v + vy * vy) + b * x * vy - 0.5 * k * (x - a).powi(2)
+    - 0.5 * k * (y - x).powi(2) + a * b * sin(y) * v)]
+#[dirac(force(x) = -c * v * v * v + f * (1.0 + 0.1 * y * y), force(y) = -c * vy + a * f * x)]
+pub struct Steered {
+    pub m: f64,
+    pub k: f64,
+    pub c: f64,
+    pub a: f64,
+    pub b: f64,
+    pub f: f64,
+}
+
+fn cart_pole() -> CartPole {
+    CartPole { mc: 1.0, mp: 0.3, l: 0.5, g: 9.81, f: 0.0 }
+}
+
+/// The swing-up: from hanging at rest at `x = 0` to upright at rest at `x = 0` in 2 s, with
+/// the cart within ±1.5 m and the push within ±20 N.
+fn swing_up(intervals: usize) -> Problem<CartPole> {
+    Problem::new(cart_pole(), 2.0, intervals)
+        .final_state(VecQ::<CartPole>::from([0.0, std::f64::consts::PI]), VecQ::<CartPole>::zeros())
+        .position_bounds(CartPole::X, -1.5, 1.5)
+        .input_bounds(CartPole::F, -20.0, 20.0)
+}
+
+/// A deterministic point away from any symmetry.
+fn scattered(len: usize, seed: f64) -> Vec<f64> {
+    (0..len).map(|i| (seed + 1.7 * i as f64).sin() * 0.8 + 0.1 * i as f64 / len as f64).collect()
+}
+
+/// `max |a − b|` relative to `max(1, max |b|)`.
+fn relative_gap(a: &[f64], b: &[f64]) -> f64 {
+    let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+    a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / scale
+}
+
+/// The sparse Jacobian as a dense matrix, row-major.
+fn dense_jacobian(nlp: &mut impl Nlp, z: &[f64]) -> Vec<f64> {
+    let (n, m) = (nlp.variables(), nlp.constraints());
+    let pattern = nlp.jacobian_pattern().to_vec();
+    let mut values = vec![0.0; pattern.len()];
+    nlp.jacobian_values(z, &mut values);
+    let mut dense = vec![0.0; m * n];
+    for (&(r, c), v) in pattern.iter().zip(values) {
+        dense[r * n + c] += v;
+    }
+    dense
+}
+
+/// Checks the Jacobian against central differences of the constraint values, and the
+/// Lagrangian's Hessian against central differences of its gradient `σ∇f + Jᵀμ` (built from
+/// the Jacobian just checked).
+fn check_derivatives(nlp: &mut impl Nlp, z: &[f64], tol: f64) {
+    let (n, m) = (nlp.variables(), nlp.constraints());
+    let eps = 1e-6;
+    let jacobian = dense_jacobian(nlp, z);
+    let mut fd = vec![0.0; m * n];
+    let (mut plus, mut minus) = (vec![0.0; m], vec![0.0; m]);
+    for c in 0..n {
+        let mut zp = z.to_vec();
+        zp[c] += eps;
+        nlp.constraint_values(&zp, &mut plus);
+        zp[c] -= 2.0 * eps;
+        nlp.constraint_values(&zp, &mut minus);
+        for r in 0..m {
+            fd[r * n + c] = (plus[r] - minus[r]) / (2.0 * eps);
+        }
+    }
+    let gap = relative_gap(&jacobian, &fd);
+    assert!(gap < tol, "Jacobian against central differences: {gap:e}");
+
+    let sigma = 0.7;
+    let mu = scattered(m, 0.3);
+    let lagrangian_gradient = |nlp: &mut dyn FnMut(&[f64]) -> Vec<f64>, z: &[f64]| nlp(z);
+    let mut gradient_at = |z: &[f64]| -> Vec<f64> {
+        let mut g = vec![0.0; n];
+        nlp.gradient(z, &mut g);
+        let jac = dense_jacobian(nlp, z);
+        for c in 0..n {
+            g[c] *= sigma;
+            for r in 0..m {
+                g[c] += mu[r] * jac[r * n + c];
+            }
+        }
+        g
+    };
+    let mut fd_hessian = vec![0.0; n * n];
+    for c in 0..n {
+        let mut zp = z.to_vec();
+        zp[c] += eps;
+        let gp = lagrangian_gradient(&mut gradient_at, &zp);
+        zp[c] -= 2.0 * eps;
+        let gm = lagrangian_gradient(&mut gradient_at, &zp);
+        for r in 0..n {
+            fd_hessian[r * n + c] = (gp[r] - gm[r]) / (2.0 * eps);
+        }
+    }
+    let pattern = nlp.hessian_pattern().to_vec();
+    assert!(pattern.iter().all(|&(r, c)| r >= c), "the Hessian's pattern is its lower triangle");
+    let mut values = vec![0.0; pattern.len()];
+    nlp.hessian_values(z, sigma, &mu, &mut values);
+    let mut hessian = vec![0.0; n * n];
+    for (&(r, c), v) in pattern.iter().zip(values) {
+        hessian[r * n + c] += v;
+        if r != c {
+            hessian[c * n + r] += v;
+        }
+    }
+    let gap = relative_gap(&hessian, &fd_hessian);
+    assert!(gap < tol, "Lagrangian Hessian against central differences: {gap:e}");
+}
+
+#[test]
+fn the_transcriptions_derivatives_match_central_differences() {
+    // The cart-pole with a full final state and every cost term.
+    let problem = swing_up(6)
+        .position_weight(CartPole::THETA, 0.3, 1.0)
+        .velocity_weight(CartPole::X, 0.2, 0.1)
+        .terminal_weight(CartPole::X, 2.0, 0.5)
+        .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]));
+    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+    let z = scattered(dmoc.variables(), 0.1);
+    check_derivatives(&mut dmoc, &z, 1e-6);
+
+    // Inputs in the Lagrangian, the momenta and the forces, with and without a final velocity.
+    let steered = Steered { m: 1.3, k: 2.0, c: 0.4, a: 0.0, b: 0.0, f: 0.0 };
+    let start = (VecQ::<Steered>::from([0.2, -0.1]), VecQ::<Steered>::from([0.5, 0.7]));
+    for final_velocity in [false, true] {
+        let mut problem = Problem::new(steered.clone(), 1.0, 5).start(start.0, start.1);
+        if final_velocity {
+            problem =
+                problem.final_state(VecQ::<Steered>::from([1.0, 0.5]), VecQ::<Steered>::from([0.1, 0.2]));
+        }
+        let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+        let z = scattered(dmoc.variables(), 0.4);
+        check_derivatives(&mut dmoc, &z, 1e-6);
+    }
+}
+
+#[test]
+fn the_cart_pole_swings_up_and_the_variational_integrator_replays_it() {
+    with_ipopt();
+    let intervals = 50;
+    let mut dmoc = Dmoc::new(swing_up(intervals)).expect("a well-formed problem");
+    let optimum = dmoc.solve(&IpoptOptions::default()).expect("IPOPT solves the swing-up");
+    assert!(optimum.violation < 1e-9, "discrete equations violated by {:e}", optimum.violation);
+    let end = optimum.positions.last().expect("nodes");
+    assert!((end[1] - std::f64::consts::PI).abs() < 1e-12 && end[0].abs() < 1e-12, "ends upright: {end:?}");
+    assert!(optimum.inputs.iter().all(|u| u[0].abs() <= 20.0 + 1e-7), "pushes within their bounds");
+    assert!(optimum.positions.iter().all(|q| q[0].abs() <= 1.5 + 1e-7), "the cart within its track");
+
+    // The variational integrator with the same step, the push held over each interval,
+    // reproduces the nodes: the optimum is one of its trajectories.
+    let h = 2.0 / intervals as f64;
+    let mut model = cart_pole();
+    let start = consistent_state(
+        &model,
+        0.0,
+        &VecQ::<CartPole>::zeros(),
+        &VecQ::<CartPole>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    let mut vi = Variational::new(&mut model, h, VariationalOptions::default()).expect("valid");
+    vi.start(0.0, &start, 2.0).expect("starts");
+    let mut worst = 0.0f64;
+    for k in 0..intervals {
+        vi.set_input(CartPole::F, optimum.inputs[k][0]).expect("input set");
+        vi.step().expect("steps");
+        let q = &vi.state().q;
+        worst = worst
+            .max((q[0] - optimum.positions[k + 1][0]).abs())
+            .max((q[1] - optimum.positions[k + 1][1]).abs());
+    }
+    assert!(worst < 1e-8, "the replay leaves the optimal nodes by {worst:e}");
+}
+
+#[test]
+fn malformed_problems_are_refused_by_name() {
+    // A model without inputs.
+    let error = Dmoc::new(Problem::new(unit_pendulum(), 1.0, 10)).err().expect("refused");
+    assert!(matches!(error, OptimalError::NoInputs { .. }), "{error}");
+    // Crossed bounds, named by their input.
+    let problem = swing_up(10).input_bounds(CartPole::F, 1.0, -1.0);
+    match Dmoc::new(problem).err().expect("refused") {
+        OptimalError::InfeasibleBounds { name, .. } => assert_eq!(name, "f"),
+        other => panic!("{other}"),
+    }
+    // A target outside the track.
+    let problem = swing_up(10).final_position(CartPole::X, 2.0);
+    match Dmoc::new(problem).err().expect("refused") {
+        OptimalError::InfeasibleBounds { name, value, .. } => assert_eq!((name.as_str(), value), ("x", 2.0)),
+        other => panic!("{other}"),
+    }
+    // No grid.
+    let error = Dmoc::new(Problem::new(cart_pole(), 0.0, 10)).err().expect("refused");
+    assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
+    // A weight that is not a number.
+    let error = Dmoc::new(swing_up(10).input_weight(CartPole::F, f64::NAN)).err().expect("refused");
+    assert!(matches!(error, OptimalError::NotFinite { .. }), "{error}");
+    // A swing-up the bounded push cannot reach: IPOPT's own status, by name.
+    with_ipopt();
+    let problem = swing_up(20).input_bounds(CartPole::F, -0.1, 0.1);
+    let error = Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect_err("fails");
+    match error {
+        OptimalError::Solver { status, .. } => {
+            assert!(["Infeasible_Problem_Detected", "Restoration_Failed"].contains(&status), "{status}")
+        }
+        other => panic!("{other}"),
+    }
+}
