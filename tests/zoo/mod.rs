@@ -1077,3 +1077,24 @@ pub struct GroundTop {
     pub c: f64,
     pub mu: f64,
 }
+
+/// A cart of mass `mc` pushed by `f`, with a pole of mass `mp` at distance `l` hinged on it;
+/// `theta` is measured from hanging straight down.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => vx, theta => w), input(f))]
+#[dirac(lagrangian = 0.5 * (mc + mp) * vx * vx + mp * l * vx * w * cos(theta) + 0.5 * mp * l * l * w * w
+    + mp * g * l * cos(theta))]
+#[dirac(force(x) = f)]
+pub struct CartPole {
+    pub mc: f64,
+    pub mp: f64,
+    pub l: f64,
+    pub g: f64,
+    pub f: f64,
+}
+
+/// The cart-pole of the optimal control tests and benchmarks: a 1 kg cart, a 0.3 kg pole
+/// 0.5 m from the hinge.
+pub fn cart_pole() -> CartPole {
+    CartPole { mc: 1.0, mp: 0.3, l: 0.5, g: 9.81, f: 0.0 }
+}
