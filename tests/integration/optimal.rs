@@ -199,8 +199,54 @@ fn the_cart_pole_swings_up_and_the_variational_integrator_replays_it() {
     assert!(worst < 1e-8, "the replay leaves the optimal nodes by {worst:e}");
 }
 
+/// A pushed mass on a spring in front of a wall: its contact would be passed through by a
+/// smooth transcription.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * x * x, force(x) = f)]
+#[dirac(unilateral(wall, restitution = 0.5) = 1.0 - x)]
+pub struct PushedToAWall {
+    pub m: f64,
+    pub k: f64,
+    pub f: f64,
+}
+
+/// A pushed mass sliding with a Coulomb friction law, whose modes switch its equations.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v, force(x) = f)]
+#[dirac(friction(slide, kinetic = mu * m * g) = v)]
+pub struct PushedWithFriction {
+    pub m: f64,
+    pub g: f64,
+    pub mu: f64,
+    pub f: f64,
+}
+
+/// A pushed mass in a potential defined only for `x ≥ 0`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v - k * x.sqrt(), force(x) = f)]
+pub struct RootWell {
+    pub m: f64,
+    pub k: f64,
+    pub f: f64,
+}
+
 #[test]
 fn malformed_problems_are_refused_by_name() {
+    with_ipopt();
+    // Contacts and laws, which a smooth transcription would get wrong.
+    let wall = PushedToAWall { m: 1.0, k: 1.0, f: 0.0 };
+    match Dmoc::new(Problem::new(wall, 1.0, 10)).err().expect("refused") {
+        OptimalError::Unsupported { why, .. } => assert!(why.contains("unilateral"), "{why}"),
+        other => panic!("{other}"),
+    }
+    let sliding = PushedWithFriction { m: 1.0, g: 9.81, mu: 0.3, f: 0.0 };
+    match Dmoc::new(Problem::new(sliding, 1.0, 10)).err().expect("refused") {
+        OptimalError::Unsupported { why, .. } => assert!(why.contains("laws"), "{why}"),
+        other => panic!("{other}"),
+    }
     // A model without inputs.
     let error = Dmoc::new(Problem::new(unit_pendulum(), 1.0, 10)).err().expect("refused");
     assert!(matches!(error, OptimalError::NoInputs { .. }), "{error}");
@@ -222,8 +268,18 @@ fn malformed_problems_are_refused_by_name() {
     // A weight that is not a number.
     let error = Dmoc::new(swing_up(10).input_weight(CartPole::F, f64::NAN)).err().expect("refused");
     assert!(matches!(error, OptimalError::NotFinite { .. }), "{error}");
+    // Equations that are not numbers where the guess starts, named before IPOPT runs.
+    let well = RootWell { m: 1.0, k: 1.0, f: 0.0 };
+    let problem = Problem::new(well, 1.0, 10)
+        .start(VecQ::<RootWell>::from([-1.0]), VecQ::<RootWell>::zeros())
+        .final_position(RootWell::X, 1.0);
+    match Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect_err("refused") {
+        OptimalError::NotFiniteAtGuess { detail, .. } => {
+            assert!(detail.contains("`x` at node 0"), "{detail}")
+        }
+        other => panic!("{other}"),
+    }
     // A swing-up the bounded push cannot reach: IPOPT's own status, by name.
-    with_ipopt();
     let problem = swing_up(20).input_bounds(CartPole::F, -0.1, 0.1);
     let error = Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect_err("fails");
     match error {
@@ -273,7 +329,10 @@ fn a_satellite_turned_by_its_arm_keeps_its_angular_momentum_to_round_off() {
     let optimum = Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect("solves");
     let scale = optimum.momenta.iter().flatten().fold(0.0f64, |m, p| m.max(p.abs()));
     let drift = optimum.momenta.iter().fold(0.0f64, |m, p| m.max(p[0].abs()));
-    eprintln!("satellite: p_theta within {drift:e} of zero, momenta up to {scale}, {} iterations", optimum.iterations);
+    eprintln!(
+        "satellite: p_theta within {drift:e} of zero, momenta up to {scale}, {} iterations",
+        optimum.iterations
+    );
     assert!(scale > 0.1, "the arm moves: its momentum reaches {scale}");
     assert!(drift < 1e-12 * scale.max(1.0), "p_theta leaves zero by {drift:e} (momenta up to {scale})");
 }
@@ -283,7 +342,9 @@ fn the_cart_poles_optimal_cost_converges_at_second_order() {
     with_ipopt();
     // The reference is the same problem on 800 intervals; DMOC with the trapezoidal discrete
     // Lagrangian is second order, so doubling N divides the cost's error by about 4.
-    let cost = |n| Dmoc::new(swing_up(n)).expect("well-formed").solve(&IpoptOptions::default()).expect("solves").cost;
+    let cost = |n| {
+        Dmoc::new(swing_up(n)).expect("well-formed").solve(&IpoptOptions::default()).expect("solves").cost
+    };
     let reference = cost(800);
     let errors: Vec<f64> = [25, 50, 100].into_iter().map(|n| (cost(n) - reference).abs()).collect();
     eprintln!("cart-pole cost errors at N = 25, 50, 100 against N = 800: {errors:?}");

@@ -182,6 +182,16 @@ where
         if M::NAMES.input_count() == 0 {
             return Err(OptimalError::NoInputs { model });
         }
+        if M::NAMES.unilateral_count() > 0 {
+            let why = "its unilateral constraints (contacts, walls, joint limits) are not transcribed: a smooth \
+                       transcription would pass through them; bound the positions instead";
+            return Err(OptimalError::Unsupported { model, why });
+        }
+        if !crate::hybrid::laws::laws(&self.model).is_empty() {
+            let why = "its laws (friction, diodes, switches) change their equations with their modes, which \
+                       a smooth transcription cannot follow";
+            return Err(OptimalError::Unsupported { model, why });
+        }
         if M::NC > 0 {
             let why = "its constraint rows are not transcribed yet: DMOC here takes models without holonomic, \
                        nonholonomic or interconnection rows";
