@@ -1,9 +1,10 @@
 """One round of the optimal control benchmark's CasADi side (benches/peers/optimal.sh): the
-same cart-pole swing-up as benches/optimal.rs, the same DMOC transcription (the variational
+same problems as benches/optimal.rs (`cartpole`, `chain8`), the same DMOC transcription (the variational
 integrator's trapezoidal discrete Lagrangian, forces at the midpoint, p_0 and p_N from the
 Legendre map), the same variables, bounds, starting point and IPOPT options, built with
 CasADi's SX expressions and nlpsol (exact Hessian by its own algorithmic differentiation).
-Prints `casadi,N,cost,iterations,solve seconds,evaluation seconds,construction seconds`: the
+Prints `casadi,problem,N,cost,iterations,solve seconds,evaluation seconds,construction
+seconds`: the
 solve's wall time around the solver's call, the evaluation's from CasADi's own statistics
 (objective, constraints and their derivatives)."""
 import sys
@@ -15,51 +16,78 @@ MC, MP, L, G = 1.0, 0.3, 0.5, 9.81
 HORIZON, X_MAX, F_MAX = 2.0, 1.5, 20.0
 
 
-def lagrangian(q, v):
+CHAIN_M, CHAIN_L, LINKS = 0.2, 0.25, 8
+
+
+def cart_pole(q, v):
     return (0.5 * (MC + MP) * v[0] ** 2 + MP * L * v[0] * v[1] * ca.cos(q[1])
             + 0.5 * MP * L * L * v[1] ** 2 + MP * G * L * ca.cos(q[1]))
 
 
-def build(n):
+def chain(q, v):
+    """tests/zoo Pendulum8: L = 1/2 sum_ij (8 - max(i, j)) m l^2 w_i w_j cos(th_i - th_j)
+    + g sum_i (8 - i) m l cos th_i, 0-based."""
+    kinetic = 0
+    for i in range(LINKS):
+        for j in range(LINKS):
+            kinetic += (LINKS - max(i, j)) * CHAIN_M * CHAIN_L ** 2 * v[i] * v[j] * ca.cos(q[i] - q[j])
+    potential = sum((LINKS - i) * CHAIN_M * G * CHAIN_L * ca.cos(q[i]) for i in range(LINKS))
+    return 0.5 * kinetic + potential
+
+
+def problem(name):
+    """The Lagrangian, the forces of the inputs, the sizes, the bounds and the targets."""
+    if name == "cartpole":
+        force = lambda u: ca.vertcat(u, 0)
+        return cart_pole, force, 2, 1, [(-X_MAX, X_MAX), (-ca.inf, ca.inf)], (-F_MAX, F_MAX), [0.0, ca.pi]
+    force = lambda u: ca.vertcat(*[u[i] - u[i + 1] for i in range(LINKS - 1)], u[LINKS - 1])
+    return chain, force, LINKS, LINKS, [(-ca.inf, ca.inf)] * LINKS, (-ca.inf, ca.inf), [0.5] * LINKS
+
+
+def build(name, n):
     h = HORIZON / n
-    q, v = ca.SX.sym("q", 2), ca.SX.sym("v", 2)
+    lagrangian, input_force, dof, nu, position_bounds, input_bounds, target = problem(name)
+    q, v = ca.SX.sym("q", dof), ca.SX.sym("v", dof)
     lag = lagrangian(q, v)
     lq = ca.Function("lq", [q, v], [ca.gradient(lag, q)])
     lv = ca.Function("lv", [q, v], [ca.gradient(lag, v)])
-    nodes = [ca.SX.sym(f"q{k}", 2) for k in range(n + 1)]
-    pushes = [ca.SX.sym(f"u{k}", 1) for k in range(n)]
+    nodes = [ca.SX.sym(f"q{k}", dof) for k in range(n + 1)]
+    pushes = [ca.SX.sym(f"u{k}", nu) for k in range(n)]
+    zero = ca.DM.zeros(dof)
     equations, cost = [], 0
     d2_before = None
     for k in range(n):
         a, b, u = nodes[k], nodes[k + 1], pushes[k]
         vel = (b - a) / h
         p = 0.5 * (lv(a, vel) + lv(b, vel))
-        force = ca.vertcat(u, 0)
+        force = input_force(u)
         d1 = 0.5 * h * lq(a, vel) - p + 0.5 * h * force
         d2 = 0.5 * h * lq(b, vel) + p + 0.5 * h * force
-        start = lv(ca.DM([0, 0]), ca.DM([0, 0])) if k == 0 else d2_before
+        start = lv(zero, zero) if k == 0 else d2_before
         equations.append(start + d1)
         d2_before = d2
-        cost += 0.5 * h * u ** 2
-    equations.append(d2_before - lv(nodes[n], ca.DM([0, 0])))
+        cost += 0.5 * h * ca.sumsqr(u)
+    equations.append(d2_before - lv(nodes[n], zero))
     x = ca.vertcat(*nodes, *pushes)
-    lower = [-X_MAX, -ca.inf] * (n + 1) + [-F_MAX] * n
-    upper = [X_MAX, ca.inf] * (n + 1) + [F_MAX] * n
-    lower[0:2] = upper[0:2] = [0.0, 0.0]
-    lower[2 * n:2 * n + 2] = upper[2 * n:2 * n + 2] = [0.0, ca.pi]
+    lower = [b[0] for b in position_bounds] * (n + 1) + [input_bounds[0]] * (nu * n)
+    upper = [b[1] for b in position_bounds] * (n + 1) + [input_bounds[1]] * (nu * n)
+    lower[0:dof] = upper[0:dof] = [0.0] * dof
+    lower[dof * n:dof * (n + 1)] = upper[dof * n:dof * (n + 1)] = target
     guess = []
     for k in range(n + 1):
-        guess += [0.0, ca.pi * k / n]
-    guess += [0.0] * n
+        guess += [t * k / n for t in target]
+    guess += [0.0] * (nu * n)
     options = {"ipopt": {"print_level": 0, "sb": "yes", "tol": 1e-8}, "print_time": False}
     solver = ca.nlpsol("dmoc", "ipopt", {"x": x, "f": cost, "g": ca.vertcat(*equations)}, options)
     return solver, guess, lower, upper
 
 
 def main():
-    for n in [int(a) for a in sys.argv[1:]] or [50, 100]:
+    names = [a for a in sys.argv[1:] if not a.isdigit()]
+    name = names[0] if names else "cartpole"
+    for n in [int(a) for a in sys.argv[1:] if a.isdigit()] or [50, 100]:
         started = time.perf_counter()
-        solver, guess, lower, upper = build(n)
+        solver, guess, lower, upper = build(name, n)
         construction = time.perf_counter() - started
         started = time.perf_counter()
         result = solver(x0=guess, lbx=lower, ubx=upper, lbg=0, ubg=0)
@@ -68,7 +96,7 @@ def main():
         if not stats["success"]:
             sys.exit(f"N = {n}: {stats['return_status']}")
         evaluation = sum(stats[f"t_wall_nlp_{part}"] for part in ["f", "g", "grad_f", "jac_g", "hess_l"])
-        print(f"casadi,{n},{float(result['f']):.12e},{stats['iter_count']},{solve:.6e},"
+        print(f"casadi,{name},{n},{float(result['f']):.12e},{stats['iter_count']},{solve:.6e},"
               f"{evaluation:.6e},{construction:.6e}")
 
 

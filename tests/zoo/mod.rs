@@ -338,6 +338,71 @@ pub struct Pendulum8 {
     pub g: f64,
 }
 
+/// The 8-link pendulum of [`Pendulum8`] with a torque at each joint: `u_1` between the ground
+/// and the first link, `u_i` between links `i - 1` and `i`, so that in absolute angles link
+/// `i` feels `u_i - u_(i+1)`. For the optimal control benchmarks.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(th1 => w1, th2 => w2, th3 => w3, th4 => w4, th5 => w5, th6 => w6, th7 => w7, th8 => w8))]
+#[dirac(input(u1, u2, u3, u4, u5, u6, u7, u8))]
+#[dirac(force(th1) = u1 - u2, force(th2) = u2 - u3, force(th3) = u3 - u4, force(th4) = u4 - u5, force(th5) = u5 - u6, force(th6) = u6 - u7, force(th7) = u7 - u8, force(th8) = u8)]
+#[dirac(lagrangian = 0.5 * 8.0 * m * l * l * w1 * w1
+        + 0.5 * 7.0 * m * l * l * w2 * w2
+        + 0.5 * 6.0 * m * l * l * w3 * w3
+        + 0.5 * 5.0 * m * l * l * w4 * w4
+        + 0.5 * 4.0 * m * l * l * w5 * w5
+        + 0.5 * 3.0 * m * l * l * w6 * w6
+        + 0.5 * 2.0 * m * l * l * w7 * w7
+        + 0.5 * 1.0 * m * l * l * w8 * w8
+        + 7.0 * m * l * l * w1 * w2 * (th1 - th2).cos()
+        + 6.0 * m * l * l * w1 * w3 * (th1 - th3).cos()
+        + 5.0 * m * l * l * w1 * w4 * (th1 - th4).cos()
+        + 4.0 * m * l * l * w1 * w5 * (th1 - th5).cos()
+        + 3.0 * m * l * l * w1 * w6 * (th1 - th6).cos()
+        + 2.0 * m * l * l * w1 * w7 * (th1 - th7).cos()
+        + 1.0 * m * l * l * w1 * w8 * (th1 - th8).cos()
+        + 6.0 * m * l * l * w2 * w3 * (th2 - th3).cos()
+        + 5.0 * m * l * l * w2 * w4 * (th2 - th4).cos()
+        + 4.0 * m * l * l * w2 * w5 * (th2 - th5).cos()
+        + 3.0 * m * l * l * w2 * w6 * (th2 - th6).cos()
+        + 2.0 * m * l * l * w2 * w7 * (th2 - th7).cos()
+        + 1.0 * m * l * l * w2 * w8 * (th2 - th8).cos()
+        + 5.0 * m * l * l * w3 * w4 * (th3 - th4).cos()
+        + 4.0 * m * l * l * w3 * w5 * (th3 - th5).cos()
+        + 3.0 * m * l * l * w3 * w6 * (th3 - th6).cos()
+        + 2.0 * m * l * l * w3 * w7 * (th3 - th7).cos()
+        + 1.0 * m * l * l * w3 * w8 * (th3 - th8).cos()
+        + 4.0 * m * l * l * w4 * w5 * (th4 - th5).cos()
+        + 3.0 * m * l * l * w4 * w6 * (th4 - th6).cos()
+        + 2.0 * m * l * l * w4 * w7 * (th4 - th7).cos()
+        + 1.0 * m * l * l * w4 * w8 * (th4 - th8).cos()
+        + 3.0 * m * l * l * w5 * w6 * (th5 - th6).cos()
+        + 2.0 * m * l * l * w5 * w7 * (th5 - th7).cos()
+        + 1.0 * m * l * l * w5 * w8 * (th5 - th8).cos()
+        + 2.0 * m * l * l * w6 * w7 * (th6 - th7).cos()
+        + 1.0 * m * l * l * w6 * w8 * (th6 - th8).cos()
+        + 1.0 * m * l * l * w7 * w8 * (th7 - th8).cos()
+        + 8.0 * m * g * l * th1.cos()
+        + 7.0 * m * g * l * th2.cos()
+        + 6.0 * m * g * l * th3.cos()
+        + 5.0 * m * g * l * th4.cos()
+        + 4.0 * m * g * l * th5.cos()
+        + 3.0 * m * g * l * th6.cos()
+        + 2.0 * m * g * l * th7.cos()
+        + 1.0 * m * g * l * th8.cos())]
+pub struct Chain8 {
+    pub m: f64,
+    pub l: f64,
+    pub g: f64,
+    pub u1: f64,
+    pub u2: f64,
+    pub u3: f64,
+    pub u4: f64,
+    pub u5: f64,
+    pub u6: f64,
+    pub u7: f64,
+    pub u8: f64,
+}
+
 /// A model that uses every supported function and spelling, with arguments kept in their
 /// domains for any state, so its generated derivatives can be checked everywhere.
 #[derive(LagrangeDirac, Clone, Debug)]
