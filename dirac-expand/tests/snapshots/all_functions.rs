@@ -683,6 +683,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for AllFunctions {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -341,6 +341,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for DrivenOscillator {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

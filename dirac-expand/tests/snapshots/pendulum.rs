@@ -372,6 +372,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for Pendulum {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -386,6 +386,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for PendulumAndWall {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
@@ -1302,6 +1303,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for PendulumAndWallWithContacts {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -361,6 +361,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for Primitive1 {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]

@@ -430,6 +430,7 @@ const _: () = {
         }
     }
     #[automatically_derived]
+    #[allow(clippy::approx_constant)]
     impl ::dirac::__private::InputsOutputs for RollingDisk {}
     #[automatically_derived]
     #[allow(clippy::approx_constant)]
