@@ -1524,3 +1524,31 @@ fn watching_an_ideal_diode_in_a_netlist_does_not_allocate() {
     assert!((first - blocked).abs() < 1e-5, "{first} and {blocked}");
     assert!(blocked > 0.25 && blocked < 1.0, "blocks at {blocked}");
 }
+
+#[test]
+fn a_warm_started_interior_point_solve_does_not_allocate() {
+    use dirac::optimal::interior::{InteriorOptions, InteriorPoint};
+    use dirac::optimal::{Dmoc, Problem};
+    // The swing-up (final state given, so every equation of the transcription is evaluated),
+    // solved once cold; then the plan's inputs are disturbed and the solve is warm started
+    // from there, as a receding horizon's next sample is: the solver's work space and the
+    // transcription's were sized when they were made.
+    let problem = Problem::new(zoo::cart_pole(), 2.0, 30)
+        .final_state(VecQ::<CartPole>::from([0.0, std::f64::consts::PI]), VecQ::<CartPole>::zeros())
+        .position_bounds(CartPole::X, -1.5, 1.5)
+        .input_bounds(CartPole::F, -20.0, 20.0);
+    let mut dmoc = Dmoc::new(problem).expect("well-formed");
+    let mut solver = InteriorPoint::new(&dmoc).expect("equations only");
+    let options = InteriorOptions::default();
+    assert!(solver.solve(&mut dmoc, &options).solved);
+    let (x, _) = solver.point_mut();
+    let inputs = 31 * 2;
+    for u in &mut x[inputs..] {
+        *u *= 0.9;
+    }
+    let before = allocations();
+    let result = solver.resolve(&mut dmoc, &options);
+    let during = allocations() - before;
+    assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
+    assert_eq!(during, 0, "a warm-started solve allocated {during} times");
+}

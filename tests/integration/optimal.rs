@@ -3,11 +3,12 @@
 //! and replayed by the variational integrator with the inputs it found, and the typed errors
 //! of malformed problems.
 
+use dirac::optimal::interior::InteriorOptions;
 use dirac::optimal::ipopt::IpoptOptions;
-use dirac::optimal::{Dmoc, Nlp, OptimalError, Problem};
+use dirac::optimal::{Dmoc, Mpc, Nlp, OptimalError, Problem};
 use dirac::prelude::*;
 
-use crate::zoo::{CartPole, cart_pole, unit_pendulum};
+use crate::zoo::{Acrobot, CartPole, acrobot, cart_pole, cart_pole_balance, unit_pendulum};
 
 /// Installs IPOPT's library from Debian's packages if it is missing (`.ci/ipopt.sh`), before
 /// anything in this process tries to load it: a newcomer's `cargo test` needs nothing more.
@@ -265,6 +266,11 @@ fn malformed_problems_are_refused_by_name() {
     // No grid.
     let error = Dmoc::new(Problem::new(cart_pole(), 0.0, 10)).err().expect("refused");
     assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
+    // A grid whose program could not be indexed, refused before anything is allocated.
+    let error = Dmoc::new(Problem::new(cart_pole(), 1.0, usize::MAX / 2)).err().expect("refused");
+    assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
+    let error = Dmoc::new(Problem::new(cart_pole(), 1.0, 200_000_000)).err().expect("refused");
+    assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
     // A weight that is not a number.
     let error = Dmoc::new(swing_up(10).input_weight(CartPole::F, f64::NAN)).err().expect("refused");
     assert!(matches!(error, OptimalError::NotFinite { .. }), "{error}");
@@ -352,4 +358,97 @@ fn the_cart_poles_optimal_cost_converges_at_second_order() {
         let order = (pair[0] / pair[1]).log2();
         assert!((1.8..2.3).contains(&order), "observed order {order} (errors {errors:?})");
     }
+}
+
+#[test]
+fn the_pure_rust_interior_point_finds_ipopts_optimum() {
+    with_ipopt();
+    // The reference is IPOPT's optimum of the same program (same transcription, same
+    // derivatives, its own MA27/MUMPS factorisation and restoration phase); the interior
+    // point must reach the same local optimum from the same guess.
+    for intervals in [25, 50, 100] {
+        let reference = Dmoc::new(swing_up(intervals))
+            .expect("well-formed")
+            .solve(&IpoptOptions::default())
+            .expect("IPOPT");
+        let ours = Dmoc::new(swing_up(intervals))
+            .expect("well-formed")
+            .solve_interior(&InteriorOptions::default())
+            .expect("the interior point solves the swing-up");
+        let positions: Vec<f64> = ours.positions.iter().flatten().copied().collect();
+        let expected: Vec<f64> = reference.positions.iter().flatten().copied().collect();
+        eprintln!(
+            "N = {intervals}: cost {} against IPOPT's {}, {} iterations against {}",
+            ours.cost, reference.cost, ours.iterations, reference.iterations
+        );
+        assert!(
+            (ours.cost - reference.cost).abs() <= 1e-6 * reference.cost.abs(),
+            "N = {intervals}: cost {} against IPOPT's {}",
+            ours.cost,
+            reference.cost
+        );
+        assert!(relative_gap(&positions, &expected) < 1e-5, "N = {intervals}: the optimal nodes differ");
+        assert!(ours.violation < 1e-9, "N = {intervals}: equations violated by {:e}", ours.violation);
+        assert!(ours.inputs.iter().all(|u| u[0].abs() <= 20.0), "pushes within their bounds");
+    }
+    // The acrobot, swung up by its elbow alone: no bounds, a nonconvex program whose steps
+    // need the inertia correction.
+    let problem = || {
+        Problem::new(acrobot(), 3.0, 50).final_state(
+            VecQ::<Acrobot>::from([std::f64::consts::PI, std::f64::consts::PI]),
+            VecQ::<Acrobot>::zeros(),
+        )
+    };
+    let reference =
+        Dmoc::new(problem()).expect("well-formed").solve(&IpoptOptions::default()).expect("IPOPT");
+    let ours = Dmoc::new(problem())
+        .expect("well-formed")
+        .solve_interior(&InteriorOptions::default())
+        .expect("solves");
+    eprintln!(
+        "acrobot: cost {} against IPOPT's {}, {} iterations against {}",
+        ours.cost, reference.cost, ours.iterations, reference.iterations
+    );
+    assert!((ours.cost - reference.cost).abs() <= 1e-6 * reference.cost.abs(), "acrobot: cost differs");
+    assert!(ours.violation < 1e-9, "acrobot: equations violated by {:e}", ours.violation);
+}
+
+#[test]
+fn a_100_hz_mpc_stabilises_the_cart_pole_simulated_by_radau() {
+    // The plant is the cart-pole integrated by Radau, tilted 0.5 rad from upright at rest; the
+    // controller solves a 1 s horizon on N = 20 intervals at every 10 ms sample, warm started,
+    // with the push within ±20 N and the cart within ±1.5 m.
+    let upright = std::f64::consts::PI;
+    let problem = cart_pole_balance(20);
+    let mut mpc = Mpc::new(problem, InteriorOptions::default()).expect("a well-formed problem");
+    let mut plant = cart_pole();
+    let q = VecQ::<CartPole>::from([0.0, upright - 0.5]);
+    let start = consistent_state(&plant, 0.0, &q, &VecQ::<CartPole>::zeros(), Consistency::default())
+        .expect("consistent");
+    let mut radau = Radau::new(&mut plant, RadauOptions::default()).expect("valid");
+    let solution = radau
+        .run(0.0, &start, 4.0)
+        .sampling(Sampling::Every(0.01))
+        .every(0.01, |t, state, plant: &mut CartPole| mpc.apply(t, state, plant))
+        .solve()
+        .expect("the run completes");
+    let samples = mpc.samples();
+    let failed: Vec<_> = samples.iter().filter(|s| s.status != "Solve_Succeeded").collect();
+    let iterations: Vec<usize> = samples.iter().map(|s| s.iterations).collect();
+    eprintln!(
+        "MPC: {} samples, median solve {:?} (debug build), iterations up to {}, {} failed",
+        samples.len(),
+        mpc.median_solve(),
+        iterations.iter().max().expect("samples"),
+        failed.len()
+    );
+    assert_eq!(samples.len(), 400, "one solve per 10 ms sample over 4 s");
+    assert!(failed.is_empty(), "every sample solves: {failed:?}");
+    assert!(samples.iter().all(|s| s.inputs[0].abs() <= 20.0), "pushes within their bounds");
+    let (theta, x) = (solution.q(CartPole::THETA), solution.q(CartPole::X));
+    let last = theta.len() - 1;
+    // Upright and centred after 4 s, the cart never off its track.
+    assert!((theta[last] - upright).abs() < 1e-3, "the pole ends at {} rad", theta[last]);
+    assert!(x[last].abs() < 1e-2, "the cart ends at {} m", x[last]);
+    assert!(x.iter().all(|x| x.abs() <= 1.5), "the cart stays on its track");
 }

@@ -1163,3 +1163,40 @@ pub struct CartPole {
 pub fn cart_pole() -> CartPole {
     CartPole { mc: 1.0, mp: 0.3, l: 0.5, g: 9.81, f: 0.0 }
 }
+
+/// The receding-horizon problem of the MPC test and benchmark: keep the cart-pole upright and
+/// centred over a 1 s horizon on `intervals` intervals (midpoint and terminal weights on the
+/// positions, light ones on the velocities and the push), the push within ±20 N and the cart
+/// within ±1.5 m.
+pub fn cart_pole_balance(intervals: usize) -> dirac::optimal::Problem<CartPole> {
+    let upright = std::f64::consts::PI;
+    dirac::optimal::Problem::new(cart_pole(), 1.0, intervals)
+        .position_weight(CartPole::X, 1.0, 0.0)
+        .position_weight(CartPole::THETA, 20.0, upright)
+        .velocity_weight(CartPole::X, 0.1, 0.0)
+        .velocity_weight(CartPole::THETA, 0.1, 0.0)
+        .terminal_weight(CartPole::X, 10.0, 0.0)
+        .terminal_weight(CartPole::THETA, 100.0, upright)
+        .input_weight(CartPole::F, 0.01)
+        .position_bounds(CartPole::X, -1.5, 1.5)
+        .input_bounds(CartPole::F, -20.0, 20.0)
+}
+
+/// The acrobot: two equal point-mass links on a fixed pivot, with a torque `tau` only at the
+/// elbow; `th1` and `th2` are the links' absolute angles from hanging straight down.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(th1 => w1, th2 => w2), input(tau))]
+#[dirac(lagrangian = m * l * l * w1 * w1 + 0.5 * m * l * l * w2 * w2 + m * l * l * w1 * w2 * cos(th1 - th2)
+    + 2.0 * m * g * l * cos(th1) + m * g * l * cos(th2))]
+#[dirac(force(th1) = -tau, force(th2) = tau)]
+pub struct Acrobot {
+    pub m: f64,
+    pub l: f64,
+    pub g: f64,
+    pub tau: f64,
+}
+
+/// The acrobot of the optimal control benchmark: 1 kg links 1 m long.
+pub fn acrobot() -> Acrobot {
+    Acrobot { m: 1.0, l: 1.0, g: 9.81, tau: 0.0 }
+}

@@ -459,8 +459,7 @@ where
         }
         if let Some(v_end) = self.problem.final_velocity.clone() {
             let last = self.intervals;
-            let q_end = z[last * n..(last + 1) * n].to_vec();
-            self.given_momenta(self.time(last), &q_end, v_end.as_slice());
+            self.given_momenta(self.time(last), &z[last * n..(last + 1) * n], v_end.as_slice());
             for i in 0..n {
                 out[last * n + i] -= self.work.out[i];
             }
@@ -499,8 +498,7 @@ where
         if let Some(v_end) = self.problem.final_velocity.clone() {
             let last = self.intervals;
             self.set_inputs(z, last - 1);
-            let q_end = z[last * n..(last + 1) * n].to_vec();
-            self.given_momenta(self.time(last), &q_end, v_end.as_slice());
+            self.given_momenta(self.time(last), &z[last * n..(last + 1) * n], v_end.as_slice());
             self.work.jacobian.fill(0.0);
             self.work.momentum_jacobian(&self.problem.model, self.time(last));
             self.work.pull_lv(GIVEN_END, 0, -1.0, h);

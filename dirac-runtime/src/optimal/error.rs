@@ -21,9 +21,11 @@ pub enum OptimalError {
         /// What is missing.
         why: &'static str,
     },
-    /// The horizon or the number of intervals cannot make a grid.
+    /// The horizon or the number of intervals cannot make a grid, or the grid makes a program
+    /// too large to index (more than `i32::MAX` derivative entries, the solvers' index type).
     #[error(
-        "the horizon must be finite and positive with at least one interval, not {horizon} s over {intervals} intervals"
+        "the horizon must be finite and positive with at least one interval and a program that fits a 32-bit \
+         index, not {horizon} s over {intervals} intervals"
     )]
     InvalidGrid {
         /// The horizon asked for.

@@ -2,23 +2,29 @@
 //! start, targets, bounds, quadratic cost) transcribed by [`Dmoc`](crate::optimal::Dmoc) into a
 //! nonlinear program ([`Nlp`](crate::optimal::Nlp)) whose
 //! constraint Jacobian and Lagrangian Hessian come from the model's generated blocks, and
-//! solved by IPOPT (feature `ipopt`).
+//! solved by dirac's own [`InteriorPoint`](crate::optimal::interior::InteriorPoint) (banded,
+//! for small models and receding horizons: [`Mpc`](crate::optimal::Mpc)) or by IPOPT (feature
+//! `ipopt`, for larger ones).
 //!
 //! The transcription is the variational integrator's own discrete Lagrangian and forces, so
 //! an optimal trajectory is one [`Variational`](crate::Variational) reproduces with the same
 //! step and the inputs held over each interval, and the second derivatives the solver needs
 //! are generated when the model compiles ([`InputsOutputs::weighted_hessian`](crate::InputsOutputs::weighted_hessian)).
 
+mod band;
 mod dmoc;
 mod error;
+pub mod interior;
 mod interval;
 #[cfg(feature = "ipopt")]
 pub mod ipopt;
+mod mpc;
 mod nlp;
 mod problem;
 
 pub use self::dmoc::Dmoc;
 pub use self::error::OptimalError;
+pub use self::mpc::{Mpc, MpcSample};
 pub use self::nlp::Nlp;
 pub use self::problem::Problem;
 
@@ -83,6 +89,30 @@ where
             wall,
             evaluation: self.evaluation,
         }
+    }
+
+    /// Solves the problem with the pure-Rust [`InteriorPoint`](interior::InteriorPoint): the
+    /// optimum, or a typed error naming the solver's status.
+    pub fn solve_interior(&mut self, options: &interior::InteriorOptions) -> Result<Optimum, OptimalError> {
+        let started = std::time::Instant::now();
+        let guess = self.guess();
+        self.check_guess(&guess)?;
+        let mut solver = interior::InteriorPoint::new(self)
+            .map_err(|why| OptimalError::Unsupported { model: core::any::type_name::<M>(), why })?;
+        self.evaluation = std::time::Duration::ZERO;
+        let result = solver.solve(self, options);
+        if !result.solved {
+            return Err(OptimalError::Solver {
+                status: result.status,
+                iterations: result.iterations,
+                cost: result.objective,
+                violation: result.violation,
+            });
+        }
+        // The wall time counts the solver's set-up (its KKT order and band), as IPOPT's
+        // counts its symbolic analysis.
+        let z = solver.point().to_vec();
+        Ok(self.optimum(&z, result.iterations, result.status, started.elapsed()))
     }
 
     /// Solves the problem with IPOPT: the optimum, or a typed error naming IPOPT's status.

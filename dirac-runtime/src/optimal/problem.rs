@@ -37,6 +37,29 @@ where
     pub(crate) guess: Option<Guess>,
 }
 
+impl<M> Clone for Problem<M>
+where
+    M: DenseModel + InputsOutputs + Clone,
+    DefaultAllocator: Storage<M>,
+{
+    fn clone(&self) -> Self {
+        Problem {
+            model: self.model.clone(),
+            t0: self.t0,
+            horizon: self.horizon,
+            intervals: self.intervals,
+            q0: self.q0.clone(),
+            v0: self.v0.clone(),
+            final_position: self.final_position.clone(),
+            final_velocity: self.final_velocity.clone(),
+            position_bounds: self.position_bounds.clone(),
+            input_bounds: self.input_bounds.clone(),
+            cost: self.cost.clone(),
+            guess: self.guess.clone(),
+        }
+    }
+}
+
 /// The weights and references of the quadratic cost (see [`Problem`]).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Cost {
@@ -202,7 +225,14 @@ where
                        (q, v, u) has more than 2048 entries have none)";
             return Err(OptimalError::Unsupported { model, why });
         }
-        if !(self.horizon.is_finite() && self.horizon > 0.0) || self.intervals == 0 {
+        // The Jacobian's entries, `(N + 1) n (3n + 2 n_u)` at most, are indexed by the solvers'
+        // 32-bit integers; a grid beyond that is refused before anything is allocated.
+        let (n, nu) = (M::NQ, M::NAMES.input_count());
+        let entries = (self.intervals.checked_add(1))
+            .and_then(|nodes| nodes.checked_mul(n))
+            .and_then(|rows| rows.checked_mul(3 * n + 2 * nu));
+        let indexable = entries.is_some_and(|e| e <= i32::MAX as usize);
+        if !(self.horizon.is_finite() && self.horizon > 0.0) || self.intervals == 0 || !indexable {
             return Err(OptimalError::InvalidGrid { horizon: self.horizon, intervals: self.intervals });
         }
         let coordinates = self.model.coordinate_names();
