@@ -1,5 +1,5 @@
 """One round of the optimal control benchmark's CasADi side (benches/peers/optimal.sh): the
-same problems as benches/optimal.rs (`cartpole`, `chain8`), the same DMOC transcription (the variational
+same problems as benches/optimal.rs (`cartpole`, `chain8`, `acrobot`), the same DMOC transcription (the variational
 integrator's trapezoidal discrete Lagrangian, forces at the midpoint, p_0 and p_N from the
 Legendre map), the same variables, bounds, starting point and IPOPT options, built with
 CasADi's SX expressions and nlpsol (exact Hessian by its own algorithmic differentiation).
@@ -17,6 +17,7 @@ HORIZON, X_MAX, F_MAX = 2.0, 1.5, 20.0
 
 
 CHAIN_M, CHAIN_L, LINKS = 0.2, 0.25, 8
+ACRO_M, ACRO_L, ACRO_HORIZON = 1.0, 1.0, 3.0
 
 
 def cart_pole(q, v):
@@ -35,17 +36,28 @@ def chain(q, v):
     return 0.5 * kinetic + potential
 
 
+def acrobot(q, v):
+    """tests/zoo Acrobot: two equal point-mass links, absolute angles from hanging."""
+    m, l = ACRO_M, ACRO_L
+    return (0.5 * 2 * m * l * l * v[0] ** 2 + 0.5 * m * l * l * v[1] ** 2
+            + m * l * l * v[0] * v[1] * ca.cos(q[0] - q[1])
+            + 2 * m * G * l * ca.cos(q[0]) + m * G * l * ca.cos(q[1]))
+
+
 def problem(name):
     """The Lagrangian, the forces of the inputs, the sizes, the bounds and the targets."""
     if name == "cartpole":
         force = lambda u: ca.vertcat(u, 0)
         return cart_pole, force, 2, 1, [(-X_MAX, X_MAX), (-ca.inf, ca.inf)], (-F_MAX, F_MAX), [0.0, ca.pi]
+    if name == "acrobot":
+        force = lambda u: ca.vertcat(-u, u)
+        return acrobot, force, 2, 1, [(-ca.inf, ca.inf)] * 2, (-ca.inf, ca.inf), [ca.pi, ca.pi]
     force = lambda u: ca.vertcat(*[u[i] - u[i + 1] for i in range(LINKS - 1)], u[LINKS - 1])
     return chain, force, LINKS, LINKS, [(-ca.inf, ca.inf)] * LINKS, (-ca.inf, ca.inf), [0.5] * LINKS
 
 
 def build(name, n):
-    h = HORIZON / n
+    h = (ACRO_HORIZON if name == "acrobot" else HORIZON) / n
     lagrangian, input_force, dof, nu, position_bounds, input_bounds, target = problem(name)
     q, v = ca.SX.sym("q", dof), ca.SX.sym("v", dof)
     lag = lagrangian(q, v)

@@ -4,7 +4,9 @@
 # the integral of f^2/2) transcribed by DMOC on N intervals, dirac's from the model's generated
 # blocks (benches/optimal.rs), CasADi's from SX expressions of the same equations
 # (benches/peers/optimal.py). dirac loads the IPOPT that CasADi's wheel carries (DIRAC_IPOPT),
-# so both run IPOPT 3.14 with MUMPS and the same options. Rounds alternate dirac and CasADi;
+# so both run IPOPT 3.14 with MUMPS and the same options. dirac's rows come twice: solved by
+# that IPOPT (`dirac`) and by dirac's own interior point on its banded KKT (`interior`).
+# Rounds alternate dirac and CasADi;
 # every row is printed, then the medians and the median of the rounds' ratios with their
 # range. Not part of CI.
 #
@@ -12,6 +14,7 @@
 # link at 0.5 rad (benches/optimal.rs says which), shows how the two scale with the model.
 #
 #   bash benches/peers/optimal.sh [rounds] [N ...]      (PROBLEM=chain8 for the chain)
+#   PROBLEM=mpc bash benches/peers/optimal.sh 5 20      (the 100 Hz MPC on the cart-pole)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 rounds=${1:-7}
@@ -25,6 +28,15 @@ mkdir -p "$out"
 "$venv/bin/pip" install --quiet casadi
 casadi=$("$venv/bin/python" -c 'import casadi, os; print(os.path.dirname(casadi.__file__))')
 cargo bench -p dirac-benches --bench optimal --no-run 2> "$out/build.log"
+if [ "$problem" = mpc ]; then
+    # The receding horizon: no CasADi side; each round runs the closed loop on dirac's interior
+    # point and then IPOPT on the same samples in the same process (benches/optimal.rs, `mpc`).
+    for round in $(seq "$rounds"); do
+        DIRAC_IPOPT="$casadi/libipopt.so.3" cargo bench -q -p dirac-benches --bench optimal -- mpc $sizes 2>> "$out/build.log" \
+            | sed "s/^/$round,/"
+    done
+    exit 0
+fi
 rows=$out/rows-$problem.csv
 : > "$rows"
 for round in $(seq "$rounds"); do
@@ -40,15 +52,20 @@ for r, tool, name, n, cost, it, solve, ev, setup in rows:
     print(f"{r:>5}  {tool:6} {n:>4}  {float(cost):.12e}  {it:>4}  {1e3*float(solve):8.2f}  {1e3*float(ev):7.2f}"
           f"  {100*float(ev)/float(solve):5.1f}  {1e3*float(setup):8.2f}")
 print()
-print("N    cost dirac          cost CasADi         rel. diff  iter d/C  solve ms d/C (medians)  ratio (range)       eval % d/C")
+print("Each dirac solver against CasADi + IPOPT (medians over the rounds; ratio = median of the rounds' ratios, range)")
+print("N    solver    cost                 rel. diff  iter s/C  solve ms s/C           ratio (range)       eval % s/C")
 for n in sorted({r[3] for r in rows}, key=int):
     pick = lambda tool, i: [float(r[i]) for r in rows if r[1] == tool and r[3] == n]
-    cd, cc = pick("dirac", 4)[0], pick("casadi", 4)[0]
-    sd, sc = pick("dirac", 6), pick("casadi", 6)
-    ratios = sorted(d / c for d, c in zip(sd, sc))
-    ed = statistics.median([e / s for e, s in zip(pick("dirac", 7), sd)])
+    cc, sc = pick("casadi", 4)[0], pick("casadi", 6)
     ec = statistics.median([e / s for e, s in zip(pick("casadi", 7), sc)])
-    print(f"{n:4} {cd:.12e}  {cc:.12e}  {abs(cd - cc) / abs(cc):.1e}  {int(pick('dirac', 5)[0])}/{int(pick('casadi', 5)[0])}"
-          f"     {1e3*statistics.median(sd):7.2f} / {1e3*statistics.median(sc):7.2f}    "
-          f"{statistics.median(ratios):5.2f} ({ratios[0]:.2f}-{ratios[-1]:.2f})   {100*ed:4.1f} / {100*ec:4.1f}")
+    for tool in ("dirac", "interior"):
+        if not pick(tool, 4):
+            continue
+        cd, sd = pick(tool, 4)[0], pick(tool, 6)
+        ratios = sorted(d / c for d, c in zip(sd, sc))
+        ed = statistics.median([e / s for e, s in zip(pick(tool, 7), sd)])
+        label = "IPOPT" if tool == "dirac" else "interior"
+        print(f"{n:4} {label:9} {cd:.12e}  {abs(cd - cc) / abs(cc):.1e}  {int(pick(tool, 5)[0]):>3}/{int(pick('casadi', 5)[0]):<3}"
+              f"  {1e3*statistics.median(sd):7.2f} / {1e3*statistics.median(sc):7.2f}    "
+              f"{statistics.median(ratios):5.2f} ({ratios[0]:.2f}-{ratios[-1]:.2f})   {100*ed:4.1f} / {100*ec:4.1f}")
 PY
