@@ -8,6 +8,7 @@ use dirac::optimal::ipopt::IpoptOptions;
 use dirac::optimal::{Dmoc, Mpc, Nlp, OptimalError, Problem};
 use dirac::prelude::*;
 
+use crate::zoo::robots::PandaTorques;
 use crate::zoo::{Acrobot, CartPole, acrobot, cart_pole, cart_pole_balance, unit_pendulum};
 
 /// Installs IPOPT's library from Debian's packages if it is missing (`.ci/ipopt.sh`), before
@@ -160,6 +161,33 @@ fn the_transcriptions_derivatives_match_central_differences() {
         let z = scattered(dmoc.variables(), 0.4);
         check_derivatives(&mut dmoc, &z, 1e-6);
     }
+
+    // A robot from its URDF file, whose `L_qq` is assembled from its Jacobian blocks: the
+    // transcription reuses its buffers from one point to the next.
+    let problem = Problem::new(PandaTorques::default(), 1.0, 3).final_state(
+        VecQ::<PandaTorques>::from([1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0]),
+        VecQ::<PandaTorques>::zeros(),
+    );
+    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+    let z = scattered(dmoc.variables(), 0.2);
+    check_derivatives(&mut dmoc, &z, 1e-6);
+}
+
+#[test]
+fn a_robots_l_qq_does_not_read_back_the_buffer_it_is_given() {
+    use dirac::{LagrangeDirac, MatQQ};
+    // `L_qq` of a URDF robot is `∂ṗ/∂q − F_q` from its Jacobian blocks; into a buffer that
+    // holds another point's `L_qq`, it must come out as into a fresh one.
+    let panda = PandaTorques::default();
+    let q = VecQ::<PandaTorques>::from([0.3, -0.2, 0.4, -1.5, 0.2, 1.6, 0.5]);
+    let v = VecQ::<PandaTorques>::from([0.5, -0.4, 0.3, 0.2, -0.6, 0.1, 0.7]);
+    let mut fresh = MatQQ::<PandaTorques>::zeros();
+    panda.l_qq(0.0, &q, &v, &mut fresh);
+    let mut reused = MatQQ::<PandaTorques>::zeros();
+    panda.l_qq(0.0, &(q * 0.5), &v, &mut reused);
+    panda.l_qq(0.0, &q, &v, &mut reused);
+    assert!(fresh.amax() > 1.0, "a nonzero L_qq");
+    assert_eq!(fresh, reused, "L_qq depends on what the buffer held");
 }
 
 #[test]

@@ -17,6 +17,23 @@ pub const SWING_START: [f64; 9] = [0.3, 0.5, -0.4, -1.2, 0.2, 1.4, 0.6, 0.02, 0.
 #[dirac(urdf = "../tests/robots/panda/panda_arm.urdf")]
 pub struct PandaArm;
 
+/// The Panda's arm of [`PandaArm`] with a torque at each joint (`t1` … `t7`), for optimal
+/// control: without its joints' limits, which would be unilateral constraints.
+#[derive(LagrangeDirac, Clone, Debug, Default)]
+#[dirac(urdf = "../tests/robots/panda/panda_arm.urdf")]
+#[dirac(input(t1), input(t2), input(t3), input(t4), input(t5), input(t6), input(t7))]
+#[dirac(force(panda_joint1) = t1, force(panda_joint2) = t2, force(panda_joint3) = t3, force(panda_joint4) = t4)]
+#[dirac(force(panda_joint5) = t5, force(panda_joint6) = t6, force(panda_joint7) = t7)]
+pub struct PandaTorques {
+    pub t1: f64,
+    pub t2: f64,
+    pub t3: f64,
+    pub t4: f64,
+    pub t5: f64,
+    pub t6: f64,
+    pub t7: f64,
+}
+
 /// The Panda with its joints' limits as hard stops.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(urdf = "../tests/robots/panda/panda.urdf", joint_limits)]

@@ -75,6 +75,9 @@ where
     let lambda = model.sizes().zeros_c::<M>();
     let mut blocks = JacobianBlocks::<M, M::Algebra>::with_shape(&model.shape());
     model.jacobian_blocks(t, q, v, &lambda, &mut blocks);
+    // `force_dq` writes only its own pattern: what `out` held before must not be read back as
+    // part of it (a caller reusing `out` would otherwise get `∂ṗ/∂q` less its last `L_qq`).
+    M::Algebra::qq_values_mut(out).iter_mut().for_each(|x| *x = 0.0);
     model.force_dq(t, q, v, out);
     // Every `n × n` block of a model has the pattern of its shape.
     let dpdot_dq = M::Algebra::qq_values(&blocks.dpdot_dq);
