@@ -7,7 +7,9 @@
 //! |x| <= 1.5 m, |f| <= 20 N); `chain8`, the 8-link chain with a torque at each joint raised
 //! from hanging at rest to every link at 0.5 rad at rest in 2 s. Both cost the integral of the
 //! squared inputs over 2. `acrobot`: two 1 kg, 1 m links with a torque only at the elbow,
-//! swung up from hanging at rest to upright at rest in 3 s, inputs unbounded.
+//! swung up from hanging at rest to upright at rest in 3 s, inputs unbounded. `panda`: the
+//! Panda's arm from its URDF file with a torque at each joint, from one pose to another at rest
+//! in 2 s, torques unbounded.
 //!
 //!
 //! `mpc` is the receding horizon instead: the cart-pole, simulated by Radau from 0.5 rad off
@@ -27,6 +29,7 @@ use dirac::optimal::ipopt::IpoptOptions;
 use dirac::optimal::{Dmoc, Mpc, OptimalError, Problem};
 use dirac::prelude::*;
 use dirac::{DenseModel, InputsOutputs, State, Storage, VecQ};
+use dirac_benches::zoo::robots::PandaTorques;
 use dirac_benches::zoo::{Acrobot, CartPole, Chain8, acrobot, cart_pole, cart_pole_balance};
 
 fn main() {
@@ -67,9 +70,19 @@ fn main() {
                     .final_state(VecQ::<Acrobot>::from([PI, PI]), VecQ::<Acrobot>::zeros());
                 run(name, n, problem, started);
             }
+            "panda" => {
+                // From a home pose to another, at rest at both ends, in 2 s (optimal.py's
+                // PANDA_START and PANDA_END).
+                let start = [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.8];
+                let end = [1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0];
+                let problem = Problem::new(PandaTorques::default(), 2.0, n)
+                    .start(VecQ::<PandaTorques>::from(start), VecQ::<PandaTorques>::zeros())
+                    .final_state(VecQ::<PandaTorques>::from(end), VecQ::<PandaTorques>::zeros());
+                run(name, n, problem, started);
+            }
             "mpc" => mpc(n),
             other => {
-                eprintln!("no problem `{other}`: cartpole, chain8, acrobot or mpc");
+                eprintln!("no problem `{other}`: cartpole, chain8, acrobot, panda or mpc");
                 std::process::exit(2);
             }
         }

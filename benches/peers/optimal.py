@@ -1,5 +1,5 @@
 """One round of the optimal control benchmark's CasADi side (benches/peers/optimal.sh): the
-same problems as benches/optimal.rs (`cartpole`, `chain8`, `acrobot`), the same DMOC transcription (the variational
+same problems as benches/optimal.rs (`cartpole`, `chain8`, `acrobot`, `panda`), the same DMOC transcription (the variational
 integrator's trapezoidal discrete Lagrangian, forces at the midpoint, p_0 and p_N from the
 Legendre map), the same variables, bounds, starting point and IPOPT options, built with
 CasADi's SX expressions and nlpsol (exact Hessian by its own algorithmic differentiation).
@@ -44,11 +44,76 @@ def acrobot(q, v):
             + 2 * m * G * l * ca.cos(q[0]) + m * G * l * ca.cos(q[1]))
 
 
+PANDA_START = [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.8]
+PANDA_END = [1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0]
+
+
+def panda_lagrangian():
+    """The Panda arm of tests/robots/panda/panda_arm.urdf (tests/zoo PandaTorques): its
+    kinematic tree, masses, centres and inertias as Pinocchio reads them from the file (numbers
+    only), its Lagrangian T - V written here in SX: each joint frame is its parent's times the
+    joint's placement times a rotation about z by its angle; a body's centre velocity is the
+    Jacobian of its position times v, its angular velocity the sum of the world axes times the
+    joint rates. Checked against Pinocchio's energies at a random state before use."""
+    import numpy as np
+    import pinocchio as pin
+
+    model = pin.buildModelFromUrdf("tests/robots/panda/panda_arm.urdf")
+
+    def lagrangian(q, v):
+        rotations, positions, omegas = [ca.SX.eye(3)], [ca.SX.zeros(3)], [ca.SX.zeros(3)]
+        kinetic, potential = 0, 0
+        for i in range(1, model.njoints):
+            parent = model.parents[i]
+            placement = model.jointPlacements[i]
+            r_parent, p_parent = rotations[parent], positions[parent]
+            c, s = ca.cos(q[i - 1]), ca.sin(q[i - 1])
+            rz = ca.vertcat(ca.horzcat(c, -s, 0), ca.horzcat(s, c, 0), ca.horzcat(0, 0, 1))
+            rotation = r_parent @ ca.DM(placement.rotation) @ rz
+            position = p_parent + r_parent @ ca.DM(placement.translation)
+            omega = omegas[parent] + rotation[:, 2] * v[i - 1]
+            rotations.append(rotation)
+            positions.append(position)
+            omegas.append(omega)
+            inertia = model.inertias[i]
+            centre = position + rotation @ ca.DM(inertia.lever)
+            velocity = ca.jacobian(centre, q) @ v
+            body = rotation.T @ omega
+            kinetic += 0.5 * inertia.mass * ca.dot(velocity, velocity)
+            kinetic += 0.5 * ca.dot(body, ca.DM(inertia.inertia) @ body)
+            potential += inertia.mass * G * centre[2]
+        return kinetic - potential
+
+    # The check: T and V against Pinocchio's at a random state (an independent implementation).
+    qs, vs = ca.SX.sym("q", 7), ca.SX.sym("v", 7)
+    energy = ca.Function("energy", [qs, vs], [lagrangian(qs, vs)])
+    rng = np.random.default_rng(3)
+    q, v = rng.uniform(-1, 1, 7), rng.uniform(-1, 1, 7)
+    data = model.createData()
+    expected = pin.computeKineticEnergy(model, data, q, v) - pin.computePotentialEnergy(model, data, q)
+    got = float(energy(q, v))
+    if abs(got - expected) > 1e-10 * max(1.0, abs(expected)):
+        sys.exit(f"the Panda's Lagrangian is {got}, Pinocchio's {expected}")
+    return lagrangian
+
+
 def problem(name):
     """The Lagrangian, the forces of the inputs, the sizes, the bounds and the targets."""
     if name == "cartpole":
         force = lambda u: ca.vertcat(u, 0)
         return cart_pole, force, 2, 1, [(-X_MAX, X_MAX), (-ca.inf, ca.inf)], (-F_MAX, F_MAX), [0.0, ca.pi]
+    if name == "panda":
+        force = lambda u: u
+        return panda_lagrangian(), force, 7, 7, [(-ca.inf, ca.inf)] * 7, (-ca.inf, ca.inf), PANDA_END
+
+
+def damping(name, dof):
+    """The joints' viscous damping (the URDF's `<dynamics damping>`, as Pinocchio reads it; dirac
+    makes it a Rayleigh dissipation), zero for the hand-written models."""
+    if name != "panda":
+        return [0.0] * dof
+    import pinocchio as pin
+    return list(pin.buildModelFromUrdf("tests/robots/panda/panda_arm.urdf").damping)
     if name == "acrobot":
         force = lambda u: ca.vertcat(-u, u)
         return acrobot, force, 2, 1, [(-ca.inf, ca.inf)] * 2, (-ca.inf, ca.inf), [ca.pi, ca.pi]
@@ -59,6 +124,8 @@ def problem(name):
 def build(name, n):
     h = (ACRO_HORIZON if name == "acrobot" else HORIZON) / n
     lagrangian, input_force, dof, nu, position_bounds, input_bounds, target = problem(name)
+    origin = PANDA_START if name == "panda" else [0.0] * dof
+    friction = damping(name, dof)
     q, v = ca.SX.sym("q", dof), ca.SX.sym("v", dof)
     lag = lagrangian(q, v)
     lq = ca.Function("lq", [q, v], [ca.gradient(lag, q)])
@@ -72,10 +139,10 @@ def build(name, n):
         a, b, u = nodes[k], nodes[k + 1], pushes[k]
         vel = (b - a) / h
         p = 0.5 * (lv(a, vel) + lv(b, vel))
-        force = input_force(u)
+        force = input_force(u) - ca.DM(friction) * vel
         d1 = 0.5 * h * lq(a, vel) - p + 0.5 * h * force
         d2 = 0.5 * h * lq(b, vel) + p + 0.5 * h * force
-        start = lv(zero, zero) if k == 0 else d2_before
+        start = lv(ca.DM(origin), zero) if k == 0 else d2_before
         equations.append(start + d1)
         d2_before = d2
         cost += 0.5 * h * ca.sumsqr(u)
@@ -83,11 +150,11 @@ def build(name, n):
     x = ca.vertcat(*nodes, *pushes)
     lower = [b[0] for b in position_bounds] * (n + 1) + [input_bounds[0]] * (nu * n)
     upper = [b[1] for b in position_bounds] * (n + 1) + [input_bounds[1]] * (nu * n)
-    lower[0:dof] = upper[0:dof] = [0.0] * dof
+    lower[0:dof] = upper[0:dof] = origin
     lower[dof * n:dof * (n + 1)] = upper[dof * n:dof * (n + 1)] = target
     guess = []
     for k in range(n + 1):
-        guess += [t * k / n for t in target]
+        guess += [o + (t - o) * k / n for o, t in zip(origin, target)]
     guess += [0.0] * (nu * n)
     options = {"ipopt": {"print_level": 0, "sb": "yes", "tol": 1e-8}, "print_time": False}
     solver = ca.nlpsol("dmoc", "ipopt", {"x": x, "f": cost, "g": ca.vertcat(*equations)}, options)
