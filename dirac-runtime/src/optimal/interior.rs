@@ -51,8 +51,9 @@ impl Default for InteriorOptions {
 #[derive(Clone, Debug)]
 pub struct InteriorResult {
     /// `Solve_Succeeded`, `Maximum_Iterations_Exceeded`, `Line_Search_Failed`,
-    /// `Error_In_Step_Computation` (no regularisation made the step's matrix usable) or
-    /// `Invalid_Number_Detected` (the program is not finite at the start).
+    /// `Error_In_Step_Computation` (no regularisation made the step's matrix usable),
+    /// `Invalid_Number_Detected` (the program is not finite at the start) or `Invalid_Option`
+    /// (a tolerance or barrier that is not a finite positive number; nothing is evaluated).
     pub status: &'static str,
     /// Whether the status is a solution.
     pub solved: bool,
@@ -223,6 +224,10 @@ impl InteriorPoint {
         cold: bool,
     ) -> InteriorResult {
         let started = Instant::now();
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        if !(positive(options.tolerance) && positive(barrier)) {
+            return self.finish("Invalid_Option", false, f64::NAN, 0, started);
+        }
         self.started = true;
         nlp.variable_bounds(&mut self.lower, &mut self.upper);
         let mut gu = std::mem::take(&mut self.g_trial);
@@ -833,6 +838,15 @@ mod tests {
             (result.status, result.solved, result.iterations),
             ("Maximum_Iterations_Exceeded", false, 1)
         );
+        // Absurd options are refused by name before anything is evaluated.
+        for options in [
+            InteriorOptions { tolerance: f64::NAN, ..InteriorOptions::default() },
+            InteriorOptions { tolerance: 0.0, ..InteriorOptions::default() },
+            InteriorOptions { barrier: -1.0, ..InteriorOptions::default() },
+        ] {
+            let result = InteriorPoint::new(&Circle).expect("equations only").solve(&mut Circle, &options);
+            assert_eq!((result.status, result.solved, result.iterations), ("Invalid_Option", false, 0));
+        }
     }
 
     #[test]
