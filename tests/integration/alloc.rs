@@ -1528,7 +1528,7 @@ fn watching_an_ideal_diode_in_a_netlist_does_not_allocate() {
 #[test]
 fn a_warm_started_interior_point_solve_does_not_allocate() {
     use dirac::optimal::interior::{InteriorOptions, InteriorPoint};
-    use dirac::optimal::{Dmoc, Problem};
+    use dirac::optimal::{Collocation, Dmoc, Problem};
     // The swing-up (final state given, so every equation of the transcription is evaluated),
     // solved once cold; then the plan's inputs are disturbed and the solve is warm started
     // from there, as a receding horizon's next sample is: the solver's work space and the
@@ -1551,4 +1551,19 @@ fn a_warm_started_interior_point_solve_does_not_allocate() {
     let during = allocations() - before;
     assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
     assert_eq!(during, 0, "a warm-started solve allocated {during} times");
+
+    // The same on the Radau IIA collocation of the problem: points of (q, v), then inputs.
+    let mut collocation = Collocation::new(dmoc.problem().clone()).expect("well-formed");
+    let mut solver = InteriorPoint::new(&collocation).expect("equations only");
+    assert!(solver.solve(&mut collocation, &options).solved);
+    let (x, _) = solver.point_mut();
+    let inputs = (3 * 30 + 1) * 4;
+    for u in &mut x[inputs..] {
+        *u *= 0.9;
+    }
+    let before = allocations();
+    let result = solver.resolve(&mut collocation, &options);
+    let during = allocations() - before;
+    assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
+    assert_eq!(during, 0, "a warm-started collocation solve allocated {during} times");
 }

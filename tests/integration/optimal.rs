@@ -1,11 +1,12 @@
-//! Optimal control by DMOC: the transcription's Jacobian and Lagrangian Hessian against
-//! central differences of its own equations and gradient, a cart-pole swing-up solved by IPOPT
-//! and replayed by the variational integrator with the inputs it found, and the typed errors
+//! Optimal control by DMOC and by Radau IIA collocation: the transcriptions' Jacobians and
+//! Lagrangian Hessians against central differences of their own equations and gradients, a
+//! cart-pole swing-up solved by IPOPT and replayed by the variational integrator (DMOC) and by
+//! Radau (collocation) with the inputs found, momentum maps kept or not, and the typed errors
 //! of malformed problems.
 
 use dirac::optimal::interior::InteriorOptions;
 use dirac::optimal::ipopt::IpoptOptions;
-use dirac::optimal::{Dmoc, Mpc, Nlp, OptimalError, Problem};
+use dirac::optimal::{Collocation, Dmoc, Mpc, Nlp, OptimalError, Problem};
 use dirac::prelude::*;
 
 use crate::zoo::robots::PandaTorques;
@@ -144,6 +145,9 @@ fn the_transcriptions_derivatives_match_central_differences() {
         .velocity_weight(CartPole::X, 0.2, 0.1)
         .terminal_weight(CartPole::X, 2.0, 0.5)
         .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]));
+    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+    let z = scattered(collocation.variables(), 0.1);
+    check_derivatives(&mut collocation, &z, 1e-6);
     let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
     let z = scattered(dmoc.variables(), 0.1);
     check_derivatives(&mut dmoc, &z, 1e-6);
@@ -157,6 +161,9 @@ fn the_transcriptions_derivatives_match_central_differences() {
             problem =
                 problem.final_state(VecQ::<Steered>::from([1.0, 0.5]), VecQ::<Steered>::from([0.1, 0.2]));
         }
+        let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+        let z = scattered(collocation.variables(), 0.4);
+        check_derivatives(&mut collocation, &z, 1e-6);
         let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
         let z = scattered(dmoc.variables(), 0.4);
         check_derivatives(&mut dmoc, &z, 1e-6);
@@ -168,6 +175,9 @@ fn the_transcriptions_derivatives_match_central_differences() {
         VecQ::<PandaTorques>::from([1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0]),
         VecQ::<PandaTorques>::zeros(),
     );
+    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+    let z = scattered(collocation.variables(), 0.2);
+    check_derivatives(&mut collocation, &z, 1e-6);
     let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
     let z = scattered(dmoc.variables(), 0.2);
     check_derivatives(&mut dmoc, &z, 1e-6);
@@ -307,12 +317,26 @@ fn malformed_problems_are_refused_by_name() {
     let problem = Problem::new(well, 1.0, 10)
         .start(VecQ::<RootWell>::from([-1.0]), VecQ::<RootWell>::zeros())
         .final_position(RootWell::X, 1.0);
-    match Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect_err("refused") {
+    match Dmoc::new(problem.clone())
+        .expect("well-formed")
+        .solve(&IpoptOptions::default())
+        .expect_err("refused")
+    {
         OptimalError::NotFiniteAtGuess { detail, .. } => {
             assert!(detail.contains("`x` at node 0"), "{detail}")
         }
         other => panic!("{other}"),
     }
+    // The same in the collocation's stage equations, by stage and interval.
+    let mut collocation = Collocation::new(problem).expect("well-formed");
+    match collocation.solve_interior(&InteriorOptions::default()).expect_err("refused") {
+        OptimalError::NotFiniteAtGuess { detail, .. } => {
+            assert!(detail.contains("momentum balance of `x` at stage 1 of interval 0"), "{detail}")
+        }
+        other => panic!("{other}"),
+    }
+    let error = Collocation::new(Problem::new(cart_pole(), 1.0, 200_000_000)).err().expect("refused");
+    assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
     // A swing-up the bounded push cannot reach: IPOPT's own status, by name.
     let problem = swing_up(20).input_bounds(CartPole::F, -0.1, 0.1);
     let error = Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect_err("fails");
@@ -369,6 +393,187 @@ fn a_satellite_turned_by_its_arm_keeps_its_angular_momentum_to_round_off() {
     );
     assert!(scale > 0.1, "the arm moves: its momentum reaches {scale}");
     assert!(drift < 1e-12 * scale.max(1.0), "p_theta leaves zero by {drift:e} (momenta up to {scale})");
+}
+
+/// Two masses in the plane on a spring, pushed apart by a force `u` between them: free in
+/// space and moved by internal forces alone, so the total angular momentum about the origin,
+/// `Σ x p_y − y p_x`, is a momentum map, and one that is not linear in the momenta's
+/// components (as a cyclic coordinate's momentum is).
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x1 => vx1, y1 => vy1, x2 => vx2, y2 => vy2), input(u))]
+#[dirac(lagrangian = 0.5 * m * (vx1 * vx1 + vy1 * vy1 + vx2 * vx2 + vy2 * vy2)
+    - 0.5 * k * (sqrt((x2 - x1).powi(2) + (y2 - y1).powi(2)) - d).powi(2))]
+#[dirac(force(x1) = -u * (x2 - x1) / sqrt((x2 - x1).powi(2) + (y2 - y1).powi(2)),
+    force(y1) = -u * (y2 - y1) / sqrt((x2 - x1).powi(2) + (y2 - y1).powi(2)),
+    force(x2) = u * (x2 - x1) / sqrt((x2 - x1).powi(2) + (y2 - y1).powi(2)),
+    force(y2) = u * (y2 - y1) / sqrt((x2 - x1).powi(2) + (y2 - y1).powi(2)))]
+pub struct Dumbbell {
+    pub m: f64,
+    pub k: f64,
+    pub d: f64,
+    pub u: f64,
+}
+
+/// The dumbbell spinning at 1 rad/s, pulled in to a third of its length and turned to 2.5 rad
+/// in 2 s (a skater's spin): `N` intervals.
+fn spin(intervals: usize) -> Problem<Dumbbell> {
+    let (radius, angle) = (0.3, 2.5f64);
+    Problem::new(Dumbbell { m: 1.0, k: 20.0, d: 1.0, u: 0.0 }, 2.0, intervals)
+        .start(VecQ::<Dumbbell>::from([-0.5, 0.0, 0.5, 0.0]), VecQ::<Dumbbell>::from([0.0, -0.5, 0.0, 0.5]))
+        .terminal_weight(Dumbbell::X2, 100.0, radius * angle.cos())
+        .terminal_weight(Dumbbell::Y2, 100.0, radius * angle.sin())
+}
+
+/// The largest distance of `Σ x p_y − y p_x` at the nodes from its value at the start.
+fn angular_momentum_drift(optimum: &dirac::optimal::Optimum) -> (f64, f64) {
+    let j: Vec<f64> = optimum
+        .positions
+        .iter()
+        .zip(&optimum.momenta)
+        .map(|(q, p)| q[0] * p[1] - q[1] * p[0] + q[2] * p[3] - q[3] * p[2])
+        .collect();
+    (j[0], j.iter().fold(0.0f64, |m, x| m.max((x - j[0]).abs())))
+}
+
+#[test]
+fn dmoc_keeps_the_angular_momentum_that_collocation_lets_drift() {
+    with_ipopt();
+    // The discrete Noether theorem (Ober-Blöbaum, Junge and Marsden 2011): the trapezoidal
+    // discrete Lagrangian and the midpoint forces are invariant under rotations, and internal
+    // forces do no virtual work along them, so DMOC's discrete angular momentum is the start's
+    // at every node. Radau IIA is not symplectic: its momenta are right to its order only, and
+    // the quadratic momentum map drifts, less as N grows.
+    let mut collocated = Vec::new();
+    for intervals in [20, 40] {
+        let dmoc =
+            Dmoc::new(spin(intervals)).expect("well-formed").solve(&IpoptOptions::default()).expect("DMOC");
+        let radau = Collocation::new(spin(intervals))
+            .expect("well-formed")
+            .solve(&IpoptOptions::default())
+            .expect("Radau");
+        let (j0, dmoc_drift) = angular_momentum_drift(&dmoc);
+        let (radau_j0, radau_drift) = angular_momentum_drift(&radau);
+        eprintln!(
+            "spin, N = {intervals}: angular momentum {j0} kept by DMOC to {dmoc_drift:e}, by collocation to \
+             {radau_drift:e} (costs {} and {}, {} and {} iterations)",
+            dmoc.cost, radau.cost, dmoc.iterations, radau.iterations
+        );
+        assert!((j0 - 0.5).abs() < 1e-14 && (radau_j0 - 0.5).abs() < 1e-14, "both start with J = 1/2");
+        let reach = dmoc.positions.last().map(|q| q[2].hypot(q[3])).expect("nodes");
+        assert!((reach - 0.3).abs() < 0.05, "the spin is pulled in: radius {reach}");
+        // Node by node, J moves by the equations' residual applied to the rotation's
+        // generator, `|⟨c_k, ξ q_k⟩| ≤ violation · 4 max |q|`: DMOC conserves it to what the
+        // solve leaves of the equations (round-off, or IPOPT's last step).
+        let size = dmoc.positions.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+        let bound = intervals as f64 * dmoc.violation * 4.0 * size + 1e-14;
+        eprintln!("  DMOC's equations hold to {:e}: J may move by {bound:e}", dmoc.violation);
+        assert!(dmoc_drift <= bound, "DMOC's angular momentum drifts by {dmoc_drift:e}, beyond {bound:e}");
+        assert!(radau_drift > 1e3 * dmoc_drift.max(1e-16), "collocation keeps J to {radau_drift:e}");
+        collocated.push(radau_drift);
+    }
+    // Radau IIA is of order 5 at the nodes: 2.8e-5 and 9.2e-7 here, order 4.9.
+    let order = (collocated[0] / collocated[1]).log2();
+    assert!(order > 4.0, "collocation's drift falls at order {order} as N doubles ({collocated:?})");
+
+    // A cyclic coordinate's momentum is a component of the momenta collocation integrates,
+    // whose rate is zero at every stage: the satellite's `p_theta` stays zero in both. (The
+    // final velocity is left free: given, it makes `p_theta`'s equations one too many, as
+    // they already hold it at the start's zero, and IPOPT does not converge.)
+    let satellite = Satellite { ib: 2.0, ia: 0.2, m: 1.0, r: 0.6, c: 0.5, u: 0.0 };
+    let problem = Problem::new(satellite, 3.0, 30)
+        .final_position(Satellite::THETA, 1.0)
+        .final_position(Satellite::PHI, 0.0)
+        .guess(
+            (0..=30)
+                .map(|k| vec![k as f64 / 30.0, 2.0 * (std::f64::consts::PI * k as f64 / 30.0).sin()])
+                .collect(),
+            vec![vec![0.0]; 30],
+        );
+    let optimum =
+        Collocation::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect("solves");
+    let scale = optimum.momenta.iter().flatten().fold(0.0f64, |m, p| m.max(p.abs()));
+    let drift = optimum.momenta.iter().fold(0.0f64, |m, p| m.max(p[0].abs()));
+    // Node by node, `p_theta` moves by its rows' residuals alone (three stages per interval).
+    let bound = 3.0 * 30.0 * optimum.violation + 1e-14 * scale;
+    eprintln!(
+        "satellite by collocation: p_theta within {drift:e} of zero (equations to {:e}, bound {bound:e}), \
+         momenta up to {scale}",
+        optimum.violation
+    );
+    assert!(scale > 0.1 && drift <= bound, "p_theta leaves zero by {drift:e}, beyond {bound:e}");
+}
+
+#[test]
+fn radau_collocation_swings_the_cart_pole_up_along_the_models_own_motion() {
+    with_ipopt();
+    // Replayed by the Radau integrator at 1e-12 with the push held over each interval, the
+    // collocation's nodes are the model's motion to the method's accuracy: order 5 at the
+    // nodes, so halving h divides the replay's distance from them by about 32.
+    let mut gaps = Vec::new();
+    let mut costs = Vec::new();
+    for intervals in [25, 50] {
+        let optimum = Collocation::new(swing_up(intervals))
+            .expect("well-formed")
+            .solve(&IpoptOptions::default())
+            .expect("IPOPT solves the collocated swing-up");
+        assert!(optimum.violation < 1e-9, "stage equations violated by {:e}", optimum.violation);
+        let end = optimum.positions.last().expect("nodes");
+        assert!(
+            (end[1] - std::f64::consts::PI).abs() < 1e-12 && end[0].abs() < 1e-12,
+            "ends upright: {end:?}"
+        );
+        let h = 2.0 / intervals as f64;
+        let mut model = cart_pole();
+        model.f = optimum.inputs[0][0];
+        let zero = VecQ::<CartPole>::zeros();
+        let start = consistent_state(&model, 0.0, &zero, &zero, Consistency::default()).expect("consistent");
+        let mut radau = Radau::new(&mut model, RadauOptions::tolerances(1e-12, 1e-12)).expect("valid");
+        radau.start(0.0, &start, h).expect("starts");
+        let mut gap = 0.0f64;
+        for k in 0..intervals {
+            if k > 0 {
+                radau.model_mut().expect("held exclusively").f = optimum.inputs[k][0];
+                radau.restart_until((k + 1) as f64 * h).expect("restarts");
+            }
+            while !radau.finished() {
+                radau.step().expect("steps");
+            }
+            let q = &radau.state().q;
+            gap = gap
+                .max((q[0] - optimum.positions[k + 1][0]).abs())
+                .max((q[1] - optimum.positions[k + 1][1]).abs());
+        }
+        eprintln!("collocation, N = {intervals}: cost {}, replay within {gap:e}", optimum.cost);
+        gaps.push(gap);
+        costs.push(optimum.cost);
+    }
+    let order = (gaps[0] / gaps[1]).log2();
+    assert!(order > 4.0, "the replay's distance falls at order {order} ({gaps:?})");
+    // The same continuous optimum as DMOC's: the collocation's cost converges to DMOC's on a
+    // fine grid (itself within about 1e-3 of the limit: 2e-3 relative at N = 100, second
+    // order). Inputs held over each interval make both transcriptions' costs second order.
+    let reference =
+        Dmoc::new(swing_up(800)).expect("well-formed").solve(&IpoptOptions::default()).expect("solves").cost;
+    let errors: Vec<f64> = costs.iter().map(|c| (c - reference).abs()).collect();
+    let order = (errors[0] / errors[1]).log2();
+    eprintln!("collocation costs {costs:?} against DMOC's {reference} at N = 800: order {order}");
+    assert!((1.8..2.3).contains(&order), "the collocation's cost converges at order {order} ({errors:?})");
+
+    // dirac's interior point reaches IPOPT's optimum of the collocated program.
+    let reference =
+        Collocation::new(swing_up(50)).expect("well-formed").solve(&IpoptOptions::default()).expect("IPOPT");
+    let ours = Collocation::new(swing_up(50))
+        .expect("well-formed")
+        .solve_interior(&InteriorOptions::default())
+        .expect("the interior point solves the collocated swing-up");
+    eprintln!(
+        "collocation, N = 50: interior point {} in {} iterations, IPOPT {} in {}",
+        ours.cost, ours.iterations, reference.cost, reference.iterations
+    );
+    assert!(
+        (ours.cost - reference.cost).abs() <= 1e-6 * reference.cost,
+        "the interior point's optimum differs"
+    );
 }
 
 #[test]

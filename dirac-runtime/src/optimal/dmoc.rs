@@ -200,33 +200,13 @@ where
     pub fn guess(&self) -> Vec<f64> {
         let (n, nu, intervals) = (self.n, self.nu, self.intervals);
         let mut z = vec![0.0; (intervals + 1) * n + intervals * nu];
-        let p = &self.problem;
-        match &p.guess {
-            Some(guess) => {
-                for (k, q) in guess.positions.iter().enumerate() {
-                    z[k * n..(k + 1) * n].copy_from_slice(q);
-                }
-                for (k, u) in guess.inputs.iter().enumerate() {
-                    let start = (intervals + 1) * n + k * nu;
-                    z[start..start + nu].copy_from_slice(u);
-                }
-            }
-            None => {
-                for k in 0..=intervals {
-                    let s = k as f64 / intervals as f64;
-                    for i in 0..n {
-                        let end = p.final_position[i].unwrap_or(p.q0[i]);
-                        let (lower, upper) = p.position_bounds[i];
-                        z[k * n + i] = (p.q0[i] + s * (end - p.q0[i])).clamp(lower, upper);
-                    }
-                }
-                for k in 0..intervals {
-                    for i in 0..nu {
-                        let (lower, upper) = p.input_bounds[i];
-                        z[(intervals + 1) * n + k * nu + i] = 0.0f64.clamp(lower, upper);
-                    }
-                }
-            }
+        let (positions, inputs) = self.problem.guessed_nodes();
+        for (k, q) in positions.iter().enumerate() {
+            z[k * n..(k + 1) * n].copy_from_slice(q);
+        }
+        for (k, u) in inputs.iter().enumerate() {
+            let start = (intervals + 1) * n + k * nu;
+            z[start..start + nu].copy_from_slice(u);
         }
         z
     }

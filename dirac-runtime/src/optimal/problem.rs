@@ -198,6 +198,31 @@ where
         self.horizon / self.intervals as f64
     }
 
+    /// The guess at the nodes: the positions at the `N + 1` nodes and the inputs on the `N`
+    /// intervals, as given or made (see [`Problem::guess`]).
+    pub(crate) fn guessed_nodes(&self) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
+        if let Some(guess) = &self.guess {
+            return (guess.positions.clone(), guess.inputs.clone());
+        }
+        let intervals = self.intervals;
+        let positions = (0..=intervals)
+            .map(|k| {
+                let s = k as f64 / intervals as f64;
+                (0..M::NQ)
+                    .map(|i| {
+                        let end = self.final_position[i].unwrap_or(self.q0[i]);
+                        let (lower, upper) = self.position_bounds[i];
+                        (self.q0[i] + s * (end - self.q0[i])).clamp(lower, upper)
+                    })
+                    .collect()
+            })
+            .collect();
+        let inputs = (0..intervals)
+            .map(|_| self.input_bounds.iter().map(|&(lower, upper)| 0.0f64.clamp(lower, upper)).collect())
+            .collect();
+        (positions, inputs)
+    }
+
     /// Every check that needs no evaluation of the model: a typed error naming the first
     /// problem found.
     pub fn check(&self) -> Result<(), OptimalError> {

@@ -21,7 +21,7 @@ mod options;
 mod residual;
 mod sensitivities;
 mod stages;
-mod tableau;
+pub(crate) mod tableau;
 
 use std::cell::RefCell;
 
