@@ -9,7 +9,7 @@ use dirac::optimal::ipopt::IpoptOptions;
 use dirac::optimal::{Collocation, Dmoc, Mpc, Nlp, OptimalError, Problem};
 use dirac::prelude::*;
 
-use crate::zoo::robots::PandaTorques;
+use crate::zoo::robots::{PandaTorques, panda_point_to_point};
 use crate::zoo::{Acrobot, CartPole, acrobot, cart_pole, cart_pole_balance, unit_pendulum};
 
 /// Installs IPOPT's library from Debian's packages if it is missing (`.ci/ipopt.sh`), before
@@ -644,6 +644,24 @@ fn the_pure_rust_interior_point_finds_ipopts_optimum() {
     );
     assert!((ours.cost - reference.cost).abs() <= 1e-6 * reference.cost.abs(), "acrobot: cost differs");
     assert!(ours.violation < 1e-9, "acrobot: equations violated by {:e}", ours.violation);
+
+    // The Panda between two poses within its joints' limits and efforts: near the optimum the
+    // torques at their bounds make the barrier terms 1e10 times the constraint rows' pivots,
+    // which must not be taken for zero ones.
+    let reference = Dmoc::new(panda_point_to_point(10))
+        .expect("well-formed")
+        .solve(&IpoptOptions::default())
+        .expect("IPOPT");
+    let ours = Dmoc::new(panda_point_to_point(10))
+        .expect("well-formed")
+        .solve_interior(&InteriorOptions::default())
+        .expect("solves the Panda");
+    eprintln!(
+        "Panda: cost {} against IPOPT's {}, {} iterations against {}",
+        ours.cost, reference.cost, ours.iterations, reference.iterations
+    );
+    assert!((ours.cost - reference.cost).abs() <= 1e-6 * reference.cost, "Panda: cost differs");
+    assert!(ours.violation < 1e-8, "Panda: equations violated by {:e}", ours.violation);
 }
 
 #[test]

@@ -34,6 +34,31 @@ pub struct PandaTorques {
     pub t7: f64,
 }
 
+/// The Panda's arm moved by its seven torques from one pose to another, at rest at both ends,
+/// in 2 s on `intervals` intervals: positions within `panda_arm.urdf`'s joint limits, torques
+/// within its efforts (`benches/peers/optimal.py` checks both against Pinocchio's reading),
+/// and a cost of `|u|²/2 + 5 |v|²` per second. The velocity term makes the optimum unique
+/// enough to be found from different guesses; without it the program has many local optima.
+pub fn panda_point_to_point(intervals: usize) -> dirac::optimal::Problem<PandaTorques> {
+    let start = [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.8];
+    let end = [1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0];
+    let lower = [-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973];
+    let upper = [2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973];
+    let effort = [87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0];
+    let mut problem = dirac::optimal::Problem::new(PandaTorques::default(), 2.0, intervals)
+        .start(VecQ::<PandaTorques>::from(start), VecQ::<PandaTorques>::zeros())
+        .final_state(VecQ::<PandaTorques>::from(end), VecQ::<PandaTorques>::zeros());
+    for i in 0..7 {
+        let joint = Coordinate::checked(i).expect("seven joints");
+        let torque = dirac::Input::checked(i).expect("seven torques");
+        problem = problem
+            .position_bounds(joint, lower[i], upper[i])
+            .input_bounds(torque, -effort[i], effort[i])
+            .velocity_weight(joint, 10.0, 0.0);
+    }
+    problem
+}
+
 /// The Panda with its joints' limits as hard stops.
 #[derive(LagrangeDirac, Clone, Debug)]
 #[dirac(urdf = "../tests/robots/panda/panda.urdf", joint_limits)]

@@ -98,7 +98,6 @@ impl Banded {
     pub fn factor(&mut self) -> Inertia {
         let (b, n) = (self.width, self.dim);
         self.values.copy_from_slice(&self.matrix);
-        let scale = self.matrix.iter().fold(0.0f64, |m, x| m.max(x.abs())).max(f64::MIN_POSITIVE);
         let (mut positive, mut negative) = (0, 0);
         for i in 0..n {
             let lo = i.saturating_sub(b);
@@ -113,11 +112,17 @@ impl Banded {
                 self.scratch[j - lo] = s;
                 self.values[row + j] = s / self.pivots[j];
             }
+            // A pivot vanishes when it is round-off of the terms it is made of: the test is
+            // relative to the largest of them, not to the matrix, whose active bounds'
+            // barrier terms may be 1e10 times the constraint rows' pivots.
             let mut d = self.values[row + i];
+            let mut terms = d.abs();
             for k in lo..i {
-                d -= self.scratch[k - lo] * self.values[row + k];
+                let term = self.scratch[k - lo] * self.values[row + k];
+                d -= term;
+                terms = terms.max(term.abs());
             }
-            if !d.is_finite() || d.abs() <= 1e-14 * scale {
+            if !d.is_finite() || d.abs() <= 1e-14 * terms {
                 return Inertia::Singular;
             }
             self.pivots[i] = d;
