@@ -46,6 +46,27 @@ def acrobot(q, v):
 
 PANDA_START = [0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 0.8]
 PANDA_END = [1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0]
+# The weight of every joint's velocity in the Panda's running cost, h/2 * w * |v|^2 per
+# interval as dirac's Problem::velocity_weight: without it the program has many local optima
+# (from the same start, IPOPT lands in different ones for N = 10 ... 50 as the guess changes),
+# with it IPOPT reaches the same optimum from a straight line or a gravity-compensating guess.
+PANDA_VELOCITY_WEIGHT = 10.0
+# The joints' limits and efforts of panda_arm.urdf, as benches/optimal.rs writes them; checked
+# against Pinocchio's reading of the file in panda_limits().
+PANDA_LOWER = [-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973]
+PANDA_UPPER = [2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973]
+PANDA_EFFORT = [87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0]
+
+
+def panda_limits():
+    """The position bounds and the torque bounds of each joint, from the URDF file."""
+    import pinocchio as pin
+    model = pin.buildModelFromUrdf("tests/robots/panda/panda_arm.urdf")
+    read = [list(model.lowerPositionLimit), list(model.upperPositionLimit), list(model.effortLimit)]
+    if any(abs(a - b) > 1e-12 for got, ours in zip(read, [PANDA_LOWER, PANDA_UPPER, PANDA_EFFORT])
+           for a, b in zip(got, ours)):
+        sys.exit(f"panda_arm.urdf's limits are {read}, the benchmark's differ")
+    return list(zip(PANDA_LOWER, PANDA_UPPER)), [(-e, e) for e in PANDA_EFFORT]
 
 
 def panda_lagrangian():
@@ -104,7 +125,13 @@ def problem(name):
         return cart_pole, force, 2, 1, [(-X_MAX, X_MAX), (-ca.inf, ca.inf)], (-F_MAX, F_MAX), [0.0, ca.pi]
     if name == "panda":
         force = lambda u: u
-        return panda_lagrangian(), force, 7, 7, [(-ca.inf, ca.inf)] * 7, (-ca.inf, ca.inf), PANDA_END
+        positions, torques = panda_limits()
+        return panda_lagrangian(), force, 7, 7, positions, torques, PANDA_END
+    if name == "acrobot":
+        force = lambda u: ca.vertcat(-u, u)
+        return acrobot, force, 2, 1, [(-ca.inf, ca.inf)] * 2, (-ca.inf, ca.inf), [ca.pi, ca.pi]
+    force = lambda u: ca.vertcat(*[u[i] - u[i + 1] for i in range(LINKS - 1)], u[LINKS - 1])
+    return chain, force, LINKS, LINKS, [(-ca.inf, ca.inf)] * LINKS, (-ca.inf, ca.inf), [0.5] * LINKS
 
 
 def damping(name, dof):
@@ -114,11 +141,6 @@ def damping(name, dof):
         return [0.0] * dof
     import pinocchio as pin
     return list(pin.buildModelFromUrdf("tests/robots/panda/panda_arm.urdf").damping)
-    if name == "acrobot":
-        force = lambda u: ca.vertcat(-u, u)
-        return acrobot, force, 2, 1, [(-ca.inf, ca.inf)] * 2, (-ca.inf, ca.inf), [ca.pi, ca.pi]
-    force = lambda u: ca.vertcat(*[u[i] - u[i + 1] for i in range(LINKS - 1)], u[LINKS - 1])
-    return chain, force, LINKS, LINKS, [(-ca.inf, ca.inf)] * LINKS, (-ca.inf, ca.inf), [0.5] * LINKS
 
 
 def build(name, n):
@@ -126,6 +148,7 @@ def build(name, n):
     lagrangian, input_force, dof, nu, position_bounds, input_bounds, target = problem(name)
     origin = PANDA_START if name == "panda" else [0.0] * dof
     friction = damping(name, dof)
+    smoothing = PANDA_VELOCITY_WEIGHT if name == "panda" else 0.0
     q, v = ca.SX.sym("q", dof), ca.SX.sym("v", dof)
     lag = lagrangian(q, v)
     lq = ca.Function("lq", [q, v], [ca.gradient(lag, q)])
@@ -145,11 +168,13 @@ def build(name, n):
         start = lv(ca.DM(origin), zero) if k == 0 else d2_before
         equations.append(start + d1)
         d2_before = d2
-        cost += 0.5 * h * ca.sumsqr(u)
+        cost += 0.5 * h * ca.sumsqr(u) + 0.5 * h * smoothing * ca.sumsqr(vel)
     equations.append(d2_before - lv(nodes[n], zero))
     x = ca.vertcat(*nodes, *pushes)
-    lower = [b[0] for b in position_bounds] * (n + 1) + [input_bounds[0]] * (nu * n)
-    upper = [b[1] for b in position_bounds] * (n + 1) + [input_bounds[1]] * (nu * n)
+    # One bound for every input, or one per input.
+    per_input = input_bounds if isinstance(input_bounds, list) else [input_bounds] * nu
+    lower = [b[0] for b in position_bounds] * (n + 1) + [b[0] for b in per_input] * n
+    upper = [b[1] for b in position_bounds] * (n + 1) + [b[1] for b in per_input] * n
     lower[0:dof] = upper[0:dof] = origin
     lower[dof * n:dof * (n + 1)] = upper[dof * n:dof * (n + 1)] = target
     guess = []

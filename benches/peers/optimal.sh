@@ -17,13 +17,11 @@
 #   PROBLEM=mpc bash benches/peers/optimal.sh 5 20      (the 100 Hz MPC on the cart-pole)
 #
 # PROBLEM=acrobot is the acrobot's swing-up; PROBLEM=panda the Panda's arm from its URDF file
-# moved between two poses at rest in 2 s (CasADi's side writes its Lagrangian from the numbers
-# Pinocchio reads from the same file, checked against Pinocchio's energies). On the Panda the
-# two sides end in different local optima (N = 10: 41.0 in 271 iterations against 21.9 in
-# 236) of the same program: CasADi's optimum meets dirac's equations to 1.6e-14 with the same
-# cost. Over that many iterations of a nonconvex program the two paths part (by round-off,
-# presumably: the starting point and the options are the same); it
-# has no table in BENCHMARKS.md yet.
+# moved between two poses at rest in 2 s within its joint limits and efforts, with the joint
+# velocities weighted in the cost (CasADi's side writes its Lagrangian from the numbers
+# Pinocchio reads from the same file, checked against Pinocchio's energies). Without that
+# weight the Panda's program has many local optima, and the two sides, from the same start
+# with the same options, end in different ones.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 rounds=${1:-7}
