@@ -519,13 +519,6 @@ impl InteriorPoint {
                     delta_c = 1e-8 * mu.powf(0.25);
                     continue;
                 }
-                // Too few negative pivots: without pivoting, a constraint row whose variables
-                // all sit at active bounds (their `Σ` huge) leaves a pivot of round-off size,
-                // which is how MA27 would have found the matrix singular.
-                Inertia::Counted(_, q) if q < self.m && delta_c == 0.0 => {
-                    delta_c = 1e-8 * mu.powf(0.25);
-                    continue;
-                }
                 _ => {}
             }
             delta_w = match (delta_w == 0.0, self.last_delta_w == 0.0) {
