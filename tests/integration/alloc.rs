@@ -1566,4 +1566,20 @@ fn a_warm_started_interior_point_solve_does_not_allocate() {
     let during = allocations() - before;
     assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
     assert_eq!(during, 0, "a warm-started collocation solve allocated {during} times");
+
+    // With a free final time: the steps are variables, and every evaluation reads them.
+    let free = dmoc.problem().clone().free_final_time(1.0, 4.0).time_weight(10.0);
+    let mut dmoc = Dmoc::new(free).expect("well-formed");
+    let mut solver = InteriorPoint::new(&dmoc).expect("equations only");
+    assert!(solver.solve(&mut dmoc, &options).solved);
+    let (x, _) = solver.point_mut();
+    let inputs = 31 * 2;
+    for u in &mut x[inputs..inputs + 30] {
+        *u *= 0.9;
+    }
+    let before = allocations();
+    let result = solver.resolve(&mut dmoc, &options);
+    let during = allocations() - before;
+    assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
+    assert_eq!(during, 0, "a warm-started free-final-time solve allocated {during} times");
 }

@@ -183,6 +183,170 @@ fn the_transcriptions_derivatives_match_central_differences() {
     check_derivatives(&mut dmoc, &z, 1e-6);
 }
 
+/// A scattered point of a free-final-time DMOC program whose last `intervals` variables, the
+/// steps, are positive and unequal, so that each interval's own step is exercised.
+fn with_steps(variables: usize, intervals: usize, seed: f64) -> Vec<f64> {
+    let mut z = scattered(variables, seed);
+    for (k, h) in z[variables - intervals..].iter_mut().enumerate() {
+        *h = 0.3 + 0.05 * k as f64;
+    }
+    z
+}
+
+#[test]
+fn a_free_final_times_derivatives_match_central_differences() {
+    // The step enters every term: `h/2 L_q`, `h/2 F` and the velocity `(q_{k+1} − q_k)/h` of
+    // every point, and the running cost; each interval reads its own step.
+    let problem = swing_up(4)
+        .position_weight(CartPole::THETA, 0.3, 1.0)
+        .velocity_weight(CartPole::X, 0.2, 0.1)
+        .terminal_weight(CartPole::X, 2.0, 0.5)
+        .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]))
+        .free_final_time(0.5, 4.0)
+        .time_weight(0.7);
+    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+    let z = with_steps(dmoc.variables(), 4, 0.1);
+    check_derivatives(&mut dmoc, &z, 1e-6);
+
+    let steered = Steered { m: 1.3, k: 2.0, c: 0.4, a: 0.0, b: 0.0, f: 0.0 };
+    let problem = Problem::new(steered, 1.0, 5)
+        .start(VecQ::<Steered>::from([0.2, -0.1]), VecQ::<Steered>::from([0.5, 0.7]))
+        .final_state(VecQ::<Steered>::from([1.0, 0.5]), VecQ::<Steered>::from([0.1, 0.2]))
+        .free_final_time(0.5, 3.0);
+    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+    let z = with_steps(dmoc.variables(), 5, 0.4);
+    check_derivatives(&mut dmoc, &z, 1e-6);
+
+    let problem = Problem::new(PandaTorques::default(), 1.0, 3)
+        .final_state(
+            VecQ::<PandaTorques>::from([1.0, 0.2, -0.5, -1.5, 0.4, 1.6, 0.0]),
+            VecQ::<PandaTorques>::zeros(),
+        )
+        .free_final_time(0.5, 2.0)
+        .time_weight(3.0);
+    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+    let z = with_steps(dmoc.variables(), 3, 0.2);
+    check_derivatives(&mut dmoc, &z, 1e-6);
+}
+
+/// A mass pushed along a line by `f`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v)]
+#[dirac(force(x) = f)]
+pub struct Pushed {
+    pub m: f64,
+    pub f: f64,
+}
+
+/// A pushed mass on a spring whose anchor is shaken in time: its equations read `t`.
+#[derive(LagrangeDirac, Clone, Debug)]
+#[dirac(coordinates(x => v), input(f))]
+#[dirac(lagrangian = 0.5 * m * v * v - 0.5 * k * (x - 0.1 * sin(3.0 * t)).powi(2))]
+#[dirac(force(x) = f)]
+pub struct ShakenAnchor {
+    pub m: f64,
+    pub k: f64,
+    pub f: f64,
+}
+
+#[test]
+fn a_free_final_time_trades_time_against_effort_as_the_closed_form_does() {
+    with_ipopt();
+    // From rest at 0 to rest at D, `min ∫ f²/2 dt + ρ T`. For a fixed T the optimal push is
+    // linear in time and costs `6 m² D² / T³` (Pontryagin: the costate of the velocity is
+    // linear), so the best horizon is `T* = (18 m² D² / ρ)^{1/4}` and the optimal cost
+    // `J* = 4 ρ T* / 3`. With m = D = 1 and ρ = 18: T* = 1, J* = 24.
+    let (m, distance, rho): (f64, f64, f64) = (1.0, 1.0, 18.0);
+    let exact_t = (18.0 * m * m * distance * distance / rho).powf(0.25);
+    let exact_cost = 4.0 * rho * exact_t / 3.0;
+    let problem = |intervals| {
+        Problem::new(Pushed { m, f: 0.0 }, 0.6, intervals)
+            .final_state(VecQ::<Pushed>::from([distance]), VecQ::<Pushed>::zeros())
+            .free_final_time(0.1, 10.0)
+            .time_weight(rho)
+    };
+    let mut errors = Vec::new();
+    for intervals in [10, 20, 40] {
+        let reference = Dmoc::new(problem(intervals))
+            .expect("well-formed")
+            .solve(&IpoptOptions::default())
+            .expect("IPOPT");
+        let ours = Dmoc::new(problem(intervals))
+            .expect("well-formed")
+            .solve_interior(&InteriorOptions::default())
+            .expect("the interior point solves it");
+        let horizon = ours.times[intervals] - ours.times[0];
+        eprintln!(
+            "N = {intervals}: T = {horizon:.10} (exact {exact_t}), cost {:.10} (exact {exact_cost}), IPOPT {:.10}; \
+             iterations {} and {} (IPOPT)",
+            ours.cost, reference.cost, ours.iterations, reference.iterations
+        );
+        assert!((ours.cost - reference.cost).abs() <= 1e-8 * reference.cost, "the solvers' optima differ");
+        // The steps stay equal: the nodes are evenly spaced.
+        let h = horizon / intervals as f64;
+        for (k, t) in ours.times.iter().enumerate() {
+            assert!((t - k as f64 * h).abs() < 1e-9 * horizon, "node {k} at {t}, not {}", k as f64 * h);
+        }
+        errors.push(((horizon - exact_t).abs(), (ours.cost - exact_cost).abs()));
+    }
+    for pair in errors.windows(2) {
+        let horizon_order = (pair[0].0 / pair[1].0).log2();
+        let cost_order = (pair[0].1 / pair[1].1).log2();
+        assert!(
+            (1.8..2.3).contains(&horizon_order),
+            "the horizon converges at order {horizon_order}: {errors:?}"
+        );
+        assert!((1.8..2.3).contains(&cost_order), "the cost converges at order {cost_order}: {errors:?}");
+    }
+}
+
+#[test]
+fn a_time_optimal_swing_up_is_a_motion_of_the_variational_integrator_with_its_own_step() {
+    with_ipopt();
+    // The swing-up with the horizon free in [1, 4] s and each second priced at 10: the optimum
+    // is replayed by the variational integrator with the step it chose and its pushes.
+    let intervals = 40;
+    let problem = swing_up(intervals).free_final_time(1.0, 4.0).time_weight(10.0);
+    let reference =
+        Dmoc::new(problem.clone()).expect("well-formed").solve(&IpoptOptions::default()).expect("IPOPT");
+    let optimum = Dmoc::new(problem)
+        .expect("well-formed")
+        .solve_interior(&InteriorOptions::default())
+        .expect("the interior point solves it");
+    let horizon = optimum.times[intervals];
+    eprintln!(
+        "time-optimal swing-up: T = {horizon:.6} s, cost {:.8} in {} iterations (IPOPT {:.8} in {})",
+        optimum.cost, optimum.iterations, reference.cost, reference.iterations
+    );
+    assert!((optimum.cost - reference.cost).abs() <= 1e-6 * reference.cost, "the solvers' optima differ");
+    assert!(horizon > 1.0 + 1e-3 && horizon < 4.0 - 1e-3, "the horizon {horizon} is chosen, not bound");
+    assert!(optimum.violation < 1e-9, "equations violated by {:e}", optimum.violation);
+
+    let h = horizon / intervals as f64;
+    let mut model = cart_pole();
+    let start = consistent_state(
+        &model,
+        0.0,
+        &VecQ::<CartPole>::zeros(),
+        &VecQ::<CartPole>::zeros(),
+        Consistency::default(),
+    )
+    .expect("consistent");
+    let mut vi = Variational::new(&mut model, h, VariationalOptions::default()).expect("valid");
+    vi.start(0.0, &start, horizon).expect("starts");
+    let mut gap = 0.0f64;
+    for (k, u) in optimum.inputs.iter().enumerate() {
+        vi.set_input(CartPole::F, u[0]).expect("an input");
+        vi.step().expect("steps");
+        for (x, expected) in vi.state().q.iter().zip(&optimum.positions[k + 1]) {
+            gap = gap.max((x - expected).abs());
+        }
+    }
+    eprintln!("replayed with h = {h:.6}: largest gap to the optimal nodes {gap:.2e}");
+    assert!(gap < 1e-7, "the replay leaves the optimal nodes by {gap:e}");
+}
+
 #[test]
 fn a_robots_l_qq_does_not_read_back_the_buffer_it_is_given() {
     use dirac::{LagrangeDirac, MatQQ};
@@ -337,6 +501,31 @@ fn malformed_problems_are_refused_by_name() {
     }
     let error = Collocation::new(Problem::new(cart_pole(), 1.0, 200_000_000)).err().expect("refused");
     assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
+    // A free final time with no room, or a start outside it.
+    for (shortest, longest) in [(0.0, 3.0), (1.0, f64::INFINITY), (3.0, 4.0), (2.5, 1.0)] {
+        let problem = swing_up(10).free_final_time(shortest, longest);
+        match Dmoc::new(problem).err().expect("refused") {
+            OptimalError::InfeasibleBounds { name, .. } => assert_eq!(name, "the final time"),
+            other => panic!("{other}"),
+        }
+    }
+    // What keeps a fixed horizon, and a model whose equations move with time.
+    let free = swing_up(10).free_final_time(1.0, 3.0);
+    let error = Collocation::new(free.clone()).err().expect("refused");
+    assert!(matches!(error, OptimalError::FixedTimeOnly { what: "Radau IIA collocation", .. }), "{error}");
+    let error = Mpc::new(free, InteriorOptions::default()).err().expect("refused");
+    assert!(matches!(error, OptimalError::FixedTimeOnly { what: "Mpc", .. }), "{error}");
+    let shaken = ShakenAnchor { m: 1.0, k: 4.0, f: 0.0 };
+    let problem =
+        Problem::new(shaken, 1.0, 10).final_position(ShakenAnchor::X, 1.0).free_final_time(0.5, 2.0);
+    match Dmoc::new(problem)
+        .expect("well-formed")
+        .solve_interior(&InteriorOptions::default())
+        .expect_err("refused")
+    {
+        OptimalError::Unsupported { why, .. } => assert!(why.contains("change with time"), "{why}"),
+        other => panic!("{other}"),
+    }
     // A swing-up the bounded push cannot reach: IPOPT's own status, by name.
     let problem = swing_up(20).input_bounds(CartPole::F, -0.1, 0.1);
     let error = Dmoc::new(problem).expect("well-formed").solve(&IpoptOptions::default()).expect_err("fails");

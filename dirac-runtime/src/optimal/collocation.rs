@@ -96,6 +96,10 @@ where
     /// The collocation of `problem`, refused with a typed error if the problem is malformed.
     pub fn new(problem: Problem<M>) -> Result<Self, OptimalError> {
         problem.check()?;
+        if problem.free_time.is_some() {
+            let why = "its steps are not variables; transcribe a free final time with `Dmoc`";
+            return Err(OptimalError::FixedTimeOnly { what: "Radau IIA collocation", why });
+        }
         let (n, nu, intervals) = (M::NQ, M::NAMES.input_count(), problem.intervals);
         // Three stages of `5n + n (8n + n_u)` entries per interval, indexed by 32-bit integers.
         let entries = intervals.checked_mul(3 * n * (8 * n + nu + 5));

@@ -13,6 +13,10 @@
 //! c_N = D₂(interval N − 1) − p_N                     only if the final velocity is given
 //! ```
 //!
+//! With a free final time, the step of each interval is a variable too, `h_0 … h_{N−1}` after
+//! the inputs, held equal by the rows `h_k − h_{k+1} = 0`: the horizon is `Σ h_k`, and each
+//! equation reads only the steps of its own two intervals, so the KKT matrix stays banded.
+//!
 //! The Jacobian is stored in dense `n × n` and `n × n_u` blocks; the Hessian's pattern is the
 //! model's generated pattern pulled back onto each interval, so it is known before the first
 //! evaluation and holds no entry that is zero for every model of the type.
@@ -28,11 +32,13 @@ use crate::optimal::nlp::Nlp;
 use crate::optimal::problem::Problem;
 use crate::shape::dims::Storage;
 
-/// A variable block: positions at node `k` or inputs on interval `k`.
+/// A variable block: positions at node `k`, inputs on interval `k` or its step (free final
+/// time).
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Block {
     Q(usize),
     U(usize),
+    H(usize),
 }
 
 /// The DMOC transcription of a [`Problem`] into a nonlinear program.
@@ -46,6 +52,8 @@ where
     nu: usize,
     intervals: usize,
     h: f64,
+    /// Whether the steps are variables (a free final time).
+    free: bool,
     /// Whether the final velocity is given (the equations `c_N`).
     final_rows: bool,
     /// For each block row of equations, its variable blocks with their width and the offset of
@@ -75,6 +83,7 @@ where
         problem.check()?;
         let (n, nu, intervals) = (M::NQ, M::NAMES.input_count(), problem.intervals);
         let h = problem.step();
+        let free = problem.free_time.is_some();
         let final_rows = problem.final_velocity.is_some();
         let block_rows = intervals + usize::from(final_rows);
         let mut rows = Vec::with_capacity(block_rows);
@@ -94,12 +103,25 @@ where
             if j < intervals {
                 blocks.push(Block::U(j));
             }
+            if free && j >= 1 {
+                blocks.push(Block::H(j - 1));
+            }
+            if free && j < intervals {
+                blocks.push(Block::H(j));
+            }
             let start = |block: Block| match block {
                 Block::Q(k) => k * n,
                 Block::U(k) => (intervals + 1) * n + k * nu,
+                Block::H(k) => (intervals + 1) * n + intervals * nu + k,
             };
-            let widths: Vec<usize> =
-                blocks.iter().map(|b| if matches!(b, Block::Q(_)) { n } else { nu }).collect();
+            let widths: Vec<usize> = blocks
+                .iter()
+                .map(|b| match b {
+                    Block::Q(_) => n,
+                    Block::U(_) => nu,
+                    Block::H(_) => 1,
+                })
+                .collect();
             // Row-major over the block row: each equation's entries block by block, so block
             // `b` of equation `i` starts at `row_start + i * width + offset_b`.
             let row_start = jacobian_pattern.len();
@@ -120,7 +142,14 @@ where
             rows.push(placed);
         }
         debug_assert!(rows.iter().all(|r| !r.is_empty()));
-        let local = local_pattern(&problem, n, nu, h);
+        if free {
+            // h_k − h_{k+1} = 0.
+            let (row0, h0) = (block_rows * n, (intervals + 1) * n + intervals * nu);
+            for k in 0..intervals - 1 {
+                jacobian_pattern.extend([(row0 + k, h0 + k), (row0 + k, h0 + k + 1)]);
+            }
+        }
+        let local = local_pattern(&problem, n, nu, h, free);
         let (scatter, hessian_pattern) = scatter(&local, n, nu, intervals);
         let work = Interval::new(&problem.model);
         Ok(Dmoc {
@@ -129,6 +158,7 @@ where
             nu,
             intervals,
             h,
+            free,
             final_rows,
             rows,
             jacobian_pattern,
@@ -165,19 +195,33 @@ where
         }
     }
 
-    fn time(&self, k: usize) -> f64 {
-        self.problem.t0 + k as f64 * self.h
+    /// Where the step of interval `k` is in `z` (free final time).
+    fn step_index(&self, k: usize) -> usize {
+        (self.intervals + 1) * self.n + self.intervals * self.nu + k
+    }
+
+    /// The step of interval `k`: the problem's, or the variable's with a free final time.
+    pub(crate) fn step(&self, z: &[f64], k: usize) -> f64 {
+        if self.free { z[self.step_index(k)] } else { self.h }
+    }
+
+    /// The time at node `k`.
+    pub(crate) fn time(&self, z: &[f64], k: usize) -> f64 {
+        match self.free {
+            true => self.problem.t0 + (0..k).map(|j| z[self.step_index(j)]).sum::<f64>(),
+            false => self.problem.t0 + k as f64 * self.h,
+        }
     }
 
     /// The discrete momenta `p_k` at every node: `p_k = −D₁(interval k)` and
     /// `p_N = D₂(interval N − 1)`, the momenta of the variational integrator's steps.
     pub fn momenta(&mut self, z: &[f64]) -> Vec<Vec<f64>> {
-        let (n, h) = (self.n, self.h);
+        let n = self.n;
         let mut out = Vec::with_capacity(self.intervals + 1);
         for k in 0..self.intervals {
             self.set_inputs(z, k);
             let (a, b) = (&z[k * n..(k + 1) * n], &z[(k + 1) * n..(k + 2) * n]);
-            let t = self.time(k);
+            let (t, h) = (self.time(z, k), self.step(z, k));
             self.work.residual(&self.problem.model, t, a, b, h, &mut self.d1, &mut self.d2);
             out.push(self.d1.iter().map(|x| -x).collect());
             if k + 1 == self.intervals {
@@ -199,7 +243,7 @@ where
     /// The guess as a point of `z`.
     pub fn guess(&self) -> Vec<f64> {
         let (n, nu, intervals) = (self.n, self.nu, self.intervals);
-        let mut z = vec![0.0; (intervals + 1) * n + intervals * nu];
+        let mut z = vec![0.0; self.variables()];
         let (positions, inputs) = self.problem.guessed_nodes();
         for (k, q) in positions.iter().enumerate() {
             z[k * n..(k + 1) * n].copy_from_slice(q);
@@ -207,6 +251,11 @@ where
         for (k, u) in inputs.iter().enumerate() {
             let start = (intervals + 1) * n + k * nu;
             z[start..start + nu].copy_from_slice(u);
+        }
+        if self.free {
+            for k in 0..intervals {
+                z[self.step_index(k)] = self.h;
+            }
         }
         z
     }
@@ -227,34 +276,79 @@ where
                 detail: format!("the balance of `{name}` at node {block} is {}", g[row]),
             });
         }
+        if self.free && self.reads_time(z) {
+            let why = "its equations change with time, and a free final time moves every node's time: \
+                       only models that do not read `t` take a free final time";
+            return Err(OptimalError::Unsupported { model: core::any::type_name::<M>(), why });
+        }
         Ok(())
     }
 
-    /// Adds the running cost's Hessian on interval `k` (scaled by `sigma`) to the work's.
-    fn add_cost_hessian(&mut self, sigma: f64, last: bool) {
-        let (n, nu, h) = (self.n, self.nu, self.h);
+    /// Whether the first interval's equations at `z` change when time moves on by the
+    /// horizon: a model that does not read `t` gives the same values, bit for bit.
+    fn reads_time(&mut self, z: &[f64]) -> bool {
+        let n = self.n;
+        self.set_inputs(z, 0);
+        let (a, b, h) = (&z[..n], &z[n..2 * n], self.step(z, 0));
+        let mut values = [vec![0.0; 2 * n], vec![0.0; 2 * n]];
+        for (t, out) in [self.problem.t0, self.problem.t0 + self.problem.horizon].into_iter().zip(&mut values)
+        {
+            self.work.residual(&self.problem.model, t, a, b, h, &mut self.d1, &mut self.d2);
+            out[..n].copy_from_slice(&self.d1);
+            out[n..].copy_from_slice(&self.d2);
+        }
+        values[0] != values[1]
+    }
+
+    /// Adds the running cost's Hessian on the interval from `a` to `b` with inputs `u` and
+    /// step `h` (scaled by `sigma`) to the work's.
+    #[allow(clippy::too_many_arguments)]
+    fn add_cost_hessian(&mut self, sigma: f64, last: bool, a: &[f64], b: &[f64], u: &[f64], h: f64) {
+        let (n, nu) = (self.n, self.nu);
         let c = &self.problem.cost;
+        let hessian = &mut self.work.hessian;
         for i in 0..n {
-            add_pulled(&mut self.work.hessian, MIDDLE, n, h, i, i, sigma * h * c.position[i]);
-            add_pulled(&mut self.work.hessian, MIDDLE, n, h, n + i, n + i, sigma * h * c.velocity[i]);
+            add_pulled(hessian, MIDDLE, n, h, i, i, sigma * h * c.position[i]);
+            add_pulled(hessian, MIDDLE, n, h, n + i, n + i, sigma * h * c.velocity[i]);
             if last {
-                self.work.hessian[(n + i, n + i)] += sigma * c.terminal[i];
+                hessian[(n + i, n + i)] += sigma * c.terminal[i];
             }
         }
         for i in 0..nu {
-            self.work.hessian[(2 * n + i, 2 * n + i)] += sigma * h * c.input[i];
+            hessian[(2 * n + i, 2 * n + i)] += sigma * h * c.input[i];
+        }
+        if self.free {
+            // `∂/∂h` of `h/2 [w (q̄ − q̂)² + c (v − v̂)² + r u²]` is
+            // `w/2 (q̄ − q̂)² + c/2 (v̂² − v²) + r/2 u²`, with `v = (b − a)/h`.
+            let step = 2 * n + nu;
+            let mut along_h = 0.0;
+            let mut add = |x: usize, value: f64| {
+                hessian[(x, step)] += sigma * value;
+                hessian[(step, x)] += sigma * value;
+            };
+            for i in 0..n {
+                let mid = c.position[i] * (0.5 * (a[i] + b[i]) - c.position_reference[i]);
+                let v = (b[i] - a[i]) / h;
+                add(i, 0.5 * mid + c.velocity[i] * v / h);
+                add(n + i, 0.5 * mid - c.velocity[i] * v / h);
+                along_h += c.velocity[i] * v * v / h;
+            }
+            for i in 0..nu {
+                add(2 * n + i, c.input[i] * u[i]);
+            }
+            hessian[(step, step)] += sigma * along_h;
         }
     }
 }
 
 /// The lower triangle of an interval's Hessian that any point of the model may fill: the
 /// model's pattern pulled back through the three points, and the cost's diagonal.
-fn local_pattern<M>(problem: &Problem<M>, n: usize, nu: usize, h: f64) -> Vec<(usize, usize)>
+fn local_pattern<M>(problem: &Problem<M>, n: usize, nu: usize, h: f64, free: bool) -> Vec<(usize, usize)>
 where
     M: DenseModel + InputsOutputs,
     DefaultAllocator: Storage<M>,
 {
-    let d = 2 * n + nu;
+    let d = 2 * n + nu + usize::from(free);
     let mut mark = DMatrix::from_element(d, d, false);
     for map in [START, END, MIDDLE] {
         for &(r, c) in problem.model.weighted_hessian_pattern() {
@@ -277,6 +371,10 @@ where
         if cost.input[i] != 0.0 {
             mark[(2 * n + i, 2 * n + i)] = true;
         }
+    }
+    if free {
+        // The step moves every point's velocity and scales the rest: its row is full.
+        mark.row_mut(d - 1).fill(true);
     }
     let mut local = Vec::new();
     for a in 0..d {
@@ -312,7 +410,8 @@ fn scatter(
 ) -> (Vec<Vec<usize>>, Vec<(usize, usize)>) {
     let global = |k: usize, a: usize| match a {
         a if a < 2 * n => k * n + a,
-        a => (intervals + 1) * n + k * nu + (a - 2 * n),
+        a if a < 2 * n + nu => (intervals + 1) * n + k * nu + (a - 2 * n),
+        _ => (intervals + 1) * n + intervals * nu + k,
     };
     let mut index = BTreeMap::new();
     for k in 0..intervals {
@@ -335,11 +434,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn variables(&self) -> usize {
-        (self.intervals + 1) * self.n + self.intervals * self.nu
+        (self.intervals + 1) * self.n + self.intervals * (self.nu + usize::from(self.free))
     }
 
     fn constraints(&self) -> usize {
-        self.rows.len() * self.n
+        self.rows.len() * self.n + if self.free { self.intervals - 1 } else { 0 }
     }
 
     fn variable_bounds(&self, lower: &mut [f64], upper: &mut [f64]) {
@@ -361,6 +460,13 @@ where
                 (lower[at], upper[at]) = p.input_bounds[i];
             }
         }
+        if let Some((shortest, longest)) = p.free_time {
+            let per = self.intervals as f64;
+            for k in 0..self.intervals {
+                let at = self.step_index(k);
+                (lower[at], upper[at]) = (shortest / per, longest / per);
+            }
+        }
     }
 
     fn constraint_bounds(&self, lower: &mut [f64], upper: &mut [f64]) {
@@ -373,9 +479,11 @@ where
     }
 
     fn objective(&mut self, z: &[f64]) -> f64 {
-        let (n, nu, h, c) = (self.n, self.nu, self.h, &self.problem.cost);
+        let (n, nu, c) = (self.n, self.nu, &self.problem.cost);
         let mut total = 0.0;
         for k in 0..self.intervals {
+            let h = self.step(z, k);
+            total += c.time * h;
             let (a, b) = (&z[k * n..(k + 1) * n], &z[(k + 1) * n..(k + 2) * n]);
             for i in 0..n {
                 let mid = 0.5 * (a[i] + b[i]) - c.position_reference[i];
@@ -393,19 +501,31 @@ where
     }
 
     fn gradient(&mut self, z: &[f64], out: &mut [f64]) {
-        let (n, nu, h, c) = (self.n, self.nu, self.h, &self.problem.cost);
+        let (n, nu, c) = (self.n, self.nu, &self.problem.cost);
         out.fill(0.0);
         for k in 0..self.intervals {
+            let h = self.step(z, k);
+            // `∂/∂h` of the interval's running cost and of `ρ h` (free final time).
+            let mut along_h = c.time;
             for i in 0..n {
                 let (a, b) = (z[k * n + i], z[(k + 1) * n + i]);
-                let mid = c.position[i] * (0.5 * (a + b) - c.position_reference[i]) * 0.5 * h;
-                let v = c.velocity[i] * ((b - a) / h - c.velocity_reference[i]);
-                out[k * n + i] += mid - v;
-                out[(k + 1) * n + i] += mid + v;
+                let offset = 0.5 * (a + b) - c.position_reference[i];
+                let mid = c.position[i] * offset * 0.5 * h;
+                let v = (b - a) / h;
+                let dv = c.velocity[i] * (v - c.velocity_reference[i]);
+                out[k * n + i] += mid - dv;
+                out[(k + 1) * n + i] += mid + dv;
+                let reference = c.velocity_reference[i];
+                along_h += 0.5 * c.position[i] * offset * offset
+                    + 0.5 * c.velocity[i] * (reference * reference - v * v);
             }
             let start = (self.intervals + 1) * n + k * nu;
             for i in 0..nu {
                 out[start + i] = h * c.input[i] * z[start + i];
+                along_h += 0.5 * c.input[i] * z[start + i] * z[start + i];
+            }
+            if self.free {
+                out[self.step_index(k)] = along_h;
             }
         }
         let end = self.intervals * n;
@@ -416,11 +536,11 @@ where
 
     fn constraint_values(&mut self, z: &[f64], out: &mut [f64]) {
         let started = std::time::Instant::now();
-        let (n, h) = (self.n, self.h);
+        let n = self.n;
         out.fill(0.0);
         for k in 0..self.intervals {
             self.set_inputs(z, k);
-            let t = self.time(k);
+            let (t, h) = (self.time(z, k), self.step(z, k));
             if k == 0 {
                 let (q0, v0) = (self.problem.q0.clone(), self.problem.v0.clone());
                 self.given_momenta(t, q0.as_slice(), v0.as_slice());
@@ -439,9 +559,15 @@ where
         }
         if let Some(v_end) = self.problem.final_velocity.clone() {
             let last = self.intervals;
-            self.given_momenta(self.time(last), &z[last * n..(last + 1) * n], v_end.as_slice());
+            self.given_momenta(self.time(z, last), &z[last * n..(last + 1) * n], v_end.as_slice());
             for i in 0..n {
                 out[last * n + i] -= self.work.out[i];
+            }
+        }
+        if self.free {
+            let row0 = self.rows.len() * n;
+            for k in 0..self.intervals - 1 {
+                out[row0 + k] = z[self.step_index(k)] - z[self.step_index(k + 1)];
             }
         }
         self.evaluation += started.elapsed();
@@ -453,15 +579,15 @@ where
 
     fn jacobian_values(&mut self, z: &[f64], out: &mut [f64]) {
         let started = std::time::Instant::now();
-        let (n, h) = (self.n, self.h);
+        let n = self.n;
         const GIVEN_START: Map = Map { alpha: 0.0, beta: 0.0, gamma: 0.0 };
         const GIVEN_END: Map = Map { alpha: 0.0, beta: 1.0, gamma: 0.0 };
         out.fill(0.0);
         for k in 0..self.intervals {
             self.set_inputs(z, k);
-            let t = self.time(k);
+            let (t, h) = (self.time(z, k), self.step(z, k));
             let (a, b) = (&z[k * n..(k + 1) * n], &z[(k + 1) * n..(k + 2) * n]);
-            self.work.jacobian(&self.problem.model, t, a, b, h);
+            self.work.jacobian(&self.problem.model, t, a, b, h, self.free);
             // D₁ into the equations of node k, D₂ into those of node k + 1.
             self.add_rows(out, k, 0, k);
             self.add_rows(out, k + 1, n, k);
@@ -476,13 +602,20 @@ where
             }
         }
         if let Some(v_end) = self.problem.final_velocity.clone() {
-            let last = self.intervals;
+            let (last, h) = (self.intervals, self.step(z, self.intervals - 1));
             self.set_inputs(z, last - 1);
-            self.given_momenta(self.time(last), &z[last * n..(last + 1) * n], v_end.as_slice());
+            let t = self.time(z, last);
+            self.given_momenta(t, &z[last * n..(last + 1) * n], v_end.as_slice());
             self.work.jacobian.fill(0.0);
-            self.work.momentum_jacobian(&self.problem.model, self.time(last));
+            self.work.momentum_jacobian(&self.problem.model, t);
             self.work.pull_lv(GIVEN_END, 0, -1.0, h);
             self.add_rows(out, last, 0, last - 1);
+        }
+        if self.free {
+            let at = out.len() - 2 * (self.intervals - 1);
+            for pair in out[at..].chunks_exact_mut(2) {
+                pair.copy_from_slice(&[1.0, -1.0]);
+            }
         }
         self.evaluation += started.elapsed();
     }
@@ -493,11 +626,11 @@ where
 
     fn hessian_values(&mut self, z: &[f64], sigma: f64, mu: &[f64], out: &mut [f64]) {
         let started = std::time::Instant::now();
-        let (n, h) = (self.n, self.h);
+        let n = self.n;
         out.fill(0.0);
         for k in 0..self.intervals {
             self.set_inputs(z, k);
-            let t = self.time(k);
+            let (t, h) = (self.time(z, k), self.step(z, k));
             let (a, b) = (&z[k * n..(k + 1) * n], &z[(k + 1) * n..(k + 2) * n]);
             self.work.hessian.fill(0.0);
             let after = k + 1 < self.rows.len();
@@ -510,12 +643,18 @@ where
             }
             self.work.place(START, a, b, h);
             self.work.add_point_hessian(&self.problem.model, t, START, h);
+            if self.free {
+                self.work.add_step_hessian(&self.problem.model, t, START, h);
+            }
             for i in 0..n {
                 let next = if after { mu[(k + 1) * n + i] } else { 0.0 };
                 self.work.wq[i] = 0.5 * h * next;
             }
             self.work.place(END, a, b, h);
             self.work.add_point_hessian(&self.problem.model, t + h, END, h);
+            if self.free {
+                self.work.add_step_hessian(&self.problem.model, t + h, END, h);
+            }
             for i in 0..n {
                 let next = if after { mu[(k + 1) * n + i] } else { 0.0 };
                 self.work.wf[i] = 0.5 * h * (mu[k * n + i] + next);
@@ -524,6 +663,9 @@ where
             }
             self.work.place(MIDDLE, a, b, h);
             self.work.add_point_hessian(&self.problem.model, t + 0.5 * h, MIDDLE, h);
+            if self.free {
+                self.work.add_step_hessian(&self.problem.model, t + 0.5 * h, MIDDLE, h);
+            }
             self.work.wf.fill(0.0);
             if k == 0 {
                 // p_0's dependence on u_0.
@@ -552,7 +694,8 @@ where
                     h,
                 );
             }
-            self.add_cost_hessian(sigma, k + 1 == self.intervals);
+            let u = &z[(self.intervals + 1) * n + k * self.nu..][..self.nu];
+            self.add_cost_hessian(sigma, k + 1 == self.intervals, a, b, u, h);
             for (&(a, b), &at) in self.local.iter().zip(&self.scatter[k]) {
                 out[at] += self.work.hessian[(a, b)];
             }
@@ -578,6 +721,7 @@ where
                 Block::Q(j) if j == k => 0,
                 Block::Q(j) if j == k + 1 => n,
                 Block::U(j) if j == k => 2 * n,
+                Block::H(j) if j == k => 2 * n + self.nu,
                 _ => continue,
             };
             for i in 0..n {

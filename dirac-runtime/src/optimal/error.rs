@@ -58,6 +58,14 @@ pub enum OptimalError {
         /// The start or target outside them (NaN where the bounds cross).
         value: f64,
     },
+    /// The problem's final time is free, and what was asked of it keeps a fixed horizon.
+    #[error("{what} takes a fixed final time only: {why}")]
+    FixedTimeOnly {
+        /// The transcription or controller (`"Radau IIA collocation"`, `"Mpc"`).
+        what: &'static str,
+        /// Why, and what to use instead.
+        why: &'static str,
+    },
     /// The cost or a constraint is not finite at the initial guess, where the solver starts.
     #[error(
         "{what} is not finite at the initial guess ({detail}); start from a guess where the model can be evaluated"

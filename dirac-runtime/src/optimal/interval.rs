@@ -14,6 +14,16 @@
 //! Each term is a block of the model (`L_q`, `L_v` or `F`) at one of three points `x = (q, v, u)`,
 //! each an affine function of `z`: its derivatives are the blocks' own, pulled back through
 //! that map.
+//!
+//! With a free final time the step `h` is a variable too (the last entry of `z`). A point's
+//! weighted sum is then `S = h A(x) + B(x)` (the `L_q` and force terms carry `h`, the momenta
+//! do not) at `x(z, h)` whose velocity `(q_{k+1} − q_k)/h` moves with `h`
+//! (`∂x/∂h = X_h = (0, −v/h, 0)`). With `W = ∇²S` and `G = ∇S` at the point:
+//!
+//! ```text
+//! ∂²S/∂z∂h = (∇A + W X_h)ᵀ X_z − (1/h) G_vᵀ X_z,v
+//! ∂²S/∂h²  = 2 ∇A·X_h + X_hᵀ W X_h + G·X_hh          X_hh = (0, 2v/h², 0)
+//! ```
 
 use nalgebra::{DMatrix, DefaultAllocator};
 
@@ -68,11 +78,15 @@ where
     dpdot_du: Vec<f64>,
     f_u: Vec<f64>,
     l_vu: Vec<f64>,
-    /// `∂(D₁, D₂)/∂z`, `2n × (2n + n_u)`.
+    /// `∇A`, `G` and `W X_h` at a point, over `x = (q, v, u)` (free final time).
+    grad_a: Vec<f64>,
+    grad_s: Vec<f64>,
+    w_xh: Vec<f64>,
+    /// `∂(D₁, D₂)/∂z`, `2n × (2n + n_u + 1)`; the last column is `∂/∂h` (free final time).
     pub jacobian: DMatrix<f64>,
     /// The weighted Hessian at a point, one value per entry of the model's pattern.
     pub point_hessian: Vec<f64>,
-    /// The interval's Hessian in `z`, full and symmetric.
+    /// The interval's Hessian in `z = (q_k, q_{k+1}, u_k, h)`, full and symmetric.
     pub hessian: DMatrix<f64>,
     n: usize,
     nu: usize,
@@ -103,9 +117,12 @@ where
             dpdot_du: vec![0.0; n * nu],
             f_u: vec![0.0; n * nu],
             l_vu: vec![0.0; n * nu],
-            jacobian: DMatrix::zeros(2 * n, 2 * n + nu),
+            grad_a: vec![0.0; 2 * n + nu],
+            grad_s: vec![0.0; 2 * n + nu],
+            w_xh: vec![0.0; 2 * n + nu],
+            jacobian: DMatrix::zeros(2 * n, 2 * n + nu + 1),
             point_hessian: vec![0.0; model.weighted_hessian_pattern().len()],
-            hessian: DMatrix::zeros(2 * n + nu, 2 * n + nu),
+            hessian: DMatrix::zeros(2 * n + nu + 1, 2 * n + nu + 1),
             n,
             nu,
         }
@@ -161,23 +178,40 @@ where
         }
     }
 
-    /// `∂(D₁, D₂)/∂z` of the interval from `a` to `b` at `t` into [`Interval::jacobian`].
-    pub fn jacobian(&mut self, model: &M, t: f64, a: &[f64], b: &[f64], h: f64) {
+    /// `∂(D₁, D₂)/∂z` of the interval from `a` to `b` at `t` into [`Interval::jacobian`], with
+    /// the column `∂/∂h` if the step is `free`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn jacobian(&mut self, model: &M, t: f64, a: &[f64], b: &[f64], h: f64, free: bool) {
         self.jacobian.fill(0.0);
+        let (n, step) = (self.n, 2 * self.n + self.nu);
         for (map, t) in [(START, t), (END, t + h)] {
             self.place(map, a, b, h);
             self.lagrangian_blocks(model, t);
             // L_q at its own end of the interval, in D₁ at the start and D₂ at the end.
-            let row = if map.alpha == 1.0 { 0 } else { self.n };
+            let row = if map.alpha == 1.0 { 0 } else { n };
             self.pull_lq(map, row, 0.5 * h, h);
             // P in both, with opposite signs.
             self.pull_lv(map, 0, -0.5, h);
-            self.pull_lv(map, self.n, 0.5, h);
+            self.pull_lv(map, n, 0.5, h);
+            if free {
+                // `h/2 L_q`'s own factor.
+                model.dl_dq(t, &self.q, &self.v, &mut self.out);
+                for i in 0..n {
+                    self.jacobian[(row + i, step)] += 0.5 * self.out[i];
+                }
+            }
         }
         self.place(MIDDLE, a, b, h);
         self.force_blocks(model, t + 0.5 * h);
         self.pull_force(MIDDLE, 0, 0.5 * h, h);
-        self.pull_force(MIDDLE, self.n, 0.5 * h, h);
+        self.pull_force(MIDDLE, n, 0.5 * h, h);
+        if free {
+            model.force(t + 0.5 * h, &self.q, &self.v, &mut self.out);
+            for i in 0..n {
+                self.jacobian[(i, step)] += 0.5 * self.out[i];
+                self.jacobian[(n + i, step)] += 0.5 * self.out[i];
+            }
+        }
     }
 
     /// `L_qq`, `L_vq`, `L_vv`, `∂L_q/∂u` (in `dpdot_du`) and `L_vu` at the point placed.
@@ -207,7 +241,8 @@ where
     }
 
     /// Adds `s ∂G/∂z` to rows `row..row + n` of the Jacobian for a block `G` whose derivatives
-    /// with respect to `q`, `v` and `u` are `gq(i, j)`, `gv(i, j)` and `gu(i, j)`.
+    /// with respect to `q`, `v` and `u` are `gq(i, j)`, `gv(i, j)` and `gu(i, j)`, and to the
+    /// column `∂/∂h` what the point's velocity `v` moving with `h` brings.
     #[allow(clippy::too_many_arguments)]
     fn pull(
         jacobian: &mut DMatrix<f64>,
@@ -216,20 +251,24 @@ where
         row: usize,
         s: f64,
         h: f64,
+        v: &[f64],
         gq: impl Fn(usize, usize) -> f64,
         gv: impl Fn(usize, usize) -> f64,
         gu: impl Fn(usize, usize) -> f64,
     ) {
         let gamma = map.gamma / h;
         for i in 0..n {
+            let mut along_h = 0.0;
             for j in 0..n {
                 let (dq, dv) = (gq(i, j), gv(i, j));
                 jacobian[(row + i, j)] += s * (map.alpha * dq - gamma * dv);
                 jacobian[(row + i, n + j)] += s * (map.beta * dq + gamma * dv);
+                along_h -= dv * v[j];
             }
             for k in 0..nu {
                 jacobian[(row + i, 2 * n + k)] += s * gu(i, k);
             }
+            jacobian[(row + i, 2 * n + nu)] += s * gamma * along_h;
         }
     }
 
@@ -238,7 +277,7 @@ where
         let gq = |i, j| l_qq[(i, j)];
         let gv = |i, j| l_vq[(j, i)];
         let gu = |i, k| l_qu[k * n + i];
-        Self::pull(&mut self.jacobian, (n, self.nu), map, row, s, h, gq, gv, gu);
+        Self::pull(&mut self.jacobian, (n, self.nu), map, row, s, h, self.v.as_slice(), gq, gv, gu);
     }
 
     /// Adds `s ∂L_v/∂z` (at the point placed) to rows `row..row + n`.
@@ -247,7 +286,7 @@ where
         let gq = |i, j| l_vq[(i, j)];
         let gv = |i, j| l_vv[(i, j)];
         let gu = |i, k| l_vu[k * n + i];
-        Self::pull(&mut self.jacobian, (n, self.nu), map, row, s, h, gq, gv, gu);
+        Self::pull(&mut self.jacobian, (n, self.nu), map, row, s, h, self.v.as_slice(), gq, gv, gu);
     }
 
     fn pull_force(&mut self, map: Map, row: usize, s: f64, h: f64) {
@@ -255,7 +294,7 @@ where
         let gq = |i, j| f_q[(i, j)];
         let gv = |i, j| f_v[(i, j)];
         let gu = |i, k| f_u[k * n + i];
-        Self::pull(&mut self.jacobian, (n, self.nu), map, row, s, h, gq, gv, gu);
+        Self::pull(&mut self.jacobian, (n, self.nu), map, row, s, h, self.v.as_slice(), gq, gv, gu);
     }
 
     /// Adds the weighted Hessian at the point placed (weights in `wq`, `wv`, `wf`), pulled
@@ -267,6 +306,71 @@ where
         for (&(r, c), &value) in pattern.iter().zip(self.point_hessian.iter()) {
             add_pulled(&mut self.hessian, map, self.n, h, r, c, value);
         }
+    }
+
+    /// Adds the row and column `h` of the Hessian of the point's weighted sum to
+    /// [`Interval::hessian`] (free final time), after [`Interval::add_point_hessian`] at the
+    /// same point and weights has left `W` in [`Interval::point_hessian`]. The point's
+    /// velocity must be the interval's (`map.gamma = 1`).
+    #[allow(clippy::needless_range_loop)]
+    pub fn add_step_hessian(&mut self, model: &M, t: f64, map: Map, h: f64) {
+        let (n, nu) = (self.n, self.nu);
+        let (dx, step) = (2 * n + nu, 2 * n + nu);
+        self.lagrangian_blocks(model, t);
+        self.force_blocks(model, t);
+        // `∇A` (the terms weighted by `wq` and `wf`, which carry `h`, divided by it) and
+        // `G = h ∇A + ∇(wv·L_v)`; `dpdot_du` now holds `∂L_q/∂u`.
+        for r in 0..n {
+            let (mut a_q, mut a_v, mut b_q, mut b_v) = (0.0, 0.0, 0.0, 0.0);
+            for i in 0..n {
+                let (wq, wv, wf) = (self.wq[i], self.wv[i], self.wf[i]);
+                a_q += wq * self.l_qq[(i, r)] + wf * self.f_q[(i, r)];
+                a_v += wq * self.l_vq[(r, i)] + wf * self.f_v[(i, r)];
+                b_q += wv * self.l_vq[(i, r)];
+                b_v += wv * self.l_vv[(i, r)];
+            }
+            self.grad_a[r] = a_q / h;
+            self.grad_a[n + r] = a_v / h;
+            self.grad_s[r] = a_q + b_q;
+            self.grad_s[n + r] = a_v + b_v;
+        }
+        for k in 0..nu {
+            let (mut a, mut b) = (0.0, 0.0);
+            for i in 0..n {
+                a += self.wq[i] * self.dpdot_du[k * n + i] + self.wf[i] * self.f_u[k * n + i];
+                b += self.wv[i] * self.l_vu[k * n + i];
+            }
+            self.grad_a[2 * n + k] = a / h;
+            self.grad_s[2 * n + k] = a + b;
+        }
+        // `X_h` is `−v/h` in the velocity entries; `W X_h` from `W`'s pattern.
+        let x_h =
+            |r: usize, v: &VecQ<M>| if (n..2 * n).contains(&r) { -map.gamma * v[r - n] / h } else { 0.0 };
+        self.w_xh.fill(0.0);
+        for (&(r, c), &value) in model.weighted_hessian_pattern().iter().zip(self.point_hessian.iter()) {
+            self.w_xh[r] += value * x_h(c, &self.v);
+            if r != c {
+                self.w_xh[c] += value * x_h(r, &self.v);
+            }
+        }
+        let mut hh = 0.0;
+        for r in 0..dx {
+            let xh = x_h(r, &self.v);
+            hh += 2.0 * self.grad_a[r] * xh + xh * self.w_xh[r];
+            let mut coefficient = self.grad_a[r] + self.w_xh[r];
+            if (n..2 * n).contains(&r) {
+                coefficient -= self.grad_s[r] / h;
+                hh += self.grad_s[r] * 2.0 * map.gamma * self.v[r - n] / (h * h);
+            }
+            for (a, pa) in map.column(r, n, h) {
+                let x = coefficient * pa;
+                if x != 0.0 {
+                    self.hessian[(a, step)] += x;
+                    self.hessian[(step, a)] += x;
+                }
+            }
+        }
+        self.hessian[(step, step)] += hh;
     }
 }
 

@@ -153,11 +153,10 @@ where
         wall: std::time::Duration,
     ) -> Optimum {
         let nodes = self.problem.intervals + 1;
-        let h = self.problem.step();
         let mut g = vec![0.0; self.constraints()];
         self.constraint_values(z, &mut g);
         Optimum {
-            times: (0..nodes).map(|k| self.problem.t0 + k as f64 * h).collect(),
+            times: (0..nodes).map(|k| self.time(z, k)).collect(),
             positions: (0..nodes).map(|k| self.node(z, k)).collect(),
             momenta: self.momenta(z),
             inputs: (0..self.problem.intervals).map(|k| self.inputs(z, k)).collect(),

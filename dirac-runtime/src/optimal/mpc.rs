@@ -64,6 +64,10 @@ where
     /// The controller for `problem` (its start is replaced by the state at each sample), or
     /// the typed error that makes the problem unusable.
     pub fn new(problem: Problem<M>, options: InteriorOptions) -> Result<Self, OptimalError> {
+        if problem.free_time.is_some() {
+            let why = "a receding horizon keeps its length from sample to sample; drop `free_final_time`";
+            return Err(OptimalError::FixedTimeOnly { what: "Mpc", why });
+        }
         let dmoc = Dmoc::new(problem)?;
         let solver = InteriorPoint::new(&dmoc)
             .map_err(|why| OptimalError::Unsupported { model: core::any::type_name::<M>(), why })?;

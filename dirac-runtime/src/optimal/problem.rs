@@ -33,6 +33,8 @@ where
     pub(crate) final_velocity: Option<VecQ<M>>,
     pub(crate) position_bounds: Vec<(f64, f64)>,
     pub(crate) input_bounds: Vec<(f64, f64)>,
+    /// The bounds of a free final time, `None` if the horizon is fixed.
+    pub(crate) free_time: Option<(f64, f64)>,
     pub(crate) cost: Cost,
     pub(crate) guess: Option<Guess>,
 }
@@ -54,6 +56,7 @@ where
             final_velocity: self.final_velocity.clone(),
             position_bounds: self.position_bounds.clone(),
             input_bounds: self.input_bounds.clone(),
+            free_time: self.free_time,
             cost: self.cost.clone(),
             guess: self.guess.clone(),
         }
@@ -70,6 +73,8 @@ pub(crate) struct Cost {
     pub velocity_reference: Vec<f64>,
     pub terminal: Vec<f64>,
     pub terminal_reference: Vec<f64>,
+    /// The weight `ρ` of the final time: `ρ (t_N − t_0)`.
+    pub time: f64,
 }
 
 /// Where the solver starts: positions at every node and inputs on every interval.
@@ -99,6 +104,7 @@ where
             final_velocity: None,
             position_bounds: vec![(f64::NEG_INFINITY, f64::INFINITY); n],
             input_bounds: vec![(f64::NEG_INFINITY, f64::INFINITY); nu],
+            free_time: None,
             cost: Cost {
                 input: vec![1.0; nu],
                 position: vec![0.0; n],
@@ -107,6 +113,7 @@ where
                 velocity_reference: vec![0.0; n],
                 terminal: vec![0.0; n],
                 terminal_reference: vec![0.0; n],
+                time: 0.0,
             },
             guess: None,
         }
@@ -181,6 +188,26 @@ where
     pub fn terminal_weight(mut self, c: Coordinate<M>, w: f64, reference: f64) -> Self {
         self.cost.terminal[c.index()] = w;
         self.cost.terminal_reference[c.index()] = reference;
+        self
+    }
+
+    /// Lets the final time vary: the horizon becomes an unknown between `shortest` and
+    /// `longest` seconds, and the intervals stay equal (`h = T/N`); the horizon given to
+    /// [`Problem::new`] is where the solver starts. With [`Problem::time_weight`] the cost
+    /// prices time, for time-optimal motions.
+    ///
+    /// The model must not read time: the derivatives with respect to the horizon are taken at
+    /// fixed `(q, v, u)` through the step alone (a model whose equations change with `t` is
+    /// refused when the transcription checks its guess).
+    pub fn free_final_time(mut self, shortest: f64, longest: f64) -> Self {
+        self.free_time = Some((shortest, longest));
+        self
+    }
+
+    /// The weight `ρ` of the horizon in the cost, `ρ T`: with a free final time, what a second
+    /// of motion costs against the running cost.
+    pub fn time_weight(mut self, rho: f64) -> Self {
+        self.cost.time = rho;
         self
     }
 
@@ -259,6 +286,24 @@ where
         let indexable = entries.is_some_and(|e| e <= i32::MAX as usize);
         if !(self.horizon.is_finite() && self.horizon > 0.0) || self.intervals == 0 || !indexable {
             return Err(OptimalError::InvalidGrid { horizon: self.horizon, intervals: self.intervals });
+        }
+        finite("the weight", "the final time", self.cost.time)?;
+        if let Some((shortest, longest)) = self.free_time {
+            let name = "the final time";
+            bounds(name, shortest, longest)?;
+            if !(shortest > 0.0 && longest.is_finite()) {
+                let why = "a free final time needs a positive shortest and a finite longest horizon";
+                let value = if shortest > 0.0 { longest } else { shortest };
+                return Err(OptimalError::InfeasibleBounds {
+                    name: name.to_string(),
+                    why,
+                    lower: shortest,
+                    upper: longest,
+                    value,
+                });
+            }
+            let why = "the horizon the solver starts from is outside the final time's bounds";
+            inside(name, why, shortest, longest, self.horizon)?;
         }
         let coordinates = self.model.coordinate_names();
         let inputs = self.model.input_names();
