@@ -1582,4 +1582,18 @@ fn a_warm_started_interior_point_solve_does_not_allocate() {
     let during = allocations() - before;
     assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
     assert_eq!(during, 0, "a warm-started free-final-time solve allocated {during} times");
+
+    let mut collocation = Collocation::new(dmoc.problem().clone()).expect("well-formed");
+    let mut solver = InteriorPoint::new(&collocation).expect("equations only");
+    assert!(solver.solve(&mut collocation, &options).solved);
+    let (x, _) = solver.point_mut();
+    let inputs = (3 * 30 + 1) * 4;
+    for u in &mut x[inputs..inputs + 30] {
+        *u *= 0.9;
+    }
+    let before = allocations();
+    let result = solver.resolve(&mut collocation, &options);
+    let during = allocations() - before;
+    assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
+    assert_eq!(during, 0, "a warm-started free-final-time collocation solve allocated {during} times");
 }

@@ -183,8 +183,9 @@ fn the_transcriptions_derivatives_match_central_differences() {
     check_derivatives(&mut dmoc, &z, 1e-6);
 }
 
-/// A scattered point of a free-final-time DMOC program whose last `intervals` variables, the
-/// steps, are positive and unequal, so that each interval's own step is exercised.
+/// A scattered point of a free-final-time program (either transcription) whose last
+/// `intervals` variables, the steps, are positive and unequal, so that each interval's own
+/// step is exercised.
 fn with_steps(variables: usize, intervals: usize, seed: f64) -> Vec<f64> {
     let mut z = scattered(variables, seed);
     for (k, h) in z[variables - intervals..].iter_mut().enumerate() {
@@ -204,6 +205,9 @@ fn a_free_final_times_derivatives_match_central_differences() {
         .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]))
         .free_final_time(0.5, 4.0)
         .time_weight(0.7);
+    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+    let z = with_steps(collocation.variables(), 4, 0.1);
+    check_derivatives(&mut collocation, &z, 1e-6);
     let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
     let z = with_steps(dmoc.variables(), 4, 0.1);
     check_derivatives(&mut dmoc, &z, 1e-6);
@@ -213,6 +217,9 @@ fn a_free_final_times_derivatives_match_central_differences() {
         .start(VecQ::<Steered>::from([0.2, -0.1]), VecQ::<Steered>::from([0.5, 0.7]))
         .final_state(VecQ::<Steered>::from([1.0, 0.5]), VecQ::<Steered>::from([0.1, 0.2]))
         .free_final_time(0.5, 3.0);
+    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+    let z = with_steps(collocation.variables(), 5, 0.4);
+    check_derivatives(&mut collocation, &z, 1e-6);
     let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
     let z = with_steps(dmoc.variables(), 5, 0.4);
     check_derivatives(&mut dmoc, &z, 1e-6);
@@ -224,6 +231,9 @@ fn a_free_final_times_derivatives_match_central_differences() {
         )
         .free_final_time(0.5, 2.0)
         .time_weight(3.0);
+    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+    let z = with_steps(collocation.variables(), 3, 0.2);
+    check_derivatives(&mut collocation, &z, 1e-6);
     let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
     let z = with_steps(dmoc.variables(), 3, 0.2);
     check_derivatives(&mut dmoc, &z, 1e-6);
@@ -266,38 +276,65 @@ fn a_free_final_time_trades_time_against_effort_as_the_closed_form_does() {
             .free_final_time(0.1, 10.0)
             .time_weight(rho)
     };
-    let mut errors = Vec::new();
-    for intervals in [10, 20, 40] {
-        let reference = Dmoc::new(problem(intervals))
-            .expect("well-formed")
-            .solve(&IpoptOptions::default())
-            .expect("IPOPT");
-        let ours = Dmoc::new(problem(intervals))
-            .expect("well-formed")
-            .solve_interior(&InteriorOptions::default())
-            .expect("the interior point solves it");
-        let horizon = ours.times[intervals] - ours.times[0];
-        eprintln!(
-            "N = {intervals}: T = {horizon:.10} (exact {exact_t}), cost {:.10} (exact {exact_cost}), IPOPT {:.10}; \
-             iterations {} and {} (IPOPT)",
-            ours.cost, reference.cost, ours.iterations, reference.iterations
-        );
-        assert!((ours.cost - reference.cost).abs() <= 1e-8 * reference.cost, "the solvers' optima differ");
-        // The steps stay equal: the nodes are evenly spaced.
-        let h = horizon / intervals as f64;
-        for (k, t) in ours.times.iter().enumerate() {
-            assert!((t - k as f64 * h).abs() < 1e-9 * horizon, "node {k} at {t}, not {}", k as f64 * h);
+    // Both transcriptions hold the push over each interval, so both are second order in the
+    // cost. Under a held push this model's motion is a quadratic in time, which both integrate
+    // exactly, so their optima are the same program's: equal to round-off.
+    let mut optima = Vec::new();
+    for collocated in [false, true] {
+        let mut errors = Vec::new();
+        for intervals in [10, 20, 40] {
+            let solve = |interior: bool| {
+                let options = (IpoptOptions::default(), InteriorOptions::default());
+                match (collocated, interior) {
+                    (false, false) => Dmoc::new(problem(intervals)).expect("well-formed").solve(&options.0),
+                    (false, true) => {
+                        Dmoc::new(problem(intervals)).expect("well-formed").solve_interior(&options.1)
+                    }
+                    (true, false) => {
+                        Collocation::new(problem(intervals)).expect("well-formed").solve(&options.0)
+                    }
+                    (true, true) => {
+                        Collocation::new(problem(intervals)).expect("well-formed").solve_interior(&options.1)
+                    }
+                }
+            };
+            let reference = solve(false).expect("IPOPT solves it");
+            let ours = solve(true).expect("the interior point solves it");
+            let horizon = ours.times[intervals] - ours.times[0];
+            eprintln!(
+                "{} N = {intervals}: T = {horizon:.10} (exact {exact_t}), cost {:.10} (exact {exact_cost}), \
+                 IPOPT {:.10}; iterations {} and {} (IPOPT)",
+                if collocated { "collocation" } else { "DMOC" },
+                ours.cost,
+                reference.cost,
+                ours.iterations,
+                reference.iterations
+            );
+            assert!(
+                (ours.cost - reference.cost).abs() <= 1e-8 * reference.cost,
+                "the solvers' optima differ"
+            );
+            // The steps stay equal: the nodes are evenly spaced.
+            let h = horizon / intervals as f64;
+            for (k, t) in ours.times.iter().enumerate() {
+                assert!((t - k as f64 * h).abs() < 1e-9 * horizon, "node {k} at {t}, not {}", k as f64 * h);
+            }
+            errors.push(((horizon - exact_t).abs(), (ours.cost - exact_cost).abs()));
+            optima.push((horizon, ours.cost));
         }
-        errors.push(((horizon - exact_t).abs(), (ours.cost - exact_cost).abs()));
+        for pair in errors.windows(2) {
+            let horizon_order = (pair[0].0 / pair[1].0).log2();
+            let cost_order = (pair[0].1 / pair[1].1).log2();
+            assert!(
+                (1.8..2.3).contains(&horizon_order),
+                "the horizon converges at order {horizon_order}: {errors:?}"
+            );
+            assert!((1.8..2.3).contains(&cost_order), "the cost converges at order {cost_order}: {errors:?}");
+        }
     }
-    for pair in errors.windows(2) {
-        let horizon_order = (pair[0].0 / pair[1].0).log2();
-        let cost_order = (pair[0].1 / pair[1].1).log2();
-        assert!(
-            (1.8..2.3).contains(&horizon_order),
-            "the horizon converges at order {horizon_order}: {errors:?}"
-        );
-        assert!((1.8..2.3).contains(&cost_order), "the cost converges at order {cost_order}: {errors:?}");
+    for (dmoc, collocated) in optima[..3].iter().zip(&optima[3..]) {
+        assert!((dmoc.0 - collocated.0).abs() < 1e-9, "horizons {dmoc:?} and {collocated:?}");
+        assert!((dmoc.1 - collocated.1).abs() < 1e-9 * dmoc.1, "costs {dmoc:?} and {collocated:?}");
     }
 }
 
@@ -509,22 +546,24 @@ fn malformed_problems_are_refused_by_name() {
             other => panic!("{other}"),
         }
     }
-    // What keeps a fixed horizon, and a model whose equations move with time.
+    // A receding horizon keeps its length, and a model whose equations move with time cannot
+    // have its horizon moved.
     let free = swing_up(10).free_final_time(1.0, 3.0);
-    let error = Collocation::new(free.clone()).err().expect("refused");
-    assert!(matches!(error, OptimalError::FixedTimeOnly { what: "Radau IIA collocation", .. }), "{error}");
     let error = Mpc::new(free, InteriorOptions::default()).err().expect("refused");
     assert!(matches!(error, OptimalError::FixedTimeOnly { what: "Mpc", .. }), "{error}");
     let shaken = ShakenAnchor { m: 1.0, k: 4.0, f: 0.0 };
     let problem =
         Problem::new(shaken, 1.0, 10).final_position(ShakenAnchor::X, 1.0).free_final_time(0.5, 2.0);
-    match Dmoc::new(problem)
-        .expect("well-formed")
-        .solve_interior(&InteriorOptions::default())
-        .expect_err("refused")
-    {
-        OptimalError::Unsupported { why, .. } => assert!(why.contains("change with time"), "{why}"),
-        other => panic!("{other}"),
+    let options = InteriorOptions::default();
+    let errors = [
+        Dmoc::new(problem.clone()).expect("well-formed").solve_interior(&options).expect_err("refused"),
+        Collocation::new(problem).expect("well-formed").solve_interior(&options).expect_err("refused"),
+    ];
+    for error in errors {
+        match error {
+            OptimalError::Unsupported { why, .. } => assert!(why.contains("change with time"), "{why}"),
+            other => panic!("{other}"),
+        }
     }
     // A swing-up the bounded push cannot reach: IPOPT's own status, by name.
     let problem = swing_up(20).input_bounds(CartPole::F, -0.1, 0.1);

@@ -19,6 +19,10 @@
 //!
 //! The cost is that of the [`Problem`], with the running part integrated by the method's own
 //! quadrature, `h Σ_j b_j ℓ(X_j, u_k)`.
+//!
+//! With a free final time, each interval's step `h_k` is a variable after the inputs, held
+//! equal to the next by a row `h_k − h_{k+1} = 0`. The stage equations are linear in it, so
+//! its second derivatives are the first derivatives of what it multiplies.
 
 use std::collections::BTreeMap;
 
@@ -46,13 +50,19 @@ where
     nu: usize,
     intervals: usize,
     h: f64,
+    /// Whether the steps are variables (a free final time).
+    free: bool,
     jacobian_pattern: Vec<(usize, usize)>,
     hessian_pattern: Vec<(usize, usize)>,
     /// For each interval and each of its four points, the global index of each entry of the
     /// model's weighted Hessian pattern.
     scatter: Vec<usize>,
-    /// The cost's diagonal: `(entry, coefficient)` with the coefficient before `σ`.
-    cost_diagonal: Vec<(usize, f64)>,
+    /// The cost's diagonal: `(entry, coefficient, interval)`, the coefficient before `σ` and
+    /// before the step of its interval, if it has one.
+    cost_diagonal: Vec<(usize, f64, Option<usize>)>,
+    /// For each interval, the global index of its step's row of the Hessian against the
+    /// `(q, v)` of its three stages and its inputs (free final time).
+    step_scatter: Vec<usize>,
     work: Work<M>,
     /// Time spent in the model's generated functions and their assembly, for the statistics.
     pub(crate) evaluation: std::time::Duration,
@@ -96,20 +106,19 @@ where
     /// The collocation of `problem`, refused with a typed error if the problem is malformed.
     pub fn new(problem: Problem<M>) -> Result<Self, OptimalError> {
         problem.check()?;
-        if problem.free_time.is_some() {
-            let why = "its steps are not variables; transcribe a free final time with `Dmoc`";
-            return Err(OptimalError::FixedTimeOnly { what: "Radau IIA collocation", why });
-        }
         let (n, nu, intervals) = (M::NQ, M::NAMES.input_count(), problem.intervals);
-        // Three stages of `5n + n (8n + n_u)` entries per interval, indexed by 32-bit integers.
-        let entries = intervals.checked_mul(3 * n * (8 * n + nu + 5));
+        // Three stages of `5n + n (8n + n_u)` entries per interval (and a step's column),
+        // indexed by 32-bit integers.
+        let entries = intervals.checked_mul(3 * n * (8 * n + nu + 7));
         if entries.is_none_or(|e| e > i32::MAX as usize) {
             return Err(OptimalError::InvalidGrid { horizon: problem.horizon, intervals });
         }
         let h = problem.step();
+        let free = problem.free_time.is_some();
         let points = 3 * intervals + 1;
         let inputs0 = points * 2 * n;
         let point = |p: usize| p * 2 * n;
+        let step = |k: usize| inputs0 + intervals * nu + k;
 
         let mut jacobian_pattern = Vec::new();
         for k in 0..intervals {
@@ -122,13 +131,26 @@ where
                     for j in 1..4 {
                         jacobian_pattern.push((row0 + c, point(base + j) + n + c));
                     }
+                    if free {
+                        jacobian_pattern.push((row0 + c, step(k)));
+                    }
                 }
                 for c in 0..n {
                     for j in 0..4 {
                         jacobian_pattern.extend((0..2 * n).map(|x| (row0 + n + c, point(base + j) + x)));
                     }
                     jacobian_pattern.extend((0..nu).map(|x| (row0 + n + c, inputs0 + k * nu + x)));
+                    if free {
+                        jacobian_pattern.push((row0 + n + c, step(k)));
+                    }
                 }
+            }
+        }
+        if free {
+            // h_k − h_{k+1} = 0.
+            let row0 = 3 * intervals * 2 * n;
+            for k in 0..intervals - 1 {
+                jacobian_pattern.extend([(row0 + k, step(k)), (row0 + k, step(k + 1))]);
             }
         }
 
@@ -153,20 +175,39 @@ where
             for j in 1..4 {
                 for i in 0..n {
                     let b = A[2][j - 1];
-                    diagonal.push((point(3 * k + j) + i, h * b * cost.position[i]));
-                    diagonal.push((point(3 * k + j) + n + i, h * b * cost.velocity[i]));
+                    diagonal.push((point(3 * k + j) + i, b * cost.position[i], Some(k)));
+                    diagonal.push((point(3 * k + j) + n + i, b * cost.velocity[i], Some(k)));
                 }
             }
-            diagonal.extend((0..nu).map(|i| (inputs0 + k * nu + i, h * cost.input[i])));
+            diagonal.extend((0..nu).map(|i| (inputs0 + k * nu + i, cost.input[i], Some(k))));
         }
-        diagonal.extend((0..n).map(|i| (point(3 * intervals) + i, cost.terminal[i])));
-        diagonal.retain(|&(_, w)| w != 0.0);
-        for &(at, _) in &diagonal {
+        diagonal.extend((0..n).map(|i| (point(3 * intervals) + i, cost.terminal[i], None)));
+        diagonal.retain(|&(_, w, _)| w != 0.0);
+        for &(at, _, _) in &diagonal {
             index.entry((at, at)).or_insert(0);
+        }
+        // The step's row: against every stage's `(q, v)` and the inputs of its interval.
+        let step_columns = |k: usize| {
+            let stages = (1..4).flat_map(move |j| (0..2 * n).map(move |x| point(3 * k + j) + x));
+            stages.chain((0..nu).map(move |x| inputs0 + k * nu + x))
+        };
+        if free {
+            for k in 0..intervals {
+                for column in step_columns(k) {
+                    index.entry((step(k), column)).or_insert(0);
+                }
+            }
         }
         for (i, value) in index.values_mut().enumerate() {
             *value = i;
         }
+        let step_scatter = match free {
+            true => (0..intervals)
+                .flat_map(|k| step_columns(k).map(move |c| (step(k), c)))
+                .map(|e| index[&e])
+                .collect(),
+            false => Vec::new(),
+        };
         let mut scatter = Vec::with_capacity(intervals * 4 * model_pattern.len());
         for k in 0..intervals {
             for j in 0..4 {
@@ -174,7 +215,7 @@ where
                     .extend(model_pattern.iter().map(|&(r, c)| index[&(global(k, j, r), global(k, j, c))]));
             }
         }
-        let cost_diagonal = diagonal.iter().map(|&(at, w)| (index[&(at, at)], w)).collect();
+        let cost_diagonal = diagonal.iter().map(|&(at, w, k)| (index[&(at, at)], w, k)).collect();
         let hessian_pattern = index.into_keys().collect();
 
         let zm = MatQQ::<M>::zeros;
@@ -205,10 +246,12 @@ where
             nu,
             intervals,
             h,
+            free,
             jacobian_pattern,
             hessian_pattern,
             scatter,
             cost_diagonal,
+            step_scatter,
             work,
             evaluation: std::time::Duration::ZERO,
         })
@@ -234,9 +277,25 @@ where
         }
     }
 
+    /// Where the step of interval `k` is in `z` (free final time).
+    fn step_index(&self, k: usize) -> usize {
+        self.input_start(self.intervals) + k
+    }
+
+    /// The step of interval `k`: the problem's, or the variable's with a free final time.
+    fn step(&self, z: &[f64], k: usize) -> f64 {
+        if self.free { z[self.step_index(k)] } else { self.h }
+    }
+
     /// The time of point `j` of interval `k`.
-    fn time(&self, k: usize, j: usize) -> f64 {
-        self.problem.t0 + (k as f64 + C[j]) * self.h
+    fn time(&self, z: &[f64], k: usize, j: usize) -> f64 {
+        match self.free {
+            true => {
+                let before: f64 = (0..k).map(|i| z[self.step_index(i)]).sum();
+                self.problem.t0 + before + C[j] * self.step(z, k)
+            }
+            false => self.problem.t0 + (k as f64 + C[j]) * self.h,
+        }
     }
 
     /// Places point `p` of `z` in the work's `(q, v)`.
@@ -254,7 +313,7 @@ where
         let n = self.n;
         for j in 0..4 {
             self.place(z, 3 * k + j);
-            let t = self.time(k, j);
+            let t = self.time(z, k, j);
             let model = &self.problem.model;
             let w = &mut self.work;
             model.dl_dv(t, &w.q, &w.v, &mut w.out);
@@ -275,7 +334,7 @@ where
         let n = self.n;
         for j in 0..4 {
             self.place(z, 3 * k + j);
-            let t = self.time(k, j);
+            let t = self.time(z, k, j);
             let model = &self.problem.model;
             let w = &mut self.work;
             model.l_vq(t, &w.q, &w.v, &mut w.p_q[j]);
@@ -318,7 +377,9 @@ where
             }
         }
         Optimum {
-            times: (0..=intervals).map(|k| self.time(k, 0)).collect(),
+            times: (0..=intervals)
+                .map(|k| if k < intervals { self.time(z, k, 0) } else { self.time(z, k - 1, 3) })
+                .collect(),
             positions: (0..=intervals).map(|k| z[self.point(3 * k)..][..n].to_vec()).collect(),
             momenta,
             inputs: (0..intervals).map(|k| z[self.input_start(k)..][..self.nu].to_vec()).collect(),
@@ -348,6 +409,9 @@ where
                 }
             }
             z[self.input_start(k)..][..self.nu].copy_from_slice(&inputs[k]);
+            if self.free {
+                z[self.step_index(k)] = h;
+            }
         }
         for i in 0..n {
             z[n + i] = p.v0[i];
@@ -381,6 +445,20 @@ where
                 ),
             });
         }
+        if self.free {
+            // A model that does not read `t` gives the same equations, bit for bit, a horizon
+            // later.
+            let t0 = self.problem.t0;
+            self.problem.t0 = t0 + self.problem.horizon;
+            let mut later = vec![0.0; g.len()];
+            self.constraint_values(z, &mut later);
+            self.problem.t0 = t0;
+            if later != g {
+                let why = "its equations change with time, and a free final time moves every point's time: \
+                           only models that do not read `t` take a free final time";
+                return Err(OptimalError::Unsupported { model: core::any::type_name::<M>(), why });
+            }
+        }
         Ok(())
     }
 }
@@ -391,11 +469,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn variables(&self) -> usize {
-        (3 * self.intervals + 1) * 2 * self.n + self.intervals * self.nu
+        (3 * self.intervals + 1) * 2 * self.n + self.intervals * (self.nu + usize::from(self.free))
     }
 
     fn constraints(&self) -> usize {
-        3 * self.intervals * 2 * self.n
+        3 * self.intervals * 2 * self.n + if self.free { self.intervals - 1 } else { 0 }
     }
 
     fn variable_bounds(&self, lower: &mut [f64], upper: &mut [f64]) {
@@ -428,6 +506,13 @@ where
                 (lower[at], upper[at]) = (l, u);
             }
         }
+        if let Some((shortest, longest)) = p.free_time {
+            let per = self.intervals as f64;
+            for k in 0..self.intervals {
+                let at = self.step_index(k);
+                (lower[at], upper[at]) = (shortest / per, longest / per);
+            }
+        }
     }
 
     fn constraint_bounds(&self, lower: &mut [f64], upper: &mut [f64]) {
@@ -440,9 +525,11 @@ where
     }
 
     fn objective(&mut self, z: &[f64]) -> f64 {
-        let (n, nu, h, c) = (self.n, self.nu, self.h, &self.problem.cost);
+        let (n, nu, c) = (self.n, self.nu, &self.problem.cost);
         let mut total = 0.0;
         for k in 0..self.intervals {
+            let h = self.step(z, k);
+            total += c.time * h;
             for j in 1..4 {
                 let at = self.point(3 * k + j);
                 let mut running = 0.0;
@@ -465,19 +552,29 @@ where
     }
 
     fn gradient(&mut self, z: &[f64], out: &mut [f64]) {
-        let (n, nu, h, c) = (self.n, self.nu, self.h, &self.problem.cost);
+        let (n, nu, c) = (self.n, self.nu, &self.problem.cost);
         out.fill(0.0);
         for k in 0..self.intervals {
+            let h = self.step(z, k);
+            // The interval's running cost over `h`, and `ρ`: its derivative in the step.
+            let mut along_h = c.time;
             for j in 1..4 {
                 let (at, b) = (self.point(3 * k + j), A[2][j - 1]);
                 for i in 0..n {
-                    out[at + i] = h * b * c.position[i] * (z[at + i] - c.position_reference[i]);
-                    out[at + n + i] = h * b * c.velocity[i] * (z[at + n + i] - c.velocity_reference[i]);
+                    let dq = z[at + i] - c.position_reference[i];
+                    let dv = z[at + n + i] - c.velocity_reference[i];
+                    out[at + i] = h * b * c.position[i] * dq;
+                    out[at + n + i] = h * b * c.velocity[i] * dv;
+                    along_h += 0.5 * b * (c.position[i] * dq * dq + c.velocity[i] * dv * dv);
                 }
             }
             let start = self.input_start(k);
             for i in 0..nu {
                 out[start + i] = h * c.input[i] * z[start + i];
+                along_h += 0.5 * c.input[i] * z[start + i] * z[start + i];
+            }
+            if self.free {
+                out[self.step_index(k)] = along_h;
             }
         }
         let end = self.point(3 * self.intervals);
@@ -489,8 +586,9 @@ where
     #[allow(clippy::needless_range_loop)]
     fn constraint_values(&mut self, z: &[f64], out: &mut [f64]) {
         let started = std::time::Instant::now();
-        let (n, h) = (self.n, self.h);
+        let n = self.n;
         for k in 0..self.intervals {
+            let h = self.step(z, k);
             self.set_inputs(z, k);
             self.values(z, k);
             let base = 3 * k;
@@ -509,6 +607,12 @@ where
                 }
             }
         }
+        if self.free {
+            let row0 = 3 * self.intervals * 2 * n;
+            for k in 0..self.intervals - 1 {
+                out[row0 + k] = z[self.step_index(k)] - z[self.step_index(k + 1)];
+            }
+        }
         self.evaluation += started.elapsed();
     }
 
@@ -519,21 +623,30 @@ where
     #[allow(clippy::needless_range_loop)]
     fn jacobian_values(&mut self, z: &[f64], out: &mut [f64]) {
         let started = std::time::Instant::now();
-        let (n, nu, h) = (self.n, self.nu, self.h);
-        let stage_entries = 5 * n + n * (8 * n + nu);
+        let (n, nu, free) = (self.n, self.nu, usize::from(self.free));
+        let stage_entries = (5 + free) * n + n * (8 * n + nu + free);
         for k in 0..self.intervals {
+            let h = self.step(z, k);
             self.set_inputs(z, k);
+            if self.free {
+                // The step multiplies the stages' velocities and rates.
+                self.values(z, k);
+            }
             self.derivatives(z, k);
             let w = &self.work;
             for i in 0..3 {
                 let mut at = (3 * k + i) * stage_entries;
-                for _ in 0..n {
+                for c in 0..n {
                     out[at] = 1.0;
                     out[at + 1] = -1.0;
                     for j in 1..4 {
                         out[at + 1 + j] = -h * A[i][j - 1];
                     }
-                    at += 5;
+                    if self.free {
+                        let velocities = (1..4).map(|j| A[i][j - 1] * z[self.point(3 * k + j) + n + c]);
+                        out[at + 5] = -velocities.sum::<f64>();
+                    }
+                    at += 5 + free;
                 }
                 for r in 0..n {
                     // X_0: −∂p/∂x.
@@ -560,7 +673,17 @@ where
                         out[at + x] = value;
                     }
                     at += nu;
+                    if self.free {
+                        out[at] = -(1..4).map(|j| A[i][j - 1] * w.rates[j * n + r]).sum::<f64>();
+                        at += 1;
+                    }
                 }
+            }
+        }
+        if self.free {
+            let at = out.len() - 2 * (self.intervals - 1);
+            for pair in out[at..].chunks_exact_mut(2) {
+                pair.copy_from_slice(&[1.0, -1.0]);
             }
         }
         self.evaluation += started.elapsed();
@@ -572,11 +695,15 @@ where
 
     fn hessian_values(&mut self, z: &[f64], sigma: f64, mu: &[f64], out: &mut [f64]) {
         let started = std::time::Instant::now();
-        let (n, h) = (self.n, self.h);
+        let n = self.n;
         let entries = self.work.point_hessian.len();
         out.fill(0.0);
         for k in 0..self.intervals {
+            let h = self.step(z, k);
             self.set_inputs(z, k);
+            if self.free {
+                self.add_step_hessian(z, k, sigma, mu, out);
+            }
             // The momentum rows' multipliers of stage i are `mu[(3k + i) 2n + n ..][..n]`.
             let stage = |i: usize, c: usize| mu[(3 * k + i) * 2 * n + n + c];
             for j in 0..4 {
@@ -590,7 +717,7 @@ where
                     self.work.wf[c] = wq;
                 }
                 self.place(z, 3 * k + j);
-                let t = self.time(k, j);
+                let t = self.time(z, k, j);
                 let Work { q, v, wq, wv, wf, point_hessian, .. } = &mut self.work;
                 self.problem.model.weighted_hessian(t, q, v, wq, wv, wf, point_hessian);
                 let scatter = &self.scatter[(4 * k + j) * entries..][..entries];
@@ -599,10 +726,66 @@ where
                 }
             }
         }
-        for &(at, w) in &self.cost_diagonal {
-            out[at] += sigma * w;
+        for &(at, w, k) in &self.cost_diagonal {
+            out[at] += sigma * w * k.map_or(1.0, |k| self.step(z, k));
         }
         self.evaluation += started.elapsed();
+    }
+}
+
+impl<M> Collocation<M>
+where
+    M: DenseModel + InputsOutputs,
+    DefaultAllocator: Storage<M>,
+{
+    /// Adds the step's row of the Hessian on interval `k` to `out` (free final time). The
+    /// equations are linear in `h_k`: `∂²/∂h∂x` is what multiplies `h_k`, differentiated once,
+    /// `−Σ_i a_ij (μ_vel,i on v_j + μ_mom,iᵀ ∂(L_q + F)/∂x_j)`, and the running cost's
+    /// gradient over `h_k`; `∂²/∂h²` is zero.
+    #[allow(clippy::needless_range_loop)]
+    fn add_step_hessian(&mut self, z: &[f64], k: usize, sigma: f64, mu: &[f64], out: &mut [f64]) {
+        let (n, nu) = (self.n, self.nu);
+        self.derivatives(z, k);
+        let velocity = |i: usize, c: usize| mu[(3 * k + i) * 2 * n + c];
+        let momentum = |i: usize, c: usize| mu[(3 * k + i) * 2 * n + n + c];
+        let c = &self.problem.cost;
+        let w = &self.work;
+        let row = &self.step_scatter[k * (6 * n + nu)..][..6 * n + nu];
+        let mut at = 0;
+        for j in 1..4 {
+            let b = A[2][j - 1];
+            let point = self.point(3 * k + j);
+            // The momentum rows' weights on this point's rates.
+            let weight = |r: usize| -(0..3).map(|i| A[i][j - 1] * momentum(i, r)).sum::<f64>();
+            for x in 0..n {
+                let mut value = sigma * b * c.position[x] * (z[point + x] - c.position_reference[x]);
+                for r in 0..n {
+                    value += weight(r) * w.g_q[j][(r, x)];
+                }
+                out[row[at + x]] += value;
+            }
+            at += n;
+            for x in 0..n {
+                let mut value = sigma * b * c.velocity[x] * (z[point + n + x] - c.velocity_reference[x]);
+                value -= (0..3).map(|i| A[i][j - 1] * velocity(i, x)).sum::<f64>();
+                for r in 0..n {
+                    value += weight(r) * w.g_v[j][(r, x)];
+                }
+                out[row[at + x]] += value;
+            }
+            at += n;
+        }
+        let start = self.input_start(k);
+        for x in 0..nu {
+            let mut value = sigma * c.input[x] * z[start + x];
+            for j in 1..4 {
+                for r in 0..n {
+                    let weight = -(0..3).map(|i| A[i][j - 1] * momentum(i, r)).sum::<f64>();
+                    value += weight * w.g_u[j][x * n + r];
+                }
+            }
+            out[row[at + x]] += value;
+        }
     }
 }
 

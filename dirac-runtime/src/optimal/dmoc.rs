@@ -333,8 +333,8 @@ where
                 add(n + i, 0.5 * mid - c.velocity[i] * v / h);
                 along_h += c.velocity[i] * v * v / h;
             }
-            for i in 0..nu {
-                add(2 * n + i, c.input[i] * u[i]);
+            for (i, (r, u)) in c.input.iter().zip(u).enumerate() {
+                add(2 * n + i, r * u);
             }
             hessian[(step, step)] += sigma * along_h;
         }

@@ -61,7 +61,7 @@ pub enum OptimalError {
     /// The problem's final time is free, and what was asked of it keeps a fixed horizon.
     #[error("{what} takes a fixed final time only: {why}")]
     FixedTimeOnly {
-        /// The transcription or controller (`"Radau IIA collocation"`, `"Mpc"`).
+        /// What keeps its horizon (`"Mpc"`).
         what: &'static str,
         /// Why, and what to use instead.
         why: &'static str,
