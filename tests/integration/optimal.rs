@@ -74,12 +74,26 @@ fn dense_jacobian(nlp: &mut impl Nlp, z: &[f64]) -> Vec<f64> {
     dense
 }
 
-/// Checks the Jacobian against central differences of the constraint values, and the
+/// Checks the cost's gradient against central differences of the cost, the Jacobian against
+/// central differences of the constraint values, and the
 /// Lagrangian's Hessian against central differences of its gradient `σ∇f + Jᵀμ` (built from
 /// the Jacobian just checked).
 fn check_derivatives(nlp: &mut impl Nlp, z: &[f64], tol: f64) {
     let (n, m) = (nlp.variables(), nlp.constraints());
     let eps = 1e-6;
+    let mut gradient = vec![0.0; n];
+    nlp.gradient(z, &mut gradient);
+    let fd_gradient: Vec<f64> = (0..n)
+        .map(|c| {
+            let mut zp = z.to_vec();
+            zp[c] += eps;
+            let plus = nlp.objective(&zp);
+            zp[c] -= 2.0 * eps;
+            (plus - nlp.objective(&zp)) / (2.0 * eps)
+        })
+        .collect();
+    let gap = relative_gap(&gradient, &fd_gradient);
+    assert!(gap < tol, "the cost's gradient against central differences: {gap:e}");
     let jacobian = dense_jacobian(nlp, z);
     let mut fd = vec![0.0; m * n];
     let (mut plus, mut minus) = (vec![0.0; m], vec![0.0; m]);
