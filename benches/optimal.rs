@@ -12,6 +12,9 @@
 //! in 2 s, within the file's joint limits and efforts, costing the squared torques and ten
 //! times the squared joint velocities over 2.
 //!
+//! With `TRANSCRIPTION=collocation` in the environment, each problem is transcribed by Radau IIA
+//! collocation (`optimal::Collocation`) instead of DMOC.
+//!
 //! `mpc` is the receding horizon instead: the cart-pole, simulated by Radau from 0.5 rad off
 //! upright, under a 100 Hz MPC (1 s horizon on N intervals, |f| <= 20 N, |x| <= 1.5 m) on the
 //! interior point, warm started; then IPOPT solving the same samples' problems, each from the
@@ -26,7 +29,7 @@ use std::time::Instant;
 
 use dirac::optimal::interior::{InteriorOptions, InteriorPoint};
 use dirac::optimal::ipopt::IpoptOptions;
-use dirac::optimal::{Dmoc, Mpc, OptimalError, Problem};
+use dirac::optimal::{Collocation, Dmoc, Mpc, OptimalError, Optimum, Problem, Transcription};
 use dirac::prelude::*;
 use dirac::{DenseModel, InputsOutputs, State, Storage, VecQ};
 use dirac_benches::zoo::robots::panda_point_to_point;
@@ -85,28 +88,28 @@ where
     M: DenseModel + InputsOutputs + Clone,
     dirac::nalgebra::DefaultAllocator: Storage<M>,
 {
+    let collocated = std::env::var("TRANSCRIPTION").is_ok_and(|t| t == "collocation");
     for tool in ["dirac", "interior"] {
         let started = if tool == "dirac" { started } else { Instant::now() };
-        let mut dmoc = Dmoc::new(problem.clone()).unwrap_or_else(|e| fail(n, tool, e));
-        let transcription = started.elapsed();
-        let optimum = match tool {
-            "dirac" => dmoc.solve(&IpoptOptions::default()),
-            _ => {
-                if let Ok(solver) = InteriorPoint::new(&dmoc) {
-                    eprintln!("{name} N = {n}: the KKT's half bandwidth is {}", solver.bandwidth());
-                }
-                dmoc.solve_interior(&InteriorOptions::default())
+        let optimum = match collocated {
+            true => {
+                let collocation = Collocation::new(problem.clone()).unwrap_or_else(|e| fail(n, tool, e));
+                solve(name, n, tool, collocation, started)
+            }
+            false => {
+                let dmoc = Dmoc::new(problem.clone()).unwrap_or_else(|e| fail(n, tool, e));
+                solve(name, n, tool, dmoc, started)
             }
         };
-        let o = match optimum {
-            Ok(o) => o,
+        let (o, transcription) = match optimum {
+            (Ok(o), transcription) => (o, transcription),
             // The interior point has no restoration phase: its failures are reported and the
             // round goes on with IPOPT's rows.
-            Err(error) if tool == "interior" => {
+            (Err(error), _) if tool == "interior" => {
                 eprintln!("{name} N = {n}, {tool}: {error}");
                 continue;
             }
-            Err(error) => fail(n, tool, error),
+            (Err(error), _) => fail(n, tool, error),
         };
         println!(
             "{tool},{name},{n},{:.12e},{},{:.6e},{:.6e},{:.6e}",
@@ -117,6 +120,34 @@ where
             transcription.as_secs_f64()
         );
     }
+}
+
+/// Solves a transcription made since `started` with `tool`: the result, and how long the
+/// transcription took to make.
+fn solve<T: Transcription>(
+    name: &str,
+    n: usize,
+    tool: &str,
+    mut transcription: T,
+    started: Instant,
+) -> (Result<Optimum, OptimalError>, std::time::Duration) {
+    let made = started.elapsed();
+    let optimum = match tool {
+        "dirac" => transcription.solve(&IpoptOptions::default()),
+        _ => {
+            if let Ok(solver) = InteriorPoint::new(&transcription) {
+                eprintln!(
+                    "{name} N = {n}: {} variables, {} Jacobian and {} Hessian entries; the KKT's half bandwidth is {}",
+                    transcription.variables(),
+                    transcription.jacobian_pattern().len(),
+                    transcription.hessian_pattern().len(),
+                    solver.bandwidth()
+                );
+            }
+            transcription.solve_interior(&InteriorOptions::default())
+        }
+    };
+    (optimum, made)
 }
 
 fn fail(n: usize, tool: &str, error: OptimalError) -> ! {

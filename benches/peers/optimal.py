@@ -6,7 +6,13 @@ CasADi's SX expressions and nlpsol (exact Hessian by its own algorithmic differe
 Prints `casadi,problem,N,cost,iterations,solve seconds,evaluation seconds,construction
 seconds`: the
 solve's wall time around the solver's call, the evaluation's from CasADi's own statistics
-(objective, constraints and their derivatives)."""
+(objective, constraints and their derivatives).
+
+With TRANSCRIPTION=collocation, the problem is transcribed as dirac's optimal::Collocation
+does instead: Radau IIA with three stages on the implicit Lagrangian system, positions and
+velocities at each node and stage, the stage equations on q and on the momenta dL/dv, the
+running cost by Radau's weights, the inputs held over each interval."""
+import os
 import sys
 import time
 
@@ -186,12 +192,76 @@ def build(name, n):
     return solver, guess, lower, upper
 
 
+# Radau IIA's three-stage tableau (Hairer and Wanner, Table IV.5.6).
+SQ6 = 6 ** 0.5
+RADAU_C = [0.0, (4 - SQ6) / 10, (4 + SQ6) / 10, 1.0]
+RADAU_A = [[(88 - 7 * SQ6) / 360, (296 - 169 * SQ6) / 1800, (-2 + 3 * SQ6) / 225],
+           [(296 + 169 * SQ6) / 1800, (88 + 7 * SQ6) / 360, (-2 - 3 * SQ6) / 225],
+           [(16 - SQ6) / 36, (16 + SQ6) / 36, 1 / 9]]
+
+
+def build_collocation(name, n):
+    """dirac's optimal::Collocation of the same problem: variables the points (q, v), P = 0 ..
+    3N (point 3k is node k), then the inputs; rows, per stage i of interval k,
+    q_i - q_0 - h sum_j a_ij v_j and p(X_i) - p(X_0) - h sum_j a_ij [L_q + F](X_j, u_k)."""
+    h = (ACRO_HORIZON if name == "acrobot" else HORIZON) / n
+    lagrangian, input_force, dof, nu, position_bounds, input_bounds, target = problem(name)
+    origin = PANDA_START if name == "panda" else [0.0] * dof
+    friction = damping(name, dof)
+    smoothing = PANDA_VELOCITY_WEIGHT if name == "panda" else 0.0
+    q, v = ca.SX.sym("q", dof), ca.SX.sym("v", dof)
+    lag = lagrangian(q, v)
+    lq = ca.Function("lq", [q, v], [ca.gradient(lag, q)])
+    lv = ca.Function("lv", [q, v], [ca.gradient(lag, v)])
+    points = [(ca.SX.sym(f"q{p}", dof), ca.SX.sym(f"v{p}", dof)) for p in range(3 * n + 1)]
+    pushes = [ca.SX.sym(f"u{k}", nu) for k in range(n)]
+    equations, cost = [], 0
+    for k in range(n):
+        u = pushes[k]
+        x = points[3 * k:3 * k + 4]
+        momenta = [lv(qj, vj) for qj, vj in x]
+        rates = [lq(qj, vj) + input_force(u) - ca.DM(friction) * vj for qj, vj in x]
+        for i in range(3):
+            velocity = x[i + 1][0] - x[0][0] - h * sum(RADAU_A[i][j - 1] * x[j][1] for j in range(1, 4))
+            momentum = momenta[i + 1] - momenta[0] - h * sum(RADAU_A[i][j - 1] * rates[j] for j in range(1, 4))
+            equations += [velocity, momentum]
+        for j in range(1, 4):
+            cost += 0.5 * h * RADAU_A[2][j - 1] * smoothing * ca.sumsqr(x[j][1])
+        cost += 0.5 * h * ca.sumsqr(u)
+    variables = ca.vertcat(*[ca.vertcat(qp, vp) for qp, vp in points], *pushes)
+    per_input = input_bounds if isinstance(input_bounds, list) else [input_bounds] * nu
+    free = [(-ca.inf, ca.inf)] * dof
+    lower, upper = [], []
+    for p in range(3 * n + 1):
+        bounds = [(o, o) for o in origin] if p == 0 else [(t, t) for t in target] if p == 3 * n else position_bounds
+        velocities = [(0.0, 0.0)] * dof if p in (0, 3 * n) else free
+        lower += [b[0] for b in bounds + velocities]
+        upper += [b[1] for b in bounds + velocities]
+    lower += [b[0] for b in per_input] * n
+    upper += [b[1] for b in per_input] * n
+    # The guess as Collocation::guess: straight lines through the stages, each interval's mean
+    # velocity at its points, the start's and the end's velocities given.
+    guess = []
+    nodes = [[o + (t - o) * k / n for o, t in zip(origin, target)] for k in range(n + 1)]
+    for p in range(3 * n + 1):
+        k, j = min(p // 3, n - 1), p - 3 * min(p // 3, n - 1)
+        a, b = nodes[k], nodes[k + 1]
+        position = [ai + RADAU_C[j] * (bi - ai) for ai, bi in zip(a, b)]
+        velocity = [0.0] * dof if p in (0, 3 * n) else [(bi - ai) / h for ai, bi in zip(a, b)]
+        guess += position + velocity
+    guess += [0.0] * (nu * n)
+    options = {"ipopt": {"print_level": 0, "sb": "yes", "tol": 1e-8}, "print_time": False}
+    solver = ca.nlpsol("radau", "ipopt", {"x": variables, "f": cost, "g": ca.vertcat(*equations)}, options)
+    return solver, guess, lower, upper
+
+
 def main():
     names = [a for a in sys.argv[1:] if not a.isdigit()]
     name = names[0] if names else "cartpole"
+    collocated = os.environ.get("TRANSCRIPTION") == "collocation"
     for n in [int(a) for a in sys.argv[1:] if a.isdigit()] or [50, 100]:
         started = time.perf_counter()
-        solver, guess, lower, upper = build(name, n)
+        solver, guess, lower, upper = (build_collocation if collocated else build)(name, n)
         construction = time.perf_counter() - started
         started = time.perf_counter()
         result = solver(x0=guess, lbx=lower, ubx=upper, lbg=0, ubg=0)

@@ -14,6 +14,7 @@
 # link at 0.5 rad (benches/optimal.rs says which), shows how the two scale with the model.
 #
 #   bash benches/peers/optimal.sh [rounds] [N ...]      (PROBLEM=chain8 for the chain)
+#   TRANSCRIPTION=collocation bash benches/peers/optimal.sh 5   (Radau IIA collocation on both sides)
 #   PROBLEM=mpc bash benches/peers/optimal.sh 5 20      (the 100 Hz MPC on the cart-pole)
 #
 # PROBLEM=acrobot is the acrobot's swing-up; PROBLEM=panda the Panda's arm from its URDF file
@@ -44,7 +45,9 @@ if [ "$problem" = mpc ]; then
     done
     exit 0
 fi
-rows=$out/rows-$problem.csv
+transcription=${TRANSCRIPTION:-dmoc}
+export TRANSCRIPTION=$transcription
+rows=$out/rows-$problem-$transcription.csv
 : > "$rows"
 for round in $(seq "$rounds"); do
     DIRAC_IPOPT="$casadi/libipopt.so.3" cargo bench -q -p dirac-benches --bench optimal -- "$problem" $sizes 2>> "$out/build.log" \
@@ -52,14 +55,14 @@ for round in $(seq "$rounds"); do
     "$venv/bin/python" benches/peers/optimal.py "$problem" $sizes | sed "s/^/$round,/" >> "$rows"
 done
 "$venv/bin/python" - "$rows" <<'PY'
-import statistics, sys
+import os, statistics, sys
 rows = [l.strip().split(",") for l in open(sys.argv[1])]
 print("round  tool    N   cost                 iter  solve ms  eval ms  eval %  setup ms")
 for r, tool, name, n, cost, it, solve, ev, setup in rows:
     print(f"{r:>5}  {tool:6} {n:>4}  {float(cost):.12e}  {it:>4}  {1e3*float(solve):8.2f}  {1e3*float(ev):7.2f}"
           f"  {100*float(ev)/float(solve):5.1f}  {1e3*float(setup):8.2f}")
 print()
-print("Each dirac solver against CasADi + IPOPT (medians over the rounds; ratio = median of the rounds' ratios, range)")
+print(f"Each dirac solver against CasADi + IPOPT, both on {os.environ['TRANSCRIPTION']} (medians over the rounds; ratio = median of the rounds' ratios, range)")
 print("N    solver    cost                 rel. diff  iter s/C  solve ms s/C           ratio (range)       eval % s/C")
 for n in sorted({r[3] for r in rows}, key=int):
     pick = lambda tool, i: [float(r[i]) for r in rows if r[1] == tool and r[3] == n]
