@@ -208,6 +208,21 @@ fn with_steps(variables: usize, intervals: usize, seed: f64) -> Vec<f64> {
     z
 }
 
+/// [`check_derivatives`] on both transcriptions of a free-final-time `problem` on `intervals`
+/// intervals, at a point of [`with_steps`].
+fn check_both_with_steps<M>(problem: Problem<M>, intervals: usize, seed: f64)
+where
+    M: dirac::DenseModel + dirac::InputsOutputs + Clone,
+    dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
+{
+    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
+    let z = with_steps(collocation.variables(), intervals, seed);
+    check_derivatives(&mut collocation, &z, 1e-6);
+    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
+    let z = with_steps(dmoc.variables(), intervals, seed);
+    check_derivatives(&mut dmoc, &z, 1e-6);
+}
+
 #[test]
 fn a_free_final_times_derivatives_match_central_differences() {
     // The step enters every term: `h/2 L_q`, `h/2 F` and the velocity `(q_{k+1} − q_k)/h` of
@@ -219,24 +234,14 @@ fn a_free_final_times_derivatives_match_central_differences() {
         .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]))
         .free_final_time(0.5, 4.0)
         .time_weight(0.7);
-    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
-    let z = with_steps(collocation.variables(), 4, 0.1);
-    check_derivatives(&mut collocation, &z, 1e-6);
-    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
-    let z = with_steps(dmoc.variables(), 4, 0.1);
-    check_derivatives(&mut dmoc, &z, 1e-6);
+    check_both_with_steps(problem, 4, 0.1);
 
     let steered = Steered { m: 1.3, k: 2.0, c: 0.4, a: 0.0, b: 0.0, f: 0.0 };
     let problem = Problem::new(steered, 1.0, 5)
         .start(VecQ::<Steered>::from([0.2, -0.1]), VecQ::<Steered>::from([0.5, 0.7]))
         .final_state(VecQ::<Steered>::from([1.0, 0.5]), VecQ::<Steered>::from([0.1, 0.2]))
         .free_final_time(0.5, 3.0);
-    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
-    let z = with_steps(collocation.variables(), 5, 0.4);
-    check_derivatives(&mut collocation, &z, 1e-6);
-    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
-    let z = with_steps(dmoc.variables(), 5, 0.4);
-    check_derivatives(&mut dmoc, &z, 1e-6);
+    check_both_with_steps(problem, 5, 0.4);
 
     let problem = Problem::new(PandaTorques::default(), 1.0, 3)
         .final_state(
@@ -245,12 +250,7 @@ fn a_free_final_times_derivatives_match_central_differences() {
         )
         .free_final_time(0.5, 2.0)
         .time_weight(3.0);
-    let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
-    let z = with_steps(collocation.variables(), 3, 0.2);
-    check_derivatives(&mut collocation, &z, 1e-6);
-    let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
-    let z = with_steps(dmoc.variables(), 3, 0.2);
-    check_derivatives(&mut dmoc, &z, 1e-6);
+    check_both_with_steps(problem, 3, 0.2);
 }
 
 /// A mass pushed along a line by `f`.
@@ -553,11 +553,25 @@ fn malformed_problems_are_refused_by_name() {
     let error = Collocation::new(Problem::new(cart_pole(), 1.0, 200_000_000)).err().expect("refused");
     assert!(matches!(error, OptimalError::InvalidGrid { .. }), "{error}");
     // A free final time with no room, or a start outside it.
-    for (shortest, longest) in [(0.0, 3.0), (1.0, f64::INFINITY), (3.0, 4.0), (2.5, 1.0)] {
+    for (shortest, longest) in [(0.0, 3.0), (-1.0, 3.0), (1.0, f64::INFINITY), (3.0, 4.0), (2.5, 1.0)] {
         let problem = swing_up(10).free_final_time(shortest, longest);
         match Dmoc::new(problem).err().expect("refused") {
             OptimalError::InfeasibleBounds { name, .. } => assert_eq!(name, "the final time"),
             other => panic!("{other}"),
+        }
+    }
+    // Bounds or a time weight that are not numbers.
+    for problem in [
+        swing_up(10).free_final_time(f64::NAN, 3.0),
+        swing_up(10).free_final_time(1.0, f64::NAN),
+        swing_up(10).free_final_time(1.0, 3.0).time_weight(f64::NAN),
+        swing_up(10).time_weight(f64::INFINITY),
+    ] {
+        for error in [Dmoc::new(problem.clone()).err(), Collocation::new(problem).err()] {
+            match error.expect("refused") {
+                OptimalError::NotFinite { name, .. } => assert_eq!(name, "the final time"),
+                other => panic!("{other}"),
+            }
         }
     }
     // A receding horizon keeps its length, and a model whose equations move with time cannot

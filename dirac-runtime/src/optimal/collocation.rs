@@ -446,18 +446,15 @@ where
             });
         }
         if self.free {
-            // A model that does not read `t` gives the same equations, bit for bit, a horizon
-            // later.
-            let t0 = self.problem.t0;
-            self.problem.t0 = t0 + self.problem.horizon;
-            let mut later = vec![0.0; g.len()];
-            self.constraint_values(z, &mut later);
+            let (t0, horizon) = (self.problem.t0, self.problem.horizon);
+            let result = super::refuse_time_dependence::<M>(t0, horizon, |start| {
+                self.problem.t0 = start;
+                let mut g = vec![0.0; self.constraints()];
+                self.constraint_values(z, &mut g);
+                g
+            });
             self.problem.t0 = t0;
-            if later != g {
-                let why = "its equations change with time, and a free final time moves every point's time: \
-                           only models that do not read `t` take a free final time";
-                return Err(OptimalError::Unsupported { model: core::any::type_name::<M>(), why });
-            }
+            result?;
         }
         Ok(())
     }

@@ -276,28 +276,18 @@ where
                 detail: format!("the balance of `{name}` at node {block} is {}", g[row]),
             });
         }
-        if self.free && self.reads_time(z) {
-            let why = "its equations change with time, and a free final time moves every node's time: \
-                       only models that do not read `t` take a free final time";
-            return Err(OptimalError::Unsupported { model: core::any::type_name::<M>(), why });
+        if self.free {
+            let (t0, horizon) = (self.problem.t0, self.problem.horizon);
+            let result = super::refuse_time_dependence::<M>(t0, horizon, |start| {
+                self.problem.t0 = start;
+                let mut g = vec![0.0; self.constraints()];
+                self.constraint_values(z, &mut g);
+                g
+            });
+            self.problem.t0 = t0;
+            result?;
         }
         Ok(())
-    }
-
-    /// Whether the first interval's equations at `z` change when time moves on by the
-    /// horizon: a model that does not read `t` gives the same values, bit for bit.
-    fn reads_time(&mut self, z: &[f64]) -> bool {
-        let n = self.n;
-        self.set_inputs(z, 0);
-        let (a, b, h) = (&z[..n], &z[n..2 * n], self.step(z, 0));
-        let mut values = [vec![0.0; 2 * n], vec![0.0; 2 * n]];
-        for (t, out) in [self.problem.t0, self.problem.t0 + self.problem.horizon].into_iter().zip(&mut values)
-        {
-            self.work.residual(&self.problem.model, t, a, b, h, &mut self.d1, &mut self.d2);
-            out[..n].copy_from_slice(&self.d1);
-            out[n..].copy_from_slice(&self.d2);
-        }
-        values[0] != values[1]
     }
 
     /// Adds the running cost's Hessian on the interval from `a` to `b` with inputs `u` and

@@ -69,6 +69,23 @@ pub struct Optimum {
     pub evaluation: std::time::Duration,
 }
 
+/// The refusal of a free final time on a model whose equations read `t`: the derivatives
+/// with respect to the step hold `t` fixed. `equations(t0)` evaluates the program's equations
+/// at the guess with the problem starting at `t0`; a model that does not read `t` gives the
+/// same values a horizon later, bit for bit.
+pub(crate) fn refuse_time_dependence<M>(
+    t0: f64,
+    horizon: f64,
+    mut equations: impl FnMut(f64) -> Vec<f64>,
+) -> Result<(), OptimalError> {
+    if equations(t0) == equations(t0 + horizon) {
+        return Ok(());
+    }
+    let why = "its equations change with time, and a free final time moves every node's time: only models \
+               that do not read `t` take a free final time";
+    Err(OptimalError::Unsupported { model: core::any::type_name::<M>(), why })
+}
+
 /// A transcription of a [`Problem`] into a nonlinear program: [`Dmoc`] or [`Collocation`].
 /// Both solve the same way, through [`Transcription::solve_interior`] and (feature `ipopt`)
 /// [`Transcription::solve`].

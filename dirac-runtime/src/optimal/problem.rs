@@ -277,12 +277,13 @@ where
                        (q, v, u) has more than 2048 entries have none)";
             return Err(OptimalError::Unsupported { model, why });
         }
-        // The Jacobian's entries, `(N + 1) n (3n + 2 n_u)` at most, are indexed by the solvers'
-        // 32-bit integers; a grid beyond that is refused before anything is allocated.
+        // The Jacobian's entries, `(N + 1) n (3n + 2 n_u + 2)` at most (the last two are the
+        // steps of a free final time), are indexed by the solvers' 32-bit integers; a grid
+        // beyond that is refused before anything is allocated.
         let (n, nu) = (M::NQ, M::NAMES.input_count());
         let entries = (self.intervals.checked_add(1))
             .and_then(|nodes| nodes.checked_mul(n))
-            .and_then(|rows| rows.checked_mul(3 * n + 2 * nu));
+            .and_then(|rows| rows.checked_mul(3 * n + 2 * nu + 2));
         let indexable = entries.is_some_and(|e| e <= i32::MAX as usize);
         if !(self.horizon.is_finite() && self.horizon > 0.0) || self.intervals == 0 || !indexable {
             return Err(OptimalError::InvalidGrid { horizon: self.horizon, intervals: self.intervals });
