@@ -1,20 +1,23 @@
 //! The Franka Panda's arm, read from its URDF file, moved by its seven joint torques from one
-//! pose to another, at rest at both ends, within its joints' limits and its torques' efforts.
+//! pose to another, at rest at both ends, within its joints' limits, their velocity limits and
+//! its torques' efforts.
 //!
-//! First over a fixed 2 s at the least `∫ |τ|²/2 + 5 |v|² dt`. Then with the final time free,
-//! each solve starting from the fixed optimum (the program is not convex: from a straight-line
-//! guess the solver settles in a worse local optimum near 0.61 s). Priced at nothing, time
-//! settles where the effort is least: holding the arm up against gravity costs effort every
-//! second, so a slow motion is not a cheap one. Priced at 5000 per second, the motion is nearly
-//! time-optimal and the torques reach their efforts. The URDF file's joint velocity limits are
-//! not imposed (the problem bounds positions and inputs).
+//! First over a fixed 2 s at the least `∫ |τ|²/2 + 5 |v|² dt`: the arm turns its elbow's plane
+//! (joints 1 and 3 against each other) to carry less of its weight, and joints 1, 3 and 4 run at
+//! their velocity limits on the way. Then with the final time free, each solve starting from
+//! the fixed optimum (the program is not convex: from a straight-line guess the solver settles
+//! in a worse local optimum near 0.54 s). Priced at nothing, time settles where the effort is
+//! least: holding the arm up against gravity costs effort every second, so a slow motion is not
+//! a cheap one. Priced at 5000 per second, the motion is nearly time-optimal: limited by the
+//! joints' velocities (DMOC bounds each interval's), not by the torques' efforts.
 //!
 //! `optimal::Dmoc` transcribes each with the variational integrator's discrete Lagrangian on 40
 //! intervals (the robot's mass matrix, bias forces and their derivatives generated from the
 //! URDF file when the example compiles), and dirac's own interior point solves them (no
 //! feature needed). Writes `target/dirac-examples/panda_point_to_point.svg` (the seven joint
-//! angles of the fastest motion) and `panda_point_to_point_torques.svg` (its torques as
-//! fractions of their efforts).
+//! angles of the fastest motion), `panda_point_to_point_torques.svg` (its torques as fractions
+//! of their efforts) and `panda_point_to_point_velocities.svg` (its velocities as fractions of
+//! their limits).
 //!
 //!   cargo run --release --example panda_point_to_point
 
@@ -54,9 +57,10 @@ pub struct Arm {
     pub t7: f64,
 }
 
-/// The joints' limits and efforts, as `panda_arm.urdf` gives them.
+/// The joints' limits, velocity limits and efforts, as `panda_arm.urdf` gives them.
 const LOWER: [f64; 7] = [-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973];
 const UPPER: [f64; 7] = [2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973];
+const VELOCITY: [f64; 7] = [2.175, 2.175, 2.175, 2.175, 2.61, 2.61, 2.61];
 const EFFORT: [f64; 7] = [87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0];
 
 /// What a second of motion costs in the nearly time-optimal problem.
@@ -73,6 +77,7 @@ fn problem(horizon: f64, intervals: usize) -> Problem<Arm> {
         let torque = dirac::Input::checked(i).expect("seven torques");
         problem = problem
             .position_bounds(joint, LOWER[i], UPPER[i])
+            .velocity_bounds(joint, -VELOCITY[i], VELOCITY[i])
             .input_bounds(torque, -EFFORT[i], EFFORT[i])
             .velocity_weight(joint, 10.0, 0.0);
     }
@@ -86,14 +91,22 @@ fn report(what: &str, optimum: &Optimum) {
         .iter()
         .flat_map(|u| u.iter().zip(&EFFORT).map(|(t, e)| t.abs() / e))
         .fold(0.0f64, f64::max);
+    // Each interval's velocity, `(q_{k+1} − q_k)/h`, is what DMOC bounds.
+    let h = horizon / optimum.inputs.len() as f64;
+    let fastest = optimum
+        .positions
+        .windows(2)
+        .flat_map(|pair| (0..7).map(move |i| (pair[1][i] - pair[0][i]).abs() / h / VELOCITY[i]))
+        .fold(0.0f64, f64::max);
     println!(
         "{what}: T = {horizon:.4} s, cost {:.4} in {} iterations, {:.1} ms ({:.1} ms evaluating); largest torque \
-         {:.0}% of its effort; equations met to {:.1e}",
+         {:.0}% of its effort, largest velocity {:.0}% of its limit; equations met to {:.1e}",
         optimum.cost,
         optimum.iterations,
         optimum.wall.as_secs_f64() * 1e3,
         optimum.evaluation.as_secs_f64() * 1e3,
         100.0 * saturated,
+        100.0 * fastest,
         optimum.violation
     );
 }
@@ -146,6 +159,30 @@ fn main() -> Result<(), Box<dyn Error>> {
         series: inputs
             .iter()
             .zip(&torques)
+            .map(|(name, y)| Series { name: name.as_str(), x: &steps, y })
+            .collect(),
+        log_y: false,
+        log_x: false,
+    }
+    .write(&path)?;
+    println!("wrote {}", path.display());
+
+    // Each interval's velocity, as a fraction of its joint's limit: what bounds the motion.
+    let h = (t[intervals] - t[0]) / intervals as f64;
+    let velocities: Vec<Vec<f64>> = (0..7)
+        .map(|i| {
+            let over = |pair: &[Vec<f64>]| (pair[1][i] - pair[0][i]) / h / VELOCITY[i];
+            optimum.positions.windows(2).flat_map(|pair| [over(pair); 2]).collect()
+        })
+        .collect();
+    let path = output_dir()?.join("panda_point_to_point_velocities.svg");
+    Chart {
+        title: "Panda point to point: joint velocities over their limits (±1 is the limit)",
+        x_label: "time t [s]",
+        y_label: "velocity / limit",
+        series: names
+            .iter()
+            .zip(&velocities)
             .map(|(name, y)| Series { name: name.as_str(), x: &steps, y })
             .collect(),
         log_y: false,

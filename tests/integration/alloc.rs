@@ -1567,8 +1567,13 @@ fn a_warm_started_interior_point_solve_does_not_allocate() {
     assert!(result.solved && result.iterations > 0, "the warm start solves again: {result:?}");
     assert_eq!(during, 0, "a warm-started collocation solve allocated {during} times");
 
-    // With a free final time: the steps are variables, and every evaluation reads them.
-    let free = dmoc.problem().clone().free_final_time(1.0, 4.0).time_weight(10.0);
+    // With a free final time: the steps are variables, and every evaluation reads them; with a
+    // bounded velocity, each interval has its row and its variable too.
+    let free = dmoc.problem().clone().free_final_time(1.0, 4.0).time_weight(10.0).velocity_bounds(
+        CartPole::X,
+        -2.5,
+        2.5,
+    );
     let mut dmoc = Dmoc::new(free).expect("well-formed");
     let mut solver = InteriorPoint::new(&dmoc).expect("equations only");
     assert!(solver.solve(&mut dmoc, &options).solved);

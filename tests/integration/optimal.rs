@@ -158,7 +158,8 @@ fn the_transcriptions_derivatives_match_central_differences() {
         .position_weight(CartPole::THETA, 0.3, 1.0)
         .velocity_weight(CartPole::X, 0.2, 0.1)
         .terminal_weight(CartPole::X, 2.0, 0.5)
-        .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]));
+        .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]))
+        .velocity_bounds(CartPole::THETA, -9.0, 9.0);
     let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
     let z = scattered(collocation.variables(), 0.1);
     check_derivatives(&mut collocation, &z, 1e-6);
@@ -197,12 +198,12 @@ fn the_transcriptions_derivatives_match_central_differences() {
     check_derivatives(&mut dmoc, &z, 1e-6);
 }
 
-/// A scattered point of a free-final-time program (either transcription) whose last
-/// `intervals` variables, the steps, are positive and unequal, so that each interval's own
+/// A scattered point of a free-final-time program (either transcription) whose `intervals`
+/// variables from `first`, the steps, are positive and unequal, so that each interval's own
 /// step is exercised.
-fn with_steps(variables: usize, intervals: usize, seed: f64) -> Vec<f64> {
+fn with_steps(variables: usize, first: usize, intervals: usize, seed: f64) -> Vec<f64> {
     let mut z = scattered(variables, seed);
-    for (k, h) in z[variables - intervals..].iter_mut().enumerate() {
+    for (k, h) in z[first..first + intervals].iter_mut().enumerate() {
         *h = 0.3 + 0.05 * k as f64;
     }
     z
@@ -215,11 +216,16 @@ where
     M: dirac::DenseModel + dirac::InputsOutputs + Clone,
     dirac::nalgebra::DefaultAllocator: dirac::Storage<M>,
 {
+    // The steps follow the inputs: after `3N + 1` points of `(q, v)` in collocation, after
+    // `N + 1` nodes of `q` in DMOC (bounded velocities come after them).
+    let (n, nu) = (M::NQ, problem.model().input_names().len());
     let mut collocation = Collocation::new(problem.clone()).expect("a well-formed problem");
-    let z = with_steps(collocation.variables(), intervals, seed);
+    let first = (3 * intervals + 1) * 2 * n + intervals * nu;
+    let z = with_steps(collocation.variables(), first, intervals, seed);
     check_derivatives(&mut collocation, &z, 1e-6);
     let mut dmoc = Dmoc::new(problem).expect("a well-formed problem");
-    let z = with_steps(dmoc.variables(), intervals, seed);
+    let first = (intervals + 1) * n + intervals * nu;
+    let z = with_steps(dmoc.variables(), first, intervals, seed);
     check_derivatives(&mut dmoc, &z, 1e-6);
 }
 
@@ -234,7 +240,10 @@ fn a_free_final_times_derivatives_match_central_differences() {
         .start(VecQ::<CartPole>::from([0.1, 0.2]), VecQ::<CartPole>::from([0.3, -0.4]))
         .free_final_time(0.5, 4.0)
         .time_weight(0.7);
-    check_both_with_steps(problem, 4, 0.1);
+    check_both_with_steps(problem.clone(), 4, 0.1);
+    // A bounded velocity's row `q_{k+1} − q_k − h_k w_k` is bilinear in the step.
+    let bounded = problem.velocity_bounds(CartPole::THETA, -9.0, 9.0).velocity_bounds(CartPole::X, -2.0, 3.0);
+    check_both_with_steps(bounded, 4, 0.3);
 
     let steered = Steered { m: 1.3, k: 2.0, c: 0.4, a: 0.0, b: 0.0, f: 0.0 };
     let problem = Problem::new(steered, 1.0, 5)
@@ -349,6 +358,81 @@ fn a_free_final_time_trades_time_against_effort_as_the_closed_form_does() {
     for (dmoc, collocated) in optima[..3].iter().zip(&optima[3..]) {
         assert!((dmoc.0 - collocated.0).abs() < 1e-9, "horizons {dmoc:?} and {collocated:?}");
         assert!((dmoc.1 - collocated.1).abs() < 1e-9 * dmoc.1, "costs {dmoc:?} and {collocated:?}");
+    }
+}
+
+#[test]
+fn a_bounded_velocity_coasts_at_its_bound_as_the_closed_form_does() {
+    with_ipopt();
+    // From rest at 0 to rest at D in T, `min ∫ f²/2 dt` with `v ≤ V`. Without the bound the
+    // velocity peaks at `3D/(2T)`; below that, the optimum (Pontryagin with a first-order state
+    // constraint: the push is linear in time off the bound and vanishes where it meets it)
+    // accelerates over `τ`, coasts at `V` and stops over `τ`. Each end covers `2Vτ/3`, so
+    // `D = VT − 2Vτ/3`, `τ = 3(VT − D)/(2V)`, and the cost is `4V²/(3τ)`. With D = T = 1 and
+    // V = 1.2: τ = 1/4, J* = 7.68 (against 6 unbounded).
+    let (distance, horizon, fastest): (f64, f64, f64) = (1.0, 1.0, 1.2);
+    let tau = 3.0 * (fastest * horizon - distance) / (2.0 * fastest);
+    let exact_cost = 4.0 * fastest * fastest / (3.0 * tau);
+    let problem = |intervals| {
+        Problem::new(Pushed { m: 1.0, f: 0.0 }, horizon, intervals)
+            .final_state(VecQ::<Pushed>::from([distance]), VecQ::<Pushed>::zeros())
+            .velocity_bounds(Pushed::X, f64::NEG_INFINITY, fastest)
+    };
+    for collocated in [false, true] {
+        let mut errors = Vec::new();
+        for intervals in [16, 32, 64] {
+            let (ipopt, interior) = (IpoptOptions::default(), InteriorOptions::default());
+            let (reference, ours, fastest_found) = if collocated {
+                let mut transcription = Collocation::new(problem(intervals)).expect("well-formed");
+                let reference = transcription.solve(&ipopt).expect("IPOPT solves it");
+                let ours = transcription.solve_interior(&interior).expect("the interior point solves it");
+                // Under a held push the velocity is linear within an interval, so it is largest at
+                // one of its ends, `(q_{k+1} − q_k)/h ± h f_k / 2` (m = 1).
+                let h = horizon / intervals as f64;
+                let fastest_found = (0..intervals)
+                    .map(|k| {
+                        (ours.positions[k + 1][0] - ours.positions[k][0]) / h
+                            + 0.5 * h * ours.inputs[k][0].abs()
+                    })
+                    .fold(f64::NEG_INFINITY, f64::max);
+                (reference, ours, fastest_found)
+            } else {
+                let mut transcription = Dmoc::new(problem(intervals)).expect("well-formed");
+                let reference = transcription.solve(&ipopt).expect("IPOPT solves it");
+                let ours = transcription.solve_interior(&interior).expect("the interior point solves it");
+                let h = horizon / intervals as f64;
+                let fastest_found = (0..intervals)
+                    .map(|k| (ours.positions[k + 1][0] - ours.positions[k][0]) / h)
+                    .fold(f64::NEG_INFINITY, f64::max);
+                (reference, ours, fastest_found)
+            };
+            eprintln!(
+                "{} N = {intervals}: cost {:.10} (exact {exact_cost}), IPOPT {:.10}, fastest {fastest_found:.10}; \
+                 iterations {} and {} (IPOPT)",
+                if collocated { "collocation" } else { "DMOC" },
+                ours.cost,
+                reference.cost,
+                ours.iterations,
+                reference.iterations
+            );
+            assert!(
+                (ours.cost - reference.cost).abs() <= 1e-7 * reference.cost,
+                "the solvers' optima differ"
+            );
+            // The bound is met and active.
+            assert!(fastest_found <= fastest * (1.0 + 1e-7), "the velocity {fastest_found} passes its bound");
+            assert!(fastest_found >= fastest * (1.0 - 1e-6), "the bound is not reached: {fastest_found}");
+            if collocated {
+                // Collocation's pushes are held and its velocities bounded everywhere: its optimum
+                // is feasible for the continuous problem and cannot beat it.
+                assert!(ours.cost >= exact_cost * (1.0 - 1e-9), "{} beats the exact {exact_cost}", ours.cost);
+            }
+            errors.push((ours.cost - exact_cost).abs());
+        }
+        for pair in errors.windows(2) {
+            let order = (pair[0] / pair[1]).log2();
+            assert!((1.8..2.4).contains(&order), "the cost converges at order {order}: {errors:?}");
+        }
     }
 }
 
@@ -514,6 +598,29 @@ fn malformed_problems_are_refused_by_name() {
     let problem = swing_up(10).final_position(CartPole::X, 2.0);
     match Dmoc::new(problem).err().expect("refused") {
         OptimalError::InfeasibleBounds { name, value, .. } => assert_eq!((name.as_str(), value), ("x", 2.0)),
+        other => panic!("{other}"),
+    }
+    // Velocity bounds that cross, are not numbers, or leave out the start or final velocity,
+    // named by the velocity, on both transcriptions.
+    let start = (VecQ::<CartPole>::zeros(), VecQ::<CartPole>::from([2.5, 0.0]));
+    for (problem, value) in [
+        (swing_up(10).velocity_bounds(CartPole::X, 1.0, -1.0), None),
+        (swing_up(10).velocity_bounds(CartPole::X, -2.0, 2.0).start(start.0, start.1), Some(2.5)),
+        (swing_up(10).velocity_bounds(CartPole::X, 0.5, 2.0), Some(0.0)),
+    ] {
+        for error in [Dmoc::new(problem.clone()).err(), Collocation::new(problem).err()] {
+            match error.expect("refused") {
+                OptimalError::InfeasibleBounds { name, value: found, .. } => {
+                    assert_eq!(name, "x's velocity");
+                    assert!(value.is_none_or(|v| v == found), "{found} is not {value:?}");
+                }
+                other => panic!("{other}"),
+            }
+        }
+    }
+    let problem = swing_up(10).velocity_bounds(CartPole::THETA, f64::NAN, 2.0);
+    match Dmoc::new(problem).err().expect("refused") {
+        OptimalError::NotFinite { name, .. } => assert_eq!(name, "theta's velocity"),
         other => panic!("{other}"),
     }
     // No grid.
@@ -958,4 +1065,57 @@ fn a_100_hz_mpc_stabilises_the_cart_pole_simulated_by_radau() {
     assert!((theta[last] - upright).abs() < 1e-3, "the pole ends at {} rad", theta[last]);
     assert!(x[last].abs() < 1e-2, "the cart ends at {} m", x[last]);
     assert!(x.iter().all(|x| x.abs() <= 1.5), "the cart stays on its track");
+}
+
+#[test]
+fn an_mpc_keeps_its_plants_velocity_within_its_bound() {
+    // A pushed mass, simulated by Radau from rest at 0, is driven to 1 m by a 20 Hz MPC over a
+    // 1 s horizon on N = 10 intervals. Unbounded, the controller rushes (a position weight of
+    // 100 against a push weight of 0.1); with the velocity bounded by 0.5 m/s it must coast.
+    // The warm start moves each interval's velocity variable and its row's multiplier forward
+    // with the plan.
+    let run = |bounded: bool| {
+        let mut problem = Problem::new(Pushed { m: 1.0, f: 0.0 }, 1.0, 10)
+            .position_weight(Pushed::X, 100.0, 1.0)
+            .terminal_weight(Pushed::X, 100.0, 1.0)
+            .input_weight(Pushed::F, 0.1)
+            .input_bounds(Pushed::F, -10.0, 10.0);
+        if bounded {
+            problem = problem.velocity_bounds(Pushed::X, -0.5, 0.5);
+        }
+        let mut mpc = Mpc::new(problem, InteriorOptions::default()).expect("a well-formed problem");
+        let mut plant = Pushed { m: 1.0, f: 0.0 };
+        let start = consistent_state(
+            &plant,
+            0.0,
+            &VecQ::<Pushed>::zeros(),
+            &VecQ::<Pushed>::zeros(),
+            Consistency::default(),
+        )
+        .expect("consistent");
+        let mut radau = Radau::new(&mut plant, RadauOptions::default()).expect("valid");
+        let solution = radau
+            .run(0.0, &start, 4.0)
+            .sampling(Sampling::Every(0.01))
+            .every(0.05, |t, state, plant: &mut Pushed| mpc.apply(t, state, plant))
+            .solve()
+            .expect("the run completes");
+        let failed = mpc.samples().iter().filter(|s| s.status != "Solve_Succeeded").count();
+        assert_eq!(failed, 0, "every sample solves");
+        let fastest = solution.v(Pushed::X).iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let x = solution.q(Pushed::X);
+        (fastest, x[x.len() - 1])
+    };
+    let (free, free_end) = run(false);
+    let (bounded, bounded_end) = run(true);
+    eprintln!(
+        "fastest {free:.4} m/s unbounded (ends at {free_end:.6}), {bounded:.4} m/s bounded (ends at {bounded_end:.6})"
+    );
+    assert!(free > 1.0, "unbounded, the controller rushes: {free}");
+    // The plan bounds each 0.1 s interval's mean velocity, `v_0 + 0.05 f` under a held push,
+    // which DMOC integrates exactly on this model: the plant's velocity at the next sample,
+    // 0.05 s later. The velocity is linear in between, so the plant stays within the bound.
+    assert!(bounded <= 0.5 + 1e-6, "bounded, the plant reaches {bounded} m/s");
+    assert!(bounded < 0.6 * free, "the bound slows the plant: {bounded} against {free}");
+    assert!((bounded_end - 1.0).abs() < 1e-3, "it still arrives: {bounded_end}");
 }

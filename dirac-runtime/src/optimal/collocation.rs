@@ -17,6 +17,9 @@
 //! that is not linear in them (angular momentum in Cartesian coordinates) drifts at the
 //! method's order, where [`Dmoc`](super::Dmoc) keeps it to round-off.
 //!
+//! A velocity's bounds hold at every point after the start, where they are bounds on the
+//! variables `v_P`.
+//!
 //! The cost is that of the [`Problem`], with the running part integrated by the method's own
 //! quadrature, `h Σ_j b_j ℓ(X_j, u_k)`.
 //!
@@ -405,7 +408,8 @@ where
                 let at = self.point(3 * k + j);
                 for i in 0..n {
                     z[at + i] = a[i] + C[j] * (b[i] - a[i]);
-                    z[at + n + i] = (b[i] - a[i]) / h;
+                    let (lower, upper) = p.velocity_bounds[i];
+                    z[at + n + i] = ((b[i] - a[i]) / h).clamp(lower, upper);
                 }
             }
             z[self.input_start(k)..][..self.nu].copy_from_slice(&inputs[k]);
@@ -488,6 +492,7 @@ where
                     _ => None,
                 };
                 (lower[at + i], upper[at + i]) = fixed.map_or((l, u), |x| (x, x));
+                (lower[at + n + i], upper[at + n + i]) = p.velocity_bounds[i];
             }
         }
         for i in 0..n {

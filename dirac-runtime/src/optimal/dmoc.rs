@@ -17,6 +17,11 @@
 //! the inputs, held equal by the rows `h_k − h_{k+1} = 0`: the horizon is `Σ h_k`, and each
 //! equation reads only the steps of its own two intervals, so the KKT matrix stays banded.
 //!
+//! A bounded velocity is a variable of each interval, `w_k` after the steps, with the row
+//! `q_{k+1} − q_k − h_k w_k = 0` (linear, or bilinear with a free final time): the bound is
+//! then a bound on a variable, which every solver here takes, and the rows stay within their
+//! interval.
+//!
 //! The Jacobian is stored in dense `n × n` and `n × n_u` blocks; the Hessian's pattern is the
 //! model's generated pattern pulled back onto each interval, so it is known before the first
 //! evaluation and holds no entry that is zero for every model of the type.
@@ -56,6 +61,15 @@ where
     free: bool,
     /// Whether the final velocity is given (the equations `c_N`).
     final_rows: bool,
+    /// The coordinates whose velocity is bounded: each has a variable and a row per interval.
+    bounded: Vec<usize>,
+    /// Where the values of the steps' rows and of the velocities' rows start among the
+    /// Jacobian's entries.
+    step_entries: usize,
+    velocity_entries: usize,
+    /// For each interval and bounded velocity, the Hessian entry `(w_k, h_k)` (free final
+    /// time).
+    velocity_hessian: Vec<usize>,
     /// For each block row of equations, its variable blocks with their width and the offset of
     /// their values (row-major within the block row).
     rows: Vec<Vec<(Block, usize, usize)>>,
@@ -142,15 +156,34 @@ where
             rows.push(placed);
         }
         debug_assert!(rows.iter().all(|r| !r.is_empty()));
+        let h0 = (intervals + 1) * n + intervals * nu;
+        let step_entries = jacobian_pattern.len();
         if free {
             // h_k − h_{k+1} = 0.
-            let (row0, h0) = (block_rows * n, (intervals + 1) * n + intervals * nu);
+            let row0 = block_rows * n;
             for k in 0..intervals - 1 {
                 jacobian_pattern.extend([(row0 + k, h0 + k), (row0 + k, h0 + k + 1)]);
             }
         }
+        // q_{k+1} − q_k − h_k w_k = 0 for each bounded velocity.
+        let bounded = problem.velocity_bounded();
+        let nb = bounded.len();
+        let (row0, w0) = (block_rows * n + step_rows(free, intervals), h0 + step_variables(free, intervals));
+        let velocity_entries = jacobian_pattern.len();
+        let mut products = Vec::new();
+        for k in 0..intervals {
+            for (j, &i) in bounded.iter().enumerate() {
+                let (row, w) = (row0 + k * nb + j, w0 + k * nb + j);
+                jacobian_pattern.extend([(row, k * n + i), (row, (k + 1) * n + i), (row, w)]);
+                if free {
+                    jacobian_pattern.push((row, h0 + k));
+                    products.push((w, h0 + k));
+                }
+            }
+        }
         let local = local_pattern(&problem, n, nu, h, free);
-        let (scatter, hessian_pattern) = scatter(&local, n, nu, intervals);
+        let Scattered { intervals: scatter, extra: velocity_hessian, pattern: hessian_pattern } =
+            scatter(&local, &products, n, nu, intervals);
         let work = Interval::new(&problem.model);
         Ok(Dmoc {
             problem,
@@ -160,6 +193,10 @@ where
             h,
             free,
             final_rows,
+            bounded,
+            step_entries,
+            velocity_entries,
+            velocity_hessian,
             rows,
             jacobian_pattern,
             local,
@@ -198,6 +235,22 @@ where
     /// Where the step of interval `k` is in `z` (free final time).
     fn step_index(&self, k: usize) -> usize {
         (self.intervals + 1) * self.n + self.intervals * self.nu + k
+    }
+
+    /// Where the velocity `j` of the bounded ones is in `z` on interval `k`.
+    pub(crate) fn velocity_index(&self, k: usize, j: usize) -> usize {
+        let h0 = (self.intervals + 1) * self.n + self.intervals * self.nu;
+        h0 + step_variables(self.free, self.intervals) + k * self.bounded.len() + j
+    }
+
+    /// The row of interval `k`'s bounded velocity `j`.
+    pub(crate) fn velocity_row(&self, k: usize, j: usize) -> usize {
+        self.rows.len() * self.n + step_rows(self.free, self.intervals) + k * self.bounded.len() + j
+    }
+
+    /// The number of bounded velocities (each a variable and a row on every interval).
+    pub(crate) fn bounded_velocities(&self) -> usize {
+        self.bounded.len()
     }
 
     /// The step of interval `k`: the problem's, or the variable's with a free final time.
@@ -257,6 +310,13 @@ where
                 z[self.step_index(k)] = self.h;
             }
         }
+        for k in 0..intervals {
+            for (j, &i) in self.bounded.iter().enumerate() {
+                let (lower, upper) = self.problem.velocity_bounds[i];
+                let v = (positions[k + 1][i] - positions[k][i]) / self.h;
+                z[self.velocity_index(k, j)] = v.clamp(lower, upper);
+            }
+        }
         z
     }
 
@@ -268,7 +328,9 @@ where
         }
         let mut g = vec![0.0; self.constraints()];
         self.constraint_values(z, &mut g);
-        if let Some(row) = g.iter().position(|x| !x.is_finite()) {
+        // The steps' and velocities' rows are linear in a finite guess: only the equations can
+        // fail.
+        if let Some(row) = g[..self.rows.len() * self.n].iter().position(|x| !x.is_finite()) {
             let (block, i) = (row / self.n, row % self.n);
             let name = &self.problem.model.coordinate_names()[i];
             return Err(OptimalError::NotFiniteAtGuess {
@@ -331,6 +393,16 @@ where
     }
 }
 
+/// The steps' variables: one per interval with a free final time.
+fn step_variables(free: bool, intervals: usize) -> usize {
+    if free { intervals } else { 0 }
+}
+
+/// The steps' rows `h_k − h_{k+1} = 0`.
+fn step_rows(free: bool, intervals: usize) -> usize {
+    if free { intervals - 1 } else { 0 }
+}
+
 /// The lower triangle of an interval's Hessian that any point of the model may fill: the
 /// model's pattern pulled back through the three points, and the cost's diagonal.
 fn local_pattern<M>(problem: &Problem<M>, n: usize, nu: usize, h: f64, free: bool) -> Vec<(usize, usize)>
@@ -390,14 +462,25 @@ fn mark_pulled(mark: &mut DMatrix<bool>, map: Map, n: usize, h: f64, r: usize, c
     }
 }
 
-/// The global index of each interval's local entries, and the global pattern (deduplicated,
-/// ordered by row then column).
+/// Where the Hessian's entries go among the global pattern's.
+struct Scattered {
+    /// For each interval, the global index of each of its local entries.
+    intervals: Vec<Vec<usize>>,
+    /// The global index of each extra entry.
+    extra: Vec<usize>,
+    /// The global pattern, deduplicated and ordered by row then column.
+    pattern: Vec<(usize, usize)>,
+}
+
+/// The global index of each interval's local entries and of the `extra` entries (each
+/// `row ≥ column`), and the global pattern.
 fn scatter(
     local: &[(usize, usize)],
+    extra: &[(usize, usize)],
     n: usize,
     nu: usize,
     intervals: usize,
-) -> (Vec<Vec<usize>>, Vec<(usize, usize)>) {
+) -> Scattered {
     let global = |k: usize, a: usize| match a {
         a if a < 2 * n => k * n + a,
         a if a < 2 * n + nu => (intervals + 1) * n + k * nu + (a - 2 * n),
@@ -409,13 +492,19 @@ fn scatter(
             index.entry((global(k, a), global(k, b))).or_insert(0usize);
         }
     }
+    for &entry in extra {
+        index.entry(entry).or_insert(0);
+    }
     for (i, value) in index.values_mut().enumerate() {
         *value = i;
     }
-    let scatter = (0..intervals)
-        .map(|k| local.iter().map(|&(a, b)| index[&(global(k, a), global(k, b))]).collect())
-        .collect();
-    (scatter, index.into_keys().collect())
+    Scattered {
+        intervals: (0..intervals)
+            .map(|k| local.iter().map(|&(a, b)| index[&(global(k, a), global(k, b))]).collect())
+            .collect(),
+        extra: extra.iter().map(|entry| index[entry]).collect(),
+        pattern: index.into_keys().collect(),
+    }
 }
 
 impl<M> Nlp for Dmoc<M>
@@ -424,11 +513,11 @@ where
     DefaultAllocator: Storage<M>,
 {
     fn variables(&self) -> usize {
-        (self.intervals + 1) * self.n + self.intervals * (self.nu + usize::from(self.free))
+        self.velocity_index(self.intervals, 0)
     }
 
     fn constraints(&self) -> usize {
-        self.rows.len() * self.n + if self.free { self.intervals - 1 } else { 0 }
+        self.velocity_row(self.intervals, 0)
     }
 
     fn variable_bounds(&self, lower: &mut [f64], upper: &mut [f64]) {
@@ -455,6 +544,12 @@ where
             for k in 0..self.intervals {
                 let at = self.step_index(k);
                 (lower[at], upper[at]) = (shortest / per, longest / per);
+            }
+        }
+        for k in 0..self.intervals {
+            for (j, &i) in self.bounded.iter().enumerate() {
+                let at = self.velocity_index(k, j);
+                (lower[at], upper[at]) = p.velocity_bounds[i];
             }
         }
     }
@@ -560,6 +655,13 @@ where
                 out[row0 + k] = z[self.step_index(k)] - z[self.step_index(k + 1)];
             }
         }
+        for k in 0..self.intervals {
+            let h = self.step(z, k);
+            for (j, &i) in self.bounded.iter().enumerate() {
+                let w = z[self.velocity_index(k, j)];
+                out[self.velocity_row(k, j)] = z[(k + 1) * n + i] - z[k * n + i] - h * w;
+            }
+        }
         self.evaluation += started.elapsed();
     }
 
@@ -601,12 +703,23 @@ where
             self.work.pull_lv(GIVEN_END, 0, -1.0, h);
             self.add_rows(out, last, 0, last - 1);
         }
-        if self.free {
-            let at = out.len() - 2 * (self.intervals - 1);
-            for pair in out[at..].chunks_exact_mut(2) {
-                pair.copy_from_slice(&[1.0, -1.0]);
+        let steps = &mut out[self.step_entries..self.velocity_entries];
+        for pair in steps.chunks_exact_mut(2) {
+            pair.copy_from_slice(&[1.0, -1.0]);
+        }
+        let mut at = self.velocity_entries;
+        for k in 0..self.intervals {
+            let h = self.step(z, k);
+            for j in 0..self.bounded.len() {
+                out[at..at + 3].copy_from_slice(&[-1.0, 1.0, -h]);
+                at += 3;
+                if self.free {
+                    out[at] = -z[self.velocity_index(k, j)];
+                    at += 1;
+                }
             }
         }
+        debug_assert_eq!(at, out.len());
         self.evaluation += started.elapsed();
     }
 
@@ -689,6 +802,11 @@ where
             for (&(a, b), &at) in self.local.iter().zip(&self.scatter[k]) {
                 out[at] += self.work.hessian[(a, b)];
             }
+        }
+        // `−μ h_k w_k` of each bounded velocity's row (free final time).
+        let nb = self.bounded.len();
+        for (e, &at) in self.velocity_hessian.iter().enumerate() {
+            out[at] -= mu[self.velocity_row(e / nb, e % nb)];
         }
         self.evaluation += started.elapsed();
     }

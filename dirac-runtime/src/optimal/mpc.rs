@@ -173,13 +173,15 @@ where
     }
 
     /// Moves the last solution forward by `dt`: each node to the last plan's position at its
-    /// new time (linear between nodes, the last held), each interval's inputs and each node's
-    /// multipliers likewise.
+    /// new time (linear between nodes, the last held), each interval's inputs and bounded
+    /// velocities, and each node's multipliers likewise.
     fn shift(&mut self, dt: f64) {
         let (n, nu, intervals) = (M::NQ, self.inputs.len(), self.dmoc.problem.intervals);
         let h = self.dmoc.problem.step();
         let s = (dt / h).max(0.0);
-        let block_rows = self.shifted_lambda.len() / n;
+        let nb = self.dmoc.bounded_velocities();
+        let (w0, row0) = (self.dmoc.velocity_index(0, 0), self.dmoc.velocity_row(0, 0));
+        let block_rows = row0 / n;
         let (x, lambda) = self.solver.point_mut();
         let at = |k: usize| -> (usize, f64) {
             let position = k as f64 + s;
@@ -200,6 +202,10 @@ where
             let from = (intervals + 1) * n + j * nu;
             let to = (intervals + 1) * n + k * nu;
             self.shifted_x[to..to + nu].copy_from_slice(&x[from..from + nu]);
+            let (from, to) = (j * nb, k * nb);
+            self.shifted_x[w0 + to..w0 + to + nb].copy_from_slice(&x[w0 + from..w0 + from + nb]);
+            self.shifted_lambda[row0 + to..row0 + to + nb]
+                .copy_from_slice(&lambda[row0 + from..row0 + from + nb]);
         }
         for k in 0..block_rows {
             let (j, w) = at(k);

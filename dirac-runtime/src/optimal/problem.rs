@@ -1,6 +1,6 @@
 //! An optimal control problem on a model with inputs: the horizon and its grid, where the
-//! motion starts and must end, the bounds on positions and inputs, a quadratic cost, and the
-//! guess the solver starts from.
+//! motion starts and must end, the bounds on positions, velocities and inputs, a quadratic
+//! cost, and the guess the solver starts from.
 
 use nalgebra::DefaultAllocator;
 
@@ -32,6 +32,7 @@ where
     pub(crate) final_position: Vec<Option<f64>>,
     pub(crate) final_velocity: Option<VecQ<M>>,
     pub(crate) position_bounds: Vec<(f64, f64)>,
+    pub(crate) velocity_bounds: Vec<(f64, f64)>,
     pub(crate) input_bounds: Vec<(f64, f64)>,
     /// The bounds of a free final time, `None` if the horizon is fixed.
     pub(crate) free_time: Option<(f64, f64)>,
@@ -55,6 +56,7 @@ where
             final_position: self.final_position.clone(),
             final_velocity: self.final_velocity.clone(),
             position_bounds: self.position_bounds.clone(),
+            velocity_bounds: self.velocity_bounds.clone(),
             input_bounds: self.input_bounds.clone(),
             free_time: self.free_time,
             cost: self.cost.clone(),
@@ -103,6 +105,7 @@ where
             final_position: vec![None; n],
             final_velocity: None,
             position_bounds: vec![(f64::NEG_INFINITY, f64::INFINITY); n],
+            velocity_bounds: vec![(f64::NEG_INFINITY, f64::INFINITY); n],
             input_bounds: vec![(f64::NEG_INFINITY, f64::INFINITY); nu],
             free_time: None,
             cost: Cost {
@@ -156,6 +159,21 @@ where
     pub fn position_bounds(mut self, c: Coordinate<M>, lower: f64, upper: f64) -> Self {
         self.position_bounds[c.index()] = (lower, upper);
         self
+    }
+
+    /// Bounds on the velocity of coordinate `c`: on [`Dmoc`](super::Dmoc), each interval's
+    /// velocity `(q_{k+1} − q_k)/h`; on [`Collocation`](super::Collocation), the velocity at
+    /// every collocation point after the start. The start velocity (and the final velocity,
+    /// if given) must lie within them.
+    pub fn velocity_bounds(mut self, c: Coordinate<M>, lower: f64, upper: f64) -> Self {
+        self.velocity_bounds[c.index()] = (lower, upper);
+        self
+    }
+
+    /// The coordinates whose velocity is bounded, in order.
+    pub(crate) fn velocity_bounded(&self) -> Vec<usize> {
+        let bounded = |&(lower, upper): &(f64, f64)| lower > f64::NEG_INFINITY || upper < f64::INFINITY;
+        (0..M::NQ).filter(|&i| bounded(&self.velocity_bounds[i])).collect()
     }
 
     /// Bounds on input `u` on every interval.
@@ -277,13 +295,13 @@ where
                        (q, v, u) has more than 2048 entries have none)";
             return Err(OptimalError::Unsupported { model, why });
         }
-        // The Jacobian's entries, `(N + 1) n (3n + 2 n_u + 2)` at most (the last two are the
-        // steps of a free final time), are indexed by the solvers' 32-bit integers; a grid
+        // The Jacobian's entries, `(N + 1) n (3n + 2 n_u + 6)` at most (two for the steps of a
+        // free final time, four for a velocity's bound), are indexed by the solvers' 32-bit integers; a grid
         // beyond that is refused before anything is allocated.
         let (n, nu) = (M::NQ, M::NAMES.input_count());
         let entries = (self.intervals.checked_add(1))
             .and_then(|nodes| nodes.checked_mul(n))
-            .and_then(|rows| rows.checked_mul(3 * n + 2 * nu + 2));
+            .and_then(|rows| rows.checked_mul(3 * n + 2 * nu + 6));
         let indexable = entries.is_some_and(|e| e <= i32::MAX as usize);
         if !(self.horizon.is_finite() && self.horizon > 0.0) || self.intervals == 0 || !indexable {
             return Err(OptimalError::InvalidGrid { horizon: self.horizon, intervals: self.intervals });
@@ -318,8 +336,15 @@ where
                 finite("the final position", name, target)?;
                 inside(name, "the final position is outside the position bounds", lower, upper, target)?;
             }
+            let (slowest, fastest) = self.velocity_bounds[i];
+            let velocity = format!("{name}'s velocity");
+            bounds(&velocity, slowest, fastest)?;
+            let why = "the start velocity is outside the velocity bounds";
+            inside(&velocity, why, slowest, fastest, self.v0[i])?;
             if let Some(v) = &self.final_velocity {
                 finite("the final velocity", name, v[i])?;
+                let why = "the final velocity is outside the velocity bounds";
+                inside(&velocity, why, slowest, fastest, v[i])?;
             }
             for (what, w) in [
                 ("the position weight", self.cost.position[i]),
