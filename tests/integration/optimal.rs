@@ -355,8 +355,10 @@ fn a_free_final_time_trades_time_against_effort_as_the_closed_form_does() {
             assert!((1.8..2.3).contains(&cost_order), "the cost converges at order {cost_order}: {errors:?}");
         }
     }
+    // The horizons to the solvers' tolerance (1e-8 on the optimality error): the cost is flat
+    // in the horizon at the optimum, so the horizon is held less tightly than the cost.
     for (dmoc, collocated) in optima[..3].iter().zip(&optima[3..]) {
-        assert!((dmoc.0 - collocated.0).abs() < 1e-9, "horizons {dmoc:?} and {collocated:?}");
+        assert!((dmoc.0 - collocated.0).abs() < 1e-8, "horizons {dmoc:?} and {collocated:?}");
         assert!((dmoc.1 - collocated.1).abs() < 1e-9 * dmoc.1, "costs {dmoc:?} and {collocated:?}");
     }
 }
@@ -986,6 +988,13 @@ fn the_pure_rust_interior_point_finds_ipopts_optimum() {
         assert!(relative_gap(&positions, &expected) < 1e-5, "N = {intervals}: the optimal nodes differ");
         assert!(ours.violation < 1e-9, "N = {intervals}: equations violated by {:e}", ours.violation);
         assert!(ours.inputs.iter().all(|u| u[0].abs() <= 20.0), "pushes within their bounds");
+        // The same algorithm takes as many steps, within 10%.
+        assert!(
+            10 * ours.iterations <= 11 * reference.iterations,
+            "N = {intervals}: {} iterations against IPOPT's {}",
+            ours.iterations,
+            reference.iterations
+        );
     }
     // The acrobot, swung up by its elbow alone: no bounds, a nonconvex program whose steps
     // need the inertia correction.
@@ -1007,6 +1016,10 @@ fn the_pure_rust_interior_point_finds_ipopts_optimum() {
     );
     assert!((ours.cost - reference.cost).abs() <= 1e-6 * reference.cost.abs(), "acrobot: cost differs");
     assert!(ours.violation < 1e-9, "acrobot: equations violated by {:e}", ours.violation);
+    assert!(
+        10 * ours.iterations <= 11 * reference.iterations,
+        "acrobot: more iterations than IPOPT's, by over 10%"
+    );
 
     // The Panda between two poses within its joints' limits and efforts: near the optimum the
     // torques at their bounds make the barrier terms 1e10 times the constraint rows' pivots,

@@ -510,7 +510,13 @@ impl InteriorPoint {
             self.assemble(delta_w, delta_c);
             match self.band.factor() {
                 Inertia::Counted(p, q) if p == self.n && q == self.m => {
-                    if delta_w > 0.0 {
+                    // The band factors in a fixed order without pivoting, so a pivot can vanish
+                    // where the matrix does not (a variable without curvature eliminated before
+                    // its equations): a factorisation that pivots, as IPOPT's does, needs no
+                    // `δ_w` there. The `δ_w` that got past such a pivot is therefore not what
+                    // the next iteration's first trial starts from; only one that corrected the
+                    // inertia is.
+                    if delta_w > 0.0 && delta_c == 0.0 {
                         self.last_delta_w = delta_w;
                     }
                     return true;
