@@ -450,15 +450,8 @@ where
             });
         }
         if self.free {
-            let (t0, horizon) = (self.problem.t0, self.problem.horizon);
-            let result = super::refuse_time_dependence::<M>(t0, horizon, |start| {
-                self.problem.t0 = start;
-                let mut g = vec![0.0; self.constraints()];
-                self.constraint_values(z, &mut g);
-                g
-            });
-            self.problem.t0 = t0;
-            result?;
+            let horizon = self.problem.horizon;
+            super::refuse_time_dependence::<M, _>(self, |t| &mut t.problem.t0, horizon, z)?;
         }
         Ok(())
     }

@@ -70,15 +70,25 @@ pub struct Optimum {
 }
 
 /// The refusal of a free final time on a model whose equations read `t`: the derivatives
-/// with respect to the step hold `t` fixed. `equations(t0)` evaluates the program's equations
-/// at the guess with the problem starting at `t0`; a model that does not read `t` gives the
-/// same values a horizon later, bit for bit.
-pub(crate) fn refuse_time_dependence<M>(
-    t0: f64,
+/// with respect to the step hold `t` fixed. The program's equations are evaluated at `z` with
+/// the problem starting at its own start (`start` gives access to it) and a horizon later; a
+/// model that does not read `t` gives the same values, bit for bit. The start is restored.
+pub(crate) fn refuse_time_dependence<M, N: Nlp>(
+    nlp: &mut N,
+    start: fn(&mut N) -> &mut f64,
     horizon: f64,
-    mut equations: impl FnMut(f64) -> Vec<f64>,
+    z: &[f64],
 ) -> Result<(), OptimalError> {
-    if equations(t0) == equations(t0 + horizon) {
+    let t0 = *start(nlp);
+    let equations = |nlp: &mut N, t: f64| {
+        *start(nlp) = t;
+        let mut g = vec![0.0; nlp.constraints()];
+        nlp.constraint_values(z, &mut g);
+        g
+    };
+    let same = equations(nlp, t0) == equations(nlp, t0 + horizon);
+    *start(nlp) = t0;
+    if same {
         return Ok(());
     }
     let why = "its equations change with time, and a free final time moves every node's time: only models \
