@@ -439,6 +439,31 @@ fn a_bounded_velocity_coasts_at_its_bound_as_the_closed_form_does() {
 }
 
 #[test]
+fn a_bounded_velocity_costs_the_same_relative_error_in_tonnes_and_kilometres() {
+    // The coasting mass of the test above rescaled: 1 t moved 1 km in 1000 s at no more than
+    // 1.2 m/s. The closed form is the same with units: τ = 3(VT − D)/(2V) = 250 s and
+    // J* = m² 4V²/(3τ) = 7680. On the same grid the program is the unit one rescaled, so the
+    // relative error of the optimal cost must not depend on the units.
+    let relative_error = |m: f64, distance: f64, horizon: f64, fastest: f64| {
+        let tau = 3.0 * (fastest * horizon - distance) / (2.0 * fastest);
+        let exact = m * m * 4.0 * fastest * fastest / (3.0 * tau);
+        let problem = Problem::new(Pushed { m, f: 0.0 }, horizon, 16)
+            .final_state(VecQ::<Pushed>::from([distance]), VecQ::<Pushed>::zeros())
+            .velocity_bounds(Pushed::X, f64::NEG_INFINITY, fastest);
+        let optimum = Dmoc::new(problem).expect("well-formed").solve_interior(&InteriorOptions::default());
+        let optimum = optimum.expect("the interior point solves it");
+        (optimum.cost - exact) / exact
+    };
+    let unit = relative_error(1.0, 1.0, 1.0, 1.2);
+    let large = relative_error(1000.0, 1000.0, 1000.0, 1.2);
+    eprintln!(
+        "relative cost error at N = 16: {unit:e} in SI units of one, {large:e} in tonnes and kilometres"
+    );
+    assert!(unit > 0.0 && unit < 0.02, "the unit problem's error {unit}");
+    assert!((unit - large).abs() < 1e-6, "{unit} against {large}");
+}
+
+#[test]
 fn a_time_optimal_swing_up_is_a_motion_of_the_variational_integrator_with_its_own_step() {
     with_ipopt();
     // The swing-up with the horizon free in [1, 4] s and each second priced at 10: the optimum
